@@ -1,0 +1,88 @@
+/**
+ * Types of voxpath's headless API. Index spaces are named in every field:
+ * a "point index" k runs 0..=steps (points[k] is the position after k steps),
+ * a "step index" k runs 0..steps-1 (step k moves points[k] to points[k+1]).
+ * Coordinates are integer grid units (one cell = one motor step).
+ */
+
+/** A point on the grid, one integer per axis, in grid units. */
+export type GridPoint = readonly number[];
+
+/** Tie rule for a discriminant equal to zero. */
+export type TiePolicy = 'advance' | 'hold';
+
+/** Options of one trace. Each algorithm documents which extra options it takes. */
+export interface TraceOptions {
+  /** Algorithm id, as listed by `algorithms()` (for example 'regions'). */
+  algorithm: string;
+  /** Start point, in grid units (2 to 6 axes, |coordinate| <= 2^30). */
+  from: GridPoint;
+  /** End point, same number of axes as `from`. */
+  to: GridPoint;
+  /** What a zero discriminant does; the default is the algorithm's source. */
+  tie?: TiePolicy;
+  /** Refuse paths longer than this many steps (default 50,000,000). */
+  maxSteps?: number;
+  /** Further algorithm-specific options. */
+  [option: string]: unknown;
+}
+
+/** How to read one decision column. */
+export interface ColumnSpec {
+  /** Column name, as in the paper where the paper names it (M, N, ...). */
+  name: string;
+  /**
+   * int: an exact integer (stored as float64, exact below 2^53);
+   * float: a real number; category: an index into `labels`; flag: 0 or 1.
+   */
+  kind: 'int' | 'float' | 'category' | 'flag';
+  /** Labels of a category column, indexed by the stored value. */
+  labels?: string[];
+  /** One sentence: what the value is and where it comes from. */
+  doc: string;
+}
+
+/** Decision columns over a range of step indices; each array has one entry per step. */
+export type DecisionColumns = Record<string, Float64Array | Uint8Array>;
+
+/** Whole-path statistics, computed by the core while it traces. */
+export interface Metrics {
+  steps: number;
+  /** stepsMovingAxes[k] = number of steps that move exactly k + 1 axes. */
+  stepsMovingAxes: number[];
+  /** Pulses (unit moves) per axis over the whole path. */
+  pulsesByAxis: number[];
+  /** Perpendicular distance from each point to the ideal path, in grid units. */
+  maxDeviation: number;
+  meanDeviation: number;
+  stdDeviation: number;
+  /** Largest |point - ideal position at the same progress| per axis (Wang eq. 11). */
+  maxAxisError: number[];
+  /** Steps whose decision was a tie resolved by the tie policy. */
+  ties: number;
+}
+
+/** The path the steps approximate, as the core describes it. */
+export interface IdealPath {
+  kind: string;
+  /** Human-readable parameters (from, to, centre...), in grid units. */
+  [parameter: string]: unknown;
+}
+
+/** One catalogued algorithm. */
+export interface AlgorithmInfo {
+  id: string;
+  title: string;
+  /** Document and section the algorithm comes from. */
+  citation: string;
+  /** The rule in plain words. */
+  teaching: string;
+  /** Where the source document is wrong and what voxpath does instead. */
+  errata: string[];
+  columns: ColumnSpec[];
+  /** Axis counts the algorithm accepts. */
+  minDims: number;
+  maxDims: number;
+  /** Default tie policy, or null when the algorithm has no ties. */
+  defaultTie: TiePolicy | null;
+}
