@@ -69,6 +69,17 @@ export interface IdealPath {
   [parameter: string]: unknown;
 }
 
+/** One option an algorithm takes; CLI flags and page inputs are generated from these. */
+export interface OptionSpec {
+  /** Name in the JS API; the CLI flag is its kebab-case form (maxSteps -> --max-steps). */
+  name: string;
+  kind: { type: 'point' } | { type: 'number' } | { type: 'integer' } | { type: 'choice'; values: string[] };
+  required: boolean;
+  /** Default shown to users, or null when required or derived from other input. */
+  default: string | null;
+  doc: string;
+}
+
 /** One catalogued algorithm. */
 export interface AlgorithmInfo {
   id: string;
@@ -80,9 +91,34 @@ export interface AlgorithmInfo {
   /** Where the source document is wrong and what voxpath does instead. */
   errata: string[];
   columns: ColumnSpec[];
+  options: OptionSpec[];
   /** Axis counts the algorithm accepts. */
   minDims: number;
   maxDims: number;
   /** Default tie policy, or null when the algorithm has no ties. */
   defaultTie: TiePolicy | null;
+}
+
+/** One stretch of a trace produced by one stepper (a line, a chord, a G-code move). */
+export interface SegmentInfo {
+  /** Step index of the segment's first step. */
+  firstStep: number;
+  steps: number;
+  /** Point where the segment starts, grid units. */
+  start: number[];
+  ideal: IdealPath;
+  /** What a learner should know about this move before it starts. */
+  note: string;
+}
+
+/** The small part of a trace: everything but the per-step arrays. */
+export interface TraceSummary {
+  algorithm: string;
+  dims: number;
+  steps: number;
+  start: number[];
+  end: number[];
+  columns: ColumnSpec[];
+  metrics: Metrics;
+  segments: SegmentInfo[];
 }

@@ -1,0 +1,56 @@
+//! Errors a user can act on: each names the input field (or the G-code line
+//! and column) it is about.
+
+use std::fmt;
+
+/// Where in the input an error is.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Location {
+    /// A named option, for example `from` or `maxSteps`.
+    Field(String),
+    /// A place in a text input, 1-based.
+    Source { line: u32, column: u32 },
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Error {
+    pub location: Location,
+    pub message: String,
+}
+
+impl Error {
+    pub fn field(field: &str, message: impl Into<String>) -> Error {
+        Error {
+            location: Location::Field(field.to_string()),
+            message: message.into(),
+        }
+    }
+
+    pub fn at(line: u32, column: u32, message: impl Into<String>) -> Error {
+        Error {
+            location: Location::Source { line, column },
+            message: message.into(),
+        }
+    }
+
+    /// The field this error names, if it is about an option.
+    pub fn field_name(&self) -> Option<&str> {
+        match &self.location {
+            Location::Field(f) => Some(f),
+            Location::Source { .. } => None,
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.location {
+            Location::Field(field) => write!(f, "{field}: {}", self.message),
+            Location::Source { line, column } => {
+                write!(f, "line {line}, column {column}: {}", self.message)
+            }
+        }
+    }
+}
+
+impl std::error::Error for Error {}

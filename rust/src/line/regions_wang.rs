@@ -1,0 +1,608 @@
+//! Wang et al. (2020), "Spatial Straight-Line Drawing Algorithm Based on
+//! Method of Discriminate Regions", sections 2.2 to 2.5.
+//!
+//! The active axis (largest |delta|) steps every time. Each passive axis has an
+//! integer discriminant (M for the first, N for the second): eq. (6) in closed
+//! form, eq. (8) as a recurrence, eq. (10) for the start. The signs of M and N
+//! say which region of the cell's exit face the ideal line crosses, and so
+//! which corner A-D the step goes to.
+//!
+//! Negative directions are handled by mirroring: every quantity below is
+//! measured along the direction of travel, so the paper's positive-direction
+//! formulas apply unchanged (the paper's "intrinsic symmetry").
+
+use crate::algorithms::AlgorithmInfo;
+use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::request::{FROM, MAX_STEPS, TO, tie_option};
+use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+use std::fmt::Write;
+
+pub const ID: &str = "regions";
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    title: "Method of discriminate regions (3D line)",
+    citation: "Wang, Xiao, Song, Yue, Bian & Li (2020), Spatial Straight-Line Drawing Algorithm Based on Method of Discriminate Regions, sections 2.2-2.5, eq. (6), (8), (10)",
+    teaching: "The axis that moves farthest is active and steps every time. Each other (passive) axis keeps an integer discriminant: M for the first, N for the second. M > 0 means the ideal line is past the middle of the cell in that axis when it leaves the cell, so that axis steps too. Together the signs of M and N say which of the four regions a-d of the cell's exit face the line crosses, and so which corner A-D is the next point. After each step, M grows by 2|Δy| and, when y stepped, shrinks by 2|Δx|: integers only, no drift.",
+    errata: &[
+        "Table 2 prints N_5..N_10 = 18, 10, 2, -6, 6, -2 and the points (7,5,5) and (9,6,6); eq. (8) gives N = 10, 2, -6, 6, -2, 10 and the points (7,5,4) and (9,6,5), the same as Liu's Table 1. The Error printed beside (7,5,5) and (9,6,6) is that of (7,5,4) and (9,6,5), so the claimed difference from Liu's algorithm at step 9 does not exist.",
+        "Table 1 (Liu's algorithm, reproduced by Wang) prints the Error 0.225064 for (7,5,4); its distance from the line is 0.220564 (two digits transposed), the same as its mirror image (3,2,2).",
+        "Rule (7) says segment g (M = 0, N > 0) selects A or D; N > 0 means the second passive axis steps, which A does not, so the candidates are C or D.",
+        "The paper leaves ties open (\"A or B\"). voxpath makes the choice a visible option, tie = advance (as Liu's Table 1, the default) or hold, and marks every step a tie decided.",
+    ],
+    columns: RegionsWhy::COLUMNS,
+    options: &[FROM, TO, tie_option("advance"), MAX_STEPS],
+    min_dims: 3,
+    max_dims: 3,
+    default_tie: Some(TiePolicy::Advance),
+    trace: |req| super::trace_line(&INFO, req, RegionsWang::new),
+};
+
+/// Where the ideal line crosses the exit face of the current cell
+/// (Wang section 2.5, Fig. 4b). Segments e-h and the centre o are ties.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Region {
+    A,
+    B,
+    C,
+    D,
+    E,
+    F,
+    G,
+    H,
+    O,
+    /// Type ② lines (all axes active) have no passive axis and no region.
+    NoPassive,
+}
+
+pub const REGION_LABELS: &[&str] = &["a", "b", "c", "d", "e", "f", "g", "h", "o", "-"];
+
+/// The corner a step goes to: A = first passive axis steps, B = neither,
+/// C = second passive axis steps, D = both (Wang Fig. 4a).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Corner {
+    A,
+    B,
+    C,
+    D,
+    NoPassive,
+}
+
+pub const CORNER_LABELS: &[&str] = &["A", "B", "C", "D", "-"];
+
+impl Region {
+    /// The paper's rule for this region, section 2.5 (1)-(9), word for word
+    /// where the paper is right.
+    pub fn rule(self) -> &'static str {
+        match self {
+            Region::A => "(1) M > 0 and N < 0: the line crosses region a; point A is selected.",
+            Region::B => "(2) M < 0 and N < 0: the line crosses region b; point B is selected.",
+            Region::C => "(3) M < 0 and N > 0: the line crosses region c; point C is selected.",
+            Region::D => "(4) M > 0 and N > 0: the line crosses region d; point D is selected.",
+            Region::E => "(5) M = 0 and N < 0: the line crosses segment e; A or B may be selected.",
+            Region::F => "(6) M < 0 and N = 0: the line crosses segment f; B or C may be selected.",
+            Region::G => {
+                "(7) M = 0 and N > 0: the line crosses segment g; C or D may be selected \
+                 (the paper prints \"A or D\", but N > 0 rules out A, whose second passive coordinate does not step)."
+            }
+            Region::H => "(8) M > 0 and N = 0: the line crosses segment h; D or A may be selected.",
+            Region::O => {
+                "(9) M = 0 and N = 0: the line crosses the centre o; A, B, C or D may be selected."
+            }
+            Region::NoPassive => {
+                "All three axes are active (type ②): every step goes to the opposite corner."
+            }
+        }
+    }
+
+    /// Classifies the signs of M and N (a missing N counts as negative: a
+    /// line with one passive axis never steps a second one).
+    fn of(m: i64, n: Option<i64>) -> Region {
+        match (m.signum(), n.map_or(-1, i64::signum)) {
+            (1, -1) => Region::A,
+            (-1, -1) => Region::B,
+            (-1, 1) => Region::C,
+            (1, 1) => Region::D,
+            (0, -1) => Region::E,
+            (-1, 0) => Region::F,
+            (0, 1) => Region::G,
+            (1, 0) => Region::H,
+            _ => Region::O,
+        }
+    }
+
+    fn label(self) -> &'static str {
+        REGION_LABELS[self as usize]
+    }
+}
+
+impl Corner {
+    fn of(first_steps: bool, second_steps: bool) -> Corner {
+        match (first_steps, second_steps) {
+            (true, false) => Corner::A,
+            (false, false) => Corner::B,
+            (false, true) => Corner::C,
+            (true, true) => Corner::D,
+        }
+    }
+
+    fn label(self) -> &'static str {
+        CORNER_LABELS[self as usize]
+    }
+}
+
+/// The decision behind one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RegionsWhy {
+    /// M and N before the step (eq. 6); None for an absent passive axis.
+    pub discriminants: [Option<i64>; 2],
+    pub region: Region,
+    pub corner: Corner,
+    /// A zero discriminant decided this step (through the tie policy).
+    pub tie: bool,
+    pub tie_policy: TiePolicy,
+    geometry: Geometry,
+}
+
+impl Decision for RegionsWhy {
+    const COLUMNS: &'static [Column] = &[
+        Column {
+            name: "M",
+            kind: ColumnKind::Int,
+            doc: "Discriminant of the first passive axis before the step (Wang eq. 6, 8, 10; y when x is active); it steps when M > 0, and on M = 0 as the tie policy says.",
+        },
+        Column {
+            name: "N",
+            kind: ColumnKind::Int,
+            doc: "Discriminant of the second passive axis before the step (z when x is active); empty when the line has fewer than two passive axes.",
+        },
+        Column {
+            name: "region",
+            kind: ColumnKind::Category(REGION_LABELS),
+            doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, centre o (Wang section 2.5); '-' for type ② lines.",
+        },
+        Column {
+            name: "corner",
+            kind: ColumnKind::Category(CORNER_LABELS),
+            doc: "The corner the step goes to: A = first passive axis steps, B = neither, C = second, D = both.",
+        },
+        Column {
+            name: "tie",
+            kind: ColumnKind::Flag,
+            doc: "1 when M or N was exactly 0 and the tie policy decided the step.",
+        },
+    ];
+
+    fn write(&self, row: &mut [f64]) {
+        row[0] = self.discriminants[0].map_or(f64::NAN, |v| v as f64);
+        row[1] = self.discriminants[1].map_or(f64::NAN, |v| v as f64);
+        row[2] = self.region as u8 as f64;
+        row[3] = self.corner as u8 as f64;
+        row[4] = self.tie as u8 as f64;
+    }
+
+    fn is_tie(&self) -> bool {
+        self.tie
+    }
+
+    fn explain(&self, _from: &Point, step: Step) -> String {
+        let g = &self.geometry;
+        let mut s = g.active_phrase();
+        let [m, n] = self.discriminants;
+        let Some(m) = m else {
+            let _ = write!(
+                s,
+                ", so the step goes to the opposite corner {}.",
+                step_target(step, 3)
+            );
+            return s;
+        };
+        let _ = write!(s, "; M = {}", signed_comparison(m));
+        if let Some(n) = n {
+            let _ = write!(s, " and N = {}", signed_comparison(n));
+        }
+        let region = self.region;
+        match region {
+            Region::A | Region::B | Region::C | Region::D => {
+                let _ = write!(
+                    s,
+                    ", so the line leaves the cell through region {}",
+                    region.label()
+                );
+            }
+            Region::O => {
+                s.push_str(", so the line passes through the centre o of the exit face (a tie)")
+            }
+            _ => {
+                let (x, y) = match region {
+                    Region::E => ("A", "B"),
+                    Region::F => ("B", "C"),
+                    Region::G => ("C", "D"),
+                    _ => ("D", "A"),
+                };
+                let _ = write!(
+                    s,
+                    ", so the line crosses segment {} between {x} and {y} (a tie)",
+                    region.label()
+                );
+            }
+        }
+        if self.tie {
+            let _ = write!(s, "; the tie policy '{}' decides", self.tie_policy.label());
+        }
+        let _ = write!(
+            s,
+            ", and the step goes to {} {}.",
+            self.corner.label(),
+            step_target(step, 3)
+        );
+        s
+    }
+}
+
+/// "4 > 0", "0", "-2 < 0".
+fn signed_comparison(v: i64) -> String {
+    match v.signum() {
+        1 => format!("{v} > 0"),
+        -1 => format!("{v} < 0"),
+        _ => "0".to_string(),
+    }
+}
+
+/// "(x+1, y, z-1)": where a step goes, relative to the current point.
+pub fn step_target(step: Step, dims: usize) -> String {
+    let parts: Vec<String> = (0..dims)
+        .map(|axis| match step.delta(axis) {
+            1 => format!("{}+1", AXIS_NAMES[axis]),
+            -1 => format!("{}-1", AXIS_NAMES[axis]),
+            _ => AXIS_NAMES[axis].to_string(),
+        })
+        .collect();
+    format!("({})", parts.join(", "))
+}
+
+/// Which axes are active and passive for one line (fixed for the whole line).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Geometry {
+    /// Bit mask of the active axes (|delta| equal to the largest).
+    active_mask: u8,
+    /// Passive axes in x, y, z order; the first has M, the second N.
+    passive: [u8; 2],
+    passive_count: u8,
+}
+
+impl Geometry {
+    fn active_phrase(&self) -> String {
+        let names: Vec<&str> = (0..3)
+            .filter(|a| self.active_mask >> a & 1 == 1)
+            .map(|a| AXIS_NAMES[a])
+            .collect();
+        match names.len() {
+            1 => format!("{} is the active axis", names[0]),
+            2 => format!("{} and {} are active", names[0], names[1]),
+            _ => "x, y and z are all active".to_string(),
+        }
+    }
+
+    /// Line type ①-⑦ of Wang section 2.2.
+    fn line_type(&self) -> u8 {
+        match self.active_mask {
+            0b001 => 1,
+            0b111 => 2,
+            0b010 => 3,
+            0b100 => 4,
+            0b011 => 5,
+            0b110 => 6,
+            _ => 7,
+        }
+    }
+}
+
+/// Wang's stepper for one 3D line.
+#[derive(Clone, Debug)]
+pub struct RegionsWang {
+    from: Point,
+    /// Direction of travel per axis (+1 for an axis that does not move).
+    sign: [i64; 3],
+    /// |delta| per axis.
+    magnitude: [i64; 3],
+    /// An active axis: the paper's x, whose |delta| scales the discriminants.
+    reference: usize,
+    geometry: Geometry,
+    /// M and N (eq. 8 recurrence), kept in i64: |M| <= 3 |delta_ref| < 2^33.
+    discriminant: [i64; 2],
+    remaining: u64,
+    tie: TiePolicy,
+}
+
+impl RegionsWang {
+    /// The line from `from` to `to` (3 axes each, validated by the caller).
+    pub fn new(from: Point, to: Point, tie: TiePolicy) -> RegionsWang {
+        let delta = from.delta_to(&to);
+        let mut sign = [1; 3];
+        let mut magnitude = [0; 3];
+        for axis in 0..3 {
+            sign[axis] = if delta[axis] < 0 { -1 } else { 1 };
+            magnitude[axis] = delta[axis].abs();
+        }
+        let largest = *magnitude.iter().max().unwrap();
+        let reference = magnitude.iter().position(|&m| m == largest).unwrap();
+        let mut geometry = Geometry {
+            active_mask: 0,
+            passive: [0; 2],
+            passive_count: 0,
+        };
+        for axis in 0..3 {
+            if magnitude[axis] == largest {
+                geometry.active_mask |= 1 << axis;
+            } else {
+                geometry.passive[geometry.passive_count as usize] = axis as u8;
+                geometry.passive_count += 1;
+            }
+        }
+        let mut discriminant = [0; 2];
+        for (i, d) in discriminant
+            .iter_mut()
+            .enumerate()
+            .take(geometry.passive_count as usize)
+        {
+            // Eq. (10): M_1 = 2 delta_y - delta_x (and N_1 = 2 delta_z - delta_x).
+            *d = 2 * magnitude[geometry.passive[i] as usize] - largest;
+        }
+        RegionsWang {
+            from,
+            sign,
+            magnitude,
+            reference,
+            geometry,
+            discriminant,
+            remaining: largest as u64,
+            tie,
+        }
+    }
+
+    /// Eq. (6), the closed form: the discriminants at point `p` from the
+    /// point alone, M = 2 dy (x - xs) - 2 dx (y - ys) + 2 dy - dx (in i128,
+    /// so any point within +-2^30 is exact). Used to check the recurrence.
+    pub fn closed_form(&self, p: &Point) -> [Option<i64>; 2] {
+        let progress =
+            |axis: usize| ((p.get(axis) - self.from.get(axis)) * self.sign[axis]) as i128;
+        let dx = self.magnitude[self.reference] as i128;
+        let mut out = [None; 2];
+        for i in 0..self.geometry.passive_count as usize {
+            let axis = self.geometry.passive[i] as usize;
+            let dy = self.magnitude[axis] as i128;
+            let m = 2 * dy * progress(self.reference) - 2 * dx * progress(axis) + 2 * dy - dx;
+            out[i] = Some(m as i64);
+        }
+        out
+    }
+}
+
+impl Stepper for RegionsWang {
+    type Why = RegionsWhy;
+
+    fn next_step(&mut self) -> Option<(Step, RegionsWhy)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        self.remaining -= 1;
+        let g = self.geometry;
+        let mut step = Step::NONE;
+        for axis in 0..3 {
+            if g.active_mask >> axis & 1 == 1 {
+                // Active axes progress one unit at a time (section 2.2).
+                step = step.with(axis, self.sign[axis]);
+            }
+        }
+        let count = g.passive_count as usize;
+        let discriminants = [
+            (count > 0).then_some(self.discriminant[0]),
+            (count > 1).then_some(self.discriminant[1]),
+        ];
+        let mut moves = [false; 2];
+        let mut tie = false;
+        for i in 0..count {
+            let d = self.discriminant[i];
+            // A passive axis steps when its discriminant is positive; zero is
+            // the line passing exactly half way, decided by the tie policy.
+            moves[i] = d > 0 || (d == 0 && self.tie == TiePolicy::Advance);
+            tie |= d == 0;
+            let axis = g.passive[i] as usize;
+            if moves[i] {
+                step = step.with(axis, self.sign[axis]);
+            }
+            // Eq. (8): M_{i+1} = M_i + 2 dy - 2 dx (y_{i+1} - y_i).
+            self.discriminant[i] +=
+                2 * self.magnitude[axis] - 2 * self.magnitude[self.reference] * moves[i] as i64;
+        }
+        let (region, corner) = match discriminants[0] {
+            None => (Region::NoPassive, Corner::NoPassive),
+            Some(m) => (
+                Region::of(m, discriminants[1]),
+                Corner::of(moves[0], moves[1]),
+            ),
+        };
+        let why = RegionsWhy {
+            discriminants,
+            region,
+            corner,
+            tie,
+            tie_policy: self.tie,
+            geometry: g,
+        };
+        Some((step, why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        Some(self.remaining)
+    }
+
+    fn setup_note(&self) -> String {
+        let g = &self.geometry;
+        let names = |mask: u8| -> String {
+            (0..3)
+                .filter(|a| mask >> a & 1 == 1)
+                .map(|a| AXIS_NAMES[a])
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let passive_mask = 0b111 & !g.active_mask;
+        let mut s = format!(
+            "Line type {} (Wang section 2.2): |Δ| = ({}, {}, {}); active: {}",
+            ["①", "②", "③", "④", "⑤", "⑥", "⑦"][g.line_type() as usize - 1],
+            self.magnitude[0],
+            self.magnitude[1],
+            self.magnitude[2],
+            names(g.active_mask),
+        );
+        if g.passive_count > 0 {
+            let _ = write!(s, "; passive: {}", names(passive_mask));
+            let dx = self.magnitude[self.reference];
+            let ref_name = AXIS_NAMES[self.reference];
+            for (i, label) in ["M", "N"].iter().enumerate().take(g.passive_count as usize) {
+                let axis = g.passive[i] as usize;
+                let _ = write!(
+                    s,
+                    ". Eq. (10): {label}_1 = 2|Δ{p}| - |Δ{ref_name}| = 2·{} - {dx} = {}",
+                    self.magnitude[axis],
+                    2 * self.magnitude[axis] - dx,
+                    p = AXIS_NAMES[axis],
+                );
+            }
+        }
+        if self.sign.contains(&-1) {
+            s.push_str(". Negative directions are mirrored: the rules run on |Δ| and step each axis toward the end point");
+        }
+        s.push('.');
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::TraceBuilder;
+
+    fn run(from: [i64; 3], to: [i64; 3], tie: TiePolicy) -> Vec<(Point, RegionsWhy)> {
+        let mut s = RegionsWang::new(Point::new(&from), Point::new(&to), tie);
+        let mut p = Point::new(&from);
+        let mut out = Vec::new();
+        while let Some((step, why)) = s.next_step() {
+            p.apply(step);
+            out.push((p, why));
+        }
+        out
+    }
+
+    #[test]
+    fn type_one_line_of_wang_table_2_from_the_equations() {
+        // SEED-NOTES / Wang eq. (6)-(10) for (0,0,0)->(10,7,6), ties advance:
+        // M_1 = 2*7 - 10 = 4, N_1 = 2*6 - 10 = 2, then eq. (8) per step.
+        let steps = run([0, 0, 0], [10, 7, 6], TiePolicy::Advance);
+        let m: Vec<i64> = steps
+            .iter()
+            .map(|(_, w)| w.discriminants[0].unwrap())
+            .collect();
+        let n: Vec<i64> = steps
+            .iter()
+            .map(|(_, w)| w.discriminants[1].unwrap())
+            .collect();
+        assert_eq!(m, [4, -2, 12, 6, 0, -6, 8, 2, -4, 10]);
+        assert_eq!(n, [2, -6, 6, -2, 10, 2, -6, 6, -2, 10]);
+        let points: Vec<Point> = steps.iter().map(|(p, _)| *p).collect();
+        let expected: Vec<Point> = [
+            [1, 1, 1],
+            [2, 1, 1],
+            [3, 2, 2],
+            [4, 3, 2],
+            [5, 4, 3],
+            [6, 4, 4],
+            [7, 5, 4],
+            [8, 6, 5],
+            [9, 6, 5],
+            [10, 7, 6],
+        ]
+        .iter()
+        .map(|c| Point::new(c))
+        .collect();
+        assert_eq!(points, expected);
+        // Step 5 (M = 0, N = 10 > 0) is segment g: a tie between C and D.
+        assert_eq!(steps[4].1.region, Region::G);
+        assert!(steps[4].1.tie);
+        assert_eq!(steps[4].1.corner, Corner::D);
+    }
+
+    #[test]
+    fn table_2_erratum_points_are_not_what_the_equations_give() {
+        // Wang's Table 2 prints (7,5,5) and (9,6,6) with N_5..N_10 = 18, 10,
+        // 2, -6, 6, -2; eq. (8) gives (7,5,4) and (9,6,5) (Liu's Table 1).
+        let steps = run([0, 0, 0], [10, 7, 6], TiePolicy::Advance);
+        assert_eq!(steps[6].0, Point::new(&[7, 5, 4]));
+        assert_eq!(steps[8].0, Point::new(&[9, 6, 5]));
+        let n: Vec<i64> = steps[4..]
+            .iter()
+            .map(|(_, w)| w.discriminants[1].unwrap())
+            .collect();
+        assert_ne!(n, [18, 10, 2, -6, 6, -2]);
+    }
+
+    #[test]
+    fn hold_on_ties_gives_saleem_s_point() {
+        // With ties held, step 5 stays at y = 3 (Saleem's strict rule).
+        let steps = run([0, 0, 0], [10, 7, 6], TiePolicy::Hold);
+        assert_eq!(steps[4].0, Point::new(&[5, 3, 3]));
+        assert_eq!(steps[4].1.corner, Corner::C);
+        assert_eq!(steps.last().unwrap().0, Point::new(&[10, 7, 6]));
+    }
+
+    #[test]
+    fn explains_a_step_in_one_sentence() {
+        let steps = run([0, 0, 0], [10, 7, 6], TiePolicy::Advance);
+        let (_, why) = steps[0];
+        let step = Step::along(0, 1).with(1, 1).with(2, 1);
+        assert_eq!(
+            why.explain(&Point::origin(3), step),
+            "x is the active axis; M = 4 > 0 and N = 2 > 0, so the line leaves the cell through region d, and the step goes to D (x+1, y+1, z+1)."
+        );
+        let (_, tie) = steps[4];
+        assert!(tie.explain(&Point::new(&[4, 3, 2]), step).contains(
+            "M = 0 and N = 10 > 0, so the line crosses segment g between C and D (a tie); the tie policy 'advance' decides"
+        ));
+    }
+
+    #[test]
+    fn all_seven_types_have_their_active_axes() {
+        for (to, line_type) in [
+            ([5, 3, 2], 1),
+            ([4, 4, 4], 2),
+            ([1, 6, 2], 3),
+            ([2, 3, 7], 4),
+            ([5, 5, 1], 5),
+            ([0, 3, 3], 6),
+            ([6, 2, 6], 7),
+        ] {
+            let s = RegionsWang::new(Point::origin(3), Point::new(&to), TiePolicy::Advance);
+            assert_eq!(s.geometry.line_type(), line_type, "{to:?}");
+        }
+    }
+
+    #[test]
+    fn trace_keeps_decisions_for_replay() {
+        let from = Point::origin(3);
+        let to = Point::new(&[10, 7, 6]);
+        let mut b = TraceBuilder::new(from, 1000);
+        b.run(
+            RegionsWang::new(from, to, TiePolicy::Advance),
+            crate::ideal::IdealPath::Line { from, to },
+        )
+        .unwrap();
+        let t = b.finish(ID);
+        let d = t.decisions(3, 6);
+        assert_eq!(d.columns[0], [6.0, 0.0, -6.0]);
+        assert_eq!(d.columns[2], [0.0, 6.0, 2.0]); // a, g, c
+        assert_eq!(t.metrics().ties, 1);
+        let note = &t.segments()[0].setup_note;
+        assert!(note.contains("M_1 = 2|Δy| - |Δx| = 2·7 - 10 = 4"), "{note}");
+    }
+}

@@ -1,0 +1,125 @@
+//! Whole-path statistics: step counts, pulses, deviation from the ideal path.
+
+use crate::grid::{MAX_AXES, Step};
+use serde::Serialize;
+
+/// Statistics of one trace. Deviations are in grid units; mean and standard
+/// deviation are taken over all points, start and end included (as the Error
+/// columns of Wang's Tables 1 and 2 list them).
+#[derive(Serialize, Debug, Clone, Default, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct Metrics {
+    pub steps: u64,
+    /// `steps_moving_axes[k]` = steps that move exactly k + 1 axes.
+    pub steps_moving_axes: Vec<u64>,
+    /// Unit moves per axis.
+    pub pulses_by_axis: Vec<u64>,
+    pub max_deviation: f64,
+    pub mean_deviation: f64,
+    /// Population standard deviation of the per-point deviation.
+    pub std_deviation: f64,
+    /// Largest |phi| per axis (Wang eq. 11).
+    pub max_axis_error: Vec<f64>,
+    /// Decisions that were ties, resolved by the tie policy.
+    pub ties: u64,
+}
+
+pub struct MetricsAccumulator {
+    dims: usize,
+    steps: u64,
+    steps_moving_axes: [u64; MAX_AXES],
+    pulses_by_axis: [u64; MAX_AXES],
+    points: u64,
+    max_deviation: f64,
+    /// Welford's running mean and sum of squared differences: stable for
+    /// 10^7 points where a naive sum of squares loses digits.
+    mean: f64,
+    m2: f64,
+    max_axis_error: [f64; MAX_AXES],
+}
+
+impl MetricsAccumulator {
+    pub fn new(dims: usize) -> MetricsAccumulator {
+        MetricsAccumulator {
+            dims,
+            steps: 0,
+            steps_moving_axes: [0; MAX_AXES],
+            pulses_by_axis: [0; MAX_AXES],
+            points: 0,
+            max_deviation: 0.0,
+            mean: 0.0,
+            m2: 0.0,
+            max_axis_error: [0.0; MAX_AXES],
+        }
+    }
+
+    pub fn add_step(&mut self, step: Step) {
+        self.steps += 1;
+        let moving = step.axis_count() as usize;
+        if moving > 0 {
+            self.steps_moving_axes[moving - 1] += 1;
+        }
+        for axis in 0..self.dims {
+            self.pulses_by_axis[axis] += (step.moving_axes() >> axis & 1) as u64;
+        }
+    }
+
+    pub fn add_point(&mut self, deviation: f64, axis_error: &[f64; MAX_AXES]) {
+        self.points += 1;
+        self.max_deviation = self.max_deviation.max(deviation);
+        let delta = deviation - self.mean;
+        self.mean += delta / self.points as f64;
+        self.m2 += delta * (deviation - self.mean);
+        for axis in 0..self.dims {
+            self.max_axis_error[axis] = self.max_axis_error[axis].max(axis_error[axis].abs());
+        }
+    }
+
+    pub fn finish(self, ties: u64) -> Metrics {
+        Metrics {
+            steps: self.steps,
+            steps_moving_axes: self.steps_moving_axes[..self.dims].to_vec(),
+            pulses_by_axis: self.pulses_by_axis[..self.dims].to_vec(),
+            max_deviation: self.max_deviation,
+            mean_deviation: self.mean,
+            std_deviation: if self.points > 0 {
+                (self.m2 / self.points as f64).sqrt()
+            } else {
+                0.0
+            },
+            max_axis_error: self.max_axis_error[..self.dims].to_vec(),
+            ties,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn welford_matches_the_two_pass_formula() {
+        let values = [0.0, 0.374887, 0.336918, 0.220564, 0.441129, 0.0];
+        let mut acc = MetricsAccumulator::new(3);
+        for v in values {
+            acc.add_point(v, &[0.0; MAX_AXES]);
+        }
+        let m = acc.finish(0);
+        let mean = values.iter().sum::<f64>() / values.len() as f64;
+        let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / values.len() as f64;
+        assert!((m.mean_deviation - mean).abs() < 1e-15);
+        assert!((m.std_deviation - var.sqrt()).abs() < 1e-15);
+        assert_eq!(m.max_deviation, 0.441129);
+    }
+
+    #[test]
+    fn counts_axes_per_step_and_pulses() {
+        let mut acc = MetricsAccumulator::new(3);
+        acc.add_step(Step::along(0, 1).with(1, -1));
+        acc.add_step(Step::along(0, 1));
+        acc.add_step(Step::along(0, -1).with(1, 1).with(2, 1));
+        let m = acc.finish(0);
+        assert_eq!(m.steps_moving_axes, vec![1, 1, 1]);
+        assert_eq!(m.pulses_by_axis, vec![3, 2, 1]);
+    }
+}

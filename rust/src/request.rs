@@ -1,0 +1,308 @@
+//! Trace requests: the options of one trace, validated with errors that name
+//! the option. Every algorithm declares the options it takes ([`OptionSpec`]);
+//! the CLI flags and the page's inputs are generated from those declarations.
+
+use crate::error::Error;
+use crate::grid::Point;
+use crate::trace::{DEFAULT_MAX_STEPS, MAX_STEPS_LIMIT, TiePolicy};
+use serde::Serialize;
+use serde_json::{Map, Value};
+
+/// The type of an option's value.
+#[derive(Serialize, Clone, Copy, Debug, PartialEq)]
+#[serde(tag = "type", rename_all = "camelCase")]
+pub enum OptionKind {
+    /// Integer grid coordinates, one per axis.
+    Point,
+    /// A real number.
+    Number,
+    /// A whole number.
+    Integer,
+    /// One of a fixed set of words.
+    Choice { values: &'static [&'static str] },
+}
+
+/// One option an algorithm takes.
+#[derive(Serialize, Clone, Copy, Debug, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct OptionSpec {
+    /// Name in the JS API (camelCase); the CLI flag is its kebab-case form.
+    pub name: &'static str,
+    pub kind: OptionKind,
+    pub required: bool,
+    /// Default shown to users (None when required or when it depends on input).
+    pub default: Option<&'static str>,
+    pub doc: &'static str,
+}
+
+pub const FROM: OptionSpec = OptionSpec {
+    name: "from",
+    kind: OptionKind::Point,
+    required: true,
+    default: None,
+    doc: "Start point, integer grid units, |coordinate| <= 2^30.",
+};
+
+pub const TO: OptionSpec = OptionSpec {
+    name: "to",
+    kind: OptionKind::Point,
+    required: true,
+    default: None,
+    doc: "End point, grid units, as many axes as from.",
+};
+
+pub const MAX_STEPS: OptionSpec = OptionSpec {
+    name: "maxSteps",
+    kind: OptionKind::Integer,
+    required: false,
+    default: Some("50000000"),
+    doc: "Refuse paths longer than this many steps (at most 1000000000).",
+};
+
+/// The `tie` option with the default its source document uses.
+pub const fn tie_option(default: &'static str) -> OptionSpec {
+    OptionSpec {
+        name: "tie",
+        kind: OptionKind::Choice {
+            values: &["advance", "hold"],
+        },
+        required: false,
+        default: Some(default),
+        doc: "What a discriminant of exactly 0 does: advance steps the axis, hold does not.",
+    }
+}
+
+/// A parsed request: an algorithm id and its options (already checked to be
+/// among the options the algorithm declares).
+#[derive(Debug, Clone)]
+pub struct Request {
+    pub algorithm: String,
+    options: Map<String, Value>,
+}
+
+impl Request {
+    /// Parses `{"algorithm": "...", ...options}` from JSON text.
+    pub fn from_json(text: &str) -> Result<Request, Error> {
+        let value: Value = serde_json::from_str(text)
+            .map_err(|e| Error::field("request", format!("not valid JSON: {e}")))?;
+        let Value::Object(mut options) = value else {
+            return Err(Error::field("request", "expected an object of options"));
+        };
+        let algorithm = match options.remove("algorithm") {
+            Some(Value::String(s)) => s,
+            Some(other) => {
+                return Err(Error::field(
+                    "algorithm",
+                    format!("expected a name, got {other}"),
+                ));
+            }
+            None => return Err(Error::field("algorithm", "missing (for example 'regions')")),
+        };
+        // Absent and null mean the same: use the default.
+        options.retain(|_, v| !v.is_null());
+        Ok(Request { algorithm, options })
+    }
+
+    /// Rejects options that are not among `accepted`, naming the first one.
+    pub fn check_options(&self, accepted: &[OptionSpec]) -> Result<(), Error> {
+        for name in self.options.keys() {
+            if !accepted.iter().any(|o| o.name == name) {
+                let names: Vec<&str> = accepted.iter().map(|o| o.name).collect();
+                return Err(Error::field(
+                    name,
+                    format!(
+                        "{} does not take this option (it takes {})",
+                        self.algorithm,
+                        names.join(", ")
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn get(&self, name: &str) -> Option<&Value> {
+        self.options.get(name)
+    }
+
+    /// A required point option.
+    pub fn point(&self, name: &str) -> Result<Point, Error> {
+        self.optional_point(name)?
+            .ok_or_else(|| Error::field(name, "missing: give one integer per axis, e.g. [0, 0, 0]"))
+    }
+
+    pub fn optional_point(&self, name: &str) -> Result<Option<Point>, Error> {
+        let Some(value) = self.get(name) else {
+            return Ok(None);
+        };
+        let Value::Array(items) = value else {
+            return Err(Error::field(
+                name,
+                format!("expected a list of coordinates, got {value}"),
+            ));
+        };
+        let mut coords = Vec::with_capacity(items.len());
+        for (axis, item) in items.iter().enumerate() {
+            match item.as_f64() {
+                Some(v) => coords.push(v),
+                None => {
+                    let axis_name = crate::grid::AXIS_NAMES.get(axis).unwrap_or(&"coordinate");
+                    return Err(Error::field(
+                        name,
+                        format!("{axis_name} must be a number, got {item}"),
+                    ));
+                }
+            }
+        }
+        Point::parse(name, &coords).map(Some)
+    }
+
+    pub fn number(&self, name: &str) -> Result<Option<f64>, Error> {
+        match self.get(name) {
+            None => Ok(None),
+            Some(v) => match v.as_f64() {
+                Some(x) if x.is_finite() => Ok(Some(x)),
+                _ => Err(Error::field(name, format!("expected a number, got {v}"))),
+            },
+        }
+    }
+
+    pub fn integer(&self, name: &str) -> Result<Option<i64>, Error> {
+        match self.number(name)? {
+            None => Ok(None),
+            Some(x) if x.fract() == 0.0 && x.abs() < 9.0e15 => Ok(Some(x as i64)),
+            Some(x) => Err(Error::field(
+                name,
+                format!("expected a whole number, got {x}"),
+            )),
+        }
+    }
+
+    pub fn choice(&self, spec: &OptionSpec) -> Result<Option<&str>, Error> {
+        let OptionKind::Choice { values } = spec.kind else {
+            unreachable!("choice() is for choice options");
+        };
+        match self.get(spec.name) {
+            None => Ok(None),
+            Some(Value::String(s)) if values.contains(&s.as_str()) => Ok(Some(s)),
+            Some(v) => Err(Error::field(
+                spec.name,
+                format!("expected one of {}, got {v}", values.join(", ")),
+            )),
+        }
+    }
+
+    /// The tie policy, or `default` when not given.
+    pub fn tie(&self, default: TiePolicy) -> Result<TiePolicy, Error> {
+        match self.get("tie") {
+            None => Ok(default),
+            Some(Value::String(s)) => TiePolicy::parse(s),
+            Some(v) => Err(Error::field(
+                "tie",
+                format!("expected 'advance' or 'hold', got {v}"),
+            )),
+        }
+    }
+
+    pub fn max_steps(&self) -> Result<u64, Error> {
+        match self.integer("maxSteps")? {
+            None => Ok(DEFAULT_MAX_STEPS),
+            Some(n) if (0..=MAX_STEPS_LIMIT as i64).contains(&n) => Ok(n as u64),
+            Some(n) => Err(Error::field(
+                "maxSteps",
+                format!("must be 0 to {MAX_STEPS_LIMIT}, got {n}"),
+            )),
+        }
+    }
+
+    /// `from` and `to`, checked to have the same number of axes, within the
+    /// algorithm's range of axis counts.
+    pub fn endpoints(&self, min_dims: usize, max_dims: usize) -> Result<(Point, Point), Error> {
+        let from = self.point("from")?;
+        let to = self.point("to")?;
+        let dims = from.dims();
+        if !(min_dims..=max_dims).contains(&dims) {
+            let wanted = if min_dims == max_dims {
+                format!("{min_dims}")
+            } else {
+                format!("{min_dims} to {max_dims}")
+            };
+            return Err(Error::field(
+                "from",
+                format!("{} takes {wanted} coordinates, got {dims}", self.algorithm),
+            ));
+        }
+        if to.dims() != dims {
+            return Err(Error::field(
+                "to",
+                format!("has {} coordinates but from has {dims}", to.dims()),
+            ));
+        }
+        Ok((from, to))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_name_the_option() {
+        let e = |json: &str| {
+            Request::from_json(json)
+                .and_then(|r| r.endpoints(3, 3).map(|_| ()))
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            e(r#"{"from":[0,0,0],"to":[1,2,3]}"#),
+            "algorithm: missing (for example 'regions')"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"regions","to":[1,2,3]}"#),
+            "from: missing: give one integer per axis, e.g. [0, 0, 0]"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"regions","from":[0,"a",0],"to":[1,2,3]}"#),
+            "from: y must be a number, got \"a\""
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"regions","from":[0,0],"to":[1,2]}"#),
+            "from: regions takes 3 coordinates, got 2"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"regions","from":[0,0,0],"to":[1,2]}"#),
+            "to: has 2 coordinates but from has 3"
+        );
+        assert_eq!(
+            e("[1"),
+            "request: not valid JSON: EOF while parsing a list at line 1 column 2"
+        );
+    }
+
+    #[test]
+    fn unknown_options_are_named() {
+        let r = Request::from_json(
+            r#"{"algorithm":"regions","from":[0,0,0],"to":[1,2,3],"centre":[1,1,1]}"#,
+        )
+        .unwrap();
+        let e = r.check_options(&[FROM, TO, MAX_STEPS]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "centre: regions does not take this option (it takes from, to, maxSteps)"
+        );
+    }
+
+    #[test]
+    fn max_steps_and_tie_are_checked() {
+        let r = Request::from_json(r#"{"algorithm":"x","maxSteps":-1,"tie":"sometimes"}"#).unwrap();
+        assert_eq!(
+            r.max_steps().unwrap_err().to_string(),
+            "maxSteps: must be 0 to 1000000000, got -1"
+        );
+        assert_eq!(
+            r.tie(TiePolicy::Advance).unwrap_err().to_string(),
+            "tie: expected 'advance' or 'hold', got 'sometimes'"
+        );
+    }
+}

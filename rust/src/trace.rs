@@ -1,0 +1,527 @@
+//! A trace: the steps an algorithm took, and everything needed to say why.
+//!
+//! Memory layout, chosen so that a 10,000,000-step path stays small:
+//! - one packed [`Step`] (2 bytes) per step;
+//! - a position every [`CHECKPOINT_INTERVAL`] steps, so any point is a short
+//!   decode away;
+//! - a copy of the stepper's state every [`CHECKPOINT_INTERVAL`] steps of each
+//!   segment, so the decisions (discriminants, error terms, ...) of any step
+//!   range are recomputed exactly by replaying at most that many steps,
+//!   instead of being stored for every step.
+//!
+//! Index spaces: a *step index* k (0..steps) names the step from point k to
+//! point k + 1; a *point index* k (0..=steps) names the position after k steps.
+
+use crate::error::Error;
+use crate::grid::{Point, Step};
+use crate::ideal::{IdealPath, IdealPathInfo};
+use crate::metrics::{Metrics, MetricsAccumulator};
+use serde::Serialize;
+
+/// Steps between two stored positions / stepper states.
+pub const CHECKPOINT_INTERVAL: u64 = 4096;
+
+/// Default limit on the length of one trace, in steps.
+pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
+
+/// Hard limit on `maxSteps`: 2 bytes per step must fit in wasm32 memory.
+pub const MAX_STEPS_LIMIT: u64 = 1_000_000_000;
+
+/// What a decision does when its discriminant is exactly zero, i.e. when the
+/// ideal path passes exactly half way between the two candidate cells.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TiePolicy {
+    /// Step the axis (Liu's Table 1 and Wang's worked example: M >= 0 steps).
+    Advance,
+    /// Do not step the axis (Saleem's `error > delta`: strictly greater steps).
+    Hold,
+}
+
+impl TiePolicy {
+    pub fn label(self) -> &'static str {
+        match self {
+            TiePolicy::Advance => "advance",
+            TiePolicy::Hold => "hold",
+        }
+    }
+
+    /// Parses the `tie` option.
+    pub fn parse(value: &str) -> Result<TiePolicy, Error> {
+        match value {
+            "advance" => Ok(TiePolicy::Advance),
+            "hold" => Ok(TiePolicy::Hold),
+            other => Err(Error::field(
+                "tie",
+                format!("expected 'advance' or 'hold', got '{other}'"),
+            )),
+        }
+    }
+}
+
+/// How to read the values of one decision column.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ColumnKind {
+    /// An exact integer (|v| < 2^53, so exact in f64).
+    Int,
+    /// A real number.
+    Float,
+    /// An index into the labels.
+    Category(&'static [&'static str]),
+    /// 0 or 1.
+    Flag,
+}
+
+/// One decision column: a quantity the algorithm computes at each step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Column {
+    pub name: &'static str,
+    pub kind: ColumnKind,
+    pub doc: &'static str,
+}
+
+/// The reason for one step, as recorded by a [`Stepper`].
+pub trait Decision: Copy {
+    /// The columns [`Decision::write`] fills, in order.
+    const COLUMNS: &'static [Column];
+
+    /// Writes this decision's values, one per column (NaN where a column does
+    /// not apply to this step).
+    fn write(&self, row: &mut [f64]);
+
+    /// True when a tie (a discriminant exactly 0) was resolved by the tie policy.
+    fn is_tie(&self) -> bool {
+        false
+    }
+
+    /// One plain sentence saying why `step` was taken from `from`.
+    fn explain(&self, from: &Point, step: Step) -> String;
+}
+
+/// An algorithm in motion: each call yields one step and the decision that
+/// produced it. A step and its reason are one event.
+pub trait Stepper: Clone + 'static {
+    type Why: Decision;
+
+    /// The next step and why it was taken, or None at the end of the path.
+    fn next_step(&mut self) -> Option<(Step, Self::Why)>;
+
+    /// Steps this stepper will still take, when known without running it.
+    fn remaining_steps(&self) -> Option<u64>;
+
+    /// What a learner should know about this particular move before it starts
+    /// (line type, active axis, initial discriminants, ...).
+    fn setup_note(&self) -> String;
+}
+
+/// A type-erased stepper whose state can be copied: the replay engine.
+trait Replay {
+    fn clone_box(&self) -> Box<dyn Replay>;
+    /// Takes the next step, writing its decision into `row` (segment columns).
+    fn replay_step(&mut self, row: &mut [f64]) -> Option<Step>;
+    /// Takes the next step, explaining it.
+    fn explain_step(&mut self, from: &Point) -> Option<String>;
+}
+
+impl<S: Stepper> Replay for S {
+    fn clone_box(&self) -> Box<dyn Replay> {
+        Box::new(self.clone())
+    }
+
+    fn replay_step(&mut self, row: &mut [f64]) -> Option<Step> {
+        let (step, why) = self.next_step()?;
+        why.write(row);
+        Some(step)
+    }
+
+    fn explain_step(&mut self, from: &Point) -> Option<String> {
+        let (step, why) = self.next_step()?;
+        Some(why.explain(from, step))
+    }
+}
+
+/// A stretch of the trace produced by one stepper against one ideal path
+/// (a whole line, one chord of a segmented arc, one G-code move).
+pub struct Segment {
+    /// Step index of the segment's first step.
+    pub first_step: u64,
+    pub steps: u64,
+    pub start: Point,
+    pub ideal: IdealPath,
+    pub setup_note: String,
+    /// For each of the stepper's columns, its index among the trace columns.
+    column_index: Vec<usize>,
+    /// Stepper state before segment step j * CHECKPOINT_INTERVAL.
+    states: Vec<Box<dyn Replay>>,
+}
+
+/// A finished trace.
+pub struct Trace {
+    pub algorithm: String,
+    start: Point,
+    end: Point,
+    steps: Vec<Step>,
+    /// Position after k * CHECKPOINT_INTERVAL steps.
+    positions: Vec<Point>,
+    segments: Vec<Segment>,
+    columns: Vec<Column>,
+    metrics: Metrics,
+}
+
+/// Builds a trace by running steppers one after another from a start point.
+pub struct TraceBuilder {
+    start: Point,
+    position: Point,
+    steps: Vec<Step>,
+    positions: Vec<Point>,
+    segments: Vec<Segment>,
+    columns: Vec<Column>,
+    max_steps: u64,
+    ties: u64,
+}
+
+impl TraceBuilder {
+    /// `max_steps` bounds the whole trace; exceeding it is an error naming
+    /// the `maxSteps` option.
+    pub fn new(start: Point, max_steps: u64) -> TraceBuilder {
+        TraceBuilder {
+            start,
+            position: start,
+            steps: Vec::new(),
+            positions: vec![start],
+            segments: Vec::new(),
+            columns: Vec::new(),
+            max_steps,
+            ties: 0,
+        }
+    }
+
+    /// Current position (the end of the last segment).
+    pub fn position(&self) -> Point {
+        self.position
+    }
+
+    /// Runs `stepper` to its end from the current position, measuring its
+    /// points against `ideal`.
+    pub fn run<S: Stepper>(&mut self, stepper: S, ideal: IdealPath) -> Result<(), Error> {
+        let first_step = self.steps.len() as u64;
+        if let Some(n) = stepper.remaining_steps() {
+            self.check_length(first_step + n)?;
+            self.steps.reserve(n as usize);
+        }
+        let column_index = S::Why::COLUMNS
+            .iter()
+            .map(|c| self.column_slot(c))
+            .collect();
+        let mut segment = Segment {
+            first_step,
+            steps: 0,
+            start: self.position,
+            ideal,
+            setup_note: stepper.setup_note(),
+            column_index,
+            states: Vec::new(),
+        };
+        let mut stepper = stepper;
+        loop {
+            if segment.steps % CHECKPOINT_INTERVAL == 0 {
+                segment.states.push(Box::new(stepper.clone()));
+            }
+            let Some((step, why)) = stepper.next_step() else {
+                break;
+            };
+            if why.is_tie() {
+                self.ties += 1;
+            }
+            self.position.apply(step);
+            self.steps.push(step);
+            segment.steps += 1;
+            let total = self.steps.len() as u64;
+            if total % CHECKPOINT_INTERVAL == 0 {
+                self.check_length(total)?;
+                self.positions.push(self.position);
+            }
+        }
+        self.check_length(self.steps.len() as u64)?;
+        self.segments.push(segment);
+        Ok(())
+    }
+
+    fn check_length(&self, steps: u64) -> Result<(), Error> {
+        if steps > self.max_steps {
+            return Err(Error::field(
+                "maxSteps",
+                format!(
+                    "the path needs more than {} steps (at least {steps}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten the move",
+                    self.max_steps
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Index of a column among the trace's columns, adding it if new. Two
+    /// segments share a column when they declare the same one.
+    fn column_slot(&mut self, column: &Column) -> usize {
+        match self.columns.iter().position(|c| c == column) {
+            Some(i) => i,
+            None => {
+                self.columns.push(*column);
+                self.columns.len() - 1
+            }
+        }
+    }
+
+    pub fn finish(self, algorithm: &str) -> Trace {
+        let mut trace = Trace {
+            algorithm: algorithm.to_string(),
+            start: self.start,
+            end: self.position,
+            steps: self.steps,
+            positions: self.positions,
+            segments: self.segments,
+            columns: self.columns,
+            metrics: Metrics::default(),
+        };
+        let mut acc = MetricsAccumulator::new(trace.dims());
+        trace.for_each_point(0, trace.steps() + 1, |k, p, seg| {
+            let (local, n) = (k - seg.first_step, seg.steps);
+            acc.add_point(
+                seg.ideal.deviation(p),
+                &seg.ideal.axis_error(p, local.min(n), n),
+            );
+            if k < trace.steps.len() as u64 {
+                acc.add_step(trace.steps[k as usize]);
+            }
+        });
+        trace.metrics = acc.finish(self.ties);
+        trace
+    }
+}
+
+/// Decision values over a range of steps, one array per trace column.
+pub struct DecisionTable {
+    pub columns: Vec<Vec<f64>>,
+}
+
+impl Trace {
+    pub fn dims(&self) -> usize {
+        self.start.dims()
+    }
+
+    pub fn steps(&self) -> u64 {
+        self.steps.len() as u64
+    }
+
+    pub fn start(&self) -> Point {
+        self.start
+    }
+
+    pub fn end(&self) -> Point {
+        self.end
+    }
+
+    pub fn columns(&self) -> &[Column] {
+        &self.columns
+    }
+
+    pub fn segments(&self) -> &[Segment] {
+        &self.segments
+    }
+
+    pub fn metrics(&self) -> &Metrics {
+        &self.metrics
+    }
+
+    /// The packed steps with step indices in `from..to`.
+    pub fn step_range(&self, from: u64, to: u64) -> &[Step] {
+        &self.steps[from as usize..to as usize]
+    }
+
+    /// Point index k: the position after k steps.
+    pub fn point(&self, k: u64) -> Point {
+        let mut p = self.positions[(k / CHECKPOINT_INTERVAL) as usize];
+        for &s in &self.steps[(k - k % CHECKPOINT_INTERVAL) as usize..k as usize] {
+            p.apply(s);
+        }
+        p
+    }
+
+    /// Calls `f(k, point k, segment of point k)` for point indices `from..to`.
+    /// Point k belongs to the segment whose step k starts from it; the last
+    /// point belongs to the last segment that took a step.
+    fn for_each_point(&self, from: u64, to: u64, mut f: impl FnMut(u64, &Point, &Segment)) {
+        if from >= to || self.segments.is_empty() {
+            return;
+        }
+        let mut p = self.point(from);
+        let mut seg = self.segment_of_point(from);
+        for k in from..to {
+            if k > from {
+                p.apply(self.steps[k as usize - 1]);
+                if k < self.steps() {
+                    while self.segments[seg].first_step + self.segments[seg].steps <= k {
+                        seg += 1;
+                    }
+                }
+            }
+            f(k, &p, &self.segments[seg]);
+        }
+    }
+
+    /// Index of the segment that point index k belongs to (see `for_each_point`).
+    fn segment_of_point(&self, k: u64) -> usize {
+        if k < self.steps() {
+            self.segment_of_step(k)
+        } else {
+            self.segments.iter().rposition(|s| s.steps > 0).unwrap_or(0)
+        }
+    }
+
+    /// Points with point indices `from..to`, flat with stride `dims`.
+    pub fn points_flat(&self, from: u64, to: u64) -> Vec<i64> {
+        let mut out = Vec::with_capacity((to - from) as usize * self.dims());
+        let mut p = self.point(from);
+        for k in from..to {
+            if k > from {
+                p.apply(self.steps[k as usize - 1]);
+            }
+            out.extend_from_slice(p.coords());
+        }
+        out
+    }
+
+    /// Perpendicular deviation of points `from..to` from the ideal path.
+    pub fn deviation_range(&self, from: u64, to: u64) -> Vec<f64> {
+        let mut out = Vec::with_capacity((to - from) as usize);
+        self.for_each_point(from, to, |_, p, seg| out.push(seg.ideal.deviation(p)));
+        out
+    }
+
+    /// Per-axis error (Wang eq. 11) of points `from..to`, flat with stride `dims`.
+    pub fn axis_error_range(&self, from: u64, to: u64) -> Vec<f64> {
+        let dims = self.dims();
+        let mut out = Vec::with_capacity((to - from) as usize * dims);
+        self.for_each_point(from, to, |k, p, seg| {
+            let local = (k - seg.first_step).min(seg.steps);
+            out.extend_from_slice(&seg.ideal.axis_error(p, local, seg.steps)[..dims]);
+        });
+        out
+    }
+
+    /// Index of the segment containing step index k.
+    fn segment_of_step(&self, k: u64) -> usize {
+        self.segments
+            .partition_point(|s| s.first_step + s.steps <= k)
+    }
+
+    /// Replays segment `seg` so that its next step is step index `k`.
+    fn replay_to(&self, seg: usize, k: u64) -> Box<dyn Replay> {
+        let segment = &self.segments[seg];
+        let local = k - segment.first_step;
+        let mut stepper = segment.states[(local / CHECKPOINT_INTERVAL) as usize].clone_box();
+        let mut scratch = vec![0.0; MAX_COLUMNS];
+        for _ in 0..local % CHECKPOINT_INTERVAL {
+            stepper.replay_step(&mut scratch);
+        }
+        stepper
+    }
+
+    /// Decision columns for step indices `from..to`, recomputed by replay.
+    pub fn decisions(&self, from: u64, to: u64) -> DecisionTable {
+        let len = (to - from) as usize;
+        let mut columns = vec![vec![f64::NAN; len]; self.columns.len()];
+        let mut row = vec![f64::NAN; MAX_COLUMNS];
+        let mut k = from;
+        while k < to {
+            let seg = self.segment_of_step(k);
+            let segment = &self.segments[seg];
+            let seg_end = (segment.first_step + segment.steps).min(to);
+            let mut stepper = self.replay_to(seg, k);
+            for i in k..seg_end {
+                row.fill(f64::NAN);
+                stepper.replay_step(&mut row);
+                for (local, &global) in segment.column_index.iter().enumerate() {
+                    columns[global][(i - from) as usize] = row[local];
+                }
+            }
+            k = seg_end;
+        }
+        DecisionTable { columns }
+    }
+
+    /// One sentence: why step index k was taken.
+    pub fn explain(&self, k: u64) -> String {
+        let seg = self.segment_of_step(k);
+        let from = self.point(k);
+        self.replay_to(seg, k)
+            .explain_step(&from)
+            .expect("a recorded step replays to the same step")
+    }
+}
+
+/// What a viewer needs to know about a trace besides its bulk arrays.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct TraceSummary<'a> {
+    pub algorithm: &'a str,
+    pub dims: usize,
+    pub steps: u64,
+    pub start: Vec<i64>,
+    pub end: Vec<i64>,
+    pub columns: &'a [Column],
+    pub metrics: &'a Metrics,
+    pub segments: Vec<SegmentSummary<'a>>,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct SegmentSummary<'a> {
+    pub first_step: u64,
+    pub steps: u64,
+    pub start: Vec<i64>,
+    pub ideal: IdealPathInfo,
+    pub note: &'a str,
+}
+
+impl Trace {
+    pub fn summary(&self) -> TraceSummary<'_> {
+        TraceSummary {
+            algorithm: &self.algorithm,
+            dims: self.dims(),
+            steps: self.steps(),
+            start: self.start.coords().to_vec(),
+            end: self.end.coords().to_vec(),
+            columns: &self.columns,
+            metrics: &self.metrics,
+            segments: self
+                .segments
+                .iter()
+                .map(|s| SegmentSummary {
+                    first_step: s.first_step,
+                    steps: s.steps,
+                    start: s.start.coords().to_vec(),
+                    ideal: s.ideal.info(),
+                    note: &s.setup_note,
+                })
+                .collect(),
+        }
+    }
+
+    /// The ideal path of all segments joined, for drawing (stride dims).
+    /// A segment's first vertex repeats the previous segment's last, so it is
+    /// skipped when equal.
+    pub fn ideal_polyline(&self) -> Vec<f64> {
+        let dims = self.dims();
+        let mut out: Vec<f64> = Vec::new();
+        for segment in &self.segments {
+            let line = segment.ideal.polyline();
+            let skip =
+                out.len() >= dims && line.len() >= dims && out[out.len() - dims..] == line[..dims];
+            out.extend_from_slice(&line[if skip { dims } else { 0 }..]);
+        }
+        out
+    }
+}
+
+/// Most columns one stepper may declare.
+const MAX_COLUMNS: usize = 32;

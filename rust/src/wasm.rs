@@ -1,0 +1,131 @@
+//! The WebAssembly boundary, and the only module that knows about JavaScript.
+//!
+//! Bulk data crosses as flat typed arrays, copied out of wasm memory once:
+//! - points: Int32Array, stride = dims, one row per point index;
+//! - decisions: Float64Array, column-major, one run of (to - from) values per
+//!   trace column, in the order of the summary's `columns`;
+//! - deviation: Float64Array, one value per point index;
+//! - axis error: Float64Array, stride = dims, one row per point index;
+//! - step codes: Uint16Array, one packed step per step index (see `grid::Step`).
+//!
+//! Small data (summary, catalogue) crosses as JSON text. Errors are JS `Error`
+//! objects named `VoxpathError` with `field`, or `line` and `column`, set.
+
+use crate::error::{Error, Location};
+use crate::trace::Trace;
+use wasm_bindgen::prelude::*;
+
+fn to_js_error(error: &Error) -> JsValue {
+    let js = js_sys::Error::new(&error.to_string());
+    js.set_name("VoxpathError");
+    let set = |key: &str, value: JsValue| {
+        let _ = js_sys::Reflect::set(&js, &JsValue::from_str(key), &value);
+    };
+    set("detail", JsValue::from_str(&error.message));
+    match &error.location {
+        Location::Field(field) => set("field", JsValue::from_str(field)),
+        Location::Source { line, column } => {
+            set("line", JsValue::from(*line));
+            set("column", JsValue::from(*column));
+        }
+    }
+    js.into()
+}
+
+/// Runs one trace. `request_json` is `{"algorithm": id, ...options}`.
+#[wasm_bindgen]
+pub fn trace(request_json: &str) -> Result<TraceHandle, JsValue> {
+    crate::trace_json(request_json)
+        .map(TraceHandle)
+        .map_err(|e| to_js_error(&e))
+}
+
+/// The algorithm catalogue as JSON text (see `algorithms::AlgorithmInfo`).
+#[wasm_bindgen(js_name = catalogueJson)]
+pub fn catalogue_json() -> String {
+    serde_json::to_string(crate::algorithms::ALGORITHMS).expect("the catalogue serializes")
+}
+
+/// A finished trace held in wasm memory.
+#[wasm_bindgen]
+pub struct TraceHandle(Trace);
+
+impl TraceHandle {
+    fn check_range(&self, what: &str, from: u32, to: u32, len: u64) -> Result<(u64, u64), JsValue> {
+        if from > to || to as u64 > len {
+            return Err(to_js_error(&Error::field(
+                "range",
+                format!("{what} {from}..{to} is outside 0..{len}"),
+            )));
+        }
+        Ok((from as u64, to as u64))
+    }
+
+    fn point_range(&self, from: u32, to: u32) -> Result<(u64, u64), JsValue> {
+        self.check_range("point indices", from, to, self.0.steps() + 1)
+    }
+
+    fn step_range(&self, from: u32, to: u32) -> Result<(u64, u64), JsValue> {
+        self.check_range("step indices", from, to, self.0.steps())
+    }
+}
+
+#[wasm_bindgen]
+impl TraceHandle {
+    /// Algorithm, dims, steps, columns, metrics and segments as JSON text.
+    #[wasm_bindgen(js_name = summaryJson)]
+    pub fn summary_json(&self) -> String {
+        serde_json::to_string(&self.0.summary()).expect("the summary serializes")
+    }
+
+    /// Points with point indices `from..to` (Int32Array, stride dims).
+    pub fn points(&self, from: u32, to: u32) -> Result<Vec<i32>, JsValue> {
+        let (from, to) = self.point_range(from, to)?;
+        // Every point lies between validated endpoints or within a validated
+        // arc's bounding box, so it fits in i32 (|c| <= 2^31 - 1).
+        Ok(self
+            .0
+            .points_flat(from, to)
+            .into_iter()
+            .map(|c| c as i32)
+            .collect())
+    }
+
+    /// Decision columns for step indices `from..to`, column-major.
+    pub fn decisions(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
+        let (from, to) = self.step_range(from, to)?;
+        Ok(self.0.decisions(from, to).columns.concat())
+    }
+
+    /// Deviation from the ideal path of points `from..to`.
+    pub fn deviation(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
+        let (from, to) = self.point_range(from, to)?;
+        Ok(self.0.deviation_range(from, to))
+    }
+
+    /// Per-axis error (Wang eq. 11) of points `from..to`, stride dims.
+    #[wasm_bindgen(js_name = axisError)]
+    pub fn axis_error(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
+        let (from, to) = self.point_range(from, to)?;
+        Ok(self.0.axis_error_range(from, to))
+    }
+
+    /// Packed steps (see `grid::Step`) of step indices `from..to`.
+    #[wasm_bindgen(js_name = stepCodes)]
+    pub fn step_codes(&self, from: u32, to: u32) -> Result<Vec<u16>, JsValue> {
+        let (from, to) = self.step_range(from, to)?;
+        Ok(self.0.step_range(from, to).iter().map(|s| s.0).collect())
+    }
+
+    /// One sentence: why step index `step` was taken.
+    pub fn explain(&self, step: u32) -> Result<String, JsValue> {
+        let (step, _) = self.step_range(step, step + 1)?;
+        Ok(self.0.explain(step))
+    }
+
+    /// The ideal path as a polyline for drawing (Float64Array, stride dims).
+    #[wasm_bindgen(js_name = idealPolyline)]
+    pub fn ideal_polyline(&self) -> Vec<f64> {
+        self.0.ideal_polyline()
+    }
+}

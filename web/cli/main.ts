@@ -1,0 +1,169 @@
+/**
+ * The voxpath command line: `voxpath trace --algorithm regions --from 0,0,0
+ * --to 10,7,6 --format json`. Flags are generated from the algorithm
+ * catalogue: an option `maxSteps` is the flag `--max-steps`.
+ *
+ * Exit codes: 0 success, 1 failure while running, 2 bad command line or
+ * rejected input (with a one-line error naming the flag, then usage).
+ */
+import { algorithms, trace, traceToCsv, traceToJson, traceToTable, VoxpathError } from '../core/index.js';
+import type { AlgorithmInfo, OptionSpec } from '../core/index.js';
+
+const FORMATS = ['json', 'csv', 'table'] as const;
+type Format = (typeof FORMATS)[number];
+
+/** A command-line mistake: reported in one line plus usage, exit code 2. */
+class UsageError extends Error {}
+
+function flagOf(option: string): string {
+  return '--' + option.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase());
+}
+
+function optionOf(flag: string): string {
+  return flag.replace(/^--/, '').replace(/-([a-z])/g, (_, c: string) => c.toUpperCase());
+}
+
+/** `--name value`, `--name=value` and bare `--help`, in order. */
+function parseFlags(args: string[]): Map<string, string> {
+  const flags = new Map<string, string>();
+  for (let i = 0; i < args.length; i++) {
+    const arg = args[i]!;
+    if (!arg.startsWith('--') || arg === '--') throw new UsageError(`unexpected argument '${arg}'`);
+    const eq = arg.indexOf('=');
+    const name = eq < 0 ? arg : arg.slice(0, eq);
+    if (flags.has(name)) throw new UsageError(`${name} is given twice`);
+    if (name === '--help') {
+      flags.set(name, '');
+    } else if (eq >= 0) {
+      flags.set(name, arg.slice(eq + 1));
+    } else {
+      const value = args[i + 1];
+      if (value === undefined || (value.startsWith('--') && !/^--?\d/.test(value))) {
+        throw new UsageError(`${name} needs a value`);
+      }
+      flags.set(name, value);
+      i++;
+    }
+  }
+  return flags;
+}
+
+/** A flag's text as the option's value, checked against its declared kind. */
+function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
+  const number = (part: string) => {
+    const v = Number(part);
+    if (part.trim() === '' || !Number.isFinite(v)) throw new UsageError(`${flag}: '${part}' is not a number`);
+    return v;
+  };
+  switch (spec.kind.type) {
+    case 'point':
+      return text.split(',').map(number);
+    case 'number':
+    case 'integer':
+      return number(text);
+    case 'choice':
+      if (!spec.kind.values.includes(text)) {
+        throw new UsageError(`${flag}: expected one of ${spec.kind.values.join(', ')}, got '${text}'`);
+      }
+      return text;
+  }
+}
+
+function describeOption(spec: OptionSpec): string {
+  const value =
+    spec.kind.type === 'point' ? 'X,Y[,Z...]' : spec.kind.type === 'choice' ? spec.kind.values.join('|') : 'N';
+  const flag = `${flagOf(spec.name)} ${value}`;
+  const extra = spec.required ? ' (required)' : spec.default !== null ? ` (default ${spec.default})` : '';
+  return `    ${flag.padEnd(30)} ${spec.doc}${extra}`;
+}
+
+function shortUsage(): string {
+  return [
+    'usage: voxpath trace --algorithm ID --from X,Y,Z --to X,Y,Z [options] [--format json|csv|table]',
+    '       voxpath algorithms',
+    '       voxpath --help',
+  ].join('\n');
+}
+
+function fullUsage(catalogue: AlgorithmInfo[]): string {
+  const lines = [
+    shortUsage(),
+    '',
+    'voxpath computes the single-axis steps a CNC controller (or a line renderer) takes,',
+    'and why it takes each one. Coordinates are integer grid units (one unit = one step).',
+    '',
+    'trace prints, for --format json, one object:',
+    '  { algorithm, dims, steps, points: [[x,y,z], ...] (steps + 1 of them),',
+    '    decisions: { <column>: [...] } (decisions.C[k] produced points[k + 1]),',
+    '    deviation: [...] (deviation[k] belongs to points[k]), metrics: {...}, notes: [...] }',
+    'and for csv / table one row per point with the decision that produced it.',
+    '',
+    'algorithms and their options:',
+  ];
+  for (const a of catalogue) {
+    lines.push('', `  ${a.id}: ${a.title}`, `    ${a.citation}`);
+    for (const o of a.options) lines.push(describeOption(o));
+  }
+  return lines.join('\n') + '\n';
+}
+
+async function runTrace(flags: Map<string, string>, catalogue: AlgorithmInfo[]): Promise<string> {
+  const id = flags.get('--algorithm');
+  if (id === undefined) throw new UsageError('--algorithm is required');
+  const info = catalogue.find((a) => a.id === id);
+  if (!info) throw new UsageError(`--algorithm: unknown algorithm '${id}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
+  const format = (flags.get('--format') ?? 'json') as Format;
+  if (!FORMATS.includes(format)) throw new UsageError(`--format: expected json, csv or table, got '${format}'`);
+  const options: Record<string, unknown> = { algorithm: id };
+  for (const [flag, text] of flags) {
+    if (flag === '--algorithm' || flag === '--format') continue;
+    const spec = info.options.find((o) => o.name === optionOf(flag));
+    if (!spec) {
+      throw new UsageError(`unknown flag ${flag} for ${id} (it takes ${info.options.map((o) => flagOf(o.name)).join(', ')})`);
+    }
+    options[spec.name] = optionValue(spec, flag, text);
+  }
+  const result = await trace({ ...(options as { algorithm: string; from: number[]; to: number[] }) });
+  try {
+    if (format === 'csv') return traceToCsv(result);
+    if (format === 'table') return traceToTable(result);
+    return JSON.stringify(traceToJson(result)) + '\n';
+  } finally {
+    result.free();
+  }
+}
+
+async function write(text: string): Promise<void> {
+  await new Promise<void>((resolve, reject) => process.stdout.write(text, (e) => (e ? reject(e) : resolve())));
+}
+
+/** Runs the CLI with `args` (without node and script); resolves to the exit code. */
+export async function main(args: string[]): Promise<number> {
+  const [command, ...rest] = args;
+  try {
+    const catalogue = await algorithms();
+    if (command === undefined || command === '--help' || command === 'help' || rest.includes('--help')) {
+      await write(fullUsage(catalogue));
+      return command === undefined ? 2 : 0;
+    }
+    if (command === 'algorithms') {
+      await write(catalogue.map((a) => `${a.id.padEnd(14)} ${a.title}\n${' '.repeat(15)}${a.citation}\n`).join(''));
+      return 0;
+    }
+    if (command !== 'trace') throw new UsageError(`unknown command '${command}'`);
+    await write(await runTrace(parseFlags(rest), catalogue));
+    return 0;
+  } catch (error) {
+    if (error instanceof UsageError) {
+      process.stderr.write(`voxpath: ${error.message}\n${shortUsage()}\n`);
+      return 2;
+    }
+    if (error instanceof VoxpathError) {
+      const where = error.field !== undefined ? `${flagOf(error.field)}: ` : '';
+      process.stderr.write(`voxpath: ${where}${error.detail}\n${shortUsage()}\n`);
+      return 2;
+    }
+    process.stderr.write(`voxpath: ${error instanceof Error ? (error.stack ?? error.message) : String(error)}\n`);
+    return 1;
+  }
+}

@@ -1,0 +1,15 @@
+/**
+ * voxpath's headless API, for Node (ESM) and browsers:
+ *
+ *   import { trace } from 'voxpath';
+ *   const t = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] });
+ *   t.points;          // Int32Array, stride t.dims
+ *   t.decisions.M;     // Float64Array, one value per step
+ *   t.deviation;       // Float64Array, one value per point
+ *   t.metrics;         // { steps, maxDeviation, meanDeviation, ... }
+ */
+export { trace, algorithms, Trace } from './trace.js';
+export { VoxpathError } from './errors.js';
+export { traceToJson, traceToCsv, traceToTable } from './export.js';
+export type { TraceJson } from './export.js';
+export type * from './types.js';

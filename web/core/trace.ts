@@ -1,0 +1,192 @@
+/**
+ * The headless API: `await trace(options)` runs an algorithm in the wasm core
+ * and returns a Trace. Bulk arrays are copied out of wasm memory in chunks of
+ * CHUNK rows, so a long path never needs a second full-size copy inside wasm.
+ */
+import { callCore } from './errors.js';
+import type { TraceHandle } from './pkg/voxpath.js';
+import type {
+  AlgorithmInfo,
+  ColumnSpec,
+  DecisionColumns,
+  Metrics,
+  SegmentInfo,
+  TraceOptions,
+  TraceSummary,
+} from './types.js';
+import { loadCore } from './wasm.js';
+
+/** Rows (points or steps) copied out of wasm per call. */
+const CHUNK = 1 << 16;
+
+type TypedArrayOf<T> = { new (length: number): T; BYTES_PER_ELEMENT: number };
+
+/** Copies rows `from..to` (stride values each) by chunks into one array. */
+function copyRows<T extends Int32Array | Float64Array>(
+  Kind: TypedArrayOf<T>,
+  from: number,
+  to: number,
+  stride: number,
+  read: (from: number, to: number) => ArrayLike<number>,
+): T {
+  const out = new Kind((to - from) * stride);
+  for (let k = from; k < to; k += CHUNK) {
+    (out as Int32Array | Float64Array).set(read(k, Math.min(to, k + CHUNK)), (k - from) * stride);
+  }
+  return out;
+}
+
+function checkRange(what: string, from: number, to: number, length: number): void {
+  if (!Number.isInteger(from) || !Number.isInteger(to) || from < 0 || to < from || to > length) {
+    throw new RangeError(`${what} ${from}..${to} is outside 0..${length}`);
+  }
+}
+
+/** A finished trace. Point index k runs 0..=steps, step index k runs 0..steps-1. */
+export class Trace implements TraceSummary {
+  readonly algorithm: string;
+  readonly dims: number;
+  readonly steps: number;
+  readonly start: number[];
+  readonly end: number[];
+  readonly columns: ColumnSpec[];
+  readonly metrics: Metrics;
+  readonly segments: SegmentInfo[];
+  readonly #handle: TraceHandle;
+  #points?: Int32Array;
+  #decisions?: DecisionColumns;
+  #deviation?: Float64Array;
+  #axisError?: Float64Array;
+
+  constructor(handle: TraceHandle) {
+    this.#handle = handle;
+    const s = JSON.parse(handle.summaryJson()) as TraceSummary;
+    this.algorithm = s.algorithm;
+    this.dims = s.dims;
+    this.steps = s.steps;
+    this.start = s.start;
+    this.end = s.end;
+    this.columns = s.columns;
+    this.metrics = s.metrics;
+    this.segments = s.segments;
+  }
+
+  /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
+  get points(): Int32Array {
+    this.#points ??= this.pointsInRange(0, this.steps + 1);
+    return this.#points;
+  }
+
+  /** Points with point indices from..to, flat with stride dims. */
+  pointsInRange(from: number, to: number): Int32Array {
+    checkRange('point indices', from, to, this.steps + 1);
+    return copyRows(Int32Array, from, to, this.dims, (a, b) => this.#handle.points(a, b));
+  }
+
+  /** Point index k as an array of coordinates. */
+  point(k: number): number[] {
+    return Array.from(this.pointsInRange(k, k + 1));
+  }
+
+  /**
+   * Every decision column over all steps: decisions[name][k] produced
+   * points[k + 1]. Computed on first use; for long traces prefer
+   * decisionsInRange, which costs memory for the range only.
+   */
+  get decisions(): DecisionColumns {
+    this.#decisions ??= this.decisionsInRange(0, this.steps);
+    return this.#decisions;
+  }
+
+  /**
+   * Decision columns for step indices from..to, recomputed exactly by the
+   * core. Category and flag columns are Uint8Array (category values index the
+   * column's labels); numeric columns are Float64Array (NaN where a column does
+   * not apply to a step).
+   */
+  decisionsInRange(from: number, to: number): DecisionColumns {
+    checkRange('step indices', from, to, this.steps);
+    const out: DecisionColumns = {};
+    for (const c of this.columns) {
+      out[c.name] = c.kind === 'category' || c.kind === 'flag' ? new Uint8Array(to - from) : new Float64Array(to - from);
+    }
+    for (let k = from; k < to; k += CHUNK) {
+      const end = Math.min(to, k + CHUNK);
+      const flat = callCore(() => this.#handle.decisions(k, end));
+      this.columns.forEach((c, i) => {
+        out[c.name]!.set(flat.subarray(i * (end - k), (i + 1) * (end - k)), k - from);
+      });
+    }
+    return out;
+  }
+
+  /** Distance of every point from the ideal path (grid units); deviation[k] belongs to points[k]. */
+  get deviation(): Float64Array {
+    this.#deviation ??= this.deviationInRange(0, this.steps + 1);
+    return this.#deviation;
+  }
+
+  deviationInRange(from: number, to: number): Float64Array {
+    checkRange('point indices', from, to, this.steps + 1);
+    return copyRows(Float64Array, from, to, 1, (a, b) => this.#handle.deviation(a, b));
+  }
+
+  /** Per-axis error of every point (Wang eq. 11), flat with stride dims. */
+  get axisError(): Float64Array {
+    this.#axisError ??= this.axisErrorInRange(0, this.steps + 1);
+    return this.#axisError;
+  }
+
+  axisErrorInRange(from: number, to: number): Float64Array {
+    checkRange('point indices', from, to, this.steps + 1);
+    return copyRows(Float64Array, from, to, this.dims, (a, b) => this.#handle.axisError(a, b));
+  }
+
+  /**
+   * Packed steps of step indices from..to: bit a set when axis a moves, bit
+   * 8 + a set when it moves in the negative direction (a step/direction pulse
+   * pair per axis).
+   */
+  stepCodes(from: number, to: number): Uint16Array {
+    checkRange('step indices', from, to, this.steps);
+    return callCore(() => this.#handle.stepCodes(from, to));
+  }
+
+  /** One plain sentence: why step index k was taken. */
+  explain(step: number): string {
+    checkRange('step index', step, step + 1, this.steps);
+    return callCore(() => this.#handle.explain(step));
+  }
+
+  /** The ideal path as a polyline for drawing, flat with stride dims. */
+  idealPolyline(): Float64Array {
+    return this.#handle.idealPolyline();
+  }
+
+  /** Releases the core's memory now instead of at garbage collection. */
+  free(): void {
+    this.#handle.free();
+  }
+}
+
+/** Runs one trace; rejects with a VoxpathError naming the option at fault. */
+export async function trace(options: TraceOptions): Promise<Trace> {
+  const core = await loadCore();
+  const request = JSON.stringify(options, (_key, value: unknown) => {
+    // Typed arrays travel as plain lists; NaN and Infinity as text, so the
+    // core reports them by name instead of JSON turning them into null.
+    if (ArrayBuffer.isView(value)) return Array.from(value as unknown as ArrayLike<number>);
+    if (typeof value === 'number' && !Number.isFinite(value)) return String(value);
+    return value;
+  });
+  return new Trace(callCore(() => core.trace(request)));
+}
+
+let catalogue: AlgorithmInfo[] | undefined;
+
+/** Every algorithm voxpath runs, with citation, teaching text, columns and options. */
+export async function algorithms(): Promise<AlgorithmInfo[]> {
+  const core = await loadCore();
+  catalogue ??= JSON.parse(core.catalogueJson()) as AlgorithmInfo[];
+  return catalogue;
+}
