@@ -22,6 +22,9 @@ declare module 'vitest' {
 
 export default async function setup(project: TestProject): Promise<() => Promise<void>> {
   const root = project.config.root;
+  if (!existsSync(join(root, 'web', 'index.html'))) {
+    throw new Error('web/index.html is missing: the browser tests test the page, so there must be one');
+  }
   if (!existsSync(join(root, 'web', 'core', 'pkg', 'voxpath_bg.wasm'))) {
     throw new Error('web/core/pkg is not built: run `node scripts/setup.mjs test` first (npm test does)');
   }
