@@ -13,6 +13,7 @@
 
 pub mod algorithms;
 pub mod error;
+pub mod experiment;
 pub mod grid;
 pub mod ideal;
 pub mod line;

@@ -121,6 +121,22 @@ impl Request {
         Ok(())
     }
 
+    /// This request without the named options (for a request that drives
+    /// other requests, such as an experiment over many lines).
+    pub fn without(&self, names: &[&str]) -> Request {
+        let mut options = self.options.clone();
+        options.retain(|k, _| !names.contains(&k.as_str()));
+        Request {
+            algorithm: self.algorithm.clone(),
+            options,
+        }
+    }
+
+    /// Sets an option.
+    pub fn set(&mut self, name: &str, value: Value) {
+        self.options.insert(name.to_string(), value);
+    }
+
     fn get(&self, name: &str) -> Option<&Value> {
         self.options.get(name)
     }

@@ -46,6 +46,21 @@ pub fn catalogue_json() -> String {
     serde_json::to_string(crate::algorithms::ALGORITHMS).expect("the catalogue serializes")
 }
 
+/// The experiment catalogue as JSON text (see `experiment::ExperimentInfo`).
+#[wasm_bindgen(js_name = experimentsJson)]
+pub fn experiments_json() -> String {
+    serde_json::to_string(crate::experiment::EXPERIMENTS).expect("the catalogue serializes")
+}
+
+/// Runs the `random-lines` experiment; returns its result as JSON text.
+#[wasm_bindgen(js_name = randomLinesJson)]
+pub fn random_lines_json(request_json: &str) -> Result<String, JsValue> {
+    let result = crate::Request::from_json(request_json)
+        .and_then(|r| crate::experiment::random_lines(&r))
+        .map_err(|e| to_js_error(&e))?;
+    Ok(serde_json::to_string(&result).expect("the result serializes"))
+}
+
 /// A finished trace held in wasm memory.
 #[wasm_bindgen]
 pub struct TraceHandle(Trace);

@@ -6,8 +6,19 @@
  * Exit codes: 0 success, 1 failure while running, 2 bad command line or
  * rejected input (with a one-line error naming the flag, then usage).
  */
-import { algorithms, trace, traceToCsv, traceToJson, traceToTable, VoxpathError } from '../core/index.js';
-import type { AlgorithmInfo, OptionSpec } from '../core/index.js';
+import {
+  algorithms,
+  experiments,
+  randomLines,
+  randomLinesToCsv,
+  randomLinesToTable,
+  trace,
+  traceToCsv,
+  traceToJson,
+  traceToTable,
+  VoxpathError,
+} from '../core/index.js';
+import type { AlgorithmInfo, ExperimentInfo, OptionSpec } from '../core/index.js';
 
 const FORMATS = ['json', 'csv', 'table'] as const;
 type Format = (typeof FORMATS)[number];
@@ -80,12 +91,18 @@ function describeOption(spec: OptionSpec): string {
 function shortUsage(): string {
   return [
     'usage: voxpath trace --algorithm ID --from X,Y,Z --to X,Y,Z [options] [--format json|csv|table]',
+    '       voxpath experiment random-lines [--count N] [--seed N] [--algorithm ID] [options] [--format ...]',
     '       voxpath algorithms',
     '       voxpath --help',
   ].join('\n');
 }
 
-function fullUsage(catalogue: AlgorithmInfo[]): string {
+interface Catalogues {
+  algorithms: AlgorithmInfo[];
+  experiments: ExperimentInfo[];
+}
+
+function fullUsage({ algorithms: catalogue, experiments: experimentList }: Catalogues): string {
   const lines = [
     shortUsage(),
     '',
@@ -104,26 +121,47 @@ function fullUsage(catalogue: AlgorithmInfo[]): string {
     lines.push('', `  ${a.id}: ${a.title}`, `    ${a.citation}`);
     for (const o of a.options) lines.push(describeOption(o));
   }
+  lines.push('', 'experiments (any option of --algorithm, except --from and --to, applies to every line):');
+  for (const e of experimentList) {
+    lines.push('', `  ${e.id}: ${e.title}`, `    ${e.citation}`);
+    lines.push(describeOption({ name: 'algorithm', kind: { type: 'choice', values: catalogue.map((a) => a.id) }, required: false, default: 'regions', doc: 'Algorithm that traces every line.' }));
+    for (const o of e.options) lines.push(describeOption(o));
+  }
   return lines.join('\n') + '\n';
 }
 
-async function runTrace(flags: Map<string, string>, catalogue: AlgorithmInfo[]): Promise<string> {
-  const id = flags.get('--algorithm');
+/** The algorithm a command names with --algorithm (or `fallback`). */
+function pickAlgorithm(flags: Map<string, string>, catalogue: AlgorithmInfo[], fallback?: string): AlgorithmInfo {
+  const id = flags.get('--algorithm') ?? fallback;
   if (id === undefined) throw new UsageError('--algorithm is required');
   const info = catalogue.find((a) => a.id === id);
   if (!info) throw new UsageError(`--algorithm: unknown algorithm '${id}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
+  return info;
+}
+
+function pickFormat(flags: Map<string, string>): Format {
   const format = (flags.get('--format') ?? 'json') as Format;
   if (!FORMATS.includes(format)) throw new UsageError(`--format: expected json, csv or table, got '${format}'`);
-  const options: Record<string, unknown> = { algorithm: id };
+  return format;
+}
+
+/** Options from flags, each checked against its spec; --algorithm and --format are the command's own. */
+function optionsFromFlags(flags: Map<string, string>, specs: OptionSpec[], what: string): Record<string, unknown> {
+  const options: Record<string, unknown> = {};
   for (const [flag, text] of flags) {
     if (flag === '--algorithm' || flag === '--format') continue;
-    const spec = info.options.find((o) => o.name === optionOf(flag));
-    if (!spec) {
-      throw new UsageError(`unknown flag ${flag} for ${id} (it takes ${info.options.map((o) => flagOf(o.name)).join(', ')})`);
-    }
+    const spec = specs.find((o) => o.name === optionOf(flag));
+    if (!spec) throw new UsageError(`unknown flag ${flag} for ${what} (it takes ${specs.map((o) => flagOf(o.name)).join(', ')})`);
     options[spec.name] = optionValue(spec, flag, text);
   }
-  const result = await trace({ ...(options as { algorithm: string; from: number[]; to: number[] }) });
+  return options;
+}
+
+async function runTrace(flags: Map<string, string>, catalogues: Catalogues): Promise<string> {
+  const info = pickAlgorithm(flags, catalogues.algorithms);
+  const format = pickFormat(flags);
+  const options = optionsFromFlags(flags, info.options, info.id);
+  const result = await trace({ ...options, algorithm: info.id } as Parameters<typeof trace>[0]);
   try {
     if (format === 'csv') return traceToCsv(result);
     if (format === 'table') return traceToTable(result);
@@ -131,6 +169,23 @@ async function runTrace(flags: Map<string, string>, catalogue: AlgorithmInfo[]):
   } finally {
     result.free();
   }
+}
+
+async function runExperiment(args: string[], catalogues: Catalogues): Promise<string> {
+  const [id, ...rest] = args;
+  const experiment = catalogues.experiments.find((e) => e.id === id);
+  if (!experiment) {
+    throw new UsageError(`experiment: expected one of ${catalogues.experiments.map((e) => e.id).join(', ')}, got '${id ?? ''}'`);
+  }
+  const flags = parseFlags(rest);
+  const info = pickAlgorithm(flags, catalogues.algorithms, 'regions');
+  const format = pickFormat(flags);
+  const specs = [...experiment.options, ...info.options.filter((o) => o.name !== 'from' && o.name !== 'to')];
+  const options = optionsFromFlags(flags, specs, `${experiment.id} with ${info.id}`);
+  const result = await randomLines({ ...options, algorithm: info.id });
+  if (format === 'csv') return randomLinesToCsv(result);
+  if (format === 'table') return randomLinesToTable(result);
+  return JSON.stringify(result) + '\n';
 }
 
 async function write(text: string): Promise<void> {
@@ -141,17 +196,22 @@ async function write(text: string): Promise<void> {
 export async function main(args: string[]): Promise<number> {
   const [command, ...rest] = args;
   try {
-    const catalogue = await algorithms();
+    const catalogues = { algorithms: await algorithms(), experiments: await experiments() };
     if (command === undefined || command === '--help' || command === 'help' || rest.includes('--help')) {
-      await write(fullUsage(catalogue));
+      await write(fullUsage(catalogues));
       return command === undefined ? 2 : 0;
     }
     if (command === 'algorithms') {
-      await write(catalogue.map((a) => `${a.id.padEnd(14)} ${a.title}\n${' '.repeat(15)}${a.citation}\n`).join(''));
+      await write(catalogues.algorithms.map((a) => `${a.id.padEnd(14)} ${a.title}\n${' '.repeat(15)}${a.citation}\n`).join(''));
       return 0;
     }
-    if (command !== 'trace') throw new UsageError(`unknown command '${command}'`);
-    await write(await runTrace(parseFlags(rest), catalogue));
+    if (command === 'trace') {
+      await write(await runTrace(parseFlags(rest), catalogues));
+    } else if (command === 'experiment') {
+      await write(await runExperiment(rest, catalogues));
+    } else {
+      throw new UsageError(`unknown command '${command}'`);
+    }
     return 0;
   } catch (error) {
     if (error instanceof UsageError) {

@@ -6,6 +6,7 @@
  * decision that produced it (the decision of step k - 1, empty on row 0),
  * as Wang's Tables 1 and 2 print them.
  */
+import type { MeasureSummary, RandomLinesResult } from './experiment.js';
 import type { Trace } from './trace.js';
 import type { ColumnSpec, DecisionColumns } from './types.js';
 
@@ -57,6 +58,14 @@ export function traceToJson(trace: Trace): TraceJson {
   };
 }
 
+/** Columns separated by two spaces: numbers right-aligned, a label column (the first, if asked) left-aligned. */
+function alignedTable(header: string[], body: string[][], labelFirst = false): string[] {
+  const widths = header.map((h, i) => Math.max(h.length, ...body.map((r) => r[i]!.length)));
+  const pad = (cell: string, i: number) => (labelFirst && i === 0 ? cell.padEnd(widths[i]!) : cell.padStart(widths[i]!));
+  const line = (r: string[]) => r.map(pad).join('  ');
+  return [line(header), ...body.map(line)];
+}
+
 /** Header and rows of the per-point table; cells are strings. */
 function rows(trace: Trace): { header: string[]; body: string[][] } {
   const header = ['k', ...AXES.slice(0, trace.dims), ...trace.columns.map((c) => c.name), 'deviation'];
@@ -90,20 +99,69 @@ export function traceToCsv(trace: Trace): string {
 /** An aligned plain-text table with the metrics below it (the CLI's --format table). */
 export function traceToTable(trace: Trace): string {
   const { header, body } = rows(trace);
-  const widths = header.map((h, i) => Math.max(h.length, ...body.map((r) => r[i]!.length)));
-  const line = (r: string[]) => r.map((cell, i) => cell.padStart(widths[i]!)).join('  ');
   const m = trace.metrics;
   const moving = m.stepsMovingAxes.map((n, i) => `${n} x ${i + 1}-axis`).join(', ');
   return [
     `${trace.algorithm}: ${trace.steps} steps from (${trace.start.join(', ')}) to (${trace.end.join(', ')})`,
     ...trace.segments.map((s) => s.note),
     '',
-    line(header),
-    ...body.map(line),
+    ...alignedTable(header, body),
     '',
     `steps moving: ${moving}; pulses per axis: ${m.pulsesByAxis.join(', ')}; ties: ${m.ties}`,
     `deviation: max ${m.maxDeviation.toFixed(6)}, mean ${m.meanDeviation.toFixed(6)}, std ${m.stdDeviation.toFixed(6)}`,
     `max axis error (eq. 11): ${m.maxAxisError.map((e) => e.toFixed(6)).join(', ')}`,
+    '',
+  ].join('\n');
+}
+
+function lineRows(result: RandomLinesResult): { header: string[]; body: string[][] } {
+  const dims = result.lines[0]?.to.length ?? 3;
+  const header = [
+    'line',
+    ...AXES.slice(0, dims).map((a) => `to_${a}`),
+    'steps',
+    'perp_max',
+    'perp_mean',
+    'perp_std',
+    'eq11_max',
+    'eq11_mean',
+    'eq11_std',
+  ];
+  const body = result.lines.map((l, i) => [
+    String(i + 1),
+    ...l.to.map(String),
+    String(l.steps),
+    ...[l.perpendicular, l.axisError].flatMap((s) => [s.max, s.mean, s.std].map((v) => v.toFixed(6))),
+  ]);
+  return { header, body };
+}
+
+/** One CSV row per random line (the CLI's experiment --format csv). */
+export function randomLinesToCsv(result: RandomLinesResult): string {
+  const { header, body } = lineRows(result);
+  return [header, ...body].map((r) => r.join(',')).join('\n') + '\n';
+}
+
+/** Per-line rows, then the spread of each statistic beside Wang's Figure 9. */
+export function randomLinesToTable(result: RandomLinesResult): string {
+  const { header, body } = lineRows(result);
+  const spread = (m: MeasureSummary, key: 'max' | 'mean' | 'std') => [m[key].max, m[key].min, m[key].mean].map((v) => v.toFixed(4));
+  const summary = (['mean', 'max', 'std'] as const).map((key) => [
+    `delta_${key[0]!.toUpperCase()}${key.slice(1)} per line`,
+    ...spread(result.perpendicular, key),
+    ...spread(result.axisError, key),
+    ...spread(result.paperFigure9, key),
+  ]);
+  const summaryHeader = ['statistic', 'perp max', 'perp min', 'perp mean', 'eq11 max', 'eq11 min', 'eq11 mean', 'Fig9 max', 'Fig9 min', 'Fig9 mean'];
+  return [
+    `random-lines: ${result.lines.length} lines from the origin to points in 0..${result.maxCoordinate}, traced with ${result.algorithm} (seed ${result.seed})`,
+    '',
+    ...alignedTable(header, body),
+    '',
+    'Spread over the lines of each per-line statistic (perp = perpendicular distance, eq11 = Wang eq. (11) error, Fig9 = Wang Figure 9 as printed):',
+    ...alignedTable(summaryHeader, summary, true),
+    '',
+    `Note: ${result.paperFigure9Erratum}`,
     '',
   ].join('\n');
 }

@@ -10,6 +10,8 @@
  */
 export { trace, algorithms, Trace } from './trace.js';
 export { VoxpathError } from './errors.js';
-export { traceToJson, traceToCsv, traceToTable } from './export.js';
+export { experiments, randomLines } from './experiment.js';
+export type { ErrorStats, ExperimentInfo, MeasureSummary, RandomLinesOptions, RandomLinesResult, Spread } from './experiment.js';
+export { randomLinesToCsv, randomLinesToTable, traceToCsv, traceToJson, traceToTable } from './export.js';
 export type { TraceJson } from './export.js';
 export type * from './types.js';

@@ -5,6 +5,7 @@
  */
 import { callCore } from './errors.js';
 import type { TraceHandle } from './pkg/voxpath.js';
+import { encodeRequest } from './request.js';
 import type {
   AlgorithmInfo,
   ColumnSpec,
@@ -172,13 +173,7 @@ export class Trace implements TraceSummary {
 /** Runs one trace; rejects with a VoxpathError naming the option at fault. */
 export async function trace(options: TraceOptions): Promise<Trace> {
   const core = await loadCore();
-  const request = JSON.stringify(options, (_key, value: unknown) => {
-    // Typed arrays travel as plain lists; NaN and Infinity as text, so the
-    // core reports them by name instead of JSON turning them into null.
-    if (ArrayBuffer.isView(value)) return Array.from(value as unknown as ArrayLike<number>);
-    if (typeof value === 'number' && !Number.isFinite(value)) return String(value);
-    return value;
-  });
+  const request = encodeRequest(options);
   return new Trace(callCore(() => core.trace(request)));
 }
 

@@ -1,0 +1,393 @@
+//! The batch experiment of Wang et al. (2020), section 3.2 and Figure 9:
+//! many seeded random lines from the origin, each traced by one algorithm,
+//! and the distribution of their error statistics.
+//!
+//! Two error measures per point, because the paper uses both:
+//! - the perpendicular distance to the ideal line (the Error column of its
+//!   Tables 1 and 2, and the radius of the straightness cylinder of Fig. 6b);
+//! - the norm of the per-axis error vector of eq. (11),
+//!   delta_i = sqrt(phi_x^2 + phi_y^2 + phi_z^2), the error against the ideal
+//!   position after the same number of steps, which reaches 0.7071 exactly
+//!   where both passive axes are half a unit off.
+
+use crate::error::Error;
+use crate::grid::MAX_AXES;
+use crate::request::{OptionKind, OptionSpec, Request};
+use serde::Serialize;
+use serde_json::Value;
+
+/// Most lines one experiment may trace.
+pub const MAX_LINES: u64 = 100_000;
+
+/// SplitMix64 (Steele, Lea & Flood 2014): a tiny, well-mixed generator whose
+/// sequence for a seed never changes, so an experiment is reproducible from
+/// its seed on every machine and in every future version.
+struct SplitMix64(u64);
+
+impl SplitMix64 {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in 0..=max, without modulo bias (rejects the incomplete top range).
+    fn up_to(&mut self, max: u64) -> u64 {
+        let span = max + 1;
+        let limit = u64::MAX - u64::MAX % span;
+        loop {
+            let v = self.next();
+            if v < limit {
+                return v % span;
+            }
+        }
+    }
+}
+
+/// Max, mean and (population) standard deviation of one line's errors.
+#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+pub struct ErrorStats {
+    pub max: f64,
+    pub mean: f64,
+    pub std: f64,
+}
+
+impl ErrorStats {
+    fn of(values: &[f64]) -> ErrorStats {
+        let n = values.len() as f64;
+        let mean = values.iter().sum::<f64>() / n;
+        let var = values.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / n;
+        ErrorStats {
+            max: values.iter().copied().fold(0.0, f64::max),
+            mean,
+            std: var.sqrt(),
+        }
+    }
+}
+
+/// One random line and its errors.
+#[derive(Serialize, Debug, Clone, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct LineResult {
+    pub to: Vec<i64>,
+    pub steps: u64,
+    /// Perpendicular distance of each point to the ideal line.
+    pub perpendicular: ErrorStats,
+    /// Norm of the per-axis error vector, Wang eq. (11).
+    pub axis_error: ErrorStats,
+}
+
+/// Max, min and mean over all lines of one per-line statistic (Fig. 9 names
+/// them delta_(Mean-Max), delta_(Mean-Min), delta_(Mean-Mean), ...).
+#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+pub struct Spread {
+    pub max: f64,
+    pub min: f64,
+    pub mean: f64,
+}
+
+impl Spread {
+    fn of(values: impl Iterator<Item = f64> + Clone) -> Spread {
+        let n = values.clone().count() as f64;
+        Spread {
+            max: values.clone().fold(f64::NEG_INFINITY, f64::max),
+            min: values.clone().fold(f64::INFINITY, f64::min),
+            mean: values.sum::<f64>() / n,
+        }
+    }
+}
+
+/// The spread of each per-line statistic of one error measure.
+#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct MeasureSummary {
+    pub max: Spread,
+    pub mean: Spread,
+    pub std: Spread,
+}
+
+impl MeasureSummary {
+    fn of(lines: &[LineResult], pick: impl Fn(&LineResult) -> ErrorStats) -> MeasureSummary {
+        MeasureSummary {
+            max: Spread::of(lines.iter().map(|l| pick(l).max)),
+            mean: Spread::of(lines.iter().map(|l| pick(l).mean)),
+            std: Spread::of(lines.iter().map(|l| pick(l).std)),
+        }
+    }
+}
+
+#[derive(Serialize, Debug, Clone, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct RandomLines {
+    pub experiment: &'static str,
+    pub algorithm: String,
+    pub seed: u64,
+    pub max_coordinate: i64,
+    pub lines: Vec<LineResult>,
+    pub perpendicular: MeasureSummary,
+    pub axis_error: MeasureSummary,
+    /// Wang's Figure 9, for comparison with `axis_error`.
+    pub paper_figure_9: MeasureSummary,
+    pub paper_figure_9_erratum: &'static str,
+}
+
+/// The options `random-lines` takes itself; any other option is passed to
+/// the algorithm of every line (and checked by it).
+pub const OPTIONS: &[OptionSpec] = &[
+    OptionSpec {
+        name: "count",
+        kind: OptionKind::Integer,
+        required: false,
+        default: Some("100"),
+        doc: "How many random lines (Wang: 100), at most 100000.",
+    },
+    OptionSpec {
+        name: "seed",
+        kind: OptionKind::Integer,
+        required: false,
+        default: Some("1"),
+        doc: "Seed of the SplitMix64 generator: the same seed gives the same lines everywhere.",
+    },
+    OptionSpec {
+        name: "maxCoordinate",
+        kind: OptionKind::Integer,
+        required: false,
+        default: Some("100"),
+        doc: "End coordinates are drawn uniformly from 0 to this (Wang: 100).",
+    },
+    OptionSpec {
+        name: "dims",
+        kind: OptionKind::Integer,
+        required: false,
+        default: None,
+        doc: "Axes per line (default 3, within what the algorithm takes).",
+    },
+];
+
+/// One experiment of the catalogue.
+#[derive(Serialize)]
+pub struct ExperimentInfo {
+    pub id: &'static str,
+    pub title: &'static str,
+    pub citation: &'static str,
+    pub options: &'static [OptionSpec],
+}
+
+pub const EXPERIMENTS: &[ExperimentInfo] = &[ExperimentInfo {
+    id: "random-lines",
+    title: "Error statistics of seeded random lines from the origin",
+    citation: "Wang et al. (2020), section 3.2 and Figure 9",
+    options: OPTIONS,
+}];
+
+/// Wang's Figure 9 as printed: the spread over their 100 lines of the
+/// per-line max, mean and standard deviation of the eq. (11) error.
+// 0.7071 is the paper's printed value (four decimals), not a stand-in for sqrt(2)/2.
+#[allow(clippy::approx_constant)]
+pub const PAPER_FIGURE_9: MeasureSummary = MeasureSummary {
+    max: Spread {
+        max: 0.7071,
+        min: 0.7071,
+        mean: 0.6472,
+    },
+    mean: Spread {
+        max: 0.4119,
+        min: 0.2469,
+        mean: 0.3792,
+    },
+    std: Spread {
+        max: 0.2250,
+        min: 0.1390,
+        mean: 0.1534,
+    },
+};
+
+/// What is wrong with Figure 9 as printed.
+pub const PAPER_FIGURE_9_ERRATUM: &str = "Figure 9 gives 0.7071 as both the largest and the smallest per-line maximum, yet 0.6472 as their mean, which cannot be: a mean lies between the smallest and the largest value. A run of 100 lines with seed 1 gives a smallest per-line maximum of 0.4472 and matches the other eight values to within 0.02, which also shows that Figure 9 measures the error of eq. (11), not the perpendicular distance.";
+
+/// Runs `random-lines`: `count` lines from the origin to points with
+/// coordinates drawn uniformly from 0..=maxCoordinate (Wang: 100 lines,
+/// 0..=100, 3 axes), traced with `algorithm`.
+pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
+    let info = crate::algorithms::find(&request.algorithm)?;
+    let count = request.integer("count")?.unwrap_or(100);
+    if !(1..=MAX_LINES as i64).contains(&count) {
+        return Err(Error::field(
+            "count",
+            format!("must be 1 to {MAX_LINES}, got {count}"),
+        ));
+    }
+    let seed = request.integer("seed")?.unwrap_or(1);
+    if seed < 0 {
+        return Err(Error::field(
+            "seed",
+            format!("must be 0 or more, got {seed}"),
+        ));
+    }
+    let max_coordinate = request.integer("maxCoordinate")?.unwrap_or(100);
+    if !(1..=10_000).contains(&max_coordinate) {
+        return Err(Error::field(
+            "maxCoordinate",
+            format!("must be 1 to 10000, got {max_coordinate}"),
+        ));
+    }
+    let dims = request
+        .integer("dims")?
+        .unwrap_or(info.min_dims.max(3).min(info.max_dims) as i64);
+    if !(info.min_dims as i64..=info.max_dims as i64).contains(&dims) {
+        return Err(Error::field(
+            "dims",
+            format!(
+                "{} takes {} to {} axes, got {dims}",
+                info.id, info.min_dims, info.max_dims
+            ),
+        ));
+    }
+    let dims = dims as usize;
+    let mut rng = SplitMix64(seed as u64);
+    let mut lines = Vec::with_capacity(count as usize);
+    for _ in 0..count {
+        let to: Vec<i64> = (0..dims)
+            .map(|_| rng.up_to(max_coordinate as u64) as i64)
+            .collect();
+        let own: Vec<&str> = OPTIONS.iter().map(|o| o.name).collect();
+        let mut line = request.without(&own);
+        line.set("from", Value::from(vec![0; dims]));
+        line.set("to", Value::from(to.clone()));
+        let trace = (info.trace)(&line)?;
+        let n = trace.steps();
+        let perpendicular = ErrorStats::of(&trace.deviation_range(0, n + 1));
+        let phi = trace.axis_error_range(0, n + 1);
+        let norms: Vec<f64> = phi
+            .chunks(dims)
+            .map(|p| p.iter().map(|v| v * v).sum::<f64>().sqrt())
+            .collect();
+        debug_assert!(dims <= MAX_AXES);
+        lines.push(LineResult {
+            to,
+            steps: n,
+            perpendicular,
+            axis_error: ErrorStats::of(&norms),
+        });
+    }
+    Ok(RandomLines {
+        experiment: "random-lines",
+        algorithm: info.id.to_string(),
+        seed: seed as u64,
+        max_coordinate,
+        perpendicular: MeasureSummary::of(&lines, |l| l.perpendicular),
+        axis_error: MeasureSummary::of(&lines, |l| l.axis_error),
+        paper_figure_9: PAPER_FIGURE_9,
+        paper_figure_9_erratum: PAPER_FIGURE_9_ERRATUM,
+        lines,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(json: &str) -> Result<RandomLines, Error> {
+        random_lines(&Request::from_json(json).unwrap())
+    }
+
+    #[test]
+    fn splitmix64_matches_the_reference_sequence() {
+        // First outputs for seed 1234567 of the reference C implementation
+        // (Vigna, splitmix64.c), as used to seed xoshiro generators.
+        let mut r = SplitMix64(1234567);
+        assert_eq!(r.next(), 6457827717110365317);
+        assert_eq!(r.next(), 3203168211198807973);
+        assert_eq!(r.next(), 9817491932198370423);
+    }
+
+    #[test]
+    fn same_seed_same_lines_and_errors_within_wang_s_bound() {
+        let a = run(r#"{"algorithm":"regions","count":100,"seed":7}"#).unwrap();
+        let b = run(r#"{"algorithm":"regions","count":100,"seed":7}"#).unwrap();
+        assert_eq!(a, b);
+        assert_eq!(a.lines.len(), 100);
+        assert!(
+            a.lines
+                .iter()
+                .all(|l| l.to.iter().all(|&c| (0..=100).contains(&c)))
+        );
+        // Section 3.2: no error exceeds sqrt(2)/2, by either measure.
+        assert!(a.perpendicular.max.max <= std::f64::consts::FRAC_1_SQRT_2);
+        assert!(a.axis_error.max.max <= std::f64::consts::FRAC_1_SQRT_2 + 1e-12);
+        // The perpendicular distance never exceeds the error at equal progress.
+        for l in &a.lines {
+            assert!(l.perpendicular.max <= l.axis_error.max + 1e-12);
+        }
+        let c = run(r#"{"algorithm":"regions","count":100,"seed":8}"#).unwrap();
+        assert_ne!(a.lines, c.lines);
+    }
+
+    #[test]
+    fn seed_1_reproduces_figure_9_except_its_erratum() {
+        // The claim PAPER_FIGURE_9_ERRATUM makes, checked.
+        let r = run(r#"{"algorithm":"regions","count":100,"seed":1}"#).unwrap();
+        let (ours, paper) = (r.axis_error, PAPER_FIGURE_9);
+        for (a, b) in [
+            (ours.max.max, paper.max.max),
+            (ours.max.mean, paper.max.mean),
+            (ours.mean.max, paper.mean.max),
+            (ours.mean.min, paper.mean.min),
+            (ours.mean.mean, paper.mean.mean),
+            (ours.std.max, paper.std.max),
+            (ours.std.min, paper.std.min),
+            (ours.std.mean, paper.std.mean),
+        ] {
+            assert!((a - b).abs() < 0.02, "{a} vs {b}");
+        }
+        assert!((ours.max.min - 0.4472).abs() < 1e-4);
+        // The perpendicular distance is smaller: Figure 9 is not about it.
+        assert!(r.perpendicular.mean.mean < paper.mean.mean - 0.04);
+    }
+
+    #[test]
+    fn summary_is_the_spread_of_the_per_line_statistics() {
+        let r = run(r#"{"algorithm":"regions","count":20,"seed":3}"#).unwrap();
+        let means: Vec<f64> = r.lines.iter().map(|l| l.axis_error.mean).collect();
+        assert_eq!(
+            r.axis_error.mean.max,
+            means.iter().copied().fold(f64::MIN, f64::max)
+        );
+        assert_eq!(
+            r.axis_error.mean.min,
+            means.iter().copied().fold(f64::MAX, f64::min)
+        );
+        assert!((r.axis_error.mean.mean - means.iter().sum::<f64>() / 20.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn options_are_checked_and_passed_through() {
+        assert_eq!(
+            run(r#"{"algorithm":"regions","count":0}"#)
+                .unwrap_err()
+                .to_string(),
+            "count: must be 1 to 100000, got 0"
+        );
+        assert_eq!(
+            run(r#"{"algorithm":"regions","dims":2}"#)
+                .unwrap_err()
+                .to_string(),
+            "dims: regions takes 3 to 3 axes, got 2"
+        );
+        // Unknown options reach the algorithm, which names them.
+        assert_eq!(
+            run(r#"{"algorithm":"regions","centre":1}"#)
+                .unwrap_err()
+                .field_name(),
+            Some("centre")
+        );
+        let hold = run(r#"{"algorithm":"regions","count":30,"seed":2,"tie":"hold"}"#).unwrap();
+        let advance = run(r#"{"algorithm":"regions","count":30,"seed":2}"#).unwrap();
+        assert_eq!(
+            hold.lines.iter().map(|l| &l.to).collect::<Vec<_>>(),
+            advance.lines.iter().map(|l| &l.to).collect::<Vec<_>>()
+        );
+    }
+}

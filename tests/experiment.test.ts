@@ -1,0 +1,63 @@
+// The random-lines experiment (Wang et al. 2020, section 3.2, Figure 9)
+// through the built wasm package and the CLI.
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+import { randomLines, trace, VoxpathError } from '../web/core/index.js';
+
+const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
+
+describe('randomLines', () => {
+  it('is reproducible from its seed and summarises per-line statistics', async () => {
+    const a = await randomLines({ algorithm: 'regions', count: 40, seed: 11 });
+    const b = await randomLines({ algorithm: 'regions', count: 40, seed: 11 });
+    expect(a).toEqual(b);
+    expect(a.lines).toHaveLength(40);
+    const maxima = a.lines.map((l) => l.perpendicular.max);
+    expect(a.perpendicular.max.max).toBe(Math.max(...maxima));
+    expect(a.perpendicular.max.min).toBe(Math.min(...maxima));
+    // Section 3.2: every error is within sqrt(2)/2.
+    expect(a.axisError.max.max).toBeLessThanOrEqual(Math.SQRT1_2 + 1e-12);
+  });
+
+  it('measures the same lines a trace does', async () => {
+    const r = await randomLines({ algorithm: 'regions', count: 3, seed: 5 });
+    for (const line of r.lines) {
+      const t = await trace({ algorithm: 'regions', from: [0, 0, 0], to: line.to });
+      expect(line.steps).toBe(t.steps);
+      expect(line.perpendicular.max).toBe(t.metrics.maxDeviation);
+      expect(line.perpendicular.mean).toBeCloseTo(t.metrics.meanDeviation, 12);
+    }
+  });
+
+  it('passes algorithm options to every line and names bad ones', async () => {
+    const hold = await randomLines({ algorithm: 'regions', count: 30, seed: 2, tie: 'hold' });
+    expect(hold.lines).toHaveLength(30);
+    await expect(randomLines({ algorithm: 'regions', count: -1 })).rejects.toMatchObject({ field: 'count' });
+    await expect(randomLines({ algorithm: 'regions', tie: 'never' })).rejects.toBeInstanceOf(VoxpathError);
+  });
+});
+
+describe('voxpath experiment random-lines', () => {
+  const run = (...args: string[]) => spawnSync(process.execPath, [BIN, 'experiment', 'random-lines', ...args], { encoding: 'utf8' });
+
+  it('prints JSON, CSV and a table beside Figure 9', () => {
+    const json = JSON.parse(run('--count', '10', '--seed', '1').stdout);
+    expect(json.lines).toHaveLength(10);
+    expect(json.paperFigure9.mean.mean).toBe(0.3792);
+    const csv = run('--count', '10', '--seed', '1', '--format', 'csv').stdout.trim().split('\n');
+    expect(csv[0]).toBe('line,to_x,to_y,to_z,steps,perp_max,perp_mean,perp_std,eq11_max,eq11_mean,eq11_std');
+    expect(csv).toHaveLength(11);
+    const table = run('--count', '10', '--seed', '1', '--format', 'table').stdout;
+    expect(table).toMatch(/^delta_Mean per line/m);
+    expect(table).toContain('Figure 9 gives 0.7071 as both the largest and the smallest');
+  });
+
+  it('rejects unknown flags with exit 2', () => {
+    const r = run('--count', '10', '--from', '1,1,1');
+    expect(r.status).toBe(2);
+    expect(r.stderr.split('\n')[0]).toBe(
+      'voxpath: unknown flag --from for random-lines with regions (it takes --count, --seed, --max-coordinate, --dims, --tie, --max-steps)',
+    );
+  });
+});
