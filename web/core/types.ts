@@ -73,7 +73,12 @@ export interface IdealPath {
 export interface OptionSpec {
   /** Name in the JS API; the CLI flag is its kebab-case form (maxSteps -> --max-steps). */
   name: string;
-  kind: { type: 'point' } | { type: 'number' } | { type: 'integer' } | { type: 'choice'; values: string[] };
+  kind:
+    | { type: 'point' }
+    | { type: 'number' }
+    | { type: 'integer' }
+    | { type: 'choice'; values: string[] }
+    | { type: 'boolean' };
   required: boolean;
   /** Default shown to users, or null when required or derived from other input. */
   default: string | null;
