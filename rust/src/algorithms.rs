@@ -30,6 +30,8 @@ pub struct AlgorithmInfo {
 /// Every algorithm, in the order the page lists them.
 pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::line::regions_wang::INFO,
+    &crate::line::bresenham2d::INFO,
+    &crate::line::bresenham3d::INFO,
 ];
 
 /// The algorithm with this id, or an error listing the known ids.

@@ -3,6 +3,8 @@
 //! mirroring of negative directions, Wang's GCD reduction, the order in which
 //! tied axes go, and the finish rule of the algorithms that can drift.
 
+pub mod bresenham2d;
+pub mod bresenham3d;
 pub mod regions_wang;
 
 use crate::algorithms::AlgorithmInfo;
