@@ -32,6 +32,7 @@ pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::line::regions_wang::INFO,
     &crate::line::bresenham2d::INFO,
     &crate::line::bresenham3d::INFO,
+    &crate::line::nd::INFO,
 ];
 
 /// The algorithm with this id, or an error listing the known ids.
