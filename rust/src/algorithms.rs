@@ -33,6 +33,7 @@ pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::line::bresenham2d::INFO,
     &crate::line::bresenham3d::INFO,
     &crate::line::nd::INFO,
+    &crate::line::liu_float::INFO,
 ];
 
 /// The algorithm with this id, or an error listing the known ids.

@@ -5,6 +5,7 @@
 
 pub mod bresenham2d;
 pub mod bresenham3d;
+pub mod liu_float;
 pub mod nd;
 pub mod regions_wang;
 
