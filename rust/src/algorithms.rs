@@ -34,6 +34,8 @@ pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::line::bresenham3d::INFO,
     &crate::line::nd::INFO,
     &crate::line::liu_float::INFO,
+    &crate::line::greedy::INFO,
+    &crate::line::walk6::INFO,
 ];
 
 /// The algorithm with this id, or an error listing the known ids.

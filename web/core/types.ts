@@ -100,7 +100,10 @@ export interface AlgorithmInfo {
   /** Axis counts the algorithm accepts. */
   minDims: number;
   maxDims: number;
-  /** Default tie policy, or null when the algorithm has no ties. */
+  /**
+   * Default tie policy, or null when the algorithm takes no `tie` option (it has
+   * no ties, or, like greedy and walk6, orders tied axes with `tieAxis`).
+   */
   defaultTie: TiePolicy | null;
 }
 

@@ -5,9 +5,11 @@
 
 pub mod bresenham2d;
 pub mod bresenham3d;
+pub mod greedy;
 pub mod liu_float;
 pub mod nd;
 pub mod regions_wang;
+pub mod walk6;
 
 use crate::algorithms::AlgorithmInfo;
 use crate::error::Error;
