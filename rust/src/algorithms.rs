@@ -36,6 +36,7 @@ pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::line::liu_float::INFO,
     &crate::line::greedy::INFO,
     &crate::line::walk6::INFO,
+    &crate::line::dda::INFO,
 ];
 
 /// The algorithm with this id, or an error listing the known ids.

@@ -5,6 +5,7 @@
 
 pub mod bresenham2d;
 pub mod bresenham3d;
+pub mod dda;
 pub mod greedy;
 pub mod liu_float;
 pub mod nd;
