@@ -2,7 +2,7 @@
 //! with the integer rules: add Δa/n to a float accumulator per axis every
 //! step and round it to the nearest cell.
 
-use super::{GUARD_LABELS, Guard, Mirror, step_target};
+use super::{GUARD_LABELS, Guard, Mirror, column, step_target};
 use crate::algorithms::AlgorithmInfo;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
@@ -35,25 +35,38 @@ pub struct DdaWhy {
     pub dims: usize,
 }
 
-const fn acc_column(name: &'static str, doc: &'static str) -> Column {
-    Column {
-        name,
-        kind: ColumnKind::Float,
-        doc,
-    }
-}
-
 impl Decision for DdaWhy {
     const COLUMNS: &'static [Column] = &[
-        acc_column(
+        column(
             "accX",
+            ColumnKind::Float,
             "x accumulator after adding Δx/n (f64, grid units); the point's x is floor(accX + 0.5).",
         ),
-        acc_column("accY", "y accumulator after adding Δy/n."),
-        acc_column("accZ", "z accumulator after adding Δz/n."),
-        acc_column("accA", "a accumulator after adding Δa/n."),
-        acc_column("accB", "b accumulator after adding Δb/n."),
-        acc_column("accC", "c accumulator after adding Δc/n."),
+        column(
+            "accY",
+            ColumnKind::Float,
+            "y accumulator after adding Δy/n.",
+        ),
+        column(
+            "accZ",
+            ColumnKind::Float,
+            "z accumulator after adding Δz/n.",
+        ),
+        column(
+            "accA",
+            ColumnKind::Float,
+            "a accumulator after adding Δa/n.",
+        ),
+        column(
+            "accB",
+            ColumnKind::Float,
+            "b accumulator after adding Δb/n.",
+        ),
+        column(
+            "accC",
+            ColumnKind::Float,
+            "c accumulator after adding Δc/n.",
+        ),
         Column {
             name: "guard",
             kind: ColumnKind::Category(GUARD_LABELS),
@@ -69,7 +82,7 @@ impl Decision for DdaWhy {
                 f64::NAN
             };
         }
-        row[MAX_AXES] = self.guards.iter().fold(Guard::Rule, |g, &h| g.worst(h)) as u8 as f64;
+        row[MAX_AXES] = Guard::of_step(&self.guards[..self.dims]) as u8 as f64;
     }
 
     fn explain(&self, _from: &Point, step: Step) -> String {

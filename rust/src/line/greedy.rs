@@ -7,7 +7,7 @@
 //! until the distances left are equal, then alternates: it heads for the
 //! goal, not along the line.
 
-use super::{Mirror, TIE_AXIS, TieAxis, step_target};
+use super::{Mirror, TIE_AXIS, TieAxis, column, step_target};
 use crate::algorithms::AlgorithmInfo;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
@@ -50,25 +50,38 @@ pub struct GreedyWhy {
     pub order: TieAxis,
 }
 
-const fn candidate_column(name: &'static str, doc: &'static str) -> Column {
-    Column {
-        name,
-        kind: ColumnKind::Float,
-        doc,
-    }
-}
-
 impl Decision for GreedyWhy {
     const COLUMNS: &'static [Column] = &[
-        candidate_column(
+        column(
             "dist2X",
+            ColumnKind::Float,
             "Squared distance to the goal if x moved one unit toward it (grid units^2, exact below 2^53); empty when x is already there.",
         ),
-        candidate_column("dist2Y", "Squared distance to the goal if y moved."),
-        candidate_column("dist2Z", "Squared distance to the goal if z moved."),
-        candidate_column("dist2A", "Squared distance to the goal if a moved."),
-        candidate_column("dist2B", "Squared distance to the goal if b moved."),
-        candidate_column("dist2C", "Squared distance to the goal if c moved."),
+        column(
+            "dist2Y",
+            ColumnKind::Float,
+            "Squared distance to the goal if y moved.",
+        ),
+        column(
+            "dist2Z",
+            ColumnKind::Float,
+            "Squared distance to the goal if z moved.",
+        ),
+        column(
+            "dist2A",
+            ColumnKind::Float,
+            "Squared distance to the goal if a moved.",
+        ),
+        column(
+            "dist2B",
+            ColumnKind::Float,
+            "Squared distance to the goal if b moved.",
+        ),
+        column(
+            "dist2C",
+            ColumnKind::Float,
+            "Squared distance to the goal if c moved.",
+        ),
         Column {
             name: "axis",
             kind: ColumnKind::Category(&AXIS_NAMES),

@@ -8,7 +8,7 @@
 //! arithmetic this is Bresenham's rule (epsilon = Wang's M / 2Δx); kept to d
 //! decimals, the slope k itself is rounded and the error accumulates.
 
-use super::{GUARD_LABELS, Guard, Mirror, axis_list, step_target};
+use super::{GUARD_LABELS, Guard, Mirror, axis_list, column, step_target, wang_discriminant};
 use crate::algorithms::AlgorithmInfo;
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
@@ -90,37 +90,34 @@ pub struct LiuWhy {
     pub decimals: u32,
 }
 
-const fn float_column(name: &'static str, doc: &'static str) -> Column {
-    Column {
-        name,
-        kind: ColumnKind::Float,
-        doc,
-    }
-}
-
 impl Decision for LiuWhy {
     const COLUMNS: &'static [Column] = &[
-        float_column(
+        column(
             "epsX",
+            ColumnKind::Float,
             "Liu's epsilon(x) before the step, kept to d decimals; empty when x is active.",
         ),
-        float_column(
+        column(
             "epsY",
+            ColumnKind::Float,
             "Liu's epsilon(y) before the step (eq. 14), kept to d decimals.",
         ),
-        float_column(
+        column(
             "epsZ",
+            ColumnKind::Float,
             "Liu's epsilon(z) before the step (eq. 15), kept to d decimals.",
         ),
-        float_column(
+        column(
             "driftX",
+            ColumnKind::Float,
             "epsX minus its exact value at this point (Wang's discriminant / 2|Δactive|).",
         ),
-        float_column(
+        column(
             "driftY",
+            ColumnKind::Float,
             "epsY minus its exact value: the rounding accumulated so far (Wang Fig. 10).",
         ),
-        float_column("driftZ", "epsZ minus its exact value."),
+        column("driftZ", ColumnKind::Float, "epsZ minus its exact value."),
         Column {
             name: "guard",
             kind: ColumnKind::Category(GUARD_LABELS),
@@ -138,7 +135,7 @@ impl Decision for LiuWhy {
             row[axis] = self.epsilon[axis].unwrap_or(f64::NAN);
             row[3 + axis] = self.drift[axis].unwrap_or(f64::NAN);
         }
-        row[6] = self.guards.iter().fold(Guard::Rule, |g, &h| g.worst(h)) as u8 as f64;
+        row[6] = Guard::of_step(&self.guards) as u8 as f64;
         row[7] = self.tie as u8 as f64;
     }
 
@@ -221,11 +218,9 @@ impl LiuFloat {
     /// Liu's epsilon for `axis` computed exactly at the current point:
     /// Wang's discriminant (eq. 6) over 2|Δactive|.
     fn exact_epsilon(&self, axis: usize) -> f64 {
-        let dx = self.mirror.longest() as i128;
-        let da = self.mirror.magnitude(axis) as i128;
-        let reference = dx - self.left[self.mirror.major()] as i128;
-        let progress = da - self.left[axis] as i128;
-        let m = 2 * da * reference - 2 * dx * progress + 2 * da - dx;
+        let (dx, da) = (self.mirror.longest(), self.mirror.magnitude(axis));
+        let reference = dx - self.left[self.mirror.major()];
+        let m = wang_discriminant(da, dx, reference, da - self.left[axis]);
         m as f64 / (2 * dx) as f64
     }
 }

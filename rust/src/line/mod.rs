@@ -17,7 +17,7 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, gcd};
 use crate::ideal::IdealPath;
 use crate::request::{OptionKind, OptionSpec, Request};
-use crate::trace::{Stepper, TiePolicy, Trace, TraceBuilder};
+use crate::trace::{Column, ColumnKind, Stepper, TiePolicy, Trace, TraceBuilder};
 use std::cmp::Ordering;
 
 /// Traces one straight move with the stepper `make` builds from the request's
@@ -247,9 +247,14 @@ impl Guard {
         }
     }
 
-    /// The most notable guard among several axes (Forced and Held over Rule).
-    pub fn worst(self, other: Guard) -> Guard {
-        if self == Guard::Rule { other } else { self }
+    /// The guard of a step over several axes: the first that the finish
+    /// rule overrode, else Rule.
+    pub fn of_step(guards: &[Guard]) -> Guard {
+        guards
+            .iter()
+            .copied()
+            .find(|&g| g != Guard::Rule)
+            .unwrap_or(Guard::Rule)
     }
 
     /// A clause for an explanation, "" when the rule decided.
@@ -266,6 +271,26 @@ impl Guard {
             ),
         }
     }
+}
+
+/// Wang's eq. (6) for one passive axis against the active one, in units
+/// travelled toward the end: D = 2|Δa|·x - 2|Δx|·a + 2|Δa| - |Δx|, with x and
+/// a the units the active and the passive axis have gone. Its sign says
+/// whether the ideal line leaves the cell past the middle of the passive
+/// axis. Each product is below 2^64, so it is formed in i128.
+pub fn wang_discriminant(
+    passive_len: i64,
+    active_len: i64,
+    active_done: i64,
+    passive_done: i64,
+) -> i128 {
+    let (da, dx) = (passive_len as i128, active_len as i128);
+    2 * da * active_done as i128 - 2 * dx * passive_done as i128 + 2 * da - dx
+}
+
+/// A decision column; a shorthand for the per-axis column lists.
+pub const fn column(name: &'static str, kind: ColumnKind, doc: &'static str) -> Column {
+    Column { name, kind, doc }
 }
 
 /// "4 > 0", "0", "-2 < 0".
@@ -324,6 +349,8 @@ mod tests {
         assert_eq!(Guard::apply(false, 2, 3), (false, Guard::Rule));
         assert_eq!(Guard::apply(true, 2, 3), (true, Guard::Rule));
         assert_eq!(Guard::apply(false, 0, 0), (false, Guard::Rule));
+        assert_eq!(Guard::of_step(&[Guard::Rule, Guard::Forced]), Guard::Forced);
+        assert_eq!(Guard::of_step(&[Guard::Rule; 3]), Guard::Rule);
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! the fourth and fifth axes (H for A, K for B); with three axes it is the
 //! method of discriminate regions, M and N.
 
-use super::{GCD, Mirror, axis_list, signed_comparison, step_target};
+use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::AlgorithmInfo;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
@@ -41,37 +41,34 @@ pub struct NdWhy {
     pub tie_policy: TiePolicy,
 }
 
-const fn d_column(name: &'static str, doc: &'static str) -> Column {
-    Column {
-        name,
-        kind: ColumnKind::Int,
-        doc,
-    }
-}
-
 impl Decision for NdWhy {
     const COLUMNS: &'static [Column] = &[
-        d_column(
+        column(
             "Dx",
+            ColumnKind::Int,
             "Discriminant of x before the step (Wang eq. 6/16); empty when x is active or absent.",
         ),
-        d_column(
+        column(
             "Dy",
+            ColumnKind::Int,
             "Discriminant of y before the step (Wang's M when x is active).",
         ),
-        d_column(
+        column(
             "Dz",
+            ColumnKind::Int,
             "Discriminant of z before the step (Wang's N when x is active).",
         ),
-        d_column(
+        column(
             "Da",
+            ColumnKind::Int,
             "Discriminant of a before the step (Wang's H, eq. 16-17).",
         ),
-        d_column(
+        column(
             "Db",
+            ColumnKind::Int,
             "Discriminant of b before the step (Wang's K, eq. 16-17).",
         ),
-        d_column("Dc", "Discriminant of c before the step."),
+        column("Dc", ColumnKind::Int, "Discriminant of c before the step."),
         Column {
             name: "tie",
             kind: ColumnKind::Flag,
@@ -169,17 +166,14 @@ impl Nd {
         }
     }
 
-    /// Eq. (6) generalised: D_a at point `p` from the point alone,
-    /// 2|Δa|·(progress on the reference axis) - 2|Δref|·(progress on a)
-    /// + 2|Δa| - |Δref|, in i128 (exact anywhere within +-2^30).
+    /// Eq. (6) generalised: D_a at point `p` from the point alone (see
+    /// [`wang_discriminant`]), exact anywhere within +-2^30.
     pub fn closed_form(&self, p: &Point) -> [Option<i64>; MAX_AXES] {
-        let reference = self.mirror.progress(p, self.mirror.major()) as i128;
-        let dx = self.longest as i128;
+        let reference = self.mirror.progress(p, self.mirror.major());
         std::array::from_fn(|a| {
             self.discriminant[a]?;
-            let da = self.magnitude[a] as i128;
-            let progress = self.mirror.progress(p, a) as i128;
-            Some((2 * da * reference - 2 * dx * progress + 2 * da - dx) as i64)
+            let progress = self.mirror.progress(p, a);
+            Some(wang_discriminant(self.magnitude[a], self.longest, reference, progress) as i64)
         })
     }
 }

@@ -11,7 +11,7 @@
 //! measured along the direction of travel, so the paper's positive-direction
 //! formulas apply unchanged (the paper's "intrinsic symmetry").
 
-use super::{GCD, Mirror, signed_comparison, step_target};
+use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::AlgorithmInfo;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
@@ -352,13 +352,15 @@ impl RegionsWang {
     /// point alone, M = 2 dy (x - xs) - 2 dx (y - ys) + 2 dy - dx (in i128,
     /// so any point within +-2^30 is exact). Used to check the recurrence.
     pub fn closed_form(&self, p: &Point) -> [Option<i64>; 2] {
-        let progress = |axis: usize| self.mirror.progress(p, axis) as i128;
-        let dx = self.magnitude[self.reference] as i128;
         let mut out = [None; 2];
         for i in 0..self.geometry.passive_count as usize {
             let axis = self.geometry.passive[i] as usize;
-            let dy = self.magnitude[axis] as i128;
-            let m = 2 * dy * progress(self.reference) - 2 * dx * progress(axis) + 2 * dy - dx;
+            let m = wang_discriminant(
+                self.magnitude[axis],
+                self.magnitude[self.reference],
+                self.mirror.progress(p, self.reference),
+                self.mirror.progress(p, axis),
+            );
             out[i] = Some(m as i64);
         }
         out

@@ -9,7 +9,7 @@
 //! the steps that axis has taken. The face crossed first is the smallest
 //! t_a; two fractions compare exactly by cross-multiplying, in i128.
 
-use super::{Mirror, TIE_AXIS, TieAxis, axis_list, step_target};
+use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
 use crate::algorithms::AlgorithmInfo;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
@@ -69,14 +69,6 @@ pub struct Walk6Why {
     pub order: TieAxis,
 }
 
-const fn t_column(name: &'static str, doc: &'static str) -> Column {
-    Column {
-        name,
-        kind: ColumnKind::Float,
-        doc,
-    }
-}
-
 impl Decision for Walk6Why {
     const COLUMNS: &'static [Column] = &[
         Column {
@@ -84,18 +76,36 @@ impl Decision for Walk6Why {
             kind: ColumnKind::Category(&AXIS_NAMES),
             doc: "The axis whose cell face the segment crosses next (the axis that steps).",
         },
-        t_column(
+        column(
             "tX",
+            ColumnKind::Float,
             "Where the segment crosses the next x face, as a fraction of its length: (2k_x + 1)/(2|Δx|); empty when x has arrived.",
         ),
-        t_column(
+        column(
             "tY",
+            ColumnKind::Float,
             "Where the segment crosses the next y face: (2k_y + 1)/(2|Δy|).",
         ),
-        t_column("tZ", "Where the segment crosses the next z face."),
-        t_column("tA", "Where the segment crosses the next a face."),
-        t_column("tB", "Where the segment crosses the next b face."),
-        t_column("tC", "Where the segment crosses the next c face."),
+        column(
+            "tZ",
+            ColumnKind::Float,
+            "Where the segment crosses the next z face.",
+        ),
+        column(
+            "tA",
+            ColumnKind::Float,
+            "Where the segment crosses the next a face.",
+        ),
+        column(
+            "tB",
+            ColumnKind::Float,
+            "Where the segment crosses the next b face.",
+        ),
+        column(
+            "tC",
+            ColumnKind::Float,
+            "Where the segment crosses the next c face.",
+        ),
         Column {
             name: "tie",
             kind: ColumnKind::Flag,
