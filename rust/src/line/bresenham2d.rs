@@ -320,6 +320,10 @@ impl Stepper for Bresenham2d {
     }
 
     fn setup_note(&self) -> String {
+        if self.octant == 0 {
+            return "No motion: the start is the end, so there is no octant and no step."
+                .to_string();
+        }
         let (major, minor) = (AXIS_NAMES[self.major], AXIS_NAMES[1 - self.major]);
         let mut s = format!(
             "Octant {} (Saleem Fig. 1): |Δ{major}| = {} is the major axis and steps every time; {minor} steps when its error, starting at 0 and growing by 2|Δ{minor}| = {}, exceeds |Δ{major}| = {}.",

@@ -41,7 +41,7 @@ pub fn trace_line<S: Stepper>(
 /// rules on |Δ| and then steps each axis toward the end point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Mirror {
-    pub from: Point,
+    from: Point,
     /// Direction of travel per axis (+1 for an axis that does not move).
     sign: [i64; MAX_AXES],
     /// |Δ| per axis, grid units (at most 2^31).
