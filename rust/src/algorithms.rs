@@ -28,7 +28,16 @@ pub struct AlgorithmInfo {
 }
 
 /// Every algorithm, in the order the page lists them.
-pub const ALGORITHMS: &[&AlgorithmInfo] = &[&crate::line::regions_wang::INFO];
+pub const ALGORITHMS: &[&AlgorithmInfo] = &[
+    &crate::line::regions_wang::INFO,
+    &crate::line::bresenham2d::INFO,
+    &crate::line::bresenham3d::INFO,
+    &crate::line::nd::INFO,
+    &crate::line::liu_float::INFO,
+    &crate::line::greedy::INFO,
+    &crate::line::walk6::INFO,
+    &crate::line::dda::INFO,
+];
 
 /// The algorithm with this id, or an error listing the known ids.
 pub fn find(id: &str) -> Result<&'static AlgorithmInfo, Error> {

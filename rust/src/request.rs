@@ -20,6 +20,8 @@ pub enum OptionKind {
     Integer,
     /// One of a fixed set of words.
     Choice { values: &'static [&'static str] },
+    /// true or false.
+    Boolean,
 }
 
 /// One option an algorithm takes.
@@ -194,6 +196,17 @@ impl Request {
         }
     }
 
+    pub fn boolean(&self, name: &str) -> Result<Option<bool>, Error> {
+        match self.get(name) {
+            None => Ok(None),
+            Some(Value::Bool(b)) => Ok(Some(*b)),
+            Some(v) => Err(Error::field(
+                name,
+                format!("expected true or false, got {v}"),
+            )),
+        }
+    }
+
     pub fn choice(&self, spec: &OptionSpec) -> Result<Option<&str>, Error> {
         let OptionKind::Choice { values } = spec.kind else {
             unreachable!("choice() is for choice options");
@@ -319,6 +332,21 @@ mod tests {
         assert_eq!(
             r.tie(TiePolicy::Advance).unwrap_err().to_string(),
             "tie: expected 'advance' or 'hold', got 'sometimes'"
+        );
+    }
+
+    #[test]
+    fn booleans_are_json_true_or_false() {
+        let r = Request::from_json(r#"{"algorithm":"x","gcd":true,"other":"yes"}"#).unwrap();
+        assert_eq!(r.boolean("gcd").unwrap(), Some(true));
+        assert_eq!(r.boolean("absent").unwrap(), None);
+        assert_eq!(
+            r.boolean("other").unwrap_err().to_string(),
+            "other: expected true or false, got \"yes\""
+        );
+        assert_eq!(
+            serde_json::to_value(OptionKind::Boolean).unwrap(),
+            serde_json::json!({"type": "boolean"})
         );
     }
 }

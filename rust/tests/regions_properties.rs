@@ -60,15 +60,16 @@ proptest! {
 
     #[test]
     fn every_line_ends_exactly_within_the_bound(
-        (from, to, tie) in line_strategy()
+        (from, to, tie) in line_strategy(), gcd in any::<bool>()
     ) {
         let delta = from.delta_to(&to);
         let longest = delta[..3].iter().map(|d| d.abs()).max().unwrap();
         let ideal = IdealPath::Line { from, to };
-        let mut stepper = RegionsWang::new(from, to, tie);
+        let mut stepper = RegionsWang::with_gcd(from, to, tie, gcd);
         let mut p = from;
         let mut steps = 0i64;
-        // The recurrence (eq. 8) equals the closed form (eq. 6) before every step.
+        // The recurrence (eq. 8) equals the closed form (eq. 6) before every
+        // step, with or without the GCD reduction (section 4).
         while let Some((step, why)) = stepper.clone().next_step() {
             prop_assert_eq!(why.discriminants, stepper.closed_form(&p), "at {:?}", p);
             stepper.next_step();

@@ -1,27 +1,37 @@
 //! A trace keeps 2 bytes per step and recomputes decisions, points and
-//! deviations for any range; those must equal what a direct run produces.
+//! deviations for any range; those must equal what a direct run of the
+//! algorithm's stepper produces, for every algorithm of the catalogue.
+
+mod common;
 
 use voxpath::grid::Point;
 use voxpath::ideal::IdealPath;
+use voxpath::line::TieAxis;
+use voxpath::line::bresenham2d::{Bresenham2d, Variant};
+use voxpath::line::bresenham3d::Bresenham3d;
+use voxpath::line::dda::Dda;
+use voxpath::line::greedy::Greedy;
+use voxpath::line::liu_float::LiuFloat;
+use voxpath::line::nd::Nd;
 use voxpath::line::regions_wang::RegionsWang;
+use voxpath::line::walk6::Walk6;
 use voxpath::trace::{CHECKPOINT_INTERVAL, Decision, Stepper, TiePolicy};
 
 struct DirectRun {
     points: Vec<Point>,
-    rows: Vec<[f64; 5]>,
+    rows: Vec<Vec<f64>>,
     explanations: Vec<String>,
 }
 
-fn direct(from: Point, to: Point) -> DirectRun {
-    let mut s = RegionsWang::new(from, to, TiePolicy::Advance);
+fn direct<S: Stepper>(mut stepper: S, from: Point) -> DirectRun {
     let mut p = from;
     let mut out = DirectRun {
         points: vec![p],
         rows: Vec::new(),
         explanations: Vec::new(),
     };
-    while let Some((step, why)) = s.next_step() {
-        let mut row = [0.0; 5];
+    while let Some((step, why)) = stepper.next_step() {
+        let mut row = vec![f64::NAN; S::Why::COLUMNS.len()];
         why.write(&mut row);
         out.rows.push(row);
         out.explanations.push(why.explain(&p, step));
@@ -35,23 +45,22 @@ fn same(a: f64, b: f64) -> bool {
     a == b || (a.is_nan() && b.is_nan())
 }
 
-#[test]
-fn ranges_across_checkpoints_equal_a_direct_run() {
-    let from = Point::new(&[-7, 3, 100]);
-    let to = Point::new(&[
-        -7 + 3 * CHECKPOINT_INTERVAL as i64 + 123,
-        3 - 5000,
-        100 + 777,
-    ]);
-    let run = direct(from, to);
-    let trace = voxpath::trace_json(&format!(
-        r#"{{"algorithm":"regions","from":{:?},"to":{:?}}}"#,
+/// Traces `options` with `algorithm` and checks ranges that start before,
+/// on and after checkpoints against a direct run of `stepper`.
+fn check_replay<S: Stepper>(algorithm: &str, options: &str, from: Point, to: Point, stepper: S) {
+    let run = direct(stepper, from);
+    let trace = common::trace(&format!(
+        r#"{{"algorithm":"{algorithm}","from":{:?},"to":{:?}{options}}}"#,
         from.coords(),
         to.coords()
-    ))
-    .unwrap();
+    ));
     let steps = trace.steps();
-    assert_eq!(steps as usize, run.rows.len());
+    assert_eq!(steps as usize, run.rows.len(), "{algorithm}");
+    assert!(
+        steps > 2 * CHECKPOINT_INTERVAL,
+        "{algorithm}: the line must cross checkpoints"
+    );
+    assert_eq!(trace.columns(), S::Why::COLUMNS, "{algorithm}");
     let ideal = IdealPath::Line { from, to };
     for (a, b) in [
         (0, 10),
@@ -67,7 +76,7 @@ fn ranges_across_checkpoints_equal_a_direct_run() {
                 let expected = run.rows[a as usize + i][c];
                 assert!(
                     same(v, expected),
-                    "column {c} step {}: {v} vs {expected}",
+                    "{algorithm} column {c} step {}: {v} vs {expected}",
                     a as usize + i
                 );
             }
@@ -77,10 +86,14 @@ fn ranges_across_checkpoints_equal_a_direct_run() {
             .iter()
             .flat_map(|p| p.coords().to_vec())
             .collect();
-        assert_eq!(flat, expected);
+        assert_eq!(flat, expected, "{algorithm}");
         let dev = trace.deviation_range(a, b + 1);
         for (i, d) in dev.iter().enumerate() {
-            assert_eq!(*d, ideal.deviation(&run.points[a as usize + i]));
+            assert_eq!(
+                *d,
+                ideal.deviation(&run.points[a as usize + i]),
+                "{algorithm}"
+            );
         }
     }
     let max = run
@@ -88,11 +101,90 @@ fn ranges_across_checkpoints_equal_a_direct_run() {
         .iter()
         .map(|p| ideal.deviation(p))
         .fold(0.0, f64::max);
-    assert_eq!(trace.metrics().max_deviation, max);
-    assert_eq!(trace.metrics().pulses_by_axis, vec![12411, 5000, 777]);
+    assert_eq!(trace.metrics().max_deviation, max, "{algorithm}");
+    // Each axis pulses exactly |Δ| times: it only ever moves toward the end.
+    let delta = from.delta_to(&to);
+    let pulses: Vec<u64> = delta[..from.dims()]
+        .iter()
+        .map(|d| d.unsigned_abs())
+        .collect();
+    assert_eq!(trace.metrics().pulses_by_axis, pulses, "{algorithm}");
+    assert_eq!(
+        trace.metrics().steps_moving_axes.iter().sum::<u64>(),
+        steps,
+        "{algorithm}"
+    );
     for k in [0, 4095, 4096, 9000, steps - 1] {
-        assert_eq!(trace.explain(k), run.explanations[k as usize]);
+        assert_eq!(
+            trace.explain(k),
+            run.explanations[k as usize],
+            "{algorithm}"
+        );
     }
+}
+
+#[test]
+fn ranges_across_checkpoints_equal_a_direct_run() {
+    let n = 3 * CHECKPOINT_INTERVAL as i64 + 123;
+    let from3 = Point::new(&[-7, 3, 100]);
+    let to3 = Point::new(&[-7 + n, 3 - 5000, 100 + 777]);
+    let advance = TiePolicy::Advance;
+    check_replay(
+        "regions",
+        "",
+        from3,
+        to3,
+        RegionsWang::new(from3, to3, advance),
+    );
+    check_replay(
+        "bresenham3d",
+        r#","gcd":true"#,
+        from3,
+        to3,
+        Bresenham3d::new(from3, to3, TiePolicy::Hold, true),
+    );
+    check_replay(
+        "liu-float",
+        "",
+        from3,
+        to3,
+        LiuFloat::new(from3, to3, advance, 1),
+    );
+    let from2 = Point::new(&[12, -40]);
+    let to2 = Point::new(&[12 - 4000, -40 - n]);
+    let printed = r#","variant":"printed""#;
+    check_replay(
+        "bresenham2d",
+        printed,
+        from2,
+        to2,
+        Bresenham2d::new(from2, to2, TiePolicy::Hold, Variant::Printed),
+    );
+    check_replay(
+        "greedy",
+        "",
+        from2,
+        to2,
+        Greedy::new(from2, to2, TieAxis::Lower),
+    );
+    let from6 = Point::new(&[0, 1, 2, 3, 4, 5]);
+    let to6 = Point::new(&[n, 1 - 3000, 2 + 2000, 3 + n, 4 - 10, 5]);
+    check_replay(
+        "nd",
+        r#","tie":"hold""#,
+        from6,
+        to6,
+        Nd::new(from6, to6, TiePolicy::Hold, false),
+    );
+    check_replay("dda", "", from6, to6, Dda::new(from6, to6));
+    let higher = r#","tieAxis":"higher""#;
+    check_replay(
+        "walk6",
+        higher,
+        from3,
+        to3,
+        Walk6::new(from3, to3, TieAxis::Higher),
+    );
 }
 
 #[test]

@@ -77,12 +77,22 @@ function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
         throw new UsageError(`${flag}: expected one of ${spec.kind.values.join(', ')}, got '${text}'`);
       }
       return text;
+    case 'boolean':
+      if (text !== 'true' && text !== 'false') throw new UsageError(`${flag}: expected true or false, got '${text}'`);
+      return text === 'true';
   }
 }
 
 function describeOption(spec: OptionSpec): string {
+  const kind = spec.kind;
   const value =
-    spec.kind.type === 'point' ? 'X,Y[,Z...]' : spec.kind.type === 'choice' ? spec.kind.values.join('|') : 'N';
+    kind.type === 'point'
+      ? 'X,Y[,Z...]'
+      : kind.type === 'choice'
+        ? kind.values.join('|')
+        : kind.type === 'boolean'
+          ? 'true|false'
+          : 'N';
   const flag = `${flagOf(spec.name)} ${value}`;
   const extra = spec.required ? ' (required)' : spec.default !== null ? ` (default ${spec.default})` : '';
   return `    ${flag.padEnd(30)} ${spec.doc}${extra}`;

@@ -73,7 +73,12 @@ export interface IdealPath {
 export interface OptionSpec {
   /** Name in the JS API; the CLI flag is its kebab-case form (maxSteps -> --max-steps). */
   name: string;
-  kind: { type: 'point' } | { type: 'number' } | { type: 'integer' } | { type: 'choice'; values: string[] };
+  kind:
+    | { type: 'point' }
+    | { type: 'number' }
+    | { type: 'integer' }
+    | { type: 'choice'; values: string[] }
+    | { type: 'boolean' };
   required: boolean;
   /** Default shown to users, or null when required or derived from other input. */
   default: string | null;
@@ -95,7 +100,10 @@ export interface AlgorithmInfo {
   /** Axis counts the algorithm accepts. */
   minDims: number;
   maxDims: number;
-  /** Default tie policy, or null when the algorithm has no ties. */
+  /**
+   * Default tie policy, or null when the algorithm takes no `tie` option (it has
+   * no ties, or, like greedy and walk6, orders tied axes with `tieAxis`).
+   */
   defaultTie: TiePolicy | null;
 }
 

@@ -1,14 +1,24 @@
 //! Line algorithms: each turns a straight move between two grid points into
-//! single steps. One file per algorithm.
+//! single steps. One file per algorithm; the pieces they share live here:
+//! mirroring of negative directions, Wang's GCD reduction, the order in which
+//! tied axes go, and the finish rule of the algorithms that can drift.
 
+pub mod bresenham2d;
+pub mod bresenham3d;
+pub mod dda;
+pub mod greedy;
+pub mod liu_float;
+pub mod nd;
 pub mod regions_wang;
+pub mod walk6;
 
 use crate::algorithms::AlgorithmInfo;
 use crate::error::Error;
-use crate::grid::Point;
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, gcd};
 use crate::ideal::IdealPath;
-use crate::request::Request;
-use crate::trace::{Stepper, TiePolicy, Trace, TraceBuilder};
+use crate::request::{OptionKind, OptionSpec, Request};
+use crate::trace::{Column, ColumnKind, Stepper, TiePolicy, Trace, TraceBuilder};
+use std::cmp::Ordering;
 
 /// Traces one straight move with the stepper `make` builds from the request's
 /// endpoints and tie policy: the shape every line algorithm shares.
@@ -23,4 +33,333 @@ pub fn trace_line<S: Stepper>(
     let mut builder = TraceBuilder::new(from, req.max_steps()?);
     builder.run(make(from, to, tie), IdealPath::Line { from, to })?;
     Ok(builder.finish(info.id))
+}
+
+/// A move seen along its direction of travel. The documents derive their
+/// rules for positive directions only ("intrinsic symmetry", Wang section
+/// 2.2; "other octants", Saleem section 2): every algorithm here runs those
+/// rules on |Δ| and then steps each axis toward the end point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Mirror {
+    from: Point,
+    /// Direction of travel per axis (+1 for an axis that does not move).
+    sign: [i64; MAX_AXES],
+    /// |Δ| per axis, grid units (at most 2^31).
+    magnitude: [i64; MAX_AXES],
+}
+
+impl Mirror {
+    pub fn new(from: Point, to: Point) -> Mirror {
+        let delta = from.delta_to(&to);
+        let mut sign = [1; MAX_AXES];
+        let mut magnitude = [0; MAX_AXES];
+        for axis in 0..from.dims() {
+            sign[axis] = if delta[axis] < 0 { -1 } else { 1 };
+            magnitude[axis] = delta[axis].abs();
+        }
+        Mirror {
+            from,
+            sign,
+            magnitude,
+        }
+    }
+
+    pub fn dims(&self) -> usize {
+        self.from.dims()
+    }
+
+    pub fn sign(&self, axis: usize) -> i64 {
+        self.sign[axis]
+    }
+
+    /// |Δ| of `axis`, grid units.
+    pub fn magnitude(&self, axis: usize) -> i64 {
+        self.magnitude[axis]
+    }
+
+    /// The largest |Δ|: the step count of every one-step-per-active-unit rule.
+    pub fn longest(&self) -> i64 {
+        self.magnitude[..self.dims()]
+            .iter()
+            .copied()
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// Sum of |Δ|: the step count of every one-axis-per-step rule.
+    pub fn total(&self) -> u64 {
+        self.magnitude[..self.dims()].iter().sum::<i64>() as u64
+    }
+
+    /// The lowest-index axis with the largest |Δ| (the documents' "x" when
+    /// two axes share the largest distance).
+    pub fn major(&self) -> usize {
+        let longest = self.longest();
+        (0..self.dims())
+            .find(|&a| self.magnitude[a] == longest)
+            .unwrap_or(0)
+    }
+
+    /// True when `axis` moves as far as any axis (Wang's "active" axes).
+    pub fn is_active(&self, axis: usize) -> bool {
+        self.magnitude[axis] == self.longest()
+    }
+
+    /// Units travelled toward the end point on `axis` at point `p`.
+    pub fn progress(&self, p: &Point, axis: usize) -> i64 {
+        (p.get(axis) - self.from.get(axis)) * self.sign[axis]
+    }
+
+    /// `step` with `axis` also moved one unit toward the end point.
+    pub fn toward(&self, step: Step, axis: usize) -> Step {
+        step.with(axis, self.sign[axis])
+    }
+
+    /// Wang section 4: the greatest common divisor of the |Δ| when `reduce`,
+    /// else 1. Dividing every |Δ| by it leaves every discriminant's sign (it
+    /// is linear in the deltas) and so the path unchanged, and after
+    /// |Δ_major| / divisor steps the discriminants are back at their initial
+    /// values: the pattern repeats `divisor` times with no extra code.
+    pub fn divisor(&self, reduce: bool) -> i64 {
+        let g = self.magnitude[..self.dims()]
+            .iter()
+            .fold(0, |g, &m| gcd(g, m as u64)) as i64;
+        if reduce && g > 1 { g } else { 1 }
+    }
+
+    /// "(8, 6, 5)": |Δ| per axis divided by `divisor`.
+    pub fn magnitudes_text(&self, divisor: i64) -> String {
+        let parts: Vec<String> = (0..self.dims())
+            .map(|a| (self.magnitude[a] / divisor).to_string())
+            .collect();
+        format!("({})", parts.join(", "))
+    }
+
+    /// The sentence of a setup note about GCD reduction, or "" without it.
+    pub fn divisor_note(&self, divisor: i64) -> String {
+        if divisor == 1 {
+            return String::new();
+        }
+        format!(
+            " GCD reduction (Wang section 4): |Δ| = {} / {divisor} = {}, so the decision values are {divisor} times smaller and their pattern of {} steps repeats {divisor} times.",
+            self.magnitudes_text(1),
+            self.magnitudes_text(divisor),
+            self.longest() / divisor,
+        )
+    }
+
+    /// The sentence of a setup note about mirroring, or "" when every axis
+    /// moves in the positive direction.
+    pub fn mirror_note(&self) -> &'static str {
+        if self.sign[..self.dims()].contains(&-1) {
+            " Negative directions are mirrored: the rule runs on |Δ| and steps each axis toward the end point."
+        } else {
+            ""
+        }
+    }
+}
+
+/// The `gcd` option (Wang section 4).
+pub const GCD: OptionSpec = OptionSpec {
+    name: "gcd",
+    kind: OptionKind::Boolean,
+    required: false,
+    default: Some("false"),
+    doc: "Wang section 4: divide the deltas by their greatest common divisor; the discriminants shrink by that factor and repeat their pattern GCD times (the path is the same).",
+};
+
+/// The `gcd` option of a request.
+pub fn gcd_option(req: &Request) -> Result<bool, Error> {
+    Ok(req.boolean(GCD.name)?.unwrap_or(false))
+}
+
+/// Which axis goes first when several are exactly tied. Used by the rules
+/// that move one axis per step, where a tie is about order, not about
+/// whether an axis steps at all (so advance/hold does not apply).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TieAxis {
+    /// x before y before z (the 2009 blog's `xDist <= yDist`).
+    Lower,
+    Higher,
+}
+
+pub const TIE_AXIS: OptionSpec = OptionSpec {
+    name: "tieAxis",
+    kind: OptionKind::Choice {
+        values: &["lower", "higher"],
+    },
+    required: false,
+    default: Some("lower"),
+    doc: "Which axis steps first when two or more are exactly tied: the lower (x before y before z) or the higher.",
+};
+
+impl TieAxis {
+    pub fn from_request(req: &Request) -> Result<TieAxis, Error> {
+        Ok(match req.choice(&TIE_AXIS)? {
+            Some("higher") => TieAxis::Higher,
+            _ => TieAxis::Lower,
+        })
+    }
+
+    pub fn label(self) -> &'static str {
+        match self {
+            TieAxis::Lower => "lower",
+            TieAxis::Higher => "higher",
+        }
+    }
+
+    /// Scanning axes in increasing order, should `candidate` replace the best
+    /// so far, given how its key compares (smaller key = better)?
+    pub fn replaces(self, candidate_vs_best: Ordering) -> bool {
+        match self {
+            TieAxis::Lower => candidate_vs_best == Ordering::Less,
+            TieAxis::Higher => candidate_vs_best != Ordering::Greater,
+        }
+    }
+}
+
+/// What decided a passive axis in a rule that can drift (float DDA, Liu's
+/// rounded discriminant, Saleem's 2D pseudo-code as printed).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Guard {
+    /// The algorithm's own rule.
+    Rule,
+    /// The rule wanted a step but the axis is already at its end coordinate.
+    Held,
+    /// The rule held but the axis has as many units left as there are steps.
+    Forced,
+}
+
+pub const GUARD_LABELS: &[&str] = &["rule", "held", "forced"];
+
+impl Guard {
+    /// The finish rule: a passive axis never passes its end coordinate and
+    /// never falls so far behind that it cannot reach it in the steps left.
+    /// So the path ends exactly on the end point with one unit per axis per
+    /// step, whatever the rule's drift. Returns whether the axis steps.
+    pub fn apply(wants: bool, units_left: i64, steps_left: u64) -> (bool, Guard) {
+        if wants && units_left == 0 {
+            (false, Guard::Held)
+        } else if !wants && units_left as u64 >= steps_left && units_left > 0 {
+            (true, Guard::Forced)
+        } else {
+            (wants, Guard::Rule)
+        }
+    }
+
+    /// The guard of a step over several axes: the first that the finish
+    /// rule overrode, else Rule.
+    pub fn of_step(guards: &[Guard]) -> Guard {
+        guards
+            .iter()
+            .copied()
+            .find(|&g| g != Guard::Rule)
+            .unwrap_or(Guard::Rule)
+    }
+
+    /// A clause for an explanation, "" when the rule decided.
+    pub fn clause(self, axis: usize) -> String {
+        match self {
+            Guard::Rule => String::new(),
+            Guard::Held => format!(
+                "; {} has reached its end coordinate, so the finish rule holds it",
+                AXIS_NAMES[axis]
+            ),
+            Guard::Forced => format!(
+                "; {} has as many units left as there are steps, so the finish rule forces it",
+                AXIS_NAMES[axis]
+            ),
+        }
+    }
+}
+
+/// Wang's eq. (6) for one passive axis against the active one, in units
+/// travelled toward the end: D = 2|Δa|·x - 2|Δx|·a + 2|Δa| - |Δx|, with x and
+/// a the units the active and the passive axis have gone. Its sign says
+/// whether the ideal line leaves the cell past the middle of the passive
+/// axis. Each product is below 2^64, so it is formed in i128.
+pub fn wang_discriminant(
+    passive_len: i64,
+    active_len: i64,
+    active_done: i64,
+    passive_done: i64,
+) -> i128 {
+    let (da, dx) = (passive_len as i128, active_len as i128);
+    2 * da * active_done as i128 - 2 * dx * passive_done as i128 + 2 * da - dx
+}
+
+/// A decision column; a shorthand for the per-axis column lists.
+pub const fn column(name: &'static str, kind: ColumnKind, doc: &'static str) -> Column {
+    Column { name, kind, doc }
+}
+
+/// "4 > 0", "0", "-2 < 0".
+pub fn signed_comparison(v: i64) -> String {
+    match v.signum() {
+        1 => format!("{v} > 0"),
+        -1 => format!("{v} < 0"),
+        _ => "0".to_string(),
+    }
+}
+
+/// "(x+1, y, z-1)": where a step goes, relative to the current point.
+pub fn step_target(step: Step, dims: usize) -> String {
+    let parts: Vec<String> = (0..dims)
+        .map(|axis| match step.delta(axis) {
+            1 => format!("{}+1", AXIS_NAMES[axis]),
+            -1 => format!("{}-1", AXIS_NAMES[axis]),
+            _ => AXIS_NAMES[axis].to_string(),
+        })
+        .collect();
+    format!("({})", parts.join(", "))
+}
+
+/// "x, y and z".
+pub fn axis_list(axes: impl Iterator<Item = usize>) -> String {
+    let names: Vec<&str> = axes.map(|a| AXIS_NAMES[a]).collect();
+    match names.split_last() {
+        None => String::new(),
+        Some((last, [])) => last.to_string(),
+        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mirror_measures_along_the_direction_of_travel() {
+        let m = Mirror::new(Point::new(&[5, 0, -2]), Point::new(&[-3, 8, -2]));
+        assert_eq!((m.sign(0), m.magnitude(0)), (-1, 8));
+        assert_eq!((m.longest(), m.major(), m.total()), (8, 0, 16));
+        assert!(m.is_active(1) && !m.is_active(2));
+        assert_eq!(m.progress(&Point::new(&[2, 1, -2]), 0), 3);
+        assert_eq!(m.toward(Step::NONE, 0), Step::along(0, -1));
+        assert_eq!(m.divisor(true), 8);
+        assert_eq!(m.divisor(false), 1);
+        assert_eq!(m.magnitudes_text(8), "(1, 1, 0)");
+        assert!(!m.mirror_note().is_empty());
+    }
+
+    #[test]
+    fn the_finish_rule_holds_at_the_end_and_forces_when_late() {
+        assert_eq!(Guard::apply(true, 0, 5), (false, Guard::Held));
+        assert_eq!(Guard::apply(false, 3, 3), (true, Guard::Forced));
+        assert_eq!(Guard::apply(false, 2, 3), (false, Guard::Rule));
+        assert_eq!(Guard::apply(true, 2, 3), (true, Guard::Rule));
+        assert_eq!(Guard::apply(false, 0, 0), (false, Guard::Rule));
+        assert_eq!(Guard::of_step(&[Guard::Rule, Guard::Forced]), Guard::Forced);
+        assert_eq!(Guard::of_step(&[Guard::Rule; 3]), Guard::Rule);
+    }
+
+    #[test]
+    fn tied_axes_go_in_the_chosen_order() {
+        assert!(!TieAxis::Lower.replaces(Ordering::Equal));
+        assert!(TieAxis::Higher.replaces(Ordering::Equal));
+        assert!(TieAxis::Lower.replaces(Ordering::Less));
+        assert!(!TieAxis::Higher.replaces(Ordering::Greater));
+        assert_eq!(axis_list([0, 1, 2].into_iter()), "x, y and z");
+        assert_eq!(axis_list([1].into_iter()), "y");
+    }
 }

@@ -11,6 +11,7 @@
 //! measured along the direction of travel, so the paper's positive-direction
 //! formulas apply unchanged (the paper's "intrinsic symmetry").
 
+use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::AlgorithmInfo;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
@@ -31,11 +32,16 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
         "The paper leaves ties open (\"A or B\"). voxpath makes the choice a visible option, tie = advance (as Liu's Table 1, the default) or hold, and marks every step a tie decided.",
     ],
     columns: RegionsWhy::COLUMNS,
-    options: &[FROM, TO, tie_option("advance"), MAX_STEPS],
+    options: &[FROM, TO, tie_option("advance"), GCD, MAX_STEPS],
     min_dims: 3,
     max_dims: 3,
     default_tie: Some(TiePolicy::Advance),
-    trace: |req| super::trace_line(&INFO, req, RegionsWang::new),
+    trace: |req| {
+        let gcd = super::gcd_option(req)?;
+        super::trace_line(&INFO, req, |from, to, tie| {
+            RegionsWang::with_gcd(from, to, tie, gcd)
+        })
+    },
 };
 
 /// Where the ideal line crosses the exit face of the current cell
@@ -240,27 +246,6 @@ impl Decision for RegionsWhy {
     }
 }
 
-/// "4 > 0", "0", "-2 < 0".
-fn signed_comparison(v: i64) -> String {
-    match v.signum() {
-        1 => format!("{v} > 0"),
-        -1 => format!("{v} < 0"),
-        _ => "0".to_string(),
-    }
-}
-
-/// "(x+1, y, z-1)": where a step goes, relative to the current point.
-pub fn step_target(step: Step, dims: usize) -> String {
-    let parts: Vec<String> = (0..dims)
-        .map(|axis| match step.delta(axis) {
-            1 => format!("{}+1", AXIS_NAMES[axis]),
-            -1 => format!("{}-1", AXIS_NAMES[axis]),
-            _ => AXIS_NAMES[axis].to_string(),
-        })
-        .collect();
-    format!("({})", parts.join(", "))
-}
-
 /// Which axes are active and passive for one line (fixed for the whole line).
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Geometry {
@@ -301,11 +286,11 @@ impl Geometry {
 /// Wang's stepper for one 3D line.
 #[derive(Clone, Debug)]
 pub struct RegionsWang {
-    from: Point,
-    /// Direction of travel per axis (+1 for an axis that does not move).
-    sign: [i64; 3],
-    /// |delta| per axis.
+    mirror: Mirror,
+    /// |delta| per axis divided by `divisor`: what the discriminants use.
     magnitude: [i64; 3],
+    /// 1, or the GCD of the |delta| with Wang's section 4 reduction.
+    divisor: i64,
     /// An active axis: the paper's x, whose |delta| scales the discriminants.
     reference: usize,
     geometry: Geometry,
@@ -318,15 +303,17 @@ pub struct RegionsWang {
 impl RegionsWang {
     /// The line from `from` to `to` (3 axes each, validated by the caller).
     pub fn new(from: Point, to: Point, tie: TiePolicy) -> RegionsWang {
-        let delta = from.delta_to(&to);
-        let mut sign = [1; 3];
-        let mut magnitude = [0; 3];
-        for axis in 0..3 {
-            sign[axis] = if delta[axis] < 0 { -1 } else { 1 };
-            magnitude[axis] = delta[axis].abs();
-        }
-        let largest = *magnitude.iter().max().unwrap();
-        let reference = magnitude.iter().position(|&m| m == largest).unwrap();
+        RegionsWang::with_gcd(from, to, tie, false)
+    }
+
+    /// With `gcd`, Wang's section 4: the discriminants run on |delta|
+    /// divided by their GCD (see [`Mirror::divisor`]).
+    pub fn with_gcd(from: Point, to: Point, tie: TiePolicy, gcd: bool) -> RegionsWang {
+        let mirror = Mirror::new(from, to);
+        let divisor = mirror.divisor(gcd);
+        let magnitude = [0, 1, 2].map(|a| mirror.magnitude(a) / divisor);
+        let largest = mirror.longest() / divisor;
+        let reference = mirror.major();
         let mut geometry = Geometry {
             active_mask: 0,
             passive: [0; 2],
@@ -350,13 +337,13 @@ impl RegionsWang {
             *d = 2 * magnitude[geometry.passive[i] as usize] - largest;
         }
         RegionsWang {
-            from,
-            sign,
+            mirror,
             magnitude,
+            divisor,
             reference,
             geometry,
             discriminant,
-            remaining: largest as u64,
+            remaining: mirror.longest() as u64,
             tie,
         }
     }
@@ -365,14 +352,15 @@ impl RegionsWang {
     /// point alone, M = 2 dy (x - xs) - 2 dx (y - ys) + 2 dy - dx (in i128,
     /// so any point within +-2^30 is exact). Used to check the recurrence.
     pub fn closed_form(&self, p: &Point) -> [Option<i64>; 2] {
-        let progress =
-            |axis: usize| ((p.get(axis) - self.from.get(axis)) * self.sign[axis]) as i128;
-        let dx = self.magnitude[self.reference] as i128;
         let mut out = [None; 2];
         for i in 0..self.geometry.passive_count as usize {
             let axis = self.geometry.passive[i] as usize;
-            let dy = self.magnitude[axis] as i128;
-            let m = 2 * dy * progress(self.reference) - 2 * dx * progress(axis) + 2 * dy - dx;
+            let m = wang_discriminant(
+                self.magnitude[axis],
+                self.magnitude[self.reference],
+                self.mirror.progress(p, self.reference),
+                self.mirror.progress(p, axis),
+            );
             out[i] = Some(m as i64);
         }
         out
@@ -392,7 +380,7 @@ impl Stepper for RegionsWang {
         for axis in 0..3 {
             if g.active_mask >> axis & 1 == 1 {
                 // Active axes progress one unit at a time (section 2.2).
-                step = step.with(axis, self.sign[axis]);
+                step = self.mirror.toward(step, axis);
             }
         }
         let count = g.passive_count as usize;
@@ -410,7 +398,7 @@ impl Stepper for RegionsWang {
             tie |= d == 0;
             let axis = g.passive[i] as usize;
             if moves[i] {
-                step = step.with(axis, self.sign[axis]);
+                step = self.mirror.toward(step, axis);
             }
             // Eq. (8): M_{i+1} = M_i + 2 dy - 2 dx (y_{i+1} - y_i).
             self.discriminant[i] +=
@@ -471,10 +459,9 @@ impl Stepper for RegionsWang {
                 );
             }
         }
-        if self.sign.contains(&-1) {
-            s.push_str(". Negative directions are mirrored: the rules run on |Δ| and step each axis toward the end point");
-        }
         s.push('.');
+        s.push_str(&self.mirror.divisor_note(self.divisor));
+        s.push_str(self.mirror.mirror_note());
         s
     }
 }

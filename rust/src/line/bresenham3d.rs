@@ -1,0 +1,213 @@
+//! Saleem & Saleem (2004), section 3: Bresenham's rule extended to 3D by
+//! splitting the line into two plane lines that share the major axis; and
+//! Liu & Cheng (2002), the same extension stepping on a tie (as Wang's
+//! Table 1 reproduces it).
+//!
+//! The major axis steps every time; each of the two other axes runs the 2D
+//! rule of section 2 ([`SaleemTerm`]) on its own plane line.
+
+use super::bresenham2d::{SaleemTerm, SaleemTest};
+use super::{GCD, Mirror, axis_list, step_target};
+use crate::algorithms::AlgorithmInfo;
+use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::request::{FROM, MAX_STEPS, TO, tie_option};
+use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+
+pub const ID: &str = "bresenham3d";
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    title: "Bresenham's line in 3D (Saleem; Liu with tie = advance)",
+    citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 3; Liu & Cheng (2002), as reproduced in Wang et al. (2020), Table 1",
+    teaching: "Find the axis that moves farthest (the major axis): it steps every time. The 3D line is then two plane lines sharing that axis, and each other axis runs the 2D rule on its own: its error starts at 0, grows by 2|Δminor| per step, and when it exceeds |Δmajor| the axis steps and the error drops by 2|Δmajor|. Saleem steps only when the error is strictly greater (tie = hold): on (0,0,0)->(10,7,6) step 5 goes to (5,3,3). Liu (2002) steps on equality too (tie = advance), which gives Wang's (5,4,3) and equals the method of discriminate regions point for point: Saleem's error minus |Δmajor| is Wang's discriminant.",
+    errata: &[
+        "The pseudo-code writes out only the z-major case ('Other two cases can be implemented in similar way'); voxpath runs the same rule with x or y as the major axis.",
+        "The printed test 'DeltaZ > DeltaX & DeltaZ > DeltaY' is strict, so a line whose two largest |Δ| are equal (for example (4,4,1)) matches none of the three cases. voxpath takes the lower-index axis as major; the other one's error then exceeds |Δmajor| every step, so it steps every time too.",
+        "Spelling slips a literal transcription would trip on: 'errorX'/'ErrorX', 'incremenetY' for incY, '2DelatZ' for 2DeltaZ.",
+    ],
+    columns: Bresenham3dWhy::COLUMNS,
+    options: &[FROM, TO, tie_option("hold"), GCD, MAX_STEPS],
+    min_dims: 3,
+    max_dims: 3,
+    default_tie: Some(TiePolicy::Hold),
+    trace: |req| {
+        let gcd = super::gcd_option(req)?;
+        super::trace_line(&INFO, req, |from, to, tie| {
+            Bresenham3d::new(from, to, tie, gcd)
+        })
+    },
+};
+
+/// The decision behind one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bresenham3dWhy {
+    pub major: usize,
+    /// Per axis: the error test of a minor axis, None for the major axis.
+    pub tests: [Option<SaleemTest>; 3],
+    pub threshold: i64,
+    pub tie_policy: TiePolicy,
+}
+
+impl Decision for Bresenham3dWhy {
+    const COLUMNS: &'static [Column] = &[
+        Column {
+            name: "errorX",
+            kind: ColumnKind::Int,
+            doc: "Saleem's ErrorX after adding 2|Δx| (section 3), compared with |Δmajor|; empty when x is the major axis.",
+        },
+        Column {
+            name: "errorY",
+            kind: ColumnKind::Int,
+            doc: "Saleem's ErrorY after adding 2|Δy|, compared with |Δmajor|; empty when y is the major axis.",
+        },
+        Column {
+            name: "errorZ",
+            kind: ColumnKind::Int,
+            doc: "Saleem's ErrorZ after adding 2|Δz|, compared with |Δmajor|; empty when z is the major axis.",
+        },
+        Column {
+            name: "threshold",
+            kind: ColumnKind::Int,
+            doc: "|Δmajor| (divided by the GCD with gcd = true): a minor axis steps when its error exceeds it.",
+        },
+        Column {
+            name: "major",
+            kind: ColumnKind::Category(&["x", "y", "z"]),
+            doc: "The major axis, which steps every time.",
+        },
+        Column {
+            name: "tie",
+            kind: ColumnKind::Flag,
+            doc: "1 when an error equalled the threshold and the tie policy decided.",
+        },
+    ];
+
+    fn write(&self, row: &mut [f64]) {
+        for axis in 0..3 {
+            row[axis] = self.tests[axis].map_or(f64::NAN, |t| t.tested as f64);
+        }
+        row[3] = self.threshold as f64;
+        row[4] = self.major as f64;
+        row[5] = self.is_tie() as u8 as f64;
+    }
+
+    fn is_tie(&self) -> bool {
+        self.tests.iter().flatten().any(|t| t.tie)
+    }
+
+    fn explain(&self, _from: &Point, step: Step) -> String {
+        let mut s = format!("{} is the major axis and steps", AXIS_NAMES[self.major]);
+        for (axis, test) in self.tests.iter().enumerate() {
+            let Some(t) = test else { continue };
+            let name = AXIS_NAMES[axis];
+            let verdict = match t.tested.cmp(&self.threshold) {
+                std::cmp::Ordering::Greater => {
+                    format!("{} > {}, so {name} steps", t.tested, self.threshold)
+                }
+                std::cmp::Ordering::Less => {
+                    format!("{} < {}, so {name} holds", t.tested, self.threshold)
+                }
+                std::cmp::Ordering::Equal => format!(
+                    "{} = {} (a tie), and the tie policy '{}' says {name} {}",
+                    t.tested,
+                    self.threshold,
+                    self.tie_policy.label(),
+                    if t.steps { "steps" } else { "holds" }
+                ),
+            };
+            s.push_str(&format!("; error{} = {verdict}", name.to_uppercase()));
+        }
+        s.push_str(&format!("; the step goes to {}.", step_target(step, 3)));
+        s
+    }
+}
+
+/// The 3D stepper of Saleem section 3 (Liu's with tie = advance).
+#[derive(Clone, Debug)]
+pub struct Bresenham3d {
+    mirror: Mirror,
+    major: usize,
+    divisor: i64,
+    terms: [Option<SaleemTerm>; 3],
+    remaining: u64,
+    tie: TiePolicy,
+}
+
+impl Bresenham3d {
+    /// With `gcd`, the error terms run on |Δ| divided by their GCD (Wang
+    /// section 4): each is then that many times smaller, same decisions.
+    pub fn new(from: Point, to: Point, tie: TiePolicy, gcd: bool) -> Bresenham3d {
+        let mirror = Mirror::new(from, to);
+        let major = mirror.major();
+        let divisor = mirror.divisor(gcd);
+        let major_len = mirror.magnitude(major) / divisor;
+        let mut terms = [None; 3];
+        for (axis, term) in terms.iter_mut().enumerate() {
+            if axis != major {
+                let minor_len = mirror.magnitude(axis) / divisor;
+                *term = Some(SaleemTerm::new(minor_len, major_len, 2 * major_len));
+            }
+        }
+        Bresenham3d {
+            mirror,
+            major,
+            divisor,
+            terms,
+            remaining: mirror.longest() as u64,
+            tie,
+        }
+    }
+}
+
+impl Stepper for Bresenham3d {
+    type Why = Bresenham3dWhy;
+
+    fn next_step(&mut self) -> Option<(Step, Bresenham3dWhy)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        self.remaining -= 1;
+        // "currentZ will increase in every iteration" (the major axis).
+        let mut step = self.mirror.toward(Step::NONE, self.major);
+        let mut tests = [None; 3];
+        for axis in 0..3 {
+            if let Some(term) = &mut self.terms[axis] {
+                // Each minor axis decides on its own plane line (section 3).
+                let t = term.test(self.tie);
+                if t.steps {
+                    step = self.mirror.toward(step, axis);
+                }
+                tests[axis] = Some(t);
+            }
+        }
+        let threshold = self.mirror.magnitude(self.major) / self.divisor;
+        let why = Bresenham3dWhy {
+            major: self.major,
+            tests,
+            threshold,
+            tie_policy: self.tie,
+        };
+        Some((step, why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        Some(self.remaining)
+    }
+
+    fn setup_note(&self) -> String {
+        let minors = (0..3).filter(|&a| a != self.major);
+        format!(
+            "{} is the major axis (|Δ| = {}); {} each run Saleem's 2D rule against it, stepping when the error is {} |Δ{}|.{}{}",
+            AXIS_NAMES[self.major],
+            self.mirror.magnitudes_text(1),
+            axis_list(minors),
+            match self.tie {
+                TiePolicy::Hold => "greater than",
+                TiePolicy::Advance => "at least",
+            },
+            AXIS_NAMES[self.major],
+            self.mirror.divisor_note(self.divisor),
+            self.mirror.mirror_note(),
+        )
+    }
+}

@@ -1,0 +1,197 @@
+//! The floating-point digital differential analyser (DDA), for comparison
+//! with the integer rules: add Δa/n to a float accumulator per axis every
+//! step and round it to the nearest cell.
+
+use super::{GUARD_LABELS, Guard, Mirror, column, step_target};
+use crate::algorithms::AlgorithmInfo;
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::request::{FROM, MAX_STEPS, TO};
+use crate::trace::{Column, ColumnKind, Decision, Stepper};
+
+pub const ID: &str = "dda";
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    title: "Floating-point DDA",
+    citation: "The digital differential analyser as textbooks give it (cited by Wang et al. 2020, section 1, refs. 8-10), in f64",
+    teaching: "Take n = the largest |Δ| steps. Each axis a keeps a float accumulator that starts at its start coordinate and gains Δa/n every step; the point is each accumulator rounded to the nearest cell, floor(acc + 0.5) (halves round up, toward +infinity, whichever way the axis travels). In exact arithmetic that is Bresenham's rule. In floating point it is not, in two ways. Δa/n is rarely exact in binary (0.3 is not), so after k additions the accumulator is not k·Δa/n; where the exact value is a half (the line passes exactly between two cells) the stored error alone decides which cell wins. And each addition is rounded to the spacing of floats at the accumulator's size, 2^-23 near 2^30 instead of 2^-52 near 1, always the same way for the same increment: over millions of steps far from the origin the error piles up into whole cells, and the last point can miss the end point. voxpath's finish rule keeps the trace exact: an axis that has reached its end coordinate is held, one with as many units left as steps is forced, and the guard column shows when that happened.",
+    errata: &[],
+    columns: DdaWhy::COLUMNS,
+    options: &[FROM, TO, MAX_STEPS],
+    min_dims: 2,
+    max_dims: MAX_AXES,
+    default_tie: None,
+    trace: |req| super::trace_line(&INFO, req, |from, to, _| Dda::new(from, to)),
+};
+
+/// The decision behind one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DdaWhy {
+    /// Per axis, the accumulator after this step's addition.
+    pub acc: [f64; MAX_AXES],
+    /// Per axis, the accumulator rounded: floor(acc + 0.5).
+    pub rounded: [i64; MAX_AXES],
+    pub guards: [Guard; MAX_AXES],
+    pub dims: usize,
+}
+
+impl Decision for DdaWhy {
+    const COLUMNS: &'static [Column] = &[
+        column(
+            "accX",
+            ColumnKind::Float,
+            "x accumulator after adding Δx/n (f64, grid units); the point's x is floor(accX + 0.5).",
+        ),
+        column(
+            "accY",
+            ColumnKind::Float,
+            "y accumulator after adding Δy/n.",
+        ),
+        column(
+            "accZ",
+            ColumnKind::Float,
+            "z accumulator after adding Δz/n.",
+        ),
+        column(
+            "accA",
+            ColumnKind::Float,
+            "a accumulator after adding Δa/n.",
+        ),
+        column(
+            "accB",
+            ColumnKind::Float,
+            "b accumulator after adding Δb/n.",
+        ),
+        column(
+            "accC",
+            ColumnKind::Float,
+            "c accumulator after adding Δc/n.",
+        ),
+        Column {
+            name: "guard",
+            kind: ColumnKind::Category(GUARD_LABELS),
+            doc: "rule: rounding decided every axis; held / forced: the finish rule overrode float drift.",
+        },
+    ];
+
+    fn write(&self, row: &mut [f64]) {
+        for axis in 0..MAX_AXES {
+            row[axis] = if axis < self.dims {
+                self.acc[axis]
+            } else {
+                f64::NAN
+            };
+        }
+        row[MAX_AXES] = Guard::of_step(&self.guards[..self.dims]) as u8 as f64;
+    }
+
+    fn explain(&self, _from: &Point, step: Step) -> String {
+        let parts: Vec<String> = (0..self.dims)
+            .map(|a| {
+                let name = AXIS_NAMES[a];
+                let verdict = if step.delta(a) != 0 { "steps" } else { "stays" };
+                format!(
+                    "{name} accumulator {} rounds to {}, so {name} {verdict}{}",
+                    self.acc[a],
+                    self.rounded[a],
+                    self.guards[a].clause(a)
+                )
+            })
+            .collect();
+        format!(
+            "{}; the step goes to {}.",
+            parts.join("; "),
+            step_target(step, self.dims)
+        )
+    }
+}
+
+/// The float DDA stepper.
+#[derive(Clone, Debug)]
+pub struct Dda {
+    mirror: Mirror,
+    /// Position now, grid units.
+    at: Point,
+    acc: [f64; MAX_AXES],
+    /// Δa / n per axis (exactly ±1 or 0 on the active axes).
+    inc: [f64; MAX_AXES],
+    remaining: u64,
+}
+
+impl Dda {
+    pub fn new(from: Point, to: Point) -> Dda {
+        let mirror = Mirror::new(from, to);
+        let n = mirror.longest();
+        let delta = from.delta_to(&to);
+        Dda {
+            mirror,
+            at: from,
+            acc: std::array::from_fn(|a| {
+                if a < from.dims() {
+                    from.get(a) as f64
+                } else {
+                    0.0
+                }
+            }),
+            inc: std::array::from_fn(|a| {
+                if n > 0 {
+                    delta[a] as f64 / n as f64
+                } else {
+                    0.0
+                }
+            }),
+            remaining: n as u64,
+        }
+    }
+}
+
+impl Stepper for Dda {
+    type Why = DdaWhy;
+
+    fn next_step(&mut self) -> Option<(Step, DdaWhy)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        let dims = self.mirror.dims();
+        let mut step = Step::NONE;
+        let mut rounded = [0; MAX_AXES];
+        let mut guards = [Guard::Rule; MAX_AXES];
+        for axis in 0..dims {
+            self.acc[axis] += self.inc[axis];
+            // Round half up: floor(acc + 0.5), the textbook int(x + 0.5).
+            rounded[axis] = (self.acc[axis] + 0.5).floor() as i64;
+            let sign = self.mirror.sign(axis);
+            let wants = (rounded[axis] - self.at.get(axis)) * sign > 0;
+            let units_left = self.mirror.magnitude(axis) - self.mirror.progress(&self.at, axis);
+            let (moves, guard) = Guard::apply(wants, units_left, self.remaining);
+            guards[axis] = guard;
+            if moves {
+                step = self.mirror.toward(step, axis);
+            }
+        }
+        self.remaining -= 1;
+        self.at.apply(step);
+        let why = DdaWhy {
+            acc: self.acc,
+            rounded,
+            guards,
+            dims,
+        };
+        Some((step, why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        Some(self.remaining)
+    }
+
+    fn setup_note(&self) -> String {
+        let incs: Vec<String> = (0..self.mirror.dims())
+            .map(|a| format!("{} += {}", AXIS_NAMES[a], self.inc[a]))
+            .collect();
+        format!(
+            "n = {} steps; per step {} (f64), each rounded with floor(acc + 0.5).",
+            self.mirror.longest(),
+            incs.join(", ")
+        )
+    }
+}

@@ -1,0 +1,217 @@
+//! "CNC Line Following Algorithm" (blog post, 6 July 2009): one axis per
+//! step, choosing the move that brings the tool closest to the goal.
+//!
+//! Moving axis a one unit toward the goal changes the squared distance to
+//! the goal by -(2|r_a| - 1), r_a being what is left on that axis; so the
+//! rule steps the axis with the most left. It runs along the longer axis
+//! until the distances left are equal, then alternates: it heads for the
+//! goal, not along the line.
+
+use super::{Mirror, TIE_AXIS, TieAxis, column, step_target};
+use crate::algorithms::AlgorithmInfo;
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::request::{FROM, MAX_STEPS, TO};
+use crate::trace::{Column, ColumnKind, Decision, Stepper};
+
+pub const ID: &str = "greedy";
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    title: "Greedy step toward the goal, one axis at a time",
+    citation: "\"CNC Line Following Algorithm\", blog post of 6 July 2009 (low-cost 3D printer series)",
+    teaching: "Treat each step as a decision between single-axis moves toward the goal. Try each one in thought, compute the squared distance from where it would land to the goal (no square root needed: the smaller square is the smaller distance), and take the smallest; on a tie the lower axis (the post's xDist <= yDist picks x). Because a unit move on axis a shrinks the squared distance by 2|left on a| - 1, this always moves the axis with the most left: (0,0)->(8,3) runs along x to (6,0) and only then alternates up to (8,3). The speed is constant, but the path heads for the goal rather than following the line: it strays up to about a fifth of the move's length (0.22·|Δx| when |Δy| = 0.4·|Δx|), and the error per axis at each moment (eq. 11, time-based) is larger still. Compare walk6, which also moves one axis per step but follows the line.",
+    errata: &[
+        "The post's Python takes parameters (z0, y0, x1, y1) but uses x0: z0 should be x0.",
+        "yIter = 1 if (x1 > x0) tests x instead of y (y1 > y0), so y moves the wrong way whenever x and y travel in opposite directions.",
+        "y0 += tIter: tIter is undefined, it should be yIter.",
+        "The function calls itself once per step, so Python's default recursion limit (1000) stops any move longer than about 1000 steps. voxpath runs it as a loop.",
+    ],
+    columns: GreedyWhy::COLUMNS,
+    options: &[FROM, TO, TIE_AXIS, MAX_STEPS],
+    min_dims: 2,
+    max_dims: MAX_AXES,
+    default_tie: None,
+    trace: |req| {
+        let order = TieAxis::from_request(req)?;
+        super::trace_line(&INFO, req, |from, to, _| Greedy::new(from, to, order))
+    },
+};
+
+/// The decision behind one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GreedyWhy {
+    /// Per axis, the squared distance to the goal after a unit move on it
+    /// toward the goal; None for an axis already at its goal coordinate.
+    pub candidates: [Option<i128>; MAX_AXES],
+    pub dims: usize,
+    pub chosen: usize,
+    /// Another candidate was exactly as close.
+    pub tie: bool,
+    pub order: TieAxis,
+}
+
+impl Decision for GreedyWhy {
+    const COLUMNS: &'static [Column] = &[
+        column(
+            "dist2X",
+            ColumnKind::Float,
+            "Squared distance to the goal if x moved one unit toward it (grid units^2, exact below 2^53); empty when x is already there.",
+        ),
+        column(
+            "dist2Y",
+            ColumnKind::Float,
+            "Squared distance to the goal if y moved.",
+        ),
+        column(
+            "dist2Z",
+            ColumnKind::Float,
+            "Squared distance to the goal if z moved.",
+        ),
+        column(
+            "dist2A",
+            ColumnKind::Float,
+            "Squared distance to the goal if a moved.",
+        ),
+        column(
+            "dist2B",
+            ColumnKind::Float,
+            "Squared distance to the goal if b moved.",
+        ),
+        column(
+            "dist2C",
+            ColumnKind::Float,
+            "Squared distance to the goal if c moved.",
+        ),
+        Column {
+            name: "axis",
+            kind: ColumnKind::Category(&AXIS_NAMES),
+            doc: "The axis that moved: the candidate closest to the goal.",
+        },
+        Column {
+            name: "tie",
+            kind: ColumnKind::Flag,
+            doc: "1 when another axis was exactly as close and the tie order chose.",
+        },
+    ];
+
+    fn write(&self, row: &mut [f64]) {
+        for axis in 0..MAX_AXES {
+            row[axis] = self.candidates[axis].map_or(f64::NAN, |v| v as f64);
+        }
+        row[MAX_AXES] = self.chosen as f64;
+        row[MAX_AXES + 1] = self.tie as u8 as f64;
+    }
+
+    fn is_tie(&self) -> bool {
+        self.tie
+    }
+
+    fn explain(&self, _from: &Point, step: Step) -> String {
+        let options: Vec<String> = (0..self.dims)
+            .filter_map(|a| Some(format!("{} {}", AXIS_NAMES[a], self.candidates[a]?)))
+            .collect();
+        let name = AXIS_NAMES[self.chosen];
+        let mut s = format!(
+            "Squared distance to the goal after moving {}: {name} is the smallest",
+            options.join(", ")
+        );
+        if self.tie {
+            s.push_str(&format!(
+                " (tied; the {} axis goes first)",
+                self.order.label()
+            ));
+        }
+        s.push_str(&format!(
+            ", so {name} steps to {}.",
+            step_target(step, self.dims)
+        ));
+        s
+    }
+}
+
+/// The blog's greedy stepper, as a loop.
+#[derive(Clone, Debug)]
+pub struct Greedy {
+    mirror: Mirror,
+    /// Units left per axis to the goal.
+    left: [i64; MAX_AXES],
+    remaining: u64,
+    order: TieAxis,
+}
+
+impl Greedy {
+    pub fn new(from: Point, to: Point, order: TieAxis) -> Greedy {
+        let mirror = Mirror::new(from, to);
+        Greedy {
+            mirror,
+            left: std::array::from_fn(|a| {
+                if a < from.dims() {
+                    mirror.magnitude(a)
+                } else {
+                    0
+                }
+            }),
+            remaining: mirror.total(),
+            order,
+        }
+    }
+}
+
+impl Stepper for Greedy {
+    type Why = GreedyWhy;
+
+    fn next_step(&mut self) -> Option<(Step, GreedyWhy)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        self.remaining -= 1;
+        let dims = self.mirror.dims();
+        // Squared distance to the goal now, in i128: six axes of 2^31 squared.
+        let now: i128 = self.left[..dims]
+            .iter()
+            .map(|&l| l as i128 * l as i128)
+            .sum();
+        let mut candidates = [None; MAX_AXES];
+        let mut chosen: Option<usize> = None;
+        for axis in 0..dims {
+            let l = self.left[axis] as i128;
+            if l == 0 {
+                // The post's half-plane trick: only moves toward the goal.
+                continue;
+            }
+            // Take a fake step: (l - 1)^2 replaces l^2 in the sum.
+            let after = now - l * l + (l - 1) * (l - 1);
+            candidates[axis] = Some(after);
+            if chosen.is_none_or(|best| self.order.replaces(after.cmp(&candidates[best].unwrap())))
+            {
+                chosen = Some(axis);
+            }
+        }
+        let chosen = chosen.expect("a move with steps left has an axis not yet at its goal");
+        let best = candidates[chosen];
+        let tie = (0..dims).any(|a| a != chosen && candidates[a] == best);
+        self.left[chosen] -= 1;
+        let why = GreedyWhy {
+            candidates,
+            dims,
+            chosen,
+            tie,
+            order: self.order,
+        };
+        Some((self.mirror.toward(Step::NONE, chosen), why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        Some(self.remaining)
+    }
+
+    fn setup_note(&self) -> String {
+        format!(
+            "|Δ| = {}: {} single-axis steps, each to the candidate nearest the goal; ties go to the {} axis.{}",
+            self.mirror.magnitudes_text(1),
+            self.mirror.total(),
+            self.order.label(),
+            self.mirror.mirror_note()
+        )
+    }
+}

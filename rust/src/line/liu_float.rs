@@ -1,0 +1,309 @@
+//! Liu & Cheng (2002) as Wang et al. (2020) reproduce it (section 3.2, eq.
+//! (14)-(15), Table 1) and criticise it (section 4, Fig. 10): the 3D
+//! Bresenham extension with a decimal decision parameter per passive axis,
+//! kept to a fixed number of decimals.
+//!
+//! epsilon(y) starts at k_yx - 0.5 (eq. 14), y steps when epsilon >= 0 and
+//! then epsilon loses 1, and every step epsilon gains k_yx. With exact
+//! arithmetic this is Bresenham's rule (epsilon = Wang's M / 2Δx); kept to d
+//! decimals, the slope k itself is rounded and the error accumulates.
+
+use super::{GUARD_LABELS, Guard, Mirror, axis_list, column, step_target, wang_discriminant};
+use crate::algorithms::AlgorithmInfo;
+use crate::error::Error;
+use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
+use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+
+pub const ID: &str = "liu-float";
+
+/// Most decimals the `decimals` option accepts: beyond 10 the rounding is
+/// below the f64 spacing of the values it rounds and changes nothing.
+pub const MAX_DECIMALS: i64 = 10;
+
+pub const DECIMALS: OptionSpec = OptionSpec {
+    name: "decimals",
+    kind: OptionKind::Integer,
+    required: false,
+    default: Some("1"),
+    doc: "Decimal places kept of the slope k and of each decision parameter, 0 to 10 (1 drifts as Wang's Fig. 10 shows; 4 reproduces Liu's Table 1).",
+};
+
+/// The first line from the origin with x active (in order of |Δx|, then
+/// |Δy|, then |Δz|) where one decimal strays beyond sqrt(2)/2; named in the
+/// teaching text, and found again by a search in tests/line_goldens.rs.
+pub const DRIFT_EXAMPLE: [i64; 3] = [7, 1, 1];
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    title: "Liu's 3D Bresenham with a decimal discriminant kept to d places",
+    citation: "Liu & Cheng (2002), Three-dimensional extension of Bresenham's algorithm, as given in Wang et al. (2020) section 3.2, eq. (14)-(15), Table 1, and discussed in section 4, Fig. 10",
+    teaching: "Liu's rule in decimals: the slope of each passive axis against the active one, k = Δy/Δx, and a decision parameter epsilon(y) = k - 0.5 to start (eq. 14-15). Every step the active axis moves; y moves when epsilon(y) >= 0 (the line is past the middle of the cell), and then epsilon(y) loses 1; every step epsilon(y) gains k. With exact numbers this is Bresenham's rule (epsilon = Wang's M / 2Δx). A controller that keeps only d decimals rounds k and each new epsilon, and the error of the rounded slope piles up every step until it flips a decision. On (0,0,0)->(7,1,1), the first line with x active where this happens, one decimal keeps k = 1/7 = 0.142857 as 0.1: epsilon runs -0.4, -0.3, -0.2, -0.1, 0 instead of crossing 0 at x = 4, so y and z step at x = 5 and the point (4,0,0) is sqrt(32/51) = 0.792 from the line, beyond the sqrt(2)/2 of every exact rule (Wang Fig. 10). With 4 decimals the same line is Bresenham's, at most 0.594 away. More decimals shrink the drift but never remove it: an exact tie (epsilon = 0) comes out a hair above or below 0, so (0,0,0)->(14,13,0) steps y at x = 7 even with ten decimals and tie = hold (k = 13/14 kept to ten decimals is 3e-11 too large). Rounding here: v·10^d is rounded to an integer half away from zero and divided by 10^d, in f64 (so a value such as 0.35, stored just below, rounds by its binary value). Because a drifting axis could miss its end point, a finish rule holds an axis that has arrived and forces one that has as many units left as steps; the guard column shows when it acted.",
+    errata: &[
+        "Wang's Table 1 prints epsilon(z_9) = 0.1 at i = 8; eq. (15) with k_zx = 0.6 gives 0.3 - 1 + 0.6 = -0.1 there (z holds at step 9, as the table's own z column shows, and 0.5 follows at i = 9).",
+        "Table 1's Error 0.225064 for (7,5,4) should read 0.220564 (see regions).",
+        "Wang's section 4 reports the drift with one decimal but not which line; voxpath's example is (0,0,0)->(7,1,1), the first line from the origin with x active, in order of |Δx|, |Δy|, |Δz|.",
+    ],
+    columns: LiuWhy::COLUMNS,
+    options: &[FROM, TO, DECIMALS, tie_option("advance"), MAX_STEPS],
+    min_dims: 3,
+    max_dims: 3,
+    default_tie: Some(TiePolicy::Advance),
+    trace: |req| {
+        let decimals = decimals_option(req)?;
+        super::trace_line(&INFO, req, |from, to, tie| {
+            LiuFloat::new(from, to, tie, decimals)
+        })
+    },
+};
+
+fn decimals_option(req: &Request) -> Result<u32, Error> {
+    match req.integer(DECIMALS.name)? {
+        None => Ok(1),
+        Some(d) if (0..=MAX_DECIMALS).contains(&d) => Ok(d as u32),
+        Some(d) => Err(Error::field(
+            DECIMALS.name,
+            format!("must be 0 to {MAX_DECIMALS}, got {d}"),
+        )),
+    }
+}
+
+/// `v` kept to `decimals` places: v·10^d rounded half away from zero (f64
+/// `round`), divided by 10^d. The product is itself an f64, so a decimal
+/// half that binary cannot store exactly rounds the way its stored value lies.
+pub fn round_decimals(v: f64, decimals: u32) -> f64 {
+    let scale = 10f64.powi(decimals as i32);
+    (v * scale).round() / scale
+}
+
+/// The decision behind one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LiuWhy {
+    /// Per axis, epsilon before the step; None for active axes.
+    pub epsilon: [Option<f64>; 3],
+    /// Per axis, epsilon minus its exact value at this point (Wang's
+    /// discriminant / 2Δx): the accumulated rounding.
+    pub drift: [Option<f64>; 3],
+    pub guards: [Guard; 3],
+    pub tie: bool,
+    pub tie_policy: TiePolicy,
+    pub decimals: u32,
+}
+
+impl Decision for LiuWhy {
+    const COLUMNS: &'static [Column] = &[
+        column(
+            "epsX",
+            ColumnKind::Float,
+            "Liu's epsilon(x) before the step, kept to d decimals; empty when x is active.",
+        ),
+        column(
+            "epsY",
+            ColumnKind::Float,
+            "Liu's epsilon(y) before the step (eq. 14), kept to d decimals.",
+        ),
+        column(
+            "epsZ",
+            ColumnKind::Float,
+            "Liu's epsilon(z) before the step (eq. 15), kept to d decimals.",
+        ),
+        column(
+            "driftX",
+            ColumnKind::Float,
+            "epsX minus its exact value at this point (Wang's discriminant / 2|Δactive|).",
+        ),
+        column(
+            "driftY",
+            ColumnKind::Float,
+            "epsY minus its exact value: the rounding accumulated so far (Wang Fig. 10).",
+        ),
+        column("driftZ", ColumnKind::Float, "epsZ minus its exact value."),
+        Column {
+            name: "guard",
+            kind: ColumnKind::Category(GUARD_LABELS),
+            doc: "rule: epsilon decided every axis; held / forced: the finish rule overrode a drifting axis.",
+        },
+        Column {
+            name: "tie",
+            kind: ColumnKind::Flag,
+            doc: "1 when an epsilon was exactly 0 and the tie policy decided.",
+        },
+    ];
+
+    fn write(&self, row: &mut [f64]) {
+        for axis in 0..3 {
+            row[axis] = self.epsilon[axis].unwrap_or(f64::NAN);
+            row[3 + axis] = self.drift[axis].unwrap_or(f64::NAN);
+        }
+        row[6] = Guard::of_step(&self.guards) as u8 as f64;
+        row[7] = self.tie as u8 as f64;
+    }
+
+    fn is_tie(&self) -> bool {
+        self.tie
+    }
+
+    fn explain(&self, _from: &Point, step: Step) -> String {
+        let d = self.decimals as usize;
+        let active: Vec<usize> = (0..3).filter(|&a| self.epsilon[a].is_none()).collect();
+        let verb = if active.len() == 1 { "steps" } else { "step" };
+        let mut s = format!("{} {verb} as active", axis_list(active.into_iter()));
+        for axis in 0..3 {
+            let (Some(e), Some(drift)) = (self.epsilon[axis], self.drift[axis]) else {
+                continue;
+            };
+            let name = AXIS_NAMES[axis];
+            let verdict = if e == 0.0 {
+                format!(", a tie that '{}' decides", self.tie_policy.label())
+            } else if e > 0.0 {
+                " > 0".to_string()
+            } else {
+                " < 0".to_string()
+            };
+            let moved = if step.delta(axis) != 0 {
+                "steps"
+            } else {
+                "holds"
+            };
+            s.push_str(&format!(
+                "; epsilon({name}) = {e:.d$}{verdict}, so {name} {moved}"
+            ));
+            if drift.abs() >= 0.5 * 10f64.powi(-(self.decimals as i32)) {
+                s.push_str(&format!(
+                    " (it has drifted {drift:+.3} from its exact value)"
+                ));
+            }
+            s.push_str(&self.guards[axis].clause(axis));
+        }
+        s.push_str(&format!("; the step goes to {}.", step_target(step, 3)));
+        s
+    }
+}
+
+/// Liu's stepper with decision parameters kept to `decimals` places.
+#[derive(Clone, Debug)]
+pub struct LiuFloat {
+    mirror: Mirror,
+    /// Per passive axis, the slope |Δa| / |Δactive| kept to `decimals`.
+    slope: [Option<f64>; 3],
+    epsilon: [Option<f64>; 3],
+    /// Units left per axis.
+    left: [i64; 3],
+    remaining: u64,
+    decimals: u32,
+    tie: TiePolicy,
+}
+
+impl LiuFloat {
+    pub fn new(from: Point, to: Point, tie: TiePolicy, decimals: u32) -> LiuFloat {
+        let mirror = Mirror::new(from, to);
+        let longest = mirror.longest();
+        let slope = std::array::from_fn(|a| {
+            (!mirror.is_active(a))
+                .then(|| round_decimals(mirror.magnitude(a) as f64 / longest as f64, decimals))
+        });
+        // Eq. (14)-(15): epsilon(y_1) = k_yx - 0.5.
+        let epsilon = slope.map(|k| k.map(|k| round_decimals(k - 0.5, decimals)));
+        LiuFloat {
+            mirror,
+            slope,
+            epsilon,
+            left: [0, 1, 2].map(|a| mirror.magnitude(a)),
+            remaining: longest as u64,
+            decimals,
+            tie,
+        }
+    }
+
+    /// Liu's epsilon for `axis` computed exactly at the current point:
+    /// Wang's discriminant (eq. 6) over 2|Δactive|.
+    fn exact_epsilon(&self, axis: usize) -> f64 {
+        let (dx, da) = (self.mirror.longest(), self.mirror.magnitude(axis));
+        let reference = dx - self.left[self.mirror.major()];
+        let m = wang_discriminant(da, dx, reference, da - self.left[axis]);
+        m as f64 / (2 * dx) as f64
+    }
+}
+
+impl Stepper for LiuFloat {
+    type Why = LiuWhy;
+
+    fn next_step(&mut self) -> Option<(Step, LiuWhy)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        let mut step = Step::NONE;
+        // Measured before any axis moves: the exact value at this point.
+        let drift: [Option<f64>; 3] =
+            std::array::from_fn(|a| Some(self.epsilon[a]? - self.exact_epsilon(a)));
+        let mut guards = [Guard::Rule; 3];
+        let mut tie = false;
+        let epsilon = self.epsilon;
+        for axis in 0..3 {
+            let (Some(e), Some(k)) = (self.epsilon[axis], self.slope[axis]) else {
+                // Active: one unit every step.
+                step = self.mirror.toward(step, axis);
+                self.left[axis] -= 1;
+                continue;
+            };
+            // Past the middle of the cell: step (Liu: epsilon >= 0, so a
+            // tie steps; hold makes it strict).
+            let wants = e > 0.0 || (e == 0.0 && self.tie == TiePolicy::Advance);
+            tie |= e == 0.0;
+            let (moves, guard) = Guard::apply(wants, self.left[axis], self.remaining);
+            guards[axis] = guard;
+            let mut next = e;
+            if moves {
+                step = self.mirror.toward(step, axis);
+                self.left[axis] -= 1;
+                next -= 1.0;
+            }
+            // Every step epsilon gains k, and the sum is kept to d decimals.
+            self.epsilon[axis] = Some(round_decimals(next + k, self.decimals));
+        }
+        self.remaining -= 1;
+        let why = LiuWhy {
+            epsilon,
+            drift,
+            guards,
+            tie,
+            tie_policy: self.tie,
+            decimals: self.decimals,
+        };
+        Some((step, why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        Some(self.remaining)
+    }
+
+    fn setup_note(&self) -> String {
+        let d = self.decimals as usize;
+        let longest = self.mirror.longest();
+        let mut parts = Vec::new();
+        for axis in 0..3 {
+            let (Some(k), Some(e)) = (self.slope[axis], self.epsilon[axis]) else {
+                continue;
+            };
+            let exact = self.mirror.magnitude(axis) as f64 / longest as f64;
+            parts.push(format!(
+                "k_{n} = {}/{longest} = {exact:.6} kept as {k:.d$} (off by {:+.6} per step), epsilon({n})_1 = {e:.d$}",
+                self.mirror.magnitude(axis),
+                k - exact,
+                n = AXIS_NAMES[axis],
+            ));
+        }
+        let mut s = format!(
+            "{} decimal{} kept (eq. 14-15): ",
+            self.decimals,
+            if self.decimals == 1 { "" } else { "s" }
+        );
+        s.push_str(&if parts.is_empty() {
+            "every moving axis is active.".to_string()
+        } else {
+            parts.join("; ") + "."
+        });
+        s.push_str(self.mirror.mirror_note());
+        s
+    }
+}

@@ -1,0 +1,243 @@
+//! Wang et al. (2020), section 3.4: the discriminant of section 2.4 once per
+//! passive axis, for 2 to 6 axes (X Y Z A B C). Eq. (16)-(17) write it for
+//! the fourth and fifth axes (H for A, K for B); with three axes it is the
+//! method of discriminate regions, M and N.
+
+use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
+use crate::algorithms::AlgorithmInfo;
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::request::{FROM, MAX_STEPS, TO, tie_option};
+use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+
+pub const ID: &str = "nd";
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    title: "Discriminants per passive axis, 2 to 6 axes",
+    citation: "Wang, Xiao, Song, Yue, Bian & Li (2020), Spatial Straight-Line Drawing Algorithm Based on Method of Discriminate Regions, section 3.4, eq. (16)-(17) with eq. (6), (8), (10)",
+    teaching: "The axes that move farthest are active and step every time. Every other axis a keeps its own integer discriminant D_a, exactly as M and N do in 3D: it starts at 2|Δa| - |Δactive| (eq. 17), grows by 2|Δa| per step and shrinks by 2|Δactive| when a steps (eq. 16). a steps when D_a > 0 (the ideal line is past the middle of the cell on that axis when it leaves the cell), and on D_a = 0 as the tie policy says. The axes never consult each other, so each passive coordinate is the one nearest the ideal line at that active position: within 1/2 per passive axis, so the point is within sqrt(P)/2 of the line for P passive axes (sqrt(2)/2 in 3D, sqrt(5)/2 with six axes).",
+    errata: &[
+        "Section 3.4 says 'when H_{i+1} > 0, A_{i+1} = A_i + 1', one index later than eq. (8) and the region rules, where D_i decides the step to point i + 1. voxpath follows eq. (8): the discriminant before a step decides it.",
+        "The paper leaves D = 0 open; voxpath makes it the tie option (advance, as Liu's Table 1, by default).",
+    ],
+    columns: NdWhy::COLUMNS,
+    options: &[FROM, TO, tie_option("advance"), GCD, MAX_STEPS],
+    min_dims: 2,
+    max_dims: MAX_AXES,
+    default_tie: Some(TiePolicy::Advance),
+    trace: |req| {
+        let gcd = super::gcd_option(req)?;
+        super::trace_line(&INFO, req, |from, to, tie| Nd::new(from, to, tie, gcd))
+    },
+};
+
+/// The decision behind one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NdWhy {
+    /// Per axis, the discriminant before the step; None for active axes.
+    pub discriminants: [Option<i64>; MAX_AXES],
+    pub dims: usize,
+    pub tie: bool,
+    pub tie_policy: TiePolicy,
+}
+
+impl Decision for NdWhy {
+    const COLUMNS: &'static [Column] = &[
+        column(
+            "Dx",
+            ColumnKind::Int,
+            "Discriminant of x before the step (Wang eq. 6/16); empty when x is active or absent.",
+        ),
+        column(
+            "Dy",
+            ColumnKind::Int,
+            "Discriminant of y before the step (Wang's M when x is active).",
+        ),
+        column(
+            "Dz",
+            ColumnKind::Int,
+            "Discriminant of z before the step (Wang's N when x is active).",
+        ),
+        column(
+            "Da",
+            ColumnKind::Int,
+            "Discriminant of a before the step (Wang's H, eq. 16-17).",
+        ),
+        column(
+            "Db",
+            ColumnKind::Int,
+            "Discriminant of b before the step (Wang's K, eq. 16-17).",
+        ),
+        column("Dc", ColumnKind::Int, "Discriminant of c before the step."),
+        Column {
+            name: "tie",
+            kind: ColumnKind::Flag,
+            doc: "1 when a discriminant was exactly 0 and the tie policy decided.",
+        },
+    ];
+
+    fn write(&self, row: &mut [f64]) {
+        for axis in 0..MAX_AXES {
+            row[axis] = self.discriminants[axis].map_or(f64::NAN, |v| v as f64);
+        }
+        row[MAX_AXES] = self.tie as u8 as f64;
+    }
+
+    fn is_tie(&self) -> bool {
+        self.tie
+    }
+
+    fn explain(&self, _from: &Point, step: Step) -> String {
+        let active: Vec<usize> = (0..self.dims)
+            .filter(|&a| self.discriminants[a].is_none())
+            .collect();
+        let verb = if active.len() == 1 { "steps" } else { "step" };
+        let mut s = format!("{} {verb} as active", axis_list(active.into_iter()));
+        for axis in 0..self.dims {
+            let Some(d) = self.discriminants[axis] else {
+                continue;
+            };
+            let name = AXIS_NAMES[axis];
+            let verdict = match d.signum() {
+                1 => "steps".to_string(),
+                -1 => "holds".to_string(),
+                _ => format!(
+                    "is a tie, and '{}' {}",
+                    self.tie_policy.label(),
+                    if step.delta(axis) != 0 {
+                        "steps it"
+                    } else {
+                        "holds it"
+                    }
+                ),
+            };
+            s.push_str(&format!(
+                "; D{name} = {}, so {name} {verdict}",
+                signed_comparison(d)
+            ));
+        }
+        s.push_str(&format!(
+            "; the step goes to {}.",
+            step_target(step, self.dims)
+        ));
+        s
+    }
+}
+
+/// Wang's n-axis stepper.
+#[derive(Clone, Debug)]
+pub struct Nd {
+    mirror: Mirror,
+    /// |Δ| per axis divided by `divisor`: what the discriminants use.
+    magnitude: [i64; MAX_AXES],
+    divisor: i64,
+    /// |Δ| of the active axes divided by `divisor` (the paper's Δx).
+    longest: i64,
+    /// D per passive axis (eq. 16 recurrence); |D| <= 3·2^31 fits i64.
+    discriminant: [Option<i64>; MAX_AXES],
+    remaining: u64,
+    tie: TiePolicy,
+}
+
+impl Nd {
+    pub fn new(from: Point, to: Point, tie: TiePolicy, gcd: bool) -> Nd {
+        let mirror = Mirror::new(from, to);
+        let divisor = mirror.divisor(gcd);
+        let magnitude = std::array::from_fn(|a| {
+            if a < mirror.dims() {
+                mirror.magnitude(a) / divisor
+            } else {
+                0
+            }
+        });
+        let longest = mirror.longest() / divisor;
+        let discriminant = std::array::from_fn(|a| {
+            // Eq. (17): H_1 = 2ΔA - Δx.
+            (a < mirror.dims() && !mirror.is_active(a)).then(|| 2 * magnitude[a] - longest)
+        });
+        Nd {
+            mirror,
+            magnitude,
+            divisor,
+            longest,
+            discriminant,
+            remaining: mirror.longest() as u64,
+            tie,
+        }
+    }
+
+    /// Eq. (6) generalised: D_a at point `p` from the point alone (see
+    /// [`wang_discriminant`]), exact anywhere within +-2^30.
+    pub fn closed_form(&self, p: &Point) -> [Option<i64>; MAX_AXES] {
+        let reference = self.mirror.progress(p, self.mirror.major());
+        std::array::from_fn(|a| {
+            self.discriminant[a]?;
+            let progress = self.mirror.progress(p, a);
+            Some(wang_discriminant(self.magnitude[a], self.longest, reference, progress) as i64)
+        })
+    }
+}
+
+impl Stepper for Nd {
+    type Why = NdWhy;
+
+    fn next_step(&mut self) -> Option<(Step, NdWhy)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        self.remaining -= 1;
+        let mut step = Step::NONE;
+        let mut tie = false;
+        let discriminants = self.discriminant;
+        for axis in 0..self.mirror.dims() {
+            let Some(d) = &mut self.discriminant[axis] else {
+                // Active axes progress one unit every step (section 2.2).
+                step = self.mirror.toward(step, axis);
+                continue;
+            };
+            // Past the middle of the cell: step; exactly on it: the tie policy.
+            let moves = *d > 0 || (*d == 0 && self.tie == TiePolicy::Advance);
+            tie |= *d == 0;
+            if moves {
+                step = self.mirror.toward(step, axis);
+            }
+            // Eq. (16): H_{i+1} = H_i + 2ΔA - 2Δx (A_{i+1} - A_i).
+            *d += 2 * self.magnitude[axis] - 2 * self.longest * moves as i64;
+        }
+        let why = NdWhy {
+            discriminants,
+            dims: self.mirror.dims(),
+            tie,
+            tie_policy: self.tie,
+        };
+        Some((step, why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        Some(self.remaining)
+    }
+
+    fn setup_note(&self) -> String {
+        let dims = self.mirror.dims();
+        let active = (0..dims).filter(|&a| self.discriminant[a].is_none());
+        let mut s = format!(
+            "|Δ| = {}; active: {}",
+            self.mirror.magnitudes_text(1),
+            axis_list(active)
+        );
+        for axis in 0..dims {
+            if let Some(d) = self.discriminant[axis] {
+                s.push_str(&format!(
+                    "; D{n}_1 = 2|Δ{n}| - |Δactive| = 2·{} - {} = {d}",
+                    self.magnitude[axis],
+                    self.longest,
+                    n = AXIS_NAMES[axis]
+                ));
+            }
+        }
+        s.push_str(" (eq. 17).");
+        s.push_str(&self.mirror.divisor_note(self.divisor));
+        s.push_str(self.mirror.mirror_note());
+        s
+    }
+}

@@ -1,0 +1,242 @@
+//! A 6-connected (4-connected in 2D) walk along the line: the cells the
+//! ideal segment passes through, in the order it enters them. This is the
+//! voxel traversal of Amanatides & Woo (1987) between two cell centres, kept
+//! in integers.
+//!
+//! Grid points are cell centres, so the segment leaves the cell it is in
+//! through a face of axis a when it has gone half a cell plus k_a whole
+//! cells on that axis: at parameter t_a = (2·k_a + 1) / (2·|Δa|), k_a being
+//! the steps that axis has taken. The face crossed first is the smallest
+//! t_a; two fractions compare exactly by cross-multiplying, in i128.
+
+use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
+use crate::algorithms::AlgorithmInfo;
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::request::{FROM, MAX_STEPS, TO};
+use crate::trace::{Column, ColumnKind, Decision, Stepper};
+use std::cmp::Ordering;
+
+pub const ID: &str = "walk6";
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    title: "6-connected walk through the cells the line crosses",
+    citation: "Amanatides & Woo (1987), A Fast Voxel Traversal Algorithm for Ray Tracing, in integers between cell centres; the one-axis-per-step counterpart of the 2009 blog's greedy rule",
+    teaching: "Think of each grid point as the centre of a cell (a square, or a cube in 3D). Travelling along the ideal segment from the start centre, the line leaves its cell through one face; the walk steps into the cell beyond that face, so it visits exactly the cells the segment passes through, one axis per step, |Δx| + |Δy| + |Δz| steps in all. On axis a the line crosses its next face at the fraction t_a = (2k_a + 1)/(2|Δa|) of the way, where k_a is how many faces of that axis it has crossed already; the face with the smallest t comes first. Fractions are compared by cross-multiplying, (2k_a + 1)·|Δb| against (2k_b + 1)·|Δa|, so no rounding ever decides. When two t are equal the line passes exactly through an edge (or a corner) where cells meet, and any of those axes may go first: voxpath steps the lower axis first by default (tieAxis = higher reverses it); the cell it passes through then touches the line only at that edge. Every visited cell touches the segment, so no centre is farther than half a cell diagonal from the line: 1/sqrt(2) in 2D, sqrt(3)/2 in 3D.",
+    errata: &[],
+    columns: Walk6Why::COLUMNS,
+    options: &[FROM, TO, TIE_AXIS, MAX_STEPS],
+    min_dims: 2,
+    max_dims: MAX_AXES,
+    default_tie: None,
+    trace: |req| {
+        let order = TieAxis::from_request(req)?;
+        super::trace_line(&INFO, req, |from, to, _| Walk6::new(from, to, order))
+    },
+};
+
+/// t = num / den, a fraction of the way along the segment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Crossing {
+    /// 2·k + 1: half a cell plus k whole cells.
+    pub num: i64,
+    /// 2·|Δ|.
+    pub den: i64,
+}
+
+impl Crossing {
+    /// Exact comparison by cross-multiplication: each product is at most
+    /// (2^32 + 1)·2^32, beyond i64, so it is formed in i128.
+    pub fn compare(self, other: Crossing) -> Ordering {
+        (self.num as i128 * other.den as i128).cmp(&(other.num as i128 * self.den as i128))
+    }
+
+    fn value(self) -> f64 {
+        self.num as f64 / self.den as f64
+    }
+}
+
+/// The decision behind one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Walk6Why {
+    /// Per axis, where the segment crosses that axis's next face; None once
+    /// the axis has arrived (or never moves).
+    pub crossings: [Option<Crossing>; MAX_AXES],
+    pub dims: usize,
+    pub crossed: usize,
+    /// Another axis crosses at exactly the same t (an edge or corner).
+    pub tie: bool,
+    pub order: TieAxis,
+}
+
+impl Decision for Walk6Why {
+    const COLUMNS: &'static [Column] = &[
+        Column {
+            name: "crosses",
+            kind: ColumnKind::Category(&AXIS_NAMES),
+            doc: "The axis whose cell face the segment crosses next (the axis that steps).",
+        },
+        column(
+            "tX",
+            ColumnKind::Float,
+            "Where the segment crosses the next x face, as a fraction of its length: (2k_x + 1)/(2|Δx|); empty when x has arrived.",
+        ),
+        column(
+            "tY",
+            ColumnKind::Float,
+            "Where the segment crosses the next y face: (2k_y + 1)/(2|Δy|).",
+        ),
+        column(
+            "tZ",
+            ColumnKind::Float,
+            "Where the segment crosses the next z face.",
+        ),
+        column(
+            "tA",
+            ColumnKind::Float,
+            "Where the segment crosses the next a face.",
+        ),
+        column(
+            "tB",
+            ColumnKind::Float,
+            "Where the segment crosses the next b face.",
+        ),
+        column(
+            "tC",
+            ColumnKind::Float,
+            "Where the segment crosses the next c face.",
+        ),
+        Column {
+            name: "tie",
+            kind: ColumnKind::Flag,
+            doc: "1 when two axes cross at exactly the same t (an edge or corner) and the tie order chose.",
+        },
+    ];
+
+    fn write(&self, row: &mut [f64]) {
+        row[0] = self.crossed as f64;
+        for axis in 0..MAX_AXES {
+            row[1 + axis] = self.crossings[axis].map_or(f64::NAN, Crossing::value);
+        }
+        row[1 + MAX_AXES] = self.tie as u8 as f64;
+    }
+
+    fn is_tie(&self) -> bool {
+        self.tie
+    }
+
+    fn explain(&self, _from: &Point, step: Step) -> String {
+        let name = AXIS_NAMES[self.crossed];
+        let c = self.crossings[self.crossed].expect("the crossed axis has a crossing");
+        let mut s = format!(
+            "The segment leaves this cell through its {name} face first, at t = {}/{}",
+            c.num, c.den
+        );
+        // The runner-up: the next crossing among the other axes.
+        let next = (0..self.dims)
+            .filter(|&a| a != self.crossed)
+            .filter_map(|a| Some((a, self.crossings[a]?)))
+            .min_by(|x, y| x.1.compare(y.1));
+        if let Some((other, o)) = next {
+            let (lhs, rhs) = (c.num as i128 * o.den as i128, o.num as i128 * c.den as i128);
+            let relation = if lhs < rhs { "<" } else { "=" };
+            s.push_str(&format!(
+                "; {} crosses at {}/{} ({}·{} = {lhs} {relation} {}·{} = {rhs})",
+                AXIS_NAMES[other], o.num, o.den, c.num, o.den, o.num, c.den
+            ));
+        }
+        if self.tie {
+            let tied = (0..self.dims)
+                .filter(|&a| self.crossings[a].is_some_and(|o| o.compare(c) == Ordering::Equal));
+            s.push_str(&format!(
+                "; the segment passes exactly where the {} faces meet, and the {} axis goes first",
+                axis_list(tied),
+                self.order.label()
+            ));
+        }
+        s.push_str(&format!(
+            ", so {name} steps to {}.",
+            step_target(step, self.dims)
+        ));
+        s
+    }
+}
+
+/// The integer traversal.
+#[derive(Clone, Debug)]
+pub struct Walk6 {
+    mirror: Mirror,
+    /// Faces crossed per axis (k_a).
+    crossed: [i64; MAX_AXES],
+    remaining: u64,
+    order: TieAxis,
+}
+
+impl Walk6 {
+    pub fn new(from: Point, to: Point, order: TieAxis) -> Walk6 {
+        let mirror = Mirror::new(from, to);
+        Walk6 {
+            mirror,
+            crossed: [0; MAX_AXES],
+            remaining: mirror.total(),
+            order,
+        }
+    }
+
+    fn crossing(&self, axis: usize) -> Option<Crossing> {
+        let m = self.mirror.magnitude(axis);
+        (self.crossed[axis] < m).then(|| Crossing {
+            num: 2 * self.crossed[axis] + 1,
+            den: 2 * m,
+        })
+    }
+}
+
+impl Stepper for Walk6 {
+    type Why = Walk6Why;
+
+    fn next_step(&mut self) -> Option<(Step, Walk6Why)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        self.remaining -= 1;
+        let dims = self.mirror.dims();
+        let crossings: [Option<Crossing>; MAX_AXES] =
+            std::array::from_fn(|a| if a < dims { self.crossing(a) } else { None });
+        let mut first: Option<usize> = None;
+        for axis in 0..dims {
+            let Some(c) = crossings[axis] else { continue };
+            // The face the segment reaches first; equal t: the tie order.
+            if first.is_none_or(|f| self.order.replaces(c.compare(crossings[f].unwrap()))) {
+                first = Some(axis);
+            }
+        }
+        let crossed = first.expect("a walk with steps left has a face ahead");
+        let c = crossings[crossed].unwrap();
+        let tie = (0..dims)
+            .any(|a| a != crossed && crossings[a].is_some_and(|o| o.compare(c) == Ordering::Equal));
+        self.crossed[crossed] += 1;
+        let why = Walk6Why {
+            crossings,
+            dims,
+            crossed,
+            tie,
+            order: self.order,
+        };
+        Some((self.mirror.toward(Step::NONE, crossed), why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        Some(self.remaining)
+    }
+
+    fn setup_note(&self) -> String {
+        format!(
+            "|Δ| = {}: the segment between the two cell centres crosses {} cell faces, one step each; exact edge or corner crossings step the {} axis first.{}",
+            self.mirror.magnitudes_text(1),
+            self.mirror.total(),
+            self.order.label(),
+            self.mirror.mirror_note()
+        )
+    }
+}

@@ -1,0 +1,34 @@
+//! Helpers shared by the integration tests: run a stepper directly, and
+//! describe lines compactly.
+#![allow(dead_code)] // each test crate uses its own subset
+
+use voxpath::grid::Point;
+use voxpath::trace::Stepper;
+
+/// Every step of `stepper` from `from`: the point after the step and why.
+pub fn run<S: Stepper>(mut stepper: S, from: Point) -> Vec<(Point, S::Why)> {
+    let mut p = from;
+    let mut out = Vec::new();
+    while let Some((step, why)) = stepper.next_step() {
+        p.apply(step);
+        out.push((p, why));
+    }
+    out
+}
+
+/// The points of a path, start included.
+pub fn path<S: Stepper>(stepper: S, from: Point) -> Vec<Point> {
+    std::iter::once(from)
+        .chain(run(stepper, from).into_iter().map(|(p, _)| p))
+        .collect()
+}
+
+/// Points from coordinate arrays.
+pub fn points<const N: usize>(coords: &[[i64; N]]) -> Vec<Point> {
+    coords.iter().map(|c| Point::new(c)).collect()
+}
+
+/// The trace of a JSON request, which must succeed.
+pub fn trace(json: &str) -> voxpath::Trace {
+    voxpath::trace_json(json).unwrap_or_else(|e| panic!("{json}: {e}"))
+}
