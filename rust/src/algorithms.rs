@@ -28,7 +28,10 @@ pub struct AlgorithmInfo {
 }
 
 /// Every algorithm, in the order the page lists them.
-pub const ALGORITHMS: &[&AlgorithmInfo] = &[&crate::line::regions_wang::INFO];
+pub const ALGORITHMS: &[&AlgorithmInfo] = &[
+    &crate::line::regions_wang::INFO,
+    &crate::arc::circle_saleem::INFO,
+];
 
 /// The algorithm with this id, or an error listing the known ids.
 pub fn find(id: &str) -> Result<&'static AlgorithmInfo, Error> {

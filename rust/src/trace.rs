@@ -248,15 +248,26 @@ impl TraceBuilder {
 
     fn check_length(&self, steps: u64) -> Result<(), Error> {
         if steps > self.max_steps {
-            return Err(Error::field(
-                "maxSteps",
-                format!(
-                    "the path needs more than {} steps (at least {steps}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten the move",
-                    self.max_steps
-                ),
-            ));
+            return Err(self.too_long(steps));
         }
         Ok(())
+    }
+
+    /// The most steps this trace may have (the `maxSteps` option).
+    pub fn max_steps(&self) -> u64 {
+        self.max_steps
+    }
+
+    /// The error for a path found to need at least `steps` steps, more than
+    /// [`Self::max_steps`] (for steppers that count before running).
+    pub fn too_long(&self, steps: u64) -> Error {
+        Error::field(
+            "maxSteps",
+            format!(
+                "the path needs more than {} steps (at least {steps}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten the move",
+                self.max_steps
+            ),
+        )
     }
 
     /// Index of a column among the trace's columns, adding it if new. Two
