@@ -31,6 +31,7 @@ pub struct AlgorithmInfo {
 pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::line::regions_wang::INFO,
     &crate::arc::circle_saleem::INFO,
+    &crate::arc::arc_segments::INFO,
 ];
 
 /// The algorithm with this id, or an error listing the known ids.

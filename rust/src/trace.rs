@@ -270,6 +270,43 @@ impl TraceBuilder {
         )
     }
 
+    /// Appends a finished trace that starts where this one ends (a chord of
+    /// an arc run by a line algorithm, for example): its steps, its segments
+    /// with their replay states, and its ties. Its columns join this trace's
+    /// by equality, as in [`Self::run`]. `adapt` may change each segment's
+    /// ideal path and note: a chord is measured against the arc it stands for.
+    pub fn append(
+        &mut self,
+        part: Trace,
+        mut adapt: impl FnMut(&mut Segment),
+    ) -> Result<(), Error> {
+        assert_eq!(
+            part.start, self.position,
+            "an appended trace starts where this one ends"
+        );
+        let offset = self.steps.len() as u64;
+        self.check_length(offset + part.steps())?;
+        let slots: Vec<usize> = part.columns.iter().map(|c| self.column_slot(c)).collect();
+        for mut segment in part.segments {
+            segment.first_step += offset;
+            for index in &mut segment.column_index {
+                *index = slots[*index];
+            }
+            adapt(&mut segment);
+            self.segments.push(segment);
+        }
+        self.steps.reserve(part.steps.len());
+        for step in part.steps {
+            self.position.apply(step);
+            self.steps.push(step);
+            if self.steps.len() as u64 % CHECKPOINT_INTERVAL == 0 {
+                self.positions.push(self.position);
+            }
+        }
+        self.ties += part.metrics.ties;
+        Ok(())
+    }
+
     /// Index of a column among the trace's columns, adding it if new. Two
     /// segments share a column when they declare the same one.
     fn column_slot(&mut self, column: &Column) -> usize {

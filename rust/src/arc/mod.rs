@@ -8,6 +8,7 @@
 //! by at most [`RADIUS_TOLERANCE`] grid unit; each algorithm says how it
 //! closes the difference.
 
+pub mod arc_segments;
 pub mod circle_saleem;
 pub mod curve;
 pub mod planes;
