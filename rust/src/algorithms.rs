@@ -32,6 +32,7 @@ pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::line::regions_wang::INFO,
     &crate::arc::circle_saleem::INFO,
     &crate::arc::arc_segments::INFO,
+    &crate::arc::helix::INFO,
 ];
 
 /// The algorithm with this id, or an error listing the known ids.

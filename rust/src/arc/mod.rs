@@ -11,6 +11,7 @@
 pub mod arc_segments;
 pub mod circle_saleem;
 pub mod curve;
+pub mod helix;
 pub mod planes;
 
 use crate::error::Error;
