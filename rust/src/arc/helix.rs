@@ -13,11 +13,13 @@
 //! mode is exactly the comparison a learner wants.
 //!
 //! Saleem's linear axis advances evenly per arc step, not per degree. The
-//! circle takes more steps per degree near the diagonals than near the axes
-//! (a ratio of up to sqrt(2)), so at a given angle the height differs from
-//! the true helix's by up to about 0.5% of one turn's rise (the largest gap
-//! between the step fraction sin θ / sqrt(2) and the angle fraction 2θ/π
-//! over an octant pair is 0.021 of a quarter turn), plus half a step.
+//! circle takes 0.9003 r steps per radian on average (4 sqrt(2) r per turn),
+//! but in octant 1 it has taken r sin θ steps at angle θ, which leads or
+//! lags 0.9003 r θ by up to 0.0296 r (at θ = 25.8°; the other octants
+//! mirror it). That spread of 0.0593 r is 0.0593 / (2π × 0.9003) = 1.05% of a
+//! turn, so at a given angle the height differs from the true helix's by up
+//! to 1.05% of one turn's rise (0.52% for arcs from axis to axis), plus the
+//! height of one arc step and half a linear step.
 //! Segments mode interpolates by angle and has no such drift.
 
 use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
@@ -61,7 +63,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
     title: "Helix (arc plus linear axis)",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 5 (mode saleem); chords as in arc-segments (mode segments)",
-    teaching: "A helix is a circle in the plane while the linear (normal) axis travels. Saleem treats it as a 2D line between two axes: the arc, which needs n_c steps (counted by a dry run of the circle, the paper's dummy procedure), and the linear axis, which needs n_z. The larger one steps every iteration; the smaller one keeps a Bresenham error, adding 2 × its count each iteration and stepping when the error exceeds the larger count (then subtracting 2 × the larger count). The linear axis thus advances evenly per arc step, not per degree: the circle takes up to sqrt(2) times more steps per degree near the diagonals, so the height drifts from the true helix by up to about 0.5% of a turn's rise. Segments mode, as most controllers do, cuts the helix into chords with the height interpolated by angle.",
+    teaching: "A helix is a circle in the plane while the linear (normal) axis travels. Saleem treats it as a 2D line between two axes: the arc, which needs n_c steps (counted by a dry run of the circle, the paper's dummy procedure), and the linear axis, which needs n_z. The larger one steps every iteration; the smaller one keeps a Bresenham error, adding 2 × its count each iteration and stepping when the error exceeds the larger count (then subtracting 2 × the larger count). The linear axis thus advances evenly per arc step, not per degree: the circle takes up to sqrt(2) times more steps per degree near the diagonals, so at a given angle the height differs from the true helix's by up to about 1% of a turn's rise. Segments mode, as most controllers do, cuts the helix into chords with the height interpolated by angle.",
     errata: &[
         "The helical() pseudo-code has no loop: the body under `if(nz > nc)` and `else` runs once. voxpath iterates max(n_c, n_z) times.",
         "helical() calls nextStep(currentX, currentY, r) with currentX and currentY never declared or set; they are the arc's current point relative to the centre (eq. 12-13).",
