@@ -13,6 +13,7 @@
 
 pub mod algorithms;
 pub mod arc;
+pub mod compare;
 pub mod error;
 pub mod experiment;
 pub mod grid;
