@@ -356,7 +356,7 @@ impl Stepper for SaleemHelix {
     fn setup_note(&self) -> String {
         let z = AXIS_NAMES[self.normal];
         format!(
-            "Dry run (the paper's dummy procedure): the arc takes n_c = {} steps; the linear axis {z} needs n_z = {}. {} major: {} steps every iteration, {} iterations in all. Arc: {}",
+            "Dry run (the paper's dummy procedure): the arc takes n_c = {} steps; the linear axis {z} needs n_z = {}. {} major: {} steps every iteration, {} iterations in all. The arc, projected on the plane of the start: {}",
             self.n_c,
             self.n_z,
             MAJOR_LABELS[self.major as usize],
