@@ -42,7 +42,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     errata: &[
         "The pseudo-code handles counter-clockwise travel only, although the text introduces G02 (clockwise). voxpath runs clockwise arcs as counter-clockwise arcs of the mirror image (v -> -v), which keeps every error value.",
         "nextStep mixes x and x1, y and y1 (the start point) in the octant 1/4/5/8 branch and increments x1 instead of x in the other. voxpath uses the current point throughout.",
-        "The pseudo-code's test `2*(1+incX*2*x)*(...) + (1+incX*2*x) < 0` drops the square of eq. (10)'s last term (1 - 2x)², and its other branch flips the inequality without dividing by the negative factor. voxpath decides by eq. (7) itself, comparing the two |x² + y² - r²|.",
+        "nextStep's tests `2*d*B + d < 0` (when d > 0) and `2*d*B + d > 0` (when d < 0), with d = 1 + 2*incX*x and B the error of the candidate that keeps x, drop the square of eq. (10)'s last term d² and keep the factor the text says to eliminate. Both reduce to 2B + 1 < 0, which is not eq. (10) (2B + d compared with 0) and in octant 1 moves x inward exactly when the kept cell is already inside the circle: from (5, 2) on r = 5 it keeps (5, 3), error 9, where eq. (7) takes (4, 3), error 0. voxpath decides by eq. (7) itself, comparing the two |x² + y² - r²|.",
         "nextStep tests `|x| > |y|` and then `|x| < |y|` with the updated point, so one call can make two moves, and on a diagonal |x| = |y| (for example (5, 5) on r² = 50) it makes none and the loop never ends. voxpath takes the octant ahead of the point: boundaries belong to the octant travel enters.",
         "complete() stops \"at the nearest point\" once the end's octant is reached, so the path can end off the programmed end point. voxpath stops at the circle point nearest the end (of the two either side of the ray from the centre through it) and closes the rest with marked correction steps.",
     ],
@@ -585,6 +585,39 @@ mod tests {
         assert_eq!(points(&t)[1][0], 4);
         assert_eq!(t.decisions(0, 1).columns[0][0], 1.0);
         assert_eq!(t.end(), Point::new(&[-5, 5, 0]));
+    }
+
+    /// nextStep's printed test for moving x (octant 1/4/5/8 branch), with
+    /// the current point throughout (its x1/y1 mix-up set aside): d = 1 +
+    /// 2 incX x, B = x² + y² - r² + 1 + 2 incY y (the kept candidate's error).
+    fn printed_moves_x(x: i64, y: i64, r_sq: i64, inc_x: i64, inc_y: i64) -> bool {
+        let d = 1 + inc_x * 2 * x;
+        let b = x * x + y * y - r_sq + 1 + inc_y * 2 * y;
+        if inc_x * x > 0 {
+            2 * d * b + d < 0
+        } else {
+            2 * d * b + d > 0
+        }
+    }
+
+    #[test]
+    fn the_printed_next_step_test_inverts_eq_10() {
+        // r = 5, at (5, 2) in octant 1 (incX = -1, incY = +1): the next row
+        // y = 3 has (5, 3), error 9, and (4, 3), error 0. Eq. (7) moves x;
+        // the printed test does not.
+        assert!(!printed_moves_x(5, 2, 25, -1, 1));
+        let t = trace(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0,0]}"#);
+        assert_eq!(points(&t)[3], [4, 3, 0]);
+        // And at (5, 0) -> y = 1 the printed test agrees only by luck:
+        // (5, 1) error 1 is kept by both.
+        assert!(!printed_moves_x(5, 0, 25, -1, 1));
+        assert_eq!(points(&t)[1], [5, 1, 0]);
+        // Where the kept cell is inside, the printed test moves x inward,
+        // away from the circle: r = 9 from (9, 0) reaches (8, 3); row 4 has
+        // (8, 4), error -1, and (7, 4), error -16. Eq. (7) keeps (8, 4).
+        assert!(printed_moves_x(8, 3, 81, -1, 1));
+        let t = trace(r#"{"algorithm":"circle","from":[9,0,0],"to":[0,9,0],"center":[0,0,0]}"#);
+        assert_eq!(points(&t)[3..5], [[8, 3, 0], [8, 4, 0]]);
     }
 
     #[test]
