@@ -138,7 +138,8 @@ describe('algorithms()', () => {
     const regions = (await algorithms()).find((a) => a.id === 'regions')!;
     expect(regions.citation).toContain('Wang');
     expect(regions.columns.map((c) => c.name)).toEqual(['M', 'N', 'region', 'corner', 'tie']);
-    expect(regions.options.map((o) => o.name)).toEqual(['from', 'to', 'tie', 'maxSteps']);
+    expect(regions.options.map((o) => o.name)).toEqual(['from', 'to', 'tie', 'gcd', 'maxSteps']);
+    expect(regions.family).toBe('line');
     expect(regions.defaultTie).toBe('advance');
     expect(regions.errata.some((e) => e.includes('Table 2'))).toBe(true);
   });

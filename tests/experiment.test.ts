@@ -57,7 +57,7 @@ describe('voxpath experiment random-lines', () => {
     const r = run('--count', '10', '--from', '1,1,1');
     expect(r.status).toBe(2);
     expect(r.stderr.split('\n')[0]).toBe(
-      'voxpath: unknown flag --from for random-lines with regions (it takes --count, --seed, --max-coordinate, --dims, --tie, --max-steps)',
+      'voxpath: unknown flag --from for random-lines with regions (it takes --count, --seed, --max-coordinate, --dims, --tie, --gcd, --max-steps)',
     );
   });
 });

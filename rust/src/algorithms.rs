@@ -8,9 +8,28 @@ use crate::trace::{Column, ColumnKind, TiePolicy, Trace};
 use serde::Serialize;
 use serde::ser::{SerializeStruct, Serializer};
 
+/// What an algorithm draws, and so which inputs it needs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// A straight move between two points (`from`, `to`).
+    Line,
+    /// An arc, circle or helix about a centre (`from`, `to`, `center`, ...).
+    Arc,
+}
+
+impl Family {
+    pub fn label(self) -> &'static str {
+        match self {
+            Family::Line => "line",
+            Family::Arc => "arc",
+        }
+    }
+}
+
 /// One algorithm of the catalogue.
 pub struct AlgorithmInfo {
     pub id: &'static str,
+    pub family: Family,
     pub title: &'static str,
     /// Document and section.
     pub citation: &'static str,
@@ -37,6 +56,9 @@ pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::line::greedy::INFO,
     &crate::line::walk6::INFO,
     &crate::line::dda::INFO,
+    &crate::arc::circle_saleem::INFO,
+    &crate::arc::arc_segments::INFO,
+    &crate::arc::helix::INFO,
 ];
 
 /// The algorithm with this id, or an error listing the known ids.
@@ -77,8 +99,9 @@ impl Serialize for Column {
 
 impl Serialize for AlgorithmInfo {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut st = s.serialize_struct("AlgorithmInfo", 10)?;
+        let mut st = s.serialize_struct("AlgorithmInfo", 11)?;
         st.serialize_field("id", self.id)?;
+        st.serialize_field("family", self.family.label())?;
         st.serialize_field("title", self.title)?;
         st.serialize_field("citation", self.citation)?;
         st.serialize_field("teaching", self.teaching)?;

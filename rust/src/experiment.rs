@@ -212,6 +212,16 @@ pub const PAPER_FIGURE_9_ERRATUM: &str = "Figure 9 gives 0.7071 as both the larg
 /// 0..=100, 3 axes), traced with `algorithm`.
 pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
     let info = crate::algorithms::find(&request.algorithm)?;
+    if info.family != crate::algorithms::Family::Line {
+        return Err(Error::field(
+            "algorithm",
+            format!(
+                "random-lines traces lines; {} is a {} algorithm",
+                info.id,
+                info.family.label()
+            ),
+        ));
+    }
     let count = request.integer("count")?.unwrap_or(100);
     if !(1..=MAX_LINES as i64).contains(&count) {
         return Err(Error::field(
@@ -375,6 +385,10 @@ mod tests {
                 .unwrap_err()
                 .to_string(),
             "dims: regions takes 3 to 3 axes, got 2"
+        );
+        assert_eq!(
+            run(r#"{"algorithm":"circle"}"#).unwrap_err().to_string(),
+            "algorithm: random-lines traces lines; circle is a arc algorithm"
         );
         // Unknown options reach the algorithm, which names them.
         assert_eq!(

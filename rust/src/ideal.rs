@@ -1,6 +1,7 @@
 //! The ideal (continuous) path a step sequence approximates, and the distance
 //! of a grid point from it.
 
+use crate::arc::curve::{ArcPath, HelixPath};
 use crate::grid::{MAX_AXES, Point};
 use serde::Serialize;
 
@@ -9,13 +10,42 @@ use serde::Serialize;
 pub enum IdealPath {
     /// The straight segment between two grid points.
     Line { from: Point, to: Point },
+    /// A circular arc (see `arc::curve`): deviation is the radial error.
+    Arc(ArcPath),
+    /// A helix: deviation is the distance to its nearest point.
+    Helix(HelixPath),
 }
 
 /// How the ideal path is described to a viewer (grid units).
 #[derive(Serialize, Debug, Clone, PartialEq)]
 #[serde(tag = "kind", rename_all = "camelCase")]
 pub enum IdealPathInfo {
-    Line { from: Vec<i64>, to: Vec<i64> },
+    Line {
+        from: Vec<i64>,
+        to: Vec<i64>,
+    },
+    /// Angles in radians, atan2(v, u) in the plane's right-handed frame;
+    /// sweep > 0 is counter-clockwise (G03).
+    #[serde(rename_all = "camelCase")]
+    Arc {
+        center: Vec<i64>,
+        plane: &'static str,
+        radius: f64,
+        start_rad: f64,
+        sweep_rad: f64,
+    },
+    /// As Arc, plus the height on the normal axis: start_height + rise * t
+    /// at fraction t of the sweep.
+    #[serde(rename_all = "camelCase")]
+    Helix {
+        center: Vec<i64>,
+        plane: &'static str,
+        radius: f64,
+        start_rad: f64,
+        sweep_rad: f64,
+        start_height: f64,
+        rise: f64,
+    },
 }
 
 impl IdealPath {
@@ -25,6 +55,8 @@ impl IdealPath {
                 from: from.coords().to_vec(),
                 to: to.coords().to_vec(),
             },
+            IdealPath::Arc(arc) => arc.info(),
+            IdealPath::Helix(helix) => helix.info(),
         }
     }
 
@@ -59,15 +91,20 @@ impl IdealPath {
                 }
                 (cross_norm2 / d_norm2).sqrt()
             }
+            IdealPath::Arc(arc) => arc.deviation(p),
+            IdealPath::Helix(helix) => helix.deviation(p),
         }
     }
 
     /// Per-axis error of `p` against the ideal position after `step` of
     /// `steps` equal parts of the path (Wang eq. 11: phi_x, phi_y, phi_z).
     /// For a line whose active axis steps every time this is 0 on that axis.
+    /// For arcs and helices progress is the point's own angle (`arc::curve`).
     pub fn axis_error(&self, p: &Point, step: u64, steps: u64) -> [f64; MAX_AXES] {
         let mut phi = [0.0; MAX_AXES];
         match self {
+            IdealPath::Arc(arc) => return arc.axis_error(p),
+            IdealPath::Helix(helix) => return helix.axis_error(p),
             IdealPath::Line { from, to } => {
                 let d = from.delta_to(to);
                 let r = from.delta_to(p);
@@ -94,6 +131,8 @@ impl IdealPath {
                 .chain(to.coords())
                 .map(|&c| c as f64)
                 .collect(),
+            IdealPath::Arc(arc) => arc.polyline(),
+            IdealPath::Helix(helix) => helix.polyline(),
         }
     }
 }

@@ -12,6 +12,8 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod algorithms;
+pub mod arc;
+pub mod compare;
 pub mod error;
 pub mod experiment;
 pub mod grid;

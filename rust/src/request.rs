@@ -83,6 +83,15 @@ pub struct Request {
 }
 
 impl Request {
+    /// A request built in code, with `options` as a JSON object would give
+    /// them (for example one line of an arc split into chords).
+    pub fn new(algorithm: &str, options: Map<String, Value>) -> Request {
+        Request {
+            algorithm: algorithm.to_string(),
+            options,
+        }
+    }
+
     /// Parses `{"algorithm": "...", ...options}` from JSON text.
     pub fn from_json(text: &str) -> Result<Request, Error> {
         let value: Value = serde_json::from_str(text)

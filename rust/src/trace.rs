@@ -248,14 +248,62 @@ impl TraceBuilder {
 
     fn check_length(&self, steps: u64) -> Result<(), Error> {
         if steps > self.max_steps {
-            return Err(Error::field(
-                "maxSteps",
-                format!(
-                    "the path needs more than {} steps (at least {steps}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten the move",
-                    self.max_steps
-                ),
-            ));
+            return Err(self.too_long(steps));
         }
+        Ok(())
+    }
+
+    /// The most steps this trace may have (the `maxSteps` option).
+    pub fn max_steps(&self) -> u64 {
+        self.max_steps
+    }
+
+    /// The error for a path found to need at least `steps` steps, more than
+    /// [`Self::max_steps`] (for steppers that count before running).
+    pub fn too_long(&self, steps: u64) -> Error {
+        Error::field(
+            "maxSteps",
+            format!(
+                "the path needs more than {} steps (at least {steps}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten the move",
+                self.max_steps
+            ),
+        )
+    }
+
+    /// Appends a finished trace that starts where this one ends (a chord of
+    /// an arc run by a line algorithm, for example): its steps, its segments
+    /// with their replay states, and its ties. Its columns join this trace's
+    /// by equality, as in [`Self::run`]. `adapt` may change each segment's
+    /// ideal path and note: a chord is measured against the arc it stands for.
+    pub fn append(
+        &mut self,
+        part: Trace,
+        mut adapt: impl FnMut(&mut Segment),
+    ) -> Result<(), Error> {
+        assert_eq!(
+            part.start, self.position,
+            "an appended trace starts where this one ends"
+        );
+        let offset = self.steps.len() as u64;
+        self.check_length(offset + part.steps())?;
+        let slots: Vec<usize> = part.columns.iter().map(|c| self.column_slot(c)).collect();
+        for mut segment in part.segments {
+            segment.first_step += offset;
+            for index in &mut segment.column_index {
+                *index = slots[*index];
+            }
+            adapt(&mut segment);
+            self.segments.push(segment);
+        }
+        self.steps.reserve(part.steps.len());
+        for step in part.steps {
+            self.position.apply(step);
+            self.steps.push(step);
+            if self.steps.len() as u64 % CHECKPOINT_INTERVAL == 0 {
+                self.positions.push(self.position);
+            }
+        }
+        self.ties += part.metrics.ties;
         Ok(())
     }
 

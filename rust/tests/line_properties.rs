@@ -106,7 +106,7 @@ proptest! {
     ) {
         let m = magnitudes(&from, &to);
         let delta = from.delta_to(&to);
-        for a in voxpath::algorithms::ALGORITHMS {
+        for a in common::line_algorithms() {
             if !(a.min_dims..=a.max_dims).contains(&from.dims()) {
                 continue;
             }

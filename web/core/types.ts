@@ -88,6 +88,8 @@ export interface OptionSpec {
 /** One catalogued algorithm. */
 export interface AlgorithmInfo {
   id: string;
+  /** line: a straight move (from, to); arc: an arc, circle or helix about a centre. */
+  family: 'line' | 'arc';
   title: string;
   /** Document and section the algorithm comes from. */
   citation: string;

@@ -9,7 +9,7 @@
 //! "-= Δmajor" there: the `variant` option runs that too.
 
 use super::{Guard, Mirror, step_target};
-use crate::algorithms::AlgorithmInfo;
+use crate::algorithms::{AlgorithmInfo, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
@@ -30,6 +30,7 @@ pub const VARIANT: OptionSpec = OptionSpec {
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    family: Family::Line,
     title: "Bresenham's line in 2D, all eight octants",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 2, eq. (1)-(5)",
     teaching: "Find the octant: the axis that moves farther (the major axis) steps every time, so only the other (minor) axis needs a decision. The minor axis carries an error: how far the ideal line has risen above it, in units of 1/(2·Δmajor) so that every quantity is an integer. Each step adds 2·Δminor; when the error exceeds Δmajor (the line is more than half a cell away) the minor axis steps and the error drops by 2·Δmajor (one whole cell). An error exactly equal to Δmajor means the line passes exactly half way: Saleem's strict '>' holds there (tie = hold). Other octants run the same rule on |Δ| and step toward the end point.",

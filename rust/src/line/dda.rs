@@ -3,7 +3,7 @@
 //! step and round it to the nearest cell.
 
 use super::{GUARD_LABELS, Guard, Mirror, column, step_target};
-use crate::algorithms::AlgorithmInfo;
+use crate::algorithms::{AlgorithmInfo, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Stepper};
@@ -12,6 +12,7 @@ pub const ID: &str = "dda";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    family: Family::Line,
     title: "Floating-point DDA",
     citation: "The digital differential analyser as textbooks give it (cited by Wang et al. 2020, section 1, refs. 8-10), in f64",
     teaching: "Take n = the largest |Δ| steps. Each axis a keeps a float accumulator that starts at its start coordinate and gains Δa/n every step; the point is each accumulator rounded to the nearest cell, floor(acc + 0.5) (halves round up, toward +infinity, whichever way the axis travels). In exact arithmetic that is Bresenham's rule. In floating point it is not, in two ways. Δa/n is rarely exact in binary (0.3 is not), so after k additions the accumulator is not k·Δa/n; where the exact value is a half (the line passes exactly between two cells) the stored error alone decides which cell wins. And each addition is rounded to the spacing of floats at the accumulator's size, 2^-23 near 2^30 instead of 2^-52 near 1, always the same way for the same increment: over millions of steps far from the origin the error piles up into whole cells, and the last point can miss the end point. voxpath's finish rule keeps the trace exact: an axis that has reached its end coordinate is held, one with as many units left as steps is forced, and the guard column shows when that happened.",

@@ -8,7 +8,7 @@
 //! goal, not along the line.
 
 use super::{Mirror, TIE_AXIS, TieAxis, column, step_target};
-use crate::algorithms::AlgorithmInfo;
+use crate::algorithms::{AlgorithmInfo, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Stepper};
@@ -17,6 +17,7 @@ pub const ID: &str = "greedy";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    family: Family::Line,
     title: "Greedy step toward the goal, one axis at a time",
     citation: "\"CNC Line Following Algorithm\", blog post of 6 July 2009 (low-cost 3D printer series)",
     teaching: "Treat each step as a decision between single-axis moves toward the goal. Try each one in thought, compute the squared distance from where it would land to the goal (no square root needed: the smaller square is the smaller distance), and take the smallest; on a tie the lower axis (the post's xDist <= yDist picks x). Because a unit move on axis a shrinks the squared distance by 2|left on a| - 1, this always moves the axis with the most left: (0,0)->(8,3) runs along x to (6,0) and only then alternates up to (8,3). The speed is constant, but the path heads for the goal rather than following the line: it strays up to about a fifth of the move's length (0.22·|Δx| when |Δy| = 0.4·|Δx|), and the error per axis at each moment (eq. 11, time-based) is larger still. Compare walk6, which also moves one axis per step but follows the line.",

@@ -9,7 +9,7 @@
 //! decimals, the slope k itself is rounded and the error accumulates.
 
 use super::{GUARD_LABELS, Guard, Mirror, axis_list, column, step_target, wang_discriminant};
-use crate::algorithms::AlgorithmInfo;
+use crate::algorithms::{AlgorithmInfo, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
@@ -36,6 +36,7 @@ pub const DRIFT_EXAMPLE: [i64; 3] = [7, 1, 1];
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    family: Family::Line,
     title: "Liu's 3D Bresenham with a decimal discriminant kept to d places",
     citation: "Liu & Cheng (2002), Three-dimensional extension of Bresenham's algorithm, as given in Wang et al. (2020) section 3.2, eq. (14)-(15), Table 1, and discussed in section 4, Fig. 10",
     teaching: "Liu's rule in decimals: the slope of each passive axis against the active one, k = Δy/Δx, and a decision parameter epsilon(y) = k - 0.5 to start (eq. 14-15). Every step the active axis moves; y moves when epsilon(y) >= 0 (the line is past the middle of the cell), and then epsilon(y) loses 1; every step epsilon(y) gains k. With exact numbers this is Bresenham's rule (epsilon = Wang's M / 2Δx). A controller that keeps only d decimals rounds k and each new epsilon, and the error of the rounded slope piles up every step until it flips a decision. On (0,0,0)->(7,1,1), the first line with x active where this happens, one decimal keeps k = 1/7 = 0.142857 as 0.1: epsilon runs -0.4, -0.3, -0.2, -0.1, 0 instead of crossing 0 at x = 4, so y and z step at x = 5 and the point (4,0,0) is sqrt(32/51) = 0.792 from the line, beyond the sqrt(2)/2 of every exact rule (Wang Fig. 10). With 4 decimals the same line is Bresenham's, at most 0.594 away. More decimals shrink the drift but never remove it: an exact tie (epsilon = 0) comes out a hair above or below 0, so (0,0,0)->(14,13,0) steps y at x = 7 even with ten decimals and tie = hold (k = 13/14 kept to ten decimals is 3e-11 too large). Rounding here: v·10^d is rounded to an integer half away from zero and divided by 10^d, in f64 (so a value such as 0.35, stored just below, rounds by its binary value). Because a drifting axis could miss its end point, a finish rule holds an axis that has arrived and forces one that has as many units left as steps; the guard column shows when it acted.",

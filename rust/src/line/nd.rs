@@ -4,7 +4,7 @@
 //! method of discriminate regions, M and N.
 
 use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
-use crate::algorithms::AlgorithmInfo;
+use crate::algorithms::{AlgorithmInfo, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
@@ -13,6 +13,7 @@ pub const ID: &str = "nd";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    family: Family::Line,
     title: "Discriminants per passive axis, 2 to 6 axes",
     citation: "Wang, Xiao, Song, Yue, Bian & Li (2020), Spatial Straight-Line Drawing Algorithm Based on Method of Discriminate Regions, section 3.4, eq. (16)-(17) with eq. (6), (8), (10)",
     teaching: "The axes that move farthest are active and step every time. Every other axis a keeps its own integer discriminant D_a, exactly as M and N do in 3D: it starts at 2|Δa| - |Δactive| (eq. 17), grows by 2|Δa| per step and shrinks by 2|Δactive| when a steps (eq. 16). a steps when D_a > 0 (the ideal line is past the middle of the cell on that axis when it leaves the cell), and on D_a = 0 as the tie policy says. The axes never consult each other, so each passive coordinate is the one nearest the ideal line at that active position: within 1/2 per passive axis, so the point is within sqrt(P)/2 of the line for P passive axes (sqrt(2)/2 in 3D, sqrt(5)/2 with six axes).",

@@ -12,7 +12,7 @@
 //! formulas apply unchanged (the paper's "intrinsic symmetry").
 
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
-use crate::algorithms::AlgorithmInfo;
+use crate::algorithms::{AlgorithmInfo, Family};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
@@ -22,6 +22,7 @@ pub const ID: &str = "regions";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    family: Family::Line,
     title: "Method of discriminate regions (3D line)",
     citation: "Wang, Xiao, Song, Yue, Bian & Li (2020), Spatial Straight-Line Drawing Algorithm Based on Method of Discriminate Regions, sections 2.2-2.5, eq. (6), (8), (10)",
     teaching: "The axis that moves farthest is active and steps every time. Each other (passive) axis keeps an integer discriminant: M for the first, N for the second. M > 0 means the ideal line is past the middle of the cell in that axis when it leaves the cell, so that axis steps too. Together the signs of M and N say which of the four regions a-d of the cell's exit face the line crosses, and so which corner A-D is the next point. After each step, M grows by 2|Δy| and, when y stepped, shrinks by 2|Δx|: integers only, no drift.",

@@ -10,7 +10,7 @@
 //! t_a; two fractions compare exactly by cross-multiplying, in i128.
 
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
-use crate::algorithms::AlgorithmInfo;
+use crate::algorithms::{AlgorithmInfo, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Stepper};
@@ -20,6 +20,7 @@ pub const ID: &str = "walk6";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    family: Family::Line,
     title: "6-connected walk through the cells the line crosses",
     citation: "Amanatides & Woo (1987), A Fast Voxel Traversal Algorithm for Ray Tracing, in integers between cell centres; the one-axis-per-step counterpart of the 2009 blog's greedy rule",
     teaching: "Think of each grid point as the centre of a cell (a square, or a cube in 3D). Travelling along the ideal segment from the start centre, the line leaves its cell through one face; the walk steps into the cell beyond that face, so it visits exactly the cells the segment passes through, one axis per step, |Δx| + |Δy| + |Δz| steps in all. On axis a the line crosses its next face at the fraction t_a = (2k_a + 1)/(2|Δa|) of the way, where k_a is how many faces of that axis it has crossed already; the face with the smallest t comes first. Fractions are compared by cross-multiplying, (2k_a + 1)·|Δb| against (2k_b + 1)·|Δa|, so no rounding ever decides. When two t are equal the line passes exactly through an edge (or a corner) where cells meet, and any of those axes may go first: voxpath steps the lower axis first by default (tieAxis = higher reverses it); the cell it passes through then touches the line only at that edge. Every visited cell touches the segment, so no centre is farther than half a cell diagonal from the line: 1/sqrt(2) in 2D, sqrt(3)/2 in 3D.",

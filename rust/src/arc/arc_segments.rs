@@ -1,0 +1,526 @@
+//! Arcs split into chords, each chord stepped by a line algorithm: the
+//! G-code interpreter blog's method ("How to Improve the 2-axis CNC GCODE
+//! Interpreter to Understand Arcs"), with Grbl's chord-tolerance rule as
+//! the alternative way to count chords.
+//!
+//! Chord count n (at least 1):
+//! - `segmentLength` L (the blog's CM_PER_SEGMENT): n = floor(|sweep| r / L);
+//! - `tolerance` t (Grbl's arc_tolerance, motion_control.c):
+//!   n = floor(|sweep| r / (2 sqrt(t (2r - t)))): a chord of half-angle α has
+//!   sagitta r (1 - cos α) = t when its half-length r sin α = sqrt(t (2r - t)),
+//!   and Grbl counts arc length per chord as the chord length.
+//!
+//! Vertices: the arc point at fraction i / n of the sweep (i = 1..n-1), each
+//! coordinate rounded to the nearest grid unit (halves away from zero), then
+//! the exact end point: n chords, the last ending exactly on `to`. A vertex
+//! that rounds onto the previous one is dropped (its chord would have no
+//! steps). Each chord is the very trace `lineAlgorithm` gives for it.
+//!
+//! Deviation bound: a chord of the true arc is within its sagitta
+//! s = r (1 - cos(|sweep| / 2n)) of the circle; rounding moves each vertex at
+//! most sqrt(2)/2 (sqrt(3)/2 for a helix, whose height is rounded too); the
+//! line algorithm stays within its own bound of the rounded chord (sqrt(2)/2
+//! for regions). So every point is within s + sqrt(2)/2 + sqrt(2)/2 of the arc.
+
+use super::curve::{HelixPath, degrees};
+use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
+use crate::algorithms::{self, AlgorithmInfo, Family};
+use crate::error::Error;
+use crate::grid::Point;
+use crate::ideal::IdealPath;
+use crate::line::regions_wang::RegionsWhy;
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
+use crate::trace::{Decision, Trace, TraceBuilder};
+use serde_json::{Map, Value};
+use std::fmt::Write;
+
+pub const ID: &str = "arc-segments";
+
+/// Catalogue ids a chord may be stepped with: the algorithms that take 3
+/// axes and need no option but from and to (a test checks the catalogue
+/// against this list, so a new line algorithm is not silently left out).
+pub const LINE_ALGORITHMS: &[&str] = &[
+    "regions",
+    "bresenham3d",
+    "nd",
+    "liu-float",
+    "greedy",
+    "walk6",
+    "dda",
+];
+
+/// Most chords one arc may be split into: each chord is a trace segment
+/// with its own replay state and note.
+pub const MAX_CHORDS: u64 = 1 << 16;
+
+pub const SEGMENT_LENGTH: OptionSpec = OptionSpec {
+    name: "segmentLength",
+    kind: OptionKind::Number,
+    required: false,
+    default: None,
+    doc: "Chord length, grid units: chords = floor(arc length / segmentLength), the blog's CM_PER_SEGMENT rule. Give this or tolerance.",
+};
+
+pub const TOLERANCE: OptionSpec = OptionSpec {
+    name: "tolerance",
+    kind: OptionKind::Number,
+    required: false,
+    default: Some("0.5"),
+    doc: "Chord sagitta aimed at, grid units (Grbl's arc_tolerance): chords = floor(|sweep| r / (2 sqrt(tolerance (2r - tolerance)))). Used when segmentLength is not given.",
+};
+
+pub const LINE_ALGORITHM: OptionSpec = OptionSpec {
+    name: "lineAlgorithm",
+    kind: OptionKind::Choice {
+        values: LINE_ALGORITHMS,
+    },
+    required: false,
+    default: Some("regions"),
+    doc: "The line algorithm that steps each chord (a catalogue id).",
+};
+
+pub const LINE_TIE: OptionSpec = OptionSpec {
+    name: "tie",
+    kind: OptionKind::Choice {
+        values: &["advance", "hold"],
+    },
+    required: false,
+    default: None,
+    doc: "Tie rule passed to the line algorithm of the chords; by default that algorithm's own.",
+};
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    family: Family::Arc,
+    title: "Arc as chords (G02/G03 split into lines)",
+    citation: "\"How to Improve the 2-axis CNC GCODE Interpreter to Understand Arcs\" (Makelangelo / GcodeCNCdemo blog), sections Arc length with atan3() to Implementation; chord count by tolerance from Grbl's mc_arc (motion_control.c)",
+    teaching: "Instead of stepping the circle itself, cut the arc into short straight chords and draw each with a line algorithm. Find the start and end angles with atan3 (atan2 moved into [0, 2π)), their difference is the sweep, fixed up by ±2π so it turns the right way; arc length = |sweep| × r. The blog takes floor(length / segment length) chords; Grbl instead takes as many as keep each chord's sagitta near a tolerance t: floor(|sweep| r / (2 sqrt(t (2r - t)))). Because both round the count down, chords come out a little longer than asked: with floor, a chord's sagitta can reach (1 + 1/n)² times the tolerance (4 times when the count is rounded from just under 2 down to 1). Each vertex is the arc point at i/n of the sweep with each coordinate rounded to the nearest grid unit (halves away from zero); the last chord goes to the exact end point.",
+    errata: &[
+        "The post's Implementation fixes the sweep with `if(dir>0 && sweep<0) angle2+=2*PI; else if(dir<0) angle1+=2*PI;`: for dir < 0 it adds 2π even when the sweep is already negative, turning a quarter arc into 450°. The earlier snippet in the same post (`else if(dir==ARC_CCW && sweep>0)`) is right, and voxpath uses that rule (a reader's comment below the post asks about exactly this line).",
+        "The post gives ARC_CW an increasing angle (positive sweep), which is clockwise only with the y axis pointing down, as on a screen. voxpath follows G-code's right-handed convention: G02 (cw) decreases the angle atan2(v, u) seen from the positive end of the plane's normal axis, G03 (ccw) increases it, in G17, G18 and G19 alike.",
+        "With start = end the post's sweep is 0 and no arc is drawn; in G-code that is a full circle, as in voxpath. The post also assumes arcs of at most 180°, equal start and end radius and constant Z; voxpath takes any sweep and extra turns, checks the radii, and steps helices in helix mode.",
+        "The loop `for(i=0;i<num_segments;++i)` first draws a line from the start to fraction 0, the start itself; voxpath starts at i = 1, giving the same path without the empty line.",
+    ],
+    // A trace has the columns of the chosen line algorithm; the catalogue
+    // lists those of the default one.
+    columns: RegionsWhy::COLUMNS,
+    options: &[
+        FROM,
+        TO,
+        CENTER,
+        DIR,
+        PLANE,
+        TURNS,
+        SEGMENT_LENGTH,
+        TOLERANCE,
+        LINE_ALGORITHM,
+        LINE_TIE,
+        MAX_STEPS,
+    ],
+    min_dims: 3,
+    max_dims: 3,
+    default_tie: None,
+    trace: |req| {
+        req.check_options(INFO.options)?;
+        let spec = ArcSpec::parse(req, false)?;
+        trace_chords(ID, req, &spec, false)
+    },
+};
+
+/// How many chords: the blog's fixed length or Grbl's tolerance.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Chording {
+    Length(f64),
+    Tolerance(f64),
+}
+
+impl Chording {
+    pub fn parse(req: &Request) -> Result<Chording, Error> {
+        let length = req.number(SEGMENT_LENGTH.name)?;
+        let tolerance = req.number(TOLERANCE.name)?;
+        match (length, tolerance) {
+            (Some(_), Some(_)) => Err(Error::field(
+                "tolerance",
+                "give segmentLength or tolerance, not both",
+            )),
+            (Some(l), None) if l > 0.0 => Ok(Chording::Length(l)),
+            (Some(l), None) => Err(Error::field(
+                "segmentLength",
+                format!("must be more than 0, got {l}"),
+            )),
+            (None, t) => Ok(Chording::Tolerance(t.unwrap_or(0.5))),
+        }
+    }
+
+    /// The option this count comes from.
+    fn option(self) -> &'static str {
+        match self {
+            Chording::Length(_) => SEGMENT_LENGTH.name,
+            Chording::Tolerance(_) => TOLERANCE.name,
+        }
+    }
+
+    /// Number of chords (at least 1) for an arc of radius `r` sweeping
+    /// `sweep_rad` (either sign).
+    pub fn chords(self, r: f64, sweep_rad: f64) -> Result<u64, Error> {
+        let arc_length = sweep_rad.abs() * r;
+        let n = match self {
+            // The blog: num_segments = floor(len / CM_PER_SEGMENT).
+            Chording::Length(l) => (arc_length / l).floor(),
+            Chording::Tolerance(t) => {
+                if t >= 2.0 * r {
+                    return Err(Error::field(
+                        "tolerance",
+                        format!("must be less than the diameter {:.3}, got {t}", 2.0 * r),
+                    ));
+                }
+                if t <= 0.0 {
+                    return Err(Error::field(
+                        "tolerance",
+                        format!("must be more than 0, got {t}"),
+                    ));
+                }
+                // Grbl: segments = floor(|0.5 * angular_travel * radius| /
+                // sqrt(arc_tolerance * (2 * radius - arc_tolerance))).
+                (0.5 * arc_length / (t * (2.0 * r - t)).sqrt()).floor()
+            }
+        };
+        if n > MAX_CHORDS as f64 {
+            return Err(Error::field(
+                self.option(),
+                format!(
+                    "splits this arc into {n} chords, more than {MAX_CHORDS}; use longer chords"
+                ),
+            ));
+        }
+        Ok((n as u64).max(1))
+    }
+
+    fn describe(self, n: u64) -> String {
+        match self {
+            Chording::Length(l) => format!(
+                "floor(arc length / segmentLength {l}) gives {n} chord{}",
+                if n == 1 { "" } else { "s" }
+            ),
+            Chording::Tolerance(t) => format!(
+                "Grbl's rule with tolerance {t} gives {n} chord{}",
+                if n == 1 { "" } else { "s" }
+            ),
+        }
+    }
+}
+
+/// A chord's end: its grid point and its fraction of the sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    pub point: Point,
+    pub fraction: f64,
+}
+
+/// The chord ends after the start: arc points at fractions i / n rounded to
+/// the grid, then the end point; a vertex equal to the one before is dropped.
+/// For a helix (`spec.rise` != 0) the height is interpolated by the same
+/// fraction and rounded too.
+pub fn vertices(spec: &ArcSpec, n: u64) -> Vec<Vertex> {
+    let [u, v, normal] = spec.plane.axes();
+    let c = &spec.frame.center;
+    let (r, start, sweep) = (spec.radius(), spec.start_rad(), spec.sweep_rad());
+    let mut out: Vec<Vertex> = Vec::with_capacity(n as usize);
+    let mut previous = spec.from;
+    for i in 1..=n {
+        let point = if i == n {
+            spec.to
+        } else {
+            let t = i as f64 / n as f64;
+            let theta = start + sweep * t;
+            let mut p = [0; 3];
+            p[u] = (c.get(u) as f64 + r * theta.cos()).round() as i64;
+            p[v] = (c.get(v) as f64 + r * theta.sin()).round() as i64;
+            p[normal] = spec.from.get(normal) + (spec.rise as f64 * t).round() as i64;
+            Point::new(&p)
+        };
+        if point != previous {
+            out.push(Vertex {
+                point,
+                fraction: i as f64 / n as f64,
+            });
+            previous = point;
+        }
+    }
+    out
+}
+
+/// Traces the arc (or helix) of `spec` as chords stepped by the request's
+/// line algorithm. `helical`: measure against the helix rather than the arc.
+pub fn trace_chords(
+    id: &str,
+    req: &Request,
+    spec: &ArcSpec,
+    helical: bool,
+) -> Result<Trace, Error> {
+    let chording = Chording::parse(req)?;
+    let line = req.choice(&LINE_ALGORITHM)?.unwrap_or(LINE_ALGORITHMS[0]);
+    let line_info = algorithms::find(line)?;
+    let tie = req.choice(&LINE_TIE)?;
+    let n = chording.chords(spec.radius(), spec.sweep_rad())?;
+    let chords = vertices(spec, n);
+    let arc = spec.ideal_arc();
+    let helix = HelixPath {
+        arc: arc.clone(),
+        start_height: 0.0,
+        rise: spec.rise as f64,
+    };
+    let mut builder = TraceBuilder::new(spec.from, req.max_steps()?);
+    let mut from = Vertex {
+        point: spec.from,
+        fraction: 0.0,
+    };
+    for (k, to) in chords.iter().enumerate() {
+        let mut options = Map::new();
+        options.insert("from".into(), Value::from(from.point.coords()));
+        options.insert("to".into(), Value::from(to.point.coords()));
+        options.insert("maxSteps".into(), Value::from(builder.max_steps()));
+        if let Some(tie) = tie {
+            options.insert("tie".into(), Value::from(tie));
+        }
+        let part = (line_info.trace)(&Request::new(line, options))?;
+        let ideal = if helical {
+            IdealPath::Helix(helix.piece(from.fraction, to.fraction))
+        } else {
+            let sweep = arc.sweep_rad;
+            IdealPath::Arc(arc.piece(
+                arc.start_rad + sweep * from.fraction,
+                sweep * (to.fraction - from.fraction),
+            ))
+        };
+        let mut note = String::new();
+        if k == 0 {
+            let sagitta = spec.radius() * (1.0 - (spec.sweep_rad().abs() / (2 * n) as f64).cos());
+            let _ = write!(
+                note,
+                "{}. {}, each of sagitta {sagitta:.3}; vertices are the arc points at i/{n} of the sweep, rounded to the grid. ",
+                spec.describe(),
+                chording.describe(n),
+            );
+        }
+        let _ = write!(
+            note,
+            "Chord {} of {}: {} -> {}, the arc from {:.1}° to {:.1}°, stepped by {line}",
+            k + 1,
+            chords.len(),
+            from.point,
+            to.point,
+            degrees(arc.start_rad + arc.sweep_rad * from.fraction),
+            degrees(arc.start_rad + arc.sweep_rad * to.fraction),
+        );
+        builder.append(part, |segment| {
+            segment.ideal = ideal.clone();
+            segment.setup_note = format!("{note}: {}", segment.setup_note);
+        })?;
+        from = *to;
+    }
+    Ok(builder.finish(id))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::arc::curve::atan3;
+    use std::f64::consts::{PI, TAU};
+
+    fn spec(json: &str) -> ArcSpec {
+        ArcSpec::parse(&Request::from_json(json).unwrap(), false).unwrap()
+    }
+
+    /// The sweep as the post's Implementation computes it (dir > 0 is the
+    /// post's ARC_CW, an increasing angle), printed line for line.
+    fn printed_sweep(angle1: f64, angle2: f64, dir: f64) -> f64 {
+        let (mut angle1, mut angle2) = (angle1, angle2);
+        let sweep = angle2 - angle1;
+        if dir > 0.0 && sweep < 0.0 {
+            angle2 += TAU;
+        } else if dir < 0.0 {
+            angle1 += TAU;
+        }
+        angle2 - angle1
+    }
+
+    /// The earlier snippet of the same post.
+    fn snippet_sweep(angle1: f64, angle2: f64, dir: f64) -> f64 {
+        let (mut angle1, mut angle2) = (angle1, angle2);
+        let sweep = angle2 - angle1;
+        if dir > 0.0 && sweep < 0.0 {
+            angle2 += TAU;
+        } else if dir < 0.0 && sweep > 0.0 {
+            angle1 += TAU;
+        }
+        angle2 - angle1
+    }
+
+    #[test]
+    fn the_printed_sweep_fix_up_adds_a_turn() {
+        // From (0, 5) to (5, 0) around the origin, the short way: decreasing
+        // angle, G02 in G-code (y up), the post's ARC_CCW (dir < 0).
+        let (angle1, angle2) = (atan3(5.0, 0.0), atan3(0.0, 5.0));
+        assert_eq!((angle1, angle2), (PI / 2.0, 0.0));
+        // The printed code turns the quarter arc into 450°.
+        assert!((printed_sweep(angle1, angle2, -1.0) + 2.5 * PI).abs() < 1e-12);
+        assert!((snippet_sweep(angle1, angle2, -1.0) + 0.5 * PI).abs() < 1e-12);
+        let s = spec(
+            r#"{"algorithm":"arc-segments","from":[0,5,0],"to":[5,0,0],"center":[0,0,0],"dir":"cw"}"#,
+        );
+        assert!((s.sweep_rad() + 0.5 * PI).abs() < 1e-12);
+        // With the blog's length rule and segment 1, that is 39 chords
+        // (floor(2.5π × 5)) instead of 7 (floor(0.5π × 5)).
+        let chords = |sweep: f64| Chording::Length(1.0).chords(5.0, sweep).unwrap();
+        assert_eq!(
+            (
+                chords(printed_sweep(angle1, angle2, -1.0)),
+                chords(s.sweep_rad())
+            ),
+            (39, 7)
+        );
+        // Both rules agree when the fix-up is needed: increasing angle from
+        // (5, 0) to (0, -5) is 270° (the post's ARC_CW, G03 here).
+        let (a1, a2) = (atan3(0.0, 5.0), atan3(-5.0, 0.0));
+        assert!((printed_sweep(a1, a2, 1.0) - 1.5 * PI).abs() < 1e-12);
+        let s = spec(
+            r#"{"algorithm":"arc-segments","from":[5,0,0],"to":[0,-5,0],"center":[0,0,0],"dir":"ccw"}"#,
+        );
+        assert!((s.sweep_rad() - 1.5 * PI).abs() < 1e-12);
+    }
+
+    #[test]
+    fn chord_counts_follow_the_blog_and_grbl() {
+        // Quarter circle r = 10: length 5π = 15.71; segment 5 gives
+        // floor(3.14) = 3 chords.
+        assert_eq!(Chording::Length(5.0).chords(10.0, PI / 2.0).unwrap(), 3);
+        // Grbl, r = 100, quarter, t = 0.5: 0.5 × 157.08 / sqrt(0.5 × 199.5)
+        // = 78.54 / 9.987 = 7.86, floor 7.
+        assert_eq!(Chording::Tolerance(0.5).chords(100.0, PI / 2.0).unwrap(), 7);
+        // Too short for one full chord: still one chord, to the end.
+        assert_eq!(Chording::Length(100.0).chords(10.0, 0.1).unwrap(), 1);
+        let e = Chording::Length(1.0)
+            .chords((1 << 20) as f64, TAU)
+            .unwrap_err();
+        assert_eq!(e.field_name(), Some("segmentLength"));
+        assert!(e.to_string().contains("6588397 chords"), "{e}");
+        let e = Chording::Tolerance(30.0).chords(10.0, PI).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "tolerance: must be less than the diameter 20.000, got 30"
+        );
+        let both =
+            Request::from_json(r#"{"algorithm":"arc-segments","segmentLength":2,"tolerance":1}"#)
+                .unwrap();
+        assert_eq!(
+            Chording::parse(&both).unwrap_err().to_string(),
+            "tolerance: give segmentLength or tolerance, not both"
+        );
+    }
+
+    #[test]
+    fn vertices_are_rounded_arc_points_then_the_end() {
+        // Quarter circle r = 10 in 3 chords: 30° -> (8.66, 5) -> (9, 5);
+        // 60° -> (5, 8.66) -> (5, 9); then the end (0, 10).
+        let s =
+            spec(r#"{"algorithm":"arc-segments","from":[10,0,0],"to":[0,10,0],"center":[0,0,0]}"#);
+        let v: Vec<Point> = vertices(&s, 3).iter().map(|v| v.point).collect();
+        assert_eq!(
+            v,
+            [
+                Point::new(&[9, 5, 0]),
+                Point::new(&[5, 9, 0]),
+                Point::new(&[0, 10, 0])
+            ]
+        );
+        // In G18 (z, x) clockwise from z = 10 to x = -10: 30° steps of
+        // decreasing angle atan2(x, z): (z, x) = (8.66, -5) -> (9, -5).
+        let s = spec(
+            r#"{"algorithm":"arc-segments","from":[0,4,10],"to":[-10,4,0],"center":[0,0,0],"plane":"zx","dir":"cw"}"#,
+        );
+        let v: Vec<Point> = vertices(&s, 3).iter().map(|v| v.point).collect();
+        assert_eq!(
+            v,
+            [
+                Point::new(&[-5, 4, 9]),
+                Point::new(&[-9, 4, 5]),
+                Point::new(&[-10, 4, 0])
+            ]
+        );
+        // Chords shorter than a cell: vertices that round onto the previous
+        // one are dropped. r = 2, full circle, 64 chords: the rounded arc
+        // points are the 16 cells (2, 0), (2, 1), (1, 1), (1, 2), ... of
+        // the ring around the circle, each kept once.
+        let s =
+            spec(r#"{"algorithm":"arc-segments","from":[2,0,0],"to":[2,0,0],"center":[0,0,0]}"#);
+        let v = vertices(&s, 64);
+        assert_eq!(v.len(), 16);
+        assert!(v.windows(2).all(|w| w[0].point != w[1].point));
+        assert_eq!(v.last().unwrap().point, Point::new(&[2, 0, 0]));
+    }
+
+    #[test]
+    fn each_chord_is_the_line_algorithm_s_own_trace() {
+        let t = crate::trace_json(
+            r#"{"algorithm":"arc-segments","from":[10,0,0],"to":[0,10,0],"center":[0,0,0],"segmentLength":5}"#,
+        )
+        .unwrap();
+        let ends = [[10, 0, 0], [9, 5, 0], [5, 9, 0], [0, 10, 0]];
+        assert_eq!(t.segments().len(), 3);
+        for (k, segment) in t.segments().iter().enumerate() {
+            let line = crate::trace_json(&format!(
+                r#"{{"algorithm":"regions","from":{:?},"to":{:?}}}"#,
+                ends[k],
+                ends[k + 1]
+            ))
+            .unwrap();
+            let first = segment.first_step;
+            assert_eq!(
+                t.step_range(first, first + segment.steps),
+                line.step_range(0, line.steps())
+            );
+            // Bit patterns, so that NaN (a column that does not apply) compares equal.
+            let bits = |columns: Vec<Vec<f64>>| -> Vec<Vec<u64>> {
+                columns
+                    .iter()
+                    .map(|c| c.iter().map(|v| v.to_bits()).collect())
+                    .collect()
+            };
+            assert_eq!(
+                bits(t.decisions(first, first + segment.steps).columns),
+                bits(line.decisions(0, line.steps()).columns)
+            );
+            assert!(matches!(segment.ideal, IdealPath::Arc(_)));
+        }
+        assert_eq!(t.end(), Point::new(&[0, 10, 0]));
+        let note = &t.segments()[0].setup_note;
+        assert!(
+            note.contains("floor(arc length / segmentLength 5) gives 3 chords"),
+            "{note}"
+        );
+        assert!(
+            note.contains("Chord 1 of 3: (10, 0, 0) -> (9, 5, 0), the arc from 0.0° to 30.0°"),
+            "{note}"
+        );
+    }
+
+    #[test]
+    fn every_listed_line_algorithm_is_a_catalogue_line_and_no_line_is_missing() {
+        for id in LINE_ALGORITHMS {
+            let info = algorithms::find(id).unwrap();
+            assert!((info.min_dims..=info.max_dims).contains(&3), "{id}");
+        }
+        // Every 3-axis line algorithm of the catalogue can step a chord.
+        for info in algorithms::ALGORITHMS {
+            let line_like =
+                info.family == Family::Line && (info.min_dims..=info.max_dims).contains(&3);
+            assert_eq!(
+                line_like,
+                LINE_ALGORITHMS.contains(&info.id),
+                "{} should be listed in LINE_ALGORITHMS exactly when it is a 3-axis line algorithm",
+                info.id
+            );
+        }
+    }
+}

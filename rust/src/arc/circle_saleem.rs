@@ -1,0 +1,637 @@
+//! Saleem & Saleem (2004), "Bresenham type fast algorithm for 3-D linear and
+//! helical movement in CNC machines", section 4: the integer circle.
+//!
+//! Relative to the centre (eq. 12-13), in the octant the current point is
+//! travelling through, one axis (fast) steps every time; the other (slow)
+//! steps when that puts the point nearer the circle, judged by the integer
+//! error |x² + y² - r²| of the two candidates (eq. 6-9). Arithmetic is exact
+//! (i128), so the path never drifts.
+//!
+//! Stopping: the paper's `complete()` stops "at the nearest point" once the
+//! octant of the end is reached. voxpath's rule, which always ends exactly on
+//! the programmed end point: follow the circle until the step that reaches or
+//! passes the ray from the centre through the end point (on the last turn);
+//! of the points just before and just after that ray, stop at the one
+//! strictly nearer the end (before, on a tie); then step straight to the end,
+//! moving each in-plane axis one unit toward it while it differs. Those are
+//! correction steps, marked in the `correction` column.
+//!
+//! Bounds: every circle step turns the point strictly forward (the fast axis
+//! moves along the tangent), so a turn takes at most 8 (r + 1) steps and the
+//! circle part at most (turns + 1) 8 (r + 1); the correction takes
+//! max(|Δu|, |Δv|) steps from the stop point to the end.
+
+use super::planes::{Frame, OCTANTS, octant_ahead};
+use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, cross_dot, norm_sq};
+use crate::algorithms::{AlgorithmInfo, Family};
+use crate::error::Error;
+use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::ideal::IdealPath;
+use crate::line::step_target;
+use crate::request::{FROM, MAX_STEPS, Request, TO};
+use crate::trace::{Column, ColumnKind, Decision, Stepper, Trace, TraceBuilder};
+use std::fmt::Write;
+
+pub const ID: &str = "circle";
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    family: Family::Arc,
+    title: "Bresenham-type circle (arcs G02/G03)",
+    citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 4, eq. (6)-(13)",
+    teaching: "Relative to the centre, the circle is x² + y² - r² = 0, and |x² + y² - r²| measures how far a grid point is from it (eq. 6). The plane is cut into eight octants; in each, one axis moves faster along the circle than the other, so it steps every time, and the only question is whether the slow axis steps too. Compare the error of the two candidates, with and without the slow step, and take the smaller (eq. 7-9): integers only, no square roots. The two errors always differ by an odd number, so they are never equal and there are no ties. Clockwise arcs (G02) run the same rule on the mirror image. The path stops at the circle point nearest the programmed end and, if the end is not on the rasterised circle, steps straight to it (correction steps).",
+    errata: &[
+        "The pseudo-code handles counter-clockwise travel only, although the text introduces G02 (clockwise). voxpath runs clockwise arcs as counter-clockwise arcs of the mirror image (v -> -v), which keeps every error value.",
+        "nextStep mixes x and x1, y and y1 (the start point) in the octant 1/4/5/8 branch and increments x1 instead of x in the other. voxpath uses the current point throughout.",
+        "nextStep's tests `2*d*B + d < 0` (when d > 0) and `2*d*B + d > 0` (when d < 0), with d = 1 + 2*incX*x and B the error of the candidate that keeps x, drop the square of eq. (10)'s last term d² and keep the factor the text says to eliminate. Both reduce to 2B + 1 < 0, which is not eq. (10) (2B + d compared with 0) and in octant 1 moves x inward exactly when the kept cell is already inside the circle: from (5, 2) on r = 5 it keeps (5, 3), error 9, where eq. (7) takes (4, 3), error 0. voxpath decides by eq. (7) itself, comparing the two |x² + y² - r²|.",
+        "nextStep tests `|x| > |y|` and then `|x| < |y|` with the updated point, so one call can make two moves, and on a diagonal |x| = |y| (for example (5, 5) on r² = 50) it makes none and the loop never ends. voxpath takes the octant ahead of the point: boundaries belong to the octant travel enters.",
+        "complete() stops \"at the nearest point\" once the end's octant is reached, so the path can end off the programmed end point. voxpath stops at the circle point nearest the end (of the two either side of the ray from the centre through it) and closes the rest with marked correction steps.",
+    ],
+    columns: CircleWhy::COLUMNS,
+    options: &[FROM, TO, CENTER, DIR, PLANE, TURNS, MAX_STEPS],
+    min_dims: 3,
+    max_dims: 3,
+    default_tie: None,
+    trace: trace_circle,
+};
+
+fn trace_circle(req: &Request) -> Result<Trace, Error> {
+    req.check_options(INFO.options)?;
+    let spec = ArcSpec::parse(req, false)?;
+    let mut builder = TraceBuilder::new(spec.from, req.max_steps()?);
+    let stepper = SaleemCircle::new(&spec).counted(&builder)?;
+    builder.run(stepper, IdealPath::Arc(spec.ideal_arc()))?;
+    Ok(builder.finish(ID))
+}
+
+pub const OCTANT_LABELS: &[&str] = &["1", "2", "3", "4", "5", "6", "7", "8"];
+
+pub const OCTANT: Column = Column {
+    name: "octant",
+    kind: ColumnKind::Category(OCTANT_LABELS),
+    doc: "Octant 1-8 the step travels through, counted counter-clockwise from the plane's first axis, seen from the positive end of its normal (Saleem Figure 1); a point on a boundary belongs to the octant ahead.",
+};
+
+pub const FAST: Column = Column {
+    name: "fast",
+    kind: ColumnKind::Category(&["x", "y", "z"]),
+    doc: "The axis that steps every time in this octant; empty for correction steps.",
+};
+
+pub const ERROR_STAY: Column = Column {
+    name: "error_stay",
+    kind: ColumnKind::Int,
+    doc: "|u² + v² - r²| (Saleem eq. 6, u and v relative to the centre) of the candidate where only the fast axis steps.",
+};
+
+pub const ERROR_MOVE: Column = Column {
+    name: "error_move",
+    kind: ColumnKind::Int,
+    doc: "|u² + v² - r²| of the candidate where the slow axis steps too; the slow axis steps when this is the smaller (eq. 7).",
+};
+
+pub const SLOW_STEPS: Column = Column {
+    name: "slow_steps",
+    kind: ColumnKind::Flag,
+    doc: "1 when the slow axis stepped.",
+};
+
+pub const CORRECTION: Column = Column {
+    name: "correction",
+    kind: ColumnKind::Flag,
+    doc: "1 for a step that closes the gap between the rasterised circle and a programmed end point that is not on it.",
+};
+
+/// Why one step of the circle was taken.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CircleWhy {
+    /// Octant 1-8 in the plane's own numbering (None at the centre, which
+    /// only a correction step could pass through).
+    pub octant: Option<u8>,
+    pub kind: CircleStep,
+    frame: Frame,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CircleStep {
+    /// A step of Saleem's rule, in the local counter-clockwise frame.
+    Arc {
+        fast: usize,
+        fast_dir: i64,
+        slow: usize,
+        slow_dir: i64,
+        /// u² + v² - r² of the two candidates (signed: > 0 outside).
+        residual_stay: i64,
+        residual_move: i64,
+        slow_steps: bool,
+        /// This is the circle point nearest the end: the circle part ends.
+        last: bool,
+    },
+    /// A step straight toward the end point.
+    Correction {
+        /// 1-based index among `of` correction steps.
+        index: u64,
+        of: u64,
+        /// u² + v² - r² of the programmed end point.
+        end_residual: i64,
+        /// The circle stopped before the end's ray because the next circle
+        /// point was no nearer the end.
+        stopped_before_ray: bool,
+    },
+}
+
+impl Decision for CircleWhy {
+    const COLUMNS: &'static [Column] =
+        &[OCTANT, FAST, ERROR_STAY, ERROR_MOVE, SLOW_STEPS, CORRECTION];
+
+    fn write(&self, row: &mut [f64]) {
+        row[0] = self.octant.map_or(f64::NAN, |k| (k - 1) as f64);
+        match self.kind {
+            CircleStep::Arc {
+                fast,
+                residual_stay,
+                residual_move,
+                slow_steps,
+                ..
+            } => {
+                row[1] = self.frame.axis(fast) as f64;
+                row[2] = residual_stay.unsigned_abs() as f64;
+                row[3] = residual_move.unsigned_abs() as f64;
+                row[4] = slow_steps as u8 as f64;
+                row[5] = 0.0;
+            }
+            CircleStep::Correction { .. } => {
+                row[1..5].fill(f64::NAN);
+                row[5] = 1.0;
+            }
+        }
+    }
+
+    fn explain(&self, _from: &Point, step: Step) -> String {
+        let f = &self.frame;
+        let [u, v, _] = f.plane.axes();
+        let error = format!("{}² + {}² - r²", AXIS_NAMES[u], AXIS_NAMES[v]);
+        let mut s = match self.octant {
+            Some(k) => format!("Octant {k}: "),
+            None => String::new(),
+        };
+        match self.kind {
+            CircleStep::Arc {
+                fast,
+                fast_dir,
+                slow,
+                slow_dir,
+                residual_stay,
+                residual_move,
+                slow_steps,
+                last,
+            } => {
+                let signed = |local: usize, d: i64| {
+                    let d = f.grid_direction(local, d);
+                    format!(
+                        "{}{}",
+                        AXIS_NAMES[f.axis(local)],
+                        if d > 0 { "+1" } else { "-1" }
+                    )
+                };
+                let slow_name = AXIS_NAMES[f.axis(slow)];
+                let _ = write!(
+                    s,
+                    "{} is the fast axis and steps {}; {slow_name} stays ({error} = {residual_stay}) or steps {} ({residual_move}); |{}| < |{}|, so {slow_name} {} (eq. 7)",
+                    AXIS_NAMES[f.axis(fast)],
+                    &signed(fast, fast_dir)[1..],
+                    &signed(slow, slow_dir)[1..],
+                    if slow_steps {
+                        residual_move
+                    } else {
+                        residual_stay
+                    },
+                    if slow_steps {
+                        residual_stay
+                    } else {
+                        residual_move
+                    },
+                    if slow_steps { "steps" } else { "stays" },
+                );
+                if last {
+                    s.push_str(
+                        "; this is the circle point nearest the end, where the circle part stops",
+                    );
+                }
+            }
+            CircleStep::Correction {
+                index,
+                of,
+                end_residual,
+                stopped_before_ray,
+            } => {
+                if stopped_before_ray {
+                    s.push_str("the next circle point would be no nearer the end than this one, so the circle part stops here. ");
+                }
+                let _ = write!(
+                    s,
+                    "Correction {index} of {of}: the programmed end has {error} = {end_residual}, off the rasterised circle, so the path steps straight toward it"
+                );
+            }
+        }
+        let _ = write!(s, ": {}.", step_target(step, 3));
+        s
+    }
+}
+
+/// What the dry run learns before the real run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CirclePlan {
+    pub circle_steps: u64,
+    pub correction_steps: u64,
+    /// Where the circle part ends and the correction (if any) starts.
+    pub stop: Point,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Phase {
+    Circle,
+    Correction { of: u64, stopped_before_ray: bool },
+    Done,
+}
+
+/// Saleem's circle stepper for one arc.
+#[derive(Clone, Debug)]
+pub struct SaleemCircle {
+    frame: Frame,
+    /// Height on the normal axis, for reporting points.
+    height: i64,
+    radius_sq: i128,
+    /// Current point in the local counter-clockwise frame.
+    pos: [i64; 2],
+    end: [i64; 2],
+    /// Crossings of the ray through the end still to come, the last included.
+    crossings_left: u64,
+    phase: Phase,
+    /// Steps still to take, once the dry run has counted them.
+    remaining: Option<u64>,
+    plan: Option<CirclePlan>,
+}
+
+impl SaleemCircle {
+    pub fn new(spec: &ArcSpec) -> SaleemCircle {
+        SaleemCircle {
+            frame: spec.frame,
+            height: spec.from.get(spec.plane.normal()),
+            radius_sq: spec.radius_sq as i128,
+            pos: spec.start,
+            end: spec.end,
+            crossings_left: spec.turns + 1,
+            phase: Phase::Circle,
+            remaining: None,
+            plan: None,
+        }
+    }
+
+    /// u² + v² - r² at local point `p` (eq. 6 without the absolute value).
+    /// Inside the validated ±2^30 box it is below 2^33 in size.
+    fn residual(&self, p: [i64; 2]) -> i64 {
+        (norm_sq(p) - self.radius_sq) as i64
+    }
+
+    /// Saleem's "dummy procedure" (section 5): runs a copy without moving
+    /// anything and counts its steps, at most `limit + 1` of them. None when
+    /// there are more than `limit`.
+    pub fn plan(&self, limit: u64) -> Option<CirclePlan> {
+        let mut dry = self.clone();
+        let (mut circle_steps, mut correction_steps) = (0, 0);
+        let mut stop = None;
+        let mut before = dry.point();
+        while let Some((_, why)) = dry.next_step() {
+            match why.kind {
+                CircleStep::Arc { last, .. } => {
+                    circle_steps += 1;
+                    if last {
+                        stop = Some(dry.point());
+                    }
+                }
+                CircleStep::Correction { .. } => {
+                    correction_steps += 1;
+                    stop.get_or_insert(before);
+                }
+            }
+            if circle_steps + correction_steps > limit {
+                return None;
+            }
+            before = dry.point();
+        }
+        let plan = CirclePlan {
+            circle_steps,
+            correction_steps,
+            stop: stop.expect("the circle part ends on its last step or before a correction"),
+        };
+        Some(plan)
+    }
+
+    /// This stepper with its steps counted by the dry run, or the maxSteps
+    /// error of `builder` when it would take more than the builder allows.
+    pub fn counted(mut self, builder: &TraceBuilder) -> Result<SaleemCircle, Error> {
+        let limit = builder.max_steps();
+        let plan = self
+            .plan(limit)
+            .ok_or_else(|| builder.too_long(limit + 1))?;
+        self.remaining = Some(plan.circle_steps + plan.correction_steps);
+        self.plan = Some(plan);
+        Ok(self)
+    }
+
+    /// The current grid point.
+    pub fn point(&self) -> Point {
+        self.frame.point(self.pos, self.height)
+    }
+
+    /// One step of Saleem's rule from the current point.
+    fn circle_step(&mut self) -> ([i64; 2], CircleStep, u8) {
+        let k = octant_ahead(self.pos).expect("the circle never passes through its centre");
+        let rule = &OCTANTS[k as usize - 1];
+        // The fast axis always steps (section 4: "during each iteration y
+        // will always increase" in octant 1).
+        let mut stay = self.pos;
+        stay[rule.fast] += rule.fast_dir;
+        let mut moved = stay;
+        moved[rule.slow] += rule.slow_dir;
+        let (residual_stay, residual_move) = (self.residual(stay), self.residual(moved));
+        // Eq. (7): the slow axis steps iff |error(moved)| < |error(stay)|.
+        // The residuals differ by 2|slow coordinate| ± 1, an odd number, so
+        // they cannot be equal in size: no tie to resolve.
+        let slow_steps = residual_move.abs() < residual_stay.abs();
+        let next = if slow_steps { moved } else { stay };
+        let mut last = false;
+        // The ray from the centre through the end is reached when the side
+        // of the end (sign of end × point) turns from negative to >= 0; the
+        // turn is strictly forward, so this happens once per lap.
+        let reaches_ray = cross_dot(self.end, self.pos).0 < 0 && cross_dot(self.end, next).0 >= 0;
+        if reaches_ray {
+            self.crossings_left -= 1;
+            if self.crossings_left == 0 {
+                let distance_sq = |p: [i64; 2]| norm_sq([self.end[0] - p[0], self.end[1] - p[1]]);
+                if distance_sq(next) >= distance_sq(self.pos) {
+                    // Stop before the ray: the correction starts from here.
+                    self.phase = Phase::Correction {
+                        of: chebyshev(self.pos, self.end),
+                        stopped_before_ray: true,
+                    };
+                    return self.correction_step();
+                }
+                last = true;
+                self.phase = Phase::Correction {
+                    of: chebyshev(next, self.end),
+                    stopped_before_ray: false,
+                };
+            }
+        }
+        let delta = [next[0] - self.pos[0], next[1] - self.pos[1]];
+        self.pos = next;
+        let kind = CircleStep::Arc {
+            fast: rule.fast,
+            fast_dir: rule.fast_dir,
+            slow: rule.slow,
+            slow_dir: rule.slow_dir,
+            residual_stay,
+            residual_move,
+            slow_steps,
+            last,
+        };
+        (delta, kind, k)
+    }
+
+    /// One step straight toward the end, each in-plane axis by its sign.
+    fn correction_step(&mut self) -> ([i64; 2], CircleStep, u8) {
+        let Phase::Correction {
+            of,
+            stopped_before_ray,
+        } = self.phase
+        else {
+            unreachable!("correction steps follow the circle part");
+        };
+        let k = octant_ahead(self.pos).unwrap_or(0);
+        let left = chebyshev(self.pos, self.end);
+        let delta = [
+            (self.end[0] - self.pos[0]).signum(),
+            (self.end[1] - self.pos[1]).signum(),
+        ];
+        self.pos = [self.pos[0] + delta[0], self.pos[1] + delta[1]];
+        let index = of - left + 1;
+        let kind = CircleStep::Correction {
+            index,
+            of,
+            end_residual: self.residual(self.end),
+            stopped_before_ray: stopped_before_ray && index == 1,
+        };
+        (delta, kind, k)
+    }
+}
+
+fn chebyshev(p: [i64; 2], q: [i64; 2]) -> u64 {
+    (p[0] - q[0])
+        .unsigned_abs()
+        .max((p[1] - q[1]).unsigned_abs())
+}
+
+impl Stepper for SaleemCircle {
+    type Why = CircleWhy;
+
+    fn next_step(&mut self) -> Option<(Step, CircleWhy)> {
+        let (delta, kind, local_octant) = match self.phase {
+            Phase::Done => return None,
+            Phase::Correction { .. } if self.pos == self.end => {
+                self.phase = Phase::Done;
+                return None;
+            }
+            Phase::Correction { .. } => self.correction_step(),
+            Phase::Circle => self.circle_step(),
+        };
+        if let Some(n) = self.remaining.as_mut() {
+            *n -= 1;
+        }
+        let why = CircleWhy {
+            octant: (local_octant > 0).then(|| self.frame.grid_octant(local_octant)),
+            kind,
+            frame: self.frame,
+        };
+        Some((self.frame.step(delta), why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        self.remaining
+    }
+
+    fn setup_note(&self) -> String {
+        let f = &self.frame;
+        let mut s = String::from("Saleem's rule (eq. 6-11) relative to the centre (eq. 12-13)");
+        if f.turn.sign() < 0 {
+            let v = AXIS_NAMES[f.plane.axes()[1]];
+            let _ = write!(
+                s,
+                ", run on the mirror image {v} -> -{v} because the paper's rule is counter-clockwise"
+            );
+        }
+        if let Some(plan) = self.plan {
+            let _ = write!(s, ": {} circle steps to {}", plan.circle_steps, plan.stop);
+            let end = f.point(self.end, self.height);
+            if plan.correction_steps == 0 {
+                let _ = write!(s, ", which is the end point.");
+            } else {
+                let _ = write!(
+                    s,
+                    ", the circle point nearest the end {end}; the end has u² + v² - r² = {} (off the rasterised circle), so {} correction step{} close the gap.",
+                    self.residual(self.end),
+                    plan.correction_steps,
+                    if plan.correction_steps == 1 { "" } else { "s" },
+                );
+            }
+        } else {
+            s.push('.');
+        }
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn trace(json: &str) -> Trace {
+        crate::trace_json(json).unwrap()
+    }
+
+    fn points(t: &Trace) -> Vec<[i64; 3]> {
+        t.points_flat(0, t.steps() + 1)
+            .chunks(3)
+            .map(|c| [c[0], c[1], c[2]])
+            .collect()
+    }
+
+    #[test]
+    fn columns_hold_the_decision() {
+        // Quarter circle r = 5 from (5, 0): step 1 compares (5, 1), error
+        // 1, with (4, 1), error |16 + 1 - 25| = 8, and keeps x.
+        let t = trace(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0,0]}"#);
+        let d = t.decisions(0, 1);
+        let names: Vec<&str> = t.columns().iter().map(|c| c.name).collect();
+        assert_eq!(
+            names,
+            [
+                "octant",
+                "fast",
+                "error_stay",
+                "error_move",
+                "slow_steps",
+                "correction"
+            ]
+        );
+        let row: Vec<f64> = d.columns.iter().map(|c| c[0]).collect();
+        assert_eq!(row, [0.0, 1.0, 1.0, 8.0, 0.0, 0.0]);
+        assert_eq!(
+            t.explain(0),
+            "Octant 1: y is the fast axis and steps +1; x stays (x² + y² - r² = 1) or steps -1 (-8); |1| < |-8|, so x stays (eq. 7): (x, y+1, z)."
+        );
+        assert!(
+            t.segments()[0]
+                .setup_note
+                .contains("7 circle steps to (0, 5, 0), which is the end point")
+        );
+    }
+
+    #[test]
+    fn an_end_off_the_circle_is_reached_by_marked_corrections() {
+        // r = 5 from (5, 0) to (2, 4), r_end = sqrt(20) = 4.47. The circle
+        // runs (5,1) (5,2) (4,3) (3,4); the next circle point (2,5) is past
+        // the ray through (2, 4) (2*5 - 4*2 = 2 >= 0) and as far from it as
+        // (3, 4) is (distance² 1 both), so the circle stops at (3, 4) and one
+        // correction step x-1 reaches (2, 4).
+        let t = trace(r#"{"algorithm":"circle","from":[5,0,0],"to":[2,4,0],"center":[0,0,0]}"#);
+        assert_eq!(
+            points(&t),
+            [
+                [5, 0, 0],
+                [5, 1, 0],
+                [5, 2, 0],
+                [4, 3, 0],
+                [3, 4, 0],
+                [2, 4, 0]
+            ]
+        );
+        let correction = &t.decisions(0, 5).columns[5];
+        assert_eq!(correction, &[0.0, 0.0, 0.0, 0.0, 1.0]);
+        let why = t.explain(4);
+        assert!(why.contains("no nearer the end"), "{why}");
+        assert!(
+            why.contains("Correction 1 of 1: the programmed end has x² + y² - r² = -5"),
+            "{why}"
+        );
+        // The last circle step says it is the last when the circle steps
+        // onto the ray: r = 5 to (0, 6) (r_end = 6) stops on (0, 5).
+        let t = trace(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,6,0],"center":[0,0,0]}"#);
+        assert_eq!(points(&t)[7], [0, 5, 0]);
+        assert!(t.explain(6).contains("nearest the end"));
+        assert_eq!(t.end(), Point::new(&[0, 6, 0]));
+        assert!(
+            t.segments()[0]
+                .setup_note
+                .contains("1 correction step close")
+        );
+    }
+
+    #[test]
+    fn the_paper_s_diagonal_start_needs_the_octant_ahead() {
+        // (5, 5) on r² = 50: |x| = |y|, where the paper's nextStep makes no
+        // move. The octant ahead (counter-clockwise) is 2: x steps -1.
+        let t = trace(r#"{"algorithm":"circle","from":[5,5,0],"to":[-5,5,0],"center":[0,0,0]}"#);
+        assert_eq!(points(&t)[1][0], 4);
+        assert_eq!(t.decisions(0, 1).columns[0][0], 1.0);
+        assert_eq!(t.end(), Point::new(&[-5, 5, 0]));
+    }
+
+    /// nextStep's printed test for moving x (octant 1/4/5/8 branch), with
+    /// the current point throughout (its x1/y1 mix-up set aside): d = 1 +
+    /// 2 incX x, B = x² + y² - r² + 1 + 2 incY y (the kept candidate's error).
+    fn printed_moves_x(x: i64, y: i64, r_sq: i64, inc_x: i64, inc_y: i64) -> bool {
+        let d = 1 + inc_x * 2 * x;
+        let b = x * x + y * y - r_sq + 1 + inc_y * 2 * y;
+        if inc_x * x > 0 {
+            2 * d * b + d < 0
+        } else {
+            2 * d * b + d > 0
+        }
+    }
+
+    #[test]
+    fn the_printed_next_step_test_inverts_eq_10() {
+        // r = 5, at (5, 2) in octant 1 (incX = -1, incY = +1): the next row
+        // y = 3 has (5, 3), error 9, and (4, 3), error 0. Eq. (7) moves x;
+        // the printed test does not.
+        assert!(!printed_moves_x(5, 2, 25, -1, 1));
+        let t = trace(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0,0]}"#);
+        assert_eq!(points(&t)[3], [4, 3, 0]);
+        // And at (5, 0) -> y = 1 the printed test agrees only by luck:
+        // (5, 1) error 1 is kept by both.
+        assert!(!printed_moves_x(5, 0, 25, -1, 1));
+        assert_eq!(points(&t)[1], [5, 1, 0]);
+        // Where the kept cell is inside, the printed test moves x inward,
+        // away from the circle: r = 9 from (9, 0) reaches (8, 3); row 4 has
+        // (8, 4), error -1, and (7, 4), error -16. Eq. (7) keeps (8, 4).
+        assert!(printed_moves_x(8, 3, 81, -1, 1));
+        let t = trace(r#"{"algorithm":"circle","from":[9,0,0],"to":[0,9,0],"center":[0,0,0]}"#);
+        assert_eq!(points(&t)[3..5], [[8, 3, 0], [8, 4, 0]]);
+    }
+
+    #[test]
+    fn the_dry_run_stops_at_max_steps() {
+        // r = 2^20: a full circle is about 5.9 million steps; with maxSteps
+        // 1000 the dry run stops after 1001 and nothing is recorded.
+        let r = 1 << 20;
+        let e = crate::trace_json(&format!(
+            r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0],"maxSteps":1000}}"#
+        ))
+        .err()
+        .unwrap();
+        assert_eq!(e.field_name(), Some("maxSteps"));
+        assert!(e.to_string().contains("at least 1001"), "{e}");
+    }
+}

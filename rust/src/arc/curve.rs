@@ -1,0 +1,462 @@
+//! The ideal curves arcs and helices approximate: distance of a grid point
+//! from them, per-axis error, and a polyline for drawing.
+//!
+//! Progress along a curve (for the per-axis error of Wang's eq. 11) is the
+//! angle of the point itself around the centre: the ideal position "at the
+//! same progress" is the point of the curve at the same angle. For an arc
+//! that is the radial projection, so the in-plane part of the error is the
+//! radial error split per axis; for a helix the normal-axis part is the
+//! height error at that angle (on the turn nearest the point's height).
+//! Step-count progress would instead measure how unevenly a constant step
+//! rate moves around a circle (the fast axis alternates), which is a feed-rate
+//! question, not a question of where the steps land.
+
+use super::planes::Plane;
+use crate::grid::{MAX_AXES, Point};
+use crate::ideal::IdealPathInfo;
+use std::f64::consts::{PI, TAU};
+
+/// Sagitta, in grid units, of the polyline's chords on small circles.
+const DRAW_SAGITTA: f64 = 0.25;
+/// Fewest vertices per full turn, so small circles look round.
+const MIN_VERTICES_PER_TURN: f64 = 64.0;
+/// Most polyline segments for a whole arc or helix, whatever its size.
+pub const MAX_POLYLINE_SEGMENTS: f64 = 16384.0;
+
+/// A circular arc around an axis parallel to the plane's normal.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ArcPath {
+    pub plane: Plane,
+    /// The centre; its normal coordinate is the height of the arc's plane.
+    pub center: Point,
+    /// r², exact: the squared distance of the start point from the centre.
+    pub radius_sq: i64,
+    /// Angle of the start, radians, atan2(v, u) in the plane's right-handed frame.
+    pub start_rad: f64,
+    /// Signed sweep, radians: > 0 counter-clockwise (G03), < 0 clockwise
+    /// (G02), extra turns included.
+    pub sweep_rad: f64,
+    /// Angle between polyline vertices, fixed by the whole arc so that the
+    /// pieces of a split arc draw as densely as the whole.
+    draw_step_rad: f64,
+}
+
+impl ArcPath {
+    pub fn new(
+        plane: Plane,
+        center: Point,
+        radius_sq: i64,
+        start_rad: f64,
+        sweep_rad: f64,
+    ) -> ArcPath {
+        let r = (radius_sq as f64).sqrt();
+        let sagitta_step = 2.0 * (1.0 - (DRAW_SAGITTA / r).min(1.0)).acos();
+        let draw_step_rad = sagitta_step
+            .min(TAU / MIN_VERTICES_PER_TURN)
+            .max(sweep_rad.abs() / MAX_POLYLINE_SEGMENTS);
+        ArcPath {
+            plane,
+            center,
+            radius_sq,
+            start_rad,
+            sweep_rad,
+            draw_step_rad,
+        }
+    }
+
+    /// The part of this arc between angles `start_rad` and `start_rad + sweep_rad`.
+    pub fn piece(&self, start_rad: f64, sweep_rad: f64) -> ArcPath {
+        ArcPath {
+            start_rad,
+            sweep_rad,
+            ..self.clone()
+        }
+    }
+
+    pub fn radius(&self) -> f64 {
+        (self.radius_sq as f64).sqrt()
+    }
+
+    /// (u, v, n) of `p` relative to the centre, in the plane's frame.
+    fn relative(&self, p: &Point) -> [i64; 3] {
+        let axes = self.plane.axes();
+        axes.map(|a| p.get(a) - self.center.get(a))
+    }
+
+    /// Signed radial error ρ - r of `p` (> 0 outside), ρ = distance from the
+    /// centre axis. ρ² - r² is formed exactly in i128 (coordinates up to 2^31
+    /// apart square to 2^62 and sum past i64) and divided by ρ + r only then,
+    /// so the result keeps full f64 precision where sqrt(u² + v²) - r would
+    /// cancel away every digit at r = 2^20 far from the origin.
+    pub fn radial_error(&self, p: &Point) -> f64 {
+        let [u, v, _] = self.relative(p);
+        let rho_sq = u as i128 * u as i128 + v as i128 * v as i128;
+        let excess = rho_sq - self.radius_sq as i128;
+        excess as f64 / ((rho_sq as f64).sqrt() + self.radius())
+    }
+
+    /// Distance from `p` to the circle: radial error and height off the plane.
+    pub fn deviation(&self, p: &Point) -> f64 {
+        let n = self.relative(p)[2] as f64;
+        self.radial_error(p).hypot(n)
+    }
+
+    /// `p` minus the arc's point at the same angle (the radial projection).
+    pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
+        let [u, v, n] = self.relative(p);
+        let rho = ((u as i128 * u as i128 + v as i128 * v as i128) as f64).sqrt();
+        let [au, av, an] = self.plane.axes();
+        let mut phi = [0.0; MAX_AXES];
+        if rho == 0.0 {
+            // The centre has no angle: compare with the start of the arc.
+            let r = self.radius();
+            phi[au] = -r * self.start_rad.cos();
+            phi[av] = -r * self.start_rad.sin();
+        } else {
+            let scale = self.radial_error(p) / rho;
+            phi[au] = u as f64 * scale;
+            phi[av] = v as f64 * scale;
+        }
+        phi[an] = n as f64;
+        phi
+    }
+
+    /// Grid coordinates of the arc's point at angle `theta` and height
+    /// `height` above the centre's normal coordinate.
+    fn point_at(&self, theta: f64, height: f64) -> [f64; 3] {
+        let [au, av, an] = self.plane.axes();
+        let r = self.radius();
+        let mut c = [0.0; 3];
+        c[au] = self.center.get(au) as f64 + r * theta.cos();
+        c[av] = self.center.get(av) as f64 + r * theta.sin();
+        c[an] = self.center.get(an) as f64 + height;
+        c
+    }
+
+    /// Vertices for drawing: `height(t)` gives the height at fraction t.
+    fn polyline_with(&self, height: impl Fn(f64) -> f64) -> Vec<f64> {
+        let segments = (self.sweep_rad.abs() / self.draw_step_rad).ceil().max(1.0) as usize;
+        let mut out = Vec::with_capacity((segments + 1) * 3);
+        for i in 0..=segments {
+            let t = i as f64 / segments as f64;
+            out.extend_from_slice(&self.point_at(self.start_rad + self.sweep_rad * t, height(t)));
+        }
+        out
+    }
+
+    pub fn polyline(&self) -> Vec<f64> {
+        self.polyline_with(|_| 0.0)
+    }
+
+    pub fn info(&self) -> IdealPathInfo {
+        IdealPathInfo::Arc {
+            center: self.center.coords().to_vec(),
+            plane: self.plane.label(),
+            radius: self.radius(),
+            start_rad: self.start_rad,
+            sweep_rad: self.sweep_rad,
+        }
+    }
+}
+
+/// A helix: an arc whose height rises linearly with the angle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HelixPath {
+    pub arc: ArcPath,
+    /// Height of the helix's start above the centre's normal coordinate
+    /// (0 for a whole helix; fractional for a piece of one).
+    pub start_height: f64,
+    /// Change of height over the whole sweep, grid units.
+    pub rise: f64,
+}
+
+/// Newton iterations per candidate in [`HelixPath::deviation`].
+const NEWTON_ITERATIONS: usize = 8;
+
+impl HelixPath {
+    pub fn piece(&self, start_fraction: f64, end_fraction: f64) -> HelixPath {
+        let sweep = self.arc.sweep_rad;
+        HelixPath {
+            arc: self.arc.piece(
+                self.arc.start_rad + sweep * start_fraction,
+                sweep * (end_fraction - start_fraction),
+            ),
+            start_height: self.start_height + self.rise * start_fraction,
+            rise: self.rise * (end_fraction - start_fraction),
+        }
+    }
+
+    /// (a, b, h): `p` relative to the centre, h measured from the start height.
+    fn local(&self, p: &Point) -> [f64; 3] {
+        let [u, v, n] = self.arc.relative(p);
+        [u as f64, v as f64, n as f64 - self.start_height]
+    }
+
+    /// Squared distance from local point `q` to the helix at fraction t.
+    fn distance_sq(&self, q: [f64; 3], t: f64) -> f64 {
+        let theta = self.arc.start_rad + self.arc.sweep_rad * t;
+        let r = self.arc.radius();
+        let (s, c) = theta.sin_cos();
+        (q[0] - r * c).powi(2) + (q[1] - r * s).powi(2) + (q[2] - self.rise * t).powi(2)
+    }
+
+    /// The fraction t in [0, 1] at which the helix has the point's own angle,
+    /// on the turn whose height is nearest the point's (the middle of the
+    /// three candidates [`Self::deviation`] starts from).
+    fn same_angle_fraction(&self, q: [f64; 3]) -> [f64; 3] {
+        let sweep = self.arc.sweep_rad;
+        let phi = q[1].atan2(q[0]);
+        // t_k = (phi + 2πk - θ0) / s for whole k: the angles equal to phi.
+        let t_of = |k: f64| (phi + TAU * k - self.arc.start_rad) / sweep;
+        let height_fraction = if self.rise == 0.0 {
+            0.5
+        } else {
+            (q[2] / self.rise).clamp(0.0, 1.0)
+        };
+        let k = ((self.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
+        [k - 1.0, k, k + 1.0].map(|k| t_of(k).clamp(0.0, 1.0))
+    }
+
+    /// Distance from `p` to the helix (its nearest point, ends included).
+    ///
+    /// Method: D(t) = |q - H(t)|² over t in [0, 1], where H(t) is the helix
+    /// at angle θ0 + s t and height rise t. Start Newton's method on
+    /// D'(t) = 0 from the point's own angle on the turn nearest its height
+    /// and the turns either side, and from both ends; take the smallest D.
+    /// D'(t)/2 = r s (a sin θ - b cos θ) - rise (h - rise t),
+    /// D''(t)/2 = r s² (a cos θ + b sin θ) + rise², positive near the helix.
+    pub fn deviation(&self, p: &Point) -> f64 {
+        let q = self.local(p);
+        let r = self.arc.radius();
+        let s = self.arc.sweep_rad;
+        let rise = self.rise;
+        let [before, nearest, after] = self.same_angle_fraction(q);
+        let mut best = f64::INFINITY;
+        for start in [before, nearest, after, 0.0, 1.0] {
+            let mut t = start;
+            best = best.min(self.distance_sq(q, t));
+            for _ in 0..NEWTON_ITERATIONS {
+                let theta = self.arc.start_rad + s * t;
+                let (sin, cos) = theta.sin_cos();
+                let slope = r * s * (q[0] * sin - q[1] * cos) - rise * (q[2] - rise * t);
+                let curvature = r * s * s * (q[0] * cos + q[1] * sin) + rise * rise;
+                if curvature <= 0.0 {
+                    break;
+                }
+                let next = (t - slope / curvature).clamp(0.0, 1.0);
+                if next == t {
+                    break;
+                }
+                t = next;
+                best = best.min(self.distance_sq(q, t));
+            }
+        }
+        best.sqrt()
+    }
+
+    /// `p` minus the helix's point at the same angle, on the turn nearest
+    /// the point's height.
+    pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
+        let q = self.local(p);
+        let t = self.same_angle_fraction(q)[1];
+        let [au, av, an] = self.arc.plane.axes();
+        let ideal = self.arc.point_at(
+            self.arc.start_rad + self.arc.sweep_rad * t,
+            self.start_height + self.rise * t,
+        );
+        let mut phi = [0.0; MAX_AXES];
+        for axis in [au, av, an] {
+            phi[axis] = p.get(axis) as f64 - ideal[axis];
+        }
+        phi
+    }
+
+    pub fn polyline(&self) -> Vec<f64> {
+        self.arc
+            .polyline_with(|t| self.start_height + self.rise * t)
+    }
+
+    pub fn info(&self) -> IdealPathInfo {
+        IdealPathInfo::Helix {
+            center: self.arc.center.coords().to_vec(),
+            plane: self.arc.plane.label(),
+            radius: self.arc.radius(),
+            start_rad: self.arc.start_rad,
+            sweep_rad: self.arc.sweep_rad,
+            start_height: self.start_height,
+            rise: self.rise,
+        }
+    }
+}
+
+/// Angle in [0, 2π) of direction (u, v): the blog's `atan3`.
+pub fn atan3(v: f64, u: f64) -> f64 {
+    let a = v.atan2(u);
+    if a < 0.0 { a + TAU } else { a }
+}
+
+/// Degrees, for notes.
+pub fn degrees(rad: f64) -> f64 {
+    rad * 180.0 / PI
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn arc(center: [i64; 3], radius_sq: i64, start_rad: f64, sweep_rad: f64) -> ArcPath {
+        ArcPath::new(
+            Plane::Xy,
+            Point::new(&center),
+            radius_sq,
+            start_rad,
+            sweep_rad,
+        )
+    }
+
+    #[test]
+    fn radial_error_is_exact_for_a_big_circle_far_out() {
+        // r = 5 * 2^18 = 1,310,720 (a 3-4-5 circle, so grid points lie on
+        // it), centred near the +2^30 corner. The naive sqrt(u² + v²) - r
+        // rounds u² + v² ≈ 2^41 well, but the test point 2^30 from the origin
+        // would not; here the centre is subtracted first and ρ² - r² is exact.
+        let k = 1i64 << 18;
+        let c = (1i64 << 30) - 6 * k;
+        let a = arc([c, c, c], 25 * k * k, 0.0, TAU);
+        assert_eq!(a.radial_error(&Point::new(&[c + 3 * k, c + 4 * k, c])), 0.0);
+        assert_eq!(a.radial_error(&Point::new(&[c + 5 * k + 1, c, c])), 1.0);
+        assert_eq!(a.radial_error(&Point::new(&[c, c - 5 * k + 1, c])), -1.0);
+        // One unit off along the diagonal direction (3, 4)/5 is not a grid
+        // point; (3k+1, 4k+1) is 7/5 out along it, to first order.
+        let e = a.radial_error(&Point::new(&[c + 3 * k + 1, c + 4 * k + 1, c]));
+        assert!((e - 1.4).abs() < 1e-6, "{e}");
+        // Off the plane: distance combines radial and height.
+        assert_eq!(a.deviation(&Point::new(&[c + 5 * k + 3, c, c + 4])), 5.0);
+    }
+
+    #[test]
+    fn axis_error_is_the_radial_error_split_per_axis() {
+        let a = arc([-7, -9, 2], 25, 0.0, TAU);
+        // (-7 + 6, -9 + 8) is 10 from the centre: 5 outside along (3, 4)/5.
+        let phi = a.axis_error(&Point::new(&[-1, -1, 2]));
+        assert!((phi[0] - 3.0).abs() < 1e-12 && (phi[1] - 4.0).abs() < 1e-12);
+        assert_eq!(phi[2], 0.0);
+    }
+
+    #[test]
+    fn polyline_is_smooth_and_bounded() {
+        // Small circle: at least 64 vertices per turn.
+        let small = arc([0, 0, 0], 9, 0.0, TAU).polyline();
+        assert_eq!(small.len() / 3, 65);
+        // Big circle: chords of sagitta 1/4 unit.
+        let r = 1i64 << 20;
+        let big = arc([0, 0, 0], r * r, 0.0, PI / 2.0);
+        let line = big.polyline();
+        let n = line.len() / 3 - 1;
+        let sagitta = r as f64 * (1.0 - (PI / 4.0 / n as f64).cos());
+        assert!(sagitta <= DRAW_SAGITTA, "{n} segments, sagitta {sagitta}");
+        // Many turns of a huge circle: capped.
+        let huge = 1i64 << 29;
+        let capped = arc([0, 0, 0], huge * huge, 0.0, 100.0 * TAU).polyline();
+        assert_eq!(capped.len() / 3 - 1, MAX_POLYLINE_SEGMENTS as usize);
+        // Ends exactly where the arc starts and stops.
+        assert!((line[0] - r as f64).abs() < 1e-9 && line[1].abs() < 1e-9);
+        let end = &line[line.len() - 3..];
+        assert!(end[0].abs() < 1e-6 && (end[1] - (1 << 20) as f64).abs() < 1e-9);
+    }
+
+    /// Nearest distance by sampling t finely, then golden-section refinement
+    /// around the best sample.
+    fn brute_force(h: &HelixPath, p: &Point) -> f64 {
+        let q = h.local(p);
+        let samples = 200_000;
+        let (mut best_t, mut best) = (0.0, f64::INFINITY);
+        for i in 0..=samples {
+            let t = i as f64 / samples as f64;
+            let d = h.distance_sq(q, t);
+            if d < best {
+                (best_t, best) = (t, d);
+            }
+        }
+        let (mut lo, mut hi) = (
+            (best_t - 1.0 / samples as f64).max(0.0),
+            (best_t + 1.0 / samples as f64).min(1.0),
+        );
+        let g = (5f64.sqrt() - 1.0) / 2.0;
+        for _ in 0..100 {
+            let (a, b) = (hi - g * (hi - lo), lo + g * (hi - lo));
+            if h.distance_sq(q, a) < h.distance_sq(q, b) {
+                hi = b;
+            } else {
+                lo = a;
+            }
+        }
+        best.min(h.distance_sq(q, (lo + hi) / 2.0)).sqrt()
+    }
+
+    #[test]
+    fn helix_distance_matches_brute_force() {
+        let helices = [
+            // One turn of r = 10 rising 40: steep.
+            (100, 0.0, TAU, 40.0),
+            // Three turns, shallow, clockwise, starting at 90°.
+            (400, PI / 2.0, -3.0 * TAU, 6.0),
+            // A quarter turn falling.
+            (25, 1.0, PI / 2.0, -7.0),
+            // Five turns of r = 1000 rising only 2: turns closer than the
+            // distance to them.
+            (1_000_000, 0.0, 5.0 * TAU, 2.0),
+        ];
+        let points = [
+            [10, 0, 0],
+            [11, 3, 7],
+            [-9, -4, 20],
+            [0, 0, 3],
+            [3, 4, -2],
+            [-6, 8, 39],
+            [700, -700, 1],
+            [1001, 2, 2],
+            [0, 20, 5],
+        ];
+        for (radius_sq, start, sweep, rise) in helices {
+            let h = HelixPath {
+                arc: arc([0, 0, 0], radius_sq, start, sweep),
+                start_height: 0.0,
+                rise,
+            };
+            for p in points {
+                let p = Point::new(&p);
+                let (fast, slow) = (h.deviation(&p), brute_force(&h, &p));
+                assert!(
+                    (fast - slow).abs() <= 1e-7 * slow.max(1.0),
+                    "r² {radius_sq} sweep {sweep} rise {rise} {p:?}: newton {fast}, brute force {slow}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn helix_axis_error_compares_at_the_same_angle() {
+        // One turn of r = 5 rising 80 from height 0: at angle 90° the helix
+        // is at height 20. A point at (0, 5, 23) is 3 high there.
+        let h = HelixPath {
+            arc: arc([0, 0, 0], 25, 0.0, TAU),
+            start_height: 0.0,
+            rise: 80.0,
+        };
+        let phi = h.axis_error(&Point::new(&[0, 5, 23]));
+        assert!(phi[0].abs() < 1e-12 && phi[1].abs() < 1e-12, "{phi:?}");
+        assert!((phi[2] - 3.0).abs() < 1e-12, "{phi:?}");
+        // A piece keeps the parent's heights.
+        let piece = h.piece(0.25, 0.5);
+        assert_eq!(piece.start_height, 20.0);
+        assert!((piece.axis_error(&Point::new(&[0, 5, 23]))[2] - 3.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn atan3_is_in_zero_to_two_pi() {
+        assert_eq!(atan3(0.0, 1.0), 0.0);
+        assert!((atan3(-1.0, 0.0) - 1.5 * PI).abs() < 1e-15);
+        assert!((atan3(-1e-9, 1.0) - TAU).abs() < 1e-8);
+    }
+}

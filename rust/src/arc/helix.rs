@@ -1,0 +1,448 @@
+//! Helices: an arc in the plane while the normal (linear) axis travels.
+//!
+//! mode = saleem (Saleem & Saleem 2004, section 5): a helix is a 2D line
+//! between two "axes", the arc and the linear axis. A dry run of the circle
+//! counts the arc's steps n_c; n_z = |Δ linear axis|. A Bresenham line
+//! between n_c and n_z then decides, per iteration, whether the arc takes
+//! its next step (Saleem's circle rule) and whether the linear axis steps.
+//!
+//! mode = segments: the arc-segments method with the height interpolated
+//! along with the angle, each chord a 3D line; as Grbl and most controllers
+//! do. One id with a mode, rather than two ids, because both modes take the
+//! same helix and are measured against the same ideal helix: switching the
+//! mode is exactly the comparison a learner wants.
+//!
+//! Saleem's linear axis advances evenly per arc step, not per degree. The
+//! circle takes 0.9003 r steps per radian on average (4 sqrt(2) r per turn),
+//! but in octant 1 it has taken r sin θ steps at angle θ, which leads or
+//! lags 0.9003 r θ by up to 0.0296 r (at θ = 25.8°; the other octants
+//! mirror it). That spread of 0.0593 r is 0.0593 / (2π × 0.9003) = 1.05% of a
+//! turn, so at a given angle the height differs from the true helix's by up
+//! to 1.05% of one turn's rise (0.52% for arcs from axis to axis), plus the
+//! height of one arc step and half a linear step.
+//! Segments mode interpolates by angle and has no such drift.
+
+use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
+use super::circle_saleem::{
+    CORRECTION, CircleWhy, ERROR_MOVE, ERROR_STAY, FAST, OCTANT, SLOW_STEPS, SaleemCircle,
+};
+use super::curve::HelixPath;
+use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
+use crate::algorithms::{AlgorithmInfo, Family};
+use crate::error::Error;
+use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::ideal::IdealPath;
+use crate::line::step_target;
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
+use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy, Trace, TraceBuilder};
+use std::fmt::Write;
+
+pub const ID: &str = "helix";
+
+pub const MODE: OptionSpec = OptionSpec {
+    name: "mode",
+    kind: OptionKind::Choice {
+        values: &["saleem", "segments"],
+    },
+    required: false,
+    default: Some("saleem"),
+    doc: "saleem: the arc's steps against the linear axis as a 2D Bresenham line (Saleem section 5); segments: chords with the height interpolated by angle, each stepped by lineAlgorithm.",
+};
+
+pub const HELIX_TIE: OptionSpec = OptionSpec {
+    name: "tie",
+    kind: OptionKind::Choice {
+        values: &["advance", "hold"],
+    },
+    required: false,
+    default: None,
+    doc: "saleem mode: what an error exactly at its threshold does (default hold, Saleem's strict >); segments mode: passed to the line algorithm.",
+};
+
+pub const INFO: AlgorithmInfo = AlgorithmInfo {
+    id: ID,
+    family: Family::Arc,
+    title: "Helix (arc plus linear axis)",
+    citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 5 (mode saleem); chords as in arc-segments (mode segments)",
+    teaching: "A helix is a circle in the plane while the linear (normal) axis travels. Saleem treats it as a 2D line between two axes: the arc, which needs n_c steps (counted by a dry run of the circle, the paper's dummy procedure), and the linear axis, which needs n_z. The larger one steps every iteration; the smaller one keeps a Bresenham error, adding 2 × its count each iteration and stepping when the error exceeds the larger count (then subtracting 2 × the larger count). The linear axis thus advances evenly per arc step, not per degree: the circle takes up to sqrt(2) times more steps per degree near the diagonals, so at a given angle the height differs from the true helix's by up to about 1% of a turn's rise. Segments mode, as most controllers do, cuts the helix into chords with the height interpolated by angle.",
+    errata: &[
+        "The helical() pseudo-code has no loop: the body under `if(nz > nc)` and `else` runs once. voxpath iterates max(n_c, n_z) times.",
+        "helical() calls nextStep(currentX, currentY, r) with currentX and currentY never declared or set; they are the arc's current point relative to the centre (eq. 12-13).",
+        "The circle's own errata apply to its steps (see circle).",
+    ],
+    columns: HelixWhy::COLUMNS,
+    options: &[
+        FROM,
+        TO,
+        CENTER,
+        DIR,
+        PLANE,
+        TURNS,
+        MODE,
+        HELIX_TIE,
+        SEGMENT_LENGTH,
+        TOLERANCE,
+        LINE_ALGORITHM,
+        MAX_STEPS,
+    ],
+    min_dims: 3,
+    max_dims: 3,
+    default_tie: Some(TiePolicy::Hold),
+    trace: trace_helix,
+};
+
+fn trace_helix(req: &Request) -> Result<Trace, Error> {
+    req.check_options(INFO.options)?;
+    let spec = ArcSpec::parse(req, true)?;
+    if req.choice(&MODE)? == Some("segments") {
+        return trace_chords(ID, req, &spec, true);
+    }
+    for option in [SEGMENT_LENGTH.name, TOLERANCE.name] {
+        if req.number(option)?.is_some() {
+            return Err(Error::field(option, "applies to mode segments only"));
+        }
+    }
+    if req.choice(&LINE_ALGORITHM)?.is_some() {
+        return Err(Error::field(
+            LINE_ALGORITHM.name,
+            "applies to mode segments only",
+        ));
+    }
+    let tie = req.tie(TiePolicy::Hold)?;
+    let mut builder = TraceBuilder::new(spec.from, req.max_steps()?);
+    let circle = SaleemCircle::new(&spec).counted(&builder)?;
+    let helix = SaleemHelix::new(&spec, circle, tie);
+    if helix.remaining > builder.max_steps() {
+        return Err(builder.too_long(helix.remaining));
+    }
+    let ideal = HelixPath {
+        arc: spec.ideal_arc(),
+        start_height: 0.0,
+        rise: spec.rise as f64,
+    };
+    builder.run(helix, IdealPath::Helix(ideal))?;
+    Ok(builder.finish(ID))
+}
+
+/// Which of the two "axes" of Saleem's helix line steps every iteration.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Major {
+    /// n_c >= n_z: the arc steps every time (the paper's `else` branch).
+    Arc,
+    /// n_z > n_c: the linear axis steps every time.
+    Linear,
+}
+
+pub const MAJOR_LABELS: &[&str] = &["arc", "linear"];
+
+/// Why one step of the helix was taken.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HelixWhy {
+    /// The circle's decision, when the arc stepped.
+    pub arc: Option<CircleWhy>,
+    pub major: Major,
+    /// The minor axis's Bresenham error after adding 2 × its count: the
+    /// paper's errorZ (arc major) or errorCircle (linear major).
+    pub error: i64,
+    pub minor_steps: bool,
+    pub tie: bool,
+    tie_policy: TiePolicy,
+    n_c: u64,
+    n_z: u64,
+    normal: usize,
+}
+
+impl Decision for HelixWhy {
+    const COLUMNS: &'static [Column] = &[
+        OCTANT,
+        FAST,
+        ERROR_STAY,
+        ERROR_MOVE,
+        SLOW_STEPS,
+        CORRECTION,
+        Column {
+            name: "major",
+            kind: ColumnKind::Category(MAJOR_LABELS),
+            doc: "Which steps every iteration: the arc (n_c >= n_z) or the linear axis (n_z > n_c) (Saleem section 5).",
+        },
+        Column {
+            name: "helix_error",
+            kind: ColumnKind::Int,
+            doc: "The minor axis's Bresenham error after adding 2 × its count (errorZ or errorCircle); the minor axis steps when it exceeds the major count.",
+        },
+        Column {
+            name: "arc_steps",
+            kind: ColumnKind::Flag,
+            doc: "1 when the arc took a step (the circle columns then hold its decision).",
+        },
+        Column {
+            name: "linear_steps",
+            kind: ColumnKind::Flag,
+            doc: "1 when the linear (normal) axis stepped.",
+        },
+        Column {
+            name: "helix_tie",
+            kind: ColumnKind::Flag,
+            doc: "1 when the helix error equalled the major count and the tie policy decided.",
+        },
+    ];
+
+    fn write(&self, row: &mut [f64]) {
+        match self.arc {
+            Some(arc) => arc.write(&mut row[..6]),
+            None => row[..6].fill(f64::NAN),
+        }
+        row[6] = self.major as u8 as f64;
+        row[7] = self.error as f64;
+        row[8] = self.arc.is_some() as u8 as f64;
+        let linear = self.major == Major::Linear || self.minor_steps;
+        row[9] = linear as u8 as f64;
+        row[10] = self.tie as u8 as f64;
+    }
+
+    fn is_tie(&self) -> bool {
+        self.tie
+    }
+
+    fn explain(&self, from: &Point, step: Step) -> String {
+        let z = AXIS_NAMES[self.normal];
+        let (major_count, minor, minor_count) = match self.major {
+            Major::Arc => (
+                format!("n_c = {} >= n_z = {}", self.n_c, self.n_z),
+                "the linear axis",
+                self.n_c,
+            ),
+            Major::Linear => (
+                format!("n_z = {} > n_c = {}", self.n_z, self.n_c),
+                "the arc",
+                self.n_z,
+            ),
+        };
+        let major_name = match self.major {
+            Major::Arc => "the arc".to_string(),
+            Major::Linear => z.to_string(),
+        };
+        let mut s = format!(
+            "{major_count}, so {major_name} steps every time; {minor}'s error is {} {} {minor_count}",
+            self.error,
+            match self.error.cmp(&(minor_count as i64)) {
+                std::cmp::Ordering::Greater => ">",
+                std::cmp::Ordering::Equal => "=",
+                std::cmp::Ordering::Less => "<",
+            },
+        );
+        if self.tie {
+            let _ = write!(s, " (a tie, decided by '{}')", self.tie_policy.label());
+        }
+        let _ = write!(
+            s,
+            ", so {minor} {}",
+            if self.minor_steps {
+                "steps too"
+            } else {
+                "waits"
+            }
+        );
+        match self.arc {
+            Some(arc) => {
+                let _ = write!(s, ". Arc: {}", arc.explain(from, step));
+            }
+            None => {
+                let _ = write!(s, ": {}.", step_target(step, 3));
+            }
+        }
+        s
+    }
+}
+
+/// Saleem's helix: a Bresenham line between the arc's n_c steps and the
+/// linear axis's n_z.
+#[derive(Clone, Debug)]
+pub struct SaleemHelix {
+    circle: SaleemCircle,
+    n_c: u64,
+    n_z: u64,
+    normal: usize,
+    /// Direction of the linear axis: the paper's incZ.
+    normal_dir: i64,
+    major: Major,
+    /// The minor axis's error term (errorZ or errorCircle), starting at 0.
+    /// Stays within (-major count, major count], so i64 holds it.
+    error: i64,
+    remaining: u64,
+    tie: TiePolicy,
+}
+
+impl SaleemHelix {
+    /// `circle` has been counted (its remaining steps are n_c).
+    pub fn new(spec: &ArcSpec, circle: SaleemCircle, tie: TiePolicy) -> SaleemHelix {
+        let n_c = circle
+            .remaining_steps()
+            .expect("the circle's steps are counted by the dry run first");
+        let n_z = spec.rise.unsigned_abs();
+        let major = if n_z > n_c { Major::Linear } else { Major::Arc };
+        SaleemHelix {
+            circle,
+            n_c,
+            n_z,
+            normal: spec.plane.normal(),
+            normal_dir: spec.rise.signum(),
+            major,
+            error: 0,
+            remaining: n_c.max(n_z),
+            tie,
+        }
+    }
+
+    fn arc_step(&mut self) -> (Step, CircleWhy) {
+        // A Bresenham line between n_c and n_z takes exactly n_c arc steps,
+        // all of which the dry run counted.
+        self.circle
+            .next_step()
+            .expect("the arc has n_c steps, as the dry run counted")
+    }
+}
+
+impl Stepper for SaleemHelix {
+    type Why = HelixWhy;
+
+    fn next_step(&mut self) -> Option<(Step, HelixWhy)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        self.remaining -= 1;
+        let (major_count, minor_count) = match self.major {
+            Major::Arc => (self.n_c as i64, self.n_z as i64),
+            Major::Linear => (self.n_z as i64, self.n_c as i64),
+        };
+        // The major axis steps every iteration; the minor one adds twice its
+        // count and steps when that exceeds the major count (section 3's
+        // 2D rule with n_c and n_z for the deltas).
+        self.error += 2 * minor_count;
+        let error = self.error;
+        let tie = error == major_count;
+        let minor_steps = error > major_count || (tie && self.tie == TiePolicy::Advance);
+        if minor_steps {
+            self.error -= 2 * major_count;
+        }
+        let arc_moves = self.major == Major::Arc || minor_steps;
+        let linear_moves = self.major == Major::Linear || minor_steps;
+        let (mut step, arc) = if arc_moves {
+            let (step, why) = self.arc_step();
+            (step, Some(why))
+        } else {
+            (Step::NONE, None)
+        };
+        if linear_moves {
+            step = step.with(self.normal, self.normal_dir);
+        }
+        let why = HelixWhy {
+            arc,
+            major: self.major,
+            error,
+            minor_steps,
+            tie,
+            tie_policy: self.tie,
+            n_c: self.n_c,
+            n_z: self.n_z,
+            normal: self.normal,
+        };
+        Some((step, why))
+    }
+
+    fn remaining_steps(&self) -> Option<u64> {
+        Some(self.remaining)
+    }
+
+    fn setup_note(&self) -> String {
+        let z = AXIS_NAMES[self.normal];
+        format!(
+            "Dry run (the paper's dummy procedure): the arc takes n_c = {} steps; the linear axis {z} needs n_z = {}. {} major: {} steps every iteration, {} iterations in all. The arc, projected on the plane of the start: {}",
+            self.n_c,
+            self.n_z,
+            MAJOR_LABELS[self.major as usize],
+            match self.major {
+                Major::Arc => "the arc".to_string(),
+                Major::Linear => z.to_string(),
+            },
+            self.n_c.max(self.n_z),
+            self.circle.setup_note(),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn points(t: &Trace) -> Vec<[i64; 3]> {
+        t.points_flat(0, t.steps() + 1)
+            .chunks(3)
+            .map(|c| [c[0], c[1], c[2]])
+            .collect()
+    }
+
+    #[test]
+    fn quarter_turn_rising_two_by_hand() {
+        // r = 3 quarter, CCW: the circle alone is (3,0) (3,1) (2,2) (1,3)
+        // (0,3), so n_c = 4; n_z = 2. Arc major; errorZ += 4 each time and
+        // z steps when it exceeds 4: 4 (a tie: Saleem's strict > holds),
+        // 8 (yes, -> 0), 4 (tie, holds), 8 (yes).
+        let t = crate::trace_json(
+            r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,2],"center":[0,0,0]}"#,
+        )
+        .unwrap();
+        assert_eq!(
+            points(&t),
+            [[3, 0, 0], [3, 1, 0], [2, 2, 1], [1, 3, 1], [0, 3, 2]]
+        );
+        let d = t.decisions(0, 4);
+        assert_eq!(d.columns[7], [4.0, 8.0, 4.0, 8.0]);
+        assert_eq!(d.columns[9], [0.0, 1.0, 0.0, 1.0]);
+        assert!(t.explain(0).starts_with(
+            "n_c = 4 >= n_z = 2, so the arc steps every time; the linear axis's error is 4 = 4 (a tie, decided by 'hold'), so the linear axis waits. Arc: Octant 1:"
+        ), "{}", t.explain(0));
+        assert!(t.segments()[0].setup_note.contains("n_c = 4 steps"));
+    }
+
+    #[test]
+    fn steep_helix_lets_the_linear_axis_lead() {
+        // The same quarter with z falling 9: n_z = 9 > n_c = 4. errorCircle
+        // += 8 and the arc steps when it exceeds 9: 8, 16 (-> -2), 6, 14
+        // (-> -4), 4, 12 (-> -6), 2, 10 (-> -8), 0.
+        let t = crate::trace_json(
+            r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,-9],"center":[0,0,0]}"#,
+        )
+        .unwrap();
+        let d = t.decisions(0, 9);
+        assert_eq!(
+            d.columns[7],
+            [8.0, 16.0, 6.0, 14.0, 4.0, 12.0, 2.0, 10.0, 0.0]
+        );
+        assert_eq!(d.columns[8], [0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0]);
+        assert_eq!(t.end(), Point::new(&[0, 3, -9]));
+        assert!(
+            t.explain(0)
+                .contains("n_z = 9 > n_c = 4, so z steps every time")
+        );
+    }
+
+    #[test]
+    fn segment_options_need_segments_mode() {
+        let e = crate::trace_json(
+            r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,2],"center":[0,0,0],"tolerance":0.1}"#,
+        )
+        .err()
+        .unwrap();
+        assert_eq!(e.to_string(), "tolerance: applies to mode segments only");
+        let t = crate::trace_json(
+            r#"{"algorithm":"helix","from":[30,0,0],"to":[0,30,20],"center":[0,0,0],"mode":"segments","segmentLength":10}"#,
+        )
+        .unwrap();
+        // floor(15π / 10) = 4 chords, heights 5, 10, 15 then 20.
+        assert_eq!(t.segments().len(), 4);
+        let starts: Vec<i64> = t.segments().iter().map(|s| s.start.get(2)).collect();
+        assert_eq!(starts, [0, 5, 10, 15]);
+        assert!(matches!(t.segments()[0].ideal, IdealPath::Helix(_)));
+    }
+}

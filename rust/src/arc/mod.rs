@@ -1,0 +1,365 @@
+//! Arcs, circles and helices on the step grid: Saleem's integer circle
+//! (`circle`), arcs split into chords (`arc-segments`) and Saleem's helix
+//! (`helix`), in the planes G17, G18 and G19 and both directions.
+//!
+//! Every arc is given by absolute `from`, `to` and `center` points (3 axes),
+//! `dir` and `plane`. The radius is that of the start point, r² = u² + v²
+//! relative to the centre, an exact integer. The end may be off that circle
+//! by at most [`RADIUS_TOLERANCE`] grid unit; each algorithm says how it
+//! closes the difference.
+
+pub mod arc_segments;
+pub mod circle_saleem;
+pub mod curve;
+pub mod helix;
+pub mod planes;
+
+use crate::error::Error;
+use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
+use crate::request::{OptionKind, OptionSpec, Request};
+use curve::{ArcPath, atan3, degrees};
+use planes::{DIR_VALUES, Frame, PLANE_VALUES, Plane, Turn, same_height};
+use std::f64::consts::TAU;
+
+/// Largest accepted |r_end - r_start|, grid units. A rounded end point is at
+/// most sqrt(2)/2 off its circle, so one unit accepts every honest rounding
+/// and refuses ends that belong to another circle.
+pub const RADIUS_TOLERANCE: i64 = 1;
+
+/// Largest accepted `turns`.
+pub const MAX_TURNS: i64 = 1_000_000;
+
+pub const CENTER: OptionSpec = OptionSpec {
+    name: "center",
+    kind: OptionKind::Point,
+    required: true,
+    default: None,
+    doc: "Centre of the circle, absolute grid units; its coordinate on the plane's normal axis is ignored.",
+};
+
+pub const DIR: OptionSpec = OptionSpec {
+    name: "dir",
+    kind: OptionKind::Choice { values: DIR_VALUES },
+    required: false,
+    default: Some("ccw"),
+    doc: "cw = G02 (clockwise), ccw = G03 (counter-clockwise), seen from the positive end of the plane's normal axis.",
+};
+
+pub const PLANE: OptionSpec = OptionSpec {
+    name: "plane",
+    kind: OptionKind::Choice {
+        values: PLANE_VALUES,
+    },
+    required: false,
+    default: Some("xy"),
+    doc: "xy = G17, zx = G18 (z is the first axis, so the plane is right-handed), yz = G19.",
+};
+
+pub const TURNS: OptionSpec = OptionSpec {
+    name: "turns",
+    kind: OptionKind::Integer,
+    required: false,
+    default: Some("0"),
+    doc: "Extra full turns before stopping at the end (G-code P minus 1); from = to is already one full circle.",
+};
+
+/// A validated arc request.
+#[derive(Clone, Debug)]
+pub struct ArcSpec {
+    pub from: Point,
+    pub to: Point,
+    pub plane: Plane,
+    pub turn: Turn,
+    pub turns: u64,
+    /// Centre, with the start's height on the normal axis.
+    pub frame: Frame,
+    /// r² of the start point, exact.
+    pub radius_sq: i64,
+    /// Start and end in the local counter-clockwise frame.
+    pub start: [i64; 2],
+    pub end: [i64; 2],
+    /// `to - from` along the normal axis (0 for a planar arc).
+    pub rise: i64,
+}
+
+impl ArcSpec {
+    /// Reads and checks the arc options. `allow_rise`: whether `to` may
+    /// differ from `from` along the normal axis (a helix).
+    pub fn parse(req: &Request, allow_rise: bool) -> Result<ArcSpec, Error> {
+        let (from, to) = req.endpoints(3, 3)?;
+        let center = req.point("center")?;
+        if center.dims() != 3 {
+            return Err(Error::field(
+                "center",
+                format!("expected 3 coordinates, got {}", center.dims()),
+            ));
+        }
+        let plane = Plane::parse(req.choice(&PLANE)?);
+        let turn = Turn::parse(req.choice(&DIR)?);
+        let turns = match req.integer(TURNS.name)? {
+            None => 0,
+            Some(n) if (0..=MAX_TURNS).contains(&n) => n as u64,
+            Some(n) => {
+                return Err(Error::field(
+                    "turns",
+                    format!("must be 0 to {MAX_TURNS}, got {n}"),
+                ));
+            }
+        };
+        if !allow_rise {
+            same_height(plane, &from, &to)?;
+        }
+        let [u, v, n] = plane.axes();
+        let mut c = [0; 3];
+        c[u] = center.get(u);
+        c[v] = center.get(v);
+        c[n] = from.get(n);
+        let frame = Frame {
+            plane,
+            turn,
+            center: Point::new(&c),
+        };
+        let start = frame.local(&from);
+        let end = frame.local(&to);
+        let start_sq = norm_sq(start);
+        let end_sq = norm_sq(end);
+        let (un, vn) = (AXIS_NAMES[u], AXIS_NAMES[v]);
+        if start_sq == 0 {
+            return Err(Error::field(
+                "center",
+                format!("is the start point in {un} and {vn}: the radius would be 0"),
+            ));
+        }
+        if end_sq == 0 {
+            return Err(Error::field(
+                "to",
+                format!("is the centre in {un} and {vn}: an arc cannot end there"),
+            ));
+        }
+        // Every point of the circle must be a valid input point, so that the
+        // chords of arc-segments are valid lines and every coordinate fits
+        // in i32 at the wasm boundary.
+        let reach = ceil_sqrt(start_sq) + RADIUS_TOLERANCE as i128;
+        for (axis, name) in [(u, un), (v, vn)] {
+            let c = center.get(axis) as i128;
+            if c.abs() + reach > COORD_LIMIT as i128 {
+                return Err(Error::field(
+                    "center",
+                    format!(
+                        "the circle of radius {:.3} around {name} = {c} reaches past ±2^30 ({COORD_LIMIT}) on {name}; every point of the circle must be within it",
+                        (start_sq as f64).sqrt()
+                    ),
+                ));
+            }
+        }
+        if !radii_within_tolerance(start_sq, end_sq) {
+            let (rs, re) = ((start_sq as f64).sqrt(), (end_sq as f64).sqrt());
+            return Err(Error::field(
+                "to",
+                format!(
+                    "is {re:.3} from the centre but from is {rs:.3}: the radii differ by {:.3}, more than {RADIUS_TOLERANCE} grid unit",
+                    (re - rs).abs()
+                ),
+            ));
+        }
+        Ok(ArcSpec {
+            from,
+            to,
+            plane,
+            turn,
+            turns,
+            frame,
+            radius_sq: start_sq as i64,
+            start,
+            end,
+            rise: to.get(n) - from.get(n),
+        })
+    }
+
+    /// The counter-clockwise angle from start to end in the local frame, in
+    /// (0, 2π], plus the extra turns: start = end is a full circle, as in
+    /// G-code. Computed as atan2(cross, dot) of the exact integer cross and
+    /// dot products (as Grbl does), so the fix-up below tests exact signs.
+    pub fn local_sweep_rad(&self) -> f64 {
+        let (cross, dot) = cross_dot(self.start, self.end);
+        let mut sweep = (cross as f64).atan2(dot as f64);
+        // The end is behind the start or on its ray: the arc goes round.
+        if cross < 0 || (cross == 0 && dot > 0) {
+            sweep += TAU;
+        }
+        sweep + TAU * self.turns as f64
+    }
+
+    /// Signed sweep in the plane's right-handed frame: < 0 for G02.
+    pub fn sweep_rad(&self) -> f64 {
+        self.turn.sign() as f64 * self.local_sweep_rad()
+    }
+
+    /// Angle of the start point, [0, 2π), in the plane's frame.
+    pub fn start_rad(&self) -> f64 {
+        let [u, v, _] = self.plane.axes();
+        let c = &self.frame.center;
+        atan3(
+            (self.from.get(v) - c.get(v)) as f64,
+            (self.from.get(u) - c.get(u)) as f64,
+        )
+    }
+
+    pub fn ideal_arc(&self) -> ArcPath {
+        ArcPath::new(
+            self.plane,
+            self.frame.center,
+            self.radius_sq,
+            self.start_rad(),
+            self.sweep_rad(),
+        )
+    }
+
+    pub fn radius(&self) -> f64 {
+        (self.radius_sq as f64).sqrt()
+    }
+
+    /// One sentence about the arc for setup notes.
+    pub fn describe(&self) -> String {
+        let [u, v, _] = self.plane.axes();
+        format!(
+            "{} in the {}; centre {}, r² = {}² + {}² = {} (r = {:.3}); sweep {:.1}°",
+            self.turn.describe(),
+            self.plane.describe(),
+            self.frame.center,
+            self.from.get(u) - self.frame.center.get(u),
+            self.from.get(v) - self.frame.center.get(v),
+            self.radius_sq,
+            self.radius(),
+            degrees(self.sweep_rad()),
+        )
+    }
+}
+
+pub fn norm_sq([a, b]: [i64; 2]) -> i128 {
+    a as i128 * a as i128 + b as i128 * b as i128
+}
+
+/// Cross and dot products of two local vectors, exact.
+pub fn cross_dot(p: [i64; 2], q: [i64; 2]) -> (i128, i128) {
+    let (p0, p1, q0, q1) = (p[0] as i128, p[1] as i128, q[0] as i128, q[1] as i128);
+    (p0 * q1 - p1 * q0, p0 * q0 + p1 * q1)
+}
+
+fn ceil_sqrt(n: i128) -> i128 {
+    let s = (n as u128).isqrt() as i128;
+    if s * s == n { s } else { s + 1 }
+}
+
+/// |sqrt(a) - sqrt(b)| <= RADIUS_TOLERANCE, exactly: sqrt(a) <= sqrt(b) + t
+/// holds iff a - b - t² <= 2 t sqrt(b), i.e. the left side is negative or
+/// its square is at most 4 t² b.
+fn radii_within_tolerance(a: i128, b: i128) -> bool {
+    let t = RADIUS_TOLERANCE as i128;
+    let below = |a: i128, b: i128| {
+        let lhs = a - b - t * t;
+        lhs <= 0 || lhs * lhs <= 4 * t * t * b
+    };
+    below(a, b) && below(b, a)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    fn spec(json: &str) -> Result<ArcSpec, Error> {
+        ArcSpec::parse(&Request::from_json(json).unwrap(), false)
+    }
+
+    #[test]
+    fn sweeps_follow_gcode_directions() {
+        let s = |from: &str, to: &str, dir: &str| {
+            spec(&format!(
+                r#"{{"algorithm":"circle","from":{from},"to":{to},"center":[0,0,0],"dir":"{dir}"}}"#
+            ))
+            .unwrap()
+            .sweep_rad()
+        };
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+        assert!(close(s("[5,0,0]", "[0,5,0]", "ccw"), PI / 2.0));
+        assert!(close(s("[5,0,0]", "[0,5,0]", "cw"), -1.5 * PI));
+        assert!(close(s("[5,0,0]", "[-5,0,0]", "ccw"), PI));
+        assert!(close(s("[5,0,0]", "[-5,0,0]", "cw"), -PI));
+        assert!(close(s("[5,0,0]", "[5,0,0]", "ccw"), 2.0 * PI));
+        assert!(close(s("[5,0,0]", "[5,0,0]", "cw"), -2.0 * PI));
+        // The end one unit behind the start on a big circle: almost a full turn.
+        let r = 1i64 << 20;
+        let almost = s(&format!("[{r},0,0]"), &format!("[{r},-1,0]"), "ccw");
+        assert!(almost > 2.0 * PI - 2.0 / r as f64 && almost < 2.0 * PI);
+    }
+
+    #[test]
+    fn bad_arcs_name_the_field() {
+        let e = |json: &str| spec(json).unwrap_err().to_string();
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,2],"center":[0,0,0]}"#),
+            "to: z = 2 differs from from's z = 0: an arc in the xy plane (G17), seen from +z stays at one z; use the helix algorithm for a move that also travels along z"
+        );
+        assert_eq!(
+            e(
+                r#"{"algorithm":"circle","from":[5,0,0],"to":[0,2,5],"center":[0,0,0],"plane":"zx"}"#
+            ),
+            "to: y = 2 differs from from's y = 0: an arc in the zx plane (G18), seen from +y stays at one y; use the helix algorithm for a move that also travels along y"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[5,0,9]}"#),
+            "center: is the start point in x and y: the radius would be 0"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[1,0,0],"to":[0,0,0],"center":[0,0,0]}"#),
+            "to: is the centre in x and y: an arc cannot end there"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,7,0],"center":[0,0,0]}"#),
+            "to: is 7.000 from the centre but from is 5.000: the radii differ by 2.000, more than 1 grid unit"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0]}"#),
+            "center: expected 3 coordinates, got 2"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,"o",0]}"#),
+            "center: y must be a number, got \"o\""
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0,0],"turns":-1}"#),
+            "turns: must be 0 to 1000000, got -1"
+        );
+        assert!(
+            e(r#"{"algorithm":"circle","from":[1073741824,0,0],"to":[1073741824,0,0],"center":[1073741820,0,0]}"#)
+                .starts_with("center: the circle of radius 4.000 around x = 1073741820 reaches past ±2^30")
+        );
+    }
+
+    #[test]
+    fn the_centre_s_normal_coordinate_is_ignored() {
+        let a = spec(r#"{"algorithm":"circle","from":[5,0,3],"to":[0,5,3],"center":[0,0,-40]}"#)
+            .unwrap();
+        assert_eq!(a.frame.center, Point::new(&[0, 0, 3]));
+        // In G19 (yz) the normal axis is x.
+        let a = spec(
+            r#"{"algorithm":"circle","from":[7,5,0],"to":[7,0,5],"center":[99,0,0],"plane":"yz"}"#,
+        )
+        .unwrap();
+        assert_eq!(a.frame.center, Point::new(&[7, 0, 0]));
+        assert_eq!((a.start, a.end), ([5, 0], [0, 5]));
+    }
+
+    #[test]
+    fn radius_tolerance_is_exact_at_one_unit() {
+        // r = 5 start; ends at distance exactly 6 and 4 pass, sqrt(37) and
+        // sqrt(15) (just past 6 and just under 4) do not.
+        assert!(radii_within_tolerance(36, 25) && radii_within_tolerance(16, 25));
+        assert!(!radii_within_tolerance(37, 25) && !radii_within_tolerance(15, 25));
+        // Large: r = 2^20 against 2^20 + 1 and 2^20 + 2.
+        let r = 1i128 << 20;
+        assert!(radii_within_tolerance((r + 1) * (r + 1), r * r));
+        assert!(!radii_within_tolerance((r + 1) * (r + 1) + 1, r * r));
+    }
+}

@@ -1,0 +1,392 @@
+//! Properties of circle, arc-segments and helix on random arcs in every
+//! plane, direction and octant, with centres anywhere in the ±2^30 box.
+//!
+//! Bounds asserted, and why they hold:
+//! - circle points are less than 1/2 from the circle: the two candidates of
+//!   a step sit either side of it on a line along the slow axis, at |slow|
+//!   = n and n + 1, and the crossing x* has x*² = r² - fast², an integer. The
+//!   outer candidate wins only if x*² >= n² + n + 1, so its error
+//!   ((n+1)² - x*²) / (ρ + r) <= n / (2r) < 1/2; the inner one wins only if
+//!   x*² <= n² + n, so r - ρ <= x* - n <= sqrt(n² + n) - n < 1/2.
+//! - at most 2 correction steps: the end is within 1 of the circle, the ray
+//!   through it crosses the step between the two points either side, so the
+//!   nearer one is within 1 + 1/2 + sqrt(2)/2 < 3 of the end, and a grid
+//!   point at Chebyshev distance 3 would be at least 3 away.
+//! - a point between two correction steps is within 1/2 + sqrt(2) of the
+//!   circle (one diagonal step from a circle point).
+
+#![allow(clippy::needless_range_loop)]
+
+use proptest::prelude::*;
+use std::f64::consts::{PI, SQRT_2, TAU};
+use voxpath::Trace;
+use voxpath::grid::{COORD_LIMIT, Point};
+use voxpath::ideal::{IdealPath, IdealPathInfo};
+
+const PLANES: [(&str, [usize; 3]); 3] = [("xy", [0, 1, 2]), ("zx", [2, 0, 1]), ("yz", [1, 2, 0])];
+
+#[derive(Clone, Debug)]
+struct Arc {
+    plane: usize,
+    ccw: bool,
+    center: [i64; 3],
+    /// Start and end relative to the centre, in the plane's (u, v).
+    start: [i64; 2],
+    end: [i64; 2],
+    turns: u64,
+}
+
+impl Arc {
+    fn axes(&self) -> [usize; 3] {
+        PLANES[self.plane].1
+    }
+
+    fn point(&self, uv: [i64; 2], height: i64) -> [i64; 3] {
+        let [u, v, n] = self.axes();
+        let mut p = self.center;
+        p[u] += uv[0];
+        p[v] += uv[1];
+        p[n] += height;
+        p
+    }
+
+    fn request(&self, algorithm: &str, rise: i64, extra: &str) -> String {
+        format!(
+            r#"{{"algorithm":"{algorithm}","from":{:?},"to":{:?},"center":{:?},"dir":"{}","plane":"{}","turns":{}{extra}}}"#,
+            self.point(self.start, 0),
+            self.point(self.end, rise),
+            self.center,
+            if self.ccw { "ccw" } else { "cw" },
+            PLANES[self.plane].0,
+            self.turns,
+        )
+    }
+
+    fn radius_sq(&self) -> i64 {
+        self.start[0].pow(2) + self.start[1].pow(2)
+    }
+
+    /// (u, v) of a grid point relative to the centre.
+    fn local(&self, p: &[i64; 3]) -> [i64; 2] {
+        let [u, v, _] = self.axes();
+        [p[u] - self.center[u], p[v] - self.center[v]]
+    }
+}
+
+/// A random arc of radius up to `max_r`: the end is the arc point at a
+/// random angle and a radius within 1/4 of the start's, rounded, so it is
+/// within 1/4 + sqrt(2)/2 < 1 of the circle; or (one time in four) the start
+/// itself, a full circle.
+fn arc_strategy(max_r: i64) -> impl Strategy<Value = Arc> {
+    let reach = COORD_LIMIT - max_r - 2;
+    (
+        0usize..3,
+        any::<bool>(),
+        prop_oneof![
+            [-1000i64..1000, -1000i64..1000, -1000i64..1000],
+            [-reach..reach, -reach..reach, -reach..reach],
+        ],
+        [-max_r..=max_r, -max_r..=max_r],
+        0.0..TAU,
+        -0.25f64..0.25,
+        0u8..4,
+        prop_oneof![4 => Just(0u64), 1 => 1u64..3],
+    )
+        .prop_filter("a radius", |(_, _, _, s, ..)| *s != [0, 0])
+        .prop_map(|(plane, ccw, center, start, angle, dr, full, turns)| {
+            let r = ((start[0].pow(2) + start[1].pow(2)) as f64).sqrt() + dr;
+            let mut end = [
+                (r * angle.cos()).round() as i64,
+                (r * angle.sin()).round() as i64,
+            ];
+            if full == 0 || end == [0, 0] {
+                end = start;
+            }
+            Arc {
+                plane,
+                ccw,
+                center,
+                start,
+                end,
+                turns,
+            }
+        })
+}
+
+fn points(t: &Trace) -> Vec<[i64; 3]> {
+    t.points_flat(0, t.steps() + 1)
+        .chunks(3)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect()
+}
+
+fn cross(p: [i64; 2], q: [i64; 2]) -> i128 {
+    p[0] as i128 * q[1] as i128 - p[1] as i128 * q[0] as i128
+}
+
+/// Checks the steps are single grid moves that never move `still` (the
+/// normal axis, or none).
+fn check_steps(p: &[[i64; 3]], still: Option<usize>) -> Result<(), TestCaseError> {
+    for w in p.windows(2) {
+        let d: Vec<i64> = (0..3).map(|a| w[1][a] - w[0][a]).collect();
+        prop_assert!(
+            d.iter().all(|v| v.abs() <= 1) && d.iter().any(|&v| v != 0),
+            "{:?} -> {:?}",
+            w[0],
+            w[1]
+        );
+        if let Some(n) = still {
+            prop_assert_eq!(d[n], 0, "the normal axis moved at {:?}", w[0]);
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn circle_steps_on_the_circle_and_ends_exactly(arc in arc_strategy(300)) {
+        let t = voxpath::trace_json(&arc.request("circle", 0, "")).unwrap();
+        let p = points(&t);
+        let [_, _, n] = arc.axes();
+        check_steps(&p, Some(n))?;
+        prop_assert_eq!(*p.last().unwrap(), arc.point(arc.end, 0));
+        let correction = &t.decisions(0, t.steps()).columns[5];
+        let circle_steps = correction.iter().take_while(|&&c| c == 0.0).count();
+        let corrections = correction.len() - circle_steps;
+        prop_assert!(correction[circle_steps..].iter().all(|&c| c == 1.0));
+        prop_assert!(corrections <= 2, "{} corrections", corrections);
+        let ideal = &t.segments()[0].ideal;
+        for (k, q) in p.iter().enumerate() {
+            let e = ideal.deviation(&Point::new(q));
+            if k <= circle_steps {
+                prop_assert!(e < 0.5, "circle point {:?} is {} off", q, e);
+            } else if k < p.len() - 1 {
+                prop_assert!(e <= 0.5 + SQRT_2, "correction point {:?} is {} off", q, e);
+            } else {
+                prop_assert!(e <= 1.0, "the end is {} off", e);
+            }
+        }
+        // Every circle step turns forward (counter-clockwise in the mirror
+        // frame of a clockwise arc), so a turn is at most 8 (r + 1) steps.
+        let sign = if arc.ccw { 1 } else { -1 };
+        for w in p[..=circle_steps].windows(2) {
+            prop_assert!(sign * cross(arc.local(&w[0]), arc.local(&w[1])) > 0);
+        }
+        let r = (arc.radius_sq() as f64).sqrt();
+        prop_assert!(circle_steps as f64 <= (arc.turns + 1) as f64 * 8.0 * (r + 1.0));
+    }
+
+    #[test]
+    fn a_full_circle_returns_and_visits_every_octant(arc in arc_strategy(300)) {
+        let arc = Arc { end: arc.start, ..arc };
+        let t = voxpath::trace_json(&arc.request("circle", 0, "")).unwrap();
+        prop_assert_eq!(t.end(), t.start());
+        prop_assert!(t.steps() > 0);
+        let octants = &t.decisions(0, t.steps()).columns[0];
+        let mut seen = [false; 8];
+        for &k in octants {
+            seen[k as usize] = true;
+        }
+        // r = 1 is the exception: its four cells sit on the axes and the
+        // diagonal steps between them skip octants 2, 4, 6, 8.
+        if arc.radius_sq() >= 2 {
+            prop_assert!(seen.iter().all(|&s| s), "octants seen: {:?}", seen);
+        }
+        prop_assert_eq!(t.metrics().steps, t.steps());
+    }
+
+    #[test]
+    fn reversing_an_arc_between_points_of_one_circle_visits_the_same_cells(
+        arc in arc_strategy(300), image in 0usize..8
+    ) {
+        // B is one of the eight symmetric images of A, so both lie on the
+        // same integer circle u² + v² = r² and both runs use that circle.
+        // Then cw A -> B is ccw B -> A backwards, cell for cell: within an
+        // octant each run takes, for each fast coordinate, the candidate
+        // nearer the circle (no ties exist), and at the octant switches the
+        // octant-ahead rule is the mirror image of itself.
+        let [a, b] = arc.start;
+        let images = [[a, b], [b, a], [-b, a], [-a, b], [-a, -b], [-b, -a], [b, -a], [a, -b]];
+        let arc = Arc { end: images[image], ..arc };
+        let forward = voxpath::trace_json(&Arc { ccw: false, ..arc.clone() }.request("circle", 0, "")).unwrap();
+        let back = Arc { ccw: true, start: arc.end, end: arc.start, ..arc.clone() };
+        let backward = voxpath::trace_json(&back.request("circle", 0, "")).unwrap();
+        let mut reversed = points(&backward);
+        reversed.reverse();
+        prop_assert_eq!(points(&forward), reversed);
+    }
+
+    #[test]
+    fn every_plane_steps_the_same_local_path(arc in arc_strategy(200)) {
+        let local = |plane: usize| {
+            let arc = Arc { plane, ..arc.clone() };
+            let t = voxpath::trace_json(&arc.request("circle", 0, "")).unwrap();
+            points(&t).iter().map(|p| arc.local(p)).collect::<Vec<_>>()
+        };
+        let xy = local(0);
+        prop_assert_eq!(&xy, &local(1));
+        prop_assert_eq!(&xy, &local(2));
+    }
+
+    #[test]
+    fn chords_stay_within_sagitta_plus_rounding_plus_line_error(
+        arc in arc_strategy(200),
+        length in 1.0f64..40.0,
+        tolerance in 0.05f64..3.0,
+        by_length in any::<bool>(),
+    ) {
+        let r = (arc.radius_sq() as f64).sqrt();
+        prop_assume!(by_length || tolerance < 2.0 * r);
+        let extra = if by_length {
+            format!(r#","segmentLength":{length}"#)
+        } else {
+            format!(r#","tolerance":{tolerance}"#)
+        };
+        let t = voxpath::trace_json(&arc.request("arc-segments", 0, &extra)).unwrap();
+        let p = points(&t);
+        check_steps(&p, Some(arc.axes()[2]))?;
+        prop_assert_eq!(*p.last().unwrap(), arc.point(arc.end, 0));
+        // The widest chord's sagitta, from the pieces of arc the trace
+        // measures each chord against.
+        let widest = t
+            .segments()
+            .iter()
+            .map(|s| match s.ideal.info() {
+                IdealPathInfo::Arc { sweep_rad, .. } => sweep_rad.abs(),
+                other => panic!("a chord is measured against its arc, not {other:?}"),
+            })
+            .fold(0.0, f64::max);
+        let sagitta = r * (1.0 - (widest / 2.0).cos());
+        // Rounding moves each vertex by at most sqrt(2)/2, and Wang's
+        // regions stays within sqrt(2)/2 of the chord it steps.
+        let bound = sagitta + SQRT_2 / 2.0 + SQRT_2 / 2.0;
+        prop_assert!(t.metrics().max_deviation <= bound + 1e-9,
+            "{} > {} (sagitta {})", t.metrics().max_deviation, bound, sagitta);
+        for segment in t.segments() {
+            prop_assert!(matches!(segment.ideal, IdealPath::Arc(_)));
+        }
+    }
+
+    #[test]
+    fn saleem_helix_is_the_circle_with_the_linear_axis_woven_in(
+        arc in arc_strategy(100), rise in -400i64..400
+    ) {
+        let helix = voxpath::trace_json(&arc.request("helix", rise, "")).unwrap();
+        let circle = voxpath::trace_json(&arc.request("circle", 0, "")).unwrap();
+        let p = points(&helix);
+        let [_, _, n] = arc.axes();
+        check_steps(&p, None)?;
+        prop_assert_eq!(*p.last().unwrap(), arc.point(arc.end, rise));
+        // The dry run's n_c is the circle's own step count, and the helix
+        // takes max(n_c, n_z) steps.
+        let n_c = circle.steps();
+        prop_assert_eq!(helix.steps(), n_c.max(rise.unsigned_abs()));
+        let arc_steps = helix.decisions(0, helix.steps()).columns[8].iter().filter(|&&f| f == 1.0).count();
+        prop_assert_eq!(arc_steps as u64, n_c);
+        // The linear axis only ever moves toward its end.
+        for w in p.windows(2) {
+            let d = w[1][n] - w[0][n];
+            prop_assert!(d == 0 || d == rise.signum());
+        }
+        // Without its linear-only steps, the helix is the circle.
+        let mut projected: Vec<[i64; 3]> = Vec::new();
+        for q in &p {
+            let mut flat = *q;
+            flat[n] = arc.center[n];
+            if projected.last() != Some(&flat) {
+                projected.push(flat);
+            }
+        }
+        prop_assert_eq!(projected, points(&circle));
+        // Height at the point's own angle: the step-versus-angle drift is
+        // at most 1.05% of a turn's rise (see helix.rs), plus the height of
+        // one arc step either way and half a linear step.
+        let IdealPathInfo::Helix { sweep_rad, radius, .. } = helix.segments()[0].ideal.info() else {
+            panic!("a helix is measured against a helix")
+        };
+        let pitch = rise.abs() as f64 * TAU / sweep_rad.abs();
+        let per_arc_step = pitch / (4.0 * SQRT_2 * radius);
+        let bound = 0.0105 * pitch + per_arc_step + 0.5;
+        prop_assert!(
+            helix.metrics().max_axis_error[n] <= bound,
+            "height error {} > {} with pitch {} r {}", helix.metrics().max_axis_error[n], bound, pitch, radius
+        );
+    }
+
+    #[test]
+    fn segmented_helix_ends_exactly_and_climbs_monotonically(
+        arc in arc_strategy(100), rise in -400i64..400, tolerance in 0.1f64..2.0
+    ) {
+        let r = (arc.radius_sq() as f64).sqrt();
+        prop_assume!(tolerance < 2.0 * r);
+        let extra = format!(r#","mode":"segments","tolerance":{tolerance}"#);
+        let t = voxpath::trace_json(&arc.request("helix", rise, &extra)).unwrap();
+        let p = points(&t);
+        let n = arc.axes()[2];
+        check_steps(&p, None)?;
+        prop_assert_eq!(*p.last().unwrap(), arc.point(arc.end, rise));
+        for w in p.windows(2) {
+            let d = w[1][n] - w[0][n];
+            prop_assert!(d == 0 || d == rise.signum());
+        }
+    }
+}
+
+#[test]
+fn a_full_circle_of_radius_two_to_the_twenty_near_the_limit() {
+    // r = 2^20 around a centre whose circle touches x = 2^30 - 1 and
+    // y = -(2^30 - 1): about 4 sqrt(2) r = 5.9 million steps.
+    let r = 1i64 << 20;
+    let c = COORD_LIMIT - r - 1;
+    let t = voxpath::trace_json(&format!(
+        r#"{{"algorithm":"circle","from":[{},{},7],"to":[{},{},7],"center":[{c},{},7]}}"#,
+        c + r,
+        -c,
+        c + r,
+        -c,
+        -c
+    ))
+    .unwrap();
+    assert_eq!(t.end(), t.start());
+    assert!(t.metrics().max_deviation < 0.5);
+    // A full circle from an axis point is four 90°-rotated quarters.
+    let quarter = voxpath::trace_json(&format!(
+        r#"{{"algorithm":"circle","from":[{r},0,0],"to":[0,{r},0],"center":[0,0,0]}}"#
+    ))
+    .unwrap();
+    assert_eq!(t.steps(), 4 * quarter.steps());
+    let per_turn = t.steps() as f64 / r as f64;
+    assert!((per_turn - 4.0 * SQRT_2).abs() < 1e-5, "{per_turn}");
+    let p = t.point(t.steps() / 2);
+    assert_eq!((p.get(0), p.get(1)), (c - r, -c));
+}
+
+#[test]
+fn a_big_arc_stays_under_half_a_cell_off_and_chords_follow_grbl() {
+    // A 10° arc of r = 2^20 (about 180,000 steps) in G19 far from the origin.
+    let r = 1i64 << 20;
+    let (a, b) = (
+        (r as f64 * (10f64 * PI / 180.0).cos()).round() as i64,
+        (r as f64 * (10f64 * PI / 180.0).sin()).round() as i64,
+    );
+    let (cy, cz) = (-(COORD_LIMIT - r - 5), COORD_LIMIT - r - 5);
+    let request = |algorithm: &str| {
+        format!(
+            r#"{{"algorithm":"{algorithm}","from":[-3,{},{cz}],"to":[-3,{},{}],"center":[0,{cy},{cz}],"plane":"yz"}}"#,
+            cy + r,
+            cy + a,
+            cz + b
+        )
+    };
+    let circle = voxpath::trace_json(&request("circle")).unwrap();
+    assert!(circle.metrics().max_deviation < 0.5);
+    assert_eq!(circle.end(), Point::new(&[-3, cy + a, cz + b]));
+    // Grbl with tolerance 0.5: floor(0.5 × 0.1745 × 2^20 / sqrt(0.5 × (2^21 - 0.5)))
+    // = floor(91,503 / 1,024) = 89 chords, sagitta about 0.5 each.
+    let chords = voxpath::trace_json(&request("arc-segments")).unwrap();
+    assert_eq!(chords.segments().len(), 89);
+    assert!(chords.metrics().max_deviation < 0.5 + SQRT_2);
+    assert_eq!(chords.end(), circle.end());
+}
