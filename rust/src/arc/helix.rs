@@ -160,8 +160,11 @@ impl Decision for HelixWhy {
         ERROR_MOVE,
         SLOW_STEPS,
         CORRECTION,
+        // Not "major": bresenham3d's column of that name holds an axis, and a
+        // G-code program's trace unions the columns of its line and arc
+        // algorithms by name.
         Column {
-            name: "major",
+            name: "helix_major",
             kind: ColumnKind::Category(MAJOR_LABELS),
             doc: "Which steps every iteration: the arc (n_c >= n_z) or the linear axis (n_z > n_c) (Saleem section 5).",
         },
