@@ -7,9 +7,18 @@
  *   t.decisions.M;     // Float64Array, one value per step
  *   t.deviation;       // Float64Array, one value per point
  *   t.metrics;         // { steps, maxDeviation, meanDeviation, ... }
+ *
+ *   import { runGcode } from 'voxpath';
+ *   const p = await runGcode('G1 X10 Y5 F600', { stepsPerMm: 80 });
+ *   p.moves;           // each with its source line, mm and steps
+ *   p.trace;           // a Trace of every step
  */
 export { trace, algorithms, Trace } from './trace.js';
 export { VoxpathError } from './errors.js';
+export { GcodeProgram, runGcode } from './gcode.js';
+export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, RunGcodeOptions } from './gcode.js';
+export { pulseTrains } from './pulses.js';
+export type { PulseTrain } from './pulses.js';
 export { experiments, randomLines } from './experiment.js';
 export type { ErrorStats, ExperimentInfo, MeasureSummary, RandomLinesOptions, RandomLinesResult, Spread } from './experiment.js';
 export { randomLinesToCsv, randomLinesToTable, traceToCsv, traceToJson, traceToTable } from './export.js';
