@@ -19,7 +19,10 @@
 //! mirror it). That spread of 0.0593 r is 0.0593 / (2π × 0.9003) = 1.05% of a
 //! turn, so at a given angle the height differs from the true helix's by up
 //! to 1.05% of one turn's rise (0.52% for arcs from axis to axis), plus the
-//! height of one arc step and half a linear step.
+//! height of two arc steps (rise / n_c each: one for the run of linear steps
+//! taken at one arc position, one because the discrete circle's count at an
+//! angle differs from the continuous r sin θ by up to a step) and half a
+//! linear step.
 //! Segments mode interpolates by angle and has no such drift.
 
 use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
