@@ -6,7 +6,7 @@
  */
 
 /** A point on the grid, one integer per axis, in grid units. */
-export type GridPoint = readonly number[];
+export type GridPoint = ArrayLike<number>;
 
 /** Tie rule for a discriminant equal to zero. */
 export type TiePolicy = 'advance' | 'hold';

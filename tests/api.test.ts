@@ -1,0 +1,145 @@
+// The headless API against the real built wasm package (web/core/pkg).
+// Golden values: Wang et al. 2020 eq. (6), (8), (10) for (0,0,0)->(10,7,6),
+// as worked out in SEED-NOTES.md (they equal Liu's Table 1 point for point).
+import { describe, expect, it } from 'vitest';
+import { algorithms, trace, VoxpathError } from '../web/core/index.js';
+
+const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
+
+/** Perpendicular distance from p to the line through a and b, straight from the definition. */
+function distanceToLine(p: number[], a: number[], b: number[]): number {
+  const d = b.map((v, i) => v - a[i]!);
+  const r = p.map((v, i) => v - a[i]!);
+  const dd = d.reduce((s, v) => s + v * v, 0);
+  const rd = r.reduce((s, v, i) => s + v * d[i]!, 0);
+  const rr = r.reduce((s, v) => s + v * v, 0);
+  return Math.sqrt(Math.max(0, rr - (rd * rd) / dd));
+}
+
+describe('trace (regions)', () => {
+  it('reproduces the discriminants and points of eq. (6)-(10)', async () => {
+    const t = await trace(LINE);
+    expect(t.dims).toBe(3);
+    expect(t.steps).toBe(10);
+    expect(Array.from(t.points)).toEqual(
+      [[0, 0, 0], [1, 1, 1], [2, 1, 1], [3, 2, 2], [4, 3, 2], [5, 4, 3], [6, 4, 4], [7, 5, 4], [8, 6, 5], [9, 6, 5], [10, 7, 6]].flat(),
+    );
+    expect(Array.from(t.decisions.M!)).toEqual([4, -2, 12, 6, 0, -6, 8, 2, -4, 10]);
+    expect(Array.from(t.decisions.N!)).toEqual([2, -6, 6, -2, 10, 2, -6, 6, -2, 10]);
+    const region = t.columns.find((c) => c.name === 'region')!;
+    expect(Array.from(t.decisions.region!, (v) => region.labels![v])).toEqual(['d', 'b', 'd', 'a', 'g', 'c', 'a', 'd', 'b', 'd']);
+    expect(t.decisions.region).toBeInstanceOf(Uint8Array);
+    expect(Array.from(t.decisions.tie!)).toEqual([0, 0, 0, 0, 1, 0, 0, 0, 0, 0]);
+  });
+
+  it('measures each point against the ideal line and sums up the path', async () => {
+    const t = await trace(LINE);
+    expect(t.deviation).toHaveLength(11);
+    for (let k = 0; k <= t.steps; k++) {
+      expect(t.deviation[k]).toBeCloseTo(distanceToLine(t.point(k), LINE.from, LINE.to), 12);
+    }
+    const m = t.metrics;
+    expect(m.steps).toBe(10);
+    expect(m.pulsesByAxis).toEqual([10, 7, 6]);
+    expect(m.stepsMovingAxes).toEqual([2, 3, 5]);
+    expect(m.ties).toBe(1);
+    expect(m.maxDeviation).toBe(Math.max(...t.deviation));
+    expect(m.meanDeviation).toBeCloseTo(t.deviation.reduce((s, v) => s + v, 0) / 11, 12);
+    expect(m.maxDeviation).toBeLessThanOrEqual(Math.SQRT1_2);
+    // Eq. (11): x is active, so its error is 0; y and z lag by up to 0.5 and 0.4.
+    expect(m.maxAxisError[0]).toBe(0);
+    expect(m.maxAxisError[1]).toBeCloseTo(0.5, 12);
+    expect(m.maxAxisError[2]).toBeCloseTo(0.4, 12);
+  });
+
+  it('gives any range on demand, equal to the whole', async () => {
+    const t = await trace(LINE);
+    const part = t.decisionsInRange(3, 7);
+    expect(Array.from(part.M!)).toEqual(Array.from(t.decisions.M!.subarray(3, 7)));
+    expect(Array.from(t.deviationInRange(2, 5))).toEqual(Array.from(t.deviation.subarray(2, 5)));
+    expect(Array.from(t.pointsInRange(10, 11))).toEqual([10, 7, 6]);
+    expect(() => t.decisionsInRange(5, 11)).toThrow(RangeError);
+  });
+
+  it('packs each step as step/direction bits that match the points', async () => {
+    const t = await trace({ algorithm: 'regions', from: [5, 5, 5], to: [-3, 9, 2] });
+    const codes = t.stepCodes(0, t.steps);
+    for (let k = 0; k < t.steps; k++) {
+      for (let axis = 0; axis < 3; axis++) {
+        const moved = (codes[k]! >> axis) & 1;
+        const negative = (codes[k]! >> (8 + axis)) & 1;
+        const delta = t.points[(k + 1) * 3 + axis]! - t.points[k * 3 + axis]!;
+        expect(delta).toBe(moved ? (negative ? -1 : 1) : 0);
+      }
+    }
+    expect(t.point(t.steps)).toEqual([-3, 9, 2]);
+  });
+
+  it('explains a step in one sentence and describes the line', async () => {
+    const t = await trace(LINE);
+    expect(t.explain(0)).toBe(
+      'x is the active axis; M = 4 > 0 and N = 2 > 0, so the line leaves the cell through region d, and the step goes to D (x+1, y+1, z+1).',
+    );
+    expect(t.segments[0]!.note).toContain('Line type ①');
+    expect(Array.from(t.idealPolyline())).toEqual([0, 0, 0, 10, 7, 6]);
+  });
+
+  it('holds on ties when asked (Saleem), marking the tie', async () => {
+    const t = await trace({ ...LINE, tie: 'hold' });
+    expect(t.point(5)).toEqual([5, 3, 3]);
+    expect(t.decisions.tie![4]).toBe(1);
+  });
+
+  it('treats a zero-length line as an empty trace', async () => {
+    const t = await trace({ algorithm: 'regions', from: [1, 2, 3], to: [1, 2, 3] });
+    expect(t.steps).toBe(0);
+    expect(Array.from(t.points)).toEqual([1, 2, 3]);
+    expect(t.decisions.M).toHaveLength(0);
+  });
+
+  it('accepts typed arrays as points', async () => {
+    const t = await trace({ algorithm: 'regions', from: new Int32Array([0, 0, 0]), to: new Int32Array([3, 2, 1]) });
+    expect(t.steps).toBe(3);
+  });
+});
+
+describe('bad input', () => {
+  async function rejection(options: Record<string, unknown>): Promise<VoxpathError> {
+    const error = await trace(options as typeof LINE).then(
+      () => undefined,
+      (e: unknown) => e,
+    );
+    expect(error).toBeInstanceOf(VoxpathError);
+    return error as VoxpathError;
+  }
+
+  it('names the option at fault', async () => {
+    expect((await rejection({ algorithm: 'regions', from: [0, 0], to: [1, 1] })).field).toBe('from');
+    expect((await rejection({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1] })).field).toBe('to');
+    expect((await rejection({ algorithm: 'regions', from: [0, 0, 0], to: [2 ** 31, 0, 0] })).message).toBe(
+      'to: x = 2147483648 is outside +-2^30 (1073741824)',
+    );
+    expect((await rejection({ algorithm: 'nope', from: [0, 0, 0], to: [1, 1, 1] })).field).toBe('algorithm');
+    expect((await rejection({ ...LINE, tie: 'maybe' })).field).toBe('tie');
+    expect((await rejection({ ...LINE, centre: [1, 1, 1] })).field).toBe('centre');
+    expect((await rejection({ ...LINE, from: [0, Number.NaN, 0] })).message).toBe('from: y must be a number, got "NaN"');
+    const long = await rejection({ ...LINE, to: [100000, 0, 0], maxSteps: 1000 });
+    expect(long.field).toBe('maxSteps');
+  });
+
+  it('keeps working after an error', async () => {
+    await rejection({ algorithm: 'regions', from: [0], to: [1] });
+    expect((await trace(LINE)).steps).toBe(10);
+  });
+});
+
+describe('algorithms()', () => {
+  it('describes regions with its citation, columns and options', async () => {
+    const regions = (await algorithms()).find((a) => a.id === 'regions')!;
+    expect(regions.citation).toContain('Wang');
+    expect(regions.columns.map((c) => c.name)).toEqual(['M', 'N', 'region', 'corner', 'tie']);
+    expect(regions.options.map((o) => o.name)).toEqual(['from', 'to', 'tie', 'maxSteps']);
+    expect(regions.defaultTie).toBe('advance');
+    expect(regions.errata.some((e) => e.includes('Table 2'))).toBe(true);
+  });
+});

@@ -1,0 +1,257 @@
+// Drives headless Chromium (the system's, found by scripts/chromium.mjs)
+// through playwright-core against the built site that global-setup.ts serves.
+//
+//   afterAll(closeAll);
+//   const p = await openPage('?algo=regions');
+//   ... p.page is a Playwright Page ...
+//   expect(p.problems()).toEqual([]);
+//   const stats = await screenshot(p.page, 'regions-canvas', 'canvas');
+//   expect(stats.differingFraction).toBeGreaterThan(0.01);
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { type Browser, type BrowserContext, chromium, type Page } from 'playwright-core';
+import { PNG } from 'pngjs';
+import { inject } from 'vitest';
+import { CHROMIUM_HINT, findChromium } from '../../scripts/chromium.mjs';
+
+export const VIEWPORT = { width: 1280, height: 720 };
+
+/** Where screenshot() writes its PNGs (gitignored). */
+export const SCREENSHOT_DIR = join(dirname(fileURLToPath(import.meta.url)), '__screenshots__', 'actual');
+
+// Headless and offline-friendly: without the background-networking flags,
+// Chromium keeps trying to reach Google's hosts, which this network refuses;
+// --no-sandbox because Chromium's sandbox does not run as root (CI is root).
+// WebGL: --disable-gpu leaves WebGL on SwiftShader (software, through ANGLE
+// on Vulkan), which works here for three.js. Chromium has deprecated that
+// automatic fallback and prints a console warning about it unless
+// --enable-unsafe-swiftshader is given; playwright-core passes that flag by
+// default too, but it is named here so the harness does not depend on it.
+const LAUNCH_ARGS = [
+  '--headless',
+  '--no-sandbox',
+  '--disable-gpu',
+  '--enable-unsafe-swiftshader',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--no-first-run',
+  '--disable-quic',
+  '--disable-sync',
+];
+
+/** One HTTP response the page received. */
+export interface ResponseRecord {
+  url: string;
+  status: number;
+  /** The Content-Type header without parameters ('' when absent). */
+  contentType: string;
+}
+
+/** A page of the built site in its own browser context. */
+export interface OpenedPage {
+  page: Page;
+  context: BrowserContext;
+  /** The URL opened: the site's index plus the query. */
+  url: string;
+  /** HTTP status of the index document. */
+  status: number;
+  /** Every console message of type 'error', with its source URL (but see the favicon note below). */
+  consoleErrors: string[];
+  /** Uncaught exceptions and unhandled rejections of the page. */
+  pageErrors: string[];
+  /** Every response, in the order received. */
+  responses: ResponseRecord[];
+  /** Requests that got no response at all, as 'URL: reason'. */
+  failedRequests: string[];
+  /** The first response (already received or still to come) that `match` accepts. */
+  waitForResponse(match: (response: ResponseRecord) => boolean, timeoutMs?: number): Promise<ResponseRecord>;
+  /** Console errors, page errors, failed requests and HTTP errors (status >= 400), one line each. */
+  problems(): string[];
+  close(): Promise<void>;
+}
+
+/** Address of the built site's index, served under a sub-path (ends with '/'). */
+export function siteUrl(): string {
+  return inject('siteUrl');
+}
+
+let browser: Promise<Browser> | undefined;
+const opened = new Set<OpenedPage>();
+
+async function launch(): Promise<Browser> {
+  const executablePath = findChromium();
+  if (!executablePath) throw new Error(CHROMIUM_HINT);
+  // A plain launch: playwright gives each launch a fresh temporary profile.
+  return chromium.launch({ executablePath, args: LAUNCH_ARGS });
+}
+
+/**
+ * Opens the site's index page (plus `query`, with or without its leading '?')
+ * in a fresh browser context of a browser shared by the test file, and waits
+ * for the page's load event. Diagnostics are collected from the start.
+ */
+export async function openPage(query = ''): Promise<OpenedPage> {
+  browser ??= launch();
+  const context = await (await browser).newContext({ viewport: VIEWPORT });
+  const page = await context.newPage();
+  const consoleErrors: string[] = [];
+  const pageErrors: string[] = [];
+  const responses: ResponseRecord[] = [];
+  const failedRequests: string[] = [];
+  const waiters = new Set<(response: ResponseRecord) => void>();
+  page.on('console', (message) => {
+    if (message.type() !== 'error') return;
+    const source = message.location().url;
+    // A page that declares no icon makes Chromium ask for /favicon.ico at the
+    // origin's root, which under a sub-path is outside the site: its 404 is
+    // not the site's error. An icon the page does declare is still checked.
+    if (source && new URL(source).pathname === '/favicon.ico') return;
+    consoleErrors.push(source ? `${message.text()} (${source})` : message.text());
+  });
+  page.on('pageerror', (error) => pageErrors.push(error.stack ?? error.message));
+  page.on('requestfailed', (request) => failedRequests.push(`${request.url()}: ${request.failure()?.errorText}`));
+  page.on('response', (response) => {
+    const record = {
+      url: response.url(),
+      status: response.status(),
+      contentType: (response.headers()['content-type'] ?? '').split(';')[0].trim(),
+    };
+    responses.push(record);
+    for (const waiter of waiters) waiter(record);
+  });
+
+  const url = siteUrl() + (query && !query.startsWith('?') ? `?${query}` : query);
+  const result: OpenedPage = {
+    page,
+    context,
+    url,
+    status: 0,
+    consoleErrors,
+    pageErrors,
+    responses,
+    failedRequests,
+    waitForResponse(match, timeoutMs = 15_000) {
+      const seen = responses.find(match);
+      if (seen) return Promise.resolve(seen);
+      return new Promise((resolve, reject) => {
+        const timer = setTimeout(() => {
+          waiters.delete(waiter);
+          reject(new Error(`no matching response within ${timeoutMs} ms; got:\n${responses.map((r) => `${r.status} ${r.url}`).join('\n')}`));
+        }, timeoutMs);
+        const waiter = (response: ResponseRecord) => {
+          if (!match(response)) return;
+          clearTimeout(timer);
+          waiters.delete(waiter);
+          resolve(response);
+        };
+        waiters.add(waiter);
+      });
+    },
+    problems: () => [
+      ...consoleErrors.map((text) => `console error: ${text}`),
+      ...pageErrors.map((text) => `page error: ${text}`),
+      ...failedRequests.map((text) => `request failed: ${text}`),
+      ...responses.filter((r) => r.status >= 400).map((r) => `HTTP ${r.status}: ${r.url}`),
+    ],
+    close: async () => {
+      opened.delete(result);
+      await context.close();
+    },
+  };
+  opened.add(result);
+  const response = await page.goto(url, { waitUntil: 'load' });
+  result.status = response?.status() ?? 0;
+  return result;
+}
+
+/** Closes every page still open and the browser; use as `afterAll(closeAll)`. */
+export async function closeAll(): Promise<void> {
+  await Promise.all([...opened].map((p) => p.close()));
+  const running = browser;
+  browser = undefined;
+  // A launch that failed has already failed the test that asked for it.
+  await (await running?.catch(() => undefined))?.close();
+}
+
+/** A rectangle in CSS pixels of the viewport. */
+export interface Region {
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
+
+/** Content statistics of an image, enough to tell a drawn canvas from a blank one. */
+export interface ImageStats {
+  width: number;
+  height: number;
+  /** RGBA of the background: the given colour, else the most frequent one. */
+  background: [number, number, number, number];
+  /** Fraction (0..1) of pixels differing from the background by more than the tolerance in some channel. */
+  differingFraction: number;
+  /** Number of distinct RGBA values. */
+  distinctColors: number;
+}
+
+export interface StatsOptions {
+  /** Background colour, RGB or RGBA (alpha 255 when omitted); default: the most frequent colour. */
+  background?: readonly number[];
+  /** Largest per-channel difference still counted as background; default 0. */
+  tolerance?: number;
+}
+
+/** Statistics of a PNG image (see ImageStats). */
+export function imageStats(png: Buffer, options: StatsOptions = {}): ImageStats {
+  const { width, height, data } = PNG.sync.read(png);
+  const pixelCount = width * height;
+  // Each pixel as one RGBA number, counted per distinct value.
+  const counts = new Map<number, number>();
+  for (let i = 0; i < pixelCount * 4; i += 4) {
+    const rgba = data.readUInt32BE(i);
+    counts.set(rgba, (counts.get(rgba) ?? 0) + 1);
+  }
+  let background: [number, number, number, number];
+  if (options.background) {
+    const [r, g, b, a = 255] = options.background;
+    background = [r, g, b, a];
+  } else {
+    let mode = 0;
+    let modeCount = 0;
+    for (const [rgba, count] of counts) if (count > modeCount) [mode, modeCount] = [rgba, count];
+    background = [mode >>> 24, (mode >>> 16) & 255, (mode >>> 8) & 255, mode & 255];
+  }
+  const tolerance = options.tolerance ?? 0;
+  let differing = 0;
+  for (let i = 0; i < pixelCount * 4; i += 4) {
+    if (background.some((value, channel) => Math.abs(data[i + channel] - value) > tolerance)) differing += 1;
+  }
+  return {
+    width,
+    height,
+    background,
+    differingFraction: pixelCount ? differing / pixelCount : 0,
+    distinctColors: counts.size,
+  };
+}
+
+/**
+ * Saves a PNG of the page (the viewport, a region of it, or the first element
+ * matching a selector) as SCREENSHOT_DIR/NAME.png and returns its statistics.
+ */
+export async function screenshot(
+  page: Page,
+  name: string,
+  target?: Region | string,
+  options?: StatsOptions,
+): Promise<ImageStats & { file: string }> {
+  if (!/^[\w.-]+$/.test(name)) throw new Error(`screenshot name "${name}" must be letters, digits, '_', '-' or '.'`);
+  const png =
+    typeof target === 'string'
+      ? await page.locator(target).first().screenshot()
+      : await page.screenshot(target ? { clip: target } : {});
+  mkdirSync(SCREENSHOT_DIR, { recursive: true });
+  const file = join(SCREENSHOT_DIR, `${name}.png`);
+  writeFileSync(file, png);
+  return { ...imageStats(png, options), file };
+}

@@ -1,0 +1,76 @@
+// The CLI as users run it: `node bin/voxpath.js ...` (the compiled lib/, built by setup).
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+
+const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
+
+function voxpath(...args: string[]) {
+  const r = spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8' });
+  return { code: r.status, stdout: r.stdout, stderr: r.stderr };
+}
+
+const TRACE = ['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6'];
+
+describe('voxpath trace', () => {
+  it('prints one JSON object in the documented shape', () => {
+    const r = voxpath(...TRACE, '--format', 'json');
+    expect(r.code).toBe(0);
+    const out = JSON.parse(r.stdout);
+    expect(out.algorithm).toBe('regions');
+    expect(out.dims).toBe(3);
+    expect(out.points).toHaveLength(11);
+    expect(out.points[4]).toEqual([4, 3, 2]);
+    // Wang eq. (8) from eq. (10)'s start: decisions.M[k] produced points[k + 1].
+    expect(out.decisions.M).toEqual([4, -2, 12, 6, 0, -6, 8, 2, -4, 10]);
+    expect(out.decisions.N).toEqual([2, -6, 6, -2, 10, 2, -6, 6, -2, 10]);
+    expect(out.decisions.region).toEqual(['d', 'b', 'd', 'a', 'g', 'c', 'a', 'd', 'b', 'd']);
+    expect(out.deviation).toHaveLength(11);
+    expect(out.deviation[0]).toBe(0);
+    expect(out.metrics.steps).toBe(10);
+    expect(out.metrics.maxDeviation).toBe(Math.max(...out.deviation));
+    expect(out.metrics.meanDeviation).toBeGreaterThan(0);
+  });
+
+  it('defaults to JSON and prints CSV and a table for people', () => {
+    expect(JSON.parse(voxpath(...TRACE).stdout).steps).toBe(10);
+    const csv = voxpath(...TRACE, '--format', 'csv').stdout.trim().split('\n');
+    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,deviation');
+    expect(csv).toHaveLength(12);
+    expect(csv[5]).toBe('4,4,3,2,6,-2,a,A,0,0.441129');
+    const table = voxpath(...TRACE, '--format', 'table').stdout;
+    expect(table).toContain('Line type ①');
+    expect(table).toMatch(/deviation: max 0\.441129/);
+  });
+
+  it('passes algorithm options through generated flags', () => {
+    const r = voxpath(...TRACE, '--tie', 'hold', '--max-steps', '100');
+    expect(JSON.parse(r.stdout).points[5]).toEqual([5, 3, 3]);
+  });
+
+  it.each([
+    [['trace', '--algorithm', 'regions', '--from', '0,0,0'], /^voxpath: --to: missing/],
+    [[...TRACE, '--fro', '1'], /^voxpath: unknown flag --fro for regions/],
+    [[...TRACE, '--format', 'xml'], /^voxpath: --format: expected json, csv or table, got 'xml'/],
+    [['trace', '--algorithm', 'regions', '--from', '0,x,0', '--to', '1,1,1'], /^voxpath: --from: 'x' is not a number/],
+    [['trace', '--algorithm', 'regions', '--from', '0,0', '--to', '1,1'], /^voxpath: --from: regions takes 3 coordinates, got 2/],
+    [['trace', '--algorithm', 'bogus', '--from', '0,0,0', '--to', '1,1,1'], /^voxpath: --algorithm: unknown algorithm 'bogus'/],
+    [[...TRACE, '--tie'], /^voxpath: --tie needs a value/],
+    [['frobnicate'], /^voxpath: unknown command 'frobnicate'/],
+  ])('rejects %j with a one-line error and usage, exit 2', (args, message) => {
+    const r = voxpath(...args);
+    expect(r.code).toBe(2);
+    expect(r.stdout).toBe('');
+    const [first, second] = r.stderr.split('\n');
+    expect(first).toMatch(message);
+    expect(second).toMatch(/^usage: voxpath trace/);
+  });
+
+  it('documents every algorithm and option in --help', () => {
+    const r = voxpath('--help');
+    expect(r.code).toBe(0);
+    expect(r.stdout).toContain('regions: Method of discriminate regions');
+    expect(r.stdout).toContain('--max-steps N');
+    expect(r.stdout).toContain('--tie advance|hold');
+  });
+});
