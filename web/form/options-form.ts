@@ -1,0 +1,140 @@
+/**
+ * The algorithm's options as form fields, generated from the catalogue's
+ * OptionSpecs (as the CLI generates its flags), so a new algorithm's options
+ * appear without code here. A point is one integer field per axis; a choice
+ * is a select; a number is a number field.
+ *
+ * The form only reads what was typed. Whether a value is acceptable is the
+ * core's call: its errors come back naming the option and are shown beside
+ * that field. The one check made here is that a field holds a number at all,
+ * because an empty field has no value to send.
+ */
+import type { AlgorithmInfo, OptionSpec } from '../core/types.js';
+import { AXIS_NAMES } from '../format.js';
+import { type OptionValue, PAGE_OPTIONS, axisCount } from '../state/app-state.js';
+import type { InputError } from '../worker/protocol.js';
+
+interface Field {
+  controls: (HTMLInputElement | HTMLSelectElement)[];
+  error: HTMLElement;
+  /** The field holds no number, so its value was not sent. */
+  localError?: string;
+  /** What the core said about this option in the last trace request. */
+  coreError?: string;
+}
+
+function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<HTMLElementTagNameMap[K]> = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children);
+  return e;
+}
+
+export class OptionsForm {
+  readonly #fields = new Map<string, Field>();
+  /** Where errors naming no field of this form go (say the algorithm, or maxSteps, which the page sets). */
+  readonly #formError: HTMLElement;
+  readonly #onChange: (name: string, value: OptionValue | undefined) => void;
+
+  /**
+   * Fills `container` with a field per option of `info` (except the options
+   * the page sets itself), showing `values`, and calls `onChange` with each
+   * value the user types (undefined: left empty, so the core's default applies).
+   */
+  constructor(
+    container: HTMLElement,
+    formError: HTMLElement,
+    info: AlgorithmInfo,
+    values: Readonly<Record<string, OptionValue>>,
+    onChange: (name: string, value: OptionValue | undefined) => void,
+  ) {
+    this.#formError = formError;
+    this.#onChange = onChange;
+    container.replaceChildren(
+      ...info.options.filter((spec) => !(spec.name in PAGE_OPTIONS)).map((spec) => this.#field(spec, info, values[spec.name])),
+    );
+  }
+
+  #field(spec: OptionSpec, info: AlgorithmInfo, value: OptionValue | undefined): HTMLElement {
+    const id = `option-${spec.name}`;
+    const hint = element('p', { className: 'hint', id: `${id}-hint`, textContent: spec.doc });
+    const error = element('p', { className: 'field-error', id: `${id}-error` });
+    error.dataset.testid = `error-${spec.name}`;
+    error.setAttribute('aria-live', 'polite');
+    const describedBy = `${hint.id} ${error.id}`;
+    const field: Field = { controls: [], error };
+    this.#fields.set(spec.name, field);
+
+    const control = <T extends HTMLInputElement | HTMLSelectElement>(c: T, controlId: string): T => {
+      c.id = controlId;
+      c.name = controlId;
+      c.dataset.testid = `input-${controlId.slice('option-'.length)}`;
+      c.setAttribute('aria-describedby', describedBy);
+      field.controls.push(c);
+      return c;
+    };
+
+    switch (spec.kind.type) {
+      case 'point': {
+        const coords = Array.isArray(value) ? value : [];
+        const axes = AXIS_NAMES.slice(0, axisCount(info)).map((axis, a) => {
+          const input = control(element('input', { type: 'number', step: '1', value: coords[a] === undefined ? '' : String(coords[a]) }), `${id}-${axis}`);
+          input.addEventListener('input', () => this.#pointTyped(spec.name, field));
+          return element('label', { className: 'axis' }, element('span', { textContent: axis }), input);
+        });
+        return element('fieldset', { className: 'option' }, element('legend', { textContent: spec.name }), hint, element('div', { className: 'axes' }, ...axes), error);
+      }
+      case 'choice': {
+        const select = control(element('select'), id);
+        for (const word of spec.kind.values) {
+          select.append(element('option', { value: word, textContent: word === spec.default ? `${word} (default)` : word }));
+        }
+        select.value = typeof value === 'string' ? value : (spec.default ?? spec.kind.values[0] ?? '');
+        select.addEventListener('change', () => this.#onChange(spec.name, select.value));
+        return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), select, hint, error);
+      }
+      case 'number':
+      case 'integer': {
+        const input = control(element('input', { type: 'number', step: spec.kind.type === 'integer' ? '1' : 'any' }), id);
+        input.value = typeof value === 'number' ? String(value) : '';
+        input.placeholder = spec.default ?? '';
+        input.addEventListener('input', () => {
+          this.#setLocalError(spec.name, field, input.validity.badInput ? 'not a number' : undefined);
+          if (!input.validity.badInput) this.#onChange(spec.name, input.value === '' ? undefined : input.valueAsNumber);
+        });
+        return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
+      }
+    }
+  }
+
+  #pointTyped(name: string, field: Field): void {
+    const inputs = field.controls as HTMLInputElement[];
+    const empty = inputs.findIndex((input) => input.value.trim() === '' || input.validity.badInput);
+    this.#setLocalError(name, field, empty < 0 ? undefined : `${AXIS_NAMES[empty]} needs a number`);
+    if (empty < 0) this.#onChange(name, inputs.map((input) => input.valueAsNumber));
+  }
+
+  #setLocalError(name: string, field: Field, message: string | undefined): void {
+    field.localError = message;
+    this.#render(field);
+  }
+
+  #render(field: Field): void {
+    const message = field.localError ?? field.coreError;
+    field.error.textContent = message ?? '';
+    for (const c of field.controls) c.setAttribute('aria-invalid', String(message !== undefined));
+  }
+
+  /** Shows the core's verdict on the last trace request: its error beside the option it names, or none. */
+  showCoreError(error: InputError | undefined): void {
+    for (const field of this.#fields.values()) {
+      field.coreError = undefined;
+      this.#render(field);
+    }
+    const field = error?.field === undefined ? undefined : this.#fields.get(error.field);
+    if (error && field) {
+      field.coreError = error.message;
+      this.#render(field);
+    }
+    this.#formError.textContent = error && !field ? (error.field ? `${error.field}: ${error.message}` : error.message) : '';
+  }
+}
