@@ -103,6 +103,12 @@ export class OptionsForm {
         });
         return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
       }
+      case 'boolean': {
+        const box = control(element('input', { type: 'checkbox' }), id);
+        box.checked = typeof value === 'boolean' ? value : spec.default === 'true';
+        box.addEventListener('change', () => this.#onChange(spec.name, box.checked));
+        return element('div', { className: 'option option-boolean' }, box, element('label', { htmlFor: id, textContent: spec.name }), hint, error);
+      }
     }
   }
 

@@ -5,8 +5,8 @@
  */
 import type { AlgorithmInfo, TraceOptions } from '../core/types.js';
 
-/** An option's value: a point as integers per axis, a choice as its word, a number. */
-export type OptionValue = number[] | number | string;
+/** An option's value: a point as integers per axis, a choice as its word, a number, a yes/no. */
+export type OptionValue = number[] | number | string | boolean;
 
 export interface AppState {
   /** Algorithm id from the catalogue. */

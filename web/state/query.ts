@@ -40,6 +40,8 @@ function parseOption(spec: OptionSpec, text: string): OptionValue | undefined {
     case 'number':
     case 'integer':
       return numberOf(text);
+    case 'boolean':
+      return text === 'true' ? true : text === 'false' ? false : undefined;
   }
 }
 
