@@ -24,6 +24,9 @@ fn to_js_error(error: &Error) -> JsValue {
         let _ = js_sys::Reflect::set(&js, &JsValue::from_str(key), &value);
     };
     set("detail", JsValue::from_str(&error.message));
+    if let Some(axis) = error.axis {
+        set("axis", JsValue::from(axis as u32));
+    }
     match &error.location {
         Location::Field(field) => set("field", JsValue::from_str(field)),
         Location::Source { line, column } => {

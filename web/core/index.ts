@@ -14,6 +14,7 @@
  *   p.trace;           // a Trace of every step
  */
 export { trace, algorithms, Trace } from './trace.js';
+export { AXIS_NAMES } from './axes.js';
 export { VoxpathError } from './errors.js';
 export { GcodeProgram, runGcode } from './gcode.js';
 export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, RunGcodeOptions } from './gcode.js';

@@ -34,12 +34,6 @@ export function defaultAlgorithm(catalogue: readonly AlgorithmInfo[]): Algorithm
 const DEFAULT_ALGORITHM = 'regions';
 
 /**
- * Point options of a first visit: Wang et al.'s worked example (0,0,0)->(10,7,6),
- * the line of their Tables 1 and 2, so a learner can check the page against the paper.
- */
-const EXAMPLE_POINTS: Record<string, number[]> = { from: [0, 0, 0], to: [10, 7, 6] };
-
-/**
  * Options the page sets itself instead of showing a field. Every voxel of the
  * path is drawn, so the page caps the path length at what a browser draws
  * comfortably (the core's own default, 50,000,000, is for files and the CLI).
@@ -51,13 +45,19 @@ export function axisCount(info: AlgorithmInfo): number {
   return Math.min(Math.max(3, info.minDims), info.maxDims);
 }
 
-/** The options of a first visit: the example points, and each choice at its default. */
+/**
+ * The options of a first visit: the catalogue's example move for the
+ * algorithm (for regions, Wang et al.'s (0,0,0)->(10,7,6), the line of their
+ * Tables 1 and 2, so a learner can check the page against the paper), points
+ * cut to the axes the page shows, and each other choice at its default.
+ */
 export function defaultOptions(info: AlgorithmInfo): Record<string, OptionValue> {
   const options: Record<string, OptionValue> = {};
   for (const spec of info.options) {
     if (spec.name in PAGE_OPTIONS) continue;
-    const example = EXAMPLE_POINTS[spec.name];
-    if (spec.kind.type === 'point' && example) options[spec.name] = example.slice(0, axisCount(info));
+    const example = info.example.options[spec.name] as OptionValue | undefined;
+    if (spec.kind.type === 'point' && Array.isArray(example)) options[spec.name] = example.slice(0, axisCount(info));
+    else if (example !== undefined) options[spec.name] = example;
     else if (spec.kind.type === 'choice' && spec.default !== null) options[spec.name] = spec.default;
   }
   return options;

@@ -31,7 +31,7 @@ use super::circle_saleem::{
 };
 use super::curve::HelixPath;
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::ideal::IdealPath;
@@ -64,6 +64,10 @@ pub const HELIX_TIE: OptionSpec = OptionSpec {
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [10, 0, 0], "to": [10, 0, 24], "center": [0, 0, 0], "dir": "ccw", "plane": "xy"}"#,
+        why: "One full turn of radius 10 rising 24 units.",
+    },
     family: Family::Arc,
     title: "Helix (arc plus linear axis)",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 5 (mode saleem); chords as in arc-segments (mode segments)",
