@@ -9,9 +9,9 @@
  * that field. The one check made here is that a field holds a number at all,
  * because an empty field has no value to send.
  */
-import type { AlgorithmInfo, OptionSpec } from '../core/types.js';
+import type { OptionSpec } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
-import { type OptionValue, PAGE_OPTIONS, axisCount } from '../state/app-state.js';
+import type { OptionValue } from '../state/app-state.js';
 import type { InputError } from '../worker/protocol.js';
 
 interface Field {
@@ -23,7 +23,7 @@ interface Field {
   coreError?: string;
 }
 
-function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<HTMLElementTagNameMap[K]> = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
+export function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<HTMLElementTagNameMap[K]> = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
   const e = Object.assign(document.createElement(tag), props);
   e.append(...children);
   return e;
@@ -35,30 +35,34 @@ export class OptionsForm {
   readonly #formError: HTMLElement;
   readonly #onChange: (name: string, value: OptionValue | undefined) => void;
 
+  readonly #idPrefix: string;
+
   /**
-   * Fills `container` with a field per option of `info` (except the options
-   * the page sets itself), showing `values`, and calls `onChange` with each
-   * value the user types (undefined: left empty, so the core's default applies).
+   * Fills `container` with a field per option of `specs`, points with `axes`
+   * coordinates, showing `values`, and calls `onChange` with each value the
+   * user types (undefined: left empty, so the core's default applies).
+   * Control ids are `${idPrefix}-${name}` (and `-x`, `-y`... for points).
    */
   constructor(
     container: HTMLElement,
     formError: HTMLElement,
-    info: AlgorithmInfo,
+    specs: readonly OptionSpec[],
+    axes: number,
     values: Readonly<Record<string, OptionValue>>,
     onChange: (name: string, value: OptionValue | undefined) => void,
+    idPrefix = 'option',
   ) {
     this.#formError = formError;
     this.#onChange = onChange;
-    container.replaceChildren(
-      ...info.options.filter((spec) => !(spec.name in PAGE_OPTIONS)).map((spec) => this.#field(spec, info, values[spec.name])),
-    );
+    this.#idPrefix = idPrefix;
+    container.replaceChildren(...specs.map((spec) => this.#field(spec, axes, values[spec.name])));
   }
 
-  #field(spec: OptionSpec, info: AlgorithmInfo, value: OptionValue | undefined): HTMLElement {
-    const id = `option-${spec.name}`;
+  #field(spec: OptionSpec, axes: number, value: OptionValue | undefined): HTMLElement {
+    const id = `${this.#idPrefix}-${spec.name}`;
     const hint = element('p', { className: 'hint', id: `${id}-hint`, textContent: spec.doc });
     const error = element('p', { className: 'field-error', id: `${id}-error` });
-    error.dataset.testid = `error-${spec.name}`;
+    error.dataset.testid = `error-${id.replace(/^option-/, '')}`;
     error.setAttribute('aria-live', 'polite');
     const describedBy = `${hint.id} ${error.id}`;
     const field: Field = { controls: [], error };
@@ -67,7 +71,7 @@ export class OptionsForm {
     const control = <T extends HTMLInputElement | HTMLSelectElement>(c: T, controlId: string): T => {
       c.id = controlId;
       c.name = controlId;
-      c.dataset.testid = `input-${controlId.slice('option-'.length)}`;
+      c.dataset.testid = `input-${controlId.replace(/^option-/, '')}`;
       c.setAttribute('aria-describedby', describedBy);
       field.controls.push(c);
       return c;
@@ -76,12 +80,12 @@ export class OptionsForm {
     switch (spec.kind.type) {
       case 'point': {
         const coords = Array.isArray(value) ? value : [];
-        const axes = AXIS_NAMES.slice(0, axisCount(info)).map((axis, a) => {
+        const fields = AXIS_NAMES.slice(0, axes).map((axis, a) => {
           const input = control(element('input', { type: 'number', step: '1', value: coords[a] === undefined ? '' : String(coords[a]) }), `${id}-${axis}`);
           input.addEventListener('input', () => this.#pointTyped(spec.name, field));
           return element('label', { className: 'axis' }, element('span', { textContent: axis }), input);
         });
-        return element('fieldset', { className: 'option' }, element('legend', { textContent: spec.name }), hint, element('div', { className: 'axes' }, ...axes), error);
+        return element('fieldset', { className: 'option' }, element('legend', { textContent: spec.name }), hint, element('div', { className: 'axes' }, ...fields), error);
       }
       case 'choice': {
         const select = control(element('select'), id);
@@ -128,6 +132,22 @@ export class OptionsForm {
     const message = field.localError ?? field.coreError;
     field.error.textContent = message ?? '';
     for (const c of field.controls) c.setAttribute('aria-invalid', String(message !== undefined));
+  }
+
+  /**
+   * Shows `values` in the fields, except in the field being edited (focused),
+   * for values that changed elsewhere (a handle dragged in the view).
+   */
+  setValues(values: Readonly<Record<string, OptionValue>>): void {
+    for (const [name, field] of this.#fields) {
+      const value = values[name];
+      field.controls.forEach((c, i) => {
+        if (c === document.activeElement) return;
+        const text = Array.isArray(value) ? String(value[i] ?? '') : value === undefined ? '' : String(value);
+        if (c instanceof HTMLInputElement && c.type === 'checkbox') c.checked = value === true;
+        else if (c.value !== text && !(c instanceof HTMLSelectElement && value === undefined)) c.value = text;
+      });
+    }
   }
 
   /** Shows the core's verdict on the last trace request: its error beside the option it names, or none. */

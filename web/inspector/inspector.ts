@@ -12,6 +12,7 @@
 import type { ColumnSpec } from '../core/types.js';
 import { formatPoint } from '../format.js';
 import { CoreCrash, type RemoteTrace } from '../worker/client.js';
+import { type DecisionRow, decisionFigure } from './decision-figure.js';
 
 export interface InspectorElements {
   point: HTMLElement;
@@ -20,6 +21,8 @@ export interface InspectorElements {
   /** A <dl>: one <div> with a <dt>/<dd> pair per decision column. */
   decisions: HTMLElement;
   explanation: HTMLElement;
+  /** Where the decision's picture goes (decision-figure.ts). */
+  figure: HTMLElement;
   /** A <dl> of what each column means. */
   columnDocs: HTMLElement;
   setupNote: HTMLElement;
@@ -82,6 +85,7 @@ export class Inspector {
     const e = this.#e;
     if (!trace) {
       e.point.textContent = e.deviation.textContent = e.explanation.textContent = e.setupNote.textContent = '';
+      e.figure.replaceChildren();
       e.decisionHeading.textContent = 'Decision';
       return;
     }
@@ -113,9 +117,12 @@ export class Inspector {
         ]);
         if (trace !== this.#trace) continue;
         this.#e.deviation.textContent = `${deviation[0]!.toFixed(6)} grid units`;
+        const row: DecisionRow | undefined = decisions && Object.fromEntries(trace.columns.map((c) => [c.name, decisions[c.name]![0]!]));
         for (const column of trace.columns) {
-          this.#cells.get(column.name)!.textContent = decisions ? formatValue(column, decisions[column.name]![0]!) : '—';
+          this.#cells.get(column.name)!.textContent = row ? formatValue(column, row[column.name]!) : '—';
         }
+        const figure = decisionFigure(trace.columns, row);
+        this.#e.figure.replaceChildren(...(figure ? [figure] : []));
         this.#e.explanation.textContent = explanation ?? 'This is the start point: no step has been decided yet.';
         this.#shownPointIndex = pointIndex;
       }

@@ -1,8 +1,9 @@
 /**
- * A frame to read coordinates from: a floor grid whose lines are the cell
- * boundaries (half-integers), x, y, z axes from the near corner of the path's
- * bounding box, and tick labels at integer coordinates (cell centres), so a
- * cell's position can be read off the picture.
+ * A frame to read coordinates from: a grid whose lines are the cell
+ * boundaries (half-integers), on the floor in 3D and in the path's plane
+ * behind it in 2D (the pixel grid), x, y, z axes from the near corner of the
+ * path's bounding box, and tick labels at integer coordinates (cell centres),
+ * so a cell's position can be read off the picture.
  */
 import * as THREE from 'three';
 import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
@@ -30,26 +31,26 @@ function label(text: string, className: string, position: THREE.Vector3): CSS2DO
   return object;
 }
 
+/** Which side of the cells the 2D grid lies on, per plane normal: away from the 2D camera (scene-view's PLANE_VIEWS). */
+const FAR_SIDE: Record<number, 'min' | 'max'> = { 0: 'min', 1: 'max', 2: 'min' };
+
 export class GridAxes extends THREE.Group {
-  /** `min` and `max`: the smallest and largest grid coordinate of the path on each axis (3 axes). */
-  constructor(min: THREE.Vector3, max: THREE.Vector3) {
+  #grid: THREE.LineSegments | undefined;
+
+  /**
+   * `min` and `max`: the smallest and largest grid coordinate of the path on
+   * each axis (3 axes); `axes`: how many axes to draw (2 leaves out z).
+   */
+  constructor(min: THREE.Vector3, max: THREE.Vector3, axes: number) {
     super();
     // The corner of the bounding box of the cells, not of their centres.
     const corner = min.clone().subScalar(0.5);
     const size = max.clone().sub(min).addScalar(1);
-    const grid: number[] = [];
     const floor = corner.z;
-    const xStep = niceStep(size.x, MAX_GRID_LINES);
-    const yStep = niceStep(size.y, MAX_GRID_LINES);
-    for (let x = 0; x <= size.x; x += xStep) grid.push(corner.x + x, corner.y, floor, corner.x + x, corner.y + size.y, floor);
-    for (let y = 0; y <= size.y; y += yStep) grid.push(corner.x, corner.y + y, floor, corner.x + size.x, corner.y + y, floor);
-    const gridGeometry = new THREE.BufferGeometry();
-    gridGeometry.setAttribute('position', new THREE.Float32BufferAttribute(grid, 3));
-    this.add(new THREE.LineSegments(gridGeometry, new THREE.LineBasicMaterial({ color: PALETTE.grid })));
 
     const reach = 1.2;
-    const axes = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)];
-    axes.forEach((direction, axis) => {
+    const directions = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)].slice(0, axes);
+    directions.forEach((direction, axis) => {
       const length = size.getComponent(axis) + reach;
       this.add(new THREE.ArrowHelper(direction, corner, length, PALETTE.axis, 0.45, 0.25));
       const tip = corner.clone().addScaledVector(direction, length + 0.45);
@@ -67,6 +68,40 @@ export class GridAxes extends THREE.Group {
         this.add(label(String(c), 'scene-label tick', base.clone().setComponent(axis, c)));
       }
     });
+  }
+
+  /**
+   * Draws the grid in the plane normal to axis `normal` (2 = the floor),
+   * through the far side of `bounds` (the cells' box), its lines on the cell
+   * boundaries.
+   */
+  setGridPlane(normal: number, bounds: THREE.Box3): void {
+    if (this.#grid) {
+      this.remove(this.#grid);
+      this.#grid.geometry.dispose();
+      (this.#grid.material as THREE.Material).dispose();
+    }
+    const [u, v] = [0, 1, 2].filter((a) => a !== normal) as [number, number];
+    const size = bounds.getSize(new THREE.Vector3());
+    const level = (FAR_SIDE[normal] === 'min' ? bounds.min : bounds.max).getComponent(normal);
+    const grid: number[] = [];
+    const line = (a: THREE.Vector3, b: THREE.Vector3) => grid.push(a.x, a.y, a.z, b.x, b.y, b.z);
+    for (const [along, across] of [
+      [u, v],
+      [v, u],
+    ] as const) {
+      const step = niceStep(size.getComponent(along), MAX_GRID_LINES);
+      for (let t = 0; t <= size.getComponent(along) + 1e-9; t += step) {
+        const a = bounds.min.clone().setComponent(normal, level);
+        a.setComponent(along, bounds.min.getComponent(along) + t);
+        const b = a.clone().setComponent(across, bounds.max.getComponent(across));
+        line(a, b);
+      }
+    }
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.Float32BufferAttribute(grid, 3));
+    this.#grid = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: PALETTE.grid }));
+    this.add(this.#grid);
   }
 
   dispose(): void {

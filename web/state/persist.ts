@@ -3,9 +3,8 @@
  * query format of state/query.ts, so nothing a user typed is lost on reload.
  * On load a URL describing a state wins over localStorage.
  */
-import type { AlgorithmInfo } from '../core/types.js';
-import { type AppState, defaultAlgorithm, defaultState } from './app-state.js';
-import { stateFromQuery, stateToQuery } from './query.js';
+import { type AppState, type Catalogue, defaultAlgorithm, defaultState } from './app-state.js';
+import { GCODE_URL_LIMIT, stateFromQuery, stateToQuery } from './query.js';
 import type { Store } from './store.js';
 
 const STORAGE_KEY = 'voxpath.state';
@@ -26,21 +25,25 @@ function storage(): Storage | undefined {
   }
 }
 
-/** The state to start from: the URL's, else the last visit's, else the defaults. */
-export function loadState(catalogue: readonly AlgorithmInfo[]): AppState {
-  return (
-    stateFromQuery(window.location.search, catalogue) ??
-    stateFromQuery(storage()?.getItem(STORAGE_KEY) ?? '', catalogue) ??
-    defaultState(defaultAlgorithm(catalogue))
-  );
+/**
+ * The state to start from: the URL's, else the last visit's, else the
+ * defaults. A program too long for the URL comes from localStorage, which
+ * keeps it whole, so the editor's text survives a reload.
+ */
+export function loadState(catalogue: Catalogue): AppState {
+  const stored = stateFromQuery(storage()?.getItem(STORAGE_KEY) ?? '', catalogue);
+  const linked = stateFromQuery(window.location.search, catalogue);
+  if (linked && stored && !new URLSearchParams(window.location.search).has('gcode')) linked.gcode = stored.gcode;
+  return linked ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
 }
 
 function write(state: AppState): void {
-  const query = stateToQuery(state);
-  const url = `${window.location.pathname}?${query}${window.location.hash}`;
+  const url = `${window.location.pathname}?${stateToQuery(state, { gcodeLimit: GCODE_URL_LIMIT })}${window.location.hash}`;
   window.history.replaceState(window.history.state, '', url);
+  // An embedded view (say in a course page) must not replace the reader's own last visit.
+  if (state.embed) return;
   try {
-    storage()?.setItem(STORAGE_KEY, query);
+    storage()?.setItem(STORAGE_KEY, stateToQuery(state, { gcodeLimit: Infinity }));
   } catch {
     // Storage full or blocked: the URL still holds the state.
   }

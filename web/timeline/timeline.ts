@@ -1,6 +1,7 @@
 /**
  * Play / pause / first / previous / next / last, the scrubber, the "step k of
- * n" counter, the speed, and their keys (Space, Left/Right arrows, Home/End).
+ * n" counter, jump to a step, the speed, and their keys (Space, Left/Right
+ * arrows, Home/End).
  * All of them only change the state's pointIndex, playing and speed; the
  * views follow the state.
  */
@@ -18,11 +19,16 @@ export interface TimelineElements {
   scrubber: HTMLInputElement;
   counter: HTMLOutputElement;
   speed: HTMLSelectElement;
+  /** A form with a number field: submitting it jumps to that step. */
+  jump: HTMLFormElement;
+  jumpInput: HTMLInputElement;
 }
 
 /** Targets whose own keyboard handling must win over the page's keys. */
-function handlesItsOwnKeys(target: EventTarget | null, key: string): boolean {
+export function handlesItsOwnKeys(target: EventTarget | null, key: string): boolean {
   if (!(target instanceof HTMLElement)) return false;
+  // The view and its handles use the arrows themselves (data-own-keys).
+  if (target.closest('[data-own-keys]')) return true;
   if (target.isContentEditable || target instanceof HTMLTextAreaElement || target instanceof HTMLSelectElement) return true;
   // A range input already steps with arrows and Home/End; other inputs edit text.
   if (target instanceof HTMLInputElement) return true;
@@ -53,6 +59,11 @@ export class Timeline {
     elements.play.addEventListener('click', () => this.#togglePlay());
     elements.scrubber.addEventListener('input', () => this.#go(elements.scrubber.valueAsNumber));
     elements.speed.addEventListener('change', () => store.update({ speed: Number(elements.speed.value) }));
+    elements.jump.addEventListener('submit', (event) => {
+      event.preventDefault();
+      const wanted = elements.jumpInput.valueAsNumber;
+      if (Number.isInteger(wanted)) this.#go(wanted);
+    });
     document.addEventListener('keydown', (event) => this.#key(event));
     store.subscribe(() => this.#render());
     this.#render();
@@ -125,7 +136,8 @@ export class Timeline {
     e.playLabel.textContent = playing ? 'Pause' : 'Play';
     e.play.title = playing ? 'Pause (Space)' : 'Play (Space)';
     e.play.dataset.playing = String(playing);
-    e.scrubber.max = String(steps);
+    e.jumpInput.max = e.scrubber.max = String(steps);
+    e.jumpInput.disabled = none;
     e.scrubber.value = String(pointIndex);
     const text = `Step ${pointIndex} of ${steps}`;
     e.scrubber.setAttribute('aria-valuetext', text);
