@@ -28,7 +28,7 @@ beforeAll(async () => {
 
 describe('page state in the URL query', () => {
   it('writes the default state as a readable link', () => {
-    expect(stateToQuery(first(), url)).toBe('mode=trace&algorithm=regions&from=0,0,0&to=10,7,6&tie=advance&step=0&speed=2&view=3d');
+    expect(stateToQuery(first(), url)).toBe('mode=trace&algorithm=regions&from=0,0,0&to=10,7,6&step=0&speed=2&view=3d');
   });
 
   it('reads back every persisted key of each mode, and starts paused', () => {
@@ -69,12 +69,12 @@ describe('page state in the URL query', () => {
 
   it('keeps out-of-range and fractional coordinates for the core to judge', () => {
     const state = stateFromQuery('from=0,0.5,0&to=2000000000,7,6', catalogue)!;
-    expect(state.options).toEqual({ from: [0, 0.5, 0], to: [2_000_000_000, 7, 6], tie: 'advance' });
+    expect(state.options).toEqual({ from: [0, 0.5, 0], to: [2_000_000_000, 7, 6] });
   });
 
   it('fills what a link leaves out with defaults, not with the last visit', () => {
     const state = stateFromQuery('?from=1,2,3', catalogue)!;
-    expect(state).toEqual({ ...first(), options: { from: [1, 2, 3], to: [10, 7, 6], tie: 'advance' } });
+    expect(state).toEqual({ ...first(), options: { from: [1, 2, 3], to: [10, 7, 6] } });
   });
 
   it('replaces unusable values with defaults', () => {
@@ -90,7 +90,7 @@ describe('page state in the URL query', () => {
   it('leaves the options the page sets itself to the page', () => {
     const state = stateFromQuery('from=0,0,0&to=1,1,1&maxSteps=5', catalogue)!;
     expect(state.options).not.toHaveProperty('maxSteps');
-    expect(traceOptions(state, info('regions'))).toEqual({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1], tie: 'advance', ...PAGE_OPTIONS });
+    expect(traceOptions(state, info('regions'))).toEqual({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1], ...PAGE_OPTIONS });
   });
 });
 
@@ -125,7 +125,7 @@ describe('axes and options of one or two algorithms', () => {
 
   it('carries the typed move to a newly compared algorithm, fitted to the axes both take', () => {
     const options = carriedOptions([info('regions'), info('greedy')], { from: [1, 2, 3], to: [9, 8, 7], tie: 'hold' }, true);
-    expect(options).toEqual({ from: [1, 2, 3], to: [9, 8, 7], tie: 'hold', tieAxis: 'lower' });
-    expect(carriedOptions([info('greedy')], { from: [1, 2, 3] }, false)).toEqual({ from: [0, 0], to: [8, 3], tieAxis: 'lower' });
+    expect(options).toEqual({ from: [1, 2, 3], to: [9, 8, 7], tie: 'hold' });
+    expect(carriedOptions([info('greedy')], { from: [1, 2, 3] }, false)).toEqual({ from: [0, 0], to: [8, 3] });
   });
 });

@@ -99,6 +99,7 @@ function run(catalogue: Catalogue): void {
   }
   function renderMode(): void {
     const { mode, layout } = store.state;
+    document.body.dataset.mode = mode;
     for (const part of document.querySelectorAll<HTMLElement>('.mode-part')) part.hidden = !(part.dataset.modes ?? '').split(' ').includes(mode);
     for (const button of modeButtons) button.setAttribute('aria-pressed', String(button.dataset.mode === mode));
     byId('viewport-b', HTMLDivElement).hidden = !(mode === 'compare' && layout === 'side');

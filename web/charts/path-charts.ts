@@ -52,7 +52,7 @@ export class PathCharts {
     this.#charts.push(
       new StepChart(
         this.#container,
-        { title: `Axis position per step${bucketNote}`, xLabel: 'step', yLabel: 'position (grid units)', series: positions },
+        { title: `Axis position per step, grid units${bucketNote}`, xLabel: 'step', yLabel: 'position', series: positions },
         [x, ...axes.flatMap((_, a) => [series.position[a]!, series.ideal[a]!])],
         this.#onPick,
       ),
@@ -68,9 +68,9 @@ export class PathCharts {
       new StepChart(
         this.#container,
         {
-          title: `Distance from the ideal path per point${bucketNote}`,
+          title: `Distance from the ideal path, grid units${bucketNote}`,
           xLabel: 'step',
-          yLabel: 'distance (grid units)',
+          yLabel: 'distance',
           series: deviationSeries,
           bands: series.bucketed ? [{ series: [1, 2], fill: 'rgba(86, 180, 233, 0.25)' }] : undefined,
           references: [{ value: largest, label: `largest ${largest.toFixed(4)}`, colour: PALETTE.current }],

@@ -16,6 +16,8 @@ import type { InputError } from '../worker/protocol.js';
 
 interface Field {
   controls: (HTMLInputElement | HTMLSelectElement)[];
+  /** What a control shows while the option is absent (the core's default applies). */
+  absent: string;
   error: HTMLElement;
   /** The field holds no number, so its value was not sent. */
   localError?: string;
@@ -65,7 +67,7 @@ export class OptionsForm {
     error.dataset.testid = `error-${id.replace(/^option-/, '')}`;
     error.setAttribute('aria-live', 'polite');
     const describedBy = `${hint.id} ${error.id}`;
-    const field: Field = { controls: [], error };
+    const field: Field = { controls: [], error, absent: spec.kind.type === 'choice' ? (spec.default ?? '') : '' };
     this.#fields.set(spec.name, field);
 
     const control = <T extends HTMLInputElement | HTMLSelectElement>(c: T, controlId: string): T => {
@@ -89,11 +91,13 @@ export class OptionsForm {
       }
       case 'choice': {
         const select = control(element('select'), id);
+        // Without a stated default the algorithm decides (say helix's tie, from its mode): an empty choice leaves it to it.
+        if (spec.default === null) select.append(element('option', { value: '', textContent: "the algorithm's default" }));
         for (const word of spec.kind.values) {
           select.append(element('option', { value: word, textContent: word === spec.default ? `${word} (default)` : word }));
         }
-        select.value = typeof value === 'string' ? value : (spec.default ?? spec.kind.values[0] ?? '');
-        select.addEventListener('change', () => this.#onChange(spec.name, select.value));
+        select.value = typeof value === 'string' ? value : field.absent;
+        select.addEventListener('change', () => this.#onChange(spec.name, select.value === '' ? undefined : select.value));
         return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), select, hint, error);
       }
       case 'number':
@@ -143,9 +147,9 @@ export class OptionsForm {
       const value = values[name];
       field.controls.forEach((c, i) => {
         if (c === document.activeElement) return;
-        const text = Array.isArray(value) ? String(value[i] ?? '') : value === undefined ? '' : String(value);
+        const text = Array.isArray(value) ? String(value[i] ?? '') : value === undefined ? field.absent : String(value);
         if (c instanceof HTMLInputElement && c.type === 'checkbox') c.checked = value === true;
-        else if (c.value !== text && !(c instanceof HTMLSelectElement && value === undefined)) c.value = text;
+        else if (c.value !== text) c.value = text;
       });
     }
   }

@@ -5,17 +5,24 @@
  * cube centred on an integer grid point; only its first 3 coordinates are
  * drawn (a 2-axis point has z = 0).
  *
- * Two drawings of the same buffer:
+ * Two drawings of a buffer of cells:
  * - cubes: one instanced box per cell, shaded by a fixed light; the number
  *   drawn (instanceCount) scrubs from the start of the buffer;
- * - points: one square point per cell, sized like the cell on screen; any
- *   range of cells can be drawn (drawRange), and a million of them cost one
- *   vertex each, which is the lighter drawing of long paths.
+ * - points: one square point per cell, sized like the cell on screen (never
+ *   under 2 pixels); any range of cells can be drawn (drawRange), at one
+ *   vertex each: the lighter drawing of long paths (voxel-path.ts).
  */
 import * as THREE from 'three';
 
 /** Cells from this many on are drawn as points rather than cubes (see README, "The page"). */
 export const LIGHT_DRAWING_CELLS = 100_000;
+
+/**
+ * A path this many grid units wide (on its widest axis) or more is drawn as
+ * points too: framed whole, its cubes would be under 2 pixels, which points
+ * (never drawn smaller than 2 pixels) keep visible.
+ */
+export const LIGHT_DRAWING_SPAN = 300;
 
 /** A colour as the shaders want it: sRGB components, since these raw shaders skip three's colour management. */
 function srgb(hex: string): THREE.Vector3 {

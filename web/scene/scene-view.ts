@@ -127,7 +127,7 @@ export class SceneView {
     this.#container = container;
     this.#callbacks = callbacks;
     // preserveDrawingBuffer: the view can be saved as a PNG at any time.
-    this.#renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.#renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: false });
     this.#renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.#renderer.setClearColor(PALETTE.background);
     const canvas = this.#renderer.domElement;

@@ -146,7 +146,8 @@ export function withAxes(options: Readonly<Record<string, OptionValue>>, axes: n
  * pair): the first one's example move (for regions, Wang et al.'s
  * (0,0,0)->(10,7,6), the line of their Tables 1 and 2, so a learner can
  * check the page against the paper), with points fitted to the axes the
- * page shows, and each other choice at its default.
+ * page shows. Other options are left out, so the core's default applies
+ * (some apply only with others: helix's lineAlgorithm in mode segments).
  */
 export function defaultOptions(infos: readonly AlgorithmInfo[]): Record<string, OptionValue> {
   const options: Record<string, OptionValue> = {};
@@ -156,7 +157,6 @@ export function defaultOptions(infos: readonly AlgorithmInfo[]): Record<string, 
     const value = example[spec.name] as OptionValue | undefined;
     if (spec.kind.type === 'point' && Array.isArray(value)) options[spec.name] = fitPoint(value, axes);
     else if (value !== undefined) options[spec.name] = value;
-    else if (spec.kind.type === 'choice' && spec.default !== null) options[spec.name] = spec.default;
   }
   return options;
 }
