@@ -36,8 +36,9 @@ const FOV_DEG = 35;
  * to the right, as in an oblique drawing.
  */
 const VIEW_DIRECTION = new THREE.Vector3(0.6, -1.4, 0.9).normalize();
-/** Room around the cells for the axis arrows and tick labels, grid units. */
+/** Room around the cells for the axis arrows and tick labels: grid units, and a share of the path's size. */
 const FRAME_MARGIN = 1.3;
+const FRAME_MARGIN_SHARE = 0.08;
 /** Edge of a highlighted cell: larger than a path's cell, so it shows around it. */
 const HIGHLIGHT_SIZE = 1.06;
 /** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it. */
@@ -365,7 +366,8 @@ export class SceneView {
     if (!drawn) return;
     if (this.#projection === '2d') {
       const view = PLANE_VIEWS[drawn.planeNormal!]!;
-      const box = drawn.bounds.clone().expandByScalar(FRAME_MARGIN);
+      const extent = drawn.bounds.getSize(new THREE.Vector3());
+      const box = drawn.bounds.clone().expandByScalar(FRAME_MARGIN + FRAME_MARGIN_SHARE * Math.max(extent.x, extent.y, extent.z));
       const size = box.getSize(new THREE.Vector3());
       const right = new THREE.Vector3().crossVectors(view.up, view.direction);
       const width = Math.abs(size.dot(right));
