@@ -102,20 +102,18 @@ impl Region {
         }
     }
 
-    /// Classifies the signs of M and N (a missing N counts as negative: a
-    /// line with one passive axis never steps a second one).
-    fn of(m: i64, n: Option<i64>) -> Region {
-        match (m.signum(), n.map_or(-1, i64::signum)) {
-            (1, -1) => Region::A,
-            (-1, -1) => Region::B,
-            (-1, 1) => Region::C,
-            (1, 1) => Region::D,
-            (0, -1) => Region::E,
-            (-1, 0) => Region::F,
-            (0, 1) => Region::G,
-            (1, 0) => Region::H,
-            _ => Region::O,
-        }
+    /// Classifies the signs of M and N: a table indexed by sign + 1, so no
+    /// branch on the values. A line with one passive axis passes N = -1 (a
+    /// missing N counts as negative: it never steps a second axis).
+    fn of(m: i64, n: i64) -> Region {
+        use Region::{A, B, C, D, E, F, G, H, O};
+        const BY_SIGNS: [[Region; 3]; 3] = [
+            // N < 0, N = 0, N > 0
+            [B, F, C], // M < 0
+            [E, O, G], // M = 0
+            [A, H, D], // M > 0
+        ];
+        BY_SIGNS[(m.signum() + 1) as usize][(n.signum() + 1) as usize]
     }
 
     fn label(self) -> &'static str {
@@ -124,13 +122,10 @@ impl Region {
 }
 
 impl Corner {
-    fn of(first_steps: bool, second_steps: bool) -> Corner {
-        match (first_steps, second_steps) {
-            (true, false) => Corner::A,
-            (false, false) => Corner::B,
-            (false, true) => Corner::C,
-            (true, true) => Corner::D,
-        }
+    /// The corner of the passive axes' moves (0 or 1 each), by table.
+    fn of(first_steps: u16, second_steps: u16) -> Corner {
+        const BY_MOVES: [Corner; 4] = [Corner::B, Corner::A, Corner::C, Corner::D];
+        BY_MOVES[(first_steps | second_steps << 1) as usize]
     }
 
     fn label(self) -> &'static str {
@@ -296,7 +291,20 @@ pub struct RegionsWang {
     reference: usize,
     geometry: Geometry,
     /// M and N (eq. 8 recurrence), kept in i64: |M| <= 3 |delta_ref| < 2^33.
+    /// An absent passive axis holds -1 forever (increment 0), which never
+    /// steps and never ties, so every step runs the same straight-line code.
     discriminant: [i64; 2],
+    /// The step of the active axes, made every time (section 2.2).
+    active_step: Step,
+    /// The step of each passive axis toward the end (none when absent).
+    passive_step: [Step; 2],
+    /// 2 |delta| of each passive axis (eq. 8), 0 when absent.
+    increment: [i64; 2],
+    /// 2 |delta_ref|, subtracted when a passive axis steps (eq. 8).
+    decrement: i64,
+    /// A passive axis steps when its discriminant exceeds this: -1 when
+    /// ties advance (D >= 0), 0 when they hold (D > 0).
+    steps_above: i64,
     remaining: u64,
     tie: TiePolicy,
 }
@@ -328,14 +336,19 @@ impl RegionsWang {
                 geometry.passive_count += 1;
             }
         }
-        let mut discriminant = [0; 2];
-        for (i, d) in discriminant
-            .iter_mut()
-            .enumerate()
-            .take(geometry.passive_count as usize)
-        {
+        let mut active_step = Step::NONE;
+        for axis in (0..3).filter(|a| geometry.active_mask >> a & 1 == 1) {
+            active_step = mirror.toward(active_step, axis);
+        }
+        let mut discriminant = [-1; 2];
+        let mut passive_step = [Step::NONE; 2];
+        let mut increment = [0; 2];
+        for i in 0..geometry.passive_count as usize {
+            let axis = geometry.passive[i] as usize;
             // Eq. (10): M_1 = 2 delta_y - delta_x (and N_1 = 2 delta_z - delta_x).
-            *d = 2 * magnitude[geometry.passive[i] as usize] - largest;
+            discriminant[i] = 2 * magnitude[axis] - largest;
+            passive_step[i] = mirror.toward(Step::NONE, axis);
+            increment[i] = 2 * magnitude[axis];
         }
         RegionsWang {
             mirror,
@@ -344,6 +357,14 @@ impl RegionsWang {
             reference,
             geometry,
             discriminant,
+            active_step,
+            passive_step,
+            increment,
+            decrement: 2 * largest,
+            steps_above: match tie {
+                TiePolicy::Advance => -1,
+                TiePolicy::Hold => 0,
+            },
             remaining: mirror.longest() as u64,
             tie,
         }
@@ -376,49 +397,36 @@ impl Stepper for RegionsWang {
             return None;
         }
         self.remaining -= 1;
-        let g = self.geometry;
-        let mut step = Step::NONE;
-        for axis in 0..3 {
-            if g.active_mask >> axis & 1 == 1 {
-                // Active axes progress one unit at a time (section 2.2).
-                step = self.mirror.toward(step, axis);
-            }
-        }
-        let count = g.passive_count as usize;
-        let discriminants = [
-            (count > 0).then_some(self.discriminant[0]),
-            (count > 1).then_some(self.discriminant[1]),
+        let [m, n] = self.discriminant;
+        // A passive axis steps when its discriminant is positive; zero is the
+        // line passing exactly half way, decided by the tie policy. Both are
+        // one comparison with `steps_above`, giving 0 or 1, and the step is
+        // built from those bits: no branch on the discriminants.
+        let moves = [(m > self.steps_above) as u16, (n > self.steps_above) as u16];
+        // Active axes progress one unit at a time (section 2.2).
+        let step = Step(
+            self.active_step.0
+                | (self.passive_step[0].0 * moves[0])
+                | (self.passive_step[1].0 * moves[1]),
+        );
+        // Eq. (8): M_{i+1} = M_i + 2 dy - 2 dx (y_{i+1} - y_i).
+        self.discriminant = [
+            m + self.increment[0] - self.decrement * moves[0] as i64,
+            n + self.increment[1] - self.decrement * moves[1] as i64,
         ];
-        let mut moves = [false; 2];
-        let mut tie = false;
-        for i in 0..count {
-            let d = self.discriminant[i];
-            // A passive axis steps when its discriminant is positive; zero is
-            // the line passing exactly half way, decided by the tie policy.
-            moves[i] = d > 0 || (d == 0 && self.tie == TiePolicy::Advance);
-            tie |= d == 0;
-            let axis = g.passive[i] as usize;
-            if moves[i] {
-                step = self.mirror.toward(step, axis);
-            }
-            // Eq. (8): M_{i+1} = M_i + 2 dy - 2 dx (y_{i+1} - y_i).
-            self.discriminant[i] +=
-                2 * self.magnitude[axis] - 2 * self.magnitude[self.reference] * moves[i] as i64;
-        }
-        let (region, corner) = match discriminants[0] {
-            None => (Region::NoPassive, Corner::NoPassive),
-            Some(m) => (
-                Region::of(m, discriminants[1]),
-                Corner::of(moves[0], moves[1]),
-            ),
+        let count = self.geometry.passive_count;
+        let (region, corner) = if count == 0 {
+            (Region::NoPassive, Corner::NoPassive)
+        } else {
+            (Region::of(m, n), Corner::of(moves[0], moves[1]))
         };
         let why = RegionsWhy {
-            discriminants,
+            discriminants: [(count > 0).then_some(m), (count > 1).then_some(n)],
             region,
             corner,
-            tie,
+            tie: m == 0 || n == 0,
             tie_policy: self.tie,
-            geometry: g,
+            geometry: self.geometry,
         };
         Some((step, why))
     }
