@@ -14,9 +14,10 @@
 
 use crate::error::Error;
 use crate::grid::{Point, Step};
-use crate::ideal::{IdealPath, IdealPathInfo};
+use crate::ideal::{IdealPath, IdealPathInfo, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
 use serde::Serialize;
+use std::cell::OnceCell;
 
 /// Steps between two stored positions / stepper states.
 pub const CHECKPOINT_INTERVAL: u64 = 4096;
@@ -164,7 +165,12 @@ pub struct Trace {
     positions: Vec<Point>,
     segments: Vec<Segment>,
     columns: Vec<Column>,
-    metrics: Metrics,
+    /// Decisions that were ties, counted while stepping.
+    ties: u64,
+    /// Computed on first use: a pass over every point (deviation and axis
+    /// error), which a caller that only reads points or appends this trace
+    /// to another (a chord of an arc) never pays for.
+    metrics: OnceCell<Metrics>,
 }
 
 /// Builds a trace by running steppers one after another from a start point.
@@ -303,7 +309,7 @@ impl TraceBuilder {
                 self.positions.push(self.position);
             }
         }
-        self.ties += part.metrics.ties;
+        self.ties += part.ties;
         Ok(())
     }
 
@@ -319,8 +325,10 @@ impl TraceBuilder {
         }
     }
 
+    /// The finished trace. Its metrics are computed on first use
+    /// ([`Trace::metrics`]).
     pub fn finish(self, algorithm: &str) -> Trace {
-        let mut trace = Trace {
+        Trace {
             algorithm: algorithm.to_string(),
             start: self.start,
             end: self.position,
@@ -328,21 +336,9 @@ impl TraceBuilder {
             positions: self.positions,
             segments: self.segments,
             columns: self.columns,
-            metrics: Metrics::default(),
-        };
-        let mut acc = MetricsAccumulator::new(trace.dims());
-        trace.for_each_point(0, trace.steps() + 1, |k, p, seg| {
-            let (local, n) = (k - seg.first_step, seg.steps);
-            acc.add_point(
-                seg.ideal.deviation(p),
-                &seg.ideal.axis_error(p, local.min(n), n),
-            );
-            if k < trace.steps.len() as u64 {
-                acc.add_step(trace.steps[k as usize]);
-            }
-        });
-        trace.metrics = acc.finish(self.ties);
-        trace
+            ties: self.ties,
+            metrics: OnceCell::new(),
+        }
     }
 }
 
@@ -376,8 +372,20 @@ impl Trace {
         &self.segments
     }
 
+    /// Whole-path statistics, computed by one pass over the points the
+    /// first time they are asked for.
     pub fn metrics(&self) -> &Metrics {
-        &self.metrics
+        self.metrics.get_or_init(|| {
+            let mut acc = MetricsAccumulator::new(self.dims());
+            for step in &self.steps {
+                acc.add_step(*step);
+            }
+            self.for_each_point(0, self.steps() + 1, |k, p, seg, meter| {
+                let (local, n) = (k - seg.first_step, seg.steps);
+                acc.add_point(meter.deviation(p), &meter.axis_error(p, local.min(n), n));
+            });
+            acc.finish(self.ties)
+        })
     }
 
     /// The packed steps with step indices in `from..to`.
@@ -394,25 +402,31 @@ impl Trace {
         p
     }
 
-    /// Calls `f(k, point k, segment of point k)` for point indices `from..to`.
-    /// Point k belongs to the segment whose step k starts from it; the last
-    /// point belongs to the last segment that took a step.
-    fn for_each_point(&self, from: u64, to: u64, mut f: impl FnMut(u64, &Point, &Segment)) {
+    /// Calls `f(k, point k, segment of point k, that segment's meter)` for
+    /// point indices `from..to`. Point k belongs to the segment whose step k
+    /// starts from it; the last point belongs to the last segment that took
+    /// a step. A segment's meter is built once, when the walk enters it.
+    fn for_each_point(&self, from: u64, to: u64, mut f: impl FnMut(u64, &Point, &Segment, &Meter)) {
         if from >= to || self.segments.is_empty() {
             return;
         }
         let mut p = self.point(from);
         let mut seg = self.segment_of_point(from);
+        let mut meter = self.segments[seg].ideal.meter();
+        // Point index where the walk leaves the current segment.
+        let mut seg_end = self.segments[seg].first_step + self.segments[seg].steps;
         for k in from..to {
             if k > from {
                 p.apply(self.steps[k as usize - 1]);
-                if k < self.steps() {
+                if k >= seg_end && k < self.steps() {
                     while self.segments[seg].first_step + self.segments[seg].steps <= k {
                         seg += 1;
                     }
+                    meter = self.segments[seg].ideal.meter();
+                    seg_end = self.segments[seg].first_step + self.segments[seg].steps;
                 }
             }
-            f(k, &p, &self.segments[seg]);
+            f(k, &p, &self.segments[seg], &meter);
         }
     }
 
@@ -441,7 +455,7 @@ impl Trace {
     /// Perpendicular deviation of points `from..to` from the ideal path.
     pub fn deviation_range(&self, from: u64, to: u64) -> Vec<f64> {
         let mut out = Vec::with_capacity((to - from) as usize);
-        self.for_each_point(from, to, |_, p, seg| out.push(seg.ideal.deviation(p)));
+        self.for_each_point(from, to, |_, p, _, meter| out.push(meter.deviation(p)));
         out
     }
 
@@ -449,9 +463,9 @@ impl Trace {
     pub fn axis_error_range(&self, from: u64, to: u64) -> Vec<f64> {
         let dims = self.dims();
         let mut out = Vec::with_capacity((to - from) as usize * dims);
-        self.for_each_point(from, to, |k, p, seg| {
+        self.for_each_point(from, to, |k, p, seg, meter| {
             let local = (k - seg.first_step).min(seg.steps);
-            out.extend_from_slice(&seg.ideal.axis_error(p, local, seg.steps)[..dims]);
+            out.extend_from_slice(&meter.axis_error(p, local, seg.steps)[..dims]);
         });
         out
     }
@@ -540,7 +554,7 @@ impl Trace {
             start: self.start.coords().to_vec(),
             end: self.end.coords().to_vec(),
             columns: &self.columns,
-            metrics: &self.metrics,
+            metrics: self.metrics(),
             segments: self
                 .segments
                 .iter()
