@@ -264,6 +264,21 @@ impl TraceBuilder {
         self.max_steps
     }
 
+    /// Steps taken so far.
+    pub fn steps(&self) -> u64 {
+        self.steps.len() as u64
+    }
+
+    /// Makes room for exactly `more` steps, after checking them against
+    /// `maxSteps`: for a caller that knows the length of what it will
+    /// append, so the steps are not copied into ever larger arrays (which
+    /// would hold up to three times their size while the last copy is made).
+    pub fn reserve(&mut self, more: u64) -> Result<(), Error> {
+        self.check_length(self.steps() + more)?;
+        self.steps.reserve_exact(more as usize);
+        Ok(())
+    }
+
     /// The error for a path found to need at least `steps` steps, more than
     /// [`Self::max_steps`] (for steppers that count before running).
     pub fn too_long(&self, steps: u64) -> Error {

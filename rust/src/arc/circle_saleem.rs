@@ -335,10 +335,25 @@ impl SaleemCircle {
         Some(plan)
     }
 
+    /// Fewer steps than this circle takes, known without running it: its
+    /// full turns alone. Every circle point is within 0.5 of the circle, so
+    /// a lap around the centre is at least 2π (r - 1) long, and one step
+    /// moves at most sqrt(2): more than 4 (r - 1) steps per full turn.
+    pub fn steps_at_least(&self) -> u64 {
+        let whole_radius = (self.radius_sq as u64).isqrt();
+        let full_turns = self.crossings_left - 1;
+        full_turns.saturating_mul(4 * whole_radius.saturating_sub(1))
+    }
+
     /// This stepper with its steps counted by the dry run, or the maxSteps
-    /// error of `builder` when it would take more than the builder allows.
+    /// error of `builder` when it would take more than the builder allows
+    /// (at once when its full turns alone need more).
     pub fn counted(mut self, builder: &TraceBuilder) -> Result<SaleemCircle, Error> {
         let limit = builder.max_steps();
+        let at_least = self.steps_at_least();
+        if at_least > limit {
+            return Err(builder.too_long(at_least));
+        }
         let plan = self
             .plan(limit)
             .ok_or_else(|| builder.too_long(limit + 1))?;
