@@ -74,18 +74,9 @@ fn key(p: &[i64]) -> Key {
     k
 }
 
-/// Calls `f(point index, coordinates)` for every point, reading in chunks.
+/// Calls `f(point index, coordinates)` for every point.
 fn for_each_point(t: &Trace, mut f: impl FnMut(u64, &[i64])) {
-    let dims = t.dims();
-    let count = t.steps() + 1;
-    let mut from = 0;
-    while from < count {
-        let to = (from + CHUNK_POINTS).min(count);
-        for (i, p) in t.points_flat(from, to).chunks(dims).enumerate() {
-            f(from + i as u64, p);
-        }
-        from = to;
-    }
+    t.walk_points(0, t.steps() + 1, |k, p| f(k, p.coords()));
 }
 
 fn sorted_cells(t: &Trace) -> Vec<Key> {

@@ -454,16 +454,24 @@ impl Trace {
         }
     }
 
+    /// Calls `f(k, point k)` for point indices `from..to`, decoding the
+    /// steps as it goes: no array of points is built.
+    pub fn walk_points(&self, from: u64, to: u64, mut f: impl FnMut(u64, &Point)) {
+        if from >= to {
+            return;
+        }
+        let mut p = self.point(from);
+        f(from, &p);
+        for k in from + 1..to {
+            p.apply(self.steps[k as usize - 1]);
+            f(k, &p);
+        }
+    }
+
     /// Points with point indices `from..to`, flat with stride `dims`.
     pub fn points_flat(&self, from: u64, to: u64) -> Vec<i64> {
         let mut out = Vec::with_capacity((to - from) as usize * self.dims());
-        let mut p = self.point(from);
-        for k in from..to {
-            if k > from {
-                p.apply(self.steps[k as usize - 1]);
-            }
-            out.extend_from_slice(p.coords());
-        }
+        self.walk_points(from, to, |_, p| out.extend_from_slice(p.coords()));
         out
     }
 
@@ -507,6 +515,24 @@ impl Trace {
     pub fn decisions(&self, from: u64, to: u64) -> DecisionTable {
         let len = (to - from) as usize;
         let mut columns = vec![vec![f64::NAN; len]; self.columns.len()];
+        self.replay_decisions(from, to, |column, i, value| columns[column][i] = value);
+        DecisionTable { columns }
+    }
+
+    /// The same values in one column-major array: `(to - from)` values of
+    /// the first trace column, then of the second, ... (what crosses the
+    /// wasm boundary, written once with no per-column arrays to join).
+    pub fn decisions_flat(&self, from: u64, to: u64) -> Vec<f64> {
+        let len = (to - from) as usize;
+        let mut flat = vec![f64::NAN; len * self.columns.len()];
+        self.replay_decisions(from, to, |column, i, value| flat[column * len + i] = value);
+        flat
+    }
+
+    /// Replays steps `from..to`, calling `put(trace column, step index -
+    /// from, value)` for each value a segment's stepper writes; columns a
+    /// segment does not have are left alone.
+    fn replay_decisions(&self, from: u64, to: u64, mut put: impl FnMut(usize, usize, f64)) {
         let mut row = vec![f64::NAN; MAX_COLUMNS];
         let mut k = from;
         while k < to {
@@ -518,12 +544,11 @@ impl Trace {
                 row.fill(f64::NAN);
                 stepper.replay_step(&mut row);
                 for (local, &global) in segment.column_index.iter().enumerate() {
-                    columns[global][(i - from) as usize] = row[local];
+                    put(global, (i - from) as usize, row[local]);
                 }
             }
             k = seg_end;
         }
-        DecisionTable { columns }
     }
 
     /// One sentence: why step index k was taken.

@@ -93,23 +93,24 @@ impl TraceHandle {
         serde_json::to_string(&self.0.summary()).expect("the summary serializes")
     }
 
-    /// Points with point indices `from..to` (Int32Array, stride dims).
+    /// Points with point indices `from..to` (Int32Array, stride dims),
+    /// decoded straight into the i32 array JS receives: 4 bytes per
+    /// coordinate in wasm memory while the copy is made, nothing more.
     pub fn points(&self, from: u32, to: u32) -> Result<Vec<i32>, JsValue> {
         let (from, to) = self.point_range(from, to)?;
+        let mut out = Vec::with_capacity((to - from) as usize * self.0.dims());
         // Every point lies between validated endpoints or within a validated
         // arc's bounding box, so it fits in i32 (|c| <= 2^31 - 1).
-        Ok(self
-            .0
-            .points_flat(from, to)
-            .into_iter()
-            .map(|c| c as i32)
-            .collect())
+        self.0.walk_points(from, to, |_, p| {
+            out.extend(p.coords().iter().map(|&c| c as i32))
+        });
+        Ok(out)
     }
 
     /// Decision columns for step indices `from..to`, column-major.
     pub fn decisions(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
         let (from, to) = self.step_range(from, to)?;
-        Ok(self.0.decisions(from, to).columns.concat())
+        Ok(self.0.decisions_flat(from, to))
     }
 
     /// Deviation from the ideal path of points `from..to`.

@@ -10,6 +10,7 @@
  */
 export { trace, algorithms, Trace } from './trace.js';
 export { VoxpathError } from './errors.js';
+export { memoryBytes } from './wasm.js';
 export { experiments, randomLines } from './experiment.js';
 export type { ErrorStats, ExperimentInfo, MeasureSummary, RandomLinesOptions, RandomLinesResult, Spread } from './experiment.js';
 export { randomLinesToCsv, randomLinesToTable, traceToCsv, traceToJson, traceToTable } from './export.js';
