@@ -8,8 +8,9 @@
 //! - axis error: Float64Array, stride = dims, one row per point index;
 //! - step codes: Uint16Array, one packed step per step index (see `grid::Step`).
 //!
-//! Small data (summary, catalogue) crosses as JSON text. Errors are JS `Error`
-//! objects named `VoxpathError` with `field`, or `line` and `column`, set.
+//! Small data (summary, catalogue, comparisons) crosses as JSON text.
+//! Errors are JS `Error` objects named `VoxpathError` with `field`, or
+//! `line` and `column`, set.
 
 use crate::error::{Error, Location};
 use crate::trace::Trace;
@@ -59,6 +60,14 @@ pub fn random_lines_json(request_json: &str) -> Result<String, JsValue> {
         .and_then(|r| crate::experiment::random_lines(&r))
         .map_err(|e| to_js_error(&e))?;
     Ok(serde_json::to_string(&result).expect("the result serializes"))
+}
+
+/// Runs `{"algorithms": [a, b], ...shared options}` (see
+/// `compare::compare_request`); returns the comparison as JSON text.
+#[wasm_bindgen(js_name = compareJson)]
+pub fn compare_json(request_json: &str) -> Result<String, JsValue> {
+    let result = crate::compare::compare_request(request_json).map_err(|e| to_js_error(&e))?;
+    Ok(serde_json::to_string(&result).expect("the comparison serializes"))
 }
 
 /// A finished trace held in wasm memory.

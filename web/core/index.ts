@@ -7,12 +7,25 @@
  *   t.decisions.M;     // Float64Array, one value per step
  *   t.deviation;       // Float64Array, one value per point
  *   t.metrics;         // { steps, maxDeviation, meanDeviation, ... }
+ *
+ *   const c = await compare({ algorithms: ['regions', 'greedy'], from: [0, 0, 0], to: [10, 7, 6] });
+ *   c.firstDifference; // { pointIndex, a, b, aWhy: { explanation, decisions }, bWhy }
  */
 export { trace, algorithms, Trace } from './trace.js';
 export { VoxpathError } from './errors.js';
 export { memoryBytes } from './wasm.js';
+export { compare } from './compare.js';
+export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDigest } from './compare.js';
 export { experiments, randomLines } from './experiment.js';
 export type { ErrorStats, ExperimentInfo, MeasureSummary, RandomLinesOptions, RandomLinesResult, Spread } from './experiment.js';
-export { randomLinesToCsv, randomLinesToTable, traceToCsv, traceToJson, traceToTable } from './export.js';
+export {
+  comparisonToCsv,
+  comparisonToTable,
+  randomLinesToCsv,
+  randomLinesToTable,
+  traceToCsv,
+  traceToJson,
+  traceToTable,
+} from './export.js';
 export type { TraceJson } from './export.js';
 export type * from './types.js';
