@@ -13,7 +13,7 @@
 //! point k + 1; a *point index* k (0..=steps) names the position after k steps.
 
 use crate::error::Error;
-use crate::grid::{Point, Step};
+use crate::grid::{MAX_AXES, Point, Step, displacement};
 use crate::ideal::{IdealPath, IdealPathInfo, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
 use serde::Serialize;
@@ -94,6 +94,10 @@ pub trait Decision: Copy {
         false
     }
 
+    /// True when [`Decision::is_tie`] is always false: the metrics pass, which
+    /// counts ties by replaying each segment, then skips the replay.
+    const NEVER_TIES: bool = false;
+
     /// One plain sentence saying why `step` was taken from `from`.
     fn explain(&self, from: &Point, step: Step) -> String;
 }
@@ -106,12 +110,43 @@ pub trait Stepper: Clone + 'static {
     /// The next step and why it was taken, or None at the end of the path.
     fn next_step(&mut self) -> Option<(Step, Self::Why)>;
 
+    /// Takes up to `out.len()` steps into `out`, fewer only at the end of
+    /// the path: how many, and where they moved. This is how a trace
+    /// records; it calls [`Stepper::next_step`], inlined into this loop for
+    /// each stepper type, so the decisions, which nothing reads here, are
+    /// never built (they are rebuilt by replay when asked for, ties
+    /// included). A stepper that can take its steps or find their
+    /// displacement more cheaply may override this.
+    #[inline]
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let mut taken = out.len();
+        for (k, slot) in out.iter_mut().enumerate() {
+            let Some((step, _)) = self.next_step() else {
+                taken = k;
+                break;
+            };
+            *slot = step;
+        }
+        Filled {
+            steps: taken,
+            displacement: displacement(&out[..taken]),
+        }
+    }
+
     /// Steps this stepper will still take, when known without running it.
     fn remaining_steps(&self) -> Option<u64>;
 
     /// What a learner should know about this particular move before it starts
     /// (line type, active axis, initial discriminants, ...).
     fn setup_note(&self) -> String;
+}
+
+/// What [`Stepper::fill`] took.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Filled {
+    pub steps: usize,
+    /// Where the steps moved, per axis (what [`displacement`] gives).
+    pub displacement: [i64; MAX_AXES],
 }
 
 /// A type-erased stepper whose state can be copied: the replay engine.
@@ -121,6 +156,8 @@ trait Replay {
     fn replay_step(&mut self, row: &mut [f64]) -> Option<Step>;
     /// Takes the next step, explaining it.
     fn explain_step(&mut self, from: &Point) -> Option<String>;
+    /// Takes `steps` steps: how many of them a tie decided.
+    fn count_ties(&mut self, steps: u64) -> u64;
 }
 
 impl<S: Stepper> Replay for S {
@@ -137,6 +174,16 @@ impl<S: Stepper> Replay for S {
     fn explain_step(&mut self, from: &Point) -> Option<String> {
         let (step, why) = self.next_step()?;
         Some(why.explain(from, step))
+    }
+
+    fn count_ties(&mut self, steps: u64) -> u64 {
+        if S::Why::NEVER_TIES {
+            return 0;
+        }
+        (0..steps)
+            .map_while(|_| self.next_step())
+            .filter(|(_, why)| why.is_tie())
+            .count() as u64
     }
 }
 
@@ -165,11 +212,10 @@ pub struct Trace {
     positions: Vec<Point>,
     segments: Vec<Segment>,
     columns: Vec<Column>,
-    /// Decisions that were ties, counted while stepping.
-    ties: u64,
     /// Computed on first use: a pass over every point (deviation and axis
-    /// error), which a caller that only reads points or appends this trace
-    /// to another (a chord of an arc) never pays for.
+    /// error) and a replay of the decisions (ties), which a caller that only
+    /// reads points or appends this trace to another (a chord of an arc)
+    /// never pays for.
     metrics: OnceCell<Metrics>,
 }
 
@@ -182,7 +228,6 @@ pub struct TraceBuilder {
     segments: Vec<Segment>,
     columns: Vec<Column>,
     max_steps: u64,
-    ties: u64,
 }
 
 impl TraceBuilder {
@@ -197,7 +242,6 @@ impl TraceBuilder {
             segments: Vec::new(),
             columns: Vec::new(),
             max_steps,
-            ties: 0,
         }
     }
 
@@ -228,23 +272,37 @@ impl TraceBuilder {
             states: Vec::new(),
         };
         let mut stepper = stepper;
+        // Steps go in chunks that end where a stepper state (every
+        // CHECKPOINT_INTERVAL steps of the segment) or a position (every
+        // CHECKPOINT_INTERVAL steps of the trace) is due, written straight
+        // into the array; the position moves by each chunk's displacement.
         loop {
             if segment.steps % CHECKPOINT_INTERVAL == 0 {
                 segment.states.push(Box::new(stepper.clone()));
             }
-            let Some((step, why)) = stepper.next_step() else {
-                break;
-            };
-            if why.is_tie() {
-                self.ties += 1;
-            }
-            self.position.apply(step);
-            self.steps.push(step);
-            segment.steps += 1;
             let total = self.steps.len() as u64;
-            if total % CHECKPOINT_INTERVAL == 0 {
+            let mut chunk = (CHECKPOINT_INTERVAL - segment.steps % CHECKPOINT_INTERVAL)
+                .min(CHECKPOINT_INTERVAL - total % CHECKPOINT_INTERVAL);
+            if let Some(left) = stepper.remaining_steps() {
+                // Known lengths were reserved: the chunk stays within them.
+                chunk = chunk.min(left);
+            }
+            if chunk == 0 {
+                break;
+            }
+            let start = self.steps.len();
+            self.steps.resize(start + chunk as usize, Step::NONE);
+            let filled = stepper.fill(&mut self.steps[start..]);
+            self.steps.truncate(start + filled.steps);
+            self.position.displace(&filled.displacement);
+            segment.steps += filled.steps as u64;
+            let total = self.steps.len() as u64;
+            if filled.steps > 0 && total % CHECKPOINT_INTERVAL == 0 {
                 self.check_length(total)?;
                 self.positions.push(self.position);
+            }
+            if (filled.steps as u64) < chunk {
+                break;
             }
         }
         self.check_length(self.steps.len() as u64)?;
@@ -293,7 +351,7 @@ impl TraceBuilder {
 
     /// Appends a finished trace that starts where this one ends (a chord of
     /// an arc run by a line algorithm, for example): its steps, its segments
-    /// with their replay states, and its ties. Its columns join this trace's
+    /// with their replay states. Its columns join this trace's
     /// by equality, as in [`Self::run`]. `adapt` may change each segment's
     /// ideal path and note: a chord is measured against the arc it stands for.
     pub fn append(
@@ -324,7 +382,6 @@ impl TraceBuilder {
                 self.positions.push(self.position);
             }
         }
-        self.ties += part.ties;
         Ok(())
     }
 
@@ -351,7 +408,6 @@ impl TraceBuilder {
             positions: self.positions,
             segments: self.segments,
             columns: self.columns,
-            ties: self.ties,
             metrics: OnceCell::new(),
         }
     }
@@ -387,8 +443,10 @@ impl Trace {
         &self.segments
     }
 
-    /// Whole-path statistics, computed by one pass over the points the
-    /// first time they are asked for.
+    /// Whole-path statistics, computed the first time they are asked for:
+    /// one pass over the points, and the ties counted by replaying each
+    /// segment from its first state (steps are recorded without their
+    /// decisions).
     pub fn metrics(&self) -> &Metrics {
         self.metrics.get_or_init(|| {
             let mut acc = MetricsAccumulator::new(self.dims());
@@ -399,7 +457,12 @@ impl Trace {
                 let (local, n) = (k - seg.first_step, seg.steps);
                 acc.add_point(meter.deviation(p), &meter.axis_error(p, local.min(n), n));
             });
-            acc.finish(self.ties)
+            let ties = self
+                .segments
+                .iter()
+                .map(|s| s.states[0].clone_box().count_ties(s.steps))
+                .sum();
+            acc.finish(ties)
         })
     }
 

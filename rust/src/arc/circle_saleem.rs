@@ -143,6 +143,9 @@ impl Decision for CircleWhy {
     const COLUMNS: &'static [Column] =
         &[OCTANT, FAST, ERROR_STAY, ERROR_MOVE, SLOW_STEPS, CORRECTION];
 
+    /// The two candidates' errors differ by an odd number: never equal.
+    const NEVER_TIES: bool = true;
+
     fn write(&self, row: &mut [f64]) {
         row[0] = self.octant.map_or(f64::NAN, |k| (k - 1) as f64);
         match self.kind {
