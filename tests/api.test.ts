@@ -116,9 +116,9 @@ describe('bad input', () => {
   it('names the option at fault', async () => {
     expect((await rejection({ algorithm: 'regions', from: [0, 0], to: [1, 1] })).field).toBe('from');
     expect((await rejection({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1] })).field).toBe('to');
-    expect((await rejection({ algorithm: 'regions', from: [0, 0, 0], to: [2 ** 31, 0, 0] })).message).toBe(
-      'to: x = 2147483648 is outside +-2^30 (1073741824)',
-    );
+    const outside = await rejection({ algorithm: 'regions', from: [0, 0, 0], to: [0, 2 ** 31, 0] });
+    expect(outside.message).toBe('to: y = 2147483648 is outside +-2^30 (1073741824)');
+    expect(outside.axis).toBe(1);
     expect((await rejection({ algorithm: 'nope', from: [0, 0, 0], to: [1, 1, 1] })).field).toBe('algorithm');
     expect((await rejection({ ...LINE, tie: 'maybe' })).field).toBe('tie');
     expect((await rejection({ ...LINE, centre: [1, 1, 1] })).field).toBe('centre');

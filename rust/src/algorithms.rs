@@ -26,10 +26,20 @@ impl Family {
     }
 }
 
+/// A move that shows what an algorithm teaches: the page opens with it and
+/// the README cites it. A test traces every example.
+pub struct Example {
+    /// The options (without `algorithm`) as JSON text.
+    pub options: &'static str,
+    /// Why this move: what a learner sees in it.
+    pub why: &'static str,
+}
+
 /// One algorithm of the catalogue.
 pub struct AlgorithmInfo {
     pub id: &'static str,
     pub family: Family,
+    pub example: Example,
     pub title: &'static str,
     /// Document and section.
     pub citation: &'static str,
@@ -99,9 +109,15 @@ impl Serialize for Column {
 
 impl Serialize for AlgorithmInfo {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut st = s.serialize_struct("AlgorithmInfo", 11)?;
+        let mut st = s.serialize_struct("AlgorithmInfo", 12)?;
         st.serialize_field("id", self.id)?;
         st.serialize_field("family", self.family.label())?;
+        let options: serde_json::Value =
+            serde_json::from_str(self.example.options).map_err(serde::ser::Error::custom)?;
+        st.serialize_field(
+            "example",
+            &serde_json::json!({ "options": options, "why": self.example.why }),
+        )?;
         st.serialize_field("title", self.title)?;
         st.serialize_field("citation", self.citation)?;
         st.serialize_field("teaching", self.teaching)?;
@@ -130,6 +146,17 @@ mod tests {
             let json = serde_json::to_value(a).unwrap();
             assert_eq!(json["id"], a.id);
             assert_eq!(json["columns"].as_array().unwrap().len(), a.columns.len());
+        }
+    }
+
+    #[test]
+    fn every_example_traces() {
+        for a in ALGORITHMS {
+            let mut request: serde_json::Value = serde_json::from_str(a.example.options).unwrap();
+            request["algorithm"] = a.id.into();
+            let trace =
+                crate::trace_json(&request.to_string()).unwrap_or_else(|e| panic!("{}: {e}", a.id));
+            assert!(trace.steps() > 0, "{}", a.id);
         }
     }
 

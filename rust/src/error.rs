@@ -16,6 +16,8 @@ pub enum Location {
 pub struct Error {
     pub location: Location,
     pub message: String,
+    /// For a point option, the axis index (0 = x) the error is about.
+    pub axis: Option<usize>,
 }
 
 impl Error {
@@ -23,6 +25,7 @@ impl Error {
         Error {
             location: Location::Field(field.to_string()),
             message: message.into(),
+            axis: None,
         }
     }
 
@@ -30,7 +33,14 @@ impl Error {
         Error {
             location: Location::Source { line, column },
             message: message.into(),
+            axis: None,
         }
+    }
+
+    /// This error, about coordinate `axis` of a point option.
+    pub fn on_axis(mut self, axis: usize) -> Error {
+        self.axis = Some(axis);
+        self
     }
 
     /// The field this error names, if it is about an option.

@@ -59,13 +59,15 @@ impl Point {
                 return Err(crate::Error::field(
                     field,
                     format!("{name} must be an integer number of grid units, got {v}"),
-                ));
+                )
+                .on_axis(axis));
             }
             if v.abs() > COORD_LIMIT as f64 {
                 return Err(crate::Error::field(
                     field,
                     format!("{name} = {v} is outside +-2^30 ({COORD_LIMIT})"),
-                ));
+                )
+                .on_axis(axis));
             }
             coords[axis] = v as i64;
         }
@@ -336,6 +338,7 @@ mod tests {
     #[test]
     fn parse_names_the_field_and_axis() {
         let e = Point::parse("to", &[1.0, 2.5, 0.0]).unwrap_err();
+        assert_eq!(e.axis, Some(1));
         assert_eq!(
             e.to_string(),
             "to: y must be an integer number of grid units, got 2.5"

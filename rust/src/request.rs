@@ -183,7 +183,8 @@ impl Request {
                     return Err(Error::field(
                         name,
                         format!("{axis_name} must be a number, got {item}"),
-                    ));
+                    )
+                    .on_axis(axis));
                 }
             }
         }

@@ -6,7 +6,9 @@
 //!   trace column, in the order of the summary's `columns`;
 //! - deviation: Float64Array, one value per point index;
 //! - axis error: Float64Array, stride = dims, one row per point index;
-//! - step codes: Uint16Array, one packed step per step index (see `grid::Step`).
+//! - step codes: Uint16Array, one packed step per step index (see `grid::Step`);
+//! - direction levels: Uint8Array, one byte per step index, bit `axis` set
+//!   while that axis's DIR line is at its negative level (see `machine`).
 //!
 //! Small data (summary, catalogue, comparisons) crosses as JSON text.
 //! Errors are JS `Error` objects named `VoxpathError` with `field`, or
@@ -23,6 +25,9 @@ fn to_js_error(error: &Error) -> JsValue {
         let _ = js_sys::Reflect::set(&js, &JsValue::from_str(key), &value);
     };
     set("detail", JsValue::from_str(&error.message));
+    if let Some(axis) = error.axis {
+        set("axis", JsValue::from(axis as u32));
+    }
     match &error.location {
         Location::Field(field) => set("field", JsValue::from_str(field)),
         Location::Source { line, column } => {
@@ -142,6 +147,13 @@ impl TraceHandle {
         Ok(self.0.step_range(from, to).iter().map(|s| s.0).collect())
     }
 
+    /// DIR levels of step indices `from..to` (see `machine::direction_levels`).
+    #[wasm_bindgen(js_name = directionLevels)]
+    pub fn direction_levels(&self, from: u32, to: u32) -> Result<Vec<u8>, JsValue> {
+        let (from, to) = self.step_range(from, to)?;
+        Ok(crate::machine::direction_levels(&self.0, from, to))
+    }
+
     /// One sentence: why step index `step` was taken.
     pub fn explain(&self, step: u32) -> Result<String, JsValue> {
         let (step, _) = self.step_range(step, step + 1)?;
@@ -152,5 +164,63 @@ impl TraceHandle {
     #[wasm_bindgen(js_name = idealPolyline)]
     pub fn ideal_polyline(&self) -> Vec<f64> {
         self.0.ideal_polyline()
+    }
+}
+
+/// A G-code program being run a slice of lines at a time, so that a worker
+/// can report progress and stop between slices.
+#[wasm_bindgen]
+pub struct GcodeRun(crate::gcode::Runner);
+
+#[wasm_bindgen]
+impl GcodeRun {
+    /// `settings_json`: `{"stepsPerMm": 80 | [x, y, z]}` or `{"stepAngle",
+    /// "microsteps", "pitch"}`, plus `lineAlgorithm`, `arcAlgorithm`,
+    /// `maxSteps`. Bad settings throw, naming the setting.
+    #[wasm_bindgen(constructor)]
+    pub fn new(source: String, settings_json: &str) -> Result<GcodeRun, JsValue> {
+        let settings =
+            crate::gcode::Settings::from_json(settings_json).map_err(|e| to_js_error(&e))?;
+        Ok(GcodeRun(crate::gcode::Runner::new(source, settings)))
+    }
+
+    /// Runs up to `max_lines` more lines; returns the progress as JSON text
+    /// (`linesDone`, `lines`, `moves`, `steps`, `done`).
+    pub fn advance(&mut self, max_lines: u32) -> String {
+        serde_json::to_string(&self.0.advance(max_lines)).expect("progress serializes")
+    }
+
+    /// The program as run so far (all of it once `done`).
+    pub fn finish(self) -> GcodeResult {
+        let program = self.0.finish();
+        GcodeResult {
+            program_json: serde_json::to_string(&program.info).expect("the program serializes"),
+            trace: Some(program.trace),
+        }
+    }
+}
+
+/// A finished G-code run: the program's record as JSON, and its trace.
+#[wasm_bindgen]
+pub struct GcodeResult {
+    program_json: String,
+    trace: Option<Trace>,
+}
+
+#[wasm_bindgen]
+impl GcodeResult {
+    /// Moves, pulses, warnings and errors as JSON text (see `gcode::ProgramInfo`).
+    #[wasm_bindgen(js_name = programJson)]
+    pub fn program_json(&self) -> String {
+        self.program_json.clone()
+    }
+
+    /// The trace, handed over once.
+    #[wasm_bindgen(js_name = takeTrace)]
+    pub fn take_trace(&mut self) -> Result<TraceHandle, JsValue> {
+        self.trace
+            .take()
+            .map(TraceHandle)
+            .ok_or_else(|| to_js_error(&Error::field("trace", "already taken from this result")))
     }
 }

@@ -23,14 +23,15 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { AlgorithmInfo, ExperimentInfo, OptionSpec } from '../core/index.js';
+import { GCODE_USAGE, gcodeCommand, gcodeHelp } from './gcode.js';
 
 const FORMATS = ['json', 'csv', 'table'] as const;
 type Format = (typeof FORMATS)[number];
 
 /** A command-line mistake: reported in one line plus usage, exit code 2. */
-class UsageError extends Error {}
+export class UsageError extends Error {}
 
-function flagOf(option: string): string {
+export function flagOf(option: string): string {
   return '--' + option.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase());
 }
 
@@ -39,7 +40,7 @@ function optionOf(flag: string): string {
 }
 
 /** `--name value`, `--name=value` and bare `--help`, in order. */
-function parseFlags(args: string[]): Map<string, string> {
+export function parseFlags(args: string[]): Map<string, string> {
   const flags = new Map<string, string>();
   for (let i = 0; i < args.length; i++) {
     const arg = args[i]!;
@@ -107,6 +108,7 @@ function shortUsage(): string {
     'usage: voxpath trace --algorithm ID --from X,Y,Z --to X,Y,Z [options] [--format json|csv|table]',
     '       voxpath compare --algorithms A,B --from X,Y,Z --to X,Y,Z [options of A or B] [--format json|csv|table]',
     '       voxpath experiment random-lines [--count N] [--seed N] [--algorithm ID] [options] [--format ...]',
+    `       ${GCODE_USAGE}`,
     '       voxpath algorithms',
     '       voxpath --help',
   ].join('\n');
@@ -141,6 +143,9 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList }: Catal
     lines.push('', `  ${a.id}: ${a.title}`, `    ${a.citation}`);
     for (const o of a.options) lines.push(describeOption(o));
   }
+  // The line algorithms a program may use are those arc-segments may step chords with.
+  const chordLines = catalogue.find((a) => a.id === 'arc-segments')?.options.find((o) => o.name === 'lineAlgorithm')?.kind;
+  lines.push('', 'gcode:', gcodeHelp(chordLines?.type === 'choice' ? chordLines.values : []));
   lines.push('', 'experiments (any option of --algorithm, except --from and --to, applies to every line):');
   for (const e of experimentList) {
     lines.push('', `  ${e.id}: ${e.title}`, `    ${e.citation}`);
@@ -159,7 +164,7 @@ function pickAlgorithm(flags: Map<string, string>, catalogue: AlgorithmInfo[], f
   return info;
 }
 
-function pickFormat(flags: Map<string, string>): Format {
+export function pickFormat(flags: Map<string, string>): Format {
   const format = (flags.get('--format') ?? 'json') as Format;
   if (!FORMATS.includes(format)) throw new UsageError(`--format: expected json, csv or table, got '${format}'`);
   return format;
@@ -262,6 +267,11 @@ export async function main(args: string[]): Promise<number> {
       await write(await runCompare(parseFlags(rest), catalogues));
     } else if (command === 'experiment') {
       await write(await runExperiment(rest, catalogues));
+    } else if (command === 'gcode') {
+      const result = await gcodeCommand(rest);
+      await write(result.stdout);
+      process.stderr.write(result.stderr);
+      return result.code;
     } else {
       throw new UsageError(`unknown command '${command}'`);
     }

@@ -3,15 +3,18 @@ export class VoxpathError extends Error {
   override readonly name = 'VoxpathError';
   /** The option at fault, e.g. 'from' or 'maxSteps'. */
   readonly field?: string;
+  /** For a point option, the axis index (0 = x) at fault. */
+  readonly axis?: number;
   /** 1-based line and column in a text input such as a G-code program. */
   readonly line?: number;
   readonly column?: number;
   /** The message without its location prefix. */
   readonly detail: string;
 
-  constructor(message: string, where: { field?: string; line?: number; column?: number; detail?: string } = {}) {
+  constructor(message: string, where: { field?: string; axis?: number; line?: number; column?: number; detail?: string } = {}) {
     super(message);
     this.field = where.field;
+    this.axis = where.axis;
     this.line = where.line;
     this.column = where.column;
     this.detail = where.detail ?? message;
@@ -28,7 +31,7 @@ export function callCore<T>(call: () => T): T {
     return call();
   } catch (error) {
     if (error instanceof Error && error.name === 'VoxpathError') {
-      const e = error as Error & { field?: string; line?: number; column?: number; detail?: string };
+      const e = error as Error & { field?: string; axis?: number; line?: number; column?: number; detail?: string };
       throw new VoxpathError(e.message, e);
     }
     throw error;

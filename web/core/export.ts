@@ -6,12 +6,12 @@
  * decision that produced it (the decision of step k - 1, empty on row 0),
  * as Wang's Tables 1 and 2 print them.
  */
+import { AXIS_NAMES } from './axes.js';
 import type { Comparison, StepWhy } from './compare.js';
 import type { MeasureSummary, RandomLinesResult } from './experiment.js';
 import type { Trace } from './trace.js';
 import type { ColumnSpec, DecisionColumns } from './types.js';
 
-const AXES = ['x', 'y', 'z', 'a', 'b', 'c'];
 
 /** A decision value as people read it: category labels, booleans, plain numbers. */
 function readable(column: ColumnSpec, value: number): string | number | boolean | null {
@@ -69,7 +69,7 @@ function alignedTable(header: string[], body: string[][], labelFirst = false): s
 
 /** Header and rows of the per-point table; cells are strings. */
 function rows(trace: Trace): { header: string[]; body: string[][] } {
-  const header = ['k', ...AXES.slice(0, trace.dims), ...trace.columns.map((c) => c.name), 'deviation'];
+  const header = ['k', ...AXIS_NAMES.slice(0, trace.dims), ...trace.columns.map((c) => c.name), 'deviation'];
   const flat = trace.points;
   const decisions: DecisionColumns = trace.decisions;
   const deviation = trace.deviation;
@@ -119,7 +119,7 @@ function lineRows(result: RandomLinesResult): { header: string[]; body: string[]
   const dims = result.lines[0]?.to.length ?? 3;
   const header = [
     'line',
-    ...AXES.slice(0, dims).map((a) => `to_${a}`),
+    ...AXIS_NAMES.slice(0, dims).map((a) => `to_${a}`),
     'steps',
     'perp_max',
     'perp_mean',

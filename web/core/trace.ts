@@ -165,6 +165,16 @@ export class Trace implements TraceSummary {
     return callCore(() => this.#handle.stepCodes(from, to));
   }
 
+  /**
+   * DIR line levels of step indices from..to: bit a set while axis a's DIR is
+   * at its negative level. An axis keeps its level between its moves and
+   * starts positive; with stepCodes this is the step/direction signal pair.
+   */
+  directionLevels(from: number, to: number): Uint8Array {
+    checkRange('step indices', from, to, this.steps);
+    return callCore(() => this.#handle.directionLevels(from, to));
+  }
+
   /** One plain sentence: why step index k was taken. */
   explain(step: number): string {
     checkRange('step index', step, step + 1, this.steps);

@@ -90,6 +90,8 @@ export interface AlgorithmInfo {
   id: string;
   /** line: a straight move (from, to); arc: an arc, circle or helix about a centre. */
   family: 'line' | 'arc';
+  /** A move that shows what the algorithm teaches (options without `algorithm`), and why. */
+  example: { options: Record<string, unknown>; why: string };
   title: string;
   /** Document and section the algorithm comes from. */
   citation: string;

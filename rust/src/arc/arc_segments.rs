@@ -24,7 +24,7 @@
 
 use super::curve::{HelixPath, degrees};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
-use crate::algorithms::{self, AlgorithmInfo, Family};
+use crate::algorithms::{self, AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::Point;
 use crate::ideal::IdealPath;
@@ -92,6 +92,10 @@ pub const LINE_TIE: OptionSpec = OptionSpec {
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [20, 0, 0], "to": [-20, 0, 0], "center": [0, 0, 0], "dir": "ccw", "plane": "xy", "segmentLength": 8}"#,
+        why: "A half circle of radius 20 in chords of 8 units (the blog's CM_PER_SEGMENT rule).",
+    },
     family: Family::Arc,
     title: "Arc as chords (G02/G03 split into lines)",
     citation: "\"How to Improve the 2-axis CNC GCODE Interpreter to Understand Arcs\" (Makelangelo / GcodeCNCdemo blog), sections Arc length with atan3() to Implementation; chord count by tolerance from Grbl's mc_arc (motion_control.c)",

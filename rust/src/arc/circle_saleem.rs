@@ -23,7 +23,7 @@
 
 use super::planes::{Frame, OCTANTS, OctantRule, Orientation, octant_ahead};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, norm_sq};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::ideal::{IdealPath, within_i64_product_bound};
@@ -36,6 +36,10 @@ pub const ID: &str = "circle";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [5, 0, 0], "to": [0, 5, 0], "center": [0, 0, 0], "dir": "ccw", "plane": "xy"}"#,
+        why: "A counter-clockwise quarter circle of radius 5 (Saleem eq. 7-11).",
+    },
     family: Family::Arc,
     title: "Bresenham-type circle (arcs G02/G03)",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 4, eq. (6)-(13)",

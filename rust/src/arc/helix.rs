@@ -19,7 +19,10 @@
 //! mirror it). That spread of 0.0593 r is 0.0593 / (2π × 0.9003) = 1.05% of a
 //! turn, so at a given angle the height differs from the true helix's by up
 //! to 1.05% of one turn's rise (0.52% for arcs from axis to axis), plus the
-//! height of one arc step and half a linear step.
+//! height of two arc steps (rise / n_c each: one for the run of linear steps
+//! taken at one arc position, one because the discrete circle's count at an
+//! angle differs from the continuous r sin θ by up to a step) and half a
+//! linear step.
 //! Segments mode interpolates by angle and has no such drift.
 
 use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
@@ -28,7 +31,7 @@ use super::circle_saleem::{
 };
 use super::curve::HelixPath;
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::ideal::IdealPath;
@@ -61,6 +64,10 @@ pub const HELIX_TIE: OptionSpec = OptionSpec {
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [10, 0, 0], "to": [10, 0, 24], "center": [0, 0, 0], "dir": "ccw", "plane": "xy"}"#,
+        why: "One full turn of radius 10 rising 24 units.",
+    },
     family: Family::Arc,
     title: "Helix (arc plus linear axis)",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 5 (mode saleem); chords as in arc-segments (mode segments)",
@@ -166,8 +173,11 @@ impl Decision for HelixWhy {
         ERROR_MOVE,
         SLOW_STEPS,
         CORRECTION,
+        // Not "major": bresenham3d's column of that name holds an axis, and a
+        // G-code program's trace unions the columns of its line and arc
+        // algorithms by name.
         Column {
-            name: "major",
+            name: "helix_major",
             kind: ColumnKind::Category(MAJOR_LABELS),
             doc: "Which steps every iteration: the arc (n_c >= n_z) or the linear axis (n_z > n_c) (Saleem section 5).",
         },

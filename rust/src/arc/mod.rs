@@ -251,10 +251,10 @@ fn ceil_sqrt(n: i128) -> i128 {
     if s * s == n { s } else { s + 1 }
 }
 
-/// |sqrt(a) - sqrt(b)| <= RADIUS_TOLERANCE, exactly: sqrt(a) <= sqrt(b) + t
-/// holds iff a - b - t² <= 2 t sqrt(b), i.e. the left side is negative or
-/// its square is at most 4 t² b.
-fn radii_within_tolerance(a: i128, b: i128) -> bool {
+/// |sqrt(a) - sqrt(b)| <= RADIUS_TOLERANCE for squared radii a and b,
+/// exactly: sqrt(a) <= sqrt(b) + t holds iff a - b - t² <= 2 t sqrt(b),
+/// i.e. the left side is negative or its square is at most 4 t² b.
+pub fn radii_within_tolerance(a: i128, b: i128) -> bool {
     let t = RADIUS_TOLERANCE as i128;
     let below = |a: i128, b: i128| {
         let lhs = a - b - t * t;

@@ -9,7 +9,7 @@
 //! "-= Δmajor" there: the `variant` option runs that too.
 
 use super::{Guard, Mirror, step_target};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
@@ -30,6 +30,10 @@ pub const VARIANT: OptionSpec = OptionSpec {
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [0, 0], "to": [10, 3]}"#,
+        why: "A first-octant line with a tie at step 5.",
+    },
     family: Family::Line,
     title: "Bresenham's line in 2D, all eight octants",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 2, eq. (1)-(5)",

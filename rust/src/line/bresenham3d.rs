@@ -8,7 +8,7 @@
 
 use super::bresenham2d::{SaleemTerm, SaleemTest};
 use super::{GCD, Mirror, axis_list, step_target};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
@@ -17,6 +17,10 @@ pub const ID: &str = "bresenham3d";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [0, 0, 0], "to": [10, 7, 6]}"#,
+        why: "Wang's line: Saleem's strict rule holds at step 5 where Wang steps.",
+    },
     family: Family::Line,
     title: "Bresenham's line in 3D (Saleem; Liu with tie = advance)",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 3; Liu & Cheng (2002), as reproduced in Wang et al. (2020), Table 1",

@@ -3,7 +3,7 @@
 //! step and round it to the nearest cell.
 
 use super::{GUARD_LABELS, Guard, Mirror, column, step_target};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Stepper};
@@ -12,6 +12,10 @@ pub const ID: &str = "dda";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [0, 0], "to": [14, 1]}"#,
+        why: "Seven float additions of 1/14 give 0.4999999999999999, not 0.5.",
+    },
     family: Family::Line,
     title: "Floating-point DDA",
     citation: "The digital differential analyser as textbooks give it (cited by Wang et al. 2020, section 1, refs. 8-10), in f64",

@@ -8,7 +8,7 @@
 //! goal, not along the line.
 
 use super::{Mirror, TIE_AXIS, TieAxis, column, step_target};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Stepper};
@@ -17,6 +17,10 @@ pub const ID: &str = "greedy";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [0, 0], "to": [8, 3]}"#,
+        why: "The blog's rule runs along x until the remaining distances are equal.",
+    },
     family: Family::Line,
     title: "Greedy step toward the goal, one axis at a time",
     citation: "\"CNC Line Following Algorithm\", blog post of 6 July 2009 (low-cost 3D printer series)",

@@ -9,7 +9,7 @@
 //! decimals, the slope k itself is rounded and the error accumulates.
 
 use super::{GUARD_LABELS, Guard, Mirror, axis_list, column, step_target, wang_discriminant};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
@@ -36,6 +36,10 @@ pub const DRIFT_EXAMPLE: [i64; 3] = [7, 1, 1];
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [0, 0, 0], "to": [7, 1, 1], "decimals": 1}"#,
+        why: "With one decimal, k = 1/7 is kept as 0.1 and the path strays beyond sqrt(2)/2 (Wang Fig. 10).",
+    },
     family: Family::Line,
     title: "Liu's 3D Bresenham with a decimal discriminant kept to d places",
     citation: "Liu & Cheng (2002), Three-dimensional extension of Bresenham's algorithm, as given in Wang et al. (2020) section 3.2, eq. (14)-(15), Table 1, and discussed in section 4, Fig. 10",

@@ -4,7 +4,7 @@
 //! method of discriminate regions, M and N.
 
 use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
@@ -13,6 +13,10 @@ pub const ID: &str = "nd";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [0, 0, 0, 0, 0], "to": [10, 7, 6, 5, 3]}"#,
+        why: "Five axes (Wang eq. 16-17): H and K join M and N.",
+    },
     family: Family::Line,
     title: "Discriminants per passive axis, 2 to 6 axes",
     citation: "Wang, Xiao, Song, Yue, Bian & Li (2020), Spatial Straight-Line Drawing Algorithm Based on Method of Discriminate Regions, section 3.4, eq. (16)-(17) with eq. (6), (8), (10)",

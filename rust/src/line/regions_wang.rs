@@ -12,7 +12,7 @@
 //! formulas apply unchanged (the paper's "intrinsic symmetry").
 
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
@@ -22,6 +22,10 @@ pub const ID: &str = "regions";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [0, 0, 0], "to": [10, 7, 6]}"#,
+        why: "Wang's worked example, the line of Tables 1 and 2.",
+    },
     family: Family::Line,
     title: "Method of discriminate regions (3D line)",
     citation: "Wang, Xiao, Song, Yue, Bian & Li (2020), Spatial Straight-Line Drawing Algorithm Based on Method of Discriminate Regions, sections 2.2-2.5, eq. (6), (8), (10)",

@@ -10,7 +10,7 @@
 //! t_a; two fractions compare exactly by cross-multiplying, in i128.
 
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
-use crate::algorithms::{AlgorithmInfo, Family};
+use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Stepper};
@@ -20,6 +20,10 @@ pub const ID: &str = "walk6";
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
     id: ID,
+    example: Example {
+        options: r#"{"from": [0, 0], "to": [8, 3]}"#,
+        why: "The same move as greedy's example, following the line.",
+    },
     family: Family::Line,
     title: "6-connected walk through the cells the line crosses",
     citation: "Amanatides & Woo (1987), A Fast Voxel Traversal Algorithm for Ray Tracing, in integers between cell centres; the one-axis-per-step counterpart of the 2009 blog's greedy rule",

@@ -1,0 +1,13 @@
+(A rounded rectangle in inches, incremental: G20 G91)
+G20 G90 G17
+G0 X0 Y0.25
+G91
+G1 Y1 F20
+G2 X0.25 Y0.25 I0.25 J0
+G1 X1.5
+G2 X0.25 Y-0.25 I0 J-0.25
+G1 Y-1
+G2 X-0.25 Y-0.25 I-0.25 J0
+G1 X-1.5
+G2 X-0.25 Y0.25 I0 J0.25
+G90

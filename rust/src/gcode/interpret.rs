@@ -1,0 +1,815 @@
+//! Blocks -> moves in machine millimetres, through the modal state.
+//!
+//! Modal state (kept from line to line until changed): motion mode G0 G1 G2
+//! G3, plane G17 G18 G19 (XY, ZX, YZ), units G20 (inch) G21 (mm, the start),
+//! distance mode G90 (absolute, the start) G91 (incremental), arc centre
+//! mode G90.1 (I J K absolute) G91.1 (incremental, relative to the arc's
+//! start: the start), the G92 offset and the feed F.
+//!
+//! Within a line, whatever the order of its words, the modes are set first,
+//! then G92 or the move runs (RS274/NGC's order of execution). Positions are
+//! kept in machine mm: machine = program + G92 offset, where `G92 X0` makes
+//! the current machine position read as X0.
+//!
+//! Arcs:
+//! - centre format, I J K: the centre's offset from the start (G91.1) or
+//!   its position (G90.1) on the plane's two axes; the start and end radii
+//!   must agree within LinuxCNC's default tolerance (0.0283 mm, or 0.00283
+//!   in in G20, and 0.1 % of the radius). An end equal to the start is a
+//!   full circle;
+//! - radius format, R: the centre is on the perpendicular bisector of start
+//!   and end. R > 0 takes the arc of at most 180°, R < 0 the one of more
+//!   than 180°: for G02 (clockwise) R > 0 puts the centre to the right of
+//!   the chord from start to end, seen from the positive end of the plane's
+//!   normal, for G03 to the left, and R < 0 the other side. An R arc cannot
+//!   be a full circle, and fails when the end is more than 2|R| from the
+//!   start (LinuxCNC's tolerance: 0.00127 mm);
+//! - the sweep is the angle from start to end around the centre in the
+//!   plane's right-handed frame (G18 is Z then X, so that G02 is clockwise
+//!   seen from +Y like G17 seen from +Z), pushed a full turn the commanded
+//!   way when it reads the other way within 5e-7 rad (Grbl's
+//!   ARC_ANGULAR_TRAVEL_EPSILON: a rounding sliver is a full circle);
+//! - P n (a whole number, at least 1) is the number of turns: n - 1 full
+//!   turns are added (LinuxCNC);
+//! - the plane's normal axis may move during the arc: a helix.
+//!
+//! Feed F (units per minute) is kept with each move in mm/min and used by
+//! nothing else yet.
+
+use super::parse::{Block, Code, Problem, Word};
+use crate::arc::planes::{Plane, Turn};
+use crate::error::Error;
+use crate::grid::AXIS_NAMES;
+use crate::machine::{MACHINE_AXES, MM_PER_INCH};
+use std::f64::consts::TAU;
+
+/// LinuxCNC's RADIUS_TOLERANCE (0.00005 in, 0.00127 mm): the smallest
+/// radius, and how far past 2|R| an R arc's end may be.
+const RADIUS_TOLERANCE_INCH: f64 = 0.00005;
+/// LinuxCNC's CENTER_ARC_RADIUS_TOLERANCE (2 × 0.001 × sqrt 2 in,
+/// 2 × 0.01 × sqrt 2 mm): how much an I J K arc's end radius may differ from
+/// its start radius...
+const SPIRAL_TOLERANCE_INCH: f64 = 2.0 * 0.001 * std::f64::consts::SQRT_2;
+const SPIRAL_TOLERANCE_MM: f64 = 2.0 * 0.01 * std::f64::consts::SQRT_2;
+/// ...and at most this fraction of the radius (SPIRAL_RELATIVE_TOLERANCE).
+const SPIRAL_RELATIVE_TOLERANCE: f64 = 0.001;
+/// Grbl's ARC_ANGULAR_TRAVEL_EPSILON, radians.
+const FULL_CIRCLE_EPSILON_RAD: f64 = 5e-7;
+
+/// G codes voxpath does not model that take axis words: their X Y Z are
+/// not a move, so a line with one of them moves nothing.
+const AXIS_WORD_CODES: &[u32] = &[10, 28, 30, 38, 52, 53];
+
+/// Motion modes (modal group 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Motion {
+    /// G0: stepped like G1 (voxpath models where the axes go, not how fast).
+    Rapid,
+    /// G1.
+    Linear,
+    /// G2 (clockwise) or G3.
+    Arc(Turn),
+}
+
+impl Motion {
+    pub fn code(self) -> &'static str {
+        match self {
+            Motion::Rapid => "G0",
+            Motion::Linear => "G1",
+            Motion::Arc(Turn::Clockwise) => "G2",
+            Motion::Arc(Turn::CounterClockwise) => "G3",
+        }
+    }
+}
+
+/// How an arc's centre was given.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ArcFormat {
+    Centre,
+    Radius,
+}
+
+/// An arc in machine mm.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ArcMm {
+    pub plane: Plane,
+    pub turn: Turn,
+    pub format: ArcFormat,
+    /// Centre on the plane's two axes; on the normal axis, the start's.
+    pub centre_mm: [f64; MACHINE_AXES],
+    /// Distance of the start from the centre.
+    pub radius_mm: f64,
+    /// Signed angle travelled (< 0 for G2), extra turns included.
+    pub sweep_rad: f64,
+    /// Full turns added by P.
+    pub extra_turns: u32,
+}
+
+/// One move in machine mm, with the line that asked for it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MoveMm {
+    pub line: u32,
+    /// Column of the motion code, or of the first axis word when the motion
+    /// mode was set on an earlier line.
+    pub column: u32,
+    pub motion: Motion,
+    pub from_mm: [f64; MACHINE_AXES],
+    pub to_mm: [f64; MACHINE_AXES],
+    pub feed_mm_per_min: Option<f64>,
+    pub arc: Option<ArcMm>,
+}
+
+/// What one line did besides changing modes.
+#[derive(Debug, Default)]
+pub struct Effects {
+    pub motion: Option<MoveMm>,
+    pub warnings: Vec<Problem>,
+}
+
+/// The modal state and the position, from line to line.
+#[derive(Clone, Debug)]
+pub struct Interpreter {
+    motion: Option<Motion>,
+    plane: Plane,
+    inches: bool,
+    incremental: bool,
+    absolute_centres: bool,
+    feed_mm_per_min: Option<f64>,
+    /// Programmed position, machine mm (before rounding to steps).
+    position_mm: [f64; MACHINE_AXES],
+    /// G92: machine = program + offset.
+    offset_mm: [f64; MACHINE_AXES],
+    warned_no_feed: bool,
+}
+
+impl Default for Interpreter {
+    fn default() -> Self {
+        Interpreter {
+            motion: None,
+            plane: Plane::Xy,
+            inches: false,
+            incremental: false,
+            absolute_centres: false,
+            feed_mm_per_min: None,
+            position_mm: [0.0; MACHINE_AXES],
+            offset_mm: [0.0; MACHINE_AXES],
+            warned_no_feed: false,
+        }
+    }
+}
+
+/// Sets a modal group's code, refusing a second one on the same line.
+fn set_once<T: Copy>(
+    slot: &mut Option<(T, Code)>,
+    value: T,
+    code: &Code,
+    line: u32,
+    group: &str,
+) -> Result<(), Error> {
+    if let Some((_, first)) = slot {
+        return Err(Error::at(
+            line,
+            code.column,
+            format!(
+                "{} and {} are both {group} codes: give one per line",
+                first.name(),
+                code.name()
+            ),
+        ));
+    }
+    *slot = Some((value, *code));
+    Ok(())
+}
+
+/// The words of a line, by letter.
+struct Words<'b> {
+    by_letter: [Option<&'b Word>; 26],
+}
+
+impl<'b> Words<'b> {
+    fn new(words: &'b [Word], line: u32) -> Result<Words<'b>, Error> {
+        let mut by_letter = [None; 26];
+        for w in words {
+            let slot: &mut Option<&Word> = &mut by_letter[(w.letter as u8 - b'A') as usize];
+            if slot.is_some() {
+                return Err(Error::at(
+                    line,
+                    w.column,
+                    format!("{} appears twice on this line", w.letter),
+                ));
+            }
+            *slot = Some(w);
+        }
+        Ok(Words { by_letter })
+    }
+
+    fn get(&self, letter: char) -> Option<&'b Word> {
+        self.by_letter[(letter as u8 - b'A') as usize]
+    }
+
+    /// X, Y and Z words by axis index.
+    fn axes(&self) -> [Option<&'b Word>; MACHINE_AXES] {
+        [self.get('X'), self.get('Y'), self.get('Z')]
+    }
+
+    /// I, J and K words by axis index.
+    fn centre(&self) -> [Option<&'b Word>; MACHINE_AXES] {
+        [self.get('I'), self.get('J'), self.get('K')]
+    }
+
+    fn first_of(&self, letters: &str) -> Option<&'b Word> {
+        letters
+            .chars()
+            .filter_map(|c| self.get(c))
+            .min_by_key(|w| w.column)
+    }
+}
+
+impl Interpreter {
+    /// Programmed position in machine mm.
+    pub fn position_mm(&self) -> [f64; MACHINE_AXES] {
+        self.position_mm
+    }
+
+    /// mm per program unit.
+    fn unit_mm(&self) -> f64 {
+        if self.inches { MM_PER_INCH } else { 1.0 }
+    }
+
+    fn unit_name(&self) -> &'static str {
+        if self.inches { "in" } else { "mm" }
+    }
+
+    /// Runs one line. On an error the program stops, so a half-applied line
+    /// is never continued from.
+    pub fn run(&mut self, line: u32, block: &Block) -> Result<Effects, Error> {
+        let mut effects = Effects {
+            motion: None,
+            warnings: block.ignored.clone(),
+        };
+        let mut motion: Option<(Motion, Code)> = None;
+        let mut plane: Option<(Plane, Code)> = None;
+        let mut inches: Option<(bool, Code)> = None;
+        let mut incremental: Option<(bool, Code)> = None;
+        let mut absolute_centres: Option<(bool, Code)> = None;
+        let mut g92: Option<Code> = None;
+        let mut axis_code: Option<Code> = None;
+        let mut dwell = false;
+        for code in &block.codes {
+            match (code.letter, code.number, code.minor) {
+                ('G', 0, 0) => set_once(&mut motion, Motion::Rapid, code, line, "motion")?,
+                ('G', 1, 0) => set_once(&mut motion, Motion::Linear, code, line, "motion")?,
+                ('G', 2, 0) => set_once(
+                    &mut motion,
+                    Motion::Arc(Turn::Clockwise),
+                    code,
+                    line,
+                    "motion",
+                )?,
+                ('G', 3, 0) => set_once(
+                    &mut motion,
+                    Motion::Arc(Turn::CounterClockwise),
+                    code,
+                    line,
+                    "motion",
+                )?,
+                ('G', 17, 0) => set_once(&mut plane, Plane::Xy, code, line, "plane")?,
+                ('G', 18, 0) => set_once(&mut plane, Plane::Zx, code, line, "plane")?,
+                ('G', 19, 0) => set_once(&mut plane, Plane::Yz, code, line, "plane")?,
+                ('G', 20, 0) => set_once(&mut inches, true, code, line, "units")?,
+                ('G', 21, 0) => set_once(&mut inches, false, code, line, "units")?,
+                ('G', 90, 0) => set_once(&mut incremental, false, code, line, "distance mode")?,
+                ('G', 91, 0) => set_once(&mut incremental, true, code, line, "distance mode")?,
+                ('G', 90, 1) => {
+                    set_once(&mut absolute_centres, true, code, line, "arc centre mode")?
+                }
+                ('G', 91, 1) => {
+                    set_once(&mut absolute_centres, false, code, line, "arc centre mode")?
+                }
+                ('G', 92, 0) => g92 = Some(*code),
+                ('G', n, 0) if AXIS_WORD_CODES.contains(&n) => axis_code = Some(*code),
+                (letter, n, _) => {
+                    // G4 (dwell) takes P: its P is then not an unused word.
+                    dwell |= (letter, n) == ('G', 4);
+                    let what = match letter {
+                        'G' => "voxpath does not model it",
+                        _ => {
+                            "voxpath models motion only, not spindle, coolant, tools or program flow"
+                        }
+                    };
+                    effects.warnings.push(Problem {
+                        column: code.column,
+                        message: format!("{} ignored: {what}", code.name()),
+                    });
+                }
+            }
+        }
+        let words = Words::new(&block.words, line)?;
+        if let Some((v, _)) = plane {
+            self.plane = v;
+        }
+        if let Some((v, _)) = inches {
+            self.inches = v;
+        }
+        if let Some((v, _)) = incremental {
+            self.incremental = v;
+        }
+        if let Some((v, _)) = absolute_centres {
+            self.absolute_centres = v;
+        }
+        if let Some(f) = words.get('F') {
+            if f.value <= 0.0 {
+                return Err(Error::at(
+                    line,
+                    f.column,
+                    format!("F (feed) must be more than 0, got {}", f.value),
+                ));
+            }
+            self.feed_mm_per_min = Some(f.value * self.unit_mm());
+        }
+        for w in &block.words {
+            if !"XYZIJKRPF".contains(w.letter) {
+                effects.warnings.push(Problem {
+                    column: w.column,
+                    message: format!(
+                        "{}{} ignored: voxpath models X, Y and Z motion only",
+                        w.letter, w.value
+                    ),
+                });
+            }
+        }
+        let axes = words.axes();
+        let first_axis = words.first_of("XYZ");
+        let arc_word = words.first_of("IJKR");
+        if let Some(code) = g92 {
+            if let Some((m, c)) = motion {
+                return Err(Error::at(
+                    line,
+                    c.column,
+                    format!(
+                        "G92 and {} both take this line's axis words: put them on separate lines",
+                        m.code()
+                    ),
+                ));
+            }
+            if first_axis.is_none() {
+                return Err(Error::at(
+                    line,
+                    code.column,
+                    "missing axis word: G92 sets the current position to X, Y and/or Z; give at least one",
+                ));
+            }
+            for (axis, w) in axes.iter().enumerate() {
+                if let Some(w) = w {
+                    self.offset_mm[axis] = self.position_mm[axis] - w.value * self.unit_mm();
+                }
+            }
+            return Ok(effects);
+        }
+        if let Some((m, _)) = motion {
+            self.motion = Some(m);
+        }
+        if let Some(code) = axis_code {
+            if first_axis.is_some() {
+                effects.warnings.push(Problem {
+                    column: code.column,
+                    message: format!(
+                        "{} ignored: voxpath does not model it, so this line's axis words are not a move either",
+                        code.name()
+                    ),
+                });
+                return Ok(effects);
+            }
+            effects.warnings.push(Problem {
+                column: code.column,
+                message: format!("{} ignored: voxpath does not model it", code.name()),
+            });
+        }
+        if first_axis.is_none() && arc_word.is_none() {
+            // A motion code alone sets the mode; nothing moves.
+            self.warn_unused_p(&words, dwell, &mut effects);
+            return Ok(effects);
+        }
+        let Some(mode) = self.motion else {
+            let w = first_axis.or(arc_word).expect("one of them is present");
+            return Err(Error::at(
+                line,
+                w.column,
+                format!(
+                    "{} without a motion mode: put G0, G1, G2 or G3 on this line or an earlier one",
+                    w.letter
+                ),
+            ));
+        };
+        let column = motion.map_or_else(
+            || {
+                first_axis
+                    .or(arc_word)
+                    .expect("one of them is present")
+                    .column
+            },
+            |(_, c)| c.column,
+        );
+        let from_mm = self.position_mm;
+        let mut to_mm = from_mm;
+        for (axis, w) in axes.iter().enumerate() {
+            if let Some(w) = w {
+                let v = w.value * self.unit_mm();
+                to_mm[axis] = if self.incremental {
+                    from_mm[axis] + v
+                } else {
+                    v + self.offset_mm[axis]
+                };
+            }
+        }
+        let arc = match mode {
+            Motion::Rapid | Motion::Linear => {
+                if let Some(w) = arc_word {
+                    return Err(Error::at(
+                        line,
+                        w.column,
+                        format!(
+                            "{} is an arc word (G2, G3), but this line's motion is {}",
+                            w.letter,
+                            mode.code()
+                        ),
+                    ));
+                }
+                self.warn_unused_p(&words, dwell, &mut effects);
+                None
+            }
+            Motion::Arc(turn) => {
+                Some(self.arc(line, column, turn, from_mm, to_mm, &words, &mut effects)?)
+            }
+        };
+        if mode != Motion::Rapid && self.feed_mm_per_min.is_none() && !self.warned_no_feed {
+            self.warned_no_feed = true;
+            effects.warnings.push(Problem {
+                column,
+                message: format!(
+                    "{} with no feed rate set (F): a controller would refuse it; voxpath runs it, as it does not use the feed",
+                    mode.code()
+                ),
+            });
+        }
+        self.position_mm = to_mm;
+        effects.motion = Some(MoveMm {
+            line,
+            column,
+            motion: mode,
+            from_mm,
+            to_mm,
+            feed_mm_per_min: (mode != Motion::Rapid)
+                .then_some(self.feed_mm_per_min)
+                .flatten(),
+            arc,
+        });
+        Ok(effects)
+    }
+
+    fn warn_unused_p(&self, words: &Words<'_>, dwell: bool, effects: &mut Effects) {
+        if let (Some(p), false) = (words.get('P'), dwell) {
+            effects.warnings.push(Problem {
+                column: p.column,
+                message: format!(
+                    "P{} ignored: P counts the turns of an arc (G2, G3)",
+                    p.value
+                ),
+            });
+        }
+    }
+
+    /// Centre, radius and sweep of an arc from `from_mm` to `to_mm`.
+    #[allow(clippy::too_many_arguments)]
+    fn arc(
+        &self,
+        line: u32,
+        column: u32,
+        turn: Turn,
+        from_mm: [f64; MACHINE_AXES],
+        to_mm: [f64; MACHINE_AXES],
+        words: &Words<'_>,
+        effects: &mut Effects,
+    ) -> Result<ArcMm, Error> {
+        let plane = self.plane;
+        let [u, v, n] = plane.axes();
+        let unit = self.unit_mm();
+        let units = self.unit_name();
+        let radius_tolerance_mm = RADIUS_TOLERANCE_INCH * MM_PER_INCH;
+        let spiral_tolerance_mm = if self.inches {
+            SPIRAL_TOLERANCE_INCH * MM_PER_INCH
+        } else {
+            SPIRAL_TOLERANCE_MM
+        };
+        // Lengths in messages are in the program's units.
+        let shown = |mm: f64| format!("{:.4} {units}", mm / unit);
+        let centre_words = words.centre();
+        let extra_turns = match words.get('P') {
+            None => 0,
+            Some(p) if p.value >= 1.0 && p.value.fract() == 0.0 && p.value <= 1e6 => {
+                p.value as u32 - 1
+            }
+            Some(p) => {
+                return Err(Error::at(
+                    line,
+                    p.column,
+                    format!(
+                        "P (turns) must be a whole number from 1 to 1000000, got {}",
+                        p.value
+                    ),
+                ));
+            }
+        };
+        if let Some(k) = centre_words[n] {
+            effects.warnings.push(Problem {
+                column: k.column,
+                message: format!(
+                    "{} ignored: an arc in the {} takes its centre from {} and {}",
+                    k.letter,
+                    plane.describe(),
+                    ["I", "J", "K"][u],
+                    ["I", "J", "K"][v]
+                ),
+            });
+        }
+        let (centre_uv, format) = match (words.get('R'), centre_words[u].or(centre_words[v])) {
+            (Some(r), Some(c)) => {
+                let first = if r.column < c.column { r } else { c };
+                return Err(Error::at(
+                    line,
+                    first.column,
+                    "R and I/J/K both give the arc's centre: use one",
+                ));
+            }
+            (None, None) => {
+                return Err(Error::at(
+                    line,
+                    column,
+                    format!(
+                        "missing centre: an arc in the {} needs {} and/or {} (its centre) or R (its radius)",
+                        plane.describe(),
+                        ["I", "J", "K"][u],
+                        ["I", "J", "K"][v]
+                    ),
+                ));
+            }
+            (Some(r), None) => {
+                if from_mm[u] == to_mm[u] && from_mm[v] == to_mm[v] {
+                    return Err(Error::at(
+                        line,
+                        r.column,
+                        format!(
+                            "missing axis word: an R arc needs an end point other than its start on {} or {} (a full circle needs I/J/K)",
+                            AXIS_NAMES[u].to_uppercase(),
+                            AXIS_NAMES[v].to_uppercase()
+                        ),
+                    ));
+                }
+                let radius = r.value * unit;
+                if radius.abs() < radius_tolerance_mm {
+                    return Err(Error::at(line, r.column, "zero-radius arc: R is 0"));
+                }
+                let (du, dv) = (to_mm[u] - from_mm[u], to_mm[v] - from_mm[v]);
+                let chord = du.hypot(dv);
+                if chord / 2.0 - radius.abs() > radius_tolerance_mm {
+                    return Err(Error::at(
+                        line,
+                        r.column,
+                        format!(
+                            "R arc cannot reach its end: the end is {} from the start, more than 2|R| = {}",
+                            shown(chord),
+                            shown(2.0 * radius.abs())
+                        ),
+                    ));
+                }
+                // The centre is on the bisector, at h from the chord's middle;
+                // (-dv, du) / chord points to the left of the chord.
+                let half = (chord / 2.0).min(radius.abs());
+                let h = (radius * radius - half * half).sqrt();
+                let left = match (turn, radius > 0.0) {
+                    (Turn::CounterClockwise, true) | (Turn::Clockwise, false) => 1.0,
+                    _ => -1.0,
+                };
+                let (mu, mv) = ((from_mm[u] + to_mm[u]) / 2.0, (from_mm[v] + to_mm[v]) / 2.0);
+                (
+                    [mu - left * h * dv / chord, mv + left * h * du / chord],
+                    ArcFormat::Radius,
+                )
+            }
+            (None, Some(first)) => {
+                let offset = |axis: usize| centre_words[axis].map_or(0.0, |w| w.value * unit);
+                let centre = if self.absolute_centres {
+                    // G90.1: I J K are program coordinates; an absent one is 0.
+                    [offset(u) + self.offset_mm[u], offset(v) + self.offset_mm[v]]
+                } else {
+                    [from_mm[u] + offset(u), from_mm[v] + offset(v)]
+                };
+                let r1 = (from_mm[u] - centre[0]).hypot(from_mm[v] - centre[1]);
+                let r2 = (to_mm[u] - centre[0]).hypot(to_mm[v] - centre[1]);
+                if r1 < radius_tolerance_mm || r2 < radius_tolerance_mm {
+                    let which = if r1 < radius_tolerance_mm {
+                        "start"
+                    } else {
+                        "end"
+                    };
+                    return Err(Error::at(
+                        line,
+                        first.column,
+                        format!("zero-radius arc: the centre is at the arc's {which}"),
+                    ));
+                }
+                let difference = (r1 - r2).abs();
+                if difference > spiral_tolerance_mm
+                    || difference / r1.max(r2) > SPIRAL_RELATIVE_TOLERANCE
+                {
+                    return Err(Error::at(
+                        line,
+                        first.column,
+                        format!(
+                            "the arc's end is {} from its centre but its start is {}: the radii differ by {}, more than the tolerance ({} and 0.1% of the radius)",
+                            shown(r2),
+                            shown(r1),
+                            shown(difference),
+                            shown(spiral_tolerance_mm)
+                        ),
+                    ));
+                }
+                (centre, ArcFormat::Centre)
+            }
+        };
+        let (a, b) = (
+            [from_mm[u] - centre_uv[0], from_mm[v] - centre_uv[1]],
+            [to_mm[u] - centre_uv[0], to_mm[v] - centre_uv[1]],
+        );
+        let mut sweep = (a[0] * b[1] - a[1] * b[0]).atan2(a[0] * b[0] + a[1] * b[1]);
+        match turn {
+            Turn::CounterClockwise if sweep <= FULL_CIRCLE_EPSILON_RAD => sweep += TAU,
+            Turn::Clockwise if sweep >= -FULL_CIRCLE_EPSILON_RAD => sweep -= TAU,
+            _ => {}
+        }
+        sweep += turn.sign() as f64 * TAU * extra_turns as f64;
+        let mut centre_mm = from_mm;
+        centre_mm[u] = centre_uv[0];
+        centre_mm[v] = centre_uv[1];
+        Ok(ArcMm {
+            plane,
+            turn,
+            format,
+            centre_mm,
+            radius_mm: a[0].hypot(a[1]),
+            sweep_rad: sweep,
+            extra_turns,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gcode::parse::parse_line;
+
+    /// Runs lines from the start; the last line's effects.
+    fn run(lines: &[&str]) -> Result<(Interpreter, Effects), Error> {
+        let mut it = Interpreter::default();
+        let mut last = Effects::default();
+        for (i, text) in lines.iter().enumerate() {
+            last = it.run(i as u32 + 1, &parse_line(text))?;
+        }
+        Ok((it, last))
+    }
+
+    fn arc(lines: &[&str]) -> ArcMm {
+        run(lines).unwrap().1.motion.unwrap().arc.unwrap()
+    }
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() < 1e-9
+    }
+
+    #[test]
+    fn absolute_incremental_inches_and_g92() {
+        let (it, _) = run(&["G0 X10 Y5", "G91 G1 X1 Y1 F100", "X1"]).unwrap();
+        assert_eq!(it.position_mm(), [12.0, 6.0, 0.0]);
+        // G92 X0: the machine's 12 mm now reads 0, so X5 is machine 17.
+        let (it, e) = run(&["G0 X12", "G92 X0", "G0 X5"]).unwrap();
+        assert_eq!(it.position_mm(), [17.0, 0.0, 0.0]);
+        assert_eq!(e.motion.unwrap().from_mm, [12.0, 0.0, 0.0]);
+        let (it, e) = run(&["G20 G1 X1 F10"]).unwrap();
+        assert!(close(it.position_mm()[0], 25.4));
+        assert_eq!(e.motion.unwrap().feed_mm_per_min, Some(254.0));
+    }
+
+    #[test]
+    fn r_sign_picks_the_short_or_the_long_arc() {
+        // (0,0) -> (8,0), |R| = 5: centre 3 below or above the chord's
+        // middle; the half chord 4 = 5 sin(53.13°), so the short arc sweeps
+        // 106.26° and the long one the rest of the turn.
+        let short = arc(&["G2 X8 Y0 R5"]);
+        assert!(close(short.centre_mm[0], 4.0) && close(short.centre_mm[1], -3.0));
+        assert!(close(
+            short.sweep_rad.to_degrees(),
+            -2.0 * 53.13010235415598
+        ));
+        let long = arc(&["G2 X8 Y0 R-5"]);
+        assert!(close(long.centre_mm[1], 3.0));
+        assert!(close(
+            long.sweep_rad.to_degrees(),
+            -(360.0 - 2.0 * 53.13010235415598)
+        ));
+        // G3 mirrors G2: R > 0 puts the centre to the left, above.
+        assert!(close(arc(&["G3 X8 Y0 R5"]).centre_mm[1], 3.0));
+    }
+
+    #[test]
+    fn full_circles_turns_and_planes() {
+        let a = arc(&["G0 X10", "G2 I-10"]);
+        assert!(close(a.sweep_rad, -TAU) && close(a.radius_mm, 10.0));
+        let a = arc(&["G0 X10", "G3 I-10 P3"]);
+        assert!(close(a.sweep_rad, 3.0 * TAU) && a.extra_turns == 2);
+        // G18 is (z, x): from X10 to Z10 clockwise is the quarter turn.
+        let a = arc(&["G0 X10", "G18 G2 X0 Z10 I-10 K0"]);
+        assert!(close(a.sweep_rad, -TAU / 4.0));
+    }
+
+    #[test]
+    fn errors_name_line_and_column() {
+        let e = |lines: &[&str]| run(lines).unwrap_err().to_string();
+        assert_eq!(
+            e(&["G1 X1", "G2 X10 Y0 R4"]),
+            "line 2, column 11: R arc cannot reach its end: the end is 9.0000 mm from the start, more than 2|R| = 8.0000 mm"
+        );
+        assert_eq!(
+            e(&["G2 X10 Y0 I3 J0"]),
+            "line 1, column 11: the arc's end is 7.0000 mm from its centre but its start is 3.0000 mm: the radii differ by 4.0000 mm, more than the tolerance (0.0283 mm and 0.1% of the radius)"
+        );
+        assert_eq!(
+            e(&["G2 X10 I0 J0"]),
+            "line 1, column 8: zero-radius arc: the centre is at the arc's start"
+        );
+        assert_eq!(
+            e(&["G0 X1", "G92"]),
+            "line 2, column 1: missing axis word: G92 sets the current position to X, Y and/or Z; give at least one"
+        );
+        assert_eq!(
+            e(&["G3 R5"]),
+            "line 1, column 4: missing axis word: an R arc needs an end point other than its start on X or Y (a full circle needs I/J/K)"
+        );
+        assert_eq!(
+            e(&["X1"]),
+            "line 1, column 1: X without a motion mode: put G0, G1, G2 or G3 on this line or an earlier one"
+        );
+        assert_eq!(
+            e(&["G0 G1 X1"]),
+            "line 1, column 4: G0 and G1 are both motion codes: give one per line"
+        );
+        assert_eq!(
+            e(&["G1 X1 X2"]),
+            "line 1, column 7: X appears twice on this line"
+        );
+        assert_eq!(
+            e(&["G1 X1 I2"]),
+            "line 1, column 7: I is an arc word (G2, G3), but this line's motion is G1"
+        );
+        assert_eq!(
+            e(&["G2 X1"]),
+            "line 1, column 1: missing centre: an arc in the xy plane (G17), seen from +z needs I and/or J (its centre) or R (its radius)"
+        );
+        // Inch programs are told in inches.
+        assert!(
+            e(&["G20 G2 X1 R0.4"])
+                .ends_with("the end is 1.0000 in from the start, more than 2|R| = 0.8000 in")
+        );
+    }
+
+    #[test]
+    fn unmodelled_codes_and_words_are_warnings() {
+        let (_, e) = run(&["G1 F100", "M3 S1000 G4 P2", "G28 X0"]).unwrap();
+        let messages: Vec<String> = e.warnings.iter().map(|w| w.message.clone()).collect();
+        assert_eq!(
+            messages,
+            [
+                "G28 ignored: voxpath does not model it, so this line's axis words are not a move either"
+            ]
+        );
+        assert!(run(&["G28 X0"]).unwrap().1.motion.is_none());
+        let (_, e) = run(&["M3 S1000 G4 P2"]).unwrap();
+        let messages: Vec<(u32, String)> = e
+            .warnings
+            .iter()
+            .map(|w| (w.column, w.message.clone()))
+            .collect();
+        assert_eq!(
+            messages,
+            [
+                (1, "M3 ignored: voxpath models motion only, not spindle, coolant, tools or program flow".to_string()),
+                (10, "G4 ignored: voxpath does not model it".to_string()),
+                (4, "S1000 ignored: voxpath models X, Y and Z motion only".to_string()),
+            ]
+        );
+        let (_, e) = run(&["G1 X1"]).unwrap();
+        assert_eq!(
+            e.warnings[0].message,
+            "G1 with no feed rate set (F): a controller would refuse it; voxpath runs it, as it does not use the feed"
+        );
+    }
+}

@@ -1,0 +1,693 @@
+//! Moves in mm -> one trace in steps: each move is stepped by the chosen
+//! line or arc algorithm from the catalogue and appended to one
+//! [`TraceBuilder`] as its own segment(s), with a note naming its line.
+//!
+//! - G0 (rapid) is stepped like G1 with the line algorithm and marked as a
+//!   rapid: voxpath models where the axes go, not how fast (a real G0 may
+//!   also dog-leg, each axis at its own top speed).
+//! - Each target is rounded to steps from its absolute position (see
+//!   `machine`), so moves never drift; a move starts where the last one
+//!   ended on the grid.
+//! - Arcs in their plane run `circle` (Saleem) or `arc-segments` (chords by
+//!   the line algorithm), as set; arcs whose normal axis moves run `helix`
+//!   (mode saleem with circle, segments with arc-segments).
+//! - The arc algorithms work on the step grid: the two axes of the plane
+//!   need the same steps per mm (else a circle in mm is an ellipse in
+//!   steps), and the centre must be a grid point with the rounded start and
+//!   end within 1 step of the same radius (the arc module's tolerance). The
+//!   centre used is the grid point nearest the programmed centre's
+//!   projection onto the perpendicular bisector of the rounded start and
+//!   end (where both radii are equal), or one of its 8 neighbours when
+//!   rounding breaks that tolerance; the move's note says when it is not
+//!   simply the rounded centre.
+//! - On the grid the arc's sweep is measured again; the number of extra
+//!   turns is chosen so that it is nearest the programmed sweep. An arc that
+//!   turns through less than a step (its end rounds onto or just behind its
+//!   start), or whose radius is too small for any grid centre, is stepped as
+//!   a straight line to its end, and its note says so.
+
+use super::interpret::{ArcFormat, Interpreter, Motion, MoveMm};
+use super::parse::{Block, Problem, parse_line};
+use crate::algorithms;
+use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
+use crate::arc::planes::Turn;
+use crate::arc::{ArcSpec, radii_within_tolerance};
+use crate::error::{Error, Location};
+use crate::grid::{AXIS_NAMES, Point};
+use crate::machine::{MACHINE_AXES, Machine};
+use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
+use crate::trace::{MAX_STEPS_LIMIT, Trace, TraceBuilder};
+use serde::Serialize;
+use serde_json::{Map, Value};
+use std::f64::consts::TAU;
+
+/// Arc algorithms a program may run its arcs with.
+pub const ARC_ALGORITHMS: &[&str] = &["circle", "arc-segments"];
+
+/// Warnings kept per program; the rest are counted.
+pub const MAX_WARNINGS: usize = 1000;
+
+pub const STEPS_PER_MM: OptionSpec = OptionSpec {
+    name: "stepsPerMm",
+    kind: OptionKind::Number,
+    required: false,
+    default: None,
+    doc: "Steps per mm: one number for every axis or [x, y, z]. Or give stepAngle, microsteps and pitch.",
+};
+
+pub const STEP_ANGLE: OptionSpec = OptionSpec {
+    name: "stepAngle",
+    kind: OptionKind::Number,
+    required: false,
+    default: None,
+    doc: "Motor step angle θ, degrees (one or [x, y, z]): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
+};
+
+pub const MICROSTEPS: OptionSpec = OptionSpec {
+    name: "microsteps",
+    kind: OptionKind::Integer,
+    required: false,
+    default: None,
+    doc: "Microsteps s per full step (one or [x, y, z]).",
+};
+
+pub const PITCH: OptionSpec = OptionSpec {
+    name: "pitch",
+    kind: OptionKind::Number,
+    required: false,
+    default: None,
+    doc: "Lead-screw pitch P, mm per turn (one or [x, y, z]): one step is L = P / p_m mm.",
+};
+
+pub const ARC_ALGORITHM: OptionSpec = OptionSpec {
+    name: "arcAlgorithm",
+    kind: OptionKind::Choice {
+        values: ARC_ALGORITHMS,
+    },
+    required: false,
+    default: Some("circle"),
+    doc: "How arcs are stepped: circle (Saleem's integer circle) or arc-segments (chords by the line algorithm). Helical arcs run helix in the matching mode.",
+};
+
+/// Every setting of a program run.
+pub const SETTINGS: &[OptionSpec] = &[
+    STEPS_PER_MM,
+    STEP_ANGLE,
+    MICROSTEPS,
+    PITCH,
+    LINE_ALGORITHM,
+    ARC_ALGORITHM,
+    MAX_STEPS,
+];
+
+/// How a program is run: the machine and the algorithms.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    pub machine: Machine,
+    pub line_algorithm: &'static str,
+    pub arc_algorithm: &'static str,
+    pub max_steps: u64,
+}
+
+impl Settings {
+    /// Reads `{"stepsPerMm": 80, "lineAlgorithm": "regions", ...}`; errors
+    /// name the setting.
+    pub fn from_json(text: &str) -> Result<Settings, Error> {
+        let value: Value = serde_json::from_str(text)
+            .map_err(|e| Error::field("settings", format!("not valid JSON: {e}")))?;
+        let Value::Object(mut options) = value else {
+            return Err(Error::field("settings", "expected an object of settings"));
+        };
+        options.retain(|_, v| !v.is_null());
+        let machine = Machine::from_settings(&options)?;
+        let request = Request::new("gcode", options);
+        request.check_options(SETTINGS)?;
+        let pick =
+            |spec: &OptionSpec, values: &'static [&'static str]| -> Result<&'static str, Error> {
+                let chosen = request.choice(spec)?.unwrap_or(values[0]);
+                Ok(values
+                    .iter()
+                    .copied()
+                    .find(|v| *v == chosen)
+                    .expect("choice() checked it"))
+            };
+        Ok(Settings {
+            machine,
+            line_algorithm: pick(&LINE_ALGORITHM, LINE_ALGORITHMS)?,
+            arc_algorithm: pick(&ARC_ALGORITHM, ARC_ALGORITHMS)?,
+            max_steps: request.max_steps()?,
+        })
+    }
+}
+
+/// A warning or an error at a place in the program (1-based).
+#[derive(Serialize, Clone, Debug, PartialEq, Eq)]
+pub struct Diagnostic {
+    pub line: u32,
+    pub column: u32,
+    pub message: String,
+}
+
+impl Diagnostic {
+    fn at(line: u32, problem: &Problem) -> Diagnostic {
+        Diagnostic {
+            line,
+            column: problem.column,
+            message: problem.message.clone(),
+        }
+    }
+
+    fn from_error(error: Error) -> Diagnostic {
+        let Location::Source { line, column } = error.location else {
+            unreachable!("program errors are placed at a line: {error}");
+        };
+        Diagnostic {
+            line,
+            column,
+            message: error.message,
+        }
+    }
+}
+
+/// An arc as programmed and as stepped.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct ArcInfo {
+    /// xy (G17), zx (G18) or yz (G19).
+    pub plane: &'static str,
+    /// cw (G2) or ccw (G3).
+    pub direction: &'static str,
+    /// ijk (centre) or r (radius).
+    pub format: &'static str,
+    pub center_mm: [f64; MACHINE_AXES],
+    pub radius_mm: f64,
+    /// Signed (< 0 clockwise), extra turns included.
+    pub sweep_deg: f64,
+    /// Full turns added by P.
+    pub extra_turns: u32,
+    /// The grid centre the arc was stepped around; None when it was stepped
+    /// as a straight line.
+    pub center_steps: Option<[i64; MACHINE_AXES]>,
+}
+
+/// One move of the program and the steps it took.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct Move {
+    pub line: u32,
+    pub column: u32,
+    /// G0, G1, G2 or G3.
+    pub code: &'static str,
+    /// rapid, line, arc or helix.
+    pub kind: &'static str,
+    pub from_mm: [f64; MACHINE_AXES],
+    pub to_mm: [f64; MACHINE_AXES],
+    pub from_steps: [i64; MACHINE_AXES],
+    pub to_steps: [i64; MACHINE_AXES],
+    /// The feed in force, mm/min; None for rapids and when none was set.
+    pub feed_mm_per_min: Option<f64>,
+    /// Step index of the move's first step, and its number of steps.
+    pub first_step: u64,
+    pub steps: u64,
+    /// Index of the move's first trace segment, and how many it has (an
+    /// arc-segments arc has one per chord).
+    pub first_segment: usize,
+    pub segments: usize,
+    /// The catalogue algorithm that stepped it.
+    pub algorithm: &'static str,
+    pub arc: Option<ArcInfo>,
+    /// What the move is, in a sentence (it also starts its segments' notes).
+    pub note: String,
+}
+
+/// How far a run has got.
+#[derive(Serialize, Clone, Copy, Debug, PartialEq, Eq)]
+#[serde(rename_all = "camelCase")]
+pub struct Progress {
+    pub lines_done: u32,
+    pub lines: u32,
+    pub moves: usize,
+    pub steps: u64,
+    pub done: bool,
+}
+
+/// Everything about a finished run but the trace.
+#[derive(Serialize, Clone, Debug)]
+#[serde(rename_all = "camelCase")]
+pub struct ProgramInfo {
+    pub lines: u32,
+    pub steps: u64,
+    pub steps_per_mm: [f64; MACHINE_AXES],
+    pub line_algorithm: &'static str,
+    pub arc_algorithm: &'static str,
+    pub moves: Vec<Move>,
+    /// Pulses per axis (x, y, z) over the whole program.
+    pub pulses: Vec<u64>,
+    pub warnings: Vec<Diagnostic>,
+    /// Warnings past the first MAX_WARNINGS, counted only.
+    pub warnings_omitted: u64,
+    /// Execution stops at the first error; later lines are still checked
+    /// for syntax errors, which are listed too.
+    pub errors: Vec<Diagnostic>,
+    /// The line of the first error: every line before it ran.
+    pub stopped_at_line: Option<u32>,
+}
+
+/// A finished run.
+pub struct Program {
+    pub trace: Trace,
+    pub info: ProgramInfo,
+}
+
+/// Runs a program a slice of lines at a time (see [`Runner::advance`]).
+pub struct Runner {
+    source: String,
+    /// Byte offset of the next line; past the end when done.
+    offset: usize,
+    lines_done: u32,
+    lines: u32,
+    settings: Settings,
+    interpreter: Interpreter,
+    builder: TraceBuilder,
+    steps: u64,
+    segments: usize,
+    moves: Vec<Move>,
+    warnings: Vec<Diagnostic>,
+    warnings_omitted: u64,
+    errors: Vec<Diagnostic>,
+    stopped_at_line: Option<u32>,
+}
+
+/// "(1, 2.5, 0)".
+fn tuple(values: &[f64]) -> String {
+    let parts: Vec<String> = values
+        .iter()
+        .map(|v| format!("{}", (v * 1e6).round() / 1e6))
+        .collect();
+    format!("({})", parts.join(", "))
+}
+
+impl Runner {
+    pub fn new(source: String, settings: Settings) -> Runner {
+        let lines = source.split('\n').count() as u32;
+        Runner {
+            source,
+            offset: 0,
+            lines_done: 0,
+            lines,
+            builder: TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps),
+            settings,
+            interpreter: Interpreter::default(),
+            steps: 0,
+            segments: 0,
+            moves: Vec::new(),
+            warnings: Vec::new(),
+            warnings_omitted: 0,
+            errors: Vec::new(),
+            stopped_at_line: None,
+        }
+    }
+
+    pub fn progress(&self) -> Progress {
+        Progress {
+            lines_done: self.lines_done,
+            lines: self.lines,
+            moves: self.moves.len(),
+            steps: self.steps,
+            done: self.lines_done == self.lines,
+        }
+    }
+
+    /// Reads and runs up to `max_lines` more lines. A slice takes time in
+    /// proportion to its lines and to the steps of their moves.
+    pub fn advance(&mut self, max_lines: u32) -> Progress {
+        for _ in 0..max_lines {
+            if self.lines_done == self.lines {
+                break;
+            }
+            let rest = &self.source[self.offset..];
+            let end = rest.find('\n').unwrap_or(rest.len());
+            let block = parse_line(&rest[..end]);
+            self.offset += end + 1;
+            self.lines_done += 1;
+            self.run_block(self.lines_done, &block);
+        }
+        self.progress()
+    }
+
+    /// Runs every line left.
+    pub fn run_to_end(mut self) -> Program {
+        self.advance(u32::MAX);
+        self.finish()
+    }
+
+    fn warn(&mut self, diagnostic: Diagnostic) {
+        if self.warnings.len() < MAX_WARNINGS {
+            self.warnings.push(diagnostic);
+        } else {
+            self.warnings_omitted += 1;
+        }
+    }
+
+    fn stop(&mut self, error: Diagnostic) {
+        self.stopped_at_line.get_or_insert(error.line);
+        self.errors.push(error);
+    }
+
+    fn run_block(&mut self, line: u32, block: &Block) {
+        if let Some(problem) = &block.error {
+            self.stop(Diagnostic::at(line, problem));
+            return;
+        }
+        if self.stopped_at_line.is_some() {
+            // After the first error only syntax is checked: the modal
+            // state a later line would run in is unknown.
+            return;
+        }
+        let effects = match self.interpreter.run(line, block) {
+            Ok(effects) => effects,
+            Err(e) => return self.stop(Diagnostic::from_error(e)),
+        };
+        for w in &effects.warnings {
+            self.warn(Diagnostic::at(line, w));
+        }
+        if let Some(m) = effects.motion {
+            match self.step_move(&m) {
+                Ok(mv) => self.moves.push(mv),
+                Err(e) => self.stop(Diagnostic::from_error(e)),
+            }
+        }
+    }
+
+    /// A point in steps, or an error naming the axis that leaves the grid.
+    fn steps_of(&self, m: &MoveMm, mm: [f64; MACHINE_AXES]) -> Result<Point, Error> {
+        let mut c = [0; MACHINE_AXES];
+        for axis in 0..MACHINE_AXES {
+            c[axis] = self
+                .settings
+                .machine
+                .to_steps(axis, mm[axis])
+                .ok_or_else(|| {
+                    Error::at(
+                        m.line,
+                        m.column,
+                        format!(
+                            "{} = {} mm is beyond the machine's ±2^30 steps on {}",
+                            AXIS_NAMES[axis].to_uppercase(),
+                            mm[axis],
+                            AXIS_NAMES[axis]
+                        ),
+                    )
+                })?;
+        }
+        Ok(Point::new(&c))
+    }
+
+    /// Runs one catalogue request and appends its trace; the segments'
+    /// notes start with `note`. Returns (steps, segments) added.
+    fn append(
+        &mut self,
+        m: &MoveMm,
+        mut request: Request,
+        note: &str,
+    ) -> Result<(u64, usize), Error> {
+        let place = |e: Error| match e.field_name() {
+            Some("maxSteps") => Error::at(
+                m.line,
+                m.column,
+                format!(
+                    "the program needs more than maxSteps = {} steps by this move; raise maxSteps (up to {MAX_STEPS_LIMIT})",
+                    self.settings.max_steps
+                ),
+            ),
+            Some(field) => Error::at(m.line, m.column, format!("{field}: {}", e.message)),
+            None => e,
+        };
+        request.set(
+            "maxSteps",
+            Value::from(self.settings.max_steps - self.steps),
+        );
+        let info = algorithms::find(&request.algorithm).map_err(place)?;
+        let part = (info.trace)(&request).map_err(place)?;
+        let added = (part.steps(), part.segments().len());
+        self.builder
+            .append(part, |segment| {
+                segment.setup_note = format!("{note} {}", segment.setup_note);
+            })
+            .map_err(place)?;
+        self.steps += added.0;
+        self.segments += added.1;
+        Ok(added)
+    }
+
+    fn line_request(&self, algorithm: &str, from: Point, to: Point) -> Request {
+        let mut options = Map::new();
+        options.insert("from".into(), Value::from(from.coords()));
+        options.insert("to".into(), Value::from(to.coords()));
+        Request::new(algorithm, options)
+    }
+
+    fn step_move(&mut self, m: &MoveMm) -> Result<Move, Error> {
+        let from = self.builder.position();
+        let to = self.steps_of(m, m.to_mm)?;
+        let (first_step, first_segment) = (self.steps, self.segments);
+        let mut note = format!(
+            "Line {}, {}: {} -> {} mm = {} -> {} steps",
+            m.line,
+            m.motion.code(),
+            tuple(&m.from_mm),
+            tuple(&m.to_mm),
+            from,
+            to
+        );
+        let (kind, algorithm, arc) = match &m.arc {
+            None => {
+                let kind = if m.motion == Motion::Rapid {
+                    note.push_str(", a rapid, stepped like G1 (voxpath models where the axes go, not how fast).");
+                    "rapid"
+                } else {
+                    note.push_str(", a straight line.");
+                    "line"
+                };
+                let line = self.settings.line_algorithm;
+                self.append(m, self.line_request(line, from, to), &note)?;
+                (kind, line, None)
+            }
+            Some(_) => self.step_arc(m, from, to, &mut note)?,
+        };
+        Ok(Move {
+            line: m.line,
+            column: m.column,
+            code: m.motion.code(),
+            kind,
+            from_mm: m.from_mm,
+            to_mm: m.to_mm,
+            from_steps: from.coords().try_into().expect("3 axes"),
+            to_steps: to.coords().try_into().expect("3 axes"),
+            feed_mm_per_min: m.feed_mm_per_min,
+            first_step,
+            steps: self.steps - first_step,
+            first_segment,
+            segments: self.segments - first_segment,
+            algorithm,
+            arc,
+            note,
+        })
+    }
+
+    /// The grid centre of an arc from `from` to `to` (steps) about
+    /// `centre` (steps, real): see the module comment.
+    fn grid_centre(from: [i64; 2], to: [i64; 2], centre: [f64; 2]) -> Option<[i64; 2]> {
+        let (s, e) = (
+            [from[0] as f64, from[1] as f64],
+            [to[0] as f64, to[1] as f64],
+        );
+        let chord = [e[0] - s[0], e[1] - s[1]];
+        let length = chord[0].hypot(chord[1]);
+        let aim = if length == 0.0 {
+            centre
+        } else {
+            // Project onto the bisector: through the chord's middle, along
+            // the chord's normal.
+            let mid = [(s[0] + e[0]) / 2.0, (s[1] + e[1]) / 2.0];
+            let normal = [-chord[1] / length, chord[0] / length];
+            let t = (centre[0] - mid[0]) * normal[0] + (centre[1] - mid[1]) * normal[1];
+            [mid[0] + t * normal[0], mid[1] + t * normal[1]]
+        };
+        let rounded = [aim[0].round() as i64, aim[1].round() as i64];
+        let mut candidates: Vec<[i64; 2]> = (-1..=1)
+            .flat_map(|du| (-1..=1).map(move |dv| [rounded[0] + du, rounded[1] + dv]))
+            .collect();
+        let distance = |c: &[i64; 2]| (c[0] as f64 - aim[0]).hypot(c[1] as f64 - aim[1]);
+        candidates.sort_by(|a, b| distance(a).total_cmp(&distance(b)));
+        let radius_sq = |p: [i64; 2], c: [i64; 2]| {
+            let (du, dv) = ((p[0] - c[0]) as i128, (p[1] - c[1]) as i128);
+            du * du + dv * dv
+        };
+        candidates.into_iter().find(|&c| {
+            let (a, b) = (radius_sq(from, c), radius_sq(to, c));
+            a > 0 && b > 0 && radii_within_tolerance(a, b)
+        })
+    }
+
+    fn step_arc(
+        &mut self,
+        m: &MoveMm,
+        from: Point,
+        to: Point,
+        note: &mut String,
+    ) -> Result<(&'static str, &'static str, Option<ArcInfo>), Error> {
+        use std::fmt::Write;
+        let arc = m.arc.as_ref().expect("an arc move");
+        let [u, v, n] = arc.plane.axes();
+        let spm = self.settings.machine.steps_per_mm();
+        let (un, vn) = (AXIS_NAMES[u].to_uppercase(), AXIS_NAMES[v].to_uppercase());
+        if spm[u] != spm[v] {
+            return Err(Error::at(
+                m.line,
+                m.column,
+                format!(
+                    "{} in the {}: {un} and {vn} have different steps per mm ({} and {}), so this circle in mm is an ellipse in steps, which voxpath's arc algorithms do not step; give {un} and {vn} the same steps per mm",
+                    m.motion.code(),
+                    arc.plane.describe(),
+                    spm[u],
+                    spm[v]
+                ),
+            ));
+        }
+        let helical = from.get(n) != to.get(n);
+        let _ = write!(
+            note,
+            ", {} {}in the {}, centre {} mm, r = {} mm, sweep {:.3}°{}",
+            arc.turn.describe(),
+            if helical { "helix " } else { "arc " },
+            arc.plane.describe(),
+            tuple(&[arc.centre_mm[u], arc.centre_mm[v]]),
+            (arc.radius_mm * 1e6).round() / 1e6,
+            arc.sweep_rad.to_degrees(),
+            match arc.extra_turns {
+                0 => String::new(),
+                t => format!(" (P adds {t} full turn{})", if t == 1 { "" } else { "s" }),
+            }
+        );
+        let mut info = ArcInfo {
+            plane: arc.plane.label(),
+            direction: match arc.turn {
+                Turn::Clockwise => "cw",
+                Turn::CounterClockwise => "ccw",
+            },
+            format: match arc.format {
+                ArcFormat::Centre => "ijk",
+                ArcFormat::Radius => "r",
+            },
+            center_mm: arc.centre_mm,
+            radius_mm: arc.radius_mm,
+            sweep_deg: arc.sweep_rad.to_degrees(),
+            extra_turns: arc.extra_turns,
+            center_steps: None,
+        };
+        let kind = if helical { "helix" } else { "arc" };
+        let centre_real = [arc.centre_mm[u] * spm[u], arc.centre_mm[v] * spm[v]];
+        let grid = Self::grid_centre(
+            [from.get(u), from.get(v)],
+            [to.get(u), to.get(v)],
+            centre_real,
+        );
+        let Some(c) = grid else {
+            let why = "its radius is too small for a centre on the step grid";
+            let line = self.step_as_line(m, from, to, note, why)?;
+            return Ok((kind, line, Some(info)));
+        };
+        let mut centre = from;
+        centre.coords_mut()[u] = c[0];
+        centre.coords_mut()[v] = c[1];
+        info.center_steps = Some(centre.coords().try_into().expect("3 axes"));
+        let rounded = [centre_real[0].round() as i64, centre_real[1].round() as i64];
+        if c != rounded {
+            let _ = write!(
+                note,
+                "; centre moved to {centre} steps ({:.2} steps from the programmed centre) so the rounded start and end are within 1 step of one radius",
+                (c[0] as f64 - centre_real[0]).hypot(c[1] as f64 - centre_real[1])
+            );
+        }
+        let mut request = self.line_request("", from, to);
+        request.set("center", Value::from(centre.coords()));
+        request.set("dir", Value::from(info.direction));
+        request.set("plane", Value::from(info.plane));
+        let place = |e: Error| Error::at(m.line, m.column, format!("{}", e));
+        let local = ArcSpec::parse(&request, true)
+            .map_err(place)?
+            .local_sweep_rad();
+        // Extra turns on the grid: those that bring the grid sweep nearest
+        // the programmed one.
+        let turns = ((arc.sweep_rad.abs() - local) / TAU).round();
+        if turns < 0.0 {
+            let why = "on the grid it turns less than one step";
+            let line = self.step_as_line(m, from, to, note, why)?;
+            return Ok((kind, line, Some(info)));
+        }
+        request.set("turns", Value::from(turns as u64));
+        let segments = self.settings.arc_algorithm == "arc-segments";
+        let algorithm = if helical {
+            request.set(
+                "mode",
+                Value::from(if segments { "segments" } else { "saleem" }),
+            );
+            "helix"
+        } else {
+            self.settings.arc_algorithm
+        };
+        if segments {
+            request.set("lineAlgorithm", Value::from(self.settings.line_algorithm));
+        }
+        request.algorithm = algorithm.to_string();
+        note.push('.');
+        self.append(m, request, note)?;
+        Ok((kind, algorithm, Some(info)))
+    }
+
+    /// Steps an arc as a straight line, saying `why` in its note; returns
+    /// the line algorithm.
+    fn step_as_line(
+        &mut self,
+        m: &MoveMm,
+        from: Point,
+        to: Point,
+        note: &mut String,
+        why: &str,
+    ) -> Result<&'static str, Error> {
+        note.push_str(&format!(
+            "; {why}, so it is stepped as a straight line to its end."
+        ));
+        let line = self.settings.line_algorithm;
+        self.append(m, self.line_request(line, from, to), note)?;
+        Ok(line)
+    }
+
+    /// Finishes the trace (the moves run so far) and the program's record.
+    pub fn finish(self) -> Program {
+        let trace = self.builder.finish(&format!(
+            "gcode ({}, {})",
+            self.settings.line_algorithm, self.settings.arc_algorithm
+        ));
+        let info = ProgramInfo {
+            lines: self.lines,
+            steps: trace.steps(),
+            steps_per_mm: self.settings.machine.steps_per_mm(),
+            line_algorithm: self.settings.line_algorithm,
+            arc_algorithm: self.settings.arc_algorithm,
+            moves: self.moves,
+            pulses: trace.metrics().pulses_by_axis.clone(),
+            warnings: self.warnings,
+            warnings_omitted: self.warnings_omitted,
+            errors: self.errors,
+            stopped_at_line: self.stopped_at_line,
+        };
+        Program { trace, info }
+    }
+}
+
+/// Runs a whole program.
+pub fn run(source: &str, settings: Settings) -> Program {
+    Runner::new(source.to_string(), settings).run_to_end()
+}

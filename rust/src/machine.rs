@@ -1,0 +1,325 @@
+//! The machine: how many motor steps make a millimetre on each axis, and the
+//! step/direction signals a trace sends to the motor drivers.
+//!
+//! Resolution (Wang et al. 2020, section 3.3): a motor of step angle θ
+//! degrees, driven with s microsteps per full step, takes p_m = 360 / θ · s
+//! pulses per revolution; on a lead screw of pitch P mm per revolution one
+//! pulse moves the axis L = P / p_m mm. So steps per mm = 1 / L = p_m / P.
+//! A 1.8° motor at 8 microsteps on a 2 mm screw: p_m = 200 · 8 = 1600,
+//! L = 0.00125 mm, 800 steps per mm.
+//!
+//! Conversion: a position in mm becomes round(mm × steps/mm) steps, halves
+//! away from zero (the f64 product decides what is a half). Every target is
+//! converted from its absolute position, never as a sum of converted
+//! increments, so a thousand moves of 0.01 mm at 80 steps/mm end at 800
+//! steps (10 mm), not at 1000 (each 0.8 rounded up to 1).
+//!
+//! Step and direction: a driver takes a STEP pulse per step and a DIR level
+//! saying which way. In voxpath's tick model one tick is one step of the
+//! trace (step index k): it carries a STEP pulse on every axis that moves in
+//! step k, with DIR already at that move's direction (a driver needs DIR
+//! settled before the STEP edge). An axis that does not move keeps its last
+//! DIR level; before its first move DIR is at the positive level. Ticks are
+//! not time: how long a tick lasts depends on the feed, which voxpath does
+//! not model.
+
+use crate::error::Error;
+use crate::grid::{COORD_LIMIT, MAX_AXES};
+use crate::trace::Trace;
+use serde_json::Value;
+
+/// The axes a machine has: X, Y and Z.
+pub const MACHINE_AXES: usize = 3;
+
+/// Millimetres per inch (G20).
+pub const MM_PER_INCH: f64 = 25.4;
+
+/// Steps per mm of each axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Machine {
+    steps_per_mm: [f64; MACHINE_AXES],
+}
+
+/// A number, or one number per axis (x, y, z), from a JSON setting.
+fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES], Error> {
+    let number = |v: &Value| {
+        v.as_f64()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| Error::field(field, format!("expected a number, got {v}")))
+    };
+    match value {
+        Value::Array(items) if items.len() == MACHINE_AXES => {
+            let mut out = [0.0; MACHINE_AXES];
+            for (axis, item) in items.iter().enumerate() {
+                out[axis] = number(item)?;
+            }
+            Ok(out)
+        }
+        Value::Array(items) => Err(Error::field(
+            field,
+            format!(
+                "expected one number or {MACHINE_AXES} (x, y, z), got {}",
+                items.len()
+            ),
+        )),
+        v => Ok([number(v)?; MACHINE_AXES]),
+    }
+}
+
+impl Machine {
+    /// A machine with the given steps per mm (each finite and > 0).
+    pub fn new(steps_per_mm: [f64; MACHINE_AXES]) -> Result<Machine, Error> {
+        for (axis, &v) in steps_per_mm.iter().enumerate() {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::field(
+                    "stepsPerMm",
+                    format!(
+                        "{} must be more than 0 steps per mm, got {v}",
+                        crate::grid::AXIS_NAMES[axis]
+                    ),
+                ));
+            }
+        }
+        Ok(Machine { steps_per_mm })
+    }
+
+    /// Wang section 3.3: steps per mm = (360 / θ · s) / P, per axis.
+    pub fn from_drive(
+        step_angle_deg: [f64; MACHINE_AXES],
+        microsteps: [f64; MACHINE_AXES],
+        pitch_mm: [f64; MACHINE_AXES],
+    ) -> Result<Machine, Error> {
+        let mut steps_per_mm = [0.0; MACHINE_AXES];
+        for axis in 0..MACHINE_AXES {
+            let name = crate::grid::AXIS_NAMES[axis];
+            let (theta, s, p) = (step_angle_deg[axis], microsteps[axis], pitch_mm[axis]);
+            if !(theta > 0.0 && theta <= 360.0) {
+                return Err(Error::field(
+                    "stepAngle",
+                    format!("{name} must be more than 0 and at most 360 degrees, got {theta}"),
+                ));
+            }
+            if !(s >= 1.0 && s.fract() == 0.0) {
+                return Err(Error::field(
+                    "microsteps",
+                    format!("{name} must be a whole number of at least 1, got {s}"),
+                ));
+            }
+            if p <= 0.0 {
+                return Err(Error::field(
+                    "pitch",
+                    format!("{name} must be more than 0 mm per revolution, got {p}"),
+                ));
+            }
+            // p_m = 360 / θ · s pulses per revolution; L = P / p_m mm per pulse.
+            let pulses_per_rev = 360.0 / theta * s;
+            steps_per_mm[axis] = pulses_per_rev / p;
+        }
+        Machine::new(steps_per_mm)
+    }
+
+    /// Reads `stepsPerMm`, or `stepAngle`, `microsteps` and `pitch`, from a
+    /// settings object; each a number or one per axis.
+    pub fn from_settings(settings: &serde_json::Map<String, Value>) -> Result<Machine, Error> {
+        let drive = ["stepAngle", "microsteps", "pitch"];
+        let given: Vec<&str> = drive
+            .iter()
+            .copied()
+            .filter(|k| settings.contains_key(*k))
+            .collect();
+        match (settings.get("stepsPerMm"), given.len()) {
+            (Some(_), n) if n > 0 => Err(Error::field(
+                given[0],
+                "give stepsPerMm or stepAngle, microsteps and pitch, not both",
+            )),
+            (Some(v), _) => Machine::new(per_axis("stepsPerMm", v)?),
+            (None, 3) => Machine::from_drive(
+                per_axis("stepAngle", &settings["stepAngle"])?,
+                per_axis("microsteps", &settings["microsteps"])?,
+                per_axis("pitch", &settings["pitch"])?,
+            ),
+            (None, 0) => Err(Error::field(
+                "stepsPerMm",
+                "missing: give steps per mm (80, or [80, 80, 400] for x, y, z), or stepAngle, microsteps and pitch",
+            )),
+            (None, _) => {
+                let missing = drive
+                    .iter()
+                    .find(|k| !given.contains(k))
+                    .expect("fewer than 3 given");
+                Err(Error::field(
+                    missing,
+                    "missing: stepAngle, microsteps and pitch go together (Wang section 3.3)",
+                ))
+            }
+        }
+    }
+
+    pub fn steps_per_mm(&self) -> [f64; MACHINE_AXES] {
+        self.steps_per_mm
+    }
+
+    /// The position in steps nearest `mm` on `axis`: round(mm × steps/mm),
+    /// halves away from zero. None beyond ±2^30 steps (the grid's limit).
+    pub fn to_steps(&self, axis: usize, mm: f64) -> Option<i64> {
+        let steps = (mm * self.steps_per_mm[axis]).round();
+        (steps.abs() <= COORD_LIMIT as f64).then_some(steps as i64)
+    }
+
+    /// The position of a step count in mm.
+    pub fn to_mm(&self, axis: usize, steps: i64) -> f64 {
+        steps as f64 / self.steps_per_mm[axis]
+    }
+}
+
+/// DIR levels over step indices `from..to`: one byte per step, bit `axis`
+/// set when that axis's DIR line is at its negative level during the step
+/// (see the module comment for the tick model).
+///
+/// The levels before `from` are found by scanning back from `from` until
+/// every axis has been seen moving: fast when all axes move often, at worst
+/// one pass over the steps before `from` (2 bytes each).
+pub fn direction_levels(trace: &Trace, from: u64, to: u64) -> Vec<u8> {
+    let dims = trace.dims();
+    let mut level = 0u8;
+    let mut unknown: u8 = ((1u16 << dims) - 1) as u8;
+    for step in trace.step_range(0, from).iter().rev() {
+        if unknown == 0 {
+            break;
+        }
+        let moving = step.moving_axes() & unknown;
+        // Bits 8.. of a packed step are the negative directions.
+        level |= moving & (step.0 >> 8) as u8;
+        unknown &= !moving;
+    }
+    let mut out = Vec::with_capacity((to - from) as usize);
+    for step in trace.step_range(from, to) {
+        let moving = step.moving_axes();
+        level = (level & !moving) | (moving & (step.0 >> 8) as u8);
+        out.push(level);
+    }
+    out
+}
+
+const _: () = assert!(MACHINE_AXES <= MAX_AXES);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::grid::{Point, Step};
+    use crate::ideal::IdealPath;
+    use crate::trace::{Column, Decision, Stepper, TraceBuilder};
+    use serde_json::json;
+
+    #[test]
+    fn wang_section_3_3_gives_steps_per_mm() {
+        // 1.8° at 8 microsteps: p_m = 360 / 1.8 · 8 = 1600 pulses per turn;
+        // a 2 mm screw: L = 2 / 1600 = 0.00125 mm, so 800 steps per mm.
+        let m = Machine::from_drive([1.8; 3], [8.0; 3], [2.0; 3]).unwrap();
+        assert_eq!(m.steps_per_mm(), [800.0; 3]);
+        // 0.9° full steps on an 8 mm screw: 400 / 8 = 50.
+        let m = Machine::from_drive([1.8, 1.8, 0.9], [16.0, 16.0, 1.0], [40.0, 40.0, 8.0]).unwrap();
+        assert_eq!(m.steps_per_mm(), [80.0, 80.0, 50.0]);
+    }
+
+    #[test]
+    fn settings_name_the_field_at_fault() {
+        let e = |v: serde_json::Value| {
+            Machine::from_settings(v.as_object().unwrap())
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            e(json!({"stepsPerMm": [80, 80]})),
+            "stepsPerMm: expected one number or 3 (x, y, z), got 2"
+        );
+        assert_eq!(
+            e(json!({"stepsPerMm": [80, 0, 400]})),
+            "stepsPerMm: y must be more than 0 steps per mm, got 0"
+        );
+        assert_eq!(
+            e(json!({"stepAngle": 1.8, "microsteps": 8})),
+            "pitch: missing: stepAngle, microsteps and pitch go together (Wang section 3.3)"
+        );
+        assert_eq!(
+            e(json!({"stepAngle": 1.8, "microsteps": 2.5, "pitch": 2})),
+            "microsteps: x must be a whole number of at least 1, got 2.5"
+        );
+        assert_eq!(
+            e(json!({"stepsPerMm": 80, "pitch": 2})),
+            "pitch: give stepsPerMm or stepAngle, microsteps and pitch, not both"
+        );
+        assert!(e(json!({})).starts_with("stepsPerMm: missing"));
+        let m = Machine::from_settings(json!({"stepsPerMm": 80}).as_object().unwrap()).unwrap();
+        assert_eq!(m.steps_per_mm(), [80.0; 3]);
+    }
+
+    #[test]
+    fn rounding_is_half_away_from_zero() {
+        // 0.5 mm at 3 steps/mm is exactly 1.5 steps in binary floating point.
+        let m = Machine::new([3.0, 3.0, 3.0]).unwrap();
+        assert_eq!(m.to_steps(0, 0.5), Some(2));
+        assert_eq!(m.to_steps(0, -0.5), Some(-2));
+        assert_eq!(m.to_steps(0, 0.4), Some(1));
+        assert_eq!(m.to_steps(0, 1e9), None);
+    }
+
+    /// A stepper that replays a fixed list of steps.
+    #[derive(Clone)]
+    struct Script(Vec<Step>);
+
+    #[derive(Clone, Copy)]
+    struct NoWhy;
+
+    impl Decision for NoWhy {
+        const COLUMNS: &'static [Column] = &[];
+        fn write(&self, _: &mut [f64]) {}
+        fn explain(&self, _: &Point, _: Step) -> String {
+            String::new()
+        }
+    }
+
+    impl Stepper for Script {
+        type Why = NoWhy;
+        fn next_step(&mut self) -> Option<(Step, NoWhy)> {
+            (!self.0.is_empty()).then(|| (self.0.remove(0), NoWhy))
+        }
+        fn remaining_steps(&self) -> Option<u64> {
+            Some(self.0.len() as u64)
+        }
+        fn setup_note(&self) -> String {
+            String::new()
+        }
+    }
+
+    #[test]
+    fn direction_levels_hold_between_moves() {
+        let steps = vec![
+            Step::along(0, 1),
+            Step::along(1, -1),
+            Step::along(0, -1).with(2, 1),
+            Step::along(1, 1),
+            Step::NONE.with(2, -1),
+        ];
+        let origin = Point::new(&[0, 0, 0]);
+        let mut b = TraceBuilder::new(origin, 100);
+        b.run(
+            Script(steps),
+            IdealPath::Line {
+                from: origin,
+                to: origin,
+            },
+        )
+        .unwrap();
+        let t = b.finish("script");
+        // Bit per axis, set = negative. x: +, +, -, -, -; y: +(never moved),
+        // -, -, +, +; z: +, +, +, +, -.
+        assert_eq!(
+            direction_levels(&t, 0, 5),
+            vec![0b000, 0b010, 0b011, 0b001, 0b101]
+        );
+        // A range that starts later finds the same levels by scanning back.
+        assert_eq!(direction_levels(&t, 3, 5), vec![0b001, 0b101]);
+        assert_eq!(direction_levels(&t, 5, 5), Vec::<u8>::new());
+    }
+}

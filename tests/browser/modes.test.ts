@@ -1,0 +1,311 @@
+// Each mode of the page in headless Chromium: it loads, plays, steps,
+// compares, restores a permalink exactly and runs embedded, with the
+// screenshots checked for content and the things a regression would break
+// checked directly (cells highlighted, the G-code line marked, the timing
+// diagram redrawn). Expected values come from the sources, not the page:
+// - regions vs greedy on (0,0,0)->(10,7,6): regions steps to (1,1,1) first
+//   (Wang eq. 10: M_1 = 4 > 0, N_1 = 2 > 0, region d), greedy to (1,0,0)
+//   (the blog's rule moves one axis per step), so they part at point 1;
+// - the square sample at 80 steps/mm: each 20 mm side is 1600 steps, so
+//   steps 1600..3199 come from line 5 (Y20) and line 6 (X0) makes 1600 steps.
+import type { Page } from 'playwright-core';
+import { PNG } from 'pngjs';
+import { afterAll, describe, expect, it } from 'vitest';
+import { closeAll, openPage, screenshot } from './harness.js';
+
+afterAll(closeAll);
+
+function text(page: Page, testId: string): Promise<string> {
+  return page.getByTestId(testId).innerText();
+}
+
+async function steps(page: Page, count: number): Promise<void> {
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${count}$`) }).waitFor();
+}
+
+/** Waits until the inspector shows the replayed values of the current point. */
+async function inspected(page: Page): Promise<void> {
+  await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+}
+
+/** A PNG of the first element matching `selector`, as bytes. */
+function shot(page: Page, selector: string): Promise<Buffer> {
+  return page.locator(selector).first().screenshot();
+}
+
+describe('trace mode', () => {
+  it('picks an algorithm with its citation and errata, and opens a 2D algorithm in the 2D view', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await steps(page, 10);
+    expect(await text(page, 'algorithm-citation')).toMatch(/Wang.*2020/);
+    expect(await page.getByTestId('algorithm-errata').locator('li').count()).toBeGreaterThan(0);
+    expect(await page.getByTestId('scene-canvas').getAttribute('data-projection')).toBe('3d');
+
+    await page.getByTestId('algorithm').selectOption('greedy');
+    // The catalogue's example for greedy, (0,0)->(8,3): 11 single-axis steps.
+    await steps(page, 11);
+    expect(await page.getByTestId('input-to-x').inputValue()).toBe('8');
+    expect(await page.getByTestId('input-to-z').count()).toBe(0);
+    expect(await page.getByTestId('scene-canvas').getAttribute('data-projection')).toBe('2d');
+    expect(await text(page, 'algorithm-citation')).toMatch(/2009/);
+    await page.waitForURL(/algorithm=greedy/);
+    const stats = await screenshot(page, 'greedy-2d', '[data-testid=scene-canvas]');
+    expect(stats.differingFraction).toBeGreaterThan(0.05);
+
+    // 3 axes are offered too, and the view goes back to 3D.
+    await page.getByTestId('axes').selectOption('3');
+    expect(await page.getByTestId('input-to-z').inputValue()).toBe('0');
+    await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-projection')).toBe('3d');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("draws the exit face with the core's region and corner, Bresenham's error bars, and charts tied to the step", async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6&step=3');
+    const { page } = p;
+    await steps(page, 10);
+    await inspected(page);
+    // Step 3: M = 12 > 0, N = 6 > 0: region d, corner D.
+    const figure = page.getByTestId('decision-figure');
+    await expect.poll(() => figure.locator('.face-region.chosen + text').textContent()).toBe('d');
+    expect(await figure.locator('.face-corner.chosen + text').textContent()).toBe('D');
+
+    const charts = page.getByTestId('charts').locator('canvas');
+    await expect.poll(() => charts.count()).toBe(2);
+    const before = await shot(page, '[data-testid=charts] .chart:nth-child(2) canvas');
+    await page.getByTestId('next').click();
+    await expect.poll(async () => (await shot(page, '[data-testid=charts] .chart:nth-child(2) canvas')).equals(before)).toBe(false);
+
+    await page.getByTestId('algorithm').selectOption('bresenham2d');
+    await steps(page, 10);
+    await page.getByTestId('next').click();
+    await inspected(page);
+    await expect.poll(() => figure.locator('.bar').count()).toBe(1);
+    expect(await figure.locator('.bar-threshold-label').textContent()).toMatch(/threshold 10/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('moves a focused endpoint handle with the arrow keys, re-tracing the move', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await steps(page, 10);
+    await page.getByTestId('handle-to').focus();
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowRight');
+    // The arrows moved the handle, not the step.
+    expect(await text(page, 'step-counter')).toBe('Step 0 of 10');
+    await steps(page, 12);
+    expect(await page.getByTestId('input-to-x').inputValue()).toBe('12');
+    expect(await page.getByTestId('handle-to').getAttribute('aria-label')).toMatch(/to \(12, 7, 6\)/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('jumps to a typed step, opens the keyboard help with ?, and exports CSV', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await steps(page, 10);
+    await page.getByTestId('jump-input').fill('7');
+    await page.getByTestId('jump-input').press('Enter');
+    expect(await text(page, 'step-counter')).toBe('Step 7 of 10');
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('?');
+    await expect.poll(() => page.getByTestId('help').isVisible()).toBe(true);
+    expect(await text(page, 'help')).toMatch(/Play or pause/);
+    await page.keyboard.press('Escape');
+    await expect.poll(() => page.getByTestId('help').isVisible()).toBe(false);
+
+    const downloading = page.waitForEvent('download');
+    await page.getByTestId('export-csv').click();
+    const download = await downloading;
+    const csv = await new Response((await download.createReadStream()) as unknown as ReadableStream).text();
+    expect(csv.split('\n')[0]).toBe('k,x,y,z,M,N,region,corner,tie,deviation');
+    expect(csv.split('\n')[4]).toMatch(/^3,3,2,2,12,6,d,D,0,0\.2205/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('restores a permalink exactly: algorithm, move, step, camera and view', async () => {
+    const p = await openPage('?algorithm=bresenham3d&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await steps(page, 10);
+    // Orbit and zoom with the keyboard on the focused view, then step.
+    await page.getByTestId('scene-canvas').focus();
+    for (const key of ['Shift+ArrowLeft', 'Shift+ArrowLeft', 'Shift+ArrowUp', '+']) await page.keyboard.press(key);
+    for (let i = 0; i < 4; i++) await page.getByTestId('next').click();
+    await page.waitForURL(/camera=.*step=4|step=4.*camera=/);
+    await inspected(page);
+    const link = page.url();
+    const original = await shot(page, '[data-testid=scene-canvas]');
+
+    const q = await openPage(new URL(link).search);
+    await steps(q.page, 10);
+    await inspected(q.page);
+    expect(await text(q.page, 'step-counter')).toBe('Step 4 of 10');
+    expect(await q.page.getByTestId('algorithm').inputValue()).toBe('bresenham3d');
+    const restored = await shot(q.page, '[data-testid=scene-canvas]');
+    // The same picture: the camera came back exactly (a pixel of antialiasing may differ).
+    const pa = PNG.sync.read(original).data;
+    const pb = PNG.sync.read(restored).data;
+    expect(pb.length).toBe(pa.length);
+    let differing = 0;
+    for (let i = 0; i < pa.length; i += 4) if (Math.abs(pa[i]! - pb[i]!) > 8 || Math.abs(pa[i + 1]! - pb[i + 1]!) > 8) differing++;
+    expect(differing / (pa.length / 4)).toBeLessThan(0.002);
+    // The link says what the page shows, unchanged by opening it.
+    await q.page.waitForTimeout(600);
+    expect(new URL(q.page.url()).searchParams.get('camera')).toBe(new URL(link).searchParams.get('camera'));
+    expect(p.problems()).toEqual([]);
+    expect(q.problems()).toEqual([]);
+    await p.close();
+    await q.close();
+  });
+});
+
+describe('compare mode', () => {
+  it('overlays regions and greedy, highlights the cells they do not share, and says why they part', async () => {
+    const p = await openPage('?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await steps(page, 23);
+    const table = page.getByTestId('metrics-table');
+    await table.waitFor();
+    expect(await table.innerText()).toMatch(/steps\s+10\s+23/);
+    const first = page.getByTestId('first-difference');
+    expect(await first.innerText()).toMatch(/part at point 1: regions goes to \(1, 1, 1\), greedy to \(1, 0, 0\)/);
+    // The core's own sentences for each side's step.
+    expect(await first.innerText()).toMatch(/M = 4 > 0 and N = 2 > 0, so the line leaves the cell through region d/);
+    expect(Number(await page.getByTestId('scene-canvas').getAttribute('data-highlighted'))).toBeGreaterThan(0);
+    await page.getByTestId('go-first-difference').click();
+    expect(await text(page, 'step-counter')).toBe('Step 1 of 23');
+
+    // Playing runs both to the end of the longer one.
+    await page.getByTestId('speed').selectOption('64');
+    await page.getByTestId('play').click();
+    await steps(page, 23);
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 23 of 23' }).waitFor();
+    const stats = await screenshot(page, 'compare-overlay', '[data-testid=scene-canvas]');
+    expect(stats.differingFraction).toBeGreaterThan(0.05);
+
+    await page.getByTestId('layout-side').check();
+    await expect.poll(() => page.locator('[data-testid=scene-canvas]').count()).toBe(2);
+    await page.waitForURL(/layout=side/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('compares direct arc stepping with chords: steps and largest radial error', async () => {
+    const p = await openPage('?mode=compare&algorithm=circle&other=arc-segments&from=20,0,0&to=-20,0,0&center=0,0,0&segmentLength=8');
+    const { page } = p;
+    await page.getByTestId('metrics-table').waitFor();
+    const rows = await page.getByTestId('metrics-table').innerText();
+    expect(rows).toMatch(/circle\s+arc-segments/);
+    expect(rows).toMatch(/largest deviation/);
+    expect(Number(await page.getByTestId('scene-canvas').getAttribute('data-highlighted'))).toBeGreaterThan(0);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+describe('G-code mode', () => {
+  it('marks the line of the current step, highlights the steps of a picked line, and redraws the timing diagram', async () => {
+    const p = await openPage('?mode=gcode&stepsPerMm=80');
+    const { page } = p;
+    await steps(page, 6400);
+    await page.getByTestId('jump-input').fill('2000');
+    await page.getByTestId('jump-input').press('Enter');
+    await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('5');
+    await page.getByTestId('moves-table').locator('tr.current').filter({ hasText: 'G1' }).waitFor();
+
+    const timing = '[data-testid=timing] canvas';
+    await page.locator(timing).waitFor();
+    const before = await shot(page, timing);
+    await page.getByTestId('next').click();
+    await expect.poll(async () => (await shot(page, timing)).equals(before)).toBe(false);
+
+    // Put the cursor on line 6 (X0): its 1600 steps light up and the step goes to their end.
+    const editor = page.getByTestId('gcode-text');
+    await editor.focus();
+    await editor.evaluate((e: HTMLTextAreaElement) => {
+      const offset = e.value.split('\n').slice(0, 5).join('\n').length + 1;
+      e.setSelectionRange(offset, offset);
+    });
+    await page.keyboard.press('End');
+    await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('1600');
+    await expect.poll(() => text(page, 'step-counter')).toBe('Step 4800 of 6400');
+    expect(await page.getByTestId('gcode-picked-line').getAttribute('data-line')).toBe('6');
+    const stats = await screenshot(page, 'gcode-square', '[data-testid=scene-canvas]');
+    expect(stats.differingFraction).toBeGreaterThan(0.05);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('keeps an edited program over a reload, and loads a sample', async () => {
+    const p = await openPage('?mode=gcode');
+    const { page } = p;
+    await steps(page, 6400);
+    await page.getByTestId('gcode-text').fill('G21 G90\nG1 X1 Y0.5 F100\n');
+    await steps(page, 80);
+    await page.waitForURL(/gcode=G21/);
+    await page.reload();
+    await steps(page, 80);
+    expect(await page.getByTestId('gcode-text').inputValue()).toBe('G21 G90\nG1 X1 Y0.5 F100\n');
+    await page.getByTestId('sample').selectOption('helix.gcode');
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+describe('experiment mode', () => {
+  it("shows Wang's random lines: each line, the spread beside Figure 9, and the erratum", async () => {
+    const p = await openPage('?mode=experiment&algorithm=regions&count=100&seed=1');
+    const { page } = p;
+    const spread = page.getByTestId('spread-table');
+    await spread.waitFor();
+    // Figure 9 as printed: delta_(Mean-Max) 0.4119, delta_(Max-Mean) 0.6472.
+    expect(await spread.innerText()).toMatch(/0\.4119/);
+    expect(await spread.innerText()).toMatch(/0\.6472/);
+    expect(await page.getByTestId('lines-table').locator('tbody tr').count()).toBe(100);
+    expect(await text(page, 'experiment-view')).toMatch(/Erratum: Figure 9 gives 0\.7071/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+describe('embedded', () => {
+  it('shows only the view and the playback, filling its frame, and plays', async () => {
+    const p = await openPage('?embed=1&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.setViewportSize({ width: 640, height: 400 });
+    await steps(page, 10);
+    expect(await page.locator('.masthead').isVisible()).toBe(false);
+    expect(await page.locator('.inputs').isVisible()).toBe(false);
+    const box = (await page.getByTestId('scene-canvas').boundingBox())!;
+    expect(box.width).toBeGreaterThan(600);
+    expect(box.height).toBeGreaterThan(250);
+    await page.getByTestId('speed').selectOption('64');
+    await page.getByTestId('play').click();
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 10 of 10' }).waitFor();
+    const stats = await screenshot(page, 'embed', '[data-testid=scene-canvas]');
+    expect(stats.differingFraction).toBeGreaterThan(0.05);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('is usable in a 400-pixel-wide window', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.setViewportSize({ width: 400, height: 800 });
+    await steps(page, 10);
+    const box = (await page.getByTestId('scene-canvas').boundingBox())!;
+    expect(box.width).toBeGreaterThan(350);
+    const stats = await screenshot(page, 'narrow', '[data-testid=scene-canvas]');
+    expect(stats.differingFraction).toBeGreaterThan(0.05);
+    // Nothing is wider than the window.
+    expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(400);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -1,0 +1,151 @@
+// The page in headless Chromium, on Wang et al.'s worked example
+// (0,0,0)->(10,7,6). Expected values come from the paper's equations, not
+// from the page: eq. (10) gives M_1 = 2*7 - 10 = 4 and N_1 = 2*6 - 10 = 2,
+// and the recurrence eq. (8) then gives M = 4, -2, 12, 6, 0, ... and
+// N = 2, -6, 6, -2, 10, ...; M_3 = 12 > 0 and N_3 = 6 > 0 put the line in
+// region d, and the third step goes to D = (3, 2, 2) (as Liu's Table 1).
+//
+// The README screenshot is the 'readme' one this file saves in
+// tests/browser/__screenshots__/actual/; refresh it with
+//   cp tests/browser/__screenshots__/actual/readme.png docs/screenshot.png
+import type { Page } from 'playwright-core';
+import { afterAll, describe, expect, it } from 'vitest';
+import { closeAll, openPage, screenshot, siteUrl } from './harness.js';
+
+afterAll(closeAll);
+
+const EXAMPLE = '?from=0,0,0&to=10,7,6';
+/** The 3D view's clear colour (scene/palette.ts), RGB. */
+const BACKGROUND = [0xf4, 0xf4, 0xf0];
+
+function text(page: Page, testId: string): Promise<string> {
+  return page.getByTestId(testId).innerText();
+}
+
+/** Waits until the trace of `steps` steps is on screen and the inspector has its replayed values. */
+async function traced(page: Page, steps: number): Promise<void> {
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${steps}$`) }).waitFor();
+  await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+}
+
+/** The inspector's value cell for a decision column. */
+async function decision(page: Page, column: string): Promise<string> {
+  return text(page, `inspector-value-${column}`);
+}
+
+describe('the page', () => {
+  it('steps forward three times and shows the decision of eq. (8) with a drawn view', async () => {
+    const p = await openPage(EXAMPLE);
+    const { page } = p;
+    await traced(page, 10);
+    expect(await text(page, 'step-counter')).toBe('Step 0 of 10');
+    expect(await text(page, 'inspector-explanation')).toMatch(/no step has been decided yet/);
+
+    for (let i = 0; i < 3; i++) await page.getByTestId('next').click();
+    expect(await text(page, 'step-counter')).toBe('Step 3 of 10');
+    await expect.poll(() => decision(page, 'M')).toBe('12');
+    expect(await decision(page, 'N')).toBe('6');
+    expect(await decision(page, 'region')).toBe('d');
+    expect(await decision(page, 'corner')).toBe('D');
+    expect(await text(page, 'inspector-point')).toBe('(3, 2, 2)');
+    // Distance of (3,2,2) from the line, Liu's Table 1 as printed by Wang.
+    expect(await text(page, 'inspector-deviation')).toBe('0.220564 grid units');
+    expect(await text(page, 'inspector-explanation')).toMatch(/M = 12 > 0 and N = 6 > 0.*region d/);
+    expect(await text(page, 'segment-note')).toMatch(/M_1 = [^.]*= 2·7 - 10 = 4\./);
+
+    const stats = await screenshot(page, 'page-step-3', '[data-testid=scene-canvas]', { background: BACKGROUND, tolerance: 2 });
+    expect(stats.width).toBeGreaterThan(400);
+    expect(stats.differingFraction).toBeGreaterThan(0.05);
+    expect(stats.distinctColors).toBeGreaterThan(50);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('is driven by the keyboard: arrows, Home, End and Space', async () => {
+    const p = await openPage(EXAMPLE);
+    const { page } = p;
+    await traced(page, 10);
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowRight');
+    expect(await text(page, 'step-counter')).toBe('Step 2 of 10');
+    await page.keyboard.press('ArrowLeft');
+    expect(await text(page, 'step-counter')).toBe('Step 1 of 10');
+    await page.keyboard.press('End');
+    expect(await text(page, 'step-counter')).toBe('Step 10 of 10');
+    await page.keyboard.press('Home');
+    expect(await text(page, 'step-counter')).toBe('Step 0 of 10');
+    // Space plays from the start to the end at the chosen speed, then stops.
+    await page.getByTestId('speed').selectOption('64');
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('Space');
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 10 of 10' }).waitFor();
+    expect(await page.getByTestId('play').innerText()).toBe('Play');
+    // Arrow keys in a number field change the field, not the step.
+    await page.getByTestId('input-to-z').focus();
+    await page.keyboard.press('ArrowLeft');
+    expect(await text(page, 'step-counter')).toBe('Step 10 of 10');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("shows the core's error beside the field and stays usable", async () => {
+    const p = await openPage(EXAMPLE);
+    const { page } = p;
+    await traced(page, 10);
+    await page.getByTestId('input-to-x').fill('2000000000');
+    const error = page.getByTestId('error-to');
+    await error.filter({ hasText: 'outside' }).waitFor();
+    expect(await error.innerText()).toMatch(/x = 2000000000 is outside \+-2\^30/);
+    expect(await page.getByTestId('input-to-x').getAttribute('aria-invalid')).toBe('true');
+    expect(await text(page, 'error-from')).toBe('');
+    // The last valid path stays on screen and keeps responding.
+    await page.getByTestId('next').click();
+    expect(await text(page, 'step-counter')).toBe('Step 1 of 10');
+    await expect.poll(() => decision(page, 'M')).toBe('4');
+
+    await page.getByTestId('input-to-x').fill('12');
+    await traced(page, 12);
+    expect(await text(page, 'error-to')).toBe('');
+    expect(await page.getByTestId('input-to-x').getAttribute('aria-invalid')).toBe('false');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('keeps typed endpoints over a reload (URL) and a new visit (localStorage); a link wins', async () => {
+    const p = await openPage(EXAMPLE);
+    const { page } = p;
+    await traced(page, 10);
+    await page.getByTestId('input-to-y').fill('9');
+    await page.getByTestId('next').click();
+    await page.getByTestId('trace-status').filter({ hasText: 'to (10, 9, 6)' }).waitFor();
+    await page.waitForURL(/to=10,9,6/);
+
+    await page.reload();
+    await traced(page, 10);
+    expect(await page.getByTestId('input-to-y').inputValue()).toBe('9');
+    expect(await text(page, 'step-counter')).toBe('Step 1 of 10');
+
+    await page.goto(siteUrl());
+    await traced(page, 10);
+    expect(await page.getByTestId('input-to-y').inputValue()).toBe('9');
+
+    await page.goto(`${siteUrl()}?from=1,1,1&to=4,2,3`);
+    await traced(page, 3);
+    expect(await page.getByTestId('input-to-y').inputValue()).toBe('2');
+    expect(await page.getByTestId('input-from-x').inputValue()).toBe('1');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('saves the README screenshot: the example line at its tie, step 5 of 10', async () => {
+    const p = await openPage(`${EXAMPLE}&step=5`);
+    const { page } = p;
+    await traced(page, 10);
+    await expect.poll(() => decision(page, 'region')).toBe('g');
+    const stats = await screenshot(page, 'readme');
+    expect(stats).toMatchObject({ width: 1280, height: 720 });
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -1,0 +1,188 @@
+// G-code through the headless API (web/core, real wasm) and the CLI
+// (bin/voxpath.js). Expected numbers are worked by hand in the comments.
+import { spawnSync } from 'node:child_process';
+import { readFileSync, readdirSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+import { pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
+import type { GcodeProgress } from '../web/core/index.js';
+
+const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
+const SAMPLES = fileURLToPath(new URL('../public/samples/', import.meta.url));
+
+function voxpath(args: string[], input?: string) {
+  const r = spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8', input });
+  return { code: r.status, stdout: r.stdout, stderr: r.stderr };
+}
+
+// 1 mm squares at 2 steps/mm: each side is 2 steps along one axis.
+const SQUARE = '(square)\nG21 G90\nG1 X1 Y0 F600\nY1\nX0\nY0\n';
+
+describe('runGcode', () => {
+  it('returns the moves with their lines and the trace of every step', async () => {
+    const p = await runGcode(SQUARE, { stepsPerMm: 2 });
+    expect(p.errors).toEqual([]);
+    expect(p.moves.map((m) => [m.line, m.firstStep, m.steps])).toEqual([
+      [3, 0, 2],
+      [4, 2, 2],
+      [5, 4, 2],
+      [6, 6, 2],
+    ]);
+    expect(p.moves[1]!.toMm).toEqual([1, 1, 0]);
+    expect(p.moves[1]!.toSteps).toEqual([2, 2, 0]);
+    expect(p.pulses).toEqual([4, 4, 0]);
+    expect(p.trace.steps).toBe(8);
+    expect(p.trace.point(4)).toEqual([2, 2, 0]);
+    expect(Array.from(p.lineByStepInRange(0, 8))).toEqual([3, 3, 4, 4, 5, 5, 6, 6]);
+    expect(Array.from(p.lineByStepInRange(3, 5))).toEqual([4, 5]);
+    expect([p.lineOfStep(0), p.lineOfStep(7), p.moveOfStep(5)]).toEqual([3, 6, 2]);
+    // Editor -> steps: line 4's move, and where the machine is when a line starts.
+    expect(p.moveAtLine(4)!.firstStep).toBe(2);
+    expect(p.moveAtLine(2)).toBeUndefined();
+    expect([p.pointBeforeLine(1), p.pointBeforeLine(5), p.pointBeforeLine(7)]).toEqual([0, 4, 8]);
+    expect(p.trace.segments[2]!.note).toMatch(/^Line 5, G1: /);
+    expect(() => p.lineOfStep(8)).toThrow(RangeError);
+    p.free();
+  });
+
+  it('skips moves of no steps when mapping steps to lines', async () => {
+    // Line 3 rounds to the start (0.1 mm at 2 steps/mm is 0.2 step).
+    const p = await runGcode('G1 X1 F1\nG1 X1.1\nG1 X2\n', { stepsPerMm: 2 });
+    expect(p.moves.map((m) => m.steps)).toEqual([2, 0, 2]);
+    expect(Array.from(p.lineByStepInRange(0, 4))).toEqual([1, 1, 3, 3]);
+    p.free();
+  });
+
+  it('reports errors with line and column and keeps the moves before them', async () => {
+    const p = await runGcode('G1 X1 F1\nG2 X9 Y0 R1\nG1 X0\n', { stepsPerMm: 2 });
+    expect(p.errors).toEqual([
+      { line: 2, column: 10, message: 'R arc cannot reach its end: the end is 8.0000 mm from the start, more than 2|R| = 2.0000 mm' },
+    ]);
+    expect(p.stoppedAtLine).toBe(2);
+    expect(p.trace.end).toEqual([2, 0, 0]);
+    p.free();
+  });
+
+  it('rejects bad settings naming the setting', async () => {
+    const error = await runGcode(SQUARE, { stepsPerMm: -1 }).catch((e: unknown) => e);
+    expect(error).toBeInstanceOf(VoxpathError);
+    expect((error as VoxpathError).field).toBe('stepsPerMm');
+    const unknown = await runGcode(SQUARE, { stepsPerMm: 1, lineAlgorithm: 'bresenham2d' }).catch((e: unknown) => e);
+    expect((unknown as VoxpathError).field).toBe('lineAlgorithm');
+  });
+
+  it('runs long programs in slices, reporting progress, and can be cancelled', async () => {
+    const lines = 3000;
+    const source = Array.from({ length: lines }, (_, i) => `G1 X${i % 2} Y${(i >> 1) % 2} F100`).join('\n');
+    const seen: GcodeProgress[] = [];
+    const p = await runGcode(source, { stepsPerMm: 4 }, { onProgress: (q) => seen.push(q), sliceMs: 0.01 });
+    expect(seen.length).toBeGreaterThan(2);
+    expect(seen.map((q) => q.linesDone)).toEqual([...seen.map((q) => q.linesDone)].sort((a, b) => a - b));
+    expect(seen.at(-1)).toEqual({ linesDone: lines, lines, moves: lines, steps: p.steps, done: true });
+    p.free();
+
+    const controller = new AbortController();
+    const cancelled = runGcode(source, { stepsPerMm: 4 }, { signal: controller.signal, sliceMs: 0.01, onProgress: () => controller.abort() });
+    await expect(cancelled).rejects.toMatchObject({ name: 'AbortError' });
+  });
+
+  it('gives step and direction trains that agree with the points', async () => {
+    // Out along x, back, then y: x's DIR goes negative on the way back and
+    // stays there while y moves.
+    const p = await runGcode('G1 X1 F1\nX0\nY-1\n', { stepsPerMm: 2 });
+    const trains = pulseTrains(p.trace, 0, p.steps);
+    expect(Array.from(trains[0]!.step)).toEqual([1, 1, 1, 1, 0, 0]);
+    expect(Array.from(trains[0]!.dir)).toEqual([1, 1, -1, -1, -1, -1]);
+    expect(Array.from(trains[1]!.step)).toEqual([0, 0, 0, 0, 1, 1]);
+    expect(Array.from(trains[1]!.dir)).toEqual([1, 1, 1, 1, -1, -1]);
+    // A range starting later knows the levels before it.
+    expect(Array.from(pulseTrains(p.trace, 5, 6)[0]!.dir)).toEqual([-1]);
+    const points = p.trace.points;
+    for (let k = 0; k < p.steps; k++) {
+      for (let axis = 0; axis < 3; axis++) {
+        const moved = points[3 * (k + 1) + axis]! - points[3 * k + axis]!;
+        expect(moved).toBe(trains[axis]!.step[k] ? trains[axis]!.dir[k] : 0);
+      }
+    }
+    p.free();
+  });
+});
+
+describe('sample programs', () => {
+  const index = JSON.parse(readFileSync(`${SAMPLES}index.json`, 'utf8')) as { file: string; title: string }[];
+
+  it('lists every sample file', () => {
+    const files = readdirSync(SAMPLES).filter((f) => f.endsWith('.gcode'));
+    expect(index.map((s) => s.file).sort()).toEqual(files.sort());
+  });
+
+  it.each(index.map((s) => [s.file]))('%s runs without errors or warnings, with both arc algorithms', async (file) => {
+    const source = readFileSync(`${SAMPLES}${file}`, 'utf8');
+    for (const arcAlgorithm of ['circle', 'arc-segments'] as const) {
+      const p = await runGcode(source, { stepsPerMm: 80, arcAlgorithm });
+      expect(p.errors).toEqual([]);
+      expect(p.warnings).toEqual([]);
+      expect(p.moves.length).toBeGreaterThan(0);
+      // Every move ends on its target rounded to steps.
+      for (const m of p.moves) expect(p.trace.point(m.firstStep + m.steps)).toEqual(m.toSteps);
+      p.free();
+    }
+  });
+});
+
+describe('voxpath gcode', () => {
+  const file = `${SAMPLES}square.gcode`;
+
+  it('prints points, lineByStep, moves, pulses, warnings and errors as JSON', () => {
+    const r = voxpath(['gcode', file, '--steps-per-mm', '80', '--format', 'json']);
+    expect(r.code).toBe(0);
+    const out = JSON.parse(r.stdout);
+    // A 20 mm square at 80 steps/mm: 4 sides of 1600 steps (the G0 to the origin takes none).
+    expect(out.steps).toBe(6400);
+    expect(out.points).toHaveLength(6401);
+    expect(out.points[1600]).toEqual([1600, 0, 0]);
+    expect(out.lineByStep).toHaveLength(6400);
+    expect([out.lineByStep[0], out.lineByStep[1600], out.lineByStep[6399]]).toEqual([4, 5, 7]);
+    expect(out.moves.map((m: { line: number }) => m.line)).toEqual([3, 4, 5, 6, 7]);
+    expect(out.pulses).toEqual([3200, 3200, 0]);
+    expect(out.warnings).toEqual([]);
+    expect(out.errors).toEqual([]);
+  });
+
+  it('reads standard input and takes the drive instead of steps per mm', () => {
+    // 1.8° at 16 microsteps on an 8 mm screw: 3200 / 8 = 400 steps/mm.
+    const r = voxpath(['gcode', '-', '--step-angle', '1.8', '--microsteps', '16', '--pitch', '8'], 'G1 X0.5 F1\n');
+    expect(r.code).toBe(0);
+    expect(JSON.parse(r.stdout).points.at(-1)).toEqual([200, 0, 0]);
+  });
+
+  it('prints what ran, then the errors, and exits 1', () => {
+    const r = voxpath(['gcode', '-', '--steps-per-mm', '2'], 'G1 X1 F1\nG1 X1..5\n');
+    expect(r.code).toBe(1);
+    const out = JSON.parse(r.stdout);
+    expect(out.points).toEqual([[0, 0, 0], [1, 0, 0], [2, 0, 0]]);
+    expect(out.errors).toEqual([{ line: 2, column: 7, message: expect.stringMatching(/^malformed number/) }]);
+    expect(r.stderr).toMatch(/^voxpath: -:2:7: malformed number/);
+  });
+
+  it('prints CSV rows per point and a table of moves', () => {
+    const csv = voxpath(['gcode', '-', '--steps-per-mm', '2', '--format', 'csv'], 'G1 X1 F1\n').stdout.trim().split('\n');
+    expect(csv).toEqual(['k,x,y,z,line,move', '0,0,0,0,,', '1,1,0,0,1,0', '2,2,0,0,1,0']);
+    const table = voxpath(['gcode', file, '--steps-per-mm', '80', '--format', 'table']).stdout;
+    expect(table).toContain('pulses per axis (x, y, z): 3200, 3200, 0');
+  });
+
+  it.each([
+    [['gcode'], /^voxpath: gcode needs a FILE/],
+    [['gcode', '/no/such/file.gcode', '--steps-per-mm', '80'], /^voxpath: cannot read \/no\/such\/file.gcode/],
+    [['gcode', file], /^voxpath: --steps-per-mm: missing/],
+    [['gcode', file, '--steps-per-mm', '80,80'], /^voxpath: --steps-per-mm: expected one number or three/],
+    [['gcode', file, '--steps-per-mm', '80', '--arc-algorithm', 'spline'], /^voxpath: --arc-algorithm: expected one of circle, arc-segments/],
+    [['gcode', file, '--steps-per-mm', '80', '--speed', '3'], /^voxpath: unknown flag --speed for gcode/],
+  ])('rejects %j with exit 2', (args, message) => {
+    const r = voxpath(args);
+    expect(r.code).toBe(2);
+    expect(r.stdout).toBe('');
+    expect(r.stderr).toMatch(message);
+  });
+});

@@ -1,0 +1,131 @@
+// The page's state <-> URL query (the permalink and localStorage format),
+// against the real algorithm catalogue of the built wasm package.
+import { beforeAll, describe, expect, it } from 'vitest';
+import { algorithms, experiments } from '../web/core/index.js';
+import {
+  type AppState,
+  type Catalogue,
+  PAGE_OPTIONS,
+  axisChoices,
+  axisCount,
+  defaultAlgorithm,
+  defaultState,
+  sharedOptionSpecs,
+  traceOptions,
+  withAxes,
+} from '../web/state/app-state.js';
+import { GCODE_URL_LIMIT, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
+import { carriedOptions } from '../web/form/algorithm-inputs.js';
+
+let catalogue: Catalogue;
+const url = { gcodeLimit: GCODE_URL_LIMIT };
+const info = (id: string) => catalogue.algorithms.find((a) => a.id === id)!;
+const first = () => defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
+
+beforeAll(async () => {
+  catalogue = { algorithms: await algorithms(), experiments: await experiments() };
+});
+
+describe('page state in the URL query', () => {
+  it('writes the default state as a readable link', () => {
+    expect(stateToQuery(first(), url)).toBe('mode=trace&algorithm=regions&from=0,0,0&to=10,7,6&step=0&speed=2&view=3d');
+  });
+
+  it('reads back every persisted key of each mode, and starts paused', () => {
+    const camera = { position: [12.5, -30, 20] as [number, number, number], target: [5, 3.5, 3] as [number, number, number], zoom: 1.25 };
+    const states: AppState[] = [
+      { ...first(), options: { from: [-3, 4, 2_000_000_000], to: [0, -7, 1], tie: 'hold', gcd: true }, pointIndex: 7, playing: true, speed: 16, camera },
+      { ...first(), mode: 'compare', other: 'bresenham3d', layout: 'side', options: { from: [0, 0, 0], to: [10, 7, 6], tie: 'hold' }, projection: '2d', embed: true },
+      { ...first(), mode: 'gcode', gcode: 'G1 X10 Y5 F600\nG2 X20 Y5 I5 J0\n', machine: { stepAngle: 1.8, microsteps: 8, pitch: 2, lineAlgorithm: 'bresenham3d', arcAlgorithm: 'arc-segments' }, pointIndex: 3 },
+      { ...first(), mode: 'experiment', experiment: { count: 20, seed: 7, maxCoordinate: 50 } },
+    ];
+    for (const state of states) {
+      const back = stateFromQuery(stateToQuery(state, url), catalogue)!;
+      const mode = state.mode;
+      expect(back.mode).toBe(mode);
+      if (mode === 'trace' || mode === 'compare') expect(back.options).toEqual(state.options);
+      if (mode === 'compare') expect([back.other, back.layout]).toEqual([state.other, state.layout]);
+      if (mode === 'gcode') expect([back.gcode, back.machine]).toEqual([state.gcode, { ...state.machine }]);
+      if (mode === 'experiment') expect(back.experiment).toEqual(state.experiment);
+      if (mode !== 'experiment') expect([back.pointIndex, back.speed, back.projection, back.camera]).toEqual([state.pointIndex, state.speed, state.projection, state.camera]);
+      expect(back.embed).toBe(state.embed);
+      expect(back.playing).toBe(false);
+    }
+  });
+
+  it('keeps a long program out of the URL but not out of localStorage', () => {
+    const gcode = 'G1 X1\n'.repeat(GCODE_URL_LIMIT);
+    const state = { ...first(), mode: 'gcode' as const, gcode };
+    expect(stateToQuery(state, url)).not.toContain('gcode=');
+    expect(stateFromQuery(stateToQuery(state, { gcodeLimit: Infinity }), catalogue)!.gcode).toBe(gcode);
+  });
+
+  it('rounds a camera to what the link writes, and ignores a malformed one', () => {
+    const camera = roundCamera({ position: [1.234567, 2, 3], target: [0, 0, 0.00004], zoom: 1 });
+    expect(camera).toEqual({ position: [1.2346, 2, 3], target: [0, 0, 0], zoom: 1 });
+    expect(stateFromQuery('camera=1,2,3', catalogue)!.camera).toBeNull();
+    expect(stateFromQuery('camera=1,2,3,4,5,6,0', catalogue)!.camera).toBeNull();
+  });
+
+  it('keeps out-of-range and fractional coordinates for the core to judge', () => {
+    const state = stateFromQuery('from=0,0.5,0&to=2000000000,7,6', catalogue)!;
+    expect(state.options).toEqual({ from: [0, 0.5, 0], to: [2_000_000_000, 7, 6] });
+  });
+
+  it('fills what a link leaves out with defaults, not with the last visit', () => {
+    const state = stateFromQuery('?from=1,2,3', catalogue)!;
+    expect(state).toEqual({ ...first(), options: { from: [1, 2, 3], to: [10, 7, 6] } });
+  });
+
+  it('replaces unusable values with defaults', () => {
+    const state = stateFromQuery('from=a,b,c&to=1,,2&tie=sometimes&step=-1&speed=3&mode=dance&view=4d', catalogue)!;
+    expect(state).toEqual(first());
+  });
+
+  it('is no state at all when the query has none of its keys', () => {
+    expect(stateFromQuery('', catalogue)).toBeUndefined();
+    expect(stateFromQuery('utm_source=mail', catalogue)).toBeUndefined();
+  });
+
+  it('leaves the options the page sets itself to the page', () => {
+    const state = stateFromQuery('from=0,0,0&to=1,1,1&maxSteps=5', catalogue)!;
+    expect(state.options).not.toHaveProperty('maxSteps');
+    expect(traceOptions(state, info('regions'))).toEqual({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1], ...PAGE_OPTIONS });
+  });
+});
+
+describe('axes and options of one or two algorithms', () => {
+  it('opens greedy, walk6 and dda in 2D, as their examples are, and lets them have 3 axes', () => {
+    for (const id of ['greedy', 'walk6', 'dda']) {
+      expect(axisChoices([info(id)])).toEqual([2, 3]);
+      expect(axisCount([info(id)], {})).toBe(2);
+      const state = stateFromQuery(`algorithm=${id}`, catalogue)!;
+      expect(state.options.from).toEqual([0, 0]);
+      expect(state.projection).toBe('2d');
+    }
+    expect(axisCount([info('greedy')], { from: [0, 0, 0] })).toBe(3);
+    expect(axisChoices([info('regions')])).toEqual([3]);
+    expect(axisChoices([info('nd')])).toEqual([2, 3]);
+    expect(axisChoices([info('regions'), info('bresenham2d')])).toEqual([]);
+  });
+
+  it('fits points to a new axis count and keeps other options', () => {
+    expect(withAxes({ from: [1, 2], to: [3, 4, 5], tie: 'hold' }, 3)).toEqual({ from: [1, 2, 0], to: [3, 4, 5], tie: 'hold' });
+    expect(withAxes({ from: [1, 2, 9] }, 2)).toEqual({ from: [1, 2] });
+  });
+
+  it("gives each compared algorithm the shared options it declares, as the core's compare() does", () => {
+    const state: AppState = { ...first(), mode: 'compare', other: 'greedy', options: { from: [0, 0, 0], to: [10, 7, 6], tie: 'hold', tieAxis: 'higher' } };
+    expect(traceOptions(state, info('regions'))).toEqual({ algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6], tie: 'hold', ...PAGE_OPTIONS });
+    expect(traceOptions(state, info('greedy'))).toEqual({ algorithm: 'greedy', from: [0, 0, 0], to: [10, 7, 6], tieAxis: 'higher', ...PAGE_OPTIONS });
+    expect(sharedOptionSpecs([info('circle'), info('arc-segments')]).map((s) => s.name)).toEqual([
+      'from', 'to', 'center', 'dir', 'plane', 'turns', 'segmentLength', 'tolerance', 'lineAlgorithm', 'tie',
+    ]);
+  });
+
+  it('carries the typed move to a newly compared algorithm, fitted to the axes both take', () => {
+    const options = carriedOptions([info('regions'), info('greedy')], { from: [1, 2, 3], to: [9, 8, 7], tie: 'hold' }, true);
+    expect(options).toEqual({ from: [1, 2, 3], to: [9, 8, 7], tie: 'hold' });
+    expect(carriedOptions([info('greedy')], { from: [1, 2, 3] }, false)).toEqual({ from: [0, 0], to: [8, 3] });
+  });
+});

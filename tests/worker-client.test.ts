@@ -1,0 +1,134 @@
+// The page's worker client: replies matched by id, the core's input errors
+// kept apart from crashes, and a crashed worker replaced so the page goes on.
+// A scripted fake stands in for the Worker; the real worker runs in the
+// browser tests.
+import { describe, expect, it } from 'vitest';
+import { CoreCrash, InputRejected, TraceClient, type WorkerPort } from '../web/worker/client.js';
+import type { ReplyMessage, RequestMessage, TracedPath } from '../web/worker/protocol.js';
+
+class FakeWorker implements WorkerPort {
+  onmessage: ((event: MessageEvent<ReplyMessage>) => void) | null = null;
+  onerror: ((event: ErrorEvent) => void) | null = null;
+  readonly received: RequestMessage[] = [];
+  terminated = false;
+
+  postMessage(message: RequestMessage): void {
+    this.received.push(message);
+  }
+
+  terminate(): void {
+    this.terminated = true;
+  }
+
+  reply(message: ReplyMessage): void {
+    this.onmessage?.({ data: message } as MessageEvent<ReplyMessage>);
+  }
+}
+
+function setUp() {
+  const workers: FakeWorker[] = [];
+  const crashes: string[] = [];
+  const client = new TraceClient(
+    () => {
+      const worker = new FakeWorker();
+      workers.push(worker);
+      return worker;
+    },
+    (message) => crashes.push(message),
+  );
+  return { client, workers, crashes };
+}
+
+const PATH: TracedPath = {
+  summary: {
+    algorithm: 'regions',
+    dims: 3,
+    steps: 1,
+    start: [0, 0, 0],
+    end: [1, 1, 0],
+    columns: [],
+    metrics: { steps: 1, stepsMovingAxes: [0, 1, 0], pulsesByAxis: [1, 1, 0], maxDeviation: 0, meanDeviation: 0, stdDeviation: 0, maxAxisError: [0, 0, 0], ties: 0 },
+    segments: [],
+  },
+  points: new Int32Array([0, 0, 0, 1, 1, 0]),
+  idealPolyline: new Float64Array([0, 0, 0, 1, 1, 0]),
+};
+
+describe('TraceClient', () => {
+  it('starts no worker until asked, and matches replies to requests by id', async () => {
+    const { client, workers } = setUp();
+    expect(workers).toHaveLength(0);
+    const first = client.request({ kind: 'explain', traceId: 1, stepIndex: 0 });
+    const second = client.request({ kind: 'explain', traceId: 1, stepIndex: 1 });
+    const [a, b] = workers[0]!.received;
+    workers[0]!.reply({ id: b!.id, ok: true, value: 'second' });
+    workers[0]!.reply({ id: a!.id, ok: true, value: 'first' });
+    expect(await first).toBe('first');
+    expect(await second).toBe('second');
+    expect(workers).toHaveLength(1);
+  });
+
+  it("turns the core's input errors into InputRejected naming the field", async () => {
+    const { client, workers, crashes } = setUp();
+    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [2e9, 0, 0] });
+    const { id } = workers[0]!.received[0]!;
+    workers[0]!.reply({ id, ok: false, failure: 'input', error: { field: 'to', message: 'x = 2000000000 is outside +-2^30' } });
+    const error = await traced.catch((e: unknown) => e);
+    expect(error).toBeInstanceOf(InputRejected);
+    expect(error).toMatchObject({ field: 'to', message: 'x = 2000000000 is outside +-2^30' });
+    expect(crashes).toEqual([]);
+    expect(workers[0]!.terminated).toBe(false);
+  });
+
+  it('on a crash rejects everything pending, reports it once and starts a fresh worker on the next request', async () => {
+    const { client, workers, crashes } = setUp();
+    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] });
+    workers[0]!.reply({ id: workers[0]!.received[0]!.id, ok: true, value: PATH });
+    const trace = await traced;
+    expect(trace.alive).toBe(true);
+    expect(Array.from(trace.point(1))).toEqual([1, 1, 0]);
+
+    const explaining = trace.explain(0);
+    const deviating = trace.deviationInRange(0, 2);
+    const [, explainRequest] = workers[0]!.received;
+    workers[0]!.reply({ id: explainRequest!.id, ok: false, failure: 'crash', message: 'RuntimeError: unreachable' });
+    await expect(explaining).rejects.toBeInstanceOf(CoreCrash);
+    await expect(deviating).rejects.toThrow('RuntimeError: unreachable');
+    expect(crashes).toEqual(['RuntimeError: unreachable']);
+    expect(workers[0]!.terminated).toBe(true);
+
+    // The old trace died with its worker: asking it again fails without a message sent.
+    expect(trace.alive).toBe(false);
+    await expect(trace.explain(0)).rejects.toBeInstanceOf(CoreCrash);
+    trace.free();
+    expect(workers).toHaveLength(1);
+
+    const catalogue = client.catalogue();
+    expect(workers).toHaveLength(2);
+    workers[1]!.reply({ id: workers[1]!.received[0]!.id, ok: true, value: [] });
+    expect(await catalogue).toEqual([]);
+  });
+
+  it('treats a worker that fails to run like a crash', async () => {
+    const { client, workers, crashes } = setUp();
+    const pending = client.catalogue();
+    workers[0]!.onerror?.({ message: 'Uncaught SyntaxError', preventDefault() {} } as ErrorEvent);
+    await expect(pending).rejects.toBeInstanceOf(CoreCrash);
+    expect(crashes).toEqual(['the trace worker failed: Uncaught SyntaxError']);
+    // A late reply from the dead worker is ignored.
+    workers[0]!.reply({ id: workers[0]!.received[0]!.id, ok: true, value: [] });
+    expect(crashes).toHaveLength(1);
+  });
+
+  it('keeps the worker after a bad request from the page', async () => {
+    const { client, workers, crashes } = setUp();
+    const pending = client.request({ kind: 'decisions', traceId: 9, fromStep: 0, toStep: 1 });
+    workers[0]!.reply({ id: workers[0]!.received[0]!.id, ok: false, failure: 'error', message: 'Error: this worker holds no trace 9' });
+    const error = await pending.catch((e: unknown) => e);
+    expect(error).toBeInstanceOf(Error);
+    expect(error).not.toBeInstanceOf(CoreCrash);
+    expect(error).toMatchObject({ message: 'Error: this worker holds no trace 9' });
+    expect(workers[0]!.terminated).toBe(false);
+    expect(crashes).toEqual([]);
+  });
+});

@@ -1,0 +1,129 @@
+/**
+ * A uPlot chart whose cursor is the page's step: a vertical line at the
+ * point index shown, moved by the scrubber; clicking the chart picks that
+ * point. uPlot was chosen for these charts because it is small (about 50 kB),
+ * draws hundreds of thousands of points on a canvas in milliseconds, has no
+ * dependencies, and is actively kept; its stepped paths also draw the timing
+ * diagram's pulse trains as a logic analyser does.
+ */
+import uPlot from 'uplot';
+import 'uplot/dist/uPlot.min.css';
+
+/** Chart height, CSS pixels, plot area and axes (the legend is extra). */
+const HEIGHT_PX = 170;
+
+export interface ChartSpec {
+  /** Accessible name of the chart, also its title. */
+  title: string;
+  xLabel: string;
+  yLabel: string;
+  series: uPlot.Series[];
+  bands?: uPlot.Band[];
+  /** Horizontal reference lines, y value and label (drawn dashed). */
+  references?: { value: number; label: string; colour: string }[];
+  /** Fixed y range; default: fitted to the data. */
+  yRange?: [number, number];
+  /** Axis values formatter for y. */
+  yValues?: uPlot.Axis['values'];
+  /** Where y ticks go; default: uPlot's. */
+  ySplits?: number[];
+  /** Hide uPlot's legend (the timing diagram names its lanes on the axis). */
+  legend?: boolean;
+}
+
+/** The colour of the step cursor (the page's accent, as the scrubber). */
+const CURSOR_COLOUR = '#d55e00';
+
+export class StepChart {
+  readonly #plot: uPlot;
+  readonly #figure: HTMLElement;
+  readonly #resize: ResizeObserver;
+  #pointIndex = 0;
+
+  /** Builds the chart in `container` with `data` (x first); `onPick` gets the point index clicked. */
+  constructor(container: HTMLElement, spec: ChartSpec, data: uPlot.AlignedData, onPick: (pointIndex: number) => void) {
+    this.#figure = document.createElement('figure');
+    this.#figure.className = 'chart';
+    this.#figure.setAttribute('aria-label', spec.title);
+    container.append(this.#figure);
+    const references = spec.references ?? [];
+    const opts: uPlot.Options = {
+      title: spec.title,
+      width: Math.max(200, container.clientWidth - 4),
+      height: HEIGHT_PX,
+      series: [{ label: spec.xLabel }, ...spec.series],
+      bands: spec.bands,
+      scales: { x: { time: false }, y: spec.yRange ? { range: spec.yRange } : {} },
+      axes: [
+        { label: spec.xLabel, size: 36 },
+        { label: spec.yLabel, size: 56, values: spec.yValues, splits: spec.ySplits && (() => spec.ySplits!) },
+      ],
+      legend: { show: spec.legend ?? true, live: false },
+      cursor: { drag: { x: false, y: false }, points: { show: false } },
+      hooks: {
+        draw: [
+          (u) => {
+            const ctx = u.ctx;
+            ctx.save();
+            ctx.lineWidth = 1.5 * devicePixelRatio;
+            ctx.setLineDash([6 * devicePixelRatio, 4 * devicePixelRatio]);
+            for (const r of references) {
+              const y = Math.round(u.valToPos(r.value, 'y', true));
+              ctx.strokeStyle = r.colour;
+              ctx.beginPath();
+              ctx.moveTo(u.bbox.left, y);
+              ctx.lineTo(u.bbox.left + u.bbox.width, y);
+              ctx.stroke();
+              ctx.fillStyle = r.colour;
+              ctx.font = `${11 * devicePixelRatio}px system-ui, sans-serif`;
+              ctx.fillText(r.label, u.bbox.left + 4 * devicePixelRatio, y - 4 * devicePixelRatio);
+            }
+            ctx.setLineDash([]);
+            const x = Math.round(u.valToPos(this.#pointIndex, 'x', true));
+            ctx.strokeStyle = CURSOR_COLOUR;
+            ctx.lineWidth = 2 * devicePixelRatio;
+            ctx.beginPath();
+            ctx.moveTo(x, u.bbox.top);
+            ctx.lineTo(x, u.bbox.top + u.bbox.height);
+            ctx.stroke();
+            ctx.restore();
+          },
+        ],
+      },
+    };
+    this.#plot = new uPlot(opts, data, this.#figure);
+    this.#plot.over.addEventListener('click', () => {
+      const left = this.#plot.cursor.left;
+      if (left === undefined || left < 0) return;
+      onPick(Math.round(this.#plot.posToVal(left, 'x')));
+    });
+    this.#resize = new ResizeObserver(() => {
+      const width = Math.max(200, container.clientWidth - 4);
+      if (width !== this.#plot.width) this.#plot.setSize({ width, height: HEIGHT_PX });
+    });
+    this.#resize.observe(container);
+  }
+
+  /** The chart's canvas (for tests and export). */
+  get canvas(): HTMLCanvasElement {
+    return this.#plot.ctx.canvas;
+  }
+
+  /** Moves the step cursor to `pointIndex`. */
+  showPoint(pointIndex: number): void {
+    if (pointIndex === this.#pointIndex) return;
+    this.#pointIndex = pointIndex;
+    this.#plot.redraw(false, false);
+  }
+
+  /** Replaces the data (same series), keeping the cursor. */
+  setData(data: uPlot.AlignedData): void {
+    this.#plot.setData(data);
+  }
+
+  destroy(): void {
+    this.#resize.disconnect();
+    this.#plot.destroy();
+    this.#figure.remove();
+  }
+}

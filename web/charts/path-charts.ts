@@ -1,0 +1,91 @@
+/**
+ * The two charts of a trace, after Wang et al. (2020) Figure 6: each axis's
+ * position against the step (6a: the point as stepped, and the ideal path at
+ * the same progress), and each point's distance from the ideal path (6b's
+ * straightness error) with the largest one marked. Their cursor is the
+ * page's step. The rows come from the worker (ChartSeries): every point, or
+ * buckets of points on a long path, where the deviation chart shows each
+ * bucket's range as a band.
+ */
+import type uPlot from 'uplot';
+import { AXIS_NAMES } from '../format.js';
+import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
+import type { ChartSeries } from '../worker/protocol.js';
+import { StepChart } from './chart.js';
+
+/** Rows the charts ask for: about one per pixel of a wide chart. */
+export const CHART_POINTS = 2000;
+
+export interface ChartedTrace {
+  dims: number;
+  metrics: { maxDeviation: number };
+  series(maxPoints: number): Promise<ChartSeries>;
+}
+
+export class PathCharts {
+  readonly #container: HTMLElement;
+  readonly #onPick: (pointIndex: number) => void;
+  #charts: StepChart[] = [];
+  #request = 0;
+  #pointIndex = 0;
+
+  constructor(container: HTMLElement, onPick: (pointIndex: number) => void) {
+    this.#container = container;
+    this.#onPick = onPick;
+  }
+
+  /** Charts `trace` (undefined: none) once the worker sends its rows. */
+  async setTrace(trace: ChartedTrace | undefined): Promise<void> {
+    const request = ++this.#request;
+    const series = trace ? await trace.series(CHART_POINTS) : undefined;
+    if (request !== this.#request) return;
+    for (const chart of this.#charts) chart.destroy();
+    this.#charts = [];
+    if (!trace || !series) return;
+    const axes = AXIS_NAMES.slice(0, trace.dims);
+    const x = series.pointIndex;
+    const positions: uPlot.Series[] = axes.flatMap((axis, a) => [
+      { label: `${axis}`, stroke: AXIS_COLOURS[a], width: 2 },
+      { label: `${axis} ideal`, stroke: AXIS_COLOURS[a], width: 1, dash: [5, 4] },
+    ]);
+    const bucketNote = series.bucketed ? ` (${x.length} buckets of ${x[1]} points)` : '';
+    this.#charts.push(
+      new StepChart(
+        this.#container,
+        { title: `Axis position per step, grid units${bucketNote}`, xLabel: 'step', yLabel: 'position', series: positions },
+        [x, ...axes.flatMap((_, a) => [series.position[a]!, series.ideal[a]!])],
+        this.#onPick,
+      ),
+    );
+    const deviationSeries: uPlot.Series[] = [{ label: series.bucketed ? 'largest in bucket' : 'distance', stroke: PALETTE.visited, width: 2, fill: series.bucketed ? undefined : 'rgba(86, 180, 233, 0.15)' }];
+    const deviationData = [x, series.deviationMax];
+    if (series.bucketed) {
+      deviationSeries.push({ label: 'smallest in bucket', stroke: PALETTE.visited, width: 1 });
+      deviationData.push(series.deviationMin);
+    }
+    const largest = trace.metrics.maxDeviation;
+    this.#charts.push(
+      new StepChart(
+        this.#container,
+        {
+          title: `Distance from the ideal path, grid units${bucketNote}`,
+          xLabel: 'step',
+          yLabel: 'distance',
+          series: deviationSeries,
+          bands: series.bucketed ? [{ series: [1, 2], fill: 'rgba(86, 180, 233, 0.25)' }] : undefined,
+          references: [{ value: largest, label: `largest ${largest.toFixed(4)}`, colour: PALETTE.current }],
+          yRange: [0, Math.max(largest * 1.15, 0.1)],
+        },
+        deviationData,
+        this.#onPick,
+      ),
+    );
+    for (const chart of this.#charts) chart.showPoint(this.#pointIndex);
+  }
+
+  /** Moves the charts' cursor to `pointIndex`. */
+  showPoint(pointIndex: number): void {
+    this.#pointIndex = pointIndex;
+    for (const chart of this.#charts) chart.showPoint(pointIndex);
+  }
+}

@@ -1,0 +1,161 @@
+/**
+ * `voxpath gcode FILE|- --steps-per-mm 80[,80,400] [--format json|csv|table]`:
+ * runs a G-code program on the modelled machine and prints its steps.
+ *
+ * Exit codes: 0 the program ran; 1 it has errors (printed to stderr, after
+ * the output of the moves before the first one); 2 a bad command line or
+ * setting (main.ts prints those).
+ */
+import { readFile } from 'node:fs/promises';
+import { runGcode } from '../core/index.js';
+import type { GcodeProgram, GcodeSettings } from '../core/index.js';
+import { UsageError, flagOf, parseFlags, pickFormat } from './main.js';
+
+/** Settings that take one number or one per axis. */
+const PER_AXIS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'] as const;
+
+export const GCODE_USAGE =
+  'voxpath gcode FILE|- (--steps-per-mm N[,N,N] | --step-angle DEG --microsteps N --pitch MM) [--line-algorithm ID] [--arc-algorithm circle|arc-segments] [--max-steps N] [--format json|csv|table]';
+
+/** The gcode command's help text. */
+export function gcodeHelp(lineAlgorithms: string[]): string {
+  return [
+    `  ${GCODE_USAGE}`,
+    '    Runs a G-code program (FILE, or - for standard input) on a machine with the given',
+    '    steps per mm, or the steps per mm of a stepper drive (Wang 3.3: 360 / step angle',
+    '    · microsteps pulses per turn, over the pitch). One value for all axes or x,y,z.',
+    `    --line-algorithm: ${lineAlgorithms.join('|')} (default regions)`,
+    '    --arc-algorithm: circle (Saleem) or arc-segments (chords); helical arcs use helix.',
+    '    json prints { points (machine position in steps after every step, as trace),',
+    '    lineByStep (the source line of every step), moves (each with its line), pulses',
+    '    (per axis), warnings, errors ([{ line, column, message }]), ... };',
+    '    csv one row per point with its line and move; table the moves and totals.',
+  ].join('\n');
+}
+
+function numbers(flag: string, text: string): number | number[] {
+  const values = text.split(',').map((part) => {
+    const v = Number(part);
+    if (part.trim() === '' || !Number.isFinite(v)) throw new UsageError(`${flag}: '${part}' is not a number`);
+    return v;
+  });
+  if (values.length !== 1 && values.length !== 3) {
+    throw new UsageError(`${flag}: expected one number or three (x,y,z), got ${values.length}`);
+  }
+  return values.length === 1 ? values[0]! : values;
+}
+
+function settingsFromFlags(flags: Map<string, string>): GcodeSettings {
+  const settings: Record<string, unknown> = {};
+  const known = [...PER_AXIS, 'lineAlgorithm', 'arcAlgorithm', 'maxSteps'].map(flagOf);
+  for (const [flag, text] of flags) {
+    if (flag === '--format') continue;
+    if (!known.includes(flag)) throw new UsageError(`unknown flag ${flag} for gcode (it takes ${known.join(', ')}, --format)`);
+    const name = flag.replace(/^--/, '').replace(/-([a-z])/g, (_, c: string) => c.toUpperCase());
+    if ((PER_AXIS as readonly string[]).includes(name)) settings[name] = numbers(flag, text);
+    else if (name === 'maxSteps') settings[name] = numbers(flag, text);
+    else settings[name] = text;
+  }
+  return settings as GcodeSettings;
+}
+
+async function readSource(file: string): Promise<string> {
+  if (file === '-') {
+    const chunks: Buffer[] = [];
+    for await (const chunk of process.stdin) chunks.push(chunk as Buffer);
+    return Buffer.concat(chunks).toString('utf8');
+  }
+  try {
+    return await readFile(file, 'utf8');
+  } catch (error) {
+    throw new UsageError(`cannot read ${file}: ${error instanceof Error ? error.message : String(error)}`);
+  }
+}
+
+function pointRows(program: GcodeProgram): number[][] {
+  const flat = program.trace.points;
+  const rows: number[][] = [];
+  for (let k = 0; k <= program.steps; k++) rows.push(Array.from(flat.subarray(3 * k, 3 * k + 3)));
+  return rows;
+}
+
+function toJson(program: GcodeProgram): string {
+  return (
+    JSON.stringify({
+      lines: program.lines,
+      steps: program.steps,
+      stepsPerMm: program.stepsPerMm,
+      lineAlgorithm: program.lineAlgorithm,
+      arcAlgorithm: program.arcAlgorithm,
+      points: pointRows(program),
+      lineByStep: Array.from(program.lineByStepInRange(0, program.steps)),
+      moves: program.moves,
+      pulses: program.pulses,
+      warnings: program.warnings,
+      warningsOmitted: program.warningsOmitted,
+      errors: program.errors,
+      stoppedAtLine: program.stoppedAtLine,
+    }) + '\n'
+  );
+}
+
+/** Row k: point k and the line and move of the step that reached it (empty on row 0). */
+function toCsv(program: GcodeProgram): string {
+  const lines = program.lineByStepInRange(0, program.steps);
+  const out = ['k,x,y,z,line,move'];
+  pointRows(program).forEach((p, k) => {
+    const source = k === 0 ? ['', ''] : [String(lines[k - 1]), String(program.moveOfStep(k - 1))];
+    out.push([k, ...p, ...source].join(','));
+  });
+  return out.join('\n') + '\n';
+}
+
+function toTable(program: GcodeProgram): string {
+  const header = ['move', 'line', 'code', 'kind', 'to (mm)', 'to (steps)', 'first step', 'steps', 'algorithm'];
+  const body = program.moves.map((m, i) => [
+    String(i),
+    String(m.line),
+    m.code,
+    m.kind,
+    m.toMm.map((v) => String(Math.round(v * 1e6) / 1e6)).join(' '),
+    m.toSteps.join(' '),
+    String(m.firstStep),
+    String(m.steps),
+    m.algorithm,
+  ]);
+  const widths = header.map((h, c) => Math.max(h.length, ...body.map((r) => r[c]!.length)));
+  const row = (r: string[]) => r.map((cell, c) => cell.padStart(widths[c]!)).join('  ');
+  const diagnostics = (title: string, list: { line: number; column: number; message: string }[]) =>
+    list.length === 0 ? [] : ['', `${title}:`, ...list.map((d) => `  line ${d.line}, column ${d.column}: ${d.message}`)];
+  return [
+    `gcode: ${program.lines} lines, ${program.moves.length} moves, ${program.steps} steps; ${program.stepsPerMm.join(', ')} steps/mm (x, y, z); lines: ${program.lineAlgorithm}, arcs: ${program.arcAlgorithm}`,
+    '',
+    row(header),
+    ...body.map(row),
+    '',
+    `pulses per axis (x, y, z): ${program.pulses.join(', ')}`,
+    ...diagnostics('warnings', program.warnings),
+    ...(program.warningsOmitted > 0 ? [`  ... and ${program.warningsOmitted} more`] : []),
+    ...diagnostics('errors', program.errors),
+    '',
+  ].join('\n');
+}
+
+/** Runs `gcode` with its arguments (after the command); resolves to what to print and the exit code. */
+export async function gcodeCommand(args: string[]): Promise<{ stdout: string; stderr: string; code: number }> {
+  const [file, ...rest] = args;
+  if (file === undefined || (file.startsWith('--') && file !== '-')) {
+    throw new UsageError('gcode needs a FILE (or - for standard input) before its flags');
+  }
+  const flags = parseFlags(rest);
+  const format = pickFormat(flags);
+  const settings = settingsFromFlags(flags);
+  const program = await runGcode(await readSource(file), settings);
+  try {
+    const stdout = format === 'csv' ? toCsv(program) : format === 'table' ? toTable(program) : toJson(program);
+    const stderr = program.errors.map((e) => `voxpath: ${file}:${e.line}:${e.column}: ${e.message}\n`).join('');
+    return { stdout, stderr, code: program.errors.length > 0 ? 1 : 0 };
+  } finally {
+    program.free();
+  }
+}

@@ -1,0 +1,165 @@
+/**
+ * The inputs of the trace, compare and experiment modes: the algorithm
+ * picker (with its citation, rule and errata from the catalogue), the second
+ * algorithm and layout of a comparison, the number of axes, and the options
+ * form generated from the OptionSpecs of the traced algorithm(s).
+ */
+import type { AlgorithmInfo } from '../core/types.js';
+import {
+  type AppState,
+  type Catalogue,
+  COMPARE_LAYOUTS,
+  type OptionValue,
+  axisChoices,
+  axisCount,
+  defaultOptions,
+  defaultProjection,
+  sharedOptionSpecs,
+  tracedAlgorithms,
+  withAxes,
+} from '../state/app-state.js';
+import type { Store } from '../state/store.js';
+import type { InputError } from '../worker/protocol.js';
+import { OptionsForm, element } from './options-form.js';
+
+export interface AlgorithmInputElements {
+  algorithm: HTMLSelectElement;
+  title: HTMLElement;
+  citation: HTMLElement;
+  teaching: HTMLElement;
+  errata: HTMLElement;
+  errataBox: HTMLDetailsElement;
+  other: HTMLSelectElement;
+  otherCitation: HTMLElement;
+  layout: HTMLInputElement[];
+  axes: HTMLSelectElement;
+  axesField: HTMLElement;
+  axesHint: HTMLElement;
+  fields: HTMLElement;
+  formError: HTMLElement;
+}
+
+/**
+ * Options for `infos` after a change of algorithm: the defaults (the first
+ * one's example move), with the values the user had for options the new
+ * algorithms still take, when the axis count still fits.
+ */
+export function carriedOptions(infos: readonly AlgorithmInfo[], current: Readonly<Record<string, OptionValue>>, keep: boolean): Record<string, OptionValue> {
+  const defaults = defaultOptions(infos);
+  if (!keep) return defaults;
+  const names = new Set(sharedOptionSpecs(infos).map((s) => s.name));
+  const kept = Object.fromEntries(Object.entries(current).filter(([name]) => names.has(name)));
+  return withAxes({ ...defaults, ...kept }, axisCount(infos, kept));
+}
+
+function option(info: AlgorithmInfo): HTMLOptionElement {
+  return element('option', { value: info.id, textContent: `${info.title} (${info.id})` });
+}
+
+export class AlgorithmInputs {
+  readonly #e: AlgorithmInputElements;
+  readonly #catalogue: Catalogue;
+  readonly #store: Store<AppState>;
+  #form: OptionsForm | undefined;
+  /** What the form was built for: mode, algorithm ids and axis count. */
+  #formKey = '';
+
+  constructor(elements: AlgorithmInputElements, catalogue: Catalogue, store: Store<AppState>) {
+    this.#e = elements;
+    this.#catalogue = catalogue;
+    this.#store = store;
+    // Grouped by family, lines first, as the catalogue lists them.
+    for (const family of ['line', 'arc'] as const) {
+      const group = element('optgroup', { label: family === 'line' ? 'Lines' : 'Arcs and helices' });
+      group.append(...catalogue.algorithms.filter((a) => a.family === family).map(option));
+      elements.algorithm.append(group);
+    }
+    elements.algorithm.addEventListener('change', () => this.#pickAlgorithm(elements.algorithm.value));
+    elements.other.addEventListener('change', () => this.#pickOther(elements.other.value));
+    for (const radio of elements.layout) {
+      radio.addEventListener('change', () => {
+        const layout = COMPARE_LAYOUTS.find((l) => l === radio.value);
+        if (radio.checked && layout) store.update({ layout, camera: null });
+      });
+    }
+    elements.axes.addEventListener('change', () => {
+      const axes = Number(elements.axes.value);
+      store.update({ options: withAxes(store.state.options, axes), projection: defaultProjection(axes), camera: null, pointIndex: 0 });
+    });
+    store.subscribe(() => this.render());
+    this.render();
+  }
+
+  #pickAlgorithm(id: string): void {
+    const state = this.#store.state;
+    const infos = tracedAlgorithms({ ...state, algorithm: id }, this.#catalogue.algorithms);
+    // A comparison needs a second algorithm of the same axes; keep it when it fits.
+    const other = state.mode === 'compare' && axisChoices(infos).length === 0 ? this.#compatible(infos[0]!)[0]?.id ?? state.other : state.other;
+    const next = tracedAlgorithms({ ...state, algorithm: id, other }, this.#catalogue.algorithms);
+    const options = carriedOptions(next, state.options, false);
+    this.#store.update({ algorithm: id, other, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(next, options)) });
+  }
+
+  #pickOther(id: string): void {
+    const state = this.#store.state;
+    const infos = tracedAlgorithms({ ...state, other: id }, this.#catalogue.algorithms);
+    const options = carriedOptions(infos, state.options, true);
+    this.#store.update({ other: id, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(infos, options)) });
+  }
+
+  /** Algorithms that can be compared with `info`: same family, and an axis count both take. */
+  #compatible(info: AlgorithmInfo): AlgorithmInfo[] {
+    return this.#catalogue.algorithms.filter((a) => a.family === info.family && axisChoices([info, a]).length > 0);
+  }
+
+  /** Shows the core's verdict on the last request: beside the option it names, or under the form. */
+  showCoreError(error: InputError | undefined): void {
+    if (this.#form) this.#form.showCoreError(error);
+    else this.#e.formError.textContent = error ? error.message : '';
+  }
+
+  render(): void {
+    const state = this.#store.state;
+    const e = this.#e;
+    const infos = tracedAlgorithms(state, this.#catalogue.algorithms);
+    const info = infos[0]!;
+    e.algorithm.value = info.id;
+    e.title.textContent = info.title;
+    e.citation.textContent = info.citation;
+    e.teaching.textContent = info.teaching;
+    e.errata.replaceChildren(...info.errata.map((text) => element('li', { textContent: text })));
+    e.errataBox.hidden = info.errata.length === 0;
+
+    const compatible = this.#compatible(info);
+    if (e.other.options.length !== compatible.length || [...e.other.options].some((o, i) => o.value !== compatible[i]!.id)) {
+      e.other.replaceChildren(...compatible.map(option));
+    }
+    e.other.value = state.other;
+    e.otherCitation.textContent = infos[1]?.citation ?? '';
+    for (const radio of e.layout) radio.checked = radio.value === state.layout;
+
+    if (state.mode === 'experiment') return;
+    const choices = axisChoices(infos);
+    const axes = axisCount(infos, state.options);
+    if (e.axes.options.length !== choices.length || [...e.axes.options].some((o, i) => Number(o.value) !== choices[i])) {
+      e.axes.replaceChildren(...choices.map((n) => element('option', { value: String(n), textContent: `${n} (${n === 2 ? 'x, y' : 'x, y, z'})` })));
+    }
+    e.axes.value = String(axes);
+    e.axesField.hidden = choices.length < 2;
+    const widest = Math.max(...infos.map((i) => i.maxDims));
+    e.axesHint.textContent = widest > 3 ? `${info.id} takes ${info.minDims} to ${info.maxDims} axes; the page shows 2 or 3 (the CLI and the API take them all).` : '';
+
+    const key = `${state.mode} ${infos.map((i) => i.id).join(' ')} ${axes}`;
+    if (key !== this.#formKey) {
+      this.#formKey = key;
+      this.#form = new OptionsForm(e.fields, e.formError, sharedOptionSpecs(infos), axes, state.options, (name, value) => {
+        const options = { ...this.#store.state.options };
+        if (value === undefined) delete options[name];
+        else options[name] = value;
+        this.#store.update({ options });
+      });
+    } else {
+      this.#form?.setValues(state.options);
+    }
+  }
+}

@@ -1,0 +1,170 @@
+/**
+ * The algorithm's options as form fields, generated from the catalogue's
+ * OptionSpecs (as the CLI generates its flags), so a new algorithm's options
+ * appear without code here. A point is one integer field per axis; a choice
+ * is a select; a number is a number field.
+ *
+ * The form only reads what was typed. Whether a value is acceptable is the
+ * core's call: its errors come back naming the option and are shown beside
+ * that field. The one check made here is that a field holds a number at all,
+ * because an empty field has no value to send.
+ */
+import type { OptionSpec } from '../core/types.js';
+import { AXIS_NAMES } from '../format.js';
+import type { OptionValue } from '../state/app-state.js';
+import type { InputError } from '../worker/protocol.js';
+
+interface Field {
+  controls: (HTMLInputElement | HTMLSelectElement)[];
+  /** What a control shows while the option is absent (the core's default applies). */
+  absent: string;
+  error: HTMLElement;
+  /** The field holds no number, so its value was not sent. */
+  localError?: string;
+  /** What the core said about this option in the last trace request. */
+  coreError?: string;
+}
+
+export function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<HTMLElementTagNameMap[K]> = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children);
+  return e;
+}
+
+export class OptionsForm {
+  readonly #fields = new Map<string, Field>();
+  /** Where errors naming no field of this form go (say the algorithm, or maxSteps, which the page sets). */
+  readonly #formError: HTMLElement;
+  readonly #onChange: (name: string, value: OptionValue | undefined) => void;
+
+  readonly #idPrefix: string;
+
+  /**
+   * Fills `container` with a field per option of `specs`, points with `axes`
+   * coordinates, showing `values`, and calls `onChange` with each value the
+   * user types (undefined: left empty, so the core's default applies).
+   * Control ids are `${idPrefix}-${name}` (and `-x`, `-y`... for points).
+   */
+  constructor(
+    container: HTMLElement,
+    formError: HTMLElement,
+    specs: readonly OptionSpec[],
+    axes: number,
+    values: Readonly<Record<string, OptionValue>>,
+    onChange: (name: string, value: OptionValue | undefined) => void,
+    idPrefix = 'option',
+  ) {
+    this.#formError = formError;
+    this.#onChange = onChange;
+    this.#idPrefix = idPrefix;
+    container.replaceChildren(...specs.map((spec) => this.#field(spec, axes, values[spec.name])));
+  }
+
+  #field(spec: OptionSpec, axes: number, value: OptionValue | undefined): HTMLElement {
+    const id = `${this.#idPrefix}-${spec.name}`;
+    const hint = element('p', { className: 'hint', id: `${id}-hint`, textContent: spec.doc });
+    const error = element('p', { className: 'field-error', id: `${id}-error` });
+    error.dataset.testid = `error-${id.replace(/^option-/, '')}`;
+    error.setAttribute('aria-live', 'polite');
+    const describedBy = `${hint.id} ${error.id}`;
+    const field: Field = { controls: [], error, absent: spec.kind.type === 'choice' ? (spec.default ?? '') : '' };
+    this.#fields.set(spec.name, field);
+
+    const control = <T extends HTMLInputElement | HTMLSelectElement>(c: T, controlId: string): T => {
+      c.id = controlId;
+      c.name = controlId;
+      c.dataset.testid = `input-${controlId.replace(/^option-/, '')}`;
+      c.setAttribute('aria-describedby', describedBy);
+      field.controls.push(c);
+      return c;
+    };
+
+    switch (spec.kind.type) {
+      case 'point': {
+        const coords = Array.isArray(value) ? value : [];
+        const fields = AXIS_NAMES.slice(0, axes).map((axis, a) => {
+          const input = control(element('input', { type: 'number', step: '1', value: coords[a] === undefined ? '' : String(coords[a]) }), `${id}-${axis}`);
+          input.addEventListener('input', () => this.#pointTyped(spec.name, field));
+          return element('label', { className: 'axis' }, element('span', { textContent: axis }), input);
+        });
+        return element('fieldset', { className: 'option' }, element('legend', { textContent: spec.name }), hint, element('div', { className: 'axes' }, ...fields), error);
+      }
+      case 'choice': {
+        const select = control(element('select'), id);
+        // Without a stated default the algorithm decides (say helix's tie, from its mode): an empty choice leaves it to it.
+        if (spec.default === null) select.append(element('option', { value: '', textContent: "the algorithm's default" }));
+        for (const word of spec.kind.values) {
+          select.append(element('option', { value: word, textContent: word === spec.default ? `${word} (default)` : word }));
+        }
+        select.value = typeof value === 'string' ? value : field.absent;
+        select.addEventListener('change', () => this.#onChange(spec.name, select.value === '' ? undefined : select.value));
+        return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), select, hint, error);
+      }
+      case 'number':
+      case 'integer': {
+        const input = control(element('input', { type: 'number', step: spec.kind.type === 'integer' ? '1' : 'any' }), id);
+        input.value = typeof value === 'number' ? String(value) : '';
+        input.placeholder = spec.default ?? '';
+        input.addEventListener('input', () => {
+          this.#setLocalError(spec.name, field, input.validity.badInput ? 'not a number' : undefined);
+          if (!input.validity.badInput) this.#onChange(spec.name, input.value === '' ? undefined : input.valueAsNumber);
+        });
+        return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
+      }
+      case 'boolean': {
+        const box = control(element('input', { type: 'checkbox' }), id);
+        box.checked = typeof value === 'boolean' ? value : spec.default === 'true';
+        box.addEventListener('change', () => this.#onChange(spec.name, box.checked));
+        return element('div', { className: 'option option-boolean' }, box, element('label', { htmlFor: id, textContent: spec.name }), hint, error);
+      }
+    }
+  }
+
+  #pointTyped(name: string, field: Field): void {
+    const inputs = field.controls as HTMLInputElement[];
+    const empty = inputs.findIndex((input) => input.value.trim() === '' || input.validity.badInput);
+    this.#setLocalError(name, field, empty < 0 ? undefined : `${AXIS_NAMES[empty]} needs a number`);
+    if (empty < 0) this.#onChange(name, inputs.map((input) => input.valueAsNumber));
+  }
+
+  #setLocalError(name: string, field: Field, message: string | undefined): void {
+    field.localError = message;
+    this.#render(field);
+  }
+
+  #render(field: Field): void {
+    const message = field.localError ?? field.coreError;
+    field.error.textContent = message ?? '';
+    for (const c of field.controls) c.setAttribute('aria-invalid', String(message !== undefined));
+  }
+
+  /**
+   * Shows `values` in the fields, except in the field being edited (focused),
+   * for values that changed elsewhere (a handle dragged in the view).
+   */
+  setValues(values: Readonly<Record<string, OptionValue>>): void {
+    for (const [name, field] of this.#fields) {
+      const value = values[name];
+      field.controls.forEach((c, i) => {
+        if (c === document.activeElement) return;
+        const text = Array.isArray(value) ? String(value[i] ?? '') : value === undefined ? field.absent : String(value);
+        if (c instanceof HTMLInputElement && c.type === 'checkbox') c.checked = value === true;
+        else if (c.value !== text) c.value = text;
+      });
+    }
+  }
+
+  /** Shows the core's verdict on the last trace request: its error beside the option it names, or none. */
+  showCoreError(error: InputError | undefined): void {
+    for (const field of this.#fields.values()) {
+      field.coreError = undefined;
+      this.#render(field);
+    }
+    const field = error?.field === undefined ? undefined : this.#fields.get(error.field);
+    if (error && field) {
+      field.coreError = error.message;
+      this.#render(field);
+    }
+    this.#formError.textContent = error && !field ? (error.field ? `${error.field}: ${error.message}` : error.message) : '';
+  }
+}

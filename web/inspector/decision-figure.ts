@@ -1,0 +1,133 @@
+/**
+ * A picture of one decision, chosen by which columns the trace has (never by
+ * the algorithm's id), drawn from the values the core replayed:
+ * - region and corner (Wang's discriminate regions): the exit face with its
+ *   regions a-d, the segments e-h and the centre o between them, the region
+ *   the core says the line crosses and the corner A-D it picked;
+ * - threshold and error columns (Bresenham): one bar per error term against
+ *   the threshold it is compared with;
+ * - error_stay and error_move (Saleem's circle): the residual of each
+ *   candidate, the one the step took marked.
+ * Nothing else is drawn: the table of values above it has every column.
+ */
+import type { ColumnSpec } from '../core/types.js';
+
+const SVG = 'http://www.w3.org/2000/svg';
+
+function svg<K extends keyof SVGElementTagNameMap>(tag: K, attributes: Record<string, string | number>, text?: string): SVGElementTagNameMap[K] {
+  const e = document.createElementNS(SVG, tag);
+  for (const [k, v] of Object.entries(attributes)) e.setAttribute(k, String(v));
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+/** A decision's values by column name; NaN where a column does not apply. */
+export type DecisionRow = Record<string, number>;
+
+function label(columns: readonly ColumnSpec[], name: string, value: number): string | undefined {
+  return columns.find((c) => c.name === name)?.labels?.[value];
+}
+
+/**
+ * Wang's Figure 4b in the face's own frame: the first passive axis (M)
+ * runs right, the second (N) up. B is the corner where neither steps, A
+ * where the first does, C the second, D both; region x lies at corner X,
+ * segment e between A and B, f between B and C, g between C and D, h between
+ * D and A (the column docs and the core's explanations name them so).
+ */
+const SIZE = 160;
+const PAD = 26;
+const CORNERS: Record<string, [number, number]> = { A: [1, 0], B: [0, 0], C: [0, 1], D: [1, 1] };
+const QUADRANTS: Record<string, [number, number]> = { a: [0.5, 0], b: [0, 0], c: [0, 0.5], d: [0.5, 0.5] };
+const SEGMENTS: Record<string, [number, number, number, number]> = {
+  e: [0.5, 0, 0.5, 0.5],
+  f: [0, 0.5, 0.5, 0.5],
+  g: [0.5, 0.5, 0.5, 1],
+  h: [0.5, 0.5, 1, 0.5],
+};
+
+/** Face coordinates (0..1, y up) to SVG pixels. */
+const px = (u: number) => PAD + u * SIZE;
+const py = (v: number) => PAD + (1 - v) * SIZE;
+
+function regionFace(region: string, corner: string): SVGSVGElement {
+  const root = svg('svg', { viewBox: `0 0 ${SIZE + 2 * PAD} ${SIZE + 2 * PAD}`, role: 'img', class: 'face-figure' });
+  root.append(svg('title', {}, `The exit face: the line crosses ${region.length === 1 && 'abcd'.includes(region) ? `region ${region}` : region === 'o' ? 'the centre o' : `segment ${region}`}; the step goes to corner ${corner}.`));
+  for (const [name, [u, v]] of Object.entries(QUADRANTS)) {
+    const chosen = name === region;
+    root.append(svg('rect', { x: px(u), y: py(v + 0.5), width: SIZE / 2, height: SIZE / 2, class: chosen ? 'face-region chosen' : 'face-region' }));
+    root.append(svg('text', { x: px(u + 0.25), y: py(v + 0.25) + 5, class: 'face-label' }, name));
+  }
+  for (const [name, [u1, v1, u2, v2]] of Object.entries(SEGMENTS)) {
+    root.append(svg('line', { x1: px(u1), y1: py(v1), x2: px(u2), y2: py(v2), class: name === region ? 'face-segment chosen' : 'face-segment' }));
+    root.append(svg('text', { x: px((u1 + u2) / 2) + (u1 === u2 ? 8 : 0), y: py((v1 + v2) / 2) + (u1 === u2 ? 4 : -5), class: 'face-segment-label' }, name));
+  }
+  root.append(svg('circle', { cx: px(0.5), cy: py(0.5), r: region === 'o' ? 6 : 3.5, class: region === 'o' ? 'face-centre chosen' : 'face-centre' }));
+  for (const [name, [u, v]] of Object.entries(CORNERS)) {
+    const chosen = name === corner;
+    root.append(svg('circle', { cx: px(u), cy: py(v), r: chosen ? 8 : 5, class: chosen ? 'face-corner chosen' : 'face-corner' }));
+    root.append(svg('text', { x: px(u) + (u ? 10 : -18), y: py(v) + (v ? -6 : 16), class: 'face-corner-label' }, name));
+  }
+  root.append(svg('text', { x: px(0.5), y: SIZE + 2 * PAD - 4, class: 'face-axis' }, 'first passive axis steps (M > 0) →'));
+  root.append(svg('text', { x: 10, y: py(0.5), class: 'face-axis', transform: `rotate(-90 10 ${py(0.5)})` }, 'second (N > 0) →'));
+  return root;
+}
+
+/** Bars of `values` (label, value, chosen) on one scale, with an optional threshold line. */
+function bars(title: string, values: { label: string; value: number; note?: string }[], threshold?: { label: string; value: number }): SVGSVGElement {
+  const width = 260;
+  const rowHeight = 22;
+  const labelWidth = 70;
+  const height = values.length * rowHeight + 28;
+  const largest = Math.max(1, ...values.map((v) => Math.abs(v.value)), Math.abs(threshold?.value ?? 0));
+  const min = Math.min(0, ...values.map((v) => v.value));
+  const span = largest - min;
+  const x = (v: number) => labelWidth + ((v - min) / span) * (width - labelWidth - 40);
+  const root = svg('svg', { viewBox: `0 0 ${width} ${height}`, role: 'img', class: 'bars-figure' });
+  root.append(svg('title', {}, title));
+  values.forEach((v, i) => {
+    const y = 6 + i * rowHeight;
+    root.append(svg('text', { x: 4, y: y + 14, class: 'bar-label' }, v.label));
+    const x0 = x(Math.min(0, v.value));
+    const x1 = x(Math.max(0, v.value));
+    root.append(svg('rect', { x: x0, y, width: Math.max(1, x1 - x0), height: rowHeight - 6, class: v.note ? 'bar chosen' : 'bar' }));
+    root.append(svg('text', { x: x1 + 4, y: y + 13, class: 'bar-value' }, `${v.value}${v.note ? ` ${v.note}` : ''}`));
+  });
+  root.append(svg('line', { x1: x(0), y1: 2, x2: x(0), y2: height - 20, class: 'bar-axis' }));
+  if (threshold) {
+    const t = x(threshold.value);
+    root.append(svg('line', { x1: t, y1: 2, x2: t, y2: height - 20, class: 'bar-threshold' }));
+    root.append(svg('text', { x: Math.min(t, width - 90), y: height - 6, class: 'bar-threshold-label' }, `${threshold.label} ${threshold.value}`));
+  }
+  return root;
+}
+
+/** The picture for `row`, or undefined when the columns call for none (or the start point has no decision). */
+export function decisionFigure(columns: readonly ColumnSpec[], row: DecisionRow | undefined): SVGSVGElement | undefined {
+  if (!row) return undefined;
+  const has = (name: string) => columns.some((c) => c.name === name);
+  if (has('region') && has('corner')) {
+    const region = label(columns, 'region', row.region!);
+    const corner = label(columns, 'corner', row.corner!);
+    // '-' marks a line with no passive axis (Wang's type ②): no face decides.
+    if (region && corner && region !== '-' && corner !== '-') return regionFace(region, corner);
+    return undefined;
+  }
+  if (has('threshold')) {
+    const errors = columns.filter((c) => /^error/.test(c.name) && !Number.isNaN(row[c.name]!));
+    if (errors.length === 0 || Number.isNaN(row.threshold!)) return undefined;
+    return bars(
+      'Each error term against the threshold it is compared with; the sentence above says which axes stepped.',
+      errors.map((c) => ({ label: c.name, value: row[c.name]! })),
+      { label: 'threshold', value: row.threshold! },
+    );
+  }
+  if (has('error_stay') && has('error_move') && !Number.isNaN(row.error_stay!)) {
+    const moved = row.slow_steps === 1;
+    return bars('The residual x² + y² − r² of each candidate: the step takes the one nearer zero.', [
+      { label: 'stay', value: row.error_stay!, note: moved ? undefined : '(taken)' },
+      { label: 'move', value: row.error_move!, note: moved ? '(taken)' : undefined },
+    ]);
+  }
+  return undefined;
+}

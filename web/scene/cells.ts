@@ -1,0 +1,180 @@
+/**
+ * Cells drawn straight from the trace's points: the Int32Array the worker
+ * transferred becomes the GPU buffer as it is (an integer attribute read by
+ * the shaders below), never converted or copied per cell. A cell is the unit
+ * cube centred on an integer grid point; only its first 3 coordinates are
+ * drawn (a 2-axis point has z = 0).
+ *
+ * Two drawings of a buffer of cells:
+ * - cubes: one instanced box per cell, shaded by a fixed light; the number
+ *   drawn (instanceCount) scrubs from the start of the buffer;
+ * - points: one square point per cell, sized like the cell on screen (never
+ *   under 2 pixels); any range of cells can be drawn (drawRange), at one
+ *   vertex each: the lighter drawing of long paths (voxel-path.ts).
+ */
+import * as THREE from 'three';
+
+/** Cells from this many on are drawn as points rather than cubes (see README, "The page"). */
+export const LIGHT_DRAWING_CELLS = 100_000;
+
+/**
+ * A path this many grid units wide (on its widest axis) or more is drawn as
+ * points too: framed whole, its cubes would be under 2 pixels, which points
+ * (never drawn smaller than 2 pixels) keep visible.
+ */
+export const LIGHT_DRAWING_SPAN = 300;
+
+/** A colour as the shaders want it: sRGB components, since these raw shaders skip three's colour management. */
+function srgb(hex: string): THREE.Vector3 {
+  const c = new THREE.Color(hex);
+  c.convertLinearToSRGB();
+  return new THREE.Vector3(c.r, c.g, c.b);
+}
+
+/**
+ * The cells' coordinates as a GPU attribute over `points` (stride `dims`),
+ * reading the first min(dims, 3) coordinates of each row.
+ */
+function cellAttribute(points: Int32Array, dims: number, instanced: boolean): THREE.BufferAttribute | THREE.InterleavedBufferAttribute {
+  if (dims <= 3) return instanced ? new THREE.InstancedBufferAttribute(points, dims) : new THREE.BufferAttribute(points, dims);
+  const buffer = instanced ? new THREE.InstancedInterleavedBuffer(points, dims) : new THREE.InterleavedBuffer(points, dims);
+  return new THREE.InterleavedBufferAttribute(buffer, 3, 0);
+}
+
+const CUBE_VERTEX = /* glsl */ `
+precision highp float;
+precision highp int;
+uniform mat4 modelViewMatrix;
+uniform mat4 projectionMatrix;
+uniform float cellSize;
+in vec3 position;
+in vec3 normal;
+in ivec3 cell;
+out float shade;
+void main() {
+  // Lit from front-left-above, so the three visible faces of a cell differ in shade.
+  vec3 light = normalize(vec3(-0.7, -1.1, 1.6));
+  shade = 0.62 + 0.38 * max(dot(normal, light), 0.0);
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position * cellSize + vec3(cell), 1.0);
+}`;
+
+const POINT_VERTEX = /* glsl */ `
+precision highp float;
+precision highp int;
+uniform mat4 modelViewMatrix;
+uniform mat4 projectionMatrix;
+uniform float cellSize;
+uniform float halfHeightPx;
+in ivec3 position;
+out float shade;
+void main() {
+  shade = 1.0;
+  vec4 eye = modelViewMatrix * vec4(vec3(position), 1.0);
+  gl_Position = projectionMatrix * eye;
+  // A perspective projection has -1 in its third column's last row; there a
+  // cell shrinks with distance, in an orthographic one it does not.
+  float perspective = projectionMatrix[2][3] == -1.0 ? 1.0 / max(-eye.z, 1e-6) : 1.0;
+  gl_PointSize = clamp(cellSize * projectionMatrix[1][1] * halfHeightPx * perspective, 2.0, 64.0);
+}`;
+
+const FRAGMENT = /* glsl */ `
+precision highp float;
+uniform vec3 colour;
+uniform float opacity;
+in float shade;
+out vec4 fragColour;
+void main() {
+  fragColour = vec4(colour * shade, opacity);
+}`;
+
+export interface CellStyle {
+  colour: string;
+  /** Drawn edge of a cube (or point), grid units: a little under 1 keeps neighbours apart. */
+  cellSize: number;
+  /** 1 opaque; below 1 drawn blended, without writing depth, after opaque things. */
+  opacity: number;
+}
+
+/** Uniforms shared by every cell drawing; halfHeightPx is updated on resize. */
+export const cellUniforms = { halfHeightPx: { value: 300 } };
+
+function material(style: CellStyle, vertexShader: string): THREE.RawShaderMaterial {
+  const transparent = style.opacity < 1;
+  return new THREE.RawShaderMaterial({
+    glslVersion: THREE.GLSL3,
+    vertexShader,
+    fragmentShader: FRAGMENT,
+    uniforms: {
+      colour: { value: srgb(style.colour) },
+      opacity: { value: style.opacity },
+      cellSize: { value: style.cellSize },
+      halfHeightPx: cellUniforms.halfHeightPx,
+    },
+    transparent,
+    depthWrite: !transparent,
+  });
+}
+
+/** Box vertices and normals, shared by every cube drawing. */
+const UNIT_BOX = new THREE.BoxGeometry(1, 1, 1);
+
+/**
+ * A run of cells, drawn from the start of `points` (cubes) or over any
+ * range (points). `light` picks the drawing: points when true.
+ */
+export class Cells extends THREE.Group {
+  readonly #object: THREE.Mesh | THREE.Points;
+  readonly #geometry: THREE.BufferGeometry;
+  readonly #material: THREE.RawShaderMaterial;
+  readonly light: boolean;
+  /** How many cells `points` holds. */
+  readonly count: number;
+
+  /** `attribute` lets several drawings share one GPU buffer (see `attribute`); `bounds` frames culling. */
+  constructor(points: Int32Array, dims: number, style: CellStyle, light: boolean, bounds: THREE.Box3, attribute?: THREE.BufferAttribute | THREE.InterleavedBufferAttribute) {
+    super();
+    this.light = light;
+    this.count = points.length / dims;
+    const cells = attribute ?? cellAttribute(points, dims, !light);
+    if (light) {
+      this.#geometry = new THREE.BufferGeometry();
+      this.#geometry.setAttribute('position', cells);
+      this.#material = material(style, POINT_VERTEX);
+      this.#object = new THREE.Points(this.#geometry, this.#material);
+    } else {
+      const geometry = new THREE.InstancedBufferGeometry();
+      geometry.setIndex(UNIT_BOX.index);
+      geometry.setAttribute('position', UNIT_BOX.getAttribute('position'));
+      geometry.setAttribute('normal', UNIT_BOX.getAttribute('normal'));
+      geometry.setAttribute('cell', cells);
+      geometry.instanceCount = this.count;
+      this.#geometry = geometry;
+      this.#material = material(style, CUBE_VERTEX);
+      this.#object = new THREE.Mesh(this.#geometry, this.#material);
+    }
+    // Bounds from the path's box, not from a scan of a million cells.
+    this.#geometry.boundingBox = bounds.clone();
+    this.#geometry.boundingSphere = bounds.getBoundingSphere(new THREE.Sphere());
+    // Faint cells blend over what is behind them, so they come after the opaque ones.
+    this.#object.renderOrder = style.opacity < 1 ? 1 : 0;
+    this.add(this.#object);
+  }
+
+  /** The GPU attribute, to share with another drawing of the same cells. */
+  get attribute(): THREE.BufferAttribute | THREE.InterleavedBufferAttribute {
+    return this.#geometry.getAttribute(this.light ? 'position' : 'cell');
+  }
+
+  /** Draws cells first..first + count - 1; cubes always start at 0. */
+  setRange(first: number, count: number): void {
+    if (this.light) this.#geometry.setDrawRange(first, count);
+    else (this.#geometry as THREE.InstancedBufferGeometry).instanceCount = count;
+    this.#object.visible = count > 0;
+  }
+
+  dispose(): void {
+    // The box's own buffers are shared (UNIT_BOX); only this drawing's are released.
+    this.#geometry.dispose();
+    this.#material.dispose();
+  }
+}

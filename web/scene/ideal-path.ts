@@ -1,0 +1,75 @@
+/**
+ * The ideal path, drawn from the core's polyline (the page never derives it).
+ * It runs through the cells, so it is drawn twice: solid where nothing hides
+ * it, dashed and fainter where a cell is in front, so the learner can follow
+ * it through the voxels without losing depth.
+ *
+ * A polyline of more than FAT_LINE_POINTS points (a helix of many turns) is
+ * drawn once, as a plain 1-pixel line: wide lines cost a quad per segment
+ * twice over, which a software renderer feels, and at that length the path
+ * is thin on screen anyway.
+ */
+import * as THREE from 'three';
+import { Line2 } from 'three/examples/jsm/lines/Line2.js';
+import { LineGeometry } from 'three/examples/jsm/lines/LineGeometry.js';
+import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
+import { PALETTE } from './palette.js';
+
+/** Line width, CSS pixels. */
+const WIDTH_PX = 3;
+/** Polylines longer than this are drawn as a plain line (see above). */
+export const FAT_LINE_POINTS = 1_000;
+
+export class IdealPath extends THREE.Group {
+  readonly #geometry: THREE.BufferGeometry;
+  readonly #materials: THREE.Material[];
+
+  /** `polyline`: flat, stride `dims`, grid units (Trace.idealPolyline()). */
+  constructor(polyline: Float64Array, dims: number) {
+    super();
+    const count = polyline.length / dims;
+    const xyz = new Float32Array(count * 3);
+    for (let k = 0; k < count; k++) {
+      for (let a = 0; a < Math.min(dims, 3); a++) xyz[k * 3 + a] = polyline[k * dims + a]!;
+    }
+    if (count > FAT_LINE_POINTS) {
+      this.#geometry = new THREE.BufferGeometry();
+      this.#geometry.setAttribute('position', new THREE.BufferAttribute(xyz, 3));
+      this.#materials = [new THREE.LineBasicMaterial({ color: PALETTE.ideal })];
+      const line = new THREE.Line(this.#geometry, this.#materials[0]);
+      line.renderOrder = 2;
+      this.add(line);
+      return;
+    }
+    const geometry = new LineGeometry();
+    geometry.setPositions(xyz);
+    this.#geometry = geometry;
+
+    const visible = new LineMaterial({ color: PALETTE.ideal, linewidth: WIDTH_PX });
+    const hidden = new LineMaterial({
+      color: PALETTE.ideal,
+      linewidth: WIDTH_PX * 0.75,
+      dashed: true,
+      dashSize: 0.22,
+      gapSize: 0.16,
+      transparent: true,
+      opacity: 0.7,
+      // Only where something nearer has already been drawn.
+      depthFunc: THREE.GreaterDepth,
+      depthWrite: false,
+    });
+    this.#materials = [visible, hidden];
+    for (const material of [visible, hidden]) {
+      const line = new Line2(geometry, material);
+      line.computeLineDistances();
+      // After every cell, transparent ones included, so the depth test sees them all.
+      line.renderOrder = 2;
+      this.add(line);
+    }
+  }
+
+  dispose(): void {
+    this.#geometry.dispose();
+    for (const material of this.#materials) material.dispose();
+  }
+}

@@ -1,0 +1,33 @@
+/**
+ * Colours of the 3D view, from the Okabe-Ito palette, which stays
+ * distinguishable under the common colour-vision deficiencies. Visited and
+ * not-yet-visited cells also differ in lightness and opacity, not hue alone.
+ */
+export const PALETTE = {
+  background: '#f4f4f0',
+  /** Cells visited before the current one (Okabe-Ito sky blue). */
+  visited: '#56b4e9',
+  /** The current cell (Okabe-Ito vermillion). */
+  current: '#d55e00',
+  /** Cells the path has not reached yet: a faint neutral grey. */
+  ahead: '#8c8c8c',
+  /** The ideal path (Okabe-Ito black, softened). */
+  ideal: '#1a1a1a',
+  /** The second path of an overlaid comparison (Okabe-Ito bluish green). */
+  second: '#009e73',
+  /** Cells only the first compared path visits, and the steps of the picked G-code line (Okabe-Ito orange). */
+  onlyFirst: '#e69f00',
+  /** Cells only the second compared path visits (Okabe-Ito reddish purple). */
+  onlySecond: '#cc79a7',
+  /** Grid lines on the floor and axis arrows. */
+  grid: '#cfcfc6',
+  axis: '#555555',
+} as const;
+
+/**
+ * One colour per axis x, y, z, a, b, c in charts: black, vermillion and blue
+ * for x, y and z, as Wang's Figure 6 draws them in black, red and blue, in
+ * Okabe-Ito shades that survive colour blindness; then orange, bluish green
+ * and reddish purple.
+ */
+export const AXIS_COLOURS = ['#1a1a1a', '#d55e00', '#0072b2', '#e69f00', '#009e73', '#cc79a7'] as const;

@@ -1,0 +1,231 @@
+/**
+ * The page's one state: the mode, which algorithm(s), their options as the
+ * user typed them, the G-code program and machine, the experiment, the view
+ * (projection, camera), the point shown and the playback. Every view reads
+ * it; inputs change it through the Store; state/persist.ts keeps it in the
+ * URL and localStorage.
+ */
+import type { ExperimentInfo } from '../core/experiment.js';
+import type { AlgorithmInfo, OptionSpec, TraceOptions } from '../core/types.js';
+
+/** What the core offers: its algorithms and its experiments. */
+export interface Catalogue {
+  algorithms: AlgorithmInfo[];
+  experiments: ExperimentInfo[];
+}
+
+/** An option's value: a point as integers per axis, a choice as its word, a number, a yes/no. */
+export type OptionValue = number[] | number | string | boolean;
+
+/**
+ * trace: one algorithm on one move; compare: two algorithms on the same
+ * move; gcode: a program on a modelled machine; experiment: Wang's batch of
+ * random lines (Figure 9).
+ */
+export const MODES = ['trace', 'compare', 'gcode', 'experiment'] as const;
+export type Mode = (typeof MODES)[number];
+
+/** overlay: both paths in one view; side: one view each, cameras linked. */
+export const COMPARE_LAYOUTS = ['overlay', 'side'] as const;
+export type CompareLayout = (typeof COMPARE_LAYOUTS)[number];
+
+/** 3d: perspective, orbiting; 2d: orthographic, looking down a planar path's normal, with the pixel grid. */
+export const PROJECTIONS = ['3d', '2d'] as const;
+export type Projection = (typeof PROJECTIONS)[number];
+
+/** Where the camera is: position and orbit target in grid units, and the zoom of the 2D (orthographic) view. */
+export interface CameraState {
+  position: [number, number, number];
+  target: [number, number, number];
+  zoom: number;
+}
+
+export interface AppState {
+  mode: Mode;
+  /** Algorithm id from the catalogue (compare mode: the first, a). */
+  algorithm: string;
+  /** Compare mode: the second algorithm, b. It takes the options it declares from `options`. */
+  other: string;
+  layout: CompareLayout;
+  /** The algorithm's options, by OptionSpec name (from, to, tie...); absent ones take the core's default. */
+  options: Record<string, OptionValue>;
+  /** G-code mode: the program's text. */
+  gcode: string;
+  /** G-code mode: the machine, by GcodeSettings name (stepsPerMm or stepAngle + microsteps + pitch, line/arc algorithm). */
+  machine: Record<string, OptionValue>;
+  /** Experiment mode: the random-lines options (count, seed, maxCoordinate, dims); the algorithm is `algorithm`. */
+  experiment: Record<string, OptionValue>;
+  projection: Projection;
+  /** null: framed by the page (the whole path from the default direction). */
+  camera: CameraState | null;
+  /** Point index shown: the position after this many steps (0..=steps). */
+  pointIndex: number;
+  playing: boolean;
+  /** Playback speed in steps per second, one of SPEEDS_STEPS_PER_SECOND. */
+  speed: number;
+  /** Chrome-less view for an iframe (?embed=1). */
+  embed: boolean;
+}
+
+export const SPEEDS_STEPS_PER_SECOND = [0.5, 1, 2, 4, 8, 16, 32, 64, 256, 1024, 8192] as const;
+
+export const DEFAULT_SPEED = 2;
+
+/** The algorithm a first visit shows: DEFAULT_ALGORITHM, or the catalogue's first. */
+export function defaultAlgorithm(catalogue: readonly AlgorithmInfo[]): AlgorithmInfo {
+  const info = catalogue.find((a) => a.id === DEFAULT_ALGORITHM) ?? catalogue[0];
+  if (!info) throw new Error('the core lists no algorithms');
+  return info;
+}
+
+const DEFAULT_ALGORITHM = 'regions';
+
+/**
+ * The second algorithm compare mode starts with for `info`: greedy against
+ * a line algorithm (the lesson of the 2009 blog: greedy strays from the
+ * line), arc-segments against circle (direct arc stepping against chords),
+ * and for those two their natural partners.
+ */
+export function defaultOther(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AlgorithmInfo {
+  const partner: Record<string, string> = { greedy: 'walk6', circle: 'arc-segments', 'arc-segments': 'circle', helix: 'helix' };
+  const wanted = partner[info.id] ?? (info.family === 'arc' ? 'arc-segments' : 'greedy');
+  const found = catalogue.find((a) => a.id === wanted && a !== info) ?? catalogue.find((a) => a.family === info.family && a !== info);
+  return found ?? info;
+}
+
+/**
+ * Options the page sets itself instead of showing a field. The page caps the
+ * path length at what a browser draws and scrubs comfortably (the core's own
+ * default, 50,000,000, is for files and the CLI).
+ */
+export const PAGE_OPTIONS: Readonly<Record<string, OptionValue>> = { maxSteps: 1_500_000 };
+
+/** Axes the page shows: 2 or 3 (a 3D view), within what the algorithm takes. */
+export const PAGE_AXES = [2, 3] as const;
+
+/** The axis counts of PAGE_AXES that every algorithm of `infos` accepts. */
+export function axisChoices(infos: readonly AlgorithmInfo[]): number[] {
+  return PAGE_AXES.filter((n) => infos.every((info) => n >= info.minDims && n <= info.maxDims));
+}
+
+/**
+ * Axes of a point option on the page: the length of the `from` the user
+ * has, when the algorithms take it; else the example's (greedy, walk6 and
+ * dda open in 2D); else 3 when allowed.
+ */
+export function axisCount(infos: readonly AlgorithmInfo[], options: Readonly<Record<string, OptionValue>>): number {
+  const choices = axisChoices(infos);
+  const from = options.from;
+  if (Array.isArray(from) && choices.includes(from.length)) return from.length;
+  const example = infos[0]?.example.options.from;
+  if (Array.isArray(example) && choices.includes(example.length)) return example.length;
+  return choices.includes(3) ? 3 : (choices[0] ?? 3);
+}
+
+/** Every option the algorithms of `infos` declare, each name once (the first declaration), less PAGE_OPTIONS. */
+export function sharedOptionSpecs(infos: readonly AlgorithmInfo[]): OptionSpec[] {
+  const seen = new Map<string, OptionSpec>();
+  for (const info of infos) for (const spec of info.options) if (!(spec.name in PAGE_OPTIONS) && !seen.has(spec.name)) seen.set(spec.name, spec);
+  return [...seen.values()];
+}
+
+/** A point cut or padded with zeros to `axes` coordinates. */
+function fitPoint(point: readonly unknown[], axes: number): number[] {
+  return Array.from({ length: axes }, (_, a) => (typeof point[a] === 'number' ? (point[a] as number) : 0));
+}
+
+/** Every point option of `options` fitted to `axes` coordinates (the axis-count control). */
+export function withAxes(options: Readonly<Record<string, OptionValue>>, axes: number): Record<string, OptionValue> {
+  const out: Record<string, OptionValue> = {};
+  for (const [name, value] of Object.entries(options)) out[name] = Array.isArray(value) ? fitPoint(value, axes) : value;
+  return out;
+}
+
+/**
+ * The options of a first visit for `infos` (one algorithm, or a compared
+ * pair): the first one's example move (for regions, Wang et al.'s
+ * (0,0,0)->(10,7,6), the line of their Tables 1 and 2, so a learner can
+ * check the page against the paper), with points fitted to the axes the
+ * page shows. Other options are left out, so the core's default applies
+ * (some apply only with others: helix's lineAlgorithm in mode segments).
+ */
+export function defaultOptions(infos: readonly AlgorithmInfo[]): Record<string, OptionValue> {
+  const options: Record<string, OptionValue> = {};
+  const example = infos[0]?.example.options ?? {};
+  const axes = axisCount(infos, {});
+  for (const spec of sharedOptionSpecs(infos)) {
+    const value = example[spec.name] as OptionValue | undefined;
+    if (spec.kind.type === 'point' && Array.isArray(value)) options[spec.name] = fitPoint(value, axes);
+    else if (value !== undefined) options[spec.name] = value;
+  }
+  return options;
+}
+
+/** A first visit's machine: 80 steps/mm (a common belt-driven axis), regions for lines, Saleem's circle for arcs. */
+export const DEFAULT_MACHINE: Readonly<Record<string, OptionValue>> = { stepsPerMm: 80, lineAlgorithm: 'regions', arcAlgorithm: 'circle' };
+
+/**
+ * The machine's settings as form fields (GcodeSettings of the core). Give
+ * steps/mm, or leave it empty and give the step angle, microsteps and pitch
+ * (Wang section 3.3); the core names a setting it cannot use.
+ */
+export function machineSpecs(algorithms: readonly AlgorithmInfo[]): OptionSpec[] {
+  const lineAlgorithms = algorithms.filter((a) => a.family === 'line' && a.minDims <= 3 && a.maxDims >= 3).map((a) => a.id);
+  const number = (name: string, doc: string): OptionSpec => ({ name, kind: { type: 'number' }, required: false, default: null, doc });
+  return [
+    number('stepsPerMm', 'Steps per mm, every axis. Leave empty to use the motor below.'),
+    number('stepAngle', 'Motor step angle θ, degrees (1.8 for 200 steps per turn).'),
+    { name: 'microsteps', kind: { type: 'integer' }, required: false, default: null, doc: 'Microsteps per full step (s).' },
+    number('pitch', 'Lead-screw pitch P, mm per turn: steps/mm = (360 / θ · s) / P (Wang 3.3).'),
+    { name: 'lineAlgorithm', kind: { type: 'choice', values: lineAlgorithms }, required: false, default: 'regions', doc: 'Steps G0/G1 moves and the chords of arc-segments.' },
+    { name: 'arcAlgorithm', kind: { type: 'choice', values: ['circle', 'arc-segments'] }, required: false, default: 'circle', doc: "G2/G3: Saleem's circle, or chords (helices follow in the matching mode)." },
+  ];
+}
+
+/** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */
+export const DEFAULT_GCODE = '(A 20 mm square, absolute coordinates)\nG21 G90 G17\nG0 X0 Y0 Z0\nG1 X20 Y0 F600\nY20\nX0\nY0\n';
+
+/** Wang's experiment: 100 lines to points in 0..100, seed 1. */
+export const DEFAULT_EXPERIMENT: Readonly<Record<string, OptionValue>> = { count: 100, seed: 1, maxCoordinate: 100 };
+
+export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AppState {
+  return {
+    mode: 'trace',
+    algorithm: info.id,
+    other: defaultOther(info, catalogue).id,
+    layout: 'overlay',
+    options: defaultOptions([info]),
+    gcode: DEFAULT_GCODE,
+    machine: { ...DEFAULT_MACHINE },
+    experiment: { ...DEFAULT_EXPERIMENT },
+    projection: defaultProjection(axisCount([info], {})),
+    camera: null,
+    pointIndex: 0,
+    playing: false,
+    speed: DEFAULT_SPEED,
+    embed: false,
+  };
+}
+
+/** 2D paths open in the 2D view. */
+export function defaultProjection(axes: number): Projection {
+  return axes === 2 ? '2d' : '3d';
+}
+
+/** The algorithms the mode traces: one, or the compared pair (a then b). */
+export function tracedAlgorithms(state: AppState, catalogue: readonly AlgorithmInfo[]): AlgorithmInfo[] {
+  const find = (id: string) => catalogue.find((a) => a.id === id) ?? defaultAlgorithm(catalogue);
+  return state.mode === 'compare' ? [find(state.algorithm), find(state.other)] : [find(state.algorithm)];
+}
+
+/**
+ * The request the core receives for `info` in this state: the options it
+ * declares, as typed and unchecked (the core validates each and names the
+ * one at fault), plus the page's own. In compare mode each algorithm takes
+ * the shared options it declares, as the core's compare() does.
+ */
+export function traceOptions(state: AppState, info: AlgorithmInfo): TraceOptions {
+  const options: Record<string, unknown> = { algorithm: info.id };
+  for (const spec of info.options) if (spec.name in state.options) options[spec.name] = state.options[spec.name];
+  return { ...options, ...PAGE_OPTIONS } as TraceOptions;
+}

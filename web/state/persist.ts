@@ -1,0 +1,67 @@
+/**
+ * Keeps the state in the URL (the permalink) and in localStorage, both in the
+ * query format of state/query.ts, so nothing a user typed is lost on reload.
+ * On load a URL describing a state wins over localStorage.
+ */
+import { type AppState, type Catalogue, defaultAlgorithm, defaultState } from './app-state.js';
+import { GCODE_URL_LIMIT, stateFromQuery, stateToQuery } from './query.js';
+import type { Store } from './store.js';
+
+const STORAGE_KEY = 'voxpath.state';
+
+/**
+ * Writes are throttled to one per WRITE_DELAY_MS: playback changes the step
+ * many times a second, and browsers throttle (and warn about) rapid
+ * history.replaceState calls.
+ */
+const WRITE_DELAY_MS = 400;
+
+/** localStorage, or undefined where it is blocked (some privacy settings throw on access). */
+function storage(): Storage | undefined {
+  try {
+    return window.localStorage;
+  } catch {
+    return undefined;
+  }
+}
+
+/**
+ * The state to start from: the URL's, else the last visit's, else the
+ * defaults. A program too long for the URL comes from localStorage, which
+ * keeps it whole, so the editor's text survives a reload.
+ */
+export function loadState(catalogue: Catalogue): AppState {
+  const stored = stateFromQuery(storage()?.getItem(STORAGE_KEY) ?? '', catalogue);
+  const linked = stateFromQuery(window.location.search, catalogue);
+  if (linked && stored && !new URLSearchParams(window.location.search).has('gcode')) linked.gcode = stored.gcode;
+  return linked ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
+}
+
+function write(state: AppState): void {
+  const url = `${window.location.pathname}?${stateToQuery(state, { gcodeLimit: GCODE_URL_LIMIT })}${window.location.hash}`;
+  window.history.replaceState(window.history.state, '', url);
+  // An embedded view (say in a course page) must not replace the reader's own last visit.
+  if (state.embed) return;
+  try {
+    storage()?.setItem(STORAGE_KEY, stateToQuery(state, { gcodeLimit: Infinity }));
+  } catch {
+    // Storage full or blocked: the URL still holds the state.
+  }
+}
+
+/** Persists every change of `store`, throttled, and any pending change when the page is hidden or closed. */
+export function persistState(store: Store<AppState>): void {
+  let timer: ReturnType<typeof setTimeout> | undefined;
+  const flush = () => {
+    clearTimeout(timer);
+    timer = undefined;
+    write(store.state);
+  };
+  store.subscribe(() => {
+    timer ??= setTimeout(flush, WRITE_DELAY_MS);
+  });
+  window.addEventListener('pagehide', () => {
+    if (timer !== undefined) flush();
+  });
+  write(store.state);
+}

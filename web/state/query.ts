@@ -1,0 +1,180 @@
+/**
+ * AppState <-> URL query, the permalink format, also used for localStorage:
+ *
+ *   ?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6&tie=advance&step=3&speed=2&view=3d
+ *   ?mode=compare&algorithm=regions&other=greedy&layout=side&from=0,0,0&to=10,7,6
+ *   ?mode=gcode&gcode=G1%20X10&stepsPerMm=80&lineAlgorithm=regions&arcAlgorithm=circle
+ *   ?mode=experiment&algorithm=regions&count=100&seed=1&maxCoordinate=100
+ *   ...&camera=12.5,-30,20,5,3.5,3,1&embed=1
+ *
+ * Option keys are the API's option names, so a link reads like the CLI's
+ * flags (--from 0,0,0); a mode writes only its own keys. `step` is the point
+ * index shown (steps taken); `camera` is position x,y,z, target x,y,z and
+ * zoom, absent while the page frames the path itself. `playing` is left out
+ * on purpose: a page opened from a link starts paused, as moving content
+ * should not start by itself.
+ */
+import type { OptionSpec } from '../core/types.js';
+import {
+  type AppState,
+  type CameraState,
+  type Catalogue,
+  COMPARE_LAYOUTS,
+  MODES,
+  type OptionValue,
+  PAGE_OPTIONS,
+  PROJECTIONS,
+  SPEEDS_STEPS_PER_SECOND,
+  defaultAlgorithm,
+  defaultOptions,
+  defaultOther,
+  defaultProjection,
+  defaultState,
+  axisCount,
+  machineSpecs,
+  sharedOptionSpecs,
+  tracedAlgorithms,
+} from './app-state.js';
+
+/**
+ * A program longer than this many characters stays out of the URL (links
+ * get unwieldy, and servers refuse long ones); localStorage keeps it.
+ */
+export const GCODE_URL_LIMIT = 2000;
+
+/** A number as typed in the query, or undefined for text that is not one. */
+function numberOf(text: string): number | undefined {
+  const value = Number(text);
+  return text.trim() !== '' && Number.isFinite(value) ? value : undefined;
+}
+
+/**
+ * An option's value from its query text, or undefined when the text cannot be
+ * that kind of value. Numbers are kept as given (even out of range or
+ * fractional): the core judges them and the form shows its verdict.
+ */
+function parseOption(spec: OptionSpec, text: string): OptionValue | undefined {
+  switch (spec.kind.type) {
+    case 'point': {
+      const coords = text.split(',').map(numberOf);
+      return coords.every((c) => c !== undefined) ? (coords as number[]) : undefined;
+    }
+    case 'choice':
+      return spec.kind.values.includes(text) ? text : undefined;
+    case 'number':
+    case 'integer':
+      return numberOf(text);
+    case 'boolean':
+      return text === 'true' ? true : text === 'false' ? false : undefined;
+  }
+}
+
+function formatOption(value: OptionValue): string {
+  return Array.isArray(value) ? value.join(',') : String(value);
+}
+
+/** Values of `specs` read from `params` over `into` (which holds the defaults). */
+function readOptions(params: URLSearchParams, specs: readonly OptionSpec[], into: Record<string, OptionValue>): Record<string, OptionValue> {
+  for (const spec of specs) {
+    const text = params.get(spec.name);
+    if (text === null || spec.name in PAGE_OPTIONS) continue;
+    const value = parseOption(spec, text);
+    if (value !== undefined) into[spec.name] = value;
+  }
+  return into;
+}
+
+/** Camera numbers are written to this many decimals: far below a pixel, and a link stays short. */
+const CAMERA_DECIMALS = 4;
+
+/** A camera rounded as the URL writes it, so the state and its link agree exactly. */
+export function roundCamera(camera: CameraState): CameraState {
+  const r = (v: number) => Number(v.toFixed(CAMERA_DECIMALS));
+  return {
+    position: camera.position.map(r) as CameraState['position'],
+    target: camera.target.map(r) as CameraState['target'],
+    zoom: r(camera.zoom),
+  };
+}
+
+function parseCamera(text: string | null): CameraState | null {
+  const v = (text ?? '').split(',').map(numberOf);
+  if (v.length !== 7 || v.some((c) => c === undefined) || v[6]! <= 0) return null;
+  const n = v as number[];
+  return { position: [n[0]!, n[1]!, n[2]!], target: [n[3]!, n[4]!, n[5]!], zoom: n[6]! };
+}
+
+export interface QueryOptions {
+  /** Programs longer than this many characters are left out (the URL); Infinity keeps any (localStorage). */
+  gcodeLimit: number;
+}
+
+/** Query text (without '?') for a state; commas are left readable. */
+export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): string {
+  const pairs: [string, string][] = [['mode', state.mode]];
+  const options = (values: Record<string, OptionValue>) => {
+    for (const [name, value] of Object.entries(values)) pairs.push([name, formatOption(value)]);
+  };
+  if (state.mode !== 'gcode') pairs.push(['algorithm', state.algorithm]);
+  if (state.mode === 'compare') pairs.push(['other', state.other], ['layout', state.layout]);
+  if (state.mode === 'trace' || state.mode === 'compare') options(state.options);
+  if (state.mode === 'gcode') {
+    if (state.gcode.length <= gcodeLimit) pairs.push(['gcode', state.gcode]);
+    options(state.machine);
+  }
+  if (state.mode === 'experiment') options(state.experiment);
+  else {
+    pairs.push(['step', String(state.pointIndex)], ['speed', String(state.speed)], ['view', state.projection]);
+    if (state.camera) {
+      const c = state.camera;
+      pairs.push(['camera', [...c.position, ...c.target, c.zoom].map(formatOption).join(',')]);
+    }
+  }
+  if (state.embed) pairs.push(['embed', '1']);
+  return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v).replaceAll('%2C', ',')}`).join('&');
+}
+
+/** The machine settings that give steps per mm, directly or from the motor. */
+const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
+
+/** Keys that say a query describes a state (any option name counts too). */
+const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'camera', 'gcode', 'embed'];
+
+/**
+ * The state a query describes, or undefined when it has none of the state's
+ * keys. Keys it lacks, or whose text is unusable, take their defaults: a link
+ * shows what its sender saw, not a mix with the reader's last visit. Without
+ * `algorithm` (or with an id the catalogue lacks) it is the default algorithm.
+ */
+export function stateFromQuery(query: string, catalogue: Catalogue): AppState | undefined {
+  const params = new URLSearchParams(query);
+  const { algorithms } = catalogue;
+  const info = algorithms.find((a) => a.id === params.get('algorithm')) ?? defaultAlgorithm(algorithms);
+  const optionNames = algorithms.flatMap((a) => a.options.map((o) => o.name));
+  if (![...STATE_KEYS, ...optionNames].some((k) => params.has(k))) return undefined;
+  const state = defaultState(info, algorithms);
+  const mode = params.get('mode');
+  state.mode = MODES.find((m) => m === mode) ?? 'trace';
+  const other = algorithms.find((a) => a.id === params.get('other'));
+  if (other) state.other = other.id;
+  state.layout = COMPARE_LAYOUTS.find((l) => l === params.get('layout')) ?? state.layout;
+
+  const infos = tracedAlgorithms(state, algorithms);
+  if (state.mode === 'compare') state.other = infos[1]?.id ?? defaultOther(info, algorithms).id;
+  state.options = readOptions(params, sharedOptionSpecs(infos), defaultOptions(infos));
+  // A link that names any drive setting names all it uses: a cleared steps/mm (to use the motor's) stays cleared.
+  if (DRIVE_KEYS.some((k) => params.has(k))) delete state.machine.stepsPerMm;
+  state.machine = readOptions(params, machineSpecs(algorithms), state.machine);
+  const experiment = catalogue.experiments.find((e) => e.id === 'random-lines');
+  if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment);
+  state.gcode = params.get('gcode') ?? state.gcode;
+
+  const step = numberOf(params.get('step') ?? '');
+  if (step !== undefined && Number.isSafeInteger(step) && step >= 0) state.pointIndex = step;
+  const speed = numberOf(params.get('speed') ?? '');
+  if (SPEEDS_STEPS_PER_SECOND.some((s) => s === speed)) state.speed = speed!;
+  state.projection = PROJECTIONS.find((p) => p === params.get('view')) ?? defaultProjection(axisCount(infos, state.options));
+  state.camera = parseCamera(params.get('camera'));
+  state.embed = params.get('embed') === '1';
+  return state;
+}

@@ -1,0 +1,158 @@
+/**
+ * Play / pause / first / previous / next / last, the scrubber, the "step k of
+ * n" counter, jump to a step, the speed, and their keys (Space, Left/Right
+ * arrows, Home/End).
+ * All of them only change the state's pointIndex, playing and speed; the
+ * views follow the state.
+ */
+import { type AppState, SPEEDS_STEPS_PER_SECOND } from '../state/app-state.js';
+import type { Store } from '../state/store.js';
+
+export interface TimelineElements {
+  first: HTMLButtonElement;
+  previous: HTMLButtonElement;
+  play: HTMLButtonElement;
+  /** The play button's visible text, "Play" or "Pause". */
+  playLabel: HTMLElement;
+  next: HTMLButtonElement;
+  last: HTMLButtonElement;
+  scrubber: HTMLInputElement;
+  counter: HTMLOutputElement;
+  speed: HTMLSelectElement;
+  /** A form with a number field: submitting it jumps to that step. */
+  jump: HTMLFormElement;
+  jumpInput: HTMLInputElement;
+}
+
+/** Targets whose own keyboard handling must win over the page's keys. */
+export function handlesItsOwnKeys(target: EventTarget | null, key: string): boolean {
+  if (!(target instanceof HTMLElement)) return false;
+  // The view and its handles use the arrows themselves (data-own-keys).
+  if (target.closest('[data-own-keys]')) return true;
+  if (target.isContentEditable || target instanceof HTMLTextAreaElement || target instanceof HTMLSelectElement) return true;
+  // A range input already steps with arrows and Home/End; other inputs edit text.
+  if (target instanceof HTMLInputElement) return true;
+  // Space and Enter press a focused button.
+  return target instanceof HTMLButtonElement && (key === ' ' || key === 'Enter');
+}
+
+export class Timeline {
+  readonly #e: TimelineElements;
+  readonly #store: Store<AppState>;
+  /** Steps of the trace shown, or undefined while there is none. */
+  #steps: number | undefined;
+  #frame: number | undefined;
+  /** Playback time not yet turned into whole steps, in seconds. */
+  #carrySeconds = 0;
+  #lastFrameMs = 0;
+
+  constructor(elements: TimelineElements, store: Store<AppState>) {
+    this.#e = elements;
+    this.#store = store;
+    for (const speed of SPEEDS_STEPS_PER_SECOND) {
+      elements.speed.append(new Option(`${speed} steps/s`, String(speed)));
+    }
+    elements.first.addEventListener('click', () => this.#go(0));
+    elements.previous.addEventListener('click', () => this.#go(this.#store.state.pointIndex - 1));
+    elements.next.addEventListener('click', () => this.#go(this.#store.state.pointIndex + 1));
+    elements.last.addEventListener('click', () => this.#go(this.#steps ?? 0));
+    elements.play.addEventListener('click', () => this.#togglePlay());
+    elements.scrubber.addEventListener('input', () => this.#go(elements.scrubber.valueAsNumber));
+    elements.speed.addEventListener('change', () => store.update({ speed: Number(elements.speed.value) }));
+    elements.jump.addEventListener('submit', (event) => {
+      event.preventDefault();
+      const wanted = elements.jumpInput.valueAsNumber;
+      if (Number.isInteger(wanted)) this.#go(wanted);
+    });
+    document.addEventListener('keydown', (event) => this.#key(event));
+    store.subscribe(() => this.#render());
+    this.#render();
+  }
+
+  /** The trace's step count (undefined: no trace, controls disabled); clamps the point shown to it. */
+  setSteps(steps: number | undefined): void {
+    this.#steps = steps;
+    const { pointIndex } = this.#store.state;
+    if (steps !== undefined && pointIndex > steps) this.#store.update({ pointIndex: steps });
+    if (steps === undefined) this.#store.update({ playing: false });
+    this.#render();
+  }
+
+  #go(pointIndex: number): void {
+    if (this.#steps === undefined) return;
+    this.#store.update({ pointIndex: Math.min(Math.max(0, pointIndex), this.#steps), playing: false });
+  }
+
+  #togglePlay(): void {
+    if (this.#steps === undefined) return;
+    const { playing, pointIndex } = this.#store.state;
+    if (playing) this.#store.update({ playing: false });
+    // Play at the end starts over, as media players do.
+    else this.#store.update({ playing: true, pointIndex: pointIndex >= this.#steps ? 0 : pointIndex });
+  }
+
+  #key(event: KeyboardEvent): void {
+    if (event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey) return;
+    if (handlesItsOwnKeys(event.target, event.key)) return;
+    const { pointIndex } = this.#store.state;
+    const actions: Record<string, () => void> = {
+      ' ': () => this.#togglePlay(),
+      ArrowLeft: () => this.#go(pointIndex - 1),
+      ArrowRight: () => this.#go(pointIndex + 1),
+      Home: () => this.#go(0),
+      End: () => this.#go(this.#steps ?? 0),
+    };
+    const action = actions[event.key];
+    if (!action) return;
+    event.preventDefault();
+    action();
+  }
+
+  #tick(nowMs: number): void {
+    const { playing, pointIndex, speed } = this.#store.state;
+    if (!playing || this.#steps === undefined) return;
+    // A long gap (a hidden tab) is not caught up on: at most a quarter second counts.
+    this.#carrySeconds += Math.min(nowMs - this.#lastFrameMs, 250) / 1000;
+    this.#lastFrameMs = nowMs;
+    const steps = Math.floor(this.#carrySeconds * speed);
+    this.#carrySeconds -= steps / speed;
+    if (steps > 0) {
+      const next = Math.min(pointIndex + steps, this.#steps);
+      this.#store.update({ pointIndex: next, playing: next < this.#steps });
+    }
+    if (this.#store.state.playing) this.#frame = requestAnimationFrame((t) => this.#tick(t));
+  }
+
+  #render(): void {
+    const { pointIndex, playing, speed } = this.#store.state;
+    const e = this.#e;
+    const steps = this.#steps ?? 0;
+    const none = this.#steps === undefined;
+    // aria-disabled, not disabled: a disabled button drops keyboard focus, so
+    // pressing Next up to the last step would leave the user nowhere.
+    for (const b of [e.first, e.previous]) b.setAttribute('aria-disabled', String(none || pointIndex === 0));
+    for (const b of [e.next, e.last]) b.setAttribute('aria-disabled', String(none || pointIndex === steps));
+    e.play.disabled = e.scrubber.disabled = none;
+    e.playLabel.textContent = playing ? 'Pause' : 'Play';
+    e.play.title = playing ? 'Pause (Space)' : 'Play (Space)';
+    e.play.dataset.playing = String(playing);
+    e.jumpInput.max = e.scrubber.max = String(steps);
+    e.jumpInput.disabled = none;
+    e.scrubber.value = String(pointIndex);
+    const text = `Step ${pointIndex} of ${steps}`;
+    e.scrubber.setAttribute('aria-valuetext', text);
+    e.counter.value = text;
+    // Announcing every step of playback would drown a screen reader.
+    e.counter.setAttribute('aria-live', playing ? 'off' : 'polite');
+    e.speed.value = String(speed);
+
+    if (playing && this.#frame === undefined) {
+      this.#carrySeconds = 0;
+      this.#lastFrameMs = performance.now();
+      this.#frame = requestAnimationFrame((t) => this.#tick(t));
+    } else if (!playing && this.#frame !== undefined) {
+      cancelAnimationFrame(this.#frame);
+      this.#frame = undefined;
+    }
+  }
+}

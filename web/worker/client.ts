@@ -1,0 +1,325 @@
+/**
+ * The page's side of the trace worker: typed requests with ids, answered by
+ * promises, and RemoteTrace, the main thread's view of a trace the worker holds
+ * (the same shape as the core's Trace, with the replayed parts asynchronous).
+ *
+ * If the core crashes (a trap in wasm is a bug in the core) or the worker dies,
+ * every pending request is rejected with CoreCrash, the listener is told, and
+ * the next request starts a fresh worker: the page stays usable.
+ */
+import type { GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { ColumnSpec, DecisionColumns, Metrics, SegmentInfo, TraceOptions, TraceSummary } from '../core/types.js';
+import type {
+  ChartSeries,
+  InputError,
+  LineSteps,
+  PulseCodes,
+  ReplyMessage,
+  ReplyValue,
+  RequestKind,
+  RequestMessage,
+  RunProgram,
+  TraceDifference,
+  WorkerRequest,
+} from './protocol.js';
+
+/** The core rejected an input; `field` names the option at fault. */
+export class InputRejected extends Error implements InputError {
+  override readonly name = 'InputRejected';
+  readonly field?: string;
+
+  constructor(error: InputError) {
+    super(error.message);
+    this.field = error.field;
+  }
+}
+
+/** The core or its worker died; the request may be retried on the fresh worker. */
+export class CoreCrash extends Error {
+  override readonly name = 'CoreCrash';
+}
+
+/** The page cancelled the request. */
+export class Cancelled extends Error {
+  override readonly name = 'Cancelled';
+}
+
+/** The part of a Worker the client uses, so tests can drive it with a fake. */
+export interface WorkerPort {
+  postMessage(message: RequestMessage): void;
+  terminate(): void;
+  onmessage: ((event: MessageEvent<ReplyMessage>) => void) | null;
+  onerror: ((event: ErrorEvent) => void) | null;
+}
+
+interface Pending {
+  resolve(value: ReplyValue[RequestKind]): void;
+  reject(error: Error): void;
+  onProgress?: (progress: GcodeProgress) => void;
+}
+
+/** A request under way that can be stopped. */
+export interface Running<T> {
+  result: Promise<T>;
+  /** Asks the worker to stop; `result` then rejects with Cancelled (unless it had finished). */
+  cancel(): void;
+}
+
+export class TraceClient {
+  readonly #createWorker: () => WorkerPort;
+  readonly #onCrash: (message: string) => void;
+  #worker?: WorkerPort;
+  /** Counts workers started, so a RemoteTrace can tell that its worker is gone. */
+  #generation = 0;
+  #nextId = 1;
+  #nextTraceId = 1;
+  readonly #pending = new Map<number, Pending>();
+
+  constructor(createWorker: () => WorkerPort, onCrash: (message: string) => void) {
+    this.#createWorker = createWorker;
+    this.#onCrash = onCrash;
+  }
+
+  /** Worker incarnation; bumped on every crash. */
+  get generation(): number {
+    return this.#generation;
+  }
+
+  /**
+   * The worker, started on first use. Started lazily rather than right after a
+   * crash, so that a worker which cannot even load (say its script is missing)
+   * fails once per user action instead of in a restart loop.
+   */
+  #port(): WorkerPort {
+    if (!this.#worker) {
+      const worker = this.#createWorker();
+      worker.onmessage = (event) => this.#receive(worker, event.data);
+      worker.onerror = (event) => {
+        event.preventDefault?.();
+        this.#crash(worker, `the trace worker failed: ${event.message || 'it could not start'}`);
+      };
+      this.#worker = worker;
+    }
+    return this.#worker;
+  }
+
+  #receive(worker: WorkerPort, reply: ReplyMessage): void {
+    if (worker !== this.#worker) return;
+    const pending = this.#pending.get(reply.id);
+    if (!pending) return;
+    if ('progress' in reply) {
+      pending.onProgress?.(reply.progress);
+      return;
+    }
+    this.#pending.delete(reply.id);
+    if (reply.ok) pending.resolve(reply.value);
+    else if (reply.failure === 'input') pending.reject(new InputRejected(reply.error));
+    else if (reply.failure === 'error') pending.reject(new Error(reply.message));
+    else if (reply.failure === 'cancelled') pending.reject(new Cancelled(reply.message));
+    else {
+      pending.reject(new CoreCrash(reply.message));
+      this.#crash(worker, reply.message);
+    }
+  }
+
+  #crash(worker: WorkerPort, message: string): void {
+    if (worker !== this.#worker) return;
+    worker.terminate();
+    this.#worker = undefined;
+    this.#generation += 1;
+    const pending = [...this.#pending.values()];
+    this.#pending.clear();
+    for (const p of pending) p.reject(new CoreCrash(message));
+    this.#onCrash(message);
+  }
+
+  request<K extends RequestKind>(request: Extract<WorkerRequest, { kind: K }>): Promise<ReplyValue[K]> {
+    return this.start(request).result;
+  }
+
+  /** Sends `request`; progress messages go to `onProgress`. */
+  start<K extends RequestKind>(request: Extract<WorkerRequest, { kind: K }>, onProgress?: (progress: GcodeProgress) => void): Running<ReplyValue[K]> {
+    const id = this.#nextId++;
+    const worker = this.#port();
+    const result = new Promise<ReplyValue[K]>((resolve, reject) => {
+      this.#pending.set(id, { resolve: resolve as Pending['resolve'], reject, onProgress });
+      worker.postMessage({ id, request });
+    });
+    return {
+      result,
+      cancel: () => {
+        if (this.#pending.has(id) && this.#worker === worker) worker.postMessage({ id, cancel: true });
+      },
+    };
+  }
+
+  /** Every algorithm and experiment the core runs. */
+  catalogue(): Promise<ReplyValue['catalogue']> {
+    return this.request({ kind: 'catalogue' });
+  }
+
+  /** Runs a trace in the worker; rejects with InputRejected naming the option at fault. */
+  async trace(options: TraceOptions): Promise<RemoteTrace> {
+    const traceId = this.#nextTraceId++;
+    const generation = this.#generation;
+    const path = await this.request({ kind: 'trace', traceId, options });
+    return new RemoteTrace(this, traceId, generation, path.summary, path.points, path.idealPolyline);
+  }
+
+  /** Runs a G-code program in the worker, reporting progress after every slice of lines; cancellable. */
+  runGcode(source: string, settings: GcodeSettings, onProgress: (progress: GcodeProgress) => void): Running<RemoteProgram> {
+    const traceId = this.#nextTraceId++;
+    const generation = this.#generation;
+    const running = this.start({ kind: 'gcode', traceId, source, settings }, onProgress);
+    return { result: running.result.then((run) => new RemoteProgram(this, traceId, generation, run)), cancel: running.cancel };
+  }
+
+  /** Where two traces of the same move part (both held by the current worker). */
+  difference(a: RemoteTrace, b: RemoteTrace): Promise<TraceDifference> {
+    if (!a.alive || !b.alive) return Promise.reject(new CoreCrash('a trace was lost with a crashed worker; trace again'));
+    return this.request({ kind: 'difference', traceIdA: a.traceId, traceIdB: b.traceId });
+  }
+
+  /** Wang's random-lines experiment (section 3.2, Figure 9). */
+  randomLines(options: RandomLinesOptions): Promise<RandomLinesResult> {
+    return this.request({ kind: 'randomLines', options });
+  }
+}
+
+/**
+ * A trace held by the worker. Point index k runs 0..=steps, step index k runs
+ * 0..steps-1 (step k moves point k to point k + 1), as in the core's Trace.
+ */
+export class RemoteTrace implements TraceSummary {
+  readonly algorithm: string;
+  readonly dims: number;
+  readonly steps: number;
+  readonly start: number[];
+  readonly end: number[];
+  readonly columns: ColumnSpec[];
+  readonly metrics: Metrics;
+  readonly segments: SegmentInfo[];
+  /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
+  readonly points: Int32Array;
+  /** The ideal path as the core draws it, flat with stride dims, grid units. */
+  readonly idealPolyline: Float64Array;
+  readonly #client: TraceClient;
+  /** The id the worker holds this trace by. */
+  readonly traceId: number;
+  readonly #generation: number;
+
+  constructor(
+    client: TraceClient,
+    traceId: number,
+    generation: number,
+    summary: TraceSummary,
+    points: Int32Array,
+    idealPolyline: Float64Array,
+  ) {
+    this.#client = client;
+    this.traceId = traceId;
+    this.#generation = generation;
+    this.algorithm = summary.algorithm;
+    this.dims = summary.dims;
+    this.steps = summary.steps;
+    this.start = summary.start;
+    this.end = summary.end;
+    this.columns = summary.columns;
+    this.metrics = summary.metrics;
+    this.segments = summary.segments;
+    this.points = points;
+    this.idealPolyline = idealPolyline;
+  }
+
+  /** Point index k as its coordinates (a view into `points`). */
+  point(pointIndex: number): Int32Array {
+    return this.points.subarray(pointIndex * this.dims, (pointIndex + 1) * this.dims);
+  }
+
+  /** False once the worker holding this trace has crashed: replayed data is then out of reach. */
+  get alive(): boolean {
+    return this.#generation === this.#client.generation;
+  }
+
+  protected ask<K extends RequestKind>(request: Extract<WorkerRequest, { kind: K }>): Promise<ReplyValue[K]> {
+    if (!this.alive) return Promise.reject(new CoreCrash('this trace was lost with a crashed worker; trace again'));
+    return this.#client.request(request);
+  }
+
+  /** Decision columns for step indices fromStep..toStep, replayed by the core. */
+  decisionsInRange(fromStep: number, toStep: number): Promise<DecisionColumns> {
+    return this.ask({ kind: 'decisions', traceId: this.traceId, fromStep, toStep });
+  }
+
+  /** Distance from the ideal path of point indices fromPoint..toPoint, grid units. */
+  deviationInRange(fromPoint: number, toPoint: number): Promise<Float64Array> {
+    return this.ask({ kind: 'deviation', traceId: this.traceId, fromPoint, toPoint });
+  }
+
+  /** The core's one sentence on why step index k was taken. */
+  explain(stepIndex: number): Promise<string> {
+    return this.ask({ kind: 'explain', traceId: this.traceId, stepIndex });
+  }
+
+  /** The charts' rows: every point, or buckets when there are more than maxPoints. */
+  series(maxPoints: number): Promise<ChartSeries> {
+    return this.ask({ kind: 'series', traceId: this.traceId, maxPoints });
+  }
+
+  /** STEP codes and DIR levels of step indices fromStep..toStep, for the timing diagram. */
+  pulseCodes(fromStep: number, toStep: number): Promise<PulseCodes> {
+    return this.ask({ kind: 'pulses', traceId: this.traceId, fromStep, toStep });
+  }
+
+  /** The whole trace as the CLI writes it: CSV (one row per point) or JSON. */
+  exportAs(format: 'csv' | 'json'): Promise<string> {
+    return this.ask({ kind: 'export', traceId: this.traceId, format });
+  }
+
+  /** Releases the worker's copy; a trace lost in a crash has nothing left to free. */
+  free(): void {
+    // A crash while this is on its way takes the trace with it: nothing to report.
+    if (this.alive) this.#client.request({ kind: 'free', traceId: this.traceId }).catch(() => undefined);
+  }
+}
+
+/** A G-code program the worker ran and holds: its trace, plus the program's record and line <-> step lookups. */
+export class RemoteProgram extends RemoteTrace {
+  /** Lines of the source. */
+  readonly lines: number;
+  readonly stepsPerMm: number[];
+  readonly moveCount: number;
+  /** Pulses per axis (x, y, z) over the whole program. */
+  readonly pulsesByAxis: number[];
+  readonly warnings: GcodeDiagnostic[];
+  readonly warningsOmitted: number;
+  readonly errors: GcodeDiagnostic[];
+  readonly stoppedAtLine: number | null;
+
+  constructor(client: TraceClient, traceId: number, generation: number, run: RunProgram) {
+    super(client, traceId, generation, run.summary, run.points, run.idealPolyline);
+    this.lines = run.lines;
+    this.stepsPerMm = run.stepsPerMm;
+    this.moveCount = run.moveCount;
+    this.pulsesByAxis = run.pulses;
+    this.warnings = run.warnings;
+    this.warningsOmitted = run.warningsOmitted;
+    this.errors = run.errors;
+    this.stoppedAtLine = run.stoppedAtLine;
+  }
+
+  /** Moves fromMove..toMove of the program, in step order. */
+  moves(fromMove: number, toMove: number): Promise<GcodeMove[]> {
+    return this.ask({ kind: 'moves', traceId: this.traceId, fromMove, toMove });
+  }
+
+  /** The move that took step index k, and its 1-based source line. */
+  moveOfStep(stepIndex: number): Promise<{ moveIndex: number; line: number }> {
+    return this.ask({ kind: 'moveOfStep', traceId: this.traceId, stepIndex });
+  }
+
+  /** The steps a 1-based source line produced, and where the machine is when it starts. */
+  lineSteps(line: number): Promise<LineSteps> {
+    return this.ask({ kind: 'lineSteps', traceId: this.traceId, line });
+  }
+}

@@ -1,0 +1,148 @@
+/**
+ * Messages between the page (main thread) and the trace worker, which owns
+ * every Trace (and G-code program) and is the page's only user of the wasm
+ * core.
+ *
+ * Each request carries an id; the worker answers each with exactly one reply
+ * carrying the same id, and a long request (a G-code run) may send progress
+ * messages with that id before it. A `cancel` message stops the request it
+ * names at its next slice. Bulk arrays cross as transferred buffers, not
+ * copies:
+ * - points: Int32Array, stride dims, one row per point index 0..=steps;
+ * - idealPolyline: Float64Array, stride dims, grid units;
+ * - decisions: one typed array per column, one entry per step index of the range;
+ * - deviation: Float64Array, one entry per point index of the range;
+ * - series: see ChartSeries; cells: Int32Array, stride dims.
+ */
+import type { ExperimentInfo, GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { AlgorithmInfo, DecisionColumns, TraceOptions, TraceSummary } from '../core/types.js';
+
+/** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
+export type WorkerRequest =
+  | { kind: 'catalogue' }
+  | { kind: 'trace'; traceId: number; options: TraceOptions }
+  | { kind: 'gcode'; traceId: number; source: string; settings: GcodeSettings }
+  | { kind: 'decisions'; traceId: number; fromStep: number; toStep: number }
+  | { kind: 'deviation'; traceId: number; fromPoint: number; toPoint: number }
+  | { kind: 'explain'; traceId: number; stepIndex: number }
+  | { kind: 'series'; traceId: number; maxPoints: number }
+  | { kind: 'difference'; traceIdA: number; traceIdB: number }
+  | { kind: 'pulses'; traceId: number; fromStep: number; toStep: number }
+  | { kind: 'moves'; traceId: number; fromMove: number; toMove: number }
+  | { kind: 'moveOfStep'; traceId: number; stepIndex: number }
+  | { kind: 'lineSteps'; traceId: number; line: number }
+  | { kind: 'export'; traceId: number; format: 'csv' | 'json' }
+  | { kind: 'randomLines'; options: RandomLinesOptions }
+  | { kind: 'free'; traceId: number };
+
+export type RequestKind = WorkerRequest['kind'];
+
+/** A finished trace as the page receives it: the summary and the arrays every view needs at once. */
+export interface TracedPath {
+  summary: TraceSummary;
+  points: Int32Array;
+  idealPolyline: Float64Array;
+}
+
+/**
+ * Per-point quantities for the charts, at most `maxPoints` rows. Row r is
+ * point index pointIndex[r]. A path with more points than that is cut into
+ * equal buckets of point indices: positions are the bucket's first point,
+ * deviation is the bucket's largest and smallest value, so no peak is lost.
+ */
+export interface ChartSeries {
+  pointIndex: Float64Array;
+  /** One array per axis: the point's coordinate, grid units. */
+  position: Float64Array[];
+  /** One array per axis: where the ideal path is at the same progress (point - Wang eq. 11 error). */
+  ideal: Float64Array[];
+  deviationMax: Float64Array;
+  deviationMin: Float64Array;
+  /** True when rows are buckets of several points. */
+  bucketed: boolean;
+}
+
+/**
+ * Where two traces of the same move part. The cells each visits and the
+ * other does not are computed from the two paths; the reasons come from the
+ * core's explain().
+ */
+export interface TraceDifference {
+  /** First point index where the points differ; null when the paths are the same. */
+  firstPointIndex: number | null;
+  /** Why each took the step before it (step index firstPointIndex - 1); null at point 0 or past a path's end. */
+  whyA: string | null;
+  whyB: string | null;
+  /** Distinct cells only one path visits, in its path order, flat with stride dims. */
+  onlyInA: Int32Array;
+  onlyInB: Int32Array;
+}
+
+/** A G-code run as the page receives it: the trace's arrays and the program's record without its move list. */
+export interface RunProgram extends TracedPath {
+  lines: number;
+  stepsPerMm: number[];
+  moveCount: number;
+  pulses: number[];
+  warnings: GcodeDiagnostic[];
+  warningsOmitted: number;
+  errors: GcodeDiagnostic[];
+  stoppedAtLine: number | null;
+}
+
+/** Step indices a source line produced (its move), and where the machine is when the line starts. */
+export interface LineSteps {
+  /** Step indices firstStep..firstStep + steps; steps is 0 for a line without a move. */
+  firstStep: number;
+  steps: number;
+  /** The point index where the machine is when the line starts (GcodeProgram.pointBeforeLine). */
+  pointBefore: number;
+}
+
+/** STEP codes and DIR levels (Trace.stepCodes and directionLevels) of a range of step indices. */
+export interface PulseCodes {
+  stepCodes: Uint16Array;
+  directionLevels: Uint8Array;
+}
+
+/** The value a successful reply carries, by request kind. */
+export interface ReplyValue {
+  catalogue: { algorithms: AlgorithmInfo[]; experiments: ExperimentInfo[] };
+  trace: TracedPath;
+  gcode: RunProgram;
+  decisions: DecisionColumns;
+  deviation: Float64Array;
+  explain: string;
+  series: ChartSeries;
+  difference: TraceDifference;
+  pulses: PulseCodes;
+  moves: GcodeMove[];
+  moveOfStep: { moveIndex: number; line: number };
+  lineSteps: LineSteps;
+  export: string;
+  randomLines: RandomLinesResult;
+  free: null;
+}
+
+/** An input the core rejected; `field` names the option at fault (as in VoxpathError). */
+export interface InputError {
+  field?: string;
+  message: string;
+}
+
+export type RequestMessage = { id: number; request: WorkerRequest } | { id: number; cancel: true };
+
+/**
+ * A reply. Failures come in four kinds, because the page reacts differently:
+ * - input: the core rejected the input; the form shows it next to the field;
+ * - crash: the core trapped (a bug in the core); its memory can no longer be
+ *   trusted, so the page replaces the worker;
+ * - cancelled: the page cancelled the request;
+ * - error: anything else (a bug in the page's request); the worker stays.
+ * A progress message comes before the reply of a long request.
+ */
+export type ReplyMessage =
+  | { id: number; ok: true; value: ReplyValue[RequestKind] }
+  | { id: number; ok: false; failure: 'input'; error: InputError }
+  | { id: number; ok: false; failure: 'crash' | 'error' | 'cancelled'; message: string }
+  | { id: number; progress: GcodeProgress };

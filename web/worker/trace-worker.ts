@@ -1,0 +1,160 @@
+/**
+ * The trace worker: runs the wasm core off the main thread, so a long trace,
+ * a G-code program or a replay of decisions never freezes the page. It holds
+ * the Trace objects (and G-code programs) the page asked for, by the page's
+ * trace id, until the page frees them.
+ */
+import {
+  GcodeProgram,
+  algorithms,
+  experiments,
+  randomLines,
+  runGcode,
+  trace,
+  traceToCsv,
+  traceToJson,
+  VoxpathError,
+} from '../core/index.js';
+import type { Trace } from '../core/index.js';
+import { chartSeries } from './series.js';
+import { traceDifference } from './difference.js';
+import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
+
+const traces = new Map<number, Trace>();
+const programs = new Map<number, GcodeProgram>();
+/** Requests that can be cancelled while they run, by request id. */
+const running = new Map<number, AbortController>();
+
+function held(traceId: number): Trace {
+  const t = traces.get(traceId);
+  if (!t) throw new Error(`this worker holds no trace ${traceId}`);
+  return t;
+}
+
+function heldProgram(traceId: number): GcodeProgram {
+  const p = programs.get(traceId);
+  if (!p) throw new Error(`this worker holds no G-code program ${traceId}`);
+  return p;
+}
+
+interface Answer {
+  value: ReplyValue[RequestKind];
+  /** Buffers handed over to the page instead of copied; each is a fresh copy out of wasm memory. */
+  transfer: Transferable[];
+}
+
+/** The arrays every view needs at once, freshly copied so they can be transferred. */
+function tracedPath(t: Trace): TracedPath {
+  // pointsInRange, not the cached `points` getter: a transferred buffer is
+  // detached here, and the cache would then hand out an empty array.
+  const points = t.pointsInRange(0, t.steps + 1);
+  const idealPolyline = t.idealPolyline();
+  const { algorithm, dims, steps, start, end, columns, metrics, segments } = t;
+  return { summary: { algorithm, dims, steps, start, end, columns, metrics, segments }, points, idealPolyline };
+}
+
+async function answer(id: number, request: WorkerRequest): Promise<Answer> {
+  switch (request.kind) {
+    case 'catalogue':
+      return { value: { algorithms: await algorithms(), experiments: await experiments() }, transfer: [] };
+    case 'trace': {
+      const t = await trace(request.options);
+      traces.set(request.traceId, t);
+      const path = tracedPath(t);
+      return { value: path, transfer: [path.points.buffer, path.idealPolyline.buffer] };
+    }
+    case 'gcode': {
+      const controller = new AbortController();
+      running.set(id, controller);
+      try {
+        const program = await runGcode(request.source, request.settings, {
+          signal: controller.signal,
+          onProgress: (progress) => self.postMessage({ id, progress } satisfies ReplyMessage),
+        });
+        traces.set(request.traceId, program.trace);
+        programs.set(request.traceId, program);
+        const path = tracedPath(program.trace);
+        const { lines, stepsPerMm, pulses, warnings, warningsOmitted, errors, stoppedAtLine } = program;
+        return {
+          value: { ...path, lines, stepsPerMm, moveCount: program.moves.length, pulses, warnings, warningsOmitted, errors, stoppedAtLine },
+          transfer: [path.points.buffer, path.idealPolyline.buffer],
+        };
+      } finally {
+        running.delete(id);
+      }
+    }
+    case 'decisions': {
+      const columns = held(request.traceId).decisionsInRange(request.fromStep, request.toStep);
+      return { value: columns, transfer: Object.values(columns).map((c) => c.buffer) };
+    }
+    case 'deviation': {
+      const deviation = held(request.traceId).deviationInRange(request.fromPoint, request.toPoint);
+      return { value: deviation, transfer: [deviation.buffer] };
+    }
+    case 'explain':
+      return { value: held(request.traceId).explain(request.stepIndex), transfer: [] };
+    case 'series': {
+      const series = chartSeries(held(request.traceId), request.maxPoints);
+      const arrays = [series.pointIndex, ...series.position, ...series.ideal, series.deviationMax, series.deviationMin];
+      return { value: series, transfer: arrays.map((a) => a.buffer) };
+    }
+    case 'difference': {
+      const difference = traceDifference(held(request.traceIdA), held(request.traceIdB));
+      return { value: difference, transfer: [difference.onlyInA.buffer, difference.onlyInB.buffer] };
+    }
+    case 'pulses': {
+      const t = held(request.traceId);
+      const stepCodes = t.stepCodes(request.fromStep, request.toStep);
+      const directionLevels = t.directionLevels(request.fromStep, request.toStep);
+      return { value: { stepCodes, directionLevels }, transfer: [stepCodes.buffer, directionLevels.buffer] };
+    }
+    case 'moves':
+      return { value: heldProgram(request.traceId).moves.slice(request.fromMove, request.toMove), transfer: [] };
+    case 'moveOfStep': {
+      const program = heldProgram(request.traceId);
+      const moveIndex = program.moveOfStep(request.stepIndex);
+      return { value: { moveIndex, line: program.moves[moveIndex]!.line }, transfer: [] };
+    }
+    case 'lineSteps': {
+      const program = heldProgram(request.traceId);
+      const move = program.moveAtLine(request.line);
+      const pointBefore = program.pointBeforeLine(request.line);
+      return { value: { firstStep: move?.firstStep ?? pointBefore, steps: move?.steps ?? 0, pointBefore }, transfer: [] };
+    }
+    case 'export': {
+      const t = held(request.traceId);
+      return { value: request.format === 'csv' ? traceToCsv(t) : JSON.stringify(traceToJson(t)), transfer: [] };
+    }
+    case 'randomLines':
+      return { value: await randomLines(request.options), transfer: [] };
+    case 'free':
+      // A program owns its trace: freeing the program frees both.
+      (programs.get(request.traceId) ?? traces.get(request.traceId))?.free();
+      programs.delete(request.traceId);
+      traces.delete(request.traceId);
+      return { value: null, transfer: [] };
+  }
+}
+
+function failure(id: number, error: unknown): ReplyMessage {
+  if (error instanceof VoxpathError) {
+    // The detail, without the "field: " prefix: the page shows it beside that field.
+    return { id, ok: false, failure: 'input', error: { field: error.field, message: error.field ? error.detail : error.message } };
+  }
+  const message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
+  if (error instanceof DOMException && error.name === 'AbortError') return { id, ok: false, failure: 'cancelled', message };
+  return { id, ok: false, failure: error instanceof WebAssembly.RuntimeError ? 'crash' : 'error', message };
+}
+
+self.addEventListener('message', (event: MessageEvent<RequestMessage>) => {
+  const message = event.data;
+  if ('cancel' in message) {
+    running.get(message.id)?.abort();
+    return;
+  }
+  const { id, request } = message;
+  answer(id, request).then(
+    ({ value, transfer }) => self.postMessage({ id, ok: true, value } satisfies ReplyMessage, { transfer }),
+    (error: unknown) => self.postMessage(failure(id, error)),
+  );
+});
