@@ -4,12 +4,11 @@
  * once with each arc algorithm. Reports lines per second and steps per
  * second of the whole run, as a worker would see it (slices included).
  *
- * Runs from bench/run.ts with the other benches; alone (after npm run
- * build:lib), through Vite's SSR loader, which keeps the module graph open
- * for the core's dynamic import of node:fs:
- *   node -e "import('vite').then(async (v) => { const s = await v.createServer({ server: { middlewareMode: true, hmr: false, ws: false }, appType: 'custom', configFile: false, logLevel: 'error' }); try { console.table(await (await s.ssrLoadModule('/bench/gcode.bench.ts')).benchGcode()); } finally { await s.close(); } })"
+ * `npm run bench` (bench/run.mjs) runs it with the other benches and prints
+ * its group (bench/types.ts).
  */
 import { runGcode } from '../web/core/index.js';
+import type { BenchGroup, BenchRow } from './types.js';
 
 /** Lines in the generated program. */
 export const GCODE_BENCH_LINES = 100_000;
@@ -43,35 +42,33 @@ export function generateProgram(lines: number): string {
   return out.join('\n') + '\n';
 }
 
-export interface GcodeBenchRow {
-  name: string;
-  lines: number;
-  moves: number;
-  steps: number;
-  seconds: number;
-  linesPerSecond: number;
-  stepsPerSecond: number;
-}
+/** Column names: rates of the whole run, slices included. */
+const COLUMNS = { lines: 'lines/s', steps: 'steps/s' } as const;
 
 /** Runs the generated program with each arc algorithm; one row each. */
-export async function benchGcode(): Promise<GcodeBenchRow[]> {
+export default async function benchGcode(): Promise<BenchGroup> {
   const source = generateProgram(GCODE_BENCH_LINES);
-  const rows: GcodeBenchRow[] = [];
+  const rows: BenchRow[] = [];
   for (const arcAlgorithm of ['circle', 'arc-segments'] as const) {
+    // One run each, not the best of several: a run is seconds long, so the
+    // compilers' warm-up is a small part of it, and the bench stays short.
     const started = performance.now();
     const program = await runGcode(source, { stepsPerMm: 80, arcAlgorithm });
     const seconds = (performance.now() - started) / 1000;
     if (program.errors.length > 0) throw new Error(`bench program failed: ${JSON.stringify(program.errors[0])}`);
     rows.push({
-      name: `gcode ${GCODE_BENCH_LINES} lines, arcs: ${arcAlgorithm}`,
-      lines: program.lines,
-      moves: program.moves.length,
+      name: `${program.lines.toLocaleString('en-US')} lines, ${program.moves.length.toLocaleString('en-US')} moves, arcs: ${arcAlgorithm}`,
       steps: program.steps,
-      seconds,
-      linesPerSecond: program.lines / seconds,
-      stepsPerSecond: program.steps / seconds,
+      rates: { [COLUMNS.lines]: program.lines / seconds, [COLUMNS.steps]: program.steps / seconds },
     });
     program.free();
   }
-  return rows;
+  return {
+    title: 'G-code',
+    notes: [
+      `A generated ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program at 80 steps/mm through runGcode (wasm): parse, interpret, step every move (lines by regions), build the trace.`,
+      `${COLUMNS.lines} and ${COLUMNS.steps}: source lines and steps over the seconds of the whole run, as a worker sees it.`,
+    ],
+    rows,
+  };
 }

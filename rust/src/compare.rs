@@ -1,16 +1,24 @@
 //! Two traces of the same move side by side (for example direct arc
-//! stepping against the same arc in chords): each one's step count and
-//! deviation, where the paths part, and the cells one visits and the other
+//! stepping against the same arc in chords, or two line algorithms on one
+//! line): each one's step count and deviation, where the paths part and why
+//! each took the step it took there, and the cells one visits and the other
 //! does not. The result is a plain serializable value for the CLI and page.
+//!
+//! A comparison request is `{"algorithms": [a, b], ...options}`: every
+//! option goes to each of the two that declares it, and one that neither
+//! declares is an error naming it (see [`compare_request`]).
 //!
 //! Cost: each trace's points are sorted once, 24 bytes per point (about
 //! 140 MB for each of two 6-million-step circles of radius 2^20).
 
+use crate::algorithms::{self, AlgorithmInfo};
 use crate::error::Error;
 use crate::grid::MAX_AXES;
 use crate::metrics::Metrics;
-use crate::trace::Trace;
+use crate::request::Request;
+use crate::trace::{Column, ColumnKind, Trace};
 use serde::Serialize;
+use serde_json::Value;
 use std::collections::HashSet;
 
 /// Most cells listed per side; `count` still counts them all.
@@ -51,6 +59,31 @@ pub struct FirstDifference {
     /// a's point there, or None when a has already ended.
     pub a: Option<Vec<i64>>,
     pub b: Option<Vec<i64>>,
+    /// Why a took the step that produced its point there (step index
+    /// point_index - 1); None when a has ended, or at point 0 (the paths
+    /// start apart).
+    pub a_why: Option<StepWhy>,
+    pub b_why: Option<StepWhy>,
+}
+
+/// Why one trace took one step: its explanation and decision values.
+#[derive(Serialize, Debug, Clone, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct StepWhy {
+    pub step_index: u64,
+    /// One sentence ([`Trace::explain`]).
+    pub explanation: String,
+    /// Decision values by column name, in the trace's column order, as
+    /// people read them: numbers, category labels, true/false for flags,
+    /// null where a column does not apply to the step. Serialized as one
+    /// JSON object.
+    #[serde(serialize_with = "as_object")]
+    pub decisions: Vec<(String, Value)>,
+}
+
+/// Pairs as one JSON object, keeping their order.
+fn as_object<S: serde::Serializer>(pairs: &[(String, Value)], s: S) -> Result<S::Ok, S::Error> {
+    s.collect_map(pairs.iter().map(|(k, v)| (k, v)))
 }
 
 #[derive(Serialize, Debug, Clone, PartialEq, Default)]
@@ -74,18 +107,9 @@ fn key(p: &[i64]) -> Key {
     k
 }
 
-/// Calls `f(point index, coordinates)` for every point, reading in chunks.
+/// Calls `f(point index, coordinates)` for every point.
 fn for_each_point(t: &Trace, mut f: impl FnMut(u64, &[i64])) {
-    let dims = t.dims();
-    let count = t.steps() + 1;
-    let mut from = 0;
-    while from < count {
-        let to = (from + CHUNK_POINTS).min(count);
-        for (i, p) in t.points_flat(from, to).chunks(dims).enumerate() {
-            f(from + i as u64, p);
-        }
-        from = to;
-    }
+    t.walk_points(0, t.steps() + 1, |k, p| f(k, p.coords()));
 }
 
 fn sorted_cells(t: &Trace) -> Vec<Key> {
@@ -122,6 +146,39 @@ fn digest(t: &Trace) -> TraceDigest {
     }
 }
 
+/// A decision value as people read it (see [`StepWhy::decisions`]).
+fn readable(column: &Column, value: f64) -> Value {
+    if value.is_nan() {
+        return Value::Null;
+    }
+    match column.kind {
+        ColumnKind::Category(labels) => labels
+            .get(value as usize)
+            .map_or(Value::from(value), |&label| Value::from(label)),
+        ColumnKind::Flag => Value::from(value == 1.0),
+        // Exact integers stay integers in JSON (|v| < 2^53).
+        ColumnKind::Int => Value::from(value as i64),
+        ColumnKind::Float => Value::from(value),
+    }
+}
+
+/// Why `t` took the step that produced point index `k`, if it did.
+fn why_at_point(t: &Trace, k: u64) -> Option<StepWhy> {
+    let step = k.checked_sub(1).filter(|&s| s < t.steps())?;
+    let table = t.decisions(step, step + 1);
+    let decisions = t
+        .columns()
+        .iter()
+        .zip(&table.columns)
+        .map(|(column, values)| (column.name.to_string(), readable(column, values[0])))
+        .collect();
+    Some(StepWhy {
+        step_index: step,
+        explanation: t.explain(step),
+        decisions,
+    })
+}
+
 /// The first point index where `a` and `b` differ, walking both together.
 fn first_difference(a: &Trace, b: &Trace) -> Option<FirstDifference> {
     let shared = a.steps().min(b.steps()) + 1;
@@ -140,6 +197,8 @@ fn first_difference(a: &Trace, b: &Trace) -> Option<FirstDifference> {
                 point_index: k,
                 a: Some(a.point(k).coords().to_vec()),
                 b: Some(b.point(k).coords().to_vec()),
+                a_why: why_at_point(a, k),
+                b_why: why_at_point(b, k),
             });
         }
         from = to;
@@ -151,6 +210,8 @@ fn first_difference(a: &Trace, b: &Trace) -> Option<FirstDifference> {
             point_index: shared,
             a: at(a),
             b: at(b),
+            a_why: why_at_point(a, shared),
+            b_why: why_at_point(b, shared),
         }
     })
 }
@@ -170,6 +231,68 @@ pub fn compare(a: &Trace, b: &Trace) -> Result<Comparison, Error> {
         only_in_a: missing(a, &sorted_cells(b)),
         only_in_b: missing(b, &sorted_cells(a)),
     })
+}
+
+/// The two algorithms of a comparison request, or an error naming
+/// `algorithms`.
+fn pick_algorithms(value: Option<Value>) -> Result<[&'static AlgorithmInfo; 2], Error> {
+    let wrong = |what: String| Error::field("algorithms", what);
+    let Some(Value::Array(items)) = value else {
+        return Err(wrong(
+            "expected two algorithm ids, for example [\"regions\", \"greedy\"]".into(),
+        ));
+    };
+    let ids: Vec<&str> = items.iter().filter_map(Value::as_str).collect();
+    let [a, b] = ids[..] else {
+        return Err(wrong(format!(
+            "expected two algorithm ids, got {}",
+            Value::Array(items.clone())
+        )));
+    };
+    let find = |id| algorithms::find(id).map_err(|e| wrong(e.message));
+    Ok([find(a)?, find(b)?])
+}
+
+/// Runs `{"algorithms": [a, b], ...options}`: each option goes to each of
+/// the two algorithms that declares it (`segmentLength` only to
+/// arc-segments when compared with circle, `from` and `to` to both), and
+/// an option neither declares is an error naming it. An algorithm's own
+/// error keeps its field and says which algorithm it came from.
+pub fn compare_request(text: &str) -> Result<Comparison, Error> {
+    let mut options = Request::options_from_json(text)?;
+    let pair = pick_algorithms(options.remove("algorithms"))?;
+    let takes = |info: &AlgorithmInfo, name: &str| info.options.iter().any(|o| o.name == name);
+    if let Some(name) = options
+        .keys()
+        .find(|name| !pair.iter().any(|info| takes(info, name)))
+    {
+        let list = |info: &AlgorithmInfo| {
+            let names: Vec<&str> = info.options.iter().map(|o| o.name).collect();
+            format!("{} takes {}", info.id, names.join(", "))
+        };
+        return Err(Error::field(
+            name,
+            format!(
+                "neither {} nor {} takes this option ({}; {})",
+                pair[0].id,
+                pair[1].id,
+                list(pair[0]),
+                list(pair[1])
+            ),
+        ));
+    }
+    let run = |info: &AlgorithmInfo| {
+        let own = options
+            .iter()
+            .filter(|(name, _)| takes(info, name))
+            .map(|(name, value)| (name.clone(), value.clone()))
+            .collect();
+        (info.trace)(&Request::new(info.id, own)).map_err(|e| Error {
+            message: format!("{}: {}", info.id, e.message),
+            ..e
+        })
+    };
+    compare(&run(pair[0])?, &run(pair[1])?)
 }
 
 #[cfg(test)]
@@ -199,6 +322,8 @@ mod tests {
                 point_index: 1,
                 a: Some(vec![5, 1, 0]),
                 b: Some(vec![4, 1, 0]),
+                a_why: why_at_point(&circle, 1),
+                b_why: why_at_point(&chord, 1),
             })
         );
         let cells = |v: &[[i64; 3]]| v.iter().map(|p| p.to_vec()).collect::<Vec<_>>();
@@ -252,6 +377,166 @@ mod tests {
         assert_eq!(
             compare(&a, &b).unwrap_err().to_string(),
             "b: has 2 axes but a has 3"
+        );
+    }
+}
+
+#[cfg(test)]
+mod request_tests {
+    use super::*;
+
+    fn run(json: &str) -> Comparison {
+        compare_request(json).unwrap_or_else(|e| panic!("{json}: {e}"))
+    }
+
+    fn error(json: &str) -> Error {
+        compare_request(json).unwrap_err()
+    }
+
+    fn decisions(why: &StepWhy) -> Value {
+        let map = why
+            .decisions
+            .iter()
+            .cloned()
+            .collect::<serde_json::Map<_, _>>();
+        Value::Object(map)
+    }
+
+    #[test]
+    fn wang_and_saleem_part_at_the_tie_of_step_5() {
+        // SEED-NOTES: on (0,0,0)->(10,7,6) Saleem holds a tie (error >
+        // delta, strict) and goes to (5,3,3) where Wang's discriminant
+        // M = 0 advances to (5,4,3); everything before step 5 agrees.
+        let c = run(r#"{"algorithms":["regions","bresenham3d"],"from":[0,0,0],"to":[10,7,6]}"#);
+        let d = c.first_difference.unwrap();
+        assert_eq!(d.point_index, 5);
+        assert_eq!((d.a, d.b), (Some(vec![5, 4, 3]), Some(vec![5, 3, 3])));
+        let (a, b) = (d.a_why.unwrap(), d.b_why.unwrap());
+        assert_eq!((a.step_index, b.step_index), (4, 4));
+        assert_eq!(
+            a.explanation,
+            "x is the active axis; M = 0 and N = 10 > 0, so the line crosses segment g between C and D (a tie); the tie policy 'advance' decides, and the step goes to D (x+1, y+1, z+1)."
+        );
+        // Wang eq. (8): M_5 = 0, N_5 = 10 (SEED-NOTES' lists).
+        assert_eq!(
+            decisions(&a),
+            serde_json::json!({"M": 0, "N": 10, "region": "g", "corner": "D", "tie": true})
+        );
+        assert_eq!(
+            a.decisions
+                .iter()
+                .map(|(k, _)| k.as_str())
+                .collect::<Vec<_>>(),
+            ["M", "N", "region", "corner", "tie"]
+        );
+        // Saleem's errorY = 2|Δy| k - 2|Δx| (steps so far) = 2·7·5 - 2·10·3
+        // = 10 = |Δx|, a tie; errorZ = 2·6·5 - 2·10·2 = 20 > 10.
+        assert_eq!(
+            b.explanation,
+            "x is the major axis and steps; errorY = 10 = 10 (a tie), and the tie policy 'hold' says y holds; errorZ = 20 > 10, so z steps; the step goes to (x+1, y, z+1)."
+        );
+        assert_eq!(
+            decisions(&b),
+            serde_json::json!({"errorX": null, "errorY": 10, "errorZ": 20, "threshold": 10, "major": "x", "tie": true})
+        );
+        // A shared tie rule goes to both (both declare tie): no difference.
+        let same = run(
+            r#"{"algorithms":["regions","bresenham3d"],"from":[0,0,0],"to":[10,7,6],"tie":"hold"}"#,
+        );
+        assert_eq!(same.first_difference, None);
+    }
+
+    #[test]
+    fn regions_and_greedy_part_at_the_first_step() {
+        // Greedy (2009 blog) from (0,0,0) to (10,7,6): squared distance 185
+        // now; a unit move on an axis with l left takes 2l - 1 off it:
+        // x 185 - 19 = 166, y 185 - 13 = 172, z 185 - 11 = 174: x. Regions
+        // steps all three (M_1 = 4, N_1 = 2, eq. 10).
+        let c = run(r#"{"algorithms":["regions","greedy"],"from":[0,0,0],"to":[10,7,6]}"#);
+        let d = c.first_difference.unwrap();
+        assert_eq!(
+            (d.point_index, d.a, d.b),
+            (1, Some(vec![1, 1, 1]), Some(vec![1, 0, 0]))
+        );
+        let b = d.b_why.unwrap();
+        assert_eq!(
+            b.explanation,
+            "Squared distance to the goal after moving x 166, y 172, z 174: x is the smallest, so x steps to (x+1, y, z)."
+        );
+        assert_eq!(decisions(&b)["dist2Y"], 172.0);
+        assert_eq!(decisions(&b)["dist2A"], Value::Null);
+        assert_eq!(decisions(&d.a_why.unwrap())["region"], "d");
+        // Greedy moves one axis per step: 23 steps against 10.
+        assert_eq!((c.a.steps, c.b.steps), (10, 23));
+    }
+
+    #[test]
+    fn options_go_to_the_algorithms_that_declare_them() {
+        // segmentLength is arc-segments' only; center and from go to both.
+        // The circle's first step (arc_golden.rs, r = 5): y fast, x stays,
+        // |1| < |-8|; the single chord (5,0,0)->(0,5,0) has x and y active
+        // and z passive with M_1 = 2·0 - 5 = -5: region b, corner B.
+        let c = run(
+            r#"{"algorithms":["circle","arc-segments"],"from":[5,0,0],"to":[0,5,0],"center":[0,0,0],"segmentLength":100}"#,
+        );
+        assert_eq!((c.a.steps, c.b.steps), (7, 5));
+        assert_eq!((c.only_in_a.count, c.only_in_b.count), (6, 4));
+        let d = c.first_difference.unwrap();
+        let (a, b) = (d.a_why.unwrap(), d.b_why.unwrap());
+        assert_eq!(
+            a.explanation,
+            "Octant 1: y is the fast axis and steps +1; x stays (x² + y² - r² = 1) or steps -1 (-8); |1| < |-8|, so x stays (eq. 7): (x, y+1, z)."
+        );
+        assert_eq!(
+            decisions(&a),
+            serde_json::json!({"octant": "1", "fast": "y", "error_stay": 1, "error_move": 8, "slow_steps": false, "correction": false})
+        );
+        assert_eq!(
+            b.explanation,
+            "x and y are active; M = -5 < 0, so the line leaves the cell through region b, and the step goes to B (x-1, y+1, z)."
+        );
+        // The same segmentLength given to circle alone would be refused.
+        let alone = crate::trace_json(
+            r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0,0],"segmentLength":100}"#,
+        );
+        assert_eq!(alone.err().unwrap().field_name(), Some("segmentLength"));
+    }
+
+    #[test]
+    fn bad_requests_name_the_option() {
+        let e = error(
+            r#"{"algorithms":["circle","arc-segments"],"from":[5,0,0],"to":[0,5,0],"center":[0,0,0],"gcd":true}"#,
+        );
+        assert_eq!(e.field_name(), Some("gcd"));
+        assert!(
+            e.message.starts_with(
+                "neither circle nor arc-segments takes this option (circle takes from, to, center,"
+            ),
+            "{e}"
+        );
+        let e = error(r#"{"algorithms":["circle","arc-segments"],"from":[5,0,0],"to":[0,5,0]}"#);
+        assert_eq!(
+            e.to_string(),
+            "center: circle: missing: give one integer per axis, e.g. [0, 0, 0]"
+        );
+        assert_eq!(
+            error(r#"{"algorithms":["regions"],"from":[0,0,0],"to":[1,1,1]}"#).to_string(),
+            r#"algorithms: expected two algorithm ids, got ["regions"]"#
+        );
+        assert_eq!(
+            error(r#"{"algorithms":"regions,greedy"}"#).to_string(),
+            r#"algorithms: expected two algorithm ids, for example ["regions", "greedy"]"#
+        );
+        assert!(
+            error(r#"{"algorithms":["regions","bresenham9d"]}"#)
+                .to_string()
+                .starts_with("algorithms: unknown algorithm 'bresenham9d' (known: regions")
+        );
+        // A line algorithm and an arc on different axis counts: greedy takes
+        // 2D, regions does not.
+        assert_eq!(
+            error(r#"{"algorithms":["greedy","regions"],"from":[0,0],"to":[3,1]}"#).to_string(),
+            "from: regions: regions takes 3 coordinates, got 2"
         );
     }
 }

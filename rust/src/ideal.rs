@@ -1,7 +1,7 @@
 //! The ideal (continuous) path a step sequence approximates, and the distance
 //! of a grid point from it.
 
-use crate::arc::curve::{ArcPath, HelixPath};
+use crate::arc::curve::{ArcMeter, ArcPath, HelixPath};
 use crate::grid::{MAX_AXES, Point};
 use serde::Serialize;
 
@@ -60,66 +60,27 @@ impl IdealPath {
         }
     }
 
-    /// Perpendicular distance from `p` to the ideal path, in grid units
-    /// (the Error column of Wang's Tables 1 and 2).
-    ///
-    /// For a line through `from` with direction `d`, with `r = p - from`,
-    /// Lagrange's identity gives |r|^2 |d|^2 - (r.d)^2 = sum over axis pairs
-    /// (r_i d_j - r_j d_i)^2, a sum of squares with no cancellation. Each term
-    /// is formed exactly in i128 and only then rounded to f64.
-    pub fn deviation(&self, p: &Point) -> f64 {
+    /// This path ready to measure many points: its per-path constants
+    /// (direction, squared length, radius) computed once. Build one per
+    /// segment, not per point.
+    pub fn meter(&self) -> Meter<'_> {
         match self {
-            IdealPath::Line { from, to } => {
-                let d = from.delta_to(to);
-                let r = from.delta_to(p);
-                let dims = p.dims();
-                let d_norm2: f64 = d[..dims].iter().map(|&v| (v as f64) * (v as f64)).sum();
-                if d_norm2 == 0.0 {
-                    return r[..dims]
-                        .iter()
-                        .map(|&v| (v as f64) * (v as f64))
-                        .sum::<f64>()
-                        .sqrt();
-                }
-                let mut cross_norm2 = 0.0;
-                for i in 0..dims {
-                    for j in i + 1..dims {
-                        let c = r[i] as i128 * d[j] as i128 - r[j] as i128 * d[i] as i128;
-                        let c = c as f64;
-                        cross_norm2 += c * c;
-                    }
-                }
-                (cross_norm2 / d_norm2).sqrt()
-            }
-            IdealPath::Arc(arc) => arc.deviation(p),
-            IdealPath::Helix(helix) => helix.deviation(p),
+            IdealPath::Line { from, to } => Meter::Line(LineMeter::new(from, to)),
+            IdealPath::Arc(arc) => Meter::Arc(arc.meter()),
+            IdealPath::Helix(helix) => Meter::Helix(helix),
         }
     }
 
+    /// Perpendicular distance from `p` to the ideal path, in grid units
+    /// (the Error column of Wang's Tables 1 and 2). See [`Meter::deviation`].
+    pub fn deviation(&self, p: &Point) -> f64 {
+        self.meter().deviation(p)
+    }
+
     /// Per-axis error of `p` against the ideal position after `step` of
-    /// `steps` equal parts of the path (Wang eq. 11: phi_x, phi_y, phi_z).
-    /// For a line whose active axis steps every time this is 0 on that axis.
-    /// For arcs and helices progress is the point's own angle (`arc::curve`).
+    /// `steps` equal parts of the path (Wang eq. 11). See [`Meter::axis_error`].
     pub fn axis_error(&self, p: &Point, step: u64, steps: u64) -> [f64; MAX_AXES] {
-        let mut phi = [0.0; MAX_AXES];
-        match self {
-            IdealPath::Arc(arc) => return arc.axis_error(p),
-            IdealPath::Helix(helix) => return helix.axis_error(p),
-            IdealPath::Line { from, to } => {
-                let d = from.delta_to(to);
-                let r = from.delta_to(p);
-                for axis in 0..p.dims() {
-                    phi[axis] = if steps == 0 {
-                        r[axis] as f64
-                    } else {
-                        // (r * n - d * i) / n, exact until the final division.
-                        let num = r[axis] as i128 * steps as i128 - d[axis] as i128 * step as i128;
-                        num as f64 / steps as f64
-                    };
-                }
-            }
-        }
-        phi
+        self.meter().axis_error(p, step, steps)
     }
 
     /// Points along the ideal path for drawing, flat with stride `dims`.
@@ -137,9 +98,171 @@ impl IdealPath {
     }
 }
 
+/// An ideal path with its per-path constants computed, measuring points.
+pub enum Meter<'a> {
+    Line(LineMeter),
+    Arc(ArcMeter<'a>),
+    Helix(&'a HelixPath),
+}
+
+impl Meter<'_> {
+    /// Perpendicular distance from `p` to the ideal path, in grid units.
+    /// Arcs: the distance to the circle; helices: to the nearest point.
+    pub fn deviation(&self, p: &Point) -> f64 {
+        match self {
+            Meter::Line(line) => line.deviation(p),
+            Meter::Arc(arc) => arc.deviation(p),
+            Meter::Helix(helix) => helix.deviation(p),
+        }
+    }
+
+    /// Per-axis error of `p` against the ideal position after `step` of
+    /// `steps` equal parts of the path (Wang eq. 11: phi_x, phi_y, phi_z).
+    /// For a line whose active axis steps every time this is 0 on that axis.
+    /// For arcs and helices progress is the point's own angle (`arc::curve`).
+    pub fn axis_error(&self, p: &Point, step: u64, steps: u64) -> [f64; MAX_AXES] {
+        match self {
+            Meter::Line(line) => line.axis_error(p, step, steps),
+            Meter::Arc(arc) => arc.axis_error(p),
+            Meter::Helix(helix) => helix.axis_error(p),
+        }
+    }
+}
+
+/// Largest magnitude (exclusive) of the integers whose products the fast
+/// paths form in i64: two factors below 2^31 multiply to below 2^62, so a
+/// sum or difference of two such products stays below 2^63. Inputs within
+/// +-2^30 differ by at most 2^31, so only a move spanning the whole range on
+/// an axis (or a point outside the input box) reaches the i128 fallback.
+pub const I64_PRODUCT_BOUND: u64 = 1 << 31;
+
+/// True when every value is below [`I64_PRODUCT_BOUND`] in magnitude (an OR
+/// of the magnitudes has the highest bit of the largest: one test, no branch
+/// per value).
+pub fn within_i64_product_bound(values: &[i64]) -> bool {
+    values.iter().fold(0, |bits, v| bits | v.unsigned_abs()) < I64_PRODUCT_BOUND
+}
+
+/// A straight segment ready to measure points.
+pub struct LineMeter {
+    from: Point,
+    /// `to - from` per axis, grid units.
+    direction: [i64; MAX_AXES],
+    /// |to - from|², summed in f64 in axis order.
+    length_sq: f64,
+    /// Every |direction| is below [`I64_PRODUCT_BOUND`].
+    direction_small: bool,
+}
+
+impl LineMeter {
+    pub fn new(from: &Point, to: &Point) -> LineMeter {
+        let direction = from.delta_to(to);
+        let dims = from.dims();
+        LineMeter {
+            from: *from,
+            direction,
+            length_sq: norm_sq_f64(&direction[..dims]),
+            direction_small: within_i64_product_bound(&direction[..dims]),
+        }
+    }
+
+    /// Perpendicular distance from `p` to the line.
+    ///
+    /// With `r = p - from` and direction `d`, Lagrange's identity gives
+    /// |r|^2 |d|^2 - (r.d)^2 = sum over axis pairs (r_i d_j - r_j d_i)^2, a
+    /// sum of squares with no cancellation. Each term is formed exactly (in
+    /// i64 when every factor is below [`I64_PRODUCT_BOUND`], else in i128)
+    /// and only then rounded to f64, so both paths give the same bits.
+    pub fn deviation(&self, p: &Point) -> f64 {
+        let dims = p.dims();
+        let r = self.from.delta_to(p);
+        if self.length_sq == 0.0 {
+            return norm_sq_f64(&r[..dims]).sqrt();
+        }
+        let cross_sq = if self.direction_small && within_i64_product_bound(&r[..dims]) {
+            cross_norm_sq_i64(&r, &self.direction, dims)
+        } else {
+            cross_norm_sq_i128(&r, &self.direction, dims)
+        };
+        (cross_sq / self.length_sq).sqrt()
+    }
+
+    /// Per axis, (r * steps - d * step) / steps: exact until the final
+    /// division. In i64 when r, d, step and steps are all below
+    /// [`I64_PRODUCT_BOUND`] (steps never exceed 10^9 < 2^30), else in i128.
+    pub fn axis_error(&self, p: &Point, step: u64, steps: u64) -> [f64; MAX_AXES] {
+        let dims = p.dims();
+        let r = self.from.delta_to(p);
+        let mut phi = [0.0; MAX_AXES];
+        if steps == 0 {
+            for axis in 0..dims {
+                phi[axis] = r[axis] as f64;
+            }
+        } else if self.direction_small
+            && step.max(steps) < I64_PRODUCT_BOUND
+            && within_i64_product_bound(&r[..dims])
+        {
+            let (i, n) = (step as i64, steps as i64);
+            for axis in 0..dims {
+                phi[axis] = (r[axis] * n - self.direction[axis] * i) as f64 / steps as f64;
+            }
+        } else {
+            phi = axis_error_i128(&r, &self.direction, dims, step, steps);
+        }
+        phi
+    }
+}
+
+/// Sum of squares in f64, in axis order.
+fn norm_sq_f64(v: &[i64]) -> f64 {
+    v.iter().map(|&x| (x as f64) * (x as f64)).sum()
+}
+
+/// Sum over axis pairs of (r_i d_j - r_j d_i)^2, each term exact in i64.
+/// Every |r| and |d| must be below [`I64_PRODUCT_BOUND`].
+fn cross_norm_sq_i64(r: &[i64; MAX_AXES], d: &[i64; MAX_AXES], dims: usize) -> f64 {
+    let mut sum = 0.0;
+    for i in 0..dims {
+        for j in i + 1..dims {
+            let c = (r[i] * d[j] - r[j] * d[i]) as f64;
+            sum += c * c;
+        }
+    }
+    sum
+}
+
+/// The same sum with each term exact in i128, for any i64 inputs.
+fn cross_norm_sq_i128(r: &[i64; MAX_AXES], d: &[i64; MAX_AXES], dims: usize) -> f64 {
+    let mut sum = 0.0;
+    for i in 0..dims {
+        for j in i + 1..dims {
+            let c = (r[i] as i128 * d[j] as i128 - r[j] as i128 * d[i] as i128) as f64;
+            sum += c * c;
+        }
+    }
+    sum
+}
+
+/// (r * steps - d * step) / steps per axis, the numerator exact in i128.
+fn axis_error_i128(
+    r: &[i64; MAX_AXES],
+    d: &[i64; MAX_AXES],
+    dims: usize,
+    step: u64,
+    steps: u64,
+) -> [f64; MAX_AXES] {
+    let mut phi = [0.0; MAX_AXES];
+    for axis in 0..dims {
+        let num = r[axis] as i128 * steps as i128 - d[axis] as i128 * step as i128;
+        phi[axis] = num as f64 / steps as f64;
+    }
+    phi
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::grid::COORD_LIMIT;
 
     fn line(from: &[i64], to: &[i64]) -> IdealPath {
         IdealPath::Line {
@@ -182,6 +305,147 @@ mod tests {
         let p = Point::new(&[big - 1, big - 1, big]);
         // r = (2^31-1, 2^31-1, 2^31), d = 2^31 (1,1,1): distance sqrt(2/3).
         assert!((l.deviation(&p) - (2.0f64 / 3.0).sqrt()).abs() < 1e-12);
+    }
+
+    /// Magnitudes the fast paths accept at their edge, and 0 and 1.
+    const EDGE: [i64; 5] = [0, 1, (1 << 31) - 1, 1 << 30, (1 << 30) - 1];
+
+    /// Every sign combination of EDGE values for `dims` axes, one per axis
+    /// in turn (r) against the same for d: the products the bound allows
+    /// at their largest.
+    fn edge_vectors(dims: usize) -> Vec<[i64; MAX_AXES]> {
+        let mut out = Vec::new();
+        for &m in &EDGE {
+            for sign_bits in 0..1u32 << dims {
+                let mut v = [0; MAX_AXES];
+                for axis in 0..dims {
+                    let sign = if sign_bits >> axis & 1 == 1 { -1 } else { 1 };
+                    // Alternate magnitude and magnitude - 1 so the cross
+                    // products do not all cancel.
+                    v[axis] = sign * (m - (axis as i64 & 1).min(m));
+                }
+                out.push(v);
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn fast_cross_products_equal_i128_at_the_bound() {
+        for dims in 2..=MAX_AXES {
+            let vectors = edge_vectors(dims);
+            for r in &vectors {
+                for d in &vectors {
+                    assert_eq!(
+                        cross_norm_sq_i64(r, d, dims).to_bits(),
+                        cross_norm_sq_i128(r, d, dims).to_bits(),
+                        "{r:?} x {d:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn fast_axis_error_equals_i128_at_the_bound() {
+        let big = (1u64 << 31) - 1;
+        let meter = LineMeter::new(
+            &Point::new(&[-(1 << 30) + 1, 0, 1 << 30]),
+            &Point::new(&[1 << 30, -(1 << 30), -(1 << 30) + 1]),
+        );
+        assert!(meter.direction_small);
+        for r in edge_vectors(3) {
+            let p = Point::new(&[
+                meter.from.get(0) + r[0],
+                meter.from.get(1) + r[1],
+                meter.from.get(2) + r[2],
+            ]);
+            for (step, steps) in [(0, 1), (1, 1), (big, big), (big - 1, big), (12345, 1 << 30)] {
+                let fast = meter.axis_error(&p, step, steps);
+                let exact = axis_error_i128(&r, &meter.direction, 3, step, steps);
+                assert_eq!(
+                    fast.map(f64::to_bits),
+                    exact.map(f64::to_bits),
+                    "{r:?} {step}/{steps}"
+                );
+            }
+        }
+    }
+
+    /// The exact deviation, all in i128 (the formula before the fast path).
+    fn exact_deviation(from: &Point, to: &Point, p: &Point) -> f64 {
+        let dims = p.dims();
+        let (d, r) = (from.delta_to(to), from.delta_to(p));
+        (cross_norm_sq_i128(&r, &d, dims) / norm_sq_f64(&d[..dims])).sqrt()
+    }
+
+    #[test]
+    fn a_move_across_the_whole_range_falls_back_to_i128() {
+        // |Δx| = 2^31 is past the i64 bound for products; the result is the
+        // exact one all the same.
+        let (from, to) = (
+            Point::new(&[-(1 << 30), 5, 0]),
+            Point::new(&[1 << 30, -7, 3]),
+        );
+        let meter = LineMeter::new(&from, &to);
+        assert!(!meter.direction_small);
+        for p in [
+            [1 << 30, 1 << 30, 1 << 30],
+            [-(1 << 30), -(1 << 30), 0],
+            [0, 0, 0],
+        ] {
+            let p = Point::new(&p);
+            assert_eq!(meter.deviation(&p), exact_deviation(&from, &to, &p));
+        }
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn fast_deviation_equals_the_exact_one(
+            dims in 2usize..=MAX_AXES,
+            coords in proptest::array::uniform18(-COORD_LIMIT..=COORD_LIMIT),
+            near in proptest::array::uniform6(-3i64..=3),
+        ) {
+            // from, to and a point anywhere in the input box; and a point
+            // next to the line (the case the metrics pass sees), where the
+            // cross products are small and rounding matters most.
+            let (from, to, far) = (
+                Point::new(&coords[..dims]),
+                Point::new(&coords[6..6 + dims]),
+                Point::new(&coords[12..12 + dims]),
+            );
+            let meter = LineMeter::new(&from, &to);
+            let mut close = from;
+            for axis in 0..dims {
+                close.coords_mut()[axis] = (from.get(axis) + to.get(axis)) / 2 + near[axis];
+            }
+            for p in [far, close, from, to] {
+                let exact = exact_deviation(&from, &to, &p);
+                if from != to {
+                    proptest::prop_assert_eq!(meter.deviation(&p).to_bits(), exact.to_bits());
+                }
+            }
+        }
+
+        #[test]
+        fn fast_axis_error_equals_the_exact_one(
+            coords in proptest::array::uniform9(-COORD_LIMIT..=COORD_LIMIT),
+            steps in 1u64..(1 << 31),
+            fraction in 0.0f64..=1.0,
+        ) {
+            let (from, to, p) = (
+                Point::new(&coords[..3]),
+                Point::new(&coords[3..6]),
+                Point::new(&coords[6..]),
+            );
+            let step = (steps as f64 * fraction) as u64;
+            let meter = LineMeter::new(&from, &to);
+            let exact = axis_error_i128(&from.delta_to(&p), &from.delta_to(&to), 3, step, steps);
+            proptest::prop_assert_eq!(
+                meter.axis_error(&p, step, steps).map(f64::to_bits),
+                exact.map(f64::to_bits)
+            );
+        }
     }
 
     #[test]

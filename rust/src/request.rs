@@ -92,13 +92,21 @@ impl Request {
         }
     }
 
-    /// Parses `{"algorithm": "...", ...options}` from JSON text.
-    pub fn from_json(text: &str) -> Result<Request, Error> {
+    /// The options of a JSON object, with null ones removed (absent and
+    /// null mean the same: use the default).
+    pub fn options_from_json(text: &str) -> Result<Map<String, Value>, Error> {
         let value: Value = serde_json::from_str(text)
             .map_err(|e| Error::field("request", format!("not valid JSON: {e}")))?;
         let Value::Object(mut options) = value else {
             return Err(Error::field("request", "expected an object of options"));
         };
+        options.retain(|_, v| !v.is_null());
+        Ok(options)
+    }
+
+    /// Parses `{"algorithm": "...", ...options}` from JSON text.
+    pub fn from_json(text: &str) -> Result<Request, Error> {
+        let mut options = Request::options_from_json(text)?;
         let algorithm = match options.remove("algorithm") {
             Some(Value::String(s)) => s,
             Some(other) => {
@@ -109,8 +117,6 @@ impl Request {
             }
             None => return Err(Error::field("algorithm", "missing (for example 'regions')")),
         };
-        // Absent and null mean the same: use the default.
-        options.retain(|_, v| !v.is_null());
         Ok(Request { algorithm, options })
     }
 

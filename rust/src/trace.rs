@@ -13,10 +13,11 @@
 //! point k + 1; a *point index* k (0..=steps) names the position after k steps.
 
 use crate::error::Error;
-use crate::grid::{Point, Step};
-use crate::ideal::{IdealPath, IdealPathInfo};
+use crate::grid::{MAX_AXES, Point, Step, displacement};
+use crate::ideal::{IdealPath, IdealPathInfo, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
 use serde::Serialize;
+use std::cell::OnceCell;
 
 /// Steps between two stored positions / stepper states.
 pub const CHECKPOINT_INTERVAL: u64 = 4096;
@@ -93,6 +94,10 @@ pub trait Decision: Copy {
         false
     }
 
+    /// True when [`Decision::is_tie`] is always false: the metrics pass, which
+    /// counts ties by replaying each segment, then skips the replay.
+    const NEVER_TIES: bool = false;
+
     /// One plain sentence saying why `step` was taken from `from`.
     fn explain(&self, from: &Point, step: Step) -> String;
 }
@@ -105,12 +110,43 @@ pub trait Stepper: Clone + 'static {
     /// The next step and why it was taken, or None at the end of the path.
     fn next_step(&mut self) -> Option<(Step, Self::Why)>;
 
+    /// Takes up to `out.len()` steps into `out`, fewer only at the end of
+    /// the path: how many, and where they moved. This is how a trace
+    /// records; it calls [`Stepper::next_step`], inlined into this loop for
+    /// each stepper type, so the decisions, which nothing reads here, are
+    /// never built (they are rebuilt by replay when asked for, ties
+    /// included). A stepper that can take its steps or find their
+    /// displacement more cheaply may override this.
+    #[inline]
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let mut taken = out.len();
+        for (k, slot) in out.iter_mut().enumerate() {
+            let Some((step, _)) = self.next_step() else {
+                taken = k;
+                break;
+            };
+            *slot = step;
+        }
+        Filled {
+            steps: taken,
+            displacement: displacement(&out[..taken]),
+        }
+    }
+
     /// Steps this stepper will still take, when known without running it.
     fn remaining_steps(&self) -> Option<u64>;
 
     /// What a learner should know about this particular move before it starts
     /// (line type, active axis, initial discriminants, ...).
     fn setup_note(&self) -> String;
+}
+
+/// What [`Stepper::fill`] took.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Filled {
+    pub steps: usize,
+    /// Where the steps moved, per axis (what [`displacement`] gives).
+    pub displacement: [i64; MAX_AXES],
 }
 
 /// A type-erased stepper whose state can be copied: the replay engine.
@@ -120,6 +156,8 @@ trait Replay {
     fn replay_step(&mut self, row: &mut [f64]) -> Option<Step>;
     /// Takes the next step, explaining it.
     fn explain_step(&mut self, from: &Point) -> Option<String>;
+    /// Takes `steps` steps: how many of them a tie decided.
+    fn count_ties(&mut self, steps: u64) -> u64;
 }
 
 impl<S: Stepper> Replay for S {
@@ -136,6 +174,16 @@ impl<S: Stepper> Replay for S {
     fn explain_step(&mut self, from: &Point) -> Option<String> {
         let (step, why) = self.next_step()?;
         Some(why.explain(from, step))
+    }
+
+    fn count_ties(&mut self, steps: u64) -> u64 {
+        if S::Why::NEVER_TIES {
+            return 0;
+        }
+        (0..steps)
+            .map_while(|_| self.next_step())
+            .filter(|(_, why)| why.is_tie())
+            .count() as u64
     }
 }
 
@@ -164,7 +212,11 @@ pub struct Trace {
     positions: Vec<Point>,
     segments: Vec<Segment>,
     columns: Vec<Column>,
-    metrics: Metrics,
+    /// Computed on first use: a pass over every point (deviation and axis
+    /// error) and a replay of the decisions (ties), which a caller that only
+    /// reads points or appends this trace to another (a chord of an arc)
+    /// never pays for.
+    metrics: OnceCell<Metrics>,
 }
 
 /// Builds a trace by running steppers one after another from a start point.
@@ -176,7 +228,6 @@ pub struct TraceBuilder {
     segments: Vec<Segment>,
     columns: Vec<Column>,
     max_steps: u64,
-    ties: u64,
 }
 
 impl TraceBuilder {
@@ -191,7 +242,6 @@ impl TraceBuilder {
             segments: Vec::new(),
             columns: Vec::new(),
             max_steps,
-            ties: 0,
         }
     }
 
@@ -222,23 +272,37 @@ impl TraceBuilder {
             states: Vec::new(),
         };
         let mut stepper = stepper;
+        // Steps go in chunks that end where a stepper state (every
+        // CHECKPOINT_INTERVAL steps of the segment) or a position (every
+        // CHECKPOINT_INTERVAL steps of the trace) is due, written straight
+        // into the array; the position moves by each chunk's displacement.
         loop {
             if segment.steps % CHECKPOINT_INTERVAL == 0 {
                 segment.states.push(Box::new(stepper.clone()));
             }
-            let Some((step, why)) = stepper.next_step() else {
-                break;
-            };
-            if why.is_tie() {
-                self.ties += 1;
-            }
-            self.position.apply(step);
-            self.steps.push(step);
-            segment.steps += 1;
             let total = self.steps.len() as u64;
-            if total % CHECKPOINT_INTERVAL == 0 {
+            let mut chunk = (CHECKPOINT_INTERVAL - segment.steps % CHECKPOINT_INTERVAL)
+                .min(CHECKPOINT_INTERVAL - total % CHECKPOINT_INTERVAL);
+            if let Some(left) = stepper.remaining_steps() {
+                // Known lengths were reserved: the chunk stays within them.
+                chunk = chunk.min(left);
+            }
+            if chunk == 0 {
+                break;
+            }
+            let start = self.steps.len();
+            self.steps.resize(start + chunk as usize, Step::NONE);
+            let filled = stepper.fill(&mut self.steps[start..]);
+            self.steps.truncate(start + filled.steps);
+            self.position.displace(&filled.displacement);
+            segment.steps += filled.steps as u64;
+            let total = self.steps.len() as u64;
+            if filled.steps > 0 && total % CHECKPOINT_INTERVAL == 0 {
                 self.check_length(total)?;
                 self.positions.push(self.position);
+            }
+            if (filled.steps as u64) < chunk {
+                break;
             }
         }
         self.check_length(self.steps.len() as u64)?;
@@ -258,6 +322,21 @@ impl TraceBuilder {
         self.max_steps
     }
 
+    /// Steps taken so far.
+    pub fn steps(&self) -> u64 {
+        self.steps.len() as u64
+    }
+
+    /// Makes room for exactly `more` steps, after checking them against
+    /// `maxSteps`: for a caller that knows the length of what it will
+    /// append, so the steps are not copied into ever larger arrays (which
+    /// would hold up to three times their size while the last copy is made).
+    pub fn reserve(&mut self, more: u64) -> Result<(), Error> {
+        self.check_length(self.steps() + more)?;
+        self.steps.reserve_exact(more as usize);
+        Ok(())
+    }
+
     /// The error for a path found to need at least `steps` steps, more than
     /// [`Self::max_steps`] (for steppers that count before running).
     pub fn too_long(&self, steps: u64) -> Error {
@@ -272,7 +351,7 @@ impl TraceBuilder {
 
     /// Appends a finished trace that starts where this one ends (a chord of
     /// an arc run by a line algorithm, for example): its steps, its segments
-    /// with their replay states, and its ties. Its columns join this trace's
+    /// with their replay states. Its columns join this trace's
     /// by equality, as in [`Self::run`]. `adapt` may change each segment's
     /// ideal path and note: a chord is measured against the arc it stands for.
     pub fn append(
@@ -303,7 +382,6 @@ impl TraceBuilder {
                 self.positions.push(self.position);
             }
         }
-        self.ties += part.metrics.ties;
         Ok(())
     }
 
@@ -319,8 +397,10 @@ impl TraceBuilder {
         }
     }
 
+    /// The finished trace. Its metrics are computed on first use
+    /// ([`Trace::metrics`]).
     pub fn finish(self, algorithm: &str) -> Trace {
-        let mut trace = Trace {
+        Trace {
             algorithm: algorithm.to_string(),
             start: self.start,
             end: self.position,
@@ -328,21 +408,8 @@ impl TraceBuilder {
             positions: self.positions,
             segments: self.segments,
             columns: self.columns,
-            metrics: Metrics::default(),
-        };
-        let mut acc = MetricsAccumulator::new(trace.dims());
-        trace.for_each_point(0, trace.steps() + 1, |k, p, seg| {
-            let (local, n) = (k - seg.first_step, seg.steps);
-            acc.add_point(
-                seg.ideal.deviation(p),
-                &seg.ideal.axis_error(p, local.min(n), n),
-            );
-            if k < trace.steps.len() as u64 {
-                acc.add_step(trace.steps[k as usize]);
-            }
-        });
-        trace.metrics = acc.finish(self.ties);
-        trace
+            metrics: OnceCell::new(),
+        }
     }
 }
 
@@ -376,8 +443,27 @@ impl Trace {
         &self.segments
     }
 
+    /// Whole-path statistics, computed the first time they are asked for:
+    /// one pass over the points, and the ties counted by replaying each
+    /// segment from its first state (steps are recorded without their
+    /// decisions).
     pub fn metrics(&self) -> &Metrics {
-        &self.metrics
+        self.metrics.get_or_init(|| {
+            let mut acc = MetricsAccumulator::new(self.dims());
+            for step in &self.steps {
+                acc.add_step(*step);
+            }
+            self.for_each_point(0, self.steps() + 1, |k, p, seg, meter| {
+                let (local, n) = (k - seg.first_step, seg.steps);
+                acc.add_point(meter.deviation(p), &meter.axis_error(p, local.min(n), n));
+            });
+            let ties = self
+                .segments
+                .iter()
+                .map(|s| s.states[0].clone_box().count_ties(s.steps))
+                .sum();
+            acc.finish(ties)
+        })
     }
 
     /// The packed steps with step indices in `from..to`.
@@ -394,25 +480,31 @@ impl Trace {
         p
     }
 
-    /// Calls `f(k, point k, segment of point k)` for point indices `from..to`.
-    /// Point k belongs to the segment whose step k starts from it; the last
-    /// point belongs to the last segment that took a step.
-    fn for_each_point(&self, from: u64, to: u64, mut f: impl FnMut(u64, &Point, &Segment)) {
+    /// Calls `f(k, point k, segment of point k, that segment's meter)` for
+    /// point indices `from..to`. Point k belongs to the segment whose step k
+    /// starts from it; the last point belongs to the last segment that took
+    /// a step. A segment's meter is built once, when the walk enters it.
+    fn for_each_point(&self, from: u64, to: u64, mut f: impl FnMut(u64, &Point, &Segment, &Meter)) {
         if from >= to || self.segments.is_empty() {
             return;
         }
         let mut p = self.point(from);
         let mut seg = self.segment_of_point(from);
+        let mut meter = self.segments[seg].ideal.meter();
+        // Point index where the walk leaves the current segment.
+        let mut seg_end = self.segments[seg].first_step + self.segments[seg].steps;
         for k in from..to {
             if k > from {
                 p.apply(self.steps[k as usize - 1]);
-                if k < self.steps() {
+                if k >= seg_end && k < self.steps() {
                     while self.segments[seg].first_step + self.segments[seg].steps <= k {
                         seg += 1;
                     }
+                    meter = self.segments[seg].ideal.meter();
+                    seg_end = self.segments[seg].first_step + self.segments[seg].steps;
                 }
             }
-            f(k, &p, &self.segments[seg]);
+            f(k, &p, &self.segments[seg], &meter);
         }
     }
 
@@ -425,23 +517,31 @@ impl Trace {
         }
     }
 
+    /// Calls `f(k, point k)` for point indices `from..to`, decoding the
+    /// steps as it goes: no array of points is built.
+    pub fn walk_points(&self, from: u64, to: u64, mut f: impl FnMut(u64, &Point)) {
+        if from >= to {
+            return;
+        }
+        let mut p = self.point(from);
+        f(from, &p);
+        for k in from + 1..to {
+            p.apply(self.steps[k as usize - 1]);
+            f(k, &p);
+        }
+    }
+
     /// Points with point indices `from..to`, flat with stride `dims`.
     pub fn points_flat(&self, from: u64, to: u64) -> Vec<i64> {
         let mut out = Vec::with_capacity((to - from) as usize * self.dims());
-        let mut p = self.point(from);
-        for k in from..to {
-            if k > from {
-                p.apply(self.steps[k as usize - 1]);
-            }
-            out.extend_from_slice(p.coords());
-        }
+        self.walk_points(from, to, |_, p| out.extend_from_slice(p.coords()));
         out
     }
 
     /// Perpendicular deviation of points `from..to` from the ideal path.
     pub fn deviation_range(&self, from: u64, to: u64) -> Vec<f64> {
         let mut out = Vec::with_capacity((to - from) as usize);
-        self.for_each_point(from, to, |_, p, seg| out.push(seg.ideal.deviation(p)));
+        self.for_each_point(from, to, |_, p, _, meter| out.push(meter.deviation(p)));
         out
     }
 
@@ -449,9 +549,9 @@ impl Trace {
     pub fn axis_error_range(&self, from: u64, to: u64) -> Vec<f64> {
         let dims = self.dims();
         let mut out = Vec::with_capacity((to - from) as usize * dims);
-        self.for_each_point(from, to, |k, p, seg| {
+        self.for_each_point(from, to, |k, p, seg, meter| {
             let local = (k - seg.first_step).min(seg.steps);
-            out.extend_from_slice(&seg.ideal.axis_error(p, local, seg.steps)[..dims]);
+            out.extend_from_slice(&meter.axis_error(p, local, seg.steps)[..dims]);
         });
         out
     }
@@ -478,6 +578,24 @@ impl Trace {
     pub fn decisions(&self, from: u64, to: u64) -> DecisionTable {
         let len = (to - from) as usize;
         let mut columns = vec![vec![f64::NAN; len]; self.columns.len()];
+        self.replay_decisions(from, to, |column, i, value| columns[column][i] = value);
+        DecisionTable { columns }
+    }
+
+    /// The same values in one column-major array: `(to - from)` values of
+    /// the first trace column, then of the second, ... (what crosses the
+    /// wasm boundary, written once with no per-column arrays to join).
+    pub fn decisions_flat(&self, from: u64, to: u64) -> Vec<f64> {
+        let len = (to - from) as usize;
+        let mut flat = vec![f64::NAN; len * self.columns.len()];
+        self.replay_decisions(from, to, |column, i, value| flat[column * len + i] = value);
+        flat
+    }
+
+    /// Replays steps `from..to`, calling `put(trace column, step index -
+    /// from, value)` for each value a segment's stepper writes; columns a
+    /// segment does not have are left alone.
+    fn replay_decisions(&self, from: u64, to: u64, mut put: impl FnMut(usize, usize, f64)) {
         let mut row = vec![f64::NAN; MAX_COLUMNS];
         let mut k = from;
         while k < to {
@@ -489,12 +607,11 @@ impl Trace {
                 row.fill(f64::NAN);
                 stepper.replay_step(&mut row);
                 for (local, &global) in segment.column_index.iter().enumerate() {
-                    columns[global][(i - from) as usize] = row[local];
+                    put(global, (i - from) as usize, row[local]);
                 }
             }
             k = seg_end;
         }
-        DecisionTable { columns }
     }
 
     /// One sentence: why step index k was taken.
@@ -540,7 +657,7 @@ impl Trace {
             start: self.start.coords().to_vec(),
             end: self.end.coords().to_vec(),
             columns: &self.columns,
-            metrics: &self.metrics,
+            metrics: self.metrics(),
             segments: self
                 .segments
                 .iter()

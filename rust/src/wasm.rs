@@ -10,8 +10,9 @@
 //! - direction levels: Uint8Array, one byte per step index, bit `axis` set
 //!   while that axis's DIR line is at its negative level (see `machine`).
 //!
-//! Small data (summary, catalogue) crosses as JSON text. Errors are JS `Error`
-//! objects named `VoxpathError` with `field`, or `line` and `column`, set.
+//! Small data (summary, catalogue, comparisons) crosses as JSON text.
+//! Errors are JS `Error` objects named `VoxpathError` with `field`, or
+//! `line` and `column`, set.
 
 use crate::error::{Error, Location};
 use crate::trace::Trace;
@@ -66,6 +67,14 @@ pub fn random_lines_json(request_json: &str) -> Result<String, JsValue> {
     Ok(serde_json::to_string(&result).expect("the result serializes"))
 }
 
+/// Runs `{"algorithms": [a, b], ...shared options}` (see
+/// `compare::compare_request`); returns the comparison as JSON text.
+#[wasm_bindgen(js_name = compareJson)]
+pub fn compare_json(request_json: &str) -> Result<String, JsValue> {
+    let result = crate::compare::compare_request(request_json).map_err(|e| to_js_error(&e))?;
+    Ok(serde_json::to_string(&result).expect("the comparison serializes"))
+}
+
 /// A finished trace held in wasm memory.
 #[wasm_bindgen]
 pub struct TraceHandle(Trace);
@@ -98,23 +107,24 @@ impl TraceHandle {
         serde_json::to_string(&self.0.summary()).expect("the summary serializes")
     }
 
-    /// Points with point indices `from..to` (Int32Array, stride dims).
+    /// Points with point indices `from..to` (Int32Array, stride dims),
+    /// decoded straight into the i32 array JS receives: 4 bytes per
+    /// coordinate in wasm memory while the copy is made, nothing more.
     pub fn points(&self, from: u32, to: u32) -> Result<Vec<i32>, JsValue> {
         let (from, to) = self.point_range(from, to)?;
+        let mut out = Vec::with_capacity((to - from) as usize * self.0.dims());
         // Every point lies between validated endpoints or within a validated
         // arc's bounding box, so it fits in i32 (|c| <= 2^31 - 1).
-        Ok(self
-            .0
-            .points_flat(from, to)
-            .into_iter()
-            .map(|c| c as i32)
-            .collect())
+        self.0.walk_points(from, to, |_, p| {
+            out.extend(p.coords().iter().map(|&c| c as i32))
+        });
+        Ok(out)
     }
 
     /// Decision columns for step indices `from..to`, column-major.
     pub fn decisions(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
         let (from, to) = self.step_range(from, to)?;
-        Ok(self.0.decisions(from, to).columns.concat())
+        Ok(self.0.decisions_flat(from, to))
     }
 
     /// Deviation from the ideal path of points `from..to`.

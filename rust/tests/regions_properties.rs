@@ -3,7 +3,7 @@
 //! every octant and of all seven types (Wang section 2.2).
 
 use proptest::prelude::*;
-use voxpath::grid::{COORD_LIMIT, Point};
+use voxpath::grid::{COORD_LIMIT, Point, Step, displacement};
 use voxpath::ideal::IdealPath;
 use voxpath::line::regions_wang::RegionsWang;
 use voxpath::trace::{Stepper, TiePolicy};
@@ -110,6 +110,32 @@ proptest! {
         let mut backward = collect(to, from, flipped);
         backward.reverse();
         prop_assert_eq!(forward, backward);
+    }
+
+    #[test]
+    fn fill_takes_next_step_s_steps_and_knows_their_displacement(
+        (from, to, tie) in line_strategy(), gcd in any::<bool>(), chunk in 1usize..700
+    ) {
+        // What a trace records (fill, in chunks) against the steps one by
+        // one; the displacement it derives from eq. (8) against the steps'.
+        let mut one_by_one = RegionsWang::with_gcd(from, to, tie, gcd);
+        let mut expected = Vec::new();
+        while let Some((step, _)) = one_by_one.next_step() {
+            expected.push(step);
+        }
+        let mut filler = RegionsWang::with_gcd(from, to, tie, gcd);
+        let mut taken = Vec::new();
+        loop {
+            let mut out = vec![Step::NONE; chunk];
+            let filled = filler.fill(&mut out);
+            prop_assert_eq!(filled.displacement, displacement(&out[..filled.steps]));
+            taken.extend_from_slice(&out[..filled.steps]);
+            prop_assert_eq!(filler.remaining_steps(), Some((expected.len() - taken.len()) as u64));
+            if filled.steps < chunk {
+                break;
+            }
+        }
+        prop_assert_eq!(taken, expected);
     }
 }
 

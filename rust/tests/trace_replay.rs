@@ -21,6 +21,7 @@ struct DirectRun {
     points: Vec<Point>,
     rows: Vec<Vec<f64>>,
     explanations: Vec<String>,
+    ties: u64,
 }
 
 fn direct<S: Stepper>(mut stepper: S, from: Point) -> DirectRun {
@@ -29,8 +30,10 @@ fn direct<S: Stepper>(mut stepper: S, from: Point) -> DirectRun {
         points: vec![p],
         rows: Vec::new(),
         explanations: Vec::new(),
+        ties: 0,
     };
     while let Some((step, why)) = stepper.next_step() {
+        out.ties += why.is_tie() as u64;
         let mut row = vec![f64::NAN; S::Why::COLUMNS.len()];
         why.write(&mut row);
         out.rows.push(row);
@@ -102,6 +105,9 @@ fn check_replay<S: Stepper>(algorithm: &str, options: &str, from: Point, to: Poi
         .map(|p| ideal.deviation(p))
         .fold(0.0, f64::max);
     assert_eq!(trace.metrics().max_deviation, max, "{algorithm}");
+    // Steps are recorded without their decisions; the metrics count ties by
+    // replaying them.
+    assert_eq!(trace.metrics().ties, run.ties, "{algorithm}");
     // Each axis pulses exactly |Δ| times: it only ever moves toward the end.
     let delta = from.delta_to(&to);
     let pulses: Vec<u64> = delta[..from.dims()]

@@ -1,6 +1,7 @@
 /**
  * The voxpath command line: `voxpath trace --algorithm regions --from 0,0,0
- * --to 10,7,6 --format json`. Flags are generated from the algorithm
+ * --to 10,7,6 --format json`, `voxpath compare --algorithms regions,greedy
+ * --from 0,0,0 --to 10,7,6`. Flags are generated from the algorithm
  * catalogue: an option `maxSteps` is the flag `--max-steps`.
  *
  * Exit codes: 0 success, 1 failure while running, 2 bad command line or
@@ -8,6 +9,9 @@
  */
 import {
   algorithms,
+  compare,
+  comparisonToCsv,
+  comparisonToTable,
   experiments,
   randomLines,
   randomLinesToCsv,
@@ -102,6 +106,7 @@ function describeOption(spec: OptionSpec): string {
 function shortUsage(): string {
   return [
     'usage: voxpath trace --algorithm ID --from X,Y,Z --to X,Y,Z [options] [--format json|csv|table]',
+    '       voxpath compare --algorithms A,B --from X,Y,Z --to X,Y,Z [options of A or B] [--format json|csv|table]',
     '       voxpath experiment random-lines [--count N] [--seed N] [--algorithm ID] [options] [--format ...]',
     `       ${GCODE_USAGE}`,
     '       voxpath algorithms',
@@ -126,6 +131,11 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList }: Catal
     '    decisions: { <column>: [...] } (decisions.C[k] produced points[k + 1]),',
     '    deviation: [...] (deviation[k] belongs to points[k]), metrics: {...}, notes: [...] }',
     'and for csv / table one row per point with the decision that produced it.',
+    '',
+    'compare traces the same move with two algorithms; each option goes to every one of',
+    'the two that takes it. --format json prints { a, b (steps, metrics), firstDifference:',
+    '{ pointIndex, a, b, aWhy, bWhy (explanation, decisions) }, onlyInA, onlyInB (cells) };',
+    'table puts both side by side with both explanations; csv has one row per quantity.',
     '',
     'algorithms and their options:',
   ];
@@ -160,11 +170,16 @@ export function pickFormat(flags: Map<string, string>): Format {
   return format;
 }
 
-/** Options from flags, each checked against its spec; --algorithm and --format are the command's own. */
-function optionsFromFlags(flags: Map<string, string>, specs: OptionSpec[], what: string): Record<string, unknown> {
+/** Options from flags, each checked against its spec; the `own` flags are the command's, not options. */
+function optionsFromFlags(
+  flags: Map<string, string>,
+  specs: OptionSpec[],
+  what: string,
+  own: readonly string[] = ['--algorithm', '--format'],
+): Record<string, unknown> {
   const options: Record<string, unknown> = {};
   for (const [flag, text] of flags) {
-    if (flag === '--algorithm' || flag === '--format') continue;
+    if (own.includes(flag)) continue;
     const spec = specs.find((o) => o.name === optionOf(flag));
     if (!spec) throw new UsageError(`unknown flag ${flag} for ${what} (it takes ${specs.map((o) => flagOf(o.name)).join(', ')})`);
     options[spec.name] = optionValue(spec, flag, text);
@@ -184,6 +199,32 @@ async function runTrace(flags: Map<string, string>, catalogues: Catalogues): Pro
   } finally {
     result.free();
   }
+}
+
+/** The two algorithms of --algorithms A,B. */
+function pickPair(flags: Map<string, string>, catalogue: AlgorithmInfo[]): [AlgorithmInfo, AlgorithmInfo] {
+  const text = flags.get('--algorithms');
+  if (text === undefined) throw new UsageError('--algorithms is required (two ids, for example --algorithms regions,greedy)');
+  const ids = text.split(',');
+  if (ids.length !== 2) throw new UsageError(`--algorithms: expected two ids separated by a comma, got '${text}'`);
+  const find = (id: string) => {
+    const info = catalogue.find((a) => a.id === id);
+    if (!info) throw new UsageError(`--algorithms: unknown algorithm '${id}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
+    return info;
+  };
+  return [find(ids[0]!), find(ids[1]!)];
+}
+
+async function runCompare(flags: Map<string, string>, catalogues: Catalogues): Promise<string> {
+  const [a, b] = pickPair(flags, catalogues.algorithms);
+  const format = pickFormat(flags);
+  // The union of both option lists; an option both take is parsed once.
+  const specs = [...a.options, ...b.options.filter((o) => !a.options.some((p) => p.name === o.name))];
+  const options = optionsFromFlags(flags, specs, `compare ${a.id},${b.id}`, ['--algorithms', '--format']);
+  const result = await compare({ ...options, algorithms: [a.id, b.id] });
+  if (format === 'csv') return comparisonToCsv(result);
+  if (format === 'table') return comparisonToTable(result);
+  return JSON.stringify(result) + '\n';
 }
 
 async function runExperiment(args: string[], catalogues: Catalogues): Promise<string> {
@@ -222,6 +263,8 @@ export async function main(args: string[]): Promise<number> {
     }
     if (command === 'trace') {
       await write(await runTrace(parseFlags(rest), catalogues));
+    } else if (command === 'compare') {
+      await write(await runCompare(parseFlags(rest), catalogues));
     } else if (command === 'experiment') {
       await write(await runExperiment(rest, catalogues));
     } else if (command === 'gcode') {

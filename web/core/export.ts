@@ -7,6 +7,7 @@
  * as Wang's Tables 1 and 2 print them.
  */
 import { AXIS_NAMES } from './axes.js';
+import type { Comparison, StepWhy } from './compare.js';
 import type { MeasureSummary, RandomLinesResult } from './experiment.js';
 import type { Trace } from './trace.js';
 import type { ColumnSpec, DecisionColumns } from './types.js';
@@ -164,4 +165,90 @@ export function randomLinesToTable(result: RandomLinesResult): string {
     `Note: ${result.paperFigure9Erratum}`,
     '',
   ].join('\n');
+}
+
+/** "(5, 4, 3)", or "-" for a path that has ended. */
+function pointText(point: number[] | null): string {
+  return point === null ? '-' : `(${point.join(', ')})`;
+}
+
+/** Column labels of a comparison: the ids, told apart when they are the same. */
+function sideLabels(c: Comparison): [string, string] {
+  const [a, b] = [c.a.algorithm, c.b.algorithm];
+  return a === b ? [`${a} (a)`, `${b} (b)`] : [a, b];
+}
+
+/** The side-by-side quantities of a comparison: [name, a's value, b's value]. */
+function comparisonRows(c: Comparison): string[][] {
+  const d = c.firstDifference;
+  const list = (values: number[], digits?: number) => values.map((v) => (digits === undefined ? String(v) : v.toFixed(digits))).join(' ');
+  const both = (name: string, pick: (side: Comparison['a']) => string): string[] => [name, pick(c.a), pick(c.b)];
+  return [
+    both('steps', (s) => String(s.steps)),
+    both('end', (s) => pointText(s.end)),
+    both('max deviation', (s) => s.metrics.maxDeviation.toFixed(6)),
+    both('mean deviation', (s) => s.metrics.meanDeviation.toFixed(6)),
+    both('std deviation', (s) => s.metrics.stdDeviation.toFixed(6)),
+    both('max axis error (eq. 11)', (s) => list(s.metrics.maxAxisError, 6)),
+    both('pulses per axis', (s) => list(s.metrics.pulsesByAxis)),
+    both('ties', (s) => String(s.metrics.ties)),
+    ['cells only in this one', String(c.onlyInA.count), String(c.onlyInB.count)],
+    ['first difference at point', d ? String(d.pointIndex) : '-', d ? String(d.pointIndex) : '-'],
+    ['point there', pointText(d?.a ?? null), pointText(d?.b ?? null)],
+    ['why', d?.aWhy?.explanation ?? '', d?.bWhy?.explanation ?? ''],
+  ];
+}
+
+/** A comparison as CSV: one row per quantity, one column per algorithm (the CLI's compare --format csv). */
+export function comparisonToCsv(c: Comparison): string {
+  return [['quantity', ...sideLabels(c)], ...comparisonRows(c)].map((r) => r.map(csvCell).join(',')).join('\n') + '\n';
+}
+
+/** Cells listed in a table, at most this many per side. */
+const TABLE_CELLS = 12;
+
+/** "M = 0, N = 10, region = g, ...": a step's decision values. */
+function decisionsText(why: StepWhy): string {
+  return Object.entries(why.decisions)
+    .map(([name, value]) => `${name} = ${value === null ? '-' : String(value)}`)
+    .join(', ');
+}
+
+/** A comparison for people: metrics side by side, where and why the paths part, the cells only in each (the CLI's compare --format table). */
+export function comparisonToTable(c: Comparison): string {
+  const labels = sideLabels(c);
+  const d = c.firstDifference;
+  const lines = [
+    `compare ${c.a.algorithm} (a) with ${c.b.algorithm} (b), from ${pointText(c.a.start)}`,
+    '',
+    ...alignedTable(['', ...labels], comparisonRows(c).slice(0, 9), true),
+    '',
+  ];
+  if (d === null) {
+    lines.push('The paths are identical.');
+  } else {
+    const where = d.pointIndex === 0 ? 'at the start' : `after step ${d.pointIndex - 1}`;
+    lines.push(`First difference: point ${d.pointIndex} (${where}): ${labels[0]} ${pointText(d.a)}, ${labels[1]} ${pointText(d.b)}.`);
+    const width = Math.max(...labels.map((l) => l.length)) + 2;
+    for (const [label, why] of [
+      [labels[0], d.aWhy],
+      [labels[1], d.bWhy],
+    ] as const) {
+      const head = `  ${`${label}:`.padEnd(width)}`;
+      if (why === null) {
+        lines.push(`${head}has no step there (its path has ended).`);
+      } else {
+        lines.push(`${head}${why.explanation}`, `  ${' '.repeat(width)}${decisionsText(why)}`);
+      }
+    }
+  }
+  for (const [label, cells] of [
+    [labels[0], c.onlyInA],
+    [labels[1], c.onlyInB],
+  ] as const) {
+    const shown = cells.cells.slice(0, TABLE_CELLS).map((p) => pointText(p));
+    const more = cells.count > shown.length ? ` ... and ${cells.count - shown.length} more` : '';
+    lines.push(cells.count === 0 ? `Cells only in ${label}: none` : `Cells only in ${label} (${cells.count}): ${shown.join(' ')}${more}`);
+  }
+  return lines.join('\n') + '\n';
 }

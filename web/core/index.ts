@@ -8,6 +8,9 @@
  *   t.deviation;       // Float64Array, one value per point
  *   t.metrics;         // { steps, maxDeviation, meanDeviation, ... }
  *
+ *   const c = await compare({ algorithms: ['regions', 'greedy'], from: [0, 0, 0], to: [10, 7, 6] });
+ *   c.firstDifference; // { pointIndex, a, b, aWhy: { explanation, decisions }, bWhy }
+ *
  *   import { runGcode } from 'voxpath';
  *   const p = await runGcode('G1 X10 Y5 F600', { stepsPerMm: 80 });
  *   p.moves;           // each with its source line, mm and steps
@@ -16,12 +19,23 @@
 export { trace, algorithms, Trace } from './trace.js';
 export { AXIS_NAMES } from './axes.js';
 export { VoxpathError } from './errors.js';
+export { memoryBytes } from './wasm.js';
+export { compare } from './compare.js';
+export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDigest } from './compare.js';
 export { GcodeProgram, runGcode } from './gcode.js';
 export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, RunGcodeOptions } from './gcode.js';
 export { pulseTrains } from './pulses.js';
 export type { PulseTrain } from './pulses.js';
 export { experiments, randomLines } from './experiment.js';
 export type { ErrorStats, ExperimentInfo, MeasureSummary, RandomLinesOptions, RandomLinesResult, Spread } from './experiment.js';
-export { randomLinesToCsv, randomLinesToTable, traceToCsv, traceToJson, traceToTable } from './export.js';
+export {
+  comparisonToCsv,
+  comparisonToTable,
+  randomLinesToCsv,
+  randomLinesToTable,
+  traceToCsv,
+  traceToJson,
+  traceToTable,
+} from './export.js';
 export type { TraceJson } from './export.js';
 export type * from './types.js';

@@ -1,7 +1,8 @@
 /**
  * The headless API: `await trace(options)` runs an algorithm in the wasm core
  * and returns a Trace. Bulk arrays are copied out of wasm memory in chunks of
- * CHUNK rows, so a long path never needs a second full-size copy inside wasm.
+ * about CHUNK_BYTES, so a long path never needs a second full-size copy
+ * inside wasm (whose memory, once grown, is never given back).
  */
 import { callCore } from './errors.js';
 import type { TraceHandle } from './pkg/voxpath.js';
@@ -17,8 +18,17 @@ import type {
 } from './types.js';
 import { loadCore } from './wasm.js';
 
-/** Rows (points or steps) copied out of wasm per call. */
-const CHUNK = 1 << 16;
+/**
+ * Bytes copied out of wasm per call. Each call's array is built in wasm
+ * memory before JS copies it, so this bounds what reading adds to the core's
+ * memory: 256 KiB, against 2 bytes per step for the trace itself.
+ */
+const CHUNK_BYTES = 1 << 18;
+
+/** Rows (points or steps) per call for rows of `bytesPerRow` bytes. */
+function chunkRows(bytesPerRow: number): number {
+  return Math.max(1, Math.floor(CHUNK_BYTES / bytesPerRow));
+}
 
 type TypedArrayOf<T> = { new (length: number): T; BYTES_PER_ELEMENT: number };
 
@@ -31,8 +41,9 @@ function copyRows<T extends Int32Array | Float64Array>(
   read: (from: number, to: number) => ArrayLike<number>,
 ): T {
   const out = new Kind((to - from) * stride);
-  for (let k = from; k < to; k += CHUNK) {
-    (out as Int32Array | Float64Array).set(read(k, Math.min(to, k + CHUNK)), (k - from) * stride);
+  const rows = chunkRows(stride * Kind.BYTES_PER_ELEMENT);
+  for (let k = from; k < to; k += rows) {
+    (out as Int32Array | Float64Array).set(read(k, Math.min(to, k + rows)), (k - from) * stride);
   }
   return out;
 }
@@ -111,8 +122,9 @@ export class Trace implements TraceSummary {
     for (const c of this.columns) {
       out[c.name] = c.kind === 'category' || c.kind === 'flag' ? new Uint8Array(to - from) : new Float64Array(to - from);
     }
-    for (let k = from; k < to; k += CHUNK) {
-      const end = Math.min(to, k + CHUNK);
+    const rows = chunkRows(Float64Array.BYTES_PER_ELEMENT * Math.max(1, this.columns.length));
+    for (let k = from; k < to; k += rows) {
+      const end = Math.min(to, k + rows);
       const flat = callCore(() => this.#handle.decisions(k, end));
       this.columns.forEach((c, i) => {
         out[c.name]!.set(flat.subarray(i * (end - k), (i + 1) * (end - k)), k - from);

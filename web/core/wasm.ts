@@ -7,6 +7,8 @@ import init, * as bindings from './pkg/voxpath.js';
 export type CoreBindings = typeof bindings;
 
 let loading: Promise<CoreBindings> | undefined;
+/** The core's linear memory, once loaded. */
+let memory: WebAssembly.Memory | undefined;
 
 function runningInNode(): boolean {
   return typeof process !== 'undefined' && typeof process.versions?.node === 'string';
@@ -24,9 +26,9 @@ export function loadCore(): Promise<CoreBindings> {
       // Kept out of browser bundles: the specifier is not a literal.
       const fsModule = 'node:fs/promises';
       const { readFile } = (await import(/* @vite-ignore */ fsModule)) as typeof import('node:fs/promises');
-      await init({ module_or_path: await readFile(wasmUrl) });
+      memory = (await init({ module_or_path: await readFile(wasmUrl) })).memory;
     } else {
-      await init({ module_or_path: wasmUrl });
+      memory = (await init({ module_or_path: wasmUrl })).memory;
     }
     return bindings;
   })().catch((error: unknown) => {
@@ -34,4 +36,14 @@ export function loadCore(): Promise<CoreBindings> {
     throw error;
   });
   return loading;
+}
+
+/**
+ * Bytes of linear memory the wasm core has now (0 before it is loaded).
+ * Wasm memory grows in 64 KiB pages and never shrinks, so this is the most
+ * the core has ever needed at once: what a trace costs inside wasm, besides
+ * the arrays copied out of it.
+ */
+export function memoryBytes(): number {
+  return memory?.buffer.byteLength ?? 0;
 }

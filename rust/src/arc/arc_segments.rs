@@ -28,6 +28,7 @@ use crate::algorithms::{self, AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::Point;
 use crate::ideal::IdealPath;
+use crate::line::Mirror;
 use crate::line::regions_wang::RegionsWhy;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
 use crate::trace::{Decision, Trace, TraceBuilder};
@@ -275,6 +276,23 @@ pub fn trace_chords(
         rise: spec.rise as f64,
     };
     let mut builder = TraceBuilder::new(spec.from, req.max_steps()?);
+    // A line algorithm moves each axis at most one unit per step, so a
+    // chord takes at least its largest |Δ| steps: an arc that needs more
+    // than maxSteps by that count alone is refused before any chord runs.
+    let ends = std::iter::once(spec.from).chain(chords.iter().map(|v| v.point));
+    let at_least: u64 = ends
+        .zip(chords.iter())
+        .map(|(a, b)| Mirror::new(a, b.point).longest() as u64)
+        .sum();
+    if at_least > builder.max_steps() {
+        return Err(builder.too_long(at_least));
+    }
+    // Every chord is traced first, each within what is left of maxSteps
+    // (so a too-long arc fails at the chord that passes the limit, before
+    // anything larger is allocated); then the whole is reserved once and
+    // the chords appended.
+    let mut parts = Vec::with_capacity(chords.len());
+    let mut total_steps = 0;
     let mut from = Vertex {
         point: spec.from,
         fraction: 0.0,
@@ -283,11 +301,21 @@ pub fn trace_chords(
         let mut options = Map::new();
         options.insert("from".into(), Value::from(from.point.coords()));
         options.insert("to".into(), Value::from(to.point.coords()));
-        options.insert("maxSteps".into(), Value::from(builder.max_steps()));
+        options.insert(
+            "maxSteps".into(),
+            Value::from(builder.max_steps() - total_steps),
+        );
         if let Some(tie) = tie {
             options.insert("tie".into(), Value::from(tie));
         }
-        let part = (line_info.trace)(&Request::new(line, options))?;
+        let part = (line_info.trace)(&Request::new(line, options)).map_err(|e| {
+            if e.field_name() == Some("maxSteps") {
+                builder.too_long(builder.max_steps() + 1)
+            } else {
+                e
+            }
+        })?;
+        total_steps += part.steps();
         let ideal = if helical {
             IdealPath::Helix(helix.piece(from.fraction, to.fraction))
         } else {
@@ -317,11 +345,15 @@ pub fn trace_chords(
             degrees(arc.start_rad + arc.sweep_rad * from.fraction),
             degrees(arc.start_rad + arc.sweep_rad * to.fraction),
         );
+        parts.push((part, ideal, note));
+        from = *to;
+    }
+    builder.reserve(total_steps)?;
+    for (part, ideal, note) in parts {
         builder.append(part, |segment| {
             segment.ideal = ideal.clone();
             segment.setup_note = format!("{note}: {}", segment.setup_note);
         })?;
-        from = *to;
     }
     Ok(builder.finish(id))
 }

@@ -21,12 +21,12 @@
 //! circle part at most (turns + 1) 8 (r + 1); the correction takes
 //! max(|Δu|, |Δv|) steps from the stop point to the end.
 
-use super::planes::{Frame, OCTANTS, octant_ahead};
-use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, cross_dot, norm_sq};
+use super::planes::{Frame, OCTANTS, OctantRule, Orientation, octant_ahead};
+use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, norm_sq};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::ideal::IdealPath;
+use crate::ideal::{IdealPath, within_i64_product_bound};
 use crate::line::step_target;
 use crate::request::{FROM, MAX_STEPS, Request, TO};
 use crate::trace::{Column, ColumnKind, Decision, Stepper, Trace, TraceBuilder};
@@ -113,17 +113,16 @@ pub struct CircleWhy {
     /// only a correction step could pass through).
     pub octant: Option<u8>,
     pub kind: CircleStep,
-    frame: Frame,
+    orientation: Orientation,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum CircleStep {
     /// A step of Saleem's rule, in the local counter-clockwise frame.
     Arc {
-        fast: usize,
-        fast_dir: i64,
-        slow: usize,
-        slow_dir: i64,
+        /// The octant's rule: which local axis is fast, which slow, and
+        /// their directions (a reference keeps the decision small).
+        rule: &'static OctantRule,
         /// u² + v² - r² of the two candidates (signed: > 0 outside).
         residual_stay: i64,
         residual_move: i64,
@@ -148,17 +147,20 @@ impl Decision for CircleWhy {
     const COLUMNS: &'static [Column] =
         &[OCTANT, FAST, ERROR_STAY, ERROR_MOVE, SLOW_STEPS, CORRECTION];
 
+    /// The two candidates' errors differ by an odd number: never equal.
+    const NEVER_TIES: bool = true;
+
     fn write(&self, row: &mut [f64]) {
         row[0] = self.octant.map_or(f64::NAN, |k| (k - 1) as f64);
         match self.kind {
             CircleStep::Arc {
-                fast,
+                rule,
                 residual_stay,
                 residual_move,
                 slow_steps,
                 ..
             } => {
-                row[1] = self.frame.axis(fast) as f64;
+                row[1] = self.orientation.axis(rule.fast) as f64;
                 row[2] = residual_stay.unsigned_abs() as f64;
                 row[3] = residual_move.unsigned_abs() as f64;
                 row[4] = slow_steps as u8 as f64;
@@ -172,7 +174,7 @@ impl Decision for CircleWhy {
     }
 
     fn explain(&self, _from: &Point, step: Step) -> String {
-        let f = &self.frame;
+        let f = &self.orientation;
         let [u, v, _] = f.plane.axes();
         let error = format!("{}² + {}² - r²", AXIS_NAMES[u], AXIS_NAMES[v]);
         let mut s = match self.octant {
@@ -181,10 +183,7 @@ impl Decision for CircleWhy {
         };
         match self.kind {
             CircleStep::Arc {
-                fast,
-                fast_dir,
-                slow,
-                slow_dir,
+                rule,
                 residual_stay,
                 residual_move,
                 slow_steps,
@@ -198,13 +197,13 @@ impl Decision for CircleWhy {
                         if d > 0 { "+1" } else { "-1" }
                     )
                 };
-                let slow_name = AXIS_NAMES[f.axis(slow)];
+                let slow_name = AXIS_NAMES[f.axis(rule.slow)];
                 let _ = write!(
                     s,
                     "{} is the fast axis and steps {}; {slow_name} stays ({error} = {residual_stay}) or steps {} ({residual_move}); |{}| < |{}|, so {slow_name} {} (eq. 7)",
-                    AXIS_NAMES[f.axis(fast)],
-                    &signed(fast, fast_dir)[1..],
-                    &signed(slow, slow_dir)[1..],
+                    AXIS_NAMES[f.axis(rule.fast)],
+                    &signed(rule.fast, rule.fast_dir)[1..],
+                    &signed(rule.slow, rule.slow_dir)[1..],
                     if slow_steps {
                         residual_move
                     } else {
@@ -263,9 +262,13 @@ enum Phase {
 #[derive(Clone, Debug)]
 pub struct SaleemCircle {
     frame: Frame,
+    /// `unit_steps[local axis][d + 1]`: the grid step of a local move by d
+    /// (-1, 0, +1) on that axis, so a step is two table reads and an OR.
+    unit_steps: [[Step; 3]; 2],
     /// Height on the normal axis, for reporting points.
     height: i64,
-    radius_sq: i128,
+    /// r², exact.
+    radius_sq: i64,
     /// Current point in the local counter-clockwise frame.
     pos: [i64; 2],
     end: [i64; 2],
@@ -279,10 +282,16 @@ pub struct SaleemCircle {
 
 impl SaleemCircle {
     pub fn new(spec: &ArcSpec) -> SaleemCircle {
+        let unit = |axis: usize, d: i64| {
+            let mut delta = [0; 2];
+            delta[axis] = d;
+            spec.frame.step(delta)
+        };
         SaleemCircle {
             frame: spec.frame,
+            unit_steps: [0, 1].map(|axis| [-1, 0, 1].map(|d| unit(axis, d))),
             height: spec.from.get(spec.plane.normal()),
-            radius_sq: spec.radius_sq as i128,
+            radius_sq: spec.radius_sq,
             pos: spec.start,
             end: spec.end,
             crossings_left: spec.turns + 1,
@@ -293,9 +302,10 @@ impl SaleemCircle {
     }
 
     /// u² + v² - r² at local point `p` (eq. 6 without the absolute value).
-    /// Inside the validated ±2^30 box it is below 2^33 in size.
+    /// Exact in i64: see [`local_within_bound`].
     fn residual(&self, p: [i64; 2]) -> i64 {
-        (norm_sq(p) - self.radius_sq) as i64
+        debug_assert!(local_within_bound(p), "{p:?} is off the validated circle");
+        p[0] * p[0] + p[1] * p[1] - self.radius_sq
     }
 
     /// Saleem's "dummy procedure" (section 5): runs a copy without moving
@@ -332,10 +342,25 @@ impl SaleemCircle {
         Some(plan)
     }
 
+    /// Fewer steps than this circle takes, known without running it: its
+    /// full turns alone. Every circle point is within 0.5 of the circle, so
+    /// a lap around the centre is at least 2π (r - 1) long, and one step
+    /// moves at most sqrt(2): more than 4 (r - 1) steps per full turn.
+    pub fn steps_at_least(&self) -> u64 {
+        let whole_radius = (self.radius_sq as u64).isqrt();
+        let full_turns = self.crossings_left - 1;
+        full_turns.saturating_mul(4 * whole_radius.saturating_sub(1))
+    }
+
     /// This stepper with its steps counted by the dry run, or the maxSteps
-    /// error of `builder` when it would take more than the builder allows.
+    /// error of `builder` when it would take more than the builder allows
+    /// (at once when its full turns alone need more).
     pub fn counted(mut self, builder: &TraceBuilder) -> Result<SaleemCircle, Error> {
         let limit = builder.max_steps();
+        let at_least = self.steps_at_least();
+        if at_least > limit {
+            return Err(builder.too_long(at_least));
+        }
         let plan = self
             .plan(limit)
             .ok_or_else(|| builder.too_long(limit + 1))?;
@@ -350,15 +375,15 @@ impl SaleemCircle {
     }
 
     /// One step of Saleem's rule from the current point.
+    #[inline(always)]
     fn circle_step(&mut self) -> ([i64; 2], CircleStep, u8) {
         let k = octant_ahead(self.pos).expect("the circle never passes through its centre");
         let rule = &OCTANTS[k as usize - 1];
         // The fast axis always steps (section 4: "during each iteration y
         // will always increase" in octant 1).
-        let mut stay = self.pos;
-        stay[rule.fast] += rule.fast_dir;
-        let mut moved = stay;
-        moved[rule.slow] += rule.slow_dir;
+        let (fast, slow) = (rule.fast_move(), rule.slow_move());
+        let stay = [self.pos[0] + fast[0], self.pos[1] + fast[1]];
+        let moved = [stay[0] + slow[0], stay[1] + slow[1]];
         let (residual_stay, residual_move) = (self.residual(stay), self.residual(moved));
         // Eq. (7): the slow axis steps iff |error(moved)| < |error(stay)|.
         // The residuals differ by 2|slow coordinate| ± 1, an odd number, so
@@ -369,7 +394,7 @@ impl SaleemCircle {
         // The ray from the centre through the end is reached when the side
         // of the end (sign of end × point) turns from negative to >= 0; the
         // turn is strictly forward, so this happens once per lap.
-        let reaches_ray = cross_dot(self.end, self.pos).0 < 0 && cross_dot(self.end, next).0 >= 0;
+        let reaches_ray = cross(self.end, self.pos) < 0 && cross(self.end, next) >= 0;
         if reaches_ray {
             self.crossings_left -= 1;
             if self.crossings_left == 0 {
@@ -392,10 +417,7 @@ impl SaleemCircle {
         let delta = [next[0] - self.pos[0], next[1] - self.pos[1]];
         self.pos = next;
         let kind = CircleStep::Arc {
-            fast: rule.fast,
-            fast_dir: rule.fast_dir,
-            slow: rule.slow,
-            slow_dir: rule.slow_dir,
+            rule,
             residual_stay,
             residual_move,
             slow_steps,
@@ -431,6 +453,23 @@ impl SaleemCircle {
     }
 }
 
+/// True when both local coordinates are below [`I64_PRODUCT_BOUND`](crate::ideal::I64_PRODUCT_BOUND), so
+/// squares and cross products of such points are exact in i64. Every point
+/// the circle visits or tests is: it stays within a few units of the circle
+/// (or, correcting, between the circle and an end at most one unit off it),
+/// and `ArcSpec::parse` keeps the centre ± (r + 1) within ±2^30, so each
+/// |u|, |v| is about 2^30 at most and u² + v² stays below 2^62.
+fn local_within_bound(p: [i64; 2]) -> bool {
+    within_i64_product_bound(&p)
+}
+
+/// The z component of a × b for local points, exact in i64 (both within
+/// [`local_within_bound`]: each product is below 2^62).
+fn cross(a: [i64; 2], b: [i64; 2]) -> i64 {
+    debug_assert!(local_within_bound(a) && local_within_bound(b));
+    a[0] * b[1] - a[1] * b[0]
+}
+
 fn chebyshev(p: [i64; 2], q: [i64; 2]) -> u64 {
     (p[0] - q[0])
         .unsigned_abs()
@@ -454,11 +493,13 @@ impl Stepper for SaleemCircle {
             *n -= 1;
         }
         let why = CircleWhy {
-            octant: (local_octant > 0).then(|| self.frame.grid_octant(local_octant)),
+            octant: (local_octant > 0).then(|| self.frame.orientation().grid_octant(local_octant)),
             kind,
-            frame: self.frame,
+            orientation: self.frame.orientation(),
         };
-        Some((self.frame.step(delta), why))
+        let [a, b] = self.unit_steps;
+        let step = Step(a[(delta[0] + 1) as usize].0 | b[(delta[1] + 1) as usize].0);
+        Some((step, why))
     }
 
     fn remaining_steps(&self) -> Option<u64> {
@@ -502,6 +543,34 @@ mod tests {
 
     fn trace(json: &str) -> Trace {
         crate::trace_json(json).unwrap()
+    }
+
+    #[test]
+    fn i64_residuals_and_crosses_are_exact_on_the_largest_circle() {
+        // r = 2^30 - 1 around the origin: the largest circle ArcSpec takes.
+        // Its points and candidates reach |u|, |v| = 2^30 on each axis.
+        let r = (1i64 << 30) - 1;
+        let req = Request::from_json(&format!(
+            r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},5000,0],"center":[0,0,0]}}"#
+        ))
+        .unwrap();
+        let circle = SaleemCircle::new(&ArcSpec::parse(&req, false).unwrap());
+        let edge = [-(1 << 30), -r, -1, 0, 1, r, 1 << 30];
+        for a in edge {
+            for b in edge {
+                let exact = norm_sq([a, b]) - (r as i128) * (r as i128);
+                assert_eq!(circle.residual([a, b]) as i128, exact, "({a}, {b})");
+                for c in edge {
+                    let (p, q) = ([a, b], [c, -a]);
+                    assert_eq!(cross(p, q) as i128, crate::arc::cross_dot(p, q).0);
+                }
+            }
+        }
+        // The trace runs its debug checks of the bound at every step.
+        let t = trace(&format!(
+            r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},5000,0],"center":[0,0,0]}}"#
+        ));
+        assert_eq!(t.end(), Point::new(&[r, 5000, 0]));
     }
 
     fn points(t: &Trace) -> Vec<[i64; 3]> {

@@ -13,7 +13,7 @@
 
 use super::planes::Plane;
 use crate::grid::{MAX_AXES, Point};
-use crate::ideal::IdealPathInfo;
+use crate::ideal::{IdealPathInfo, within_i64_product_bound};
 use std::f64::consts::{PI, TAU};
 
 /// Sagitta, in grid units, of the polyline's chords on small circles.
@@ -83,42 +83,27 @@ impl ArcPath {
         axes.map(|a| p.get(a) - self.center.get(a))
     }
 
-    /// Signed radial error ρ - r of `p` (> 0 outside), ρ = distance from the
-    /// centre axis. ρ² - r² is formed exactly in i128 (coordinates up to 2^31
-    /// apart square to 2^62 and sum past i64) and divided by ρ + r only then,
-    /// so the result keeps full f64 precision where sqrt(u² + v²) - r would
-    /// cancel away every digit at r = 2^20 far from the origin.
+    /// This arc ready to measure many points (its radius computed once).
+    pub fn meter(&self) -> ArcMeter<'_> {
+        ArcMeter {
+            arc: self,
+            radius: self.radius(),
+        }
+    }
+
+    /// Signed radial error ρ - r of `p` (> 0 outside); see [`ArcMeter::radial_error`].
     pub fn radial_error(&self, p: &Point) -> f64 {
-        let [u, v, _] = self.relative(p);
-        let rho_sq = u as i128 * u as i128 + v as i128 * v as i128;
-        let excess = rho_sq - self.radius_sq as i128;
-        excess as f64 / ((rho_sq as f64).sqrt() + self.radius())
+        self.meter().radial_error(p)
     }
 
     /// Distance from `p` to the circle: radial error and height off the plane.
     pub fn deviation(&self, p: &Point) -> f64 {
-        let n = self.relative(p)[2] as f64;
-        self.radial_error(p).hypot(n)
+        self.meter().deviation(p)
     }
 
     /// `p` minus the arc's point at the same angle (the radial projection).
     pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
-        let [u, v, n] = self.relative(p);
-        let rho = ((u as i128 * u as i128 + v as i128 * v as i128) as f64).sqrt();
-        let [au, av, an] = self.plane.axes();
-        let mut phi = [0.0; MAX_AXES];
-        if rho == 0.0 {
-            // The centre has no angle: compare with the start of the arc.
-            let r = self.radius();
-            phi[au] = -r * self.start_rad.cos();
-            phi[av] = -r * self.start_rad.sin();
-        } else {
-            let scale = self.radial_error(p) / rho;
-            phi[au] = u as f64 * scale;
-            phi[av] = v as f64 * scale;
-        }
-        phi[an] = n as f64;
-        phi
+        self.meter().axis_error(p)
     }
 
     /// Grid coordinates of the arc's point at angle `theta` and height
@@ -156,6 +141,67 @@ impl ArcPath {
             start_rad: self.start_rad,
             sweep_rad: self.sweep_rad,
         }
+    }
+}
+
+/// An arc with its radius computed, measuring points.
+pub struct ArcMeter<'a> {
+    arc: &'a ArcPath,
+    /// sqrt(r²), grid units.
+    radius: f64,
+}
+
+impl ArcMeter<'_> {
+    /// ρ² = u² + v² of in-plane offsets `u`, `v`, exact: in i64 when both
+    /// are below [`I64_PRODUCT_BOUND`](crate::ideal::I64_PRODUCT_BOUND) (each square below 2^62, the sum below
+    /// 2^63; every point of a validated circle is), else in i128.
+    fn rho_sq(u: i64, v: i64) -> i128 {
+        if within_i64_product_bound(&[u, v]) {
+            (u * u + v * v) as i128
+        } else {
+            u as i128 * u as i128 + v as i128 * v as i128
+        }
+    }
+
+    /// ρ - r from ρ²: ρ² - r² is formed exactly and divided by ρ + r only
+    /// then, so the result keeps full f64 precision where sqrt(u² + v²) - r
+    /// would cancel away every digit at r = 2^20 far from the origin.
+    fn radial_error_of(&self, rho_sq: i128) -> f64 {
+        let excess = rho_sq - self.arc.radius_sq as i128;
+        excess as f64 / ((rho_sq as f64).sqrt() + self.radius)
+    }
+
+    /// Signed radial error ρ - r of `p` (> 0 outside), ρ = distance from the
+    /// centre axis.
+    pub fn radial_error(&self, p: &Point) -> f64 {
+        let [u, v, _] = self.arc.relative(p);
+        self.radial_error_of(Self::rho_sq(u, v))
+    }
+
+    /// Distance from `p` to the circle: radial error and height off the plane.
+    pub fn deviation(&self, p: &Point) -> f64 {
+        let n = self.arc.relative(p)[2] as f64;
+        self.radial_error(p).hypot(n)
+    }
+
+    /// `p` minus the arc's point at the same angle (the radial projection).
+    pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
+        let [u, v, n] = self.arc.relative(p);
+        let rho_sq = Self::rho_sq(u, v);
+        let rho = (rho_sq as f64).sqrt();
+        let [au, av, an] = self.arc.plane.axes();
+        let mut phi = [0.0; MAX_AXES];
+        if rho == 0.0 {
+            // The centre has no angle: compare with the start of the arc.
+            phi[au] = -self.radius * self.arc.start_rad.cos();
+            phi[av] = -self.radius * self.arc.start_rad.sin();
+        } else {
+            let scale = self.radial_error_of(rho_sq) / rho;
+            phi[au] = u as f64 * scale;
+            phi[av] = v as f64 * scale;
+        }
+        phi[an] = n as f64;
+        phi
     }
 }
 
@@ -332,6 +378,26 @@ mod tests {
         assert!((e - 1.4).abs() < 1e-6, "{e}");
         // Off the plane: distance combines radial and height.
         assert_eq!(a.deviation(&Point::new(&[c + 5 * k + 3, c, c + 4])), 5.0);
+    }
+
+    #[test]
+    fn fast_rho_sq_equals_i128_at_the_bound() {
+        let edge = [
+            0,
+            1,
+            -1,
+            (1 << 31) - 1,
+            -(1 << 31) + 1,
+            1 << 31,
+            -(1 << 31),
+            1 << 40,
+        ];
+        for u in edge {
+            for v in edge {
+                let exact = u as i128 * u as i128 + v as i128 * v as i128;
+                assert_eq!(ArcMeter::rho_sq(u, v), exact, "({u}, {v})");
+            }
+        }
     }
 
     #[test]

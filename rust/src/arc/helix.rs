@@ -117,6 +117,12 @@ fn trace_helix(req: &Request) -> Result<Trace, Error> {
     }
     let tie = req.tie(TiePolicy::Hold)?;
     let mut builder = TraceBuilder::new(spec.from, req.max_steps()?);
+    // The helix takes max(n_c, n_z) steps: a rise past maxSteps is refused
+    // before the circle's dry run.
+    let n_z = spec.rise.unsigned_abs();
+    if n_z > builder.max_steps() {
+        return Err(builder.too_long(n_z));
+    }
     let circle = SaleemCircle::new(&spec).counted(&builder)?;
     let helix = SaleemHelix::new(&spec, circle, tie);
     if helix.remaining > builder.max_steps() {

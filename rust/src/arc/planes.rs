@@ -148,6 +148,25 @@ impl Frame {
         Step::along(u, delta[0]).with(v, self.turn.sign() * delta[1])
     }
 
+    /// The frame without its centre.
+    pub fn orientation(&self) -> Orientation {
+        Orientation {
+            plane: self.plane,
+            turn: self.turn,
+        }
+    }
+}
+
+/// How local axes map to grid axes: a [`Frame`] without its centre, two
+/// bytes, small enough to travel with every step's decision (a decision
+/// that carried the whole frame would copy its 56-byte centre every step).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Orientation {
+    pub plane: Plane,
+    pub turn: Turn,
+}
+
+impl Orientation {
     /// The grid axis of local axis 0 (a) or 1 (b).
     pub fn axis(&self, local: usize) -> usize {
         self.plane.axes()[local]
@@ -170,6 +189,7 @@ impl Frame {
 
 /// What one octant of counter-clockwise travel does (Saleem section 4,
 /// Figure 1: octants counted counter-clockwise from the positive first axis).
+#[derive(Debug, PartialEq, Eq)]
 pub struct OctantRule {
     /// Local axis (0 = a, 1 = b) that steps every time.
     pub fast: usize,
@@ -178,6 +198,24 @@ pub struct OctantRule {
     pub slow: usize,
     pub slow_dir: i64,
     pub teaching: &'static str,
+}
+
+impl OctantRule {
+    /// The fast axis's unit move as a local vector, formed per component:
+    /// an update through a run-time index would make the next read of the
+    /// point wait for the store (a measured stall in the circle's loop).
+    pub fn fast_move(&self) -> [i64; 2] {
+        unit_move(self.fast, self.fast_dir)
+    }
+
+    /// The slow axis's unit move as a local vector.
+    pub fn slow_move(&self) -> [i64; 2] {
+        unit_move(self.slow, self.slow_dir)
+    }
+}
+
+fn unit_move(local: usize, dir: i64) -> [i64; 2] {
+    [dir * (local == 0) as i64, dir * (local == 1) as i64]
 }
 
 /// Index k - 1 for octant k, in the counter-clockwise local frame.

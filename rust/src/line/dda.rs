@@ -79,6 +79,9 @@ impl Decision for DdaWhy {
         },
     ];
 
+    /// Rounding has no tie rule to apply: floor(acc + 0.5) takes halves up.
+    const NEVER_TIES: bool = true;
+
     fn write(&self, row: &mut [f64]) {
         for axis in 0..MAX_AXES {
             row[axis] = if axis < self.dims {

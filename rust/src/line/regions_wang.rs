@@ -13,9 +13,9 @@
 
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
 use std::fmt::Write;
 
 pub const ID: &str = "regions";
@@ -106,20 +106,18 @@ impl Region {
         }
     }
 
-    /// Classifies the signs of M and N (a missing N counts as negative: a
-    /// line with one passive axis never steps a second one).
-    fn of(m: i64, n: Option<i64>) -> Region {
-        match (m.signum(), n.map_or(-1, i64::signum)) {
-            (1, -1) => Region::A,
-            (-1, -1) => Region::B,
-            (-1, 1) => Region::C,
-            (1, 1) => Region::D,
-            (0, -1) => Region::E,
-            (-1, 0) => Region::F,
-            (0, 1) => Region::G,
-            (1, 0) => Region::H,
-            _ => Region::O,
-        }
+    /// Classifies the signs of M and N: a table indexed by sign + 1, so no
+    /// branch on the values. A line with one passive axis passes N = -1 (a
+    /// missing N counts as negative: it never steps a second axis).
+    fn of(m: i64, n: i64) -> Region {
+        use Region::{A, B, C, D, E, F, G, H, O};
+        const BY_SIGNS: [[Region; 3]; 3] = [
+            // N < 0, N = 0, N > 0
+            [B, F, C], // M < 0
+            [E, O, G], // M = 0
+            [A, H, D], // M > 0
+        ];
+        BY_SIGNS[(m.signum() + 1) as usize][(n.signum() + 1) as usize]
     }
 
     fn label(self) -> &'static str {
@@ -128,13 +126,10 @@ impl Region {
 }
 
 impl Corner {
-    fn of(first_steps: bool, second_steps: bool) -> Corner {
-        match (first_steps, second_steps) {
-            (true, false) => Corner::A,
-            (false, false) => Corner::B,
-            (false, true) => Corner::C,
-            (true, true) => Corner::D,
-        }
+    /// The corner of the passive axes' moves (0 or 1 each), by table.
+    fn of(first_steps: u16, second_steps: u16) -> Corner {
+        const BY_MOVES: [Corner; 4] = [Corner::B, Corner::A, Corner::C, Corner::D];
+        BY_MOVES[(first_steps | second_steps << 1) as usize]
     }
 
     fn label(self) -> &'static str {
@@ -300,7 +295,20 @@ pub struct RegionsWang {
     reference: usize,
     geometry: Geometry,
     /// M and N (eq. 8 recurrence), kept in i64: |M| <= 3 |delta_ref| < 2^33.
+    /// An absent passive axis holds -1 forever (changes 0), which never
+    /// steps and never ties, so every step runs the same straight-line code.
     discriminant: [i64; 2],
+    /// The step of the active axes, made every time (section 2.2).
+    active_step: Step,
+    /// The step of each passive axis toward the end (none when absent).
+    passive_step: [Step; 2],
+    /// 2 |delta| of each passive axis (eq. 8), 0 when absent.
+    increment: [i64; 2],
+    /// 2 |delta_ref|, subtracted when a passive axis steps (eq. 8).
+    decrement: i64,
+    /// A passive axis steps when its discriminant exceeds this: -1 when
+    /// ties advance (D >= 0), 0 when they hold (D > 0).
+    steps_above: i64,
     remaining: u64,
     tie: TiePolicy,
 }
@@ -332,14 +340,19 @@ impl RegionsWang {
                 geometry.passive_count += 1;
             }
         }
-        let mut discriminant = [0; 2];
-        for (i, d) in discriminant
-            .iter_mut()
-            .enumerate()
-            .take(geometry.passive_count as usize)
-        {
+        let mut active_step = Step::NONE;
+        for axis in (0..3).filter(|a| geometry.active_mask >> a & 1 == 1) {
+            active_step = mirror.toward(active_step, axis);
+        }
+        let mut discriminant = [-1; 2];
+        let mut passive_step = [Step::NONE; 2];
+        let mut increment = [0; 2];
+        for i in 0..geometry.passive_count as usize {
+            let axis = geometry.passive[i] as usize;
             // Eq. (10): M_1 = 2 delta_y - delta_x (and N_1 = 2 delta_z - delta_x).
-            *d = 2 * magnitude[geometry.passive[i] as usize] - largest;
+            discriminant[i] = 2 * magnitude[axis] - largest;
+            passive_step[i] = mirror.toward(Step::NONE, axis);
+            increment[i] = 2 * magnitude[axis];
         }
         RegionsWang {
             mirror,
@@ -348,6 +361,14 @@ impl RegionsWang {
             reference,
             geometry,
             discriminant,
+            active_step,
+            passive_step,
+            increment,
+            decrement: 2 * largest,
+            steps_above: match tie {
+                TiePolicy::Advance => -1,
+                TiePolicy::Hold => 0,
+            },
             remaining: mirror.longest() as u64,
             tie,
         }
@@ -372,6 +393,53 @@ impl RegionsWang {
     }
 }
 
+/// One step of the rule, before any decision is built around it.
+struct Advance {
+    step: Step,
+    /// M and N before the step (-1 for an absent passive axis).
+    discriminants: [i64; 2],
+    /// Whether each passive axis stepped, 0 or 1.
+    moves: [u16; 2],
+    tie: bool,
+}
+
+impl RegionsWang {
+    /// Eq. (8) once: the step and what decided it. Both [`Stepper::next_step`]
+    /// and [`Stepper::fill`] step through here, so the rule is written once.
+    #[inline(always)]
+    fn advance(&mut self) -> Advance {
+        let [m, n] = self.discriminant;
+        // A passive axis steps when its discriminant is positive; zero is the
+        // line passing exactly half way, decided by the tie policy. Both are
+        // one comparison with `steps_above`, giving 0 or 1, and the step is
+        // built from those bits: no branch on the discriminants.
+        // All ones when the discriminant exceeds `steps_above` (their
+        // difference is negative; |M| < 2^34, so it cannot overflow), else
+        // 0: a mask built by a subtraction and a shift, which keeps a value
+        // when the axis steps. No compare-and-select, no branch: the fewest
+        // instructions per step, in wasm as natively.
+        let mask = [(self.steps_above - m) >> 63, (self.steps_above - n) >> 63];
+        // Active axes progress one unit at a time (section 2.2).
+        let step = Step(
+            self.active_step.0
+                | (self.passive_step[0].0 & mask[0] as u16)
+                | (self.passive_step[1].0 & mask[1] as u16),
+        );
+        // Eq. (8): M_{i+1} = M_i + 2 dy - 2 dx (y_{i+1} - y_i).
+        self.discriminant = [
+            m + self.increment[0] - (self.decrement & mask[0]),
+            n + self.increment[1] - (self.decrement & mask[1]),
+        ];
+        let moves = mask.map(|m| (m & 1) as u16);
+        Advance {
+            step,
+            discriminants: [m, n],
+            moves,
+            tie: m == 0 || n == 0,
+        }
+    }
+}
+
 impl Stepper for RegionsWang {
     type Why = RegionsWhy;
 
@@ -380,51 +448,62 @@ impl Stepper for RegionsWang {
             return None;
         }
         self.remaining -= 1;
-        let g = self.geometry;
-        let mut step = Step::NONE;
-        for axis in 0..3 {
-            if g.active_mask >> axis & 1 == 1 {
-                // Active axes progress one unit at a time (section 2.2).
-                step = self.mirror.toward(step, axis);
-            }
-        }
-        let count = g.passive_count as usize;
-        let discriminants = [
-            (count > 0).then_some(self.discriminant[0]),
-            (count > 1).then_some(self.discriminant[1]),
-        ];
-        let mut moves = [false; 2];
-        let mut tie = false;
-        for i in 0..count {
-            let d = self.discriminant[i];
-            // A passive axis steps when its discriminant is positive; zero is
-            // the line passing exactly half way, decided by the tie policy.
-            moves[i] = d > 0 || (d == 0 && self.tie == TiePolicy::Advance);
-            tie |= d == 0;
-            let axis = g.passive[i] as usize;
-            if moves[i] {
-                step = self.mirror.toward(step, axis);
-            }
-            // Eq. (8): M_{i+1} = M_i + 2 dy - 2 dx (y_{i+1} - y_i).
-            self.discriminant[i] +=
-                2 * self.magnitude[axis] - 2 * self.magnitude[self.reference] * moves[i] as i64;
-        }
-        let (region, corner) = match discriminants[0] {
-            None => (Region::NoPassive, Corner::NoPassive),
-            Some(m) => (
-                Region::of(m, discriminants[1]),
-                Corner::of(moves[0], moves[1]),
-            ),
+        let Advance {
+            step,
+            discriminants: [m, n],
+            moves,
+            tie,
+        } = self.advance();
+        let count = self.geometry.passive_count;
+        let (region, corner) = if count == 0 {
+            (Region::NoPassive, Corner::NoPassive)
+        } else {
+            (Region::of(m, n), Corner::of(moves[0], moves[1]))
         };
         let why = RegionsWhy {
-            discriminants,
+            discriminants: [(count > 0).then_some(m), (count > 1).then_some(n)],
             region,
             corner,
             tie,
             tie_policy: self.tie,
-            geometry: g,
+            geometry: self.geometry,
         };
         Some((step, why))
+    }
+
+    /// The same steps as [`Stepper::next_step`], in a loop that does
+    /// nothing else: recording a long line costs little more than the
+    /// arithmetic of eq. (8). Nor does the displacement need a count: the
+    /// active axes moved every step, and eq. (8) summed over the run says
+    /// how often a passive axis did, D_end = D_start + taken·2|Δa| -
+    /// moves·2|Δx|.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let start = self.discriminant;
+        for slot in &mut out[..taken] {
+            *slot = self.advance().step;
+        }
+        self.remaining -= taken as u64;
+        let g = self.geometry;
+        let mut displacement = [0; MAX_AXES];
+        for axis in (0..3).filter(|a| g.active_mask >> a & 1 == 1) {
+            displacement[axis] = self.mirror.sign(axis) * taken as i64;
+        }
+        for (i, &axis) in g.passive[..g.passive_count as usize].iter().enumerate() {
+            // In i128: taken · 2|Δa| reaches 2^63 on the longest lines.
+            let moves = if taken == 0 {
+                0
+            } else {
+                ((start[i] as i128 + taken as i128 * self.increment[i] as i128
+                    - self.discriminant[i] as i128)
+                    / self.decrement as i128) as i64
+            };
+            displacement[axis as usize] = self.mirror.sign(axis as usize) * moves;
+        }
+        Filled {
+            steps: taken,
+            displacement,
+        }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

@@ -1,0 +1,120 @@
+/**
+ * Measuring helpers the bench files share: the best of several runs (the
+ * one least disturbed by other work on the machine), the native numbers
+ * from the Rust example, and the core's trace with and without its
+ * metrics.
+ */
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { trace } from '../web/core/index.js';
+import type { TraceOptions } from '../web/core/index.js';
+import { encodeRequest } from '../web/core/request.js';
+import { loadCore } from '../web/core/wasm.js';
+import { REFERENCES } from './reference/index.js';
+import type { ReferenceOptions } from './reference/index.js';
+import type { BenchRow } from './types.js';
+
+/** Timed runs of each measurement, after one untimed run; the fastest counts. */
+export const REPEAT = 5;
+
+/**
+ * Seconds of the fastest of `repeat` runs of `run`, after one run that is
+ * not timed: V8 compiles both JavaScript and wasm in tiers, optimising what
+ * runs hot, so a first run measures the compiler as much as the code.
+ */
+export async function bestSeconds(run: () => unknown, repeat = REPEAT): Promise<number> {
+  await run();
+  let best = Infinity;
+  for (let i = 0; i < repeat; i++) {
+    const start = performance.now();
+    await run();
+    best = Math.min(best, (performance.now() - start) / 1000);
+  }
+  return best;
+}
+
+/** What rust/examples/bench.rs reports for one request (seconds, best of its runs). */
+export interface NativeResult {
+  steps: number;
+  recordSeconds: number;
+  metricsSeconds: number;
+  /** regions only: the stepper alone, nothing recorded. */
+  stepperSeconds: number | null;
+}
+
+const MANIFEST = fileURLToPath(new URL('../rust/Cargo.toml', import.meta.url));
+
+/** Runs the native example (a release build: cargo builds it on first use) on `requests`. */
+export function native(requests: TraceOptions[], repeat = REPEAT): NativeResult[] {
+  const cases = requests.map((request) => ({ request, repeat }));
+  const run = spawnSync('cargo', ['run', '--quiet', '--release', '--manifest-path', MANIFEST, '--example', 'bench'], {
+    input: JSON.stringify(cases),
+    encoding: 'utf8',
+    stdio: ['pipe', 'pipe', 'inherit'],
+    maxBuffer: 1 << 20,
+  });
+  if (run.status !== 0) throw new Error(`cargo run --example bench failed (exit ${run.status ?? run.signal})`);
+  return JSON.parse(run.stdout) as NativeResult[];
+}
+
+/** Seconds of the core's trace in wasm without its metrics: stepping and recording only. */
+export async function wasmStepsSeconds(request: TraceOptions): Promise<number> {
+  const core = await loadCore();
+  const json = encodeRequest(request);
+  // The raw binding: the public trace() asks for the summary, and with it
+  // the metrics, straight away.
+  return bestSeconds(() => core.trace(json).free());
+}
+
+/** Seconds of trace() as users call it: steps, metrics and summary. */
+export async function wasmFullSeconds(request: TraceOptions): Promise<number> {
+  return bestSeconds(async () => (await trace(request)).free());
+}
+
+/** Seconds of the plain TypeScript reference of `request.algorithm`. */
+export async function typescriptSeconds(request: TraceOptions): Promise<number> {
+  const { algorithm, ...options } = request;
+  const reference = REFERENCES[algorithm];
+  if (!reference) throw new Error(`no TypeScript reference for ${algorithm}`);
+  return bestSeconds(() => reference(options as ReferenceOptions));
+}
+
+/** Column names shared by the bench files, so their tables line up. */
+export const COLUMNS = {
+  nativeSteps: 'native steps',
+  nativeFull: 'native full',
+  wasmSteps: 'wasm steps',
+  wasmFull: 'wasm full',
+  typescriptSteps: 'TS steps',
+  ratio: 'wasm/TS steps',
+} as const;
+
+/** What the shared columns measure. */
+export const COLUMN_NOTES = [
+  `${COLUMNS.nativeSteps} / ${COLUMNS.wasmSteps}: stepping and recording, as the core's trace does before anything is asked of it (2 bytes per step, a position and a stepper state every 4096 steps; circles and helices include Saleem's dry run).`,
+  `${COLUMNS.nativeFull} / ${COLUMNS.wasmFull}: the same plus the metrics pass (deviation and per-axis error of every point); wasm full is trace() as users call it, summary included.`,
+  `${COLUMNS.typescriptSteps}: the plain TypeScript reference (bench/reference) filling a Uint16Array with the same step codes (tests/reference.test.ts checks they are the core's), dry runs included.`,
+  `${COLUMNS.ratio}: wasm steps over TS steps, like with like. Rates are steps per second, the best of ${REPEAT} runs after one untimed run.`,
+];
+
+/** One row: every measurement of one request, with its native result. */
+export async function measureRow(name: string, request: TraceOptions, nativeResult: NativeResult): Promise<BenchRow> {
+  const steps = nativeResult.steps;
+  const [wasmSteps, wasmFull, typescript] = [
+    await wasmStepsSeconds(request),
+    await wasmFullSeconds(request),
+    await typescriptSeconds(request),
+  ];
+  return {
+    name,
+    steps,
+    rates: {
+      [COLUMNS.nativeSteps]: steps / nativeResult.recordSeconds,
+      [COLUMNS.nativeFull]: steps / (nativeResult.recordSeconds + nativeResult.metricsSeconds),
+      [COLUMNS.wasmSteps]: steps / wasmSteps,
+      [COLUMNS.wasmFull]: steps / wasmFull,
+      [COLUMNS.typescriptSteps]: steps / typescript,
+    },
+    ratios: { [COLUMNS.ratio]: typescript / wasmSteps },
+  };
+}

@@ -1,0 +1,111 @@
+//! maxSteps is enforced before the work: a path that needs more steps than
+//! allowed is refused from what is known before stepping (a line's length,
+//! an arc's full turns, a helix's rise, an arc's chords), not after
+//! allocating or dry-running up to the limit. The "at least N" of each
+//! message is the count that was known up front, which a refusal found by
+//! stepping could not give (it would say maxSteps + 1, or less).
+
+mod common;
+
+use voxpath::Error;
+use voxpath::arc::ArcSpec;
+use voxpath::arc::circle_saleem::SaleemCircle;
+
+fn refusal(json: &str) -> Error {
+    match voxpath::trace_json(json) {
+        Ok(t) => panic!("{json}: traced {} steps", t.steps()),
+        Err(e) => e,
+    }
+}
+
+/// The N of "... (at least N); ...".
+fn at_least(e: &Error) -> u64 {
+    assert_eq!(e.field_name(), Some("maxSteps"), "{e}");
+    let tail = e.message.split("(at least ").nth(1).expect("a count");
+    tail[..tail.find(')').unwrap()].parse().unwrap()
+}
+
+#[test]
+fn a_line_is_refused_from_its_length() {
+    // |Δx| = 2^31 steps against the largest maxSteps, 10^9.
+    let e = refusal(
+        r#"{"algorithm":"regions","from":[-1073741824,0,0],"to":[1073741824,5,9],"maxSteps":1000000000}"#,
+    );
+    assert_eq!(at_least(&e), 1 << 31);
+}
+
+#[test]
+fn a_circle_is_refused_from_its_full_turns() {
+    // r = 1000 and 10^6 extra turns: more than 4 (r - 1) = 3996 steps per
+    // turn, at least 3,996,000,000; a dry run would have stopped at the
+    // default maxSteps + 1 = 50,000,001.
+    let e = refusal(
+        r#"{"algorithm":"circle","from":[1000,0,0],"to":[1000,0,0],"center":[0,0,0],"turns":1000000}"#,
+    );
+    assert_eq!(at_least(&e), 3_996_000_000);
+}
+
+#[test]
+fn the_full_turn_bound_is_below_the_real_count() {
+    for r in [1, 2, 3, 5, 17, 100, 1000] {
+        for turns in [0, 1, 3] {
+            let json = format!(
+                r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0],"turns":{turns}}}"#
+            );
+            let spec = ArcSpec::parse(&voxpath::Request::from_json(&json).unwrap(), false).unwrap();
+            let bound = SaleemCircle::new(&spec).steps_at_least();
+            let steps = common::trace(&json).steps();
+            assert!(
+                bound < steps,
+                "r {r}, {turns} extra turns: {bound} >= {steps}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_helix_is_refused_from_its_rise() {
+    let e = refusal(
+        r#"{"algorithm":"helix","from":[5,0,0],"to":[5,0,1000000],"center":[0,0,0],"maxSteps":1000}"#,
+    );
+    assert_eq!(at_least(&e), 1_000_000);
+}
+
+#[test]
+fn chords_are_refused_from_their_lengths() {
+    // A full circle of r = 2^29 in chords of 2^20: about 3217 chords whose
+    // largest |Δ| add up to some 3 * 10^9 steps, far past the default
+    // 5 * 10^7; refused before the first chord is traced.
+    let r = 1 << 29;
+    let e = refusal(&format!(
+        r#"{{"algorithm":"arc-segments","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0],"segmentLength":1048576}}"#
+    ));
+    let n = at_least(&e);
+    // Between the sum of chord lengths (the perimeter, 2π r) over sqrt(2)
+    // and the perimeter itself, give or take a unit per chord.
+    let perimeter = std::f64::consts::TAU * r as f64;
+    assert!(
+        (n as f64) > perimeter / 2f64.sqrt() && (n as f64) < perimeter,
+        "{n}"
+    );
+    // The helix's segments mode goes the same way.
+    let e = refusal(&format!(
+        r#"{{"algorithm":"helix","mode":"segments","from":[{r},0,0],"to":[{r},0,7],"center":[0,0,0],"segmentLength":1048576}}"#
+    ));
+    assert!(at_least(&e) > 3_000_000_000);
+}
+
+#[test]
+fn chords_within_the_limit_still_meet_it_exactly() {
+    // A quarter circle of r = 5 in chords of 1.5, traced once to count its
+    // steps, then with maxSteps at that count and one below: the budget
+    // each chord gets is what the chords before it left.
+    let json = |max: u64| {
+        format!(
+            r#"{{"algorithm":"arc-segments","from":[5,0,0],"to":[0,5,0],"center":[0,0,0],"segmentLength":1.5,"maxSteps":{max}}}"#
+        )
+    };
+    let steps = common::trace(&json(1000)).steps();
+    assert_eq!(common::trace(&json(steps)).steps(), steps);
+    assert_eq!(refusal(&json(steps - 1)).field_name(), Some("maxSteps"));
+}

@@ -1,0 +1,141 @@
+// compare(): two algorithms on one move, through the built wasm package and
+// the CLI. Golden values: SEED-NOTES (Saleem holds the tie of step 5 on
+// (0,0,0)->(10,7,6) and goes to (5,3,3) where Wang's M = 0 advances to
+// (5,4,3)); the circle r = 5 quarter of Saleem eq. 7-11 against its single
+// chord, as worked in rust/src/compare.rs.
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+import { compare, trace, VoxpathError } from '../web/core/index.js';
+
+const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
+const LINE = { from: [0, 0, 0], to: [10, 7, 6] };
+const QUARTER = { from: [5, 0, 0], to: [0, 5, 0], center: [0, 0, 0] };
+
+function voxpath(...args: string[]) {
+  const r = spawnSync(process.execPath, [BIN, 'compare', ...args], { encoding: 'utf8' });
+  return { code: r.status, stdout: r.stdout, stderr: r.stderr };
+}
+
+describe('compare()', () => {
+  it('finds where Wang and Saleem part, and why each stepped as it did', async () => {
+    const c = await compare({ algorithms: ['regions', 'bresenham3d'], ...LINE });
+    expect([c.a.algorithm, c.b.algorithm]).toEqual(['regions', 'bresenham3d']);
+    expect([c.a.steps, c.b.steps]).toEqual([10, 10]);
+    const d = c.firstDifference!;
+    expect(d.pointIndex).toBe(5);
+    expect([d.a, d.b]).toEqual([
+      [5, 4, 3],
+      [5, 3, 3],
+    ]);
+    expect(d.aWhy!.stepIndex).toBe(4);
+    expect(d.aWhy!.decisions).toEqual({ M: 0, N: 10, region: 'g', corner: 'D', tie: true });
+    expect(Object.keys(d.aWhy!.decisions)).toEqual(['M', 'N', 'region', 'corner', 'tie']);
+    expect(d.bWhy!.decisions).toMatchObject({ errorX: null, errorY: 10, errorZ: 20, threshold: 10, major: 'x', tie: true });
+    // The explanations are the traces' own.
+    const [a, b] = await Promise.all([trace({ algorithm: 'regions', ...LINE }), trace({ algorithm: 'bresenham3d', ...LINE })]);
+    expect(d.aWhy!.explanation).toBe(a.explain(4));
+    expect(d.bWhy!.explanation).toBe(b.explain(4));
+    expect(d.bWhy!.explanation).toContain("errorY = 10 = 10 (a tie), and the tie policy 'hold' says y holds");
+    expect(c.onlyInA).toEqual({ count: 1, cells: [[5, 4, 3]] });
+    expect(c.onlyInB).toEqual({ count: 1, cells: [[5, 3, 3]] });
+    expect(c.a.metrics).toEqual(a.metrics);
+  });
+
+  it('gives each shared option to the algorithms that declare it', async () => {
+    // tie: both declare it, so both hold and the paths agree.
+    expect((await compare({ algorithms: ['regions', 'bresenham3d'], ...LINE, tie: 'hold' })).firstDifference).toBeNull();
+    // segmentLength: only arc-segments declares it. One chord of the quarter
+    // circle against the circle itself: 5 diagonal steps against 7.
+    const c = await compare({ algorithms: ['circle', 'arc-segments'], ...QUARTER, segmentLength: 100 });
+    expect([c.a.steps, c.b.steps]).toEqual([7, 5]);
+    expect(c.firstDifference!.pointIndex).toBe(1);
+    expect([c.firstDifference!.a, c.firstDifference!.b]).toEqual([
+      [5, 1, 0],
+      [4, 1, 0],
+    ]);
+    expect(c.firstDifference!.aWhy!.decisions).toMatchObject({ octant: '1', fast: 'y', error_stay: 1, error_move: 8 });
+    expect(c.onlyInA.cells).toEqual([
+      [5, 1, 0],
+      [5, 2, 0],
+      [4, 3, 0],
+      [3, 4, 0],
+      [2, 5, 0],
+      [1, 5, 0],
+    ]);
+    expect(c.onlyInB.cells).toEqual([
+      [4, 1, 0],
+      [3, 2, 0],
+      [2, 3, 0],
+      [1, 4, 0],
+    ]);
+    // Largest radial error: circle (5,2), sqrt(29) - 5; chord (3,2), 5 - sqrt(13).
+    expect(c.a.metrics.maxDeviation).toBeCloseTo(Math.sqrt(29) - 5, 12);
+    expect(c.b.metrics.maxDeviation).toBeCloseTo(5 - Math.sqrt(13), 12);
+  });
+
+  it('names the option at fault', async () => {
+    const rejection = (options: Record<string, unknown>) =>
+      compare(options as Parameters<typeof compare>[0]).then(
+        () => undefined,
+        (e: unknown) => e as VoxpathError,
+      );
+    const neither = await rejection({ algorithms: ['circle', 'arc-segments'], ...QUARTER, gcd: true });
+    expect(neither).toBeInstanceOf(VoxpathError);
+    expect(neither!.field).toBe('gcd');
+    expect(neither!.detail).toMatch(/^neither circle nor arc-segments takes this option/);
+    const missing = await rejection({ algorithms: ['circle', 'arc-segments'], from: [5, 0, 0], to: [0, 5, 0] });
+    expect([missing!.field, missing!.detail]).toEqual(['center', 'circle: missing: give one integer per axis, e.g. [0, 0, 0]']);
+    expect((await rejection({ algorithms: ['regions'], ...LINE }))!.field).toBe('algorithms');
+    expect((await rejection({ algorithms: ['regions', 'nope'], ...LINE }))!.field).toBe('algorithms');
+  });
+});
+
+describe('voxpath compare', () => {
+  const ARGS = ['--algorithms', 'regions,bresenham3d', '--from', '0,0,0', '--to', '10,7,6'];
+
+  it('prints the comparison as JSON by default', () => {
+    const r = voxpath(...ARGS);
+    expect(r.code).toBe(0);
+    const out = JSON.parse(r.stdout);
+    expect(out.firstDifference.pointIndex).toBe(5);
+    expect(out.firstDifference.aWhy.decisions.region).toBe('g');
+    expect(out.onlyInB.count).toBe(1);
+  });
+
+  it('prints a table for people and CSV rows per quantity', () => {
+    const table = voxpath(...ARGS, '--format', 'table').stdout;
+    expect(table).toMatch(/^steps +10 +10$/m);
+    expect(table).toContain('First difference: point 5 (after step 4): regions (5, 4, 3), bresenham3d (5, 3, 3).');
+    expect(table).toContain("the tie policy 'advance' decides");
+    expect(table).toContain('M = 0, N = 10, region = g, corner = D, tie = true');
+    expect(table).toContain("the tie policy 'hold' says y holds");
+    expect(table).toContain('Cells only in bresenham3d (1): (5, 3, 3)');
+    const csv = voxpath(...ARGS, '--format', 'csv').stdout.trim().split('\n');
+    expect(csv[0]).toBe('quantity,regions,bresenham3d');
+    expect(csv).toContain('first difference at point,5,5');
+    expect(csv).toContain('point there,"(5, 4, 3)","(5, 3, 3)"');
+  });
+
+  it('takes the flags of both algorithms', () => {
+    const r = voxpath('--algorithms', 'circle,arc-segments', '--from', '5,0,0', '--to', '0,5,0', '--center', '0,0,0', '--segment-length', '100');
+    expect(r.code).toBe(0);
+    expect(JSON.parse(r.stdout).b.steps).toBe(5);
+  });
+
+  it.each([
+    [['--from', '0,0,0', '--to', '1,1,1'], /^voxpath: --algorithms is required/],
+    [['--algorithms', 'regions', ...ARGS.slice(2)], /^voxpath: --algorithms: expected two ids separated by a comma, got 'regions'/],
+    [['--algorithms', 'regions,bogus', ...ARGS.slice(2)], /^voxpath: --algorithms: unknown algorithm 'bogus'/],
+    [[...ARGS, '--center', '0,0,0'], /^voxpath: unknown flag --center for compare regions,bresenham3d/],
+    [['--algorithms', 'circle,arc-segments', '--from', '5,0,0', '--to', '0,5,0'], /^voxpath: --center: circle: missing/],
+    [[...ARGS, '--format', 'xml'], /^voxpath: --format: expected json, csv or table, got 'xml'/],
+  ])('rejects %j with a one-line error naming the flag, exit 2', (args, message) => {
+    const r = voxpath(...args);
+    expect(r.code).toBe(2);
+    expect(r.stdout).toBe('');
+    const [first, second] = r.stderr.split('\n');
+    expect(first).toMatch(message);
+    expect(second).toMatch(/^usage: voxpath trace/);
+  });
+});
