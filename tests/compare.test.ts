@@ -89,6 +89,32 @@ describe('compare()', () => {
     expect((await rejection({ algorithms: ['regions'], ...LINE }))!.field).toBe('algorithms');
     expect((await rejection({ algorithms: ['regions', 'nope'], ...LINE }))!.field).toBe('algorithms');
   });
+
+  it('compares traces already computed, with every differing cell', async () => {
+    // The same answer as compare() for the same two moves, from the traces
+    // the page's worker holds; and the full cell lists, here past the 1000
+    // compare() lists: regions takes 3000 steps of up to three axes on
+    // (0,0,0)->(3000,2000,1000), greedy 6000 of one axis.
+    const [a, b] = await Promise.all([trace({ algorithm: 'regions', ...LINE }), trace({ algorithm: 'bresenham3d', ...LINE })]);
+    expect(a.compareWith(b)).toEqual(await compare({ algorithms: ['regions', 'bresenham3d'], ...LINE }));
+    expect(Array.from(a.cellsOnlyIn(b))).toEqual([5, 4, 3]);
+
+    const LONG = { from: [0, 0, 0], to: [3000, 2000, 1000] };
+    const [r, g] = await Promise.all([trace({ algorithm: 'regions', ...LONG }), trace({ algorithm: 'greedy', ...LONG })]);
+    const c = r.compareWith(g);
+    const onlyInGreedy = g.cellsOnlyIn(r);
+    expect(c.onlyInB.count).toBeGreaterThan(1000);
+    expect(onlyInGreedy.length).toBe(3 * c.onlyInB.count);
+    expect(Array.from(onlyInGreedy.subarray(0, 3000))).toEqual(c.onlyInB.cells.flat());
+    // Checked against the points themselves: no listed cell is on the regions path.
+    const onRegions = new Set<string>();
+    for (let k = 0; k <= r.steps; k++) onRegions.add(r.point(k).join(','));
+    let listedOnRegions = 0;
+    for (let i = 0; i < onlyInGreedy.length; i += 3) if (onRegions.has(onlyInGreedy.subarray(i, i + 3).join(','))) listedOnRegions++;
+    expect(listedOnRegions).toBe(0);
+    const flat = await trace({ algorithm: 'bresenham2d', from: [0, 0], to: [5, 3] });
+    expect(() => r.compareWith(flat)).toThrow(VoxpathError);
+  });
 });
 
 describe('voxpath compare', () => {

@@ -120,20 +120,39 @@ fn sorted_cells(t: &Trace) -> Vec<Key> {
     keys
 }
 
-/// Cells of `t` missing from `other` (sorted), in `t`'s order.
-fn missing(t: &Trace, other: &[Key]) -> Cells {
+/// Calls `f` with each cell of `t` missing from `other` (sorted), in `t`'s
+/// order, each once.
+fn for_each_missing(t: &Trace, other: &[Key], mut f: impl FnMut(&[i64])) {
     let mut seen = HashSet::new();
-    let mut out = Cells::default();
     for_each_point(t, |_, p| {
         let k = key(p);
         if other.binary_search(&k).is_err() && seen.insert(k) {
-            out.count += 1;
-            if out.cells.len() < CELL_LIMIT {
-                out.cells.push(p.to_vec());
-            }
+            f(p);
+        }
+    });
+}
+
+/// Cells of `t` missing from `other` (sorted): how many, and the first
+/// [`CELL_LIMIT`].
+fn missing(t: &Trace, other: &[Key]) -> Cells {
+    let mut out = Cells::default();
+    for_each_missing(t, other, |p| {
+        out.count += 1;
+        if out.cells.len() < CELL_LIMIT {
+            out.cells.push(p.to_vec());
         }
     });
     out
+}
+
+/// Every cell `a` visits and `b` never does, in `a`'s order, each once,
+/// flat with stride dims: what a view highlights, however many there are
+/// ([`Comparison::only_in_a`] lists the first [`CELL_LIMIT`]).
+pub fn cells_only_in(a: &Trace, b: &Trace) -> Vec<i32> {
+    let mut flat = Vec::new();
+    // Trace points lie within ±2^30 (see `key`).
+    for_each_missing(a, &sorted_cells(b), |p| flat.extend(p.iter().map(|&c| c as i32)));
+    flat
 }
 
 fn digest(t: &Trace) -> TraceDigest {
@@ -350,6 +369,29 @@ mod tests {
         let json = serde_json::to_value(&c).unwrap();
         assert_eq!(json["firstDifference"]["pointIndex"], 1);
         assert_eq!(json["onlyInB"]["count"], 4);
+    }
+
+    #[test]
+    fn the_full_cell_lists_go_past_the_limit_and_agree_with_the_counts() {
+        // regions and greedy on (0,0,0) -> (3000,2000,1000): greedy moves
+        // one axis per step (6000 steps) and regions up to three (3000), so
+        // their cells part by far more than CELL_LIMIT.
+        let a = trace(r#"{"algorithm":"regions","from":[0,0,0],"to":[3000,2000,1000]}"#);
+        let b = trace(r#"{"algorithm":"greedy","from":[0,0,0],"to":[3000,2000,1000]}"#);
+        let c = compare(&a, &b).unwrap();
+        let (only_a, only_b) = (cells_only_in(&a, &b), cells_only_in(&b, &a));
+        assert!(c.only_in_b.count as usize > CELL_LIMIT);
+        assert_eq!(only_a.len() as u64, 3 * c.only_in_a.count);
+        assert_eq!(only_b.len() as u64, 3 * c.only_in_b.count);
+        // The listed cells are the full list's first ones, in path order.
+        let listed: Vec<i32> = c.only_in_b.cells.concat().iter().map(|&v| v as i32).collect();
+        assert_eq!(listed[..], only_b[..listed.len()]);
+        // And none of them is a cell of the other path.
+        let of_a: HashSet<Vec<i32>> = (0..=a.steps())
+            .map(|k| a.point(k).coords().iter().map(|&v| v as i32).collect())
+            .collect();
+        assert!(only_b.chunks(3).all(|cell| !of_a.contains(cell)));
+        assert!(only_a.chunks(3).all(|cell| of_a.contains(cell)));
     }
 
     #[test]

@@ -160,6 +160,22 @@ impl TraceHandle {
         Ok(self.0.explain(step))
     }
 
+    /// This trace against `other` (same dims) as JSON text: both digests,
+    /// the first difference with why each side stepped there, and the
+    /// first cells only one visits (`compare::compare`).
+    #[wasm_bindgen(js_name = compareJson)]
+    pub fn compare_json(&self, other: &TraceHandle) -> Result<String, JsValue> {
+        let result = crate::compare::compare(&self.0, &other.0).map_err(|e| to_js_error(&e))?;
+        Ok(serde_json::to_string(&result).expect("the comparison serializes"))
+    }
+
+    /// Every cell this trace visits and `other` never does, in this trace's
+    /// order, each once (Int32Array, stride dims).
+    #[wasm_bindgen(js_name = cellsOnlyIn)]
+    pub fn cells_only_in(&self, other: &TraceHandle) -> Vec<i32> {
+        crate::compare::cells_only_in(&self.0, &other.0)
+    }
+
     /// The ideal path as a polyline for drawing (Float64Array, stride dims).
     #[wasm_bindgen(js_name = idealPolyline)]
     pub fn ideal_polyline(&self) -> Vec<f64> {

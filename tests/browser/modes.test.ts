@@ -175,6 +175,8 @@ describe('compare mode', () => {
     expect(await first.innerText()).toMatch(/part at point 1: regions goes to \(1, 1, 1\), greedy to \(1, 0, 0\)/);
     // The core's own sentences for each side's step.
     expect(await first.innerText()).toMatch(/M = 4 > 0 and N = 2 > 0, so the line leaves the cell through region d/);
+    // And its decision values, from the core's comparison (Wang eq. 10: M_1 = 2·7 - 10, N_1 = 2·6 - 10).
+    expect(await first.innerText()).toMatch(/M = 4, N = 2, region = d, corner = D, tie = false/);
     expect(Number(await page.getByTestId('scene-canvas').getAttribute('data-highlighted'))).toBeGreaterThan(0);
     await page.getByTestId('go-first-difference').click();
     expect(await text(page, 'step-counter')).toBe('Step 1 of 23');

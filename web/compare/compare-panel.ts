@@ -2,10 +2,12 @@
  * Compare mode's table: the two traces' metrics side by side (for arcs the
  * largest deviation is the largest radial error), how many cells each
  * visits that the other does not, and the first point where they part with
- * each algorithm's reason for its step there, in the core's words.
+ * each algorithm's reason and decision values for its step there, as the
+ * core compared them.
  */
 import { element } from '../form/options-form.js';
 import { formatPoint } from '../format.js';
+import type { StepWhy } from '../core/index.js';
 import type { TraceDifference } from '../worker/protocol.js';
 
 /** The parts of a trace the table reads. */
@@ -15,7 +17,12 @@ export interface ComparedTrace {
   steps: number;
   end: number[];
   metrics: { maxDeviation: number; meanDeviation: number; stdDeviation: number; ties: number; pulsesByAxis: number[]; maxAxisError: number[] };
-  point(pointIndex: number): ArrayLike<number>;
+}
+
+/** A step's decision values as one line, "M = 2, N = -10, region = a"; columns that do not apply are left out. */
+function decisionList(why: StepWhy): HTMLElement {
+  const values = Object.entries(why.decisions).filter(([, v]) => v !== null);
+  return element('p', { className: 'first-difference-values', textContent: values.map(([name, v]) => `${name} = ${String(v)}`).join(', ') });
 }
 
 export class ComparePanel {
@@ -55,24 +62,29 @@ export class ComparePanel {
     );
     table.dataset.testid = 'metrics-table';
     const parts: HTMLElement[] = [element('h2', { textContent: 'Comparison' }), table];
-    const k = difference.firstPointIndex;
-    if (k === null) {
+    const first = difference.firstDifference;
+    if (first === null) {
       parts.push(element('p', { className: 'first-difference', textContent: 'The two paths are the same, point for point.' }));
     } else {
-      const at = (t: ComparedTrace) => (k <= t.steps ? formatPoint(t.point(k)) : 'its path has ended');
+      const k = first.pointIndex;
+      const at = (point: number[] | null) => (point ? formatPoint(point) : 'its path has ended');
       const go = element('button', { type: 'button', textContent: `Go to point ${k}` });
       go.dataset.testid = 'go-first-difference';
       go.addEventListener('click', () => this.#onGo(k));
-      const first = element(
+      const why = (name: string, side: StepWhy | null) => [
+        element('p', {}, element('strong', { textContent: `${name}: ` }), side?.explanation ?? 'no step there.'),
+        ...(side ? [decisionList(side)] : []),
+      ];
+      const box = element(
         'div',
         { className: 'first-difference' },
-        element('p', { textContent: `The paths part at point ${k}: ${la} goes to ${at(a)}, ${lb} to ${at(b)}.` }),
-        element('p', {}, element('strong', { textContent: `${la}: ` }), difference.whyA ?? 'no step there.'),
-        element('p', {}, element('strong', { textContent: `${lb}: ` }), difference.whyB ?? 'no step there.'),
+        element('p', { textContent: `The paths part at point ${k}: ${la} goes to ${at(first.a)}, ${lb} to ${at(first.b)}.` }),
+        ...why(la, first.aWhy),
+        ...why(lb, first.bWhy),
         go,
       );
-      first.dataset.testid = 'first-difference';
-      parts.push(first);
+      box.dataset.testid = 'first-difference';
+      parts.push(box);
     }
     this.#container.replaceChildren(...parts);
   }

@@ -4,6 +4,7 @@
  * about CHUNK_BYTES, so a long path never needs a second full-size copy
  * inside wasm (whose memory, once grown, is never given back).
  */
+import type { Comparison } from './compare.js';
 import { callCore } from './errors.js';
 import type { TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
@@ -179,6 +180,23 @@ export class Trace implements TraceSummary {
   explain(step: number): string {
     checkRange('step index', step, step + 1, this.steps);
     return callCore(() => this.#handle.explain(step));
+  }
+
+  /**
+   * This trace (a) against `other` (b), with the same number of axes: what
+   * `compare()` returns for two algorithms, for traces already computed.
+   */
+  compareWith(other: Trace): Comparison {
+    return JSON.parse(callCore(() => this.#handle.compareJson(other.#handle))) as Comparison;
+  }
+
+  /**
+   * Every cell this trace visits and `other` never does, in this trace's
+   * order, each once, flat with stride dims (`compareWith` lists only the
+   * first 1000).
+   */
+  cellsOnlyIn(other: Trace): Int32Array {
+    return callCore(() => this.#handle.cellsOnlyIn(other.#handle));
   }
 
   /** The ideal path as a polyline for drawing, flat with stride dims. */

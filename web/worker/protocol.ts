@@ -14,7 +14,7 @@
  * - deviation: Float64Array, one entry per point index of the range;
  * - series: see ChartSeries; cells: Int32Array, stride dims.
  */
-import type { ExperimentInfo, GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { ExperimentInfo, FirstDifference, GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { AlgorithmInfo, DecisionColumns, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
@@ -63,17 +63,13 @@ export interface ChartSeries {
 }
 
 /**
- * Where two traces of the same move part. The cells each visits and the
- * other does not are computed from the two paths; the reasons come from the
- * core's explain().
+ * Where two traces of the same move part, as the core compares them
+ * (Trace.compareWith and Trace.cellsOnlyIn).
  */
 export interface TraceDifference {
-  /** First point index where the points differ; null when the paths are the same. */
-  firstPointIndex: number | null;
-  /** Why each took the step before it (step index firstPointIndex - 1); null at point 0 or past a path's end. */
-  whyA: string | null;
-  whyB: string | null;
-  /** Distinct cells only one path visits, in its path order, flat with stride dims. */
+  /** The first point where the paths differ, with each side's reason and decision values; null when they are the same. */
+  firstDifference: FirstDifference | null;
+  /** Every distinct cell only one path visits, in its path order, flat with stride dims. */
   onlyInA: Int32Array;
   onlyInB: Int32Array;
 }

@@ -17,7 +17,6 @@ import {
 } from '../core/index.js';
 import type { Trace } from '../core/index.js';
 import { chartSeries } from './series.js';
-import { traceDifference } from './difference.js';
 import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
@@ -99,7 +98,8 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       return { value: series, transfer: arrays.map((a) => a.buffer) };
     }
     case 'difference': {
-      const difference = traceDifference(held(request.traceIdA), held(request.traceIdB));
+      const [a, b] = [held(request.traceIdA), held(request.traceIdB)];
+      const difference = { firstDifference: a.compareWith(b).firstDifference, onlyInA: a.cellsOnlyIn(b), onlyInB: b.cellsOnlyIn(a) };
       return { value: difference, transfer: [difference.onlyInA.buffer, difference.onlyInB.buffer] };
     }
     case 'pulses': {
