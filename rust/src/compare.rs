@@ -151,7 +151,9 @@ fn missing(t: &Trace, other: &[Key]) -> Cells {
 pub fn cells_only_in(a: &Trace, b: &Trace) -> Vec<i32> {
     let mut flat = Vec::new();
     // Trace points lie within ±2^30 (see `key`).
-    for_each_missing(a, &sorted_cells(b), |p| flat.extend(p.iter().map(|&c| c as i32)));
+    for_each_missing(a, &sorted_cells(b), |p| {
+        flat.extend(p.iter().map(|&c| c as i32))
+    });
     flat
 }
 
@@ -384,7 +386,13 @@ mod tests {
         assert_eq!(only_a.len() as u64, 3 * c.only_in_a.count);
         assert_eq!(only_b.len() as u64, 3 * c.only_in_b.count);
         // The listed cells are the full list's first ones, in path order.
-        let listed: Vec<i32> = c.only_in_b.cells.concat().iter().map(|&v| v as i32).collect();
+        let listed: Vec<i32> = c
+            .only_in_b
+            .cells
+            .concat()
+            .iter()
+            .map(|&v| v as i32)
+            .collect();
         assert_eq!(listed[..], only_b[..listed.len()]);
         // And none of them is a cell of the other path.
         let of_a: HashSet<Vec<i32>> = (0..=a.steps())
