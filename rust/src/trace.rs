@@ -119,18 +119,7 @@ pub trait Stepper: Clone + 'static {
     /// displacement more cheaply may override this.
     #[inline]
     fn fill(&mut self, out: &mut [Step]) -> Filled {
-        let mut taken = out.len();
-        for (k, slot) in out.iter_mut().enumerate() {
-            let Some((step, _)) = self.next_step() else {
-                taken = k;
-                break;
-            };
-            *slot = step;
-        }
-        Filled {
-            steps: taken,
-            displacement: displacement(&out[..taken]),
-        }
+        fill_by_next_step(self, out)
     }
 
     /// Steps this stepper will still take, when known without running it.
@@ -139,6 +128,24 @@ pub trait Stepper: Clone + 'static {
     /// What a learner should know about this particular move before it starts
     /// (line type, active axis, initial discriminants, ...).
     fn setup_note(&self) -> String;
+}
+
+/// [`Stepper::fill`] by [`Stepper::next_step`]: the default, and what an
+/// override falls back to where its faster loop does not apply.
+#[inline]
+pub fn fill_by_next_step<S: Stepper>(stepper: &mut S, out: &mut [Step]) -> Filled {
+    let mut taken = out.len();
+    for (k, slot) in out.iter_mut().enumerate() {
+        let Some((step, _)) = stepper.next_step() else {
+            taken = k;
+            break;
+        };
+        *slot = step;
+    }
+    Filled {
+        steps: taken,
+        displacement: displacement(&out[..taken]),
+    }
 }
 
 /// What [`Stepper::fill`] took.

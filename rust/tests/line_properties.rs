@@ -137,6 +137,23 @@ proptest! {
     }
 
     #[test]
+    fn the_recording_loops_take_the_rule_s_steps(
+        (from, to) in line_strategy(2..=6), tie in tie_strategy(), gcd in any::<bool>(), chunk in 1usize..300
+    ) {
+        // Bresenham2d (corrected), Bresenham3d and Nd record through the
+        // shared branch-free loop (line::terms), not through next_step.
+        common::check_fill(|| Nd::new(from, to, tie, gcd), chunk).map_err(TestCaseError::fail)?;
+        if from.dims() == 2 {
+            for variant in [Variant::Corrected, Variant::Printed] {
+                common::check_fill(|| Bresenham2d::new(from, to, tie, variant), chunk).map_err(TestCaseError::fail)?;
+            }
+        }
+        if from.dims() == 3 {
+            common::check_fill(|| Bresenham3d::new(from, to, tie, gcd), chunk).map_err(TestCaseError::fail)?;
+        }
+    }
+
+    #[test]
     fn nd_recurrence_is_the_closed_form_within_half_a_cell_per_axis(
         (from, to) in line_strategy(2..=6), tie in tie_strategy(), gcd in any::<bool>()
     ) {

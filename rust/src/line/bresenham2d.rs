@@ -8,12 +8,13 @@
 //! it drops by 2·Δmajor (ε drops by 1, times 2·Δmajor). The paper prints
 //! "-= Δmajor" there: the `variant` option runs that too.
 
+use super::terms::{Term, Terms};
 use super::{Guard, Mirror, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, Point, Step, displacement};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy, fill_by_next_step};
 
 pub const ID: &str = "bresenham2d";
 
@@ -128,6 +129,23 @@ impl SaleemTerm {
             steps,
             tie: at_half,
         }
+    }
+
+    /// This term as the shared recording loop steps it ([`Term`]): the value
+    /// compared next is the error with 2·Δminor already added.
+    pub fn as_term(&self, tie: TiePolicy, step: Step) -> Term {
+        Term {
+            value: self.error + self.two_minor,
+            increment: self.two_minor,
+            decrement: self.drop,
+            steps_above: Term::steps_above(self.threshold, tie),
+            step,
+        }
+    }
+
+    /// Takes up the state `term` reached in the recording loop.
+    pub fn resume(&mut self, term: &Term) {
+        self.error = term.value - self.two_minor;
     }
 }
 
@@ -318,6 +336,34 @@ impl Stepper for Bresenham2d {
             tie_policy: self.tie,
         };
         Some((step, why))
+    }
+
+    /// The corrected rule through the shared branch-free loop ([`Terms`]):
+    /// it reaches the end coordinate by itself, so the finish rule never
+    /// acts and the steps are the term's alone. The printed variant, which
+    /// the finish rule holds back, takes its steps one by one.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        if self.variant == Variant::Printed {
+            return fill_by_next_step(self, out);
+        }
+        let taken = out.len().min(self.remaining as usize);
+        let out = &mut out[..taken];
+        let toward = |axis| self.mirror.toward(Step::NONE, axis);
+        let mut terms = Terms {
+            always: toward(self.major),
+            terms: [self.term.as_term(self.tie, toward(1 - self.major))],
+        };
+        terms.fill(out);
+        self.term.resume(&terms.terms[0]);
+        let displacement = displacement(out);
+        let minor_steps = displacement[1 - self.major].abs();
+        self.minor_left -= minor_steps;
+        self.printed_minor += minor_steps;
+        self.remaining -= taken as u64;
+        Filled {
+            steps: taken,
+            displacement,
+        }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

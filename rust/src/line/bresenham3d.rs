@@ -7,11 +7,12 @@
 //! rule of section 2 ([`SaleemTerm`]) on its own plane line.
 
 use super::bresenham2d::{SaleemTerm, SaleemTest};
+use super::terms::Terms;
 use super::{GCD, Mirror, axis_list, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, Point, Step, displacement};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
 
 pub const ID: &str = "bresenham3d";
 
@@ -133,7 +134,9 @@ pub struct Bresenham3d {
     mirror: Mirror,
     major: usize,
     divisor: i64,
-    terms: [Option<SaleemTerm>; 3],
+    /// The two minor axes, in axis order, and their error terms.
+    minors: [usize; 2],
+    terms: [SaleemTerm; 2],
     remaining: u64,
     tie: TiePolicy,
 }
@@ -146,17 +149,19 @@ impl Bresenham3d {
         let major = mirror.major();
         let divisor = mirror.divisor(gcd);
         let major_len = mirror.magnitude(major) / divisor;
-        let mut terms = [None; 3];
-        for (axis, term) in terms.iter_mut().enumerate() {
-            if axis != major {
-                let minor_len = mirror.magnitude(axis) / divisor;
-                *term = Some(SaleemTerm::new(minor_len, major_len, 2 * major_len));
-            }
-        }
+        let minors = match major {
+            0 => [1, 2],
+            1 => [0, 2],
+            _ => [0, 1],
+        };
+        let terms = minors.map(|axis| {
+            SaleemTerm::new(mirror.magnitude(axis) / divisor, major_len, 2 * major_len)
+        });
         Bresenham3d {
             mirror,
             major,
             divisor,
+            minors,
             terms,
             remaining: mirror.longest() as u64,
             tie,
@@ -175,15 +180,13 @@ impl Stepper for Bresenham3d {
         // "currentZ will increase in every iteration" (the major axis).
         let mut step = self.mirror.toward(Step::NONE, self.major);
         let mut tests = [None; 3];
-        for axis in 0..3 {
-            if let Some(term) = &mut self.terms[axis] {
-                // Each minor axis decides on its own plane line (section 3).
-                let t = term.test(self.tie);
-                if t.steps {
-                    step = self.mirror.toward(step, axis);
-                }
-                tests[axis] = Some(t);
+        for (&axis, term) in self.minors.iter().zip(&mut self.terms) {
+            // Each minor axis decides on its own plane line (section 3).
+            let t = term.test(self.tie);
+            if t.steps {
+                step = self.mirror.toward(step, axis);
             }
+            tests[axis] = Some(t);
         }
         let threshold = self.mirror.magnitude(self.major) / self.divisor;
         let why = Bresenham3dWhy {
@@ -195,17 +198,36 @@ impl Stepper for Bresenham3d {
         Some((step, why))
     }
 
+    /// The steps of [`Stepper::next_step`] through the shared branch-free
+    /// loop ([`Terms`]), with no decision built.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let toward = |axis| self.mirror.toward(Step::NONE, axis);
+        let mut terms = Terms {
+            always: toward(self.major),
+            terms: [0, 1].map(|i| self.terms[i].as_term(self.tie, toward(self.minors[i]))),
+        };
+        terms.fill(&mut out[..taken]);
+        for (term, reached) in self.terms.iter_mut().zip(&terms.terms) {
+            term.resume(reached);
+        }
+        self.remaining -= taken as u64;
+        Filled {
+            steps: taken,
+            displacement: displacement(&out[..taken]),
+        }
+    }
+
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
     }
 
     fn setup_note(&self) -> String {
-        let minors = (0..3).filter(|&a| a != self.major);
         format!(
             "{} is the major axis (|Δ| = {}); {} each run Saleem's 2D rule against it, stepping when the error is {} |Δ{}|.{}{}",
             AXIS_NAMES[self.major],
             self.mirror.magnitudes_text(1),
-            axis_list(minors),
+            axis_list(self.minors.into_iter()),
             match self.tie {
                 TiePolicy::Hold => "greater than",
                 TiePolicy::Advance => "at least",

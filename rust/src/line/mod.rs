@@ -10,6 +10,7 @@ pub mod greedy;
 pub mod liu_float;
 pub mod nd;
 pub mod regions_wang;
+pub mod terms;
 pub mod walk6;
 
 use crate::algorithms::AlgorithmInfo;

@@ -3,11 +3,12 @@
 //! the fourth and fifth axes (H for A, K for B); with three axes it is the
 //! method of discriminate regions, M and N.
 
+use super::terms::{Term, Terms};
 use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, displacement};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
 
 pub const ID: &str = "nd";
 
@@ -171,6 +172,49 @@ impl Nd {
         }
     }
 
+    /// The passive axes (those with a discriminant) in axis order with
+    /// their discriminants, and how many there are: at most MAX_AXES - 1,
+    /// since the longest axis is active.
+    fn passive_axes(&self) -> ([(usize, i64); MAX_AXES], usize) {
+        let mut passive = [(0, 0); MAX_AXES];
+        let mut count = 0;
+        for (axis, d) in self.discriminant.iter().enumerate() {
+            if let Some(d) = *d {
+                passive[count] = (axis, d);
+                count += 1;
+            }
+        }
+        (passive, count)
+    }
+
+    /// Records `out` with the `N` passive axes' discriminants as [`Terms`]
+    /// (eq. 16: an axis steps when D > 0, a tie when D = 0; D grows by 2ΔA
+    /// and drops by 2Δx when A steps).
+    fn fill_with<const N: usize>(&mut self, out: &mut [Step]) {
+        let (passive, _) = self.passive_axes();
+        let toward = |axis| self.mirror.toward(Step::NONE, axis);
+        let always = (0..self.mirror.dims())
+            .filter(|&a| self.discriminant[a].is_none())
+            .fold(Step::NONE, |step, axis| self.mirror.toward(step, axis));
+        let mut terms = Terms {
+            always,
+            terms: std::array::from_fn::<_, N, _>(|i| {
+                let (axis, d) = passive[i];
+                Term {
+                    value: d,
+                    increment: 2 * self.magnitude[axis],
+                    decrement: 2 * self.longest,
+                    steps_above: Term::steps_above(0, self.tie),
+                    step: toward(axis),
+                }
+            }),
+        };
+        terms.fill(out);
+        for (&(axis, _), term) in passive.iter().zip(&terms.terms) {
+            self.discriminant[axis] = Some(term.value);
+        }
+    }
+
     /// Eq. (6) generalised: D_a at point `p` from the point alone (see
     /// [`wang_discriminant`]), exact anywhere within +-2^30.
     pub fn closed_form(&self, p: &Point) -> [Option<i64>; MAX_AXES] {
@@ -216,6 +260,27 @@ impl Stepper for Nd {
             tie_policy: self.tie,
         };
         Some((step, why))
+    }
+
+    /// The steps of [`Stepper::next_step`] through the shared branch-free
+    /// loop ([`Terms`]), with no decision built; one loop per number of
+    /// passive axes, so that each unrolls.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let out = &mut out[..taken];
+        match self.passive_axes().1 {
+            0 => self.fill_with::<0>(out),
+            1 => self.fill_with::<1>(out),
+            2 => self.fill_with::<2>(out),
+            3 => self.fill_with::<3>(out),
+            4 => self.fill_with::<4>(out),
+            _ => self.fill_with::<5>(out),
+        }
+        self.remaining -= taken as u64;
+        Filled {
+            steps: taken,
+            displacement: displacement(out),
+        }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

@@ -2,7 +2,7 @@
 //! describe lines compactly.
 #![allow(dead_code)] // each test crate uses its own subset
 
-use voxpath::grid::Point;
+use voxpath::grid::{Point, Step, displacement};
 use voxpath::trace::Stepper;
 
 /// Every step of `stepper` from `from`: the point after the step and why.
@@ -39,4 +39,41 @@ pub fn line_algorithms() -> impl Iterator<Item = &'static voxpath::algorithms::A
         .iter()
         .copied()
         .filter(|a| a.family == voxpath::algorithms::Family::Line)
+}
+
+/// Checks a stepper's recording loop (`fill`) against its steps one by one:
+/// filled in chunks of `chunk`, with one `next_step` between chunks (so the
+/// state `fill` leaves behind must be the rule's), the same steps, the
+/// displacement they add up to, and the steps left after each chunk.
+pub fn check_fill<S: Stepper>(make: impl Fn() -> S, chunk: usize) -> Result<(), String> {
+    let mut one_by_one = make();
+    let mut expected = Vec::new();
+    while let Some((step, _)) = one_by_one.next_step() {
+        expected.push(step);
+    }
+    let mut stepper = make();
+    let mut taken = Vec::new();
+    loop {
+        let mut out = vec![Step::NONE; chunk];
+        let filled = stepper.fill(&mut out);
+        if filled.displacement != displacement(&out[..filled.steps]) {
+            return Err(format!("displacement after {} steps", taken.len()));
+        }
+        taken.extend_from_slice(&out[..filled.steps]);
+        if let Some((step, _)) = stepper.next_step() {
+            taken.push(step);
+        }
+        if stepper.remaining_steps()
+            != Some((expected.len() - taken.len().min(expected.len())) as u64)
+        {
+            return Err(format!("steps left after {} steps", taken.len()));
+        }
+        if filled.steps < chunk {
+            break;
+        }
+    }
+    if taken != expected {
+        return Err("fill took other steps than next_step".into());
+    }
+    Ok(())
 }
