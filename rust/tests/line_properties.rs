@@ -7,7 +7,7 @@ mod common;
 
 use common::{path, run};
 use proptest::prelude::*;
-use voxpath::grid::{COORD_LIMIT, MAX_AXES, Point};
+use voxpath::grid::{COORD_LIMIT, MAX_AXES, Point, Step};
 use voxpath::ideal::IdealPath;
 use voxpath::line::TieAxis;
 use voxpath::line::bresenham2d::{Bresenham2d, Variant};
@@ -141,8 +141,13 @@ proptest! {
         (from, to) in line_strategy(2..=6), tie in tie_strategy(), gcd in any::<bool>(), chunk in 1usize..300
     ) {
         // Bresenham2d (corrected), Bresenham3d and Nd record through the
-        // shared branch-free loop (line::terms), not through next_step.
+        // shared branch-free loop (line::terms), greedy and walk6 through
+        // loops of their own; none through next_step.
         common::check_fill(|| Nd::new(from, to, tie, gcd), chunk).map_err(TestCaseError::fail)?;
+        for order in [TieAxis::Lower, TieAxis::Higher] {
+            common::check_fill(|| Greedy::new(from, to, order), chunk).map_err(TestCaseError::fail)?;
+            common::check_fill(|| Walk6::new(from, to, order), chunk).map_err(TestCaseError::fail)?;
+        }
         if from.dims() == 2 {
             for variant in [Variant::Corrected, Variant::Printed] {
                 common::check_fill(|| Bresenham2d::new(from, to, tie, variant), chunk).map_err(TestCaseError::fail)?;
@@ -401,16 +406,25 @@ fn nd_and_bresenham_on_the_longest_lines() {
     }
 }
 
+/// The first LONG_STEPS steps as a trace records them.
+fn first_steps_filled<S: Stepper>(mut stepper: S) -> Vec<Step> {
+    let mut out = vec![Step::NONE; LONG_STEPS];
+    assert_eq!(stepper.fill(&mut out).steps, LONG_STEPS);
+    out
+}
+
 #[test]
 fn walk6_and_greedy_on_the_longest_lines() {
     let from = Point::new(&[-L, -L, L]);
     let to = Point::new(&[L, L - 1, -L + 2]);
     let mut walk = Walk6::new(from, to, TieAxis::Lower);
     assert_eq!(walk.remaining_steps(), Some(3 * (1u64 << 31) - 3));
+    let filled = first_steps_filled(walk.clone());
     let mut cell = from;
     let mut entered = Crossing { num: 0, den: 1 };
-    for _ in 0..LONG_STEPS {
+    for k in 0..LONG_STEPS {
         let (step, why) = walk.next_step().unwrap();
+        assert_eq!(step, filled[k], "walk6 fill, step {k}");
         let left = why.crossings[why.crossed].unwrap();
         assert!(in_cell(&from, &to, entered, &cell) && in_cell(&from, &to, left, &cell));
         cell.apply(step);
@@ -420,9 +434,11 @@ fn walk6_and_greedy_on_the_longest_lines() {
     let from = Point::new(&[-L, L, -L, L, -L, L]);
     let to = Point::new(&[L, -L, L - 5, -L + 5, L, -L]);
     let mut greedy = Greedy::new(from, to, TieAxis::Lower);
+    let filled = first_steps_filled(greedy.clone());
     let mut p = from;
-    for _ in 0..LONG_STEPS {
+    for k in 0..LONG_STEPS {
         let (step, why) = greedy.next_step().unwrap();
+        assert_eq!(step, filled[k], "greedy fill, step {k}");
         // The candidates are the squared distances, exact in i128
         // (six axes of 2^31 squared overflow i64).
         let left: Vec<i128> = to.delta_to(&p)[..6]

@@ -12,7 +12,7 @@ use super::terms::{Term, Terms};
 use super::{Guard, Mirror, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, Point, Step, displacement};
+use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy, fill_by_next_step};
 
@@ -353,9 +353,8 @@ impl Stepper for Bresenham2d {
             always: toward(self.major),
             terms: [self.term.as_term(self.tie, toward(1 - self.major))],
         };
-        terms.fill(out);
+        let displacement = terms.fill(out);
         self.term.resume(&terms.terms[0]);
-        let displacement = displacement(out);
         let minor_steps = displacement[1 - self.major].abs();
         self.minor_left -= minor_steps;
         self.printed_minor += minor_steps;

@@ -10,7 +10,7 @@ use super::bresenham2d::{SaleemTerm, SaleemTest};
 use super::terms::Terms;
 use super::{GCD, Mirror, axis_list, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, Point, Step, displacement};
+use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
 
@@ -207,14 +207,14 @@ impl Stepper for Bresenham3d {
             always: toward(self.major),
             terms: [0, 1].map(|i| self.terms[i].as_term(self.tie, toward(self.minors[i]))),
         };
-        terms.fill(&mut out[..taken]);
+        let displacement = terms.fill(&mut out[..taken]);
         for (term, reached) in self.terms.iter_mut().zip(&terms.terms) {
             term.resume(reached);
         }
         self.remaining -= taken as u64;
         Filled {
             steps: taken,
-            displacement: displacement(&out[..taken]),
+            displacement,
         }
     }
 

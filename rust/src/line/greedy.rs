@@ -9,9 +9,9 @@
 
 use super::{Mirror, TIE_AXIS, TieAxis, column, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, displacement};
 use crate::request::{FROM, MAX_STEPS, TO};
-use crate::trace::{Column, ColumnKind, Decision, Stepper};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 
 pub const ID: &str = "greedy";
 
@@ -204,6 +204,35 @@ impl Stepper for Greedy {
             order: self.order,
         };
         Some((self.mirror.toward(Step::NONE, chosen), why))
+    }
+
+    /// The same choices as [`Stepper::next_step`] without the squared
+    /// distances: a step along `axis` turns l^2 into (l - 1)^2, changing the
+    /// sum by 1 - 2l, so the candidate nearest the goal is the axis with the
+    /// most units left (ties in the same order). No i128, no decision.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let out = &mut out[..taken];
+        let dims = self.mirror.dims();
+        let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
+        for slot in out.iter_mut() {
+            let (mut chosen, mut most_left) = (0, 0);
+            for axis in 0..dims {
+                let l = self.left[axis];
+                // An axis at its goal is no candidate (the half-plane trick);
+                // a larger l is a smaller distance, hence the reversed compare.
+                if l > 0 && self.order.replaces(most_left.cmp(&l)) {
+                    (chosen, most_left) = (axis, l);
+                }
+            }
+            self.left[chosen] -= 1;
+            *slot = toward[chosen];
+        }
+        self.remaining -= taken as u64;
+        Filled {
+            steps: taken,
+            displacement: displacement(out),
+        }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

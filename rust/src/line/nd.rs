@@ -6,7 +6,7 @@
 use super::terms::{Term, Terms};
 use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, displacement};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
 
@@ -190,7 +190,7 @@ impl Nd {
     /// Records `out` with the `N` passive axes' discriminants as [`Terms`]
     /// (eq. 16: an axis steps when D > 0, a tie when D = 0; D grows by 2ΔA
     /// and drops by 2Δx when A steps).
-    fn fill_with<const N: usize>(&mut self, out: &mut [Step]) {
+    fn fill_with<const N: usize>(&mut self, out: &mut [Step]) -> [i64; MAX_AXES] {
         let (passive, _) = self.passive_axes();
         let toward = |axis| self.mirror.toward(Step::NONE, axis);
         let always = (0..self.mirror.dims())
@@ -209,10 +209,11 @@ impl Nd {
                 }
             }),
         };
-        terms.fill(out);
+        let displacement = terms.fill(out);
         for (&(axis, _), term) in passive.iter().zip(&terms.terms) {
             self.discriminant[axis] = Some(term.value);
         }
+        displacement
     }
 
     /// Eq. (6) generalised: D_a at point `p` from the point alone (see
@@ -268,18 +269,18 @@ impl Stepper for Nd {
     fn fill(&mut self, out: &mut [Step]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let out = &mut out[..taken];
-        match self.passive_axes().1 {
+        let displacement = match self.passive_axes().1 {
             0 => self.fill_with::<0>(out),
             1 => self.fill_with::<1>(out),
             2 => self.fill_with::<2>(out),
             3 => self.fill_with::<3>(out),
             4 => self.fill_with::<4>(out),
             _ => self.fill_with::<5>(out),
-        }
+        };
         self.remaining -= taken as u64;
         Filled {
             steps: taken,
-            displacement: displacement(out),
+            displacement,
         }
     }
 

@@ -12,7 +12,7 @@
 //! reference; `tests` below and the property tests check that both give the
 //! same steps.
 
-use crate::grid::Step;
+use crate::grid::{MAX_AXES, Step};
 use crate::trace::TiePolicy;
 
 /// One passive axis's discriminant, in the form [`Terms`] steps.
@@ -40,6 +40,45 @@ impl Term {
             TiePolicy::Advance => threshold - 1,
         }
     }
+
+    /// One step: the step bits it adds (this axis's or none) and the value
+    /// for the next step.
+    ///
+    /// The mask is all ones when the value exceeds `steps_above` (their
+    /// difference is negative), else 0: built by a subtraction and a shift,
+    /// it keeps the step bits and the decrement when the axis steps. The
+    /// callers keep |value| and |steps_above| below 2^62, so the difference
+    /// cannot overflow.
+    #[inline(always)]
+    fn advance(&mut self) -> u16 {
+        let mask = (self.steps_above - self.value) >> 63;
+        self.value += self.increment - (self.decrement & mask);
+        self.step.0 & mask as u16
+    }
+
+    /// This term `steps` steps later, without taking them.
+    ///
+    /// Every rule here keeps its value in the window (steps_above -
+    /// decrement + increment, steps_above + increment]: it starts there,
+    /// and a step adds the increment and, when the value was above
+    /// steps_above, takes the decrement off (increment <= decrement: a
+    /// passive axis moves no farther than the active one). After `steps`
+    /// steps, of which n stepped the axis, the value is value + steps·
+    /// increment - n·decrement, and only one n puts that in the window.
+    fn jumped(&self, steps: u64) -> Term {
+        if steps == 0 {
+            return *self;
+        }
+        let (inc, dec) = (self.increment as i128, self.decrement as i128);
+        // In i128: steps·increment reaches 2^63 on the longest lines.
+        let excess = self.value as i128 + steps as i128 * inc - self.steps_above as i128 - inc;
+        // n = ceil(excess / decrement), decrement > 0 on any line with steps.
+        let n = -(-excess).div_euclid(dec);
+        Term {
+            value: (self.value as i128 + steps as i128 * inc - n * dec) as i64,
+            ..*self
+        }
+    }
 }
 
 /// `N` passive terms and the axes that step every time. `N` is a constant
@@ -52,31 +91,84 @@ pub struct Terms<const N: usize> {
     pub terms: [Term; N],
 }
 
+/// How many stretches [`Terms::fill`] steps at once.
+const LANES: usize = 4;
+
+/// Below this many steps per lane, one stretch: the jumps would cost more
+/// than they save.
+const MIN_LANE_STEPS: usize = 32;
+
 impl<const N: usize> Terms<N> {
-    /// Records `out.len()` steps.
-    ///
-    /// The mask is all ones when the term exceeds `steps_above` (their
-    /// difference is negative), else 0: built by a subtraction and a shift,
-    /// it keeps a term's step bits and decrement when its axis steps. The
-    /// callers keep |value| and |steps_above| below 2^62, so the difference
-    /// cannot overflow.
     #[inline(always)]
-    pub fn fill(&mut self, out: &mut [Step]) {
-        for slot in out {
-            let mut bits = self.always.0;
-            for term in &mut self.terms {
-                let mask = (term.steps_above - term.value) >> 63;
-                bits |= term.step.0 & mask as u16;
-                term.value += term.increment - (term.decrement & mask);
+    fn advance(always: u16, terms: &mut [Term; N]) -> Step {
+        Step(
+            terms
+                .iter_mut()
+                .fold(always, |bits, term| bits | term.advance()),
+        )
+    }
+
+    /// Records `out.len()` steps, and returns where they moved per axis.
+    ///
+    /// Each step's value depends on the one before, so stepping is a chain
+    /// of dependent instructions and the processor waits on it. Split into
+    /// [`LANES`] stretches, each started where [`Term::jumped`] says the
+    /// rule will be, the chains are independent and run side by side; what
+    /// is left over steps on from the last stretch's end.
+    ///
+    /// The displacement needs no pass over the steps: the active axes moved
+    /// every step, and a term's value says how often its axis did (value_end
+    /// = value_start + steps·increment - moves·decrement).
+    #[inline(always)]
+    pub fn fill(&mut self, out: &mut [Step]) -> [i64; MAX_AXES] {
+        let start = self.terms;
+        let always = self.always.0;
+        let lane_steps = out.len() / LANES;
+        let (body, tail) = out.split_at_mut(if lane_steps >= MIN_LANE_STEPS {
+            lane_steps * LANES
+        } else {
+            0
+        });
+        if !body.is_empty() {
+            let mut lanes: [[Term; N]; LANES] = std::array::from_fn(|lane| {
+                self.terms.map(|t| t.jumped((lane * lane_steps) as u64))
+            });
+            let (first, rest) = body.split_at_mut(lane_steps);
+            let (second, rest) = rest.split_at_mut(lane_steps);
+            let (third, fourth) = rest.split_at_mut(lane_steps);
+            let [a, b, c, d] = &mut lanes;
+            for (((s0, s1), s2), s3) in first.iter_mut().zip(second).zip(third).zip(fourth) {
+                *s0 = Self::advance(always, a);
+                *s1 = Self::advance(always, b);
+                *s2 = Self::advance(always, c);
+                *s3 = Self::advance(always, d);
             }
-            *slot = Step(bits);
+            self.terms = lanes[LANES - 1];
         }
+        for slot in tail {
+            *slot = Self::advance(always, &mut self.terms);
+        }
+        let steps = out.len() as i64;
+        std::array::from_fn(|axis| {
+            let mut moved = self.always.delta(axis) * steps;
+            for (before, after) in start.iter().zip(&self.terms) {
+                if steps > 0 {
+                    // In i128: steps·increment reaches 2^63 on the longest lines.
+                    let moves = (before.value as i128 + steps as i128 * before.increment as i128
+                        - after.value as i128)
+                        / before.decrement as i128;
+                    moved += before.step.delta(axis) * moves as i64;
+                }
+            }
+            moved
+        })
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::grid::displacement;
 
     #[test]
     fn a_term_steps_past_its_threshold_and_on_it_by_the_tie_policy() {
@@ -104,5 +196,75 @@ mod tests {
         // Advance: 10 = 10 steps (-> 0); 0 < 10 holds (-> 10); 10 steps;
         // 0 holds.
         assert_eq!(run(TiePolicy::Advance), [0b101, 0b1, 0b101, 0b1]);
+    }
+
+    /// Wang's discriminant for a passive axis of |Δ| = `passive` against an
+    /// active |Δ| = `active` (eq. 10 start, eq. 8 steps), as a term.
+    fn wang(passive: i64, active: i64, tie: TiePolicy) -> Term {
+        Term {
+            value: 2 * passive - active,
+            increment: 2 * passive,
+            decrement: 2 * active,
+            steps_above: Term::steps_above(0, tie),
+            step: Step(0b100),
+        }
+    }
+
+    #[test]
+    fn a_jump_lands_where_the_steps_do() {
+        for (passive, active) in [(0, 5), (1, 7), (3, 6), (7, 10), (10, 10), (999, 1000)] {
+            for tie in [TiePolicy::Hold, TiePolicy::Advance] {
+                let mut stepped = wang(passive, active, tie);
+                for steps in 0..=3 * active as u64 {
+                    assert_eq!(
+                        wang(passive, active, tie).jumped(steps),
+                        stepped,
+                        "{passive}/{active} after {steps}"
+                    );
+                    stepped.advance();
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn jumps_on_the_longest_lines_stay_exact() {
+        // |Δ| = 2^31: a jump over the whole line equals two jumps over its
+        // halves, and lands back on the start value (eq. 8 summed over a
+        // line: 2|Δp|·|Δa| - |Δp|·2|Δa| = 0), with no overflow on the way.
+        let active = 1i64 << 31;
+        for passive in [1, active / 3, active - 1] {
+            let term = wang(passive, active, TiePolicy::Advance);
+            let whole = term.jumped(active as u64);
+            assert_eq!(
+                whole,
+                term.jumped(active as u64 / 2 + 7)
+                    .jumped(active as u64 / 2 - 7)
+            );
+            assert_eq!(whole.value, term.value);
+        }
+    }
+
+    #[test]
+    fn lanes_take_the_steps_of_one_chain() {
+        for len in [0, 1, 127, 128, 129, 4096, 4099] {
+            let start = Terms {
+                always: Step(1),
+                terms: [
+                    wang(7, 10, TiePolicy::Hold),
+                    wang(3, 10, TiePolicy::Advance),
+                ],
+            };
+            let mut lanes = start;
+            let mut out = vec![Step::NONE; len];
+            let moved = lanes.fill(&mut out);
+            assert_eq!(moved, displacement(&out), "{len} steps");
+            let mut chain = start;
+            let expected: Vec<Step> = (0..len)
+                .map(|_| Terms::advance(1, &mut chain.terms))
+                .collect();
+            assert_eq!(out, expected, "{len} steps");
+            assert_eq!(lanes.terms, chain.terms, "the state after {len} steps");
+        }
     }
 }

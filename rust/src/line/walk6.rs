@@ -11,9 +11,9 @@
 
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, displacement};
 use crate::request::{FROM, MAX_STEPS, TO};
-use crate::trace::{Column, ColumnKind, Decision, Stepper};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 use std::cmp::Ordering;
 
 pub const ID: &str = "walk6";
@@ -229,6 +229,46 @@ impl Stepper for Walk6 {
             order: self.order,
         };
         Some((self.mirror.toward(Step::NONE, crossed), why))
+    }
+
+    /// The same walk as [`Stepper::next_step`], comparing crossings in u64:
+    /// t = (2k + 1) / (2|Δ|) orders as (2k + 1) / |Δ|, and with k < |Δ| <=
+    /// 2^31 each cross product (2k + 1)·|Δ'| stays below 2^63. No decision.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let out = &mut out[..taken];
+        let dims = self.mirror.dims();
+        let magnitude: [u64; MAX_AXES] = std::array::from_fn(|a| {
+            if a < dims {
+                self.mirror.magnitude(a) as u64
+            } else {
+                0
+            }
+        });
+        let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
+        for slot in out.iter_mut() {
+            // The best crossing so far as (2k + 1, |Δ|); (1, 0) is t = ∞,
+            // which every face ahead beats.
+            let (mut first, mut best) = (0, (1u64, 0u64));
+            for axis in 0..dims {
+                let k = self.crossed[axis] as u64;
+                if k >= magnitude[axis] {
+                    continue;
+                }
+                let num = 2 * k + 1;
+                let order = (num * best.1).cmp(&(best.0 * magnitude[axis]));
+                if self.order.replaces(order) {
+                    (first, best) = (axis, (num, magnitude[axis]));
+                }
+            }
+            self.crossed[first] += 1;
+            *slot = toward[first];
+        }
+        self.remaining -= taken as u64;
+        Filled {
+            steps: taken,
+            displacement: displacement(out),
+        }
     }
 
     fn remaining_steps(&self) -> Option<u64> {
