@@ -121,8 +121,8 @@ describe('trace mode', () => {
     await page.getByTestId('export-csv').click();
     const download = await downloading;
     const csv = await new Response((await download.createReadStream()) as unknown as ReadableStream).text();
-    expect(csv.split('\n')[0]).toBe('k,x,y,z,M,N,region,corner,tie,deviation');
-    expect(csv.split('\n')[4]).toMatch(/^3,3,2,2,12,6,d,D,0,0\.2205/);
+    expect(csv.split('\n')[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,deviation');
+    expect(csv.split('\n')[4]).toMatch(/^3,3,2,2,12,6,d,D,0,0\.6,0\.3,\+y,\+z,0\.2205/);
     expect(p.problems()).toEqual([]);
     await p.close();
   });
