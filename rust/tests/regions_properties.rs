@@ -8,8 +8,10 @@ use voxpath::ideal::IdealPath;
 use voxpath::line::regions_wang::{FACE_AXIS_LABELS, Region, RegionsWang};
 use voxpath::trace::{Stepper, TiePolicy};
 
-/// Wang's bound: the ideal line crosses the exit face within the unit square,
-/// at most sqrt(2)/2 from the chosen corner (section 3.2).
+/// Wang's bound (section 3.2): the chosen corner is at most sqrt(2)/2 from
+/// the ideal line, as the line crosses the exit plane within 1/2 of it along
+/// each passive axis (though not always within the unit face: see
+/// `the_face_crossing_is_the_ideal_line_s_and_lies_in_the_region`).
 const MAX_THEORETICAL_ERROR: f64 = std::f64::consts::FRAC_1_SQRT_2;
 
 /// |delta| per axis for one of the seven line types: `line_type` picks which
@@ -221,6 +223,9 @@ proptest! {
                         let stepped = step.delta(axis) != 0;
                         let expected_step = u > 0.0 || (u == 0.0 && tie == TiePolicy::Advance);
                         prop_assert_eq!(stepped, expected_step);
+                        // So the chosen corner (+-1/2 on the face) is within 1/2 of the crossing.
+                        let corner = if stepped { 0.5 } else { -0.5 };
+                        prop_assert!((u - corner).abs() <= 0.5, "corner {} and crossing {}", corner, u);
                     }
                     if passive.len() < 2 {
                         prop_assert_eq!(crossing[1], None);
