@@ -159,7 +159,7 @@ pub struct RegionsWhy {
     /// 2 |delta| of the reference active axis (reduced as the discriminants
     /// are): M and N are the exit-face coordinates times this (see
     /// [`RegionsWhy::face_crossing`]).
-    pub face_scale: i64,
+    face_scale: i64,
     geometry: Geometry,
 }
 
