@@ -32,6 +32,45 @@ describe('trace (regions)', () => {
     expect(Array.from(t.decisions.tie!)).toEqual([0, 0, 0, 0, 1, 0, 0, 0, 0, 0]);
   });
 
+  it("gives where the ideal line crosses each step's exit face, from eq. (2)", async () => {
+    const t = await trace(LINE);
+    // x is active: the line is at y = 0.7 (x_i + 1), z = 0.6 (x_i + 1) on the
+    // exit plane x = x_i + 1, and the face's centre at (y_i + 1/2, z_i + 1/2),
+    // (x_i, y_i, z_i) being the point before the step.
+    const before = Array.from({ length: t.steps }, (_, k) => t.point(k));
+    const u = Array.from(t.decisions.face_u!);
+    const v = Array.from(t.decisions.face_v!);
+    before.forEach(([x, y, z], k) => {
+      expect(u[k]).toBeCloseTo(0.7 * (x! + 1) - (y! + 0.5), 12);
+      expect(v[k]).toBeCloseTo(0.6 * (x! + 1) - (z! + 0.5), 12);
+    });
+    // Step 3 crosses 0.6 along y, off the face but in region d (M = 12); step 5 (M = 0) on segment g.
+    expect([u[2], v[2], u[4], v[4]]).toEqual([0.6, 0.3, 0, 0.5]);
+    const axis = (name: string) => {
+      const column = t.columns.find((c) => c.name === name)!;
+      return Array.from(t.decisions[name]!, (i) => column.labels![i]);
+    };
+    expect(new Set(axis('face_u_axis'))).toEqual(new Set(['+y']));
+    expect(new Set(axis('face_v_axis'))).toEqual(new Set(['+z']));
+    // Mirrored, the coordinates are the same and the axes point the way the line goes.
+    const mirrored = await trace({ ...LINE, to: [-10, 7, -6] });
+    expect(Array.from(mirrored.decisions.face_u!)).toEqual(u);
+    expect(Array.from(mirrored.decisions.face_v!)).toEqual(v);
+    const vAxis = mirrored.columns.find((c) => c.name === 'face_v_axis')!;
+    expect(vAxis.labels![mirrored.decisions.face_v_axis![0]!]).toBe('-z');
+  });
+
+  it('has one face coordinate with one passive axis, and none on a type ② line', async () => {
+    // (0,0,0)->(7,7,3): x and y active, z passive; the crossing is N/(2·7) along the exit edge.
+    const one = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [7, 7, 3] });
+    expect(one.decisions.face_u![0]).toBeCloseTo((2 * 3 - 7) / 14, 15);
+    expect(Number.isNaN(one.decisions.face_v![0])).toBe(true);
+    const diagonal = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [4, 4, 4] });
+    expect(Array.from(diagonal.decisions.face_u!).every(Number.isNaN)).toBe(true);
+    const label = diagonal.columns.find((c) => c.name === 'face_u_axis')!.labels!;
+    expect(label[diagonal.decisions.face_u_axis![0]!]).toBe('-');
+  });
+
   it('measures each point against the ideal line and sums up the path', async () => {
     const t = await trace(LINE);
     expect(t.deviation).toHaveLength(11);
@@ -137,7 +176,7 @@ describe('algorithms()', () => {
   it('describes regions with its citation, columns and options', async () => {
     const regions = (await algorithms()).find((a) => a.id === 'regions')!;
     expect(regions.citation).toContain('Wang');
-    expect(regions.columns.map((c) => c.name)).toEqual(['M', 'N', 'region', 'corner', 'tie']);
+    expect(regions.columns.map((c) => c.name)).toEqual(['M', 'N', 'region', 'corner', 'tie', 'face_u', 'face_v', 'face_u_axis', 'face_v_axis']);
     expect(regions.options.map((o) => o.name)).toEqual(['from', 'to', 'tie', 'gcd', 'maxSteps']);
     expect(regions.family).toBe('line');
     expect(regions.defaultTie).toBe('advance');

@@ -35,9 +35,9 @@ describe('voxpath trace', () => {
   it('defaults to JSON and prints CSV and a table for people', () => {
     expect(JSON.parse(voxpath(...TRACE).stdout).steps).toBe(10);
     const csv = voxpath(...TRACE, '--format', 'csv').stdout.trim().split('\n');
-    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,deviation');
+    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,deviation');
     expect(csv).toHaveLength(12);
-    expect(csv[5]).toBe('4,4,3,2,6,-2,a,A,0,0.441129');
+    expect(csv[5]).toBe('4,4,3,2,6,-2,a,A,0,0.3,-0.1,+y,+z,0.441129');
     const table = voxpath(...TRACE, '--format', 'table').stdout;
     expect(table).toContain('Line type ①');
     expect(table).toMatch(/deviation: max 0\.441129/);

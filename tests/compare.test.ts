@@ -29,8 +29,8 @@ describe('compare()', () => {
       [5, 3, 3],
     ]);
     expect(d.aWhy!.stepIndex).toBe(4);
-    expect(d.aWhy!.decisions).toEqual({ M: 0, N: 10, region: 'g', corner: 'D', tie: true });
-    expect(Object.keys(d.aWhy!.decisions)).toEqual(['M', 'N', 'region', 'corner', 'tie']);
+    expect(d.aWhy!.decisions).toEqual({ M: 0, N: 10, region: 'g', corner: 'D', tie: true, face_u: 0, face_v: 0.5, face_u_axis: '+y', face_v_axis: '+z' });
+    expect(Object.keys(d.aWhy!.decisions)).toEqual(['M', 'N', 'region', 'corner', 'tie', 'face_u', 'face_v', 'face_u_axis', 'face_v_axis']);
     expect(d.bWhy!.decisions).toMatchObject({ errorX: null, errorY: 10, errorZ: 20, threshold: 10, major: 'x', tie: true });
     // The explanations are the traces' own.
     const [a, b] = await Promise.all([trace({ algorithm: 'regions', ...LINE }), trace({ algorithm: 'bresenham3d', ...LINE })]);

@@ -19,8 +19,10 @@ import { formatPoint } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
 import { renderExperiment } from './experiment/experiment-panel.js';
+import { type DecisionRow, exitFaceOf } from './inspector/decision-figure.js';
 import { Inspector } from './inspector/inspector.js';
 import { PALETTE } from './scene/palette.js';
+import { RegionFace } from './scene/region-face.js';
 import { SceneView } from './scene/scene-view.js';
 import type { Handle } from './scene/endpoint-handles.js';
 import { type AppState, type Catalogue, MODES, type Mode, tracedAlgorithms, traceOptions } from './state/app-state.js';
@@ -147,6 +149,8 @@ function run(catalogue: Catalogue): void {
   const view2d = byId('view-2d', HTMLInputElement);
   view2d.addEventListener('change', () => store.update({ projection: view2d.checked ? '2d' : '3d', camera: null }));
   byId('reset-view', HTMLButtonElement).addEventListener('click', () => store.update({ camera: null }));
+  const exitFace = byId('exit-face', HTMLInputElement);
+  exitFace.addEventListener('change', () => store.update({ exitFace: exitFace.checked }));
 
   const timeline = new Timeline(
     {
@@ -164,6 +168,14 @@ function run(catalogue: Catalogue): void {
     },
     store,
   );
+  /** The decision the inspector shows: the exit-face overlay is drawn from the same values. */
+  let decision: { trace: RemoteTrace; pointIndex: number; row: DecisionRow | undefined } | undefined;
+  /** The exit face of the shown decision in the view, when asked for and the trace has one. */
+  function drawExitFace(): void {
+    const d = decision;
+    const face = store.state.exitFace && d ? exitFaceOf(d.trace.columns, d.row) : undefined;
+    scene.setOverlay(face && d ? new RegionFace(face, d.trace.point(d.pointIndex - 1), d.trace.point(d.pointIndex)) : undefined);
+  }
   const inspector = new Inspector({
     point: byId('inspector-point', HTMLElement),
     deviation: byId('inspector-deviation', HTMLElement),
@@ -173,6 +185,9 @@ function run(catalogue: Catalogue): void {
     figure: byId('decision-figure', HTMLDivElement),
     columnDocs: byId('column-docs', HTMLElement),
     setupNote: byId('setup-note', HTMLParagraphElement),
+  }, (trace, pointIndex, row) => {
+    decision = { trace, pointIndex, row };
+    drawExitFace();
   });
   const goTo = (pointIndex: number) => store.update({ pointIndex, playing: false });
   const charts = new PathCharts(byId('charts', HTMLDivElement), goTo);
@@ -253,7 +268,14 @@ function run(catalogue: Catalogue): void {
     view2d.checked = state.projection === '2d' && scene.planar;
     view2d.disabled = !scene.planar;
     view2d.parentElement!.title = scene.planar ? 'Orthographic view of the path\'s plane, with the pixel grid' : 'The path is not in one plane';
+    const hasFace = main?.columns.some((c) => c.name === 'face_u') ?? false;
+    exitFace.checked = state.exitFace;
+    exitFace.disabled = !hasFace;
+    byId('exit-face-label', HTMLLabelElement).title = hasFace
+      ? "The exit face of the current step's decision: its regions a-d, where the ideal line crosses it, the corner A-D taken"
+      : 'Only the method of discriminate regions decides by an exit face';
     scene.setHandles(handles());
+    decision = undefined;
     inspector.setTrace(main, Math.min(pointIndex, main?.steps ?? 0));
     timeline.setSteps(main || b ? steps : undefined);
     void charts.setTrace(main);
@@ -406,6 +428,10 @@ function run(catalogue: Catalogue): void {
     } else if (state.camera && state.camera !== previous.camera) {
       scene.setCamera(state.camera);
       sceneB?.setCamera(state.camera);
+    }
+    if (state.exitFace !== previous.exitFace) {
+      exitFace.checked = state.exitFace;
+      drawExitFace();
     }
     if (state.mode === 'gcode') gcodePanel.render();
     experimentForm.setValues(state.experiment);

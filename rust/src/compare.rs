@@ -467,17 +467,29 @@ mod request_tests {
             a.explanation,
             "x is the active axis; M = 0 and N = 10 > 0, so the line crosses segment g between C and D (a tie); the tie policy 'advance' decides, and the step goes to D (x+1, y+1, z+1)."
         );
-        // Wang eq. (8): M_5 = 0, N_5 = 10 (SEED-NOTES' lists).
+        // Wang eq. (8): M_5 = 0, N_5 = 10 (SEED-NOTES' lists); the crossing
+        // M / 20 = 0 and N / 20 = 0.5 on the face.
         assert_eq!(
             decisions(&a),
-            serde_json::json!({"M": 0, "N": 10, "region": "g", "corner": "D", "tie": true})
+            serde_json::json!({"M": 0, "N": 10, "region": "g", "corner": "D", "tie": true,
+                "face_u": 0.0, "face_v": 0.5, "face_u_axis": "+y", "face_v_axis": "+z"})
         );
         assert_eq!(
             a.decisions
                 .iter()
                 .map(|(k, _)| k.as_str())
                 .collect::<Vec<_>>(),
-            ["M", "N", "region", "corner", "tie"]
+            [
+                "M",
+                "N",
+                "region",
+                "corner",
+                "tie",
+                "face_u",
+                "face_v",
+                "face_u_axis",
+                "face_v_axis"
+            ]
         );
         // Saleem's errorY = 2|Δy| k - 2|Δx| (steps so far) = 2·7·5 - 2·10·3
         // = 10 = |Δx|, a tie; errorZ = 2·6·5 - 2·10·2 = 20 > 10.

@@ -5,11 +5,13 @@
 use proptest::prelude::*;
 use voxpath::grid::{COORD_LIMIT, Point, Step, displacement};
 use voxpath::ideal::IdealPath;
-use voxpath::line::regions_wang::RegionsWang;
+use voxpath::line::regions_wang::{FACE_AXIS_LABELS, Region, RegionsWang};
 use voxpath::trace::{Stepper, TiePolicy};
 
-/// Wang's bound: the ideal line crosses the exit face within the unit square,
-/// at most sqrt(2)/2 from the chosen corner (section 3.2).
+/// Wang's bound (section 3.2): the chosen corner is at most sqrt(2)/2 from
+/// the ideal line, as the line crosses the exit plane within 1/2 of it along
+/// each passive axis (though not always within the unit face: see
+/// `the_face_crossing_is_the_ideal_line_s_and_lies_in_the_region`).
 const MAX_THEORETICAL_ERROR: f64 = std::f64::consts::FRAC_1_SQRT_2;
 
 /// |delta| per axis for one of the seven line types: `line_type` picks which
@@ -137,6 +139,159 @@ proptest! {
         }
         prop_assert_eq!(taken, expected);
     }
+}
+
+/// The signs of the face coordinates (u along the first passive axis, v
+/// along the second; 0 on the line between two regions) each region and
+/// segment of Wang's Figure 4b stands for, read off the figure and the rules
+/// of section 2.5 rather than from the code under test. A line with one
+/// passive axis has no v: it counts as below the centre, as a missing N
+/// counts as negative.
+fn region_signs(region: Region) -> Option<(i64, i64)> {
+    Some(match region {
+        Region::A => (1, -1),
+        Region::B => (-1, -1),
+        Region::C => (-1, 1),
+        Region::D => (1, 1),
+        Region::E => (0, -1),
+        Region::F => (-1, 0),
+        Region::G => (0, 1),
+        Region::H => (1, 0),
+        Region::O => (0, 0),
+        Region::NoPassive => return None,
+    })
+}
+
+fn sign(v: f64) -> i64 {
+    if v > 0.0 {
+        1
+    } else if v < 0.0 {
+        -1
+    } else {
+        0
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn the_face_crossing_is_the_ideal_line_s_and_lies_in_the_region(
+        (from, to, tie) in line_strategy(), gcd in any::<bool>()
+    ) {
+        let delta = from.delta_to(&to);
+        let longest = delta[..3].iter().map(|d| d.abs()).max().unwrap();
+        let reference = (0..3).find(|&a| delta[a].abs() == longest).unwrap();
+        let travel = |axis: usize| if delta[axis] < 0 { -1 } else { 1 };
+        let mut stepper = RegionsWang::with_gcd(from, to, tie, gcd);
+        let mut p = from;
+        while let Some((step, why)) = stepper.next_step() {
+            let mut next = p;
+            next.apply(step);
+            let crossing = why.face_crossing();
+            let axes = why.face_axes();
+            let passive: Vec<usize> = (0..3).filter(|&a| delta[a].abs() < longest).collect();
+            match region_signs(why.region) {
+                None => {
+                    prop_assert!(passive.is_empty());
+                    prop_assert_eq!(crossing, [None, None]);
+                    prop_assert_eq!(axes.map(|a| FACE_AXIS_LABELS[a as usize]), ["-", "-"]);
+                }
+                Some((u_sign, v_sign)) => {
+                    for (i, &axis) in passive.iter().enumerate() {
+                        // The axis and the way it grows: the direction of travel.
+                        let label = FACE_AXIS_LABELS[axes[i] as usize];
+                        let expected = format!("{}{}", if travel(axis) < 0 { '-' } else { '+' }, ["x", "y", "z"][axis]);
+                        prop_assert_eq!(label, expected.as_str());
+                        // From the ideal line itself (Wang eq. 2), in units of
+                        // travel: at the exit plane the line has gone
+                        // |Δa| t / |Δref| along the axis, where t is how far
+                        // the reference axis has gone at the next point; the
+                        // face's centre is half a cell past the current point.
+                        // Times 2 |Δref|, an exact integer.
+                        let t = travel(reference) * (next.coords()[reference] - from.coords()[reference]);
+                        let at = travel(axis) * (p.coords()[axis] - from.coords()[axis]);
+                        let scaled = 2 * delta[axis].abs() * t - 2 * longest * at - longest;
+                        let u = crossing[i].unwrap();
+                        prop_assert_eq!(u, scaled as f64 / (2 * longest) as f64, "face {} at {:?}", i, p);
+                        prop_assert_eq!(sign(u), if i == 0 { u_sign } else { v_sign }, "{:?} at {:?}", why.region, p);
+                        // Within [|Δa|/|Δref| - 1, |Δa|/|Δref|]: so inside (-1, 1).
+                        prop_assert!(scaled >= 2 * delta[axis].abs() - 2 * longest && scaled <= 2 * delta[axis].abs());
+                        prop_assert!(u > -1.0 && u < 1.0);
+                        // The corner agrees: the axis stepped past the centre,
+                        // or on it as the tie policy says.
+                        let stepped = step.delta(axis) != 0;
+                        let expected_step = u > 0.0 || (u == 0.0 && tie == TiePolicy::Advance);
+                        prop_assert_eq!(stepped, expected_step);
+                        // So the chosen corner (+-1/2 on the face) is within 1/2 of the crossing.
+                        let corner = if stepped { 0.5 } else { -0.5 };
+                        prop_assert!((u - corner).abs() <= 0.5, "corner {} and crossing {}", corner, u);
+                    }
+                    if passive.len() < 2 {
+                        prop_assert_eq!(crossing[1], None);
+                        prop_assert_eq!(FACE_AXIS_LABELS[axes[1] as usize], "-");
+                        prop_assert_eq!(v_sign, -1, "one passive axis: the region is a, b or e");
+                    }
+                }
+            }
+            p = next;
+        }
+    }
+}
+
+#[test]
+fn face_crossings_of_wang_s_example_from_the_paper_s_equations() {
+    // (0,0,0)->(10,7,6), x active. Eq. (2) puts the line at y = 0.7 (x_i + 1)
+    // and z = 0.6 (x_i + 1) on the exit plane; the face's centre is at
+    // (y_i + 1/2, z_i + 1/2), with (x_i, y_i, z_i) the points of SEED-NOTES
+    // from (0,0,0). Step 3, from (2,1,1): y = 2.1, so u = 2.1 - 1.5 = 0.6,
+    // off the face (the line leaves the unit cell through its top first),
+    // yet in region d as M = 12 says. Step 10 ends on corner D itself.
+    let points = [
+        [0, 0, 0],
+        [1, 1, 1],
+        [2, 1, 1],
+        [3, 2, 2],
+        [4, 3, 2],
+        [5, 4, 3],
+        [6, 4, 4],
+        [7, 5, 4],
+        [8, 6, 5],
+        [9, 6, 5],
+    ];
+    let expected: Vec<[f64; 2]> = points
+        .iter()
+        .map(|[x, y, z]| {
+            let (x, y, z) = (*x as f64, *y as f64, *z as f64);
+            [0.7 * (x + 1.0) - (y + 0.5), 0.6 * (x + 1.0) - (z + 0.5)]
+        })
+        .collect();
+    let mut stepper = RegionsWang::new(
+        Point::new(&[0, 0, 0]),
+        Point::new(&[10, 7, 6]),
+        TiePolicy::Advance,
+    );
+    let mut got = Vec::new();
+    while let Some((_, why)) = stepper.next_step() {
+        let [u, v] = why.face_crossing();
+        got.push([u.unwrap(), v.unwrap()]);
+        assert_eq!(
+            why.face_axes().map(|a| FACE_AXIS_LABELS[a as usize]),
+            ["+y", "+z"]
+        );
+    }
+    assert_eq!(got.len(), expected.len());
+    for (k, (g, e)) in got.iter().zip(&expected).enumerate() {
+        assert!(
+            (g[0] - e[0]).abs() < 1e-12 && (g[1] - e[1]).abs() < 1e-12,
+            "step {}: {g:?} vs {e:?}",
+            k + 1
+        );
+    }
+    // And exactly M/20 and N/20 (SEED-NOTES' M and N): 0.6 and 0.5 are exact.
+    assert_eq!(got[2], [0.6, 0.3]);
+    assert_eq!(got[9], [0.5, 0.5]);
+    assert_eq!(got[4], [0.0, 0.5]);
 }
 
 #[test]

@@ -28,6 +28,19 @@ async function inspected(page: Page): Promise<void> {
   await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
 }
 
+/**
+ * Pixels of the exit face's crossing dot, PALETTE.crossing (#f0e442,
+ * Okabe-Ito yellow), which nothing else in the view is drawn in.
+ */
+function crossingPixels(png: Buffer): number {
+  const { data } = PNG.sync.read(png);
+  let count = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    if (Math.abs(data[i]! - 0xf0) <= 10 && Math.abs(data[i + 1]! - 0xe4) <= 10 && Math.abs(data[i + 2]! - 0x42) <= 10) count++;
+  }
+  return count;
+}
+
 /** A PNG of the first element matching `selector`, as bytes. */
 function shot(page: Page, selector: string): Promise<Buffer> {
   return page.locator(selector).first().screenshot();
@@ -87,6 +100,51 @@ describe('trace mode', () => {
     await p.close();
   });
 
+  it('draws the exit face in the view when its checkbox is on, and keeps that in the link', async () => {
+    // Step 3 from (2,1,1): the line crosses x = 3 at y = 2.1, z = 1.8 (Wang
+    // eq. 2), 0.6 and 0.3 cells from the face's centre (face_u = M/20 = 0.6,
+    // face_v = N/20 = 0.3). The camera looks at that face from close by.
+    const p = await openPage('?from=0,0,0&to=10,7,6&step=3&camera=6.5,-2.5,4.2,3,1.5,1.5,1');
+    const { page } = p;
+    await steps(page, 10);
+    await inspected(page);
+    const checkbox = page.getByLabel('Exit face');
+    expect(await checkbox.isChecked()).toBe(false);
+    const canvas = '[data-testid=scene-canvas]';
+    expect(crossingPixels(await shot(page, canvas))).toBe(0);
+
+    // From the keyboard: Space on the focused checkbox.
+    await checkbox.focus();
+    await page.keyboard.press('Space');
+    await page.waitForURL(/exitFace=1/);
+    await expect.poll(async () => crossingPixels(await shot(page, canvas))).toBeGreaterThan(30);
+    await screenshot(page, 'exit-face', canvas);
+    // The inspector's figure marks the same crossing, at 0.5 + 0.6 of the face's width: past corner D's side.
+    const figure = page.getByTestId('decision-figure');
+    expect(await figure.getByTestId('face-crossing').count()).toBe(1);
+    expect(await figure.locator('title').textContent()).toMatch(/at \(0\.6, 0\.3\) cells from the face's centre, in region d/);
+
+    // The link restores it.
+    const q = await openPage(new URL(page.url()).search);
+    await steps(q.page, 10);
+    await inspected(q.page);
+    expect(await q.page.getByLabel('Exit face').isChecked()).toBe(true);
+    await expect.poll(async () => crossingPixels(await shot(q.page, canvas))).toBeGreaterThan(30);
+
+    // Off again; and an algorithm that decides by no face has none to show.
+    await checkbox.uncheck();
+    await page.waitForURL(/exitFace=0/);
+    await expect.poll(async () => crossingPixels(await shot(page, canvas))).toBe(0);
+    await q.page.getByTestId('algorithm').selectOption('bresenham3d');
+    await expect.poll(() => q.page.getByLabel('Exit face').isDisabled()).toBe(true);
+    await inspected(q.page);
+    expect(crossingPixels(await shot(q.page, canvas))).toBe(0);
+    expect(p.problems()).toEqual([]);
+    expect(q.problems()).toEqual([]);
+    await p.close();
+    await q.close();
+  });
+
   it('moves a focused endpoint handle with the arrow keys, re-tracing the move', async () => {
     const p = await openPage('?from=0,0,0&to=10,7,6');
     const { page } = p;
@@ -121,8 +179,8 @@ describe('trace mode', () => {
     await page.getByTestId('export-csv').click();
     const download = await downloading;
     const csv = await new Response((await download.createReadStream()) as unknown as ReadableStream).text();
-    expect(csv.split('\n')[0]).toBe('k,x,y,z,M,N,region,corner,tie,deviation');
-    expect(csv.split('\n')[4]).toMatch(/^3,3,2,2,12,6,d,D,0,0\.2205/);
+    expect(csv.split('\n')[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,deviation');
+    expect(csv.split('\n')[4]).toMatch(/^3,3,2,2,12,6,d,D,0,0\.6,0\.3,\+y,\+z,0\.2205/);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -3,7 +3,8 @@
  * the algorithm's id), drawn from the values the core replayed:
  * - region and corner (Wang's discriminate regions): the exit face with its
  *   regions a-d, the segments e-h and the centre o between them, the region
- *   the core says the line crosses and the corner A-D it picked;
+ *   the core says the line crosses, the point where it crosses (face_u,
+ *   face_v) and the corner A-D it picked;
  * - threshold and error columns (Bresenham): one bar per error term against
  *   the threshold it is compared with;
  * - error_stay and error_move (Saleem's circle): the residual of each
@@ -29,14 +30,69 @@ function label(columns: readonly ColumnSpec[], name: string, value: number): str
 }
 
 /**
+ * The exit face of a regions decision, read from the core's columns: the
+ * region and corner, where the ideal line crosses the exit plane (face_u,
+ * face_v) and the grid axis and direction each face coordinate runs along
+ * (face_u_axis, face_v_axis). Undefined when the trace has no such columns
+ * or the step no face (a type ② line, or a step of another algorithm in a
+ * G-code program).
+ */
+export interface ExitFace {
+  region: string;
+  corner: string;
+  /** Cells from the face's centre along the first passive axis, positive the way it travels. */
+  u: number;
+  /** The same along the second passive axis; undefined with one passive axis (the line leaves through an edge). */
+  v: number | undefined;
+  /** Grid axis (0 = x) and direction (+1 or -1) of u, and of v when there is one. */
+  uAxis: number;
+  uSign: 1 | -1;
+  vAxis: number | undefined;
+  vSign: 1 | -1;
+}
+
+/** A face axis label ('+y', '-z') as its grid axis and direction; undefined for '-'. */
+function faceAxis(text: string | undefined): { axis: number; sign: 1 | -1 } | undefined {
+  const axis = 'xyz'.indexOf(text?.[1] ?? '-');
+  return axis < 0 ? undefined : { axis, sign: text![0] === '-' ? -1 : 1 };
+}
+
+export function exitFaceOf(columns: readonly ColumnSpec[], row: DecisionRow | undefined): ExitFace | undefined {
+  if (!row || !['region', 'corner', 'face_u', 'face_v', 'face_u_axis', 'face_v_axis'].every((name) => columns.some((c) => c.name === name))) return undefined;
+  const region = label(columns, 'region', row.region!);
+  const corner = label(columns, 'corner', row.corner!);
+  const u = faceAxis(label(columns, 'face_u_axis', row.face_u_axis!));
+  const v = faceAxis(label(columns, 'face_v_axis', row.face_v_axis!));
+  if (!region || !corner || !u || Number.isNaN(row.face_u!)) return undefined;
+  return {
+    region,
+    corner,
+    u: row.face_u!,
+    v: v && !Number.isNaN(row.face_v!) ? row.face_v! : undefined,
+    uAxis: u.axis,
+    uSign: u.sign,
+    vAxis: v?.axis,
+    vSign: v?.sign ?? 1,
+  };
+}
+
+/**
  * Wang's Figure 4b in the face's own frame: the first passive axis (M)
  * runs right, the second (N) up. B is the corner where neither steps, A
  * where the first does, C the second, D both; region x lies at corner X,
  * segment e between A and B, f between B and C, g between C and D, h between
  * D and A (the column docs and the core's explanations name them so).
+ *
+ * The figure shows half a cell of the exit plane around the face: the ideal
+ * line crosses the plane within (-1, 1) of the face's centre (the face_u
+ * column's doc), off the face when it left Wang's unit cell through a side,
+ * and the regions are the plane's quadrants, so they are drawn on past the
+ * face, fainter.
  */
-const SIZE = 160;
-const PAD = 26;
+const SIZE = 100;
+const PAD = 22;
+/** Face coordinates the figure shows beyond the face (0..1) on each side. */
+const MARGIN = 0.5;
 const CORNERS: Record<string, [number, number]> = { A: [1, 0], B: [0, 0], C: [0, 1], D: [1, 1] };
 const QUADRANTS: Record<string, [number, number]> = { a: [0.5, 0], b: [0, 0], c: [0, 0.5], d: [0.5, 0.5] };
 const SEGMENTS: Record<string, [number, number, number, number]> = {
@@ -45,17 +101,30 @@ const SEGMENTS: Record<string, [number, number, number, number]> = {
   g: [0.5, 0.5, 0.5, 1],
   h: [0.5, 0.5, 1, 0.5],
 };
+const EXTENT = (1 + 2 * MARGIN) * SIZE + 2 * PAD;
 
-/** Face coordinates (0..1, y up) to SVG pixels. */
-const px = (u: number) => PAD + u * SIZE;
-const py = (v: number) => PAD + (1 - v) * SIZE;
+/** Face coordinates (0..1 on the face, y up) to SVG pixels. */
+const px = (u: number) => PAD + (u + MARGIN) * SIZE;
+const py = (v: number) => PAD + (1 + MARGIN - v) * SIZE;
 
-function regionFace(region: string, corner: string): SVGSVGElement {
-  const root = svg('svg', { viewBox: `0 0 ${SIZE + 2 * PAD} ${SIZE + 2 * PAD}`, role: 'img', class: 'face-figure' });
-  root.append(svg('title', {}, `The exit face: the line crosses ${region.length === 1 && 'abcd'.includes(region) ? `region ${region}` : region === 'o' ? 'the centre o' : `segment ${region}`}; the step goes to corner ${corner}.`));
+/** "(0.6, 0.3)": a crossing as the figure's title reads it. */
+const pair = (u: number, v: number | undefined) => (v === undefined ? `${u}` : `(${u}, ${v})`);
+
+function regionFace(face: ExitFace): SVGSVGElement {
+  const { region, corner } = face;
+  const root = svg('svg', { viewBox: `0 0 ${EXTENT} ${EXTENT}`, role: 'img', class: 'face-figure' });
+  const where = region.length === 1 && 'abcd'.includes(region) ? `region ${region}` : region === 'o' ? 'the centre o' : `segment ${region}`;
+  root.append(
+    svg('title', {}, `The exit face: the ideal line crosses the exit plane at ${pair(face.u, face.v)} cells from the face's centre, in ${where}; the step goes to corner ${corner}.`),
+  );
+  for (const [name, [u, v]] of Object.entries(QUADRANTS)) {
+    // The quadrant of the plane, out to the figure's edge, under the face's part of it.
+    const [u0, v0] = [u === 0 ? -MARGIN : u, v === 0 ? -MARGIN : v];
+    root.append(svg('rect', { x: px(u0), y: py(v0 + 0.5 + MARGIN), width: (0.5 + MARGIN) * SIZE, height: (0.5 + MARGIN) * SIZE, class: `face-plane face-plane-${name}` }));
+  }
   for (const [name, [u, v]] of Object.entries(QUADRANTS)) {
     const chosen = name === region;
-    root.append(svg('rect', { x: px(u), y: py(v + 0.5), width: SIZE / 2, height: SIZE / 2, class: chosen ? 'face-region chosen' : 'face-region' }));
+    root.append(svg('rect', { x: px(u), y: py(v + 0.5), width: SIZE / 2, height: SIZE / 2, class: `face-region face-region-${name}${chosen ? ' chosen' : ''}` }));
     root.append(svg('text', { x: px(u + 0.25), y: py(v + 0.25) + 5, class: 'face-label' }, name));
   }
   for (const [name, [u1, v1, u2, v2]] of Object.entries(SEGMENTS)) {
@@ -68,8 +137,12 @@ function regionFace(region: string, corner: string): SVGSVGElement {
     root.append(svg('circle', { cx: px(u), cy: py(v), r: chosen ? 8 : 5, class: chosen ? 'face-corner chosen' : 'face-corner' }));
     root.append(svg('text', { x: px(u) + (u ? 10 : -18), y: py(v) + (v ? -6 : 16), class: 'face-corner-label' }, name));
   }
-  root.append(svg('text', { x: px(0.5), y: SIZE + 2 * PAD - 4, class: 'face-axis' }, 'first passive axis steps (M > 0) →'));
-  root.append(svg('text', { x: 10, y: py(0.5), class: 'face-axis', transform: `rotate(-90 10 ${py(0.5)})` }, 'second (N > 0) →'));
+  // The crossing, in the face's frame (its centre at 0.5, 0.5). A line with
+  // one passive axis leaves through the edge B-A (a missing N counts as
+  // negative, as the region says), so it is drawn on that edge.
+  root.append(svg('circle', { cx: px(0.5 + face.u), cy: py(face.v === undefined ? 0 : 0.5 + face.v), r: 5.5, class: 'face-crossing', 'data-testid': 'face-crossing' }));
+  root.append(svg('text', { x: EXTENT / 2, y: EXTENT - 4, class: 'face-axis' }, 'first passive axis steps (M > 0) →'));
+  root.append(svg('text', { x: 10, y: EXTENT / 2, class: 'face-axis', transform: `rotate(-90 10 ${EXTENT / 2})` }, 'second (N > 0) →'));
   return root;
 }
 
@@ -107,11 +180,9 @@ export function decisionFigure(columns: readonly ColumnSpec[], row: DecisionRow 
   if (!row) return undefined;
   const has = (name: string) => columns.some((c) => c.name === name);
   if (has('region') && has('corner')) {
-    const region = label(columns, 'region', row.region!);
-    const corner = label(columns, 'corner', row.corner!);
-    // '-' marks a line with no passive axis (Wang's type ②): no face decides.
-    if (region && corner && region !== '-' && corner !== '-') return regionFace(region, corner);
-    return undefined;
+    // No face for a line with no passive axis (Wang's type ②: region '-').
+    const face = exitFaceOf(columns, row);
+    return face ? regionFace(face) : undefined;
   }
   if (has('threshold')) {
     const errors = columns.filter((c) => /^error/.test(c.name) && !Number.isNaN(row[c.name]!));

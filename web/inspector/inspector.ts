@@ -43,8 +43,12 @@ function formatValue(column: ColumnSpec, value: number): string {
   }
 }
 
+/** Called with each decision the inspector shows (row undefined at the start point), for views drawn from the same values. */
+export type DecisionListener = (trace: RemoteTrace, pointIndex: number, row: DecisionRow | undefined) => void;
+
 export class Inspector {
   readonly #e: InspectorElements;
+  readonly #onDecision: DecisionListener;
   #trace: RemoteTrace | undefined;
   /** The value cell of each column, by column name. */
   #cells = new Map<string, HTMLElement>();
@@ -53,8 +57,9 @@ export class Inspector {
   #shownPointIndex: number | undefined;
   #fetching = false;
 
-  constructor(elements: InspectorElements) {
+  constructor(elements: InspectorElements, onDecision: DecisionListener) {
     this.#e = elements;
+    this.#onDecision = onDecision;
   }
 
   /** Lays out the rows for `trace`'s columns and shows `pointIndex`. */
@@ -125,6 +130,7 @@ export class Inspector {
         this.#e.figure.replaceChildren(...(figure ? [figure] : []));
         this.#e.explanation.textContent = explanation ?? 'This is the start point: no step has been decided yet.';
         this.#shownPointIndex = pointIndex;
+        this.#onDecision(trace, pointIndex, row);
       }
     } catch (error) {
       // A crash is reported by the page's crash banner; anything else is a bug shown here.

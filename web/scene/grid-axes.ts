@@ -22,7 +22,8 @@ function niceStep(extent: number, parts: number): number {
   }
 }
 
-function label(text: string, className: string, position: THREE.Vector3): CSS2DObject {
+/** A text label at `position` in the scene, an HTML element drawn by the view's label layer. */
+export function sceneLabel(text: string, className: string, position: THREE.Vector3): CSS2DObject {
   const element = document.createElement('span');
   element.className = className;
   element.textContent = text;
@@ -54,7 +55,7 @@ export class GridAxes extends THREE.Group {
       const length = size.getComponent(axis) + reach;
       this.add(new THREE.ArrowHelper(direction, corner, length, PALETTE.axis, 0.45, 0.25));
       const tip = corner.clone().addScaledVector(direction, length + 0.45);
-      this.add(label(AXIS_NAMES[axis]!, 'scene-label axis-name', tip));
+      this.add(sceneLabel(AXIS_NAMES[axis]!, 'scene-label axis-name', tip));
       // Ticks sit just outside the box: x along the front edge, z beside its
       // axis, y along the far-x edge of the floor, away from z's ticks.
       const base = [
@@ -65,7 +66,7 @@ export class GridAxes extends THREE.Group {
       const step = niceStep(size.getComponent(axis), MAX_TICKS);
       const first = Math.ceil(min.getComponent(axis) / step) * step;
       for (let c = first; c <= max.getComponent(axis); c += step) {
-        this.add(label(String(c), 'scene-label tick', base.clone().setComponent(axis, c)));
+        this.add(sceneLabel(String(c), 'scene-label tick', base.clone().setComponent(axis, c)));
       }
     });
   }

@@ -19,6 +19,17 @@ export const PALETTE = {
   onlyFirst: '#e69f00',
   /** Cells only the second compared path visits (Okabe-Ito reddish purple). */
   onlySecond: '#cc79a7',
+  /**
+   * The exit face's regions a-d (Wang Fig. 4b), one Okabe-Ito hue each,
+   * always drawn with their letters too: blue, bluish green, reddish purple
+   * and orange differ in lightness as well as hue.
+   */
+  regionA: '#e69f00',
+  regionB: '#0072b2',
+  regionC: '#009e73',
+  regionD: '#cc79a7',
+  /** Where the ideal line crosses the exit plane (Okabe-Ito yellow, ringed in black): no other part of the view is yellow. */
+  crossing: '#f0e442',
   /** Grid lines on the floor and axis arrows. */
   grid: '#cfcfc6',
   axis: '#555555',

@@ -81,6 +81,15 @@ pub enum Corner {
 
 pub const CORNER_LABELS: &[&str] = &["A", "B", "C", "D", "-"];
 
+/// Which grid axis a face coordinate runs along, and which way it grows:
+/// label `2 * axis` is toward +axis, `2 * axis + 1` toward -axis (the
+/// direction of travel; an axis that does not move counts as +), and the
+/// last is no coordinate.
+pub const FACE_AXIS_LABELS: &[&str] = &["+x", "-x", "+y", "-y", "+z", "-z", "-"];
+
+/// The label index of [`FACE_AXIS_LABELS`] for no face coordinate.
+const NO_FACE_AXIS: u8 = 6;
+
 impl Region {
     /// The paper's rule for this region, section 2.5 (1)-(9), word for word
     /// where the paper is right.
@@ -147,7 +156,37 @@ pub struct RegionsWhy {
     /// A zero discriminant decided this step (through the tie policy).
     pub tie: bool,
     pub tie_policy: TiePolicy,
+    /// 2 |delta| of the reference active axis (reduced as the discriminants
+    /// are): M and N are the exit-face coordinates times this (see
+    /// [`RegionsWhy::face_crossing`]).
+    face_scale: i64,
     geometry: Geometry,
+}
+
+impl RegionsWhy {
+    /// Where the ideal line crosses the exit plane, per passive axis: cells
+    /// from the centre of the cell's exit face, positive in the direction of
+    /// travel. Wang eq. (3)-(5) give d_y = d_y1 - d_y2 = 2 (y - y_i) - 1 for
+    /// the crossing y at x_i + 1, and eq. (6) is M = |Δx| d_y, so
+    /// y - (y_i + 1/2) = M / (2 |Δx|): the discriminant is the crossing,
+    /// scaled to an integer. Exact integers until this one division, which
+    /// rounds once (M and 2|Δx| are below 2^53, so exact in f64).
+    ///
+    /// The range: M stays in [2|Δy| - 2|Δx|, 2|Δy|] (eq. 8 adds 2|Δy| and
+    /// subtracts 2|Δx| exactly when it is past the tie threshold; which end
+    /// is open depends on the tie policy), so the crossing lies in
+    /// [|Δy|/|Δx| - 1, |Δy|/|Δx|], always inside (-1, 1). Past +-1/2 it
+    /// is off the unit face: the line left Wang's unit cell through a side
+    /// face first, though in the same quadrant, so the region still holds.
+    pub fn face_crossing(&self) -> [Option<f64>; 2] {
+        self.discriminants
+            .map(|d| d.map(|d| d as f64 / self.face_scale as f64))
+    }
+
+    /// The [`FACE_AXIS_LABELS`] index of each face coordinate's axis.
+    pub fn face_axes(&self) -> [u8; 2] {
+        self.geometry.passive_direction
+    }
 }
 
 impl Decision for RegionsWhy {
@@ -177,6 +216,26 @@ impl Decision for RegionsWhy {
             kind: ColumnKind::Flag,
             doc: "1 when M or N was exactly 0 and the tie policy decided the step.",
         },
+        Column {
+            name: "face_u",
+            kind: ColumnKind::Float,
+            doc: "Where the ideal line crosses the exit plane (where the active axes arrive at this step), along the first passive axis: cells from the centre of the cell's exit face, positive the way the axis travels (face_u_axis). It is M / (2|Δx|) exactly (Wang eq. 3-6), so its sign is M's and says the region. It lies in [|Δy|/|Δx| - 1, |Δy|/|Δx|], inside (-1, 1); past ±1/2 the line left Wang's unit cell through a side face first, in the same quadrant.",
+        },
+        Column {
+            name: "face_v",
+            kind: ColumnKind::Float,
+            doc: "The crossing along the second passive axis, N / (2|Δx|) (face_v_axis). Empty with one passive axis (types ⑤-⑦): the active axes arrive together, so the line leaves through the edge where they do, and face_u alone places it there, from the edge's midpoint.",
+        },
+        Column {
+            name: "face_u_axis",
+            kind: ColumnKind::Category(FACE_AXIS_LABELS),
+            doc: "The grid axis face_u runs along and the way it grows (+y: toward +y, the direction of travel; an axis that does not move counts as +); '-' for type ② lines, which run through the corners and cross no face.",
+        },
+        Column {
+            name: "face_v_axis",
+            kind: ColumnKind::Category(FACE_AXIS_LABELS),
+            doc: "The grid axis face_v runs along and the way it grows; '-' with fewer than two passive axes.",
+        },
     ];
 
     fn write(&self, row: &mut [f64]) {
@@ -185,6 +244,12 @@ impl Decision for RegionsWhy {
         row[2] = self.region as u8 as f64;
         row[3] = self.corner as u8 as f64;
         row[4] = self.tie as u8 as f64;
+        let [u, v] = self.face_crossing();
+        row[5] = u.unwrap_or(f64::NAN);
+        row[6] = v.unwrap_or(f64::NAN);
+        let [u_axis, v_axis] = self.face_axes();
+        row[7] = u_axis as f64;
+        row[8] = v_axis as f64;
     }
 
     fn is_tie(&self) -> bool {
@@ -254,6 +319,9 @@ struct Geometry {
     /// Passive axes in x, y, z order; the first has M, the second N.
     passive: [u8; 2],
     passive_count: u8,
+    /// Per passive axis, its axis and direction of travel as a
+    /// [`FACE_AXIS_LABELS`] index; [`NO_FACE_AXIS`] when absent.
+    passive_direction: [u8; 2],
 }
 
 impl Geometry {
@@ -331,12 +399,15 @@ impl RegionsWang {
             active_mask: 0,
             passive: [0; 2],
             passive_count: 0,
+            passive_direction: [NO_FACE_AXIS; 2],
         };
         for axis in 0..3 {
             if magnitude[axis] == largest {
                 geometry.active_mask |= 1 << axis;
             } else {
-                geometry.passive[geometry.passive_count as usize] = axis as u8;
+                let i = geometry.passive_count as usize;
+                geometry.passive[i] = axis as u8;
+                geometry.passive_direction[i] = 2 * axis as u8 + (mirror.sign(axis) < 0) as u8;
                 geometry.passive_count += 1;
             }
         }
@@ -466,6 +537,7 @@ impl Stepper for RegionsWang {
             corner,
             tie,
             tie_policy: self.tie,
+            face_scale: self.decrement,
             geometry: self.geometry,
         };
         Some((step, why))
@@ -672,6 +744,11 @@ mod tests {
         let d = t.decisions(3, 6);
         assert_eq!(d.columns[0], [6.0, 0.0, -6.0]);
         assert_eq!(d.columns[2], [0.0, 6.0, 2.0]); // a, g, c
+        // face_u = M / 20, face_v = N / 20; the axes +y and +z.
+        assert_eq!(d.columns[5], [0.3, 0.0, -0.3]);
+        assert_eq!(d.columns[6], [-0.1, 0.5, 0.1]);
+        assert_eq!(d.columns[7], [2.0; 3]);
+        assert_eq!(d.columns[8], [4.0; 3]);
         assert_eq!(t.metrics().ties, 1);
         let note = &t.segments()[0].setup_note;
         assert!(note.contains("M_1 = 2|Δy| - |Δx| = 2·7 - 10 = 4"), "{note}");
