@@ -11,9 +11,10 @@
 //! measured along the direction of travel, so the paper's positive-direction
 //! formulas apply unchanged (the paper's "intrinsic symmetry").
 
+use super::terms::{Term, Terms};
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
 use std::fmt::Write;
@@ -464,49 +465,24 @@ impl RegionsWang {
     }
 }
 
-/// One step of the rule, before any decision is built around it.
-struct Advance {
-    step: Step,
-    /// M and N before the step (-1 for an absent passive axis).
-    discriminants: [i64; 2],
-    /// Whether each passive axis stepped, 0 or 1.
-    moves: [u16; 2],
-    tie: bool,
-}
-
 impl RegionsWang {
-    /// Eq. (8) once: the step and what decided it. Both [`Stepper::next_step`]
-    /// and [`Stepper::fill`] step through here, so the rule is written once.
+    /// M and N as the terms of the shared stepping rule ([`Terms`]): a
+    /// passive axis steps when its discriminant is positive, and at zero
+    /// (the line passing exactly half way) as the tie policy says; then eq.
+    /// (8), M_{i+1} = M_i + 2|Δy| - 2|Δx|(y_{i+1} - y_i). The active axes
+    /// step every time (section 2.2). Both [`Stepper::next_step`] and
+    /// [`Stepper::fill`] step through these, so the rule is written once.
     #[inline(always)]
-    fn advance(&mut self) -> Advance {
-        let [m, n] = self.discriminant;
-        // A passive axis steps when its discriminant is positive; zero is the
-        // line passing exactly half way, decided by the tie policy. Both are
-        // one comparison with `steps_above`, giving 0 or 1, and the step is
-        // built from those bits: no branch on the discriminants.
-        // All ones when the discriminant exceeds `steps_above` (their
-        // difference is negative; |M| < 2^34, so it cannot overflow), else
-        // 0: a mask built by a subtraction and a shift, which keeps a value
-        // when the axis steps. No compare-and-select, no branch: the fewest
-        // instructions per step, in wasm as natively.
-        let mask = [(self.steps_above - m) >> 63, (self.steps_above - n) >> 63];
-        // Active axes progress one unit at a time (section 2.2).
-        let step = Step(
-            self.active_step.0
-                | (self.passive_step[0].0 & mask[0] as u16)
-                | (self.passive_step[1].0 & mask[1] as u16),
-        );
-        // Eq. (8): M_{i+1} = M_i + 2 dy - 2 dx (y_{i+1} - y_i).
-        self.discriminant = [
-            m + self.increment[0] - (self.decrement & mask[0]),
-            n + self.increment[1] - (self.decrement & mask[1]),
-        ];
-        let moves = mask.map(|m| (m & 1) as u16);
-        Advance {
-            step,
-            discriminants: [m, n],
-            moves,
-            tie: m == 0 || n == 0,
+    fn terms(&self) -> Terms<2> {
+        Terms {
+            always: self.active_step,
+            terms: [0, 1].map(|i| Term {
+                value: self.discriminant[i],
+                increment: self.increment[i],
+                decrement: self.decrement,
+                steps_above: self.steps_above,
+                step: self.passive_step[i],
+            }),
         }
     }
 }
@@ -519,12 +495,13 @@ impl Stepper for RegionsWang {
             return None;
         }
         self.remaining -= 1;
-        let Advance {
-            step,
-            discriminants: [m, n],
-            moves,
-            tie,
-        } = self.advance();
+        let [m, n] = self.discriminant;
+        let mut terms = self.terms();
+        let step = terms.step();
+        self.discriminant = terms.terms.map(|t| t.value);
+        let moves = self.passive_step.map(|p| (step.0 & p.0 != 0) as u16);
+        // An absent passive axis holds -1: it never ties.
+        let tie = m == 0 || n == 0;
         let count = self.geometry.passive_count;
         let (region, corner) = if count == 0 {
             (Region::NoPassive, Corner::NoPassive)
@@ -543,35 +520,16 @@ impl Stepper for RegionsWang {
         Some((step, why))
     }
 
-    /// The same steps as [`Stepper::next_step`], in a loop that does
-    /// nothing else: recording a long line costs little more than the
-    /// arithmetic of eq. (8). Nor does the displacement need a count: the
-    /// active axes moved every step, and eq. (8) summed over the run says
-    /// how often a passive axis did, D_end = D_start + taken·2|Δa| -
-    /// moves·2|Δx|.
+    /// The same steps as [`Stepper::next_step`], through the branch-free
+    /// recording loop the integer line rules share ([`Terms`]): eq. (8) per
+    /// passive axis, an absent one a term that never steps, and no decision
+    /// built.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
-        let start = self.discriminant;
-        for slot in &mut out[..taken] {
-            *slot = self.advance().step;
-        }
+        let mut terms = self.terms();
+        let displacement = terms.fill(&mut out[..taken]);
+        self.discriminant = terms.terms.map(|t| t.value);
         self.remaining -= taken as u64;
-        let g = self.geometry;
-        let mut displacement = [0; MAX_AXES];
-        for axis in (0..3).filter(|a| g.active_mask >> a & 1 == 1) {
-            displacement[axis] = self.mirror.sign(axis) * taken as i64;
-        }
-        for (i, &axis) in g.passive[..g.passive_count as usize].iter().enumerate() {
-            // In i128: taken · 2|Δa| reaches 2^63 on the longest lines.
-            let moves = if taken == 0 {
-                0
-            } else {
-                ((start[i] as i128 + taken as i128 * self.increment[i] as i128
-                    - self.discriminant[i] as i128)
-                    / self.decrement as i128) as i64
-            };
-            displacement[axis as usize] = self.mirror.sign(axis as usize) * moves;
-        }
         Filled {
             steps: taken,
             displacement,

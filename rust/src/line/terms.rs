@@ -1,16 +1,16 @@
-//! The recording loop shared by the integer line rules whose passive axes
-//! each keep one discriminant: Saleem's error terms (bresenham3d) and Wang's
-//! n-axis discriminants (nd). Both rules have the same shape per passive
+//! The stepping rule shared by the integer line rules whose passive axes
+//! each keep one discriminant: Saleem's error terms (bresenham2d and 3d)
+//! and Wang's discriminants (regions, nd). Both rules have the same shape per passive
 //! axis and step:
 //!
 //! ```text
 //! the axis steps when  value > steps_above;   then  value += increment - (decrement if it stepped)
 //! ```
 //!
-//! so one loop, with no branch on the values, records either. The steppers'
-//! own `next_step` (which builds the decision a learner reads) stays the
-//! reference; `tests` below and the property tests check that both give the
-//! same steps.
+//! so one loop, with no branch on the values, records any of them. Regions
+//! also takes its single steps here; the others' `next_step` (which builds
+//! the decision a learner reads) keeps the rule in the paper's words, and
+//! the property tests check that both give the same steps.
 
 use crate::grid::{MAX_AXES, Step};
 use crate::trace::TiePolicy;
@@ -106,6 +106,12 @@ impl<const N: usize> Terms<N> {
                 .iter_mut()
                 .fold(always, |bits, term| bits | term.advance()),
         )
+    }
+
+    /// One step, for a stepper that builds its decision around it.
+    #[inline(always)]
+    pub fn step(&mut self) -> Step {
+        Self::advance(self.always.0, &mut self.terms)
     }
 
     /// Records `out.len()` steps, and returns where they moved per axis.
