@@ -62,11 +62,9 @@ pub enum Region {
     G,
     H,
     O,
-    /// Type ② lines (all axes active) have no passive axis and no region.
-    NoPassive,
 }
 
-pub const REGION_LABELS: &[&str] = &["a", "b", "c", "d", "e", "f", "g", "h", "o", "-"];
+pub const REGION_LABELS: &[&str] = &["a", "b", "c", "d", "e", "f", "g", "h", "o"];
 
 /// The corner a step goes to: A = first passive axis steps, B = neither,
 /// C = second passive axis steps, D = both (Wang Fig. 4a).
@@ -76,10 +74,9 @@ pub enum Corner {
     B,
     C,
     D,
-    NoPassive,
 }
 
-pub const CORNER_LABELS: &[&str] = &["A", "B", "C", "D", "-"];
+pub const CORNER_LABELS: &[&str] = &["A", "B", "C", "D"];
 
 impl Region {
     /// The paper's rule for this region, section 2.5 (1)-(9), word for word
@@ -99,9 +96,6 @@ impl Region {
             Region::H => "(8) M > 0 and N = 0: the line crosses segment h; D or A may be selected.",
             Region::O => {
                 "(9) M = 0 and N = 0: the line crosses the centre o; A, B, C or D may be selected."
-            }
-            Region::NoPassive => {
-                "All three axes are active (type ②): every step goes to the opposite corner."
             }
         }
     }
@@ -142,8 +136,9 @@ impl Corner {
 pub struct RegionsWhy {
     /// M and N before the step (eq. 6); None for an absent passive axis.
     pub discriminants: [Option<i64>; 2],
-    pub region: Region,
-    pub corner: Corner,
+    /// None on a type ② line: no passive axis, so no face decides.
+    pub region: Option<Region>,
+    pub corner: Option<Corner>,
     /// A zero discriminant decided this step (through the tie policy).
     pub tie: bool,
     pub tie_policy: TiePolicy,
@@ -165,12 +160,12 @@ impl Decision for RegionsWhy {
         Column {
             name: "region",
             kind: ColumnKind::Category(REGION_LABELS),
-            doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, centre o (Wang section 2.5); '-' for type ② lines.",
+            doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, centre o (Wang section 2.5); none on type ② lines, which have no passive axis.",
         },
         Column {
             name: "corner",
             kind: ColumnKind::Category(CORNER_LABELS),
-            doc: "The corner the step goes to: A = first passive axis steps, B = neither, C = second, D = both.",
+            doc: "The corner the step goes to: A = first passive axis steps, B = neither, C = second, D = both; none on type ② lines.",
         },
         Column {
             name: "tie",
@@ -182,8 +177,8 @@ impl Decision for RegionsWhy {
     fn write(&self, row: &mut [f64]) {
         row[0] = self.discriminants[0].map_or(f64::NAN, |v| v as f64);
         row[1] = self.discriminants[1].map_or(f64::NAN, |v| v as f64);
-        row[2] = self.region as u8 as f64;
-        row[3] = self.corner as u8 as f64;
+        row[2] = self.region.map_or(f64::NAN, |r| r as u8 as f64);
+        row[3] = self.corner.map_or(f64::NAN, |c| c as u8 as f64);
         row[4] = self.tie as u8 as f64;
     }
 
@@ -195,7 +190,7 @@ impl Decision for RegionsWhy {
         let g = &self.geometry;
         let mut s = g.active_phrase();
         let [m, n] = self.discriminants;
-        let Some(m) = m else {
+        let (Some(m), Some(region), Some(corner)) = (m, self.region, self.corner) else {
             let _ = write!(
                 s,
                 ", so the step goes to the opposite corner {}.",
@@ -207,7 +202,6 @@ impl Decision for RegionsWhy {
         if let Some(n) = n {
             let _ = write!(s, " and N = {}", signed_comparison(n));
         }
-        let region = self.region;
         match region {
             Region::A | Region::B | Region::C | Region::D => {
                 let _ = write!(
@@ -239,7 +233,7 @@ impl Decision for RegionsWhy {
         let _ = write!(
             s,
             ", and the step goes to {} {}.",
-            self.corner.label(),
+            corner.label(),
             step_target(step, 3)
         );
         s
@@ -456,9 +450,9 @@ impl Stepper for RegionsWang {
         } = self.advance();
         let count = self.geometry.passive_count;
         let (region, corner) = if count == 0 {
-            (Region::NoPassive, Corner::NoPassive)
+            (None, None)
         } else {
-            (Region::of(m, n), Corner::of(moves[0], moves[1]))
+            (Some(Region::of(m, n)), Some(Corner::of(moves[0], moves[1])))
         };
         let why = RegionsWhy {
             discriminants: [(count > 0).then_some(m), (count > 1).then_some(n)],
@@ -599,9 +593,9 @@ mod tests {
         .collect();
         assert_eq!(points, expected);
         // Step 5 (M = 0, N = 10 > 0) is segment g: a tie between C and D.
-        assert_eq!(steps[4].1.region, Region::G);
+        assert_eq!(steps[4].1.region, Some(Region::G));
         assert!(steps[4].1.tie);
-        assert_eq!(steps[4].1.corner, Corner::D);
+        assert_eq!(steps[4].1.corner, Some(Corner::D));
     }
 
     #[test]
@@ -623,7 +617,7 @@ mod tests {
         // With ties held, step 5 stays at y = 3 (Saleem's strict rule).
         let steps = run([0, 0, 0], [10, 7, 6], TiePolicy::Hold);
         assert_eq!(steps[4].0, Point::new(&[5, 3, 3]));
-        assert_eq!(steps[4].1.corner, Corner::C);
+        assert_eq!(steps[4].1.corner, Some(Corner::C));
         assert_eq!(steps.last().unwrap().0, Point::new(&[10, 7, 6]));
     }
 
@@ -675,5 +669,21 @@ mod tests {
         assert_eq!(t.metrics().ties, 1);
         let note = &t.segments()[0].setup_note;
         assert!(note.contains("M_1 = 2|Δy| - |Δx| = 2·7 - 10 = 4"), "{note}");
+    }
+
+    #[test]
+    fn a_type_two_line_has_no_region_or_corner_rather_than_a_label() {
+        // (0,0,0)->(3,3,3): all three axes active (Wang section 2.2, type ②),
+        // so no discriminant, no exit face and no corner decides any step.
+        let t =
+            crate::trace_json(r#"{"algorithm": "regions", "from": [0, 0, 0], "to": [3, 3, 3]}"#)
+                .unwrap();
+        let d = t.decisions(0, 3);
+        assert!(d.columns[0].iter().chain(&d.columns[1]).all(|v| v.is_nan()));
+        let none = f64::from(crate::trace::NO_VALUE);
+        assert_eq!(d.columns[2], [none; 3]);
+        assert_eq!(d.columns[3], [none; 3]);
+        assert_eq!(d.columns[4], [0.0; 3]);
+        assert!(t.explain(0).contains("opposite corner"), "{}", t.explain(0));
     }
 }
