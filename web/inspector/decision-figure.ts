@@ -10,6 +10,7 @@
  *   candidate, the one the step took marked.
  * Nothing else is drawn: the table of values above it has every column.
  */
+import { readDecision } from '../core/export.js';
 import type { ColumnSpec } from '../core/types.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
@@ -21,11 +22,14 @@ function svg<K extends keyof SVGElementTagNameMap>(tag: K, attributes: Record<st
   return e;
 }
 
-/** A decision's values by column name; NaN where a column does not apply. */
+/** A decision's values by column name, as the core gives them (NaN or NO_VALUE where a column does not apply). */
 export type DecisionRow = Record<string, number>;
 
+/** The label of category column `name`, or undefined where it does not apply to the step. */
 function label(columns: readonly ColumnSpec[], name: string, value: number): string | undefined {
-  return columns.find((c) => c.name === name)?.labels?.[value];
+  const column = columns.find((c) => c.name === name);
+  const readable = column && readDecision(column, value);
+  return typeof readable === 'string' ? readable : undefined;
 }
 
 /**
@@ -109,8 +113,8 @@ export function decisionFigure(columns: readonly ColumnSpec[], row: DecisionRow 
   if (has('region') && has('corner')) {
     const region = label(columns, 'region', row.region!);
     const corner = label(columns, 'corner', row.corner!);
-    // '-' marks a line with no passive axis (Wang's type ②): no face decides.
-    if (region && corner && region !== '-' && corner !== '-') return regionFace(region, corner);
+    // A line with no passive axis (Wang's type ②) has no region: no face decides.
+    if (region && corner) return regionFace(region, corner);
     return undefined;
   }
   if (has('threshold')) {
