@@ -7,7 +7,7 @@
 import { describe, expect, it } from 'vitest';
 import { algorithms, NO_VALUE, trace, traceToJson } from '../web/core/index.js';
 import type { AlgorithmInfo, Trace } from '../web/core/index.js';
-import { distanceToLine, expectEnds, expectUnitSteps, pointsOf } from './helpers.js';
+import { distanceToLine, everyDirection, expectEnds, expectUnitSteps, pointsOf } from './helpers.js';
 
 interface Promises {
   /** 'any': one unit on any number of axes per step (26-connected); 'one': one axis per step (6-connected). */
@@ -49,13 +49,6 @@ const dimsOf = (a: AlgorithmInfo) => Math.min(Math.max(3, a.minDims), a.maxDims)
 /** The options of a move by `a` between 3-axis points, cut to its axes. */
 function move(a: AlgorithmInfo, from: number[], to: number[]) {
   return { algorithm: a.id, from: from.slice(0, dimsOf(a)), to: to.slice(0, dimsOf(a)), ...promises(a).exact };
-}
-
-/** Every sign pattern of |Δ| = `magnitudes` from `from`. */
-function everyDirection(from: number[], magnitudes: number[]): number[][] {
-  const out: number[][] = [];
-  for (let bits = 0; bits < 1 << magnitudes.length; bits++) out.push(magnitudes.map((m, i) => from[i]! + ((bits >> i) & 1 ? -m : m)));
-  return out;
 }
 
 /** Checks what every trace of `a` promises: ends, step count, connectivity, distance from the line. */

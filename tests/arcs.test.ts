@@ -11,20 +11,8 @@
 import { describe, expect, it } from 'vitest';
 import { algorithms, trace } from '../web/core/index.js';
 import type { AlgorithmInfo, Trace } from '../web/core/index.js';
-import { expectEnds, rejection } from './helpers.js';
-
-type Plane = 'xy' | 'zx' | 'yz';
-const PLANES: Plane[] = ['xy', 'zx', 'yz'];
-/** Grid axes of (u, v, normal) per plane. */
-const AXES: Record<Plane, [number, number, number]> = { xy: [0, 1, 2], zx: [2, 0, 1], yz: [1, 2, 0] };
-
-/** A grid point from plane coordinates (u, v) and a height n on the normal axis. */
-function inPlane(plane: Plane, u: number, v: number, n: number): number[] {
-  const p = [0, 0, 0];
-  const [a, b, c] = AXES[plane];
-  [p[a], p[b], p[c]] = [u, v, n];
-  return p;
-}
+import { expectEnds, inPlane, PLANE_AXES, PLANES, rejection } from './helpers.js';
+import type { Plane } from './helpers.js';
 
 const ARCS: AlgorithmInfo[] = (await algorithms()).filter((a) => a.family === 'arc');
 
@@ -43,7 +31,7 @@ const RADIAL_BOUND: Record<string, (t: Trace, r: number, sweep: number) => numbe
 };
 
 /** `to` raised by `rise` along the plane's normal axis (a helix's end). */
-const raised = (plane: Plane, to: number[], rise: number) => to.map((c, i) => (i === AXES[plane][2] ? c + rise : c));
+const raised = (plane: Plane, to: number[], rise: number) => to.map((c, i) => (i === PLANE_AXES[plane][2] ? c + rise : c));
 
 /** The options of an arc by `a`, a helix rising `rise`; arc-segments in chords of 3 units unless `chords` says otherwise. */
 function arcOptions(a: AlgorithmInfo, plane: Plane, from: number[], to: number[], center: number[], dir: 'cw' | 'ccw', rise = 0, chords: Record<string, number> = { segmentLength: 3 }) {
@@ -59,7 +47,7 @@ function arcOptions(a: AlgorithmInfo, plane: Plane, from: number[], to: number[]
  * of radius 2^20 has 1.5 million.
  */
 function expectArc(a: AlgorithmInfo, t: Trace, plane: Plane, center: number[], r: number, sweep: number, rise = 0): Set<number> {
-  const [ua, va, na] = AXES[plane];
+  const [ua, va, na] = PLANE_AXES[plane];
   const p = t.points;
   const octants = new Set<number>();
   let [turned, worst] = [0, 0];
@@ -90,8 +78,8 @@ describe('the catalogue', () => {
 describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
   // r = 5 about a centre in the negative quadrant (u, v) = (-7, -3), at height -4.
   const [cu, cv, height, r] = [-7, -3, -4, 5];
-  const center = (plane: Plane) => inPlane(plane, cu, cv, 9); // the normal coordinate of a centre is ignored
-  const at = (plane: Plane, angle: number) => inPlane(plane, cu + Math.round(r * Math.cos(angle)), cv + Math.round(r * Math.sin(angle)), height);
+  const center = (plane: Plane) => inPlane(plane, [cu, cv, 9]); // the normal coordinate of a centre is ignored
+  const at = (plane: Plane, angle: number) => inPlane(plane, [cu + Math.round(r * Math.cos(angle)), cv + Math.round(r * Math.sin(angle)), height]);
 
   it.each(PLANES.flatMap((plane) => (['ccw', 'cw'] as const).map((dir) => [plane, dir] as const)))(
     'runs quarter, half and full circles in %s, %s',
@@ -105,7 +93,7 @@ describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
         expectEnds(t, from, a.id === 'helix' ? raised(plane, to, rise) : to);
         const octants = expectArc(a, t, plane, center(plane), r, sign * turn * 2 * Math.PI, rise);
         if (turn === 1) {
-          expect(t.point(t.steps).filter((_, i) => i !== AXES[plane][2])).toEqual(from.filter((_, i) => i !== AXES[plane][2]));
+          expect(t.point(t.steps).filter((_, i) => i !== PLANE_AXES[plane][2])).toEqual(from.filter((_, i) => i !== PLANE_AXES[plane][2]));
           expect([...octants].sort()).toEqual([0, 1, 2, 3, 4, 5, 6, 7]);
         }
       }
@@ -118,8 +106,8 @@ describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
     for (const radius of [1, 2]) {
       for (const plane of PLANES) {
         for (const dir of ['ccw', 'cw'] as const) {
-          const from = inPlane(plane, -3 + radius, -8, 2);
-          const c = inPlane(plane, -3, -8, 0);
+          const from = inPlane(plane, [-3 + radius, -8, 2]);
+          const c = inPlane(plane, [-3, -8, 0]);
           const t = await trace(arcOptions(a, plane, from, from, c, dir, a.id === 'helix' ? 1 : 0, { segmentLength: 1 }));
           expectEnds(t, from, a.id === 'helix' ? raised(plane, from, 1) : from);
           const octants = expectArc(a, t, plane, c, radius, (dir === 'ccw' ? 2 : -2) * Math.PI, a.id === 'helix' ? 1 : 0);

@@ -61,3 +61,25 @@ export function distanceToLine(p: number[], a: number[], b: number[]): number {
   const rr = r.reduce((s, v) => s + v * v, 0);
   return Math.sqrt(Math.max(0, rr - (rd * rd) / dd));
 }
+
+/** Every sign pattern of |Δ| = `magnitudes` from `from`: one end point per pattern. */
+export function everyDirection(from: number[], magnitudes: number[]): number[][] {
+  const ends: number[][] = [];
+  for (let bits = 0; bits < 1 << magnitudes.length; bits++) ends.push(magnitudes.map((m, a) => from[a]! + ((bits >> a) & 1 ? -m : m)));
+  return ends;
+}
+
+/** The planes of G17, G18, G19. */
+export type Plane = 'xy' | 'zx' | 'yz';
+export const PLANES: Plane[] = ['xy', 'zx', 'yz'];
+
+/** Grid axes of a plane's (u, v, normal): G17 (x, y; z), G18 (z, x; y), G19 (y, z; x). */
+export const PLANE_AXES: Record<Plane, [number, number, number]> = { xy: [0, 1, 2], zx: [2, 0, 1], yz: [1, 2, 0] };
+
+/** Grid coordinates of plane coordinates (u, v) at height n on the plane's normal axis. */
+export function inPlane(plane: Plane, [u, v, n]: number[]): number[] {
+  const p = [0, 0, 0];
+  const [a, b, c] = PLANE_AXES[plane];
+  [p[a], p[b], p[c]] = [u!, v!, n!];
+  return p;
+}
