@@ -22,6 +22,8 @@ interface Promises {
    * states no such bound.
    */
   axisBound: number | null;
+  /** Amanatides & Woo: every cell visited is one the segment passes through. */
+  cellsOnSegment?: true;
   /** Options that make the rule exact enough for its bound (liu-float's decimals). */
   exact?: Record<string, unknown>;
 }
@@ -34,7 +36,7 @@ const PROMISES: Record<string, Promises> = {
   // Wang section 4: "will not deviate ... when more than two decimals are reserved".
   'liu-float': { axesPerStep: 'any', steps: 'longest', reverses: 'not stated', axisBound: 0.5, exact: { decimals: 6 } },
   greedy: { axesPerStep: 'one', steps: 'sum', reverses: false, axisBound: null },
-  walk6: { axesPerStep: 'one', steps: 'sum', reverses: true, axisBound: null },
+  walk6: { axesPerStep: 'one', steps: 'sum', reverses: true, axisBound: null, cellsOnSegment: true },
   // Rounding to nearest: within 1/2, up to the float error of the accumulators.
   dda: { axesPerStep: 'any', steps: 'longest', reverses: 'not stated', axisBound: 0.5 + 1e-9 },
 };
@@ -49,6 +51,24 @@ const dimsOf = (a: AlgorithmInfo) => Math.min(Math.max(3, a.minDims), a.maxDims)
 /** The options of a move by `a` between 3-axis points, cut to its axes. */
 function move(a: AlgorithmInfo, from: number[], to: number[]) {
   return { algorithm: a.id, from: from.slice(0, dimsOf(a)), to: to.slice(0, dimsOf(a)), ...promises(a).exact };
+}
+
+/**
+ * Whether the cell [c - 1/2, c + 1/2]^n meets the segment from -> to: the
+ * t-ranges (0 <= t <= 1) of its slabs along each axis overlap.
+ */
+function meetsSegment(cell: number[], from: number[], to: number[]): boolean {
+  let [lo, hi] = [0, 1];
+  cell.forEach((c, a) => {
+    const d = to[a]! - from[a]!;
+    if (d === 0) {
+      if (Math.abs(c - from[a]!) > 0.5) hi = -1;
+      return;
+    }
+    const [t0, t1] = [(c - 0.5 - from[a]!) / d, (c + 0.5 - from[a]!) / d].sort((p, q) => p - q);
+    [lo, hi] = [Math.max(lo, t0!), Math.min(hi, t1!)];
+  });
+  return lo <= hi;
 }
 
 /** Checks what every trace of `a` promises: ends, step count, connectivity, distance from the line. */
@@ -66,6 +86,7 @@ function expectPromises(a: AlgorithmInfo, t: Trace, from: number[], to: number[]
     points.forEach((q, k) => q.forEach((c, i) => (worst = Math.max(worst, Math.abs(c - from[i]! - ((to[i]! - from[i]!) * k) / t.steps)))));
     expect(worst, what).toBeLessThanOrEqual(p.axisBound);
   }
+  if (p.cellsOnSegment) for (const cell of points) expect(meetsSegment(cell, from, to), `${what}: ${JSON.stringify(cell)}`).toBe(true);
   for (let k = 0; k <= t.steps; k += Math.max(1, Math.floor(t.steps / 50))) {
     expect(t.deviation[k], what).toBeCloseTo(distanceToLine(points[k]!, from, to), 6);
   }
@@ -355,24 +376,6 @@ describe('golden cases from the documents', () => {
     expect(Array.from(t.decisions.crosses!)).toEqual(crossings.map((c) => c.axis));
     expect(t.decisions.tX![0]).toBeCloseTo(1 / 16, 15);
     expect(t.decisions.tY![0]).toBeCloseTo(1 / 6, 15);
-  });
-
-  it('walk6: visits exactly the cells the segment passes through', async () => {
-    // A cell [c - 1/2, c + 1/2]^3 meets the segment when the t-ranges of
-    // its three slabs overlap.
-    const from = [0, 0, 0];
-    const to = [13, -5, 8];
-    const t = await trace({ algorithm: 'walk6', from, to });
-    for (const cell of pointsOf(t)) {
-      let [lo, hi] = [0, 1];
-      cell.forEach((c, a) => {
-        const d = to[a]! - from[a]!;
-        if (d === 0) return;
-        const [t0, t1] = [(c - 0.5 - from[a]!) / d, (c + 0.5 - from[a]!) / d].sort((p, q) => p - q);
-        [lo, hi] = [Math.max(lo, t0!), Math.min(hi, t1!)];
-      });
-      expect(lo, JSON.stringify(cell)).toBeLessThanOrEqual(hi);
-    }
   });
 
   it('dda: the textbook float DDA on (0,0) -> (14,1), whose seven additions of 1/14 miss 0.5', async () => {
