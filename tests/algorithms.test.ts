@@ -135,6 +135,12 @@ describe.each(LINES.map((a) => [a.id, a] as const))('%s', (_, a) => {
     const shift = (p: number[], by: number) => p.map((c, i) => (i === 0 ? c + by : c));
     const other = await trace({ ...m, from: shift(m.from, 80 - 2 * big), to: shift(m.to, 80 - 2 * big) });
     expect(pointsOf(other).map((p) => shift(p, 2 * big - 80))).toEqual(pointsOf(t));
+    // Every axis count it takes, each axis at ±2^30 (alternating) and moving toward 0.
+    for (let dims = a.minDims; dims <= a.maxDims; dims++) {
+      const from = Array.from({ length: dims }, (_, i) => (i % 2 ? -big : big));
+      const to = from.map((c, i) => c - Math.sign(c) * (30 - 4 * i));
+      expectPromises(a, await trace({ algorithm: a.id, from, to, ...promises(a).exact }), from, to);
+    }
   });
 
   it('marks each category or flag cell as a label, 0 or 1, or NO_VALUE', async () => {

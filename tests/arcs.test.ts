@@ -95,6 +95,9 @@ describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
         if (turn === 1) {
           expect(t.point(t.steps).filter((_, i) => i !== PLANE_AXES[plane][2])).toEqual(from.filter((_, i) => i !== PLANE_AXES[plane][2]));
           expect([...octants].sort()).toEqual([0, 1, 2, 3, 4, 5, 6, 7]);
+          // Saleem's octant column (circle, helix) names all eight too.
+          const column = t.columns.find((c) => c.name === 'octant');
+          if (column) expect(new Set(Array.from(t.decisions.octant!, (v) => column.labels![v])).size).toBe(8);
         }
       }
     },
