@@ -2,19 +2,10 @@
 // Golden values: Wang et al. 2020 eq. (6), (8), (10) for (0,0,0)->(10,7,6),
 // as worked out in SEED-NOTES.md (they equal Liu's Table 1 point for point).
 import { describe, expect, it } from 'vitest';
-import { algorithms, trace, VoxpathError } from '../web/core/index.js';
+import { algorithms, NO_VALUE, readDecision, runGcode, trace, traceToCsv, traceToJson, traceToTable } from '../web/core/index.js';
+import { distanceToLine, rejection } from './helpers.js';
 
 const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
-
-/** Perpendicular distance from p to the line through a and b, straight from the definition. */
-function distanceToLine(p: number[], a: number[], b: number[]): number {
-  const d = b.map((v, i) => v - a[i]!);
-  const r = p.map((v, i) => v - a[i]!);
-  const dd = d.reduce((s, v) => s + v * v, 0);
-  const rd = r.reduce((s, v, i) => s + v * d[i]!, 0);
-  const rr = r.reduce((s, v) => s + v * v, 0);
-  return Math.sqrt(Math.max(0, rr - (rd * rd) / dd));
-}
 
 describe('trace (regions)', () => {
   it('reproduces the discriminants and points of eq. (6)-(10)', async () => {
@@ -67,8 +58,7 @@ describe('trace (regions)', () => {
     expect(Number.isNaN(one.decisions.face_v![0])).toBe(true);
     const diagonal = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [4, 4, 4] });
     expect(Array.from(diagonal.decisions.face_u!).every(Number.isNaN)).toBe(true);
-    const label = diagonal.columns.find((c) => c.name === 'face_u_axis')!.labels!;
-    expect(label[diagonal.decisions.face_u_axis![0]!]).toBe('-');
+    expect(diagonal.decisions.face_u_axis![0]).toBe(NO_VALUE);
   });
 
   it('measures each point against the ideal line and sums up the path', async () => {
@@ -143,31 +133,24 @@ describe('trace (regions)', () => {
 });
 
 describe('bad input', () => {
-  async function rejection(options: Record<string, unknown>): Promise<VoxpathError> {
-    const error = await trace(options as typeof LINE).then(
-      () => undefined,
-      (e: unknown) => e,
-    );
-    expect(error).toBeInstanceOf(VoxpathError);
-    return error as VoxpathError;
-  }
+  const rejected = (options: Record<string, unknown>) => rejection(trace(options as typeof LINE));
 
   it('names the option at fault', async () => {
-    expect((await rejection({ algorithm: 'regions', from: [0, 0], to: [1, 1] })).field).toBe('from');
-    expect((await rejection({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1] })).field).toBe('to');
-    const outside = await rejection({ algorithm: 'regions', from: [0, 0, 0], to: [0, 2 ** 31, 0] });
+    expect((await rejected({ algorithm: 'regions', from: [0, 0], to: [1, 1] })).field).toBe('from');
+    expect((await rejected({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1] })).field).toBe('to');
+    const outside = await rejected({ algorithm: 'regions', from: [0, 0, 0], to: [0, 2 ** 31, 0] });
     expect(outside.message).toBe('to: y = 2147483648 is outside +-2^30 (1073741824)');
     expect(outside.axis).toBe(1);
-    expect((await rejection({ algorithm: 'nope', from: [0, 0, 0], to: [1, 1, 1] })).field).toBe('algorithm');
-    expect((await rejection({ ...LINE, tie: 'maybe' })).field).toBe('tie');
-    expect((await rejection({ ...LINE, centre: [1, 1, 1] })).field).toBe('centre');
-    expect((await rejection({ ...LINE, from: [0, Number.NaN, 0] })).message).toBe('from: y must be a number, got "NaN"');
-    const long = await rejection({ ...LINE, to: [100000, 0, 0], maxSteps: 1000 });
+    expect((await rejected({ algorithm: 'nope', from: [0, 0, 0], to: [1, 1, 1] })).field).toBe('algorithm');
+    expect((await rejected({ ...LINE, tie: 'maybe' })).field).toBe('tie');
+    expect((await rejected({ ...LINE, centre: [1, 1, 1] })).field).toBe('centre');
+    expect((await rejected({ ...LINE, from: [0, Number.NaN, 0] })).message).toBe('from: y must be a number, got "NaN"');
+    const long = await rejected({ ...LINE, to: [100000, 0, 0], maxSteps: 1000 });
     expect(long.field).toBe('maxSteps');
   });
 
   it('keeps working after an error', async () => {
-    await rejection({ algorithm: 'regions', from: [0], to: [1] });
+    await rejected({ algorithm: 'regions', from: [0], to: [1] });
     expect((await trace(LINE)).steps).toBe(10);
   });
 });
@@ -181,5 +164,46 @@ describe('algorithms()', () => {
     expect(regions.family).toBe('line');
     expect(regions.defaultTie).toBe('advance');
     expect(regions.errata.some((e) => e.includes('Table 2'))).toBe(true);
+  });
+});
+
+describe('decision values that do not apply to a step', () => {
+  // A G-code program's trace has the columns of its line and its arc
+  // algorithm. G1 to (4, 2) steps at 4 steps/mm, then G2 about (4, 0) to
+  // (4, -2): steps 0-3 are regions' (no octant: NO_VALUE, not octant "1"),
+  // steps 4-9 Saleem's circle's (no region: NO_VALUE, not region "a").
+  const PROGRAM = 'G21 G90\nG1 X1 Y0.5\nG2 X1 Y-0.5 I0 J-0.5\n';
+
+  it('hold NO_VALUE in category and flag columns, NaN in number columns', async () => {
+    const t = (await runGcode(PROGRAM, { stepsPerMm: 4 })).trace;
+    expect(t.steps).toBe(10);
+    expect(Array.from(t.decisions.octant!.subarray(0, 4))).toEqual([NO_VALUE, NO_VALUE, NO_VALUE, NO_VALUE]);
+    expect(Array.from(t.decisions.slow_steps!.subarray(0, 4))).toEqual([NO_VALUE, NO_VALUE, NO_VALUE, NO_VALUE]);
+    expect(Array.from(t.decisions.region!.subarray(4))).toEqual(Array(6).fill(NO_VALUE));
+    expect(Array.from(t.decisions.tie!.subarray(4))).toEqual(Array(6).fill(NO_VALUE));
+    expect(Array.from(t.decisions.M!.subarray(4)).every(Number.isNaN)).toBe(true);
+    // Where a column does apply, its values are labels and flags as usual.
+    const octant = t.columns.find((c) => c.name === 'octant')!;
+    expect(readDecision(octant, t.decisions.octant![4]!)).toBe('2');
+    expect(readDecision(octant, NO_VALUE)).toBeNull();
+  });
+
+  it('read as null in JSON, empty in CSV and - in a table', async () => {
+    const t = (await runGcode(PROGRAM, { stepsPerMm: 4 })).trace;
+    const json = traceToJson(t).decisions;
+    expect(json.octant!.slice(0, 5)).toEqual([null, null, null, null, '2']);
+    expect(json.region!.slice(3, 5)).toEqual(['b', null]);
+    expect(json.tie!.slice(3, 5)).toEqual([false, null]);
+    const csv = traceToCsv(t).split('\n');
+    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,octant,fast,error_stay,error_move,slow_steps,correction,deviation');
+    // Row 0 has no decision yet; row 1 is regions' step, row 5 the circle's
+    // first. Regions on (0,0,0)->(4,2,0): M = 2·2 - 4 = 0 and N = 2·0 - 4 = -4
+    // (eq. 10), so the line crosses the exit face at (0, -4/8) (M and N over 2|Δx|).
+    expect(csv[1]).toBe('0,0,0,0,,,,,,,,,,,,,,,,0.000000');
+    expect(csv[2]).toBe('1,1,1,0,0,-4,e,A,1,0,-0.5,+y,+z,,,,,,,0.447214');
+    expect(csv[6]).toBe('5,5,2,0,,,,,,,,,,2,x,1,2,0,0,0.236068');
+    const table = traceToTable(t).split('\n');
+    expect(table.find((row) => /^ *1 +1 +1 +0 /.test(row))).toMatch(/ 0 +-4 +e +A +1 +0 +-0\.5 +\+y +\+z +- +- +- +- +- +- +0\.447214$/);
+    expect(table.find((row) => /^ *5 +5 +2 +0 /.test(row))).toMatch(/ - +- +- +- +- +- +- +- +- +2 +x +1 +2 +0 +0 +0\.236068$/);
   });
 });

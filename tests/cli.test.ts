@@ -1,20 +1,12 @@
 // The CLI as users run it: `node bin/voxpath.js ...` (the compiled lib/, built by setup).
-import { spawnSync } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-
-const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
-
-function voxpath(...args: string[]) {
-  const r = spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8' });
-  return { code: r.status, stdout: r.stdout, stderr: r.stderr };
-}
+import { voxpath } from './helpers.js';
 
 const TRACE = ['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6'];
 
 describe('voxpath trace', () => {
   it('prints one JSON object in the documented shape', () => {
-    const r = voxpath(...TRACE, '--format', 'json');
+    const r = voxpath([...TRACE, '--format', 'json']);
     expect(r.code).toBe(0);
     const out = JSON.parse(r.stdout);
     expect(out.algorithm).toBe('regions');
@@ -33,18 +25,18 @@ describe('voxpath trace', () => {
   });
 
   it('defaults to JSON and prints CSV and a table for people', () => {
-    expect(JSON.parse(voxpath(...TRACE).stdout).steps).toBe(10);
-    const csv = voxpath(...TRACE, '--format', 'csv').stdout.trim().split('\n');
+    expect(JSON.parse(voxpath(TRACE).stdout).steps).toBe(10);
+    const csv = voxpath([...TRACE, '--format', 'csv']).stdout.trim().split('\n');
     expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,deviation');
     expect(csv).toHaveLength(12);
     expect(csv[5]).toBe('4,4,3,2,6,-2,a,A,0,0.3,-0.1,+y,+z,0.441129');
-    const table = voxpath(...TRACE, '--format', 'table').stdout;
+    const table = voxpath([...TRACE, '--format', 'table']).stdout;
     expect(table).toContain('Line type ①');
     expect(table).toMatch(/deviation: max 0\.441129/);
   });
 
   it('passes algorithm options through generated flags', () => {
-    const r = voxpath(...TRACE, '--tie', 'hold', '--max-steps', '100');
+    const r = voxpath([...TRACE, '--tie', 'hold', '--max-steps', '100']);
     expect(JSON.parse(r.stdout).points[5]).toEqual([5, 3, 3]);
   });
 
@@ -58,7 +50,7 @@ describe('voxpath trace', () => {
     [[...TRACE, '--tie'], /^voxpath: --tie needs a value/],
     [['frobnicate'], /^voxpath: unknown command 'frobnicate'/],
   ])('rejects %j with a one-line error and usage, exit 2', (args, message) => {
-    const r = voxpath(...args);
+    const r = voxpath(args);
     expect(r.code).toBe(2);
     expect(r.stdout).toBe('');
     const [first, second] = r.stderr.split('\n');
@@ -67,10 +59,28 @@ describe('voxpath trace', () => {
   });
 
   it('documents every algorithm and option in --help', () => {
-    const r = voxpath('--help');
+    const r = voxpath(['--help']);
     expect(r.code).toBe(0);
     expect(r.stdout).toContain('regions: Method of discriminate regions');
     expect(r.stdout).toContain('--max-steps N');
     expect(r.stdout).toContain('--tie advance|hold');
+  });
+});
+
+describe('voxpath trace: decision values that do not apply', () => {
+  // Wang's type ② line (0,0,0) -> (3,3,3), section 2.2: every axis is
+  // active, so no discriminant, region or corner decides a step.
+  const TYPE_2 = ['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '3,3,3'];
+
+  it('prints null in JSON, an empty cell in CSV and - in the table', () => {
+    const json = JSON.parse(voxpath(TYPE_2).stdout);
+    const none = [null, null, null];
+    expect(json.decisions).toEqual({ M: none, N: none, region: none, corner: none, tie: [false, false, false], face_u: none, face_v: none, face_u_axis: none, face_v_axis: none });
+    const csv = voxpath([...TYPE_2, '--format', 'csv']).stdout.trim().split('\n');
+    expect(csv.slice(1)).toEqual(['0,0,0,0,,,,,,,,,,0.000000', '1,1,1,1,,,,,0,,,,,0.000000', '2,2,2,2,,,,,0,,,,,0.000000', '3,3,3,3,,,,,0,,,,,0.000000']);
+    const table = voxpath([...TYPE_2, '--format', 'table']).stdout.split('\n');
+    expect(table).toContainEqual(expect.stringMatching(/^1 +1 +1 +1 +- +- +- +- +0 +- +- +- +- +0\.000000$/));
+    // Row 0 has no decision yet: blank, not '-'.
+    expect(table).toContainEqual(expect.stringMatching(/^0 +0 +0 +0 +0\.000000$/));
   });
 });

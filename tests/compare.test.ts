@@ -3,19 +3,15 @@
 // (0,0,0)->(10,7,6) and goes to (5,3,3) where Wang's M = 0 advances to
 // (5,4,3)); the circle r = 5 quarter of Saleem eq. 7-11 against its single
 // chord, as worked in rust/src/compare.rs.
-import { spawnSync } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { compare, trace, VoxpathError } from '../web/core/index.js';
+import { rejection, voxpath } from './helpers.js';
 
-const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
 const LINE = { from: [0, 0, 0], to: [10, 7, 6] };
 const QUARTER = { from: [5, 0, 0], to: [0, 5, 0], center: [0, 0, 0] };
 
-function voxpath(...args: string[]) {
-  const r = spawnSync(process.execPath, [BIN, 'compare', ...args], { encoding: 'utf8' });
-  return { code: r.status, stdout: r.stdout, stderr: r.stderr };
-}
+/** `voxpath compare ...args`. */
+const voxpathCompare = (...args: string[]) => voxpath(['compare', ...args]);
 
 describe('compare()', () => {
   it('finds where Wang and Saleem part, and why each stepped as it did', async () => {
@@ -75,19 +71,14 @@ describe('compare()', () => {
   });
 
   it('names the option at fault', async () => {
-    const rejection = (options: Record<string, unknown>) =>
-      compare(options as Parameters<typeof compare>[0]).then(
-        () => undefined,
-        (e: unknown) => e as VoxpathError,
-      );
-    const neither = await rejection({ algorithms: ['circle', 'arc-segments'], ...QUARTER, gcd: true });
-    expect(neither).toBeInstanceOf(VoxpathError);
-    expect(neither!.field).toBe('gcd');
-    expect(neither!.detail).toMatch(/^neither circle nor arc-segments takes this option/);
-    const missing = await rejection({ algorithms: ['circle', 'arc-segments'], from: [5, 0, 0], to: [0, 5, 0] });
-    expect([missing!.field, missing!.detail]).toEqual(['center', 'circle: missing: give one integer per axis, e.g. [0, 0, 0]']);
-    expect((await rejection({ algorithms: ['regions'], ...LINE }))!.field).toBe('algorithms');
-    expect((await rejection({ algorithms: ['regions', 'nope'], ...LINE }))!.field).toBe('algorithms');
+    const rejected = (options: Record<string, unknown>) => rejection(compare(options as Parameters<typeof compare>[0]));
+    const neither = await rejected({ algorithms: ['circle', 'arc-segments'], ...QUARTER, gcd: true });
+    expect(neither.field).toBe('gcd');
+    expect(neither.detail).toMatch(/^neither circle nor arc-segments takes this option/);
+    const missing = await rejected({ algorithms: ['circle', 'arc-segments'], from: [5, 0, 0], to: [0, 5, 0] });
+    expect([missing.field, missing.detail]).toEqual(['center', 'circle: missing: give one integer per axis, e.g. [0, 0, 0]']);
+    expect((await rejected({ algorithms: ['regions'], ...LINE })).field).toBe('algorithms');
+    expect((await rejected({ algorithms: ['regions', 'nope'], ...LINE })).field).toBe('algorithms');
   });
 
   it('compares traces already computed, with every differing cell', async () => {
@@ -121,7 +112,7 @@ describe('voxpath compare', () => {
   const ARGS = ['--algorithms', 'regions,bresenham3d', '--from', '0,0,0', '--to', '10,7,6'];
 
   it('prints the comparison as JSON by default', () => {
-    const r = voxpath(...ARGS);
+    const r = voxpathCompare(...ARGS);
     expect(r.code).toBe(0);
     const out = JSON.parse(r.stdout);
     expect(out.firstDifference.pointIndex).toBe(5);
@@ -130,21 +121,21 @@ describe('voxpath compare', () => {
   });
 
   it('prints a table for people and CSV rows per quantity', () => {
-    const table = voxpath(...ARGS, '--format', 'table').stdout;
+    const table = voxpathCompare(...ARGS, '--format', 'table').stdout;
     expect(table).toMatch(/^steps +10 +10$/m);
     expect(table).toContain('First difference: point 5 (after step 4): regions (5, 4, 3), bresenham3d (5, 3, 3).');
     expect(table).toContain("the tie policy 'advance' decides");
     expect(table).toContain('M = 0, N = 10, region = g, corner = D, tie = true');
     expect(table).toContain("the tie policy 'hold' says y holds");
     expect(table).toContain('Cells only in bresenham3d (1): (5, 3, 3)');
-    const csv = voxpath(...ARGS, '--format', 'csv').stdout.trim().split('\n');
+    const csv = voxpathCompare(...ARGS, '--format', 'csv').stdout.trim().split('\n');
     expect(csv[0]).toBe('quantity,regions,bresenham3d');
     expect(csv).toContain('first difference at point,5,5');
     expect(csv).toContain('point there,"(5, 4, 3)","(5, 3, 3)"');
   });
 
   it('takes the flags of both algorithms', () => {
-    const r = voxpath('--algorithms', 'circle,arc-segments', '--from', '5,0,0', '--to', '0,5,0', '--center', '0,0,0', '--segment-length', '100');
+    const r = voxpathCompare('--algorithms', 'circle,arc-segments', '--from', '5,0,0', '--to', '0,5,0', '--center', '0,0,0', '--segment-length', '100');
     expect(r.code).toBe(0);
     expect(JSON.parse(r.stdout).b.steps).toBe(5);
   });
@@ -157,7 +148,7 @@ describe('voxpath compare', () => {
     [['--algorithms', 'circle,arc-segments', '--from', '5,0,0', '--to', '0,5,0'], /^voxpath: --center: circle: missing/],
     [[...ARGS, '--format', 'xml'], /^voxpath: --format: expected json, csv or table, got 'xml'/],
   ])('rejects %j with a one-line error naming the flag, exit 2', (args, message) => {
-    const r = voxpath(...args);
+    const r = voxpathCompare(...args);
     expect(r.code).toBe(2);
     expect(r.stdout).toBe('');
     const [first, second] = r.stderr.split('\n');

@@ -1,19 +1,13 @@
 // G-code through the headless API (web/core, real wasm) and the CLI
 // (bin/voxpath.js). Expected numbers are worked by hand in the comments.
-import { spawnSync } from 'node:child_process';
 import { readFileSync, readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
+import { pulseTrains, runGcode } from '../web/core/index.js';
 import type { GcodeProgress } from '../web/core/index.js';
+import { rejection, voxpath } from './helpers.js';
 
-const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
 const SAMPLES = fileURLToPath(new URL('../public/samples/', import.meta.url));
-
-function voxpath(args: string[], input?: string) {
-  const r = spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8', input });
-  return { code: r.status, stdout: r.stdout, stderr: r.stderr };
-}
 
 // 1 mm squares at 2 steps/mm: each side is 2 steps along one axis.
 const SQUARE = '(square)\nG21 G90\nG1 X1 Y0 F600\nY1\nX0\nY0\n';
@@ -64,11 +58,8 @@ describe('runGcode', () => {
   });
 
   it('rejects bad settings naming the setting', async () => {
-    const error = await runGcode(SQUARE, { stepsPerMm: -1 }).catch((e: unknown) => e);
-    expect(error).toBeInstanceOf(VoxpathError);
-    expect((error as VoxpathError).field).toBe('stepsPerMm');
-    const unknown = await runGcode(SQUARE, { stepsPerMm: 1, lineAlgorithm: 'bresenham2d' }).catch((e: unknown) => e);
-    expect((unknown as VoxpathError).field).toBe('lineAlgorithm');
+    expect((await rejection(runGcode(SQUARE, { stepsPerMm: -1 }))).field).toBe('stepsPerMm');
+    expect((await rejection(runGcode(SQUARE, { stepsPerMm: 1, lineAlgorithm: 'bresenham2d' }))).field).toBe('lineAlgorithm');
   });
 
   it('runs long programs in slices, reporting progress, and can be cancelled', async () => {

@@ -6,16 +6,10 @@ import { describe, expect, it } from 'vitest';
 import { REFERENCES } from '../bench/reference/index.js';
 import type { ReferenceOptions } from '../bench/reference/index.js';
 import { algorithms, trace } from '../web/core/index.js';
+import { everyDirection, inPlane, PLANES } from './helpers.js';
 
 /** Every sign pattern of `magnitudes`, as moves from `from`. */
-function everyDirection(from: number[], magnitudes: number[]): ReferenceOptions[] {
-  const moves: ReferenceOptions[] = [];
-  for (let bits = 0; bits < 1 << magnitudes.length; bits++) {
-    const to = magnitudes.map((m, a) => from[a]! + ((bits >> a) & 1 ? -m : m));
-    moves.push({ from, to });
-  }
-  return moves;
-}
+const moves = (from: number[], magnitudes: number[]): ReferenceOptions[] => everyDirection(from, magnitudes).map((to) => ({ from, to }));
 
 // Lines of all seven of Wang's types (ties included: (10,7,6) has M = 0 at
 // step 5; (6,4,2) repeats with GCD 2), long ones crossing checkpoints, and
@@ -31,7 +25,7 @@ const LINES_3D = [
   [9, 0, 0],
   [0, 0, 0],
   [12345, 6789, 2345],
-].flatMap((m) => everyDirection([3, -2, 5], m));
+].flatMap((m) => moves([3, -2, 5], m));
 const LINES_2D = [
   [8, 3],
   [3, 8],
@@ -39,24 +33,16 @@ const LINES_2D = [
   [7, 0],
   [10, 3],
   [9999, 4321],
-].flatMap((m) => everyDirection([-4, 1], m));
+].flatMap((m) => moves([-4, 1], m));
 const LINES_ND = [
   [7, 3, 5, 1],
   [6, 6, 2, 0, 9],
   [3, 1, 4, 1, 5, 9],
-].flatMap((m) => everyDirection(m.map(() => 0), m).slice(0, 8));
-
-/** Grid coordinates of plane coordinates (u, v, n): G17 (x, y; z), G18 (z, x; y), G19 (y, z; x). */
-function inPlane(plane: string, [u, v, n]: number[]): number[] {
-  const axes = { xy: [0, 1, 2], zx: [2, 0, 1], yz: [1, 2, 0] }[plane]!;
-  const p = [0, 0, 0];
-  [p[axes[0]!], p[axes[1]!], p[axes[2]!]] = [u!, v!, n!];
-  return p;
-}
+].flatMap((m) => moves(m.map(() => 0), m).slice(0, 8));
 
 /** An arc given in plane coordinates, in every plane and both directions. */
 function everyPlane(from: number[], to: number[], center: number[], extra: Record<string, unknown> = {}): ReferenceOptions[] {
-  return ['xy', 'zx', 'yz'].flatMap((plane) =>
+  return PLANES.flatMap((plane) =>
     ['ccw', 'cw'].map((dir) => ({
       from: inPlane(plane, from),
       to: inPlane(plane, to),

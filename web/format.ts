@@ -2,6 +2,9 @@
 
 export { AXIS_NAMES } from './core/axes.js';
 
+/** What the page shows for a decision value where its column does not apply to the step. */
+export const NO_VALUE_TEXT = '—';
+
 /** "(3, 2, 2)": a grid point, in grid units. */
 export function formatPoint(coords: ArrayLike<number>): string {
   return `(${Array.from(coords).join(', ')})`;

@@ -169,7 +169,7 @@ fn digest(t: &Trace) -> TraceDigest {
 
 /// A decision value as people read it (see [`StepWhy::decisions`]).
 fn readable(column: &Column, value: f64) -> Value {
-    if value.is_nan() {
+    if column.kind.is_no_value(value) {
         return Value::Null;
     }
     match column.kind {

@@ -12,6 +12,10 @@ pub const MAX_AXES: usize = 6;
 /// Axis names in index order.
 pub const AXIS_NAMES: [&str; MAX_AXES] = ["x", "y", "z", "a", "b", "c"];
 
+/// Octants 1-8 of a plane (Saleem Fig. 1, counter-clockwise from the first
+/// axis): the labels of an octant column, which stores octant k as index k - 1.
+pub const OCTANT_LABELS: [&str; 8] = ["1", "2", "3", "4", "5", "6", "7", "8"];
+
 /// Largest accepted |coordinate| of an input point, in grid units.
 pub const COORD_LIMIT: i64 = 1 << 30;
 

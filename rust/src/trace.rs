@@ -59,6 +59,13 @@ impl TiePolicy {
     }
 }
 
+/// The value a category or flag column holds at a step it does not apply to
+/// (a correction step has no fast axis, a line step of a G-code program no
+/// octant): an index no label list reaches, and neither 0 nor 1, so it fits
+/// the byte arrays such columns are read into and is never taken for a real
+/// value. Number columns hold NaN there instead.
+pub const NO_VALUE: u8 = 255;
+
 /// How to read the values of one decision column.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ColumnKind {
@@ -66,10 +73,38 @@ pub enum ColumnKind {
     Int,
     /// A real number.
     Float,
-    /// An index into the labels.
+    /// An index into the labels (fewer than [`NO_VALUE`] of them).
     Category(&'static [&'static str]),
     /// 0 or 1.
     Flag,
+}
+
+impl ColumnKind {
+    /// What a column of this kind holds at a step it does not apply to:
+    /// [`NO_VALUE`] for categories and flags, NaN for numbers.
+    pub fn no_value(self) -> f64 {
+        match self {
+            ColumnKind::Category(_) | ColumnKind::Flag => f64::from(NO_VALUE),
+            ColumnKind::Int | ColumnKind::Float => f64::NAN,
+        }
+    }
+
+    /// True when `value` says the column does not apply to its step.
+    pub fn is_no_value(self, value: f64) -> bool {
+        value.is_nan() || value == self.no_value()
+    }
+
+    /// A value a stepper wrote, as the trace hands it out: a stepper marks
+    /// a column that does not apply with NaN whatever its kind
+    /// ([`Decision::write`]), and a category or flag cell turns that into
+    /// [`NO_VALUE`] here.
+    fn cell(self, written: f64) -> f64 {
+        if written.is_nan() {
+            self.no_value()
+        } else {
+            written
+        }
+    }
 }
 
 /// One decision column: a quantity the algorithm computes at each step.
@@ -86,7 +121,8 @@ pub trait Decision: Copy {
     const COLUMNS: &'static [Column];
 
     /// Writes this decision's values, one per column (NaN where a column does
-    /// not apply to this step).
+    /// not apply to this step, whatever its kind: the trace hands a category
+    /// or flag cell out as [`NO_VALUE`]).
     fn write(&self, row: &mut [f64]);
 
     /// True when a tie (a discriminant exactly 0) was resolved by the tie policy.
@@ -581,10 +617,16 @@ impl Trace {
         stepper
     }
 
-    /// Decision columns for step indices `from..to`, recomputed by replay.
+    /// Decision columns for step indices `from..to`, recomputed by replay;
+    /// where a column does not apply to a step (or to its segment), NaN in a
+    /// number column and [`NO_VALUE`] in a category or flag column.
     pub fn decisions(&self, from: u64, to: u64) -> DecisionTable {
         let len = (to - from) as usize;
-        let mut columns = vec![vec![f64::NAN; len]; self.columns.len()];
+        let mut columns: Vec<Vec<f64>> = self
+            .columns
+            .iter()
+            .map(|c| vec![c.kind.no_value(); len])
+            .collect();
         self.replay_decisions(from, to, |column, i, value| columns[column][i] = value);
         DecisionTable { columns }
     }
@@ -594,14 +636,19 @@ impl Trace {
     /// wasm boundary, written once with no per-column arrays to join).
     pub fn decisions_flat(&self, from: u64, to: u64) -> Vec<f64> {
         let len = (to - from) as usize;
-        let mut flat = vec![f64::NAN; len * self.columns.len()];
+        let mut flat: Vec<f64> = self
+            .columns
+            .iter()
+            .flat_map(|c| std::iter::repeat_n(c.kind.no_value(), len))
+            .collect();
         self.replay_decisions(from, to, |column, i, value| flat[column * len + i] = value);
         flat
     }
 
     /// Replays steps `from..to`, calling `put(trace column, step index -
-    /// from, value)` for each value a segment's stepper writes; columns a
-    /// segment does not have are left alone.
+    /// from, value)` for each value a segment's stepper writes (NaN in a
+    /// category or flag column made [`NO_VALUE`]); columns a segment does
+    /// not have are left alone.
     fn replay_decisions(&self, from: u64, to: u64, mut put: impl FnMut(usize, usize, f64)) {
         let mut row = vec![f64::NAN; MAX_COLUMNS];
         let mut k = from;
@@ -614,7 +661,8 @@ impl Trace {
                 row.fill(f64::NAN);
                 stepper.replay_step(&mut row);
                 for (local, &global) in segment.column_index.iter().enumerate() {
-                    put(global, (i - from) as usize, row[local]);
+                    let value = self.columns[global].kind.cell(row[local]);
+                    put(global, (i - from) as usize, value);
                 }
             }
             k = seg_end;

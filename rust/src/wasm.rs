@@ -3,7 +3,9 @@
 //! Bulk data crosses as flat typed arrays, copied out of wasm memory once:
 //! - points: Int32Array, stride = dims, one row per point index;
 //! - decisions: Float64Array, column-major, one run of (to - from) values per
-//!   trace column, in the order of the summary's `columns`;
+//!   trace column, in the order of the summary's `columns` (where a column
+//!   does not apply to a step: NaN, or `trace::NO_VALUE` in a category or
+//!   flag column);
 //! - deviation: Float64Array, one value per point index;
 //! - axis error: Float64Array, stride = dims, one row per point index;
 //! - step codes: Uint16Array, one packed step per step index (see `grid::Step`);

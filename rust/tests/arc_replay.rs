@@ -3,15 +3,13 @@
 //! a direct run. For arc-segments the chords are spliced in from the line
 //! algorithm's own traces, so the stored positions must still be right.
 
+mod common;
+
 use voxpath::arc::ArcSpec;
 use voxpath::arc::circle_saleem::SaleemCircle;
 use voxpath::grid::Point;
 use voxpath::trace::{CHECKPOINT_INTERVAL, Decision, Stepper};
 use voxpath::{Request, TraceBuilder};
-
-fn same(a: f64, b: f64) -> bool {
-    a == b || (a.is_nan() && b.is_nan())
-}
 
 #[test]
 fn a_circle_with_a_correction_replays_across_checkpoints() {
@@ -41,7 +39,7 @@ fn a_circle_with_a_correction_replays_across_checkpoints() {
         for (c, column) in table.columns.iter().enumerate() {
             for (i, &v) in column.iter().enumerate() {
                 assert!(
-                    same(v, rows[a as usize + i][c]),
+                    common::same_cell(trace.columns()[c].kind, v, rows[a as usize + i][c]),
                     "column {c} step {}",
                     a as usize + i
                 );
@@ -96,7 +94,12 @@ fn spliced_chords_keep_their_positions_and_decisions() {
     let table = trace.decisions(4000, steps);
     for (c, column) in table.columns.iter().enumerate() {
         for (i, &v) in column.iter().enumerate() {
-            assert!(same(v, rows[4000 + i][c]), "column {c} step {}", 4000 + i);
+            let kind = trace.columns()[c].kind;
+            assert!(
+                common::same_cell(kind, v, rows[4000 + i][c]),
+                "column {c} step {}",
+                4000 + i
+            );
         }
     }
 }
@@ -118,7 +121,7 @@ fn a_helix_replays_its_arc_and_linear_decisions() {
     for (c, column) in part.columns.iter().enumerate() {
         for (i, &v) in column.iter().enumerate() {
             assert!(
-                same(v, whole.columns[c][4090 + i]),
+                common::same_cell(trace.columns()[c].kind, v, whole.columns[c][4090 + i]),
                 "column {c} step {}",
                 4090 + i
             );

@@ -15,7 +15,7 @@ use voxpath::line::liu_float::LiuFloat;
 use voxpath::line::nd::Nd;
 use voxpath::line::regions_wang::RegionsWang;
 use voxpath::line::walk6::Walk6;
-use voxpath::trace::{CHECKPOINT_INTERVAL, Decision, Stepper, TiePolicy};
+use voxpath::trace::{CHECKPOINT_INTERVAL, ColumnKind, Decision, NO_VALUE, Stepper, TiePolicy};
 
 struct DirectRun {
     points: Vec<Point>,
@@ -42,10 +42,6 @@ fn direct<S: Stepper>(mut stepper: S, from: Point) -> DirectRun {
         out.points.push(p);
     }
     out
-}
-
-fn same(a: f64, b: f64) -> bool {
-    a == b || (a.is_nan() && b.is_nan())
 }
 
 /// Traces `options` with `algorithm` and checks ranges that start before,
@@ -78,7 +74,7 @@ fn check_replay<S: Stepper>(algorithm: &str, options: &str, from: Point, to: Poi
             for (i, &v) in column.iter().enumerate() {
                 let expected = run.rows[a as usize + i][c];
                 assert!(
-                    same(v, expected),
+                    common::same_cell(trace.columns()[c].kind, v, expected),
                     "{algorithm} column {c} step {}: {v} vs {expected}",
                     a as usize + i
                 );
@@ -213,4 +209,76 @@ fn too_long_a_path_names_max_steps() {
     .unwrap();
     assert_eq!(e.field_name(), Some("maxSteps"));
     assert!(e.to_string().contains("more than 999 steps"), "{e}");
+}
+
+/// Every category cell of `trace` is a label index or NO_VALUE, every flag
+/// cell 0, 1 or NO_VALUE: never NaN, which a byte array would read as 0 (the
+/// first label, or "no").
+fn check_category_cells(what: &str, trace: &voxpath::Trace) {
+    let table = trace.decisions(0, trace.steps());
+    for (column, values) in trace.columns().iter().zip(&table.columns) {
+        if let ColumnKind::Category(labels) = column.kind {
+            assert!(
+                labels.len() < usize::from(NO_VALUE),
+                "{what}: {}",
+                column.name
+            );
+        }
+        let valid = |v: f64| match column.kind {
+            ColumnKind::Category(labels) => v < labels.len() as f64 && v.fract() == 0.0,
+            ColumnKind::Flag => v == 0.0 || v == 1.0,
+            ColumnKind::Int | ColumnKind::Float => true,
+        };
+        for (k, &v) in values.iter().enumerate() {
+            assert!(
+                valid(v) || v == f64::from(NO_VALUE),
+                "{what}: {} at step {k} is {v}",
+                column.name
+            );
+        }
+    }
+}
+
+#[test]
+fn category_and_flag_cells_are_a_label_or_no_value() {
+    for info in voxpath::algorithms::ALGORITHMS {
+        let mut request: serde_json::Value = serde_json::from_str(info.example.options).unwrap();
+        request["algorithm"] = info.id.into();
+        check_category_cells(info.id, &common::trace(&request.to_string()));
+    }
+    // Wang's type ② (all axes active): no region, no corner.
+    let t = common::trace(r#"{"algorithm":"regions","from":[0,0,0],"to":[-4,4,4]}"#);
+    check_category_cells("regions type 2", &t);
+    // A helix steeper than its arc: steps of z alone, with no circle decision.
+    let t = common::trace(r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,-9],"center":[0,0,0]}"#);
+    check_category_cells("steep helix", &t);
+}
+
+#[test]
+fn a_program_s_line_steps_have_no_circle_values_and_its_arc_steps_no_regions_values() {
+    // G1 to (4, 2) steps, then G2 about (4, 0) to (4, -2): the trace unions
+    // the columns of regions and circle; each step fills its own algorithm's
+    // and leaves the other's as "does not apply".
+    let program = voxpath::gcode::run(
+        "G21 G90\nG1 X1 Y0.5\nG2 X1 Y-0.5 I0 J-0.5\n",
+        voxpath::gcode::Settings::from_json(r#"{"stepsPerMm": 4}"#).unwrap(),
+    );
+    let t = &program.trace;
+    check_category_cells("gcode", t);
+    let table = t.decisions(0, t.steps());
+    let column = |name: &str| {
+        let i = t.columns().iter().position(|c| c.name == name).unwrap();
+        &table.columns[i]
+    };
+    let none = f64::from(NO_VALUE);
+    // Steps 0-3 are the line's (4 steps along x), 4-9 the arc's.
+    for name in ["octant", "fast", "slow_steps", "correction"] {
+        assert_eq!(column(name)[..4], [none; 4], "{name}");
+        assert!(column(name)[4..].iter().all(|&v| v != none), "{name}");
+    }
+    for name in ["region", "corner", "tie"] {
+        assert!(column(name)[..4].iter().all(|&v| v != none), "{name}");
+        assert_eq!(column(name)[4..], [none; 6], "{name}");
+    }
+    assert!(column("M")[4..].iter().all(|v| v.is_nan()));
 }

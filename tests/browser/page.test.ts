@@ -89,6 +89,21 @@ describe('the page', () => {
     await p.close();
   });
 
+  it('shows a dash, not a number, where a decision column does not apply', async () => {
+    // Wang's type ② line (section 2.2): all three axes active, so no
+    // discriminant, region or corner decides step 1 (the core's NO_VALUE
+    // and NaN), and no exit face is drawn.
+    const p = await openPage('?from=0,0,0&to=3,3,3&step=1');
+    const { page } = p;
+    await traced(page, 3);
+    expect(await text(page, 'step-counter')).toBe('Step 1 of 3');
+    await expect.poll(() => decision(page, 'tie')).toBe('no');
+    for (const column of ['M', 'N', 'region', 'corner']) expect(await decision(page, column), column).toBe('—');
+    expect(await page.getByTestId('decision-figure').locator('svg').count()).toBe(0);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("shows the core's error beside the field and stays usable", async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;

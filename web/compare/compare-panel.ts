@@ -6,7 +6,7 @@
  * core compared them.
  */
 import { element } from '../form/options-form.js';
-import { formatPoint } from '../format.js';
+import { formatPoint, NO_VALUE_TEXT } from '../format.js';
 import type { StepWhy } from '../core/index.js';
 import type { TraceDifference } from '../worker/protocol.js';
 
@@ -19,10 +19,10 @@ export interface ComparedTrace {
   metrics: { maxDeviation: number; meanDeviation: number; stdDeviation: number; ties: number; pulsesByAxis: number[]; maxAxisError: number[] };
 }
 
-/** A step's decision values as one line, "M = 2, N = -10, region = a"; columns that do not apply are left out. */
+/** A step's decision values as one line, "M = 2, N = —, region = a", with a dash where a column does not apply. */
 function decisionList(why: StepWhy): HTMLElement {
-  const values = Object.entries(why.decisions).filter(([, v]) => v !== null);
-  return element('p', { className: 'first-difference-values', textContent: values.map(([name, v]) => `${name} = ${String(v)}`).join(', ') });
+  const values = Object.entries(why.decisions).map(([name, v]) => `${name} = ${v === null ? NO_VALUE_TEXT : String(v)}`);
+  return element('p', { className: 'first-difference-values', textContent: values.join(', ') });
 }
 
 export class ComparePanel {

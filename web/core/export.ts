@@ -10,16 +10,22 @@ import { AXIS_NAMES } from './axes.js';
 import type { Comparison, StepWhy } from './compare.js';
 import type { MeasureSummary, RandomLinesResult } from './experiment.js';
 import type { Trace } from './trace.js';
-import type { ColumnSpec, DecisionColumns } from './types.js';
+import { type ColumnSpec, type DecisionColumns, NO_VALUE } from './types.js';
 
-
-/** A decision value as people read it: category labels, booleans, plain numbers. */
-function readable(column: ColumnSpec, value: number): string | number | boolean | null {
+/**
+ * A decision value as people read it: a category's label, a flag's boolean,
+ * a plain number, or null where the column does not apply to the step (NaN
+ * in a number column, NO_VALUE in a category or flag column).
+ */
+export function readDecision(column: ColumnSpec, value: number): string | number | boolean | null {
   if (Number.isNaN(value)) return null;
-  if (column.kind === 'category') return column.labels?.[value] ?? value;
-  if (column.kind === 'flag') return value === 1;
+  if (column.kind === 'category') return value === NO_VALUE ? null : (column.labels?.[value] ?? value);
+  if (column.kind === 'flag') return value === NO_VALUE ? null : value === 1;
   return value;
 }
+
+/** A table's cell for a column that does not apply to the step (JSON's null). */
+const TABLE_NO_VALUE = '-';
 
 export interface TraceJson {
   algorithm: string;
@@ -45,7 +51,7 @@ export function traceToJson(trace: Trace): TraceJson {
   }
   const decisions: TraceJson['decisions'] = {};
   for (const column of trace.columns) {
-    decisions[column.name] = Array.from(trace.decisions[column.name]!, (v) => readable(column, v));
+    decisions[column.name] = Array.from(trace.decisions[column.name]!, (v) => readDecision(column, v));
   }
   return {
     algorithm: trace.algorithm,
@@ -67,8 +73,12 @@ function alignedTable(header: string[], body: string[][], labelFirst = false): s
   return [line(header), ...body.map(line)];
 }
 
-/** Header and rows of the per-point table; cells are strings. */
-function rows(trace: Trace): { header: string[]; body: string[][] } {
+/**
+ * Header and rows of the per-point table; cells are strings. Row 0 has no
+ * decision (empty cells); a column that does not apply to a step gets
+ * `absent` (CSV: empty, as null; table: '-').
+ */
+function rows(trace: Trace, absent: string): { header: string[]; body: string[][] } {
   const header = ['k', ...AXIS_NAMES.slice(0, trace.dims), ...trace.columns.map((c) => c.name), 'deviation'];
   const flat = trace.points;
   const decisions: DecisionColumns = trace.decisions;
@@ -78,8 +88,8 @@ function rows(trace: Trace): { header: string[]; body: string[][] } {
     const row = [String(k)];
     for (let a = 0; a < trace.dims; a++) row.push(String(flat[k * trace.dims + a]));
     for (const column of trace.columns) {
-      const value = k === 0 ? null : readable(column, decisions[column.name]![k - 1]!);
-      row.push(value === null ? '' : typeof value === 'boolean' ? (value ? '1' : '0') : String(value));
+      const value = k === 0 ? '' : readDecision(column, decisions[column.name]![k - 1]!);
+      row.push(value === null ? absent : typeof value === 'boolean' ? (value ? '1' : '0') : String(value));
     }
     row.push(deviation[k]!.toFixed(6));
     body.push(row);
@@ -93,13 +103,13 @@ function csvCell(cell: string): string {
 
 /** One CSV row per point, with a header row (the CLI's --format csv). */
 export function traceToCsv(trace: Trace): string {
-  const { header, body } = rows(trace);
+  const { header, body } = rows(trace, '');
   return [header, ...body].map((r) => r.map(csvCell).join(',')).join('\n') + '\n';
 }
 
 /** An aligned plain-text table with the metrics below it (the CLI's --format table). */
 export function traceToTable(trace: Trace): string {
-  const { header, body } = rows(trace);
+  const { header, body } = rows(trace, TABLE_NO_VALUE);
   const m = trace.metrics;
   const moving = m.stepsMovingAxes.map((n, i) => `${n} x ${i + 1}-axis`).join(', ');
   return [
@@ -210,7 +220,7 @@ const TABLE_CELLS = 12;
 /** "M = 0, N = 10, region = g, ...": a step's decision values. */
 function decisionsText(why: StepWhy): string {
   return Object.entries(why.decisions)
-    .map(([name, value]) => `${name} = ${value === null ? '-' : String(value)}`)
+    .map(([name, value]) => `${name} = ${value === null ? TABLE_NO_VALUE : String(value)}`)
     .join(', ');
 }
 

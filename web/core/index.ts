@@ -33,9 +33,11 @@ export {
   comparisonToTable,
   randomLinesToCsv,
   randomLinesToTable,
+  readDecision,
   traceToCsv,
   traceToJson,
   traceToTable,
 } from './export.js';
 export type { TraceJson } from './export.js';
+export { NO_VALUE } from './types.js';
 export type * from './types.js';

@@ -114,8 +114,9 @@ export class Trace implements TraceSummary {
   /**
    * Decision columns for step indices from..to, recomputed exactly by the
    * core. Category and flag columns are Uint8Array (category values index the
-   * column's labels); numeric columns are Float64Array (NaN where a column does
-   * not apply to a step).
+   * column's labels; NO_VALUE where a column does not apply to a step);
+   * numeric columns are Float64Array (NaN where it does not apply).
+   * `readDecision` turns a value into what people read.
    */
   decisionsInRange(from: number, to: number): DecisionColumns {
     checkRange('step indices', from, to, this.steps);

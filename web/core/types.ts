@@ -5,6 +5,15 @@
  * Coordinates are integer grid units (one cell = one motor step).
  */
 
+/**
+ * The value a category or flag column holds at a step it does not apply to
+ * (a correction step has no fast axis, a line step of a G-code program no
+ * octant): the core's `trace::NO_VALUE`. It is no label index and neither 0
+ * nor 1, so it is never read as a real value; number columns hold NaN there.
+ * JSON gives null for both, a table '-'.
+ */
+export const NO_VALUE = 255;
+
 /** A point on the grid, one integer per axis, in grid units. */
 export type GridPoint = ArrayLike<number>;
 
@@ -34,6 +43,8 @@ export interface ColumnSpec {
   /**
    * int: an exact integer (stored as float64, exact below 2^53);
    * float: a real number; category: an index into `labels`; flag: 0 or 1.
+   * Where the column does not apply to a step: NaN for int and float,
+   * NO_VALUE for category and flag.
    */
   kind: 'int' | 'float' | 'category' | 'flag';
   /** Labels of a category column, indexed by the stored value. */

@@ -11,6 +11,7 @@
  *   candidate, the one the step took marked.
  * Nothing else is drawn: the table of values above it has every column.
  */
+import { readDecision } from '../core/export.js';
 import type { ColumnSpec } from '../core/types.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
@@ -22,11 +23,14 @@ function svg<K extends keyof SVGElementTagNameMap>(tag: K, attributes: Record<st
   return e;
 }
 
-/** A decision's values by column name; NaN where a column does not apply. */
+/** A decision's values by column name, as the core gives them (NaN or NO_VALUE where a column does not apply). */
 export type DecisionRow = Record<string, number>;
 
+/** The label of category column `name`, or undefined where it does not apply to the step. */
 function label(columns: readonly ColumnSpec[], name: string, value: number): string | undefined {
-  return columns.find((c) => c.name === name)?.labels?.[value];
+  const column = columns.find((c) => c.name === name);
+  const readable = column && readDecision(column, value);
+  return typeof readable === 'string' ? readable : undefined;
 }
 
 /**
@@ -51,10 +55,10 @@ export interface ExitFace {
   vSign: 1 | -1;
 }
 
-/** A face axis label ('+y', '-z') as its grid axis and direction; undefined for '-'. */
+/** A face axis label ('+y', '-z') as its grid axis and direction; undefined where the step has none. */
 function faceAxis(text: string | undefined): { axis: number; sign: 1 | -1 } | undefined {
-  const axis = 'xyz'.indexOf(text?.[1] ?? '-');
-  return axis < 0 ? undefined : { axis, sign: text![0] === '-' ? -1 : 1 };
+  if (text === undefined) return undefined;
+  return { axis: 'xyz'.indexOf(text[1]!), sign: text[0] === '-' ? -1 : 1 };
 }
 
 export function exitFaceOf(columns: readonly ColumnSpec[], row: DecisionRow | undefined): ExitFace | undefined {
@@ -180,7 +184,7 @@ export function decisionFigure(columns: readonly ColumnSpec[], row: DecisionRow 
   if (!row) return undefined;
   const has = (name: string) => columns.some((c) => c.name === name);
   if (has('region') && has('corner')) {
-    // No face for a line with no passive axis (Wang's type ②: region '-').
+    // No face for a line with no passive axis (Wang's type ②: no region).
     const face = exitFaceOf(columns, row);
     return face ? regionFace(face) : undefined;
   }

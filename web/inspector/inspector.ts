@@ -9,8 +9,9 @@
  * point shown is point index k, produced by step k (1-based), which is step
  * index k - 1 of the core.
  */
+import { readDecision } from '../core/export.js';
 import type { ColumnSpec } from '../core/types.js';
-import { formatPoint } from '../format.js';
+import { formatPoint, NO_VALUE_TEXT } from '../format.js';
 import { CoreCrash, type RemoteTrace } from '../worker/client.js';
 import { type DecisionRow, decisionFigure } from './decision-figure.js';
 
@@ -28,19 +29,13 @@ export interface InspectorElements {
   setupNote: HTMLElement;
 }
 
-/** How a learner reads one decision value; NaN is a column that does not apply to this step. */
+/** How a learner reads one decision value (a dash where the column does not apply to this step). */
 function formatValue(column: ColumnSpec, value: number): string {
-  if (Number.isNaN(value)) return '—';
-  switch (column.kind) {
-    case 'int':
-      return String(value);
-    case 'float':
-      return String(Number(value.toPrecision(6)));
-    case 'category':
-      return column.labels?.[value] ?? String(value);
-    case 'flag':
-      return value === 1 ? 'yes' : 'no';
-  }
+  const readable = readDecision(column, value);
+  if (readable === null) return NO_VALUE_TEXT;
+  if (typeof readable === 'boolean') return readable ? 'yes' : 'no';
+  if (typeof readable === 'number' && column.kind === 'float') return String(Number(readable.toPrecision(6)));
+  return String(readable);
 }
 
 /** Called with each decision the inspector shows (row undefined at the start point), for views drawn from the same values. */
@@ -124,7 +119,7 @@ export class Inspector {
         this.#e.deviation.textContent = `${deviation[0]!.toFixed(6)} grid units`;
         const row: DecisionRow | undefined = decisions && Object.fromEntries(trace.columns.map((c) => [c.name, decisions[c.name]![0]!]));
         for (const column of trace.columns) {
-          this.#cells.get(column.name)!.textContent = row ? formatValue(column, row[column.name]!) : '—';
+          this.#cells.get(column.name)!.textContent = row ? formatValue(column, row[column.name]!) : NO_VALUE_TEXT;
         }
         const figure = decisionFigure(trace.columns, row);
         this.#e.figure.replaceChildren(...(figure ? [figure] : []));

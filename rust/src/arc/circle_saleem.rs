@@ -25,7 +25,7 @@ use super::planes::{Frame, OCTANTS, OctantRule, Orientation, octant_ahead};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, norm_sq};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
 use crate::ideal::{IdealPath, within_i64_product_bound};
 use crate::line::step_target;
 use crate::request::{FROM, MAX_STEPS, Request, TO};
@@ -68,11 +68,9 @@ fn trace_circle(req: &Request) -> Result<Trace, Error> {
     Ok(builder.finish(ID))
 }
 
-pub const OCTANT_LABELS: &[&str] = &["1", "2", "3", "4", "5", "6", "7", "8"];
-
 pub const OCTANT: Column = Column {
     name: "octant",
-    kind: ColumnKind::Category(OCTANT_LABELS),
+    kind: ColumnKind::Category(&OCTANT_LABELS),
     doc: "Octant 1-8 the step travels through, counted counter-clockwise from the plane's first axis, seen from the positive end of its normal (Saleem Figure 1); a point on a boundary belongs to the octant ahead.",
 };
 
@@ -630,8 +628,13 @@ mod tests {
                 [2, 4, 0]
             ]
         );
-        let correction = &t.decisions(0, 5).columns[5];
-        assert_eq!(correction, &[0.0, 0.0, 0.0, 0.0, 1.0]);
+        let d = t.decisions(0, 5);
+        assert_eq!(d.columns[5], [0.0, 0.0, 0.0, 0.0, 1.0]);
+        // A correction step has no fast axis, candidates or slow step: its
+        // fast and slow_steps cells say so, rather than "x" and "no".
+        let none = f64::from(crate::trace::NO_VALUE);
+        assert_eq!([d.columns[1][4], d.columns[4][4]], [none, none]);
+        assert!(d.columns[2][4].is_nan() && d.columns[3][4].is_nan());
         let why = t.explain(4);
         assert!(why.contains("no nearer the end"), "{why}");
         assert!(

@@ -436,6 +436,13 @@ mod tests {
             [8.0, 16.0, 6.0, 14.0, 4.0, 12.0, 2.0, 10.0, 0.0]
         );
         assert_eq!(d.columns[8], [0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0]);
+        // Step 0 moves z alone: the circle made no decision, so its octant,
+        // fast axis, slow step and correction cells hold NO_VALUE (not
+        // octant "1", axis "x", "no", "no") and its errors NaN.
+        let none = f64::from(crate::trace::NO_VALUE);
+        let circle: Vec<f64> = d.columns[..6].iter().map(|c| c[0]).collect();
+        assert_eq!([circle[0], circle[1], circle[4], circle[5]], [none; 4]);
+        assert!(circle[2].is_nan() && circle[3].is_nan());
         assert_eq!(t.end(), Point::new(&[0, 3, -9]));
         assert!(
             t.explain(0)

@@ -12,7 +12,7 @@ use super::terms::{Term, Terms};
 use super::{Guard, Mirror, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy, fill_by_next_step};
 
@@ -173,8 +173,6 @@ pub fn octant(dx: i64, dy: i64) -> u8 {
     }
 }
 
-pub const OCTANT_LABELS: &[&str] = &["-", "1", "2", "3", "4", "5", "6", "7", "8"];
-
 /// The decision behind one step.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bresenham2dWhy {
@@ -204,8 +202,8 @@ impl Decision for Bresenham2dWhy {
         },
         Column {
             name: "octant",
-            kind: ColumnKind::Category(OCTANT_LABELS),
-            doc: "Octant of the move (Saleem Fig. 1), counter-clockwise from +x; 1, 4, 5, 8 are x-major, 2, 3, 6, 7 y-major.",
+            kind: ColumnKind::Category(&OCTANT_LABELS),
+            doc: "Octant 1-8 of the move (Saleem Fig. 1), counter-clockwise from +x; 1, 4, 5, 8 are x-major, 2, 3, 6, 7 y-major.",
         },
         Column {
             name: "tie",
@@ -222,7 +220,8 @@ impl Decision for Bresenham2dWhy {
     fn write(&self, row: &mut [f64]) {
         row[0] = self.test.tested as f64;
         row[1] = self.threshold as f64;
-        row[2] = self.octant as f64;
+        // A step has motion, so an octant 1-8: label index octant - 1.
+        row[2] = f64::from(self.octant) - 1.0;
         row[3] = self.test.tie as u8 as f64;
         row[4] = self.overshoot.map_or(f64::NAN, |v| v as f64);
     }

@@ -63,11 +63,9 @@ pub enum Region {
     G,
     H,
     O,
-    /// Type ② lines (all axes active) have no passive axis and no region.
-    NoPassive,
 }
 
-pub const REGION_LABELS: &[&str] = &["a", "b", "c", "d", "e", "f", "g", "h", "o", "-"];
+pub const REGION_LABELS: &[&str] = &["a", "b", "c", "d", "e", "f", "g", "h", "o"];
 
 /// The corner a step goes to: A = first passive axis steps, B = neither,
 /// C = second passive axis steps, D = both (Wang Fig. 4a).
@@ -77,45 +75,16 @@ pub enum Corner {
     B,
     C,
     D,
-    NoPassive,
 }
 
-pub const CORNER_LABELS: &[&str] = &["A", "B", "C", "D", "-"];
+pub const CORNER_LABELS: &[&str] = &["A", "B", "C", "D"];
 
 /// Which grid axis a face coordinate runs along, and which way it grows:
 /// label `2 * axis` is toward +axis, `2 * axis + 1` toward -axis (the
-/// direction of travel; an axis that does not move counts as +), and the
-/// last is no coordinate.
-pub const FACE_AXIS_LABELS: &[&str] = &["+x", "-x", "+y", "-y", "+z", "-z", "-"];
-
-/// The label index of [`FACE_AXIS_LABELS`] for no face coordinate.
-const NO_FACE_AXIS: u8 = 6;
+/// direction of travel; an axis that does not move counts as +).
+pub const FACE_AXIS_LABELS: &[&str] = &["+x", "-x", "+y", "-y", "+z", "-z"];
 
 impl Region {
-    /// The paper's rule for this region, section 2.5 (1)-(9), word for word
-    /// where the paper is right.
-    pub fn rule(self) -> &'static str {
-        match self {
-            Region::A => "(1) M > 0 and N < 0: the line crosses region a; point A is selected.",
-            Region::B => "(2) M < 0 and N < 0: the line crosses region b; point B is selected.",
-            Region::C => "(3) M < 0 and N > 0: the line crosses region c; point C is selected.",
-            Region::D => "(4) M > 0 and N > 0: the line crosses region d; point D is selected.",
-            Region::E => "(5) M = 0 and N < 0: the line crosses segment e; A or B may be selected.",
-            Region::F => "(6) M < 0 and N = 0: the line crosses segment f; B or C may be selected.",
-            Region::G => {
-                "(7) M = 0 and N > 0: the line crosses segment g; C or D may be selected \
-                 (the paper prints \"A or D\", but N > 0 rules out A, whose second passive coordinate does not step)."
-            }
-            Region::H => "(8) M > 0 and N = 0: the line crosses segment h; D or A may be selected.",
-            Region::O => {
-                "(9) M = 0 and N = 0: the line crosses the centre o; A, B, C or D may be selected."
-            }
-            Region::NoPassive => {
-                "All three axes are active (type ②): every step goes to the opposite corner."
-            }
-        }
-    }
-
     /// Classifies the signs of M and N: a table indexed by sign + 1, so no
     /// branch on the values. A line with one passive axis passes N = -1 (a
     /// missing N counts as negative: it never steps a second axis).
@@ -152,8 +121,9 @@ impl Corner {
 pub struct RegionsWhy {
     /// M and N before the step (eq. 6); None for an absent passive axis.
     pub discriminants: [Option<i64>; 2],
-    pub region: Region,
-    pub corner: Corner,
+    /// None on a type ② line: no passive axis, so no face decides.
+    pub region: Option<Region>,
+    pub corner: Option<Corner>,
     /// A zero discriminant decided this step (through the tie policy).
     pub tie: bool,
     pub tie_policy: TiePolicy,
@@ -184,8 +154,9 @@ impl RegionsWhy {
             .map(|d| d.map(|d| d as f64 / self.face_scale as f64))
     }
 
-    /// The [`FACE_AXIS_LABELS`] index of each face coordinate's axis.
-    pub fn face_axes(&self) -> [u8; 2] {
+    /// The [`FACE_AXIS_LABELS`] index of each face coordinate's axis; None
+    /// for a passive axis the line does not have.
+    pub fn face_axes(&self) -> [Option<u8>; 2] {
         self.geometry.passive_direction
     }
 }
@@ -205,12 +176,12 @@ impl Decision for RegionsWhy {
         Column {
             name: "region",
             kind: ColumnKind::Category(REGION_LABELS),
-            doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, centre o (Wang section 2.5); '-' for type ② lines.",
+            doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, centre o (Wang section 2.5); none on type ② lines, which have no passive axis.",
         },
         Column {
             name: "corner",
             kind: ColumnKind::Category(CORNER_LABELS),
-            doc: "The corner the step goes to: A = first passive axis steps, B = neither, C = second, D = both.",
+            doc: "The corner the step goes to: A = first passive axis steps, B = neither, C = second, D = both; none on type ② lines.",
         },
         Column {
             name: "tie",
@@ -230,27 +201,27 @@ impl Decision for RegionsWhy {
         Column {
             name: "face_u_axis",
             kind: ColumnKind::Category(FACE_AXIS_LABELS),
-            doc: "The grid axis face_u runs along and the way it grows (+y: toward +y, the direction of travel; an axis that does not move counts as +); '-' for type ② lines, which run through the corners and cross no face.",
+            doc: "The grid axis face_u runs along and the way it grows (+y: toward +y, the direction of travel; an axis that does not move counts as +); empty for type ② lines, which run through the corners and cross no face.",
         },
         Column {
             name: "face_v_axis",
             kind: ColumnKind::Category(FACE_AXIS_LABELS),
-            doc: "The grid axis face_v runs along and the way it grows; '-' with fewer than two passive axes.",
+            doc: "The grid axis face_v runs along and the way it grows; empty with fewer than two passive axes.",
         },
     ];
 
     fn write(&self, row: &mut [f64]) {
         row[0] = self.discriminants[0].map_or(f64::NAN, |v| v as f64);
         row[1] = self.discriminants[1].map_or(f64::NAN, |v| v as f64);
-        row[2] = self.region as u8 as f64;
-        row[3] = self.corner as u8 as f64;
+        row[2] = self.region.map_or(f64::NAN, |r| r as u8 as f64);
+        row[3] = self.corner.map_or(f64::NAN, |c| c as u8 as f64);
         row[4] = self.tie as u8 as f64;
         let [u, v] = self.face_crossing();
         row[5] = u.unwrap_or(f64::NAN);
         row[6] = v.unwrap_or(f64::NAN);
         let [u_axis, v_axis] = self.face_axes();
-        row[7] = u_axis as f64;
-        row[8] = v_axis as f64;
+        row[7] = u_axis.map_or(f64::NAN, f64::from);
+        row[8] = v_axis.map_or(f64::NAN, f64::from);
     }
 
     fn is_tie(&self) -> bool {
@@ -261,7 +232,7 @@ impl Decision for RegionsWhy {
         let g = &self.geometry;
         let mut s = g.active_phrase();
         let [m, n] = self.discriminants;
-        let Some(m) = m else {
+        let (Some(m), Some(region), Some(corner)) = (m, self.region, self.corner) else {
             let _ = write!(
                 s,
                 ", so the step goes to the opposite corner {}.",
@@ -273,7 +244,6 @@ impl Decision for RegionsWhy {
         if let Some(n) = n {
             let _ = write!(s, " and N = {}", signed_comparison(n));
         }
-        let region = self.region;
         match region {
             Region::A | Region::B | Region::C | Region::D => {
                 let _ = write!(
@@ -305,7 +275,7 @@ impl Decision for RegionsWhy {
         let _ = write!(
             s,
             ", and the step goes to {} {}.",
-            self.corner.label(),
+            corner.label(),
             step_target(step, 3)
         );
         s
@@ -321,8 +291,8 @@ struct Geometry {
     passive: [u8; 2],
     passive_count: u8,
     /// Per passive axis, its axis and direction of travel as a
-    /// [`FACE_AXIS_LABELS`] index; [`NO_FACE_AXIS`] when absent.
-    passive_direction: [u8; 2],
+    /// [`FACE_AXIS_LABELS`] index; None when absent.
+    passive_direction: [Option<u8>; 2],
 }
 
 impl Geometry {
@@ -400,7 +370,7 @@ impl RegionsWang {
             active_mask: 0,
             passive: [0; 2],
             passive_count: 0,
-            passive_direction: [NO_FACE_AXIS; 2],
+            passive_direction: [None; 2],
         };
         for axis in 0..3 {
             if magnitude[axis] == largest {
@@ -408,7 +378,8 @@ impl RegionsWang {
             } else {
                 let i = geometry.passive_count as usize;
                 geometry.passive[i] = axis as u8;
-                geometry.passive_direction[i] = 2 * axis as u8 + (mirror.sign(axis) < 0) as u8;
+                geometry.passive_direction[i] =
+                    Some(2 * axis as u8 + (mirror.sign(axis) < 0) as u8);
                 geometry.passive_count += 1;
             }
         }
@@ -504,9 +475,9 @@ impl Stepper for RegionsWang {
         let tie = m == 0 || n == 0;
         let count = self.geometry.passive_count;
         let (region, corner) = if count == 0 {
-            (Region::NoPassive, Corner::NoPassive)
+            (None, None)
         } else {
-            (Region::of(m, n), Corner::of(moves[0], moves[1]))
+            (Some(Region::of(m, n)), Some(Corner::of(moves[0], moves[1])))
         };
         let why = RegionsWhy {
             discriminants: [(count > 0).then_some(m), (count > 1).then_some(n)],
@@ -629,9 +600,9 @@ mod tests {
         .collect();
         assert_eq!(points, expected);
         // Step 5 (M = 0, N = 10 > 0) is segment g: a tie between C and D.
-        assert_eq!(steps[4].1.region, Region::G);
+        assert_eq!(steps[4].1.region, Some(Region::G));
         assert!(steps[4].1.tie);
-        assert_eq!(steps[4].1.corner, Corner::D);
+        assert_eq!(steps[4].1.corner, Some(Corner::D));
     }
 
     #[test]
@@ -653,7 +624,7 @@ mod tests {
         // With ties held, step 5 stays at y = 3 (Saleem's strict rule).
         let steps = run([0, 0, 0], [10, 7, 6], TiePolicy::Hold);
         assert_eq!(steps[4].0, Point::new(&[5, 3, 3]));
-        assert_eq!(steps[4].1.corner, Corner::C);
+        assert_eq!(steps[4].1.corner, Some(Corner::C));
         assert_eq!(steps.last().unwrap().0, Point::new(&[10, 7, 6]));
     }
 
@@ -710,5 +681,21 @@ mod tests {
         assert_eq!(t.metrics().ties, 1);
         let note = &t.segments()[0].setup_note;
         assert!(note.contains("M_1 = 2|Δy| - |Δx| = 2·7 - 10 = 4"), "{note}");
+    }
+
+    #[test]
+    fn a_type_two_line_has_no_region_or_corner_rather_than_a_label() {
+        // (0,0,0)->(3,3,3): all three axes active (Wang section 2.2, type ②),
+        // so no discriminant, no exit face and no corner decides any step.
+        let t =
+            crate::trace_json(r#"{"algorithm": "regions", "from": [0, 0, 0], "to": [3, 3, 3]}"#)
+                .unwrap();
+        let d = t.decisions(0, 3);
+        assert!(d.columns[0].iter().chain(&d.columns[1]).all(|v| v.is_nan()));
+        let none = f64::from(crate::trace::NO_VALUE);
+        assert_eq!(d.columns[2], [none; 3]);
+        assert_eq!(d.columns[3], [none; 3]);
+        assert_eq!(d.columns[4], [0.0; 3]);
+        assert!(t.explain(0).contains("opposite corner"), "{}", t.explain(0));
     }
 }

@@ -3,7 +3,7 @@
 #![allow(dead_code)] // each test crate uses its own subset
 
 use voxpath::grid::{Point, Step, displacement};
-use voxpath::trace::Stepper;
+use voxpath::trace::{ColumnKind, Stepper};
 
 /// Every step of `stepper` from `from`: the point after the step and why.
 pub fn run<S: Stepper>(mut stepper: S, from: Point) -> Vec<(Point, S::Why)> {
@@ -76,4 +76,17 @@ pub fn check_fill<S: Stepper>(make: impl Fn() -> S, chunk: usize) -> Result<(), 
         return Err("fill took other steps than next_step".into());
     }
     Ok(())
+}
+
+/// True when `traced`, a decision value a trace gave for a column of `kind`,
+/// is `written`, the value a stepper wrote (or another trace gave): equal,
+/// or both "does not apply", which a stepper writes as NaN and a trace gives
+/// as NaN in a number column and NO_VALUE in a category or flag column.
+pub fn same_cell(kind: ColumnKind, traced: f64, written: f64) -> bool {
+    let expected = if written.is_nan() {
+        kind.no_value()
+    } else {
+        written
+    };
+    traced == expected || (traced.is_nan() && expected.is_nan())
 }

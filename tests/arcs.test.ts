@@ -1,0 +1,151 @@
+// Every arc algorithm of the catalogue (circle, arc-segments, helix) through
+// the public API against the real wasm core: quarter, half and full circles
+// in each plane and direction, centres in negative quadrants, radii 1, 2 and
+// 2^20, the radial error each states, and bad input.
+//
+// Conventions checked (README, "Algorithms"; SEED-NOTES on the G-code blog):
+// G17/G18/G19 put the plane's axes (u, v) as (x, y), (z, x), (y, z); G03
+// (ccw) increases the angle atan2(v, u) about the centre, G02 (cw)
+// decreases it: counter-clockwise / clockwise seen from the positive end of
+// the plane's normal axis, right-handed in all three planes.
+import { describe, expect, it } from 'vitest';
+import { algorithms, NO_VALUE, trace } from '../web/core/index.js';
+import type { AlgorithmInfo, Trace } from '../web/core/index.js';
+import { expectEnds, inPlane, PLANE_AXES, PLANES, rejection } from './helpers.js';
+import type { Plane } from './helpers.js';
+
+const ARCS: AlgorithmInfo[] = (await algorithms()).filter((a) => a.family === 'arc');
+
+/**
+ * The largest distance of a point from the circle (in its plane) each
+ * algorithm states: Saleem's circle picks, of two candidates, the one with
+ * the smaller |u² + v² - r²|, which keeps every point within 1/2 of the
+ * circle (a helix steps the same circle); chords add their sagitta
+ * r(1 - cos(θ/2)) to the line algorithm's sqrt(2)/2 and the vertices'
+ * rounding, sqrt(2)/2.
+ */
+const RADIAL_BOUND: Record<string, (t: Trace, r: number, sweep: number) => number> = {
+  circle: () => 0.5,
+  helix: () => 0.5,
+  'arc-segments': (t, r, sweep) => r * (1 - Math.cos(Math.abs(sweep) / t.segments.length / 2)) + Math.SQRT2,
+};
+
+/** `to` raised by `rise` along the plane's normal axis (a helix's end). */
+const raised = (plane: Plane, to: number[], rise: number) => to.map((c, i) => (i === PLANE_AXES[plane][2] ? c + rise : c));
+
+/** The options of an arc by `a`, a helix rising `rise`; arc-segments in chords of 3 units unless `chords` says otherwise. */
+function arcOptions(a: AlgorithmInfo, plane: Plane, from: number[], to: number[], center: number[], dir: 'cw' | 'ccw', rise = 0, chords: Record<string, number> = { segmentLength: 3 }) {
+  return { algorithm: a.id, from, to: a.id === 'helix' ? raised(plane, to, rise) : to, center, plane, dir, ...(a.id === 'arc-segments' ? chords : {}) };
+}
+
+/**
+ * Checks a traced arc about `center` of radius r: one unit per axis per
+ * step (8-connected in the plane; the normal axis moves only in a helix,
+ * at most one unit, `rise` in all), the swept angle (signed, radians) and
+ * the radial error bound. Returns the in-plane octants visited (0-7,
+ * counter-clockwise from +u). Reads the flat points in one loop: a quarter
+ * of radius 2^20 has 1.5 million.
+ */
+function expectArc(a: AlgorithmInfo, t: Trace, plane: Plane, center: number[], r: number, sweep: number, rise = 0): Set<number> {
+  const [ua, va, na] = PLANE_AXES[plane];
+  const p = t.points;
+  const octants = new Set<number>();
+  let [turned, worst] = [0, 0];
+  let badStep: number | undefined;
+  for (let k = 0; k <= t.steps; k++) {
+    const [u, v] = [p[3 * k + ua]! - center[ua]!, p[3 * k + va]! - center[va]!];
+    worst = Math.max(worst, Math.abs(Math.hypot(u, v) - r));
+    octants.add(Math.floor((((Math.atan2(v, u) + 2 * Math.PI) % (2 * Math.PI)) / (Math.PI / 4)) + 1e-12) % 8);
+    if (k === 0) continue;
+    const moved = [0, 1, 2].map((i) => Math.abs(p[3 * k + i]! - p[3 * (k - 1) + i]!));
+    if (Math.max(...moved) !== 1 || (a.id !== 'helix' && moved[na] !== 0)) badStep ??= k - 1;
+    const [pu, pv] = [p[3 * (k - 1) + ua]! - center[ua]!, p[3 * (k - 1) + va]! - center[va]!];
+    turned += Math.atan2(pu * v - pv * u, pu * u + pv * v);
+  }
+  expect(badStep, 'first step that is not one unit per axis in the plane').toBeUndefined();
+  expect(turned).toBeCloseTo(sweep, 9);
+  expect(worst).toBeLessThanOrEqual(RADIAL_BOUND[a.id]!(t, r, sweep));
+  expect(t.end[na]! - t.start[na]!).toBe(rise);
+  return octants;
+}
+
+describe('the catalogue', () => {
+  it('states a radial bound for exactly its arc algorithms', () => {
+    expect(ARCS.map((a) => a.id).sort()).toEqual(Object.keys(RADIAL_BOUND).sort());
+  });
+});
+
+describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
+  // r = 5 about a centre in the negative quadrant (u, v) = (-7, -3), at height -4.
+  const [cu, cv, height, r] = [-7, -3, -4, 5];
+  const center = (plane: Plane) => inPlane(plane, [cu, cv, 9]); // the normal coordinate of a centre is ignored
+  const at = (plane: Plane, angle: number) => inPlane(plane, [cu + Math.round(r * Math.cos(angle)), cv + Math.round(r * Math.sin(angle)), height]);
+
+  it.each(PLANES.flatMap((plane) => (['ccw', 'cw'] as const).map((dir) => [plane, dir] as const)))(
+    'runs quarter, half and full circles in %s, %s',
+    async (plane, dir) => {
+      const sign = dir === 'ccw' ? 1 : -1;
+      const from = at(plane, 0);
+      for (const turn of [0.25, 0.5, 1]) {
+        const to = at(plane, sign * turn * 2 * Math.PI);
+        const rise = a.id === 'helix' ? 6 : 0;
+        const t = await trace(arcOptions(a, plane, from, to, center(plane), dir, rise));
+        expectEnds(t, from, a.id === 'helix' ? raised(plane, to, rise) : to);
+        const octants = expectArc(a, t, plane, center(plane), r, sign * turn * 2 * Math.PI, rise);
+        if (turn === 1) {
+          expect(t.point(t.steps).filter((_, i) => i !== PLANE_AXES[plane][2])).toEqual(from.filter((_, i) => i !== PLANE_AXES[plane][2]));
+          expect([...octants].sort()).toEqual([0, 1, 2, 3, 4, 5, 6, 7]);
+          // Saleem's octant column (circle, helix; NO_VALUE on a helix's steps of the linear axis alone) names all eight too.
+          const column = t.columns.find((c) => c.name === 'octant');
+          if (column) expect(new Set(Array.from(t.decisions.octant!).filter((v) => v !== NO_VALUE).map((v) => column.labels![v]))).toEqual(new Set(column.labels));
+        }
+      }
+    },
+  );
+
+  it('steps full circles of radius 1 and 2 in every plane and direction', async () => {
+    // Chords of 1 unit: the blog's floor(2πr / 3) would give r = 1 two
+    // chords, a diameter there and back (the rule, not an arc).
+    for (const radius of [1, 2]) {
+      for (const plane of PLANES) {
+        for (const dir of ['ccw', 'cw'] as const) {
+          const from = inPlane(plane, [-3 + radius, -8, 2]);
+          const c = inPlane(plane, [-3, -8, 0]);
+          const t = await trace(arcOptions(a, plane, from, from, c, dir, a.id === 'helix' ? 1 : 0, { segmentLength: 1 }));
+          expectEnds(t, from, a.id === 'helix' ? raised(plane, from, 1) : from);
+          const octants = expectArc(a, t, plane, c, radius, (dir === 'ccw' ? 2 : -2) * Math.PI, a.id === 'helix' ? 1 : 0);
+          expect(octants.size, `r = ${radius} ${plane} ${dir}`).toBeGreaterThanOrEqual(4);
+        }
+      }
+    }
+  });
+
+  it('ends exactly on a quarter of radius 2^20, 8-connected and within its radial bound', { timeout: 60_000 }, async () => {
+    const big = 2 ** 20;
+    const c = [-big, -3, 5];
+    const rise = a.id === 'helix' ? 100 : 0;
+    // Chords by Grbl's tolerance: 3-unit chords would make 550,000 of them.
+    const t = await trace(arcOptions(a, 'xy', [0, -3, 5], [-big, big - 3, 5], c, 'ccw', rise, { tolerance: 0.5 }));
+    expectEnds(t, [0, -3, 5], [-big, big - 3, 5 + rise]);
+    expectArc(a, t, 'xy', c, big, Math.PI / 2, rise);
+  });
+
+  it('names the field at fault', async () => {
+    const c = [0, 0, 0];
+    const base = arcOptions(a, 'xy', [5, 0, 0], [0, 5, 0], c, 'ccw');
+    // The radii differ by more than 1 grid unit: 5 against 7.
+    expect((await rejection(trace({ ...base, to: [0, 7, base.to[2]!] }))).field).toBe('to');
+    // r = 0: the centre is the start point.
+    expect((await rejection(trace({ ...base, from: c, to: c }))).field).toBe('center');
+    expect((await rejection(trace({ ...base, center: ['a', 0, 0] }))).field).toBe('center');
+    expect((await rejection(trace({ ...base, from: [5, Number.NaN, 0] }))).field).toBe('from');
+    expect((await rejection(trace({ ...base, dir: 'left' }))).field).toBe('dir');
+    expect((await rejection(trace({ ...base, plane: 'xz' }))).field).toBe('plane');
+    if (a.id !== 'helix') {
+      // A move off the plane: from and to differ along the normal axis (a helix's job),
+      // or the plane yz does not contain a move in x and y.
+      expect((await rejection(trace({ ...base, to: [0, 5, 3] }))).field).toBe('to');
+      expect((await rejection(trace({ ...base, plane: 'yz' }))).field).toBe('to');
+    }
+  });
+});
