@@ -19,21 +19,6 @@ use voxpath::trace::{Decision, Stepper, TiePolicy};
 
 const SQRT1_2: f64 = std::f64::consts::FRAC_1_SQRT_2;
 
-/// Wang's and Liu's points for (0,0,0)->(10,7,6) (Wang eq. 6-10 with ties
-/// advancing; Liu's Table 1; SEED-NOTES).
-const WANG_10_7_6: [[i64; 3]; 10] = [
-    [1, 1, 1],
-    [2, 1, 1],
-    [3, 2, 2],
-    [4, 3, 2],
-    [5, 4, 3],
-    [6, 4, 4],
-    [7, 5, 4],
-    [8, 6, 5],
-    [9, 6, 5],
-    [10, 7, 6],
-];
-
 fn origin_to(to: &[i64]) -> (Point, Point) {
     (Point::origin(to.len()), Point::new(to))
 }
@@ -55,13 +40,13 @@ fn saleem_3d_holds_on_the_tie_at_step_5() {
     assert_eq!(error(1), [14, 8, 22, 16, 10, 24, 18, 12, 6, 20]);
     assert_eq!(error(2), [12, 4, 16, 8, 20, 12, 4, 16, 8, 20]);
     let got: Vec<Point> = steps.iter().map(|(p, _)| *p).collect();
-    let mut expected = WANG_10_7_6;
+    let mut expected = common::WANG_10_7_6;
     expected[4] = [5, 3, 3]; // where Wang and Liu have (5,4,3)
     assert_eq!(got, points(&expected));
     assert!(steps[4].1.is_tie() && steps.iter().filter(|(_, w)| w.is_tie()).count() == 1);
     // Liu's rule (tie = advance) steps there and gives Wang's path.
     let liu = path(Bresenham3d::new(from, to, TiePolicy::Advance, false), from);
-    assert_eq!(liu[1..], points(&WANG_10_7_6));
+    assert_eq!(liu[1..], points(&common::WANG_10_7_6));
 }
 
 /// Saleem section 2, eq. (4)-(5) on (0,0)->(10,3), by hand: the error gains 6
@@ -160,7 +145,7 @@ fn liu_table_1_with_four_decimals() {
         assert!(why.guards.iter().all(|&g| g == Guard::Rule));
     }
     let got: Vec<Point> = steps.iter().map(|(p, _)| *p).collect();
-    assert_eq!(got, points(&WANG_10_7_6));
+    assert_eq!(got, points(&common::WANG_10_7_6));
     // Row 4: epsilon(y) = 0, the tie Liu steps on.
     assert!(steps[4].1.tie);
 }
@@ -273,7 +258,7 @@ fn nd_five_axes_follow_eq_16_and_17() {
         .iter()
         .map(|(p, _)| Point::new(&p.coords()[..3]))
         .collect();
-    assert_eq!(xyz, points(&WANG_10_7_6));
+    assert_eq!(xyz, points(&common::WANG_10_7_6));
 }
 
 #[test]

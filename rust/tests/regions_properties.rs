@@ -230,22 +230,11 @@ fn face_crossings_of_wang_s_example_from_the_paper_s_equations() {
     // from (0,0,0). Step 3, from (2,1,1): y = 2.1, so u = 2.1 - 1.5 = 0.6,
     // off the face (the line leaves the unit cell through its top first),
     // yet in region d as M = 12 says. Step 10 ends on corner D itself.
-    let points = [
-        [0, 0, 0],
-        [1, 1, 1],
-        [2, 1, 1],
-        [3, 2, 2],
-        [4, 3, 2],
-        [5, 4, 3],
-        [6, 4, 4],
-        [7, 5, 4],
-        [8, 6, 5],
-        [9, 6, 5],
-    ];
+    // The points each step starts from: the start, then Wang's points.
+    let points = std::iter::once([0, 0, 0]).chain(common::WANG_10_7_6[..9].iter().copied());
     let expected: Vec<[f64; 2]> = points
-        .iter()
         .map(|[x, y, z]| {
-            let (x, y, z) = (*x as f64, *y as f64, *z as f64);
+            let (x, y, z) = (x as f64, y as f64, z as f64);
             [0.7 * (x + 1.0) - (y + 0.5), 0.6 * (x + 1.0) - (z + 0.5)]
         })
         .collect();

@@ -23,6 +23,21 @@ pub fn path<S: Stepper>(stepper: S, from: Point) -> Vec<Point> {
         .collect()
 }
 
+/// Wang's and Liu's points for (0,0,0)->(10,7,6) (Wang eq. 6-10 with ties
+/// advancing; Liu's Table 1; SEED-NOTES).
+pub const WANG_10_7_6: [[i64; 3]; 10] = [
+    [1, 1, 1],
+    [2, 1, 1],
+    [3, 2, 2],
+    [4, 3, 2],
+    [5, 4, 3],
+    [6, 4, 4],
+    [7, 5, 4],
+    [8, 6, 5],
+    [9, 6, 5],
+    [10, 7, 6],
+];
+
 /// Points from coordinate arrays.
 pub fn points<const N: usize>(coords: &[[i64; N]]) -> Vec<Point> {
     coords.iter().map(|c| Point::new(c)).collect()
