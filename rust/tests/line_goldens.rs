@@ -13,6 +13,7 @@ use voxpath::line::dda::Dda;
 use voxpath::line::greedy::Greedy;
 use voxpath::line::liu_float::{DRIFT_EXAMPLE, LiuFloat};
 use voxpath::line::nd::Nd;
+use voxpath::line::regions_wang::{Corner, Region, RegionsWang};
 use voxpath::line::walk6::Walk6;
 use voxpath::line::{Guard, TieAxis};
 use voxpath::trace::{Decision, Stepper, TiePolicy};
@@ -21,6 +22,30 @@ const SQRT1_2: f64 = std::f64::consts::FRAC_1_SQRT_2;
 
 fn origin_to(to: &[i64]) -> (Point, Point) {
     (Point::origin(to.len()), Point::new(to))
+}
+
+#[test]
+fn regions_type_one_line_of_wang_table_2_from_the_equations() {
+    // SEED-NOTES / Wang eq. (6)-(10) for (0,0,0)->(10,7,6), ties advance:
+    // M_1 = 2*7 - 10 = 4, N_1 = 2*6 - 10 = 2, then eq. (8) per step.
+    let (from, to) = origin_to(&[10, 7, 6]);
+    let steps = run(RegionsWang::new(from, to, TiePolicy::Advance), from);
+    let m: Vec<i64> = steps
+        .iter()
+        .map(|(_, w)| w.discriminants[0].unwrap())
+        .collect();
+    let n: Vec<i64> = steps
+        .iter()
+        .map(|(_, w)| w.discriminants[1].unwrap())
+        .collect();
+    assert_eq!(m, [4, -2, 12, 6, 0, -6, 8, 2, -4, 10]);
+    assert_eq!(n, [2, -6, 6, -2, 10, 2, -6, 6, -2, 10]);
+    let got: Vec<Point> = steps.iter().map(|(p, _)| *p).collect();
+    assert_eq!(got, points(&common::WANG_10_7_6));
+    // Step 5 (M = 0, N = 10 > 0) is segment g: a tie between C and D.
+    assert_eq!(steps[4].1.region, Some(Region::G));
+    assert!(steps[4].1.tie);
+    assert_eq!(steps[4].1.corner, Some(Corner::D));
 }
 
 #[test]

@@ -568,44 +568,6 @@ mod tests {
     }
 
     #[test]
-    fn type_one_line_of_wang_table_2_from_the_equations() {
-        // SEED-NOTES / Wang eq. (6)-(10) for (0,0,0)->(10,7,6), ties advance:
-        // M_1 = 2*7 - 10 = 4, N_1 = 2*6 - 10 = 2, then eq. (8) per step.
-        let steps = run([0, 0, 0], [10, 7, 6], TiePolicy::Advance);
-        let m: Vec<i64> = steps
-            .iter()
-            .map(|(_, w)| w.discriminants[0].unwrap())
-            .collect();
-        let n: Vec<i64> = steps
-            .iter()
-            .map(|(_, w)| w.discriminants[1].unwrap())
-            .collect();
-        assert_eq!(m, [4, -2, 12, 6, 0, -6, 8, 2, -4, 10]);
-        assert_eq!(n, [2, -6, 6, -2, 10, 2, -6, 6, -2, 10]);
-        let points: Vec<Point> = steps.iter().map(|(p, _)| *p).collect();
-        let expected: Vec<Point> = [
-            [1, 1, 1],
-            [2, 1, 1],
-            [3, 2, 2],
-            [4, 3, 2],
-            [5, 4, 3],
-            [6, 4, 4],
-            [7, 5, 4],
-            [8, 6, 5],
-            [9, 6, 5],
-            [10, 7, 6],
-        ]
-        .iter()
-        .map(|c| Point::new(c))
-        .collect();
-        assert_eq!(points, expected);
-        // Step 5 (M = 0, N = 10 > 0) is segment g: a tie between C and D.
-        assert_eq!(steps[4].1.region, Some(Region::G));
-        assert!(steps[4].1.tie);
-        assert_eq!(steps[4].1.corner, Some(Corner::D));
-    }
-
-    #[test]
     fn table_2_erratum_points_are_not_what_the_equations_give() {
         // Wang's Table 2 prints (7,5,5) and (9,6,6) with N_5..N_10 = 18, 10,
         // 2, -6, 6, -2; eq. (8) gives (7,5,4) and (9,6,5) (Liu's Table 1).
