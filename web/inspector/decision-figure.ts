@@ -7,7 +7,7 @@
  *   face_v) and the corner A-D it picked;
  * - threshold and error columns (Bresenham): one bar per error term against
  *   the threshold it is compared with;
- * - error_stay and error_move (Saleem's circle): the residual of each
+ * - residual_stay and residual_move (Saleem's circle): the residual of each
  *   candidate, the one the step took marked.
  * Nothing else is drawn: the table of values above it has every column.
  */
@@ -197,11 +197,11 @@ export function decisionFigure(columns: readonly ColumnSpec[], row: DecisionRow 
       { label: 'threshold', value: row.threshold! },
     );
   }
-  if (has('error_stay') && has('error_move') && !Number.isNaN(row.error_stay!)) {
+  if (has('residual_stay') && has('residual_move') && !Number.isNaN(row.residual_stay!)) {
     const moved = row.slow_steps === 1;
     return bars('The residual x² + y² − r² of each candidate: the step takes the one nearer zero.', [
-      { label: 'stay', value: row.error_stay!, note: moved ? undefined : '(taken)' },
-      { label: 'move', value: row.error_move!, note: moved ? '(taken)' : undefined },
+      { label: 'stay', value: row.residual_stay!, note: moved ? undefined : '(taken)' },
+      { label: 'move', value: row.residual_move!, note: moved ? '(taken)' : undefined },
     ]);
   }
   return undefined;
