@@ -300,6 +300,27 @@ describe('G-code mode', () => {
     await p.close();
   });
 
+  it("shows each step's own figure in a program of a line and an arc: the exit face, then the circle's residuals", async () => {
+    // At 4 steps/mm, G1 to (4, 2) is steps 1-4 (regions), G2 about (4, 0)
+    // from (4, 2) steps 5-10 (Saleem's circle). Step 6 from (5, 2): x steps
+    // +1, and y stays at (6, 2), 4 + 4 - 4 = 4, or steps to (6, 1),
+    // 4 + 1 - 4 = 1, nearer 0 (eq. 6-7).
+    const gcode = encodeURIComponent('G21 G90\nG1 X1 Y0.5\nG2 X1 Y-0.5 I0 J-0.5\n');
+    const p = await openPage(`?mode=gcode&gcode=${gcode}&stepsPerMm=4&step=2`);
+    const { page } = p;
+    await steps(page, 10);
+    await inspected(page);
+    const figure = page.getByTestId('decision-figure');
+    await expect.poll(() => figure.locator('.face-region.chosen').count()).toBe(1);
+    await page.getByTestId('jump-input').fill('6');
+    await page.getByTestId('jump-input').press('Enter');
+    await expect.poll(() => figure.locator('.bar-label').allTextContents()).toEqual(['stay', 'move']);
+    expect(await figure.locator('.bar-value').allTextContents()).toEqual(['4', '1 (taken)']);
+    expect(await figure.locator('.face-region').count()).toBe(0);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps an edited program over a reload, and loads a sample', async () => {
     const p = await openPage('?mode=gcode');
     const { page } = p;
