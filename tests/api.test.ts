@@ -195,15 +195,18 @@ describe('decision values that do not apply to a step', () => {
     expect(json.region!.slice(3, 5)).toEqual(['b', null]);
     expect(json.tie!.slice(3, 5)).toEqual([false, null]);
     const csv = traceToCsv(t).split('\n');
-    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,octant,fast,error_stay,error_move,slow_steps,correction,deviation');
+    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,octant,fast,residual_stay,residual_move,slow_steps,correction,other_candidate,deviation');
     // Row 0 has no decision yet; row 1 is regions' step, row 5 the circle's
     // first. Regions on (0,0,0)->(4,2,0): M = 2·2 - 4 = 0 and N = 2·0 - 4 = -4
     // (eq. 10), so the line crosses the exit face at (0, -4/8) (M and N over 2|Δx|).
-    expect(csv[1]).toBe('0,0,0,0,,,,,,,,,,,,,,,,0.000000');
-    expect(csv[2]).toBe('1,1,1,0,0,-4,e,A,1,0,-0.5,+y,+z,,,,,,,0.447214');
-    expect(csv[6]).toBe('5,5,2,0,,,,,,,,,,2,x,1,2,0,0,0.236068');
+    expect(csv[1]).toBe('0,0,0,0,,,,,,,,,,,,,,,,,0.000000');
+    expect(csv[2]).toBe('1,1,1,0,0,-4,e,A,1,0,-0.5,+y,+z,,,,,,,,0.447214');
+    // The circle's first step, G2 about (4, 0) from (4, 2): x
+    // steps to (5, 2), residual 1 + 4 - 4 = 1, rather than on to (5, 1),
+    // 1 + 1 - 4 = -2 (Saleem eq. 6-7), which is one cell toward -y.
+    expect(csv[6]).toBe('5,5,2,0,,,,,,,,,,2,x,1,-2,0,0,-y,0.236068');
     const table = traceToTable(t).split('\n');
-    expect(table.find((row) => /^ *1 +1 +1 +0 /.test(row))).toMatch(/ 0 +-4 +e +A +1 +0 +-0\.5 +\+y +\+z +- +- +- +- +- +- +0\.447214$/);
-    expect(table.find((row) => /^ *5 +5 +2 +0 /.test(row))).toMatch(/ - +- +- +- +- +- +- +- +- +2 +x +1 +2 +0 +0 +0\.236068$/);
+    expect(table.find((row) => /^ *1 +1 +1 +0 /.test(row))).toMatch(/ 0 +-4 +e +A +1 +0 +-0\.5 +\+y +\+z +- +- +- +- +- +- +- +0\.447214$/);
+    expect(table.find((row) => /^ *5 +5 +2 +0 /.test(row))).toMatch(/ - +- +- +- +- +- +- +- +- +2 +x +1 +-2 +0 +0 +-y +0\.236068$/);
   });
 });

@@ -9,7 +9,7 @@
 // decreases it: counter-clockwise / clockwise seen from the positive end of
 // the plane's normal axis, right-handed in all three planes.
 import { describe, expect, it } from 'vitest';
-import { algorithms, NO_VALUE, trace } from '../web/core/index.js';
+import { algorithms, NO_VALUE, readDecision, trace } from '../web/core/index.js';
 import type { AlgorithmInfo, Trace } from '../web/core/index.js';
 import { expectEnds, inPlane, PLANE_AXES, PLANES, rejection } from './helpers.js';
 import type { Plane } from './helpers.js';
@@ -148,4 +148,60 @@ describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
       expect((await rejection(trace({ ...base, plane: 'yz' }))).field).toBe('to');
     }
   });
+});
+
+/**
+ * Saleem's two candidates (section 4, eq. 6-7) as the core hands them to the
+ * page: at each arc step, the point reached and the cell `other_candidate`
+ * names from it. Checked here against u² + v² - r² worked out from the
+ * points alone: the residual columns are those two cells' residuals, the
+ * reached one is nearer 0, and the two differ by one in-plane step.
+ */
+describe("the circle's candidates", () => {
+  const DECIDING = ARCS.filter((a) => a.columns.some((c) => c.name === 'other_candidate'));
+
+  it('are given by circle and helix; arc-segments steps chords, which have none', () => {
+    expect(DECIDING.map((a) => a.id).sort()).toEqual(['circle', 'helix']);
+  });
+
+  it('match the hand-worked quarter of radius 5 (Saleem eq. 6-7)', async () => {
+    // The same quarter as the Rust golden (circle_saleem.rs): (stay, move)
+    // residuals per step, and the cell not taken from the one reached.
+    const t = await trace({ algorithm: 'circle', from: [5, 0, 0], to: [0, 5, 0], center: [0, 0, 0] });
+    expect(Array.from(t.decisions.residual_stay!)).toEqual([1, 4, 9, 7, -5, 1, 0]);
+    expect(Array.from(t.decisions.residual_move!)).toEqual([-8, -5, 0, 0, 4, 12, 11]);
+    const other = t.columns.find((c) => c.name === 'other_candidate')!;
+    expect(Array.from(t.decisions.other_candidate!, (v) => readDecision(other, v))).toEqual(['-x', '-x', '+x', '+x', '-y', '+y', '+y']);
+  });
+
+  it.each(DECIDING.flatMap((a) => PLANES.flatMap((plane) => (['ccw', 'cw'] as const).map((dir) => [a.id, plane, dir, a] as const))))(
+    '%s in %s, %s: the step takes the candidate nearer the circle',
+    async (_, plane, dir, a) => {
+      // r² = 7² + 4² = 65 about a centre off the origin: 210° counter-clockwise, 270° clockwise.
+      const [ua, va] = PLANE_AXES[plane];
+      const c = inPlane(plane, [-20, 11, 3]);
+      const from = inPlane(plane, [-13, 15, 3]);
+      const to = inPlane(plane, dir === 'ccw' ? [-24, 4, 3] : [-24, 18, 3]);
+      const t = await trace(arcOptions(a, plane, from, to, c, dir, 5));
+      const other = t.columns.find((col) => col.name === 'other_candidate')!;
+      const residual = (p: number[]) => (p[ua]! - c[ua]!) ** 2 + (p[va]! - c[va]!) ** 2 - 65;
+      let decided = 0;
+      for (let k = 0; k < t.steps; k++) {
+        const label = readDecision(other, t.decisions.other_candidate![k]!);
+        if (label === null) {
+          expect(t.decisions.residual_stay![k]).toBeNaN();
+          continue;
+        }
+        decided++;
+        const reached = Array.from(t.point(k + 1));
+        const axis = 'xyz'.indexOf(String(label)[1]!);
+        expect([ua, va]).toContain(axis);
+        const cell = reached.map((v, i) => (i === axis ? v + (String(label)[0] === '-' ? -1 : 1) : v));
+        const moved = t.decisions.slow_steps![k] === 1;
+        expect([t.decisions.residual_stay![k], t.decisions.residual_move![k]]).toEqual(moved ? [residual(cell), residual(reached)] : [residual(reached), residual(cell)]);
+        expect(Math.abs(residual(reached))).toBeLessThan(Math.abs(residual(cell)));
+      }
+      expect(decided).toBeGreaterThan(10);
+    },
+  );
 });

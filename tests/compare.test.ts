@@ -50,7 +50,7 @@ describe('compare()', () => {
       [5, 1, 0],
       [4, 1, 0],
     ]);
-    expect(c.firstDifference!.aWhy!.decisions).toMatchObject({ octant: '1', fast: 'y', error_stay: 1, error_move: 8 });
+    expect(c.firstDifference!.aWhy!.decisions).toMatchObject({ octant: '1', fast: 'y', residual_stay: 1, residual_move: -8, other_candidate: '-x' });
     expect(c.onlyInA.cells).toEqual([
       [5, 1, 0],
       [5, 2, 0],

@@ -28,13 +28,13 @@ beforeAll(async () => {
 
 describe('page state in the URL query', () => {
   it('writes the default state as a readable link', () => {
-    expect(stateToQuery(first(), url)).toBe('mode=trace&algorithm=regions&from=0,0,0&to=10,7,6&step=0&speed=2&view=3d&exitFace=0');
+    expect(stateToQuery(first(), url)).toBe('mode=trace&algorithm=regions&from=0,0,0&to=10,7,6&step=0&speed=2&view=3d&decision3d=0');
   });
 
   it('reads back every persisted key of each mode, and starts paused', () => {
     const camera = { position: [12.5, -30, 20] as [number, number, number], target: [5, 3.5, 3] as [number, number, number], zoom: 1.25 };
     const states: AppState[] = [
-      { ...first(), options: { from: [-3, 4, 2_000_000_000], to: [0, -7, 1], tie: 'hold', gcd: true }, pointIndex: 7, playing: true, speed: 16, camera, exitFace: true },
+      { ...first(), options: { from: [-3, 4, 2_000_000_000], to: [0, -7, 1], tie: 'hold', gcd: true }, pointIndex: 7, playing: true, speed: 16, camera, decision3d: true },
       { ...first(), mode: 'compare', other: 'bresenham3d', layout: 'side', options: { from: [0, 0, 0], to: [10, 7, 6], tie: 'hold' }, projection: '2d', embed: true },
       { ...first(), mode: 'gcode', gcode: 'G1 X10 Y5 F600\nG2 X20 Y5 I5 J0\n', machine: { stepAngle: 1.8, microsteps: 8, pitch: 2, lineAlgorithm: 'bresenham3d', arcAlgorithm: 'arc-segments' }, pointIndex: 3 },
       { ...first(), mode: 'experiment', experiment: { count: 20, seed: 7, maxCoordinate: 50 } },
@@ -47,7 +47,7 @@ describe('page state in the URL query', () => {
       if (mode === 'compare') expect([back.other, back.layout]).toEqual([state.other, state.layout]);
       if (mode === 'gcode') expect([back.gcode, back.machine]).toEqual([state.gcode, { ...state.machine }]);
       if (mode === 'experiment') expect(back.experiment).toEqual(state.experiment);
-      if (mode !== 'experiment') expect([back.pointIndex, back.speed, back.projection, back.exitFace, back.camera]).toEqual([state.pointIndex, state.speed, state.projection, state.exitFace, state.camera]);
+      if (mode !== 'experiment') expect([back.pointIndex, back.speed, back.projection, back.decision3d, back.camera]).toEqual([state.pointIndex, state.speed, state.projection, state.decision3d, state.camera]);
       expect(back.embed).toBe(state.embed);
       expect(back.playing).toBe(false);
     }
@@ -75,6 +75,12 @@ describe('page state in the URL query', () => {
   it('fills what a link leaves out with defaults, not with the last visit', () => {
     const state = stateFromQuery('?from=1,2,3', catalogue)!;
     expect(state).toEqual({ ...first(), options: { from: [1, 2, 3], to: [10, 7, 6] } });
+  });
+
+  it('reads the decision overlay from links that still call it exitFace', () => {
+    expect(stateFromQuery('from=0,0,0&to=10,7,6&exitFace=1', catalogue)!.decision3d).toBe(true);
+    expect(stateFromQuery('from=0,0,0&to=10,7,6&exitFace=1&decision3d=0', catalogue)!.decision3d).toBe(false);
+    expect(stateFromQuery('exitFace=1', catalogue)).toEqual({ ...first(), decision3d: true });
   });
 
   it('replaces unusable values with defaults', () => {

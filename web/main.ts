@@ -19,10 +19,10 @@ import { formatPoint } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
 import { renderExperiment } from './experiment/experiment-panel.js';
-import { type DecisionRow, exitFaceOf } from './inspector/decision-figure.js';
+import type { DecisionRow } from './inspector/decision-figure.js';
 import { Inspector } from './inspector/inspector.js';
+import { decisionOverlay, decisionOverlayKinds } from './scene/decision-overlay.js';
 import { PALETTE } from './scene/palette.js';
-import { RegionFace } from './scene/region-face.js';
 import { SceneView } from './scene/scene-view.js';
 import type { Handle } from './scene/endpoint-handles.js';
 import { type AppState, type Catalogue, MODES, type Mode, tracedAlgorithms, traceOptions } from './state/app-state.js';
@@ -149,8 +149,8 @@ function run(catalogue: Catalogue): void {
   const view2d = byId('view-2d', HTMLInputElement);
   view2d.addEventListener('change', () => store.update({ projection: view2d.checked ? '2d' : '3d', camera: null }));
   byId('reset-view', HTMLButtonElement).addEventListener('click', () => store.update({ camera: null }));
-  const exitFace = byId('exit-face', HTMLInputElement);
-  exitFace.addEventListener('change', () => store.update({ exitFace: exitFace.checked }));
+  const decision3d = byId('decision-3d', HTMLInputElement);
+  decision3d.addEventListener('change', () => store.update({ decision3d: decision3d.checked }));
 
   const timeline = new Timeline(
     {
@@ -168,13 +168,12 @@ function run(catalogue: Catalogue): void {
     },
     store,
   );
-  /** The decision the inspector shows: the exit-face overlay is drawn from the same values. */
+  /** The decision the inspector shows: the view's decision overlay is drawn from the same values. */
   let decision: { trace: RemoteTrace; pointIndex: number; row: DecisionRow | undefined } | undefined;
-  /** The exit face of the shown decision in the view, when asked for and the trace has one. */
-  function drawExitFace(): void {
+  /** The shown decision in the view, when asked for and its step has an overlay. */
+  function drawDecision(): void {
     const d = decision;
-    const face = store.state.exitFace && d ? exitFaceOf(d.trace.columns, d.row) : undefined;
-    scene.setOverlay(face && d ? new RegionFace(face, d.trace.point(d.pointIndex - 1), d.trace.point(d.pointIndex)) : undefined);
+    scene.setOverlay(store.state.decision3d && d ? decisionOverlay(d.trace, d.pointIndex, d.row) : undefined);
   }
   const inspector = new Inspector({
     point: byId('inspector-point', HTMLElement),
@@ -187,7 +186,7 @@ function run(catalogue: Catalogue): void {
     setupNote: byId('setup-note', HTMLParagraphElement),
   }, (trace, pointIndex, row) => {
     decision = { trace, pointIndex, row };
-    drawExitFace();
+    drawDecision();
   });
   const goTo = (pointIndex: number) => store.update({ pointIndex, playing: false });
   const charts = new PathCharts(byId('charts', HTMLDivElement), goTo);
@@ -268,12 +267,13 @@ function run(catalogue: Catalogue): void {
     view2d.checked = state.projection === '2d' && scene.planar;
     view2d.disabled = !scene.planar;
     view2d.parentElement!.title = scene.planar ? 'Orthographic view of the path\'s plane, with the pixel grid' : 'The path is not in one plane';
-    const hasFace = main?.columns.some((c) => c.name === 'face_u') ?? false;
-    exitFace.checked = state.exitFace;
-    exitFace.disabled = !hasFace;
-    byId('exit-face-label', HTMLLabelElement).title = hasFace
-      ? "The exit face of the current step's decision: its regions a-d, where the ideal line crosses it, the corner A-D taken"
-      : 'Only the method of discriminate regions decides by an exit face';
+    const overlays = decisionOverlayKinds(main?.columns ?? []);
+    decision3d.checked = state.decision3d;
+    decision3d.disabled = overlays.length === 0;
+    byId('decision-3d-label', HTMLLabelElement).title =
+      overlays.length > 0
+        ? `The current step's decision in the view: ${overlays.join('; or ')}.`
+        : "This algorithm's decisions have no 3D picture: only the discriminate regions' exit face and the circle's candidates do";
     scene.setHandles(handles());
     decision = undefined;
     inspector.setTrace(main, Math.min(pointIndex, main?.steps ?? 0));
@@ -429,9 +429,9 @@ function run(catalogue: Catalogue): void {
       scene.setCamera(state.camera);
       sceneB?.setCamera(state.camera);
     }
-    if (state.exitFace !== previous.exitFace) {
-      exitFace.checked = state.exitFace;
-      drawExitFace();
+    if (state.decision3d !== previous.decision3d) {
+      decision3d.checked = state.decision3d;
+      drawDecision();
     }
     if (state.mode === 'gcode') gcodePanel.render();
     experimentForm.setValues(state.experiment);

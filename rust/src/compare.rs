@@ -551,7 +551,7 @@ mod request_tests {
         );
         assert_eq!(
             decisions(&a),
-            serde_json::json!({"octant": "1", "fast": "y", "error_stay": 1, "error_move": 8, "slow_steps": false, "correction": false})
+            serde_json::json!({"octant": "1", "fast": "y", "residual_stay": 1, "residual_move": -8, "slow_steps": false, "correction": false, "other_candidate": "-x"})
         );
         assert_eq!(
             b.explanation,

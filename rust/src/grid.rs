@@ -16,6 +16,20 @@ pub const AXIS_NAMES: [&str; MAX_AXES] = ["x", "y", "z", "a", "b", "c"];
 /// axis): the labels of an octant column, which stores octant k as index k - 1.
 pub const OCTANT_LABELS: [&str; 8] = ["1", "2", "3", "4", "5", "6", "7", "8"];
 
+/// A grid axis and a way along it, as a category column's labels: index
+/// 2 axis is toward +axis, 2 axis + 1 toward -axis (see [`signed_axis`]).
+/// Columns that place something in the 3D view relative to a point use it
+/// (regions' exit-face axes, the circle's other candidate), so the page reads
+/// a direction instead of working one out.
+pub const SIGNED_AXIS_LABELS: &[&str] = &["+x", "-x", "+y", "-y", "+z", "-z"];
+
+/// The [`SIGNED_AXIS_LABELS`] index of grid axis `axis` (0-2) taken in the
+/// direction of the sign of `dir` (0 counts as +).
+pub fn signed_axis(axis: usize, dir: i64) -> u8 {
+    debug_assert!(axis < 3, "signed-axis labels cover x, y and z");
+    2 * axis as u8 + (dir < 0) as u8
+}
+
 /// Largest accepted |coordinate| of an input point, in grid units.
 pub const COORD_LIMIT: i64 = 1 << 30;
 

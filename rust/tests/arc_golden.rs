@@ -147,8 +147,14 @@ fn clockwise_half_in_g18_reports_octants_in_the_plane_s_own_numbering() {
     let octants: Vec<f64> = d.columns[0].iter().map(|k| k + 1.0).collect();
     assert_eq!(octants, [8.0, 8.0, 7.0, 7.0, 6.0, 6.0, 5.0, 5.0]);
     assert_eq!(d.columns[1], [0.0, 0.0, 2.0, 2.0, 2.0, 2.0, 0.0, 0.0]);
-    // Step 1: z stays at 3 with x = -1 (error 1) rather than moving to
-    // z = 2 (error 4).
+    // Step 1: z stays at 3 with x = -1 (residual 1) rather than moving to
+    // z = 2 (residual 4 + 1 - 9 = -4), so the candidate not taken is one
+    // cell toward -z from the reached point (Saleem eq. 6-7).
+    assert_eq!([d.columns[2][0], d.columns[3][0]], [1.0, -4.0]);
+    assert_eq!(
+        voxpath::grid::SIGNED_AXIS_LABELS[d.columns[6][0] as usize],
+        "-z"
+    );
     assert_eq!(
         t.explain(0),
         "Octant 8: x is the fast axis and steps -1; z stays (z² + x² - r² = 1) or steps -1 (-4); |1| < |-4|, so z stays (eq. 7): (x-1, y, z)."

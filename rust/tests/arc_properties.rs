@@ -20,8 +20,9 @@
 use proptest::prelude::*;
 use std::f64::consts::{PI, SQRT_2, TAU};
 use voxpath::Trace;
-use voxpath::grid::{COORD_LIMIT, Point};
+use voxpath::grid::{COORD_LIMIT, Point, SIGNED_AXIS_LABELS};
 use voxpath::ideal::{IdealPath, IdealPathInfo};
+use voxpath::trace::NO_VALUE;
 
 const PLANES: [(&str, [usize; 3]); 3] = [("xy", [0, 1, 2]), ("zx", [2, 0, 1]), ("yz", [1, 2, 0])];
 
@@ -142,8 +143,87 @@ fn check_steps(p: &[[i64; 3]], still: Option<usize>) -> Result<(), TestCaseError
     Ok(())
 }
 
+/// One decision column of `t` over all its steps, by name.
+fn column(t: &Trace, name: &str) -> Vec<f64> {
+    let i = t.columns().iter().position(|c| c.name == name).unwrap();
+    t.decisions(0, t.steps()).columns.swap_remove(i)
+}
+
+/// Checks each arc step's two candidates (Saleem section 4, eq. 6-7): the
+/// point reached and the cell `other_candidate` names from it differ by one
+/// step of the in-plane axis that is not the fast one; the stay candidate is
+/// one fast-axis step from the point before; the residual columns equal
+/// u² + v² - r² worked out here at those two cells; and the reached one has
+/// the smaller |residual|. Steps the arc did not decide (corrections, a
+/// helix's linear-only steps) have no other candidate.
+fn check_candidates(arc: &Arc, t: &Trace, p: &[[i64; 3]]) -> Result<(), TestCaseError> {
+    let [stay_col, move_col, slow_col, fast_col, other_col] = [
+        "residual_stay",
+        "residual_move",
+        "slow_steps",
+        "fast",
+        "other_candidate",
+    ]
+    .map(|name| column(t, name));
+    let [u, v, _] = arc.axes();
+    let residual = |q: [i64; 3]| {
+        let [a, b] = arc.local(&q);
+        a as i128 * a as i128 + b as i128 * b as i128 - arc.radius_sq() as i128
+    };
+    for k in 0..p.len() - 1 {
+        if stay_col[k].is_nan() {
+            prop_assert_eq!(other_col[k], f64::from(NO_VALUE), "step {}", k);
+            continue;
+        }
+        let label = SIGNED_AXIS_LABELS[other_col[k] as usize];
+        let axis = "xyz".find(&label[1..]).unwrap();
+        let sign = if label.starts_with('-') { -1 } else { 1 };
+        let reached = p[k + 1];
+        let mut other = reached;
+        other[axis] += sign;
+        let fast = fast_col[k] as usize;
+        prop_assert!(
+            (axis == u || axis == v) && axis != fast,
+            "step {}: {} with fast {}",
+            k,
+            label,
+            fast
+        );
+        let slow_steps = slow_col[k] == 1.0;
+        let stay = if slow_steps { other } else { reached };
+        let (before, after) = (arc.local(&p[k]), arc.local(&stay));
+        let fast_local = if fast == u { 0 } else { 1 };
+        prop_assert_eq!(
+            (after[fast_local] - before[fast_local]).abs(),
+            1,
+            "step {}",
+            k
+        );
+        prop_assert_eq!(after[1 - fast_local], before[1 - fast_local], "step {}", k);
+        let moved = if slow_steps { reached } else { other };
+        prop_assert_eq!(stay_col[k] as i128, residual(stay), "step {}", k);
+        prop_assert_eq!(move_col[k] as i128, residual(moved), "step {}", k);
+        prop_assert!(
+            residual(reached).abs() < residual(other).abs(),
+            "step {}",
+            k
+        );
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn circle_and_helix_steps_take_the_candidate_nearer_the_circle(
+        arc in arc_strategy(300), rise in -400i64..400
+    ) {
+        let circle = voxpath::trace_json(&arc.request("circle", 0, "")).unwrap();
+        check_candidates(&arc, &circle, &points(&circle))?;
+        let helix = voxpath::trace_json(&arc.request("helix", rise, "")).unwrap();
+        check_candidates(&arc, &helix, &points(&helix))?;
+    }
 
     #[test]
     fn circle_steps_on_the_circle_and_ends_exactly(arc in arc_strategy(300)) {
@@ -152,7 +232,7 @@ proptest! {
         let [_, _, n] = arc.axes();
         check_steps(&p, Some(n))?;
         prop_assert_eq!(*p.last().unwrap(), arc.point(arc.end, 0));
-        let correction = &t.decisions(0, t.steps()).columns[5];
+        let correction = &column(&t, "correction");
         let circle_steps = correction.iter().take_while(|&&c| c == 0.0).count();
         let corrections = correction.len() - circle_steps;
         prop_assert!(correction[circle_steps..].iter().all(|&c| c == 1.0));
@@ -283,7 +363,7 @@ proptest! {
         // takes max(n_c, n_z) steps.
         let n_c = circle.steps();
         prop_assert_eq!(helix.steps(), n_c.max(rise.unsigned_abs()));
-        let arc_steps = helix.decisions(0, helix.steps()).columns[8].iter().filter(|&&f| f == 1.0).count();
+        let arc_steps = column(&helix, "arc_steps").iter().filter(|&&f| f == 1.0).count();
         prop_assert_eq!(arc_steps as u64, n_c);
         // The linear axis only ever moves toward its end.
         for w in p.windows(2) {

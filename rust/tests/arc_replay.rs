@@ -6,7 +6,7 @@
 mod common;
 
 use voxpath::arc::ArcSpec;
-use voxpath::arc::circle_saleem::SaleemCircle;
+use voxpath::arc::circle_saleem::{CircleWhy, SaleemCircle};
 use voxpath::grid::Point;
 use voxpath::trace::{CHECKPOINT_INTERVAL, Decision, Stepper};
 use voxpath::{Request, TraceBuilder};
@@ -23,7 +23,7 @@ fn a_circle_with_a_correction_replays_across_checkpoints() {
     let mut p = spec.from;
     let (mut rows, mut explanations, mut points) = (Vec::new(), Vec::new(), vec![p]);
     while let Some((step, why)) = stepper.next_step() {
-        let mut row = [0.0; 6];
+        let mut row = [0.0; CircleWhy::COLUMNS.len()];
         why.write(&mut row);
         rows.push(row);
         explanations.push(why.explain(&p, step));

@@ -5,9 +5,9 @@
 mod common;
 
 use proptest::prelude::*;
-use voxpath::grid::{COORD_LIMIT, Point};
+use voxpath::grid::{COORD_LIMIT, Point, SIGNED_AXIS_LABELS};
 use voxpath::ideal::IdealPath;
-use voxpath::line::regions_wang::{FACE_AXIS_LABELS, Region, RegionsWang};
+use voxpath::line::regions_wang::{Region, RegionsWang};
 use voxpath::trace::{Stepper, TiePolicy};
 
 /// Wang's bound (section 3.2): the chosen corner is at most sqrt(2)/2 from
@@ -183,7 +183,7 @@ proptest! {
                 Some((u_sign, v_sign)) => {
                     for (i, &axis) in passive.iter().enumerate() {
                         // The axis and the way it grows: the direction of travel.
-                        let label = axes[i].map(|a| FACE_AXIS_LABELS[a as usize]).unwrap_or("none");
+                        let label = axes[i].map(|a| SIGNED_AXIS_LABELS[a as usize]).unwrap_or("none");
                         let expected = format!("{}{}", if travel(axis) < 0 { '-' } else { '+' }, ["x", "y", "z"][axis]);
                         prop_assert_eq!(label, expected.as_str());
                         // From the ideal line itself (Wang eq. 2), in units of
@@ -249,7 +249,7 @@ fn face_crossings_of_wang_s_example_from_the_paper_s_equations() {
         got.push([u.unwrap(), v.unwrap()]);
         assert_eq!(
             why.face_axes()
-                .map(|a| a.map(|a| FACE_AXIS_LABELS[a as usize])),
+                .map(|a| a.map(|a| SIGNED_AXIS_LABELS[a as usize])),
             [Some("+y"), Some("+z")]
         );
     }

@@ -272,7 +272,13 @@ fn a_program_s_line_steps_have_no_circle_values_and_its_arc_steps_no_regions_val
     };
     let none = f64::from(NO_VALUE);
     // Steps 0-3 are the line's (4 steps along x), 4-9 the arc's.
-    for name in ["octant", "fast", "slow_steps", "correction"] {
+    for name in [
+        "octant",
+        "fast",
+        "slow_steps",
+        "correction",
+        "other_candidate",
+    ] {
         assert_eq!(column(name)[..4], [none; 4], "{name}");
         assert!(column(name)[4..].iter().all(|&v| v != none), "{name}");
     }

@@ -28,18 +28,28 @@ async function inspected(page: Page): Promise<void> {
   await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
 }
 
+/** Pixels within 10 per channel of `rgb` in a PNG. */
+function pixelsOf(png: Buffer, [r, g, b]: readonly [number, number, number]): number {
+  const { data } = PNG.sync.read(png);
+  let count = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    if (Math.abs(data[i]! - r) <= 10 && Math.abs(data[i + 1]! - g) <= 10 && Math.abs(data[i + 2]! - b) <= 10) count++;
+  }
+  return count;
+}
+
 /**
  * Pixels of the exit face's crossing dot, PALETTE.crossing (#f0e442,
  * Okabe-Ito yellow), which nothing else in the view is drawn in.
  */
-function crossingPixels(png: Buffer): number {
-  const { data } = PNG.sync.read(png);
-  let count = 0;
-  for (let i = 0; i < data.length; i += 4) {
-    if (Math.abs(data[i]! - 0xf0) <= 10 && Math.abs(data[i + 1]! - 0xe4) <= 10 && Math.abs(data[i + 2]! - 0x42) <= 10) count++;
-  }
-  return count;
-}
+const crossingPixels = (png: Buffer) => pixelsOf(png, [0xf0, 0xe4, 0x42]);
+
+/**
+ * Pixels of the circle's candidate outlines, PALETTE.candidate (#0072b2,
+ * Okabe-Ito blue), which nothing else in an arc's view is drawn in (region
+ * b of an exit face shares it, and a circle has no exit face).
+ */
+const candidatePixels = (png: Buffer) => pixelsOf(png, [0x00, 0x72, 0xb2]);
 
 /** A PNG of the first element matching `selector`, as bytes. */
 function shot(page: Page, selector: string): Promise<Buffer> {
@@ -100,7 +110,7 @@ describe('trace mode', () => {
     await p.close();
   });
 
-  it('draws the exit face in the view when its checkbox is on, and keeps that in the link', async () => {
+  it('draws the exit face in the view when "Decision in 3D" is on, and keeps that in the link', async () => {
     // Step 3 from (2,1,1): the line crosses x = 3 at y = 2.1, z = 1.8 (Wang
     // eq. 2), 0.6 and 0.3 cells from the face's centre (face_u = M/20 = 0.6,
     // face_v = N/20 = 0.3). The camera looks at that face from close by.
@@ -108,7 +118,7 @@ describe('trace mode', () => {
     const { page } = p;
     await steps(page, 10);
     await inspected(page);
-    const checkbox = page.getByLabel('Exit face');
+    const checkbox = page.getByLabel('Decision in 3D');
     expect(await checkbox.isChecked()).toBe(false);
     const canvas = '[data-testid=scene-canvas]';
     expect(crossingPixels(await shot(page, canvas))).toBe(0);
@@ -116,7 +126,7 @@ describe('trace mode', () => {
     // From the keyboard: Space on the focused checkbox.
     await checkbox.focus();
     await page.keyboard.press('Space');
-    await page.waitForURL(/exitFace=1/);
+    await page.waitForURL(/decision3d=1/);
     await expect.poll(async () => crossingPixels(await shot(page, canvas))).toBeGreaterThan(30);
     await screenshot(page, 'exit-face', canvas);
     // The inspector's figure marks the same crossing, at 0.5 + 0.6 of the face's width: past corner D's side.
@@ -128,21 +138,54 @@ describe('trace mode', () => {
     const q = await openPage(new URL(page.url()).search);
     await steps(q.page, 10);
     await inspected(q.page);
-    expect(await q.page.getByLabel('Exit face').isChecked()).toBe(true);
+    expect(await q.page.getByLabel('Decision in 3D').isChecked()).toBe(true);
     await expect.poll(async () => crossingPixels(await shot(q.page, canvas))).toBeGreaterThan(30);
 
-    // Off again; and an algorithm that decides by no face has none to show.
+    // Off again; and an algorithm whose decisions have no 3D picture has none to show.
     await checkbox.uncheck();
-    await page.waitForURL(/exitFace=0/);
+    await page.waitForURL(/decision3d=0/);
     await expect.poll(async () => crossingPixels(await shot(page, canvas))).toBe(0);
     await q.page.getByTestId('algorithm').selectOption('bresenham3d');
-    await expect.poll(() => q.page.getByLabel('Exit face').isDisabled()).toBe(true);
+    await expect.poll(() => q.page.getByLabel('Decision in 3D').isDisabled()).toBe(true);
     await inspected(q.page);
     expect(crossingPixels(await shot(q.page, canvas))).toBe(0);
     expect(p.problems()).toEqual([]);
     expect(q.problems()).toEqual([]);
     await p.close();
     await q.close();
+  });
+
+  it("draws the circle's two candidates with their residuals when \"Decision in 3D\" is on", async () => {
+    // Saleem section 4, eq. 6-7, r = 5 counter-clockwise from (5, 0): step 3
+    // from (5, 2) compares (5, 3), 25 + 9 - 25 = 9, with (4, 3), 16 + 9 - 25
+    // = 0, and takes (4, 3), so the other candidate is one cell toward +x.
+    const p = await openPage('?algorithm=circle&from=5,0,0&to=0,5,0&center=0,0,0&step=3');
+    const { page } = p;
+    await steps(page, 7);
+    await inspected(page);
+    const canvas = '[data-testid=scene-canvas]';
+    expect(candidatePixels(await shot(page, canvas))).toBe(0);
+    const checkbox = page.getByLabel('Decision in 3D');
+    expect(await checkbox.isDisabled()).toBe(false);
+    await checkbox.focus();
+    await page.keyboard.press('Space');
+    await page.waitForURL(/decision3d=1/);
+    await expect.poll(async () => candidatePixels(await shot(page, canvas))).toBeGreaterThan(200);
+    await screenshot(page, 'arc-candidates', canvas);
+    const labels = page.locator('.candidate-label');
+    expect((await labels.allInnerTexts()).sort()).toEqual(['move: 0, taken', 'stay: 9']);
+    expect(await page.locator('.candidate-label.chosen').innerText()).toBe('move: 0, taken');
+
+    // The next step draws its own pair: from (4, 3), (4, 4) at 7 against (3, 4) at 0.
+    await page.getByTestId('next').click();
+    await expect.poll(async () => (await labels.allInnerTexts()).sort()).toEqual(['move: 0, taken', 'stay: 7']);
+    // Off again: nothing of it stays.
+    await checkbox.uncheck();
+    await page.waitForURL(/decision3d=0/);
+    await expect.poll(async () => candidatePixels(await shot(page, canvas))).toBe(0);
+    expect(await labels.count()).toBe(0);
+    expect(p.problems()).toEqual([]);
+    await p.close();
   });
 
   it('moves a focused endpoint handle with the arrow keys, re-tracing the move', async () => {
@@ -296,6 +339,27 @@ describe('G-code mode', () => {
     expect(await page.getByTestId('gcode-picked-line').getAttribute('data-line')).toBe('6');
     const stats = await screenshot(page, 'gcode-square', '[data-testid=scene-canvas]');
     expect(stats.differingFraction).toBeGreaterThan(0.05);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("shows each step's own figure in a program of a line and an arc: the exit face, then the circle's residuals", async () => {
+    // At 4 steps/mm, G1 to (4, 2) is steps 1-4 (regions), G2 about (4, 0)
+    // from (4, 2) steps 5-10 (Saleem's circle). Step 6 from (5, 2): x steps
+    // +1, and y stays at (6, 2), 4 + 4 - 4 = 4, or steps to (6, 1),
+    // 4 + 1 - 4 = 1, nearer 0 (eq. 6-7).
+    const gcode = encodeURIComponent('G21 G90\nG1 X1 Y0.5\nG2 X1 Y-0.5 I0 J-0.5\n');
+    const p = await openPage(`?mode=gcode&gcode=${gcode}&stepsPerMm=4&step=2`);
+    const { page } = p;
+    await steps(page, 10);
+    await inspected(page);
+    const figure = page.getByTestId('decision-figure');
+    await expect.poll(() => figure.locator('.face-region.chosen').count()).toBe(1);
+    await page.getByTestId('jump-input').fill('6');
+    await page.getByTestId('jump-input').press('Enter');
+    await expect.poll(() => figure.locator('.bar-label').allTextContents()).toEqual(['stay', 'move']);
+    expect(await figure.locator('.bar-value').allTextContents()).toEqual(['4', '1 (taken)']);
+    expect(await figure.locator('.face-region').count()).toBe(0);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -1,14 +1,17 @@
 /**
- * A picture of one decision, chosen by which columns the trace has (never by
- * the algorithm's id), drawn from the values the core replayed:
+ * A picture of one decision, chosen by which columns the trace has and the
+ * step fills (never by the algorithm's id), drawn from the values the core
+ * replayed:
  * - region and corner (Wang's discriminate regions): the exit face with its
  *   regions a-d, the segments e-h and the centre o between them, the region
  *   the core says the line crosses, the point where it crosses (face_u,
  *   face_v) and the corner A-D it picked;
  * - threshold and error columns (Bresenham): one bar per error term against
  *   the threshold it is compared with;
- * - error_stay and error_move (Saleem's circle): the residual of each
+ * - residual_stay and residual_move (Saleem's circle): the residual of each
  *   candidate, the one the step took marked.
+ * A G-code trace has the columns of both its algorithms; each step gets the
+ * figure of the algorithm that took it.
  * Nothing else is drawn: the table of values above it has every column.
  */
 import { readDecision } from '../core/export.js';
@@ -55,18 +58,27 @@ export interface ExitFace {
   vSign: 1 | -1;
 }
 
-/** A face axis label ('+y', '-z') as its grid axis and direction; undefined where the step has none. */
-function faceAxis(text: string | undefined): { axis: number; sign: 1 | -1 } | undefined {
+/**
+ * A signed-axis label ('+y', '-z': the core's SIGNED_AXIS_LABELS) as its grid
+ * axis and direction; undefined where the step has none.
+ */
+function signedAxis(text: string | undefined): { axis: number; sign: 1 | -1 } | undefined {
   if (text === undefined) return undefined;
   return { axis: 'xyz'.indexOf(text[1]!), sign: text[0] === '-' ? -1 : 1 };
 }
 
+/** True when the trace has every one of `names` among its columns. */
+export const hasColumns = (columns: readonly ColumnSpec[], names: readonly string[]) => names.every((name) => columns.some((c) => c.name === name));
+
+/** The columns exitFaceOf reads. */
+export const EXIT_FACE_COLUMNS = ['region', 'corner', 'face_u', 'face_v', 'face_u_axis', 'face_v_axis'] as const;
+
 export function exitFaceOf(columns: readonly ColumnSpec[], row: DecisionRow | undefined): ExitFace | undefined {
-  if (!row || !['region', 'corner', 'face_u', 'face_v', 'face_u_axis', 'face_v_axis'].every((name) => columns.some((c) => c.name === name))) return undefined;
+  if (!row || !hasColumns(columns, EXIT_FACE_COLUMNS)) return undefined;
   const region = label(columns, 'region', row.region!);
   const corner = label(columns, 'corner', row.corner!);
-  const u = faceAxis(label(columns, 'face_u_axis', row.face_u_axis!));
-  const v = faceAxis(label(columns, 'face_v_axis', row.face_v_axis!));
+  const u = signedAxis(label(columns, 'face_u_axis', row.face_u_axis!));
+  const v = signedAxis(label(columns, 'face_v_axis', row.face_v_axis!));
   if (!region || !corner || !u || Number.isNaN(row.face_u!)) return undefined;
   return {
     region,
@@ -78,6 +90,36 @@ export function exitFaceOf(columns: readonly ColumnSpec[], row: DecisionRow | un
     vAxis: v?.axis,
     vSign: v?.sign ?? 1,
   };
+}
+
+/**
+ * The two candidates of a step of Saleem's circle (section 4, eq. 6-7),
+ * read from the core's columns: the cell not taken as a grid axis and
+ * direction from the point the step reached (other_candidate), and the
+ * residual x² + y² − r² of each, the stay candidate (only the fast axis
+ * steps) and the move candidate (the slow axis steps too). Undefined when
+ * the trace has no such columns or the step made no such decision (a
+ * correction step, a helix step of the linear axis alone, a line step in a
+ * G-code program).
+ */
+export interface ArcCandidates {
+  /** Grid axis (0 = x) and direction (+1 or -1) from the reached point to the candidate not taken. */
+  otherAxis: number;
+  otherSign: 1 | -1;
+  /** Whether the reached point is the move candidate (the slow axis stepped) rather than the stay one. */
+  tookMove: boolean;
+  residualStay: number;
+  residualMove: number;
+}
+
+/** The columns arcCandidatesOf reads. */
+export const ARC_CANDIDATE_COLUMNS = ['other_candidate', 'slow_steps', 'residual_stay', 'residual_move'] as const;
+
+export function arcCandidatesOf(columns: readonly ColumnSpec[], row: DecisionRow | undefined): ArcCandidates | undefined {
+  if (!row || !hasColumns(columns, ARC_CANDIDATE_COLUMNS)) return undefined;
+  const other = signedAxis(label(columns, 'other_candidate', row.other_candidate!));
+  if (!other || Number.isNaN(row.residual_stay!) || Number.isNaN(row.residual_move!)) return undefined;
+  return { otherAxis: other.axis, otherSign: other.sign, tookMove: row.slow_steps === 1, residualStay: row.residual_stay!, residualMove: row.residual_move! };
 }
 
 /**
@@ -179,30 +221,49 @@ function bars(title: string, values: { label: string; value: number; note?: stri
   return root;
 }
 
-/** The picture for `row`, or undefined when the columns call for none (or the start point has no decision). */
+/** Each error term against the threshold it is compared with (Bresenham); undefined where the step has none. */
+function thresholdFigure(columns: readonly ColumnSpec[], row: DecisionRow): SVGSVGElement | undefined {
+  if (!hasColumns(columns, ['threshold']) || Number.isNaN(row.threshold!)) return undefined;
+  const errors = columns.filter((c) => /^error/.test(c.name) && !Number.isNaN(row[c.name]!));
+  if (errors.length === 0) return undefined;
+  return bars(
+    'Each error term against the threshold it is compared with; the sentence above says which axes stepped.',
+    errors.map((c) => ({ label: c.name, value: row[c.name]! })),
+    { label: 'threshold', value: row.threshold! },
+  );
+}
+
+/** The residual of each of the circle's candidates, the one taken marked; undefined where the step has none. */
+function residualsFigure(columns: readonly ColumnSpec[], row: DecisionRow): SVGSVGElement | undefined {
+  const c = arcCandidatesOf(columns, row);
+  if (!c) return undefined;
+  return bars('The residual x² + y² − r² of each candidate: the step takes the one nearer zero.', [
+    { label: 'stay', value: c.residualStay, note: c.tookMove ? undefined : '(taken)' },
+    { label: 'move', value: c.residualMove, note: c.tookMove ? '(taken)' : undefined },
+  ]);
+}
+
+/**
+ * The figures, each drawn only where its columns apply to the step: a
+ * G-code trace has the columns of its line and its arc algorithm, and a
+ * step of one leaves the other's empty, so the first figure that applies is
+ * shown, not the first whose columns the trace has.
+ */
+const FIGURES: ((columns: readonly ColumnSpec[], row: DecisionRow) => SVGSVGElement | undefined)[] = [
+  (columns, row) => {
+    const face = exitFaceOf(columns, row);
+    return face && regionFace(face);
+  },
+  thresholdFigure,
+  residualsFigure,
+];
+
+/** The picture for `row`, or undefined when no figure applies to it (or the start point has no decision). */
 export function decisionFigure(columns: readonly ColumnSpec[], row: DecisionRow | undefined): SVGSVGElement | undefined {
   if (!row) return undefined;
-  const has = (name: string) => columns.some((c) => c.name === name);
-  if (has('region') && has('corner')) {
-    // No face for a line with no passive axis (Wang's type ②: no region).
-    const face = exitFaceOf(columns, row);
-    return face ? regionFace(face) : undefined;
-  }
-  if (has('threshold')) {
-    const errors = columns.filter((c) => /^error/.test(c.name) && !Number.isNaN(row[c.name]!));
-    if (errors.length === 0 || Number.isNaN(row.threshold!)) return undefined;
-    return bars(
-      'Each error term against the threshold it is compared with; the sentence above says which axes stepped.',
-      errors.map((c) => ({ label: c.name, value: row[c.name]! })),
-      { label: 'threshold', value: row.threshold! },
-    );
-  }
-  if (has('error_stay') && has('error_move') && !Number.isNaN(row.error_stay!)) {
-    const moved = row.slow_steps === 1;
-    return bars('The residual x² + y² − r² of each candidate: the step takes the one nearer zero.', [
-      { label: 'stay', value: row.error_stay!, note: moved ? undefined : '(taken)' },
-      { label: 'move', value: row.error_move!, note: moved ? '(taken)' : undefined },
-    ]);
+  for (const figure of FIGURES) {
+    const drawn = figure(columns, row);
+    if (drawn) return drawn;
   }
   return undefined;
 }

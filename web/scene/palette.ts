@@ -28,6 +28,12 @@ export const PALETTE = {
   regionB: '#0072b2',
   regionC: '#009e73',
   regionD: '#cc79a7',
+  /**
+   * The circle's two candidate cells (Okabe-Ito blue), outlined: the one
+   * taken solid and thicker, the other dashed, so they differ in more than
+   * hue. Shared with region b, which is never shown at the same step.
+   */
+  candidate: '#0072b2',
   /** Where the ideal line crosses the exit plane (Okabe-Ito yellow, ringed in black): no other part of the view is yellow. */
   crossing: '#f0e442',
   /** Grid lines on the floor and axis arrows. */

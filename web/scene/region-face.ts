@@ -12,16 +12,13 @@
  * face, up to half a cell (the face_u column's doc): the regions are
  * quadrants of the exit plane, so they are drawn on past the face, fainter.
  *
- * It is drawn over the cells (no depth test): the face runs through the
+ * It is drawn over the cells (overlay-group.ts): the face runs through the
  * centres of the cells it is decided between, where the cubes would hide it.
  */
 import * as THREE from 'three';
-import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
-import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
-import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
-import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import type { ExitFace } from '../inspector/decision-figure.js';
 import { sceneLabel } from './grid-axes.js';
+import { OverlayGroup } from './overlay-group.js';
 import { PALETTE } from './palette.js';
 
 /** Each region's quadrant: the signs of (u, v) in it (Wang Fig. 4b: A steps the first passive axis, C the second). */
@@ -56,14 +53,10 @@ const CROSSING_RADIUS = 0.075;
 const CROSSING_RING = 0.105;
 /** The chosen corner's ring, inner and outer radius, cells. */
 const CORNER_RING: [number, number] = [0.13, 0.19];
-/** Over the cells and the ideal line (renderOrder 2). */
-const RENDER_ORDER = 10;
 
 const unit = (axis: number, sign: number) => new THREE.Vector3().setComponent(axis, sign);
 
-export class RegionFace extends THREE.Group {
-  readonly #disposables: { dispose(): void }[] = [];
-
+export class RegionFace extends OverlayGroup {
   /** `face` of the step from `before` to `after` (points of the trace, 3 coordinates). */
   constructor(face: ExitFace, before: ArrayLike<number>, after: ArrayLike<number>) {
     super();
@@ -89,7 +82,7 @@ export class RegionFace extends THREE.Group {
         cellEdges.push(...p, ...q);
       }
     }
-    this.#lines(cellEdges, CELL_LINE_PX, PALETTE.axis);
+    this.lines(cellEdges, CELL_LINE_PX, PALETTE.axis);
 
     const corners: [string, number, number][] = [];
     if (face.v === undefined) {
@@ -97,8 +90,8 @@ export class RegionFace extends THREE.Group {
       // active axes arrive together; its halves are regions b and a, split
       // at the point e.
       for (const r of REGIONS.filter((r) => r.v < 0)) {
-        this.#lines([...at(0, 0).toArray(), ...at(r.u / 2, 0).toArray()], EDGE_LINE_PX, r.colour);
-        this.#lines([...at(r.u / 2, 0).toArray(), ...at(r.u * PLANE_EXTENT, 0).toArray()], FACE_LINE_PX, r.colour, PLANE_EDGE_OPACITY);
+        this.lines([...at(0, 0).toArray(), ...at(r.u / 2, 0).toArray()], EDGE_LINE_PX, r.colour);
+        this.lines([...at(r.u / 2, 0).toArray(), ...at(r.u * PLANE_EXTENT, 0).toArray()], FACE_LINE_PX, r.colour, { opacity: PLANE_EDGE_OPACITY });
         this.add(sceneLabel(r.name, regionLabelClass(r.name), at(r.u / 4, 0)));
       }
       corners.push(['A', 0.5, 0], ['B', -0.5, 0]);
@@ -117,7 +110,7 @@ export class RegionFace extends THREE.Group {
         [0, -0.5, 0, 0.5],
         [-0.5, 0, 0.5, 0],
       ].flatMap(([u1, v1, u2, v2]) => [...at(u1!, v1!).toArray(), ...at(u2!, v2!).toArray()]);
-      this.#lines(outline, FACE_LINE_PX, PALETTE.ideal);
+      this.lines(outline, FACE_LINE_PX, PALETTE.ideal);
       for (const [name, [u, v]] of Object.entries(CORNERS)) corners.push([name, u, v]);
     }
     const segmentAt = SEGMENT_LABELS[face.region];
@@ -154,31 +147,12 @@ export class RegionFace extends THREE.Group {
   }
 
   #mesh(geometry: THREE.BufferGeometry, colour: string, opacity: number): THREE.Mesh {
-    // Transparent even when opaque: three draws opaque objects before all
-    // transparent ones, so only this way does renderOrder alone set the order.
     const material = new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity, side: THREE.DoubleSide, depthTest: false, depthWrite: false });
     const mesh = new THREE.Mesh(geometry, material);
     // Later parts over earlier ones: the plane, the face, the ring, the dot.
-    mesh.renderOrder = RENDER_ORDER + this.children.length;
+    mesh.renderOrder = this.nextRenderOrder();
     this.add(mesh);
-    this.#disposables.push(geometry, material);
+    this.track(geometry, material);
     return mesh;
-  }
-
-  /** Line segments, flat pairs of xyz end points, `widthPx` wide. */
-  #lines(segments: number[], widthPx: number, colour: string, opacity = 1): void {
-    const geometry = new LineSegmentsGeometry().setPositions(segments);
-    const material = new LineMaterial({ color: colour, linewidth: widthPx, transparent: true, opacity, depthTest: false, depthWrite: false });
-    const lines = new LineSegments2(geometry, material);
-    lines.renderOrder = RENDER_ORDER + this.children.length;
-    this.add(lines);
-    this.#disposables.push(geometry, material);
-  }
-
-  dispose(): void {
-    for (const d of this.#disposables) d.dispose();
-    this.traverse((o) => {
-      if (o instanceof CSS2DObject) o.element.remove();
-    });
   }
 }

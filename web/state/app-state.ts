@@ -58,8 +58,8 @@ export interface AppState {
   projection: Projection;
   /** null: framed by the page (the whole path from the default direction). */
   camera: CameraState | null;
-  /** Draw the exit face of the current step's decision in the view (scene/region-face.ts), for traces that have one. */
-  exitFace: boolean;
+  /** Draw the current step's decision in the view (scene/decision-overlay.ts: an exit face, a circle's candidates), for traces that have one. */
+  decision3d: boolean;
   /** Point index shown: the position after this many steps (0..=steps). */
   pointIndex: number;
   playing: boolean;
@@ -202,7 +202,7 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     experiment: { ...DEFAULT_EXPERIMENT },
     projection: defaultProjection(axisCount([info], {})),
     camera: null,
-    exitFace: false,
+    decision3d: false,
     pointIndex: 0,
     playing: false,
     speed: DEFAULT_SPEED,

@@ -5,13 +5,15 @@
  *   ?mode=compare&algorithm=regions&other=greedy&layout=side&from=0,0,0&to=10,7,6
  *   ?mode=gcode&gcode=G1%20X10&stepsPerMm=80&lineAlgorithm=regions&arcAlgorithm=circle
  *   ?mode=experiment&algorithm=regions&count=100&seed=1&maxCoordinate=100
- *   ...&exitFace=1&camera=12.5,-30,20,5,3.5,3,1&embed=1
+ *   ...&decision3d=1&camera=12.5,-30,20,5,3.5,3,1&embed=1
  *
  * Option keys are the API's option names, so a link reads like the CLI's
  * flags (--from 0,0,0); a mode writes only its own keys. `step` is the point
  * index shown (steps taken); `camera` is position x,y,z, target x,y,z and
- * zoom, absent while the page frames the path itself; `exitFace` (1 or 0)
- * is the view's exit-face overlay. `playing` is left out
+ * zoom, absent while the page frames the path itself; `decision3d` (1 or 0)
+ * is the view's decision overlay (an exit face, a circle's candidates),
+ * read from `exitFace` in links made before it drew more than the exit
+ * face. `playing` is left out
  * on purpose: a page opened from a link starts paused, as moving content
  * should not start by itself.
  */
@@ -125,7 +127,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
   }
   if (state.mode === 'experiment') options(state.experiment);
   else {
-    pairs.push(['step', String(state.pointIndex)], ['speed', String(state.speed)], ['view', state.projection], ['exitFace', state.exitFace ? '1' : '0']);
+    pairs.push(['step', String(state.pointIndex)], ['speed', String(state.speed)], ['view', state.projection], ['decision3d', state.decision3d ? '1' : '0']);
     if (state.camera) {
       const c = state.camera;
       pairs.push(['camera', [...c.position, ...c.target, c.zoom].map(formatOption).join(',')]);
@@ -139,7 +141,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
 const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
 /** Keys that say a query describes a state (any option name counts too). */
-const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'exitFace', 'camera', 'gcode', 'embed'];
+const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'decision3d', 'exitFace', 'camera', 'gcode', 'embed'];
 
 /**
  * The state a query describes, or undefined when it has none of the state's
@@ -175,7 +177,7 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   const speed = numberOf(params.get('speed') ?? '');
   if (SPEEDS_STEPS_PER_SECOND.some((s) => s === speed)) state.speed = speed!;
   state.projection = PROJECTIONS.find((p) => p === params.get('view')) ?? defaultProjection(axisCount(infos, state.options));
-  state.exitFace = params.get('exitFace') === '1';
+  state.decision3d = (params.get('decision3d') ?? params.get('exitFace')) === '1';
   state.camera = parseCamera(params.get('camera'));
   state.embed = params.get('embed') === '1';
   return state;

@@ -25,7 +25,7 @@ use super::planes::{Frame, OCTANTS, OctantRule, Orientation, octant_ahead};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, norm_sq};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
+use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
 use crate::ideal::{IdealPath, within_i64_product_bound};
 use crate::line::step_target;
 use crate::request::{FROM, MAX_STEPS, Request, TO};
@@ -80,16 +80,16 @@ pub const FAST: Column = Column {
     doc: "The axis that steps every time in this octant; empty for correction steps.",
 };
 
-pub const ERROR_STAY: Column = Column {
-    name: "error_stay",
+pub const RESIDUAL_STAY: Column = Column {
+    name: "residual_stay",
     kind: ColumnKind::Int,
-    doc: "|u² + v² - r²| (Saleem eq. 6, u and v relative to the centre) of the candidate where only the fast axis steps.",
+    doc: "u² + v² - r² (Saleem eq. 6 without its absolute value, u and v relative to the centre; > 0 outside the circle, < 0 inside) of the candidate where only the fast axis steps.",
 };
 
-pub const ERROR_MOVE: Column = Column {
-    name: "error_move",
+pub const RESIDUAL_MOVE: Column = Column {
+    name: "residual_move",
     kind: ColumnKind::Int,
-    doc: "|u² + v² - r²| of the candidate where the slow axis steps too; the slow axis steps when this is the smaller (eq. 7).",
+    doc: "u² + v² - r² of the candidate where the slow axis steps too; the slow axis steps when this one is nearer 0 (eq. 7 compares the absolute values, Saleem's error).",
 };
 
 pub const SLOW_STEPS: Column = Column {
@@ -102,6 +102,12 @@ pub const CORRECTION: Column = Column {
     name: "correction",
     kind: ColumnKind::Flag,
     doc: "1 for a step that closes the gap between the rasterised circle and a programmed end point that is not on it.",
+};
+
+pub const OTHER_CANDIDATE: Column = Column {
+    name: "other_candidate",
+    kind: ColumnKind::Category(SIGNED_AXIS_LABELS),
+    doc: "The candidate the step did not take, as a direction from the point the step reached: one cell along the slow axis that way (-x: the cell toward -x). The two candidates differ only on the slow axis, so the reached point and this cell are the pair eq. (7) compared: the reached point is the stay candidate when slow_steps is 0 and the move candidate when it is 1. (In a helix the cell is at the reached point's height on the linear axis; u² + v² - r² does not depend on it.) Empty for correction steps.",
 };
 
 /// Why one step of the circle was taken.
@@ -142,8 +148,15 @@ pub enum CircleStep {
 }
 
 impl Decision for CircleWhy {
-    const COLUMNS: &'static [Column] =
-        &[OCTANT, FAST, ERROR_STAY, ERROR_MOVE, SLOW_STEPS, CORRECTION];
+    const COLUMNS: &'static [Column] = &[
+        OCTANT,
+        FAST,
+        RESIDUAL_STAY,
+        RESIDUAL_MOVE,
+        SLOW_STEPS,
+        CORRECTION,
+        OTHER_CANDIDATE,
+    ];
 
     /// The two candidates' errors differ by an odd number: never equal.
     const NEVER_TIES: bool = true;
@@ -158,15 +171,26 @@ impl Decision for CircleWhy {
                 slow_steps,
                 ..
             } => {
-                row[1] = self.orientation.axis(rule.fast) as f64;
-                row[2] = residual_stay.unsigned_abs() as f64;
-                row[3] = residual_move.unsigned_abs() as f64;
+                let f = &self.orientation;
+                row[1] = f.axis(rule.fast) as f64;
+                row[2] = residual_stay as f64;
+                row[3] = residual_move as f64;
                 row[4] = slow_steps as u8 as f64;
                 row[5] = 0.0;
+                // The move candidate is the stay one plus the slow axis's
+                // step, so from the reached point the other candidate is that
+                // step back (slow axis stepped) or forward (it stayed).
+                let back_or_forward = if slow_steps { -1 } else { 1 };
+                let local_dir = back_or_forward * rule.slow_dir;
+                row[6] = f64::from(signed_axis(
+                    f.axis(rule.slow),
+                    f.grid_direction(rule.slow, local_dir),
+                ));
             }
             CircleStep::Correction { .. } => {
                 row[1..5].fill(f64::NAN);
                 row[5] = 1.0;
+                row[6] = f64::NAN;
             }
         }
     }
@@ -580,8 +604,8 @@ mod tests {
 
     #[test]
     fn columns_hold_the_decision() {
-        // Quarter circle r = 5 from (5, 0): step 1 compares (5, 1), error
-        // 1, with (4, 1), error |16 + 1 - 25| = 8, and keeps x.
+        // Quarter circle r = 5 from (5, 0): step 1 compares (5, 1), residual
+        // 1, with (4, 1), residual 16 + 1 - 25 = -8, and keeps x.
         let t = trace(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0,0]}"#);
         let d = t.decisions(0, 1);
         let names: Vec<&str> = t.columns().iter().map(|c| c.name).collect();
@@ -590,14 +614,15 @@ mod tests {
             [
                 "octant",
                 "fast",
-                "error_stay",
-                "error_move",
+                "residual_stay",
+                "residual_move",
                 "slow_steps",
-                "correction"
+                "correction",
+                "other_candidate"
             ]
         );
         let row: Vec<f64> = d.columns.iter().map(|c| c[0]).collect();
-        assert_eq!(row, [0.0, 1.0, 1.0, 8.0, 0.0, 0.0]);
+        assert_eq!(row, [0.0, 1.0, 1.0, -8.0, 0.0, 0.0, 1.0]);
         assert_eq!(
             t.explain(0),
             "Octant 1: y is the fast axis and steps +1; x stays (x² + y² - r² = 1) or steps -1 (-8); |1| < |-8|, so x stays (eq. 7): (x, y+1, z)."
@@ -607,6 +632,43 @@ mod tests {
                 .setup_note
                 .contains("7 circle steps to (0, 5, 0), which is the end point")
         );
+    }
+
+    #[test]
+    fn both_candidates_of_a_quarter_circle_by_hand() {
+        // Saleem section 4, eq. (6)-(7), r = 5 counter-clockwise from (5, 0)
+        // to (0, 5). In octant 1 y steps +1 and x may step -1; from (3, 4)
+        // on (octant 2) x steps -1 and y may step +1. Each step's residuals
+        // x² + y² - r² of (stay, move), and the cell taken:
+        //   (5,0): (5,1)   1  (4,1) -8  -> (5,1), other (4,1) = -x
+        //   (5,1): (5,2)   4  (4,2) -5  -> (5,2), other (4,2) = -x
+        //   (5,2): (5,3)   9  (4,3)  0  -> (4,3), other (5,3) = +x
+        //   (4,3): (4,4)   7  (3,4)  0  -> (3,4), other (4,4) = +x
+        //   (3,4): (2,4)  -5  (2,5)  4  -> (2,5), other (2,4) = -y
+        //   (2,5): (1,5)   1  (1,6) 12  -> (1,5), other (1,6) = +y
+        //   (1,5): (0,5)   0  (0,6) 11  -> (0,5), other (0,6) = +y
+        let t = trace(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0,0]}"#);
+        assert_eq!(
+            points(&t)[1..],
+            [
+                [5, 1, 0],
+                [5, 2, 0],
+                [4, 3, 0],
+                [3, 4, 0],
+                [2, 5, 0],
+                [1, 5, 0],
+                [0, 5, 0]
+            ]
+        );
+        let d = t.decisions(0, t.steps());
+        assert_eq!(d.columns[2], [1.0, 4.0, 9.0, 7.0, -5.0, 1.0, 0.0]);
+        assert_eq!(d.columns[3], [-8.0, -5.0, 0.0, 0.0, 4.0, 12.0, 11.0]);
+        assert_eq!(d.columns[4], [0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0]);
+        let other: Vec<&str> = d.columns[6]
+            .iter()
+            .map(|&k| SIGNED_AXIS_LABELS[k as usize])
+            .collect();
+        assert_eq!(other, ["-x", "-x", "+x", "+x", "-y", "+y", "+y"]);
     }
 
     #[test]
@@ -631,9 +693,13 @@ mod tests {
         let d = t.decisions(0, 5);
         assert_eq!(d.columns[5], [0.0, 0.0, 0.0, 0.0, 1.0]);
         // A correction step has no fast axis, candidates or slow step: its
-        // fast and slow_steps cells say so, rather than "x" and "no".
+        // fast, slow_steps and other_candidate cells say so, rather than
+        // "x", "no" and "+x".
         let none = f64::from(crate::trace::NO_VALUE);
-        assert_eq!([d.columns[1][4], d.columns[4][4]], [none, none]);
+        assert_eq!(
+            [d.columns[1][4], d.columns[4][4], d.columns[6][4]],
+            [none; 3]
+        );
         assert!(d.columns[2][4].is_nan() && d.columns[3][4].is_nan());
         let why = t.explain(4);
         assert!(why.contains("no nearer the end"), "{why}");

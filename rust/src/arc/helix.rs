@@ -27,7 +27,8 @@
 
 use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
 use super::circle_saleem::{
-    CORRECTION, CircleWhy, ERROR_MOVE, ERROR_STAY, FAST, OCTANT, SLOW_STEPS, SaleemCircle,
+    CORRECTION, CircleWhy, FAST, OCTANT, OTHER_CANDIDATE, RESIDUAL_MOVE, RESIDUAL_STAY, SLOW_STEPS,
+    SaleemCircle,
 };
 use super::curve::HelixPath;
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
@@ -169,10 +170,11 @@ impl Decision for HelixWhy {
     const COLUMNS: &'static [Column] = &[
         OCTANT,
         FAST,
-        ERROR_STAY,
-        ERROR_MOVE,
+        RESIDUAL_STAY,
+        RESIDUAL_MOVE,
         SLOW_STEPS,
         CORRECTION,
+        OTHER_CANDIDATE,
         // Not "major": bresenham3d's column of that name holds an axis, and a
         // G-code program's trace unions the columns of its line and arc
         // algorithms by name.
@@ -204,16 +206,18 @@ impl Decision for HelixWhy {
     ];
 
     fn write(&self, row: &mut [f64]) {
+        let circle = CircleWhy::COLUMNS.len();
         match self.arc {
-            Some(arc) => arc.write(&mut row[..6]),
-            None => row[..6].fill(f64::NAN),
+            Some(arc) => arc.write(&mut row[..circle]),
+            None => row[..circle].fill(f64::NAN),
         }
-        row[6] = self.major as u8 as f64;
-        row[7] = self.error as f64;
-        row[8] = self.arc.is_some() as u8 as f64;
+        let helix = &mut row[circle..];
+        helix[0] = self.major as u8 as f64;
+        helix[1] = self.error as f64;
+        helix[2] = self.arc.is_some() as u8 as f64;
         let linear = self.major == Major::Linear || self.minor_steps;
-        row[9] = linear as u8 as f64;
-        row[10] = self.tie as u8 as f64;
+        helix[3] = linear as u8 as f64;
+        helix[4] = self.tie as u8 as f64;
     }
 
     fn is_tie(&self) -> bool {
@@ -390,6 +394,7 @@ impl Stepper for SaleemHelix {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::grid::SIGNED_AXIS_LABELS;
 
     fn points(t: &Trace) -> Vec<[i64; 3]> {
         t.points_flat(0, t.steps() + 1)
@@ -413,8 +418,16 @@ mod tests {
             [[3, 0, 0], [3, 1, 0], [2, 2, 1], [1, 3, 1], [0, 3, 2]]
         );
         let d = t.decisions(0, 4);
-        assert_eq!(d.columns[7], [4.0, 8.0, 4.0, 8.0]);
-        assert_eq!(d.columns[9], [0.0, 1.0, 0.0, 1.0]);
+        assert_eq!(d.columns[8], [4.0, 8.0, 4.0, 8.0]);
+        assert_eq!(d.columns[10], [0.0, 1.0, 0.0, 1.0]);
+        // The arc's candidates, whatever z did: step 1 reaches (2, 2, 1)
+        // having moved x (Saleem eq. 7: (2, 2) has 4 + 4 - 9 = -1, (3, 2)
+        // has 4), so the other candidate is one cell toward +x, at z = 1.
+        assert_eq!(
+            [d.columns[2][1], d.columns[3][1], d.columns[4][1]],
+            [4.0, -1.0, 1.0]
+        );
+        assert_eq!(SIGNED_AXIS_LABELS[d.columns[6][1] as usize], "+x");
         assert!(t.explain(0).starts_with(
             "n_c = 4 >= n_z = 2, so the arc steps every time; the linear axis's error is 4 = 4 (a tie, decided by 'hold'), so the linear axis waits. Arc: Octant 1:"
         ), "{}", t.explain(0));
@@ -432,16 +445,20 @@ mod tests {
         .unwrap();
         let d = t.decisions(0, 9);
         assert_eq!(
-            d.columns[7],
+            d.columns[8],
             [8.0, 16.0, 6.0, 14.0, 4.0, 12.0, 2.0, 10.0, 0.0]
         );
-        assert_eq!(d.columns[8], [0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0]);
+        assert_eq!(d.columns[9], [0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0]);
         // Step 0 moves z alone: the circle made no decision, so its octant,
-        // fast axis, slow step and correction cells hold NO_VALUE (not
-        // octant "1", axis "x", "no", "no") and its errors NaN.
+        // fast axis, slow step, correction and other-candidate cells hold
+        // NO_VALUE (not octant "1", axis "x", "no", "no", "+x") and its
+        // residuals NaN.
         let none = f64::from(crate::trace::NO_VALUE);
-        let circle: Vec<f64> = d.columns[..6].iter().map(|c| c[0]).collect();
-        assert_eq!([circle[0], circle[1], circle[4], circle[5]], [none; 4]);
+        let circle: Vec<f64> = d.columns[..7].iter().map(|c| c[0]).collect();
+        assert_eq!(
+            [circle[0], circle[1], circle[4], circle[5], circle[6]],
+            [none; 5]
+        );
         assert!(circle[2].is_nan() && circle[3].is_nan());
         assert_eq!(t.end(), Point::new(&[0, 3, -9]));
         assert!(

@@ -14,7 +14,7 @@
 use super::terms::{Term, Terms};
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
 use std::fmt::Write;
@@ -78,11 +78,6 @@ pub enum Corner {
 }
 
 pub const CORNER_LABELS: &[&str] = &["A", "B", "C", "D"];
-
-/// Which grid axis a face coordinate runs along, and which way it grows:
-/// label `2 * axis` is toward +axis, `2 * axis + 1` toward -axis (the
-/// direction of travel; an axis that does not move counts as +).
-pub const FACE_AXIS_LABELS: &[&str] = &["+x", "-x", "+y", "-y", "+z", "-z"];
 
 impl Region {
     /// Classifies the signs of M and N: a table indexed by sign + 1, so no
@@ -154,7 +149,7 @@ impl RegionsWhy {
             .map(|d| d.map(|d| d as f64 / self.face_scale as f64))
     }
 
-    /// The [`FACE_AXIS_LABELS`] index of each face coordinate's axis; None
+    /// The [`SIGNED_AXIS_LABELS`] index of each face coordinate's axis; None
     /// for a passive axis the line does not have.
     pub fn face_axes(&self) -> [Option<u8>; 2] {
         self.geometry.passive_direction
@@ -200,12 +195,12 @@ impl Decision for RegionsWhy {
         },
         Column {
             name: "face_u_axis",
-            kind: ColumnKind::Category(FACE_AXIS_LABELS),
+            kind: ColumnKind::Category(SIGNED_AXIS_LABELS),
             doc: "The grid axis face_u runs along and the way it grows (+y: toward +y, the direction of travel; an axis that does not move counts as +); empty for type ② lines, which run through the corners and cross no face.",
         },
         Column {
             name: "face_v_axis",
-            kind: ColumnKind::Category(FACE_AXIS_LABELS),
+            kind: ColumnKind::Category(SIGNED_AXIS_LABELS),
             doc: "The grid axis face_v runs along and the way it grows; empty with fewer than two passive axes.",
         },
     ];
@@ -291,7 +286,7 @@ struct Geometry {
     passive: [u8; 2],
     passive_count: u8,
     /// Per passive axis, its axis and direction of travel as a
-    /// [`FACE_AXIS_LABELS`] index; None when absent.
+    /// [`SIGNED_AXIS_LABELS`] index; None when absent.
     passive_direction: [Option<u8>; 2],
 }
 
@@ -378,8 +373,7 @@ impl RegionsWang {
             } else {
                 let i = geometry.passive_count as usize;
                 geometry.passive[i] = axis as u8;
-                geometry.passive_direction[i] =
-                    Some(2 * axis as u8 + (mirror.sign(axis) < 0) as u8);
+                geometry.passive_direction[i] = Some(signed_axis(axis, mirror.sign(axis)));
                 geometry.passive_count += 1;
             }
         }

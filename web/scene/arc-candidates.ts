@@ -1,0 +1,67 @@
+/**
+ * The two candidates of one step of Saleem's circle (section 4, eq. 6-7) in
+ * the 3D view: the cell the step reached (the current cell) and the cell it
+ * did not take, one cell along the slow axis, both outlined; the one taken
+ * solid and thicker, the other dashed; each labelled with which candidate it
+ * is (stay: only the fast axis stepped; move: the slow axis stepped too) and
+ * its residual x² + y² − r², the one taken boxed. With the ideal circle the
+ * scene already draws, it shows why the step went where it did: the taken
+ * residual is the one nearer 0.
+ *
+ * Everything is placed from the core's columns (other_candidate, slow_steps,
+ * residual_stay, residual_move, read by arcCandidatesOf) and the point the
+ * step reached; the page derives none of it. In a helix the cells are at the
+ * reached point's height, as the column's doc says.
+ *
+ * Drawn over the cells (overlay-group.ts), as the exit face is: the taken
+ * candidate is the current cell, whose cube would hide its outline.
+ */
+import * as THREE from 'three';
+import type { ArcCandidates } from '../inspector/decision-figure.js';
+import { sceneLabel } from './grid-axes.js';
+import { OverlayGroup } from './overlay-group.js';
+import { PALETTE } from './palette.js';
+
+/** Half the outline's edge, cells: just outside the unit cube of a cell, so the outline shows around it. */
+const HALF_EDGE = 0.56;
+/** Outline widths, CSS pixels: the candidate taken, the other. */
+const TAKEN_LINE_PX = 4;
+const OTHER_LINE_PX = 2.5;
+/** Dashes of the other candidate's outline, grid units. */
+const DASH = 0.14;
+/** Labels sit this far from their cell's centre, cells, away from the other candidate (along the slow axis). */
+const LABEL_OFFSET = 1.05;
+
+/** "−8": a residual as the label shows it, with a true minus sign. */
+const signed = (v: number) => (v < 0 ? `−${-v}` : String(v));
+
+export class ArcCandidateCells extends OverlayGroup {
+  /** `candidates` of the step that reached `reached` (a point of the trace, 3 coordinates). */
+  constructor(candidates: ArcCandidates, reached: ArrayLike<number>) {
+    super();
+    const taken = new THREE.Vector3(reached[0], reached[1], reached[2]);
+    const toOther = new THREE.Vector3().setComponent(candidates.otherAxis, candidates.otherSign);
+    const other = taken.clone().add(toOther);
+    const [takenName, otherName] = candidates.tookMove ? ['move', 'stay'] : ['stay', 'move'];
+    const [takenResidual, otherResidual] = candidates.tookMove
+      ? [candidates.residualMove, candidates.residualStay]
+      : [candidates.residualStay, candidates.residualMove];
+
+    this.#outline(other, OTHER_LINE_PX, true);
+    this.#outline(taken, TAKEN_LINE_PX, false);
+    this.add(sceneLabel(`${otherName}: ${signed(otherResidual)}`, 'scene-label candidate-label', other.clone().addScaledVector(toOther, LABEL_OFFSET)));
+    this.add(sceneLabel(`${takenName}: ${signed(takenResidual)}, taken`, 'scene-label candidate-label chosen', taken.clone().addScaledVector(toOther, -LABEL_OFFSET)));
+  }
+
+  /** The twelve edges of the cube of half edge HALF_EDGE around `centre`. */
+  #outline(centre: THREE.Vector3, widthPx: number, dashed: boolean): void {
+    const segments: number[] = [];
+    const corner = (bits: number) => [0, 1, 2].map((a) => centre.getComponent(a) + (bits & (1 << a) ? HALF_EDGE : -HALF_EDGE));
+    for (let bits = 0; bits < 8; bits++) {
+      for (let a = 0; a < 3; a++) {
+        if (!(bits & (1 << a))) segments.push(...corner(bits), ...corner(bits | (1 << a)));
+      }
+    }
+    this.lines(segments, widthPx, PALETTE.candidate, dashed ? { dash: DASH } : {});
+  }
+}
