@@ -150,6 +150,16 @@ describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
   });
 });
 
+describe('arc-segments chord counts', () => {
+  it('refuses more than 65,536 chords, naming the option and the count in a readable form', async () => {
+    // Grbl's rule on a full circle of r = 10^6 with a tolerance of 1e-300:
+    // floor(0.5·2π·10^6 / sqrt(1e-300·(2·10^6 - 1e-300))) ≈ 2.2e153 chords.
+    const e = await rejection(trace({ algorithm: 'arc-segments', from: [1e6, 0, 0], to: [1e6, 0, 0], center: [0, 0, 0], tolerance: 1e-300 }));
+    expect(e.field).toBe('tolerance');
+    expect(e.message).toMatch(/splits this arc into 2\.221e153 chords, more than 65536/);
+  });
+});
+
 /**
  * Saleem's two candidates (section 4, eq. 6-7) as the core hands them to the
  * page: at each arc step, the point reached and the cell `other_candidate`

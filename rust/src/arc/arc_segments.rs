@@ -193,8 +193,9 @@ impl Chording {
         if n > MAX_CHORDS as f64 {
             return Err(Error::field(
                 self.option(),
+                // {n:.3e}: the count can have hundreds of digits.
                 format!(
-                    "splits this arc into {n} chords, more than {MAX_CHORDS}; use longer chords"
+                    "splits this arc into {n:.3e} chords, more than {MAX_CHORDS}; use longer chords"
                 ),
             ));
         }
