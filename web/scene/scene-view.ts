@@ -21,10 +21,10 @@ import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import { formatPoint } from '../format.js';
 import type { CameraState, Projection } from '../state/app-state.js';
 import { roundCamera } from '../state/query.js';
-import { Cells, cellUniforms } from './cells.js';
+import { Cells, LIGHT_DRAWING_SPAN, cellUniforms } from './cells.js';
 import { EndpointHandles, type Handle } from './endpoint-handles.js';
 import { GridAxes } from './grid-axes.js';
-import { IdealPath } from './ideal-path.js';
+import { FAT_LINE_POINTS, IdealPath } from './ideal-path.js';
 import { PALETTE } from './palette.js';
 import { VoxelPath } from './voxel-path.js';
 
@@ -43,6 +43,9 @@ const FRAME_MARGIN_SHARE = 0.08;
 const HIGHLIGHT_SIZE = 1.06;
 /** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it. */
 const SECOND_PATH_SIZE = 0.5;
+
+/** User Timing mark made when a view draws its first path. */
+export const FIRST_PATH_FRAME_MARK = 'voxpath:first-path-frame';
 
 /** What one trace gives the view: the summary parts it draws. */
 export interface DrawnTrace {
@@ -122,6 +125,10 @@ export class SceneView {
   #overlay: THREE.Object3D | undefined;
   #renderPending = false;
   #pointIndex = 0;
+  /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
+  #drawnOnce = false;
+  /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
+  readonly #warm = new THREE.Group();
 
   /** Fills `container` (a positioned element) with the canvas and its label layer. */
   constructor(container: HTMLElement, callbacks: SceneCallbacks, label = 'path view') {
@@ -166,6 +173,8 @@ export class SceneView {
       onDragged: () => this.requestRender(),
     });
 
+    this.#warmUp();
+
     new ResizeObserver(() => {
       const { clientWidth: width, clientHeight: height } = container;
       if (width === 0 || height === 0) return;
@@ -175,6 +184,39 @@ export class SceneView {
       this.#updateProjections();
       this.requestRender();
     }).observe(container);
+  }
+
+  /**
+   * Hands the GPU every shader program the view draws with, before any path
+   * arrives. WebGL compiles and links asynchronously until a program is
+   * first used, and ANGLE (Chromium's WebGL) also builds the program's
+   * pipelines on its worker threads from the link on; on a software GPU
+   * (SwiftShader, as in headless Chromium) that takes a few hundred
+   * milliseconds for this set. Started here, it runs while the worker loads
+   * the core and traces, instead of inside the first drawn frame, where the
+   * main thread would wait for it. Until the first path is drawn nothing is
+   * drawn at all: a drawn canvas is read back by the compositor (in software
+   * compositing), which waits for the GPU just the same. The empty view
+   * shows the container's background, the colour the canvas is cleared to.
+   */
+  #warmUp(): void {
+    const box = new THREE.Box3(new THREE.Vector3(-0.5, -0.5, -0.5), new THREE.Vector3(LIGHT_DRAWING_SPAN + 0.5, 0.5, 0.5));
+    // A path of each drawing (cubes; points plus near cubes), the current
+    // cell, both kinds of ideal line (fat and plain), the frame and a highlight.
+    const short = new Int32Array([0, 0, 0, 1, 0, 0]);
+    const wide = new Int32Array([0, 0, 0, LIGHT_DRAWING_SPAN, 0, 0]);
+    const longLine = new Float64Array((FAT_LINE_POINTS + 1) * 3);
+    this.#warm.add(
+      new VoxelPath(short, 3, box),
+      new VoxelPath(wide, 3, box),
+      new IdealPath(new Float64Array([0, 0, 0, 1, 0, 0]), 3),
+      new IdealPath(longLine, 3),
+      new GridAxes(new THREE.Vector3(0, 0, 0), new THREE.Vector3(1, 1, 1), 3),
+      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, false, box),
+      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, true, box),
+    );
+    // The real scene's lights, so the lit materials get the programs the real frames use.
+    this.#renderer.compile(this.#warm, this.#perspective, this.#scene);
   }
 
   /** The canvas, for export and tests. */
@@ -419,6 +461,12 @@ export class SceneView {
   }
 
   #render(): void {
+    if (!this.#drawn && !this.#drawnOnce) return;
+    // The first frame with a path is the one a software GPU is slowest at
+    // (it builds its own code for each drawing state then); the mark names
+    // that frame's task in a performance trace and for tests/browser/scale.test.ts.
+    if (!this.#drawnOnce) performance.mark(FIRST_PATH_FRAME_MARK);
+    this.#drawnOnce = true;
     const camera = this.#activeCamera();
     this.#renderer.render(this.#scene, camera);
     this.#labels.render(this.#scene, camera);
