@@ -86,15 +86,21 @@ async function launch(): Promise<Browser> {
   return chromium.launch({ executablePath, args: LAUNCH_ARGS });
 }
 
+export interface OpenOptions {
+  /** Runs in the page before any of its own scripts (Playwright's addInitScript), say to observe it from the start. */
+  initScript?: () => void;
+}
+
 /**
  * Opens the site's index page (plus `query`, with or without its leading '?')
  * in a fresh browser context of a browser shared by the test file, and waits
  * for the page's load event. Diagnostics are collected from the start.
  */
-export async function openPage(query = ''): Promise<OpenedPage> {
+export async function openPage(query = '', options: OpenOptions = {}): Promise<OpenedPage> {
   browser ??= launch();
   const context = await (await browser).newContext({ viewport: VIEWPORT });
   const page = await context.newPage();
+  if (options.initScript) await page.addInitScript(options.initScript);
   const consoleErrors: string[] = [];
   const pageErrors: string[] = [];
   const responses: ResponseRecord[] = [];
