@@ -44,8 +44,26 @@ const HIGHLIGHT_SIZE = 1.06;
 /** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it. */
 const SECOND_PATH_SIZE = 0.5;
 
-/** User Timing mark made when a view draws its first path. */
-export const FIRST_PATH_FRAME_MARK = 'voxpath:first-path-frame';
+let software: boolean | undefined;
+
+/**
+ * True when WebGL draws on the CPU (SwiftShader, llvmpipe), as in headless
+ * Chromium or on a machine without a usable GPU. There multisampling roughly
+ * doubles the time of every frame (a long G-code program's frame: about
+ * 220 ms with it, 120 ms without, on the project's 2-core test machine),
+ * and the main thread waits for each frame, so the view is drawn without
+ * antialiasing: jagged edges, but a page that answers in half the time.
+ */
+function softwareRenderer(): boolean {
+  if (software === undefined) {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const info = gl?.getExtension('WEBGL_debug_renderer_info');
+    const name = gl ? String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)) : '';
+    gl?.getExtension('WEBGL_lose_context')?.loseContext();
+    software = /swiftshader|llvmpipe|software/i.test(name);
+  }
+  return software;
+}
 
 /** What one trace gives the view: the summary parts it draws. */
 export interface DrawnTrace {
@@ -134,8 +152,7 @@ export class SceneView {
   constructor(container: HTMLElement, callbacks: SceneCallbacks, label = 'path view') {
     this.#container = container;
     this.#callbacks = callbacks;
-    // preserveDrawingBuffer: the view can be saved as a PNG at any time.
-    this.#renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: false });
+    this.#renderer = new THREE.WebGLRenderer({ antialias: !softwareRenderer(), preserveDrawingBuffer: false });
     this.#renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.#renderer.setClearColor(PALETTE.background);
     const canvas = this.#renderer.domElement;
@@ -462,10 +479,6 @@ export class SceneView {
 
   #render(): void {
     if (!this.#drawn && !this.#drawnOnce) return;
-    // The first frame with a path is the one a software GPU is slowest at
-    // (it builds its own code for each drawing state then); the mark names
-    // that frame's task in a performance trace and for tests/browser/scale.test.ts.
-    if (!this.#drawnOnce) performance.mark(FIRST_PATH_FRAME_MARK);
     this.#drawnOnce = true;
     const camera = this.#activeCamera();
     this.#renderer.render(this.#scene, camera);
