@@ -39,6 +39,8 @@ const VIEW_DIRECTION = new THREE.Vector3(0.6, -1.4, 0.9).normalize();
 /** Room around the cells for the axis arrows and tick labels: grid units, and a share of the path's size. */
 const FRAME_MARGIN = 1.3;
 const FRAME_MARGIN_SHARE = 0.08;
+/** How much one press of + or - zooms the view. */
+const KEY_ZOOM_FACTOR = 1.15;
 /** Edge of a highlighted cell: larger than a path's cell, so it shows around it. */
 const HIGHLIGHT_SIZE = 1.06;
 /** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it. */
@@ -179,8 +181,10 @@ export class SceneView {
     this.#controls.addEventListener('change', () => this.requestRender());
     this.#controls.addEventListener('end', () => this.#reportCamera());
     canvas.addEventListener('keydown', (event) => {
-      if (event.key === '+' || event.key === '=') this.#controls.dollyIn(1.15);
-      else if (event.key === '-') this.#controls.dollyOut(1.15);
+      // OrbitControls scales the camera's distance by the factor given to
+      // dollyIn (and divides by it in dollyOut): under 1 comes closer.
+      if (event.key === '+' || event.key === '=') this.#controls.dollyIn(1 / KEY_ZOOM_FACTOR);
+      else if (event.key === '-') this.#controls.dollyOut(1 / KEY_ZOOM_FACTOR);
       else if (!event.key.startsWith('Arrow')) return;
       event.preventDefault();
       this.#reportCamera();
@@ -451,7 +455,9 @@ export class SceneView {
    */
   #fit(direction: THREE.Vector3, bounds: THREE.Box3): void {
     const camera = this.#perspective;
-    const box = bounds.clone().expandByScalar(FRAME_MARGIN);
+    // Room for the axis labels, which stand a few pixels outside the box however large the path is.
+    const extent = bounds.getSize(new THREE.Vector3());
+    const box = bounds.clone().expandByScalar(FRAME_MARGIN + FRAME_MARGIN_SHARE * Math.max(extent.x, extent.y, extent.z));
     const center = box.getCenter(new THREE.Vector3());
     const right = new THREE.Vector3().crossVectors(camera.up, direction).normalize();
     const up = new THREE.Vector3().crossVectors(direction, right);
