@@ -267,12 +267,13 @@ function run(catalogue: Catalogue): void {
     view2d.parentElement!.title = scene.planar ? 'Orthographic view of the path\'s plane, with the pixel grid' : 'The path is not in one plane';
     scene.setHandles(handles());
     inspector.setTrace(main, Math.min(pointIndex, main?.steps ?? 0));
-    timeline.setSteps(main || b ? steps : undefined);
     void charts.setTrace(main);
     comparePanel.show(a, b, difference);
     gcodePanel.setProgram(program);
     timing.setTrace(program, pointIndex);
     if (program) void gcodePanel.showPoint(pointIndex);
+    // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
+    timeline.setSteps(main || b ? steps : undefined);
     byId('legend-visited', HTMLSpanElement).textContent = state.mode === 'compare' ? `visited by ${a?.algorithm ?? 'the first'}` : 'visited';
     byId('legend-second-name', HTMLSpanElement).textContent = `${b?.algorithm ?? 'second'}${side ? ' (right view)' : ''}`;
     byId('legend-only-first', HTMLSpanElement).textContent = `only ${a?.algorithm ?? 'first'} visits`;
