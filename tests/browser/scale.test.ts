@@ -200,6 +200,12 @@ describe('a 100,000-line G-code program', () => {
     console.info(`100,000-line program: longest task ${longestTask.toFixed(0)} ms of ${observed.longTasks.length} long ones, slowest input ${slowestInput.toFixed(0)} ms of ${observed.events.length}`);
     expect(longestTask).toBeLessThan(LONG_TASK_BOUND_MS);
     expect(slowestInput).toBeLessThan(LONG_TASK_BOUND_MS);
+
+    // Asked to, the page puts the whole program in the text box (at the cost the listing avoids).
+    await page.getByTestId('gcode-edit-anyway').click();
+    await editor.waitFor();
+    expect(await page.getByTestId('gcode-listing').isHidden()).toBe(true);
+    expect(await editor.inputValue()).toBe(program.text);
     expect(p.problems()).toEqual([]);
     await p.close();
   });
