@@ -46,6 +46,7 @@ const HIGHLIGHT_SIZE = 1.06;
 /** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it. */
 const SECOND_PATH_SIZE = 0.5;
 
+/** Whether WebGL draws on the CPU, found once per page by softwareRenderer(). */
 let software: boolean | undefined;
 
 /**
