@@ -13,8 +13,10 @@ afterAll(closeAll);
 
 /** The camera of the link once it has been written: distance from its target, and zoom. */
 async function linkedCamera(page: Page, previous?: string): Promise<{ text: string; distance: number; zoom: number }> {
-  await expect.poll(() => new URL(page.url()).searchParams.get('camera')).not.toBe(previous ?? null);
-  const text = new URL(page.url()).searchParams.get('camera')!;
+  const camera = () => new URL(page.url()).searchParams.get('camera');
+  // A new camera: written (the link is written a little after a change) and not the previous one.
+  await expect.poll(() => camera() !== null && camera() !== previous).toBe(true);
+  const text = camera()!;
   const [px, py, pz, tx, ty, tz, zoom] = text.split(',').map(Number) as [number, number, number, number, number, number, number];
   return { text, distance: Math.hypot(px - tx, py - ty, pz - tz), zoom };
 }
