@@ -26,6 +26,9 @@ export default defineConfig({
           // Chromium with software WebGL on a 2-core machine: one test file
           // at a time, and generous time for launches and page loads.
           fileParallelism: false,
+          // After the node project, not beside it: its long traces (10,000,000
+          // steps) would share the CPU with the page that scale.test.ts times.
+          sequence: { groupOrder: 1 },
           testTimeout: 60_000,
           hookTimeout: 60_000,
         },

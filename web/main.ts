@@ -23,7 +23,7 @@ import type { DecisionRow } from './inspector/decision-figure.js';
 import { Inspector } from './inspector/inspector.js';
 import { decisionOverlay, decisionOverlayKinds } from './scene/decision-overlay.js';
 import { PALETTE } from './scene/palette.js';
-import { SceneView } from './scene/scene-view.js';
+import { type SceneCallbacks, SceneView } from './scene/scene-view.js';
 import type { Handle } from './scene/endpoint-handles.js';
 import { type AppState, type Catalogue, MODES, type Mode, tracedAlgorithms, traceOptions } from './state/app-state.js';
 import { loadState, persistState } from './state/persist.js';
@@ -61,6 +61,15 @@ function hideAlert(): void {
 
 /** Set once the page is running; a crash before that has no trace to drop. */
 let onCoreCrash: ((message: string) => void) | undefined;
+
+/** Set once the page is running: where the view's camera moves and handle drags go. */
+let sceneEvents: SceneCallbacks | undefined;
+// Made before the core has started, so that the view's shaders compile
+// while the worker loads the core (SceneView's warm-up).
+const scene = new SceneView(byId('viewport', HTMLDivElement), {
+  onCamera: (camera) => sceneEvents?.onCamera(camera),
+  onHandle: (name, point) => sceneEvents?.onHandle(name, point),
+});
 
 const client = new TraceClient(
   () => new Worker(new URL('./worker/trace-worker.ts', import.meta.url), { type: 'module' }),
@@ -140,11 +149,11 @@ function run(catalogue: Catalogue): void {
     store.update({ experiment });
   }, 'experiment');
 
-  const sceneEvents = {
-    onCamera: (camera: AppState['camera']) => store.update({ camera }),
-    onHandle: (name: string, point: number[]) => store.update({ options: { ...store.state.options, [name]: point } }),
+  const events: SceneCallbacks = {
+    onCamera: (camera) => store.update({ camera }),
+    onHandle: (name, point) => store.update({ options: { ...store.state.options, [name]: point } }),
   };
-  const scene = new SceneView(byId('viewport', HTMLDivElement), sceneEvents);
+  sceneEvents = events;
   let sceneB: SceneView | undefined;
   const view2d = byId('view-2d', HTMLInputElement);
   view2d.addEventListener('change', () => store.update({ projection: view2d.checked ? '2d' : '3d', camera: null }));
@@ -203,6 +212,9 @@ function run(catalogue: Catalogue): void {
     {
       sample: byId('sample', HTMLSelectElement),
       text: byId('gcode-text', HTMLTextAreaElement),
+      listing: byId('gcode-listing', HTMLDivElement),
+      longNote: byId('gcode-long', HTMLParagraphElement),
+      editAnyway: byId('gcode-edit-anyway', HTMLButtonElement),
       gutter: byId('gcode-gutter', HTMLPreElement),
       backdrop: byId('gcode-backdrop', HTMLPreElement),
       machine: byId('machine-fields', HTMLDivElement),
@@ -249,7 +261,7 @@ function run(catalogue: Catalogue): void {
     scene.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
     if (state.mode === 'compare' && !side) scene.setSecond(b);
     if (side) {
-      sceneB ??= new SceneView(byId('viewport-b', HTMLDivElement), sceneEvents, 'second path view');
+      sceneB ??= new SceneView(byId('viewport-b', HTMLDivElement), events, 'second path view');
       sceneB.setTrace(b, Math.min(pointIndex, b?.steps ?? 0), state.projection, state.camera);
     } else {
       sceneB?.setTrace(undefined, 0, state.projection, null);
@@ -277,12 +289,13 @@ function run(catalogue: Catalogue): void {
     scene.setHandles(handles());
     decision = undefined;
     inspector.setTrace(main, Math.min(pointIndex, main?.steps ?? 0));
-    timeline.setSteps(main || b ? steps : undefined);
     void charts.setTrace(main);
     comparePanel.show(a, b, difference);
     gcodePanel.setProgram(program);
     timing.setTrace(program, pointIndex);
     if (program) void gcodePanel.showPoint(pointIndex);
+    // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
+    timeline.setSteps(main || b ? steps : undefined);
     byId('legend-visited', HTMLSpanElement).textContent = state.mode === 'compare' ? `visited by ${a?.algorithm ?? 'the first'}` : 'visited';
     byId('legend-second-name', HTMLSpanElement).textContent = `${b?.algorithm ?? 'second'}${side ? ' (right view)' : ''}`;
     byId('legend-only-first', HTMLSpanElement).textContent = `only ${a?.algorithm ?? 'first'} visits`;

@@ -86,15 +86,23 @@ async function launch(): Promise<Browser> {
   return chromium.launch({ executablePath, args: LAUNCH_ARGS });
 }
 
+export interface OpenOptions {
+  /** Runs in the page before any of its own scripts (Playwright's addInitScript), say to observe it from the start. */
+  initScript?: () => void;
+  /** Return once the document has arrived ('commit'), to act while it loads; default: at its load event. */
+  waitUntil?: 'load' | 'commit';
+}
+
 /**
  * Opens the site's index page (plus `query`, with or without its leading '?')
  * in a fresh browser context of a browser shared by the test file, and waits
- * for the page's load event. Diagnostics are collected from the start.
+ * for the page's load event (see OpenOptions). Diagnostics are collected from the start.
  */
-export async function openPage(query = ''): Promise<OpenedPage> {
+export async function openPage(query = '', options: OpenOptions = {}): Promise<OpenedPage> {
   browser ??= launch();
   const context = await (await browser).newContext({ viewport: VIEWPORT });
   const page = await context.newPage();
+  if (options.initScript) await page.addInitScript(options.initScript);
   const consoleErrors: string[] = [];
   const pageErrors: string[] = [];
   const responses: ResponseRecord[] = [];
@@ -160,7 +168,7 @@ export async function openPage(query = ''): Promise<OpenedPage> {
     },
   };
   opened.add(result);
-  const response = await page.goto(url, { waitUntil: 'load' });
+  const response = await page.goto(url, { waitUntil: options.waitUntil ?? 'load' });
   result.status = response?.status() ?? 0;
   return result;
 }

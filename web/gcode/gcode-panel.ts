@@ -8,6 +8,12 @@
  *   moves to the end of them;
  * - the current step asks which move made it: its line is marked in the
  *   editor (scrolled into view unless the user is typing) and in the move list.
+ *
+ * A program of more than EDITABLE_LINES lines is shown read-only in a
+ * listing that lays out only the lines in view: a text box holding 100,000
+ * lines takes Chromium over a second to lay out, in one task. Pasting over
+ * the listing replaces the program; "Edit as text" puts it in the text box
+ * anyway, at that cost.
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
@@ -20,9 +26,22 @@ import type { InputError, LineSteps } from '../worker/protocol.js';
 /** Moves listed at a time around the current one. */
 const MOVES_SHOWN = 12;
 
+/**
+ * Programs up to this many lines are edited in the text box; longer ones are
+ * listed read-only (see above). Chromium laid out 100,000 lines of G-code in
+ * a text box in 1.2 to 1.6 s on this project's 2-core test machine, so the
+ * box costs at most about 150 ms at this length.
+ */
+export const EDITABLE_LINES = 10_000;
+
 export interface GcodePanelElements {
   sample: HTMLSelectElement;
   text: HTMLTextAreaElement;
+  /** The read-only listing of a long program, a scrollable box over the text box's place. */
+  listing: HTMLElement;
+  /** The note shown with the listing, and its button that puts the program in the text box anyway. */
+  longNote: HTMLElement;
+  editAnyway: HTMLButtonElement;
   gutter: HTMLElement;
   backdrop: HTMLElement;
   machine: HTMLElement;
@@ -46,6 +65,14 @@ function lineAt(text: string, offset: number): number {
   return line;
 }
 
+/** Where each line of `text` starts (its character offset), and one past the end. */
+function lineStarts(text: string): number[] {
+  const starts = [0];
+  for (let i = text.indexOf('\n'); i !== -1; i = text.indexOf('\n', i + 1)) starts.push(i + 1);
+  starts.push(text.length + 1);
+  return starts;
+}
+
 export class GcodePanel {
   readonly #e: GcodePanelElements;
   readonly #store: Store<AppState>;
@@ -60,6 +87,18 @@ export class GcodePanel {
   /** The latest step asked about; answers for older ones are dropped. */
   #stepRequest = 0;
   #lineHeightPx = 18;
+  #paddingTopPx = 4;
+  /** The editor's text as last set or read: reading a long textarea's value copies it, so it is read once per edit. */
+  #text = '';
+  /** Offsets where the lines of #text start, plus one past its end: lines are #starts.length - 1. */
+  #starts = [0, 1];
+  /** True while the program is listed read-only rather than in the text box. */
+  #listed = false;
+  /** The gutter's numbers: only the lines in view (a program can have 100,000). */
+  readonly #gutterLines: HTMLElement;
+  /** The listing's lines in view, placed over a spacer as tall as the whole program. */
+  readonly #listingLines: HTMLElement;
+  readonly #listingSpacer: HTMLElement;
 
   constructor(elements: GcodePanelElements, catalogue: Catalogue, store: Store<AppState>, events: { onPick(line: number, steps: LineSteps): void; onRun(): void; onCancel(): void }) {
     this.#e = elements;
@@ -70,15 +109,45 @@ export class GcodePanel {
     this.#pickedMark = element('div', { className: 'line-mark picked' });
     this.#pickedMark.dataset.testid = 'gcode-picked-line';
     elements.backdrop.append(this.#currentMark, this.#pickedMark);
+    this.#gutterLines = element('span', { className: 'gutter-lines' });
+    elements.gutter.replaceChildren(this.#gutterLines);
 
-    elements.text.value = store.state.gcode;
-    this.#renderGutter();
-    elements.text.addEventListener('input', () => {
-      this.#renderGutter();
-      store.update({ gcode: elements.text.value });
+    this.#listingSpacer = element('div', { className: 'listing-spacer' });
+    this.#listingLines = element('pre', { className: 'listing-lines' });
+    elements.listing.replaceChildren(this.#listingSpacer, this.#listingLines);
+
+    this.#setText(store.state.gcode);
+    elements.text.addEventListener('input', () => this.#edited(elements.text.value, true));
+    elements.text.addEventListener('paste', (event) => {
+      // A paste that makes the program too long for the text box goes to the
+      // listing before the box lays it out (unless the user chose to edit a long one here).
+      if (this.#lineCount > EDITABLE_LINES) return;
+      const pasted = event.clipboardData?.getData('text/plain') ?? '';
+      const { selectionStart, selectionEnd } = elements.text;
+      const text = this.#text.slice(0, selectionStart) + pasted + this.#text.slice(selectionEnd);
+      if (lineStarts(text).length - 1 <= EDITABLE_LINES) return;
+      event.preventDefault();
+      this.#edited(text);
     });
-    elements.text.addEventListener('scroll', () => this.#placeMarks());
-    for (const type of ['click', 'keyup']) elements.text.addEventListener(type, () => this.#pick(lineAt(elements.text.value, elements.text.selectionStart)));
+    elements.listing.addEventListener('paste', (event) => {
+      event.preventDefault();
+      this.#edited(event.clipboardData?.getData('text/plain') ?? '');
+    });
+    elements.listing.addEventListener('click', (event) => {
+      const top = elements.listing.getBoundingClientRect().top;
+      const line = Math.floor((event.clientY - top + elements.listing.scrollTop - this.#paddingTopPx) / this.#lineHeightPx) + 1;
+      if (line >= 1 && line <= this.#lineCount) void this.#pick(line);
+    });
+    elements.editAnyway.addEventListener('click', () => {
+      this.#setText(this.#text, { editable: true });
+      elements.text.focus();
+    });
+    for (const scroller of [elements.text, elements.listing]) {
+      scroller.addEventListener('scroll', () => this.#placeMarks());
+      // Shown (the mode changed) or resized: more or fewer lines are in view.
+      new ResizeObserver(() => this.#placeMarks()).observe(scroller);
+    }
+    for (const type of ['click', 'keyup']) elements.text.addEventListener(type, () => this.#pick(lineAt(this.#text, elements.text.selectionStart)));
     elements.run.addEventListener('click', events.onRun);
     elements.cancel.addEventListener('click', events.onCancel);
 
@@ -105,22 +174,77 @@ export class GcodePanel {
     const response = await fetch(`samples/${encodeURIComponent(file)}`);
     if (!response.ok) throw new Error(`the sample ${file} could not be loaded (HTTP ${response.status})`);
     const text = await response.text();
-    this.#e.text.value = text;
-    this.#renderGutter();
+    this.#setText(text);
     this.#store.update({ gcode: text, pointIndex: 0, camera: null });
   }
 
+  /** Lines of the program. */
+  get #lineCount(): number {
+    return this.#starts.length - 1;
+  }
+
+  /** The user changed the program to `text`: in the box (`fromBox`: typed, dropped) or by a paste the box did not take. */
+  #edited(text: string, fromBox = false): void {
+    this.#setText(text, { fromBox });
+    this.#store.update({ gcode: text });
+  }
+
+  /**
+   * Shows `text`: in the text box when it has at most EDITABLE_LINES lines
+   * (or `editable`), else in the listing. `fromBox`: the box already holds
+   * it (the user typed it), so the box is not written, which would lose the
+   * cursor and the undo history.
+   */
+  #setText(text: string, { fromBox = false, editable = false } = {}): void {
+    const { text: box, listing, longNote } = this.#e;
+    this.#text = text;
+    this.#starts = lineStarts(text);
+    // Text typed in the box stays there, whatever its length.
+    this.#listed = !(editable || (fromBox && !this.#listed)) && this.#lineCount > EDITABLE_LINES;
+    box.hidden = this.#listed;
+    listing.hidden = longNote.hidden = !this.#listed;
+    if (this.#listed) {
+      // An empty box lays out at once; the listing lays out only what is in view.
+      box.value = '';
+      longNote.querySelector('.long-lines')!.textContent = this.#lineCount.toLocaleString('en');
+    } else if (!fromBox) {
+      box.value = text;
+    }
+    const style = getComputedStyle(box);
+    this.#lineHeightPx = parseFloat(style.lineHeight) || this.#lineHeightPx;
+    this.#paddingTopPx = parseFloat(style.paddingTop) || 0;
+    this.#listingSpacer.style.height = `${this.#lineCount * this.#lineHeightPx + 2 * this.#paddingTopPx}px`;
+    // As wide as the longest number (its width is not its content's: style.css contains it).
+    this.#e.gutter.style.width = `calc(${Math.max(3, String(this.#lineCount).length)}ch + 12px)`;
+    this.#placeMarks();
+  }
+
+  /** The box that scrolls the program: the text box, or the listing. */
+  get #scroller(): HTMLElement {
+    return this.#listed ? this.#e.listing : this.#e.text;
+  }
+
+  /** Numbers the lines in view (and lists them, in the listing), level with the scrolled text. */
   #renderGutter(): void {
-    const lines = this.#e.text.value.split('\n').length;
-    this.#e.gutter.textContent = Array.from({ length: lines }, (_, i) => i + 1).join('\n');
-    this.#lineHeightPx = parseFloat(getComputedStyle(this.#e.text).lineHeight) || this.#lineHeightPx;
+    const scroller = this.#scroller;
+    const first = Math.floor(scroller.scrollTop / this.#lineHeightPx);
+    const last = Math.min(this.#lineCount, first + Math.ceil(scroller.clientHeight / this.#lineHeightPx) + 1);
+    const numbers: number[] = [];
+    for (let line = first + 1; line <= last; line++) numbers.push(line);
+    this.#gutterLines.textContent = numbers.join('\n');
+    this.#gutterLines.style.transform = `translateY(${first * this.#lineHeightPx - scroller.scrollTop}px)`;
+    if (this.#listed) {
+      // Lines first + 1..last, without the last one's line break.
+      this.#listingLines.textContent = this.#text.slice(this.#starts[first], Math.max(this.#starts[first]!, this.#starts[last]! - 1));
+      this.#listingLines.style.top = `${first * this.#lineHeightPx}px`;
+    }
   }
 
   /** Keeps the gutter and the marks level with the text as it scrolls. */
   #placeMarks(): void {
-    const { text, gutter } = this.#e;
-    gutter.scrollTop = text.scrollTop;
-    const top = (line: number | undefined) => (line === undefined ? -1e6 : (line - 1) * this.#lineHeightPx - text.scrollTop + parseFloat(getComputedStyle(text).paddingTop));
+    const scroller = this.#scroller;
+    this.#renderGutter();
+    const top = (line: number | undefined) => (line === undefined ? -1e6 : (line - 1) * this.#lineHeightPx - scroller.scrollTop + this.#paddingTopPx);
     this.#currentMark.style.transform = `translateY(${top(this.#currentLine)}px)`;
     this.#pickedMark.style.transform = `translateY(${top(this.#pickedLine)}px)`;
     this.#currentMark.dataset.line = String(this.#currentLine ?? '');
@@ -160,14 +284,18 @@ export class GcodePanel {
     return list;
   }
 
-  /** Puts the editor's cursor on `line` and picks it. */
+  /** Puts the editor's cursor on `line` (or scrolls the listing to it) and picks it. */
   #goToLine(line: number): void {
-    const { text } = this.#e;
-    let offset = 0;
-    for (let l = 1; l < line && offset !== -1; l++) offset = text.value.indexOf('\n', offset) + 1;
-    text.focus();
-    text.setSelectionRange(offset, offset);
-    text.scrollTop = Math.max(0, (line - 3) * this.#lineHeightPx);
+    const top = Math.max(0, (line - 3) * this.#lineHeightPx);
+    if (this.#listed) {
+      this.#e.listing.scrollTop = top;
+    } else {
+      const { text } = this.#e;
+      const offset = this.#starts[Math.min(line, this.#lineCount) - 1]!;
+      text.focus();
+      text.setSelectionRange(offset, offset);
+      text.scrollTop = top;
+    }
     void this.#pick(line);
   }
 
@@ -181,10 +309,11 @@ export class GcodePanel {
     const moves = await program.moves(from, from + MOVES_SHOWN);
     if (request !== this.#stepRequest || program !== this.#program) return;
     this.#currentLine = line;
-    const { text } = this.#e;
+    const scroller = this.#scroller;
     const top = (line - 1) * this.#lineHeightPx;
-    if (document.activeElement !== text && (top < text.scrollTop || top > text.scrollTop + text.clientHeight - this.#lineHeightPx)) {
-      text.scrollTop = Math.max(0, top - text.clientHeight / 3);
+    // Not while the user types in the box: the view would jump away from the cursor.
+    if (document.activeElement !== this.#e.text && (top < scroller.scrollTop || top > scroller.scrollTop + scroller.clientHeight - this.#lineHeightPx)) {
+      scroller.scrollTop = Math.max(0, top - scroller.clientHeight / 3);
     }
     this.#placeMarks();
     this.#renderMoves(program, from, moves, moveIndex);
@@ -233,10 +362,7 @@ export class GcodePanel {
 
   /** Brings the editor in line with the state (a sample, a link). */
   render(): void {
-    if (this.#e.text.value !== this.#store.state.gcode) {
-      this.#e.text.value = this.#store.state.gcode;
-      this.#renderGutter();
-    }
+    if (this.#text !== this.#store.state.gcode) this.#setText(this.#store.state.gcode);
     this.#machineForm.setValues(this.#store.state.machine);
   }
 }

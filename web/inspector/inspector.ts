@@ -91,10 +91,6 @@ export class Inspector {
     }
     e.point.textContent = formatPoint(trace.point(pointIndex));
     e.decisionHeading.textContent = pointIndex === 0 ? 'Decision: none yet' : `Decision of step ${pointIndex}`;
-    // The segment whose step produced this point (the first one's at the start).
-    const stepIndex = Math.max(pointIndex - 1, 0);
-    const segment = trace.segments.findLast((s) => s.firstStep <= stepIndex) ?? trace.segments[0];
-    e.setupNote.textContent = segment?.note ?? '';
     this.#wantedPointIndex = pointIndex;
     if (!this.#fetching) void this.#fetch();
   }
@@ -110,10 +106,12 @@ export class Inspector {
       while (this.#trace && this.#shownPointIndex !== this.#wantedPointIndex) {
         const trace = this.#trace;
         const pointIndex = this.#wantedPointIndex;
-        const [deviation, decisions, explanation] = await Promise.all([
+        const [deviation, decisions, explanation, note] = await Promise.all([
           trace.deviationInRange(pointIndex, pointIndex + 1),
           pointIndex > 0 ? trace.decisionsInRange(pointIndex - 1, pointIndex) : undefined,
           pointIndex > 0 ? trace.explain(pointIndex - 1) : undefined,
+          // The segment whose step produced this point (the first one's at the start).
+          trace.segmentNote(Math.max(pointIndex - 1, 0)),
         ]);
         if (trace !== this.#trace) continue;
         this.#e.deviation.textContent = `${deviation[0]!.toFixed(6)} grid units`;
@@ -124,6 +122,7 @@ export class Inspector {
         const figure = decisionFigure(trace.columns, row);
         this.#e.figure.replaceChildren(...(figure ? [figure] : []));
         this.#e.explanation.textContent = explanation ?? 'This is the start point: no step has been decided yet.';
+        this.#e.setupNote.textContent = note;
         this.#shownPointIndex = pointIndex;
         this.#onDecision(trace, pointIndex, row);
       }

@@ -23,6 +23,9 @@ interface Placed {
   point: number[];
 }
 
+/** The letter on each point's handle. */
+const HANDLE_LETTERS: Record<string, string> = { from: 'S', to: 'E', center: 'c' };
+
 /** Keys that move a focused handle: [axis, change]. */
 const KEY_MOVES: Record<string, [number, number]> = {
   ArrowLeft: [0, -1],
@@ -95,7 +98,8 @@ export class EndpointHandles {
   #place(name: string, placed: Placed, point: number[]): void {
     placed.point = [...point];
     placed.object.position.set(point[0] ?? 0, point[1] ?? 0, point[2] ?? 0);
-    placed.button.textContent = name === 'center' ? 'c' : name === 'from' ? 'A' : name === 'to' ? 'B' : name[0]!.toUpperCase();
+    // S(tart) and E(nd), not A and B: the decision picture names its corners A to D.
+    placed.button.textContent = HANDLE_LETTERS[name] ?? name[0]!.toUpperCase();
     placed.button.setAttribute('aria-label', `${name} ${formatPoint(point)}: drag, or use the arrow keys${point.length > 2 ? ' and Page Up / Page Down' : ''} to move it`);
     placed.button.title = `${name} ${formatPoint(point)}`;
   }

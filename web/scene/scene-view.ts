@@ -21,10 +21,10 @@ import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import { formatPoint } from '../format.js';
 import type { CameraState, Projection } from '../state/app-state.js';
 import { roundCamera } from '../state/query.js';
-import { Cells, cellUniforms } from './cells.js';
+import { Cells, LIGHT_DRAWING_SPAN, cellUniforms } from './cells.js';
 import { EndpointHandles, type Handle } from './endpoint-handles.js';
 import { GridAxes } from './grid-axes.js';
-import { IdealPath } from './ideal-path.js';
+import { FAT_LINE_POINTS, IdealPath } from './ideal-path.js';
 import { PALETTE } from './palette.js';
 import { VoxelPath } from './voxel-path.js';
 
@@ -39,10 +39,34 @@ const VIEW_DIRECTION = new THREE.Vector3(0.6, -1.4, 0.9).normalize();
 /** Room around the cells for the axis arrows and tick labels: grid units, and a share of the path's size. */
 const FRAME_MARGIN = 1.3;
 const FRAME_MARGIN_SHARE = 0.08;
+/** How much one press of + or - zooms the view. */
+const KEY_ZOOM_FACTOR = 1.15;
 /** Edge of a highlighted cell: larger than a path's cell, so it shows around it. */
 const HIGHLIGHT_SIZE = 1.06;
 /** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it. */
 const SECOND_PATH_SIZE = 0.5;
+
+/** Whether WebGL draws on the CPU, found once per page by softwareRenderer(). */
+let software: boolean | undefined;
+
+/**
+ * True when WebGL draws on the CPU (SwiftShader, llvmpipe), as in headless
+ * Chromium or on a machine without a usable GPU. There multisampling roughly
+ * doubles the time of every frame (a long G-code program's frame: about
+ * 220 ms with it, 120 ms without, on the project's 2-core test machine),
+ * and the main thread waits for each frame, so the view is drawn without
+ * antialiasing: jagged edges, but a page that answers in half the time.
+ */
+function softwareRenderer(): boolean {
+  if (software === undefined) {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const info = gl?.getExtension('WEBGL_debug_renderer_info');
+    const name = gl ? String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)) : '';
+    gl?.getExtension('WEBGL_lose_context')?.loseContext();
+    software = /swiftshader|llvmpipe|software/i.test(name);
+  }
+  return software;
+}
 
 /** What one trace gives the view: the summary parts it draws. */
 export interface DrawnTrace {
@@ -122,13 +146,16 @@ export class SceneView {
   #overlay: THREE.Object3D | undefined;
   #renderPending = false;
   #pointIndex = 0;
+  /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
+  #drawnOnce = false;
+  /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
+  readonly #warm = new THREE.Group();
 
   /** Fills `container` (a positioned element) with the canvas and its label layer. */
   constructor(container: HTMLElement, callbacks: SceneCallbacks, label = 'path view') {
     this.#container = container;
     this.#callbacks = callbacks;
-    // preserveDrawingBuffer: the view can be saved as a PNG at any time.
-    this.#renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: false });
+    this.#renderer = new THREE.WebGLRenderer({ antialias: !softwareRenderer(), preserveDrawingBuffer: false });
     this.#renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.#renderer.setClearColor(PALETTE.background);
     const canvas = this.#renderer.domElement;
@@ -155,8 +182,10 @@ export class SceneView {
     this.#controls.addEventListener('change', () => this.requestRender());
     this.#controls.addEventListener('end', () => this.#reportCamera());
     canvas.addEventListener('keydown', (event) => {
-      if (event.key === '+' || event.key === '=') this.#controls.dollyIn(1.15);
-      else if (event.key === '-') this.#controls.dollyOut(1.15);
+      // OrbitControls scales the camera's distance by the factor given to
+      // dollyIn (and divides by it in dollyOut): under 1 comes closer.
+      if (event.key === '+' || event.key === '=') this.#controls.dollyIn(1 / KEY_ZOOM_FACTOR);
+      else if (event.key === '-') this.#controls.dollyOut(1 / KEY_ZOOM_FACTOR);
       else if (!event.key.startsWith('Arrow')) return;
       event.preventDefault();
       this.#reportCamera();
@@ -165,6 +194,8 @@ export class SceneView {
       onMove: (name, point) => callbacks.onHandle(name, point),
       onDragged: () => this.requestRender(),
     });
+
+    this.#warmUp();
 
     new ResizeObserver(() => {
       const { clientWidth: width, clientHeight: height } = container;
@@ -175,6 +206,39 @@ export class SceneView {
       this.#updateProjections();
       this.requestRender();
     }).observe(container);
+  }
+
+  /**
+   * Hands the GPU every shader program the view draws with, before any path
+   * arrives. WebGL compiles and links asynchronously until a program is
+   * first used, and ANGLE (Chromium's WebGL) also builds the program's
+   * pipelines on its worker threads from the link on; on a software GPU
+   * (SwiftShader, as in headless Chromium) that takes a few hundred
+   * milliseconds for this set. Started here, it runs while the worker loads
+   * the core and traces, instead of inside the first drawn frame, where the
+   * main thread would wait for it. Until the first path is drawn nothing is
+   * drawn at all: a drawn canvas is read back by the compositor (in software
+   * compositing), which waits for the GPU just the same. The empty view
+   * shows the container's background, the colour the canvas is cleared to.
+   */
+  #warmUp(): void {
+    const box = new THREE.Box3(new THREE.Vector3(-0.5, -0.5, -0.5), new THREE.Vector3(LIGHT_DRAWING_SPAN + 0.5, 0.5, 0.5));
+    // A path of each drawing (cubes; points plus near cubes), the current
+    // cell, both kinds of ideal line (fat and plain), the frame and a highlight.
+    const short = new Int32Array([0, 0, 0, 1, 0, 0]);
+    const wide = new Int32Array([0, 0, 0, LIGHT_DRAWING_SPAN, 0, 0]);
+    const longLine = new Float64Array((FAT_LINE_POINTS + 1) * 3);
+    this.#warm.add(
+      new VoxelPath(short, 3, box),
+      new VoxelPath(wide, 3, box),
+      new IdealPath(new Float64Array([0, 0, 0, 1, 0, 0]), 3),
+      new IdealPath(longLine, 3),
+      new GridAxes(new THREE.Vector3(0, 0, 0), new THREE.Vector3(1, 1, 1), 3),
+      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, false, box),
+      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, true, box),
+    );
+    // The real scene's lights, so the lit materials get the programs the real frames use.
+    this.#renderer.compile(this.#warm, this.#perspective, this.#scene);
   }
 
   /** The canvas, for export and tests. */
@@ -392,7 +456,9 @@ export class SceneView {
    */
   #fit(direction: THREE.Vector3, bounds: THREE.Box3): void {
     const camera = this.#perspective;
-    const box = bounds.clone().expandByScalar(FRAME_MARGIN);
+    // Room for the axis labels, which stand a few pixels outside the box however large the path is.
+    const extent = bounds.getSize(new THREE.Vector3());
+    const box = bounds.clone().expandByScalar(FRAME_MARGIN + FRAME_MARGIN_SHARE * Math.max(extent.x, extent.y, extent.z));
     const center = box.getCenter(new THREE.Vector3());
     const right = new THREE.Vector3().crossVectors(camera.up, direction).normalize();
     const up = new THREE.Vector3().crossVectors(direction, right);
@@ -419,6 +485,8 @@ export class SceneView {
   }
 
   #render(): void {
+    if (!this.#drawn && !this.#drawnOnce) return;
+    this.#drawnOnce = true;
     const camera = this.#activeCamera();
     this.#renderer.render(this.#scene, camera);
     this.#labels.render(this.#scene, camera);

@@ -30,8 +30,9 @@ export function handlesItsOwnKeys(target: EventTarget | null, key: string): bool
   // The view and its handles use the arrows themselves (data-own-keys).
   if (target.closest('[data-own-keys]')) return true;
   if (target.isContentEditable || target instanceof HTMLTextAreaElement || target instanceof HTMLSelectElement) return true;
-  // A range input already steps with arrows and Home/End; other inputs edit text.
-  if (target instanceof HTMLInputElement) return true;
+  // A range, checkbox or radio button takes arrows, Home/End and Space, but
+  // no printable key (so '?' still opens the help there); other inputs edit text.
+  if (target instanceof HTMLInputElement) return !['range', 'checkbox', 'radio'].includes(target.type) || key.length !== 1 || key === ' ';
   // Space and Enter press a focused button.
   return target instanceof HTMLButtonElement && (key === ' ' || key === 'Enter');
 }

@@ -8,11 +8,12 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ColumnSpec, DecisionColumns, Metrics, SegmentInfo, TraceOptions, TraceSummary } from '../core/types.js';
+import type { ColumnSpec, DecisionColumns, Metrics, TraceOptions } from '../core/types.js';
 import type {
   ChartSeries,
   InputError,
   LineSteps,
+  PathSummary,
   PulseCodes,
   ReplyMessage,
   ReplyValue,
@@ -190,7 +191,7 @@ export class TraceClient {
  * A trace held by the worker. Point index k runs 0..=steps, step index k runs
  * 0..steps-1 (step k moves point k to point k + 1), as in the core's Trace.
  */
-export class RemoteTrace implements TraceSummary {
+export class RemoteTrace implements PathSummary {
   readonly algorithm: string;
   readonly dims: number;
   readonly steps: number;
@@ -198,7 +199,6 @@ export class RemoteTrace implements TraceSummary {
   readonly end: number[];
   readonly columns: ColumnSpec[];
   readonly metrics: Metrics;
-  readonly segments: SegmentInfo[];
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
   readonly points: Int32Array;
   /** The ideal path as the core draws it, flat with stride dims, grid units. */
@@ -212,7 +212,7 @@ export class RemoteTrace implements TraceSummary {
     client: TraceClient,
     traceId: number,
     generation: number,
-    summary: TraceSummary,
+    summary: PathSummary,
     points: Int32Array,
     idealPolyline: Float64Array,
   ) {
@@ -226,7 +226,6 @@ export class RemoteTrace implements TraceSummary {
     this.end = summary.end;
     this.columns = summary.columns;
     this.metrics = summary.metrics;
-    this.segments = summary.segments;
     this.points = points;
     this.idealPolyline = idealPolyline;
   }
@@ -259,6 +258,11 @@ export class RemoteTrace implements TraceSummary {
   /** The core's one sentence on why step index k was taken. */
   explain(stepIndex: number): Promise<string> {
     return this.ask({ kind: 'explain', traceId: this.traceId, stepIndex });
+  }
+
+  /** The note of the segment (move) that takes step index k: what to know about it before it starts. */
+  segmentNote(stepIndex: number): Promise<string> {
+    return this.ask({ kind: 'segmentNote', traceId: this.traceId, stepIndex });
   }
 
   /** The charts' rows: every point, or buckets when there are more than maxPoints. */

@@ -25,6 +25,7 @@ export type WorkerRequest =
   | { kind: 'decisions'; traceId: number; fromStep: number; toStep: number }
   | { kind: 'deviation'; traceId: number; fromPoint: number; toPoint: number }
   | { kind: 'explain'; traceId: number; stepIndex: number }
+  | { kind: 'segmentNote'; traceId: number; stepIndex: number }
   | { kind: 'series'; traceId: number; maxPoints: number }
   | { kind: 'difference'; traceIdA: number; traceIdB: number }
   | { kind: 'pulses'; traceId: number; fromStep: number; toStep: number }
@@ -37,9 +38,17 @@ export type WorkerRequest =
 
 export type RequestKind = WorkerRequest['kind'];
 
+/**
+ * The summary the page receives: the trace's, less its segments. A G-code
+ * program has a segment per move (100,000 for a program of 100,000 lines),
+ * which the page would take a long task to receive; it asks for the one
+ * note it shows instead (segmentNote).
+ */
+export type PathSummary = Omit<TraceSummary, 'segments'>;
+
 /** A finished trace as the page receives it: the summary and the arrays every view needs at once. */
 export interface TracedPath {
-  summary: TraceSummary;
+  summary: PathSummary;
   points: Int32Array;
   idealPolyline: Float64Array;
 }
@@ -109,6 +118,7 @@ export interface ReplyValue {
   decisions: DecisionColumns;
   deviation: Float64Array;
   explain: string;
+  segmentNote: string;
   series: ChartSeries;
   difference: TraceDifference;
   pulses: PulseCodes;

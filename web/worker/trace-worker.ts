@@ -48,8 +48,22 @@ function tracedPath(t: Trace): TracedPath {
   // detached here, and the cache would then hand out an empty array.
   const points = t.pointsInRange(0, t.steps + 1);
   const idealPolyline = t.idealPolyline();
-  const { algorithm, dims, steps, start, end, columns, metrics, segments } = t;
-  return { summary: { algorithm, dims, steps, start, end, columns, metrics, segments }, points, idealPolyline };
+  const { algorithm, dims, steps, start, end, columns, metrics } = t;
+  return { summary: { algorithm, dims, steps, start, end, columns, metrics }, points, idealPolyline };
+}
+
+/** The note of the segment that takes step index `stepIndex` (the first segment's before any step). */
+function segmentNote(t: Trace, stepIndex: number): string {
+  const segments = t.segments;
+  // Segments are in step order: the last one starting at or before the step, by bisection.
+  let low = 0;
+  let high = segments.length - 1;
+  while (low < high) {
+    const middle = (low + high + 1) >> 1;
+    if (segments[middle]!.firstStep <= stepIndex) low = middle;
+    else high = middle - 1;
+  }
+  return segments[low]?.note ?? '';
 }
 
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {
@@ -92,6 +106,8 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
     }
     case 'explain':
       return { value: held(request.traceId).explain(request.stepIndex), transfer: [] };
+    case 'segmentNote':
+      return { value: segmentNote(held(request.traceId), request.stepIndex), transfer: [] };
     case 'series': {
       const series = chartSeries(held(request.traceId), request.maxPoints);
       const arrays = [series.pointIndex, ...series.position, ...series.ideal, series.deviationMax, series.deviationMin];

@@ -1,0 +1,74 @@
+// Controls of the view and the form found wrong by hand, in headless
+// Chromium: the endpoint handles' letters, the + and - keys on the view, and
+// the gcd option (Wang section 4), which must reach the core and the link.
+//
+// Expected values: on (0,0,0)->(10,8,6) regions' first discriminant is
+// M_1 = 2·8 - 10 = 6 (Wang eq. 10); with gcd the deltas are divided by
+// gcd(10, 8, 6) = 2, so M_1 = 2·4 - 5 = 3.
+import type { Page } from 'playwright-core';
+import { afterAll, describe, expect, it } from 'vitest';
+import { closeAll, openPage } from './harness.js';
+
+afterAll(closeAll);
+
+/** The camera of the link once it has been written: distance from its target, and zoom. */
+async function linkedCamera(page: Page, previous?: string): Promise<{ text: string; distance: number; zoom: number }> {
+  const camera = () => new URL(page.url()).searchParams.get('camera');
+  // A new camera: written (the link is written a little after a change) and not the previous one.
+  await expect.poll(() => camera() !== null && camera() !== previous).toBe(true);
+  const text = camera()!;
+  const [px, py, pz, tx, ty, tz, zoom] = text.split(',').map(Number) as [number, number, number, number, number, number, number];
+  return { text, distance: Math.hypot(px - tx, py - ty, pz - tz), zoom };
+}
+
+describe('view and form controls', () => {
+  it('labels the handles S and E, and zooms in with + and out with - in 3D and 2D', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    expect(await page.getByTestId('handle-from').innerText()).toBe('S');
+    expect(await page.getByTestId('handle-to').innerText()).toBe('E');
+
+    await page.getByTestId('scene-canvas').focus();
+    await page.keyboard.press('+');
+    const closer = await linkedCamera(page);
+    await page.keyboard.press('-');
+    const back = await linkedCamera(page, closer.text);
+    expect(back.distance).toBeGreaterThan(closer.distance);
+
+    // 2D: the orthographic view zooms instead of moving.
+    await page.getByTestId('algorithm').selectOption('greedy');
+    await page.getByTestId('scene-canvas').filter({ has: page.locator('xpath=self::*[@data-projection="2d"]') }).waitFor();
+    await page.getByTestId('scene-canvas').focus();
+    await page.keyboard.press('+');
+    const zoomed = await linkedCamera(page, back.text);
+    expect(zoomed.zoom).toBeGreaterThan(1);
+    await page.keyboard.press('-');
+    expect((await linkedCamera(page, zoomed.text)).zoom).toBeLessThan(zoomed.zoom);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('traces with the gcd reduction when its box is checked, and keeps it over a new visit', async () => {
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=10,8,6&step=1');
+    const { page } = p;
+    const m = page.getByTestId('inspector-value-M');
+    await m.filter({ hasText: /^6$/ }).waitFor();
+    const box = page.getByRole('checkbox', { name: 'gcd' });
+    expect(await box.isChecked()).toBe(false);
+    await box.check();
+    await m.filter({ hasText: /^3$/ }).waitFor();
+    await page.waitForURL(/gcd=true/);
+
+    // A visit without a link comes back to the last state, box and trace.
+    const url = new URL(page.url());
+    await page.goto(url.origin + url.pathname);
+    await m.filter({ hasText: /^3$/ }).waitFor();
+    expect(await box.isChecked()).toBe(true);
+    await box.uncheck();
+    await m.filter({ hasText: /^6$/ }).waitFor();
+    await page.waitForURL(/gcd=false/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -1,0 +1,213 @@
+// The page at scale, in headless Chromium: a 1,000,000-step line and a
+// 100,000-line G-code program load, run and scrub while the page keeps
+// answering input. "Answering" is measured, not assumed: a PerformanceObserver
+// of type 'longtask' (buffered, installed before the page's own scripts)
+// records every main-thread task over 50 ms, and the Event Timing API records
+// how long each key press and click waited for the main thread and ran. Every
+// task counts, the first drawn frame's included.
+//
+// What the long tasks are (found with Chromium's tracing): on this machine
+// WebGL runs on SwiftShader, a GPU in software, and the compositor reads each
+// drawn frame back, so the main thread waits while the CPU draws it: 100 to
+// 260 ms a frame for these paths, more for the first one (SwiftShader builds
+// its code for each drawing state then). The page's own scripts stay under
+// about 150 ms.
+//
+// Expected values come from the inputs, not the page: regions takes one step
+// per unit of the longest axis (Wang et al. 2020, section 2), so the line to
+// (1000000, 700000, 600000) has 1,000,000 steps, and a G-code move of (dx, dy)
+// steps takes max(|dx|, |dy|) of them.
+import type { Page } from 'playwright-core';
+import { afterAll, describe, expect, it } from 'vitest';
+import { closeAll, openPage } from './harness.js';
+
+afterAll(closeAll);
+
+/**
+ * The longest main-thread task allowed, ms: 500 ms is where Web Vitals'
+ * "poor" responsiveness starts (Interaction to Next Paint over 500 ms). The
+ * longest tasks measured here are 120 to 350 ms on this 2-core machine while
+ * other builds share it (frames of the software GPU, see above); once near a
+ * second, when the node tests' 10,000,000-step traces ran beside them (they
+ * no longer do, vitest.config.ts). What this catches are freezes like those
+ * fixed for it, which took 1 to 3.5 seconds (a text box laid out with 100,000
+ * lines, 100,000 line numbers, 100,000 segments sent to the page).
+ */
+const LONG_TASK_BOUND_MS = 500;
+
+interface Observed {
+  longTasks: { start: number; duration: number }[];
+  /** Key and pointer events: when they happened, and when their handlers were done (ms, page clock). */
+  events: { name: string; start: number; processingEnd: number }[];
+}
+
+declare global {
+  interface Window {
+    observed: Observed;
+  }
+}
+
+/** Installed before the page's scripts: records long tasks and input events from the start. */
+function observe(): void {
+  window.observed = { longTasks: [], events: [] };
+  new PerformanceObserver((list) => {
+    for (const e of list.getEntries()) window.observed.longTasks.push({ start: e.startTime, duration: e.duration });
+  }).observe({ type: 'longtask', buffered: true });
+  new PerformanceObserver((list) => {
+    for (const e of list.getEntries() as PerformanceEventTiming[]) window.observed.events.push({ name: e.name, start: e.startTime, processingEnd: e.processingEnd });
+    // 16 ms is the smallest threshold Event Timing allows: every slower event is seen.
+  }).observe({ type: 'event', buffered: true, durationThreshold: 16 } as PerformanceObserverInit);
+}
+
+/** What was observed since the last call (or the page's start); starts over. */
+function takeObserved(page: Page): Promise<Observed> {
+  return page.evaluate(() => {
+    const taken = window.observed;
+    window.observed = { longTasks: [], events: [] };
+    return taken;
+  });
+}
+
+/** The longest task, and the slowest input event (how long it waited for the main thread and ran), ms. */
+function worst(observed: Observed): { longestTask: number; slowestInput: number } {
+  return {
+    longestTask: Math.max(0, ...observed.longTasks.map((t) => t.duration)),
+    slowestInput: Math.max(0, ...observed.events.map((e) => e.processingEnd - e.start)),
+  };
+}
+
+function counter(page: Page): Promise<string> {
+  return page.getByTestId('step-counter').innerText();
+}
+
+async function jumpTo(page: Page, step: number): Promise<void> {
+  await page.getByTestId('jump-input').fill(String(step));
+  await page.getByTestId('jump-input').press('Enter');
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step} of`) }).waitFor();
+}
+
+describe('a 1,000,000-step line', () => {
+  it('loads and scrubs with no main-thread task over the bound, answering key presses while it loads', { timeout: 180_000 }, async () => {
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=1000000,700000,600000', { initScript: observe, waitUntil: 'commit' });
+    const { page } = p;
+    // While the page loads and the worker traces, the page takes key presses: Tab moves the focus through the controls.
+    const loaded = page.getByTestId('step-counter').filter({ hasText: /of 1000000$/ });
+    let pressedWhileLoading = 0;
+    while (!(await loaded.isVisible())) {
+      await page.keyboard.press('Tab');
+      pressedWhileLoading += 1;
+    }
+    expect(pressedWhileLoading).toBeGreaterThan(0);
+    // Lighter drawing: a million cells are sampled as points.
+    expect(await page.getByTestId('scene-canvas').getAttribute('data-drawing')).toBe('points');
+    await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+
+    // Scrubbing: a typed step, End, arrows, Home and the scrubber.
+    await jumpTo(page, 500_000);
+    await page.getByTestId('inspector-point').filter({ hasText: /^\(500000, / }).waitFor();
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('End');
+    await page.getByTestId('inspector-point').filter({ hasText: '(1000000, 700000, 600000)' }).waitFor();
+    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowLeft');
+    await expect.poll(() => counter(page)).toBe('Step 999997 of 1000000');
+    await page.keyboard.press('Home');
+    await expect.poll(() => counter(page)).toBe('Step 0 of 1000000');
+    await page.getByTestId('scrubber').fill('250000');
+    await expect.poll(() => counter(page)).toBe('Step 250000 of 1000000');
+    await page.getByTestId('inspector-point').filter({ hasText: /^\(250000, / }).waitFor();
+    // The help opens on '?' at once (its handler ran, the dialog is up).
+    await page.keyboard.press('?');
+    await expect.poll(() => page.getByTestId('help').isVisible()).toBe(true);
+    await page.keyboard.press('Escape');
+
+    const observed = await takeObserved(page);
+    const { longestTask, slowestInput } = worst(observed);
+    console.info(`1,000,000 steps: longest task ${longestTask.toFixed(0)} ms of ${observed.longTasks.length} long ones, slowest input ${slowestInput.toFixed(0)} ms of ${observed.events.length}`);
+    expect(longestTask).toBeLessThan(LONG_TASK_BOUND_MS);
+    expect(slowestInput).toBeLessThan(LONG_TASK_BOUND_MS);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+/**
+ * A program of `lines` lines: set up, then G1 moves of 0.125 mm along x,
+ * 400 to a row (50 mm), each row 0.125 mm further along y. At 80 steps/mm a
+ * move along a row is 10 steps and the move back to the start of the next
+ * row 3990 (its x distance); the first G1 goes nowhere.
+ */
+function zigzag(lines: number): { text: string; steps: number; moves: number } {
+  const text = ['G21 G90 G17', 'G0 X0 Y0 Z0'];
+  let steps = 0;
+  for (let i = 0; text.length < lines; i++) {
+    text.push(`G1 X${((i % 400) * 0.125).toFixed(3)} Y${(Math.floor(i / 400) * 0.125).toFixed(3)} F1200`);
+    if (i > 0) steps += i % 400 === 0 ? 3990 : 10;
+  }
+  return { text: text.join('\n'), steps, moves: lines - 1 };
+}
+
+describe('a 100,000-line G-code program', () => {
+  it('is pasted, runs in the worker with progress, cancels, runs again and scrubs, with no main-thread task over the bound', { timeout: 180_000 }, async () => {
+    const p = await openPage('?mode=gcode&stepsPerMm=80', { initScript: observe });
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 6400$/ }).waitFor();
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    // The observers run (Chromium has both entry types); the page's load is the other test's subject: count from here.
+    expect(await page.evaluate(() => PerformanceObserver.supportedEntryTypes)).toEqual(expect.arrayContaining(['longtask', 'event']));
+    await takeObserved(page);
+
+    const program = zigzag(100_000);
+    expect(program.steps).toBe(1_990_990);
+    await p.context.grantPermissions(['clipboard-read', 'clipboard-write']);
+    await page.evaluate((text) => navigator.clipboard.writeText(text), program.text);
+    const editor = page.getByTestId('gcode-text');
+    await editor.focus();
+    await page.keyboard.press('ControlOrMeta+A');
+    await page.keyboard.press('ControlOrMeta+V');
+    // Too long for the text box: listed read-only, the lines in view only.
+    await page.getByTestId('gcode-listing').waitFor();
+    expect(await page.getByTestId('gcode-long').innerText()).toMatch(/100,000 lines/);
+    expect(await page.getByTestId('gcode-listing').locator('pre').innerText()).toMatch(/^G21 G90 G17\nG0 X0 Y0 Z0\nG1 X0.000 Y0.000 F1200/);
+
+    // The change runs the program: progress shows, and Cancel stops it.
+    const progress = page.getByTestId('gcode-progress');
+    await progress.waitFor();
+    await expect.poll(async () => Number(await progress.getAttribute('value'))).toBeGreaterThan(0);
+    expect(await progress.getAttribute('aria-valuetext')).toMatch(/of 100000 lines/);
+    await page.getByTestId('gcode-cancel').click();
+    await page.getByTestId('trace-status').filter({ hasText: 'Cancelled' }).waitFor();
+    expect(await progress.isHidden()).toBe(true);
+    // The view still shows the square.
+    expect(await counter(page)).toMatch(/of 6400$/);
+
+    await page.getByTestId('gcode-run').click();
+    await page.getByTestId('trace-status').filter({ hasText: `${program.moves} moves, ${program.steps} steps` }).waitFor({ timeout: 120_000 });
+    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${program.steps}$`) }).waitFor();
+
+    // Scrub: the last step was made by the last line; a typed step by its own line.
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('End');
+    await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('100000');
+    // In the first row, line 3 + i makes steps 10(i - 1)..10i - 1: point 2001 (step index 2000) is line 204's, point 2000 line 203's.
+    await jumpTo(page, 2001);
+    await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('204');
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('ArrowLeft');
+    await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('203');
+    await page.getByTestId('moves-table').locator('tr.current button[aria-label="Pick line 203"]').waitFor();
+
+    const observed = await takeObserved(page);
+    const { longestTask, slowestInput } = worst(observed);
+    console.info(`100,000-line program: longest task ${longestTask.toFixed(0)} ms of ${observed.longTasks.length} long ones, slowest input ${slowestInput.toFixed(0)} ms of ${observed.events.length}`);
+    expect(longestTask).toBeLessThan(LONG_TASK_BOUND_MS);
+    expect(slowestInput).toBeLessThan(LONG_TASK_BOUND_MS);
+
+    // Asked to, the page puts the whole program in the text box (at the cost the listing avoids).
+    await page.getByTestId('gcode-edit-anyway').click();
+    await editor.waitFor();
+    expect(await page.getByTestId('gcode-listing').isHidden()).toBe(true);
+    expect(await editor.inputValue()).toBe(program.text);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
