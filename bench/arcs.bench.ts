@@ -1,7 +1,7 @@
 /**
  * Arcs and helices: a full circle of r = 100,000 stepped directly and in
  * chords (Grbl's tolerance 0.5, each chord by regions), and a helix of nine
- * turns of r = 20,000 rising 9000, in Saleem's mode and in chords.
+ * turns of r = 20,000 rising 9000, by Saleem's method and in chords.
  */
 import { COLUMN_NOTES, measureRow, native } from './measure.js';
 import type { BenchGroup, BenchRow } from './types.js';
@@ -13,7 +13,7 @@ const CASES = [
   ['circle, full turn of r = 100000', { algorithm: 'circle', ...CIRCLE }],
   ['arc-segments, the same circle in chords', { algorithm: 'arc-segments', ...CIRCLE }],
   ['helix (saleem), 9 turns of r = 20000 rising 9000', { algorithm: 'helix', ...HELIX }],
-  ['helix (segments), the same helix in chords', { algorithm: 'helix', mode: 'segments', ...HELIX }],
+  ['helix (segments), the same helix in chords', { algorithm: 'helix', method: 'segments', ...HELIX }],
 ] as const;
 
 export default async function arcs(): Promise<BenchGroup> {

@@ -14,7 +14,7 @@ import {
   traceOptions,
   withAxes,
 } from '../web/state/app-state.js';
-import { GCODE_URL_LIMIT, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
+import { GCODE_URL_LIMIT, STATE_KEYS, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
 import { carriedOptions } from '../web/form/algorithm-inputs.js';
 
 let catalogue: Catalogue;
@@ -35,6 +35,7 @@ describe('page state in the URL query', () => {
     const camera = { position: [12.5, -30, 20] as [number, number, number], target: [5, 3.5, 3] as [number, number, number], zoom: 1.25 };
     const states: AppState[] = [
       { ...first(), options: { from: [-3, 4, 2_000_000_000], to: [0, -7, 1], tie: 'hold', gcd: true }, pointIndex: 7, playing: true, speed: 16, camera, decision3d: true },
+      { ...first(), algorithm: 'helix', options: { from: [10, 0, 0], to: [10, 0, 24], center: [0, 0, 0], dir: 'ccw', plane: 'xy', method: 'segments', tolerance: 0.25 } },
       { ...first(), mode: 'compare', other: 'bresenham3d', layout: 'side', options: { from: [0, 0, 0], to: [10, 7, 6], tie: 'hold' }, projection: '2d', embed: true },
       { ...first(), mode: 'gcode', gcode: 'G1 X10 Y5 F600\nG2 X20 Y5 I5 J0\n', machine: { stepAngle: 1.8, microsteps: 8, pitch: 2, lineAlgorithm: 'bresenham3d', arcAlgorithm: 'arc-segments' }, pointIndex: 3 },
       { ...first(), mode: 'experiment', experiment: { count: 20, seed: 7, maxCoordinate: 50 } },
@@ -51,6 +52,11 @@ describe('page state in the URL query', () => {
       expect(back.embed).toBe(state.embed);
       expect(back.playing).toBe(false);
     }
+  });
+
+  it("never names an algorithm's option as one of the page's own keys, which would shadow it", () => {
+    const names = catalogue.algorithms.flatMap((a) => a.options.map((o) => o.name));
+    expect(names.filter((name) => STATE_KEYS.includes(name))).toEqual([]);
   });
 
   it('keeps a long program out of the URL but not out of localStorage', () => {

@@ -84,7 +84,7 @@ const CASES: [string, ReferenceOptions[]][] = [
   ['bresenham2d', LINES_2D],
   ['circle', ARCS],
   ['arc-segments', [...ARCS, ...ARCS.map((a) => ({ ...a, segmentLength: 3 }))]],
-  ['helix', [...HELICES, ...HELICES.map((h) => ({ ...h, mode: 'segments', tolerance: 0.25 }))]],
+  ['helix', [...HELICES, ...HELICES.map((h) => ({ ...h, method: 'segments', tolerance: 0.25 }))]],
 ];
 
 /** Steps compared per algorithm, at least: the moves above give far more. */

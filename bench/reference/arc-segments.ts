@@ -5,7 +5,7 @@
  * by segmentLength, or by tolerance (default 0.5); vertices are the arc
  * points at i/n of the sweep rounded as Rust rounds (halves away from
  * zero), the last one the end point. With a rise it is the helix's
- * segments mode.
+ * method segments.
  */
 import { readArc } from './arc.js';
 import { onlyOptions, roundHalfAway, type ReferenceOptions } from './common.js';
@@ -18,8 +18,8 @@ function atan3(v: number, u: number): number {
 }
 
 export function arcSegments(options: ReferenceOptions): Uint16Array {
-  const { from, to, segmentLength, tolerance, mode, ...arcOptions } = options;
-  if (mode !== undefined && mode !== 'segments') throw new RangeError('arc-segments: mode is the helix reference\'s');
+  const { from, to, segmentLength, tolerance, method, ...arcOptions } = options;
+  if (method !== undefined && method !== 'segments') throw new RangeError('arc-segments: method is the helix reference\'s');
   onlyOptions({ from, to, ...arcOptions }, ['center', 'dir', 'plane', 'turns'], 'arc-segments');
   const arc = readArc(options);
   const [u, v, normal] = arc.axes;

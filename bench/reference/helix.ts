@@ -2,14 +2,14 @@
  * Saleem & Saleem (2004), section 5: the helix as a Bresenham line between
  * the arc's n_c steps (counted by a dry run of the circle) and the linear
  * axis's n_z, stepping only: rust/src/arc/helix.rs in plain TypeScript,
- * mode saleem, ties held (the defaults).
+ * method saleem, ties held (the defaults).
  */
 import { Circle, moveCodes, readArc } from './arc.js';
 import { onlyOptions, stepCode, type ReferenceOptions } from './common.js';
 
 export function helix(options: ReferenceOptions): Uint16Array {
-  const { mode, ...rest } = options;
-  if (mode !== undefined && mode !== 'saleem') throw new RangeError('the helix reference is mode saleem');
+  const { method, ...rest } = options;
+  if (method !== undefined && method !== 'saleem') throw new RangeError('the helix reference is method saleem');
   onlyOptions(rest, ['center', 'dir', 'plane', 'turns'], 'helix');
   const arc = readArc(rest);
   const circle = new Circle(arc);

@@ -20,7 +20,7 @@ import { walk6 } from './walk6.js';
 
 export type { Reference, ReferenceOptions } from './common.js';
 
-/** The reference of each algorithm id (helix mode segments is the chords' reference). */
+/** The reference of each algorithm id (helix method segments is the chords' reference). */
 export const REFERENCES: Record<string, Reference> = {
   regions,
   bresenham2d,
@@ -32,5 +32,5 @@ export const REFERENCES: Record<string, Reference> = {
   dda,
   circle,
   'arc-segments': arcSegments,
-  helix: (options) => (options.mode === 'segments' ? arcSegments(options) : helix(options)),
+  helix: (options) => (options.method === 'segments' ? arcSegments(options) : helix(options)),
 };

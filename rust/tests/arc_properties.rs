@@ -403,7 +403,7 @@ proptest! {
     ) {
         let r = (arc.radius_sq() as f64).sqrt();
         prop_assume!(tolerance < 2.0 * r);
-        let extra = format!(r#","mode":"segments","tolerance":{tolerance}"#);
+        let extra = format!(r#","method":"segments","tolerance":{tolerance}"#);
         let t = voxpath::trace_json(&arc.request("helix", rise, &extra)).unwrap();
         let p = points(&t);
         let n = arc.axes()[2];

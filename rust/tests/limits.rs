@@ -88,9 +88,9 @@ fn chords_are_refused_from_their_lengths() {
         (n as f64) > perimeter / 2f64.sqrt() && (n as f64) < perimeter,
         "{n}"
     );
-    // The helix's segments mode goes the same way.
+    // The helix's method segments goes the same way.
     let e = refusal(&format!(
-        r#"{{"algorithm":"helix","mode":"segments","from":[{r},0,0],"to":[{r},0,7],"center":[0,0,0],"segmentLength":1048576}}"#
+        r#"{{"algorithm":"helix","method":"segments","from":[{r},0,0],"to":[{r},0,7],"center":[0,0,0],"segmentLength":1048576}}"#
     ));
     assert!(at_least(&e) > 3_000_000_000);
 }

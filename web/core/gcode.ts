@@ -29,7 +29,7 @@ export interface GcodeSettings {
   pitch?: number | number[];
   /** A 3-axis line algorithm id (default 'regions'); also steps the chords of arc-segments. */
   lineAlgorithm?: string;
-  /** 'circle' (Saleem, default) or 'arc-segments' (chords); helical arcs use helix in the matching mode. */
+  /** 'circle' (Saleem, default) or 'arc-segments' (chords); helical arcs use helix by the matching method. */
   arcAlgorithm?: 'circle' | 'arc-segments';
   /** Refuse programs longer than this many steps (default 50,000,000). */
   maxSteps?: number;

@@ -91,7 +91,7 @@ export class OptionsForm {
       }
       case 'choice': {
         const select = control(element('select'), id);
-        // Without a stated default the algorithm decides (say helix's tie, from its mode): an empty choice leaves it to it.
+        // Without a stated default the algorithm decides (say helix's tie, from its method): an empty choice leaves it to it.
         if (spec.default === null) select.append(element('option', { value: '', textContent: "the algorithm's default" }));
         for (const word of spec.kind.values) {
           select.append(element('option', { value: word, textContent: word === spec.default ? `${word} (default)` : word }));

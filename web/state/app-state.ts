@@ -149,7 +149,7 @@ export function withAxes(options: Readonly<Record<string, OptionValue>>, axes: n
  * (0,0,0)->(10,7,6), the line of their Tables 1 and 2, so a learner can
  * check the page against the paper), with points fitted to the axes the
  * page shows. Other options are left out, so the core's default applies
- * (some apply only with others: helix's lineAlgorithm in mode segments).
+ * (some apply only with others: helix's lineAlgorithm with method segments).
  */
 export function defaultOptions(infos: readonly AlgorithmInfo[]): Record<string, OptionValue> {
   const options: Record<string, OptionValue> = {};

@@ -141,7 +141,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
 const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
 /** Keys that say a query describes a state (any option name counts too). */
-const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'decision3d', 'exitFace', 'camera', 'gcode', 'embed'];
+export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'decision3d', 'exitFace', 'camera', 'gcode', 'embed'];
 
 /**
  * The state a query describes, or undefined when it has none of the state's

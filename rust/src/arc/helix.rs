@@ -1,16 +1,16 @@
 //! Helices: an arc in the plane while the normal (linear) axis travels.
 //!
-//! mode = saleem (Saleem & Saleem 2004, section 5): a helix is a 2D line
+//! method = saleem (Saleem & Saleem 2004, section 5): a helix is a 2D line
 //! between two "axes", the arc and the linear axis. A dry run of the circle
 //! counts the arc's steps n_c; n_z = |Δ linear axis|. A Bresenham line
 //! between n_c and n_z then decides, per iteration, whether the arc takes
 //! its next step (Saleem's circle rule) and whether the linear axis steps.
 //!
-//! mode = segments: the arc-segments method with the height interpolated
+//! method = segments: the arc-segments method with the height interpolated
 //! along with the angle, each chord a 3D line; as Grbl and most controllers
-//! do. One id with a mode, rather than two ids, because both modes take the
+//! do. One id with a method option, rather than two ids, because both take the
 //! same helix and are measured against the same ideal helix: switching the
-//! mode is exactly the comparison a learner wants.
+//! method is exactly the comparison a learner wants.
 //!
 //! Saleem's linear axis advances evenly per arc step, not per degree. The
 //! circle takes 0.9003 r steps per radian on average (4 sqrt(2) r per turn),
@@ -23,7 +23,7 @@
 //! taken at one arc position, one because the discrete circle's count at an
 //! angle differs from the continuous r sin θ by up to a step) and half a
 //! linear step.
-//! Segments mode interpolates by angle and has no such drift.
+//! Method segments interpolates by angle and has no such drift.
 
 use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
 use super::circle_saleem::{
@@ -43,8 +43,8 @@ use std::fmt::Write;
 
 pub const ID: &str = "helix";
 
-pub const MODE: OptionSpec = OptionSpec {
-    name: "mode",
+pub const METHOD: OptionSpec = OptionSpec {
+    name: "method",
     kind: OptionKind::Choice {
         values: &["saleem", "segments"],
     },
@@ -60,7 +60,7 @@ pub const HELIX_TIE: OptionSpec = OptionSpec {
     },
     required: false,
     default: None,
-    doc: "saleem mode: what an error exactly at its threshold does (default hold, Saleem's strict >); segments mode: passed to the line algorithm.",
+    doc: "method saleem: what an error exactly at its threshold does (default hold, Saleem's strict >); method segments: passed to the line algorithm.",
 };
 
 pub const INFO: AlgorithmInfo = AlgorithmInfo {
@@ -71,8 +71,8 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     },
     family: Family::Arc,
     title: "Helix (arc plus linear axis)",
-    citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 5 (mode saleem); chords as in arc-segments (mode segments)",
-    teaching: "A helix is a circle in the plane while the linear (normal) axis travels. Saleem treats it as a 2D line between two axes: the arc, which needs n_c steps (counted by a dry run of the circle, the paper's dummy procedure), and the linear axis, which needs n_z. The larger one steps every iteration; the smaller one keeps a Bresenham error, adding 2 × its count each iteration and stepping when the error exceeds the larger count (then subtracting 2 × the larger count). The linear axis thus advances evenly per arc step, not per degree: the circle takes up to sqrt(2) times more steps per degree near the diagonals, so at a given angle the height differs from the true helix's by up to about 1% of a turn's rise. Segments mode, as most controllers do, cuts the helix into chords with the height interpolated by angle.",
+    citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 5 (method saleem); chords as in arc-segments (method segments)",
+    teaching: "A helix is a circle in the plane while the linear (normal) axis travels. Saleem treats it as a 2D line between two axes: the arc, which needs n_c steps (counted by a dry run of the circle, the paper's dummy procedure), and the linear axis, which needs n_z. The larger one steps every iteration; the smaller one keeps a Bresenham error, adding 2 × its count each iteration and stepping when the error exceeds the larger count (then subtracting 2 × the larger count). The linear axis thus advances evenly per arc step, not per degree: the circle takes up to sqrt(2) times more steps per degree near the diagonals, so at a given angle the height differs from the true helix's by up to about 1% of a turn's rise. Method segments, as most controllers do, cuts the helix into chords with the height interpolated by angle.",
     errata: &[
         "The helical() pseudo-code has no loop: the body under `if(nz > nc)` and `else` runs once. voxpath iterates max(n_c, n_z) times.",
         "helical() calls nextStep(currentX, currentY, r) with currentX and currentY never declared or set; they are the arc's current point relative to the centre (eq. 12-13).",
@@ -86,7 +86,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
         DIR,
         PLANE,
         TURNS,
-        MODE,
+        METHOD,
         HELIX_TIE,
         SEGMENT_LENGTH,
         TOLERANCE,
@@ -102,18 +102,18 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 fn trace_helix(req: &Request) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
     let spec = ArcSpec::parse(req, true)?;
-    if req.choice(&MODE)? == Some("segments") {
+    if req.choice(&METHOD)? == Some("segments") {
         return trace_chords(ID, req, &spec, true);
     }
     for option in [SEGMENT_LENGTH.name, TOLERANCE.name] {
         if req.number(option)?.is_some() {
-            return Err(Error::field(option, "applies to mode segments only"));
+            return Err(Error::field(option, "applies to method segments only"));
         }
     }
     if req.choice(&LINE_ALGORITHM)?.is_some() {
         return Err(Error::field(
             LINE_ALGORITHM.name,
-            "applies to mode segments only",
+            "applies to method segments only",
         ));
     }
     let tie = req.tie(TiePolicy::Hold)?;
@@ -474,9 +474,9 @@ mod tests {
         )
         .err()
         .unwrap();
-        assert_eq!(e.to_string(), "tolerance: applies to mode segments only");
+        assert_eq!(e.to_string(), "tolerance: applies to method segments only");
         let t = crate::trace_json(
-            r#"{"algorithm":"helix","from":[30,0,0],"to":[0,30,20],"center":[0,0,0],"mode":"segments","segmentLength":10}"#,
+            r#"{"algorithm":"helix","from":[30,0,0],"to":[0,30,20],"center":[0,0,0],"method":"segments","segmentLength":10}"#,
         )
         .unwrap();
         // floor(15π / 10) = 4 chords, heights 5, 10, 15 then 20.

@@ -10,7 +10,7 @@
 //!   ended on the grid.
 //! - Arcs in their plane run `circle` (Saleem) or `arc-segments` (chords by
 //!   the line algorithm), as set; arcs whose normal axis moves run `helix`
-//!   (mode saleem with circle, segments with arc-segments).
+//!   (method saleem with circle, segments with arc-segments).
 //! - The arc algorithms work on the step grid: the two axes of the plane
 //!   need the same steps per mm (else a circle in mm is an ellipse in
 //!   steps), and the centre must be a grid point with the rounded start and
@@ -86,7 +86,7 @@ pub const ARC_ALGORITHM: OptionSpec = OptionSpec {
     },
     required: false,
     default: Some("circle"),
-    doc: "How arcs are stepped: circle (Saleem's integer circle) or arc-segments (chords by the line algorithm). Helical arcs run helix in the matching mode.",
+    doc: "How arcs are stepped: circle (Saleem's integer circle) or arc-segments (chords by the line algorithm). Helical arcs run helix by the matching method.",
 };
 
 /// Every setting of a program run.
@@ -630,7 +630,7 @@ impl Runner {
         let segments = self.settings.arc_algorithm == "arc-segments";
         let algorithm = if helical {
             request.set(
-                "mode",
+                "method",
                 Value::from(if segments { "segments" } else { "saleem" }),
             );
             "helix"
