@@ -153,8 +153,9 @@ describe('the page', () => {
     await p.close();
   });
 
-  it('saves the README screenshot: the example line at its tie, step 5 of 10', async () => {
-    const p = await openPage(`${EXAMPLE}&step=5`);
+  it('saves the README screenshot: the example line at its tie, step 5 of 10, its exit face drawn', async () => {
+    // Close to the current cell, so that its exit face and the crossing read.
+    const p = await openPage(`${EXAMPLE}&step=5&decision3d=1&camera=10.5,-1.5,7.5,5,3.5,3,1`);
     const { page } = p;
     await traced(page, 10);
     await expect.poll(() => decision(page, 'region')).toBe('g');

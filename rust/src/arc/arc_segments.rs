@@ -193,9 +193,14 @@ impl Chording {
         if n > MAX_CHORDS as f64 {
             return Err(Error::field(
                 self.option(),
-                // {n:.3e}: the count can have hundreds of digits.
                 format!(
-                    "splits this arc into {n:.3e} chords, more than {MAX_CHORDS}; use longer chords"
+                    "splits this arc into {} chords, more than {MAX_CHORDS}; use longer chords",
+                    // A tiny tolerance can make the count hundreds of digits long.
+                    if n < 1e15 {
+                        format!("{n:.0}")
+                    } else {
+                        format!("{n:.3e}")
+                    }
                 ),
             ));
         }
