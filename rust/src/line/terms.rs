@@ -91,8 +91,11 @@ pub struct Terms<const N: usize> {
     pub terms: [Term; N],
 }
 
-/// How many stretches [`Terms::fill`] steps at once.
-const LANES: usize = 4;
+/// How many stretches [`Terms::fill`] steps at once. Two: more chains
+/// need more registers than wasm engines give a loop (with four, each term's
+/// fields spill, and wasm ran slower than with one chain), and two already
+/// keep the arithmetic units busy natively.
+const LANES: usize = 2;
 
 /// Below this many steps per lane, one stretch: the jumps would cost more
 /// than they save.
@@ -139,15 +142,11 @@ impl<const N: usize> Terms<N> {
             let mut lanes: [[Term; N]; LANES] = std::array::from_fn(|lane| {
                 self.terms.map(|t| t.jumped((lane * lane_steps) as u64))
             });
-            let (first, rest) = body.split_at_mut(lane_steps);
-            let (second, rest) = rest.split_at_mut(lane_steps);
-            let (third, fourth) = rest.split_at_mut(lane_steps);
-            let [a, b, c, d] = &mut lanes;
-            for (((s0, s1), s2), s3) in first.iter_mut().zip(second).zip(third).zip(fourth) {
+            let (first, second) = body.split_at_mut(lane_steps);
+            let [a, b] = &mut lanes;
+            for (s0, s1) in first.iter_mut().zip(second) {
                 *s0 = Self::advance(always, a);
                 *s1 = Self::advance(always, b);
-                *s2 = Self::advance(always, c);
-                *s3 = Self::advance(always, d);
             }
             self.terms = lanes[LANES - 1];
         }
