@@ -9,7 +9,7 @@
 
 use super::{Mirror, TIE_AXIS, TieAxis, column, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, displacement};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 
@@ -215,23 +215,28 @@ impl Stepper for Greedy {
         let out = &mut out[..taken];
         let dims = self.mirror.dims();
         let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
+        // A local copy: the loop keeps it in registers, not in `self`.
+        let start = self.left;
+        let mut left = start;
         for slot in out.iter_mut() {
             let (mut chosen, mut most_left) = (0, 0);
             for axis in 0..dims {
-                let l = self.left[axis];
+                let l = left[axis];
                 // An axis at its goal is no candidate (the half-plane trick);
                 // a larger l is a smaller distance, hence the reversed compare.
                 if l > 0 && self.order.replaces(most_left.cmp(&l)) {
                     (chosen, most_left) = (axis, l);
                 }
             }
-            self.left[chosen] -= 1;
+            left[chosen] -= 1;
             *slot = toward[chosen];
         }
+        self.left = left;
         self.remaining -= taken as u64;
         Filled {
             steps: taken,
-            displacement: displacement(out),
+            // One step per unit no longer left, toward the end.
+            displacement: std::array::from_fn(|a| self.mirror.sign(a) * (start[a] - left[a])),
         }
     }
 

@@ -11,7 +11,7 @@
 
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, displacement};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 use std::cmp::Ordering;
@@ -232,8 +232,10 @@ impl Stepper for Walk6 {
     }
 
     /// The same walk as [`Stepper::next_step`], comparing crossings in u64:
-    /// t = (2k + 1) / (2|Δ|) orders as (2k + 1) / |Δ|, and with k < |Δ| <=
-    /// 2^31 each cross product (2k + 1)·|Δ'| stays below 2^63. No decision.
+    /// t = (2k + 1) / (2|Δ|) orders as (2k + 1) / |Δ|, and with k <= |Δ| <=
+    /// 2^31 each cross product (2k + 1)·|Δ'| stays below 2^63 + 2^31 < 2^64
+    /// (an arrived axis, k = |Δ|, is compared too, and its result ignored).
+    /// No decision.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let out = &mut out[..taken];
@@ -246,28 +248,36 @@ impl Stepper for Walk6 {
             }
         });
         let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
+        // A local copy: the loop keeps it in registers, not in `self`.
+        let start = self.crossed;
+        let mut crossed = start;
+        // A later axis wins a tie with the higher-axis order: "at most"
+        // rather than "less than", a + 1 on the right of the comparison.
+        let ties_to_later = u64::from(self.order == TieAxis::Higher);
         for slot in out.iter_mut() {
             // The best crossing so far as (2k + 1, |Δ|); (1, 0) is t = ∞,
             // which every face ahead beats.
             let (mut first, mut best) = (0, (1u64, 0u64));
             for axis in 0..dims {
-                let k = self.crossed[axis] as u64;
-                if k >= magnitude[axis] {
-                    continue;
-                }
+                let k = crossed[axis] as u64;
                 let num = 2 * k + 1;
-                let order = (num * best.1).cmp(&(best.0 * magnitude[axis]));
-                if self.order.replaces(order) {
-                    (first, best) = (axis, (num, magnitude[axis]));
-                }
+                let ahead = k < magnitude[axis];
+                let sooner = num * best.1 < best.0 * magnitude[axis] + ties_to_later;
+                // Selects, not branches: which face comes first is as good
+                // as random to a branch predictor.
+                let take = ahead & sooner;
+                first = if take { axis } else { first };
+                best = if take { (num, magnitude[axis]) } else { best };
             }
-            self.crossed[first] += 1;
+            crossed[first] += 1;
             *slot = toward[first];
         }
+        self.crossed = crossed;
         self.remaining -= taken as u64;
         Filled {
             steps: taken,
-            displacement: displacement(out),
+            // One step per face crossed, toward the end.
+            displacement: std::array::from_fn(|a| self.mirror.sign(a) * (crossed[a] - start[a])),
         }
     }
 
