@@ -218,15 +218,19 @@ impl Stepper for Greedy {
         // A local copy: the loop keeps it in registers, not in `self`.
         let start = self.left;
         let mut left = start;
+        // A later axis wins a tie with the higher-axis order: "at least"
+        // rather than "more than", a + 1 on the left of the comparison.
+        let ties_to_later = i64::from(self.order == TieAxis::Higher);
         for slot in out.iter_mut() {
             let (mut chosen, mut most_left) = (0, 0);
             for axis in 0..dims {
                 let l = left[axis];
                 // An axis at its goal is no candidate (the half-plane trick);
-                // a larger l is a smaller distance, hence the reversed compare.
-                if l > 0 && self.order.replaces(most_left.cmp(&l)) {
-                    (chosen, most_left) = (axis, l);
-                }
+                // a larger l is a smaller distance. Selects, not branches:
+                // which axis wins is as good as random to a branch predictor.
+                let take = (l > 0) & (l + ties_to_later > most_left);
+                chosen = if take { axis } else { chosen };
+                most_left = if take { l } else { most_left };
             }
             left[chosen] -= 1;
             *slot = toward[chosen];
