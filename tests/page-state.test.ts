@@ -83,14 +83,8 @@ describe('page state in the URL query', () => {
     expect(state).toEqual({ ...first(), options: { from: [1, 2, 3], to: [10, 7, 6] } });
   });
 
-  it('reads the decision overlay from links that still call it exitFace', () => {
-    expect(stateFromQuery('from=0,0,0&to=10,7,6&exitFace=1', catalogue)!.decision3d).toBe(true);
-    expect(stateFromQuery('from=0,0,0&to=10,7,6&exitFace=1&decision3d=0', catalogue)!.decision3d).toBe(false);
-    expect(stateFromQuery('exitFace=1', catalogue)).toEqual({ ...first(), decision3d: true });
-  });
-
   it('replaces unusable values with defaults', () => {
-    const state = stateFromQuery('from=a,b,c&to=1,,2&tie=sometimes&step=-1&speed=3&mode=dance&view=4d&exitFace=yes', catalogue)!;
+    const state = stateFromQuery('from=a,b,c&to=1,,2&tie=sometimes&step=-1&speed=3&mode=dance&view=4d&decision3d=yes', catalogue)!;
     expect(state).toEqual(first());
   });
 

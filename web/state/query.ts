@@ -11,11 +11,9 @@
  * flags (--from 0,0,0); a mode writes only its own keys. `step` is the point
  * index shown (steps taken); `camera` is position x,y,z, target x,y,z and
  * zoom, absent while the page frames the path itself; `decision3d` (1 or 0)
- * is the view's decision overlay (an exit face, a circle's candidates),
- * read from `exitFace` in links made before it drew more than the exit
- * face. `playing` is left out
- * on purpose: a page opened from a link starts paused, as moving content
- * should not start by itself.
+ * is the view's decision overlay (an exit face, a circle's candidates).
+ * `playing` is left out on purpose: a page opened from a link starts
+ * paused, as moving content should not start by itself.
  */
 import type { OptionSpec } from '../core/types.js';
 import {
@@ -141,7 +139,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
 const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
 /** Keys that say a query describes a state (any option name counts too). */
-export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'decision3d', 'exitFace', 'camera', 'gcode', 'embed'];
+export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'decision3d', 'camera', 'gcode', 'embed'];
 
 /**
  * The state a query describes, or undefined when it has none of the state's
@@ -177,7 +175,7 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   const speed = numberOf(params.get('speed') ?? '');
   if (SPEEDS_STEPS_PER_SECOND.some((s) => s === speed)) state.speed = speed!;
   state.projection = PROJECTIONS.find((p) => p === params.get('view')) ?? defaultProjection(axisCount(infos, state.options));
-  state.decision3d = (params.get('decision3d') ?? params.get('exitFace')) === '1';
+  state.decision3d = params.get('decision3d') === '1';
   state.camera = parseCamera(params.get('camera'));
   state.embed = params.get('embed') === '1';
   return state;
