@@ -49,8 +49,14 @@ export class ArcCandidateCells extends OverlayGroup {
 
     this.#outline(other, OTHER_LINE_PX, true);
     this.#outline(taken, TAKEN_LINE_PX, false);
-    this.add(sceneLabel(`${otherName}: ${signed(otherResidual)}`, 'scene-label candidate-label', other.clone().addScaledVector(toOther, LABEL_OFFSET)));
-    this.add(sceneLabel(`${takenName}: ${signed(takenResidual)}, taken`, 'scene-label candidate-label chosen', taken.clone().addScaledVector(toOther, -LABEL_OFFSET)));
+    const otherLabel = sceneLabel(`${otherName}: ${signed(otherResidual)}`, 'scene-label candidate-label', other.clone().addScaledVector(toOther, LABEL_OFFSET));
+    const takenLabel = sceneLabel(`${takenName}: ${signed(takenResidual)}, taken`, 'scene-label candidate-label chosen', taken.clone().addScaledVector(toOther, -LABEL_OFFSET));
+    // Zoomed out, the two anchors are a few pixels apart: hang one label
+    // below its anchor and stand the other above its own, so they never
+    // cover each other (CSS2DObject.center is the anchor within the label).
+    otherLabel.center.set(0.5, 0);
+    takenLabel.center.set(0.5, 1);
+    this.add(otherLabel, takenLabel);
   }
 
   /** The twelve edges of the cube of half edge HALF_EDGE around `centre`. */
