@@ -1,6 +1,7 @@
 #!/usr/bin/env node
 // The voxpath CLI. Runs the compiled TypeScript in lib/cli (built by
-// `npm run setup`, `npm start` or `npm test`).
+// `npm run build:lib`, `npm run setup`, `npm run build` or `npm test`; not by
+// `npm start`, which builds only what the page needs).
 import { existsSync } from 'node:fs';
 
 const entry = new URL('../lib/cli/main.js', import.meta.url);
