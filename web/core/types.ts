@@ -63,7 +63,11 @@ export interface Metrics {
   stepsMovingAxes: number[];
   /** Pulses (unit moves) per axis over the whole path. */
   pulsesByAxis: number[];
-  /** Perpendicular distance from each point to the ideal path, in grid units. */
+  /**
+   * Statistics of each point's distance from the ideal path, in grid units:
+   * the perpendicular distance for a line, the radial error for an arc, the
+   * distance to the helix for a helix (as `Trace.deviation`).
+   */
   maxDeviation: number;
   meanDeviation: number;
   stdDeviation: number;
