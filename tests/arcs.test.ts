@@ -150,6 +150,18 @@ describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
   });
 });
 
+describe("the circle's correction", () => {
+  it('says how many steps close the gap to an end off the circle, and none for an end on it', async () => {
+    // r = 5 from (5, 0); the end (0, 6) has 0² + 6² - 5² = 11 (Saleem eq. 6):
+    // the circle stops at (0, 5) and one step closes the gap.
+    const one = await trace({ algorithm: 'circle', from: [5, 0, 0], to: [0, 6, 0], center: [0, 0, 0] });
+    expect(one.segments[0]!.note).toMatch(/u² \+ v² - r² = 11 .*so 1 correction step closes the gap\.$/);
+    // The end (0, 5) is on the circle: no correction at all.
+    const none = await trace({ algorithm: 'circle', from: [5, 0, 0], to: [0, 5, 0], center: [0, 0, 0] });
+    expect(none.segments[0]!.note).toMatch(/to \(0, 5, 0\), which is the end point\.$/);
+  });
+});
+
 describe('arc-segments chord counts', () => {
   it('refuses more than 65,536 chords, naming the option and the count in a readable form', async () => {
     // Grbl's rule on a full circle of r = 10^6 with a tolerance of 1e-300:

@@ -1,6 +1,6 @@
 // The CLI as users run it: `node bin/voxpath.js ...` (the compiled lib/, built by setup).
 import { describe, expect, it } from 'vitest';
-import { voxpath } from './helpers.js';
+import { voxpath, voxpathPipedInto } from './helpers.js';
 
 const TRACE = ['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6'];
 
@@ -64,6 +64,15 @@ describe('voxpath trace', () => {
     expect(r.stdout).toContain('regions: Method of discriminate regions');
     expect(r.stdout).toContain('--max-steps N');
     expect(r.stdout).toContain('--tie advance|hold');
+  });
+});
+
+describe('voxpath writing into a pipe', () => {
+  it('stops quietly, with status 0, when the reader closes the pipe early (| head)', () => {
+    // 200,000 rows of CSV: far more than a pipe holds, so the CLI is still
+    // writing when head has its two lines and exits.
+    const r = voxpathPipedInto(['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '200000,7,6', '--format', 'csv'], 'head -n 2');
+    expect(r).toEqual({ code: 0, stderr: '' });
   });
 });
 

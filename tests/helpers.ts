@@ -15,6 +15,19 @@ export function voxpath(args: string[], input?: string): { code: number | null; 
   return { code: r.status, stdout: r.stdout, stderr: r.stderr };
 }
 
+/**
+ * Runs the CLI with its stdout piped into `reader` (a shell command such as
+ * `head -n 2`): the CLI's exit status and what it wrote to stderr.
+ */
+export function voxpathPipedInto(args: string[], reader: string): { code: number; stderr: string } {
+  const quoted = [process.execPath, BIN, ...args].map((a) => `'${a}'`).join(' ');
+  const r = spawnSync('bash', ['-c', `${quoted} 2>&3 | ${reader} > /dev/null; echo "\${PIPESTATUS[0]}"`], {
+    encoding: 'utf8',
+    stdio: ['ignore', 'pipe', 'pipe', 'pipe'],
+  });
+  return { code: Number(r.stdout.trim()), stderr: (r.output[3] as string | null) ?? '' };
+}
+
 /** The VoxpathError `promise` rejects with (failing the test if it resolves or rejects with anything else). */
 export async function rejection(promise: Promise<unknown>): Promise<VoxpathError> {
   const error = await promise.then(

@@ -371,3 +371,20 @@ fn segment_notes_name_the_line_and_the_move() {
     assert!(segments[0].setup_note.contains("a rapid, stepped like G1"));
     assert_eq!(p.info.moves[0].kind, "rapid");
 }
+
+#[test]
+fn lines_are_counted_as_an_editor_counts_them() {
+    // A final newline ends the last line; it does not start another.
+    for (source, lines) in [
+        ("G1 X1 F100\nX2\n", 2),
+        ("G1 X1 F100\nX2", 2),
+        ("G1 X1 F100\n\n", 2),
+        ("", 1),
+    ] {
+        assert_eq!(
+            program(source, r#"{"stepsPerMm": 10}"#).info.lines,
+            lines,
+            "{source:?}"
+        );
+    }
+}

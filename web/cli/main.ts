@@ -246,12 +246,24 @@ async function runExperiment(args: string[], catalogues: Catalogues): Promise<st
   return JSON.stringify(result) + '\n';
 }
 
+/**
+ * Writes to stdout. A reader that stops early (`voxpath ... | head`) closes
+ * the pipe: EPIPE then means it has all it wanted, not that voxpath failed.
+ */
 async function write(text: string): Promise<void> {
-  await new Promise<void>((resolve, reject) => process.stdout.write(text, (e) => (e ? reject(e) : resolve())));
+  await new Promise<void>((resolve, reject) =>
+    process.stdout.write(text, (e?: NodeJS.ErrnoException | null) => (e && e.code !== 'EPIPE' ? reject(e) : resolve())),
+  );
+}
+
+/** The stream also reports a write's error as an event, after the callback; unheard, it would end the process. */
+function ignoreClosedPipe(e: NodeJS.ErrnoException): void {
+  if (e.code !== 'EPIPE') throw e;
 }
 
 /** Runs the CLI with `args` (without node and script); resolves to the exit code. */
 export async function main(args: string[]): Promise<number> {
+  if (!process.stdout.listeners('error').includes(ignoreClosedPipe)) process.stdout.on('error', ignoreClosedPipe);
   const [command, ...rest] = args;
   try {
     const catalogues = { algorithms: await algorithms(), experiments: await experiments() };

@@ -103,7 +103,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     errata: &[
         "The post's Implementation fixes the sweep with `if(dir>0 && sweep<0) angle2+=2*PI; else if(dir<0) angle1+=2*PI;`: for dir < 0 it adds 2π even when the sweep is already negative, turning a quarter arc into 450°. The earlier snippet in the same post (`else if(dir==ARC_CCW && sweep>0)`) is right, and voxpath uses that rule (a reader's comment below the post asks about exactly this line).",
         "The post gives ARC_CW an increasing angle (positive sweep), which is clockwise only with the y axis pointing down, as on a screen. voxpath follows G-code's right-handed convention: G02 (cw) decreases the angle atan2(v, u) seen from the positive end of the plane's normal axis, G03 (ccw) increases it, in G17, G18 and G19 alike.",
-        "With start = end the post's sweep is 0 and no arc is drawn; in G-code that is a full circle, as in voxpath. The post also assumes arcs of at most 180°, equal start and end radius and constant Z; voxpath takes any sweep and extra turns, checks the radii, and steps helices in helix mode.",
+        "With start = end the post's sweep is 0 and no arc is drawn; in G-code that is a full circle, as in voxpath. The post also assumes arcs of at most 180°, equal start and end radius and constant Z; voxpath takes any sweep and extra turns, checks the radii, and steps helices with the helix algorithm (method segments is this post's chords, the height interpolated by angle).",
         "The loop `for(i=0;i<num_segments;++i)` first draws a line from the start to fraction 0, the start itself; voxpath starts at i = 1, giving the same path without the empty line.",
     ],
     // A trace has the columns of the chosen line algorithm; the catalogue

@@ -546,10 +546,14 @@ impl Stepper for SaleemCircle {
             } else {
                 let _ = write!(
                     s,
-                    ", the circle point nearest the end {end}; the end has u² + v² - r² = {} (off the rasterised circle), so {} correction step{} close the gap.",
+                    ", the circle point nearest the end {end}; the end has u² + v² - r² = {} (off the rasterised circle), so {} correction {} the gap.",
                     self.residual(self.end),
                     plan.correction_steps,
-                    if plan.correction_steps == 1 { "" } else { "s" },
+                    if plan.correction_steps == 1 {
+                        "step closes"
+                    } else {
+                        "steps close"
+                    },
                 );
             }
         } else {

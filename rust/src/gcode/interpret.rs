@@ -58,7 +58,29 @@ const FULL_CIRCLE_EPSILON_RAD: f64 = 5e-7;
 
 /// G codes voxpath does not model that take axis words: their X Y Z are
 /// not a move, so a line with one of them moves nothing.
-const AXIS_WORD_CODES: &[u32] = &[10, 28, 30, 38, 52, 53];
+const AXIS_WORD_CODES: &[u32] = &[10, 28, 30, 52, 53];
+
+/// Motion codes voxpath does not model (modal group 1): splines (G5,
+/// G5.1, G5.2), threading (G33, G33.1, G76), probing (G38.2-G38.5) and
+/// canned cycles (G73, G81-G89). Each is a motion mode of its own: the axis
+/// words of its line, and of later lines until another motion code, are
+/// its, never a G1 move.
+fn is_unmodelled_motion(number: u32, minor: u32) -> bool {
+    matches!(
+        (number, minor),
+        (5, 0..=2) | (33, 0..=1) | (38, 2..=5) | (73, 0) | (76, 0) | (81..=89, 0)
+    )
+}
+
+/// What a line's motion code (modal group 1) selects.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum MotionCode {
+    Move(Motion),
+    /// G80: no motion mode, so axis words alone are an error again.
+    Cancel,
+    /// A motion mode voxpath does not model (see [`is_unmodelled_motion`]).
+    Unmodelled,
+}
 
 /// Motion modes (modal group 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -130,6 +152,8 @@ pub struct Effects {
 #[derive(Clone, Debug)]
 pub struct Interpreter {
     motion: Option<Motion>,
+    /// The unmodelled motion mode in force instead of `motion`, and its line.
+    unmodelled_motion: Option<(Code, u32)>,
     plane: Plane,
     inches: bool,
     incremental: bool,
@@ -146,6 +170,7 @@ impl Default for Interpreter {
     fn default() -> Self {
         Interpreter {
             motion: None,
+            unmodelled_motion: None,
             plane: Plane::Xy,
             inches: false,
             incremental: false,
@@ -247,7 +272,7 @@ impl Interpreter {
             motion: None,
             warnings: block.ignored.clone(),
         };
-        let mut motion: Option<(Motion, Code)> = None;
+        let mut motion: Option<(MotionCode, Code)> = None;
         let mut plane: Option<(Plane, Code)> = None;
         let mut inches: Option<(bool, Code)> = None;
         let mut incremental: Option<(bool, Code)> = None;
@@ -257,18 +282,34 @@ impl Interpreter {
         let mut dwell = false;
         for code in &block.codes {
             match (code.letter, code.number, code.minor) {
-                ('G', 0, 0) => set_once(&mut motion, Motion::Rapid, code, line, "motion")?,
-                ('G', 1, 0) => set_once(&mut motion, Motion::Linear, code, line, "motion")?,
+                ('G', 0, 0) => set_once(
+                    &mut motion,
+                    MotionCode::Move(Motion::Rapid),
+                    code,
+                    line,
+                    "motion",
+                )?,
+                ('G', 1, 0) => set_once(
+                    &mut motion,
+                    MotionCode::Move(Motion::Linear),
+                    code,
+                    line,
+                    "motion",
+                )?,
+                ('G', 80, 0) => set_once(&mut motion, MotionCode::Cancel, code, line, "motion")?,
+                ('G', n, m) if is_unmodelled_motion(n, m) => {
+                    set_once(&mut motion, MotionCode::Unmodelled, code, line, "motion")?
+                }
                 ('G', 2, 0) => set_once(
                     &mut motion,
-                    Motion::Arc(Turn::Clockwise),
+                    MotionCode::Move(Motion::Arc(Turn::Clockwise)),
                     code,
                     line,
                     "motion",
                 )?,
                 ('G', 3, 0) => set_once(
                     &mut motion,
-                    Motion::Arc(Turn::CounterClockwise),
+                    MotionCode::Move(Motion::Arc(Turn::CounterClockwise)),
                     code,
                     line,
                     "motion",
@@ -342,13 +383,13 @@ impl Interpreter {
         let first_axis = words.first_of("XYZ");
         let arc_word = words.first_of("IJKR");
         if let Some(code) = g92 {
-            if let Some((m, c)) = motion {
+            if let Some((_, c)) = motion {
                 return Err(Error::at(
                     line,
                     c.column,
                     format!(
                         "G92 and {} both take this line's axis words: put them on separate lines",
-                        m.code()
+                        c.name()
                     ),
                 ));
             }
@@ -366,8 +407,27 @@ impl Interpreter {
             }
             return Ok(effects);
         }
-        if let Some((m, _)) = motion {
-            self.motion = Some(m);
+        match motion {
+            Some((MotionCode::Move(m), _)) => {
+                self.motion = Some(m);
+                self.unmodelled_motion = None;
+            }
+            Some((MotionCode::Cancel, _)) => {
+                self.motion = None;
+                self.unmodelled_motion = None;
+            }
+            Some((MotionCode::Unmodelled, code)) => {
+                self.motion = None;
+                self.unmodelled_motion = Some((code, line));
+                effects.warnings.push(Problem {
+                    column: code.column,
+                    message: format!(
+                        "{} ignored: voxpath does not model it, so the axis words of this line and of the lines after it, until G0, G1, G2, G3 or G80, are not moves",
+                        code.name()
+                    ),
+                });
+            }
+            None => {}
         }
         if let Some(code) = axis_code {
             if first_axis.is_some() {
@@ -384,6 +444,21 @@ impl Interpreter {
                 column: code.column,
                 message: format!("{} ignored: voxpath does not model it", code.name()),
             });
+        }
+        if let Some((code, since)) = self.unmodelled_motion {
+            if let Some(w) = first_axis.or(arc_word) {
+                if motion.is_none() {
+                    effects.warnings.push(Problem {
+                        column: w.column,
+                        message: format!(
+                            "{} ignored: the motion mode is {} (line {since}), which voxpath does not model",
+                            w.letter,
+                            code.name()
+                        ),
+                    });
+                }
+                return Ok(effects);
+            }
         }
         if first_axis.is_none() && arc_word.is_none() {
             // A motion code alone sets the mode; nothing moves.
@@ -778,6 +853,46 @@ mod tests {
         assert!(
             e(&["G20 G2 X1 R0.4"])
                 .ends_with("the end is 1.0000 in from the start, more than 2|R| = 0.8000 in")
+        );
+    }
+
+    #[test]
+    fn unmodelled_motion_modes_take_their_axis_words_until_another_motion_code() {
+        // A canned cycle, a spline, threading and probing are motion modes
+        // (group 1): their axis words, on their line and after it, are never
+        // a G1 move, as they were when only the code was ignored.
+        for code in ["G81", "G83", "G73", "G5", "G5.1", "G33", "G76", "G38.2"] {
+            let line = format!("{code} X5 Y5 Z-1");
+            let (it, e) = run(&["G1 X1 F100", &line, "X9"]).unwrap();
+            assert!(e.motion.is_none(), "{code}: X9 moved");
+            assert_eq!(it.position_mm(), [1.0, 0.0, 0.0], "{code}");
+            assert_eq!(
+                e.warnings[0].message,
+                format!(
+                    "X ignored: the motion mode is {code} (line 2), which voxpath does not model"
+                )
+            );
+            let (_, e) = run(&["G1 X1 F100", &line]).unwrap();
+            assert!(e.motion.is_none(), "{code}: its own line moved");
+            assert!(e.warnings[0].message.starts_with(&format!(
+                "{code} ignored: voxpath does not model it, so the axis words"
+            )));
+        }
+        // G0-G3 end the mode; G80 cancels it, and then axis words alone
+        // have no motion mode at all.
+        let (it, e) = run(&["G81 X5 Y5 Z-1 F100", "G1 X2"]).unwrap();
+        assert_eq!(it.position_mm(), [2.0, 0.0, 0.0]);
+        assert!(e.motion.is_some());
+        let e = run(&["G1 X1 F100", "G81 X5 Y5 Z-1", "G80", "X3"]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "line 4, column 1: X without a motion mode: put G0, G1, G2 or G3 on this line or an earlier one"
+        );
+        // One motion code per line, modelled or not.
+        let e = run(&["G1 G81 X1"]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "line 1, column 4: G1 and G81 are both motion codes: give one per line"
         );
     }
 

@@ -289,7 +289,9 @@ fn tuple(values: &[f64]) -> String {
 
 impl Runner {
     pub fn new(source: String, settings: Settings) -> Runner {
-        let lines = source.split('\n').count() as u32;
+        // As an editor counts them: a final newline ends the last line, it
+        // does not start another.
+        let lines = (source.split('\n').count() - usize::from(source.ends_with('\n'))) as u32;
         Runner {
             source,
             offset: 0,
