@@ -11,6 +11,7 @@ import {
   COMPARE_LAYOUTS,
   type Mode,
   type OptionValue,
+  PAGE_OPTIONS,
   axisChoices,
   axisCount,
   comparableWith,
@@ -124,10 +125,16 @@ export class AlgorithmInputs {
     this.#store.update({ other: id, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(infos, options)) });
   }
 
-  /** Shows the core's verdict on the last request: beside the option it names, or under the form. */
+  /**
+   * Shows the core's verdict on the last request: beside the option it
+   * names, or under the form. An option the page sets itself has no field
+   * to fix, so the message says that the page set it and to what.
+   */
   showCoreError(error: InputError | undefined): void {
-    if (this.#form) this.#form.showCoreError(error);
-    else this.#e.formError.textContent = error ? error.message : '';
+    const pageValue = error?.field === undefined ? undefined : PAGE_OPTIONS[error.field];
+    const shown = error && pageValue !== undefined ? { ...error, message: `this page sets it to ${pageValue.toLocaleString('en')}, so shorten the move (the CLI and the API take more). The core says: ${error.message}` } : error;
+    if (this.#form) this.#form.showCoreError(shown);
+    else this.#e.formError.textContent = shown ? shown.message : '';
   }
 
   render(): void {
