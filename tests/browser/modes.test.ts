@@ -445,6 +445,11 @@ describe('G-code mode', () => {
     await page.getByTestId('sample').selectOption('helix.gcode');
     await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
     await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    // Edited, the program is no longer the sample; picking the sample again brings it back.
+    await page.getByTestId('gcode-text').fill('G1 X1 F100\n');
+    expect(await page.getByTestId('sample').inputValue()).toBe('');
+    await page.getByTestId('sample').selectOption('helix.gcode');
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
     expect(p.problems()).toEqual([]);
     await p.close();
   });
