@@ -209,6 +209,26 @@ describe('trace mode', () => {
     await p.close();
   });
 
+  it("keeps the circle's two candidate labels apart in a small embedded view", async () => {
+    // Step 2 from (5, 1) takes (5, 2), 25 + 4 - 25 = 4, over (4, 2),
+    // 16 + 4 - 25 = -5 (eq. 7): the other candidate lies toward -x, which the
+    // default camera shows higher on screen than the taken one, so each
+    // label must go on its own anchor's far side.
+    const p = await openPage('?embed=1&algorithm=circle&from=5,0,0&to=0,5,0&center=0,0,0&step=2&decision3d=1');
+    const { page } = p;
+    await page.setViewportSize({ width: 640, height: 400 });
+    await steps(page, 7);
+    const labels = page.locator('.candidate-label');
+    await expect.poll(async () => (await labels.allInnerTexts()).sort()).toEqual(['move: −5', 'stay: 4, taken']);
+    // Settled after the resize's render.
+    await page.waitForTimeout(300);
+    const [a, b] = await Promise.all([labels.nth(0).boundingBox(), labels.nth(1).boundingBox()]);
+    const overlap = a!.x < b!.x + b!.width && b!.x < a!.x + a!.width && a!.y < b!.y + b!.height && b!.y < a!.y + a!.height;
+    expect(overlap).toBe(false);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('moves a focused endpoint handle with the arrow keys, re-tracing the move', async () => {
     const p = await openPage('?from=0,0,0&to=10,7,6');
     const { page } = p;
