@@ -85,6 +85,12 @@ describe('the page', () => {
     await page.getByTestId('input-to-z').focus();
     await page.keyboard.press('ArrowLeft');
     expect(await text(page, 'step-counter')).toBe('Step 10 of 10');
+    // Space on a focused disclosure opens it, and does not start playback.
+    const rule = page.locator('#algorithm-about details').first();
+    await rule.locator('summary').focus();
+    await page.keyboard.press('Space');
+    await expect.poll(() => rule.evaluate((d: HTMLDetailsElement) => d.open)).toBe(true);
+    expect(await page.getByTestId('play').innerText()).toBe('Play');
     expect(p.problems()).toEqual([]);
     await p.close();
   });
