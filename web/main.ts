@@ -296,6 +296,8 @@ function run(catalogue: Catalogue): void {
     if (program) void gcodePanel.showPoint(pointIndex);
     // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
     timeline.setSteps(main || b ? steps : undefined);
+    // Compared, the inspector follows the first path only: say which.
+    byId('inspector-heading', HTMLHeadingElement).textContent = state.mode === 'compare' ? `Current point of ${a?.algorithm ?? 'the first'}` : 'Current point';
     byId('legend-visited', HTMLSpanElement).textContent = state.mode === 'compare' ? `visited by ${a?.algorithm ?? 'the first'}` : 'visited';
     byId('legend-second-name', HTMLSpanElement).textContent = `${b?.algorithm ?? 'second'}${side ? ' (right view)' : ''}`;
     byId('legend-only-first', HTMLSpanElement).textContent = `only ${a?.algorithm ?? 'first'} visits`;

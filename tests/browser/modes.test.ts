@@ -322,6 +322,8 @@ describe('compare mode', () => {
     expect(Number(await page.getByTestId('scene-canvas').getAttribute('data-highlighted'))).toBeGreaterThan(0);
     await page.getByTestId('go-first-difference').click();
     expect(await text(page, 'step-counter')).toBe('Step 1 of 23');
+    // The inspector follows the first path, and says so.
+    expect(await page.locator('#inspector-heading').innerText()).toBe('Current point of regions');
 
     // Playing runs both to the end of the longer one.
     await page.getByTestId('speed').selectOption('64');
