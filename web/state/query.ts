@@ -147,7 +147,9 @@ export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view'
  * The state a query describes, or undefined when it has none of the state's
  * keys. Keys it lacks, or whose text is unusable, take their defaults: a link
  * shows what its sender saw, not a mix with the reader's last visit. Without
- * `algorithm` (or with an id the catalogue lacks) it is the default algorithm.
+ * `algorithm` (or with an id the mode does not offer) it is the default
+ * algorithm; an `other` that cannot be compared with it gives way to its
+ * default partner.
  */
 export function stateFromQuery(query: string, catalogue: Catalogue): AppState | undefined {
   const params = new URLSearchParams(query);
