@@ -8,8 +8,11 @@ import {
   PAGE_OPTIONS,
   axisChoices,
   axisCount,
+  comparableWith,
   defaultAlgorithm,
+  defaultOther,
   defaultState,
+  offeredAlgorithms,
   sharedOptionSpecs,
   traceOptions,
   withAxes,
@@ -91,6 +94,23 @@ describe('page state in the URL query', () => {
   it('is no state at all when the query has none of its keys', () => {
     expect(stateFromQuery('', catalogue)).toBeUndefined();
     expect(stateFromQuery('utm_source=mail', catalogue)).toBeUndefined();
+  });
+
+  it('compares only algorithms that can be compared, and runs the experiment with a line algorithm', () => {
+    // A link (or an old visit) pairing a circle with a line algorithm gets the circle's partner.
+    expect(stateFromQuery('mode=compare&algorithm=circle&other=greedy', catalogue)!.other).toBe('arc-segments');
+    expect(stateFromQuery('mode=compare&algorithm=regions&other=walk6', catalogue)!.other).toBe('walk6');
+    // random-lines traces lines: an arc algorithm in its link gives way to the default one.
+    expect(stateFromQuery('mode=experiment&algorithm=circle', catalogue)!.algorithm).toBe('regions');
+    expect(stateFromQuery('mode=experiment&algorithm=dda', catalogue)!.algorithm).toBe('dda');
+    expect(offeredAlgorithms('experiment', catalogue).map((a) => a.family)).not.toContain('arc');
+    expect(offeredAlgorithms('trace', catalogue)).toEqual(catalogue.algorithms);
+    // Every algorithm's default partner is one it can be compared with, and another algorithm.
+    for (const a of catalogue.algorithms) {
+      const other = defaultOther(a, catalogue.algorithms);
+      expect(comparableWith(a, catalogue.algorithms), a.id).toContain(other);
+      expect(other.id, a.id).not.toBe(a.id);
+    }
   });
 
   it('leaves the options the page sets itself to the page', () => {

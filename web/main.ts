@@ -25,7 +25,7 @@ import { decisionOverlay, decisionOverlayKinds } from './scene/decision-overlay.
 import { PALETTE } from './scene/palette.js';
 import { type SceneCallbacks, SceneView } from './scene/scene-view.js';
 import type { Handle } from './scene/endpoint-handles.js';
-import { type AppState, type Catalogue, MODES, type Mode, tracedAlgorithms, traceOptions } from './state/app-state.js';
+import { type AppState, type Catalogue, MODES, type Mode, randomLinesExperiment, tracedAlgorithms, traceOptions } from './state/app-state.js';
 import { loadState, persistState } from './state/persist.js';
 import { Store } from './state/store.js';
 import { Timeline, handlesItsOwnKeys } from './timeline/timeline.js';
@@ -105,7 +105,7 @@ function run(catalogue: Catalogue): void {
   for (const button of modeButtons) {
     button.addEventListener('click', () => {
       const mode = MODES.find((m) => m === button.dataset.mode);
-      if (mode && mode !== store.state.mode) store.update({ mode, pointIndex: 0, camera: null });
+      if (mode && mode !== store.state.mode) inputs.switchMode(mode);
     });
   }
   function renderMode(): void {
@@ -141,7 +141,7 @@ function run(catalogue: Catalogue): void {
     store,
   );
 
-  const experimentSpecs = catalogue.experiments.find((e) => e.id === 'random-lines')?.options ?? [];
+  const experimentSpecs = randomLinesExperiment(catalogue)?.options ?? [];
   const experimentForm = new OptionsForm(byId('experiment-fields', HTMLDivElement), formError, experimentSpecs, 3, store.state.experiment, (name, value) => {
     const experiment = { ...store.state.experiment };
     if (value === undefined) delete experiment[name];
@@ -296,6 +296,8 @@ function run(catalogue: Catalogue): void {
     if (program) void gcodePanel.showPoint(pointIndex);
     // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
     timeline.setSteps(main || b ? steps : undefined);
+    // Compared, the inspector follows the first path only: say which.
+    byId('inspector-heading', HTMLHeadingElement).textContent = state.mode === 'compare' ? `Current point of ${a?.algorithm ?? 'the first'}` : 'Current point';
     byId('legend-visited', HTMLSpanElement).textContent = state.mode === 'compare' ? `visited by ${a?.algorithm ?? 'the first'}` : 'visited';
     byId('legend-second-name', HTMLSpanElement).textContent = `${b?.algorithm ?? 'second'}${side ? ' (right view)' : ''}`;
     byId('legend-only-first', HTMLSpanElement).textContent = `only ${a?.algorithm ?? 'first'} visits`;

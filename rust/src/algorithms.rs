@@ -26,6 +26,12 @@ impl Family {
     }
 }
 
+impl Serialize for Family {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.label())
+    }
+}
+
 /// A move that shows what an algorithm teaches: the page opens with it and
 /// the README cites it. A test traces every example.
 pub struct Example {
@@ -111,7 +117,7 @@ impl Serialize for AlgorithmInfo {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let mut st = s.serialize_struct("AlgorithmInfo", 12)?;
         st.serialize_field("id", self.id)?;
-        st.serialize_field("family", self.family.label())?;
+        st.serialize_field("family", &self.family)?;
         let options: serde_json::Value =
             serde_json::from_str(self.example.options).map_err(serde::ser::Error::custom)?;
         st.serialize_field(

@@ -10,6 +10,7 @@
 //!   position after the same number of steps, which reaches 0.7071 exactly
 //!   where both passive axes are half a unit off.
 
+use crate::algorithms::Family;
 use crate::error::Error;
 use crate::grid::MAX_AXES;
 use crate::request::{OptionKind, OptionSpec, Request};
@@ -172,15 +173,20 @@ pub struct ExperimentInfo {
     pub id: &'static str,
     pub title: &'static str,
     pub citation: &'static str,
+    /// The family of algorithm it takes: the page offers only those.
+    pub family: Family,
     pub options: &'static [OptionSpec],
 }
 
-pub const EXPERIMENTS: &[ExperimentInfo] = &[ExperimentInfo {
+pub const EXPERIMENTS: &[ExperimentInfo] = &[RANDOM_LINES];
+
+const RANDOM_LINES: ExperimentInfo = ExperimentInfo {
     id: "random-lines",
     title: "Error statistics of seeded random lines from the origin",
     citation: "Wang et al. (2020), section 3.2 and Figure 9",
+    family: Family::Line,
     options: OPTIONS,
-}];
+};
 
 /// Wang's Figure 9 as printed: the spread over their 100 lines of the
 /// per-line max, mean and standard deviation of the eq. (11) error.
@@ -212,11 +218,13 @@ pub const PAPER_FIGURE_9_ERRATUM: &str = "Figure 9 gives 0.7071 as both the larg
 /// 0..=100, 3 axes), traced with `algorithm`.
 pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
     let info = crate::algorithms::find(&request.algorithm)?;
-    if info.family != crate::algorithms::Family::Line {
+    let family = RANDOM_LINES.family;
+    if info.family != family {
         return Err(Error::field(
             "algorithm",
             format!(
-                "random-lines traces lines; {} is a {} algorithm",
+                "random-lines traces {}s; {} traces {}s",
+                family.label(),
                 info.id,
                 info.family.label()
             ),
@@ -388,7 +396,7 @@ mod tests {
         );
         assert_eq!(
             run(r#"{"algorithm":"circle"}"#).unwrap_err().to_string(),
-            "algorithm: random-lines traces lines; circle is a arc algorithm"
+            "algorithm: random-lines traces lines; circle traces arcs"
         );
         // Unknown options reach the algorithm, which names them.
         assert_eq!(

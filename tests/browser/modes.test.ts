@@ -51,6 +51,27 @@ const crossingPixels = (png: Buffer) => pixelsOf(png, [0xf0, 0xe4, 0x42]);
  */
 const candidatePixels = (png: Buffer) => pixelsOf(png, [0x00, 0x72, 0xb2]);
 
+/**
+ * Pixels unlike the background in the three outermost columns, left and
+ * right, of a view's lower part (below its legend and tools): none when the
+ * path is framed with its margin.
+ */
+async function sideEdgeInk(page: Page, selector: string): Promise<number> {
+  const box = (await page.locator(selector).boundingBox())!;
+  // Inside the view's 1-pixel border.
+  const png = PNG.sync.read(await page.screenshot({ clip: { x: box.x + 2, y: box.y + box.height * 0.4, width: box.width - 4, height: box.height * 0.55 } }));
+  const { width, height, data } = png;
+  const background = [data[0]!, data[1]!, data[2]!];
+  let ink = 0;
+  for (let y = 0; y < height; y++) {
+    for (const x of [0, 1, 2, width - 3, width - 2, width - 1]) {
+      const i = (y * width + x) * 4;
+      if (background.some((v, c) => Math.abs(data[i + c]! - v) > 24)) ink++;
+    }
+  }
+  return ink;
+}
+
 /** A PNG of the first element matching `selector`, as bytes. */
 function shot(page: Page, selector: string): Promise<Buffer> {
   return page.locator(selector).first().screenshot();
@@ -188,6 +209,26 @@ describe('trace mode', () => {
     await p.close();
   });
 
+  it("keeps the circle's two candidate labels apart in a small embedded view", async () => {
+    // Step 2 from (5, 1) takes (5, 2), 25 + 4 - 25 = 4, over (4, 2),
+    // 16 + 4 - 25 = -5 (eq. 7): the other candidate lies toward -x, which the
+    // default camera shows higher on screen than the taken one, so each
+    // label must go on its own anchor's far side.
+    const p = await openPage('?embed=1&algorithm=circle&from=5,0,0&to=0,5,0&center=0,0,0&step=2&decision3d=1');
+    const { page } = p;
+    await page.setViewportSize({ width: 640, height: 400 });
+    await steps(page, 7);
+    const labels = page.locator('.candidate-label');
+    await expect.poll(async () => (await labels.allInnerTexts()).sort()).toEqual(['move: −5', 'stay: 4, taken']);
+    // Settled after the resize's render.
+    await page.waitForTimeout(300);
+    const [a, b] = await Promise.all([labels.nth(0).boundingBox(), labels.nth(1).boundingBox()]);
+    const overlap = a!.x < b!.x + b!.width && b!.x < a!.x + a!.width && a!.y < b!.y + b!.height && b!.y < a!.y + a!.height;
+    expect(overlap).toBe(false);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('moves a focused endpoint handle with the arrow keys, re-tracing the move', async () => {
     const p = await openPage('?from=0,0,0&to=10,7,6');
     const { page } = p;
@@ -281,6 +322,8 @@ describe('compare mode', () => {
     expect(Number(await page.getByTestId('scene-canvas').getAttribute('data-highlighted'))).toBeGreaterThan(0);
     await page.getByTestId('go-first-difference').click();
     expect(await text(page, 'step-counter')).toBe('Step 1 of 23');
+    // The inspector follows the first path, and says so.
+    expect(await page.locator('#inspector-heading').innerText()).toBe('Current point of regions');
 
     // Playing runs both to the end of the longer one.
     await page.getByTestId('speed').selectOption('64');
@@ -293,6 +336,39 @@ describe('compare mode', () => {
     await page.getByTestId('layout-side').check();
     await expect.poll(() => page.locator('[data-testid=scene-canvas]').count()).toBe(2);
     await page.waitForURL(/layout=side/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('keeps the second algorithm one the first can be compared with, when the first changes', async () => {
+    const p = await openPage('?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await steps(page, 23);
+    // greedy against itself would show one path twice: its partner walk6 takes the place.
+    await page.getByTestId('algorithm').selectOption('greedy');
+    await page.getByTestId('trace-status').filter({ hasText: /^greedy: .* walk6: / }).waitFor();
+    expect(await page.getByTestId('other').inputValue()).toBe('walk6');
+    // A circle is compared with an arc algorithm, not with the line algorithm of before.
+    await page.getByTestId('algorithm').selectOption('circle');
+    await page.getByTestId('trace-status').filter({ hasText: /^circle: .* arc-segments: / }).waitFor();
+    expect(await page.getByTestId('other').inputValue()).toBe('arc-segments');
+    expect(await page.getByTestId('metrics-table').innerText()).toMatch(/circle\s+arc-segments/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('frames the whole path in each view side by side, its legend clear of the view tools', async () => {
+    const p = await openPage('?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await steps(page, 23);
+    await page.getByTestId('layout-side').check();
+    await expect.poll(() => page.locator('[data-testid=scene-canvas]').count()).toBe(2);
+    // Framed for the half-width views, nothing of either path reaches their left or right edge.
+    for (const view of ['#viewport', '#viewport-b']) await expect.poll(() => sideEdgeInk(page, view)).toBe(0);
+    const legend = (await page.locator('#legend').boundingBox())!;
+    const tools = (await page.locator('#viewport .view-tools').boundingBox())!;
+    const overlap = legend.x < tools.x + tools.width && tools.x < legend.x + legend.width && legend.y < tools.y + tools.height && tools.y < legend.y + legend.height;
+    expect(overlap).toBe(false);
     expect(p.problems()).toEqual([]);
     await p.close();
   });
@@ -364,6 +440,20 @@ describe('G-code mode', () => {
     await p.close();
   });
 
+  it('runs an empty program, and one that stops at its first move, naming the error', async () => {
+    const p = await openPage('?mode=gcode&gcode=');
+    const { page } = p;
+    await page.getByTestId('trace-status').filter({ hasText: '0 moves, 0 steps' }).waitFor();
+    await steps(page, 0);
+    // 10 m at 80 steps/mm is more steps than a program may make: no move is made.
+    await page.getByTestId('gcode-text').fill('G21 G90\nG1 X10000000 F100\n');
+    await page.getByTestId('trace-status').filter({ hasText: 'stopped at line 2' }).waitFor();
+    expect(await text(page, 'gcode-diagnostics')).toMatch(/error line 2:\d+ .*maxSteps/);
+    await steps(page, 0);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps an edited program over a reload, and loads a sample', async () => {
     const p = await openPage('?mode=gcode');
     const { page } = p;
@@ -377,6 +467,11 @@ describe('G-code mode', () => {
     await page.getByTestId('sample').selectOption('helix.gcode');
     await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
     await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    // Edited, the program is no longer the sample; picking the sample again brings it back.
+    await page.getByTestId('gcode-text').fill('G1 X1 F100\n');
+    expect(await page.getByTestId('sample').inputValue()).toBe('');
+    await page.getByTestId('sample').selectOption('helix.gcode');
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
     expect(p.problems()).toEqual([]);
     await p.close();
   });
@@ -393,6 +488,23 @@ describe('experiment mode', () => {
     expect(await spread.innerText()).toMatch(/0\.6472/);
     expect(await page.getByTestId('lines-table').locator('tbody tr').count()).toBe(100);
     expect(await text(page, 'experiment-view')).toMatch(/Erratum: Figure 9 gives 0\.7071/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('offers only the line algorithms it can trace, and enters with the default one from an arc', async () => {
+    const p = await openPage('?algorithm=circle');
+    const { page } = p;
+    await steps(page, 7);
+    await page.getByTestId('mode-experiment').click();
+    await page.getByTestId('trace-status').filter({ hasText: '100 lines traced with regions.' }).waitFor();
+    const offered = await page.getByTestId('algorithm').locator('option').evaluateAll((options) => options.map((o) => (o as HTMLOptionElement).value));
+    expect(offered).toContain('greedy');
+    expect(offered).not.toContain('circle');
+    expect(await text(page, 'form-error')).toBe('');
+    // Back in trace mode every algorithm is offered again.
+    await page.getByTestId('mode-trace').click();
+    await expect.poll(() => page.getByTestId('algorithm').locator('option[value=circle]').count()).toBe(1);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -85,6 +85,12 @@ describe('the page', () => {
     await page.getByTestId('input-to-z').focus();
     await page.keyboard.press('ArrowLeft');
     expect(await text(page, 'step-counter')).toBe('Step 10 of 10');
+    // Space on a focused disclosure opens it, and does not start playback.
+    const rule = page.locator('#algorithm-about details').first();
+    await rule.locator('summary').focus();
+    await page.keyboard.press('Space');
+    await expect.poll(() => rule.evaluate((d: HTMLDetailsElement) => d.open)).toBe(true);
+    expect(await page.getByTestId('play').innerText()).toBe('Play');
     expect(p.problems()).toEqual([]);
     await p.close();
   });
@@ -119,8 +125,15 @@ describe('the page', () => {
     expect(await text(page, 'step-counter')).toBe('Step 1 of 10');
     await expect.poll(() => decision(page, 'M')).toBe('4');
 
+    // A move longer than the page draws: the limit is the page's own, with no field, and the message says so.
+    await page.getByTestId('input-to-x').fill('2000000');
+    const formError = page.getByTestId('form-error');
+    await formError.filter({ hasText: 'maxSteps' }).waitFor();
+    expect(await formError.innerText()).toMatch(/^maxSteps: this page sets it to 1,500,000, so shorten the move \(the CLI and the API take more\)\. The core says: the path needs more than 1500000 steps/);
+
     await page.getByTestId('input-to-x').fill('12');
     await traced(page, 12);
+    expect(await text(page, 'form-error')).toBe('');
     expect(await text(page, 'error-to')).toBe('');
     expect(await page.getByTestId('input-to-x').getAttribute('aria-invalid')).toBe('false');
     expect(p.problems()).toEqual([]);

@@ -4,7 +4,7 @@
  */
 import { callCore } from './errors.js';
 import { encodeRequest } from './request.js';
-import type { OptionSpec } from './types.js';
+import type { AlgorithmInfo, OptionSpec } from './types.js';
 import { loadCore } from './wasm.js';
 
 export interface RandomLinesOptions {
@@ -67,6 +67,8 @@ export interface ExperimentInfo {
   id: string;
   title: string;
   citation: string;
+  /** The family of algorithm it traces with (random-lines: 'line'). */
+  family: AlgorithmInfo['family'];
   options: OptionSpec[];
 }
 

@@ -9,11 +9,17 @@ import {
   type AppState,
   type Catalogue,
   COMPARE_LAYOUTS,
+  type Mode,
   type OptionValue,
+  PAGE_OPTIONS,
   axisChoices,
   axisCount,
+  comparableWith,
+  defaultAlgorithm,
   defaultOptions,
+  defaultOther,
   defaultProjection,
+  offeredAlgorithms,
   sharedOptionSpecs,
   tracedAlgorithms,
   withAxes,
@@ -68,12 +74,6 @@ export class AlgorithmInputs {
     this.#e = elements;
     this.#catalogue = catalogue;
     this.#store = store;
-    // Grouped by family, lines first, as the catalogue lists them.
-    for (const family of ['line', 'arc'] as const) {
-      const group = element('optgroup', { label: family === 'line' ? 'Lines' : 'Arcs and helices' });
-      group.append(...catalogue.algorithms.filter((a) => a.family === family).map(option));
-      elements.algorithm.append(group);
-    }
     elements.algorithm.addEventListener('change', () => this.#pickAlgorithm(elements.algorithm.value));
     elements.other.addEventListener('change', () => this.#pickOther(elements.other.value));
     for (const radio of elements.layout) {
@@ -90,14 +90,32 @@ export class AlgorithmInputs {
     this.render();
   }
 
-  #pickAlgorithm(id: string): void {
-    const state = this.#store.state;
-    const infos = tracedAlgorithms({ ...state, algorithm: id }, this.#catalogue.algorithms);
-    // A comparison needs a second algorithm of the same axes; keep it when it fits.
-    const other = state.mode === 'compare' && axisChoices(infos).length === 0 ? this.#compatible(infos[0]!)[0]?.id ?? state.other : state.other;
-    const next = tracedAlgorithms({ ...state, algorithm: id, other }, this.#catalogue.algorithms);
+  /**
+   * Traces `id` from its example move (in `mode`). The second algorithm of a
+   * comparison stays when it can still be compared with `id` and is another
+   * one; else it becomes the default partner of `id`, so that no mode is left
+   * comparing a circle with a line, or an algorithm with itself.
+   */
+  #pickAlgorithm(id: string, mode: Mode = this.#store.state.mode): void {
+    const state = { ...this.#store.state, mode };
+    const { algorithms } = this.#catalogue;
+    const info = algorithms.find((a) => a.id === id) ?? defaultAlgorithm(algorithms);
+    const keep = state.other !== info.id && comparableWith(info, algorithms).some((a) => a.id === state.other);
+    const other = keep ? state.other : defaultOther(info, algorithms).id;
+    const next = tracedAlgorithms({ ...state, algorithm: info.id, other }, algorithms);
     const options = carriedOptions(next, state.options, false);
-    this.#store.update({ algorithm: id, other, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(next, options)) });
+    this.#store.update({ mode, algorithm: info.id, other, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(next, options)) });
+  }
+
+  /**
+   * Switches to `mode`. The experiment traces lines only: entering it with an
+   * arc algorithm picks the default line algorithm, rather than offer one
+   * that cannot run.
+   */
+  switchMode(mode: Mode): void {
+    const offered = offeredAlgorithms(mode, this.#catalogue);
+    if (offered.some((a) => a.id === this.#store.state.algorithm)) this.#store.update({ mode, pointIndex: 0, camera: null });
+    else this.#pickAlgorithm(defaultAlgorithm(offered).id, mode);
   }
 
   #pickOther(id: string): void {
@@ -107,15 +125,16 @@ export class AlgorithmInputs {
     this.#store.update({ other: id, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(infos, options)) });
   }
 
-  /** Algorithms that can be compared with `info`: same family, and an axis count both take. */
-  #compatible(info: AlgorithmInfo): AlgorithmInfo[] {
-    return this.#catalogue.algorithms.filter((a) => a.family === info.family && axisChoices([info, a]).length > 0);
-  }
-
-  /** Shows the core's verdict on the last request: beside the option it names, or under the form. */
+  /**
+   * Shows the core's verdict on the last request: beside the option it
+   * names, or under the form. An option the page sets itself has no field
+   * to fix, so the message says that the page set it and to what.
+   */
   showCoreError(error: InputError | undefined): void {
-    if (this.#form) this.#form.showCoreError(error);
-    else this.#e.formError.textContent = error ? error.message : '';
+    const pageValue = error?.field === undefined ? undefined : PAGE_OPTIONS[error.field];
+    const shown = error && pageValue !== undefined ? { ...error, message: `this page sets it to ${pageValue.toLocaleString('en')}, so shorten the move (the CLI and the API take more). The core says: ${error.message}` } : error;
+    if (this.#form) this.#form.showCoreError(shown);
+    else this.#e.formError.textContent = shown ? shown.message : '';
   }
 
   render(): void {
@@ -123,6 +142,16 @@ export class AlgorithmInputs {
     const e = this.#e;
     const infos = tracedAlgorithms(state, this.#catalogue.algorithms);
     const info = infos[0]!;
+    const offered = offeredAlgorithms(state.mode, this.#catalogue);
+    if (e.algorithm.options.length !== offered.length) {
+      // Grouped by family, lines first, as the catalogue lists them.
+      e.algorithm.replaceChildren(
+        ...(['line', 'arc'] as const).flatMap((family) => {
+          const members = offered.filter((a) => a.family === family);
+          return members.length ? [element('optgroup', { label: family === 'line' ? 'Lines' : 'Arcs and helices' }, ...members.map(option))] : [];
+        }),
+      );
+    }
     e.algorithm.value = info.id;
     e.title.textContent = info.title;
     e.citation.textContent = info.citation;
@@ -130,7 +159,7 @@ export class AlgorithmInputs {
     e.errata.replaceChildren(...info.errata.map((text) => element('li', { textContent: text })));
     e.errataBox.hidden = info.errata.length === 0;
 
-    const compatible = this.#compatible(info);
+    const compatible = comparableWith(info, this.#catalogue.algorithms);
     if (e.other.options.length !== compatible.length || [...e.other.options].some((o, i) => o.value !== compatible[i]!.id)) {
       e.other.replaceChildren(...compatible.map(option));
     }

@@ -185,6 +185,8 @@ export class GcodePanel {
 
   /** The user changed the program to `text`: in the box (`fromBox`: typed, dropped) or by a paste the box did not take. */
   #edited(text: string, fromBox = false): void {
+    // No longer the sample as loaded; and picking that sample again must fire a change to load it afresh.
+    this.#e.sample.value = '';
     this.#setText(text, { fromBox });
     this.#store.update({ gcode: text });
   }

@@ -17,6 +17,7 @@
  * candidate is the current cell, whose cube would hide its outline.
  */
 import * as THREE from 'three';
+import type { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import type { ArcCandidates } from '../inspector/decision-figure.js';
 import { sceneLabel } from './grid-axes.js';
 import { OverlayGroup } from './overlay-group.js';
@@ -51,11 +52,20 @@ export class ArcCandidateCells extends OverlayGroup {
     this.#outline(taken, TAKEN_LINE_PX, false);
     const otherLabel = sceneLabel(`${otherName}: ${signed(otherResidual)}`, 'scene-label candidate-label', other.clone().addScaledVector(toOther, LABEL_OFFSET));
     const takenLabel = sceneLabel(`${takenName}: ${signed(takenResidual)}, taken`, 'scene-label candidate-label chosen', taken.clone().addScaledVector(toOther, -LABEL_OFFSET));
-    // Zoomed out, the two anchors are a few pixels apart: hang one label
-    // below its anchor and stand the other above its own, so they never
-    // cover each other (CSS2DObject.center is the anchor within the label).
-    otherLabel.center.set(0.5, 0);
-    takenLabel.center.set(0.5, 1);
+    // Zoomed out, the two anchors are a few pixels apart: the label whose
+    // anchor is higher on screen stands above it and the other hangs below
+    // its own, so they never cover each other (CSS2DObject.center is the
+    // anchor within the label). Which anchor is higher depends on the
+    // camera, so it is settled at every render (on a tie, the taken one).
+    const standAbove = (label: CSS2DObject, partner: CSS2DObject) => {
+      label.onBeforeRender = (_renderer, _scene, camera) => {
+        const screenY = (o: CSS2DObject) => new THREE.Vector3().setFromMatrixPosition(o.matrixWorld).project(camera).y;
+        const [mine, theirs] = [screenY(label), screenY(partner)];
+        label.center.set(0.5, mine > theirs || (mine === theirs && label === takenLabel) ? 1 : 0);
+      };
+    };
+    standAbove(otherLabel, takenLabel);
+    standAbove(takenLabel, otherLabel);
     this.add(otherLabel, takenLabel);
   }
 

@@ -28,6 +28,13 @@ export class IdealPath extends THREE.Group {
   constructor(polyline: Float64Array, dims: number) {
     super();
     const count = polyline.length / dims;
+    // A program that made no move (empty, or stopped at its first line) has
+    // no ideal path; a line needs two points (and LineGeometry throws on none).
+    if (count < 2) {
+      this.#geometry = new THREE.BufferGeometry();
+      this.#materials = [];
+      return;
+    }
     const xyz = new Float32Array(count * 3);
     for (let k = 0; k < count; k++) {
       for (let a = 0; a < Math.min(dims, 3); a++) xyz[k * 3 + a] = polyline[k * dims + a]!;

@@ -250,8 +250,11 @@ export class SceneView {
     return this.#projection === '2d' ? this.#orthographic : this.#perspective;
   }
 
+  /** Fits both cameras to the container's current shape (kept while it is hidden, with no shape). */
   #updateProjections(): void {
-    const aspect = this.#container.clientWidth / Math.max(1, this.#container.clientHeight);
+    const { clientWidth: width, clientHeight: height } = this.#container;
+    if (width === 0 || height === 0) return;
+    const aspect = width / height;
     this.#perspective.aspect = aspect;
     this.#perspective.updateProjectionMatrix();
     const h = this.#orthoHeight / 2;
@@ -455,6 +458,10 @@ export class SceneView {
    * labels, is inside the view.
    */
   #fit(direction: THREE.Vector3, bounds: THREE.Box3): void {
+    // The container's shape now, not as the last resize report left it: a
+    // layout change (side by side) reshapes the view in the same task that
+    // frames the path, before any ResizeObserver callback.
+    this.#updateProjections();
     const camera = this.#perspective;
     // Room for the axis labels, which stand a few pixels outside the box however large the path is.
     const extent = bounds.getSize(new THREE.Vector3());

@@ -102,6 +102,22 @@ export function defaultOther(info: AlgorithmInfo, catalogue: readonly AlgorithmI
  */
 export const PAGE_OPTIONS: Readonly<Record<string, OptionValue>> = { maxSteps: 1_500_000 };
 
+/** The experiment of experiment mode: Wang's random lines. */
+export function randomLinesExperiment(catalogue: Catalogue): ExperimentInfo | undefined {
+  return catalogue.experiments.find((e) => e.id === 'random-lines');
+}
+
+/** The algorithms the picker offers in `mode`: in experiment mode those of the family the experiment traces, else all. */
+export function offeredAlgorithms(mode: Mode, catalogue: Catalogue): AlgorithmInfo[] {
+  const family = mode === 'experiment' ? randomLinesExperiment(catalogue)?.family : undefined;
+  return family ? catalogue.algorithms.filter((a) => a.family === family) : catalogue.algorithms;
+}
+
+/** Algorithms that can be compared with `info`: the same family, and an axis count of the page that both take. */
+export function comparableWith(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AlgorithmInfo[] {
+  return catalogue.filter((a) => a.family === info.family && axisChoices([info, a]).length > 0);
+}
+
 /** Axes the page shows: 2 or 3 (a 3D view), within what the algorithm takes. */
 export const PAGE_AXES = [2, 3] as const;
 

@@ -27,12 +27,14 @@ import {
   PROJECTIONS,
   SPEEDS_STEPS_PER_SECOND,
   defaultAlgorithm,
+  comparableWith,
   defaultOptions,
-  defaultOther,
   defaultProjection,
   defaultState,
   axisCount,
   machineSpecs,
+  offeredAlgorithms,
+  randomLinesExperiment,
   sharedOptionSpecs,
   tracedAlgorithms,
 } from './app-state.js';
@@ -145,28 +147,31 @@ export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view'
  * The state a query describes, or undefined when it has none of the state's
  * keys. Keys it lacks, or whose text is unusable, take their defaults: a link
  * shows what its sender saw, not a mix with the reader's last visit. Without
- * `algorithm` (or with an id the catalogue lacks) it is the default algorithm.
+ * `algorithm` (or with an id the mode does not offer) it is the default
+ * algorithm; an `other` that cannot be compared with it gives way to its
+ * default partner.
  */
 export function stateFromQuery(query: string, catalogue: Catalogue): AppState | undefined {
   const params = new URLSearchParams(query);
   const { algorithms } = catalogue;
-  const info = algorithms.find((a) => a.id === params.get('algorithm')) ?? defaultAlgorithm(algorithms);
   const optionNames = algorithms.flatMap((a) => a.options.map((o) => o.name));
   if (![...STATE_KEYS, ...optionNames].some((k) => params.has(k))) return undefined;
+  const mode = MODES.find((m) => m === params.get('mode')) ?? 'trace';
+  const offered = offeredAlgorithms(mode, catalogue);
+  const info = offered.find((a) => a.id === params.get('algorithm')) ?? defaultAlgorithm(offered);
   const state = defaultState(info, algorithms);
-  const mode = params.get('mode');
-  state.mode = MODES.find((m) => m === mode) ?? 'trace';
-  const other = algorithms.find((a) => a.id === params.get('other'));
+  state.mode = mode;
+  // Only an algorithm that can be compared with the first one (else the default partner).
+  const other = comparableWith(info, algorithms).find((a) => a.id === params.get('other'));
   if (other) state.other = other.id;
   state.layout = COMPARE_LAYOUTS.find((l) => l === params.get('layout')) ?? state.layout;
 
   const infos = tracedAlgorithms(state, algorithms);
-  if (state.mode === 'compare') state.other = infos[1]?.id ?? defaultOther(info, algorithms).id;
   state.options = readOptions(params, sharedOptionSpecs(infos), defaultOptions(infos));
   // A link that names any drive setting names all it uses: a cleared steps/mm (to use the motor's) stays cleared.
   if (DRIVE_KEYS.some((k) => params.has(k))) delete state.machine.stepsPerMm;
   state.machine = readOptions(params, machineSpecs(algorithms), state.machine);
-  const experiment = catalogue.experiments.find((e) => e.id === 'random-lines');
+  const experiment = randomLinesExperiment(catalogue);
   if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment);
   state.gcode = params.get('gcode') ?? state.gcode;
 

@@ -33,8 +33,8 @@ export function handlesItsOwnKeys(target: EventTarget | null, key: string): bool
   // A range, checkbox or radio button takes arrows, Home/End and Space, but
   // no printable key (so '?' still opens the help there); other inputs edit text.
   if (target instanceof HTMLInputElement) return !['range', 'checkbox', 'radio'].includes(target.type) || key.length !== 1 || key === ' ';
-  // Space and Enter press a focused button.
-  return target instanceof HTMLButtonElement && (key === ' ' || key === 'Enter');
+  // Space and Enter press a focused button, and open or close a focused disclosure (<summary>).
+  return (target instanceof HTMLButtonElement || target.localName === 'summary') && (key === ' ' || key === 'Enter');
 }
 
 export class Timeline {
