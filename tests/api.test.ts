@@ -61,6 +61,21 @@ describe('trace (regions)', () => {
     expect(diagonal.decisions.face_u_axis![0]).toBe(NO_VALUE);
   });
 
+  it('states the deviation bound its algorithm guarantees, and none where it guarantees none', async () => {
+    // Wang section 3.2, Fig. 6b: with y and z passive every point is within √2/2.
+    const wang = await trace(LINE);
+    expect(wang.deviationBound!.value).toBe(Math.SQRT1_2);
+    expect(wang.deviationBound!.why).toMatch(/2 passive axes stays within 1\/2 cell/);
+    expect(wang.metrics.maxDeviation).toBeLessThanOrEqual(wang.deviationBound!.value);
+    // Bresenham in the plane: one passive axis, half a cell.
+    expect((await trace({ algorithm: 'bresenham2d', from: [0, 0], to: [9, 4] })).deviationBound!.value).toBe(0.5);
+    // walk6: half a cell's diagonal, √3/2 in 3D.
+    expect((await trace({ ...LINE, algorithm: 'walk6' })).deviationBound!.value).toBe(Math.sqrt(3) / 2);
+    // Greedy strays with length, and the printed Saleem pseudo-code runs ahead: no promise.
+    expect((await trace({ ...LINE, algorithm: 'greedy' })).deviationBound).toBeNull();
+    expect((await trace({ algorithm: 'bresenham2d', from: [0, 0], to: [9, 4], variant: 'printed' })).deviationBound).toBeNull();
+  });
+
   it('measures each point against the ideal line and sums up the path', async () => {
     const t = await trace(LINE);
     expect(t.deviation).toHaveLength(11);

@@ -48,6 +48,7 @@ const PATH: TracedPath = {
     end: [1, 1, 0],
     columns: [],
     metrics: { steps: 1, stepsMovingAxes: [0, 1, 0], pulsesByAxis: [1, 1, 0], maxDeviation: 0, meanDeviation: 0, stdDeviation: 0, maxAxisError: [0, 0, 0], ties: 0 },
+    deviationBound: null,
   },
   points: new Int32Array([0, 0, 0, 1, 1, 0]),
   idealPolyline: new Float64Array([0, 0, 0, 1, 1, 0]),

@@ -313,9 +313,12 @@ function run(catalogue: Catalogue): void {
 
   function statusOf(trace: RemoteTrace): string {
     const m = trace.metrics;
+    const bound = trace.deviationBound;
     return (
       `${trace.algorithm}: ${trace.steps} steps from ${formatPoint(trace.start)} to ${formatPoint(trace.end)}; ` +
-      `largest distance from the ideal path ${m.maxDeviation.toFixed(3)}; ${m.ties} ${m.ties === 1 ? 'tie' : 'ties'}.`
+      `largest distance from the ideal path ${m.maxDeviation.toFixed(3)}` +
+      (bound ? ` (the rule keeps it within ${bound.value.toFixed(3)}: ${bound.why})` : '') +
+      `; ${m.ties} ${m.ties === 1 ? 'tie' : 'ties'}.`
     );
   }
 

@@ -161,6 +161,13 @@ pub trait Stepper: Clone + 'static {
     /// Steps this stepper will still take, when known without running it.
     fn remaining_steps(&self) -> Option<u64>;
 
+    /// The largest distance from the ideal path any of this stepper's points
+    /// can have, where its rule guarantees one; None where it makes no such
+    /// promise (a float rule that can drift, greedy's).
+    fn deviation_bound(&self) -> Option<DeviationBound> {
+        None
+    }
+
     /// What a learner should know about this particular move before it starts
     /// (line type, active axis, initial discriminants, ...).
     fn setup_note(&self) -> String;
@@ -182,6 +189,15 @@ pub fn fill_by_next_step<S: Stepper>(stepper: &mut S, out: &mut [Step]) -> Fille
         steps: taken,
         displacement: displacement(&out[..taken]),
     }
+}
+
+/// A distance from the ideal path that no point of a trace exceeds, as its
+/// algorithm guarantees, and the reason in a sentence.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+pub struct DeviationBound {
+    /// Grid units.
+    pub value: f64,
+    pub why: String,
 }
 
 /// What [`Stepper::fill`] took.
@@ -260,6 +276,8 @@ pub struct Trace {
     /// reads points or appends this trace to another (a chord of an arc)
     /// never pays for.
     metrics: OnceCell<Metrics>,
+    /// What the algorithm promises of the deviation, when it promises one.
+    deviation_bound: Option<DeviationBound>,
 }
 
 /// Builds a trace by running steppers one after another from a start point.
@@ -452,6 +470,7 @@ impl TraceBuilder {
             segments: self.segments,
             columns: self.columns,
             metrics: OnceCell::new(),
+            deviation_bound: None,
         }
     }
 }
@@ -462,6 +481,16 @@ pub struct DecisionTable {
 }
 
 impl Trace {
+    /// This trace with the deviation bound its algorithm guarantees.
+    pub fn with_deviation_bound(mut self, bound: Option<DeviationBound>) -> Trace {
+        self.deviation_bound = bound;
+        self
+    }
+
+    pub fn deviation_bound(&self) -> Option<&DeviationBound> {
+        self.deviation_bound.as_ref()
+    }
+
     pub fn dims(&self) -> usize {
         self.start.dims()
     }
@@ -690,6 +719,8 @@ pub struct TraceSummary<'a> {
     pub end: Vec<i64>,
     pub columns: &'a [Column],
     pub metrics: &'a Metrics,
+    /// Absent (null) where the algorithm guarantees none.
+    pub deviation_bound: Option<&'a DeviationBound>,
     pub segments: Vec<SegmentSummary<'a>>,
 }
 
@@ -713,6 +744,7 @@ impl Trace {
             end: self.end.coords().to_vec(),
             columns: &self.columns,
             metrics: self.metrics(),
+            deviation_bound: self.deviation_bound(),
             segments: self
                 .segments
                 .iter()

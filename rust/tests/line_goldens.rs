@@ -46,6 +46,12 @@ fn regions_type_one_line_of_wang_table_2_from_the_equations() {
     assert_eq!(steps[4].1.region, Some(Region::G));
     assert!(steps[4].1.tie);
     assert_eq!(steps[4].1.corner, Some(Corner::D));
+    // Wang section 3.2 / Fig. 6b: y and z passive, so within √2/2.
+    let t = trace(r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#);
+    assert_eq!(
+        t.deviation_bound().unwrap().value,
+        std::f64::consts::FRAC_1_SQRT_2
+    );
 }
 
 #[test]

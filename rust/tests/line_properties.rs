@@ -137,6 +137,32 @@ proptest! {
     }
 
     #[test]
+    fn no_point_strays_past_the_bound_its_algorithm_states(
+        (from, to) in line_strategy(2..=6)
+    ) {
+        // The bound the core hands the page (Wang Fig. 6b's √2/2 line) is a
+        // promise: the rules that keep each passive axis within half a cell
+        // state √P/2, walk6 √D/2; the float rules and greedy state none.
+        let promised = ["regions", "bresenham2d", "bresenham3d", "nd", "walk6"];
+        for a in common::line_algorithms() {
+            if !(a.min_dims..=a.max_dims).contains(&from.dims()) {
+                continue;
+            }
+            let t = common::trace(&format!(
+                r#"{{"algorithm":"{}","from":{:?},"to":{:?}}}"#, a.id, from.coords(), to.coords()
+            ));
+            let Some(bound) = t.deviation_bound() else {
+                prop_assert!(!promised.contains(&a.id), "{} states no bound", a.id);
+                continue;
+            };
+            prop_assert!(promised.contains(&a.id), "{} states a bound it does not keep in general", a.id);
+            let expected = if a.id == "walk6" { (from.dims() as f64).sqrt() / 2.0 } else { passive_bound(&from, &to) - 1e-9 };
+            prop_assert!((bound.value - expected).abs() < 1e-12, "{}: {} vs {}", a.id, bound.value, expected);
+            prop_assert!(t.metrics().max_deviation <= bound.value + 1e-9, "{}: {} > {}", a.id, t.metrics().max_deviation, bound.value);
+        }
+    }
+
+    #[test]
     fn the_recording_loops_take_the_rule_s_steps(
         (from, to) in line_strategy(2..=6), tie in tie_strategy(), gcd in any::<bool>(), chunk in 1usize..300
     ) {

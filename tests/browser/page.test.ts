@@ -52,6 +52,8 @@ describe('the page', () => {
     expect(await text(page, 'inspector-deviation')).toBe('0.220564 grid units');
     expect(await text(page, 'inspector-explanation')).toMatch(/M = 12 > 0 and N = 6 > 0.*region d/);
     expect(await text(page, 'segment-note')).toMatch(/M_1 = [^.]*= 2·7 - 10 = 4\./);
+    // The core's bound beside the largest distance (Wang Fig. 6b's √2/2).
+    expect(await text(page, 'trace-status')).toMatch(/largest distance from the ideal path 0\.441 \(the rule keeps it within 0\.707: each of the 2 passive axes/);
 
     const stats = await screenshot(page, 'page-step-3', '[data-testid=scene-canvas]', { background: BACKGROUND, tolerance: 2 });
     expect(stats.width).toBeGreaterThan(400);

@@ -19,8 +19,8 @@ export interface ChartSpec {
   yLabel: string;
   series: uPlot.Series[];
   bands?: uPlot.Band[];
-  /** Horizontal reference lines, y value and label (drawn dashed). */
-  references?: { value: number; label: string; colour: string }[];
+  /** Horizontal reference lines, drawn dashed, each labelled at the left (or at the right, so that two close values stay legible). */
+  references?: { value: number; label: string; colour: string; labelAtRight?: boolean }[];
   /** Fixed y range; default: fitted to the data. */
   yRange?: [number, number];
   /** Axis values formatter for y. */
@@ -76,7 +76,9 @@ export class StepChart {
               ctx.stroke();
               ctx.fillStyle = r.colour;
               ctx.font = `${11 * devicePixelRatio}px system-ui, sans-serif`;
-              ctx.fillText(r.label, u.bbox.left + 4 * devicePixelRatio, y - 4 * devicePixelRatio);
+              ctx.textAlign = r.labelAtRight ? 'right' : 'left';
+              const labelX = r.labelAtRight ? u.bbox.left + u.bbox.width - 4 * devicePixelRatio : u.bbox.left + 4 * devicePixelRatio;
+              ctx.fillText(r.label, labelX, y - 4 * devicePixelRatio);
             }
             ctx.setLineDash([]);
             const x = Math.round(u.valToPos(this.#pointIndex, 'x', true));

@@ -8,6 +8,7 @@
  * bucket's range as a band.
  */
 import type uPlot from 'uplot';
+import type { DeviationBound } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
 import type { ChartSeries } from '../worker/protocol.js';
@@ -19,6 +20,7 @@ export const CHART_POINTS = 2000;
 export interface ChartedTrace {
   dims: number;
   metrics: { maxDeviation: number };
+  deviationBound: DeviationBound | null;
   series(maxPoints: number): Promise<ChartSeries>;
 }
 
@@ -64,6 +66,8 @@ export class PathCharts {
       deviationData.push(series.deviationMin);
     }
     const largest = trace.metrics.maxDeviation;
+    // The algorithm's promise, as Wang's Fig. 6b draws √2/2: the core states it.
+    const bound = trace.deviationBound;
     this.#charts.push(
       new StepChart(
         this.#container,
@@ -73,8 +77,11 @@ export class PathCharts {
           yLabel: 'distance',
           series: deviationSeries,
           bands: series.bucketed ? [{ series: [1, 2], fill: 'rgba(86, 180, 233, 0.25)' }] : undefined,
-          references: [{ value: largest, label: `largest ${largest.toFixed(4)}`, colour: PALETTE.current }],
-          yRange: [0, Math.max(largest * 1.15, 0.1)],
+          references: [
+            { value: largest, label: `largest ${largest.toFixed(4)}`, colour: PALETTE.current },
+            ...(bound ? [{ value: bound.value, label: `bound ${bound.value.toFixed(4)} (the rule's)`, colour: PALETTE.ideal, labelAtRight: true }] : []),
+          ],
+          yRange: [0, Math.max(largest * 1.15, (bound?.value ?? 0) * 1.15, 0.1)],
         },
         deviationData,
         this.#onPick,

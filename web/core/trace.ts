@@ -11,6 +11,7 @@ import { encodeRequest } from './request.js';
 import type {
   AlgorithmInfo,
   ColumnSpec,
+  DeviationBound,
   DecisionColumns,
   Metrics,
   SegmentInfo,
@@ -64,6 +65,7 @@ export class Trace implements TraceSummary {
   readonly end: number[];
   readonly columns: ColumnSpec[];
   readonly metrics: Metrics;
+  readonly deviationBound: DeviationBound | null;
   readonly segments: SegmentInfo[];
   readonly #handle: TraceHandle;
   #points?: Int32Array;
@@ -81,6 +83,7 @@ export class Trace implements TraceSummary {
     this.end = s.end;
     this.columns = s.columns;
     this.metrics = s.metrics;
+    this.deviationBound = s.deviationBound;
     this.segments = s.segments;
   }
 

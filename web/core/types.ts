@@ -147,5 +147,13 @@ export interface TraceSummary {
   end: number[];
   columns: ColumnSpec[];
   metrics: Metrics;
+  /** The distance from the ideal path no point exceeds, as the algorithm guarantees; null where it guarantees none. */
+  deviationBound: DeviationBound | null;
   segments: SegmentInfo[];
+}
+
+/** A guaranteed largest distance from the ideal path (grid units), and why it holds. */
+export interface DeviationBound {
+  value: number;
+  why: string;
 }

@@ -8,7 +8,7 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ColumnSpec, DecisionColumns, Metrics, TraceOptions } from '../core/types.js';
+import type { ColumnSpec, DecisionColumns, DeviationBound, Metrics, TraceOptions } from '../core/types.js';
 import type {
   ChartSeries,
   InputError,
@@ -199,6 +199,7 @@ export class RemoteTrace implements PathSummary {
   readonly end: number[];
   readonly columns: ColumnSpec[];
   readonly metrics: Metrics;
+  readonly deviationBound: DeviationBound | null;
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
   readonly points: Int32Array;
   /** The ideal path as the core draws it, flat with stride dims, grid units. */
@@ -226,6 +227,7 @@ export class RemoteTrace implements PathSummary {
     this.end = summary.end;
     this.columns = summary.columns;
     this.metrics = summary.metrics;
+    this.deviationBound = summary.deviationBound;
     this.points = points;
     this.idealPolyline = idealPolyline;
   }

@@ -48,8 +48,8 @@ function tracedPath(t: Trace): TracedPath {
   // detached here, and the cache would then hand out an empty array.
   const points = t.pointsInRange(0, t.steps + 1);
   const idealPolyline = t.idealPolyline();
-  const { algorithm, dims, steps, start, end, columns, metrics } = t;
-  return { summary: { algorithm, dims, steps, start, end, columns, metrics }, points, idealPolyline };
+  const { algorithm, dims, steps, start, end, columns, metrics, deviationBound } = t;
+  return { summary: { algorithm, dims, steps, start, end, columns, metrics, deviationBound }, points, idealPolyline };
 }
 
 /** The note of the segment that takes step index `stepIndex` (the first segment's before any step). */

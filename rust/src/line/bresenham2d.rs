@@ -14,7 +14,9 @@ use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy, fill_by_next_step};
+use crate::trace::{
+    Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy, fill_by_next_step,
+};
 
 pub const ID: &str = "bresenham2d";
 
@@ -366,6 +368,13 @@ impl Stepper for Bresenham2d {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    /// The corrected rule only: as printed, the minor axis runs ahead of
+    /// the line until the finish rule holds it.
+    fn deviation_bound(&self) -> Option<DeviationBound> {
+        (self.variant == Variant::Corrected)
+            .then(|| super::half_cell_per_passive_axis(&self.mirror))
     }
 
     fn setup_note(&self) -> String {

@@ -12,7 +12,7 @@ use super::{GCD, Mirror, axis_list, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
+use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
 
 pub const ID: &str = "bresenham3d";
 
@@ -220,6 +220,10 @@ impl Stepper for Bresenham3d {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    fn deviation_bound(&self) -> Option<DeviationBound> {
+        Some(super::half_cell_per_passive_axis(&self.mirror))
     }
 
     fn setup_note(&self) -> String {

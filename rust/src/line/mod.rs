@@ -18,7 +18,7 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, gcd};
 use crate::ideal::IdealPath;
 use crate::request::{OptionKind, OptionSpec, Request};
-use crate::trace::{Column, ColumnKind, Stepper, TiePolicy, Trace, TraceBuilder};
+use crate::trace::{Column, ColumnKind, DeviationBound, Stepper, TiePolicy, Trace, TraceBuilder};
 use std::cmp::Ordering;
 
 /// Traces one straight move with the stepper `make` builds from the request's
@@ -32,8 +32,31 @@ pub fn trace_line<S: Stepper>(
     let (from, to) = req.endpoints(info.min_dims, info.max_dims)?;
     let tie = req.tie(info.default_tie.unwrap_or(TiePolicy::Advance))?;
     let mut builder = TraceBuilder::new(from, req.max_steps()?);
-    builder.run(make(from, to, tie), IdealPath::Line { from, to })?;
-    Ok(builder.finish(info.id))
+    let stepper = make(from, to, tie);
+    let bound = stepper.deviation_bound();
+    builder.run(stepper, IdealPath::Line { from, to })?;
+    Ok(builder.finish(info.id).with_deviation_bound(bound))
+}
+
+/// The bound of the rules that keep every passive coordinate within half a
+/// cell of the ideal line's at the same active position (Wang section 3.2;
+/// Bresenham's, in 2D): with P passive axes a point is then within √P / 2 of
+/// the line, √2 / 2 for Wang's 3D lines (his Fig. 6b).
+pub fn half_cell_per_passive_axis(mirror: &Mirror) -> DeviationBound {
+    let passive = (0..mirror.dims()).filter(|&a| !mirror.is_active(a)).count();
+    DeviationBound {
+        value: (passive as f64).sqrt() / 2.0,
+        why: match passive {
+            0 => {
+                "every axis moves as far as the longest, so every point is on the line".to_string()
+            }
+            1 => "the one passive axis stays within 1/2 cell of the line at each active position"
+                .to_string(),
+            p => format!(
+                "each of the {p} passive axes stays within 1/2 cell of the line at each active position, so a point is within √{p}/2 of it"
+            ),
+        },
+    }
 }
 
 /// A move seen along its direction of travel. The documents derive their

@@ -8,7 +8,7 @@ use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
+use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
 
 pub const ID: &str = "nd";
 
@@ -286,6 +286,10 @@ impl Stepper for Nd {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    fn deviation_bound(&self) -> Option<DeviationBound> {
+        Some(super::half_cell_per_passive_axis(&self.mirror))
     }
 
     fn setup_note(&self) -> String {

@@ -16,7 +16,7 @@ use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy};
+use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
 use std::fmt::Write;
 
 pub const ID: &str = "regions";
@@ -503,6 +503,10 @@ impl Stepper for RegionsWang {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    fn deviation_bound(&self) -> Option<DeviationBound> {
+        Some(super::half_cell_per_passive_axis(&self.mirror))
     }
 
     fn setup_note(&self) -> String {

@@ -13,7 +13,7 @@ use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
-use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
+use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 use std::cmp::Ordering;
 
 pub const ID: &str = "walk6";
@@ -283,6 +283,18 @@ impl Stepper for Walk6 {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    /// Every cell the walk visits contains a point of the segment, so its
+    /// centre is within half the cell's diagonal of it: √D / 2 in D axes.
+    fn deviation_bound(&self) -> Option<DeviationBound> {
+        let dims = self.mirror.dims();
+        Some(DeviationBound {
+            value: (dims as f64).sqrt() / 2.0,
+            why: format!(
+                "every cell visited holds a point of the segment, so its centre is within half a cell's diagonal, √{dims}/2, of the line"
+            ),
+        })
     }
 
     fn setup_note(&self) -> String {
