@@ -17,12 +17,17 @@
 
 #![allow(clippy::needless_range_loop)]
 
+mod common;
+
 use proptest::prelude::*;
 use std::f64::consts::{PI, SQRT_2, TAU};
-use voxpath::Trace;
+use voxpath::arc::ArcSpec;
+use voxpath::arc::circle_saleem::SaleemCircle;
+use voxpath::arc::helix::SaleemHelix;
 use voxpath::grid::{COORD_LIMIT, Point, SIGNED_AXIS_LABELS};
 use voxpath::ideal::{IdealPath, IdealPathInfo};
-use voxpath::trace::NO_VALUE;
+use voxpath::trace::{DEFAULT_MAX_STEPS, NO_VALUE, TiePolicy};
+use voxpath::{Request, Trace, TraceBuilder};
 
 const PLANES: [(&str, [usize; 3]); 3] = [("xy", [0, 1, 2]), ("zx", [2, 0, 1]), ("yz", [1, 2, 0])];
 
@@ -112,6 +117,27 @@ fn arc_strategy(max_r: i64) -> impl Strategy<Value = Arc> {
                 turns,
             }
         })
+}
+
+/// The circle stepper of a circle or helix request, counted by its dry run
+/// as a trace counts it.
+fn counted_circle(json: &str) -> (ArcSpec, SaleemCircle) {
+    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true).unwrap();
+    let builder = TraceBuilder::new(spec.from, DEFAULT_MAX_STEPS);
+    let circle = SaleemCircle::new(&spec).counted(&builder).unwrap();
+    (spec, circle)
+}
+
+/// Checks the circle's and the helix's recording loops (`fill`) against
+/// their `next_step`, in chunks of `chunk` (common::check_fill).
+fn check_fills(json: &str, tie: TiePolicy, chunk: usize) -> Result<(), TestCaseError> {
+    let (spec, circle) = counted_circle(json);
+    let fail = |e: String| TestCaseError::fail(format!("{json}, chunks of {chunk}: {e}"));
+    if spec.rise == 0 {
+        common::check_fill(|| circle.clone(), chunk).map_err(fail)?;
+    }
+    common::check_fill(|| SaleemHelix::new(&spec, circle.clone(), tie), chunk).map_err(fail)?;
+    Ok(())
 }
 
 fn points(t: &Trace) -> Vec<[i64; 3]> {
@@ -214,6 +240,23 @@ fn check_candidates(arc: &Arc, t: &Trace, p: &[[i64; 3]]) -> Result<(), TestCase
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn the_recording_loops_take_the_rule_s_steps(
+        arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(300)],
+        rise in prop_oneof![-40i64..40, -3000i64..3000],
+        hold in any::<bool>(),
+        chunk in 1usize..300,
+    ) {
+        // Circle and helix (method saleem) record through loops of their
+        // own (one per octant, the helix's line woven in), not next_step:
+        // the same steps in every plane and direction, full circles, extra
+        // turns, ends off the circle (correction steps), tiny radii, the
+        // arc or the linear axis major, either tie policy.
+        let tie = if hold { TiePolicy::Hold } else { TiePolicy::Advance };
+        check_fills(&arc.request("circle", 0, ""), tie, chunk)?;
+        check_fills(&arc.request("helix", rise, ""), tie, chunk)?;
+    }
 
     #[test]
     fn circle_and_helix_steps_take_the_candidate_nearer_the_circle(
@@ -471,4 +514,49 @@ fn a_big_arc_stays_under_half_a_cell_off_and_chords_follow_grbl() {
     assert_eq!(chords.segments().len(), 89);
     assert!(chords.metrics().max_deviation < 0.5 + SQRT_2);
     assert_eq!(chords.end(), circle.end());
+}
+
+#[test]
+fn the_recording_loops_stay_exact_on_the_largest_circles() {
+    // r about 2^30 - 3 around the origin, the largest radius ArcSpec takes
+    // there: a short arc (about 3000 steps) from each of 16 angles, so every
+    // octant's loop runs with coordinates near 2^30, in each plane and
+    // direction. The debug build checks every addition for overflow.
+    let r = (COORD_LIMIT - 3) as f64;
+    for k in 0..16 {
+        let start = 0.1 + k as f64 * TAU / 16.0;
+        let sweep = 3000.0 / r;
+        let at = |t: f64| [(r * t.cos()).round() as i64, (r * t.sin()).round() as i64];
+        for (plane, axes) in PLANES {
+            for dir in ["ccw", "cw"] {
+                let (from, to) = (
+                    at(start),
+                    at(if dir == "ccw" {
+                        start + sweep
+                    } else {
+                        start - sweep
+                    }),
+                );
+                let point = |uv: [i64; 2], h: i64| {
+                    let mut p = [0; 3];
+                    p[axes[0]] = uv[0];
+                    p[axes[1]] = uv[1];
+                    p[axes[2]] = h;
+                    p
+                };
+                let json = |algorithm: &str, rise: i64| {
+                    format!(
+                        r#"{{"algorithm":"{algorithm}","from":{:?},"to":{:?},"center":[0,0,0],"dir":"{dir}","plane":"{plane}"}}"#,
+                        point(from, 0),
+                        point(to, rise)
+                    )
+                };
+                for chunk in [1, 7, 300, 4096] {
+                    check_fills(&json("circle", 0), TiePolicy::Hold, chunk).unwrap();
+                    check_fills(&json("helix", 700), TiePolicy::Advance, chunk).unwrap();
+                    check_fills(&json("helix", -9000), TiePolicy::Hold, chunk).unwrap();
+                }
+            }
+        }
+    }
 }

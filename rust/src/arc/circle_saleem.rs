@@ -21,7 +21,7 @@
 //! circle part at most (turns + 1) 8 (r + 1); the correction takes
 //! max(|Δu|, |Δv|) steps from the stop point to the end.
 
-use super::planes::{Frame, OCTANTS, OctantRule, Orientation, octant_ahead};
+use super::planes::{Frame, OCTANTS, OctantRule, Orientation, in_octant, octant_ahead};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, norm_sq};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
@@ -29,7 +29,9 @@ use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, SIGNED_AXIS_LABELS, Step, si
 use crate::ideal::{IdealPath, within_i64_product_bound};
 use crate::line::step_target;
 use crate::request::{FROM, MAX_STEPS, Request, TO};
-use crate::trace::{Column, ColumnKind, Decision, Stepper, Trace, TraceBuilder};
+use crate::trace::{
+    Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, fill_by_next_step,
+};
 use std::fmt::Write;
 
 pub const ID: &str = "circle";
@@ -276,7 +278,12 @@ pub struct CirclePlan {
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Phase {
     Circle,
-    Correction { of: u64, stopped_before_ray: bool },
+    Correction {
+        of: u64,
+        stopped_before_ray: bool,
+        /// Where the circle part ended (the first correction's start).
+        stop: [i64; 2],
+    },
     Done,
 }
 
@@ -331,37 +338,40 @@ impl SaleemCircle {
     }
 
     /// Saleem's "dummy procedure" (section 5): runs a copy without moving
-    /// anything and counts its steps, at most `limit + 1` of them. None when
-    /// there are more than `limit`.
+    /// anything and counts its steps, giving up soon after `limit` (within
+    /// 1024 steps of it): None when there are more than `limit`.
     pub fn plan(&self, limit: u64) -> Option<CirclePlan> {
         let mut dry = self.clone();
-        let (mut circle_steps, mut correction_steps) = (0, 0);
-        let mut stop = None;
-        let mut before = dry.point();
-        while let Some((_, why)) = dry.next_step() {
-            match why.kind {
-                CircleStep::Arc { last, .. } => {
-                    circle_steps += 1;
-                    if last {
-                        stop = Some(dry.point());
-                    }
-                }
-                CircleStep::Correction { .. } => {
-                    correction_steps += 1;
-                    stop.get_or_insert(before);
-                }
-            }
-            if circle_steps + correction_steps > limit {
+        // The circle part by the recording loop, which leaves it on the
+        // step that ends it: the last circle step, or the first correction
+        // when the circle stops before the ray.
+        let mut scratch = [Step::NONE; 1024];
+        let mut taken = 0u64;
+        while dry.phase == Phase::Circle {
+            taken += dry.weave_fill(&mut scratch, &mut || (true, 0)) as u64;
+            if taken > limit {
                 return None;
             }
-            before = dry.point();
         }
-        let plan = CirclePlan {
-            circle_steps,
-            correction_steps,
-            stop: stop.expect("the circle part ends on its last step or before a correction"),
+        let Phase::Correction {
+            of,
+            stopped_before_ray,
+            stop,
+        } = dry.phase
+        else {
+            unreachable!("the circle part ends in the correction");
         };
-        Some(plan)
+        // Each correction step moves every in-plane axis that differs from
+        // the end one unit toward it: `of` (Chebyshev distance) steps.
+        let circle_steps = taken - u64::from(stopped_before_ray);
+        if circle_steps + of > limit {
+            return None;
+        }
+        Some(CirclePlan {
+            circle_steps,
+            correction_steps: of,
+            stop: self.frame.point(stop, self.height),
+        })
     }
 
     /// Fewer steps than this circle takes, known without running it: its
@@ -391,6 +401,20 @@ impl SaleemCircle {
         Ok(self)
     }
 
+    /// The current point in the local counter-clockwise frame.
+    pub(crate) fn local(&self) -> [i64; 2] {
+        self.pos
+    }
+
+    pub(crate) fn frame(&self) -> &Frame {
+        &self.frame
+    }
+
+    /// True until the circle part ends (then come the correction steps).
+    pub(crate) fn in_circle_part(&self) -> bool {
+        self.phase == Phase::Circle
+    }
+
     /// The current grid point.
     pub fn point(&self) -> Point {
         self.frame.point(self.pos, self.height)
@@ -406,11 +430,13 @@ impl SaleemCircle {
         let (fast, slow) = (rule.fast_move(), rule.slow_move());
         let stay = [self.pos[0] + fast[0], self.pos[1] + fast[1]];
         let moved = [stay[0] + slow[0], stay[1] + slow[1]];
-        let (residual_stay, residual_move) = (self.residual(stay), self.residual(moved));
-        // Eq. (7): the slow axis steps iff |error(moved)| < |error(stay)|.
-        // The residuals differ by 2|slow coordinate| ± 1, an odd number, so
-        // they cannot be equal in size: no tie to resolve.
-        let slow_steps = residual_move.abs() < residual_stay.abs();
+        let (residual_stay, residual_move) =
+            candidates(self.pos, self.residual(self.pos), fast, slow);
+        debug_assert_eq!(
+            (residual_stay, residual_move),
+            (self.residual(stay), self.residual(moved))
+        );
+        let slow_steps = slow_steps(residual_stay, residual_move);
         let next = if slow_steps { moved } else { stay };
         let mut last = false;
         // The ray from the centre through the end is reached when the side
@@ -426,6 +452,7 @@ impl SaleemCircle {
                     self.phase = Phase::Correction {
                         of: chebyshev(self.pos, self.end),
                         stopped_before_ray: true,
+                        stop: self.pos,
                     };
                     return self.correction_step();
                 }
@@ -433,6 +460,7 @@ impl SaleemCircle {
                 self.phase = Phase::Correction {
                     of: chebyshev(next, self.end),
                     stopped_before_ray: false,
+                    stop: next,
                 };
             }
         }
@@ -448,11 +476,116 @@ impl SaleemCircle {
         (delta, kind, k)
     }
 
+    /// The recording loop of the circle part, for the circle and for a
+    /// helix woven around it: up to `out.len()` iterations, stopping early
+    /// only when the circle part ends (after the step that ends it). At
+    /// each, `weave` says whether the arc steps and gives the step bits of
+    /// other axes (the circle alone: always, none). Returns the iterations
+    /// taken.
+    ///
+    /// The same steps as [`Stepper::next_step`], without building
+    /// decisions: in each octant, a loop of its own ([`Self::octant_run`]).
+    #[inline(always)]
+    pub(crate) fn weave_fill(
+        &mut self,
+        out: &mut [Step],
+        weave: &mut impl FnMut() -> (bool, u16),
+    ) -> usize {
+        let mut k = 0;
+        while k < out.len() && self.phase == Phase::Circle {
+            let rest = &mut out[k..];
+            k += match octant_ahead(self.pos) {
+                Some(1) => self.octant_run::<1>(rest, weave),
+                Some(2) => self.octant_run::<2>(rest, weave),
+                Some(3) => self.octant_run::<3>(rest, weave),
+                Some(4) => self.octant_run::<4>(rest, weave),
+                Some(5) => self.octant_run::<5>(rest, weave),
+                Some(6) => self.octant_run::<6>(rest, weave),
+                Some(7) => self.octant_run::<7>(rest, weave),
+                Some(8) => self.octant_run::<8>(rest, weave),
+                _ => unreachable!("the circle never passes through its centre"),
+            };
+        }
+        k
+    }
+
+    /// Iterations of [`Self::weave_fill`] while the point stays in octant
+    /// `K` (which it is in): at least one. The rule is `circle_step`'s, on
+    /// local copies (in registers) and with selects, not branches: the
+    /// residual of the point is carried from step to step ([`candidates`]),
+    /// and so is its side of the ray through the end (end × point, moved by
+    /// end × the step). The step that reaches that ray (once a lap) is left
+    /// to `next_step`, which counts the laps and may end the circle part.
+    ///
+    /// Exact in i64: every point and candidate is within
+    /// [`local_within_bound`], and each carried value is the residual or
+    /// cross product of such a point.
+    #[inline(always)]
+    fn octant_run<const K: u8>(
+        &mut self,
+        out: &mut [Step],
+        weave: &mut impl FnMut() -> (bool, u16),
+    ) -> usize {
+        let rule = &OCTANTS[K as usize - 1];
+        let (fast, slow) = (rule.fast_move(), rule.slow_move());
+        let [a, b] = self.unit_steps;
+        let code = |d: [i64; 2]| a[(d[0] + 1) as usize].0 | b[(d[1] + 1) as usize].0;
+        let stay_code = code(fast);
+        let move_code = code([fast[0] + slow[0], fast[1] + slow[1]]);
+        let (side_fast, side_slow) = (cross(self.end, fast), cross(self.end, slow));
+        let mut pos = self.pos;
+        let mut residual = self.residual(pos);
+        let mut side = cross(self.end, pos);
+        let mut taken = 0;
+        let mut arc_steps = 0;
+        // The step bits woven in at the ray, whose arc step is next_step's.
+        let mut at_ray = None;
+        for slot in out.iter_mut() {
+            if !in_octant(K, pos) {
+                break;
+            }
+            let (residual_stay, residual_move) = candidates(pos, residual, fast, slow);
+            let moves = slow_steps(residual_stay, residual_move);
+            let next = [
+                pos[0] + fast[0] + if moves { slow[0] } else { 0 },
+                pos[1] + fast[1] + if moves { slow[1] } else { 0 },
+            ];
+            let next_side = side + side_fast + if moves { side_slow } else { 0 };
+            let (arc, bits) = weave();
+            if arc && side < 0 && next_side >= 0 {
+                at_ray = Some(bits);
+                break;
+            }
+            if arc {
+                pos = next;
+                residual = if moves { residual_move } else { residual_stay };
+                side = next_side;
+                arc_steps += 1;
+            }
+            let arc_code = if moves { move_code } else { stay_code };
+            *slot = Step(if arc { arc_code } else { 0 } | bits);
+            taken += 1;
+        }
+        self.pos = pos;
+        if let Some(n) = self.remaining.as_mut() {
+            *n -= arc_steps;
+        }
+        if let Some(bits) = at_ray {
+            let (step, _) = self
+                .next_step()
+                .expect("the step onto the ray is a circle step or a correction");
+            out[taken] = Step(step.0 | bits);
+            taken += 1;
+        }
+        taken
+    }
+
     /// One step straight toward the end, each in-plane axis by its sign.
     fn correction_step(&mut self) -> ([i64; 2], CircleStep, u8) {
         let Phase::Correction {
             of,
             stopped_before_ray,
+            ..
         } = self.phase
         else {
             unreachable!("correction steps follow the circle part");
@@ -473,6 +606,27 @@ impl SaleemCircle {
         };
         (delta, kind, k)
     }
+}
+
+/// u² + v² - r² of the two candidates of a step from `pos`, whose own is
+/// `residual`: the stay candidate pos + `fast`, and the move candidate
+/// pos + `fast` + `slow` (unit moves along different axes). From
+/// |p + e|² = |p|² + 2 p·e + 1 for a unit move e: no squares, and exactly
+/// what squaring the candidates gives (eq. 6 without the absolute value).
+#[inline(always)]
+fn candidates(pos: [i64; 2], residual: i64, fast: [i64; 2], slow: [i64; 2]) -> (i64, i64) {
+    let stay = [pos[0] + fast[0], pos[1] + fast[1]];
+    let residual_stay = residual + 2 * (pos[0] * fast[0] + pos[1] * fast[1]) + 1;
+    let residual_move = residual_stay + 2 * (stay[0] * slow[0] + stay[1] * slow[1]) + 1;
+    (residual_stay, residual_move)
+}
+
+/// Eq. (7): the slow axis steps iff |error(moved)| < |error(stay)|. The
+/// residuals differ by 2|slow coordinate| ± 1, an odd number, so they
+/// cannot be equal in size: no tie to resolve.
+#[inline(always)]
+fn slow_steps(residual_stay: i64, residual_move: i64) -> bool {
+    residual_move.abs() < residual_stay.abs()
 }
 
 /// True when both local coordinates are below [`I64_PRODUCT_BOUND`](crate::ideal::I64_PRODUCT_BOUND), so
@@ -522,6 +676,19 @@ impl Stepper for SaleemCircle {
         let [a, b] = self.unit_steps;
         let step = Step(a[(delta[0] + 1) as usize].0 | b[(delta[1] + 1) as usize].0);
         Some((step, why))
+    }
+
+    /// The circle part by [`Self::weave_fill`], the few correction steps
+    /// by `next_step`; the displacement is where the point moved.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let before = self.pos;
+        let mut steps = self.weave_fill(out, &mut || (true, 0));
+        steps += fill_by_next_step(self, &mut out[steps..]).steps;
+        let delta = [self.pos[0] - before[0], self.pos[1] - before[1]];
+        Filled {
+            steps,
+            displacement: self.frame.displacement(delta),
+        }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

@@ -37,8 +37,9 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::ideal::IdealPath;
 use crate::line::step_target;
+use crate::line::terms::Term;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
-use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy, Trace, TraceBuilder};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy, Trace, TraceBuilder};
 use std::fmt::Write;
 
 pub const ID: &str = "helix";
@@ -286,9 +287,12 @@ pub struct SaleemHelix {
     /// Direction of the linear axis: the paper's incZ.
     normal_dir: i64,
     major: Major,
-    /// The minor axis's error term (errorZ or errorCircle), starting at 0.
-    /// Stays within (-major count, major count], so i64 holds it.
-    error: i64,
+    /// The minor axis's Bresenham rule as a [`Term`]: its value is the
+    /// error term (errorZ or errorCircle, starting at 0) after adding twice
+    /// the minor count, the value the next iteration compares with the
+    /// major count. Stays within (-major count - 1, 3 × major count], so
+    /// i64 holds it.
+    line: Term,
     remaining: u64,
     tie: TiePolicy,
 }
@@ -301,6 +305,23 @@ impl SaleemHelix {
             .expect("the circle's steps are counted by the dry run first");
         let n_z = spec.rise.unsigned_abs();
         let major = if n_z > n_c { Major::Linear } else { Major::Arc };
+        let (major_count, minor_count) = match major {
+            Major::Arc => (n_c as i64, n_z as i64),
+            Major::Linear => (n_z as i64, n_c as i64),
+        };
+        // The major axis steps every iteration; the minor one adds twice its
+        // count and steps when that exceeds the major count (section 3's
+        // 2D rule with n_c and n_z for the deltas), or equals it with ties
+        // advancing; then twice the major count comes off.
+        let line = Term {
+            value: 2 * minor_count,
+            increment: 2 * minor_count,
+            decrement: 2 * major_count,
+            steps_above: Term::steps_above(major_count, tie),
+            // Unused: the helix reads the term's mask (the minor "axis" may
+            // be the arc).
+            step: Step::NONE,
+        };
         SaleemHelix {
             circle,
             n_c,
@@ -308,7 +329,7 @@ impl SaleemHelix {
             normal: spec.plane.normal(),
             normal_dir: spec.rise.signum(),
             major,
-            error: 0,
+            line,
             remaining: n_c.max(n_z),
             tie,
         }
@@ -331,20 +352,15 @@ impl Stepper for SaleemHelix {
             return None;
         }
         self.remaining -= 1;
-        let (major_count, minor_count) = match self.major {
-            Major::Arc => (self.n_c as i64, self.n_z as i64),
-            Major::Linear => (self.n_z as i64, self.n_c as i64),
+        let major_count = match self.major {
+            Major::Arc => self.n_c as i64,
+            Major::Linear => self.n_z as i64,
         };
-        // The major axis steps every iteration; the minor one adds twice its
-        // count and steps when that exceeds the major count (section 3's
-        // 2D rule with n_c and n_z for the deltas).
-        self.error += 2 * minor_count;
-        let error = self.error;
+        let error = self.line.value;
         let tie = error == major_count;
-        let minor_steps = error > major_count || (tie && self.tie == TiePolicy::Advance);
-        if minor_steps {
-            self.error -= 2 * major_count;
-        }
+        let mut value = error;
+        let minor_steps = self.line.advance_mask(&mut value) != 0;
+        self.line.value = value;
         let arc_moves = self.major == Major::Arc || minor_steps;
         let linear_moves = self.major == Major::Linear || minor_steps;
         let (mut step, arc) = if arc_moves {
@@ -370,6 +386,54 @@ impl Stepper for SaleemHelix {
         Some((step, why))
     }
 
+    /// The same iterations as [`Stepper::next_step`], without decisions:
+    /// the circle's recording loop with the line's term woven in
+    /// ([`SaleemCircle::weave_fill`]); the circle's few correction steps by
+    /// its `next_step`. The displacement: where the arc's point moved, and
+    /// on the linear axis every iteration (linear major) or as often as
+    /// the term says its minor axis stepped.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let out = &mut out[..taken];
+        let before = (self.circle.local(), self.line.value);
+        let linear = Step::NONE.with(self.normal, self.normal_dir).0;
+        let line = self.line;
+        let mut value = line.value;
+        match self.major {
+            Major::Arc => weave(&mut self.circle, out, || {
+                let minor = line.advance_mask(&mut value);
+                (true, linear & minor as u16)
+            }),
+            Major::Linear => weave(&mut self.circle, out, || {
+                (line.advance_mask(&mut value) != 0, linear)
+            }),
+        }
+        self.line.value = value;
+        self.remaining -= taken as u64;
+        let after = self.circle.local();
+        let mut displacement = self
+            .circle
+            .frame()
+            .displacement([after[0] - before.0[0], after[1] - before.0[1]]);
+        let minor_steps = if taken == 0 {
+            0
+        } else {
+            // value_end = value_start + taken·increment - moves·decrement;
+            // in i128: taken·increment may pass 2^63 on the longest helices.
+            ((before.1 as i128 + taken as i128 * line.increment as i128 - value as i128)
+                / line.decrement as i128) as i64
+        };
+        let linear_steps = match self.major {
+            Major::Arc => minor_steps,
+            Major::Linear => taken as i64,
+        };
+        displacement[self.normal] = self.normal_dir * linear_steps;
+        Filled {
+            steps: taken,
+            displacement,
+        }
+    }
+
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
     }
@@ -388,6 +452,31 @@ impl Stepper for SaleemHelix {
             self.n_c.max(self.n_z),
             self.circle.setup_note(),
         )
+    }
+}
+
+/// `out.len()` iterations of a helix: `weave` says whether the arc steps
+/// and gives the linear axis's bits; the arc steps by the circle's
+/// recording loop, or by its `next_step` once the circle part is over.
+#[inline(always)]
+fn weave(circle: &mut SaleemCircle, out: &mut [Step], mut weave: impl FnMut() -> (bool, u16)) {
+    let mut k = 0;
+    while k < out.len() {
+        if circle.in_circle_part() {
+            k += circle.weave_fill(&mut out[k..], &mut weave);
+        } else {
+            let (arc, bits) = weave();
+            let step = if arc {
+                let (step, _) = circle
+                    .next_step()
+                    .expect("the arc has n_c steps, as the dry run counted");
+                step
+            } else {
+                Step::NONE
+            };
+            out[k] = Step(step.0 | bits);
+            k += 1;
+        }
     }
 }
 

@@ -15,7 +15,7 @@
 //! comparison in both directions.
 
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 
 /// The plane of an arc (G17, G18, G19).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -146,6 +146,15 @@ impl Frame {
     pub fn step(&self, delta: [i64; 2]) -> Step {
         let [u, v, _] = self.plane.axes();
         Step::along(u, delta[0]).with(v, self.turn.sign() * delta[1])
+    }
+
+    /// The grid displacement of a local move by `delta` (any length).
+    pub fn displacement(&self, delta: [i64; 2]) -> [i64; MAX_AXES] {
+        let [u, v, _] = self.plane.axes();
+        let mut d = [0; MAX_AXES];
+        d[u] = delta[0];
+        d[v] = self.turn.sign() * delta[1];
+        d
     }
 
     /// The frame without its centre.
@@ -284,26 +293,27 @@ pub const OCTANTS: [OctantRule; 8] = [
 ///
 /// This replaces the paper's `if(|x| > |y|) ... if(|x| < |y|)`, which does
 /// nothing on the diagonals |x| = |y|: there the octant ahead decides.
-pub fn octant_ahead([a, b]: [i64; 2]) -> Option<u8> {
-    Some(if b >= 0 && a > b {
-        1
-    } else if a > 0 && b >= a {
-        2
-    } else if a <= 0 && b > -a {
-        3
-    } else if b > 0 && -a >= b {
-        4
-    } else if b <= 0 && a < b {
-        5
-    } else if a < 0 && b <= a {
-        6
-    } else if a >= 0 && -b > a {
-        7
-    } else if b < 0 && a >= -b {
-        8
-    } else {
-        return None;
-    })
+pub fn octant_ahead(p: [i64; 2]) -> Option<u8> {
+    (1..=8).find(|&k| in_octant(k, p))
+}
+
+/// True when octant `k` (1-8) is the one ahead of local point (a, b)
+/// ([`octant_ahead`]). No point is in two octants (the conditions exclude
+/// each other), so a loop that knows its octant tests only its own
+/// condition: two comparisons when `k` is a constant.
+#[inline(always)]
+pub fn in_octant(k: u8, [a, b]: [i64; 2]) -> bool {
+    match k {
+        1 => b >= 0 && a > b,
+        2 => a > 0 && b >= a,
+        3 => a <= 0 && b > -a,
+        4 => b > 0 && -a >= b,
+        5 => b <= 0 && a < b,
+        6 => a < 0 && b <= a,
+        7 => a >= 0 && -b > a,
+        8 => b < 0 && a >= -b,
+        _ => false,
+    }
 }
 
 /// Checks that `from` and `to` lie in one plane parallel to `plane`.
@@ -357,6 +367,14 @@ mod tests {
             assert_eq!(octant_ahead(p), Some(k), "{p:?}");
         }
         assert_eq!(octant_ahead([0, 0]), None);
+        // No point is in two octants, so a loop that knows its octant may
+        // test its condition alone.
+        for a in -6i64..=6 {
+            for b in -6i64..=6 {
+                let inside = (1..=8).filter(|&k| in_octant(k, [a, b])).count();
+                assert_eq!(inside, usize::from([a, b] != [0, 0]), "({a}, {b})");
+            }
+        }
         // Each octant's fast axis moves along the tangent (-b, a) in the
         // rule's direction at a point inside the octant.
         for a in -6i64..=6 {

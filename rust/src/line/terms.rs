@@ -53,9 +53,17 @@ impl Term {
     /// chains of values can share one set of constants (in registers).
     #[inline(always)]
     fn advance(&self, value: &mut i64) -> u16 {
+        self.step.0 & self.advance_mask(value) as u16
+    }
+
+    /// One step, as [`Term::advance`] takes it: all ones when the axis
+    /// steps, else 0 (for a caller whose term decides more than step bits:
+    /// Saleem's helix, where the minor "axis" may be the arc).
+    #[inline(always)]
+    pub fn advance_mask(&self, value: &mut i64) -> i64 {
         let mask = (self.steps_above - *value) >> 63;
         *value += self.increment - (self.decrement & mask);
-        self.step.0 & mask as u16
+        mask
     }
 
     /// This term `steps` steps later, without taking them.
