@@ -410,14 +410,17 @@ function run(catalogue: Catalogue): void {
 
   // Exports: the trace on screen as the CLI writes it, the view as a PNG.
   const exportName = () => (store.state.mode === 'gcode' ? 'program' : store.state.algorithm);
+  /** The traces on screen and their file names: the program, or the trace, or both compared ones, each under its algorithm's id. */
+  const exported = (): [RemoteTrace, string][] => {
+    if (shown.program) return [[shown.program, 'program']];
+    return [shown.a, shown.b].filter((t) => t !== undefined).map((t) => [t, t.algorithm]);
+  };
   byId('export-csv', HTMLButtonElement).addEventListener('click', async () => {
     if (shown.experiment) return download(`random-lines-${shown.experiment.algorithm}.csv`, new Blob([randomLinesToCsv(shown.experiment)], { type: 'text/csv' }));
-    const trace = shown.program ?? shown.a;
-    if (trace) download(`${exportName()}-steps.csv`, new Blob([await trace.exportAs('csv')], { type: 'text/csv' }));
+    for (const [trace, name] of exported()) download(`${name}-steps.csv`, new Blob([await trace.exportAs('csv')], { type: 'text/csv' }));
   });
   byId('export-json', HTMLButtonElement).addEventListener('click', async () => {
-    const trace = shown.program ?? shown.a;
-    if (trace) download(`${exportName()}-steps.json`, new Blob([await trace.exportAs('json')], { type: 'application/json' }));
+    for (const [trace, name] of exported()) download(`${name}-steps.json`, new Blob([await trace.exportAs('json')], { type: 'application/json' }));
   });
   byId('export-png', HTMLButtonElement).addEventListener('click', async () => {
     download(`${exportName()}-view.png`, await scene.toPng());

@@ -325,6 +325,12 @@ describe('compare mode', () => {
     // The inspector follows the first path, and says so.
     expect(await page.locator('#inspector-heading').innerText()).toBe('Current point of regions');
 
+    // Exports hold both paths, one file each, under each algorithm's id.
+    const downloads: string[] = [];
+    page.on('download', (d) => downloads.push(d.suggestedFilename()));
+    await page.getByTestId('export-csv').click();
+    await expect.poll(() => [...downloads].sort()).toEqual(['greedy-steps.csv', 'regions-steps.csv']);
+
     // Playing runs both to the end of the longer one.
     await page.getByTestId('speed').selectOption('64');
     await page.getByTestId('play').click();
