@@ -328,21 +328,16 @@ pub struct RegionsWang {
     /// An active axis: the paper's x, whose |delta| scales the discriminants.
     reference: usize,
     geometry: Geometry,
-    /// M and N (eq. 8 recurrence), kept in i64: |M| <= 3 |delta_ref| < 2^33.
-    /// An absent passive axis holds -1 forever (changes 0), which never
-    /// steps and never ties, so every step runs the same straight-line code.
-    discriminant: [i64; 2],
-    /// The step of the active axes, made every time (section 2.2).
-    active_step: Step,
-    /// The step of each passive axis toward the end (none when absent).
-    passive_step: [Step; 2],
-    /// 2 |delta| of each passive axis (eq. 8), 0 when absent.
-    increment: [i64; 2],
-    /// 2 |delta_ref|, subtracted when a passive axis steps (eq. 8).
-    decrement: i64,
-    /// A passive axis steps when its discriminant exceeds this: -1 when
-    /// ties advance (D >= 0), 0 when they hold (D > 0).
-    steps_above: i64,
+    /// M and N as the terms of the shared stepping rule ([`Terms`]): a
+    /// passive axis steps when its discriminant is positive, and at zero
+    /// (the line passing exactly half way) as the tie policy says; then eq.
+    /// (8), M_{i+1} = M_i + 2|Δy| - 2|Δx|(y_{i+1} - y_i), in i64: |M| <= 3
+    /// |delta_ref| < 2^33. The active axes step every time (section 2.2).
+    /// An absent passive axis holds -1 forever (increment 0, no step bits),
+    /// which never steps and never ties, so every step runs the same
+    /// straight-line code. Both [`Stepper::next_step`] and [`Stepper::fill`]
+    /// step through these, so the rule is written once.
+    terms: Terms<2>,
     remaining: u64,
     tie: TiePolicy,
 }
@@ -377,35 +372,37 @@ impl RegionsWang {
                 geometry.passive_count += 1;
             }
         }
-        let mut active_step = Step::NONE;
+        let mut always = Step::NONE;
         for axis in (0..3).filter(|a| geometry.active_mask >> a & 1 == 1) {
-            active_step = mirror.toward(active_step, axis);
+            always = mirror.toward(always, axis);
         }
-        let mut discriminant = [-1; 2];
-        let mut passive_step = [Step::NONE; 2];
-        let mut increment = [0; 2];
-        for i in 0..geometry.passive_count as usize {
+        let terms = std::array::from_fn(|i| {
+            let absent = Term {
+                value: -1,
+                increment: 0,
+                decrement: 2 * largest,
+                steps_above: Term::steps_above(0, tie),
+                step: Step::NONE,
+            };
+            if i >= geometry.passive_count as usize {
+                return absent;
+            }
             let axis = geometry.passive[i] as usize;
-            // Eq. (10): M_1 = 2 delta_y - delta_x (and N_1 = 2 delta_z - delta_x).
-            discriminant[i] = 2 * magnitude[axis] - largest;
-            passive_step[i] = mirror.toward(Step::NONE, axis);
-            increment[i] = 2 * magnitude[axis];
-        }
+            Term {
+                // Eq. (10): M_1 = 2 delta_y - delta_x (and N_1 = 2 delta_z - delta_x).
+                value: 2 * magnitude[axis] - largest,
+                increment: 2 * magnitude[axis],
+                step: mirror.toward(Step::NONE, axis),
+                ..absent
+            }
+        });
         RegionsWang {
             mirror,
             magnitude,
             divisor,
             reference,
             geometry,
-            discriminant,
-            active_step,
-            passive_step,
-            increment,
-            decrement: 2 * largest,
-            steps_above: match tie {
-                TiePolicy::Advance => -1,
-                TiePolicy::Hold => 0,
-            },
+            terms: Terms { always, terms },
             remaining: mirror.longest() as u64,
             tie,
         }
@@ -430,28 +427,6 @@ impl RegionsWang {
     }
 }
 
-impl RegionsWang {
-    /// M and N as the terms of the shared stepping rule ([`Terms`]): a
-    /// passive axis steps when its discriminant is positive, and at zero
-    /// (the line passing exactly half way) as the tie policy says; then eq.
-    /// (8), M_{i+1} = M_i + 2|Δy| - 2|Δx|(y_{i+1} - y_i). The active axes
-    /// step every time (section 2.2). Both [`Stepper::next_step`] and
-    /// [`Stepper::fill`] step through these, so the rule is written once.
-    #[inline(always)]
-    fn terms(&self) -> Terms<2> {
-        Terms {
-            always: self.active_step,
-            terms: [0, 1].map(|i| Term {
-                value: self.discriminant[i],
-                increment: self.increment[i],
-                decrement: self.decrement,
-                steps_above: self.steps_above,
-                step: self.passive_step[i],
-            }),
-        }
-    }
-}
-
 impl Stepper for RegionsWang {
     type Why = RegionsWhy;
 
@@ -460,11 +435,9 @@ impl Stepper for RegionsWang {
             return None;
         }
         self.remaining -= 1;
-        let [m, n] = self.discriminant;
-        let mut terms = self.terms();
-        let step = terms.step();
-        self.discriminant = terms.terms.map(|t| t.value);
-        let moves = self.passive_step.map(|p| (step.0 & p.0 != 0) as u16);
+        let [m, n] = self.terms.terms.map(|t| t.value);
+        let step = self.terms.step();
+        let moves = self.terms.terms.map(|t| (step.0 & t.step.0 != 0) as u16);
         // An absent passive axis holds -1: it never ties.
         let tie = m == 0 || n == 0;
         let count = self.geometry.passive_count;
@@ -479,7 +452,7 @@ impl Stepper for RegionsWang {
             corner,
             tie,
             tie_policy: self.tie,
-            face_scale: self.decrement,
+            face_scale: self.terms.terms[0].decrement,
             geometry: self.geometry,
         };
         Some((step, why))
@@ -491,9 +464,7 @@ impl Stepper for RegionsWang {
     /// built.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
-        let mut terms = self.terms();
-        let displacement = terms.fill(&mut out[..taken]);
-        self.discriminant = terms.terms.map(|t| t.value);
+        let displacement = self.terms.fill(&mut out[..taken]);
         self.remaining -= taken as u64;
         Filled {
             steps: taken,

@@ -41,24 +41,24 @@ impl Term {
         }
     }
 
-    /// One step: the step bits it adds (this axis's or none) and the value
-    /// for the next step.
+    /// One step: the step bits it adds (this axis's or none), and `value`
+    /// moved on to the next step. The value is passed apart from the term's
+    /// constants so that several chains of values can share one set of
+    /// constants (in registers).
+    #[inline(always)]
+    fn advance(&self, value: &mut i64) -> u16 {
+        self.step.0 & self.advance_mask(value) as u16
+    }
+
+    /// One step, as [`Term::advance`] takes it, returning the mask itself
+    /// (for a caller whose term decides more than step bits: Saleem's helix,
+    /// where the minor "axis" may be the arc).
     ///
     /// The mask is all ones when the value exceeds `steps_above` (their
     /// difference is negative), else 0: built by a subtraction and a shift,
     /// it keeps the step bits and the decrement when the axis steps. The
     /// callers keep |value| and |steps_above| below 2^62, so the difference
     /// cannot overflow.
-    /// The value is passed apart from the term's constants so that several
-    /// chains of values can share one set of constants (in registers).
-    #[inline(always)]
-    fn advance(&self, value: &mut i64) -> u16 {
-        self.step.0 & self.advance_mask(value) as u16
-    }
-
-    /// One step, as [`Term::advance`] takes it: all ones when the axis
-    /// steps, else 0 (for a caller whose term decides more than step bits:
-    /// Saleem's helix, where the minor "axis" may be the arc).
     #[inline(always)]
     pub fn advance_mask(&self, value: &mut i64) -> i64 {
         let mask = (self.steps_above - *value) >> 63;
@@ -152,7 +152,7 @@ impl<const N: usize> Terms<N> {
     /// = value_start + steps·increment - moves·decrement).
     #[inline(always)]
     pub fn fill(&mut self, out: &mut [Step]) -> [i64; MAX_AXES] {
-        let start = self.terms;
+        let terms = self.terms;
         let always = self.always.0;
         let lane_steps = out.len() / LANES;
         let (body, tail) = out.split_at_mut(if lane_steps >= MIN_LANE_STEPS {
@@ -160,7 +160,6 @@ impl<const N: usize> Terms<N> {
         } else {
             0
         });
-        let terms = self.terms;
         let mut values = terms.map(|t| t.value);
         if !body.is_empty() {
             let mut lanes: [[i64; N]; LANES] = std::array::from_fn(|lane| {
@@ -179,18 +178,23 @@ impl<const N: usize> Terms<N> {
         }
         self.set_values(values);
         let steps = out.len() as i64;
+        if steps == 0 {
+            // No step, and a zero-length line's decrement is 0.
+            return [0; MAX_AXES];
+        }
+        // In i128: steps·increment reaches 2^63 on the longest lines.
+        let moves = std::array::from_fn::<_, N, _>(|i| {
+            let (before, after) = (terms[i], values[i]);
+            ((before.value as i128 + steps as i128 * before.increment as i128 - after as i128)
+                / before.decrement as i128) as i64
+        });
         std::array::from_fn(|axis| {
-            let mut moved = self.always.delta(axis) * steps;
-            for (before, after) in start.iter().zip(&self.terms) {
-                if steps > 0 {
-                    // In i128: steps·increment reaches 2^63 on the longest lines.
-                    let moves = (before.value as i128 + steps as i128 * before.increment as i128
-                        - after.value as i128)
-                        / before.decrement as i128;
-                    moved += before.step.delta(axis) * moves as i64;
-                }
-            }
-            moved
+            let passive: i64 = terms
+                .iter()
+                .zip(moves)
+                .map(|(t, n)| t.step.delta(axis) * n)
+                .sum();
+            self.always.delta(axis) * steps + passive
         })
     }
 }
