@@ -395,7 +395,7 @@ impl Stepper for SaleemHelix {
     fn fill(&mut self, out: &mut [Step]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let out = &mut out[..taken];
-        let before = (self.circle.local(), self.line.value);
+        let before = self.circle.local();
         let linear = Step::NONE.with(self.normal, self.normal_dir).0;
         let line = self.line;
         let mut value = line.value;
@@ -414,17 +414,9 @@ impl Stepper for SaleemHelix {
         let mut displacement = self
             .circle
             .frame()
-            .displacement([after[0] - before.0[0], after[1] - before.0[1]]);
-        let minor_steps = if taken == 0 {
-            0
-        } else {
-            // value_end = value_start + taken·increment - moves·decrement;
-            // in i128: taken·increment may pass 2^63 on the longest helices.
-            ((before.1 as i128 + taken as i128 * line.increment as i128 - value as i128)
-                / line.decrement as i128) as i64
-        };
+            .displacement([after[0] - before[0], after[1] - before[1]]);
         let linear_steps = match self.major {
-            Major::Arc => minor_steps,
+            Major::Arc => line.moves(taken as u64, value),
             Major::Linear => taken as i64,
         };
         displacement[self.normal] = self.normal_dir * linear_steps;

@@ -66,6 +66,19 @@ impl Term {
         mask
     }
 
+    /// How many of `steps` steps, taken from this term, stepped its axis,
+    /// given the value they left: value_after = value + steps·increment -
+    /// moves·decrement, so the value says it without a pass over the steps.
+    pub fn moves(&self, steps: u64, value_after: i64) -> i64 {
+        if steps == 0 {
+            // No step (and a zero-length line's decrement is 0).
+            return 0;
+        }
+        // In i128: steps·increment reaches 2^63 on the longest lines.
+        ((self.value as i128 + steps as i128 * self.increment as i128 - value_after as i128)
+            / self.decrement as i128) as i64
+    }
+
     /// This term `steps` steps later, without taking them.
     ///
     /// Every rule here keeps its value in the window (steps_above -
@@ -177,24 +190,15 @@ impl<const N: usize> Terms<N> {
             *slot = Self::advance(always, &terms, &mut values);
         }
         self.set_values(values);
-        let steps = out.len() as i64;
-        if steps == 0 {
-            // No step, and a zero-length line's decrement is 0.
-            return [0; MAX_AXES];
-        }
-        // In i128: steps·increment reaches 2^63 on the longest lines.
-        let moves = std::array::from_fn::<_, N, _>(|i| {
-            let (before, after) = (terms[i], values[i]);
-            ((before.value as i128 + steps as i128 * before.increment as i128 - after as i128)
-                / before.decrement as i128) as i64
-        });
+        let steps = out.len();
+        let moves = std::array::from_fn::<_, N, _>(|i| terms[i].moves(steps as u64, values[i]));
         std::array::from_fn(|axis| {
             let passive: i64 = terms
                 .iter()
                 .zip(moves)
                 .map(|(t, n)| t.step.delta(axis) * n)
                 .sum();
-            self.always.delta(axis) * steps + passive
+            self.always.delta(axis) * steps as i64 + passive
         })
     }
 }
