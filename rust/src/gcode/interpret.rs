@@ -60,16 +60,23 @@ const FULL_CIRCLE_EPSILON_RAD: f64 = 5e-7;
 /// not a move, so a line with one of them moves nothing.
 const AXIS_WORD_CODES: &[u32] = &[10, 28, 30, 52, 53];
 
-/// Motion codes voxpath does not model (modal group 1): splines (G5,
-/// G5.1, G5.2), threading (G33, G33.1, G76), probing (G38.2-G38.5) and
-/// canned cycles (G73, G81-G89). Each is a motion mode of its own: the axis
-/// words of its line, and of later lines until another motion code, are
-/// its, never a G1 move.
-fn is_unmodelled_motion(number: u32, minor: u32) -> bool {
-    matches!(
-        (number, minor),
-        (5, 0..=2) | (33, 0..=1) | (38, 2..=5) | (73, 0) | (76, 0) | (81..=89, 0)
-    )
+/// The motion code (modal group 1) G`number`.`minor` is, if any. The ones
+/// voxpath does not model: splines (G5, G5.1, G5.2), threading (G33,
+/// G33.1, G76), probing (G38.2-G38.5) and canned cycles (G73, G81-G89).
+/// Each is a motion mode of its own: the axis words of its line, and of
+/// later lines until another motion code, are its, never a G1 move.
+fn motion_code(number: u32, minor: u32) -> Option<MotionCode> {
+    Some(match (number, minor) {
+        (0, 0) => MotionCode::Move(Motion::Rapid),
+        (1, 0) => MotionCode::Move(Motion::Linear),
+        (2, 0) => MotionCode::Move(Motion::Arc(Turn::Clockwise)),
+        (3, 0) => MotionCode::Move(Motion::Arc(Turn::CounterClockwise)),
+        (80, 0) => MotionCode::Cancel,
+        (5, 0..=2) | (33, 0..=1) | (38, 2..=5) | (73, 0) | (76, 0) | (81..=89, 0) => {
+            MotionCode::Unmodelled
+        }
+        _ => return None,
+    })
 }
 
 /// What a line's motion code (modal group 1) selects.
@@ -78,7 +85,7 @@ enum MotionCode {
     Move(Motion),
     /// G80: no motion mode, so axis words alone are an error again.
     Cancel,
-    /// A motion mode voxpath does not model (see [`is_unmodelled_motion`]).
+    /// A motion mode voxpath does not model (see [`motion_code`]).
     Unmodelled,
 }
 
@@ -281,39 +288,14 @@ impl Interpreter {
         let mut axis_code: Option<Code> = None;
         let mut dwell = false;
         for code in &block.codes {
+            if let Some(m) = (code.letter == 'G')
+                .then(|| motion_code(code.number, code.minor))
+                .flatten()
+            {
+                set_once(&mut motion, m, code, line, "motion")?;
+                continue;
+            }
             match (code.letter, code.number, code.minor) {
-                ('G', 0, 0) => set_once(
-                    &mut motion,
-                    MotionCode::Move(Motion::Rapid),
-                    code,
-                    line,
-                    "motion",
-                )?,
-                ('G', 1, 0) => set_once(
-                    &mut motion,
-                    MotionCode::Move(Motion::Linear),
-                    code,
-                    line,
-                    "motion",
-                )?,
-                ('G', 80, 0) => set_once(&mut motion, MotionCode::Cancel, code, line, "motion")?,
-                ('G', n, m) if is_unmodelled_motion(n, m) => {
-                    set_once(&mut motion, MotionCode::Unmodelled, code, line, "motion")?
-                }
-                ('G', 2, 0) => set_once(
-                    &mut motion,
-                    MotionCode::Move(Motion::Arc(Turn::Clockwise)),
-                    code,
-                    line,
-                    "motion",
-                )?,
-                ('G', 3, 0) => set_once(
-                    &mut motion,
-                    MotionCode::Move(Motion::Arc(Turn::CounterClockwise)),
-                    code,
-                    line,
-                    "motion",
-                )?,
                 ('G', 17, 0) => set_once(&mut plane, Plane::Xy, code, line, "plane")?,
                 ('G', 18, 0) => set_once(&mut plane, Plane::Zx, code, line, "plane")?,
                 ('G', 19, 0) => set_once(&mut plane, Plane::Yz, code, line, "plane")?,
