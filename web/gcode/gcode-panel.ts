@@ -58,13 +58,6 @@ interface SampleInfo {
   description: string;
 }
 
-/** The 1-based line of character offset `offset` in `text`. */
-function lineAt(text: string, offset: number): number {
-  let line = 1;
-  for (let i = text.indexOf('\n'); i !== -1 && i < offset; i = text.indexOf('\n', i + 1)) line++;
-  return line;
-}
-
 /** Where each line of `text` starts (its character offset), and one past the end. */
 function lineStarts(text: string): number[] {
   const starts = [0];
@@ -147,7 +140,7 @@ export class GcodePanel {
       // Shown (the mode changed) or resized: more or fewer lines are in view.
       new ResizeObserver(() => this.#placeMarks()).observe(scroller);
     }
-    for (const type of ['click', 'keyup']) elements.text.addEventListener(type, () => this.#pick(lineAt(this.#text, elements.text.selectionStart)));
+    for (const type of ['click', 'keyup']) elements.text.addEventListener(type, () => this.#pick(this.#lineAt(elements.text.selectionStart)));
     elements.run.addEventListener('click', events.onRun);
     elements.cancel.addEventListener('click', events.onCancel);
 
@@ -176,6 +169,17 @@ export class GcodePanel {
     const text = await response.text();
     this.#setText(text);
     this.#store.update({ gcode: text, pointIndex: 0, camera: null });
+  }
+
+  /** The line (from 1) holding character `offset` of the program: by bisection of the line starts, not a scan of the text. */
+  #lineAt(offset: number): number {
+    let [low, high] = [0, this.#lineCount - 1];
+    while (low < high) {
+      const middle = (low + high + 1) >> 1;
+      if (this.#starts[middle]! <= offset) low = middle;
+      else high = middle - 1;
+    }
+    return low + 1;
   }
 
   /** Lines of the program. */
