@@ -115,6 +115,23 @@ pub struct Column {
     pub doc: &'static str,
 }
 
+/// `first` then `second`, as one array of `N` = A + B columns (checked when
+/// the constant is evaluated): for a decision that extends another's
+/// columns, so the two lists cannot drift apart.
+pub const fn concat_columns<const A: usize, const B: usize, const N: usize>(
+    first: [Column; A],
+    second: [Column; B],
+) -> [Column; N] {
+    assert!(A + B == N && A > 0, "N must be A + B, A at least 1");
+    let mut out = [first[0]; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = if i < A { first[i] } else { second[i - A] };
+        i += 1;
+    }
+    out
+}
+
 /// The reason for one step, as recorded by a [`Stepper`].
 pub trait Decision: Copy {
     /// The columns [`Decision::write`] fills, in order.

@@ -112,6 +112,18 @@ pub const OTHER_CANDIDATE: Column = Column {
     doc: "The candidate the step did not take, as a direction from the point the step reached: one cell along the slow axis that way (-x: the cell toward -x). The two candidates differ only on the slow axis, so the reached point and this cell are the pair eq. (7) compared: the reached point is the stay candidate when slow_steps is 0 and the move candidate when it is 1. (In a helix the cell is at the reached point's height on the linear axis; u² + v² - r² does not depend on it.) Empty for correction steps.",
 };
 
+/// The circle's decision columns, in [`CircleWhy::write`]'s order (the
+/// helix's columns start with them).
+pub const CIRCLE_COLUMNS: [Column; 7] = [
+    OCTANT,
+    FAST,
+    RESIDUAL_STAY,
+    RESIDUAL_MOVE,
+    SLOW_STEPS,
+    CORRECTION,
+    OTHER_CANDIDATE,
+];
+
 /// Why one step of the circle was taken.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CircleWhy {
@@ -150,15 +162,7 @@ pub enum CircleStep {
 }
 
 impl Decision for CircleWhy {
-    const COLUMNS: &'static [Column] = &[
-        OCTANT,
-        FAST,
-        RESIDUAL_STAY,
-        RESIDUAL_MOVE,
-        SLOW_STEPS,
-        CORRECTION,
-        OTHER_CANDIDATE,
-    ];
+    const COLUMNS: &'static [Column] = &CIRCLE_COLUMNS;
 
     /// The two candidates' errors differ by an odd number: never equal.
     const NEVER_TIES: bool = true;

@@ -26,10 +26,7 @@
 //! Method segments interpolates by angle and has no such drift.
 
 use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
-use super::circle_saleem::{
-    CORRECTION, CircleWhy, FAST, OCTANT, OTHER_CANDIDATE, RESIDUAL_MOVE, RESIDUAL_STAY, SLOW_STEPS,
-    SaleemCircle,
-};
+use super::circle_saleem::{CIRCLE_COLUMNS, CircleWhy, SaleemCircle};
 use super::curve::HelixPath;
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithms::{AlgorithmInfo, Example, Family};
@@ -39,7 +36,9 @@ use crate::ideal::IdealPath;
 use crate::line::step_target;
 use crate::line::terms::Term;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
-use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, TiePolicy, Trace, TraceBuilder};
+use crate::trace::{
+    Column, ColumnKind, Decision, Filled, Stepper, TiePolicy, Trace, TraceBuilder, concat_columns,
+};
 use std::fmt::Write;
 
 pub const ID: &str = "helix";
@@ -168,43 +167,40 @@ pub struct HelixWhy {
 }
 
 impl Decision for HelixWhy {
-    const COLUMNS: &'static [Column] = &[
-        OCTANT,
-        FAST,
-        RESIDUAL_STAY,
-        RESIDUAL_MOVE,
-        SLOW_STEPS,
-        CORRECTION,
-        OTHER_CANDIDATE,
-        // Not "major": bresenham3d's column of that name holds an axis, and a
-        // G-code program's trace unions the columns of its line and arc
-        // algorithms by name.
-        Column {
-            name: "helix_major",
-            kind: ColumnKind::Category(MAJOR_LABELS),
-            doc: "Which steps every iteration: the arc (n_c >= n_z) or the linear axis (n_z > n_c) (Saleem section 5).",
-        },
-        Column {
-            name: "helix_error",
-            kind: ColumnKind::Int,
-            doc: "The minor axis's Bresenham error after adding 2 × its count (errorZ or errorCircle); the minor axis steps when it exceeds the major count.",
-        },
-        Column {
-            name: "arc_steps",
-            kind: ColumnKind::Flag,
-            doc: "1 when the arc took a step (the circle columns then hold its decision).",
-        },
-        Column {
-            name: "linear_steps",
-            kind: ColumnKind::Flag,
-            doc: "1 when the linear (normal) axis stepped.",
-        },
-        Column {
-            name: "helix_tie",
-            kind: ColumnKind::Flag,
-            doc: "1 when the helix error equalled the major count and the tie policy decided.",
-        },
-    ];
+    /// The circle's, for the arc's decision, then the helix's own.
+    const COLUMNS: &'static [Column] = &concat_columns::<7, 5, 12>(
+        CIRCLE_COLUMNS,
+        [
+            // Not "major": bresenham3d's column of that name holds an axis, and a
+            // G-code program's trace unions the columns of its line and arc
+            // algorithms by name.
+            Column {
+                name: "helix_major",
+                kind: ColumnKind::Category(MAJOR_LABELS),
+                doc: "Which steps every iteration: the arc (n_c >= n_z) or the linear axis (n_z > n_c) (Saleem section 5).",
+            },
+            Column {
+                name: "helix_error",
+                kind: ColumnKind::Int,
+                doc: "The minor axis's Bresenham error after adding 2 × its count (errorZ or errorCircle); the minor axis steps when it exceeds the major count.",
+            },
+            Column {
+                name: "arc_steps",
+                kind: ColumnKind::Flag,
+                doc: "1 when the arc took a step (the circle columns then hold its decision).",
+            },
+            Column {
+                name: "linear_steps",
+                kind: ColumnKind::Flag,
+                doc: "1 when the linear (normal) axis stepped.",
+            },
+            Column {
+                name: "helix_tie",
+                kind: ColumnKind::Flag,
+                doc: "1 when the helix error equalled the major count and the tie policy decided.",
+            },
+        ],
+    );
 
     fn write(&self, row: &mut [f64]) {
         let circle = CircleWhy::COLUMNS.len();
