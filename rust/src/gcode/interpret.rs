@@ -53,6 +53,9 @@ const SPIRAL_TOLERANCE_INCH: f64 = 2.0 * 0.001 * std::f64::consts::SQRT_2;
 const SPIRAL_TOLERANCE_MM: f64 = 2.0 * 0.01 * std::f64::consts::SQRT_2;
 /// ...and at most this fraction of the radius (SPIRAL_RELATIVE_TOLERANCE).
 const SPIRAL_RELATIVE_TOLERANCE: f64 = 0.001;
+/// The fastest feed a program may set, mm/min (1000 km/min, past any
+/// machine): a bound that keeps a planner's squared speeds finite.
+pub const MAX_FEED_MM_PER_MIN: f64 = 1e9;
 /// Grbl's ARC_ANGULAR_TRAVEL_EPSILON, radians.
 const FULL_CIRCLE_EPSILON_RAD: f64 = 5e-7;
 
@@ -132,6 +135,10 @@ pub struct ArcMm {
     pub sweep_rad: f64,
     /// Full turns added by P.
     pub extra_turns: u32,
+    /// The word (letter and column) each centre coordinate on the plane's
+    /// two axes came from: I, J or K, or R for both; an error about the
+    /// centre names it.
+    pub centre_words: [(char, u32); 2],
 }
 
 /// One move in machine mm, with the line that asked for it.
@@ -144,6 +151,9 @@ pub struct MoveMm {
     pub motion: Motion,
     pub from_mm: [f64; MACHINE_AXES],
     pub to_mm: [f64; MACHINE_AXES],
+    /// Column of the X, Y and Z word of the line, or of the move when the
+    /// axis has none: an error about the target names it.
+    pub axis_columns: [u32; MACHINE_AXES],
     pub feed_mm_per_min: Option<f64>,
     pub arc: Option<ArcMm>,
 }
@@ -341,14 +351,18 @@ impl Interpreter {
             self.absolute_centres = v;
         }
         if let Some(f) = words.get('F') {
-            if f.value <= 0.0 {
+            let feed = f.value * self.unit_mm();
+            if !(feed > 0.0 && feed <= MAX_FEED_MM_PER_MIN) {
                 return Err(Error::at(
                     line,
                     f.column,
-                    format!("F (feed) must be more than 0, got {}", f.value),
+                    format!(
+                        "F (feed) must be more than 0 and at most {MAX_FEED_MM_PER_MIN:e} mm/min, got {}",
+                        f.value
+                    ),
                 ));
             }
-            self.feed_mm_per_min = Some(f.value * self.unit_mm());
+            self.feed_mm_per_min = Some(feed);
         }
         for w in &block.words {
             if !"XYZIJKRPF".contains(w.letter) {
@@ -516,6 +530,7 @@ impl Interpreter {
             motion: mode,
             from_mm,
             to_mm,
+            axis_columns: axes.map(|w| w.map_or(column, |w| w.column)),
             feed_mm_per_min: (mode != Motion::Rapid)
                 .then_some(self.feed_mm_per_min)
                 .flatten(),
@@ -589,7 +604,7 @@ impl Interpreter {
                 ),
             });
         }
-        let (centre_uv, format) = match (words.get('R'), centre_words[u].or(centre_words[v])) {
+        let (centre_uv, format, centre_source) = match (words.get('R'), centre_words[u].or(centre_words[v])) {
             (Some(r), Some(c)) => {
                 let first = if r.column < c.column { r } else { c };
                 return Err(Error::at(
@@ -642,7 +657,9 @@ impl Interpreter {
                 // The centre is on the bisector, at h from the chord's middle;
                 // (-dv, du) / chord points to the left of the chord.
                 let half = (chord / 2.0).min(radius.abs());
-                let h = (radius * radius - half * half).sqrt();
+                // h = sqrt(R² - half²), written so that it stays finite for
+                // any finite R (R² overflows past 1e154).
+                let h = radius.abs() * (1.0 - (half / radius).powi(2)).sqrt();
                 let left = match (turn, radius > 0.0) {
                     (Turn::CounterClockwise, true) | (Turn::Clockwise, false) => 1.0,
                     _ => -1.0,
@@ -651,6 +668,7 @@ impl Interpreter {
                 (
                     [mu - left * h * dv / chord, mv + left * h * du / chord],
                     ArcFormat::Radius,
+                    [(r.letter, r.column); 2],
                 )
             }
             (None, Some(first)) => {
@@ -691,7 +709,13 @@ impl Interpreter {
                         ),
                     ));
                 }
-                (centre, ArcFormat::Centre)
+                // An absent word is 0: the centre coordinate then comes
+                // from the start (G91.1) or the offset, so an error about it
+                // names the first centre word.
+                let source = |axis: usize| {
+                    centre_words[axis].map_or((first.letter, first.column), |w| (w.letter, w.column))
+                };
+                (centre, ArcFormat::Centre, [source(u), source(v)])
             }
         };
         let (a, b) = (
@@ -716,6 +740,7 @@ impl Interpreter {
             radius_mm: a[0].hypot(a[1]),
             sweep_rad: sweep,
             extra_turns,
+            centre_words: centre_source,
         })
     }
 }

@@ -1,30 +1,30 @@
 //! One line of G-code -> a block of codes and words with their columns.
 //!
-//! The `gcode` crate (0.7.0, its push-based `core` parser) reads the line:
-//! comments in both styles, N numbers, several codes per line, words with
-//! or without spaces (`G1X10Y5`), and reports what it cannot read. This file
-//! adds what the crate lacks for a machine:
-//! - exact values: the crate stores numbers as f32 (7 digits, so X123.4567
-//!   would come back as 123.45670318...); each word's text is read again
-//!   from its span as f64;
-//! - columns: the crate gives byte offsets; errors and words carry the
-//!   1-based column (in characters) of their first character;
-//! - messages a user can act on, worded here from the crate's diagnostics;
-//! - a comment `(` with no `)` on its line is an error (the crate would read
-//!   the rest of the program as the comment).
+//! The grammar is RS274/NGC's word level, as LinuxCNC and Grbl read it:
+//! - a line is words (an address letter, an optional sign, a number; spaces
+//!   may stand between them, `G1X10Y5` needs none), G, M and T codes (a
+//!   letter and a whole number with at most one digit after its point:
+//!   G90.1), comments `( ... )` (nested, closed on their line) and `;` to
+//!   the end of the line, a line number N and a program number O before the
+//!   codes, and `%` (a program delimiter, ignored);
+//! - letters are read in either case and kept in upper case;
+//! - values are f64, read from the word's own text (so X123.4567 is exactly
+//!   what the program says), and must be finite;
+//! - a code's number must fit in 32 bits, checked digit by digit: a number
+//!   that does not fit is an error at its column, never another code.
 //!
-//! Lines are parsed one at a time, so a program of any length is read in
-//! slices and line numbers are exact.
-
-use gcode::core::{
-    BlockVisitor, CommandVisitor, ControlFlow, Diagnostics, HasDiagnostics, Number, ProgramVisitor,
-    Span, TokenType, Value,
-};
-use std::str::FromStr;
-
-/// The crate's error for a code number such as "1.25"; 0.7.0 does not
-/// export its name, only this path to it.
-type ParseNumberError = <Number as FromStr>::Err;
+//! Each line is read once, left to right, in time linear in its length:
+//! the column of every word is counted as the reader passes it, and the
+//! first syntax error ends the line (a line with an error is not run, so
+//! nothing after it is needed). Errors and words carry the 1-based column,
+//! in characters, of their first character.
+//!
+//! This reader replaced the `gcode` crate (0.7.0): its parser builds code
+//! numbers as `major * 10 + minor` in u32, so G2147483649 wrapped to G1;
+//! it reads every value as f32; and its push API cannot stop inside a
+//! command's argument list, so an error at column 10 of a 50 MB line waited
+//! for the rest of the line. Keeping it would have meant lexing every line
+//! twice, once to guard it and once to parse it.
 
 /// An address letter with its value, e.g. or F600.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,235 +68,333 @@ pub struct Problem {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Block {
     pub codes: Vec<Code>,
-    /// Every word of the line, whichever code the crate attached it to: in
-    /// G-code a line's words belong to the line (RS274/NGC), and the
-    /// interpreter decides which command uses them.
+    /// Every word of the line, whichever code it follows: in G-code a
+    /// line's words belong to the line (RS274/NGC), and the interpreter
+    /// decides which command uses them.
     pub words: Vec<Word>,
     /// Things the line says that voxpath ignores (program numbers).
     pub ignored: Vec<Problem>,
-    /// The first syntax error of the line, by column: the crate recovers
-    /// token by token, so what it reports after a first error is mostly
-    /// that error's echo ("G X1" is a G without its number and then a
-    /// stray "1"). A line with an error is not run.
+    /// The line's syntax error, the first one from the left: reading stops
+    /// there, and a line with an error is not run.
     pub error: Option<Problem>,
 }
 
 /// Parses one line (without its line break).
 pub fn parse_line(text: &str) -> Block {
-    let mut parser = LineParser {
+    let mut block = Block::default();
+    parse_line_into(text, &mut block);
+    block
+}
+
+/// Parses one line into `block`, reusing its vectors (a program reads
+/// every line into the same block, so a line allocates nothing).
+pub fn parse_line_into(text: &str, block: &mut Block) {
+    block.codes.clear();
+    block.words.clear();
+    block.ignored.clear();
+    block.error = Reader {
         text,
-        block: Block::default(),
-    };
-    gcode::core::parse(text, &mut parser);
-    parser.block
+        at: 0,
+        column: 1,
+    }
+    .read(block)
+    .err();
 }
 
-struct LineParser<'t> {
+/// Longest number echoed whole in a message: a 1 MB number is named by its
+/// first digits and its length.
+const ECHO_CHARS: usize = 24;
+
+/// `text` as a message quotes it.
+fn echo(text: &str) -> String {
+    if text.len() <= ECHO_CHARS {
+        text.to_string()
+    } else {
+        format!("{}... ({} characters)", &text[..ECHO_CHARS - 8], text.len())
+    }
+}
+
+/// The reader's place in a line: a byte offset and the character column
+/// it is at, moved forward together.
+struct Reader<'t> {
     text: &'t str,
-    block: Block,
+    at: usize,
+    column: u32,
 }
 
-impl LineParser<'_> {
-    /// 1-based column, in characters, of byte offset `start`.
-    fn column(&self, start: usize) -> u32 {
-        self.text[..start].chars().count() as u32 + 1
+type Read<T> = Result<T, Problem>;
+
+fn problem(column: u32, message: String) -> Problem {
+    Problem { column, message }
+}
+
+impl<'t> Reader<'t> {
+    fn peek(&self) -> Option<u8> {
+        self.text.as_bytes().get(self.at).copied()
     }
 
-    fn error(&mut self, span: Span, message: String) {
-        let column = self.column(span.start);
-        if self.block.error.as_ref().is_none_or(|e| column < e.column) {
-            self.block.error = Some(Problem { column, message });
+    /// Moves past one byte; a character's first byte starts a new column.
+    fn bump(&mut self) {
+        let byte = self.text.as_bytes()[self.at];
+        self.at += 1;
+        if byte & 0xC0 != 0x80 {
+            self.column += 1;
         }
     }
 
-    /// A word from its span "X-1.5" (letter, optional sign, number; the
-    /// crate allows spaces between them), its value read as f64.
-    fn word(&mut self, letter: char, span: Span) {
-        let digits: String = self.text[span.start..span.end()]
-            .chars()
-            .skip(1)
-            .filter(|c| !c.is_whitespace())
-            .collect();
-        match digits.parse::<f64>() {
-            Ok(value) if !value.is_finite() => self.error(
-                span,
-                format!("malformed number: {letter}{digits} is too large"),
-            ),
-            Ok(value) => {
-                let column = self.column(span.start);
-                self.block.words.push(Word {
-                    letter: letter.to_ascii_uppercase(),
-                    value,
+    /// Moves past the bytes `keep` accepts; returns them.
+    fn take_while(&mut self, keep: impl Fn(u8) -> bool) -> &'t str {
+        let start = self.at;
+        while self.peek().is_some_and(&keep) {
+            self.bump();
+        }
+        // `keep` stops only at ASCII bytes or at the end, so the slice
+        // ends on a character boundary.
+        &self.text[start..self.at]
+    }
+
+    fn skip_blanks(&mut self) {
+        self.take_while(|b| matches!(b, b' ' | b'\t' | b'\r'));
+    }
+
+    /// A number's text: digits, with at most one point among or before
+    /// them ("12", "1.5", ".5", "1."). Empty when none is here.
+    fn number(&mut self) -> &'t str {
+        let start = self.at;
+        if self.peek() == Some(b'.') {
+            self.bump();
+        }
+        self.take_while(|b| b.is_ascii_digit());
+        if self.peek() == Some(b'.') && !self.text[start..self.at].contains('.') {
+            self.bump();
+            self.take_while(|b| b.is_ascii_digit());
+        }
+        &self.text[start..self.at]
+    }
+
+    fn at_number(&self) -> bool {
+        self.peek().is_some_and(|b| b.is_ascii_digit() || b == b'.')
+    }
+
+    /// What stands at the reader, as an error quotes it.
+    fn next_char(&self) -> &'t str {
+        let len = self.text[self.at..].chars().next().map_or(0, char::len_utf8);
+        &self.text[self.at..self.at + len]
+    }
+
+    fn read(mut self, block: &mut Block) -> Read<()> {
+        let mut seen_code = false;
+        loop {
+            self.skip_blanks();
+            let Some(byte) = self.peek() else {
+                return Ok(());
+            };
+            let column = self.column;
+            match byte {
+                b';' => return Ok(()),
+                b'(' => self.comment()?,
+                b'%' => self.bump(),
+                b'0'..=b'9' | b'.' => {
+                    let text = self.number();
+                    return Err(problem(
+                        column,
+                        format!(
+                            "malformed number: '{}' belongs to no letter (a second decimal point, or a missing address letter?)",
+                            echo(text)
+                        ),
+                    ));
+                }
+                b'-' | b'+' | b'/' => {
+                    return Err(problem(
+                        column,
+                        format!(
+                            "unexpected '{}': a sign belongs right after an address letter (X-1), and block delete (/) is not supported",
+                            byte as char
+                        ),
+                    ));
+                }
+                letter if letter.is_ascii_alphabetic() => {
+                    self.bump();
+                    let letter = letter.to_ascii_uppercase() as char;
+                    match letter {
+                        'G' | 'M' | 'T' => {
+                            seen_code = true;
+                            block.codes.push(self.code(letter, column)?);
+                        }
+                        'N' | 'O' if seen_code => {
+                            return Err(problem(
+                                column,
+                                format!(
+                                    "{letter} (a line or program number) must come before the codes of its line"
+                                ),
+                            ));
+                        }
+                        'N' | 'O' => {
+                            let number = self.whole_number(letter, column)?;
+                            if letter == 'O' {
+                                block.ignored.push(problem(
+                                    column,
+                                    format!("O{number} (program number) ignored"),
+                                ));
+                            }
+                        }
+                        _ => block.words.push(self.word(letter, column)?),
+                    }
+                }
+                _ => {
+                    let text = self.take_while(|b| {
+                        !matches!(b, b' ' | b'\t' | b';' | b'(' | b'-' | b'+')
+                            && !b.is_ascii_alphanumeric()
+                    });
+                    return Err(problem(
+                        column,
+                        format!(
+                            "'{}' is not G-code voxpath reads: a line holds words such as G1 or X10.5 and comments; parameters (#1) and expressions ([1+2]) are not supported",
+                            echo(text)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// A comment from its `(` to the `)` that closes it (comments nest).
+    fn comment(&mut self) -> Read<()> {
+        let column = self.column;
+        let mut depth = 0u32;
+        while let Some(byte) = self.peek() {
+            self.bump();
+            match byte {
+                b'(' => depth += 1,
+                b')' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        return Ok(());
+                    }
+                }
+                _ => {}
+            }
+        }
+        Err(problem(
+            column,
+            "comment not closed: '(' needs its ')' on the same line".to_string(),
+        ))
+    }
+
+    /// The number after a code letter at `column`: whole, or with one digit
+    /// after its point, and within u32.
+    fn code(&mut self, letter: char, column: u32) -> Read<Code> {
+        self.skip_blanks();
+        if !self.at_number() {
+            return Err(match self.peek() {
+                None => problem(
                     column,
-                });
-            }
-            Err(_) => self.error(
-                span,
-                format!("malformed number: '{digits}' after {letter} is not a number"),
-            ),
+                    format!("malformed number: {letter} has no number after it"),
+                ),
+                Some(_) => problem(
+                    self.column,
+                    format!(
+                        "malformed number: {letter} must be followed by its number, found '{}'",
+                        self.next_char()
+                    ),
+                ),
+            });
         }
-    }
-
-    /// The character before byte offset `start`, skipping spaces.
-    fn previous_char(&self, start: usize) -> Option<char> {
-        self.text[..start].trim_end().chars().last()
-    }
-}
-
-impl Diagnostics for LineParser<'_> {
-    fn emit_unknown_content(&mut self, text: &str, span: Span) {
-        self.error(
-            span,
-            format!(
-                "'{text}' is not G-code voxpath reads: a line holds words such as G1 or X10.5 and comments; parameters (#1) and expressions ([1+2]) are not supported"
-            ),
-        );
-    }
-
-    fn emit_unexpected(&mut self, actual: &str, expected: &[TokenType], span: Span) {
-        let message = if expected == [TokenType::Number] || expected == [TokenType::Eof] {
-            // The crate reports a code letter with no number at the token
-            // after it, and a word letter with no number at the letter.
-            match self
-                .previous_char(span.start)
-                .map(|c| c.to_ascii_uppercase())
-            {
-                Some(code @ ('G' | 'M' | 'T')) if expected == [TokenType::Number] => {
+        let number_column = self.column;
+        let text = self.number();
+        let (major, minor) = text.split_once('.').unwrap_or((text, "0"));
+        if major.is_empty() || minor.len() != 1 {
+            return Err(problem(
+                number_column,
+                format!(
+                    "malformed number: code number '{}': a code's number is a whole number with at most one digit after its point, as in G1 or G90.1",
+                    echo(text)
+                ),
+            ));
+        }
+        // Digit by digit, checked: the largest code number is u32::MAX.
+        let number = major
+            .bytes()
+            .try_fold(0u32, |n, d| n.checked_mul(10)?.checked_add(u32::from(d - b'0')))
+            .ok_or_else(|| {
+                problem(
+                    number_column,
                     format!(
-                        "malformed number: {code} must be followed by its number, found '{actual}'"
-                    )
-                }
-                _ if actual.len() == 1 && actual.chars().all(|c| c.is_ascii_alphabetic()) => {
-                    format!(
-                        "malformed number: {} has no number after it",
-                        actual.to_ascii_uppercase()
-                    )
-                }
-                _ => format!("malformed number: '{actual}' is not a number"),
-            }
-        } else if expected.contains(&TokenType::Letter) && expected.contains(&TokenType::Number) {
-            format!(
-                "{} (a line or program number) must come before the codes of its line",
-                actual.to_ascii_uppercase()
-            )
-        } else if expected == [TokenType::Letter] {
-            format!(
-                "malformed number: '{actual}' belongs to no letter (a second decimal point, or a missing address letter?)"
-            )
-        } else {
-            format!(
-                "unexpected '{actual}': a sign belongs right after an address letter (X-1), and block delete (/) is not supported"
-            )
-        };
-        self.error(span, message);
-    }
-
-    fn emit_parse_number_error(&mut self, value: &str, _error: ParseNumberError, span: Span) {
-        self.error(
-            span,
-            format!(
-                "malformed number: code number '{value}': a code's number is a whole number with at most one digit after its point, as in G1 or G90.1"
-            ),
-        );
-    }
-
-    fn emit_parse_int_error(&mut self, value: &str, _error: std::num::ParseIntError, span: Span) {
-        self.error(
-            span,
-            format!(
-                "malformed number: '{value}' is not a whole number (line and program numbers are)"
-            ),
-        );
-    }
-}
-
-impl ProgramVisitor for LineParser<'_> {
-    fn start_block(&mut self) -> ControlFlow<impl BlockVisitor + '_> {
-        ControlFlow::Continue(BlockParser(self))
-    }
-}
-
-struct BlockParser<'p, 't>(&'p mut LineParser<'t>);
-
-impl HasDiagnostics for BlockParser<'_, '_> {
-    fn diagnostics(&mut self) -> &mut dyn Diagnostics {
-        self.0
-    }
-}
-
-impl<'t> BlockParser<'_, 't> {
-    fn command(&mut self, letter: char, number: Number) -> ControlFlow<CommandParser<'_, 't>> {
-        ControlFlow::Continue(CommandParser {
-            line: self.0,
+                        "malformed number: code number '{}' is too large: no {letter} code has a number past {}",
+                        echo(text),
+                        u32::MAX
+                    ),
+                )
+            })?;
+        Ok(Code {
             letter,
             number,
+            minor: u32::from(minor.as_bytes()[0] - b'0'),
+            column,
         })
     }
-}
 
-impl BlockVisitor for BlockParser<'_, '_> {
-    fn comment(&mut self, value: &str, span: Span) {
-        if value.starts_with('(') && !value.ends_with(')') {
-            self.0.error(
-                span,
-                "comment not closed: '(' needs its ')' on the same line".to_string(),
-            );
+    /// The whole number after N or O (its part before any point).
+    fn whole_number(&mut self, letter: char, column: u32) -> Read<u32> {
+        self.skip_blanks();
+        if !self.at_number() {
+            return Err(problem(
+                column,
+                format!("malformed number: {letter} has no number after it"),
+            ));
         }
+        let number_column = self.column;
+        let text = self.number();
+        let whole = text.split_once('.').map_or(text, |(w, _)| w);
+        whole.parse::<u32>().map_err(|_| {
+            problem(
+                number_column,
+                format!(
+                    "malformed number: '{}' is not a whole number (line and program numbers are)",
+                    echo(text)
+                ),
+            )
+        })
     }
 
-    fn program_number(&mut self, number: u32, span: Span) {
-        let column = self.0.column(span.start);
-        self.0.block.ignored.push(Problem {
+    /// A word: its sign and number after the letter at `column`.
+    fn word(&mut self, letter: char, column: u32) -> Read<Word> {
+        self.skip_blanks();
+        let negative = match self.peek() {
+            Some(b'-') => true,
+            Some(b'+') => false,
+            _ => false,
+        };
+        if matches!(self.peek(), Some(b'-' | b'+')) {
+            self.bump();
+            self.skip_blanks();
+        }
+        if !self.at_number() {
+            return Err(problem(
+                column,
+                format!("malformed number: {letter} has no number after it"),
+            ));
+        }
+        let number_column = self.column;
+        let text = self.number();
+        let Ok(magnitude) = text.parse::<f64>() else {
+            return Err(problem(
+                number_column,
+                format!("malformed number: '{}' is not a number", echo(text)),
+            ));
+        };
+        if !magnitude.is_finite() {
+            let sign = if negative { "-" } else { "" };
+            return Err(problem(
+                column,
+                format!("malformed number: {letter}{sign}{} is too large", echo(text)),
+            ));
+        }
+        Ok(Word {
+            letter,
+            value: if negative { -magnitude } else { magnitude },
             column,
-            message: format!("O{number} (program number) ignored"),
-        });
-    }
-
-    fn word_address(&mut self, letter: char, _value: Value<'_>, span: Span) {
-        self.0.word(letter, span);
-    }
-
-    fn start_general_code(&mut self, number: Number) -> ControlFlow<impl CommandVisitor + '_> {
-        self.command('G', number)
-    }
-
-    fn start_miscellaneous_code(
-        &mut self,
-        number: Number,
-    ) -> ControlFlow<impl CommandVisitor + '_> {
-        self.command('M', number)
-    }
-
-    fn start_tool_change_code(&mut self, number: Number) -> ControlFlow<impl CommandVisitor + '_> {
-        self.command('T', number)
-    }
-}
-
-struct CommandParser<'p, 't> {
-    line: &'p mut LineParser<'t>,
-    letter: char,
-    number: Number,
-}
-
-impl HasDiagnostics for CommandParser<'_, '_> {
-    fn diagnostics(&mut self) -> &mut dyn Diagnostics {
-        self.line
-    }
-}
-
-impl CommandVisitor for CommandParser<'_, '_> {
-    fn argument(&mut self, letter: char, _value: Value<'_>, span: Span) {
-        self.line.word(letter, span);
-    }
-
-    fn end_command(self, span: Span) {
-        let column = self.line.column(span.start);
-        self.line.block.codes.push(Code {
-            letter: self.letter,
-            number: self.number.major(),
-            minor: self.number.minor().map_or(0, |m| m.get()),
-            column,
-        });
+        })
     }
 }
 
@@ -424,10 +522,69 @@ mod tests {
     }
 
     #[test]
+    fn code_numbers_are_read_exactly_and_past_u32_are_errors() {
+        // The gcode crate read these as major * 10 + minor in u32: G2147483649
+        // wrapped to G1 and G2147483651 to G3.
+        assert_eq!(
+            codes(&parse_line("G2147483649 X10 Y5 F600")),
+            [("G2147483649".to_string(), 1)]
+        );
+        assert_eq!(
+            codes(&parse_line("G1999999999 M1000000000 G4294967295.9")),
+            [
+                ("G1999999999".to_string(), 1),
+                ("M1000000000".to_string(), 13),
+                ("G4294967295.9".to_string(), 25)
+            ]
+        );
+        assert_eq!(
+            errors("G1 G4294967296 X1"),
+            [(
+                5,
+                "malformed number: code number '4294967296' is too large: no G code has a number past 4294967295".to_string()
+            )]
+        );
+        let e = errors(&format!("M{}", "9".repeat(100)));
+        assert_eq!(e[0].0, 2);
+        assert!(e[0].1.starts_with("malformed number: code number '9999999999999999... (100 characters)' is too large"), "{}", e[0].1);
+        assert_eq!(errors("G90.12")[0].0, 2);
+        assert_eq!(errors("G1. X1")[0].0, 2);
+    }
+
+    #[test]
+    fn reading_stops_at_the_first_error() {
+        // Whatever follows the error is never read: a line of a million
+        // words with an error at column 4 returns at once, its words unread.
+        let line = format!("G1 #{}", " X1".repeat(1_000_000));
+        let b = parse_line(&line);
+        assert_eq!(b.error.map(|e| e.column), Some(4));
+        assert!(b.words.is_empty());
+    }
+
+    #[test]
+    fn a_long_line_is_read_in_one_pass() {
+        // 250,000 words: columns are counted as the reader passes them (the
+        // crate-based reader counted from the line's start for every word,
+        // quadratic in the words: 17 s for this line).
+        let line: String = (0..250_000).map(|i| format!("X{i} ")).collect();
+        let b = parse_line(&line);
+        assert_eq!(b.words.len(), 250_000);
+        let last = b.words[249_999];
+        assert_eq!((last.value, last.column as usize), (249_999.0, line.len() - 7));
+    }
+
+    #[test]
     fn numbers_beyond_f64_are_malformed() {
         let e = errors(&format!("G1 X1{}", "0".repeat(400)));
         assert_eq!(e[0].0, 4);
-        assert!(e[0].1.starts_with("malformed number: X1000") && e[0].1.ends_with(" is too large"));
+        assert_eq!(
+            e[0].1,
+            "malformed number: X1000000000000000... (401 characters) is too large"
+        );
+        assert_eq!(
+            errors("G1 X.")[0],
+            (5, "malformed number: '.' is not a number".to_string())
+        );
     }
 
     #[test]

@@ -27,13 +27,13 @@
 //!   a straight line to its end, and its note says so.
 
 use super::interpret::{ArcFormat, Interpreter, Motion, MoveMm};
-use super::parse::{Block, Problem, parse_line};
+use super::parse::{Block, Problem, parse_line_into};
 use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Location};
-use crate::grid::{AXIS_NAMES, Point};
+use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::machine::{MACHINE_AXES, Machine};
 use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
 use crate::trace::{MAX_STEPS_LIMIT, Trace, TraceBuilder};
@@ -268,6 +268,8 @@ pub struct Runner {
     lines: u32,
     settings: Settings,
     interpreter: Interpreter,
+    /// The line being run, its vectors reused from line to line.
+    block: Block,
     builder: TraceBuilder,
     steps: u64,
     segments: usize,
@@ -276,6 +278,31 @@ pub struct Runner {
     warnings_omitted: u64,
     errors: Vec<Diagnostic>,
     stopped_at_line: Option<u32>,
+}
+
+/// The first line of `text` (without its break) and the offset of the
+/// next: a line ends at LF, CR LF or a lone CR (classic Mac OS files, and
+/// some CAM exports, end lines with CR alone).
+fn split_line(text: &str) -> (&str, usize) {
+    match text.bytes().position(|b| b == b'\n' || b == b'\r') {
+        None => (text, text.len()),
+        Some(end) if text[end..].starts_with("\r\n") => (&text[..end], end + 2),
+        Some(end) => (&text[..end], end + 1),
+    }
+}
+
+/// Lines of a program as an editor counts them: a final line break ends the
+/// last line, it does not start another.
+fn count_lines(text: &str) -> u32 {
+    let mut lines = 0u32;
+    let mut rest = text;
+    while !rest.is_empty() {
+        let (_, next) = split_line(rest);
+        rest = &rest[next..];
+        lines = lines.saturating_add(1);
+    }
+    // An empty program is one empty line, as an editor shows it.
+    lines.max(1)
 }
 
 /// "(1, 2.5, 0)".
@@ -289,9 +316,7 @@ fn tuple(values: &[f64]) -> String {
 
 impl Runner {
     pub fn new(source: String, settings: Settings) -> Runner {
-        // As an editor counts them: a final newline ends the last line, it
-        // does not start another.
-        let lines = (source.split('\n').count() - usize::from(source.ends_with('\n'))) as u32;
+        let lines = count_lines(&source);
         Runner {
             source,
             offset: 0,
@@ -300,6 +325,7 @@ impl Runner {
             builder: TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps),
             settings,
             interpreter: Interpreter::default(),
+            block: Block::default(),
             steps: 0,
             segments: 0,
             moves: Vec::new(),
@@ -328,11 +354,13 @@ impl Runner {
                 break;
             }
             let rest = &self.source[self.offset..];
-            let end = rest.find('\n').unwrap_or(rest.len());
-            let block = parse_line(&rest[..end]);
-            self.offset += end + 1;
+            let (text, next) = split_line(rest);
+            parse_line_into(text, &mut self.block);
+            self.offset += next;
             self.lines_done += 1;
+            let block = std::mem::take(&mut self.block);
             self.run_block(self.lines_done, &block);
+            self.block = block;
         }
         self.progress()
     }
@@ -381,7 +409,8 @@ impl Runner {
         }
     }
 
-    /// A point in steps, or an error naming the axis that leaves the grid.
+    /// A point in steps, or an error naming the axis word whose target
+    /// leaves the grid.
     fn steps_of(&self, m: &MoveMm, mm: [f64; MACHINE_AXES]) -> Result<Point, Error> {
         let mut c = [0; MACHINE_AXES];
         for axis in 0..MACHINE_AXES {
@@ -392,7 +421,7 @@ impl Runner {
                 .ok_or_else(|| {
                     Error::at(
                         m.line,
-                        m.column,
+                        m.axis_columns[axis],
                         format!(
                             "{} = {} mm is beyond the machine's ±2^30 steps on {}",
                             AXIS_NAMES[axis].to_uppercase(),
@@ -590,6 +619,25 @@ impl Runner {
         };
         let kind = if helical { "helix" } else { "arc" };
         let centre_real = [arc.centre_mm[u] * spm[u], arc.centre_mm[v] * spm[v]];
+        for (i, axis) in [u, v].into_iter().enumerate() {
+            // The grid centre is found near this point in i64: it must be
+            // on the grid (a far centre from a huge I, J, K or R would
+            // otherwise wrap).
+            if !(centre_real[i].abs() <= COORD_LIMIT as f64) {
+                let (letter, column) = arc.centre_words[i];
+                return Err(Error::at(
+                    m.line,
+                    column,
+                    format!(
+                        "{letter}: the arc's centre {} = {} mm is beyond the machine's ±2^30 steps on {} ({} steps/mm)",
+                        AXIS_NAMES[axis].to_uppercase(),
+                        arc.centre_mm[axis],
+                        AXIS_NAMES[axis],
+                        spm[axis]
+                    ),
+                ));
+            }
+        }
         let grid = Self::grid_centre(
             [from.get(u), from.get(v)],
             [to.get(u), to.get(v)],

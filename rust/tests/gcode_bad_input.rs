@@ -1,0 +1,126 @@
+//! Bad and huge G-code: each case is an error at the word's line and column
+//! or a correct result, never a wrapped number, a panic or a value that is
+//! not finite. Integration tests run with overflow checks on (the test
+//! profile), so an overflow anywhere below is a failure here.
+
+use voxpath::gcode::{Diagnostic, Program, Settings, run};
+
+fn program(source: &str, steps_per_mm: f64) -> Program {
+    run(
+        source,
+        Settings::from_json(&format!(r#"{{"stepsPerMm": {steps_per_mm}}}"#)).unwrap(),
+    )
+}
+
+fn first_error(source: &str, steps_per_mm: f64) -> (u32, u32, String) {
+    let p = program(source, steps_per_mm);
+    let Diagnostic {
+        line,
+        column,
+        message,
+    } = p
+        .info
+        .errors
+        .first()
+        .unwrap_or_else(|| panic!("{source}: no error"))
+        .clone();
+    (line, column, message)
+}
+
+#[test]
+fn a_code_number_is_never_another_code() {
+    // G2147483649 was read as G1 (2147483649 * 10 wraps in u32) and ran
+    // 800 steps; it is a G code voxpath does not model.
+    // It sets no motion mode, so its X is refused.
+    let p = program("G2147483649 X10 Y5 F600\n", 80.0);
+    assert_eq!((p.info.steps, p.info.moves.len()), (0, 0));
+    assert_eq!(
+        (p.info.errors[0].column, p.info.errors[0].message.as_str()),
+        (13, "X without a motion mode: put G0, G1, G2 or G3 on this line or an earlier one")
+    );
+    let p = program("G2147483649\nG1999999999\nM1000000000\n", 80.0);
+    let warned: Vec<&str> = p.info.warnings.iter().map(|w| w.message.as_str()).collect();
+    assert!(warned[0].starts_with("G2147483649 ignored"), "{warned:?}");
+    assert!(warned[1].starts_with("G1999999999 ignored"), "{warned:?}");
+    assert!(warned[2].starts_with("M1000000000 ignored"), "{warned:?}");
+    // Past u32: an error at the number.
+    let (line, column, message) = first_error("G1 X1 F100\nG21 G99999999999 X2\n", 80.0);
+    assert_eq!((line, column), (2, 6));
+    assert!(message.contains("'99999999999' is too large"), "{message}");
+}
+
+#[test]
+fn a_far_arc_centre_names_its_word() {
+    // J12345678901234567890 at 1000 steps/mm was "1:1: center: y =
+    // 9223372036854776000 is outside ±2^30" (wrapped, at the wrong column).
+    let (line, column, message) = first_error("G3 J12345678901234567890\n", 1000.0);
+    assert_eq!((line, column), (1, 4));
+    assert!(
+        message.starts_with("J: the arc's centre Y = 12345678901234567000 mm is beyond the machine's ±2^30 steps on y"),
+        "{message}"
+    );
+    let (_, column, message) = first_error(&format!("G0 X1\nG2 X2 I1{} J0\n", "0".repeat(300)), 80.0);
+    assert_eq!(column, 7);
+    assert!(message.starts_with("I: the arc's centre X"), "{message}");
+    // G90.1 absolute centres with a huge K in G18: K is the zx plane's z.
+    let (_, column, message) = first_error(&format!("G18 G90.1 G2 X0 Z0 K-1{} I0\n", "0".repeat(30)), 80.0);
+    assert_eq!(column, 20);
+    assert!(message.starts_with("K: the arc's centre Z"), "{message}");
+}
+
+#[test]
+fn a_huge_radius_is_an_error_naming_r() {
+    // R = 10^200: R² overflowed, the centre and sweep were NaN (null in JSON).
+    let (line, column, message) = first_error(&format!("G1 F100\nG2 X10 Y0 R1{}\n", "0".repeat(200)), 80.0);
+    assert_eq!((line, column), (2, 11));
+    assert!(message.starts_with("R: the arc's centre"), "{message}");
+    // A large radius that does fit is a correct, finite arc.
+    let p = program("G2 X10 Y0 R100000 F100\n", 10.0);
+    assert_eq!(p.info.errors, []);
+    let arc = p.info.moves[0].arc.as_ref().unwrap();
+    assert!(arc.center_mm.iter().all(|c| c.is_finite()) && arc.sweep_deg.is_finite());
+}
+
+#[test]
+fn a_feed_past_any_machine_is_an_error_naming_f() {
+    let huge = format!("G1 X1 F1{}\n", "0".repeat(300));
+    let (line, column, message) = first_error(&huge, 80.0);
+    assert_eq!((line, column), (1, 7));
+    assert!(message.starts_with("F (feed) must be more than 0 and at most 1e9 mm/min"), "{message}");
+    // In inches the limit is on the feed in mm/min.
+    let (_, column, _) = first_error("G20 G1 X1 F100000000\n", 80.0);
+    assert_eq!(column, 11);
+}
+
+#[test]
+fn a_target_off_the_grid_names_its_axis_word() {
+    let (line, column, message) = first_error("G1 X1 Y1000000000000 F100\n", 80.0);
+    assert_eq!((line, column), (1, 7));
+    assert!(message.starts_with("Y = 1000000000000 mm is beyond"), "{message}");
+}
+
+#[test]
+fn lone_cr_ends_a_line() {
+    // Classic Mac OS line endings: three lines, not one.
+    for source in ["G1 X1 F100\rG1 X2\rG1 X3\r", "G1 X1 F100\r\nG1 X2\r\nG1 X3"] {
+        let p = program(source, 10.0);
+        assert_eq!(p.info.errors, []);
+        assert_eq!(p.info.lines, 3, "{source:?}");
+        let lines: Vec<u32> = p.info.moves.iter().map(|m| m.line).collect();
+        assert_eq!(lines, [1, 2, 3], "{source:?}");
+        assert_eq!(p.info.steps, 30);
+    }
+    // An error after a CR is on its own line.
+    assert_eq!(first_error("G1 X1 F100\rG1 X#\r", 10.0).0, 2);
+}
+
+#[test]
+fn a_megabyte_of_huge_numbers_is_read_in_one_pass() {
+    // 1 MB: one line of words with 300-digit values, each finite, and a
+    // duplicate X that the interpreter refuses. Every word is read once.
+    let digits = "9".repeat(300);
+    let line: String = (0..3300).map(|_| format!("X{digits} ")).collect();
+    let (_, column, message) = first_error(&format!("G1 {line}\n"), 1.0);
+    assert_eq!(column, 4 + 302);
+    assert_eq!(message, "X appears twice on this line");
+}
