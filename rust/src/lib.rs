@@ -22,6 +22,7 @@ pub mod ideal;
 pub mod line;
 pub mod machine;
 pub mod metrics;
+pub mod planner;
 pub mod request;
 pub mod trace;
 pub mod wasm;
