@@ -41,7 +41,7 @@ pub struct Machine {
 }
 
 /// A number, or one number per axis (x, y, z), from a JSON setting.
-fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES], Error> {
+pub(crate) fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES], Error> {
     let number = |v: &Value| {
         v.as_f64()
             .filter(|x| x.is_finite())

@@ -42,6 +42,7 @@
 //! t = 2s / (v0 + √(v0² + 2as)) (the same root as (−v0 + √(v0² + 2as)) / a,
 //! written without the cancellation at small a·s).
 
+use crate::arc::arc_segments::Chording;
 use crate::error::Error;
 use crate::machine::MACHINE_AXES;
 use crate::request::{OptionKind, OptionSpec};
@@ -428,7 +429,7 @@ pub struct Plan {
 }
 
 /// The timing of one move (a range of blocks), speeds in mm/s.
-#[derive(Serialize, Clone, Copy, Debug, PartialEq)]
+#[derive(Serialize, Clone, Copy, Debug, Default, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Timing {
     pub start_seconds: f64,
@@ -531,7 +532,7 @@ impl Plan {
 /// The chord vertices of an arc as Grbl's `mc_arc` (motion_control.c)
 /// segments it: `floor(|½·sweep·r| / √(tol·(2r − tol)))` chords (at most
 /// 65535, mc_arc's uint16_t) of equal angle, the plane's normal axis moving
-/// evenly for a helix; none (one straight block) when that is 0. Grbl
+/// evenly for a helix; one straight block when that is 0. Grbl
 /// rotates the radius vector by a small-angle approximation and corrects it
 /// every N_ARC_CORRECTION chords; the vertices here are the exact points on
 /// the arc it approximates. Returns the vertices after the start, the end
@@ -545,13 +546,15 @@ pub fn arc_chords(
     sweep_rad: f64,
 ) -> Vec<[f64; MACHINE_AXES]> {
     let [u, v, n] = axes;
-    let tolerance = ARC_TOLERANCE_MM;
-    let chords = if 2.0 * radius_mm > tolerance {
-        ((0.5 * sweep_rad * radius_mm).abs() / (tolerance * (2.0 * radius_mm - tolerance)).sqrt())
-            .floor()
-            .min(MAX_ARC_CHORDS as f64) as u64
+    // Grbl's count (the arc-segments algorithm's rule); a radius within
+    // the tolerance is one straight block, as Grbl's NaN count of 0 is.
+    let chords = if 2.0 * radius_mm > ARC_TOLERANCE_MM {
+        Chording::Tolerance(ARC_TOLERANCE_MM)
+            .chords(radius_mm, sweep_rad)
+            .unwrap_or(MAX_ARC_CHORDS)
+            .min(MAX_ARC_CHORDS)
     } else {
-        0
+        1
     };
     let mut out = Vec::with_capacity(chords.max(1) as usize);
     let start_angle = (from_mm[v] - centre_mm[v]).atan2(from_mm[u] - centre_mm[u]);

@@ -185,6 +185,22 @@ impl TraceHandle {
     }
 }
 
+/// The STEP and DIR wires of a G-code run as an IEEE 1364 VCD file
+/// (`gcode::vcd`): `trace` is the one taken from `result`.
+#[wasm_bindgen(js_name = gcodeVcd)]
+pub fn gcode_vcd(trace: &TraceHandle, result: &GcodeResult) -> Result<Vec<u8>, JsValue> {
+    if trace.0.steps() != result.steps {
+        return Err(to_js_error(&Error::field(
+            "trace",
+            "is not the trace of this G-code result",
+        )));
+    }
+    let mut out = Vec::new();
+    crate::gcode::vcd::write_vcd(&trace.0, &result.timeline, &mut out)
+        .expect("writing to memory does not fail");
+    Ok(out)
+}
+
 /// A G-code program being run a slice of lines at a time, so that a worker
 /// can report progress and stop between slices.
 #[wasm_bindgen]
@@ -213,7 +229,9 @@ impl GcodeRun {
         let program = self.0.finish();
         GcodeResult {
             program_json: serde_json::to_string(&program.info).expect("the program serializes"),
+            steps: program.trace.steps(),
             trace: Some(program.trace),
+            timeline: program.timeline,
         }
     }
 }
@@ -222,7 +240,9 @@ impl GcodeRun {
 #[wasm_bindgen]
 pub struct GcodeResult {
     program_json: String,
+    steps: u64,
     trace: Option<Trace>,
+    timeline: crate::gcode::timing::Timeline,
 }
 
 #[wasm_bindgen]
@@ -231,6 +251,27 @@ impl GcodeResult {
     #[wasm_bindgen(js_name = programJson)]
     pub fn program_json(&self) -> String {
         self.program_json.clone()
+    }
+
+    /// The instant of each step index in `from..to`, seconds from the
+    /// program's start, on the planned profile (`gcode::timing`).
+    #[wasm_bindgen(js_name = stepTimes)]
+    pub fn step_times(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
+        if from > to || to as u64 > self.steps {
+            return Err(to_js_error(&Error::field(
+                "range",
+                format!("step indices {from}..{to} are outside 0..{}", self.steps),
+            )));
+        }
+        Ok(self.timeline.step_seconds(from as u64, to as u64))
+    }
+
+    /// The planned speed over time as corners of a polyline: (seconds,
+    /// mm/s) pairs, four per planner block (start, end of acceleration,
+    /// start of deceleration, end), flat.
+    #[wasm_bindgen(js_name = speedProfile)]
+    pub fn speed_profile(&self) -> Vec<f64> {
+        self.timeline.speed_profile()
     }
 
     /// The trace, handed over once.

@@ -6,6 +6,8 @@
  *   program.moves;          // each with its source line and its steps
  *   program.lineOfStep(k);  // the line that produced step k
  *   program.errors;         // [{ line, column, message }]
+ *   program.durationSeconds; // on the planned motion profile (Grbl 1.1's planner)
+ *   program.stepTimes(0, 10); // Float64Array: when each step happens, seconds
  *
  * Machine positions are in steps (integers); moves also report mm. The core
  * runs the program a slice of lines at a time and this module yields to the
@@ -16,6 +18,7 @@ import { callCore } from './errors.js';
 import { encodeRequest } from './request.js';
 import { Trace } from './trace.js';
 import { loadCore } from './wasm.js';
+import type { GcodeResult } from './pkg/voxpath.js';
 
 /** How the program is run. Give stepsPerMm, or stepAngle, microsteps and pitch. */
 export interface GcodeSettings {
@@ -33,6 +36,14 @@ export interface GcodeSettings {
   arcAlgorithm?: 'circle' | 'arc-segments';
   /** Refuse programs longer than this many steps (default 50,000,000). */
   maxSteps?: number;
+  /** Acceleration, mm/s²: one number or [x, y, z] (Grbl $120-$122; default 10). */
+  acceleration?: number | number[];
+  /** Top rate, mm/min: one number or [x, y, z]; also G0's rate (Grbl $110-$112; default 500). */
+  maxRate?: number | number[];
+  /** Junction deviation δ, mm (Grbl $11; default 0.01): corner speed² = a·δ·s/(1−s), s = sin(θ/2). */
+  junctionDeviation?: number;
+  /** Fastest step rate the drivers take, steps/s (one or [x, y, z]): a move needing more is a warning. */
+  maxStepRate?: number | number[];
 }
 
 /** A warning or an error at a 1-based line and column of the program. */
@@ -85,6 +96,17 @@ export interface GcodeMove {
   arc: GcodeArc | null;
   /** What the move is, in a sentence (its segments' notes start with it). */
   note: string;
+  /** When it runs on the planned profile; speeds in mm/s (cruiseSpeed: the highest planned in the move). */
+  timing: GcodeTiming;
+}
+
+/** A move's place in time, seconds from the program's start, speeds in mm/s. */
+export interface GcodeTiming {
+  startSeconds: number;
+  endSeconds: number;
+  entrySpeed: number;
+  cruiseSpeed: number;
+  exitSpeed: number;
 }
 
 /** How far a run has got; passed to onProgress after every slice. */
@@ -104,6 +126,8 @@ export interface GcodeProgramInfo {
   lineAlgorithm: string;
   arcAlgorithm: string;
   moves: GcodeMove[];
+  /** How long the program takes on the planned profile, seconds. */
+  durationSeconds: number;
   /** Pulses per axis (x, y, z) over the whole program. */
   pulses: number[];
   warnings: GcodeDiagnostic[];
@@ -123,6 +147,7 @@ export class GcodeProgram implements GcodeProgramInfo {
   readonly lineAlgorithm: string;
   readonly arcAlgorithm: string;
   readonly moves: GcodeMove[];
+  readonly durationSeconds: number;
   readonly pulses: number[];
   readonly warnings: GcodeDiagnostic[];
   readonly warningsOmitted: number;
@@ -131,14 +156,17 @@ export class GcodeProgram implements GcodeProgramInfo {
   /** Every step of every move, in order (dims 3: x, y, z in steps). */
   readonly trace: Trace;
   #moveByLine?: Map<number, number>;
+  readonly #result: GcodeResult;
 
-  constructor(info: GcodeProgramInfo, trace: Trace) {
+  constructor(info: GcodeProgramInfo, trace: Trace, result: GcodeResult) {
+    this.#result = result;
     this.lines = info.lines;
     this.steps = info.steps;
     this.stepsPerMm = info.stepsPerMm;
     this.lineAlgorithm = info.lineAlgorithm;
     this.arcAlgorithm = info.arcAlgorithm;
     this.moves = info.moves;
+    this.durationSeconds = info.durationSeconds;
     this.pulses = info.pulses;
     this.warnings = info.warnings;
     this.warningsOmitted = info.warningsOmitted;
@@ -199,9 +227,28 @@ export class GcodeProgram implements GcodeProgramInfo {
     return next === undefined ? this.steps : next.firstStep;
   }
 
-  /** Releases the core's memory of the trace now. */
+  /**
+   * When each step index from..to happens, seconds from the program's start:
+   * step k of a move of n steps when the planned position reaches (k + 1) / n
+   * of the move's length. Computed in the core on demand, never stored.
+   */
+  stepTimes(from: number, to: number): Float64Array {
+    return callCore(() => this.#result.stepTimes(from, to));
+  }
+
+  /**
+   * The planned speed over time: (seconds, mm/s) pairs, flat, four per
+   * planner block (start, end of acceleration, start of deceleration, end);
+   * an arc has one block per chord (Grbl's mc_arc).
+   */
+  speedProfile(): Float64Array {
+    return this.#result.speedProfile();
+  }
+
+  /** Releases the core's memory of the trace and the plan now. */
   free(): void {
     this.trace.free();
+    this.#result.free();
   }
 }
 
@@ -244,9 +291,10 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
     const result = run.finish();
     try {
       const info = JSON.parse(result.programJson()) as GcodeProgramInfo;
-      return new GcodeProgram(info, new Trace(callCore(() => result.takeTrace())));
-    } finally {
+      return new GcodeProgram(info, new Trace(callCore(() => result.takeTrace())), result);
+    } catch (error) {
       result.free();
+      throw error;
     }
   } finally {
     // finish() consumes the run; free it only when it was not reached.

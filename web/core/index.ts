@@ -23,7 +23,7 @@ export { memoryBytes } from './wasm.js';
 export { compare } from './compare.js';
 export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDigest } from './compare.js';
 export { GcodeProgram, runGcode } from './gcode.js';
-export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, RunGcodeOptions } from './gcode.js';
+export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, GcodeTiming, RunGcodeOptions } from './gcode.js';
 export { pulseTrains } from './pulses.js';
 export type { PulseTrain } from './pulses.js';
 export { experiments, randomLines } from './experiment.js';

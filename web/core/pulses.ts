@@ -1,35 +1,67 @@
 /**
- * Step/direction pulse trains for a timing diagram. Tick model: one tick is
- * one step of the trace (step index k). On tick k an axis pulses STEP when it
- * moves in step k, and its DIR level is the direction of that move (set
- * before the STEP edge, as drivers need) or, when it does not move, the
- * level it was left at; DIR starts positive. Ticks are not time: the feed
- * is not modelled.
+ * Step/direction pulse trains for a timing diagram. On step index k an axis
+ * pulses STEP when it moves in step k, and its DIR level is the direction of
+ * that move (set before the STEP edge, as drivers need) or, when it does not
+ * move, the level it was left at; DIR starts positive.
+ *
+ * Two clocks: without times, one tick is one step (step index k); with the
+ * step instants of a G-code program (`GcodeProgram.stepTimes`, the planned
+ * motion profile), each axis's STEP edges get their instants in seconds and
+ * the step rate in Hz between them.
  */
 import type { Trace } from './trace.js';
 
-/** One axis's signals over a range of ticks. */
+/** One axis's signals over a range of step indices. */
 export interface PulseTrain {
-  /** step[i] = 1 when the axis pulses on tick from + i. */
+  /** step[i] = 1 when the axis pulses on step from + i. */
   step: Uint8Array;
-  /** dir[i] = +1 or -1: the DIR level on tick from + i. */
+  /** dir[i] = +1 or -1: the DIR level on step from + i. */
   dir: Int8Array;
+  /** With times: the instant of each of this axis's STEP edges in the range, seconds. */
+  edgeSeconds?: Float64Array;
+  /**
+   * With times: the step rate at each edge, Hz, 1 / (time since this axis's
+   * previous edge in the range); NaN at the range's first edge.
+   */
+  rateHz?: Float64Array;
 }
 
-/** The STEP and DIR signals of every axis over step indices from..to. */
-export function pulseTrains(trace: Trace, from: number, to: number): PulseTrain[] {
+/**
+ * The STEP and DIR signals of every axis over step indices from..to; given
+ * `stepSeconds` (the instant of each step index from..to), also each axis's
+ * STEP edges in seconds and its step rate in Hz.
+ */
+export function pulseTrains(trace: Trace, from: number, to: number, stepSeconds?: Float64Array): PulseTrain[] {
+  if (stepSeconds !== undefined && stepSeconds.length !== to - from) {
+    throw new RangeError(`stepSeconds has ${stepSeconds.length} instants for the ${to - from} steps ${from}..${to}`);
+  }
   const codes = trace.stepCodes(from, to);
   const levels = trace.directionLevels(from, to);
   const trains: PulseTrain[] = [];
   for (let axis = 0; axis < trace.dims; axis++) {
     const step = new Uint8Array(to - from);
     const dir = new Int8Array(to - from);
+    let edges = 0;
     for (let i = 0; i < step.length; i++) {
       // Packed step (grid::Step): bit a = axis a moves.
       step[i] = (codes[i]! >> axis) & 1;
+      edges += step[i]!;
       dir[i] = (levels[i]! >> axis) & 1 ? -1 : 1;
     }
-    trains.push({ step, dir });
+    const train: PulseTrain = { step, dir };
+    if (stepSeconds !== undefined) {
+      const edgeSeconds = new Float64Array(edges);
+      const rateHz = new Float64Array(edges);
+      for (let i = 0, e = 0; i < step.length; i++) {
+        if (step[i] === 0) continue;
+        edgeSeconds[e] = stepSeconds[i]!;
+        rateHz[e] = e === 0 ? Number.NaN : 1 / (edgeSeconds[e]! - edgeSeconds[e - 1]!);
+        e++;
+      }
+      train.edgeSeconds = edgeSeconds;
+      train.rateHz = rateHz;
+    }
+    trains.push(train);
   }
   return trains;
 }

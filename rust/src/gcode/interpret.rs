@@ -33,8 +33,9 @@
 //!   turns are added (LinuxCNC);
 //! - the plane's normal axis may move during the arc: a helix.
 //!
-//! Feed F (units per minute) is kept with each move in mm/min and used by
-//! nothing else yet.
+//! Feed F (units per minute, G94) is kept with each move in mm/min, for the
+//! planner (`timing`). G93 (inverse time, F = 1 / minutes per move) is a
+//! warning: its F is still read as units per minute.
 
 use super::parse::{Block, Code, Problem, Word};
 use crate::arc::planes::{Plane, Turn};
@@ -320,6 +321,12 @@ impl Interpreter {
                     set_once(&mut absolute_centres, false, code, line, "arc centre mode")?
                 }
                 ('G', 92, 0) => g92 = Some(*code),
+                // Units per minute: the feed mode voxpath runs in.
+                ('G', 94, 0) => {}
+                ('G', 93, 0) => effects.warnings.push(Problem {
+                    column: code.column,
+                    message: "G93 (inverse time) ignored: voxpath reads F as units per minute (G94), so the moves after it are timed at that feed".to_string(),
+                }),
                 ('G', n, 0) if AXIS_WORD_CODES.contains(&n) => axis_code = Some(*code),
                 (letter, n, _) => {
                     // G4 (dwell) takes P: its P is then not an unused word.
@@ -518,7 +525,7 @@ impl Interpreter {
             effects.warnings.push(Problem {
                 column,
                 message: format!(
-                    "{} with no feed rate set (F): a controller would refuse it; voxpath runs it, as it does not use the feed",
+                    "{} with no feed rate set (F): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate",
                     mode.code()
                 ),
             });
@@ -931,7 +938,7 @@ mod tests {
         let (_, e) = run(&["G1 X1"]).unwrap();
         assert_eq!(
             e.warnings[0].message,
-            "G1 with no feed rate set (F): a controller would refuse it; voxpath runs it, as it does not use the feed"
+            "G1 with no feed rate set (F): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate"
         );
     }
 }

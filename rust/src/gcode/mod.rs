@@ -19,5 +19,7 @@
 pub mod interpret;
 pub mod parse;
 pub mod program;
+pub mod timing;
+pub mod vcd;
 
 pub use program::{Diagnostic, Move, Program, ProgramInfo, Progress, Runner, Settings, run};

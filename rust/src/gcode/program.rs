@@ -28,6 +28,7 @@
 
 use super::interpret::{ArcFormat, Interpreter, Motion, MoveMm};
 use super::parse::{Block, Problem, parse_line_into};
+use super::timing::{self, Timeline};
 use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::planes::Turn;
@@ -35,6 +36,7 @@ use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::machine::{MACHINE_AXES, Machine};
+use crate::planner::{self, Limits, Planner, Timing};
 use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
 use crate::trace::{MAX_STEPS_LIMIT, Trace, TraceBuilder};
 use serde::Serialize;
@@ -98,12 +100,18 @@ pub const SETTINGS: &[OptionSpec] = &[
     LINE_ALGORITHM,
     ARC_ALGORITHM,
     MAX_STEPS,
+    planner::ACCELERATION,
+    planner::MAX_RATE,
+    planner::JUNCTION_DEVIATION,
+    planner::MAX_STEP_RATE,
 ];
 
 /// How a program is run: the machine and the algorithms.
 #[derive(Clone, Debug)]
 pub struct Settings {
     pub machine: Machine,
+    /// Acceleration, top rates and junction deviation (the planner's).
+    pub limits: Limits,
     pub line_algorithm: &'static str,
     pub arc_algorithm: &'static str,
     pub max_steps: u64,
@@ -120,6 +128,7 @@ impl Settings {
         };
         options.retain(|_, v| !v.is_null());
         let machine = Machine::from_settings(&options)?;
+        let limits = timing::limits_from_settings(&options)?;
         let request = Request::new("gcode", options);
         request.check_options(SETTINGS)?;
         let pick =
@@ -133,6 +142,7 @@ impl Settings {
             };
         Ok(Settings {
             machine,
+            limits,
             line_algorithm: pick(&LINE_ALGORITHM, LINE_ALGORITHMS)?,
             arc_algorithm: pick(&ARC_ALGORITHM, ARC_ALGORITHMS)?,
             max_steps: request.max_steps()?,
@@ -218,6 +228,8 @@ pub struct Move {
     pub arc: Option<ArcInfo>,
     /// What the move is, in a sentence (it also starts its segments' notes).
     pub note: String,
+    /// When it runs on the planned profile, speeds in mm/s (`timing`).
+    pub timing: Timing,
 }
 
 /// How far a run has got.
@@ -241,6 +253,8 @@ pub struct ProgramInfo {
     pub line_algorithm: &'static str,
     pub arc_algorithm: &'static str,
     pub moves: Vec<Move>,
+    /// How long the program takes on the planned profile, seconds.
+    pub duration_seconds: f64,
     /// Pulses per axis (x, y, z) over the whole program.
     pub pulses: Vec<u64>,
     pub warnings: Vec<Diagnostic>,
@@ -257,6 +271,8 @@ pub struct ProgramInfo {
 pub struct Program {
     pub trace: Trace,
     pub info: ProgramInfo,
+    /// When every step happens (computed on demand).
+    pub timeline: Timeline,
 }
 
 /// Runs a program a slice of lines at a time (see [`Runner::advance`]).
@@ -271,6 +287,9 @@ pub struct Runner {
     /// The line being run, its vectors reused from line to line.
     block: Block,
     builder: TraceBuilder,
+    planner: Planner,
+    /// Per move, the planner blocks it took.
+    move_blocks: Vec<std::ops::Range<usize>>,
     steps: u64,
     segments: usize,
     moves: Vec<Move>,
@@ -323,6 +342,8 @@ impl Runner {
             lines_done: 0,
             lines,
             builder: TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps),
+            planner: Planner::new(settings.limits),
+            move_blocks: Vec::new(),
             settings,
             interpreter: Interpreter::default(),
             block: Block::default(),
@@ -506,6 +527,8 @@ impl Runner {
             }
             Some(_) => self.step_arc(m, from, to, &mut note)?,
         };
+        let blocks = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
+        self.move_blocks.push(blocks);
         Ok(Move {
             line: m.line,
             column: m.column,
@@ -523,6 +546,7 @@ impl Runner {
             algorithm,
             arc,
             note,
+            timing: Timing::default(),
         })
     }
 
@@ -715,7 +739,28 @@ impl Runner {
     }
 
     /// Finishes the trace (the moves run so far) and the program's record.
-    pub fn finish(self) -> Program {
+    pub fn finish(mut self) -> Program {
+        let planner = std::mem::replace(&mut self.planner, Planner::new(self.settings.limits));
+        let timeline = Timeline::new(
+            planner,
+            std::mem::take(&mut self.move_blocks)
+                .into_iter()
+                .zip(&self.moves)
+                .map(|(blocks, m)| (blocks, m.first_step, m.steps))
+                .collect(),
+        );
+        for (index, m) in self.moves.iter_mut().enumerate() {
+            m.timing = timeline.move_timing(index);
+        }
+        let spm = self.settings.machine.steps_per_mm();
+        for (index, axis, needed, max) in timeline.step_rate_excesses(&self.settings.limits, &spm) {
+            let (line, column) = (self.moves[index].line, self.moves[index].column);
+            self.warn(Diagnostic {
+                line,
+                column,
+                message: timing::step_rate_message(axis, needed, max),
+            });
+        }
         let trace = self.builder.finish(&format!(
             "gcode ({}, {})",
             self.settings.line_algorithm, self.settings.arc_algorithm
@@ -727,13 +772,18 @@ impl Runner {
             line_algorithm: self.settings.line_algorithm,
             arc_algorithm: self.settings.arc_algorithm,
             moves: self.moves,
+            duration_seconds: timeline.duration_seconds(),
             pulses: trace.metrics().pulses_by_axis.clone(),
             warnings: self.warnings,
             warnings_omitted: self.warnings_omitted,
             errors: self.errors,
             stopped_at_line: self.stopped_at_line,
         };
-        Program { trace, info }
+        Program {
+            trace,
+            info,
+            timeline,
+        }
     }
 }
 

@@ -1,0 +1,180 @@
+//! A program's STEP and DIR wires as an IEEE 1364 Value Change Dump (VCD),
+//! written with the `vcd` crate, so a run opens in PulseView, GTKWave or
+//! sigrok like a logic-analyser capture of the motor drivers' inputs.
+//!
+//! Wires, in module `voxpath`: `x_step`, `x_dir`, `y_step`, ... for every
+//! axis; timescale 1 ns; time 0 is the program's start.
+//! - STEP: a pulse per step of the axis, rising at the step's instant on
+//!   the planned profile (`timing`) and falling Grbl's
+//!   DEFAULT_STEP_PULSE_MICROSECONDS (10 µs, defaults.h) later, or halfway
+//!   to the next step event when that comes sooner. One rising edge = one
+//!   step: `G1 X200` at 80 steps/mm is 16,000 rising edges on `x_step`.
+//! - DIR: 1 while the axis runs negative (Grbl's direction_bits, no invert
+//!   mask), 0 while it runs positive; 0 at the start. A change is written
+//!   halfway between the previous step event and the step that needs it, so
+//!   it is settled before the STEP edge, as drivers need (and after the
+//!   previous pulse has fallen).
+
+use super::timing::Timeline;
+use crate::grid::AXIS_NAMES;
+use crate::machine::direction_levels;
+use crate::trace::Trace;
+use std::io::{self, Write};
+use vcd::{IdCode, TimescaleUnit, Value};
+
+/// Grbl's DEFAULT_STEP_PULSE_MICROSECONDS, as seconds.
+pub const STEP_PULSE_SECONDS: f64 = 10e-6;
+
+/// Steps read per chunk: the times and levels of one chunk at a time.
+const CHUNK_STEPS: u64 = 1 << 16;
+
+fn nanoseconds(seconds: f64) -> u64 {
+    (seconds * 1e9).round().max(0.0) as u64
+}
+
+/// Writes the VCD of `trace`'s steps at the instants of `timeline`.
+pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Result<()> {
+    let dims = trace.dims();
+    let mut w = vcd::Writer::new(out);
+    w.comment("voxpath: STEP and DIR per axis on the planned motion profile (Grbl 1.1's planner); DIR 1 = negative")?;
+    w.timescale(1, TimescaleUnit::NS)?;
+    w.add_module("voxpath")?;
+    let mut wires: Vec<(IdCode, IdCode)> = Vec::with_capacity(dims);
+    for axis in 0..dims {
+        let name = AXIS_NAMES[axis];
+        wires.push((
+            w.add_wire(1, &format!("{name}_step"))?,
+            w.add_wire(1, &format!("{name}_dir"))?,
+        ));
+    }
+    w.upscope()?;
+    w.enddefinitions()?;
+    w.timestamp(0)?;
+    w.begin(vcd::SimulationCommand::Dumpvars)?;
+    for &(step, dir) in &wires {
+        w.change_scalar(step, Value::V0)?;
+        w.change_scalar(dir, Value::V0)?;
+    }
+    w.end()?;
+    let steps = trace.steps();
+    let mut written_ns = 0u64;
+    let mut at = |w: &mut vcd::Writer<_>, seconds: f64| -> io::Result<()> {
+        let ns = nanoseconds(seconds).max(written_ns);
+        if ns != written_ns {
+            w.timestamp(ns)?;
+            written_ns = ns;
+        }
+        Ok(())
+    };
+    let mut level = 0u8;
+    let mut previous_seconds = 0.0;
+    let mut from = 0;
+    while from < steps {
+        let to = (from + CHUNK_STEPS).min(steps);
+        let times = timeline.step_seconds(from, to);
+        // One more instant, for the last pulse's fall.
+        let next = if to < steps {
+            timeline.step_seconds(to, to + 1)[0]
+        } else {
+            f64::INFINITY
+        };
+        let codes = trace.step_range(from, to);
+        let levels = direction_levels(trace, from, to);
+        for i in 0..(to - from) as usize {
+            let (t, moving) = (times[i], codes[i].moving_axes());
+            let changed = (levels[i] ^ level) & moving;
+            if changed != 0 {
+                at(&mut w, previous_seconds + (t - previous_seconds) / 2.0)?;
+                for (axis, &(_, dir)) in wires.iter().enumerate() {
+                    if changed >> axis & 1 == 1 {
+                        w.change_scalar(dir, Value::from(levels[i] >> axis & 1 == 1))?;
+                    }
+                }
+                level ^= changed;
+            }
+            at(&mut w, t)?;
+            for (axis, &(step, _)) in wires.iter().enumerate() {
+                if moving >> axis & 1 == 1 {
+                    w.change_scalar(step, Value::V1)?;
+                }
+            }
+            let following = times.get(i + 1).copied().unwrap_or(next);
+            at(&mut w, t + STEP_PULSE_SECONDS.min((following - t) / 2.0))?;
+            for (axis, &(step, _)) in wires.iter().enumerate() {
+                if moving >> axis & 1 == 1 {
+                    w.change_scalar(step, Value::V0)?;
+                }
+            }
+            previous_seconds = t;
+        }
+        from = to;
+    }
+    w.flush()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gcode::{Settings, run};
+    use vcd::Command;
+
+    /// (rising edge times in ns, DIR changes as (ns, value)) per wire name.
+    fn read_back(text: &[u8]) -> std::collections::HashMap<String, Vec<(u64, bool)>> {
+        let mut parser = vcd::Parser::new(text);
+        let header = parser.parse_header().unwrap();
+        let mut names = std::collections::HashMap::new();
+        for axis in ["x", "y", "z"] {
+            for wire in ["step", "dir"] {
+                let name = format!("{axis}_{wire}");
+                let var = header.find_var(&["voxpath", name.as_str()]).unwrap();
+                names.insert(var.code, name);
+            }
+        }
+        let mut changes: std::collections::HashMap<String, Vec<(u64, bool)>> =
+            std::collections::HashMap::new();
+        let mut now = 0;
+        for command in parser {
+            match command.unwrap() {
+                Command::Timestamp(t) => now = t,
+                Command::ChangeScalar(id, v) => changes
+                    .entry(names[&id].clone())
+                    .or_default()
+                    .push((now, v == Value::V1)),
+                _ => {}
+            }
+        }
+        changes
+    }
+
+    #[test]
+    fn the_issues_example_has_16000_timed_x_step_edges() {
+        let settings =
+            Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 100, "maxRate": 6000}"#)
+                .unwrap();
+        let program = run("G1 X200 F6000\nG1 X100\n", settings);
+        let mut out = Vec::new();
+        write_vcd(&program.trace, &program.timeline, &mut out).unwrap();
+        let changes = read_back(&out);
+        let rising: Vec<u64> = changes["x_step"]
+            .iter()
+            .filter(|c| c.1)
+            .map(|c| c.0)
+            .collect();
+        // 16,000 steps out, 8,000 back.
+        assert_eq!(rising.len(), 24_000);
+        // The 400th at √(2·5/100) s (s = ½at²), to the nanosecond.
+        assert_eq!(rising[399], nanoseconds(0.1f64.sqrt()));
+        assert_eq!(rising[15_999], 3_000_000_000);
+        // Falls 10 µs after it rises (125 µs apart at 100 mm/s).
+        let x = &changes["x_step"];
+        let fall = x.iter().position(|c| !c.1 && c.0 > rising[7000]).unwrap();
+        assert_eq!(x[fall].0 - rising[7000], 10_000);
+        // DIR: 0 at the start, 1 before the first step back, and settled
+        // before it.
+        let dir = &changes["x_dir"];
+        assert_eq!(dir.len(), 2);
+        assert!(dir[1].1 && dir[1].0 > rising[15_999] && dir[1].0 < rising[16_000]);
+        // Y and Z never pulse.
+        assert_eq!(changes["y_step"].len(), 1);
+    }
+}
