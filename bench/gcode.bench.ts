@@ -42,8 +42,18 @@ export function generateProgram(lines: number): string {
   return out.join('\n') + '\n';
 }
 
-/** Column names: rates of the whole run, slices included. */
-const COLUMNS = { lines: 'lines/s', steps: 'steps/s' } as const;
+/** Column names: rates of the whole run, slices included; the plan's share. */
+const COLUMNS = {
+  lines: 'lines/s',
+  steps: 'steps/s',
+  finishPerMove: 'finish µs/move',
+  stepTimes: 'stepTimes steps/s',
+} as const;
+
+/** Rounds of stepTimes over the whole program; the median is reported. */
+const STEP_TIME_ROUNDS = 5;
+
+const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
 
 /** Runs the generated program with each arc algorithm; one row each. */
 export default async function benchGcode(): Promise<BenchGroup> {
@@ -53,13 +63,30 @@ export default async function benchGcode(): Promise<BenchGroup> {
     // One run each, not the best of several: a run is seconds long, so the
     // compilers' warm-up is a small part of it, and the bench stays short.
     const started = performance.now();
-    const program = await runGcode(source, { stepsPerMm: 80, arcAlgorithm });
-    const seconds = (performance.now() - started) / 1000;
+    // The last progress report comes when every line has run; what follows
+    // is the run's finish: the planner's passes over every block, each
+    // move's timing, the program's JSON record and the trace handed over.
+    let linesDoneAt = started;
+    const program = await runGcode(source, { stepsPerMm: 80, arcAlgorithm }, { onProgress: () => (linesDoneAt = performance.now()) });
+    const finished = performance.now();
+    const seconds = (finished - started) / 1000;
     if (program.errors.length > 0) throw new Error(`bench program failed: ${JSON.stringify(program.errors[0])}`);
+    const stepTimeSeconds: number[] = [];
+    for (let round = 0; round < STEP_TIME_ROUNDS; round++) {
+      const t0 = performance.now();
+      program.stepTimes(0, program.steps);
+      stepTimeSeconds.push((performance.now() - t0) / 1000);
+    }
     rows.push({
       name: `${program.lines.toLocaleString('en-US')} lines, ${program.moves.length.toLocaleString('en-US')} moves, arcs: ${arcAlgorithm}`,
       steps: program.steps,
-      rates: { [COLUMNS.lines]: program.lines / seconds, [COLUMNS.steps]: program.steps / seconds },
+      rates: {
+        [COLUMNS.lines]: program.lines / seconds,
+        [COLUMNS.steps]: program.steps / seconds,
+        [COLUMNS.finishPerMove]: ((finished - linesDoneAt) * 1000) / program.moves.length,
+        [COLUMNS.stepTimes]: program.steps / median(stepTimeSeconds),
+      },
+      ratios: { 'finish / run': (finished - linesDoneAt) / (finished - started) },
     });
     program.free();
   }
@@ -68,6 +95,8 @@ export default async function benchGcode(): Promise<BenchGroup> {
     notes: [
       `A generated ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program at 80 steps/mm through runGcode (wasm): parse, interpret, step every move (lines by regions), build the trace.`,
       `${COLUMNS.lines} and ${COLUMNS.steps}: source lines and steps over the seconds of the whole run, as a worker sees it.`,
+      `${COLUMNS.finishPerMove}: the run's finish (after the last line ran: Grbl-style look-ahead planning of every block, each move's timing, the JSON record, the trace), per move; 'finish / run' is its share of the whole run.`,
+      `${COLUMNS.stepTimes}: program.stepTimes(0, steps), every step's instant from the plan in closed form (median of ${STEP_TIME_ROUNDS} rounds).`,
     ],
     rows,
   };

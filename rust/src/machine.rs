@@ -20,8 +20,8 @@
 //! step k, with DIR already at that move's direction (a driver needs DIR
 //! settled before the STEP edge). An axis that does not move keeps its last
 //! DIR level; before its first move DIR is at the positive level. Ticks are
-//! not time: how long a tick lasts depends on the feed, which voxpath does
-//! not model.
+//! not time: a G-code program's steps get their instants from its planned
+//! motion profile (`gcode::timing`).
 
 use crate::error::Error;
 use crate::grid::{COORD_LIMIT, MAX_AXES};

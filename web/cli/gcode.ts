@@ -1,6 +1,8 @@
 /**
- * `voxpath gcode FILE|- --steps-per-mm 80[,80,400] [--format json|csv|table]`:
- * runs a G-code program on the modelled machine and prints its steps.
+ * `voxpath gcode FILE|- --steps-per-mm 80[,80,400] [--acceleration A --max-rate R
+ * --junction-deviation D --max-step-rate S] [--step-times] [--format json|csv|table|vcd]`:
+ * runs a G-code program on the modelled machine, plans its motion (Grbl 1.1's
+ * planner) and prints its steps, their instants, or its STEP/DIR wires as VCD.
  *
  * Exit codes: 0 the program ran; 1 it has errors (printed to stderr, after
  * the output of the moves before the first one); 2 a bad command line or
@@ -12,10 +14,13 @@ import type { GcodeProgram, GcodeSettings } from '../core/index.js';
 import { UsageError, flagOf, parseFlags, pickFormat } from './main.js';
 
 /** Settings that take one number or one per axis. */
-const PER_AXIS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'] as const;
+const PER_AXIS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch', 'acceleration', 'maxRate', 'maxStepRate'] as const;
+
+/** A flag without a value: adds stepTimes to the JSON. */
+const STEP_TIMES_FLAG = '--step-times';
 
 export const GCODE_USAGE =
-  'voxpath gcode FILE|- (--steps-per-mm N[,N,N] | --step-angle DEG --microsteps N --pitch MM) [--line-algorithm ID] [--arc-algorithm circle|arc-segments] [--max-steps N] [--format json|csv|table]';
+  'voxpath gcode FILE|- (--steps-per-mm N[,N,N] | --step-angle DEG --microsteps N --pitch MM) [--line-algorithm ID] [--arc-algorithm circle|arc-segments] [--max-steps N] [--acceleration MM/S2[,,]] [--max-rate MM/MIN[,,]] [--junction-deviation MM] [--max-step-rate STEPS/S[,,]] [--step-times] [--format json|csv|table|vcd]';
 
 /** The gcode command's help text. */
 export function gcodeHelp(lineAlgorithms: string[]): string {
@@ -30,6 +35,11 @@ export function gcodeHelp(lineAlgorithms: string[]): string {
     '    lineByStep (the source line of every step), moves (each with its line), pulses',
     '    (per axis), warnings, errors ([{ line, column, message }]), ... };',
     '    csv one row per point with its line and move; table the moves and totals.',
+    '    Timing (Grbl 1.1\'s planner, Grbl\'s defaults): --acceleration mm/s² (10), --max-rate',
+    '    mm/min (500; also G0\'s rate), --junction-deviation mm (0.01), --max-step-rate steps/s',
+    '    (a move needing more is a warning). json has durationSeconds and each move\'s timing;',
+    '    --step-times adds stepTimes (seconds, one per step). vcd writes the STEP and DIR wires',
+    '    of every axis as an IEEE 1364 Value Change Dump (PulseView, GTKWave, sigrok).',
   ].join('\n');
 }
 
@@ -47,13 +57,13 @@ function numbers(flag: string, text: string): number | number[] {
 
 function settingsFromFlags(flags: Map<string, string>): GcodeSettings {
   const settings: Record<string, unknown> = {};
-  const known = [...PER_AXIS, 'lineAlgorithm', 'arcAlgorithm', 'maxSteps'].map(flagOf);
+  const known = [...PER_AXIS, 'lineAlgorithm', 'arcAlgorithm', 'maxSteps', 'junctionDeviation'].map(flagOf);
   for (const [flag, text] of flags) {
     if (flag === '--format') continue;
     if (!known.includes(flag)) throw new UsageError(`unknown flag ${flag} for gcode (it takes ${known.join(', ')}, --format)`);
     const name = flag.replace(/^--/, '').replace(/-([a-z])/g, (_, c: string) => c.toUpperCase());
     if ((PER_AXIS as readonly string[]).includes(name)) settings[name] = numbers(flag, text);
-    else if (name === 'maxSteps') settings[name] = numbers(flag, text);
+    else if (name === 'maxSteps' || name === 'junctionDeviation') settings[name] = numbers(flag, text);
     else settings[name] = text;
   }
   return settings as GcodeSettings;
@@ -79,9 +89,10 @@ function pointRows(program: GcodeProgram): number[][] {
   return rows;
 }
 
-function toJson(program: GcodeProgram): string {
+function toJson(program: GcodeProgram, stepTimes: boolean): string {
   return (
     JSON.stringify({
+      durationSeconds: program.durationSeconds,
       lines: program.lines,
       steps: program.steps,
       stepsPerMm: program.stepsPerMm,
@@ -89,6 +100,7 @@ function toJson(program: GcodeProgram): string {
       arcAlgorithm: program.arcAlgorithm,
       points: pointRows(program),
       lineByStep: Array.from(program.lineByStepInRange(0, program.steps)),
+      ...(stepTimes ? { stepTimes: Array.from(program.stepTimes(0, program.steps)) } : {}),
       moves: program.moves,
       pulses: program.pulses,
       warnings: program.warnings,
@@ -111,7 +123,7 @@ function toCsv(program: GcodeProgram): string {
 }
 
 function toTable(program: GcodeProgram): string {
-  const header = ['move', 'line', 'code', 'kind', 'to (mm)', 'to (steps)', 'first step', 'steps', 'algorithm'];
+  const header = ['move', 'line', 'code', 'kind', 'to (mm)', 'to (steps)', 'first step', 'steps', 'algorithm', 'start (s)', 'end (s)', 'mm/s in, top, out'];
   const body = program.moves.map((m, i) => [
     String(i),
     String(m.line),
@@ -122,6 +134,9 @@ function toTable(program: GcodeProgram): string {
     String(m.firstStep),
     String(m.steps),
     m.algorithm,
+    m.timing.startSeconds.toFixed(4),
+    m.timing.endSeconds.toFixed(4),
+    [m.timing.entrySpeed, m.timing.cruiseSpeed, m.timing.exitSpeed].map((v) => v.toFixed(2)).join(' '),
   ]);
   const widths = header.map((h, c) => Math.max(h.length, ...body.map((r) => r[c]!.length)));
   const row = (r: string[]) => r.map((cell, c) => cell.padStart(widths[c]!)).join('  ');
@@ -134,6 +149,7 @@ function toTable(program: GcodeProgram): string {
     ...body.map(row),
     '',
     `pulses per axis (x, y, z): ${program.pulses.join(', ')}`,
+    `duration on the planned profile: ${program.durationSeconds} s`,
     ...diagnostics('warnings', program.warnings),
     ...(program.warningsOmitted > 0 ? [`  ... and ${program.warningsOmitted} more`] : []),
     ...diagnostics('errors', program.errors),
@@ -147,12 +163,22 @@ export async function gcodeCommand(args: string[]): Promise<{ stdout: string; st
   if (file === undefined || (file.startsWith('--') && file !== '-')) {
     throw new UsageError('gcode needs a FILE (or - for standard input) before its flags');
   }
-  const flags = parseFlags(rest);
+  const stepTimes = rest.includes(STEP_TIMES_FLAG);
+  const flags = parseFlags(rest.filter((a) => a !== STEP_TIMES_FLAG));
+  const vcd = flags.get('--format') === 'vcd';
+  if (vcd) flags.delete('--format');
   const format = pickFormat(flags);
+  if (stepTimes && (vcd || format !== 'json')) throw new UsageError(`${STEP_TIMES_FLAG} adds stepTimes to the json format`);
   const settings = settingsFromFlags(flags);
   const program = await runGcode(await readSource(file), settings);
   try {
-    const stdout = format === 'csv' ? toCsv(program) : format === 'table' ? toTable(program) : toJson(program);
+    const stdout = vcd
+      ? new TextDecoder().decode(program.vcd())
+      : format === 'csv'
+        ? toCsv(program)
+        : format === 'table'
+          ? toTable(program)
+          : toJson(program, stepTimes);
     const stderr = program.errors.map((e) => `voxpath: ${file}:${e.line}:${e.column}: ${e.message}\n`).join('');
     return { stdout, stderr, code: program.errors.length > 0 ? 1 : 0 };
   } finally {

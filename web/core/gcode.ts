@@ -157,9 +157,12 @@ export class GcodeProgram implements GcodeProgramInfo {
   readonly trace: Trace;
   #moveByLine?: Map<number, number>;
   readonly #result: GcodeResult;
+  readonly #vcd: () => Uint8Array;
 
-  constructor(info: GcodeProgramInfo, trace: Trace, result: GcodeResult) {
+  /** `result` is the core's record of the run (its plan); `vcd` writes the run's VCD. */
+  constructor(info: GcodeProgramInfo, trace: Trace, result: GcodeResult, vcd: () => Uint8Array) {
     this.#result = result;
+    this.#vcd = vcd;
     this.lines = info.lines;
     this.steps = info.steps;
     this.stepsPerMm = info.stepsPerMm;
@@ -245,6 +248,16 @@ export class GcodeProgram implements GcodeProgramInfo {
     return this.#result.speedProfile();
   }
 
+  /**
+   * The STEP and DIR wires of every axis as an IEEE 1364 Value Change Dump
+   * (ASCII; timescale 1 ns): STEP rises at each step's instant and falls 10 µs
+   * later (Grbl's default pulse), DIR is 1 while the axis runs negative. Opens
+   * in PulseView, GTKWave or sigrok as a logic-analyser capture.
+   */
+  vcd(): Uint8Array {
+    return callCore(this.#vcd);
+  }
+
   /** Releases the core's memory of the trace and the plan now. */
   free(): void {
     this.trace.free();
@@ -291,7 +304,8 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
     const result = run.finish();
     try {
       const info = JSON.parse(result.programJson()) as GcodeProgramInfo;
-      return new GcodeProgram(info, new Trace(callCore(() => result.takeTrace())), result);
+      const handle = callCore(() => result.takeTrace());
+      return new GcodeProgram(info, new Trace(handle), result, () => core.gcodeVcd(handle, result));
     } catch (error) {
       result.free();
       throw error;

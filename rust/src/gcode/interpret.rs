@@ -96,7 +96,7 @@ enum MotionCode {
 /// Motion modes (modal group 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Motion {
-    /// G0: stepped like G1 (voxpath models where the axes go, not how fast).
+    /// G0: stepped like G1, timed at the top rate along the move.
     Rapid,
     /// G1.
     Linear,

@@ -3,8 +3,10 @@
 //! [`TraceBuilder`] as its own segment(s), with a note naming its line.
 //!
 //! - G0 (rapid) is stepped like G1 with the line algorithm and marked as a
-//!   rapid: voxpath models where the axes go, not how fast (a real G0 may
-//!   also dog-leg, each axis at its own top speed).
+//!   rapid, timed at the top rate along it (`timing`; a real G0 may also
+//!   dog-leg, each axis at its own top speed).
+//! - Every move is also pushed to the planner (`timing`, on Grbl 1.1's
+//!   planner.c), which times the whole program when it finishes.
 //! - Each target is rounded to steps from its absolute position (see
 //!   `machine`), so moves never drift; a move starts where the last one
 //!   ended on the grid.
@@ -515,7 +517,7 @@ impl Runner {
         let (kind, algorithm, arc) = match &m.arc {
             None => {
                 let kind = if m.motion == Motion::Rapid {
-                    note.push_str(", a rapid, stepped like G1 (voxpath models where the axes go, not how fast).");
+                    note.push_str(", a rapid, stepped like G1 and timed at the top rate along it (a real G0 may also dog-leg, each axis at its own top speed).");
                     "rapid"
                 } else {
                     note.push_str(", a straight line.");

@@ -1,0 +1,94 @@
+// Time on the planned motion profile (Grbl 1.1's planner, rust/src/planner.rs)
+// through the headless API and the CLI, against the real wasm. The issue's
+// example, worked by hand: G1 X200 F6000 at a = 100 mm/s² from rest reaches
+// 100 mm/s in v/a = 1 s over v²/2a = 50 mm, cruises 100 mm in 1 s and stops
+// in 1 s: 3.0 s. At 80 steps/mm the 400th step is at 5 mm, where s = ½at²
+// gives t = √(2·5/100) s.
+import { describe, expect, it } from 'vitest';
+import { pulseTrains, runGcode } from '../web/core/index.js';
+import { voxpath } from './helpers.js';
+
+const EXAMPLE = 'G1 X200 F6000\n';
+const MACHINE = { stepsPerMm: 80, acceleration: 100, maxRate: 6000 };
+const FLAGS = ['--steps-per-mm', '80', '--acceleration', '100', '--max-rate', '6000'];
+
+/** Rising and falling edge times (ns) of a VCD wire, read from the dump's text. */
+function vcdEdges(text: string, wire: string): { rising: number[]; falling: number[] } {
+  const id = new RegExp(`\\$var wire 1 (\\S+) ${wire} \\$end`).exec(text)?.[1];
+  if (id === undefined) throw new Error(`no wire ${wire}`);
+  const rising: number[] = [];
+  const falling: number[] = [];
+  let now = 0;
+  let body = false;
+  for (const line of text.split('\n')) {
+    if (line.startsWith('$enddefinitions')) body = true;
+    if (!body) continue;
+    if (line.startsWith('#')) now = Number(line.slice(1));
+    else if (line === `1${id}`) rising.push(now);
+    else if (line === `0${id}` && now > 0) falling.push(now);
+  }
+  return { rising, falling };
+}
+
+describe('the planned motion profile', () => {
+  it('times the issue example: 3.0 s, the 400th step at √(2·5/100) s', async () => {
+    const p = await runGcode(EXAMPLE, MACHINE);
+    expect(p.durationSeconds).toBeCloseTo(3.0, 12);
+    const t = p.moves[0]!.timing;
+    expect([t.startSeconds, t.entrySpeed, t.exitSpeed]).toEqual([0, 0, 0]);
+    expect(t.cruiseSpeed).toBeCloseTo(100, 9);
+    expect(t.endSeconds).toBeCloseTo(3.0, 12);
+    const times = p.stepTimes(0, p.steps);
+    expect(times).toBeInstanceOf(Float64Array);
+    expect(times.length).toBe(16_000);
+    expect(times[399]).toBeCloseTo(Math.sqrt((2 * 5) / 100), 12);
+    expect(p.stepTimes(399, 400)[0]).toBe(times[399]);
+    // Cruising at 100 mm/s: 8000 steps/s on X.
+    const [x] = pulseTrains(p.trace, 7000, 7100, p.stepTimes(7000, 7100));
+    expect(x!.edgeSeconds!.length).toBe(100);
+    expect(x!.rateHz![1]).toBeCloseTo(8000, 6);
+    expect(Number.isNaN(x!.rateHz![0])).toBe(true);
+    expect(() => p.stepTimes(0, 16_001)).toThrow(/outside 0..16000/);
+    p.free();
+  });
+
+  it("uses Grbl's defaults when no limits are given, and warns where Grbl would refuse", async () => {
+    // defaults.h: max rate 500 mm/min on every axis, so F6000 runs at 8.33 mm/s.
+    const p = await runGcode('G1 X10\nG93 G1 X20 F2\n', { stepsPerMm: 80 });
+    expect(p.moves[0]!.timing.cruiseSpeed).toBeLessThanOrEqual(500 / 60 + 1e-9);
+    expect(p.warnings.map((w) => [w.line, w.message.match(/error 22|G93/)?.[0]])).toEqual([
+      [1, 'error 22'],
+      [2, 'G93'],
+    ]);
+    p.free();
+    const bad = runGcode('G1 X1 F1', { stepsPerMm: 80, acceleration: -1 });
+    await expect(bad).rejects.toMatchObject({ field: 'acceleration' });
+  });
+});
+
+describe('voxpath gcode timing', () => {
+  it('reports the duration, the step times and a VCD of 16,000 X STEP pulses', () => {
+    const json = voxpath(['gcode', '-', ...FLAGS, '--step-times'], EXAMPLE);
+    expect(json.code).toBe(0);
+    const out = JSON.parse(json.stdout) as { durationSeconds: number; stepTimes: number[] };
+    expect(out.durationSeconds).toBeCloseTo(3.0, 12);
+    expect(out.stepTimes[399]).toBeCloseTo(Math.sqrt(0.1), 12);
+
+    const vcd = voxpath(['gcode', '-', ...FLAGS, '--format', 'vcd'], EXAMPLE);
+    expect(vcd.code).toBe(0);
+    expect(vcd.stdout).toMatch(/\$timescale\s+1\s*ns\s+\$end/);
+    const x = vcdEdges(vcd.stdout, 'x_step');
+    // One rising edge per step; each pulse falls 10 µs later (Grbl's default).
+    expect(x.rising.length).toBe(16_000);
+    expect(x.falling.length).toBe(16_000);
+    expect(x.rising[399]).toBe(Math.round(Math.sqrt(0.1) * 1e9));
+    expect(x.rising[15_999]).toBe(3e9);
+    expect(x.falling[7000]! - x.rising[7000]!).toBe(10_000);
+    expect(vcdEdges(vcd.stdout, 'y_step').rising.length).toBe(0);
+
+    const table = voxpath(['gcode', '-', ...FLAGS, '--format', 'table'], EXAMPLE);
+    expect(table.stdout).toMatch(/duration on the planned profile: 3 s/);
+    const misuse = voxpath(['gcode', '-', ...FLAGS, '--step-times', '--format', 'csv'], EXAMPLE);
+    expect(misuse.code).toBe(2);
+  });
+});
