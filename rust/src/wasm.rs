@@ -230,6 +230,7 @@ impl GcodeRun {
         GcodeResult {
             program_json: serde_json::to_string(&program.info).expect("the program serializes"),
             steps: program.trace.steps(),
+            steps_per_mm: program.info.steps_per_mm,
             trace: Some(program.trace),
             timeline: program.timeline,
         }
@@ -241,6 +242,7 @@ impl GcodeRun {
 pub struct GcodeResult {
     program_json: String,
     steps: u64,
+    steps_per_mm: [f64; crate::machine::MACHINE_AXES],
     trace: Option<Trace>,
     timeline: crate::gcode::timing::Timeline,
 }
@@ -272,6 +274,13 @@ impl GcodeResult {
     #[wasm_bindgen(js_name = speedProfile)]
     pub fn speed_profile(&self) -> Vec<f64> {
         self.timeline.speed_profile()
+    }
+
+    /// Each axis's planned step rate at the speed profile's corners:
+    /// (seconds, steps/s per axis) flat, stride 1 + 3.
+    #[wasm_bindgen(js_name = stepRateProfile)]
+    pub fn step_rate_profile(&self) -> Vec<f64> {
+        self.timeline.step_rate_profile(&self.steps_per_mm)
     }
 
     /// The trace, handed over once.

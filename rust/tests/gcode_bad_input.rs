@@ -36,7 +36,10 @@ fn a_code_number_is_never_another_code() {
     assert_eq!((p.info.steps, p.info.moves.len()), (0, 0));
     assert_eq!(
         (p.info.errors[0].column, p.info.errors[0].message.as_str()),
-        (13, "X without a motion mode: put G0, G1, G2 or G3 on this line or an earlier one")
+        (
+            13,
+            "X without a motion mode: put G0, G1, G2 or G3 on this line or an earlier one"
+        )
     );
     let p = program("G2147483649\nG1999999999\nM1000000000\n", 80.0);
     let warned: Vec<&str> = p.info.warnings.iter().map(|w| w.message.as_str()).collect();
@@ -59,11 +62,15 @@ fn a_far_arc_centre_names_its_word() {
         message.starts_with("J: the arc's centre Y = 12345678901234567000 mm is beyond the machine's ±2^30 steps on y"),
         "{message}"
     );
-    let (_, column, message) = first_error(&format!("G0 X1\nG2 X2 I1{} J0\n", "0".repeat(300)), 80.0);
+    let (_, column, message) =
+        first_error(&format!("G0 X1\nG2 X2 I1{} J0\n", "0".repeat(300)), 80.0);
     assert_eq!(column, 7);
     assert!(message.starts_with("I: the arc's centre X"), "{message}");
     // G90.1 absolute centres with a huge K in G18: K is the zx plane's z.
-    let (_, column, message) = first_error(&format!("G18 G90.1 G2 X0 Z0 K-1{} I0\n", "0".repeat(30)), 80.0);
+    let (_, column, message) = first_error(
+        &format!("G18 G90.1 G2 X0 Z0 K-1{} I0\n", "0".repeat(30)),
+        80.0,
+    );
     assert_eq!(column, 20);
     assert!(message.starts_with("K: the arc's centre Z"), "{message}");
 }
@@ -71,7 +78,8 @@ fn a_far_arc_centre_names_its_word() {
 #[test]
 fn a_huge_radius_is_an_error_naming_r() {
     // R = 10^200: R² overflowed, the centre and sweep were NaN (null in JSON).
-    let (line, column, message) = first_error(&format!("G1 F100\nG2 X10 Y0 R1{}\n", "0".repeat(200)), 80.0);
+    let (line, column, message) =
+        first_error(&format!("G1 F100\nG2 X10 Y0 R1{}\n", "0".repeat(200)), 80.0);
     assert_eq!((line, column), (2, 11));
     assert!(message.starts_with("R: the arc's centre"), "{message}");
     // A large radius that does fit is a correct, finite arc.
@@ -86,7 +94,10 @@ fn a_feed_past_any_machine_is_an_error_naming_f() {
     let huge = format!("G1 X1 F1{}\n", "0".repeat(300));
     let (line, column, message) = first_error(&huge, 80.0);
     assert_eq!((line, column), (1, 7));
-    assert!(message.starts_with("F (feed) must be more than 0 and at most 1e9 mm/min"), "{message}");
+    assert!(
+        message.starts_with("F (feed) must be more than 0 and at most 1e9 mm/min"),
+        "{message}"
+    );
     // In inches the limit is on the feed in mm/min.
     let (_, column, _) = first_error("G20 G1 X1 F100000000\n", 80.0);
     assert_eq!(column, 11);
@@ -96,7 +107,10 @@ fn a_feed_past_any_machine_is_an_error_naming_f() {
 fn a_target_off_the_grid_names_its_axis_word() {
     let (line, column, message) = first_error("G1 X1 Y1000000000000 F100\n", 80.0);
     assert_eq!((line, column), (1, 7));
-    assert!(message.starts_with("Y = 1000000000000 mm is beyond"), "{message}");
+    assert!(
+        message.starts_with("Y = 1000000000000 mm is beyond"),
+        "{message}"
+    );
 }
 
 #[test]

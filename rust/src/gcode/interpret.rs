@@ -611,7 +611,10 @@ impl Interpreter {
                 ),
             });
         }
-        let (centre_uv, format, centre_source) = match (words.get('R'), centre_words[u].or(centre_words[v])) {
+        let (centre_uv, format, centre_source) = match (
+            words.get('R'),
+            centre_words[u].or(centre_words[v]),
+        ) {
             (Some(r), Some(c)) => {
                 let first = if r.column < c.column { r } else { c };
                 return Err(Error::at(
@@ -720,7 +723,8 @@ impl Interpreter {
                 // from the start (G91.1) or the offset, so an error about it
                 // names the first centre word.
                 let source = |axis: usize| {
-                    centre_words[axis].map_or((first.letter, first.column), |w| (w.letter, w.column))
+                    centre_words[axis]
+                        .map_or((first.letter, first.column), |w| (w.letter, w.column))
                 };
                 (centre, ArcFormat::Centre, [source(u), source(v)])
             }

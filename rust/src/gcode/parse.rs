@@ -178,7 +178,10 @@ impl<'t> Reader<'t> {
 
     /// What stands at the reader, as an error quotes it.
     fn next_char(&self) -> &'t str {
-        let len = self.text[self.at..].chars().next().map_or(0, char::len_utf8);
+        let len = self.text[self.at..]
+            .chars()
+            .next()
+            .map_or(0, char::len_utf8);
         &self.text[self.at..self.at + len]
     }
 
@@ -387,7 +390,10 @@ impl<'t> Reader<'t> {
             let sign = if negative { "-" } else { "" };
             return Err(problem(
                 column,
-                format!("malformed number: {letter}{sign}{} is too large", echo(text)),
+                format!(
+                    "malformed number: {letter}{sign}{} is too large",
+                    echo(text)
+                ),
             ));
         }
         Ok(Word {
@@ -546,7 +552,13 @@ mod tests {
         );
         let e = errors(&format!("M{}", "9".repeat(100)));
         assert_eq!(e[0].0, 2);
-        assert!(e[0].1.starts_with("malformed number: code number '9999999999999999... (100 characters)' is too large"), "{}", e[0].1);
+        assert!(
+            e[0].1.starts_with(
+                "malformed number: code number '9999999999999999... (100 characters)' is too large"
+            ),
+            "{}",
+            e[0].1
+        );
         assert_eq!(errors("G90.12")[0].0, 2);
         assert_eq!(errors("G1. X1")[0].0, 2);
     }
@@ -570,7 +582,10 @@ mod tests {
         let b = parse_line(&line);
         assert_eq!(b.words.len(), 250_000);
         let last = b.words[249_999];
-        assert_eq!((last.value, last.column as usize), (249_999.0, line.len() - 7));
+        assert_eq!(
+            (last.value, last.column as usize),
+            (249_999.0, line.len() - 7)
+        );
     }
 
     #[test]

@@ -180,6 +180,26 @@ impl Timeline {
         out
     }
 
+    /// Each axis's planned step rate at the same corners as
+    /// [`Timeline::speed_profile`]: (seconds, then steps/s per axis) flat,
+    /// the speed times the axis's share of the block's direction times its
+    /// steps per mm.
+    pub fn step_rate_profile(&self, steps_per_mm: &[f64; MACHINE_AXES]) -> Vec<f64> {
+        let speeds = self.speed_profile();
+        let mut out = Vec::with_capacity(speeds.len() / 2 * (1 + MACHINE_AXES));
+        for (b, corners) in self.plan.blocks.iter().zip(speeds.chunks_exact(8)) {
+            for corner in corners.chunks_exact(2) {
+                out.push(corner[0]);
+                for axis in 0..MACHINE_AXES {
+                    out.push(
+                        corner[1] * (b.delta_mm[axis] / b.length_mm).abs() * steps_per_mm[axis],
+                    );
+                }
+            }
+        }
+        out
+    }
+
     /// The instant of every step index in `from..to`, seconds from the
     /// program's start (see the module comment).
     pub fn step_seconds(&self, from: u64, to: u64) -> Vec<f64> {
@@ -250,6 +270,10 @@ mod tests {
         assert_eq!(all.len(), 16_000);
         assert!(close(all[15_999], 3.0));
         assert!(all.windows(2).all(|w| w[0] < w[1]));
+        // Cruising at 100 mm/s along X: 8000 steps/s on X, none on Y, Z.
+        let rates = program.timeline.step_rate_profile(&[80.0; 3]);
+        assert_eq!(rates.len(), 4 * 4);
+        assert!(close(rates[4 + 1], 8000.0) && rates[4 + 2] == 0.0);
     }
 
     #[test]
