@@ -90,5 +90,6 @@ describe('voxpath gcode timing', () => {
     expect(table.stdout).toMatch(/duration on the planned profile: 3 s/);
     const misuse = voxpath(['gcode', '-', ...FLAGS, '--step-times', '--format', 'csv'], EXAMPLE);
     expect(misuse.code).toBe(2);
-  });
+    // Four CLI processes, each loading the wasm: seconds on a loaded 2-core machine.
+  }, 30_000);
 });
