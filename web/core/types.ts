@@ -149,7 +149,8 @@ export interface TraceSummary {
   metrics: Metrics;
   /** The distance from the ideal path no point exceeds, as the algorithm guarantees; null where it guarantees none. */
   deviationBound: DeviationBound | null;
-  segments: SegmentInfo[];
+  /** How many segments the trace has (a G-code program has one or more per move); Trace.segments reads them. */
+  segmentCount: number;
 }
 
 /** A guaranteed largest distance from the ideal path (grid units), and why it holds. */
