@@ -7,9 +7,7 @@
  * `npm run bench` (bench/run.mjs) runs it with the other benches and prints
  * its group (bench/types.ts).
  */
-import Toolpath from 'gcode-toolpath';
 import { runGcode } from '../web/core/index.js';
-import type { GcodeSettings } from '../web/core/index.js';
 import type { BenchGroup, BenchRow } from './types.js';
 
 /** Lines in the generated program. */
@@ -44,11 +42,10 @@ export function generateProgram(lines: number): string {
   return out.join('\n') + '\n';
 }
 
-/** Column names: rates of the whole run, slices included; the ratios to the goals' peers; the plan's share. */
+/** Column names: rates of the whole run, slices included; the plan's share. */
 const COLUMNS = {
   lines: 'lines/s',
   steps: 'steps/s',
-  vsToolpath: 'vs gcode-toolpath',
   finishPerMove: 'finish µs/move',
   stepTimes: 'stepTimes steps/s',
 } as const;
@@ -58,87 +55,10 @@ const STEP_TIME_ROUNDS = 5;
 
 const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
 
-/** Rounds of each end-to-end measurement; the median counts. */
-const ROUNDS = 3;
-
-/** The median seconds of `rounds` runs of `run`, after one untimed run (the compilers' warm-up). */
-async function medianSeconds(run: () => Promise<unknown>, rounds = ROUNDS): Promise<number> {
-  await run();
-  const seconds: number[] = [];
-  for (let i = 0; i < rounds; i++) {
-    const started = performance.now();
-    await run();
-    seconds.push((performance.now() - started) / 1000);
-  }
-  seconds.sort((a, b) => a - b);
-  return seconds[Math.floor(rounds / 2)]!;
-}
-
-/**
- * cncjs's gcode-toolpath (3.0.0) on the same text, as its README uses it:
- * parse every line, keep the modal state, and hand each line and arc to a
- * callback that collects it. The segments it builds are what a viewer
- * draws; it takes no steps.
- */
-async function toolpathSegments(source: string): Promise<number> {
-  const segments: unknown[] = [];
-  await new Promise<void>((resolve, reject) => {
-    const toolpath = new Toolpath({
-      addLine: (modal: unknown, v1: unknown, v2: unknown) => segments.push({ modal, v1, v2 }),
-      addArcCurve: (modal: unknown, v1: unknown, v2: unknown, v0: unknown) => segments.push({ modal, v1, v2, v0 }),
-    });
-    toolpath.loadFromString(source, (error: unknown) => (error ? reject(error as Error) : resolve()));
-  });
-  return segments.length;
-}
-
-/** One runGcode of `source` as a user calls it, freed after; the program's lines, moves and steps. */
-async function runOnce(source: string, settings: GcodeSettings): Promise<{ lines: number; moves: number; steps: number }> {
-  const program = await runGcode(source, settings);
-  try {
-    if (program.errors.length > 0) throw new Error(`bench program failed: ${JSON.stringify(program.errors[0])}`);
-    return { lines: program.lines, moves: program.moveCount, steps: program.steps };
-  } finally {
-    program.free();
-  }
-}
-
-/**
- * The end-to-end rows (issue 13's goals: at 1 step/mm at least 5x
- * gcode-toolpath's lines per second, at 80 steps/mm at least 50 M steps/s)
- * and the loop rows with each arc algorithm at 80 steps/mm.
- */
+/** Runs the generated program with each arc algorithm; one row each. */
 export default async function benchGcode(): Promise<BenchGroup> {
   const source = generateProgram(GCODE_BENCH_LINES);
   const rows: BenchRow[] = [];
-  let segments = 0;
-  const toolpathSeconds = await medianSeconds(async () => {
-    segments = await toolpathSegments(source);
-  });
-  const toolpathLines = GCODE_BENCH_LINES / toolpathSeconds;
-  rows.push({
-    name: `gcode-toolpath (cncjs): parse, modal state, ${segments.toLocaleString('en-US')} segments`,
-    steps: 0,
-    rates: { [COLUMNS.lines]: toolpathLines },
-  });
-  const cases: { label: string; settings: GcodeSettings }[] = [
-    { label: 'runGcode, 1 step/mm', settings: { stepsPerMm: 1 } },
-    { label: 'runGcode, 80 steps/mm', settings: { stepsPerMm: 80 } },
-    { label: 'runGcode, 80 steps/mm, arcs: arc-segments', settings: { stepsPerMm: 80, arcAlgorithm: 'arc-segments' } },
-  ];
-  for (const { label, settings } of cases) {
-    let run = { lines: 0, moves: 0, steps: 0 };
-    const seconds = await medianSeconds(async () => {
-      run = await runOnce(source, settings);
-    });
-    const lines = run.lines / seconds;
-    rows.push({
-      name: `${label} (${run.moves.toLocaleString('en-US')} moves)`,
-      steps: run.steps,
-      rates: { [COLUMNS.lines]: lines, [COLUMNS.steps]: run.steps / seconds },
-      ratios: { [COLUMNS.vsToolpath]: lines / toolpathLines },
-    });
-  }
   for (const arcAlgorithm of ['circle', 'arc-segments'] as const) {
     // One run each, not the best of several: a run is seconds long, so the
     // compilers' warm-up is a small part of it, and the bench stays short.
@@ -158,12 +78,12 @@ export default async function benchGcode(): Promise<BenchGroup> {
       stepTimeSeconds.push((performance.now() - t0) / 1000);
     }
     rows.push({
-      name: `${program.lines.toLocaleString('en-US')} lines, ${program.moveCount.toLocaleString('en-US')} moves, arcs: ${arcAlgorithm}`,
+      name: `${program.lines.toLocaleString('en-US')} lines, ${program.moves.length.toLocaleString('en-US')} moves, arcs: ${arcAlgorithm}`,
       steps: program.steps,
       rates: {
         [COLUMNS.lines]: program.lines / seconds,
         [COLUMNS.steps]: program.steps / seconds,
-        [COLUMNS.finishPerMove]: ((finished - linesDoneAt) * 1000) / program.moveCount,
+        [COLUMNS.finishPerMove]: ((finished - linesDoneAt) * 1000) / program.moves.length,
         [COLUMNS.stepTimes]: program.steps / median(stepTimeSeconds),
       },
       ratios: { 'finish / run': (finished - linesDoneAt) / (finished - started) },
@@ -171,11 +91,10 @@ export default async function benchGcode(): Promise<BenchGroup> {
     program.free();
   }
   return {
-    title: 'G-code, end to end',
+    title: 'G-code',
     notes: [
-      `A generated ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program (G1 moves and G2 arcs in a 40 mm square) through runGcode (wasm): parse, interpret, step every move (lines by regions), build the trace and the program's record; moves are read on demand. Median of ${ROUNDS} rounds after a warm-up.`,
-      `${COLUMNS.lines} and ${COLUMNS.steps}: source lines and steps over the seconds of the whole run, as a worker sees it (slices included).`,
-      `${COLUMNS.vsToolpath}: lines per second over gcode-toolpath's on the same text in the same run (it parses and builds segments, no steps). Goals: at least 5x at 1 step/mm; at least 50 M steps/s at 80 steps/mm.`,
+      `A generated ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program at 80 steps/mm through runGcode (wasm): parse, interpret, step every move (lines by regions), build the trace.`,
+      `${COLUMNS.lines} and ${COLUMNS.steps}: source lines and steps over the seconds of the whole run, as a worker sees it.`,
       `${COLUMNS.finishPerMove}: the run's finish (after the last line ran: Grbl-style look-ahead planning of every block, each move's timing, the JSON record, the trace), per move; 'finish / run' is its share of the whole run.`,
       `${COLUMNS.stepTimes}: program.stepTimes(0, steps), every step's instant from the plan in closed form (median of ${STEP_TIME_ROUNDS} rounds).`,
     ],

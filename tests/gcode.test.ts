@@ -35,53 +35,7 @@ describe('runGcode', () => {
     expect(p.moveAtLine(2)).toBeUndefined();
     expect([p.pointBeforeLine(1), p.pointBeforeLine(5), p.pointBeforeLine(7)]).toEqual([0, 4, 8]);
     expect(p.trace.segments[2]!.note).toMatch(/^Line 5, G1: /);
-    // Segments are read by range; the summary carries their count.
-    expect(p.trace.segmentCount).toBe(4);
-    expect(p.trace.segmentsInRange(1, 2).map((s) => [s.firstStep, s.steps])).toEqual([[2, 2]]);
-    expect([p.trace.segmentOfStep(0), p.trace.segmentOfStep(5), p.trace.segmentOfStep(8)]).toEqual([0, 2, 3]);
-    expect(() => p.trace.segmentsInRange(3, 5)).toThrow(RangeError);
     expect(() => p.lineOfStep(8)).toThrow(RangeError);
-    p.free();
-  });
-
-  it('reads moves from the core when asked, by range, each with its start in steps and its note', async () => {
-    const p = await runGcode(SQUARE, { stepsPerMm: 2 });
-    expect(p.moveCount).toBe(4);
-    const [second, third] = p.movesInRange(1, 3);
-    expect([second!.line, second!.fromSteps, second!.toSteps, third!.fromSteps]).toEqual([4, [2, 0, 0], [2, 2, 0], [2, 2, 0]]);
-    expect(second!.note).toBe('Line 4, G1: (1, 0, 0) -> (1, 1, 0) mm = (2, 0, 0) -> (2, 2, 0) steps, a straight line.');
-    expect(p.move(3).line).toBe(6);
-    expect(p.stepsOfMove(2)).toEqual({ firstStep: 4, steps: 2 });
-    expect([p.moveIndexAtLine(5), p.moveIndexAtLine(2)]).toEqual([2, -1]);
-    expect(() => p.movesInRange(3, 5)).toThrow(RangeError);
-    expect(() => p.stepsOfMove(4)).toThrow(RangeError);
-    p.free();
-  });
-
-  it('reads a lone CR as a line break', async () => {
-    // Classic Mac OS line endings: the program was one line, so its first
-    // move ran and the rest were its words.
-    const p = await runGcode('G1 X1 F600\rY1\rX0\r', { stepsPerMm: 2 });
-    expect(p.errors).toEqual([]);
-    expect([p.lines, p.moveCount, p.steps]).toEqual([3, 3, 6]);
-    p.free();
-  });
-
-  it('stops reading a line at its first error, however long the line', async () => {
-    // A million words after an error at column 4: the line is not read on
-    // (the reader it replaced read every word of the line first, each time
-    // counting the columns from the line's start).
-    const p = await runGcode(`G1 #${' X1'.repeat(1_000_000)}\n`, { stepsPerMm: 2 });
-    expect(p.errors.map((e) => [e.line, e.column])).toEqual([[1, 4]]);
-    p.free();
-  });
-
-  it('refuses a code number past 32 bits at its column instead of reading another code', async () => {
-    // G2147483651 was G3 (2147483651 * 10 wraps in u32).
-    const p = await runGcode('G1 X0 F100\nG21 G42949672960 X1\n', { stepsPerMm: 2 });
-    expect(p.errors).toEqual([
-      { line: 2, column: 6, message: "malformed number: code number '42949672960' is too large: no G code has a number past 4294967295" },
-    ]);
     p.free();
   });
 
@@ -106,14 +60,6 @@ describe('runGcode', () => {
   it('rejects bad settings naming the setting', async () => {
     expect((await rejection(runGcode(SQUARE, { stepsPerMm: -1 }))).field).toBe('stepsPerMm');
     expect((await rejection(runGcode(SQUARE, { stepsPerMm: 1, lineAlgorithm: 'bresenham2d' }))).field).toBe('lineAlgorithm');
-  });
-
-  it('refuses a program longer than it can hold before running any of it', async () => {
-    // 1.5M lines used to trap ("RuntimeError: unreachable") when wasm
-    // memory ran out part way; past MAX_LINES the run does not start.
-    const e = await rejection(runGcode('G1 X1 F100\n'.repeat(2_000_001), { stepsPerMm: 1 }));
-    expect(e.field).toBe('source');
-    expect(e.message).toMatch(/^source: the program has 2000001 lines; voxpath runs at most 2000000 in one run/);
   });
 
   it('runs long programs in slices, reporting progress, and can be cancelled', async () => {

@@ -738,10 +738,7 @@ pub struct TraceSummary<'a> {
     pub metrics: &'a Metrics,
     /// Absent (null) where the algorithm guarantees none.
     pub deviation_bound: Option<&'a DeviationBound>,
-    /// How many segments the trace has; [`Trace::segment_summaries`] gives
-    /// them by range (a G-code program has one or more per move, so they
-    /// are not all written out with every summary).
-    pub segment_count: usize,
+    pub segments: Vec<SegmentSummary<'a>>,
 }
 
 #[derive(Serialize)]
@@ -765,28 +762,18 @@ impl Trace {
             columns: &self.columns,
             metrics: self.metrics(),
             deviation_bound: self.deviation_bound(),
-            segment_count: self.segments.len(),
+            segments: self
+                .segments
+                .iter()
+                .map(|s| SegmentSummary {
+                    first_step: s.first_step,
+                    steps: s.steps,
+                    start: s.start.coords().to_vec(),
+                    ideal: s.ideal.info(),
+                    note: &s.setup_note,
+                })
+                .collect(),
         }
-    }
-
-    /// Segments `from..to` (segment indices) as a viewer reads them.
-    pub fn segment_summaries(&self, from: usize, to: usize) -> Vec<SegmentSummary<'_>> {
-        self.segments[from..to]
-            .iter()
-            .map(|s| SegmentSummary {
-                first_step: s.first_step,
-                steps: s.steps,
-                start: s.start.coords().to_vec(),
-                ideal: s.ideal.info(),
-                note: &s.setup_note,
-            })
-            .collect()
-    }
-
-    /// Index of the segment that takes step index k (the last segment for
-    /// k = steps, the point after the last step).
-    pub fn segment_index_of_step(&self, k: u64) -> usize {
-        self.segment_of_point(k)
     }
 
     /// The ideal path of all segments joined, for drawing (stride dims).

@@ -109,29 +109,6 @@ impl TraceHandle {
         serde_json::to_string(&self.0.summary()).expect("the summary serializes")
     }
 
-    /// Segments with segment indices `from..to` as a JSON array (see
-    /// `trace::SegmentSummary`): first step, steps, start, ideal path, note.
-    #[wasm_bindgen(js_name = segmentsJson)]
-    pub fn segments_json(&self, from: u32, to: u32) -> Result<String, JsValue> {
-        let count = self.0.segments().len();
-        if from > to || to as usize > count {
-            return Err(to_js_error(&Error::field(
-                "range",
-                format!("segment indices {from}..{to} are outside 0..{count}"),
-            )));
-        }
-        let segments = self.0.segment_summaries(from as usize, to as usize);
-        Ok(serde_json::to_string(&segments).expect("segments serialize"))
-    }
-
-    /// Index of the segment that takes step index `step` (0..=steps; the
-    /// last point belongs to the last segment that took a step).
-    #[wasm_bindgen(js_name = segmentOfStep)]
-    pub fn segment_of_step(&self, step: u32) -> Result<u32, JsValue> {
-        let (step, _) = self.point_range(step, step + 1)?;
-        Ok(self.0.segment_index_of_step(step) as u32)
-    }
-
     /// Points with point indices `from..to` (Int32Array, stride dims),
     /// decoded straight into the i32 array JS receives: 4 bytes per
     /// coordinate in wasm memory while the copy is made, nothing more.
@@ -238,7 +215,6 @@ impl GcodeRun {
     pub fn new(source: String, settings_json: &str) -> Result<GcodeRun, JsValue> {
         let settings =
             crate::gcode::Settings::from_json(settings_json).map_err(|e| to_js_error(&e))?;
-        crate::gcode::check_length(&source).map_err(|e| to_js_error(&e))?;
         Ok(GcodeRun(crate::gcode::Runner::new(source, settings)))
     }
 

@@ -66,9 +66,8 @@ export class Trace implements TraceSummary {
   readonly columns: ColumnSpec[];
   readonly metrics: Metrics;
   readonly deviationBound: DeviationBound | null;
-  readonly segmentCount: number;
+  readonly segments: SegmentInfo[];
   readonly #handle: TraceHandle;
-  #segments?: SegmentInfo[];
   #points?: Int32Array;
   #decisions?: DecisionColumns;
   #deviation?: Float64Array;
@@ -85,25 +84,7 @@ export class Trace implements TraceSummary {
     this.columns = s.columns;
     this.metrics = s.metrics;
     this.deviationBound = s.deviationBound;
-    this.segmentCount = s.segmentCount;
-  }
-
-  /** Every segment, read from the core on first use (a long G-code program has many: prefer segmentsInRange). */
-  get segments(): SegmentInfo[] {
-    this.#segments ??= this.segmentsInRange(0, this.segmentCount);
-    return this.#segments;
-  }
-
-  /** Segments with segment indices from..to, in step order. */
-  segmentsInRange(from: number, to: number): SegmentInfo[] {
-    checkRange('segment indices', from, to, this.segmentCount);
-    return JSON.parse(callCore(() => this.#handle.segmentsJson(from, to))) as SegmentInfo[];
-  }
-
-  /** Index of the segment that takes step index k (for k = steps, the last segment that took a step). */
-  segmentOfStep(k: number): number {
-    checkRange('step index', k, k, this.steps);
-    return callCore(() => this.#handle.segmentOfStep(k));
+    this.segments = s.segments;
   }
 
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */

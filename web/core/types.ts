@@ -149,8 +149,7 @@ export interface TraceSummary {
   metrics: Metrics;
   /** The distance from the ideal path no point exceeds, as the algorithm guarantees; null where it guarantees none. */
   deviationBound: DeviationBound | null;
-  /** How many segments the trace has (a G-code program has one or more per move); Trace.segments reads them. */
-  segmentCount: number;
+  segments: SegmentInfo[];
 }
 
 /** A guaranteed largest distance from the ideal path (grid units), and why it holds. */

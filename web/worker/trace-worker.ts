@@ -52,10 +52,18 @@ function tracedPath(t: Trace): TracedPath {
   return { summary: { algorithm, dims, steps, start, end, columns, metrics, deviationBound }, points, idealPolyline };
 }
 
-/** The note of the segment that takes step index `stepIndex` (the last segment's at the end). */
+/** The note of the segment that takes step index `stepIndex` (the first segment's before any step). */
 function segmentNote(t: Trace, stepIndex: number): string {
-  if (t.segmentCount === 0) return '';
-  return t.segmentsInRange(t.segmentOfStep(stepIndex), t.segmentOfStep(stepIndex) + 1)[0]!.note;
+  const segments = t.segments;
+  // Segments are in step order: the last one starting at or before the step, by bisection.
+  let low = 0;
+  let high = segments.length - 1;
+  while (low < high) {
+    const middle = (low + high + 1) >> 1;
+    if (segments[middle]!.firstStep <= stepIndex) low = middle;
+    else high = middle - 1;
+  }
+  return segments[low]?.note ?? '';
 }
 
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {

@@ -24,5 +24,5 @@ pub mod vcd;
 
 pub use program::{
     ArcInfo, ArcStepping, Diagnostic, Move, MoveDetail, Program, ProgramInfo, Progress, Runner,
-    Settings, check_length, run,
+    Settings, run,
 };

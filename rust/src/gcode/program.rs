@@ -51,27 +51,6 @@ pub const ARC_ALGORITHMS: &[&str] = &["circle", "arc-segments"];
 /// Warnings kept per program; the rest are counted.
 pub const MAX_WARNINGS: usize = 1000;
 
-/// Lines a program may have. What a run keeps per moving line (its move
-/// record, its trace segment with the stepper state replays start from,
-/// and the segment's note) is about 1 KB, so this bound keeps a program
-/// well inside wasm32's 4 GB with its steps (2 bytes each, up to maxSteps)
-/// beside it. A longer program is refused before it runs.
-pub const MAX_LINES: u32 = 2_000_000;
-
-/// Refuses a program longer than [`MAX_LINES`], before any of it runs.
-pub fn check_length(source: &str) -> Result<(), Error> {
-    let lines = count_lines(source);
-    if lines > MAX_LINES {
-        return Err(Error::field(
-            "source",
-            format!(
-                "the program has {lines} lines; voxpath runs at most {MAX_LINES} in one run (each moving line keeps about 1 KB of its trace): split the program into parts of at most {MAX_LINES} lines"
-            ),
-        ));
-    }
-    Ok(())
-}
-
 pub const STEPS_PER_MM: OptionSpec = OptionSpec {
     name: "stepsPerMm",
     kind: OptionKind::Number,
