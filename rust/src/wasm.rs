@@ -189,7 +189,7 @@ impl TraceHandle {
 /// (`gcode::vcd`): `trace` is the one taken from `result`.
 #[wasm_bindgen(js_name = gcodeVcd)]
 pub fn gcode_vcd(trace: &TraceHandle, result: &GcodeResult) -> Result<Vec<u8>, JsValue> {
-    if trace.0.steps() != result.info.steps {
+    if trace.0.steps() != result.steps {
         return Err(to_js_error(&Error::field(
             "trace",
             "is not the trace of this G-code result",
@@ -228,74 +228,41 @@ impl GcodeRun {
     pub fn finish(self) -> GcodeResult {
         let program = self.0.finish();
         GcodeResult {
-            info: program.info,
+            program_json: serde_json::to_string(&program.info).expect("the program serializes"),
+            steps: program.trace.steps(),
+            steps_per_mm: program.info.steps_per_mm,
             trace: Some(program.trace),
             timeline: program.timeline,
         }
     }
 }
 
-/// A finished G-code run: the program's record, read in parts, and its
-/// trace. Moves are read by range: a 100,000-line program's moves are not
-/// built as 100,000 objects with sentences unless someone reads them all.
+/// A finished G-code run: the program's record as JSON, and its trace.
 #[wasm_bindgen]
 pub struct GcodeResult {
-    info: crate::gcode::ProgramInfo,
+    program_json: String,
+    steps: u64,
+    steps_per_mm: [f64; crate::machine::MACHINE_AXES],
     trace: Option<Trace>,
     timeline: crate::gcode::timing::Timeline,
 }
 
 #[wasm_bindgen]
 impl GcodeResult {
-    /// Counts, pulses, warnings and errors as JSON text (see
-    /// `gcode::ProgramInfo`; the moves are given as `moveCount`).
+    /// Moves, pulses, warnings and errors as JSON text (see `gcode::ProgramInfo`).
     #[wasm_bindgen(js_name = programJson)]
     pub fn program_json(&self) -> String {
-        serde_json::to_string(&self.info).expect("the program serializes")
-    }
-
-    /// Moves `from..to` as a JSON array, each with its note (see
-    /// `gcode::MoveDetail`).
-    #[wasm_bindgen(js_name = movesJson)]
-    pub fn moves_json(&self, from: u32, to: u32) -> Result<String, JsValue> {
-        let count = self.info.moves.len();
-        if from > to || to as usize > count {
-            return Err(to_js_error(&Error::field(
-                "range",
-                format!("move indices {from}..{to} are outside 0..{count}"),
-            )));
-        }
-        let moves: Vec<_> = (from as usize..to as usize)
-            .map(|i| self.info.move_detail(i))
-            .collect();
-        Ok(serde_json::to_string(&moves).expect("moves serialize"))
-    }
-
-    /// Step index of every move's first step, in move order (Float64Array:
-    /// exact up to 2^53), with one more entry, the program's step count:
-    /// move i took steps firstSteps[i]..firstSteps[i + 1].
-    #[wasm_bindgen(js_name = moveFirstSteps)]
-    pub fn move_first_steps(&self) -> Vec<f64> {
-        let moves = &self.info.moves;
-        let mut out: Vec<f64> = moves.iter().map(|m| m.first_step as f64).collect();
-        out.push(self.info.steps as f64);
-        out
-    }
-
-    /// The 1-based source line of every move, in move order.
-    #[wasm_bindgen(js_name = moveLines)]
-    pub fn move_lines(&self) -> Vec<u32> {
-        self.info.moves.iter().map(|m| m.line).collect()
+        self.program_json.clone()
     }
 
     /// The instant of each step index in `from..to`, seconds from the
     /// program's start, on the planned profile (`gcode::timing`).
     #[wasm_bindgen(js_name = stepTimes)]
     pub fn step_times(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
-        if from > to || to as u64 > self.info.steps {
+        if from > to || to as u64 > self.steps {
             return Err(to_js_error(&Error::field(
                 "range",
-                format!("step indices {from}..{to} are outside 0..{}", self.info.steps),
+                format!("step indices {from}..{to} are outside 0..{}", self.steps),
             )));
         }
         Ok(self.timeline.step_seconds(from as u64, to as u64))
@@ -313,7 +280,7 @@ impl GcodeResult {
     /// (seconds, steps/s per axis) flat, stride 1 + 3.
     #[wasm_bindgen(js_name = stepRateProfile)]
     pub fn step_rate_profile(&self) -> Vec<f64> {
-        self.timeline.step_rate_profile(&self.info.steps_per_mm)
+        self.timeline.step_rate_profile(&self.steps_per_mm)
     }
 
     /// The trace, handed over once.

@@ -16,9 +16,9 @@
  */
 import { callCore } from './errors.js';
 import { encodeRequest } from './request.js';
-import type { GcodeResult } from './pkg/voxpath.js';
 import { Trace } from './trace.js';
 import { loadCore } from './wasm.js';
+import type { GcodeResult } from './pkg/voxpath.js';
 
 /** How the program is run. Give stepsPerMm, or stepAngle, microsteps and pitch. */
 export interface GcodeSettings {
@@ -118,15 +118,14 @@ export interface GcodeProgress {
   done: boolean;
 }
 
-/** The program's record, as the core reports it (its moves are read on demand: see GcodeProgram). */
+/** The program's record, as the core reports it. */
 export interface GcodeProgramInfo {
   lines: number;
   steps: number;
   stepsPerMm: number[];
   lineAlgorithm: string;
   arcAlgorithm: string;
-  /** How many moves the program made. */
-  moveCount: number;
+  moves: GcodeMove[];
   /** How long the program takes on the planned profile, seconds. */
   durationSeconds: number;
   /** Pulses per axis (x, y, z) over the whole program. */
@@ -140,31 +139,14 @@ export interface GcodeProgramInfo {
   stoppedAtLine: number | null;
 }
 
-/** Index of the last entry of the ascending `sorted` that is at most `value`, or -1 (a bisection). */
-function lastAtMost(sorted: ArrayLike<number>, value: number): number {
-  let low = 0;
-  let high = sorted.length;
-  while (low < high) {
-    const middle = (low + high) >> 1;
-    if (sorted[middle]! <= value) low = middle + 1;
-    else high = middle;
-  }
-  return low - 1;
-}
-
-/**
- * A program that has run: its record and its trace. Moves are read from the
- * core when asked for (`move(i)`, `movesInRange`), not built as one object
- * per move up front; the lookups between steps, moves and lines bisect two
- * typed arrays (8 and 4 bytes per move).
- */
+/** A program that has run: its moves and its trace. */
 export class GcodeProgram implements GcodeProgramInfo {
   readonly lines: number;
   readonly steps: number;
   readonly stepsPerMm: number[];
   readonly lineAlgorithm: string;
   readonly arcAlgorithm: string;
-  readonly moveCount: number;
+  readonly moves: GcodeMove[];
   readonly durationSeconds: number;
   readonly pulses: number[];
   readonly warnings: GcodeDiagnostic[];
@@ -173,24 +155,20 @@ export class GcodeProgram implements GcodeProgramInfo {
   readonly stoppedAtLine: number | null;
   /** Every step of every move, in order (dims 3: x, y, z in steps). */
   readonly trace: Trace;
+  #moveByLine?: Map<number, number>;
   readonly #result: GcodeResult;
   readonly #vcd: () => Uint8Array;
-  /** Move i took steps firstSteps[i]..firstSteps[i + 1]; the last entry is `steps`. */
-  readonly #firstSteps: Float64Array;
-  /** The source line of every move, ascending (one move per line at most). */
-  readonly #moveLines: Uint32Array;
-  #moves?: GcodeMove[];
 
-  /** `result` is the core's record of the run (its moves and its plan); `vcd` writes the run's VCD. */
-  constructor(result: GcodeResult, trace: Trace, vcd: () => Uint8Array) {
-    const info = JSON.parse(result.programJson()) as GcodeProgramInfo;
+  /** `result` is the core's record of the run (its plan); `vcd` writes the run's VCD. */
+  constructor(info: GcodeProgramInfo, trace: Trace, result: GcodeResult, vcd: () => Uint8Array) {
+    this.#result = result;
     this.#vcd = vcd;
     this.lines = info.lines;
     this.steps = info.steps;
     this.stepsPerMm = info.stepsPerMm;
     this.lineAlgorithm = info.lineAlgorithm;
     this.arcAlgorithm = info.arcAlgorithm;
-    this.moveCount = info.moveCount;
+    this.moves = info.moves;
     this.durationSeconds = info.durationSeconds;
     this.pulses = info.pulses;
     this.warnings = info.warnings;
@@ -198,41 +176,26 @@ export class GcodeProgram implements GcodeProgramInfo {
     this.errors = info.errors;
     this.stoppedAtLine = info.stoppedAtLine;
     this.trace = trace;
-    this.#result = result;
-    this.#firstSteps = result.moveFirstSteps();
-    this.#moveLines = result.moveLines();
   }
 
-  /** Moves from..to (move indices, in step order), each with its note. */
-  movesInRange(from: number, to: number): GcodeMove[] {
-    if (!Number.isInteger(from) || !Number.isInteger(to) || from < 0 || to < from || to > this.moveCount) {
-      throw new RangeError(`move indices ${from}..${to} are outside 0..${this.moveCount}`);
-    }
-    return JSON.parse(callCore(() => this.#result.movesJson(from, to))) as GcodeMove[];
-  }
-
-  /** Move index i. */
-  move(i: number): GcodeMove {
-    return this.movesInRange(i, i + 1)[0]!;
-  }
-
-  /** Every move, read from the core on first use (for a long program prefer movesInRange). */
-  get moves(): GcodeMove[] {
-    this.#moves ??= this.movesInRange(0, this.moveCount);
-    return this.#moves;
-  }
-
-  /** Index of the move that took step index k (moves are in step order; a bisection). */
+  /** Index of the move that took step index k (moves are in step order; a binary search). */
   moveOfStep(k: number): number {
     if (!Number.isInteger(k) || k < 0 || k >= this.steps) throw new RangeError(`step index ${k} is outside 0..${this.steps}`);
-    // The last move starting at or before k that takes steps: a move of
-    // no steps starts where the next one does.
-    return lastAtMost(this.#firstSteps.subarray(0, this.moveCount), k);
+    let lo = 0;
+    let hi = this.moves.length - 1;
+    // The first move whose end (firstStep + steps) is past k.
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      const m = this.moves[mid]!;
+      if (m.firstStep + m.steps <= k) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo;
   }
 
   /** The 1-based source line that produced step index k. */
   lineOfStep(k: number): number {
-    return this.#moveLines[this.moveOfStep(k)]!;
+    return this.moves[this.moveOfStep(k)]!.line;
   }
 
   /** Source lines of step indices from..to: lineByStep[i] produced step from + i. */
@@ -243,29 +206,19 @@ export class GcodeProgram implements GcodeProgramInfo {
     const out = new Uint32Array(to - from);
     if (from === to) return out;
     for (let i = this.moveOfStep(from), k = from; k < to; i++) {
-      const end = Math.min(to, this.#firstSteps[i + 1]!);
-      out.fill(this.#moveLines[i]!, k - from, end - from);
+      const m = this.moves[i]!;
+      const end = Math.min(to, m.firstStep + m.steps);
+      out.fill(m.line, k - from, end - from);
       k = Math.max(k, end);
     }
     return out;
   }
 
-  /** The index of the move programmed on a 1-based source line, or -1 if that line did not move. */
-  moveIndexAtLine(line: number): number {
-    const i = lastAtMost(this.#moveLines, line);
-    return i >= 0 && this.#moveLines[i] === line ? i : -1;
-  }
-
   /** The move programmed on a 1-based source line, if that line moved. */
   moveAtLine(line: number): GcodeMove | undefined {
-    const i = this.moveIndexAtLine(line);
-    return i < 0 ? undefined : this.move(i);
-  }
-
-  /** Step index of move i's first step, and its number of steps. */
-  stepsOfMove(i: number): { firstStep: number; steps: number } {
-    if (!Number.isInteger(i) || i < 0 || i >= this.moveCount) throw new RangeError(`move index ${i} is outside 0..${this.moveCount}`);
-    return { firstStep: this.#firstSteps[i]!, steps: this.#firstSteps[i + 1]! - this.#firstSteps[i]! };
+    this.#moveByLine ??= new Map(this.moves.map((m, i) => [m.line, i]));
+    const i = this.#moveByLine.get(line);
+    return i === undefined ? undefined : this.moves[i];
   }
 
   /**
@@ -273,9 +226,8 @@ export class GcodeProgram implements GcodeProgramInfo {
    * an earlier line done. For an editor cursor on a line without a move.
    */
   pointBeforeLine(line: number): number {
-    // The first move on `line` or after it.
-    const next = lastAtMost(this.#moveLines, line - 1) + 1;
-    return this.#firstSteps[next]!;
+    const next = this.moves.find((m) => m.line >= line);
+    return next === undefined ? this.steps : next.firstStep;
   }
 
   /**
@@ -338,7 +290,7 @@ export class GcodeProgram implements GcodeProgramInfo {
     return move.firstStep + first;
   }
 
-  /** Releases the core's memory of the program, its trace and its plan now. */
+  /** Releases the core's memory of the trace and the plan now. */
   free(): void {
     this.trace.free();
     this.#result.free();
@@ -366,14 +318,13 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
   const core = await loadCore();
   const run = callCore(() => new core.GcodeRun(source, encodeRequest(settings)));
   const sliceMs = options.sliceMs ?? 20;
-  // finish() consumes the run: after it, the run is not freed again.
-  let consumed = false;
+  let finished = false;
   try {
     let lines = 256;
     for (;;) {
       options.signal?.throwIfAborted();
       const started = performance.now();
-      const progress = JSON.parse(callCore(() => run.advance(lines))) as GcodeProgress;
+      const progress = JSON.parse(run.advance(lines)) as GcodeProgress;
       const elapsed = performance.now() - started;
       options.onProgress?.(progress);
       if (progress.done) break;
@@ -381,24 +332,18 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
       lines = Math.max(16, Math.min(lines * 4, Math.round((lines * sliceMs) / Math.max(elapsed, 0.5))));
       await yieldToEventLoop();
     }
-    consumed = true;
+    finished = true;
     const result = run.finish();
     try {
+      const info = JSON.parse(result.programJson()) as GcodeProgramInfo;
       const handle = callCore(() => result.takeTrace());
-      return new GcodeProgram(result, new Trace(handle), () => core.gcodeVcd(handle, result));
+      return new GcodeProgram(info, new Trace(handle), result, () => core.gcodeVcd(handle, result));
     } catch (error) {
       result.free();
       throw error;
     }
   } finally {
-    // Freeing after a failure must not replace the failure: a run the
-    // core gave up on mid-call may refuse to be freed.
-    if (!consumed) {
-      try {
-        run.free();
-      } catch {
-        // The error being thrown is the one to report.
-      }
-    }
+    // finish() consumes the run; free it only when it was not reached.
+    if (!finished) run.free();
   }
 }

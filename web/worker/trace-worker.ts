@@ -89,7 +89,7 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         const path = tracedPath(program.trace);
         const { lines, stepsPerMm, pulses, warnings, warningsOmitted, errors, stoppedAtLine, durationSeconds } = program;
         return {
-          value: { ...path, lines, stepsPerMm, moveCount: program.moveCount, pulses, warnings, warningsOmitted, errors, stoppedAtLine, durationSeconds },
+          value: { ...path, lines, stepsPerMm, moveCount: program.moves.length, pulses, warnings, warningsOmitted, errors, stoppedAtLine, durationSeconds },
           transfer: [path.points.buffer, path.idealPolyline.buffer],
         };
       } finally {
@@ -143,22 +143,18 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       const bytes = heldProgram(request.traceId).vcd();
       return { value: bytes, transfer: [bytes.buffer] };
     }
-    case 'moves': {
-      // As Array.slice: a range past the end is cut at the last move.
-      const program = heldProgram(request.traceId);
-      const to = Math.min(request.toMove, program.moveCount);
-      return { value: program.movesInRange(Math.min(request.fromMove, to), to), transfer: [] };
-    }
+    case 'moves':
+      return { value: heldProgram(request.traceId).moves.slice(request.fromMove, request.toMove), transfer: [] };
     case 'moveOfStep': {
       const program = heldProgram(request.traceId);
-      return { value: { moveIndex: program.moveOfStep(request.stepIndex), line: program.lineOfStep(request.stepIndex) }, transfer: [] };
+      const moveIndex = program.moveOfStep(request.stepIndex);
+      return { value: { moveIndex, line: program.moves[moveIndex]!.line }, transfer: [] };
     }
     case 'lineSteps': {
       const program = heldProgram(request.traceId);
-      const moveIndex = program.moveIndexAtLine(request.line);
+      const move = program.moveAtLine(request.line);
       const pointBefore = program.pointBeforeLine(request.line);
-      const { firstStep, steps } = moveIndex < 0 ? { firstStep: pointBefore, steps: 0 } : program.stepsOfMove(moveIndex);
-      return { value: { firstStep, steps, pointBefore }, transfer: [] };
+      return { value: { firstStep: move?.firstStep ?? pointBefore, steps: move?.steps ?? 0, pointBefore }, transfer: [] };
     }
     case 'export': {
       const t = held(request.traceId);

@@ -22,7 +22,4 @@ pub mod program;
 pub mod timing;
 pub mod vcd;
 
-pub use program::{
-    ArcInfo, ArcStepping, Diagnostic, Move, MoveDetail, Program, ProgramInfo, Progress, Runner,
-    Settings, run,
-};
+pub use program::{Diagnostic, Move, Program, ProgramInfo, Progress, Runner, Settings, run};

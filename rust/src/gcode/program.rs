@@ -33,7 +33,7 @@ use super::parse::{Block, Problem, parse_line_into};
 use super::timing::{self, Timeline};
 use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
-use crate::arc::planes::{Plane, Turn};
+use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
@@ -181,27 +181,12 @@ impl Diagnostic {
     }
 }
 
-/// How an arc was stepped on the grid (its note says which).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ArcStepping {
-    /// Around the grid point nearest the programmed centre.
-    AroundCentre,
-    /// Around a grid centre this many steps from the programmed one (see
-    /// the module comment: the rounded centre broke the arc tolerance).
-    CentreMoved { distance_steps: f64 },
-    /// As a straight line: its radius is too small for a grid centre.
-    LineRadiusTooSmall,
-    /// As a straight line: on the grid it turns less than one step.
-    LineUnderOneStep,
-}
-
 /// An arc as programmed and as stepped.
 #[derive(Serialize, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct ArcInfo {
     /// xy (G17), zx (G18) or yz (G19).
-    #[serde(serialize_with = "plane_label")]
-    pub plane: Plane,
+    pub plane: &'static str,
     /// cw (G2) or ccw (G3).
     pub direction: &'static str,
     /// ijk (centre) or r (radius).
@@ -215,25 +200,9 @@ pub struct ArcInfo {
     /// The grid centre the arc was stepped around; None when it was stepped
     /// as a straight line.
     pub center_steps: Option<[i64; MACHINE_AXES]>,
-    #[serde(skip)]
-    pub stepping: ArcStepping,
 }
 
-fn plane_label<S: serde::Serializer>(plane: &Plane, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_str(plane.label())
-}
-
-/// One move as the program keeps it: what a motion planner reads (start
-/// and end in machine mm, the feed, the kind, the source line) and where
-/// its steps are. About 150 bytes in wasm32 (an arc adds its [`ArcInfo`]);
-/// nothing in it is a sentence: [`ProgramInfo::move_detail`] builds the
-/// move's note and start in steps when asked.
-///
-/// Units and index spaces: `*_mm` machine mm (G92 applied, inches
-/// converted), `to_steps` grid steps, `first_step` a step index of the
-/// program's trace, `first_segment` a segment index of it. A move starts
-/// where the previous one ended (`to_steps`, `to_mm`), the first at the
-/// origin; `from_mm` is the programmed start, before rounding to steps.
+/// One move of the program and the steps it took.
 #[derive(Serialize, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Move {
@@ -245,6 +214,7 @@ pub struct Move {
     pub kind: &'static str,
     pub from_mm: [f64; MACHINE_AXES],
     pub to_mm: [f64; MACHINE_AXES],
+    pub from_steps: [i64; MACHINE_AXES],
     pub to_steps: [i64; MACHINE_AXES],
     /// The feed in force, mm/min; None for rapids and when none was set.
     pub feed_mm_per_min: Option<f64>,
@@ -257,21 +227,11 @@ pub struct Move {
     pub segments: usize,
     /// The catalogue algorithm that stepped it.
     pub algorithm: &'static str,
-    pub arc: Option<Box<ArcInfo>>,
-    /// When it runs on the planned profile, speeds in mm/s (`timing`).
-    pub timing: Timing,
-}
-
-/// A move with what is built when it is read: its start in steps and its
-/// note (what crosses the boundary for a range of moves).
-#[derive(Serialize, Clone, Debug, PartialEq)]
-#[serde(rename_all = "camelCase")]
-pub struct MoveDetail<'a> {
-    #[serde(flatten)]
-    pub record: &'a Move,
-    pub from_steps: [i64; MACHINE_AXES],
+    pub arc: Option<ArcInfo>,
     /// What the move is, in a sentence (it also starts its segments' notes).
     pub note: String,
+    /// When it runs on the planned profile, speeds in mm/s (`timing`).
+    pub timing: Timing,
 }
 
 /// How far a run has got.
@@ -294,9 +254,6 @@ pub struct ProgramInfo {
     pub steps_per_mm: [f64; MACHINE_AXES],
     pub line_algorithm: &'static str,
     pub arc_algorithm: &'static str,
-    /// Moves in step order; JSON gives their count (`moveCount`), and
-    /// [`ProgramInfo::move_detail`] each one.
-    #[serde(rename = "moveCount", serialize_with = "count")]
     pub moves: Vec<Move>,
     /// How long the program takes on the planned profile, seconds.
     pub duration_seconds: f64,
@@ -310,91 +267,6 @@ pub struct ProgramInfo {
     pub errors: Vec<Diagnostic>,
     /// The line of the first error: every line before it ran.
     pub stopped_at_line: Option<u32>,
-}
-
-fn count<S: serde::Serializer>(moves: &[Move], s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_u64(moves.len() as u64)
-}
-
-impl ProgramInfo {
-    /// Where move `index` starts, in steps: where the one before it ended.
-    pub fn from_steps(&self, index: usize) -> [i64; MACHINE_AXES] {
-        index
-            .checked_sub(1)
-            .map_or([0; MACHINE_AXES], |i| self.moves[i].to_steps)
-    }
-
-    /// Move `index` with its start in steps and its note.
-    pub fn move_detail(&self, index: usize) -> MoveDetail<'_> {
-        let record = &self.moves[index];
-        let from_steps = self.from_steps(index);
-        MoveDetail {
-            record,
-            from_steps,
-            note: move_note(record, from_steps),
-        }
-    }
-}
-
-/// What a move is, in a sentence: its line, code, ends in mm and in steps,
-/// and for an arc its geometry and how it was stepped.
-fn move_note(m: &Move, from_steps: [i64; MACHINE_AXES]) -> String {
-    use std::fmt::Write;
-    let mut note = format!(
-        "Line {}, {}: {} -> {} mm = {} -> {} steps",
-        m.line,
-        m.code,
-        tuple(&m.from_mm),
-        tuple(&m.to_mm),
-        Point::new(&from_steps),
-        Point::new(&m.to_steps)
-    );
-    let Some(arc) = &m.arc else {
-        note.push_str(if m.kind == "rapid" {
-            ", a rapid, stepped like G1 and timed at the top rate along it (a real G0 may also dog-leg, each axis at its own top speed)."
-        } else {
-            ", a straight line."
-        });
-        return note;
-    };
-    let [u, v, _] = arc.plane.axes();
-    let _ = write!(
-        note,
-        ", {} {}in the {}, centre {} mm, r = {} mm, sweep {:.3}°{}",
-        if arc.direction == "cw" {
-            Turn::Clockwise
-        } else {
-            Turn::CounterClockwise
-        }
-        .describe(),
-        if m.kind == "helix" { "helix " } else { "arc " },
-        arc.plane.describe(),
-        tuple(&[arc.center_mm[u], arc.center_mm[v]]),
-        (arc.radius_mm * 1e6).round() / 1e6,
-        arc.sweep_deg,
-        match arc.extra_turns {
-            0 => String::new(),
-            t => format!(" (P adds {t} full turn{})", if t == 1 { "" } else { "s" }),
-        }
-    );
-    let as_line = |why: &str| format!("; {why}, so it is stepped as a straight line to its end.");
-    match arc.stepping {
-        ArcStepping::AroundCentre => note.push('.'),
-        ArcStepping::CentreMoved { distance_steps } => {
-            let centre = Point::new(&arc.center_steps.expect("a grid centre"));
-            let _ = write!(
-                note,
-                "; centre moved to {centre} steps ({distance_steps:.2} steps from the programmed centre) so the rounded start and end are within 1 step of one radius."
-            );
-        }
-        ArcStepping::LineRadiusTooSmall => {
-            note.push_str(&as_line("its radius is too small for a centre on the step grid"))
-        }
-        ArcStepping::LineUnderOneStep => {
-            note.push_str(&as_line("on the grid it turns less than one step"))
-        }
-    }
-    note
 }
 
 /// A finished run.
@@ -632,38 +504,52 @@ impl Runner {
     fn step_move(&mut self, m: &MoveMm) -> Result<Move, Error> {
         let from = self.builder.position();
         let to = self.steps_of(m, m.to_mm)?;
-        let line = self.settings.line_algorithm;
-        let (kind, algorithm, arc, request) = match &m.arc {
+        let (first_step, first_segment) = (self.steps, self.segments);
+        let mut note = format!(
+            "Line {}, {}: {} -> {} mm = {} -> {} steps",
+            m.line,
+            m.motion.code(),
+            tuple(&m.from_mm),
+            tuple(&m.to_mm),
+            from,
+            to
+        );
+        let (kind, algorithm, arc) = match &m.arc {
             None => {
-                let kind = if m.motion == Motion::Rapid { "rapid" } else { "line" };
-                (kind, line, None, self.line_request(line, from, to))
+                let kind = if m.motion == Motion::Rapid {
+                    note.push_str(", a rapid, stepped like G1 and timed at the top rate along it (a real G0 may also dog-leg, each axis at its own top speed).");
+                    "rapid"
+                } else {
+                    note.push_str(", a straight line.");
+                    "line"
+                };
+                let line = self.settings.line_algorithm;
+                self.append(m, self.line_request(line, from, to), &note)?;
+                (kind, line, None)
             }
-            Some(_) => self.plan_arc(m, from, to)?,
+            Some(_) => self.step_arc(m, from, to, &mut note)?,
         };
-        let mut record = Move {
+        let blocks = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
+        self.move_blocks.push(blocks);
+        Ok(Move {
             line: m.line,
             column: m.column,
             code: m.motion.code(),
             kind,
             from_mm: m.from_mm,
             to_mm: m.to_mm,
+            from_steps: from.coords().try_into().expect("3 axes"),
             to_steps: to.coords().try_into().expect("3 axes"),
             feed_mm_per_min: m.feed_mm_per_min,
-            first_step: self.steps,
-            steps: 0,
-            first_segment: self.segments,
-            segments: 0,
+            first_step,
+            steps: self.steps - first_step,
+            first_segment,
+            segments: self.segments - first_segment,
             algorithm,
-            arc: arc.map(Box::new),
+            arc,
+            note,
             timing: Timing::default(),
-        };
-        let note = move_note(&record, from.coords().try_into().expect("3 axes"));
-        let (steps, segments) = self.append(m, request, &note)?;
-        record.steps = steps;
-        record.segments = segments;
-        let blocks = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
-        self.move_blocks.push(blocks);
-        Ok(record)
+        })
     }
 
     /// The grid centre of an arc from `from` to `to` (steps) about
@@ -701,14 +587,14 @@ impl Runner {
         })
     }
 
-    /// How an arc move is stepped: its kind, algorithm, record and the
-    /// catalogue request that steps it (see the module comment).
-    fn plan_arc(
-        &self,
+    fn step_arc(
+        &mut self,
         m: &MoveMm,
         from: Point,
         to: Point,
-    ) -> Result<(&'static str, &'static str, Option<ArcInfo>, Request), Error> {
+        note: &mut String,
+    ) -> Result<(&'static str, &'static str, Option<ArcInfo>), Error> {
+        use std::fmt::Write;
         let arc = m.arc.as_ref().expect("an arc move");
         let [u, v, n] = arc.plane.axes();
         let spm = self.settings.machine.steps_per_mm();
@@ -726,6 +612,38 @@ impl Runner {
                 ),
             ));
         }
+        let helical = from.get(n) != to.get(n);
+        let _ = write!(
+            note,
+            ", {} {}in the {}, centre {} mm, r = {} mm, sweep {:.3}°{}",
+            arc.turn.describe(),
+            if helical { "helix " } else { "arc " },
+            arc.plane.describe(),
+            tuple(&[arc.centre_mm[u], arc.centre_mm[v]]),
+            (arc.radius_mm * 1e6).round() / 1e6,
+            arc.sweep_rad.to_degrees(),
+            match arc.extra_turns {
+                0 => String::new(),
+                t => format!(" (P adds {t} full turn{})", if t == 1 { "" } else { "s" }),
+            }
+        );
+        let mut info = ArcInfo {
+            plane: arc.plane.label(),
+            direction: match arc.turn {
+                Turn::Clockwise => "cw",
+                Turn::CounterClockwise => "ccw",
+            },
+            format: match arc.format {
+                ArcFormat::Centre => "ijk",
+                ArcFormat::Radius => "r",
+            },
+            center_mm: arc.centre_mm,
+            radius_mm: arc.radius_mm,
+            sweep_deg: arc.sweep_rad.to_degrees(),
+            extra_turns: arc.extra_turns,
+            center_steps: None,
+        };
+        let kind = if helical { "helix" } else { "arc" };
         let centre_real = [arc.centre_mm[u] * spm[u], arc.centre_mm[v] * spm[v]];
         for (i, axis) in [u, v].into_iter().enumerate() {
             // The grid centre is found near this point in i64: it must be
@@ -746,36 +664,15 @@ impl Runner {
                 ));
             }
         }
-        let mut info = ArcInfo {
-            plane: arc.plane,
-            direction: match arc.turn {
-                Turn::Clockwise => "cw",
-                Turn::CounterClockwise => "ccw",
-            },
-            format: match arc.format {
-                ArcFormat::Centre => "ijk",
-                ArcFormat::Radius => "r",
-            },
-            center_mm: arc.centre_mm,
-            radius_mm: arc.radius_mm,
-            sweep_deg: arc.sweep_rad.to_degrees(),
-            extra_turns: arc.extra_turns,
-            center_steps: None,
-            stepping: ArcStepping::AroundCentre,
-        };
-        let kind = if from.get(n) != to.get(n) { "helix" } else { "arc" };
-        let line = self.settings.line_algorithm;
-        let as_line = |mut info: ArcInfo, stepping| {
-            info.stepping = stepping;
-            Ok((kind, line, Some(info), self.line_request(line, from, to)))
-        };
         let grid = Self::grid_centre(
             [from.get(u), from.get(v)],
             [to.get(u), to.get(v)],
             centre_real,
         );
         let Some(c) = grid else {
-            return as_line(info, ArcStepping::LineRadiusTooSmall);
+            let why = "its radius is too small for a centre on the step grid";
+            let line = self.step_as_line(m, from, to, note, why)?;
+            return Ok((kind, line, Some(info)));
         };
         let mut centre = from;
         centre.coords_mut()[u] = c[0];
@@ -783,14 +680,16 @@ impl Runner {
         info.center_steps = Some(centre.coords().try_into().expect("3 axes"));
         let rounded = [centre_real[0].round() as i64, centre_real[1].round() as i64];
         if c != rounded {
-            info.stepping = ArcStepping::CentreMoved {
-                distance_steps: (c[0] as f64 - centre_real[0]).hypot(c[1] as f64 - centre_real[1]),
-            };
+            let _ = write!(
+                note,
+                "; centre moved to {centre} steps ({:.2} steps from the programmed centre) so the rounded start and end are within 1 step of one radius",
+                (c[0] as f64 - centre_real[0]).hypot(c[1] as f64 - centre_real[1])
+            );
         }
         let mut request = self.line_request("", from, to);
         request.set("center", Value::from(centre.coords()));
         request.set("dir", Value::from(info.direction));
-        request.set("plane", Value::from(info.plane.label()));
+        request.set("plane", Value::from(info.plane));
         let place = |e: Error| Error::at(m.line, m.column, format!("{}", e));
         let local = ArcSpec::parse(&request, true)
             .map_err(place)?
@@ -799,12 +698,13 @@ impl Runner {
         // the programmed one.
         let turns = ((arc.sweep_rad.abs() - local) / TAU).round();
         if turns < 0.0 {
-            info.center_steps = None;
-            return as_line(info, ArcStepping::LineUnderOneStep);
+            let why = "on the grid it turns less than one step";
+            let line = self.step_as_line(m, from, to, note, why)?;
+            return Ok((kind, line, Some(info)));
         }
         request.set("turns", Value::from(turns as u64));
         let segments = self.settings.arc_algorithm == "arc-segments";
-        let algorithm = if kind == "helix" {
+        let algorithm = if helical {
             request.set(
                 "method",
                 Value::from(if segments { "segments" } else { "saleem" }),
@@ -814,10 +714,30 @@ impl Runner {
             self.settings.arc_algorithm
         };
         if segments {
-            request.set("lineAlgorithm", Value::from(line));
+            request.set("lineAlgorithm", Value::from(self.settings.line_algorithm));
         }
         request.algorithm = algorithm.to_string();
-        Ok((kind, algorithm, Some(info), request))
+        note.push('.');
+        self.append(m, request, note)?;
+        Ok((kind, algorithm, Some(info)))
+    }
+
+    /// Steps an arc as a straight line, saying `why` in its note; returns
+    /// the line algorithm.
+    fn step_as_line(
+        &mut self,
+        m: &MoveMm,
+        from: Point,
+        to: Point,
+        note: &mut String,
+        why: &str,
+    ) -> Result<&'static str, Error> {
+        note.push_str(&format!(
+            "; {why}, so it is stepped as a straight line to its end."
+        ));
+        let line = self.settings.line_algorithm;
+        self.append(m, self.line_request(line, from, to), note)?;
+        Ok(line)
     }
 
     /// Finishes the trace (the moves run so far) and the program's record.
@@ -855,7 +775,7 @@ impl Runner {
             arc_algorithm: self.settings.arc_algorithm,
             moves: self.moves,
             duration_seconds: timeline.duration_seconds(),
-            pulses: pulses_by_axis(&trace),
+            pulses: trace.metrics().pulses_by_axis.clone(),
             warnings: self.warnings,
             warnings_omitted: self.warnings_omitted,
             errors: self.errors,
@@ -867,19 +787,6 @@ impl Runner {
             timeline,
         }
     }
-}
-
-/// Pulses per axis: one per step that moves the axis. Counted from the
-/// steps alone (2 bytes each), not from the trace's metrics, whose
-/// deviation pass over every point nobody running a program asked for.
-fn pulses_by_axis(trace: &Trace) -> Vec<u64> {
-    let mut pulses = [0u64; MACHINE_AXES];
-    for step in trace.step_range(0, trace.steps()) {
-        for (axis, count) in pulses.iter_mut().enumerate() {
-            *count += u64::from(step.0 >> axis & 1);
-        }
-    }
-    pulses.to_vec()
 }
 
 /// Runs a whole program.
