@@ -17,7 +17,6 @@ import { AlgorithmInputs } from './form/algorithm-inputs.js';
 import { OptionsForm } from './form/options-form.js';
 import { formatPoint } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
-import { MotionCharts } from './gcode/motion-charts.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
 import { renderExperiment } from './experiment/experiment-panel.js';
 import type { DecisionRow } from './inspector/decision-figure.js';
@@ -118,7 +117,6 @@ function run(catalogue: Catalogue): void {
     byId('inputs-heading', HTMLHeadingElement).textContent = { trace: 'Path', compare: 'Two algorithms, one move', gcode: 'G-code program', experiment: 'Random lines' }[mode];
     byId('export-png', HTMLButtonElement).hidden = mode === 'experiment';
     byId('export-json', HTMLButtonElement).hidden = mode === 'experiment';
-    byId('export-vcd', HTMLButtonElement).hidden = mode !== 'gcode';
   }
   renderMode();
 
@@ -203,7 +201,6 @@ function run(catalogue: Catalogue): void {
   const charts = new PathCharts(byId('charts', HTMLDivElement), goTo);
   const comparePanel = new ComparePanel(byId('comparison', HTMLDivElement), goTo);
   const timing = new TimingDiagram(byId('timing', HTMLDivElement), goTo);
-  const motion = new MotionCharts(byId('motion', HTMLDivElement), goTo);
   const experimentView = byId('experiment-view', HTMLDivElement);
 
   let shown: Shown = {};
@@ -296,7 +293,6 @@ function run(catalogue: Catalogue): void {
     comparePanel.show(a, b, difference);
     gcodePanel.setProgram(program);
     timing.setTrace(program, pointIndex);
-    void motion.setProgram(program, pointIndex);
     if (program) void gcodePanel.showPoint(pointIndex);
     // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
     timeline.setSteps(main || b ? steps : undefined);
@@ -426,10 +422,6 @@ function run(catalogue: Catalogue): void {
   byId('export-json', HTMLButtonElement).addEventListener('click', async () => {
     for (const [trace, name] of exported()) download(`${name}-steps.json`, new Blob([await trace.exportAs('json')], { type: 'application/json' }));
   });
-  byId('export-vcd', HTMLButtonElement).addEventListener('click', async () => {
-    // The core's VCD (the CLI's --format vcd): STEP and DIR per axis on the planned profile.
-    if (shown.program) download(`${exportName()}-step-dir.vcd`, new Blob([(await shown.program.vcd()) as Uint8Array<ArrayBuffer>], { type: 'text/plain' }));
-  });
   byId('export-png', HTMLButtonElement).addEventListener('click', async () => {
     download(`${exportName()}-view.png`, await scene.toPng());
   });
@@ -472,7 +464,6 @@ function run(catalogue: Catalogue): void {
       if (main) inspector.show(Math.min(k, main.steps));
       charts.showPoint(k);
       timing.showPoint(k);
-      void motion.showPoint(k);
       if (shown.program) void gcodePanel.showPoint(k);
     }
   });

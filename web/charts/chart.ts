@@ -29,8 +29,6 @@ export interface ChartSpec {
   ySplits?: number[];
   /** Hide uPlot's legend (the timing diagram names its lanes on the axis). */
   legend?: boolean;
-  /** A click gives its x here instead of a point index to onPick (a chart over time, not steps). */
-  pickX?: (x: number) => void;
 }
 
 /** The colour of the step cursor (the page's accent, as the scrubber). */
@@ -40,13 +38,10 @@ export class StepChart {
   readonly #plot: uPlot;
   readonly #figure: HTMLElement;
   readonly #resize: ResizeObserver;
-  /** The cursor's x: the point index, or on a chart over time its instant. */
   #pointIndex = 0;
-  readonly #title: string;
 
   /** Builds the chart in `container` with `data` (x first); `onPick` gets the point index clicked. */
   constructor(container: HTMLElement, spec: ChartSpec, data: uPlot.AlignedData, onPick: (pointIndex: number) => void) {
-    this.#title = spec.title;
     this.#figure = document.createElement('figure');
     this.#figure.className = 'chart';
     this.#figure.setAttribute('aria-label', spec.title);
@@ -102,9 +97,7 @@ export class StepChart {
     this.#plot.over.addEventListener('click', () => {
       const left = this.#plot.cursor.left;
       if (left === undefined || left < 0) return;
-      const x = this.#plot.posToVal(left, 'x');
-      if (spec.pickX) spec.pickX(x);
-      else onPick(Math.round(x));
+      onPick(Math.round(this.#plot.posToVal(left, 'x')));
     });
     this.#resize = new ResizeObserver(() => {
       const width = Math.max(200, container.clientWidth - 4);
@@ -120,18 +113,9 @@ export class StepChart {
 
   /** Moves the step cursor to `pointIndex`. */
   showPoint(pointIndex: number): void {
-    this.showX(pointIndex);
-  }
-
-  /** Moves the cursor to x (on a chart over time: an instant). */
-  showX(x: number): void {
-    if (x === this.#pointIndex) return;
-    this.#pointIndex = x;
+    if (pointIndex === this.#pointIndex) return;
+    this.#pointIndex = pointIndex;
     this.#plot.redraw(false, false);
-  }
-
-  get title(): string {
-    return this.#title;
   }
 
   /** Replaces the data (same series), keeping the cursor. */

@@ -258,38 +258,6 @@ export class GcodeProgram implements GcodeProgramInfo {
     return callCore(this.#vcd);
   }
 
-  /** Each axis's planned step rate at the speedProfile's corners: (seconds, steps/s per axis), stride 1 + 3. */
-  stepRateProfile(): Float64Array {
-    return this.#result.stepRateProfile();
-  }
-
-  /**
-   * The point index the machine has reached `seconds` into the program: the
-   * number of steps whose instant is at or before it (a binary search over the
-   * moves' timing, then over the move's step instants, each computed by the core).
-   */
-  pointAtSeconds(seconds: number): number {
-    let lo = 0;
-    let hi = this.moves.length;
-    // The first move that ends after `seconds`.
-    while (lo < hi) {
-      const mid = (lo + hi) >> 1;
-      if (this.moves[mid]!.timing.endSeconds <= seconds) lo = mid + 1;
-      else hi = mid;
-    }
-    const move = this.moves[lo];
-    if (move === undefined) return this.steps;
-    let first = 0;
-    let last = move.steps;
-    // Steps of this move at or before `seconds`.
-    while (first < last) {
-      const mid = (first + last) >> 1;
-      if (this.stepTimes(move.firstStep + mid, move.firstStep + mid + 1)[0]! <= seconds) first = mid + 1;
-      else last = mid;
-    }
-    return move.firstStep + first;
-  }
-
   /** Releases the core's memory of the trace and the plan now. */
   free(): void {
     this.trace.free();

@@ -1,22 +1,16 @@
 /**
  * The step/direction signals as a logic analyser draws them: one lane per
- * signal (x STEP, x DIR, y STEP, ...), over a window of steps around the
- * current one. STEP pulses on the steps its axis moves; DIR is high while
- * its axis is at its negative level. The values are the core's stepCodes and
- * directionLevels.
- *
- * Time: with the steps' instants on the planned profile (a G-code program:
- * the core's stepTimes), the axis is time in ms or µs, each STEP pulse rises
- * at its step's instant and falls halfway to the next step, and the cursor is
- * the instant the current point is reached. Without them one tick is one
- * step (the core's tick model, web/core/pulses.ts).
+ * signal (x STEP, x DIR, y STEP, ...), high or low per tick, over a window of
+ * ticks around the current step. One tick is one step of the trace (the
+ * core's tick model, web/core/pulses.ts: the feed is not modelled). STEP is
+ * high on the ticks its axis moves; DIR is high while its axis is at its
+ * negative level. The values are the core's stepCodes and directionLevels.
  */
 import uPlot from 'uplot';
 import { StepChart } from '../charts/chart.js';
 import { AXIS_NAMES } from '../format.js';
 import { AXIS_COLOURS } from '../scene/palette.js';
 import type { PulseCodes } from '../worker/protocol.js';
-import { timeUnit } from './time-format.js';
 
 /** Ticks shown at once. */
 export const TIMING_WINDOW_TICKS = 48;
@@ -38,9 +32,6 @@ export class TimingDiagram {
   /** Step indices shown: fromStep..fromStep + TIMING_WINDOW_TICKS. */
   #fromStep = -1;
   #request = 0;
-  /** In time mode: the window's step instants and the unit's factor from seconds. */
-  #stepSeconds: Float64Array | undefined;
-  #perSecond = 1;
 
   constructor(container: HTMLElement, onPick: (pointIndex: number) => void) {
     this.#container = container;
@@ -69,65 +60,26 @@ export class TimingDiagram {
       this.#fromStep = Math.round(fromStep);
       this.#draw(trace.dims, codes);
     }
-    this.#chart?.showX(this.#xOfPoint(pointIndex));
-  }
-
-  /** The x of point index p: p ticks, or (in time) the instant of the step that reached it. */
-  #xOfPoint(pointIndex: number): number {
-    const times = this.#stepSeconds;
-    if (!times) return pointIndex;
-    const i = Math.max(0, Math.min(times.length - 1, pointIndex - 1 - this.#fromStep));
-    return pointIndex === 0 ? 0 : times[i]! * this.#perSecond;
-  }
-
-  /** The point index reached at x (in time: the last step at or before it). */
-  #pointOfX(x: number): number {
-    const times = this.#stepSeconds;
-    if (!times) return Math.round(x);
-    let k = 0;
-    while (k < times.length && times[k]! * this.#perSecond <= x) k++;
-    return this.#fromStep + k;
+    this.#chart?.showPoint(pointIndex);
   }
 
   #draw(dims: number, codes: PulseCodes): void {
     const ticks = codes.stepCodes.length;
-    const times = codes.stepSeconds ?? undefined;
-    this.#stepSeconds = times;
-    const span = times && ticks > 1 ? times[ticks - 1]! - times[0]! : 0;
-    const { unit, perSecond } = timeUnit(span);
-    this.#perSecond = times ? perSecond : 1;
-    // Ticks: one row per step and one more for the right edge of the last.
-    // In time: two rows per step, its instant (STEP high) and halfway to
-    // the next step (STEP low), so each STEP is a pulse at its instant.
-    const rowsPerTick = times ? 2 : 1;
-    const rows = ticks * rowsPerTick + 1;
-    const x = new Float64Array(rows);
-    for (let i = 0; i < ticks; i++) {
-      if (!times) {
-        x[i] = this.#fromStep + i;
-        continue;
-      }
-      const t = times[i]!;
-      const next = i + 1 < ticks ? times[i + 1]! : t + (ticks > 1 ? (t - times[0]!) / (ticks - 1) : 1e-3);
-      x[2 * i] = t * perSecond;
-      x[2 * i + 1] = ((t + next) / 2) * perSecond;
-    }
-    x[rows - 1] = times ? (2 * x[rows - 2]! - x[rows - 3]!) : this.#fromStep + ticks;
+    // One row more than ticks: a stepped line needs the right edge of the last tick.
+    const x = Float64Array.from({ length: ticks + 1 }, (_, i) => this.#fromStep + i);
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];
     const names: string[] = [];
     for (let axis = 0; axis < dims; axis++) {
       for (const signal of ['STEP', 'DIR'] as const) {
         const lane = (dims * 2 - 1 - lanes.length) * LANE;
-        const values = new Float64Array(rows);
+        const values = new Float64Array(ticks + 1);
         for (let i = 0; i < ticks; i++) {
           // Packed step: bit a = axis a moves; DIR level: bit a = negative.
           const high = signal === 'STEP' ? (codes.stepCodes[i]! >> axis) & 1 : (codes.directionLevels[i]! >> axis) & 1;
-          values[i * rowsPerTick] = lane + high * SWING;
-          // In time, the second row of a step: STEP has fallen, DIR holds.
-          if (times) values[2 * i + 1] = signal === 'STEP' ? lane : lane + high * SWING;
+          values[i] = lane + high * SWING;
         }
-        values[rows - 1] = values[rows - 2]!;
+        values[ticks] = values[ticks - 1]!;
         lanes.push(values);
         names[lanes.length - 1] = `${AXIS_NAMES[axis]} ${signal}`;
         series.push({
@@ -140,18 +92,16 @@ export class TimingDiagram {
       }
     }
     const data: uPlot.AlignedData = [x, ...lanes];
-    const title = times ? `STEP and DIR per axis at each step's planned instant (${unit})` : 'STEP and DIR per axis (one tick per step)';
-    if (this.#chart && this.#chart.title === title) {
+    if (this.#chart) {
       this.#chart.setData(data);
       return;
     }
-    this.#chart?.destroy();
     const count = lanes.length;
     this.#chart = new StepChart(
       this.#container,
       {
-        title,
-        xLabel: times ? `time (${unit})` : 'step',
+        title: 'STEP and DIR per axis (one tick per step)',
+        xLabel: 'step',
         yLabel: '',
         series,
         yRange: [-0.3, count * LANE],
@@ -159,7 +109,6 @@ export class TimingDiagram {
         // One tick label per lane, at its middle, naming its signal.
         yValues: (_u, splits) => splits.map((v) => names[count - 1 - Math.round((v - SWING / 2) / LANE)] ?? ''),
         ySplits: Array.from({ length: count }, (_, i) => i * LANE + SWING / 2),
-        pickX: (x) => this.#onPick(this.#pointOfX(x)),
       },
       data,
       this.#onPick,

@@ -197,11 +197,6 @@ export function machineSpecs(algorithms: readonly AlgorithmInfo[]): OptionSpec[]
     number('pitch', 'Lead-screw pitch P, mm per turn: steps/mm = (360 / θ · s) / P (Wang 3.3).'),
     { name: 'lineAlgorithm', kind: { type: 'choice', values: lineAlgorithms }, required: false, default: 'regions', doc: 'Steps G0/G1 moves and the chords of arc-segments.' },
     { name: 'arcAlgorithm', kind: { type: 'choice', values: ['circle', 'arc-segments'] }, required: false, default: 'circle', doc: "G2/G3: Saleem's circle, or chords (helices follow in the matching mode)." },
-    // The planner's limits (rust/src/planner.rs); empty: Grbl's defaults.
-    { name: 'acceleration', kind: { type: 'number' }, required: false, default: '10', doc: 'Acceleration, mm/s², every axis (Grbl $120-$122).' },
-    { name: 'maxRate', kind: { type: 'number' }, required: false, default: '500', doc: "Top rate, mm/min, every axis; also G0's rate (Grbl $110-$112)." },
-    { name: 'junctionDeviation', kind: { type: 'number' }, required: false, default: '0.01', doc: 'Junction deviation δ, mm: corner speed² = a·δ·s/(1−s), s = sin(θ/2) (Grbl $11).' },
-    { name: 'maxStepRate', kind: { type: 'number' }, required: false, default: null, doc: 'Fastest step rate the drivers take, steps/s: a move needing more is a warning.' },
   ];
 }
 

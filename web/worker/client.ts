@@ -13,7 +13,6 @@ import type {
   ChartSeries,
   InputError,
   LineSteps,
-  MotionProfile,
   PathSummary,
   PulseCodes,
   ReplyMessage,
@@ -302,8 +301,6 @@ export class RemoteProgram extends RemoteTrace {
   readonly warningsOmitted: number;
   readonly errors: GcodeDiagnostic[];
   readonly stoppedAtLine: number | null;
-  /** On the planned profile, seconds. */
-  readonly durationSeconds: number;
 
   constructor(client: TraceClient, traceId: number, generation: number, run: RunProgram) {
     super(client, traceId, generation, run.summary, run.points, run.idealPolyline);
@@ -315,27 +312,6 @@ export class RemoteProgram extends RemoteTrace {
     this.warningsOmitted = run.warningsOmitted;
     this.errors = run.errors;
     this.stoppedAtLine = run.stoppedAtLine;
-    this.durationSeconds = run.durationSeconds;
-  }
-
-  /** The plan for the time charts: speed, step rates and junction speeds over time. */
-  motion(): Promise<MotionProfile> {
-    return this.ask({ kind: 'motion', traceId: this.traceId });
-  }
-
-  /** The instants of step indices fromStep..toStep, seconds. */
-  stepTimes(fromStep: number, toStep: number): Promise<Float64Array> {
-    return this.ask({ kind: 'stepTimes', traceId: this.traceId, fromStep, toStep });
-  }
-
-  /** The point index the machine has reached at `seconds`. */
-  stepAtSeconds(seconds: number): Promise<number> {
-    return this.ask({ kind: 'stepAtSeconds', traceId: this.traceId, seconds });
-  }
-
-  /** The STEP and DIR wires as a VCD file (GcodeProgram.vcd). */
-  vcd(): Promise<Uint8Array> {
-    return this.ask({ kind: 'vcd', traceId: this.traceId });
   }
 
   /** Moves fromMove..toMove of the program, in step order. */

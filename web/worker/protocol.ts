@@ -29,10 +29,6 @@ export type WorkerRequest =
   | { kind: 'series'; traceId: number; maxPoints: number }
   | { kind: 'difference'; traceIdA: number; traceIdB: number }
   | { kind: 'pulses'; traceId: number; fromStep: number; toStep: number }
-  | { kind: 'motion'; traceId: number }
-  | { kind: 'stepTimes'; traceId: number; fromStep: number; toStep: number }
-  | { kind: 'stepAtSeconds'; traceId: number; seconds: number }
-  | { kind: 'vcd'; traceId: number }
   | { kind: 'moves'; traceId: number; fromMove: number; toMove: number }
   | { kind: 'moveOfStep'; traceId: number; stepIndex: number }
   | { kind: 'lineSteps'; traceId: number; line: number }
@@ -97,19 +93,6 @@ export interface RunProgram extends TracedPath {
   warningsOmitted: number;
   errors: GcodeDiagnostic[];
   stoppedAtLine: number | null;
-  /** How long the program takes on the planned profile, seconds. */
-  durationSeconds: number;
-}
-
-/** A program's plan for the page's time charts (GcodeProgram.speedProfile and stepRateProfile). */
-export interface MotionProfile {
-  durationSeconds: number;
-  /** (seconds, mm/s) corners, four per planner block. */
-  speed: Float64Array;
-  /** (seconds, steps/s per axis) at the same corners, stride 1 + 3. */
-  stepRates: Float64Array;
-  /** (seconds, mm/s): each move's start and entry speed after the first, the junction speed at its corner. */
-  junctions: Float64Array;
 }
 
 /** Step indices a source line produced (its move), and where the machine is when the line starts. */
@@ -125,8 +108,6 @@ export interface LineSteps {
 export interface PulseCodes {
   stepCodes: Uint16Array;
   directionLevels: Uint8Array;
-  /** A G-code program's step instants on the planned profile, seconds (GcodeProgram.stepTimes); null for a trace. */
-  stepSeconds: Float64Array | null;
 }
 
 /** The value a successful reply carries, by request kind. */
@@ -141,10 +122,6 @@ export interface ReplyValue {
   series: ChartSeries;
   difference: TraceDifference;
   pulses: PulseCodes;
-  motion: MotionProfile;
-  stepTimes: Float64Array;
-  stepAtSeconds: number;
-  vcd: Uint8Array;
   moves: GcodeMove[];
   moveOfStep: { moveIndex: number; line: number };
   lineSteps: LineSteps;

@@ -87,9 +87,9 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         traces.set(request.traceId, program.trace);
         programs.set(request.traceId, program);
         const path = tracedPath(program.trace);
-        const { lines, stepsPerMm, pulses, warnings, warningsOmitted, errors, stoppedAtLine, durationSeconds } = program;
+        const { lines, stepsPerMm, pulses, warnings, warningsOmitted, errors, stoppedAtLine } = program;
         return {
-          value: { ...path, lines, stepsPerMm, moveCount: program.moves.length, pulses, warnings, warningsOmitted, errors, stoppedAtLine, durationSeconds },
+          value: { ...path, lines, stepsPerMm, moveCount: program.moves.length, pulses, warnings, warningsOmitted, errors, stoppedAtLine },
           transfer: [path.points.buffer, path.idealPolyline.buffer],
         };
       } finally {
@@ -122,26 +122,7 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       const t = held(request.traceId);
       const stepCodes = t.stepCodes(request.fromStep, request.toStep);
       const directionLevels = t.directionLevels(request.fromStep, request.toStep);
-      const stepSeconds = programs.get(request.traceId)?.stepTimes(request.fromStep, request.toStep) ?? null;
-      const transfer = [stepCodes.buffer, directionLevels.buffer, ...(stepSeconds ? [stepSeconds.buffer] : [])];
-      return { value: { stepCodes, directionLevels, stepSeconds }, transfer };
-    }
-    case 'motion': {
-      const program = heldProgram(request.traceId);
-      const moving = program.moves.filter((m) => m.steps > 0);
-      const junctions = Float64Array.from(moving.slice(1).flatMap((m) => [m.timing.startSeconds, m.timing.entrySpeed]));
-      const value = { durationSeconds: program.durationSeconds, speed: program.speedProfile(), stepRates: program.stepRateProfile(), junctions };
-      return { value, transfer: [value.speed.buffer, value.stepRates.buffer, junctions.buffer] };
-    }
-    case 'stepTimes': {
-      const times = heldProgram(request.traceId).stepTimes(request.fromStep, request.toStep);
-      return { value: times, transfer: [times.buffer] };
-    }
-    case 'stepAtSeconds':
-      return { value: heldProgram(request.traceId).pointAtSeconds(request.seconds), transfer: [] };
-    case 'vcd': {
-      const bytes = heldProgram(request.traceId).vcd();
-      return { value: bytes, transfer: [bytes.buffer] };
+      return { value: { stepCodes, directionLevels }, transfer: [stepCodes.buffer, directionLevels.buffer] };
     }
     case 'moves':
       return { value: heldProgram(request.traceId).moves.slice(request.fromMove, request.toMove), transfer: [] };
