@@ -337,9 +337,10 @@ impl<'t> Reader<'t> {
         })
     }
 
-    /// The whole number after N or O (its part before any point).
-    fn whole_number(&mut self, letter: char, column: u32) -> Read<u32> {
-        self.skip_blanks();
+    /// The number text at the reader (the caller has read any blanks and
+    /// sign) and the column it starts at; an error at the letter's `column`
+    /// when no number follows.
+    fn number_after(&mut self, letter: char, column: u32) -> Read<(u32, &'t str)> {
         if !self.at_number() {
             return Err(problem(
                 column,
@@ -347,7 +348,13 @@ impl<'t> Reader<'t> {
             ));
         }
         let number_column = self.column;
-        let text = self.number();
+        Ok((number_column, self.number()))
+    }
+
+    /// The whole number after N or O (its part before any point).
+    fn whole_number(&mut self, letter: char, column: u32) -> Read<u32> {
+        self.skip_blanks();
+        let (number_column, text) = self.number_after(letter, column)?;
         let whole = text.split_once('.').map_or(text, |(w, _)| w);
         whole.parse::<u32>().map_err(|_| {
             problem(
@@ -363,23 +370,12 @@ impl<'t> Reader<'t> {
     /// A word: its sign and number after the letter at `column`.
     fn word(&mut self, letter: char, column: u32) -> Read<Word> {
         self.skip_blanks();
-        let negative = match self.peek() {
-            Some(b'-') => true,
-            Some(b'+') => false,
-            _ => false,
-        };
+        let negative = self.peek() == Some(b'-');
         if matches!(self.peek(), Some(b'-' | b'+')) {
             self.bump();
             self.skip_blanks();
         }
-        if !self.at_number() {
-            return Err(problem(
-                column,
-                format!("malformed number: {letter} has no number after it"),
-            ));
-        }
-        let number_column = self.column;
-        let text = self.number();
+        let (number_column, text) = self.number_after(letter, column)?;
         let Ok(magnitude) = text.parse::<f64>() else {
             return Err(problem(
                 number_column,
