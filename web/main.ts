@@ -26,6 +26,7 @@ import { PALETTE } from './scene/palette.js';
 import { type SceneCallbacks, SceneView } from './scene/scene-view.js';
 import type { Handle } from './scene/endpoint-handles.js';
 import { type AppState, type Catalogue, MODES, type Mode, randomLinesExperiment, tracedAlgorithms, traceOptions } from './state/app-state.js';
+import { nextTask } from './main-thread.js';
 import { loadState, persistState } from './state/persist.js';
 import { Store } from './state/store.js';
 import { Timeline, handlesItsOwnKeys } from './timeline/timeline.js';
@@ -64,17 +65,21 @@ let onCoreCrash: ((message: string) => void) | undefined;
 
 /** Set once the page is running: where the view's camera moves and handle drags go. */
 let sceneEvents: SceneCallbacks | undefined;
-// Made before the core has started, so that the view's shaders compile
-// while the worker loads the core (SceneView's warm-up).
-const scene = new SceneView(byId('viewport', HTMLDivElement), {
-  onCamera: (camera) => sceneEvents?.onCamera(camera),
-  onHandle: (name, point) => sceneEvents?.onHandle(name, point),
-});
-
 const client = new TraceClient(
   () => new Worker(new URL('./worker/trace-worker.ts', import.meta.url), { type: 'module' }),
   (message) => onCoreCrash?.(message),
 );
+// Asked first, so the worker starts loading the core at once.
+const catalogueLoaded = client.catalogue();
+
+// Made before the core has started, so that the view's shaders compile
+// while the worker loads the core (SceneView's warm-up); in a task of its
+// own, not in the one that runs this module (both are long on a software GPU).
+await nextTask();
+const scene = new SceneView(byId('viewport', HTMLDivElement), {
+  onCamera: (camera) => sceneEvents?.onCamera(camera),
+  onHandle: (name, point) => sceneEvents?.onHandle(name, point),
+});
 
 /** What is on screen: the traces the worker holds for the current mode. */
 interface Shown {
@@ -470,6 +475,6 @@ function run(catalogue: Catalogue): void {
   void retrace();
 }
 
-client.catalogue().then(run, (error: unknown) => {
+catalogueLoaded.then(run, (error: unknown) => {
   showAlert(`The core could not start: ${String(error)}`, 'Reload the page', () => window.location.reload());
 });

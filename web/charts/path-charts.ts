@@ -10,6 +10,7 @@
 import type uPlot from 'uplot';
 import type { DeviationBound } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
+import { afterNextFrame } from '../main-thread.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
 import type { ChartSeries } from '../worker/protocol.js';
 import { StepChart } from './chart.js';
@@ -39,6 +40,9 @@ export class PathCharts {
   /** Charts `trace` (undefined: none) once the worker sends its rows. */
   async setTrace(trace: ChartedTrace | undefined): Promise<void> {
     const request = ++this.#request;
+    // The new path is drawn first: the worker builds the series after that frame.
+    await afterNextFrame();
+    if (request !== this.#request) return;
     const series = trace ? await trace.series(CHART_POINTS) : undefined;
     if (request !== this.#request) return;
     for (const chart of this.#charts) chart.destroy();

@@ -12,6 +12,7 @@
 import { readDecision } from '../core/export.js';
 import type { ColumnSpec } from '../core/types.js';
 import { formatPoint, NO_VALUE_TEXT } from '../format.js';
+import { afterNextFrame } from '../main-thread.js';
 import { CoreCrash, type RemoteTrace } from '../worker/client.js';
 import { type DecisionRow, decisionFigure } from './decision-figure.js';
 
@@ -51,6 +52,8 @@ export class Inspector {
   #wantedPointIndex = 0;
   #shownPointIndex: number | undefined;
   #fetching = false;
+  /** Resolves once the current trace's first frame is drawn. */
+  #drawn: Promise<void> = Promise.resolve();
 
   constructor(elements: InspectorElements, onDecision: DecisionListener) {
     this.#e = elements;
@@ -76,6 +79,8 @@ export class Inspector {
     }
     this.#e.decisions.replaceChildren(...rows);
     this.#e.columnDocs.replaceChildren(...docs);
+    // The new path is drawn first: its replayed decision is asked for after that frame.
+    this.#drawn = afterNextFrame();
     this.show(pointIndex);
   }
 
@@ -103,6 +108,7 @@ export class Inspector {
   async #fetch(): Promise<void> {
     this.#fetching = true;
     try {
+      await this.#drawn;
       while (this.#trace && this.#shownPointIndex !== this.#wantedPointIndex) {
         const trace = this.#trace;
         const pointIndex = this.#wantedPointIndex;
