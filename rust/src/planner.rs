@@ -43,6 +43,7 @@
 //! written without the cancellation at small a·s).
 
 use crate::arc::arc_segments::Chording;
+use crate::arc::curve::sin_cos_turns;
 use crate::error::Error;
 use crate::machine::MACHINE_AXES;
 use crate::request::{OptionKind, OptionSpec};
@@ -562,8 +563,9 @@ pub fn arc_chords(
         let f = i as f64 / chords as f64;
         let angle = start_angle + sweep_rad * f;
         let mut p = from_mm;
-        p[u] = centre_mm[u] + radius_mm * angle.cos();
-        p[v] = centre_mm[v] + radius_mm * angle.sin();
+        let (sin, cos) = sin_cos_turns(angle);
+        p[u] = centre_mm[u] + radius_mm * cos;
+        p[v] = centre_mm[v] + radius_mm * sin;
         p[n] = from_mm[n] + (to_mm[n] - from_mm[n]) * f;
         out.push(p);
     }

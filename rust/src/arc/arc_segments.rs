@@ -22,7 +22,7 @@
 //! line algorithm stays within its own bound of the rounded chord (sqrt(2)/2
 //! for regions). So every point is within s + sqrt(2)/2 + sqrt(2)/2 of the arc.
 
-use super::curve::{HelixPath, degrees};
+use super::curve::{HelixPath, degrees, sin_cos_turns};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithms::{self, AlgorithmInfo, Example, Family};
 use crate::error::Error;
@@ -53,6 +53,9 @@ pub const LINE_ALGORITHMS: &[&str] = &[
 /// Most chords one arc may be split into: each chord is a trace segment
 /// with its own replay state and note.
 pub const MAX_CHORDS: u64 = 1 << 16;
+
+/// Fewest chords of a full circle: a triangle around the centre.
+pub const MIN_FULL_CIRCLE_CHORDS: u64 = 3;
 
 pub const SEGMENT_LENGTH: OptionSpec = OptionSpec {
     name: "segmentLength",
@@ -245,8 +248,9 @@ pub fn vertices(spec: &ArcSpec, n: u64) -> Vec<Vertex> {
             let t = i as f64 / n as f64;
             let theta = start + sweep * t;
             let mut p = [0; 3];
-            p[u] = (c.get(u) as f64 + r * theta.cos()).round() as i64;
-            p[v] = (c.get(v) as f64 + r * theta.sin()).round() as i64;
+            let (sin, cos) = sin_cos_turns(theta);
+            p[u] = (c.get(u) as f64 + r * cos).round() as i64;
+            p[v] = (c.get(v) as f64 + r * sin).round() as i64;
             p[normal] = spec.from.get(normal) + (spec.rise as f64 * t).round() as i64;
             Point::new(&p)
         };
@@ -273,7 +277,13 @@ pub fn trace_chords(
     let line = req.choice(&LINE_ALGORITHM)?.unwrap_or(LINE_ALGORITHMS[0]);
     let line_info = algorithms::find(line)?;
     let tie = req.choice(&LINE_TIE)?;
-    let n = chording.chords(spec.radius(), spec.sweep_rad())?;
+    let counted = chording.chords(spec.radius(), spec.sweep_rad())?;
+    // A full circle (ending where it starts, at its own height) in fewer
+    // than 3 chords would be one chord from the start to itself, or two out
+    // and back: no steps, or no circle. It takes at least 3, the fewest
+    // that go around the centre (the blog and Grbl would not move at all).
+    let closed = spec.from == spec.to && spec.rise == 0;
+    let n = if closed { counted.max(MIN_FULL_CIRCLE_CHORDS) } else { counted };
     let chords = vertices(spec, n);
     let arc = spec.ideal_arc();
     let helix = HelixPath {
@@ -336,9 +346,14 @@ pub fn trace_chords(
             let sagitta = spec.radius() * (1.0 - (spec.sweep_rad().abs() / (2 * n) as f64).cos());
             let _ = write!(
                 note,
-                "{}. {}, each of sagitta {sagitta:.3}; vertices are the arc points at i/{n} of the sweep, rounded to the grid. ",
+                "{}. {}{}, each of sagitta {sagitta:.3}; vertices are the arc points at i/{n} of the sweep, rounded to the grid. ",
                 spec.describe(),
-                chording.describe(n),
+                chording.describe(counted),
+                if n > counted {
+                    format!(", raised to {n}, the fewest that go around a full circle")
+                } else {
+                    String::new()
+                },
             );
         }
         let _ = write!(
@@ -545,6 +560,37 @@ mod tests {
             note.contains("Chord 1 of 3: (10, 0, 0) -> (9, 5, 0), the arc from 0.0° to 30.0°"),
             "{note}"
         );
+    }
+
+    /// A full circle whose rule counts 1 chord (floor(2π 10 / 1000) = 0,
+    /// at least 1) is a triangle of chords around the centre, ending on the
+    /// start: near the origin, touching 2^30 - 1 and -(2^30 - 1), drawn by
+    /// arc-segments and by helix's method segments alike.
+    #[test]
+    fn a_full_circle_takes_at_least_three_chords() {
+        let edge = (1i64 << 30) - 1;
+        for (from, center) in [
+            ([10, 0, 0], [0, 0, 0]),
+            ([edge, edge - 10, 5], [edge - 10, edge - 10, 5]),
+            ([-edge, -edge + 10, -edge], [-edge + 10, -edge + 10, -edge]),
+        ] {
+            for algorithm in [r#""arc-segments""#, r#""helix","method":"segments""#] {
+                let t = crate::trace_json(&format!(
+                    r#"{{"algorithm":{algorithm},"from":{from:?},"to":{from:?},"center":{center:?},"segmentLength":1000}}"#
+                ))
+                .unwrap();
+                assert_eq!(t.segments().len(), MIN_FULL_CIRCLE_CHORDS as usize, "{algorithm} {from:?}");
+                assert_eq!(t.end(), Point::new(&from));
+                // Three chords of a circle of radius 10 (each 17.3 long, the
+                // longest axis at least 10 after rounding) take at least 30 steps.
+                assert!(t.steps() >= 30, "{algorithm} {from:?}: {} steps", t.steps());
+                let note = &t.segments()[0].setup_note;
+                assert!(note.contains("gives 1 chord, raised to 3, the fewest that go around a full circle"), "{note}");
+                // Every point is within the chord bound of the circle.
+                let bound = 10.0 * (1.0 - (PI / 3.0).cos()) + 2f64.sqrt();
+                assert!(t.metrics().max_deviation <= bound, "{}", t.metrics().max_deviation);
+            }
+        }
     }
 
     #[test]
