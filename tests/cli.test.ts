@@ -1,6 +1,8 @@
 // The CLI as users run it: `node bin/voxpath.js ...` (the compiled lib/, built by setup).
+import { spawnSync } from 'node:child_process';
 import { describe, expect, it } from 'vitest';
-import { voxpath, voxpathPipedInto } from './helpers.js';
+import { EXPORT_CHUNK_ROWS } from '../web/core/index.js';
+import { BIN, voxpath, voxpathPipedInto } from './helpers.js';
 
 const TRACE = ['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6'];
 
@@ -80,6 +82,37 @@ describe('voxpath trace: decision values that do not apply', () => {
   // Wang's type ② line (0,0,0) -> (3,3,3), section 2.2: every axis is
   // active, so no discriminant, region or corner decides a step.
   const TYPE_2 = ['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '3,3,3'];
+
+  /**
+   * The CLI on a V8 heap of 48 MB, its output counted by `wc`: a 2,000,000
+   * step trace is about 90 MB of CSV and 50 MB of JSON text, so only output
+   * written as it is read fits (built whole, the CSV's strings alone took
+   * gigabytes for 10,000,000 steps).
+   */
+  function streamedLines(format: string, steps: number): { code: number; lines: number; stderr: string } {
+    const args = ['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', `${steps},${Math.floor(steps * 0.7)},${Math.floor(steps * 0.6)}`, '--format', format];
+    const quoted = [process.execPath, '--max-old-space-size=48', BIN, ...args].map((a) => `'${a}'`).join(' ');
+    const r = spawnSync('bash', ['-c', `${quoted} | wc -l; echo "\${PIPESTATUS[0]}"`], { encoding: 'utf8' });
+    const [lines, code] = r.stdout.trim().split('\n').map(Number);
+    return { code: code!, lines: lines!, stderr: r.stderr };
+  }
+
+  it('streams a 2,000,000-step CSV and JSON in a heap smaller than either', { timeout: 120_000 }, () => {
+    expect(streamedLines('csv', 2_000_000)).toEqual({ code: 0, lines: 2_000_002, stderr: '' });
+    expect(streamedLines('json', 2_000_000)).toEqual({ code: 0, lines: 1, stderr: '' });
+  });
+
+  it('prints a table of any length, each block of rows aligned under its own header', () => {
+    // Past 125,000 rows the table writer once overflowed the stack (Math.max(...rows)).
+    const steps = 2 * EXPORT_CHUNK_ROWS + 10;
+    const r = voxpath(['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', `${steps},0,0`, '--format', 'table']);
+    expect(r.code).toBe(0);
+    const lines = r.stdout.split('\n');
+    const headers = lines.filter((l) => /^ *k +x +y +z +M /.test(l));
+    expect(headers).toHaveLength(Math.ceil((steps + 1) / EXPORT_CHUNK_ROWS));
+    expect(lines.filter((l) => /^ *\d+ +\d+ +0 +0 /.test(l))).toHaveLength(steps + 1);
+    expect(r.stdout).toContain(`\nsteps moving: ${steps} x 1-axis`);
+  });
 
   it('prints null in JSON, an empty cell in CSV and - in the table', () => {
     const json = JSON.parse(voxpath(TYPE_2).stdout);

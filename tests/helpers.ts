@@ -7,11 +7,12 @@ import { expect } from 'vitest';
 import { VoxpathError } from '../web/core/index.js';
 import type { Trace } from '../web/core/index.js';
 
-const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
+/** The CLI's entry point. */
+export const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
 
 /** Runs `node bin/voxpath.js ...args` (the compiled CLI, built by setup), with `input` on stdin. */
 export function voxpath(args: string[], input?: string): { code: number | null; stdout: string; stderr: string } {
-  const r = spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8', input });
+  const r = spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8', input, maxBuffer: 1 << 30 });
   return { code: r.status, stdout: r.stdout, stderr: r.stderr };
 }
 

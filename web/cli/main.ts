@@ -17,12 +17,12 @@ import {
   randomLinesToCsv,
   randomLinesToTable,
   trace,
-  traceToCsv,
-  traceToJson,
-  traceToTable,
+  traceCsvChunks,
+  traceJsonChunks,
+  traceTableChunks,
   VoxpathError,
 } from '../core/index.js';
-import type { AlgorithmInfo, ExperimentInfo, OptionSpec } from '../core/index.js';
+import type { AlgorithmInfo, ExperimentInfo, OptionSpec, Trace } from '../core/index.js';
 import { GCODE_USAGE, gcodeCommand, gcodeHelp } from './gcode.js';
 
 const FORMATS = ['json', 'csv', 'table'] as const;
@@ -189,15 +189,20 @@ function optionsFromFlags(
   return options;
 }
 
-async function runTrace(flags: Map<string, string>, catalogues: Catalogues): Promise<string> {
+/** JSON text of a trace and its line end, in pieces. */
+function* traceJsonLine(result: Trace): Generator<string> {
+  yield* traceJsonChunks(result);
+  yield '\n';
+}
+
+/** Traces and writes the trace as it is read, a chunk of rows at a time, so any trace the API accepts prints. */
+async function runTrace(flags: Map<string, string>, catalogues: Catalogues): Promise<void> {
   const info = pickAlgorithm(flags, catalogues.algorithms);
   const format = pickFormat(flags);
   const options = optionsFromFlags(flags, info.options, info.id);
   const result = await trace({ ...options, algorithm: info.id } as Parameters<typeof trace>[0]);
   try {
-    if (format === 'csv') return traceToCsv(result);
-    if (format === 'table') return traceToTable(result);
-    return JSON.stringify(traceToJson(result)) + '\n';
+    await writeAll(format === 'csv' ? traceCsvChunks(result) : format === 'table' ? traceTableChunks(result) : traceJsonLine(result));
   } finally {
     result.free();
   }
@@ -250,10 +255,18 @@ async function runExperiment(args: string[], catalogues: Catalogues): Promise<st
  * Writes to stdout. A reader that stops early (`voxpath ... | head`) closes
  * the pipe: EPIPE then means it has all it wanted, not that voxpath failed.
  */
-async function write(text: string): Promise<void> {
-  await new Promise<void>((resolve, reject) =>
-    process.stdout.write(text, (e?: NodeJS.ErrnoException | null) => (e && e.code !== 'EPIPE' ? reject(e) : resolve())),
+async function write(text: string): Promise<boolean> {
+  return new Promise<boolean>((resolve, reject) =>
+    process.stdout.write(text, (e?: NodeJS.ErrnoException | null) => (e && e.code !== 'EPIPE' ? reject(e) : resolve(!e))),
   );
+}
+
+/**
+ * Writes pieces one after another, each once the last has been handed to the
+ * system, so memory holds one piece at a time; stops when the reader is gone.
+ */
+async function writeAll(pieces: Iterable<string>): Promise<void> {
+  for (const piece of pieces) if (!(await write(piece))) return;
 }
 
 /** The stream also reports a write's error as an event, after the callback; unheard, it would end the process. */
@@ -276,7 +289,7 @@ export async function main(args: string[]): Promise<number> {
       return 0;
     }
     if (command === 'trace') {
-      await write(await runTrace(parseFlags(rest), catalogues));
+      await runTrace(parseFlags(rest), catalogues);
     } else if (command === 'compare') {
       await write(await runCompare(parseFlags(rest), catalogues));
     } else if (command === 'experiment') {

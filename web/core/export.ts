@@ -42,87 +42,150 @@ export interface TraceJson {
   notes: string[];
 }
 
-/** The whole trace as one plain object (the CLI's --format json). */
+/** The whole trace as one plain object. For long traces prefer traceJsonChunks, whose text is the same. */
 export function traceToJson(trace: Trace): TraceJson {
-  const points: number[][] = [];
-  const flat = trace.points;
-  for (let k = 0; k <= trace.steps; k++) {
-    points.push(Array.from(flat.subarray(k * trace.dims, (k + 1) * trace.dims)));
+  return JSON.parse([...traceJsonChunks(trace)].join('')) as TraceJson;
+}
+
+/**
+ * Rows of a trace an export reads from the core at a time: its strings then
+ * take a few megabytes, whatever the length of the trace (a 10,000,000-step
+ * CSV streams from the CLI in about as much memory as the trace itself).
+ */
+export const EXPORT_CHUNK_ROWS = 16_384;
+
+/** Point indices [from, to) in chunks of at most EXPORT_CHUNK_ROWS. */
+function* chunks(count: number): Generator<[number, number]> {
+  for (let from = 0; from < count; from += EXPORT_CHUNK_ROWS) yield [from, Math.min(count, from + EXPORT_CHUNK_ROWS)];
+}
+
+/**
+ * The trace as JSON text (the CLI's --format json), in pieces of at most
+ * EXPORT_CHUNK_ROWS rows: the object of TraceJson, key for key. Decisions
+ * are column by column, as TraceJson holds them, so each column replays the
+ * steps once.
+ */
+export function* traceJsonChunks(trace: Trace): Generator<string> {
+  yield `{"algorithm":${JSON.stringify(trace.algorithm)},"dims":${trace.dims},"steps":${trace.steps},"points":[`;
+  for (const [from, to] of chunks(trace.steps + 1)) {
+    const flat = trace.pointsInRange(from, to);
+    const rows: string[] = [];
+    for (let k = 0; k < to - from; k++) rows.push(`[${flat.subarray(k * trace.dims, (k + 1) * trace.dims).join(',')}]`);
+    yield (from > 0 ? ',' : '') + rows.join(',');
   }
-  const decisions: TraceJson['decisions'] = {};
-  for (const column of trace.columns) {
-    decisions[column.name] = Array.from(trace.decisions[column.name]!, (v) => readDecision(column, v));
+  yield '],"decisions":{';
+  for (const [i, column] of trace.columns.entries()) {
+    yield `${i > 0 ? ',' : ''}${JSON.stringify(column.name)}:[`;
+    for (const [from, to] of chunks(trace.steps)) {
+      const values = trace.decisionsInRange(from, to)[column.name]!;
+      yield (from > 0 ? ',' : '') + Array.from(values, (v) => JSON.stringify(readDecision(column, v))).join(',');
+    }
+    yield ']';
   }
-  return {
-    algorithm: trace.algorithm,
-    dims: trace.dims,
-    steps: trace.steps,
-    points,
-    decisions,
-    deviation: Array.from(trace.deviation),
-    metrics: trace.metrics,
-    notes: trace.segments.map((s) => s.note),
-  };
+  yield '},"deviation":[';
+  for (const [from, to] of chunks(trace.steps + 1)) {
+    yield (from > 0 ? ',' : '') + Array.from(trace.deviationInRange(from, to), (d) => JSON.stringify(d)).join(',');
+  }
+  yield `],"metrics":${JSON.stringify(trace.metrics)},"notes":${JSON.stringify(trace.segments.map((s) => s.note))}}`;
 }
 
 /** Columns separated by two spaces: numbers right-aligned, a label column (the first, if asked) left-aligned. */
 function alignedTable(header: string[], body: string[][], labelFirst = false): string[] {
-  const widths = header.map((h, i) => Math.max(h.length, ...body.map((r) => r[i]!.length)));
+  const widths = header.map((h, i) => body.reduce((width, r) => Math.max(width, r[i]!.length), h.length));
   const pad = (cell: string, i: number) => (labelFirst && i === 0 ? cell.padEnd(widths[i]!) : cell.padStart(widths[i]!));
   const line = (r: string[]) => r.map(pad).join('  ');
   return [line(header), ...body.map(line)];
 }
 
+/** The per-point table's header: k, the axes, the decision columns, deviation. */
+function rowHeader(trace: Trace): string[] {
+  return ['k', ...AXIS_NAMES.slice(0, trace.dims), ...trace.columns.map((c) => c.name), 'deviation'];
+}
+
 /**
- * Header and rows of the per-point table; cells are strings. Row 0 has no
- * decision (empty cells); a column that does not apply to a step gets
- * `absent` (CSV: empty, as null; table: '-').
+ * Rows from..to - 1 of the per-point table, each row's cells as `cell`
+ * returns them and `row` joins them. Row 0 has no decision (empty cells); a
+ * column that does not apply to a step gets `absent` (CSV: empty, as null;
+ * table: '-').
  */
-function rows(trace: Trace, absent: string): { header: string[]; body: string[][] } {
-  const header = ['k', ...AXIS_NAMES.slice(0, trace.dims), ...trace.columns.map((c) => c.name), 'deviation'];
-  const flat = trace.points;
-  const decisions: DecisionColumns = trace.decisions;
-  const deviation = trace.deviation;
-  const body: string[][] = [];
-  for (let k = 0; k <= trace.steps; k++) {
-    const row = [String(k)];
-    for (let a = 0; a < trace.dims; a++) row.push(String(flat[k * trace.dims + a]));
-    for (const column of trace.columns) {
-      const value = k === 0 ? '' : readDecision(column, decisions[column.name]![k - 1]!);
-      row.push(value === null ? absent : typeof value === 'boolean' ? (value ? '1' : '0') : String(value));
-    }
-    row.push(deviation[k]!.toFixed(6));
-    body.push(row);
+function rows<R>(trace: Trace, from: number, to: number, absent: string, cell: (text: string) => string, row: (cells: string[]) => R): R[] {
+  const flat = trace.pointsInRange(from, to);
+  // Row k shows the decision of step k - 1: steps from - 1 .. to - 2.
+  const firstStep = Math.max(from - 1, 0);
+  const decisions: DecisionColumns = trace.decisionsInRange(firstStep, Math.max(to - 1, firstStep));
+  const deviation = trace.deviationInRange(from, to);
+  // Each column's text for each of its values, found once per chunk rather than per cell.
+  const texts = trace.columns.map((column) => {
+    const values = decisions[column.name]!;
+    const known = new Map<number, string>();
+    return (i: number) => {
+      const value = values[i]!;
+      let text = known.get(value);
+      if (text === undefined) {
+        const read = readDecision(column, value);
+        text = cell(read === null ? absent : typeof read === 'boolean' ? (read ? '1' : '0') : String(read));
+        if (column.kind === 'category' || column.kind === 'flag') known.set(value, text);
+      }
+      return text;
+    };
+  });
+  const out: R[] = [];
+  const cells: string[] = new Array(1 + trace.dims + texts.length + 1);
+  for (let k = from; k < to; k++) {
+    let c = 0;
+    cells[c++] = String(k);
+    for (let a = 0; a < trace.dims; a++) cells[c++] = String(flat[(k - from) * trace.dims + a]);
+    for (const text of texts) cells[c++] = k === 0 ? '' : text(k - 1 - firstStep);
+    cells[c++] = deviation[k - from]!.toFixed(6);
+    out.push(row(cells));
   }
-  return { header, body };
+  return out;
 }
 
 function csvCell(cell: string): string {
   return /[",\n]/.test(cell) ? `"${cell.replaceAll('"', '""')}"` : cell;
 }
 
-/** One CSV row per point, with a header row (the CLI's --format csv). */
-export function traceToCsv(trace: Trace): string {
-  const { header, body } = rows(trace, '');
-  return [header, ...body].map((r) => r.map(csvCell).join(',')).join('\n') + '\n';
+/** Numbers need no quoting in CSV; a label or a name might. */
+const plain = (text: string) => text;
+
+/** One CSV row per point, with a header row (the CLI's --format csv), in pieces of at most EXPORT_CHUNK_ROWS rows. */
+export function* traceCsvChunks(trace: Trace): Generator<string> {
+  yield rowHeader(trace).map(csvCell).join(',') + '\n';
+  const line = (cells: string[]) => cells.join(',');
+  for (const [from, to] of chunks(trace.steps + 1)) yield rows(trace, from, to, '', csvCell, line).join('\n') + '\n';
 }
 
-/** An aligned plain-text table with the metrics below it (the CLI's --format table). */
-export function traceToTable(trace: Trace): string {
-  const { header, body } = rows(trace, TABLE_NO_VALUE);
+/** One CSV row per point, with a header row. For long traces prefer traceCsvChunks. */
+export function traceToCsv(trace: Trace): string {
+  return [...traceCsvChunks(trace)].join('');
+}
+
+/**
+ * An aligned plain-text table with the metrics below it (the CLI's --format
+ * table), in pieces. Each block of EXPORT_CHUNK_ROWS rows is aligned on its
+ * own and starts with the header again, so that a table of any length is
+ * written as it is read, the way vmstat repeats its header.
+ */
+export function* traceTableChunks(trace: Trace): Generator<string> {
+  yield [`${trace.algorithm}: ${trace.steps} steps from (${trace.start.join(', ')}) to (${trace.end.join(', ')})`, ...trace.segments.map((s) => s.note), ''].join('\n') + '\n';
+  for (const [from, to] of chunks(trace.steps + 1)) {
+    yield (from > 0 ? '\n' : '') + alignedTable(rowHeader(trace), rows(trace, from, to, TABLE_NO_VALUE, plain, (cells) => [...cells])).join('\n') + '\n';
+  }
   const m = trace.metrics;
   const moving = m.stepsMovingAxes.map((n, i) => `${n} x ${i + 1}-axis`).join(', ');
-  return [
-    `${trace.algorithm}: ${trace.steps} steps from (${trace.start.join(', ')}) to (${trace.end.join(', ')})`,
-    ...trace.segments.map((s) => s.note),
-    '',
-    ...alignedTable(header, body),
+  yield [
     '',
     `steps moving: ${moving}; pulses per axis: ${m.pulsesByAxis.join(', ')}; ties: ${m.ties}`,
     `deviation: max ${m.maxDeviation.toFixed(6)}, mean ${m.meanDeviation.toFixed(6)}, std ${m.stdDeviation.toFixed(6)}`,
     `max axis error (eq. 11): ${m.maxAxisError.map((e) => e.toFixed(6)).join(', ')}`,
     '',
   ].join('\n');
+}
+
+/** An aligned plain-text table with the metrics below it. For long traces prefer traceTableChunks. */
+export function traceToTable(trace: Trace): string {
+  return [...traceTableChunks(trace)].join('');
 }
 
 function lineRows(result: RandomLinesResult): { header: string[]; body: string[][] } {

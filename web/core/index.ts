@@ -34,9 +34,13 @@ export {
   randomLinesToCsv,
   randomLinesToTable,
   readDecision,
+  traceCsvChunks,
+  traceJsonChunks,
+  traceTableChunks,
   traceToCsv,
   traceToJson,
   traceToTable,
+  EXPORT_CHUNK_ROWS,
 } from './export.js';
 export type { TraceJson } from './export.js';
 export { NO_VALUE } from './types.js';
