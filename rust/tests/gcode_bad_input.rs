@@ -138,3 +138,21 @@ fn a_megabyte_of_huge_numbers_is_read_in_one_pass() {
     assert_eq!(column, 4 + 302);
     assert_eq!(message, "X appears twice on this line");
 }
+
+/// Found by the fuzz target (tests/fuzz.rs): an unclosed comment ended by a
+/// lone CR leaves a line of 4-byte characters, whose quote in the message
+/// was cut at a byte inside one, a panic (in wasm, a trap).
+#[test]
+fn a_line_of_wide_characters_is_quoted_whole_characters() {
+    // The error of line 2, the text after the lone CR.
+    let second_line_error = |source: &str| {
+        let p = program(source, 0.5);
+        let error = p.info.errors.iter().find(|d| d.line == 2).unwrap_or_else(|| panic!("no error on line 2: {:?}", p.info.errors));
+        error.message.clone()
+    };
+    let message = second_line_error("G0 (\r\u{10000}\u{10000}:\u{10000}\u{10000}\u{80}\u{800}\u{a1})\n");
+    assert!(message.contains("'\u{10000}\u{10000}"), "{message}");
+    // Past 24 characters: the first 16 whole, then the count.
+    let message = second_line_error(&format!("G0 (\r{})\n", "\u{10000}".repeat(30)));
+    assert!(message.contains(&format!("{}... (31 characters)", "\u{10000}".repeat(16))), "{message}");
+}

@@ -105,12 +105,15 @@ pub fn parse_line_into(text: &str, block: &mut Block) {
 /// first digits and its length.
 const ECHO_CHARS: usize = 24;
 
-/// `text` as a message quotes it.
+/// `text` as a message quotes it, cut between characters (a byte offset
+/// could fall inside one: the fuzz target found that panic).
 fn echo(text: &str) -> String {
-    if text.len() <= ECHO_CHARS {
+    let chars = text.chars().count();
+    if chars <= ECHO_CHARS {
         text.to_string()
     } else {
-        format!("{}... ({} characters)", &text[..ECHO_CHARS - 8], text.len())
+        let start: String = text.chars().take(ECHO_CHARS - 8).collect();
+        format!("{start}... ({chars} characters)")
     }
 }
 
