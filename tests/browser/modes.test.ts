@@ -11,6 +11,7 @@
 import type { Page } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
+import { AXIS_COLOURS } from '../../web/scene/palette.js';
 import { closeAll, openPage, screenshot } from './harness.js';
 
 afterAll(closeAll);
@@ -75,6 +76,30 @@ async function sideEdgeInk(page: Page, selector: string): Promise<number> {
 /** A PNG of the first element matching `selector`, as bytes. */
 function shot(page: Page, selector: string): Promise<Buffer> {
   return page.locator(selector).first().screenshot();
+}
+
+/**
+ * The most separate runs of `hex` (within a small tolerance, for
+ * antialiasing) along any one pixel row of `png`: a signal pulsing on every
+ * tick crosses the row through its lane's middle twice a pulse, a flat one
+ * at most once.
+ */
+function mostRunsInARow(png: Buffer, hex: string): number {
+  const image = PNG.sync.read(png);
+  const [r, g, b] = [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+  let most = 0;
+  for (let y = 0; y < image.height; y++) {
+    let runs = 0;
+    let inside = false;
+    for (let x = 0; x < image.width; x++) {
+      const o = (y * image.width + x) * 4;
+      const near = Math.abs(image.data[o]! - r!) + Math.abs(image.data[o + 1]! - g!) + Math.abs(image.data[o + 2]! - b!) < 60;
+      if (near && !inside) runs++;
+      inside = near;
+    }
+    most = Math.max(most, runs);
+  }
+  return most;
 }
 
 describe('trace mode', () => {
@@ -407,6 +432,9 @@ describe('G-code mode', () => {
     const before = await shot(page, timing);
     await page.getByTestId('next').click();
     await expect.poll(async () => (await shot(page, timing)).equals(before)).toBe(false);
+    // Line 5 (Y20) steps y on every tick: its STEP lane is a pulse a tick,
+    // rising and falling in each of the (at least 12) ticks shown, not a flat line.
+    expect(mostRunsInARow(await shot(page, timing), AXIS_COLOURS[1])).toBeGreaterThanOrEqual(2 * 12);
 
     // Put the cursor on line 6 (X0): its 1600 steps light up and the step goes to their end.
     const editor = page.getByTestId('gcode-text');

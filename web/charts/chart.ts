@@ -9,7 +9,7 @@
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 
-/** Chart height, CSS pixels, plot area and axes (the legend is extra). */
+/** Chart height by default, CSS pixels, plot area and axes (the legend is extra). */
 const HEIGHT_PX = 170;
 
 export interface ChartSpec {
@@ -29,6 +29,8 @@ export interface ChartSpec {
   ySplits?: number[];
   /** Hide uPlot's legend (the timing diagram names its lanes on the axis). */
   legend?: boolean;
+  /** Height, CSS pixels, plot area and axes; default HEIGHT_PX. */
+  heightPx?: number;
 }
 
 /** The colour of the step cursor (the page's accent, as the scrubber). */
@@ -50,7 +52,7 @@ export class StepChart {
     const opts: uPlot.Options = {
       title: spec.title,
       width: Math.max(200, container.clientWidth - 4),
-      height: HEIGHT_PX,
+      height: spec.heightPx ?? HEIGHT_PX,
       series: [{ label: spec.xLabel }, ...spec.series],
       bands: spec.bands,
       scales: { x: { time: false }, y: spec.yRange ? { range: spec.yRange } : {} },
@@ -101,7 +103,7 @@ export class StepChart {
     });
     this.#resize = new ResizeObserver(() => {
       const width = Math.max(200, container.clientWidth - 4);
-      if (width !== this.#plot.width) this.#plot.setSize({ width, height: HEIGHT_PX });
+      if (width !== this.#plot.width) this.#plot.setSize({ width, height: spec.heightPx ?? HEIGHT_PX });
     });
     this.#resize.observe(container);
   }

@@ -7,14 +7,13 @@
  * every pending request is rejected with CoreCrash, the listener is told, and
  * the next request starts a fresh worker: the page stays usable.
  */
-import type { GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { ColumnSpec, DecisionColumns, DeviationBound, Metrics, TraceOptions } from '../core/types.js';
 import type {
   ChartSeries,
   InputError,
   LineSteps,
   PathSummary,
-  PulseCodes,
   ReplyMessage,
   ReplyValue,
   RequestKind,
@@ -272,8 +271,8 @@ export class RemoteTrace implements PathSummary {
     return this.ask({ kind: 'series', traceId: this.traceId, maxPoints });
   }
 
-  /** STEP codes and DIR levels of step indices fromStep..toStep, for the timing diagram. */
-  pulseCodes(fromStep: number, toStep: number): Promise<PulseCodes> {
+  /** Each axis's STEP and DIR signals over step indices fromStep..toStep (the core's pulseTrains), for the timing diagram. */
+  pulseTrains(fromStep: number, toStep: number): Promise<PulseTrain[]> {
     return this.ask({ kind: 'pulses', traceId: this.traceId, fromStep, toStep });
   }
 

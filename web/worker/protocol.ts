@@ -14,7 +14,7 @@
  * - deviation: Float64Array, one entry per point index of the range;
  * - series: see ChartSeries; cells: Int32Array, stride dims.
  */
-import type { ExperimentInfo, FirstDifference, GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { ExperimentInfo, FirstDifference, GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { AlgorithmInfo, DecisionColumns, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
@@ -104,11 +104,6 @@ export interface LineSteps {
   pointBefore: number;
 }
 
-/** STEP codes and DIR levels (Trace.stepCodes and directionLevels) of a range of step indices. */
-export interface PulseCodes {
-  stepCodes: Uint16Array;
-  directionLevels: Uint8Array;
-}
 
 /** The value a successful reply carries, by request kind. */
 export interface ReplyValue {
@@ -121,7 +116,8 @@ export interface ReplyValue {
   segmentNote: string;
   series: ChartSeries;
   difference: TraceDifference;
-  pulses: PulseCodes;
+  /** The core's pulseTrains over the range, one per axis. */
+  pulses: PulseTrain[];
   moves: GcodeMove[];
   moveOfStep: { moveIndex: number; line: number };
   lineSteps: LineSteps;

@@ -8,6 +8,7 @@ import {
   GcodeProgram,
   algorithms,
   experiments,
+  pulseTrains,
   randomLines,
   runGcode,
   trace,
@@ -119,10 +120,8 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       return { value: difference, transfer: [difference.onlyInA.buffer, difference.onlyInB.buffer] };
     }
     case 'pulses': {
-      const t = held(request.traceId);
-      const stepCodes = t.stepCodes(request.fromStep, request.toStep);
-      const directionLevels = t.directionLevels(request.fromStep, request.toStep);
-      return { value: { stepCodes, directionLevels }, transfer: [stepCodes.buffer, directionLevels.buffer] };
+      const trains = pulseTrains(held(request.traceId), request.fromStep, request.toStep);
+      return { value: trains, transfer: trains.flatMap((t) => [t.step.buffer, t.dir.buffer]) };
     }
     case 'moves':
       return { value: heldProgram(request.traceId).moves.slice(request.fromMove, request.toMove), transfer: [] };
