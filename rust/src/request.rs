@@ -212,6 +212,25 @@ impl Request {
         }
     }
 
+    /// A whole number within `range`. Checked as a number first, so that a
+    /// value out of range (1e20 for maxSteps) is told its range, not that it
+    /// is not a whole number.
+    pub fn integer_in(
+        &self,
+        name: &str,
+        range: std::ops::RangeInclusive<i64>,
+    ) -> Result<Option<i64>, Error> {
+        let (low, high) = (*range.start(), *range.end());
+        match self.number(name)? {
+            None => Ok(None),
+            Some(x) if x < low as f64 || x > high as f64 => Err(Error::field(
+                name,
+                format!("must be {low} to {high}, got {x}"),
+            )),
+            Some(_) => self.integer(name),
+        }
+    }
+
     pub fn boolean(&self, name: &str) -> Result<Option<bool>, Error> {
         match self.get(name) {
             None => Ok(None),
@@ -250,14 +269,9 @@ impl Request {
     }
 
     pub fn max_steps(&self) -> Result<u64, Error> {
-        match self.integer("maxSteps")? {
-            None => Ok(DEFAULT_MAX_STEPS),
-            Some(n) if (0..=MAX_STEPS_LIMIT as i64).contains(&n) => Ok(n as u64),
-            Some(n) => Err(Error::field(
-                "maxSteps",
-                format!("must be 0 to {MAX_STEPS_LIMIT}, got {n}"),
-            )),
-        }
+        Ok(self
+            .integer_in("maxSteps", 0..=MAX_STEPS_LIMIT as i64)?
+            .map_or(DEFAULT_MAX_STEPS, |n| n as u64))
     }
 
     /// `from` and `to`, checked to have the same number of axes, within the
@@ -348,6 +362,17 @@ mod tests {
         assert_eq!(
             r.tie(TiePolicy::Advance).unwrap_err().to_string(),
             "tie: expected 'advance' or 'hold', got 'sometimes'"
+        );
+        // Whole, but past the range: the range is the fault, not the form.
+        let r = Request::from_json(r#"{"algorithm":"x","maxSteps":1e20}"#).unwrap();
+        assert_eq!(
+            r.max_steps().unwrap_err().to_string(),
+            "maxSteps: must be 0 to 1000000000, got 100000000000000000000"
+        );
+        let r = Request::from_json(r#"{"algorithm":"x","maxSteps":2.5}"#).unwrap();
+        assert_eq!(
+            r.max_steps().unwrap_err().to_string(),
+            "maxSteps: expected a whole number, got 2.5"
         );
     }
 

@@ -34,7 +34,10 @@ const COORDINATE_LIMIT: i64 = 1 << 30;
 const CASE_MAX_STEPS: u64 = 20_000;
 
 fn cases() -> u32 {
-    std::env::var("VOXPATH_FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(10_000)
+    std::env::var("VOXPATH_FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(10_000)
 }
 
 /// A runner with a fixed seed, so that `npm test` runs the same cases every time.
@@ -44,7 +47,10 @@ fn runner(seed: u8) -> TestRunner {
         failure_persistence: None,
         ..Config::default()
     };
-    TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]))
+    TestRunner::new_with_rng(
+        config,
+        TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]),
+    )
 }
 
 /// Where a request's points lie: near the origin mostly, else against the
@@ -61,7 +67,8 @@ fn base() -> impl Strategy<Value = i64> {
 
 /// A point of `dims` coordinates around `base`.
 fn point(base: i64, dims: usize) -> impl Strategy<Value = Value> {
-    prop::collection::vec(-45i64..45, dims).prop_map(move |offsets| json!(offsets.iter().map(|o| base + o).collect::<Vec<_>>()))
+    prop::collection::vec(-45i64..45, dims)
+        .prop_map(move |offsets| json!(offsets.iter().map(|o| base + o).collect::<Vec<_>>()))
 }
 
 /// Any JSON value a careless caller might send where an option goes.
@@ -69,7 +76,8 @@ fn junk() -> impl Strategy<Value = Value> {
     prop_oneof![
         Just(Value::Null),
         any::<bool>().prop_map(Value::from),
-        any::<f64>().prop_map(|f| serde_json::Number::from_f64(f).map_or(Value::Null, Value::Number)),
+        any::<f64>()
+            .prop_map(|f| serde_json::Number::from_f64(f).map_or(Value::Null, Value::Number)),
         any::<i64>().prop_map(Value::from),
         "[a-z0-9 ,.\\-]{0,12}".prop_map(Value::from),
         prop::collection::vec(any::<i64>(), 0..5).prop_map(|v| json!(v)),
@@ -101,43 +109,61 @@ fn option_value(option: &'static OptionSpec, dims: usize, base: i64) -> BoxedStr
 /// A request for one catalogue algorithm: each declared option present or
 /// not, plus now and then an option nobody declared.
 fn algorithm_request() -> impl Strategy<Value = Map<String, Value>> {
-    (0..ALGORITHMS.len(), 1usize..=6, prop::bool::weighted(0.03), base()).prop_flat_map(|(index, dims_guess, stranger, base)| {
-        let info = ALGORITHMS[index];
-        // Mostly a dimension the algorithm takes, sometimes one it does not.
-        let dims = if dims_guess <= 5 { dims_guess.clamp(info.min_dims, info.max_dims) } else { dims_guess };
-        let options: Vec<_> = info
-            .options
-            .iter()
-            .map(|o| {
-                let required = o.required;
-                prop::option::weighted(if required { 0.99 } else { 0.5 }, option_value(o, dims, base))
+    (
+        0..ALGORITHMS.len(),
+        1usize..=6,
+        prop::bool::weighted(0.03),
+        base(),
+    )
+        .prop_flat_map(|(index, dims_guess, stranger, base)| {
+            let info = ALGORITHMS[index];
+            // Mostly a dimension the algorithm takes, sometimes one it does not.
+            let dims = if dims_guess <= 5 {
+                dims_guess.clamp(info.min_dims, info.max_dims)
+            } else {
+                dims_guess
+            };
+            let options: Vec<_> = info
+                .options
+                .iter()
+                .map(|o| {
+                    let required = o.required;
+                    prop::option::weighted(
+                        if required { 0.99 } else { 0.5 },
+                        option_value(o, dims, base),
+                    )
                     .prop_map(move |v| (o.name, v))
-            })
-            .collect();
-        (options, prop::option::of(junk()), prop::bool::weighted(0.2)).prop_map(move |(chosen, extra, closed)| {
-            let mut map = Map::new();
-            map.insert("algorithm".into(), Value::from(info.id));
-            for (name, value) in chosen {
-                if let Some(value) = value {
-                    map.insert(name.into(), value);
-                }
-            }
-            // A move to where it starts: a line of no steps, a full circle.
-            if let (true, Some(from)) = (closed, map.get("from").cloned()) {
-                map.insert("to".into(), from);
-            }
-            // maxSteps kept small unless the case chose it; a too-long move is then refused.
-            map.entry("maxSteps").or_insert(Value::from(CASE_MAX_STEPS));
-            if let (true, Some(extra)) = (stranger, extra) {
-                map.insert("notAnOption".into(), extra);
-            }
-            map
+                })
+                .collect();
+            (options, prop::option::of(junk()), prop::bool::weighted(0.2)).prop_map(
+                move |(chosen, extra, closed)| {
+                    let mut map = Map::new();
+                    map.insert("algorithm".into(), Value::from(info.id));
+                    for (name, value) in chosen {
+                        if let Some(value) = value {
+                            map.insert(name.into(), value);
+                        }
+                    }
+                    // A move to where it starts: a line of no steps, a full circle.
+                    if let (true, Some(from)) = (closed, map.get("from").cloned()) {
+                        map.insert("to".into(), from);
+                    }
+                    // maxSteps kept small unless the case chose it; a too-long move is then refused.
+                    map.entry("maxSteps").or_insert(Value::from(CASE_MAX_STEPS));
+                    if let (true, Some(extra)) = (stranger, extra) {
+                        map.insert("notAnOption".into(), extra);
+                    }
+                    map
+                },
+            )
         })
-    })
 }
 
 fn assert_finite(what: &str, values: &[f64]) {
-    assert!(values.iter().all(|v| v.is_finite()), "{what} has a value that is not finite: {values:?}");
+    assert!(
+        values.iter().all(|v| v.is_finite()),
+        "{what} has a value that is not finite: {values:?}"
+    );
 }
 
 /// The documented invariants of a trace returned for `request`.
@@ -157,16 +183,32 @@ fn check_trace(trace: &Trace, request: &Map<String, Value>) {
     }
     for pair in points.chunks(dims).collect::<Vec<_>>().windows(2) {
         let moved: Vec<i64> = pair[0].iter().zip(pair[1]).map(|(a, b)| b - a).collect();
-        assert!(moved.iter().all(|d| d.abs() <= 1) && moved.iter().any(|d| *d != 0), "a step of {moved:?}");
+        assert!(
+            moved.iter().all(|d| d.abs() <= 1) && moved.iter().any(|d| *d != 0),
+            "a step of {moved:?}"
+        );
     }
     for point in points.chunks(dims) {
-        assert!(point.iter().all(|c| c.abs() <= COORDINATE_LIMIT), "a point past ±2^30: {point:?}");
+        assert!(
+            point.iter().all(|c| c.abs() <= COORDINATE_LIMIT),
+            "a point past ±2^30: {point:?}"
+        );
     }
     let metrics = trace.metrics();
-    assert_finite("metrics", &[metrics.max_deviation, metrics.mean_deviation, metrics.std_deviation]);
+    assert_finite(
+        "metrics",
+        &[
+            metrics.max_deviation,
+            metrics.mean_deviation,
+            metrics.std_deviation,
+        ],
+    );
     assert_finite("max axis error", &metrics.max_axis_error);
     assert_finite("deviation", &trace.deviation_range(0, steps + 1));
-    assert_eq!(trace.decisions_flat(0, steps).len() as u64, steps * trace.columns().len() as u64);
+    assert_eq!(
+        trace.decisions_flat(0, steps).len() as u64,
+        steps * trace.columns().len() as u64
+    );
     serde_json::to_string(&trace.summary()).expect("the summary serializes");
     assert_finite("ideal polyline", &trace.ideal_polyline());
     for k in [0, steps / 2, steps.saturating_sub(1)] {
@@ -196,11 +238,18 @@ fn trace_requests_never_panic_and_keep_their_invariants() {
 
 #[test]
 fn comparisons_and_experiments_never_panic() {
-    let pair = (algorithm_request(), 0..ALGORITHMS.len(), prop::option::of(junk()));
+    let pair = (
+        algorithm_request(),
+        0..ALGORITHMS.len(),
+        prop::option::of(junk()),
+    );
     runner(2)
         .run(&pair, |(mut request, other, junk)| {
             let first = request.remove("algorithm").unwrap();
-            request.insert("algorithms".into(), junk.unwrap_or_else(|| json!([first, ALGORITHMS[other].id])));
+            request.insert(
+                "algorithms".into(),
+                junk.unwrap_or_else(|| json!([first, ALGORITHMS[other].id])),
+            );
             let text = Value::Object(request.clone()).to_string();
             if let Ok(comparison) = voxpath::compare::compare_request(&text) {
                 serde_json::to_string(&comparison).expect("the comparison serializes");
@@ -235,8 +284,38 @@ fn gcode_number() -> impl Strategy<Value = String> {
 /// One G-code line: a motion or modal code, axis and arc words, a feed; now
 /// and then a stranger word, a comment or bytes of any kind.
 fn gcode_line() -> impl Strategy<Value = String> {
-    let code = prop::sample::select(&["G0", "G1", "G2", "G3", "G17", "G18", "G19", "G20", "G21", "G90", "G91", "G93", "G94", "M2", "M30", "G4", "G28", "G2147483649", "M1000000000", "g1", "G1.5", "N10 G1", ""][..]);
-    let axis = (prop::sample::select(&['X', 'Y', 'Z', 'I', 'J', 'K', 'R', 'P', 'F', 'S', 'Q'][..]), gcode_number()).prop_map(|(l, n)| format!("{l}{n}"));
+    let code = prop::sample::select(
+        &[
+            "G0",
+            "G1",
+            "G2",
+            "G3",
+            "G17",
+            "G18",
+            "G19",
+            "G20",
+            "G21",
+            "G90",
+            "G91",
+            "G93",
+            "G94",
+            "M2",
+            "M30",
+            "G4",
+            "G28",
+            "G2147483649",
+            "M1000000000",
+            "g1",
+            "G1.5",
+            "N10 G1",
+            "",
+        ][..],
+    );
+    let axis = (
+        prop::sample::select(&['X', 'Y', 'Z', 'I', 'J', 'K', 'R', 'P', 'F', 'S', 'Q'][..]),
+        gcode_number(),
+    )
+        .prop_map(|(l, n)| format!("{l}{n}"));
     let odd = prop_oneof![
         Just(String::new()),
         "\\([^)\n]{0,10}\\)".prop_map(String::from),
@@ -244,16 +323,30 @@ fn gcode_line() -> impl Strategy<Value = String> {
         "[\\x00-\\x7f]{0,4}".prop_map(String::from),
         any::<String>().prop_map(|s| s.chars().take(4).collect()),
     ];
-    (code, prop::collection::vec(axis, 0..5), prop::option::weighted(0.08, odd))
-        .prop_map(|(code, words, odd)| format!("{code} {}{}", words.join(" "), odd.unwrap_or_default()))
+    (
+        code,
+        prop::collection::vec(axis, 0..5),
+        prop::option::weighted(0.08, odd),
+    )
+        .prop_map(|(code, words, odd)| {
+            format!("{code} {}{}", words.join(" "), odd.unwrap_or_default())
+        })
 }
 
 fn program() -> impl Strategy<Value = String> {
     let ending = prop::sample::select(&["\n", "\n", "\n", "\r\n", "\r"][..]);
-    (prop::bool::weighted(0.8), prop::collection::vec((gcode_line(), ending), 0..12)).prop_map(|(feed, lines)| {
-        let first = if feed { "G21 G90 F600\n" } else { "" };
-        first.to_string() + &lines.into_iter().map(|(l, e)| format!("{l}{e}")).collect::<String>()
-    })
+    (
+        prop::bool::weighted(0.8),
+        prop::collection::vec((gcode_line(), ending), 0..12),
+    )
+        .prop_map(|(feed, lines)| {
+            let first = if feed { "G21 G90 F600\n" } else { "" };
+            first.to_string()
+                + &lines
+                    .into_iter()
+                    .map(|(l, e)| format!("{l}{e}"))
+                    .collect::<String>()
+        })
 }
 
 fn settings() -> impl Strategy<Value = Value> {
@@ -262,7 +355,13 @@ fn settings() -> impl Strategy<Value = Value> {
         1 => prop::collection::vec(0.5f64..20.0, 3).prop_map(|v| json!(v)),
         1 => junk(),
     ];
-    (steps_per_mm, prop::option::of(prop::sample::select(&["circle", "arc-segments", "helix"][..])), prop::option::weighted(0.05, junk()))
+    (
+        steps_per_mm,
+        prop::option::of(prop::sample::select(
+            &["circle", "arc-segments", "helix"][..],
+        )),
+        prop::option::weighted(0.05, junk()),
+    )
         .prop_map(|(steps, arc, extra)| {
             let mut map = json!({ "stepsPerMm": steps, "maxSteps": CASE_MAX_STEPS });
             if let Some(arc) = arc {
@@ -289,15 +388,25 @@ fn gcode_programs_never_panic_and_keep_their_invariants() {
             let program = runner.finish();
             let info = &program.info;
             for diagnostic in info.warnings.iter().chain(&info.errors) {
-                assert!(diagnostic.line >= 1 && diagnostic.line <= lines, "{diagnostic:?} outside {lines} lines");
+                assert!(
+                    diagnostic.line >= 1 && diagnostic.line <= lines,
+                    "{diagnostic:?} outside {lines} lines"
+                );
                 assert!(!diagnostic.message.is_empty());
             }
             assert_eq!(info.steps, program.trace.steps());
             assert!(info.steps <= CASE_MAX_STEPS);
-            assert!(info.duration_seconds.is_finite() && info.duration_seconds >= 0.0, "{}", info.duration_seconds);
+            assert!(
+                info.duration_seconds.is_finite() && info.duration_seconds >= 0.0,
+                "{}",
+                info.duration_seconds
+            );
             let times = program.timeline.step_seconds(0, info.steps);
             assert_finite("step times", &times);
-            assert!(times.windows(2).all(|w| w[0] <= w[1]), "step instants go back in time");
+            assert!(
+                times.windows(2).all(|w| w[0] <= w[1]),
+                "step instants go back in time"
+            );
             assert_finite("speed profile", &program.timeline.speed_profile());
             serde_json::to_string(info).expect("the program serializes");
             check_trace(&program.trace, &Map::new());

@@ -147,12 +147,35 @@ fn a_line_of_wide_characters_is_quoted_whole_characters() {
     // The error of line 2, the text after the lone CR.
     let second_line_error = |source: &str| {
         let p = program(source, 0.5);
-        let error = p.info.errors.iter().find(|d| d.line == 2).unwrap_or_else(|| panic!("no error on line 2: {:?}", p.info.errors));
+        let error = p
+            .info
+            .errors
+            .iter()
+            .find(|d| d.line == 2)
+            .unwrap_or_else(|| panic!("no error on line 2: {:?}", p.info.errors));
         error.message.clone()
     };
-    let message = second_line_error("G0 (\r\u{10000}\u{10000}:\u{10000}\u{10000}\u{80}\u{800}\u{a1})\n");
+    let message =
+        second_line_error("G0 (\r\u{10000}\u{10000}:\u{10000}\u{10000}\u{80}\u{800}\u{a1})\n");
     assert!(message.contains("'\u{10000}\u{10000}"), "{message}");
     // Past 24 characters: the first 16 whole, then the count.
     let message = second_line_error(&format!("G0 (\r{})\n", "\u{10000}".repeat(30)));
-    assert!(message.contains(&format!("{}... (31 characters)", "\u{10000}".repeat(16))), "{message}");
+    assert!(
+        message.contains(&format!("{}... (31 characters)", "\u{10000}".repeat(16))),
+        "{message}"
+    );
+}
+
+/// A NUL or an escape byte in a program is quoted as an escape, never raw.
+#[test]
+fn control_characters_are_quoted_as_escapes() {
+    for (source, quoted) in [
+        ("G1 X1\0 F100\n", "'\\u{0}'"),
+        ("G1 X1 \u{1b}[2J\n", "\\u{1b}"),
+    ] {
+        let (line, _, message) = first_error(source, 1.0);
+        assert_eq!(line, 1);
+        assert!(message.contains(quoted), "{message}");
+        assert!(!message.chars().any(char::is_control), "{message:?}");
+    }
 }

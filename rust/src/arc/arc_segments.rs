@@ -283,7 +283,11 @@ pub fn trace_chords(
     // and back: no steps, or no circle. It takes at least 3, the fewest
     // that go around the centre (the blog and Grbl would not move at all).
     let closed = spec.from == spec.to && spec.rise == 0;
-    let n = if closed { counted.max(MIN_FULL_CIRCLE_CHORDS) } else { counted };
+    let n = if closed {
+        counted.max(MIN_FULL_CIRCLE_CHORDS)
+    } else {
+        counted
+    };
     let chords = vertices(spec, n);
     let arc = spec.ideal_arc();
     let helix = HelixPath {
@@ -579,16 +583,29 @@ mod tests {
                     r#"{{"algorithm":{algorithm},"from":{from:?},"to":{from:?},"center":{center:?},"segmentLength":1000}}"#
                 ))
                 .unwrap();
-                assert_eq!(t.segments().len(), MIN_FULL_CIRCLE_CHORDS as usize, "{algorithm} {from:?}");
+                assert_eq!(
+                    t.segments().len(),
+                    MIN_FULL_CIRCLE_CHORDS as usize,
+                    "{algorithm} {from:?}"
+                );
                 assert_eq!(t.end(), Point::new(&from));
                 // Three chords of a circle of radius 10 (each 17.3 long, the
                 // longest axis at least 10 after rounding) take at least 30 steps.
                 assert!(t.steps() >= 30, "{algorithm} {from:?}: {} steps", t.steps());
                 let note = &t.segments()[0].setup_note;
-                assert!(note.contains("gives 1 chord, raised to 3, the fewest that go around a full circle"), "{note}");
+                assert!(
+                    note.contains(
+                        "gives 1 chord, raised to 3, the fewest that go around a full circle"
+                    ),
+                    "{note}"
+                );
                 // Every point is within the chord bound of the circle.
                 let bound = 10.0 * (1.0 - (PI / 3.0).cos()) + 2f64.sqrt();
-                assert!(t.metrics().max_deviation <= bound, "{}", t.metrics().max_deviation);
+                assert!(
+                    t.metrics().max_deviation <= bound,
+                    "{}",
+                    t.metrics().max_deviation
+                );
             }
         }
     }

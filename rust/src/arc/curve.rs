@@ -488,12 +488,24 @@ mod tests {
     /// a few roundings), a million turns out included.
     #[test]
     fn sin_cos_of_many_turns_agree_with_the_unreduced_angle() {
-        for theta in [1.0, 65535.9, 65536.0, 1e5 + 0.3, -2e6 - 0.7, TAU * 1e6 + 1.0, 7e7] {
+        for theta in [
+            1.0,
+            65535.9,
+            65536.0,
+            1e5 + 0.3,
+            -2e6 - 0.7,
+            TAU * 1e6 + 1.0,
+            7e7,
+        ] {
             let (s, c) = sin_cos_turns(theta);
             let (s0, c0) = f64::sin_cos(theta);
             // ulp of theta, and the TAU rounding: k × 2.45e-16.
-            let tolerance = 4.0 * (theta.abs() * f64::EPSILON + theta.abs() / TAU * 2.5e-16) + 1e-15;
-            assert!((s - s0).abs() <= tolerance && (c - c0).abs() <= tolerance, "{theta}: {s} {s0} {c} {c0}");
+            let tolerance =
+                4.0 * (theta.abs() * f64::EPSILON + theta.abs() / TAU * 2.5e-16) + 1e-15;
+            assert!(
+                (s - s0).abs() <= tolerance && (c - c0).abs() <= tolerance,
+                "{theta}: {s} {s0} {c} {c0}"
+            );
         }
     }
 

@@ -105,15 +105,29 @@ pub fn parse_line_into(text: &str, block: &mut Block) {
 /// first digits and its length.
 const ECHO_CHARS: usize = 24;
 
-/// `text` as a message quotes it, cut between characters (a byte offset
-/// could fall inside one: the fuzz target found that panic).
+/// `text` as a message quotes it: cut between characters (a byte offset
+/// could fall inside one: the fuzz target found that panic), and control
+/// characters written as escapes (\u{0}), so that a NUL or an escape
+/// sequence in a program never reaches the terminal raw.
 fn echo(text: &str) -> String {
     let chars = text.chars().count();
+    let quoted = |part: &mut dyn Iterator<Item = char>| -> String {
+        part.map(|c| {
+            if c.is_control() {
+                c.escape_unicode().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+    };
     if chars <= ECHO_CHARS {
-        text.to_string()
+        quoted(&mut text.chars())
     } else {
-        let start: String = text.chars().take(ECHO_CHARS - 8).collect();
-        format!("{start}... ({chars} characters)")
+        format!(
+            "{}... ({chars} characters)",
+            quoted(&mut text.chars().take(ECHO_CHARS - 8))
+        )
     }
 }
 
