@@ -64,3 +64,14 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+/// A number as a message prints it: as Rust writes it, or in e-notation
+/// where that would run to hundreds of digits (1e-300 is "1e-300", not 300
+/// zeros and a 1).
+pub fn number_text(value: f64) -> String {
+    if value == 0.0 || !value.is_finite() || (1e-6..1e15).contains(&value.abs()) {
+        value.to_string()
+    } else {
+        format!("{value:e}")
+    }
+}

@@ -66,16 +66,24 @@ pub(crate) fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES]
     }
 }
 
+/// Fewest and most steps per mm a machine may have: one step a metre, and
+/// one a nanometre. Outside them a program's moves round to no steps at all
+/// (stepsPerMm 1e-300 once ran every move as 0 steps, silently) or to
+/// coordinates past ±2^30 within a millimetre or so.
+pub const MIN_STEPS_PER_MM: f64 = 0.001;
+pub const MAX_STEPS_PER_MM: f64 = 1e6;
+
 impl Machine {
-    /// A machine with the given steps per mm (each finite and > 0).
+    /// A machine with the given steps per mm (each from MIN_STEPS_PER_MM to MAX_STEPS_PER_MM).
     pub fn new(steps_per_mm: [f64; MACHINE_AXES]) -> Result<Machine, Error> {
         for (axis, &v) in steps_per_mm.iter().enumerate() {
-            if !(v.is_finite() && v > 0.0) {
+            if !(MIN_STEPS_PER_MM..=MAX_STEPS_PER_MM).contains(&v) {
                 return Err(Error::field(
                     "stepsPerMm",
                     format!(
-                        "{} must be more than 0 steps per mm, got {v}",
-                        crate::grid::AXIS_NAMES[axis]
+                        "{} must be {MIN_STEPS_PER_MM} to {MAX_STEPS_PER_MM} steps per mm, got {}",
+                        crate::grid::AXIS_NAMES[axis],
+                        crate::error::number_text(v)
                     ),
                 ));
             }
@@ -235,7 +243,16 @@ mod tests {
         );
         assert_eq!(
             e(json!({"stepsPerMm": [80, 0, 400]})),
-            "stepsPerMm: y must be more than 0 steps per mm, got 0"
+            "stepsPerMm: y must be 0.001 to 1000000 steps per mm, got 0"
+        );
+        // Once 0 steps for every move, silently.
+        assert_eq!(
+            e(json!({"stepsPerMm": 1e-300})),
+            "stepsPerMm: x must be 0.001 to 1000000 steps per mm, got 1e-300"
+        );
+        assert_eq!(
+            e(json!({"stepsPerMm": [80, 80, 2e6]})),
+            "stepsPerMm: z must be 0.001 to 1000000 steps per mm, got 2000000"
         );
         assert_eq!(
             e(json!({"stepAngle": 1.8, "microsteps": 8})),
