@@ -82,7 +82,10 @@ pub struct StepWhy {
 }
 
 /// Pairs as one JSON object, keeping their order.
-fn as_object<S: serde::Serializer>(pairs: &[(String, Value)], s: S) -> Result<S::Ok, S::Error> {
+pub(crate) fn as_object<S: serde::Serializer>(
+    pairs: &[(String, Value)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
     s.collect_map(pairs.iter().map(|(k, v)| (k, v)))
 }
 
@@ -184,7 +187,7 @@ fn readable(column: &Column, value: f64) -> Value {
 }
 
 /// Why `t` took the step that produced point index `k`, if it did.
-fn why_at_point(t: &Trace, k: u64) -> Option<StepWhy> {
+pub(crate) fn why_at_point(t: &Trace, k: u64) -> Option<StepWhy> {
     let step = k.checked_sub(1).filter(|&s| s < t.steps())?;
     let table = t.decisions(step, step + 1);
     let decisions = t

@@ -139,28 +139,40 @@ pub struct RandomLines {
 pub const OPTIONS: &[OptionSpec] = &[
     OptionSpec {
         name: "count",
-        kind: OptionKind::Integer,
+        kind: OptionKind::Integer {
+            min: None,
+            max: None,
+        },
         required: false,
         default: Some("100"),
         doc: "How many random lines (Wang: 100), at most 100000.",
     },
     OptionSpec {
         name: "seed",
-        kind: OptionKind::Integer,
+        kind: OptionKind::Integer {
+            min: None,
+            max: None,
+        },
         required: false,
         default: Some("1"),
         doc: "Seed of the SplitMix64 generator: the same seed gives the same lines everywhere.",
     },
     OptionSpec {
         name: "maxCoordinate",
-        kind: OptionKind::Integer,
+        kind: OptionKind::Integer {
+            min: None,
+            max: None,
+        },
         required: false,
         default: Some("100"),
         doc: "End coordinates are drawn uniformly from 0 to this (Wang: 100).",
     },
     OptionSpec {
         name: "dims",
-        kind: OptionKind::Integer,
+        kind: OptionKind::Integer {
+            min: None,
+            max: None,
+        },
         required: false,
         default: None,
         doc: "Axes per line (default 3, within what the algorithm takes).",

@@ -13,6 +13,7 @@
 
 pub mod algorithms;
 pub mod arc;
+pub mod check;
 pub mod compare;
 pub mod error;
 pub mod experiment;

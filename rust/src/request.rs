@@ -16,8 +16,14 @@ pub enum OptionKind {
     Point,
     /// A real number.
     Number,
-    /// A whole number.
-    Integer,
+    /// A whole number, within `min..=max` where they are given (a small
+    /// declared range is what a check tries every value of, see `check`).
+    Integer {
+        #[serde(skip_serializing_if = "Option::is_none")]
+        min: Option<i64>,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        max: Option<i64>,
+    },
     /// One of a fixed set of words.
     Choice { values: &'static [&'static str] },
     /// true or false.
@@ -55,7 +61,10 @@ pub const TO: OptionSpec = OptionSpec {
 
 pub const MAX_STEPS: OptionSpec = OptionSpec {
     name: "maxSteps",
-    kind: OptionKind::Integer,
+    kind: OptionKind::Integer {
+        min: None,
+        max: None,
+    },
     required: false,
     default: Some("50000000"),
     doc: "Refuse paths longer than this many steps (at most 1000000000).",
@@ -147,6 +156,11 @@ impl Request {
             algorithm: self.algorithm.clone(),
             options,
         }
+    }
+
+    /// The options as given (without `algorithm`).
+    pub fn options(&self) -> &Map<String, Value> {
+        &self.options
     }
 
     /// Sets an option.

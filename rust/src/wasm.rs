@@ -77,6 +77,41 @@ pub fn compare_json(request_json: &str) -> Result<String, JsValue> {
     Ok(serde_json::to_string(&result).expect("the comparison serializes"))
 }
 
+/// Checks a learner's points against the request (see `check`): `points`
+/// is text (CSV, blank-separated rows or a printed list, parsed here and
+/// nowhere else) or a flat Int32Array / Float64Array with `dims` values per
+/// point. Returns the check as JSON text.
+#[wasm_bindgen(js_name = checkJson)]
+pub fn check_json(
+    request_json: &str,
+    points: JsValue,
+    dims: Option<u32>,
+) -> Result<String, JsValue> {
+    let result = if let Some(text) = points.as_string() {
+        crate::check::check_text(request_json, &text)
+    } else {
+        let values: Vec<f64> = if let Some(ints) = points.dyn_ref::<js_sys::Int32Array>() {
+            ints.to_vec().into_iter().map(f64::from).collect()
+        } else if let Some(floats) = points.dyn_ref::<js_sys::Float64Array>() {
+            floats.to_vec()
+        } else {
+            return Err(to_js_error(&Error::field(
+                "points",
+                "expected text, an Int32Array or a Float64Array",
+            )));
+        };
+        let dims = dims.ok_or_else(|| {
+            to_js_error(&Error::field(
+                "dims",
+                "missing: give the coordinates per point",
+            ))
+        })?;
+        crate::check::check_flat(request_json, &values, dims as usize)
+    };
+    let check = result.map_err(|e| to_js_error(&e))?;
+    Ok(serde_json::to_string(&check).expect("the check serializes"))
+}
+
 /// A finished trace held in wasm memory.
 #[wasm_bindgen]
 pub struct TraceHandle(Trace);

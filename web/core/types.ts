@@ -91,7 +91,8 @@ export interface OptionSpec {
   kind:
     | { type: 'point' }
     | { type: 'number' }
-    | { type: 'integer' }
+    /** min and max (inclusive) where the option declares a range. */
+    | { type: 'integer'; min?: number; max?: number }
     | { type: 'choice'; values: string[] }
     | { type: 'boolean' };
   required: boolean;

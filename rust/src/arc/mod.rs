@@ -57,7 +57,10 @@ pub const PLANE: OptionSpec = OptionSpec {
 
 pub const TURNS: OptionSpec = OptionSpec {
     name: "turns",
-    kind: OptionKind::Integer,
+    kind: OptionKind::Integer {
+        min: None,
+        max: None,
+    },
     required: false,
     default: Some("0"),
     doc: "Extra full turns before stopping at the end (G-code P minus 1); from = to is already one full circle.",

@@ -69,7 +69,10 @@ pub const STEP_ANGLE: OptionSpec = OptionSpec {
 
 pub const MICROSTEPS: OptionSpec = OptionSpec {
     name: "microsteps",
-    kind: OptionKind::Integer,
+    kind: OptionKind::Integer {
+        min: None,
+        max: None,
+    },
     required: false,
     default: None,
     doc: "Microsteps s per full step (one or [x, y, z]).",

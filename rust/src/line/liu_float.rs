@@ -23,7 +23,10 @@ pub const MAX_DECIMALS: i64 = 10;
 
 pub const DECIMALS: OptionSpec = OptionSpec {
     name: "decimals",
-    kind: OptionKind::Integer,
+    kind: OptionKind::Integer {
+        min: Some(0),
+        max: Some(MAX_DECIMALS),
+    },
     required: false,
     default: Some("1"),
     doc: "Decimal places kept of the slope k and of each decision parameter, 0 to 10 (1 drifts as Wang's Fig. 10 shows; 4 reproduces Liu's Table 1).",

@@ -1,0 +1,940 @@
+//! Checking a learner's own implementation: given a trace request and the
+//! points a student's program printed, replay the rule, find the first
+//! point where the two part, say why the rule went where it went (the
+//! trace's own explanation and decision values of that step, as
+//! [`crate::compare`] reports them), and name every catalogue rule and
+//! option set the points do follow ("your path is bresenham3d with tie =
+//! hold").
+//!
+//! Index spaces are the trace's: point index k (0..=steps) is the position
+//! after k steps; the step that produced point k is step index k - 1.
+//!
+//! Points arrive as text (one point per line, comma- or blank-separated,
+//! with an optional header; or the list a program printed, one point per
+//! innermost bracket: `[(0, 0, 0), (1, 1, 1)]`) or as a flat array. Input
+//! that is not a path is an error naming the point: a wrong number of
+//! coordinates, a non-integer, a jump of more than one cell per axis.
+
+use crate::algorithms::{self, AlgorithmInfo, Family};
+use crate::compare::{StepWhy, as_object, why_at_point};
+use crate::error::Error;
+use crate::grid::{AXIS_NAMES, Point};
+use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
+use crate::trace::Trace;
+use serde::Serialize;
+use serde_json::{Map, Value};
+
+/// Points shown on each side of the first difference.
+pub const AROUND: u64 = 3;
+
+/// An integer option with a declared range of at most this many values has
+/// every value tried for `alsoMatches` (`decimals` 0 to 10 is 11 values;
+/// `maxSteps` 0 to 10^9 is not tried).
+pub const SMALL_RANGE: i64 = 16;
+
+/// Largest coordinate magnitude read: every integer up to it is exact in f64.
+const EXACT_LIMIT: f64 = 9_007_199_254_740_992.0;
+
+/// A learner's points: `dims` coordinates per point, flat.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Points {
+    pub dims: usize,
+    pub coords: Vec<i64>,
+}
+
+impl Points {
+    pub fn len(&self) -> u64 {
+        (self.coords.len() / self.dims) as u64
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.coords.is_empty()
+    }
+
+    /// Point index k.
+    pub fn get(&self, k: u64) -> &[i64] {
+        let at = k as usize * self.dims;
+        &self.coords[at..at + self.dims]
+    }
+
+    /// Points from a flat array of `dims` values per point (a JS array of
+    /// `[x, y, z]` rows or an Int32Array), checked as [`Self::from_text`]
+    /// checks text; errors name the field `points` and the point index.
+    pub fn from_flat(values: &[f64], dims: usize, move_dims: usize) -> Result<Points, Error> {
+        let wrong = |message: String| Error::field("points", message);
+        if dims != move_dims {
+            return Err(wrong(format!(
+                "the points have {dims} coordinates each; the move has {move_dims}"
+            )));
+        }
+        if values.len() % dims != 0 {
+            return Err(wrong(format!(
+                "{} values are not a whole number of {dims}-coordinate points",
+                values.len()
+            )));
+        }
+        let mut coords = Vec::with_capacity(values.len());
+        for (i, &v) in values.iter().enumerate() {
+            coords.push(coordinate(v, i / dims, i % dims).map_err(wrong)?);
+        }
+        let points = Points { dims, coords };
+        points.check_path().map_err(|(_, message)| wrong(message))?;
+        Ok(points)
+    }
+
+    /// Points from text: one point per line, its coordinates separated by
+    /// commas or blanks, an optional header first (its x, y, z, ... columns
+    /// are read, so voxpath's own CSV checks too), `#` comment lines; or,
+    /// when the text has brackets, one point per innermost `[...]` or
+    /// `(...)`, as programs print lists. Errors give the line and column,
+    /// and name the point index.
+    pub fn from_text(text: &str, dims: usize) -> Result<Points, Error> {
+        let rows = if text.contains(['[', '(']) {
+            bracket_rows(text)
+        } else {
+            line_rows(text, dims)?
+        };
+        if rows.is_empty() {
+            return Err(Error::at(1, 1, "there are no points"));
+        }
+        let mut coords = Vec::with_capacity(rows.len() * dims);
+        for (index, row) in rows.iter().enumerate() {
+            let at = |column: usize, message: String| Error::at(row.line, column as u32, message);
+            if row.cells.len() != dims {
+                return Err(at(
+                    row.column,
+                    format!(
+                        "point {index} has {} coordinates; the move has {dims}",
+                        row.cells.len()
+                    ),
+                ));
+            }
+            for (axis, &(start, cell)) in row.cells.iter().enumerate() {
+                let column = row.column + start;
+                let value = cell.parse::<f64>().map_err(|_| {
+                    at(
+                        column,
+                        format!(
+                            "point {index}: {} = '{cell}' is not a number",
+                            AXIS_NAMES[axis]
+                        ),
+                    )
+                })?;
+                coords.push(coordinate(value, index, axis).map_err(|m| at(column, m))?);
+            }
+        }
+        let points = Points { dims, coords };
+        points.check_path().map_err(|(index, message)| {
+            Error::at(rows[index].line, rows[index].column as u32, message)
+        })?;
+        Ok(points)
+    }
+
+    /// Every point one cell or less from the one before it on each axis,
+    /// and at least one point; else the point index at fault and why.
+    fn check_path(&self) -> Result<(), (usize, String)> {
+        if self.is_empty() {
+            return Err((0, "there are no points".to_string()));
+        }
+        for k in 1..self.len() {
+            let (before, now) = (self.get(k - 1), self.get(k));
+            if before.iter().zip(now).any(|(a, b)| (a - b).abs() > 1) {
+                return Err((
+                    k as usize,
+                    format!(
+                        "point {k} {} is more than one cell from point {} {}: a path moves each axis at most one cell per step",
+                        Point::new(now),
+                        k - 1,
+                        Point::new(before)
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A coordinate read from input: a whole number, exactly representable.
+fn coordinate(value: f64, index: usize, axis: usize) -> Result<i64, String> {
+    let name = AXIS_NAMES[axis];
+    if !value.is_finite() {
+        return Err(format!("point {index}: {name} is not a number"));
+    }
+    if value.fract() != 0.0 {
+        return Err(format!(
+            "point {index}: {name} = {value} is not a whole number"
+        ));
+    }
+    if value.abs() > EXACT_LIMIT {
+        return Err(format!("point {index}: {name} = {value} is too large"));
+    }
+    Ok(value as i64)
+}
+
+/// One point's cells as written: each cell's text and its offset from the
+/// row's column.
+struct Row<'a> {
+    line: u32,
+    /// 1-based column of the row's start.
+    column: usize,
+    cells: Vec<(usize, &'a str)>,
+}
+
+/// Cells of `text` split at commas, semicolons and blanks, each with its
+/// byte offset (quotes around a cell removed, as CSV writes them).
+fn cells(text: &str) -> Vec<(usize, &str)> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, c) in text.char_indices() {
+        let separator = c == ',' || c == ';' || c.is_whitespace();
+        match (separator, start) {
+            (true, Some(s)) => {
+                out.push((s, &text[s..i]));
+                start = None;
+            }
+            (false, None) => start = Some(i),
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        out.push((s, &text[s..]));
+    }
+    for cell in &mut out {
+        if cell.1.len() >= 2 && cell.1.starts_with('"') && cell.1.ends_with('"') {
+            *cell = (cell.0 + 1, &cell.1[1..cell.1.len() - 1]);
+        }
+    }
+    out
+}
+
+/// One row per innermost bracket pair, `[...]` or `(...)`.
+fn bracket_rows(text: &str) -> Vec<Row<'_>> {
+    let mut rows = Vec::new();
+    let (mut line, mut line_start) = (1u32, 0usize);
+    let mut open: Option<(usize, u32, usize)> = None;
+    for (i, c) in text.char_indices() {
+        match c {
+            '\n' => {
+                line += 1;
+                line_start = i + 1;
+            }
+            '[' | '(' => open = Some((i + 1, line, i + 1 - line_start + 1)),
+            ']' | ')' => {
+                if let Some((start, row_line, column)) = open.take() {
+                    rows.push(Row {
+                        line: row_line,
+                        column,
+                        cells: cells(&text[start..i]),
+                    });
+                }
+            }
+            _ => {}
+        }
+    }
+    rows
+}
+
+/// One row per non-blank line; a first line that is not all numbers is a
+/// header, whose x, y, z, ... columns (any case) are the ones read, or, if
+/// it does not name them all, its first `dims` columns.
+fn line_rows(text: &str, dims: usize) -> Result<Vec<Row<'_>>, Error> {
+    let mut rows = Vec::new();
+    let mut pick: Option<Vec<usize>> = None;
+    let mut first = true;
+    for (number, line) in text.lines().enumerate() {
+        let trimmed = line.trim_start();
+        if trimmed.is_empty() || trimmed.starts_with('#') {
+            continue;
+        }
+        let line_number = number as u32 + 1;
+        let row_cells = cells(line);
+        if first {
+            first = false;
+            if row_cells.iter().any(|(_, c)| c.parse::<f64>().is_err()) {
+                pick = Some(header_columns(&row_cells, dims).ok_or_else(|| {
+                    Error::at(
+                        line_number,
+                        1,
+                        format!(
+                            "the header names neither {} nor {dims} columns",
+                            AXIS_NAMES[..dims].join(", ")
+                        ),
+                    )
+                })?);
+                continue;
+            }
+        }
+        let row_cells = match &pick {
+            None => row_cells,
+            Some(columns) => {
+                let picked: Option<Vec<_>> =
+                    columns.iter().map(|&c| row_cells.get(c).copied()).collect();
+                picked.ok_or_else(|| {
+                    Error::at(
+                        line_number,
+                        1,
+                        format!(
+                            "point {} has {} cells; the header has more columns",
+                            rows.len(),
+                            row_cells.len()
+                        ),
+                    )
+                })?
+            }
+        };
+        rows.push(Row {
+            line: line_number,
+            column: 1,
+            cells: row_cells,
+        });
+    }
+    Ok(rows)
+}
+
+/// Which header cells hold the coordinates.
+fn header_columns(header: &[(usize, &str)], dims: usize) -> Option<Vec<usize>> {
+    let named: Option<Vec<usize>> = AXIS_NAMES[..dims]
+        .iter()
+        .map(|axis| {
+            header
+                .iter()
+                .position(|(_, c)| c.eq_ignore_ascii_case(axis))
+        })
+        .collect();
+    named.or_else(|| (header.len() >= dims).then(|| (0..dims).collect()))
+}
+
+/// What kind of difference the first one is.
+#[derive(Serialize, Clone, Copy, Debug, PartialEq, Eq)]
+#[serde(rename_all = "camelCase")]
+pub enum DifferenceKind {
+    /// The points start elsewhere than the move (point 0 differs).
+    Start,
+    /// A point the rule reaches by a different step.
+    Step,
+    /// The points end before the rule's path does.
+    Stops,
+    /// The points go on after the rule's path has ended.
+    GoesOn,
+}
+
+/// The first point where the learner's path and the rule's part.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct Difference {
+    pub kind: DifferenceKind,
+    /// Point index k; the step that produced it is step index k - 1.
+    pub point_index: u64,
+    /// The rule's step index there (k - 1), when the rule takes one.
+    pub step_index: Option<u64>,
+    /// The rule's point k, or None after its end.
+    pub expected: Option<Vec<i64>>,
+    /// The learner's point k, or None after their last.
+    pub got: Option<Vec<i64>>,
+    /// What differs, in one sentence ("your path stops at step 7 of 10").
+    pub message: String,
+    /// Why the rule took its step there: the trace's own explanation
+    /// ([`Trace::explain`]); for a start or a tail past the end, where the
+    /// rule takes no step, what it does instead.
+    pub why: String,
+    /// The decision values of that step by column name (numbers, category
+    /// labels, true/false), empty where the rule takes no step.
+    #[serde(serialize_with = "as_object")]
+    pub decisions: Vec<(String, Value)>,
+    /// Point indices up to [`AROUND`] either side, each side's point.
+    pub around: Vec<AroundRow>,
+}
+
+/// One point index near the difference, on both paths.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct AroundRow {
+    pub point_index: u64,
+    pub expected: Option<Vec<i64>>,
+    pub got: Option<Vec<i64>>,
+}
+
+/// A catalogue rule the points follow exactly.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct AlsoMatch {
+    pub algorithm: String,
+    /// The options that choose this rule among the algorithm's variants
+    /// (those with a fixed set of values); an option whose every value
+    /// gives the same path here is left out. Pass it with the request's
+    /// other options to trace the same path.
+    #[serde(serialize_with = "as_object")]
+    pub options: Vec<(String, Value)>,
+    /// "bresenham3d with tie = hold".
+    pub label: String,
+    /// The algorithm's errata about the variant chosen (for example
+    /// Saleem's printed 2D pseudo-code), from the catalogue.
+    pub errata: Vec<&'static str>,
+}
+
+/// The result of a check.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct Check {
+    /// The learner's points are the rule's path, point for point.
+    pub matches: bool,
+    pub algorithm: String,
+    /// Steps of the rule's path.
+    pub steps: u64,
+    /// Steps of the learner's path (points - 1).
+    pub your_steps: u64,
+    /// None when the points match.
+    pub first_difference: Option<Difference>,
+    /// Every catalogue rule of the same family whose path equals the points.
+    pub also_matches: Vec<AlsoMatch>,
+}
+
+/// Checks text points against the request given as JSON text.
+pub fn check_text(request_json: &str, text: &str) -> Result<Check, Error> {
+    let request = Request::from_json(request_json)?;
+    let trace = crate::run(&request)?;
+    let points = Points::from_text(text, trace.dims())?;
+    Ok(check_trace(&request, &trace, &points))
+}
+
+/// Checks flat points (`dims` per point) against the request as JSON text.
+pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Check, Error> {
+    let request = Request::from_json(request_json)?;
+    let trace = crate::run(&request)?;
+    let points = Points::from_flat(values, dims, trace.dims())?;
+    Ok(check_trace(&request, &trace, &points))
+}
+
+/// Checks points against the trace of `request` (already run).
+pub fn check_trace(request: &Request, trace: &Trace, points: &Points) -> Check {
+    let first_difference = first_difference(trace, points);
+    Check {
+        matches: first_difference.is_none(),
+        algorithm: trace.algorithm.clone(),
+        steps: trace.steps(),
+        your_steps: points.len() - 1,
+        first_difference,
+        also_matches: also_matches(request, points),
+    }
+}
+
+/// Points read from a trace at a time while comparing.
+const CHUNK_POINTS: u64 = 1 << 16;
+
+/// The first point index below both lengths where `trace` and `points`
+/// differ, comparing a chunk at a time so that a mismatch stops early.
+fn first_mismatch(trace: &Trace, points: &Points) -> Option<u64> {
+    let shared = (trace.steps() + 1).min(points.len());
+    let dims = points.dims;
+    let mut from = 0;
+    while from < shared {
+        let to = (from + CHUNK_POINTS).min(shared);
+        let expected = trace.points_flat(from, to);
+        let got = &points.coords[from as usize * dims..to as usize * dims];
+        if let Some(i) = expected
+            .chunks(dims)
+            .zip(got.chunks(dims))
+            .position(|(e, g)| e != g)
+        {
+            return Some(from + i as u64);
+        }
+        from = to;
+    }
+    None
+}
+
+fn follows(trace: &Trace, points: &Points) -> bool {
+    trace.steps() + 1 == points.len() && first_mismatch(trace, points).is_none()
+}
+
+fn first_difference(trace: &Trace, points: &Points) -> Option<Difference> {
+    let steps = trace.steps();
+    let (kind, k) = match first_mismatch(trace, points) {
+        Some(0) => (DifferenceKind::Start, 0),
+        Some(k) => (DifferenceKind::Step, k),
+        None if points.len() < steps + 1 => (DifferenceKind::Stops, points.len()),
+        None if points.len() > steps + 1 => (DifferenceKind::GoesOn, steps + 1),
+        None => return None,
+    };
+    let expected = |i: u64| (i <= steps).then(|| trace.point(i).coords().to_vec());
+    let got = |i: u64| (i < points.len()).then(|| points.get(i).to_vec());
+    let show = |p: &Option<Vec<i64>>| p.as_deref().map(Point::new).map(|p| p.to_string());
+    let step = why_at_point(trace, k);
+    let message = match kind {
+        DifferenceKind::Start => format!(
+            "your path starts at {}; the move starts at {}",
+            show(&got(0)).unwrap_or_default(),
+            trace.start()
+        ),
+        DifferenceKind::Step => format!(
+            "at point {k} your path goes to {}; the rule goes to {}",
+            show(&got(k)).unwrap_or_default(),
+            show(&expected(k)).unwrap_or_default()
+        ),
+        DifferenceKind::Stops => format!("your path stops at step {} of {steps}", k - 1),
+        DifferenceKind::GoesOn => "your path goes on after the end".to_string(),
+    };
+    let why = match (&step, kind) {
+        (Some(s), _) => s.explanation.clone(),
+        (None, DifferenceKind::GoesOn) => format!(
+            "the rule's path ends at {} after {steps} steps",
+            trace.end()
+        ),
+        (None, _) => format!("every path of the move starts at from = {}", trace.start()),
+    };
+    let first = k.saturating_sub(AROUND);
+    let last = (k + AROUND).min(steps.max(points.len() - 1));
+    Some(Difference {
+        kind,
+        point_index: k,
+        step_index: step.as_ref().map(|s| s.step_index),
+        expected: expected(k),
+        got: got(k),
+        message,
+        why,
+        decisions: step.map(|s: StepWhy| s.decisions).unwrap_or_default(),
+        around: (first..=last)
+            .map(|i| AroundRow {
+                point_index: i,
+                expected: expected(i),
+                got: got(i),
+            })
+            .collect(),
+    })
+}
+
+/// The values of an option that a check tries: every choice, both booleans,
+/// each integer of a small declared range; None for any other option (kept
+/// as the request gives it).
+fn tried_values(spec: &OptionSpec) -> Option<Vec<Value>> {
+    match spec.kind {
+        OptionKind::Choice { values } => Some(values.iter().map(|&v| Value::from(v)).collect()),
+        OptionKind::Boolean => Some(vec![Value::from(false), Value::from(true)]),
+        OptionKind::Integer {
+            min: Some(lo),
+            max: Some(hi),
+        } if hi - lo < SMALL_RANGE => Some((lo..=hi).map(Value::from).collect()),
+        _ => None,
+    }
+}
+
+/// The family of the requested algorithm (an unknown one was refused when
+/// the request ran).
+fn family_of(request: &Request) -> Option<Family> {
+    algorithms::find(&request.algorithm).ok().map(|a| a.family)
+}
+
+/// Every algorithm of the request's family, with every combination of the
+/// values [`tried_values`] gives, whose path equals `points`. The request's
+/// other options go to each algorithm that takes them; `maxSteps` is held
+/// to the points' length, so a rule that needs more steps stops early.
+pub fn also_matches(request: &Request, points: &Points) -> Vec<AlsoMatch> {
+    let Some(family) = family_of(request) else {
+        return Vec::new();
+    };
+    let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
+    let mut out = Vec::new();
+    for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
+        let tried: Vec<(&OptionSpec, Vec<Value>)> = info
+            .options
+            .iter()
+            .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
+            .collect();
+        let mut base = Map::new();
+        for (name, value) in request.options() {
+            let declared = info.options.iter().find(|o| o.name == name);
+            if declared.is_some_and(|o| tried_values(o).is_none()) {
+                base.insert(name.clone(), value.clone());
+            }
+        }
+        if info.options.iter().any(|o| o.name == MAX_STEPS.name) {
+            base.insert(MAX_STEPS.name.to_string(), Value::from(max_steps));
+        }
+        let mut matched: Vec<Vec<Option<Value>>> = Vec::new();
+        let mut choice = vec![0usize; tried.len()];
+        loop {
+            let mut combination: Vec<Option<Value>> = tried
+                .iter()
+                .zip(&choice)
+                .map(|((_, values), &i)| Some(values[i].clone()))
+                .collect();
+            if let Some(trace) = trace_combination(info, &base, &tried, &mut combination)
+                && follows(&trace, points)
+                && !matched.contains(&combination)
+            {
+                matched.push(combination);
+            }
+            if !next_combination(&mut choice, &tried) {
+                break;
+            }
+        }
+        out.extend(describe_matches(info, &tried, matched));
+    }
+    out
+}
+
+/// Traces `info` with `base` and the combination's values. An option the
+/// algorithm refuses in this combination (lineAlgorithm with helix's method
+/// saleem: "applies to method segments only") is left out, marked None, and
+/// the trace tried again; None when it fails for any other reason.
+fn trace_combination(
+    info: &AlgorithmInfo,
+    base: &Map<String, Value>,
+    tried: &[(&OptionSpec, Vec<Value>)],
+    combination: &mut [Option<Value>],
+) -> Option<Trace> {
+    loop {
+        let mut options = base.clone();
+        for ((spec, _), value) in tried.iter().zip(combination.iter()) {
+            if let Some(value) = value {
+                options.insert(spec.name.to_string(), value.clone());
+            }
+        }
+        match (info.trace)(&Request::new(info.id, options)) {
+            Ok(trace) => return Some(trace),
+            Err(e) => {
+                let refused = tried
+                    .iter()
+                    .position(|(spec, _)| e.field_name() == Some(spec.name))?;
+                combination[refused].take()?;
+            }
+        }
+    }
+}
+
+/// Advances `choice` (an index into each option's values) like an
+/// odometer; false after the last combination.
+fn next_combination(choice: &mut [usize], tried: &[(&OptionSpec, Vec<Value>)]) -> bool {
+    for (slot, (_, values)) in choice.iter_mut().zip(tried).rev() {
+        *slot += 1;
+        if *slot < values.len() {
+            return true;
+        }
+        *slot = 0;
+    }
+    false
+}
+
+/// The matching combinations of one algorithm as entries, leaving out each
+/// option whose every value matched wherever the others matched (`gcd`,
+/// which never changes the path; `tie` on a line without ties) and each
+/// one the combination could not take (None).
+fn describe_matches(
+    info: &AlgorithmInfo,
+    tried: &[(&OptionSpec, Vec<Value>)],
+    mut matched: Vec<Vec<Option<Value>>>,
+) -> Vec<AlsoMatch> {
+    for (option, (_, values)) in tried.iter().enumerate() {
+        let irrelevant = matched.iter().any(|m| m[option].is_some())
+            && matched.iter().filter(|m| m[option].is_some()).all(|m| {
+                values.iter().all(|v| {
+                    let mut other = m.clone();
+                    other[option] = Some(v.clone());
+                    matched.contains(&other)
+                })
+            });
+        if irrelevant {
+            let mut unique: Vec<Vec<Option<Value>>> = Vec::new();
+            for mut m in matched {
+                m[option] = None;
+                if !unique.contains(&m) {
+                    unique.push(m);
+                }
+            }
+            matched = unique;
+        }
+    }
+    matched
+        .into_iter()
+        .map(|m| {
+            let options: Vec<(String, Value)> = tried
+                .iter()
+                .zip(m)
+                .filter_map(|((spec, _), value)| Some((spec.name.to_string(), value?)))
+                .collect();
+            let settings: Vec<String> = options
+                .iter()
+                .map(|(name, value)| format!("{name} = {}", plain(value)))
+                .collect();
+            let label = if settings.is_empty() {
+                info.id.to_string()
+            } else {
+                format!("{} with {}", info.id, settings.join(", "))
+            };
+            let errata = info
+                .errata
+                .iter()
+                .copied()
+                .filter(|e| settings.iter().any(|s| e.contains(s.as_str())))
+                .collect();
+            AlsoMatch {
+                algorithm: info.id.to_string(),
+                options,
+                label,
+                errata,
+            }
+        })
+        .collect()
+}
+
+/// An option value as written in a label: text without quotes.
+fn plain(value: &Value) -> String {
+    match value {
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn request(json: &str) -> Request {
+        Request::from_json(json).unwrap()
+    }
+
+    fn points_of(trace: &Trace) -> Points {
+        Points {
+            dims: trace.dims(),
+            coords: trace.points_flat(0, trace.steps() + 1),
+        }
+    }
+
+    fn check(request_json: &str, points: &Points) -> Check {
+        let r = request(request_json);
+        let trace = crate::run(&r).unwrap();
+        check_trace(&r, &trace, points)
+    }
+
+    /// The request of an alsoMatches entry: the checked request with the
+    /// entry's algorithm and options.
+    fn entry_request(base: &Request, entry: &AlsoMatch) -> Request {
+        let info = algorithms::find(&entry.algorithm).unwrap();
+        let mut options = Map::new();
+        for (name, value) in base.options() {
+            if info.options.iter().any(|o| o.name == name) {
+                options.insert(name.clone(), value.clone());
+            }
+        }
+        for (name, value) in &entry.options {
+            options.insert(name.clone(), value.clone());
+        }
+        Request::new(&entry.algorithm, options)
+    }
+
+    #[test]
+    fn every_example_matches_itself_and_everything_it_also_matches() {
+        for info in algorithms::ALGORITHMS {
+            let mut json: Value = serde_json::from_str(info.example.options).unwrap();
+            json["algorithm"] = info.id.into();
+            let r = request(&json.to_string());
+            let trace = crate::run(&r).unwrap();
+            let points = points_of(&trace);
+            let result = check_trace(&r, &trace, &points);
+            assert!(result.matches, "{}: {:?}", info.id, result.first_difference);
+            assert!(
+                result.also_matches.iter().any(|m| m.algorithm == info.id),
+                "{} is not among its own matches: {:?}",
+                info.id,
+                result.also_matches
+            );
+            for entry in &result.also_matches {
+                let other = entry_request(&r, entry);
+                let trace = crate::run(&other).unwrap();
+                let again = check_trace(&other, &trace, &points);
+                assert!(again.matches, "{}: {} does not match", info.id, entry.label);
+            }
+        }
+    }
+
+    #[test]
+    fn regions_against_bresenham3d_with_tie_hold() {
+        let hold = crate::trace_json(
+            r#"{"algorithm":"bresenham3d","from":[0,0,0],"to":[10,7,6],"tie":"hold"}"#,
+        )
+        .unwrap();
+        let result = check(
+            r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#,
+            &points_of(&hold),
+        );
+        assert!(!result.matches);
+        let d = result.first_difference.unwrap();
+        assert_eq!(d.kind, DifferenceKind::Step);
+        assert_eq!(d.point_index, 5);
+        let regions =
+            crate::trace_json(r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#).unwrap();
+        assert_eq!(d.why, regions.explain(4));
+        assert!(
+            d.why.contains("region g") || d.why.contains("segment g"),
+            "{}",
+            d.why
+        );
+        let decisions: Map<String, Value> = d.decisions.iter().cloned().collect();
+        assert_eq!(decisions["tie"], Value::from(true));
+        assert_eq!(decisions["region"], Value::from("g"));
+        let labels: Vec<&str> = result
+            .also_matches
+            .iter()
+            .map(|m| m.label.as_str())
+            .collect();
+        assert!(
+            labels.contains(&"bresenham3d with tie = hold"),
+            "{labels:?}"
+        );
+        assert!(
+            !labels
+                .iter()
+                .any(|l| l.starts_with("regions with tie = advance"))
+        );
+        assert_eq!(d.around.first().unwrap().point_index, 2);
+        assert_eq!(d.around.last().unwrap().point_index, 8);
+    }
+
+    #[test]
+    fn the_printed_2d_variant_is_named_with_its_erratum() {
+        let printed = crate::trace_json(
+            r#"{"algorithm":"bresenham2d","from":[0,0],"to":[10,3],"variant":"printed"}"#,
+        )
+        .unwrap();
+        let result = check(
+            r#"{"algorithm":"bresenham2d","from":[0,0],"to":[10,3]}"#,
+            &points_of(&printed),
+        );
+        assert!(!result.matches);
+        let entry = result
+            .also_matches
+            .iter()
+            .find(|m| m.algorithm == "bresenham2d")
+            .expect("the printed variant matches");
+        assert!(entry.label.contains("variant = printed"), "{}", entry.label);
+        assert_eq!(
+            entry.errata,
+            vec![algorithms::find("bresenham2d").unwrap().errata[0]]
+        );
+    }
+
+    #[test]
+    fn truncated_and_extended_paths_are_caught() {
+        let json = r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#;
+        let trace = crate::trace_json(json).unwrap();
+        let full = points_of(&trace);
+        let mut short = full.clone();
+        short.coords.truncate(8 * 3);
+        let d = check(json, &short).first_difference.unwrap();
+        assert_eq!((d.kind, d.point_index), (DifferenceKind::Stops, 8));
+        assert_eq!(d.message, "your path stops at step 7 of 10");
+        assert_eq!(d.why, trace.explain(7));
+        assert_eq!(d.got, None);
+
+        let mut long = full.clone();
+        long.coords.extend_from_slice(&[11, 7, 6]);
+        let d = check(json, &long).first_difference.unwrap();
+        assert_eq!((d.kind, d.point_index), (DifferenceKind::GoesOn, 11));
+        assert_eq!(d.message, "your path goes on after the end");
+        assert_eq!(d.expected, None);
+        assert_eq!(d.got, Some(vec![11, 7, 6]));
+        assert!(d.decisions.is_empty());
+
+        let mut moved = full;
+        moved.coords[0] = 1;
+        let d = check(json, &moved).first_difference.unwrap();
+        assert_eq!(
+            (d.kind, d.point_index, d.step_index),
+            (DifferenceKind::Start, 0, None)
+        );
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        #[test]
+        fn a_one_cell_change_is_found_at_its_step(
+            to in proptest::collection::vec(-40i64..40, 3),
+            at in 0.0f64..1.0,
+            axis in 0usize..3,
+            algorithm in proptest::sample::select(vec!["regions", "bresenham3d", "nd", "dda", "greedy", "walk6"]),
+        ) {
+            let json = format!(r#"{{"algorithm":"{algorithm}","from":[0,0,0],"to":{to:?}}}"#);
+            let trace = crate::trace_json(&json).unwrap();
+            prop_assume!(trace.steps() > 0);
+            let mut points = points_of(&trace);
+            let k = ((at * trace.steps() as f64) as u64).min(trace.steps());
+            // Move one coordinate of point k by one cell, the way that keeps
+            // it a path only if it stays within a cell of its neighbours;
+            // either the check finds point k, or the input is refused there.
+            let i = k as usize * 3 + axis;
+            points.coords[i] += 1;
+            match points.check_path() {
+                Ok(()) => {
+                    let d = check(&json, &points).first_difference.unwrap();
+                    prop_assert_eq!(d.point_index, k);
+                    prop_assert_eq!(d.got, Some(points.get(k).to_vec()));
+                }
+                Err((index, _)) => prop_assert!(index as u64 == k || index as u64 == k + 1),
+            }
+        }
+    }
+
+    #[test]
+    fn text_reads_csv_headers_lists_and_blank_separated_rows() {
+        let csv = "k,x,y,z,M\n0,0,0,0,\n1,1,1,1,0\n";
+        assert_eq!(
+            Points::from_text(csv, 3).unwrap().coords,
+            vec![0, 0, 0, 1, 1, 1]
+        );
+        let blank = "# a comment\n0 0 0\n\n1 1 0\n";
+        assert_eq!(
+            Points::from_text(blank, 3).unwrap().coords,
+            vec![0, 0, 0, 1, 1, 0]
+        );
+        let printed = "[ [ 0, 0, 0 ], [ 1, 0, 1 ] ]";
+        assert_eq!(
+            Points::from_text(printed, 3).unwrap().coords,
+            vec![0, 0, 0, 1, 0, 1]
+        );
+        let python = "[(0, 0), (1, -1)]";
+        assert_eq!(
+            Points::from_text(python, 2).unwrap().coords,
+            vec![0, 0, 1, -1]
+        );
+    }
+
+    #[test]
+    fn malformed_input_names_the_point_and_line() {
+        let e = |text: &str| Points::from_text(text, 3).unwrap_err().to_string();
+        assert_eq!(
+            e("0,0,0\n1,1\n"),
+            "line 2, column 1: point 1 has 2 coordinates; the move has 3"
+        );
+        assert_eq!(
+            e("0,0,0\n1,1.5,1\n"),
+            "line 2, column 3: point 1: y = 1.5 is not a whole number"
+        );
+        assert_eq!(
+            e("0,0,0\n1,a,1\n"),
+            "line 2, column 3: point 1: y = 'a' is not a number"
+        );
+        assert_eq!(
+            e("0,0,0\n1,1,1\n3,1,1\n"),
+            "line 3, column 1: point 2 (3, 1, 1) is more than one cell from point 1 (1, 1, 1): a path moves each axis at most one cell per step"
+        );
+        assert_eq!(
+            e("[[0,0,0],\n [1,2]]"),
+            "line 2, column 3: point 1 has 2 coordinates; the move has 3"
+        );
+        assert_eq!(e("x,y,z\n"), "line 1, column 1: there are no points");
+        let f = |values: &[f64], dims| Points::from_flat(values, dims, 3).unwrap_err().to_string();
+        assert_eq!(
+            f(&[0.0, 0.0], 2),
+            "points: the points have 2 coordinates each; the move has 3"
+        );
+        assert_eq!(
+            f(&[0.0, 0.0, 0.0, 1.0, f64::NAN, 0.0], 3),
+            "points: point 1: y is not a number"
+        );
+        assert_eq!(
+            f(&[0.0, 0.0, 0.0, 1.0], 3),
+            "points: 4 values are not a whole number of 3-coordinate points"
+        );
+    }
+}
