@@ -18,11 +18,12 @@
 use crate::algorithms::{self, AlgorithmInfo, Family};
 use crate::compare::{StepWhy, as_object, why_at_point};
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, Point};
+use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
 use crate::trace::Trace;
 use serde::Serialize;
 use serde_json::{Map, Value};
+use std::sync::Arc;
 
 /// Points shown on each side of the first difference.
 pub const AROUND: u64 = 3;
@@ -89,45 +90,40 @@ impl Points {
     /// `(...)`, as programs print lists. Errors give the line and column,
     /// and name the point index.
     pub fn from_text(text: &str, dims: usize) -> Result<Points, Error> {
-        let rows = if text.contains(['[', '(']) {
-            bracket_rows(text)
-        } else {
-            line_rows(text, dims)?
+        let mut reader = TextReader {
+            dims,
+            coords: Vec::new(),
+            written: Vec::new(),
         };
-        if rows.is_empty() {
+        if text.contains(['[', '(']) {
+            reader.bracket_rows(text)?;
+        } else {
+            reader.line_rows(text)?;
+        }
+        if reader.written.is_empty() {
             return Err(Error::at(1, 1, "there are no points"));
         }
-        let mut coords = Vec::with_capacity(rows.len() * dims);
-        for (index, row) in rows.iter().enumerate() {
-            let at = |column: usize, message: String| Error::at(row.line, column as u32, message);
-            if row.cells.len() != dims {
-                return Err(at(
-                    row.column,
-                    format!(
-                        "point {index} has {} coordinates; the move has {dims}",
-                        row.cells.len()
-                    ),
-                ));
-            }
-            for (axis, &(start, cell)) in row.cells.iter().enumerate() {
-                let column = row.column + start;
-                let value = cell.parse::<f64>().map_err(|_| {
-                    at(
-                        column,
-                        format!(
-                            "point {index}: {} = '{cell}' is not a number",
-                            AXIS_NAMES[axis]
-                        ),
-                    )
-                })?;
-                coords.push(coordinate(value, index, axis).map_err(|m| at(column, m))?);
-            }
-        }
-        let points = Points { dims, coords };
+        let points = Points {
+            dims,
+            coords: reader.coords,
+        };
         points.check_path().map_err(|(index, message)| {
-            Error::at(rows[index].line, rows[index].column as u32, message)
+            let (line, column) = reader.written[index];
+            Error::at(line, column, message)
         })?;
         Ok(points)
+    }
+
+    /// The step from each point to the next (a path: see [`Self::check_path`]).
+    pub fn steps(&self) -> Arc<[Step]> {
+        (1..self.len())
+            .map(|k| {
+                let (before, now) = (self.get(k - 1), self.get(k));
+                (0..self.dims).fold(Step::NONE, |step, axis| {
+                    step.with(axis, now[axis] - before[axis])
+                })
+            })
+            .collect()
     }
 
     /// Every point one cell or less from the one before it on each axis,
@@ -171,22 +167,147 @@ fn coordinate(value: f64, index: usize, axis: usize) -> Result<i64, String> {
     Ok(value as i64)
 }
 
-/// One point's cells as written: each cell's text and its offset from the
-/// row's column.
-struct Row<'a> {
-    line: u32,
-    /// 1-based column of the row's start.
-    column: usize,
-    cells: Vec<(usize, &'a str)>,
+/// Reads text into points, a row at a time, with no allocation per row
+/// (a million-point file is read in one pass).
+struct TextReader {
+    dims: usize,
+    coords: Vec<i64>,
+    /// Line and 1-based column where each point's row starts.
+    written: Vec<(u32, u32)>,
 }
 
-/// Cells of `text` split at commas, semicolons and blanks, each with its
-/// byte offset (quotes around a cell removed, as CSV writes them).
-fn cells(text: &str) -> Vec<(usize, &str)> {
-    let mut out = Vec::new();
+impl TextReader {
+    /// Appends one point from the cells of a row written at `line` from
+    /// `column` (each cell's offset counts from there).
+    fn push_row(&mut self, line: u32, column: u32, cells: &[(usize, &str)]) -> Result<(), Error> {
+        let index = self.written.len();
+        let at = |offset: usize, message: String| Error::at(line, column + offset as u32, message);
+        if cells.len() != self.dims {
+            return Err(at(
+                0,
+                format!(
+                    "point {index} has {} coordinates; the move has {}",
+                    cells.len(),
+                    self.dims
+                ),
+            ));
+        }
+        for (axis, &(offset, cell)) in cells.iter().enumerate() {
+            // Whole numbers as such (the common case, and exact at any
+            // size); anything else as a number, to say what is wrong with it.
+            let value = match cell.parse::<i64>() {
+                Ok(v) => coordinate(v as f64, index, axis),
+                Err(_) => {
+                    let v = cell.parse::<f64>().map_err(|_| {
+                        at(
+                            offset,
+                            format!(
+                                "point {index}: {} = '{cell}' is not a number",
+                                AXIS_NAMES[axis]
+                            ),
+                        )
+                    })?;
+                    coordinate(v, index, axis)
+                }
+            };
+            self.coords.push(value.map_err(|m| at(offset, m))?);
+        }
+        self.written.push((line, column));
+        Ok(())
+    }
+
+    /// One row per innermost bracket pair, `[...]` or `(...)`.
+    fn bracket_rows(&mut self, text: &str) -> Result<(), Error> {
+        let mut cells = Vec::new();
+        let (mut line, mut line_start) = (1u32, 0usize);
+        let mut open: Option<(usize, u32, u32)> = None;
+        for (i, c) in text.char_indices() {
+            match c {
+                '\n' => {
+                    line += 1;
+                    line_start = i + 1;
+                }
+                '[' | '(' => open = Some((i + 1, line, (i + 1 - line_start + 1) as u32)),
+                ']' | ')' => {
+                    if let Some((start, row_line, column)) = open.take() {
+                        split_cells(&text[start..i], &mut cells);
+                        self.push_row(row_line, column, &cells)?;
+                    }
+                }
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    /// One row per non-blank line; a first line that is not all numbers is
+    /// a header, whose x, y, z, ... columns (any case) are the ones read,
+    /// or, if it does not name them all, its first `dims` columns.
+    fn line_rows(&mut self, text: &str) -> Result<(), Error> {
+        let mut cells = Vec::new();
+        let mut picked = Vec::new();
+        let mut pick: Option<Vec<usize>> = None;
+        let mut first = true;
+        for (number, line) in text.lines().enumerate() {
+            let trimmed = line.trim_start();
+            if trimmed.is_empty() || trimmed.starts_with('#') {
+                continue;
+            }
+            let line_number = number as u32 + 1;
+            split_cells(line, &mut cells);
+            if first {
+                first = false;
+                if cells.iter().any(|(_, c)| c.parse::<f64>().is_err()) {
+                    pick = Some(header_columns(&cells, self.dims).ok_or_else(|| {
+                        Error::at(
+                            line_number,
+                            1,
+                            format!(
+                                "the header names neither {} nor {} columns",
+                                AXIS_NAMES[..self.dims].join(", "),
+                                self.dims
+                            ),
+                        )
+                    })?);
+                    continue;
+                }
+            }
+            match &pick {
+                None => self.push_row(line_number, 1, &cells)?,
+                Some(columns) => {
+                    picked.clear();
+                    for &c in columns {
+                        let cell = cells.get(c).copied().ok_or_else(|| {
+                            Error::at(
+                                line_number,
+                                1,
+                                format!(
+                                    "point {} has {} cells; the header has more columns",
+                                    self.written.len(),
+                                    cells.len()
+                                ),
+                            )
+                        })?;
+                        picked.push(cell);
+                    }
+                    self.push_row(line_number, 1, &picked)?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The cells of `text` into `out` (cleared first), split at commas,
+/// semicolons, spaces and tabs, each with its byte offset (quotes around a cell
+/// removed, as CSV writes them).
+fn split_cells<'a>(text: &'a str, out: &mut Vec<(usize, &'a str)>) {
+    out.clear();
+    // Bytes, not chars: every separator is ASCII, so a cut between two
+    // ASCII bytes is always on a char boundary.
     let mut start = None;
-    for (i, c) in text.char_indices() {
-        let separator = c == ',' || c == ';' || c.is_whitespace();
+    for (i, &b) in text.as_bytes().iter().enumerate() {
+        let separator = matches!(b, b',' | b';' | b' ' | b'\t' | b'\r');
         match (separator, start) {
             (true, Some(s)) => {
                 out.push((s, &text[s..i]));
@@ -199,96 +320,11 @@ fn cells(text: &str) -> Vec<(usize, &str)> {
     if let Some(s) = start {
         out.push((s, &text[s..]));
     }
-    for cell in &mut out {
+    for cell in out.iter_mut() {
         if cell.1.len() >= 2 && cell.1.starts_with('"') && cell.1.ends_with('"') {
             *cell = (cell.0 + 1, &cell.1[1..cell.1.len() - 1]);
         }
     }
-    out
-}
-
-/// One row per innermost bracket pair, `[...]` or `(...)`.
-fn bracket_rows(text: &str) -> Vec<Row<'_>> {
-    let mut rows = Vec::new();
-    let (mut line, mut line_start) = (1u32, 0usize);
-    let mut open: Option<(usize, u32, usize)> = None;
-    for (i, c) in text.char_indices() {
-        match c {
-            '\n' => {
-                line += 1;
-                line_start = i + 1;
-            }
-            '[' | '(' => open = Some((i + 1, line, i + 1 - line_start + 1)),
-            ']' | ')' => {
-                if let Some((start, row_line, column)) = open.take() {
-                    rows.push(Row {
-                        line: row_line,
-                        column,
-                        cells: cells(&text[start..i]),
-                    });
-                }
-            }
-            _ => {}
-        }
-    }
-    rows
-}
-
-/// One row per non-blank line; a first line that is not all numbers is a
-/// header, whose x, y, z, ... columns (any case) are the ones read, or, if
-/// it does not name them all, its first `dims` columns.
-fn line_rows(text: &str, dims: usize) -> Result<Vec<Row<'_>>, Error> {
-    let mut rows = Vec::new();
-    let mut pick: Option<Vec<usize>> = None;
-    let mut first = true;
-    for (number, line) in text.lines().enumerate() {
-        let trimmed = line.trim_start();
-        if trimmed.is_empty() || trimmed.starts_with('#') {
-            continue;
-        }
-        let line_number = number as u32 + 1;
-        let row_cells = cells(line);
-        if first {
-            first = false;
-            if row_cells.iter().any(|(_, c)| c.parse::<f64>().is_err()) {
-                pick = Some(header_columns(&row_cells, dims).ok_or_else(|| {
-                    Error::at(
-                        line_number,
-                        1,
-                        format!(
-                            "the header names neither {} nor {dims} columns",
-                            AXIS_NAMES[..dims].join(", ")
-                        ),
-                    )
-                })?);
-                continue;
-            }
-        }
-        let row_cells = match &pick {
-            None => row_cells,
-            Some(columns) => {
-                let picked: Option<Vec<_>> =
-                    columns.iter().map(|&c| row_cells.get(c).copied()).collect();
-                picked.ok_or_else(|| {
-                    Error::at(
-                        line_number,
-                        1,
-                        format!(
-                            "point {} has {} cells; the header has more columns",
-                            rows.len(),
-                            row_cells.len()
-                        ),
-                    )
-                })?
-            }
-        };
-        rows.push(Row {
-            line: line_number,
-            column: 1,
-            cells: row_cells,
-        });
-    }
-    Ok(rows)
 }
 
 /// Which header cells hold the coordinates.
@@ -443,8 +479,11 @@ fn first_mismatch(trace: &Trace, points: &Points) -> Option<u64> {
     None
 }
 
-fn follows(trace: &Trace, points: &Points) -> bool {
-    trace.steps() + 1 == points.len() && first_mismatch(trace, points).is_none()
+/// Whether `trace`, traced to follow `steps` (the points' own steps), is
+/// the points' path: it took them all (it took no other, or it would have
+/// stopped) from the same start.
+fn follows(trace: &Trace, points: &Points, steps: &[Step]) -> bool {
+    trace.steps() == steps.len() as u64 && trace.start().coords() == points.get(0)
 }
 
 fn first_difference(trace: &Trace, points: &Points) -> Option<Difference> {
@@ -533,6 +572,7 @@ pub fn also_matches(request: &Request, points: &Points) -> Vec<AlsoMatch> {
         return Vec::new();
     };
     let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
+    let steps = points.steps();
     let mut out = Vec::new();
     for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
         let tried: Vec<(&OptionSpec, Vec<Value>)> = info
@@ -558,8 +598,8 @@ pub fn also_matches(request: &Request, points: &Points) -> Vec<AlsoMatch> {
                 .zip(&choice)
                 .map(|((_, values), &i)| Some(values[i].clone()))
                 .collect();
-            if let Some(trace) = trace_combination(info, &base, &tried, &mut combination)
-                && follows(&trace, points)
+            if let Some(trace) = trace_combination(info, &base, &tried, &steps, &mut combination)
+                && follows(&trace, points, &steps)
                 && !matched.contains(&combination)
             {
                 matched.push(combination);
@@ -573,14 +613,16 @@ pub fn also_matches(request: &Request, points: &Points) -> Vec<AlsoMatch> {
     out
 }
 
-/// Traces `info` with `base` and the combination's values. An option the
-/// algorithm refuses in this combination (lineAlgorithm with helix's method
-/// saleem: "applies to method segments only") is left out, marked None, and
-/// the trace tried again; None when it fails for any other reason.
+/// Traces `info` with `base` and the combination's values, following
+/// `steps`: a rule that parts from them stops there, as an error. An option
+/// the algorithm refuses in this combination (lineAlgorithm with helix's
+/// method saleem: "applies to method segments only") is left out, marked
+/// None, and the trace tried again; None when it fails for any other reason.
 fn trace_combination(
     info: &AlgorithmInfo,
     base: &Map<String, Value>,
     tried: &[(&OptionSpec, Vec<Value>)],
+    steps: &Arc<[Step]>,
     combination: &mut [Option<Value>],
 ) -> Option<Trace> {
     loop {
@@ -590,7 +632,7 @@ fn trace_combination(
                 options.insert(spec.name.to_string(), value.clone());
             }
         }
-        match (info.trace)(&Request::new(info.id, options)) {
+        match (info.trace)(&Request::new(info.id, options).following(steps.clone())) {
             Ok(trace) => return Some(trace),
             Err(e) => {
                 let refused = tried
@@ -811,6 +853,27 @@ mod tests {
         assert_eq!(
             entry.errata,
             vec![algorithms::find("bresenham2d").unwrap().errata[0]]
+        );
+    }
+
+    #[test]
+    fn a_trace_following_other_steps_stops_where_they_part() {
+        let json = r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#;
+        let own = points_of(&crate::trace_json(json).unwrap()).steps();
+        let r = request(json);
+        let again = crate::run(&r.clone().following(own.clone())).unwrap();
+        assert_eq!(again.steps(), own.len() as u64);
+        let hold = crate::trace_json(
+            r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6],"tie":"hold"}"#,
+        )
+        .unwrap();
+        let Err(e) = crate::run(&r.following(points_of(&hold).steps())) else {
+            panic!("a trace that parts from the steps it follows stops")
+        };
+        assert_eq!(e.field_name(), Some("follow"));
+        assert_eq!(
+            e.to_string(),
+            "follow: the path parts from the steps it follows at step 4"
         );
     }
 

@@ -3,10 +3,11 @@
 //! the CLI flags and the page's inputs are generated from those declarations.
 
 use crate::error::Error;
-use crate::grid::Point;
+use crate::grid::{Point, Step};
 use crate::trace::{DEFAULT_MAX_STEPS, MAX_STEPS_LIMIT, TiePolicy};
 use serde::Serialize;
 use serde_json::{Map, Value};
+use std::sync::Arc;
 
 /// The type of an option's value.
 #[derive(Serialize, Clone, Copy, Debug, PartialEq)]
@@ -89,6 +90,11 @@ pub const fn tie_option(default: &'static str) -> OptionSpec {
 pub struct Request {
     pub algorithm: String,
     options: Map<String, Value>,
+    /// Steps the trace is to follow, set by code, never by an option: a
+    /// trace that parts from them stops there with an error (see
+    /// [`crate::trace::TraceBuilder::for_request`]), so a check trying many
+    /// rules against a learner's path stops each wrong one early.
+    follow: Option<Arc<[Step]>>,
 }
 
 impl Request {
@@ -98,6 +104,7 @@ impl Request {
         Request {
             algorithm: algorithm.to_string(),
             options,
+            follow: None,
         }
     }
 
@@ -126,7 +133,11 @@ impl Request {
             }
             None => return Err(Error::field("algorithm", "missing (for example 'regions')")),
         };
-        Ok(Request { algorithm, options })
+        Ok(Request {
+            algorithm,
+            options,
+            follow: None,
+        })
     }
 
     /// Rejects options that are not among `accepted`, naming the first one.
@@ -155,7 +166,19 @@ impl Request {
         Request {
             algorithm: self.algorithm.clone(),
             options,
+            follow: self.follow.clone(),
         }
+    }
+
+    /// This request, to be traced only as long as it takes `steps`.
+    pub fn following(mut self, steps: Arc<[Step]>) -> Request {
+        self.follow = Some(steps);
+        self
+    }
+
+    /// The steps set by [`Self::following`].
+    pub fn follow(&self) -> Option<&Arc<[Step]>> {
+        self.follow.as_ref()
     }
 
     /// The options as given (without `algorithm`).

@@ -16,8 +16,10 @@ use crate::error::Error;
 use crate::grid::{MAX_AXES, Point, Step, displacement};
 use crate::ideal::{IdealPath, IdealPathInfo, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
+use crate::request::Request;
 use serde::Serialize;
 use std::cell::OnceCell;
+use std::sync::Arc;
 
 /// Steps between two stored positions / stepper states.
 pub const CHECKPOINT_INTERVAL: u64 = 4096;
@@ -306,6 +308,8 @@ pub struct TraceBuilder {
     segments: Vec<Segment>,
     columns: Vec<Column>,
     max_steps: u64,
+    /// Steps this trace must take ([`Request::following`]), if any.
+    follow: Option<Arc<[Step]>>,
 }
 
 impl TraceBuilder {
@@ -320,7 +324,36 @@ impl TraceBuilder {
             segments: Vec::new(),
             columns: Vec::new(),
             max_steps,
+            follow: None,
         }
+    }
+
+    /// A builder for `req`: its `maxSteps`, and the steps it is to follow,
+    /// if any ([`Request::following`]).
+    pub fn for_request(start: Point, req: &Request) -> Result<TraceBuilder, Error> {
+        let mut builder = TraceBuilder::new(start, req.max_steps()?);
+        builder.follow = req.follow().cloned();
+        Ok(builder)
+    }
+
+    /// Checks `taken`, steps `from..` of the trace, against the steps to
+    /// follow: an error at the first one that differs or goes beyond them.
+    fn check_follows(&self, from: usize, taken: &[Step]) -> Result<(), Error> {
+        let Some(follow) = &self.follow else {
+            return Ok(());
+        };
+        let wanted = follow.get(from..).unwrap_or(&[]);
+        let same = taken.iter().zip(wanted).take_while(|(a, b)| a == b).count();
+        if same < taken.len() {
+            return Err(Error::field(
+                "follow",
+                format!(
+                    "the path parts from the steps it follows at step {}",
+                    from + same
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// Current position (the end of the last segment).
@@ -372,6 +405,7 @@ impl TraceBuilder {
             self.steps.resize(start + chunk as usize, Step::NONE);
             let filled = stepper.fill(&mut self.steps[start..]);
             self.steps.truncate(start + filled.steps);
+            self.check_follows(start, &self.steps[start..])?;
             self.position.displace(&filled.displacement);
             segment.steps += filled.steps as u64;
             let total = self.steps.len() as u64;
@@ -453,6 +487,7 @@ impl TraceBuilder {
             self.segments.push(segment);
         }
         self.steps.reserve(part.steps.len());
+        self.check_follows(self.steps.len(), &part.steps)?;
         for step in part.steps {
             self.position.apply(step);
             self.steps.push(step);

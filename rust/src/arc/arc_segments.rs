@@ -295,7 +295,7 @@ pub fn trace_chords(
         start_height: 0.0,
         rise: spec.rise as f64,
     };
-    let mut builder = TraceBuilder::new(spec.from, req.max_steps()?);
+    let mut builder = TraceBuilder::for_request(spec.from, req)?;
     // A line algorithm moves each axis at most one unit per step, so a
     // chord takes at least its largest |Δ| steps: an arc that needs more
     // than maxSteps by that count alone is refused before any chord runs.

@@ -64,7 +64,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 fn trace_circle(req: &Request) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
     let spec = ArcSpec::parse(req, false)?;
-    let mut builder = TraceBuilder::new(spec.from, req.max_steps()?);
+    let mut builder = TraceBuilder::for_request(spec.from, req)?;
     let stepper = SaleemCircle::new(&spec).counted(&builder)?;
     builder.run(stepper, IdealPath::Arc(spec.ideal_arc()))?;
     Ok(builder.finish(ID))

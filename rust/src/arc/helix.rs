@@ -117,7 +117,7 @@ fn trace_helix(req: &Request) -> Result<Trace, Error> {
         ));
     }
     let tie = req.tie(TiePolicy::Hold)?;
-    let mut builder = TraceBuilder::new(spec.from, req.max_steps()?);
+    let mut builder = TraceBuilder::for_request(spec.from, req)?;
     // The helix takes max(n_c, n_z) steps: a rise past maxSteps is refused
     // before the circle's dry run.
     let n_z = spec.rise.unsigned_abs();

@@ -31,7 +31,7 @@ pub fn trace_line<S: Stepper>(
     req.check_options(info.options)?;
     let (from, to) = req.endpoints(info.min_dims, info.max_dims)?;
     let tie = req.tie(info.default_tie.unwrap_or(TiePolicy::Advance))?;
-    let mut builder = TraceBuilder::new(from, req.max_steps()?);
+    let mut builder = TraceBuilder::for_request(from, req)?;
     let stepper = make(from, to, tie);
     let bound = stepper.deviation_bound();
     builder.run(stepper, IdealPath::Line { from, to })?;
