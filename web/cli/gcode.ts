@@ -69,7 +69,8 @@ function settingsFromFlags(flags: Map<string, string>): GcodeSettings {
   return settings as GcodeSettings;
 }
 
-async function readSource(file: string): Promise<string> {
+/** The text of FILE, or of standard input for '-'. */
+export async function readSource(file: string): Promise<string> {
   if (file === '-') {
     const chunks: Buffer[] = [];
     for await (const chunk of process.stdin) chunks.push(chunk as Buffer);

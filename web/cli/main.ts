@@ -1,7 +1,8 @@
 /**
  * The voxpath command line: `voxpath trace --algorithm regions --from 0,0,0
  * --to 10,7,6 --format json`, `voxpath compare --algorithms regions,greedy
- * --from 0,0,0 --to 10,7,6`. Flags are generated from the algorithm
+ * --from 0,0,0 --to 10,7,6`, `voxpath check --algorithm regions --from 0,0,0
+ * --to 10,7,6 student.csv`. Flags are generated from the algorithm
  * catalogue: an option `maxSteps` is the flag `--max-steps`.
  *
  * Exit codes: 0 success, 1 failure while running, 2 bad command line or
@@ -9,6 +10,8 @@
  */
 import {
   algorithms,
+  checkPoints,
+  checkToTable,
   compare,
   comparisonToCsv,
   comparisonToTable,
@@ -23,7 +26,7 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { AlgorithmInfo, ExperimentInfo, OptionSpec, Trace } from '../core/index.js';
-import { GCODE_USAGE, gcodeCommand, gcodeHelp } from './gcode.js';
+import { GCODE_USAGE, gcodeCommand, gcodeHelp, readSource } from './gcode.js';
 
 const FORMATS = ['json', 'csv', 'table'] as const;
 type Format = (typeof FORMATS)[number];
@@ -109,6 +112,7 @@ function shortUsage(): string {
     '       voxpath compare --algorithms A,B --from X,Y,Z --to X,Y,Z [options of A or B] [--format json|csv|table]',
     '       voxpath experiment random-lines [--count N] [--seed N] [--algorithm ID] [options] [--format ...]',
     `       ${GCODE_USAGE}`,
+    `       ${CHECK_USAGE}`,
     '       voxpath algorithms',
     '       voxpath --help',
   ].join('\n');
@@ -138,6 +142,15 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList }: Catal
     'the two that takes it. --format json prints { a, b (steps, metrics), firstDifference:',
     '{ pointIndex, a, b, aWhy, bWhy (explanation, decisions) }, onlyInA, onlyInB (cells) };',
     'table puts both side by side with both explanations; csv has one row per quantity.',
+    '',
+    'check reads a learner\'s points (FILE, or - for standard input: CSV or blank-separated',
+    'rows with an optional header whose x,y,z columns are read, or a printed list such as',
+    '[(0, 0, 0), (1, 1, 1)]) and replays the rule of --algorithm on the move. Exit 0 when',
+    'the points are its path; 1 with the first difference, the rule\'s reason and decisions,',
+    'the points around it side by side and the rules the points do follow (table, the',
+    'default), or for json { matches, steps, yourSteps, firstDifference: { kind, pointIndex,',
+    'expected, got, message, why, decisions, around }, alsoMatches: [{ label, options }] };',
+    '2 for bad input (a point that is not a path is named with its line and column).',
     '',
     'algorithms and their options:',
   ];
@@ -251,6 +264,24 @@ async function runExperiment(args: string[], catalogues: Catalogues): Promise<st
   return JSON.stringify(result) + '\n';
 }
 
+const CHECK_USAGE = 'voxpath check --algorithm ID --from X,Y,Z --to X,Y,Z [options] FILE|- [--format table|json]';
+
+/** `check`: exit 0 when the points follow the rule, 1 with the difference, 2 for bad input. */
+async function runCheck(args: string[], catalogues: Catalogues): Promise<{ stdout: string; code: number }> {
+  const file = args.at(-1);
+  if (file === undefined || (file.startsWith('--') && file !== '-') || args.length % 2 === 0) {
+    throw new UsageError('check needs a FILE (or - for standard input) after its flags');
+  }
+  const flags = parseFlags(args.slice(0, -1));
+  const info = pickAlgorithm(flags, catalogues.algorithms);
+  const format = flags.get('--format') ?? 'table';
+  if (format !== 'table' && format !== 'json') throw new UsageError(`--format: expected table or json, got '${format}'`);
+  const options = optionsFromFlags(flags, info.options, info.id);
+  const result = await checkPoints({ ...options, algorithm: info.id } as Parameters<typeof checkPoints>[0], await readSource(file));
+  const stdout = format === 'json' ? JSON.stringify(result) + '\n' : checkToTable(result);
+  return { stdout, code: result.matches ? 0 : 1 };
+}
+
 /**
  * Writes to stdout. A reader that stops early (`voxpath ... | head`) closes
  * the pipe: EPIPE then means it has all it wanted, not that voxpath failed.
@@ -294,6 +325,10 @@ export async function main(args: string[]): Promise<number> {
       await write(await runCompare(parseFlags(rest), catalogues));
     } else if (command === 'experiment') {
       await write(await runExperiment(rest, catalogues));
+    } else if (command === 'check') {
+      const result = await runCheck(rest, catalogues);
+      await write(result.stdout);
+      return result.code;
     } else if (command === 'gcode') {
       const result = await gcodeCommand(rest);
       await write(result.stdout);
@@ -309,7 +344,15 @@ export async function main(args: string[]): Promise<number> {
       return 2;
     }
     if (error instanceof VoxpathError) {
-      const where = error.field !== undefined ? `${flagOf(error.field)}: ` : '';
+      // A learner's points are the FILE of check, not a flag; text errors carry their line and column.
+      const where =
+        error.line !== undefined
+          ? `line ${error.line}, column ${error.column}: `
+          : error.field === 'points'
+            ? 'points: '
+            : error.field !== undefined
+              ? `${flagOf(error.field)}: `
+              : '';
       process.stderr.write(`voxpath: ${where}${error.detail}\n${shortUsage()}\n`);
       return 2;
     }

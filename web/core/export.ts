@@ -7,6 +7,7 @@
  * as Wang's Tables 1 and 2 print them.
  */
 import { AXIS_NAMES } from './axes.js';
+import type { Check } from './check.js';
 import type { Comparison, StepWhy } from './compare.js';
 import type { MeasureSummary, RandomLinesResult } from './experiment.js';
 import type { Trace } from './trace.js';
@@ -281,8 +282,8 @@ export function comparisonToCsv(c: Comparison): string {
 const TABLE_CELLS = 12;
 
 /** "M = 0, N = 10, region = g, ...": a step's decision values. */
-function decisionsText(why: StepWhy): string {
-  return Object.entries(why.decisions)
+function decisionsText(decisions: StepWhy['decisions']): string {
+  return Object.entries(decisions)
     .map(([name, value]) => `${name} = ${value === null ? TABLE_NO_VALUE : String(value)}`)
     .join(', ');
 }
@@ -311,7 +312,7 @@ export function comparisonToTable(c: Comparison): string {
       if (why === null) {
         lines.push(`${head}has no step there (its path has ended).`);
       } else {
-        lines.push(`${head}${why.explanation}`, `  ${' '.repeat(width)}${decisionsText(why)}`);
+        lines.push(`${head}${why.explanation}`, `  ${' '.repeat(width)}${decisionsText(why.decisions)}`);
       }
     }
   }
@@ -323,5 +324,39 @@ export function comparisonToTable(c: Comparison): string {
     const more = cells.count > shown.length ? ` ... and ${cells.count - shown.length} more` : '';
     lines.push(cells.count === 0 ? `Cells only in ${label}: none` : `Cells only in ${label} (${cells.count}): ${shown.join(' ')}${more}`);
   }
+  return lines.join('\n') + '\n';
+}
+
+/**
+ * A check for people (the CLI's check --format table, and the vitest
+ * matcher's failure message): the verdict, the first difference with the
+ * rule's reason and decision values, the points around it side by side,
+ * and the rules the points do follow.
+ */
+export function checkToTable(c: Check): string {
+  const d = c.firstDifference;
+  const lines: string[] = [];
+  if (d === null) {
+    lines.push(`${c.algorithm}: your ${c.yourSteps + 1} points follow the rule (${c.steps} steps).`);
+  } else {
+    lines.push(`${c.algorithm}: your path parts from the rule at point ${d.pointIndex}: ${d.message}.`);
+    lines.push(`why ${c.algorithm} goes there: ${d.why}`);
+    if (Object.keys(d.decisions).length > 0) lines.push(`decisions: ${decisionsText(d.decisions)}`);
+    lines.push('');
+    const body = d.around.map((r) => [
+      String(r.pointIndex),
+      pointText(r.expected),
+      pointText(r.got),
+      r.pointIndex === d.pointIndex ? '<- first difference' : r.expected !== null && r.got !== null && r.expected.join() !== r.got.join() ? '<- differs' : '',
+    ]);
+    lines.push(...alignedTable(['k', c.algorithm, 'yours', ''], body).map((l) => l.trimEnd()));
+  }
+  lines.push('');
+  lines.push(
+    c.alsoMatches.length === 0
+      ? 'your points follow no catalogue rule of this move.'
+      : `your points follow: ${c.alsoMatches.map((m) => m.label).join('; ')}`,
+  );
+  for (const erratum of new Set(c.alsoMatches.flatMap((m) => m.errata))) lines.push(`  erratum: ${erratum}`);
   return lines.join('\n') + '\n';
 }

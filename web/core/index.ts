@@ -11,6 +11,10 @@
  *   const c = await compare({ algorithms: ['regions', 'greedy'], from: [0, 0, 0], to: [10, 7, 6] });
  *   c.firstDifference; // { pointIndex, a, b, aWhy: { explanation, decisions }, bWhy }
  *
+ *   const k = await checkPoints({ algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] }, studentPoints);
+ *   k.firstDifference; // { pointIndex, expected, got, message, why, decisions, around }
+ *   k.alsoMatches;     // [{ label: 'bresenham3d with tie = hold', ... }]
+ *
  *   import { runGcode } from 'voxpath';
  *   const p = await runGcode('G1 X10 Y5 F600', { stepsPerMm: 80 });
  *   p.moves;           // each with its source line, mm and steps
@@ -22,6 +26,8 @@ export { VoxpathError } from './errors.js';
 export { memoryBytes } from './wasm.js';
 export { compare } from './compare.js';
 export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDigest } from './compare.js';
+export { checkPoints } from './check.js';
+export type { AlsoMatch, AroundRow, Check, CheckDifference, DifferenceKind, LearnerPoints } from './check.js';
 export { GcodeProgram, runGcode } from './gcode.js';
 export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, GcodeTiming, RunGcodeOptions } from './gcode.js';
 export { pulseTrains } from './pulses.js';
@@ -29,6 +35,7 @@ export type { PulseTrain } from './pulses.js';
 export { experiments, randomLines } from './experiment.js';
 export type { ErrorStats, ExperimentInfo, MeasureSummary, RandomLinesOptions, RandomLinesResult, Spread } from './experiment.js';
 export {
+  checkToTable,
   comparisonToCsv,
   comparisonToTable,
   randomLinesToCsv,

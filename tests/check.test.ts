@@ -1,0 +1,105 @@
+// checkPoints, `voxpath check` and the voxpath/vitest matcher against the
+// real wasm core: the issue's done-when case (bresenham3d with tie = hold,
+// checked against regions), the exercise's deliberate bug, and bad input.
+import { expect as jestExpect } from 'expect';
+import { describe, expect, it } from 'vitest';
+import { checkPoints, checkToTable, trace } from '../web/core/index.js';
+import { voxpathMatchers } from '../web/core/vitest.js';
+import type { VoxpathMatchers } from '../web/core/vitest.js';
+import { bresenham3d } from '../examples/exercise-bresenham3d/bresenham3d.js';
+import { pointsOf, rejection, voxpath } from './helpers.js';
+
+declare module 'vitest' {
+  // eslint-disable-next-line @typescript-eslint/no-empty-object-type
+  interface Matchers<T = any> extends VoxpathMatchers {}
+}
+
+expect.extend(voxpathMatchers);
+jestExpect.extend(voxpathMatchers);
+
+const MOVE = { from: [0, 0, 0], to: [10, 7, 6] };
+const REGIONS = { algorithm: 'regions', ...MOVE };
+
+/** The bresenham3d (tie = hold) path as the core traces it, as CSV text. */
+async function holdPath(): Promise<{ rows: number[][]; csv: string }> {
+  const t = await trace({ algorithm: 'bresenham3d', ...MOVE, tie: 'hold' });
+  const rows = pointsOf(t);
+  t.free();
+  return { rows, csv: 'x,y,z\n' + rows.map((r) => r.join(',')).join('\n') + '\n' };
+}
+
+describe('checkPoints', () => {
+  it('finds regions parting from bresenham3d with tie = hold at point 5, with regions\' reason', async () => {
+    const { rows, csv } = await holdPath();
+    const regions = await trace(REGIONS);
+    const why = regions.explain(4);
+    regions.free();
+    for (const points of [rows, csv, { points: Int32Array.from(rows.flat()), dims: 3 }]) {
+      const c = await checkPoints(REGIONS, points);
+      expect(c.matches).toBe(false);
+      expect(c.firstDifference?.pointIndex).toBe(5);
+      expect(c.firstDifference?.why).toBe(why);
+      expect(c.firstDifference?.decisions.region).toBe('g');
+      expect(c.firstDifference?.decisions.tie).toBe(true);
+      expect(c.alsoMatches.map((m) => m.label)).toContain('bresenham3d with tie = hold');
+    }
+  });
+
+  it('matches the rule\'s own path, and reports a short tail', async () => {
+    const t = await trace(REGIONS);
+    const rows = pointsOf(t);
+    t.free();
+    expect((await checkPoints(REGIONS, rows)).matches).toBe(true);
+    const short = await checkPoints(REGIONS, rows.slice(0, 8));
+    expect(short.firstDifference?.message).toBe(`your path stops at step 7 of ${rows.length - 1}`);
+  });
+
+  it('names the row of malformed input', async () => {
+    expect((await rejection(checkPoints(REGIONS, '0,0,0\n1,1.5,1\n'))).message).toBe(
+      'line 2, column 3: point 1: y = 1.5 is not a whole number',
+    );
+    expect((await rejection(checkPoints(REGIONS, [[0, 0, 0], [1, 1]]))).field).toBe('points');
+  });
+});
+
+describe('voxpath check', () => {
+  it('exits 1 at point 5 with regions\' reason and names bresenham3d with tie = hold', async () => {
+    const { csv } = await holdPath();
+    const r = voxpath(['check', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6', '-'], csv);
+    expect(r.code).toBe(1);
+    expect(r.stdout).toContain('at point 5');
+    expect(r.stdout).toMatch(/segment g between C and D \(a tie\); the tie policy 'advance'/);
+    expect(r.stdout).toMatch(/your points follow: .*bresenham3d with tie = hold/);
+    const json = voxpath(['check', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6', '--format', 'json', '-'], csv);
+    expect(json.code).toBe(1);
+    expect(JSON.parse(json.stdout).firstDifference.pointIndex).toBe(5);
+    expect(r.stdout).toBe(checkToTable(JSON.parse(json.stdout)));
+  });
+
+  it('exits 0 on a match and 2 on bad input', async () => {
+    const t = await trace(REGIONS);
+    const csv = pointsOf(t).map((p) => p.join(' ')).join('\n');
+    t.free();
+    expect(voxpath(['check', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6', '-'], csv).code).toBe(0);
+    const bad = voxpath(['check', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6', '-'], '0,0,0\n2,0,0\n');
+    expect(bad.code).toBe(2);
+    expect(bad.stderr).toContain('line 2, column 1: point 1 (2, 0, 0) is more than one cell from point 0');
+  });
+});
+
+describe('the voxpath/vitest matcher', () => {
+  it('fails the exercise\'s buggy line at point 5 with the CLI\'s table, in vitest and in Jest\'s expect', async () => {
+    const points = bresenham3d(MOVE.from, MOVE.to);
+    const table = checkToTable(await checkPoints(REGIONS, points));
+    expect(table).toContain('at point 5');
+    await expect(expect(points).toFollowRule(REGIONS)).rejects.toThrow(table.trimEnd());
+    await expect((jestExpect(points) as unknown as VoxpathMatchers).toFollowRule(REGIONS)).rejects.toThrow(/your points follow: .*bresenham3d with tie = hold/);
+  });
+
+  it('passes a fixed line', async () => {
+    const t = await trace(REGIONS);
+    const rows = pointsOf(t);
+    t.free();
+    await expect(rows).toFollowRule(REGIONS);
+  });
+});

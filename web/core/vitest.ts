@@ -1,0 +1,52 @@
+/**
+ * A test matcher for a learner's implementation, for vitest and Jest alike
+ * (both take it with `expect.extend`; this module imports neither):
+ *
+ *   import { expect, test } from 'vitest';
+ *   import { voxpathMatchers } from 'voxpath/vitest';
+ *   expect.extend(voxpathMatchers);
+ *
+ *   test('my 3D Bresenham', async () => {
+ *     await expect(myLine([0, 0, 0], [10, 7, 6])).toFollowRule({ algorithm: 'bresenham3d', from: [0, 0, 0], to: [10, 7, 6] });
+ *   });
+ *
+ * The points are anything checkPoints takes (rows, a flat typed array with
+ * `dims` in the request's place is not supported: pass rows or text). The
+ * failure message is the CLI's `voxpath check` table: the first difference,
+ * the rule's reason and decisions, the points around it side by side, and
+ * the rules the points do follow.
+ */
+import { checkPoints } from './check.js';
+import type { LearnerPoints } from './check.js';
+import { checkToTable } from './export.js';
+import type { TraceOptions } from './types.js';
+
+/** What vitest and Jest pass a matcher as `this` (the part used here). */
+interface MatcherContext {
+  isNot?: boolean;
+}
+
+export const voxpathMatchers = {
+  /** Passes when `received` is the path of `request`, point for point. */
+  async toFollowRule(this: MatcherContext, received: LearnerPoints, request: TraceOptions) {
+    const result = await checkPoints(request, received);
+    const table = checkToTable(result);
+    return {
+      pass: result.matches,
+      message: () => (this.isNot ? `expected the points not to follow ${request.algorithm}, but they do.\n${table}` : table),
+    };
+  },
+};
+
+/**
+ * The matcher's type, for a test file to add to its runner's matchers:
+ *
+ *   declare module 'vitest' { interface Matchers<T = any> extends VoxpathMatchers {} }
+ *   declare module 'expect' { interface Matchers<R extends void | Promise<void>, T = unknown> extends VoxpathMatchers<R> {} }
+ *
+ * (this module does not depend on either runner, so it does not do it itself).
+ */
+export interface VoxpathMatchers<R = Promise<void>> {
+  /** The points are the path of the request; await it. */
+  toFollowRule(request: TraceOptions): R;
+}
