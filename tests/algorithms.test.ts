@@ -7,7 +7,7 @@
 import { describe, expect, it } from 'vitest';
 import { algorithms, NO_VALUE, trace, traceToJson } from '../web/core/index.js';
 import type { AlgorithmInfo, Trace } from '../web/core/index.js';
-import { distanceToLine, everyDirection, expectEnds, expectUnitSteps, pointsOf } from './helpers.js';
+import { distanceToLine, everyDirection, expectEnds, expectUnitSteps, labelsOf, pointsOf } from './helpers.js';
 
 interface Promises {
   /** 'any': one unit on any number of axes per step (26-connected); 'one': one axis per step (6-connected). */
@@ -146,7 +146,7 @@ describe.each(LINES.map((a) => [a.id, a] as const))('%s', (_, a) => {
   it('marks each category or flag cell as a label, 0 or 1, or NO_VALUE', async () => {
     const t = await trace(move(a, [0, 0, 0], [10, 7, 6]));
     for (const c of t.columns.filter((c) => c.kind === 'category' || c.kind === 'flag')) {
-      const valid = (v: number) => v === NO_VALUE || (c.kind === 'flag' ? v <= 1 : v < c.labels!.length);
+      const valid = (v: number) => v === NO_VALUE || (c.kind === 'flag' ? v <= 1 : v < labelsOf(c).length);
       expect(Array.from(t.decisions[c.name]!).every(valid), c.name).toBe(true);
     }
   });
@@ -187,8 +187,8 @@ describe.each(LINES.map((a) => [a.id, a] as const))('%s', (_, a) => {
       }
       const tied = Array.from(lower.decisions.tie!).indexOf(1);
       const axis = lower.columns.find((c) => c.name === 'axis' || c.name === 'crosses')!;
-      expect(axis.labels![lower.decisions[axis.name]![tied]!]).toBe('x');
-      expect(axis.labels![higher.decisions[axis.name]![tied]!]).toBe('y');
+      expect(labelsOf(axis)[lower.decisions[axis.name]![tied]!]).toBe('x');
+      expect(labelsOf(axis)[higher.decisions[axis.name]![tied]!]).toBe('y');
     });
   }
 
@@ -256,7 +256,7 @@ describe('golden cases from the documents', () => {
     const t = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [-3, 3, 3] });
     expect(Array.from(t.decisions.region!)).toEqual([NO_VALUE, NO_VALUE, NO_VALUE]);
     expect(Array.from(t.decisions.corner!)).toEqual([NO_VALUE, NO_VALUE, NO_VALUE]);
-    expect(t.columns.find((c) => c.name === 'region')!.labels).not.toContain('-');
+    expect(labelsOf(t.columns.find((c) => c.name === 'region')!)).not.toContain('-');
     expect(traceToJson(t).decisions).toMatchObject({ M: [null, null, null], region: [null, null, null], corner: [null, null, null], tie: [false, false, false] });
   });
 
@@ -270,11 +270,11 @@ describe('golden cases from the documents', () => {
     expect(Array.from(t.decisions.threshold!)).toEqual(Array(10).fill(10));
     expect(pointsOf(t).map((p) => p[1])).toEqual([0, 0, 1, 1, 1, 1, 2, 2, 2, 3, 3]);
     const octant = t.columns.find((c) => c.name === 'octant')!;
-    expect(octant.labels![t.decisions.octant![0]!]).toBe('1');
+    expect(labelsOf(octant)[t.decisions.octant![0]!]).toBe('1');
     // Octant k of Saleem Fig. 1 is the half-open 45° range [45°(k-1), 45°k) from +x.
     for (const [to, k] of [[[3, 10], '2'], [[-3, 10], '3'], [[-10, 3], '4'], [[-10, -3], '5'], [[-3, -10], '6'], [[3, -10], '7'], [[10, -3], '8']] as const) {
       const o = await trace({ algorithm: 'bresenham2d', from: [0, 0], to: [...to] });
-      expect(octant.labels![o.decisions.octant![0]!], JSON.stringify(to)).toBe(k);
+      expect(labelsOf(octant)[o.decisions.octant![0]!], JSON.stringify(to)).toBe(k);
     }
   });
 

@@ -3,7 +3,7 @@
 // as worked out in SEED-NOTES.md (they equal Liu's Table 1 point for point).
 import { describe, expect, it } from 'vitest';
 import { algorithms, NO_VALUE, readDecision, runGcode, trace, traceToCsv, traceToJson, traceToTable } from '../web/core/index.js';
-import { distanceToLine, rejection } from './helpers.js';
+import { distanceToLine, labelsOf, rejection } from './helpers.js';
 
 const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
 
@@ -18,7 +18,7 @@ describe('trace (regions)', () => {
     expect(Array.from(t.decisions.M!)).toEqual([4, -2, 12, 6, 0, -6, 8, 2, -4, 10]);
     expect(Array.from(t.decisions.N!)).toEqual([2, -6, 6, -2, 10, 2, -6, 6, -2, 10]);
     const region = t.columns.find((c) => c.name === 'region')!;
-    expect(Array.from(t.decisions.region!, (v) => region.labels![v])).toEqual(['d', 'b', 'd', 'a', 'g', 'c', 'a', 'd', 'b', 'd']);
+    expect(Array.from(t.decisions.region!, (v) => labelsOf(region)[v])).toEqual(['d', 'b', 'd', 'a', 'g', 'c', 'a', 'd', 'b', 'd']);
     expect(t.decisions.region).toBeInstanceOf(Uint8Array);
     expect(Array.from(t.decisions.tie!)).toEqual([0, 0, 0, 0, 1, 0, 0, 0, 0, 0]);
   });
@@ -39,7 +39,7 @@ describe('trace (regions)', () => {
     expect([u[2], v[2], u[4], v[4]]).toEqual([0.6, 0.3, 0, 0.5]);
     const axis = (name: string) => {
       const column = t.columns.find((c) => c.name === name)!;
-      return Array.from(t.decisions[name]!, (i) => column.labels![i]);
+      return Array.from(t.decisions[name]!, (i) => labelsOf(column)[i]);
     };
     expect(new Set(axis('face_u_axis'))).toEqual(new Set(['+y']));
     expect(new Set(axis('face_v_axis'))).toEqual(new Set(['+z']));
@@ -48,7 +48,7 @@ describe('trace (regions)', () => {
     expect(Array.from(mirrored.decisions.face_u!)).toEqual(u);
     expect(Array.from(mirrored.decisions.face_v!)).toEqual(v);
     const vAxis = mirrored.columns.find((c) => c.name === 'face_v_axis')!;
-    expect(vAxis.labels![mirrored.decisions.face_v_axis![0]!]).toBe('-z');
+    expect(labelsOf(vAxis)[mirrored.decisions.face_v_axis![0]!]).toBe('-z');
   });
 
   it('has one face coordinate with one passive axis, and none on a type ② line', async () => {

@@ -11,7 +11,7 @@
 import { describe, expect, it } from 'vitest';
 import { algorithms, NO_VALUE, readDecision, trace } from '../web/core/index.js';
 import type { AlgorithmInfo, Trace } from '../web/core/index.js';
-import { expectEnds, inPlane, PLANE_AXES, PLANES, rejection } from './helpers.js';
+import { expectEnds, inPlane, labelsOf, PLANE_AXES, PLANES, rejection } from './helpers.js';
 import type { Plane } from './helpers.js';
 
 const ARCS: AlgorithmInfo[] = (await algorithms()).filter((a) => a.family === 'arc');
@@ -97,7 +97,7 @@ describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
           expect([...octants].sort()).toEqual([0, 1, 2, 3, 4, 5, 6, 7]);
           // Saleem's octant column (circle, helix; NO_VALUE on a helix's steps of the linear axis alone) names all eight too.
           const column = t.columns.find((c) => c.name === 'octant');
-          if (column) expect(new Set(Array.from(t.decisions.octant!).filter((v) => v !== NO_VALUE).map((v) => column.labels![v]))).toEqual(new Set(column.labels));
+          if (column) expect(new Set(Array.from(t.decisions.octant!).filter((v) => v !== NO_VALUE).map((v) => labelsOf(column)[v]))).toEqual(new Set(labelsOf(column)));
         }
       }
     },

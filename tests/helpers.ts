@@ -5,7 +5,7 @@ import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { expect } from 'vitest';
 import { VoxpathError } from '../web/core/index.js';
-import type { Trace } from '../web/core/index.js';
+import type { ColumnSpec, Trace } from '../web/core/index.js';
 
 /** The CLI's entry point. */
 export const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
@@ -96,4 +96,9 @@ export function inPlane(plane: Plane, [u, v, n]: number[]): number[] {
   const [a, b, c] = PLANE_AXES[plane];
   [p[a], p[b], p[c]] = [u!, v!, n!];
   return p;
+}
+
+/** The labels of a category column (none for other kinds). */
+export function labelsOf(column: ColumnSpec): string[] {
+  return column.kind === 'category' ? column.labels : [];
 }

@@ -1,7 +1,7 @@
 // The page's state <-> URL query (the permalink and localStorage format),
 // against the real algorithm catalogue of the built wasm package.
 import { beforeAll, describe, expect, it } from 'vitest';
-import { algorithms, experiments } from '../web/core/index.js';
+import { catalogue as coreCatalogue } from '../web/core/index.js';
 import {
   type AppState,
   type Catalogue,
@@ -26,7 +26,7 @@ const info = (id: string) => catalogue.algorithms.find((a) => a.id === id)!;
 const first = () => defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
 
 beforeAll(async () => {
-  catalogue = { algorithms: await algorithms(), experiments: await experiments() };
+  catalogue = await coreCatalogue();
 });
 
 describe('page state in the URL query', () => {

@@ -372,7 +372,7 @@ function run(catalogue: Catalogue): void {
       }
       present();
       if (next.program) {
-        const p = next.program;
+        const p = next.program.program;
         status.textContent =
           `${p.lines} lines, ${p.moveCount} moves, ${p.steps} steps at ${p.stepsPerMm.join(' / ')} steps/mm` +
           `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${p.errors[0]!.message}` : ''}` +

@@ -1,66 +1,9 @@
-//! The catalogue: every algorithm voxpath runs, with its citation, teaching
-//! text, decision columns and options. The CLI, the JS API and the page all
-//! read this one list.
+//! The list of every algorithm voxpath runs, and the lookup by id. What an
+//! entry holds is declared in the leaf module `algorithm_info`, which the
+//! algorithms import; only this module imports the algorithms.
 
+pub use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
-use crate::request::{OptionSpec, Request};
-use crate::trace::{Column, ColumnKind, TiePolicy, Trace};
-use serde::Serialize;
-use serde::ser::{SerializeStruct, Serializer};
-
-/// What an algorithm draws, and so which inputs it needs.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Family {
-    /// A straight move between two points (`from`, `to`).
-    Line,
-    /// An arc, circle or helix about a centre (`from`, `to`, `center`, ...).
-    Arc,
-}
-
-impl Family {
-    pub fn label(self) -> &'static str {
-        match self {
-            Family::Line => "line",
-            Family::Arc => "arc",
-        }
-    }
-}
-
-impl Serialize for Family {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.label())
-    }
-}
-
-/// A move that shows what an algorithm teaches: the page opens with it and
-/// the README cites it. A test traces every example.
-pub struct Example {
-    /// The options (without `algorithm`) as JSON text.
-    pub options: &'static str,
-    /// Why this move: what a learner sees in it.
-    pub why: &'static str,
-}
-
-/// One algorithm of the catalogue.
-pub struct AlgorithmInfo {
-    pub id: &'static str,
-    pub family: Family,
-    pub example: Example,
-    pub title: &'static str,
-    /// Document and section.
-    pub citation: &'static str,
-    /// The rule in plain words.
-    pub teaching: &'static str,
-    /// Where the source document is wrong, and what voxpath does instead.
-    pub errata: &'static [&'static str],
-    pub columns: &'static [Column],
-    pub options: &'static [OptionSpec],
-    pub min_dims: usize,
-    pub max_dims: usize,
-    pub default_tie: Option<TiePolicy>,
-    /// Runs the algorithm on a request whose `algorithm` is this id.
-    pub trace: fn(&Request) -> Result<Trace, Error>,
-}
 
 /// Every algorithm, in the order the page lists them.
 pub const ALGORITHMS: &[&AlgorithmInfo] = &[
@@ -77,7 +20,8 @@ pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::arc::helix::INFO,
 ];
 
-/// The algorithm with this id, or an error listing the known ids.
+/// The algorithm with this id, or an error listing the known ids. It is the
+/// [`crate::algorithm_info::Find`] handed to every algorithm's `trace`.
 pub fn find(id: &str) -> Result<&'static AlgorithmInfo, Error> {
     ALGORITHMS
         .iter()
@@ -90,51 +34,6 @@ pub fn find(id: &str) -> Result<&'static AlgorithmInfo, Error> {
                 format!("unknown algorithm '{id}' (known: {})", ids.join(", ")),
             )
         })
-}
-
-impl Serialize for Column {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut st = s.serialize_struct("Column", 4)?;
-        st.serialize_field("name", self.name)?;
-        let (kind, labels) = match self.kind {
-            ColumnKind::Int => ("int", None),
-            ColumnKind::Float => ("float", None),
-            ColumnKind::Category(labels) => ("category", Some(labels)),
-            ColumnKind::Flag => ("flag", None),
-        };
-        st.serialize_field("kind", kind)?;
-        if let Some(labels) = labels {
-            st.serialize_field("labels", labels)?;
-        } else {
-            st.skip_field("labels")?;
-        }
-        st.serialize_field("doc", self.doc)?;
-        st.end()
-    }
-}
-
-impl Serialize for AlgorithmInfo {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut st = s.serialize_struct("AlgorithmInfo", 12)?;
-        st.serialize_field("id", self.id)?;
-        st.serialize_field("family", &self.family)?;
-        let options: serde_json::Value =
-            serde_json::from_str(self.example.options).map_err(serde::ser::Error::custom)?;
-        st.serialize_field(
-            "example",
-            &serde_json::json!({ "options": options, "why": self.example.why }),
-        )?;
-        st.serialize_field("title", self.title)?;
-        st.serialize_field("citation", self.citation)?;
-        st.serialize_field("teaching", self.teaching)?;
-        st.serialize_field("errata", self.errata)?;
-        st.serialize_field("columns", self.columns)?;
-        st.serialize_field("options", self.options)?;
-        st.serialize_field("minDims", &self.min_dims)?;
-        st.serialize_field("maxDims", &self.max_dims)?;
-        st.serialize_field("defaultTie", &self.default_tie.map(TiePolicy::label))?;
-        st.end()
-    }
 }
 
 #[cfg(test)]

@@ -22,6 +22,7 @@ use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
 use crate::trace::Trace;
 use serde::Serialize;
+use tsify::Tsify;
 use serde_json::{Map, Value};
 use std::sync::Arc;
 
@@ -341,7 +342,7 @@ fn header_columns(header: &[(usize, &str)], dims: usize) -> Option<Vec<usize>> {
 }
 
 /// What kind of difference the first one is.
-#[derive(Serialize, Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
 #[serde(rename_all = "camelCase")]
 pub enum DifferenceKind {
     /// The points start elsewhere than the move (point 0 differs).
@@ -355,7 +356,7 @@ pub enum DifferenceKind {
 }
 
 /// The first point where the learner's path and the rule's part.
-#[derive(Serialize, Clone, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Difference {
     pub kind: DifferenceKind,
@@ -376,13 +377,14 @@ pub struct Difference {
     /// The decision values of that step by column name (numbers, category
     /// labels, true/false), empty where the rule takes no step.
     #[serde(serialize_with = "as_object")]
+    #[tsify(type = "Record<string, number | string | boolean | null>")]
     pub decisions: Vec<(String, Value)>,
     /// Point indices up to [`AROUND`] either side, each side's point.
     pub around: Vec<AroundRow>,
 }
 
 /// One point index near the difference, on both paths.
-#[derive(Serialize, Clone, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct AroundRow {
     pub point_index: u64,
@@ -391,7 +393,7 @@ pub struct AroundRow {
 }
 
 /// A catalogue rule the points follow exactly.
-#[derive(Serialize, Clone, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct AlsoMatch {
     pub algorithm: String,
@@ -400,6 +402,7 @@ pub struct AlsoMatch {
     /// gives the same path here is left out. Pass it with the request's
     /// other options to trace the same path.
     #[serde(serialize_with = "as_object")]
+    #[tsify(type = "Record<string, unknown>")]
     pub options: Vec<(String, Value)>,
     /// "bresenham3d with tie = hold".
     pub label: String,
@@ -409,7 +412,7 @@ pub struct AlsoMatch {
 }
 
 /// The result of a check.
-#[derive(Serialize, Clone, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Check {
     /// The learner's points are the rule's path, point for point.
@@ -632,7 +635,7 @@ fn trace_combination(
                 options.insert(spec.name.to_string(), value.clone());
             }
         }
-        match (info.trace)(&Request::new(info.id, options).following(steps.clone())) {
+        match (info.trace)(&Request::new(info.id, options).following(steps.clone()), algorithms::find) {
             Ok(trace) => return Some(trace),
             Err(e) => {
                 let refused = tried

@@ -18,6 +18,7 @@ use crate::metrics::Metrics;
 use crate::request::Request;
 use crate::trace::{Column, ColumnKind, Trace};
 use serde::Serialize;
+use tsify::Tsify;
 use serde_json::Value;
 use std::collections::HashSet;
 
@@ -27,7 +28,7 @@ pub const CELL_LIMIT: usize = 1000;
 /// Points read from a trace at a time.
 const CHUNK_POINTS: u64 = 1 << 16;
 
-#[derive(Serialize, Debug, Clone, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Comparison {
     pub a: TraceDigest,
@@ -41,7 +42,7 @@ pub struct Comparison {
     pub only_in_b: Cells,
 }
 
-#[derive(Serialize, Debug, Clone, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct TraceDigest {
     pub algorithm: String,
@@ -52,7 +53,7 @@ pub struct TraceDigest {
     pub metrics: Metrics,
 }
 
-#[derive(Serialize, Debug, Clone, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct FirstDifference {
     pub point_index: u64,
@@ -67,7 +68,7 @@ pub struct FirstDifference {
 }
 
 /// Why one trace took one step: its explanation and decision values.
-#[derive(Serialize, Debug, Clone, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct StepWhy {
     pub step_index: u64,
@@ -78,6 +79,7 @@ pub struct StepWhy {
     /// null where a column does not apply to the step. Serialized as one
     /// JSON object.
     #[serde(serialize_with = "as_object")]
+    #[tsify(type = "Record<string, number | string | boolean | null>")]
     pub decisions: Vec<(String, Value)>,
 }
 
@@ -89,7 +91,7 @@ pub(crate) fn as_object<S: serde::Serializer>(
     s.collect_map(pairs.iter().map(|(k, v)| (k, v)))
 }
 
-#[derive(Serialize, Debug, Clone, PartialEq, Default)]
+#[derive(Serialize, Tsify, Debug, Clone, PartialEq, Default)]
 #[serde(rename_all = "camelCase")]
 pub struct Cells {
     /// Distinct cells.
@@ -176,7 +178,7 @@ fn readable(column: &Column, value: f64) -> Value {
         return Value::Null;
     }
     match column.kind {
-        ColumnKind::Category(labels) => labels
+        ColumnKind::Category { labels } => labels
             .get(value as usize)
             .map_or(Value::from(value), |&label| Value::from(label)),
         ColumnKind::Flag => Value::from(value == 1.0),
@@ -277,6 +279,19 @@ fn pick_algorithms(value: Option<Value>) -> Result<[&'static AlgorithmInfo; 2], 
     Ok([find(a)?, find(b)?])
 }
 
+/// A comparison as the JS API asks for it: the two algorithms, a then b,
+/// and the shared options by name. Each option goes to every one of the two
+/// that declares it; one neither declares is rejected, naming it.
+#[derive(Serialize, Tsify)]
+pub struct CompareOptions {
+    /// The two catalogue ids (for example ["circle", "arc-segments"]).
+    #[tsify(type = "readonly [string, string]")]
+    pub algorithms: [String; 2],
+    #[serde(flatten)]
+    #[tsify(type = "Record<string, unknown>")]
+    pub options: serde_json::Map<String, Value>,
+}
+
 /// Runs `{"algorithms": [a, b], ...options}`: each option goes to each of
 /// the two algorithms that declares it (`segmentLength` only to
 /// arc-segments when compared with circle, `from` and `to` to both), and
@@ -311,7 +326,7 @@ pub fn compare_request(text: &str) -> Result<Comparison, Error> {
             .filter(|(name, _)| takes(info, name))
             .map(|(name, value)| (name.clone(), value.clone()))
             .collect();
-        (info.trace)(&Request::new(info.id, own)).map_err(|e| Error {
+        (info.trace)(&Request::new(info.id, own), algorithms::find).map_err(|e| Error {
             message: format!("{}: {}", info.id, e.message),
             ..e
         })

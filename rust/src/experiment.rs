@@ -10,11 +10,12 @@
 //!   position after the same number of steps, which reaches 0.7071 exactly
 //!   where both passive axes are half a unit off.
 
-use crate::algorithms::Family;
+use crate::algorithm_info::Family;
 use crate::error::Error;
 use crate::grid::MAX_AXES;
 use crate::request::{OptionKind, OptionSpec, Request};
 use serde::Serialize;
+use tsify::Tsify;
 use serde_json::Value;
 
 /// Most lines one experiment may trace.
@@ -48,7 +49,7 @@ impl SplitMix64 {
 }
 
 /// Max, mean and (population) standard deviation of one line's errors.
-#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, Copy, PartialEq)]
 pub struct ErrorStats {
     pub max: f64,
     pub mean: f64,
@@ -69,7 +70,7 @@ impl ErrorStats {
 }
 
 /// One random line and its errors.
-#[derive(Serialize, Debug, Clone, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct LineResult {
     pub to: Vec<i64>,
@@ -82,7 +83,7 @@ pub struct LineResult {
 
 /// Max, min and mean over all lines of one per-line statistic (Fig. 9 names
 /// them delta_(Mean-Max), delta_(Mean-Min), delta_(Mean-Mean), ...).
-#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, Copy, PartialEq)]
 pub struct Spread {
     pub max: f64,
     pub min: f64,
@@ -101,7 +102,7 @@ impl Spread {
 }
 
 /// The spread of each per-line statistic of one error measure.
-#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, Copy, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct MeasureSummary {
     pub max: Spread,
@@ -119,7 +120,7 @@ impl MeasureSummary {
     }
 }
 
-#[derive(Serialize, Debug, Clone, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct RandomLines {
     pub experiment: &'static str,
@@ -132,6 +133,18 @@ pub struct RandomLines {
     /// Wang's Figure 9, for comparison with `axis_error`.
     pub paper_figure_9: MeasureSummary,
     pub paper_figure_9_erratum: &'static str,
+}
+
+/// The request of `random-lines` as the JS API gives it: the algorithm that
+/// traces every line, the experiment's own options ([`OPTIONS`], which
+/// document them) and any option of that algorithm but from and to, by name.
+#[derive(Serialize, Tsify)]
+pub struct RandomLinesOptions {
+    /// Catalogue id of the algorithm that traces every line (for example "regions").
+    pub algorithm: String,
+    #[serde(flatten)]
+    #[tsify(type = "Record<string, unknown>")]
+    pub options: serde_json::Map<String, Value>,
 }
 
 /// The options `random-lines` takes itself; any other option is passed to
@@ -180,7 +193,7 @@ pub const OPTIONS: &[OptionSpec] = &[
 ];
 
 /// One experiment of the catalogue.
-#[derive(Serialize)]
+#[derive(Serialize, Tsify)]
 pub struct ExperimentInfo {
     pub id: &'static str,
     pub title: &'static str,
@@ -286,7 +299,7 @@ pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
         let mut line = request.without(&own);
         line.set("from", Value::from(vec![0; dims]));
         line.set("to", Value::from(to.clone()));
-        let trace = (info.trace)(&line)?;
+        let trace = (info.trace)(&line, crate::algorithms::find)?;
         let n = trace.steps();
         let perpendicular = ErrorStats::of(&trace.deviation_range(0, n + 1));
         let phi = trace.axis_error_range(0, n + 1);

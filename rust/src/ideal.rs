@@ -4,6 +4,7 @@
 use crate::arc::curve::{ArcMeter, ArcPath, HelixPath};
 use crate::grid::{MAX_AXES, Point};
 use serde::Serialize;
+use tsify::Tsify;
 
 /// The path the steps approximate. Deviation is measured against it.
 #[derive(Clone, Debug, PartialEq)]
@@ -17,7 +18,7 @@ pub enum IdealPath {
 }
 
 /// How the ideal path is described to a viewer (grid units).
-#[derive(Serialize, Debug, Clone, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
 #[serde(tag = "kind", rename_all = "camelCase")]
 pub enum IdealPathInfo {
     Line {

@@ -11,9 +11,11 @@
 // says "this axis" more plainly than zipped iterators.
 #![allow(clippy::needless_range_loop)]
 
+pub mod algorithm_info;
 pub mod algorithms;
 pub mod arc;
 pub mod check;
+pub mod catalogue;
 pub mod compare;
 pub mod error;
 pub mod experiment;
@@ -41,5 +43,5 @@ pub fn trace_json(request_json: &str) -> Result<Trace, Error> {
 
 /// Runs a parsed request with the algorithm it names.
 pub fn run(request: &Request) -> Result<Trace, Error> {
-    (algorithms::find(&request.algorithm)?.trace)(request)
+    (algorithms::find(&request.algorithm)?.trace)(request, algorithms::find)
 }

@@ -2,11 +2,12 @@
 
 use crate::grid::{MAX_AXES, Step};
 use serde::Serialize;
+use tsify::Tsify;
 
 /// Statistics of one trace. Deviations are in grid units; mean and standard
 /// deviation are taken over all points, start and end included (as the Error
 /// columns of Wang's Tables 1 and 2 list them).
-#[derive(Serialize, Debug, Clone, Default, PartialEq)]
+#[derive(Serialize, Tsify, Debug, Clone, Default, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Metrics {
     pub steps: u64,

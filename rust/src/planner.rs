@@ -48,6 +48,7 @@ use crate::error::Error;
 use crate::machine::MACHINE_AXES;
 use crate::request::{OptionKind, OptionSpec};
 use serde::Serialize;
+use tsify::Tsify;
 use std::ops::Range;
 
 /// Grbl's defaults (defaults.h, DEFAULTS_GENERIC): 10 mm/s² per axis
@@ -69,7 +70,7 @@ const MAX_ARC_CHORDS: u64 = u16::MAX as u64;
 
 pub const ACCELERATION: OptionSpec = OptionSpec {
     name: "acceleration",
-    kind: OptionKind::Number,
+    kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: Some("10"),
     doc: "Acceleration, mm/s²: one number for every axis or [x, y, z] (Grbl $120-$122; default Grbl's 10).",
@@ -77,7 +78,7 @@ pub const ACCELERATION: OptionSpec = OptionSpec {
 
 pub const MAX_RATE: OptionSpec = OptionSpec {
     name: "maxRate",
-    kind: OptionKind::Number,
+    kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: Some("500"),
     doc: "Top rate, mm/min: one number or [x, y, z]; also the rate of G0 (Grbl $110-$112; default Grbl's 500).",
@@ -93,7 +94,7 @@ pub const JUNCTION_DEVIATION: OptionSpec = OptionSpec {
 
 pub const MAX_STEP_RATE: OptionSpec = OptionSpec {
     name: "maxStepRate",
-    kind: OptionKind::Number,
+    kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
     doc: "Fastest step rate the drivers take, steps/s: one number or [x, y, z]; a move that needs more is a warning.",
@@ -430,7 +431,7 @@ pub struct Plan {
 }
 
 /// The timing of one move (a range of blocks), speeds in mm/s.
-#[derive(Serialize, Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Copy, Debug, Default, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Timing {
     pub start_seconds: f64,

@@ -6,11 +6,12 @@ use crate::error::Error;
 use crate::grid::{Point, Step};
 use crate::trace::{DEFAULT_MAX_STEPS, MAX_STEPS_LIMIT, TiePolicy};
 use serde::Serialize;
+use tsify::Tsify;
 use serde_json::{Map, Value};
 use std::sync::Arc;
 
 /// The type of an option's value.
-#[derive(Serialize, Clone, Copy, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
 #[serde(tag = "type", rename_all = "camelCase")]
 pub enum OptionKind {
     /// Integer grid coordinates, one per axis.
@@ -29,10 +30,13 @@ pub enum OptionKind {
     Choice { values: &'static [&'static str] },
     /// true or false.
     Boolean,
+    /// A number for every axis, or one per axis ([x, y, z]); whole numbers
+    /// when `integer` (a machine setting such as stepsPerMm or maxRate).
+    PerAxis { integer: bool },
 }
 
 /// One option an algorithm takes.
-#[derive(Serialize, Clone, Copy, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct OptionSpec {
     /// Name in the JS API (camelCase); the CLI flag is its kebab-case form.
@@ -82,6 +86,33 @@ pub const fn tie_option(default: &'static str) -> OptionSpec {
         default: Some(default),
         doc: "What a discriminant of exactly 0 does: advance steps the axis, hold does not.",
     }
+}
+
+/// The options of one trace as the JS API gives them: the algorithm, the
+/// options every algorithm takes, and the further options its catalogue
+/// entry lists (`AlgorithmInfo::options`), which the core checks by name.
+/// Points may be any array-like of numbers (an Int32Array, say).
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct TraceOptions {
+    /// Algorithm id, as the catalogue lists it (for example "regions").
+    pub algorithm: String,
+    /// Start point, grid units (2 to 6 axes, |coordinate| <= 2^30).
+    #[tsify(type = "ArrayLike<number>")]
+    pub from: Vec<i64>,
+    /// End point, as many axes as `from`.
+    #[tsify(type = "ArrayLike<number>")]
+    pub to: Vec<i64>,
+    /// What a zero discriminant does; the default is the algorithm's source's.
+    #[tsify(optional)]
+    pub tie: Option<TiePolicy>,
+    /// Refuse paths longer than this many steps (default 50,000,000).
+    #[tsify(optional)]
+    pub max_steps: Option<u64>,
+    /// The algorithm's further options, by name.
+    #[serde(flatten)]
+    #[tsify(type = "Record<string, unknown>")]
+    pub more: Map<String, Value>,
 }
 
 /// A parsed request: an algorithm id and its options (already checked to be

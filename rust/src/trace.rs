@@ -20,6 +20,7 @@ use crate::request::Request;
 use serde::Serialize;
 use std::cell::OnceCell;
 use std::sync::Arc;
+use tsify::Tsify;
 
 /// Steps between two stored positions / stepper states.
 pub const CHECKPOINT_INTERVAL: u64 = 4096;
@@ -32,7 +33,8 @@ pub const MAX_STEPS_LIMIT: u64 = 1_000_000_000;
 
 /// What a decision does when its discriminant is exactly zero, i.e. when the
 /// ideal path passes exactly half way between the two candidate cells.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
 pub enum TiePolicy {
     /// Step the axis (Liu's Table 1 and Wang's worked example: M >= 0 steps).
     Advance,
@@ -68,15 +70,17 @@ impl TiePolicy {
 /// value. Number columns hold NaN there instead.
 pub const NO_VALUE: u8 = 255;
 
-/// How to read the values of one decision column.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// How to read the values of one decision column. Crosses the boundary
+/// flattened into its [`Column`]: `{ kind: "category", labels: [...] }`.
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
+#[serde(tag = "kind", rename_all = "camelCase")]
 pub enum ColumnKind {
     /// An exact integer (|v| < 2^53, so exact in f64).
     Int,
     /// A real number.
     Float,
-    /// An index into the labels (fewer than [`NO_VALUE`] of them).
-    Category(&'static [&'static str]),
+    /// An index into `labels` (fewer than [`NO_VALUE`] of them).
+    Category { labels: &'static [&'static str] },
     /// 0 or 1.
     Flag,
 }
@@ -86,7 +90,7 @@ impl ColumnKind {
     /// [`NO_VALUE`] for categories and flags, NaN for numbers.
     pub fn no_value(self) -> f64 {
         match self {
-            ColumnKind::Category(_) | ColumnKind::Flag => f64::from(NO_VALUE),
+            ColumnKind::Category { .. } | ColumnKind::Flag => f64::from(NO_VALUE),
             ColumnKind::Int | ColumnKind::Float => f64::NAN,
         }
     }
@@ -110,10 +114,17 @@ impl ColumnKind {
 }
 
 /// One decision column: a quantity the algorithm computes at each step.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// Where it does not apply to a step it holds NaN (int, float) or
+/// [`NO_VALUE`] (category, flag).
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
 pub struct Column {
+    /// Column name, as in the paper where the paper names it (M, N, ...).
     pub name: &'static str,
+    #[serde(flatten)]
+    // Named as a type, not an interface to extend: ColumnKind is a union.
+    #[tsify(type = "ColumnKind")]
     pub kind: ColumnKind,
+    /// One sentence: what the value is and where it comes from.
     pub doc: &'static str,
 }
 
@@ -212,7 +223,7 @@ pub fn fill_by_next_step<S: Stepper>(stepper: &mut S, out: &mut [Step]) -> Fille
 
 /// A distance from the ideal path that no point of a trace exceeds, as its
 /// algorithm guarantees, and the reason in a sentence.
-#[derive(Serialize, Clone, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
 pub struct DeviationBound {
     /// Grid units.
     pub value: f64,
@@ -761,14 +772,20 @@ impl Trace {
 }
 
 /// What a viewer needs to know about a trace besides its bulk arrays.
-#[derive(Serialize)]
+/// Point index k runs 0..=steps, step index k runs 0..steps-1; coordinates
+/// are grid units.
+#[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct TraceSummary<'a> {
+    /// The catalogue id of the algorithm that traced it.
     pub algorithm: &'a str,
+    /// Axes per point: the stride of the points array.
     pub dims: usize,
     pub steps: u64,
+    /// Point 0 and point `steps`.
     pub start: Vec<i64>,
     pub end: Vec<i64>,
+    /// The decision columns, in the order the decisions array holds them.
     pub columns: &'a [Column],
     pub metrics: &'a Metrics,
     /// Absent (null) where the algorithm guarantees none.
@@ -776,13 +793,18 @@ pub struct TraceSummary<'a> {
     pub segments: Vec<SegmentSummary<'a>>,
 }
 
-#[derive(Serialize)]
+/// One stretch of a trace produced by one stepper (a line, a chord, a
+/// G-code move).
+#[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct SegmentSummary<'a> {
+    /// Step index of the segment's first step.
     pub first_step: u64,
     pub steps: u64,
+    /// Point where the segment starts.
     pub start: Vec<i64>,
     pub ideal: IdealPathInfo,
+    /// What a learner should know about this move before it starts.
     pub note: &'a str,
 }
 

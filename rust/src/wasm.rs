@@ -12,13 +12,26 @@
 //! - direction levels: Uint8Array, one byte per step index, bit `axis` set
 //!   while that axis's DIR line is at its negative level (see `machine`).
 //!
-//! Small data (summary, catalogue, comparisons) crosses as JSON text.
+//! Small data (summary, catalogue, comparisons, a program's record) crosses
+//! as plain objects: serialized by serde to JSON text, parsed once by the
+//! engine's JSON.parse (faster than building each property through the
+//! boundary). Each is a Rust type deriving `Tsify`, which writes its
+//! TypeScript twin into the package's .d.ts, and each function names that
+//! type as its return type (`unchecked_return_type`): the types the JS side
+//! reads are the Rust types, declared once.
 //! Errors are JS `Error` objects named `VoxpathError` with `field`, or
 //! `line` and `column`, set.
 
 use crate::error::{Error, Location};
 use crate::trace::Trace;
+use serde::Serialize;
 use wasm_bindgen::prelude::*;
+
+/// A boundary value as the plain object its Tsify type describes.
+fn to_js<T: Serialize>(value: &T) -> JsValue {
+    let json = serde_json::to_string(value).expect("boundary types serialize");
+    js_sys::JSON::parse(&json).expect("serde_json writes valid JSON")
+}
 
 fn to_js_error(error: &Error) -> JsValue {
     let js = js_sys::Error::new(&error.to_string());
@@ -48,45 +61,40 @@ pub fn trace(request_json: &str) -> Result<TraceHandle, JsValue> {
         .map_err(|e| to_js_error(&e))
 }
 
-/// The algorithm catalogue as JSON text (see `algorithms::AlgorithmInfo`).
-#[wasm_bindgen(js_name = catalogueJson)]
-pub fn catalogue_json() -> String {
-    serde_json::to_string(crate::algorithms::ALGORITHMS).expect("the catalogue serializes")
+/// Everything the core offers: algorithms, experiments and G-code settings
+/// (see `catalogue::Catalogue`).
+#[wasm_bindgen(unchecked_return_type = "Catalogue")]
+pub fn catalogue() -> JsValue {
+    to_js(&crate::catalogue::CATALOGUE)
 }
 
-/// The experiment catalogue as JSON text (see `experiment::ExperimentInfo`).
-#[wasm_bindgen(js_name = experimentsJson)]
-pub fn experiments_json() -> String {
-    serde_json::to_string(crate::experiment::EXPERIMENTS).expect("the catalogue serializes")
-}
-
-/// Runs the `random-lines` experiment; returns its result as JSON text.
-#[wasm_bindgen(js_name = randomLinesJson)]
-pub fn random_lines_json(request_json: &str) -> Result<String, JsValue> {
+/// Runs the `random-lines` experiment.
+#[wasm_bindgen(js_name = randomLines, unchecked_return_type = "RandomLines")]
+pub fn random_lines(request_json: &str) -> Result<JsValue, JsValue> {
     let result = crate::Request::from_json(request_json)
         .and_then(|r| crate::experiment::random_lines(&r))
         .map_err(|e| to_js_error(&e))?;
-    Ok(serde_json::to_string(&result).expect("the result serializes"))
+    Ok(to_js(&result))
 }
 
 /// Runs `{"algorithms": [a, b], ...shared options}` (see
-/// `compare::compare_request`); returns the comparison as JSON text.
-#[wasm_bindgen(js_name = compareJson)]
-pub fn compare_json(request_json: &str) -> Result<String, JsValue> {
+/// `compare::compare_request`).
+#[wasm_bindgen(unchecked_return_type = "Comparison")]
+pub fn compare(request_json: &str) -> Result<JsValue, JsValue> {
     let result = crate::compare::compare_request(request_json).map_err(|e| to_js_error(&e))?;
-    Ok(serde_json::to_string(&result).expect("the comparison serializes"))
+    Ok(to_js(&result))
 }
 
 /// Checks a learner's points against the request (see `check`): `points`
 /// is text (CSV, blank-separated rows or a printed list, parsed here and
 /// nowhere else) or a flat Int32Array / Float64Array with `dims` values per
-/// point. Returns the check as JSON text.
-#[wasm_bindgen(js_name = checkJson)]
-pub fn check_json(
+/// point.
+#[wasm_bindgen(js_name = check, unchecked_return_type = "Check")]
+pub fn check(
     request_json: &str,
-    points: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "string | Int32Array | Float64Array")] points: JsValue,
     dims: Option<u32>,
-) -> Result<String, JsValue> {
+) -> Result<JsValue, JsValue> {
     let result = if let Some(text) = points.as_string() {
         crate::check::check_text(request_json, &text)
     } else {
@@ -109,7 +117,7 @@ pub fn check_json(
         crate::check::check_flat(request_json, &values, dims as usize)
     };
     let check = result.map_err(|e| to_js_error(&e))?;
-    Ok(serde_json::to_string(&check).expect("the check serializes"))
+    Ok(to_js(&check))
 }
 
 /// A finished trace held in wasm memory.
@@ -138,10 +146,10 @@ impl TraceHandle {
 
 #[wasm_bindgen]
 impl TraceHandle {
-    /// Algorithm, dims, steps, columns, metrics and segments as JSON text.
-    #[wasm_bindgen(js_name = summaryJson)]
-    pub fn summary_json(&self) -> String {
-        serde_json::to_string(&self.0.summary()).expect("the summary serializes")
+    /// Algorithm, dims, steps, columns, metrics and segments.
+    #[wasm_bindgen(unchecked_return_type = "TraceSummary")]
+    pub fn summary(&self) -> JsValue {
+        to_js(&self.0.summary())
     }
 
     /// Points with point indices `from..to` (Int32Array, stride dims),
@@ -197,13 +205,13 @@ impl TraceHandle {
         Ok(self.0.explain(step))
     }
 
-    /// This trace against `other` (same dims) as JSON text: both digests,
-    /// the first difference with why each side stepped there, and the
-    /// first cells only one visits (`compare::compare`).
-    #[wasm_bindgen(js_name = compareJson)]
-    pub fn compare_json(&self, other: &TraceHandle) -> Result<String, JsValue> {
+    /// This trace against `other` (same dims): both digests, the first
+    /// difference with why each side stepped there, and the first cells
+    /// only one visits (`compare::compare`).
+    #[wasm_bindgen(js_name = compareWith, unchecked_return_type = "Comparison")]
+    pub fn compare_with(&self, other: &TraceHandle) -> Result<JsValue, JsValue> {
         let result = crate::compare::compare(&self.0, &other.0).map_err(|e| to_js_error(&e))?;
-        Ok(serde_json::to_string(&result).expect("the comparison serializes"))
+        Ok(to_js(&result))
     }
 
     /// Every cell this trace visits and `other` never does, in this trace's
@@ -243,9 +251,9 @@ pub struct GcodeRun(crate::gcode::Runner);
 
 #[wasm_bindgen]
 impl GcodeRun {
-    /// `settings_json`: `{"stepsPerMm": 80 | [x, y, z]}` or `{"stepAngle",
-    /// "microsteps", "pitch"}`, plus `lineAlgorithm`, `arcAlgorithm`,
-    /// `maxSteps`. Bad settings throw, naming the setting.
+    /// `settings_json`: a `GcodeSettings` object as JSON text (its fields
+    /// are the catalogue's `gcodeSettings`). Bad settings throw, naming the
+    /// setting.
     #[wasm_bindgen(constructor)]
     pub fn new(source: String, settings_json: &str) -> Result<GcodeRun, JsValue> {
         let settings =
@@ -253,17 +261,17 @@ impl GcodeRun {
         Ok(GcodeRun(crate::gcode::Runner::new(source, settings)))
     }
 
-    /// Runs up to `max_lines` more lines; returns the progress as JSON text
-    /// (`linesDone`, `lines`, `moves`, `steps`, `done`).
-    pub fn advance(&mut self, max_lines: u32) -> String {
-        serde_json::to_string(&self.0.advance(max_lines)).expect("progress serializes")
+    /// Runs up to `max_lines` more lines; returns how far the run has got.
+    #[wasm_bindgen(unchecked_return_type = "Progress")]
+    pub fn advance(&mut self, max_lines: u32) -> JsValue {
+        to_js(&self.0.advance(max_lines))
     }
 
     /// The program as run so far (all of it once `done`).
     pub fn finish(self) -> GcodeResult {
         let program = self.0.finish();
         GcodeResult {
-            program_json: serde_json::to_string(&program.info).expect("the program serializes"),
+            program: to_js(&program.info),
             steps: program.trace.steps(),
             steps_per_mm: program.info.steps_per_mm,
             trace: Some(program.trace),
@@ -272,10 +280,10 @@ impl GcodeRun {
     }
 }
 
-/// A finished G-code run: the program's record as JSON, and its trace.
+/// A finished G-code run: the program's record, and its trace.
 #[wasm_bindgen]
 pub struct GcodeResult {
-    program_json: String,
+    program: JsValue,
     steps: u64,
     steps_per_mm: [f64; crate::machine::MACHINE_AXES],
     trace: Option<Trace>,
@@ -284,10 +292,10 @@ pub struct GcodeResult {
 
 #[wasm_bindgen]
 impl GcodeResult {
-    /// Moves, pulses, warnings and errors as JSON text (see `gcode::ProgramInfo`).
-    #[wasm_bindgen(js_name = programJson)]
-    pub fn program_json(&self) -> String {
-        self.program_json.clone()
+    /// Moves, pulses, warnings and errors (see `gcode::ProgramInfo`).
+    #[wasm_bindgen(unchecked_return_type = "ProgramInfo")]
+    pub fn program(&self) -> JsValue {
+        self.program.clone()
     }
 
     /// The instant of each step index in `from..to`, seconds from the

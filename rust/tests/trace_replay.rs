@@ -217,7 +217,7 @@ fn too_long_a_path_names_max_steps() {
 fn check_category_cells(what: &str, trace: &voxpath::Trace) {
     let table = trace.decisions(0, trace.steps());
     for (column, values) in trace.columns().iter().zip(&table.columns) {
-        if let ColumnKind::Category(labels) = column.kind {
+        if let ColumnKind::Category { labels } = column.kind {
             assert!(
                 labels.len() < usize::from(NO_VALUE),
                 "{what}: {}",
@@ -225,7 +225,7 @@ fn check_category_cells(what: &str, trace: &voxpath::Trace) {
             );
         }
         let valid = |v: f64| match column.kind {
-            ColumnKind::Category(labels) => v < labels.len() as f64 && v.fract() == 0.0,
+            ColumnKind::Category { labels } => v < labels.len() as f64 && v.fract() == 0.0,
             ColumnKind::Flag => v == 0.0 || v == 1.0,
             ColumnKind::Int | ColumnKind::Float => true,
         };

@@ -1,6 +1,7 @@
 /**
  * `voxpath gcode FILE|- --steps-per-mm 80[,80,400] [--acceleration A --max-rate R
- * --junction-deviation D --max-step-rate S] [--step-times] [--format json|csv|table|vcd]`:
+ * --junction-deviation D --max-step-rate S ...] [--step-times] [--format json|csv|table|vcd]`
+ * (the settings are the catalogue's gcodeSettings, each a flag):
  * runs a G-code program on the modelled machine, plans its motion (Grbl 1.1's
  * planner) and prints its steps, their instants, or its STEP/DIR wires as VCD.
  *
@@ -10,63 +11,32 @@
  */
 import { readFile } from 'node:fs/promises';
 import { runGcode } from '../core/index.js';
-import type { GcodeProgram, GcodeSettings } from '../core/index.js';
-import { UsageError, flagOf, parseFlags, pickFormat } from './main.js';
-
-/** Settings that take one number or one per axis. */
-const PER_AXIS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch', 'acceleration', 'maxRate', 'maxStepRate'] as const;
+import type { GcodeProgram, GcodeProgramInfo, GcodeSettings, OptionSpec } from '../core/index.js';
+import { FORMATS, UsageError, describeOption, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
 
 /** A flag without a value: adds stepTimes to the JSON. */
 const STEP_TIMES_FLAG = '--step-times';
 
-export const GCODE_USAGE =
-  'voxpath gcode FILE|- (--steps-per-mm N[,N,N] | --step-angle DEG --microsteps N --pitch MM) [--line-algorithm ID] [--arc-algorithm circle|arc-segments] [--max-steps N] [--acceleration MM/S2[,,]] [--max-rate MM/MIN[,,]] [--junction-deviation MM] [--max-step-rate STEPS/S[,,]] [--step-times] [--format json|csv|table|vcd]';
+const GCODE_FORMATS = [...FORMATS, 'vcd'] as const;
 
-/** The gcode command's help text. */
-export function gcodeHelp(lineAlgorithms: string[]): string {
+export const GCODE_USAGE = `voxpath gcode FILE|- SETTINGS [${STEP_TIMES_FLAG}] [--format ${GCODE_FORMATS.join('|')}]`;
+
+/** The gcode command's help text; its flags are the core's machine settings (`settings`, the catalogue's gcodeSettings). */
+export function gcodeHelp(settings: readonly OptionSpec[]): string {
   return [
     `  ${GCODE_USAGE}`,
     '    Runs a G-code program (FILE, or - for standard input) on a machine with the given',
     '    steps per mm, or the steps per mm of a stepper drive (Wang 3.3: 360 / step angle',
-    '    · microsteps pulses per turn, over the pitch). One value for all axes or x,y,z.',
-    `    --line-algorithm: ${lineAlgorithms.join('|')} (default regions)`,
-    '    --arc-algorithm: circle (Saleem) or arc-segments (chords); helical arcs use helix.',
+    '    · microsteps pulses per turn, over the pitch), and plans its motion as Grbl 1.1 does.',
+    '    Per-axis settings take one value for all axes or x,y,z. SETTINGS:',
+    ...settings.map(describeOption),
     '    json prints { points (machine position in steps after every step, as trace),',
-    '    lineByStep (the source line of every step), moves (each with its line), pulses',
-    '    (per axis), warnings, errors ([{ line, column, message }]), ... };',
-    '    csv one row per point with its line and move; table the moves and totals.',
-    '    Timing (Grbl 1.1\'s planner, Grbl\'s defaults): --acceleration mm/s² (10), --max-rate',
-    '    mm/min (500; also G0\'s rate), --junction-deviation mm (0.01), --max-step-rate steps/s',
-    '    (a move needing more is a warning). json has durationSeconds and each move\'s timing;',
-    '    --step-times adds stepTimes (seconds, one per step). vcd writes the STEP and DIR wires',
-    '    of every axis as an IEEE 1364 Value Change Dump (PulseView, GTKWave, sigrok).',
+    '    lineByStep (the source line of every step), moves (each with its line and timing),',
+    '    pulses (per axis), durationSeconds, warnings, errors ([{ line, column, message }]), ... };',
+    `    ${STEP_TIMES_FLAG} adds stepTimes (seconds, one per step). csv: one row per point with its`,
+    '    line and move; table: the moves and totals. vcd writes the STEP and DIR wires of every',
+    '    axis as an IEEE 1364 Value Change Dump (PulseView, GTKWave, sigrok).',
   ].join('\n');
-}
-
-function numbers(flag: string, text: string): number | number[] {
-  const values = text.split(',').map((part) => {
-    const v = Number(part);
-    if (part.trim() === '' || !Number.isFinite(v)) throw new UsageError(`${flag}: '${part}' is not a number`);
-    return v;
-  });
-  if (values.length !== 1 && values.length !== 3) {
-    throw new UsageError(`${flag}: expected one number or three (x,y,z), got ${values.length}`);
-  }
-  return values.length === 1 ? values[0]! : values;
-}
-
-function settingsFromFlags(flags: Map<string, string>): GcodeSettings {
-  const settings: Record<string, unknown> = {};
-  const known = [...PER_AXIS, 'lineAlgorithm', 'arcAlgorithm', 'maxSteps', 'junctionDeviation'].map(flagOf);
-  for (const [flag, text] of flags) {
-    if (flag === '--format') continue;
-    if (!known.includes(flag)) throw new UsageError(`unknown flag ${flag} for gcode (it takes ${known.join(', ')}, --format)`);
-    const name = flag.replace(/^--/, '').replace(/-([a-z])/g, (_, c: string) => c.toUpperCase());
-    if ((PER_AXIS as readonly string[]).includes(name)) settings[name] = numbers(flag, text);
-    else if (name === 'maxSteps' || name === 'junctionDeviation') settings[name] = numbers(flag, text);
-    else settings[name] = text;
-  }
-  return settings as GcodeSettings;
 }
 
 /** The text of FILE, or of standard input for '-'. */
@@ -90,24 +60,20 @@ function pointRows(program: GcodeProgram): number[][] {
   return rows;
 }
 
+/** The program's own record (the core's ProgramInfo), without its trace. */
+function record(program: GcodeProgram): GcodeProgramInfo {
+  const { trace: _trace, ...info } = program;
+  return info;
+}
+
 function toJson(program: GcodeProgram, stepTimes: boolean): string {
   return (
     JSON.stringify({
-      durationSeconds: program.durationSeconds,
-      lines: program.lines,
-      steps: program.steps,
-      stepsPerMm: program.stepsPerMm,
-      lineAlgorithm: program.lineAlgorithm,
-      arcAlgorithm: program.arcAlgorithm,
+      // The program's record as the core declares it, then the per-step arrays.
+      ...record(program),
       points: pointRows(program),
       lineByStep: Array.from(program.lineByStepInRange(0, program.steps)),
       ...(stepTimes ? { stepTimes: Array.from(program.stepTimes(0, program.steps)) } : {}),
-      moves: program.moves,
-      pulses: program.pulses,
-      warnings: program.warnings,
-      warningsOmitted: program.warningsOmitted,
-      errors: program.errors,
-      stoppedAtLine: program.stoppedAtLine,
     }) + '\n'
   );
 }
@@ -159,21 +125,20 @@ function toTable(program: GcodeProgram): string {
 }
 
 /** Runs `gcode` with its arguments (after the command); resolves to what to print and the exit code. */
-export async function gcodeCommand(args: string[]): Promise<{ stdout: string; stderr: string; code: number }> {
+export async function gcodeCommand(args: string[], settingSpecs: readonly OptionSpec[]): Promise<{ stdout: string; stderr: string; code: number }> {
   const [file, ...rest] = args;
   if (file === undefined || (file.startsWith('--') && file !== '-')) {
     throw new UsageError('gcode needs a FILE (or - for standard input) before its flags');
   }
-  const stepTimes = rest.includes(STEP_TIMES_FLAG);
-  const flags = parseFlags(rest.filter((a) => a !== STEP_TIMES_FLAG));
-  const vcd = flags.get('--format') === 'vcd';
-  if (vcd) flags.delete('--format');
-  const format = pickFormat(flags);
-  if (stepTimes && (vcd || format !== 'json')) throw new UsageError(`${STEP_TIMES_FLAG} adds stepTimes to the json format`);
-  const settings = settingsFromFlags(flags);
+  const flags = parseFlags(rest, [STEP_TIMES_FLAG]);
+  const stepTimes = flags.has(STEP_TIMES_FLAG);
+  const format = pickFormat(flags, GCODE_FORMATS);
+  if (stepTimes && format !== 'json') throw new UsageError(`${STEP_TIMES_FLAG} adds stepTimes to the json format`);
+  const settings: GcodeSettings = optionsFromFlags(flags, settingSpecs, 'gcode', ['--format', STEP_TIMES_FLAG]);
   const program = await runGcode(await readSource(file), settings);
   try {
-    const stdout = vcd
+    const stdout =
+      format === 'vcd'
       ? new TextDecoder().decode(program.vcd())
       : format === 'csv'
         ? toCsv(program)

@@ -9,13 +9,12 @@
  * rejected input (with a one-line error naming the flag, then usage).
  */
 import {
-  algorithms,
+  catalogue as coreCatalogue,
   checkPoints,
   checkToTable,
   compare,
   comparisonToCsv,
   comparisonToTable,
-  experiments,
   randomLines,
   randomLinesToCsv,
   randomLinesToTable,
@@ -25,86 +24,9 @@ import {
   traceTableChunks,
   VoxpathError,
 } from '../core/index.js';
-import type { AlgorithmInfo, ExperimentInfo, OptionSpec, Trace } from '../core/index.js';
+import type { AlgorithmInfo, Catalogue, Trace } from '../core/index.js';
+import { FORMATS, UsageError, describeOption, flagOf, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
 import { GCODE_USAGE, gcodeCommand, gcodeHelp, readSource } from './gcode.js';
-
-const FORMATS = ['json', 'csv', 'table'] as const;
-type Format = (typeof FORMATS)[number];
-
-/** A command-line mistake: reported in one line plus usage, exit code 2. */
-export class UsageError extends Error {}
-
-export function flagOf(option: string): string {
-  return '--' + option.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase());
-}
-
-function optionOf(flag: string): string {
-  return flag.replace(/^--/, '').replace(/-([a-z])/g, (_, c: string) => c.toUpperCase());
-}
-
-/** `--name value`, `--name=value` and bare `--help`, in order. */
-export function parseFlags(args: string[]): Map<string, string> {
-  const flags = new Map<string, string>();
-  for (let i = 0; i < args.length; i++) {
-    const arg = args[i]!;
-    if (!arg.startsWith('--') || arg === '--') throw new UsageError(`unexpected argument '${arg}'`);
-    const eq = arg.indexOf('=');
-    const name = eq < 0 ? arg : arg.slice(0, eq);
-    if (flags.has(name)) throw new UsageError(`${name} is given twice`);
-    if (name === '--help') {
-      flags.set(name, '');
-    } else if (eq >= 0) {
-      flags.set(name, arg.slice(eq + 1));
-    } else {
-      const value = args[i + 1];
-      if (value === undefined || (value.startsWith('--') && !/^--?\d/.test(value))) {
-        throw new UsageError(`${name} needs a value`);
-      }
-      flags.set(name, value);
-      i++;
-    }
-  }
-  return flags;
-}
-
-/** A flag's text as the option's value, checked against its declared kind. */
-function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
-  const number = (part: string) => {
-    const v = Number(part);
-    if (part.trim() === '' || !Number.isFinite(v)) throw new UsageError(`${flag}: '${part}' is not a number`);
-    return v;
-  };
-  switch (spec.kind.type) {
-    case 'point':
-      return text.split(',').map(number);
-    case 'number':
-    case 'integer':
-      return number(text);
-    case 'choice':
-      if (!spec.kind.values.includes(text)) {
-        throw new UsageError(`${flag}: expected one of ${spec.kind.values.join(', ')}, got '${text}'`);
-      }
-      return text;
-    case 'boolean':
-      if (text !== 'true' && text !== 'false') throw new UsageError(`${flag}: expected true or false, got '${text}'`);
-      return text === 'true';
-  }
-}
-
-function describeOption(spec: OptionSpec): string {
-  const kind = spec.kind;
-  const value =
-    kind.type === 'point'
-      ? 'X,Y[,Z...]'
-      : kind.type === 'choice'
-        ? kind.values.join('|')
-        : kind.type === 'boolean'
-          ? 'true|false'
-          : 'N';
-  const flag = `${flagOf(spec.name)} ${value}`;
-  const extra = spec.required ? ' (required)' : spec.default !== null ? ` (default ${spec.default})` : '';
-  return `    ${flag.padEnd(30)} ${spec.doc}${extra}`;
-}
 
 function shortUsage(): string {
   return [
@@ -118,12 +40,7 @@ function shortUsage(): string {
   ].join('\n');
 }
 
-interface Catalogues {
-  algorithms: AlgorithmInfo[];
-  experiments: ExperimentInfo[];
-}
-
-function fullUsage({ algorithms: catalogue, experiments: experimentList }: Catalogues): string {
+function fullUsage({ algorithms: catalogue, experiments: experimentList, gcodeSettings }: Catalogue): string {
   const lines = [
     shortUsage(),
     '',
@@ -158,9 +75,7 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList }: Catal
     lines.push('', `  ${a.id}: ${a.title}`, `    ${a.citation}`);
     for (const o of a.options) lines.push(describeOption(o));
   }
-  // The line algorithms a program may use are those arc-segments may step chords with.
-  const chordLines = catalogue.find((a) => a.id === 'arc-segments')?.options.find((o) => o.name === 'lineAlgorithm')?.kind;
-  lines.push('', 'gcode:', gcodeHelp(chordLines?.type === 'choice' ? chordLines.values : []));
+  lines.push('', 'gcode:', gcodeHelp(gcodeSettings));
   lines.push('', 'experiments (any option of --algorithm, except --from and --to, applies to every line):');
   for (const e of experimentList) {
     lines.push('', `  ${e.id}: ${e.title}`, `    ${e.citation}`);
@@ -179,29 +94,6 @@ function pickAlgorithm(flags: Map<string, string>, catalogue: AlgorithmInfo[], f
   return info;
 }
 
-export function pickFormat(flags: Map<string, string>): Format {
-  const format = (flags.get('--format') ?? 'json') as Format;
-  if (!FORMATS.includes(format)) throw new UsageError(`--format: expected json, csv or table, got '${format}'`);
-  return format;
-}
-
-/** Options from flags, each checked against its spec; the `own` flags are the command's, not options. */
-function optionsFromFlags(
-  flags: Map<string, string>,
-  specs: OptionSpec[],
-  what: string,
-  own: readonly string[] = ['--algorithm', '--format'],
-): Record<string, unknown> {
-  const options: Record<string, unknown> = {};
-  for (const [flag, text] of flags) {
-    if (own.includes(flag)) continue;
-    const spec = specs.find((o) => o.name === optionOf(flag));
-    if (!spec) throw new UsageError(`unknown flag ${flag} for ${what} (it takes ${specs.map((o) => flagOf(o.name)).join(', ')})`);
-    options[spec.name] = optionValue(spec, flag, text);
-  }
-  return options;
-}
-
 /** JSON text of a trace and its line end, in pieces. */
 function* traceJsonLine(result: Trace): Generator<string> {
   yield* traceJsonChunks(result);
@@ -209,9 +101,9 @@ function* traceJsonLine(result: Trace): Generator<string> {
 }
 
 /** Traces and writes the trace as it is read, a chunk of rows at a time, so any trace the API accepts prints. */
-async function runTrace(flags: Map<string, string>, catalogues: Catalogues): Promise<void> {
+async function runTrace(flags: Map<string, string>, catalogues: Catalogue): Promise<void> {
   const info = pickAlgorithm(flags, catalogues.algorithms);
-  const format = pickFormat(flags);
+  const format = pickFormat(flags, FORMATS);
   const options = optionsFromFlags(flags, info.options, info.id);
   const result = await trace({ ...options, algorithm: info.id } as Parameters<typeof trace>[0]);
   try {
@@ -235,9 +127,9 @@ function pickPair(flags: Map<string, string>, catalogue: AlgorithmInfo[]): [Algo
   return [find(ids[0]!), find(ids[1]!)];
 }
 
-async function runCompare(flags: Map<string, string>, catalogues: Catalogues): Promise<string> {
+async function runCompare(flags: Map<string, string>, catalogues: Catalogue): Promise<string> {
   const [a, b] = pickPair(flags, catalogues.algorithms);
-  const format = pickFormat(flags);
+  const format = pickFormat(flags, FORMATS);
   // The union of both option lists; an option both take is parsed once.
   const specs = [...a.options, ...b.options.filter((o) => !a.options.some((p) => p.name === o.name))];
   const options = optionsFromFlags(flags, specs, `compare ${a.id},${b.id}`, ['--algorithms', '--format']);
@@ -247,7 +139,7 @@ async function runCompare(flags: Map<string, string>, catalogues: Catalogues): P
   return JSON.stringify(result) + '\n';
 }
 
-async function runExperiment(args: string[], catalogues: Catalogues): Promise<string> {
+async function runExperiment(args: string[], catalogues: Catalogue): Promise<string> {
   const [id, ...rest] = args;
   const experiment = catalogues.experiments.find((e) => e.id === id);
   if (!experiment) {
@@ -255,7 +147,7 @@ async function runExperiment(args: string[], catalogues: Catalogues): Promise<st
   }
   const flags = parseFlags(rest);
   const info = pickAlgorithm(flags, catalogues.algorithms, 'regions');
-  const format = pickFormat(flags);
+  const format = pickFormat(flags, FORMATS);
   const specs = [...experiment.options, ...info.options.filter((o) => o.name !== 'from' && o.name !== 'to')];
   const options = optionsFromFlags(flags, specs, `${experiment.id} with ${info.id}`);
   const result = await randomLines({ ...options, algorithm: info.id });
@@ -267,7 +159,7 @@ async function runExperiment(args: string[], catalogues: Catalogues): Promise<st
 const CHECK_USAGE = 'voxpath check --algorithm ID --from X,Y,Z --to X,Y,Z [options] FILE|- [--format table|json]';
 
 /** `check`: exit 0 when the points follow the rule, 1 with the difference, 2 for bad input. */
-async function runCheck(args: string[], catalogues: Catalogues): Promise<{ stdout: string; code: number }> {
+async function runCheck(args: string[], catalogues: Catalogue): Promise<{ stdout: string; code: number }> {
   const file = args.at(-1);
   if (file === undefined || (file.startsWith('--') && file !== '-') || args.length % 2 === 0) {
     throw new UsageError('check needs a FILE (or - for standard input) after its flags');
@@ -310,7 +202,7 @@ export async function main(args: string[]): Promise<number> {
   if (!process.stdout.listeners('error').includes(ignoreClosedPipe)) process.stdout.on('error', ignoreClosedPipe);
   const [command, ...rest] = args;
   try {
-    const catalogues = { algorithms: await algorithms(), experiments: await experiments() };
+    const catalogues = await coreCatalogue();
     if (command === undefined || command === '--help' || command === 'help' || rest.includes('--help')) {
       await write(fullUsage(catalogues));
       return command === undefined ? 2 : 0;
@@ -330,7 +222,7 @@ export async function main(args: string[]): Promise<number> {
       await write(result.stdout);
       return result.code;
     } else if (command === 'gcode') {
-      const result = await gcodeCommand(rest);
+      const result = await gcodeCommand(rest, catalogues.gcodeSettings);
       await write(result.stdout);
       process.stderr.write(result.stderr);
       return result.code;

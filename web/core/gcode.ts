@@ -18,141 +18,27 @@ import { callCore } from './errors.js';
 import { encodeRequest } from './request.js';
 import { Trace } from './trace.js';
 import { loadCore } from './wasm.js';
-import type { GcodeResult } from './pkg/voxpath.js';
+import type { GcodeResult, GcodeSettings, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
 
-/** How the program is run. Give stepsPerMm, or stepAngle, microsteps and pitch. */
-export interface GcodeSettings {
-  /** Steps per mm: one number for every axis or [x, y, z]. */
-  stepsPerMm?: number | number[];
-  /** Motor step angle θ in degrees (one or [x, y, z]); steps/mm = (360 / θ · microsteps) / pitch (Wang 3.3). */
-  stepAngle?: number | number[];
-  /** Microsteps per full step (one or [x, y, z]). */
-  microsteps?: number | number[];
-  /** Lead-screw pitch, mm per turn (one or [x, y, z]). */
-  pitch?: number | number[];
-  /** A 3-axis line algorithm id (default 'regions'); also steps the chords of arc-segments. */
-  lineAlgorithm?: string;
-  /** 'circle' (Saleem, default) or 'arc-segments' (chords); helical arcs use helix by the matching method. */
-  arcAlgorithm?: 'circle' | 'arc-segments';
-  /** Refuse programs longer than this many steps (default 50,000,000). */
-  maxSteps?: number;
-  /** Acceleration, mm/s²: one number or [x, y, z] (Grbl $120-$122; default 10). */
-  acceleration?: number | number[];
-  /** Top rate, mm/min: one number or [x, y, z]; also G0's rate (Grbl $110-$112; default 500). */
-  maxRate?: number | number[];
-  /** Junction deviation δ, mm (Grbl $11; default 0.01): corner speed² = a·δ·s/(1−s), s = sin(θ/2). */
-  junctionDeviation?: number;
-  /** Fastest step rate the drivers take, steps/s (one or [x, y, z]): a move needing more is a warning. */
-  maxStepRate?: number | number[];
-}
+/**
+ * The settings (GcodeSettings: one field per setting of the catalogue's
+ * gcodeSettings, which documents each), the program's record and its parts
+ * are the core's Rust types (rust/src/gcode/program.rs), re-exported under
+ * the API's names.
+ */
+export type {
+  ArcInfo as GcodeArc,
+  Diagnostic as GcodeDiagnostic,
+  GcodeSettings,
+  Move as GcodeMove,
+  ProgramInfo as GcodeProgramInfo,
+  Progress as GcodeProgress,
+  Timing as GcodeTiming,
+} from './pkg/voxpath.js';
 
-/** A warning or an error at a 1-based line and column of the program. */
-export interface GcodeDiagnostic {
-  line: number;
-  column: number;
-  message: string;
-}
-
-/** An arc as programmed (mm) and as stepped (steps). */
-export interface GcodeArc {
-  plane: 'xy' | 'zx' | 'yz';
-  /** cw = G2, ccw = G3, seen from the positive end of the plane's normal axis. */
-  direction: 'cw' | 'ccw';
-  /** How the centre was given: I J K, or R. */
-  format: 'ijk' | 'r';
-  centerMm: number[];
-  radiusMm: number;
-  /** Signed (< 0 clockwise), extra turns included. */
-  sweepDeg: number;
-  /** Full turns added by P (P - 1). */
-  extraTurns: number;
-  /** The grid centre the arc was stepped around; null when it was stepped as a straight line. */
-  centerSteps: number[] | null;
-}
-
-/** One move of the program. Step indices index program.trace. */
-export interface GcodeMove {
-  /** 1-based source line and column of its motion code (or first axis word). */
-  line: number;
-  column: number;
-  code: 'G0' | 'G1' | 'G2' | 'G3';
-  kind: 'rapid' | 'line' | 'arc' | 'helix';
-  /** Machine coordinates (G92 applied), mm. */
-  fromMm: number[];
-  toMm: number[];
-  /** The same in steps: toSteps is round(toMm × steps/mm), halves away from zero. */
-  fromSteps: number[];
-  toSteps: number[];
-  /** The feed in force, mm/min (kept, not used for timing); null for rapids or when unset. */
-  feedMmPerMin: number | null;
-  /** Step index of the move's first step and its number of steps. */
-  firstStep: number;
-  steps: number;
-  /** Its segments among trace.segments (one per chord for arc-segments). */
-  firstSegment: number;
-  segments: number;
-  /** The catalogue algorithm that stepped it. */
-  algorithm: string;
-  arc: GcodeArc | null;
-  /** What the move is, in a sentence (its segments' notes start with it). */
-  note: string;
-  /** When it runs on the planned profile; speeds in mm/s (cruiseSpeed: the highest planned in the move). */
-  timing: GcodeTiming;
-}
-
-/** A move's place in time, seconds from the program's start, speeds in mm/s. */
-export interface GcodeTiming {
-  startSeconds: number;
-  endSeconds: number;
-  entrySpeed: number;
-  cruiseSpeed: number;
-  exitSpeed: number;
-}
-
-/** How far a run has got; passed to onProgress after every slice. */
-export interface GcodeProgress {
-  linesDone: number;
-  lines: number;
-  moves: number;
-  steps: number;
-  done: boolean;
-}
-
-/** The program's record, as the core reports it. */
-export interface GcodeProgramInfo {
-  lines: number;
-  steps: number;
-  stepsPerMm: number[];
-  lineAlgorithm: string;
-  arcAlgorithm: string;
-  moves: GcodeMove[];
-  /** How long the program takes on the planned profile, seconds. */
-  durationSeconds: number;
-  /** Pulses per axis (x, y, z) over the whole program. */
-  pulses: number[];
-  warnings: GcodeDiagnostic[];
-  /** Warnings past the first 1000, counted only. */
-  warningsOmitted: number;
-  /** Execution stops at the first error; later lines are still checked for syntax. */
-  errors: GcodeDiagnostic[];
-  /** The line of the first error (every line before it ran), or null. */
-  stoppedAtLine: number | null;
-}
-
-/** A program that has run: its moves and its trace. */
-export class GcodeProgram implements GcodeProgramInfo {
-  readonly lines: number;
-  readonly steps: number;
-  readonly stepsPerMm: number[];
-  readonly lineAlgorithm: string;
-  readonly arcAlgorithm: string;
-  readonly moves: GcodeMove[];
-  readonly durationSeconds: number;
-  readonly pulses: number[];
-  readonly warnings: GcodeDiagnostic[];
-  readonly warningsOmitted: number;
-  readonly errors: GcodeDiagnostic[];
-  readonly stoppedAtLine: number | null;
+/** A program that has run: its record's fields (the core's ProgramInfo), its moves and its trace. */
+export interface GcodeProgram extends Readonly<ProgramInfo> {}
+export class GcodeProgram {
   /** Every step of every move, in order (dims 3: x, y, z in steps). */
   readonly trace: Trace;
   #moveByLine?: Map<number, number>;
@@ -160,21 +46,10 @@ export class GcodeProgram implements GcodeProgramInfo {
   readonly #vcd: () => Uint8Array;
 
   /** `result` is the core's record of the run (its plan); `vcd` writes the run's VCD. */
-  constructor(info: GcodeProgramInfo, trace: Trace, result: GcodeResult, vcd: () => Uint8Array) {
+  constructor(info: ProgramInfo, trace: Trace, result: GcodeResult, vcd: () => Uint8Array) {
     this.#result = result;
     this.#vcd = vcd;
-    this.lines = info.lines;
-    this.steps = info.steps;
-    this.stepsPerMm = info.stepsPerMm;
-    this.lineAlgorithm = info.lineAlgorithm;
-    this.arcAlgorithm = info.arcAlgorithm;
-    this.moves = info.moves;
-    this.durationSeconds = info.durationSeconds;
-    this.pulses = info.pulses;
-    this.warnings = info.warnings;
-    this.warningsOmitted = info.warningsOmitted;
-    this.errors = info.errors;
-    this.stoppedAtLine = info.stoppedAtLine;
+    Object.assign(this, info);
     this.trace = trace;
   }
 
@@ -215,7 +90,7 @@ export class GcodeProgram implements GcodeProgramInfo {
   }
 
   /** The move programmed on a 1-based source line, if that line moved. */
-  moveAtLine(line: number): GcodeMove | undefined {
+  moveAtLine(line: number): ProgramInfo['moves'][number] | undefined {
     this.#moveByLine ??= new Map(this.moves.map((m, i) => [m.line, i]));
     const i = this.#moveByLine.get(line);
     return i === undefined ? undefined : this.moves[i];
@@ -292,7 +167,7 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
     for (;;) {
       options.signal?.throwIfAborted();
       const started = performance.now();
-      const progress = JSON.parse(run.advance(lines)) as GcodeProgress;
+      const progress = run.advance(lines);
       const elapsed = performance.now() - started;
       options.onProgress?.(progress);
       if (progress.done) break;
@@ -303,7 +178,7 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
     finished = true;
     const result = run.finish();
     try {
-      const info = JSON.parse(result.programJson()) as GcodeProgramInfo;
+      const info = result.program();
       const handle = callCore(() => result.takeTrace());
       return new GcodeProgram(info, new Trace(handle), result, () => core.gcodeVcd(handle, result));
     } catch (error) {

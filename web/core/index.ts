@@ -21,6 +21,7 @@
  *   p.trace;           // a Trace of every step
  */
 export { trace, algorithms, Trace } from './trace.js';
+export { catalogue } from './catalogue.js';
 export { AXIS_NAMES } from './axes.js';
 export { VoxpathError } from './errors.js';
 export { memoryBytes } from './wasm.js';
@@ -33,7 +34,7 @@ export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgr
 export { pulseTrains } from './pulses.js';
 export type { PulseTrain } from './pulses.js';
 export { experiments, randomLines } from './experiment.js';
-export type { ErrorStats, ExperimentInfo, MeasureSummary, RandomLinesOptions, RandomLinesResult, Spread } from './experiment.js';
+export type { ErrorStats, ExperimentInfo, LineResult, MeasureSummary, RandomLinesOptions, RandomLinesResult, Spread } from './experiment.js';
 export {
   checkToTable,
   comparisonToCsv,

@@ -8,16 +8,8 @@ import type { Comparison } from './compare.js';
 import { callCore } from './errors.js';
 import type { TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
-import type {
-  AlgorithmInfo,
-  ColumnSpec,
-  DeviationBound,
-  DecisionColumns,
-  Metrics,
-  SegmentInfo,
-  TraceOptions,
-  TraceSummary,
-} from './types.js';
+import { catalogue } from './catalogue.js';
+import type { AlgorithmInfo, DecisionColumns, TraceOptions, TraceSummary } from './types.js';
 import { loadCore } from './wasm.js';
 
 /**
@@ -56,17 +48,14 @@ function checkRange(what: string, from: number, to: number, length: number): voi
   }
 }
 
-/** A finished trace. Point index k runs 0..=steps, step index k runs 0..steps-1. */
-export class Trace implements TraceSummary {
-  readonly algorithm: string;
-  readonly dims: number;
-  readonly steps: number;
-  readonly start: number[];
-  readonly end: number[];
-  readonly columns: ColumnSpec[];
-  readonly metrics: Metrics;
-  readonly deviationBound: DeviationBound | null;
-  readonly segments: SegmentInfo[];
+/**
+ * A finished trace: its summary's fields (the core's TraceSummary, declared
+ * once in Rust) and the per-step arrays, read on demand. Point index k runs
+ * 0..=steps, step index k runs 0..steps-1.
+ */
+// The class takes the summary's fields from the interface of the same name.
+export interface Trace extends Readonly<TraceSummary> {}
+export class Trace {
   readonly #handle: TraceHandle;
   #points?: Int32Array;
   #decisions?: DecisionColumns;
@@ -75,16 +64,7 @@ export class Trace implements TraceSummary {
 
   constructor(handle: TraceHandle) {
     this.#handle = handle;
-    const s = JSON.parse(handle.summaryJson()) as TraceSummary;
-    this.algorithm = s.algorithm;
-    this.dims = s.dims;
-    this.steps = s.steps;
-    this.start = s.start;
-    this.end = s.end;
-    this.columns = s.columns;
-    this.metrics = s.metrics;
-    this.deviationBound = s.deviationBound;
-    this.segments = s.segments;
+    Object.assign(this, handle.summary());
   }
 
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
@@ -191,7 +171,7 @@ export class Trace implements TraceSummary {
    * `compare()` returns for two algorithms, for traces already computed.
    */
   compareWith(other: Trace): Comparison {
-    return JSON.parse(callCore(() => this.#handle.compareJson(other.#handle))) as Comparison;
+    return callCore(() => this.#handle.compareWith(other.#handle));
   }
 
   /**
@@ -221,11 +201,7 @@ export async function trace(options: TraceOptions): Promise<Trace> {
   return new Trace(callCore(() => core.trace(request)));
 }
 
-let catalogue: AlgorithmInfo[] | undefined;
-
 /** Every algorithm voxpath runs, with citation, teaching text, columns and options. */
 export async function algorithms(): Promise<AlgorithmInfo[]> {
-  const core = await loadCore();
-  catalogue ??= JSON.parse(core.catalogueJson()) as AlgorithmInfo[];
-  return catalogue;
+  return (await catalogue()).algorithms;
 }

@@ -1,8 +1,9 @@
 /**
  * The algorithm's options as form fields, generated from the catalogue's
  * OptionSpecs (as the CLI generates its flags), so a new algorithm's options
- * appear without code here. A point is one integer field per axis; a choice
- * is a select; a number is a number field.
+ * or machine settings appear without code here. A point is one integer field
+ * per axis; a choice is a select; a number is a number field; a per-axis
+ * setting is one text field taking one number for every axis or x,y,z.
  *
  * The form only reads what was typed. Whether a value is acceptable is the
  * core's call: its errors come back naming the option and are shown beside
@@ -29,6 +30,18 @@ export function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Pa
   const e = Object.assign(document.createElement(tag), props);
   e.append(...children);
   return e;
+}
+
+/**
+ * A per-axis setting as typed: one number, or one per axis separated by
+ * commas; undefined when empty (the core's default applies), null when it is
+ * not numbers. How many axes, and whether they are whole, is the core's call.
+ */
+export function readPerAxis(text: string): number | number[] | undefined | null {
+  if (text.trim() === '') return undefined;
+  const values = text.split(',').map((part) => (part.trim() === '' ? NaN : Number(part)));
+  if (values.some((v) => !Number.isFinite(v))) return null;
+  return values.length === 1 ? values[0]! : values;
 }
 
 export class OptionsForm {
@@ -111,6 +124,17 @@ export class OptionsForm {
         });
         return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
       }
+      case 'perAxis': {
+        const input = control(element('input', { type: 'text', inputMode: 'decimal' }), id);
+        input.value = Array.isArray(value) ? value.join(',') : typeof value === 'number' ? String(value) : '';
+        input.placeholder = spec.default ?? '';
+        input.addEventListener('input', () => {
+          const read = readPerAxis(input.value);
+          this.#setLocalError(spec.name, field, read === null ? 'give one number, or x,y,z' : undefined);
+          if (read !== null) this.#onChange(spec.name, read);
+        });
+        return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
+      }
       case 'boolean': {
         const box = control(element('input', { type: 'checkbox' }), id);
         box.checked = typeof value === 'boolean' ? value : spec.default === 'true';
@@ -147,7 +171,7 @@ export class OptionsForm {
       const value = values[name];
       field.controls.forEach((c, i) => {
         if (c === document.activeElement) return;
-        const text = Array.isArray(value) ? String(value[i] ?? '') : value === undefined ? field.absent : String(value);
+        const text = Array.isArray(value) ? (field.controls.length === 1 ? value.join(',') : String(value[i] ?? '')) : value === undefined ? field.absent : String(value);
         if (c instanceof HTMLInputElement && c.type === 'checkbox') c.checked = value === true;
         else if (c.value !== text) c.value = text;
       });

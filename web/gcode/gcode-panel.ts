@@ -144,7 +144,7 @@ export class GcodePanel {
     elements.run.addEventListener('click', events.onRun);
     elements.cancel.addEventListener('click', events.onCancel);
 
-    this.#machineForm = new OptionsForm(elements.machine, elements.formError, machineSpecs(catalogue.algorithms), 3, store.state.machine, (name, value) => {
+    this.#machineForm = new OptionsForm(elements.machine, elements.formError, machineSpecs(catalogue), 3, store.state.machine, (name, value) => {
       const machine = { ...store.state.machine };
       if (value === undefined) delete machine[name];
       else machine[name] = value;
@@ -285,8 +285,8 @@ export class GcodePanel {
       go.addEventListener('click', () => this.#goToLine(d.line));
       return element('li', { className: kind }, element('span', { textContent: `${kind} ` }), go, ` ${d.message}`);
     };
-    list.append(...program.errors.map((d) => item('error', d)), ...program.warnings.map((d) => item('warning', d)));
-    if (program.warningsOmitted > 0) list.append(element('li', { textContent: `and ${program.warningsOmitted} more warnings` }));
+    list.append(...program.program.errors.map((d) => item('error', d)), ...program.program.warnings.map((d) => item('warning', d)));
+    if (program.program.warningsOmitted > 0) list.append(element('li', { textContent: `and ${program.program.warningsOmitted} more warnings` }));
     return list;
   }
 
@@ -311,7 +311,7 @@ export class GcodePanel {
     const request = ++this.#stepRequest;
     if (!program || program.steps === 0) return;
     const { moveIndex, line } = await program.moveOfStep(Math.max(0, Math.min(pointIndex, program.steps) - 1));
-    const from = Math.max(0, Math.min(moveIndex - (MOVES_SHOWN >> 1), program.moveCount - MOVES_SHOWN));
+    const from = Math.max(0, Math.min(moveIndex - (MOVES_SHOWN >> 1), program.program.moveCount - MOVES_SHOWN));
     const moves = await program.moves(from, from + MOVES_SHOWN);
     if (request !== this.#stepRequest || program !== this.#program) return;
     this.#currentLine = line;
@@ -344,7 +344,7 @@ export class GcodePanel {
       if (from + i === current) row.setAttribute('aria-current', 'step');
       return row;
     });
-    const table = element('table', { className: 'moves-table' }, element('caption', { textContent: `Moves ${from + 1}-${from + moves.length} of ${program.moveCount}` }), element('thead', {}, header), element('tbody', {}, ...rows));
+    const table = element('table', { className: 'moves-table' }, element('caption', { textContent: `Moves ${from + 1}-${from + moves.length} of ${program.program.moveCount}` }), element('thead', {}, header), element('tbody', {}, ...rows));
     table.dataset.testid = 'moves-table';
     this.#e.moves.replaceChildren(this.#diagnostics(program), table);
   }

@@ -6,13 +6,10 @@
  * URL and localStorage.
  */
 import type { ExperimentInfo } from '../core/experiment.js';
-import type { AlgorithmInfo, OptionSpec, TraceOptions } from '../core/types.js';
+import type { AlgorithmInfo, Catalogue, OptionSpec, TraceOptions } from '../core/types.js';
 
-/** What the core offers: its algorithms and its experiments. */
-export interface Catalogue {
-  algorithms: AlgorithmInfo[];
-  experiments: ExperimentInfo[];
-}
+/** What the core offers: its algorithms, its experiments and the G-code machine's settings. */
+export type { Catalogue };
 
 /** An option's value: a point as integers per axis, a choice as its word, a number, a yes/no. */
 export type OptionValue = number[] | number | string | boolean;
@@ -183,21 +180,13 @@ export function defaultOptions(infos: readonly AlgorithmInfo[]): Record<string, 
 export const DEFAULT_MACHINE: Readonly<Record<string, OptionValue>> = { stepsPerMm: 80, lineAlgorithm: 'regions', arcAlgorithm: 'circle' };
 
 /**
- * The machine's settings as form fields (GcodeSettings of the core). Give
- * steps/mm, or leave it empty and give the step angle, microsteps and pitch
- * (Wang section 3.3); the core names a setting it cannot use.
+ * The machine's settings as form fields: the core's catalogue of G-code
+ * settings (GcodeSettings), less those the page sets itself. Give steps/mm,
+ * or leave it empty and give the step angle, microsteps and pitch (Wang
+ * section 3.3); the core names a setting it cannot use.
  */
-export function machineSpecs(algorithms: readonly AlgorithmInfo[]): OptionSpec[] {
-  const lineAlgorithms = algorithms.filter((a) => a.family === 'line' && a.minDims <= 3 && a.maxDims >= 3).map((a) => a.id);
-  const number = (name: string, doc: string): OptionSpec => ({ name, kind: { type: 'number' }, required: false, default: null, doc });
-  return [
-    number('stepsPerMm', 'Steps per mm, every axis. Leave empty to use the motor below.'),
-    number('stepAngle', 'Motor step angle θ, degrees (1.8 for 200 steps per turn).'),
-    { name: 'microsteps', kind: { type: 'integer' }, required: false, default: null, doc: 'Microsteps per full step (s).' },
-    number('pitch', 'Lead-screw pitch P, mm per turn: steps/mm = (360 / θ · s) / P (Wang 3.3).'),
-    { name: 'lineAlgorithm', kind: { type: 'choice', values: lineAlgorithms }, required: false, default: 'regions', doc: 'Steps G0/G1 moves and the chords of arc-segments.' },
-    { name: 'arcAlgorithm', kind: { type: 'choice', values: ['circle', 'arc-segments'] }, required: false, default: 'circle', doc: "G2/G3: Saleem's circle, or chords (helices follow in the matching mode)." },
-  ];
+export function machineSpecs(catalogue: Catalogue): OptionSpec[] {
+  return catalogue.gcodeSettings.filter((spec) => !(spec.name in PAGE_OPTIONS));
 }
 
 /** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */

@@ -67,6 +67,11 @@ function parseOption(spec: OptionSpec, text: string): OptionValue | undefined {
     case 'number':
     case 'integer':
       return numberOf(text);
+    case 'perAxis': {
+      const values = text.split(',').map(numberOf);
+      if (values.some((v) => v === undefined)) return undefined;
+      return values.length === 1 ? values[0]! : (values as number[]);
+    }
     case 'boolean':
       return text === 'true' ? true : text === 'false' ? false : undefined;
   }
@@ -170,7 +175,7 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   state.options = readOptions(params, sharedOptionSpecs(infos), defaultOptions(infos));
   // A link that names any drive setting names all it uses: a cleared steps/mm (to use the motor's) stays cleared.
   if (DRIVE_KEYS.some((k) => params.has(k))) delete state.machine.stepsPerMm;
-  state.machine = readOptions(params, machineSpecs(algorithms), state.machine);
+  state.machine = readOptions(params, machineSpecs(catalogue), state.machine);
   const experiment = randomLinesExperiment(catalogue);
   if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment);
   state.gcode = params.get('gcode') ?? state.gcode;

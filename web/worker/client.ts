@@ -7,13 +7,14 @@
  * every pending request is rejected with CoreCrash, the listener is told, and
  * the next request starts a fresh worker: the page stays usable.
  */
-import type { GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ColumnSpec, DecisionColumns, DeviationBound, Metrics, TraceOptions } from '../core/types.js';
+import type { GcodeMove, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { DecisionColumns, TraceOptions } from '../core/types.js';
 import type {
   ChartSeries,
   InputError,
   LineSteps,
   PathSummary,
+  ProgramRecord,
   ReplyMessage,
   ReplyValue,
   RequestKind,
@@ -187,18 +188,13 @@ export class TraceClient {
 }
 
 /**
- * A trace held by the worker. Point index k runs 0..=steps, step index k runs
- * 0..steps-1 (step k moves point k to point k + 1), as in the core's Trace.
+ * A trace held by the worker: its summary's fields (the core's, less the
+ * segments) and the arrays every view needs. Point index k runs 0..=steps,
+ * step index k runs 0..steps-1 (step k moves point k to point k + 1), as in
+ * the core's Trace.
  */
-export class RemoteTrace implements PathSummary {
-  readonly algorithm: string;
-  readonly dims: number;
-  readonly steps: number;
-  readonly start: number[];
-  readonly end: number[];
-  readonly columns: ColumnSpec[];
-  readonly metrics: Metrics;
-  readonly deviationBound: DeviationBound | null;
+export interface RemoteTrace extends Readonly<PathSummary> {}
+export class RemoteTrace {
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
   readonly points: Int32Array;
   /** The ideal path as the core draws it, flat with stride dims, grid units. */
@@ -219,14 +215,7 @@ export class RemoteTrace implements PathSummary {
     this.#client = client;
     this.traceId = traceId;
     this.#generation = generation;
-    this.algorithm = summary.algorithm;
-    this.dims = summary.dims;
-    this.steps = summary.steps;
-    this.start = summary.start;
-    this.end = summary.end;
-    this.columns = summary.columns;
-    this.metrics = summary.metrics;
-    this.deviationBound = summary.deviationBound;
+    Object.assign(this, summary);
     this.points = points;
     this.idealPolyline = idealPolyline;
   }
@@ -290,27 +279,12 @@ export class RemoteTrace implements PathSummary {
 
 /** A G-code program the worker ran and holds: its trace, plus the program's record and line <-> step lookups. */
 export class RemoteProgram extends RemoteTrace {
-  /** Lines of the source. */
-  readonly lines: number;
-  readonly stepsPerMm: number[];
-  readonly moveCount: number;
-  /** Pulses per axis (x, y, z) over the whole program. */
-  readonly pulsesByAxis: number[];
-  readonly warnings: GcodeDiagnostic[];
-  readonly warningsOmitted: number;
-  readonly errors: GcodeDiagnostic[];
-  readonly stoppedAtLine: number | null;
+  /** The program's record as the core reports it (lines, warnings, errors, duration...), less its moves. */
+  readonly program: ProgramRecord;
 
   constructor(client: TraceClient, traceId: number, generation: number, run: RunProgram) {
     super(client, traceId, generation, run.summary, run.points, run.idealPolyline);
-    this.lines = run.lines;
-    this.stepsPerMm = run.stepsPerMm;
-    this.moveCount = run.moveCount;
-    this.pulsesByAxis = run.pulses;
-    this.warnings = run.warnings;
-    this.warningsOmitted = run.warningsOmitted;
-    this.errors = run.errors;
-    this.stoppedAtLine = run.stoppedAtLine;
+    this.program = run.program;
   }
 
   /** Moves fromMove..toMove of the program, in step order. */

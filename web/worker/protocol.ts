@@ -14,8 +14,8 @@
  * - deviation: Float64Array, one entry per point index of the range;
  * - series: see ChartSeries; cells: Int32Array, stride dims.
  */
-import type { ExperimentInfo, FirstDifference, GcodeDiagnostic, GcodeMove, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { AlgorithmInfo, DecisionColumns, TraceOptions, TraceSummary } from '../core/types.js';
+import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { Catalogue, DecisionColumns, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -83,16 +83,15 @@ export interface TraceDifference {
   onlyInB: Int32Array;
 }
 
-/** A G-code run as the page receives it: the trace's arrays and the program's record without its move list. */
+/**
+ * The program's record as the page receives it: the core's, without its
+ * move list (which the page asks for by range), and with the number of moves.
+ */
+export type ProgramRecord = Omit<GcodeProgramInfo, 'moves'> & { moveCount: number };
+
+/** A G-code run as the page receives it: the trace's arrays and the program's record. */
 export interface RunProgram extends TracedPath {
-  lines: number;
-  stepsPerMm: number[];
-  moveCount: number;
-  pulses: number[];
-  warnings: GcodeDiagnostic[];
-  warningsOmitted: number;
-  errors: GcodeDiagnostic[];
-  stoppedAtLine: number | null;
+  program: ProgramRecord;
 }
 
 /** Step indices a source line produced (its move), and where the machine is when the line starts. */
@@ -107,7 +106,7 @@ export interface LineSteps {
 
 /** The value a successful reply carries, by request kind. */
 export interface ReplyValue {
-  catalogue: { algorithms: AlgorithmInfo[]; experiments: ExperimentInfo[] };
+  catalogue: Catalogue;
   trace: TracedPath;
   gcode: RunProgram;
   decisions: DecisionColumns;

@@ -6,8 +6,7 @@
  */
 import {
   GcodeProgram,
-  algorithms,
-  experiments,
+  catalogue,
   pulseTrains,
   randomLines,
   runGcode,
@@ -49,8 +48,9 @@ function tracedPath(t: Trace): TracedPath {
   // detached here, and the cache would then hand out an empty array.
   const points = t.pointsInRange(0, t.steps + 1);
   const idealPolyline = t.idealPolyline();
-  const { algorithm, dims, steps, start, end, columns, metrics, deviationBound } = t;
-  return { summary: { algorithm, dims, steps, start, end, columns, metrics, deviationBound }, points, idealPolyline };
+  // The summary's own fields, as the core declared them, less the segments.
+  const { segments: _segments, ...summary } = t;
+  return { summary, points, idealPolyline };
 }
 
 /** The note of the segment that takes step index `stepIndex` (the first segment's before any step). */
@@ -70,7 +70,7 @@ function segmentNote(t: Trace, stepIndex: number): string {
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {
   switch (request.kind) {
     case 'catalogue':
-      return { value: { algorithms: await algorithms(), experiments: await experiments() }, transfer: [] };
+      return { value: await catalogue(), transfer: [] };
     case 'trace': {
       const t = await trace(request.options);
       traces.set(request.traceId, t);
@@ -88,9 +88,10 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         traces.set(request.traceId, program.trace);
         programs.set(request.traceId, program);
         const path = tracedPath(program.trace);
-        const { lines, stepsPerMm, pulses, warnings, warningsOmitted, errors, stoppedAtLine } = program;
+        // The record's own fields, as the core declared them, less the moves (asked for by range).
+        const { moves, trace: _trace, ...record } = program;
         return {
-          value: { ...path, lines, stepsPerMm, moveCount: program.moves.length, pulses, warnings, warningsOmitted, errors, stoppedAtLine },
+          value: { ...path, program: { ...record, moveCount: moves.length } },
           transfer: [path.points.buffer, path.idealPolyline.buffer],
         };
       } finally {

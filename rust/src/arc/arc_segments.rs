@@ -24,7 +24,7 @@
 
 use super::curve::{HelixPath, degrees, sin_cos_turns};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
-use crate::algorithms::{self, AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
 use crate::grid::Point;
 use crate::ideal::IdealPath;
@@ -128,10 +128,10 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: None,
-    trace: |req| {
+    trace: |req, find| {
         req.check_options(INFO.options)?;
         let spec = ArcSpec::parse(req, false)?;
-        trace_chords(ID, req, &spec, false)
+        trace_chords(ID, req, &spec, false, find)
     },
 };
 
@@ -266,16 +266,18 @@ pub fn vertices(spec: &ArcSpec, n: u64) -> Vec<Vertex> {
 }
 
 /// Traces the arc (or helix) of `spec` as chords stepped by the request's
-/// line algorithm. `helical`: measure against the helix rather than the arc.
+/// line algorithm, which `find` looks up in the catalogue. `helical`:
+/// measure against the helix rather than the arc.
 pub fn trace_chords(
     id: &str,
     req: &Request,
     spec: &ArcSpec,
     helical: bool,
+    find: Find,
 ) -> Result<Trace, Error> {
     let chording = Chording::parse(req)?;
     let line = req.choice(&LINE_ALGORITHM)?.unwrap_or(LINE_ALGORITHMS[0]);
-    let line_info = algorithms::find(line)?;
+    let line_info = find(line)?;
     let tie = req.choice(&LINE_TIE)?;
     let counted = chording.chords(spec.radius(), spec.sweep_rad())?;
     // A full circle (ending where it starts, at its own height) in fewer
@@ -328,7 +330,7 @@ pub fn trace_chords(
         if let Some(tie) = tie {
             options.insert("tie".into(), Value::from(tie));
         }
-        let part = (line_info.trace)(&Request::new(line, options)).map_err(|e| {
+        let part = (line_info.trace)(&Request::new(line, options), find).map_err(|e| {
             if e.field_name() == Some("maxSteps") {
                 builder.too_long(builder.max_steps() + 1)
             } else {
@@ -386,6 +388,7 @@ pub fn trace_chords(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algorithms;
     use crate::arc::curve::atan3;
     use std::f64::consts::{PI, TAU};
 

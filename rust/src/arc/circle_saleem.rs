@@ -23,7 +23,7 @@
 
 use super::planes::{Frame, OCTANTS, OctantRule, Orientation, in_octant, octant_ahead};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, norm_sq};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
 use crate::ideal::{IdealPath, within_i64_product_bound};
@@ -61,7 +61,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     trace: trace_circle,
 };
 
-fn trace_circle(req: &Request) -> Result<Trace, Error> {
+fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
     let spec = ArcSpec::parse(req, false)?;
     let mut builder = TraceBuilder::for_request(spec.from, req)?;
@@ -72,13 +72,13 @@ fn trace_circle(req: &Request) -> Result<Trace, Error> {
 
 pub const OCTANT: Column = Column {
     name: "octant",
-    kind: ColumnKind::Category(&OCTANT_LABELS),
+    kind: ColumnKind::Category { labels: &OCTANT_LABELS },
     doc: "Octant 1-8 the step travels through, counted counter-clockwise from the plane's first axis, seen from the positive end of its normal (Saleem Figure 1); a point on a boundary belongs to the octant ahead.",
 };
 
 pub const FAST: Column = Column {
     name: "fast",
-    kind: ColumnKind::Category(&["x", "y", "z"]),
+    kind: ColumnKind::Category { labels: &["x", "y", "z"] },
     doc: "The axis that steps every time in this octant; empty for correction steps.",
 };
 
@@ -108,7 +108,7 @@ pub const CORRECTION: Column = Column {
 
 pub const OTHER_CANDIDATE: Column = Column {
     name: "other_candidate",
-    kind: ColumnKind::Category(SIGNED_AXIS_LABELS),
+    kind: ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
     doc: "The candidate the step did not take, as a direction from the point the step reached: one cell along the slow axis that way (-x: the cell toward -x). The two candidates differ only on the slow axis, so the reached point and this cell are the pair eq. (7) compared: the reached point is the stay candidate when slow_steps is 0 and the move candidate when it is 1. (In a helix the cell is at the reached point's height on the linear axis; u² + v² - r² does not depend on it.) Empty for correction steps.",
 };
 

@@ -29,7 +29,7 @@ use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chord
 use super::circle_saleem::{CIRCLE_COLUMNS, CircleWhy, SaleemCircle};
 use super::curve::HelixPath;
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::ideal::IdealPath;
@@ -99,11 +99,11 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     trace: trace_helix,
 };
 
-fn trace_helix(req: &Request) -> Result<Trace, Error> {
+fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
     let spec = ArcSpec::parse(req, true)?;
     if req.choice(&METHOD)? == Some("segments") {
-        return trace_chords(ID, req, &spec, true);
+        return trace_chords(ID, req, &spec, true, find);
     }
     for option in [SEGMENT_LENGTH.name, TOLERANCE.name] {
         if req.number(option)?.is_some() {
@@ -176,7 +176,7 @@ impl Decision for HelixWhy {
             // algorithms by name.
             Column {
                 name: "helix_major",
-                kind: ColumnKind::Category(MAJOR_LABELS),
+                kind: ColumnKind::Category { labels: MAJOR_LABELS },
                 doc: "Which steps every iteration: the arc (n_c >= n_z) or the linear axis (n_z > n_c) (Saleem section 5).",
             },
             Column {

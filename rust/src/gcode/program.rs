@@ -42,6 +42,7 @@ use crate::planner::{self, Limits, Planner, Timing};
 use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
 use crate::trace::{MAX_STEPS_LIMIT, Trace, TraceBuilder};
 use serde::Serialize;
+use tsify::Tsify;
 use serde_json::{Map, Value};
 use std::f64::consts::TAU;
 
@@ -53,7 +54,7 @@ pub const MAX_WARNINGS: usize = 1000;
 
 pub const STEPS_PER_MM: OptionSpec = OptionSpec {
     name: "stepsPerMm",
-    kind: OptionKind::Number,
+    kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
     doc: "Steps per mm: one number for every axis or [x, y, z]. Or give stepAngle, microsteps and pitch.",
@@ -61,7 +62,7 @@ pub const STEPS_PER_MM: OptionSpec = OptionSpec {
 
 pub const STEP_ANGLE: OptionSpec = OptionSpec {
     name: "stepAngle",
-    kind: OptionKind::Number,
+    kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
     doc: "Motor step angle θ, degrees (one or [x, y, z]): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
@@ -69,10 +70,7 @@ pub const STEP_ANGLE: OptionSpec = OptionSpec {
 
 pub const MICROSTEPS: OptionSpec = OptionSpec {
     name: "microsteps",
-    kind: OptionKind::Integer {
-        min: None,
-        max: None,
-    },
+    kind: OptionKind::PerAxis { integer: true },
     required: false,
     default: None,
     doc: "Microsteps s per full step (one or [x, y, z]).",
@@ -80,10 +78,15 @@ pub const MICROSTEPS: OptionSpec = OptionSpec {
 
 pub const PITCH: OptionSpec = OptionSpec {
     name: "pitch",
-    kind: OptionKind::Number,
+    kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
     doc: "Lead-screw pitch P, mm per turn (one or [x, y, z]): one step is L = P / p_m mm.",
+};
+
+pub const PROGRAM_LINE_ALGORITHM: OptionSpec = OptionSpec {
+    doc: "The line algorithm that steps G0 and G1 moves, and the chords of arc-segments (a catalogue id).",
+    ..LINE_ALGORITHM
 };
 
 pub const ARC_ALGORITHM: OptionSpec = OptionSpec {
@@ -96,20 +99,77 @@ pub const ARC_ALGORITHM: OptionSpec = OptionSpec {
     doc: "How arcs are stepped: circle (Saleem's integer circle) or arc-segments (chords by the line algorithm). Helical arcs run helix by the matching method.",
 };
 
-/// Every setting of a program run.
-pub const SETTINGS: &[OptionSpec] = &[
-    STEPS_PER_MM,
-    STEP_ANGLE,
-    MICROSTEPS,
-    PITCH,
-    LINE_ALGORITHM,
-    ARC_ALGORITHM,
-    MAX_STEPS,
-    planner::ACCELERATION,
-    planner::MAX_RATE,
-    planner::JUNCTION_DEVIATION,
-    planner::MAX_STEP_RATE,
-];
+/// A setting's value as the JS API types it: one number for every axis, or
+/// one per axis (x, y, z).
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
+#[serde(untagged)]
+pub enum PerAxis {
+    All(f64),
+    Each([f64; MACHINE_AXES]),
+}
+
+/// True when two names are the same text (for the compile-time check of
+/// `settings!`).
+const fn same_name(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// Declares the settings of a program run once, one row each: `name: the
+/// type JS gives = its OptionSpec`. A row becomes an optional field of
+/// [`GcodeSettings`] (whose TypeScript twin tsify writes into the wasm
+/// package's .d.ts: the JS API's settings type) and an entry of [`SETTINGS`]
+/// (the catalogue's `gcodeSettings`, from which the CLI's flags, the page's
+/// machine form, its URL keys and their docs are made). The field is named
+/// as the spec, which the compiler checks.
+macro_rules! settings {
+    ($($name:ident: $ty:ty = $spec:expr;)*) => {
+        /// How a G-code program is run, as the JS API takes it. Every field is
+        /// a setting of the catalogue (`catalogue().gcodeSettings`), which
+        /// documents it, with its unit and default.
+        #[derive(Serialize, Tsify, Clone, Debug, Default, PartialEq)]
+        #[allow(non_snake_case)]
+        pub struct GcodeSettings {
+            $(
+                #[tsify(optional)]
+                #[serde(skip_serializing_if = "Option::is_none")]
+                pub $name: Option<$ty>,
+            )*
+        }
+
+        /// Every setting of a program run, in the order forms and help list them.
+        pub const SETTINGS: &[OptionSpec] = &[$($spec),*];
+
+        $(const _: () = assert!(
+            same_name(stringify!($name), $spec.name),
+            concat!("the settings! row ", stringify!($name), " must be named as its spec")
+        );)*
+    };
+}
+
+settings! {
+    stepsPerMm: PerAxis = STEPS_PER_MM;
+    stepAngle: PerAxis = STEP_ANGLE;
+    microsteps: PerAxis = MICROSTEPS;
+    pitch: PerAxis = PITCH;
+    lineAlgorithm: String = PROGRAM_LINE_ALGORITHM;
+    arcAlgorithm: String = ARC_ALGORITHM;
+    maxSteps: u64 = MAX_STEPS;
+    acceleration: PerAxis = planner::ACCELERATION;
+    maxRate: PerAxis = planner::MAX_RATE;
+    junctionDeviation: f64 = planner::JUNCTION_DEVIATION;
+    maxStepRate: PerAxis = planner::MAX_STEP_RATE;
+}
 
 /// How a program is run: the machine and the algorithms.
 #[derive(Clone, Debug)]
@@ -148,7 +208,7 @@ impl Settings {
         Ok(Settings {
             machine,
             limits,
-            line_algorithm: pick(&LINE_ALGORITHM, LINE_ALGORITHMS)?,
+            line_algorithm: pick(&PROGRAM_LINE_ALGORITHM, LINE_ALGORITHMS)?,
             arc_algorithm: pick(&ARC_ALGORITHM, ARC_ALGORITHMS)?,
             max_steps: request.max_steps()?,
         })
@@ -156,7 +216,7 @@ impl Settings {
 }
 
 /// A warning or an error at a place in the program (1-based).
-#[derive(Serialize, Clone, Debug, PartialEq, Eq)]
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq, Eq)]
 pub struct Diagnostic {
     pub line: u32,
     pub column: u32,
@@ -185,7 +245,7 @@ impl Diagnostic {
 }
 
 /// An arc as programmed and as stepped.
-#[derive(Serialize, Clone, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct ArcInfo {
     /// xy (G17), zx (G18) or yz (G19).
@@ -206,7 +266,7 @@ pub struct ArcInfo {
 }
 
 /// One move of the program and the steps it took.
-#[derive(Serialize, Clone, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Move {
     pub line: u32,
@@ -238,7 +298,7 @@ pub struct Move {
 }
 
 /// How far a run has got.
-#[derive(Serialize, Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
 #[serde(rename_all = "camelCase")]
 pub struct Progress {
     pub lines_done: u32,
@@ -249,7 +309,7 @@ pub struct Progress {
 }
 
 /// Everything about a finished run but the trace.
-#[derive(Serialize, Clone, Debug)]
+#[derive(Serialize, Tsify, Clone, Debug)]
 #[serde(rename_all = "camelCase")]
 pub struct ProgramInfo {
     pub lines: u32,
@@ -485,7 +545,7 @@ impl Runner {
             Value::from(self.settings.max_steps - self.steps),
         );
         let info = algorithms::find(&request.algorithm).map_err(place)?;
-        let part = (info.trace)(&request).map_err(place)?;
+        let part = (info.trace)(&request, algorithms::find).map_err(place)?;
         let added = (part.steps(), part.segments().len());
         self.builder
             .append(part, |segment| {

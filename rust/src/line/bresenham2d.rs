@@ -10,7 +10,7 @@
 
 use super::terms::{Term, Terms};
 use super::{Guard, Mirror, step_target};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
@@ -50,7 +50,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: 2,
     default_tie: Some(TiePolicy::Hold),
-    trace: |req| {
+    trace: |req, _| {
         let variant = Variant::from_request(req)?;
         super::trace_line(&INFO, req, |from, to, tie| {
             Bresenham2d::new(from, to, tie, variant)
@@ -204,7 +204,7 @@ impl Decision for Bresenham2dWhy {
         },
         Column {
             name: "octant",
-            kind: ColumnKind::Category(&OCTANT_LABELS),
+            kind: ColumnKind::Category { labels: &OCTANT_LABELS },
             doc: "Octant 1-8 of the move (Saleem Fig. 1), counter-clockwise from +x; 1, 4, 5, 8 are x-major, 2, 3, 6, 7 y-major.",
         },
         Column {

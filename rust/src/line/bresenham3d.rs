@@ -9,7 +9,7 @@
 use super::bresenham2d::{SaleemTerm, SaleemTest};
 use super::terms::Terms;
 use super::{GCD, Mirror, axis_list, step_target};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
@@ -36,7 +36,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: Some(TiePolicy::Hold),
-    trace: |req| {
+    trace: |req, _| {
         let gcd = super::gcd_option(req)?;
         super::trace_line(&INFO, req, |from, to, tie| {
             Bresenham3d::new(from, to, tie, gcd)
@@ -78,7 +78,7 @@ impl Decision for Bresenham3dWhy {
         },
         Column {
             name: "major",
-            kind: ColumnKind::Category(&["x", "y", "z"]),
+            kind: ColumnKind::Category { labels: &["x", "y", "z"] },
             doc: "The major axis, which steps every time.",
         },
         Column {

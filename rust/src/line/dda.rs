@@ -3,7 +3,7 @@
 //! step and round it to the nearest cell.
 
 use super::{GUARD_LABELS, Guard, Mirror, column, step_target};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Stepper};
@@ -26,7 +26,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: MAX_AXES,
     default_tie: None,
-    trace: |req| super::trace_line(&INFO, req, |from, to, _| Dda::new(from, to)),
+    trace: |req, _| super::trace_line(&INFO, req, |from, to, _| Dda::new(from, to)),
 };
 
 /// The decision behind one step.
@@ -74,7 +74,7 @@ impl Decision for DdaWhy {
         ),
         Column {
             name: "guard",
-            kind: ColumnKind::Category(GUARD_LABELS),
+            kind: ColumnKind::Category { labels: GUARD_LABELS },
             doc: "rule: rounding decided every axis; held / forced: the finish rule overrode float drift.",
         },
     ];

@@ -8,7 +8,7 @@
 //! goal, not along the line.
 
 use super::{Mirror, TIE_AXIS, TieAxis, column, step_target};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
@@ -36,7 +36,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: MAX_AXES,
     default_tie: None,
-    trace: |req| {
+    trace: |req, _| {
         let order = TieAxis::from_request(req)?;
         super::trace_line(&INFO, req, |from, to, _| Greedy::new(from, to, order))
     },
@@ -89,7 +89,7 @@ impl Decision for GreedyWhy {
         ),
         Column {
             name: "axis",
-            kind: ColumnKind::Category(&AXIS_NAMES),
+            kind: ColumnKind::Category { labels: &AXIS_NAMES },
             doc: "The axis that moved: the candidate closest to the goal.",
         },
         Column {

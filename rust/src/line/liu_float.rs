@@ -9,7 +9,7 @@
 //! decimals, the slope k itself is rounded and the error accumulates.
 
 use super::{GUARD_LABELS, Guard, Mirror, axis_list, column, step_target, wang_discriminant};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
@@ -57,7 +57,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: Some(TiePolicy::Advance),
-    trace: |req| {
+    trace: |req, _| {
         let decimals = decimals_option(req)?;
         super::trace_line(&INFO, req, |from, to, tie| {
             LiuFloat::new(from, to, tie, decimals)
@@ -128,7 +128,7 @@ impl Decision for LiuWhy {
         column("driftZ", ColumnKind::Float, "epsZ minus its exact value."),
         Column {
             name: "guard",
-            kind: ColumnKind::Category(GUARD_LABELS),
+            kind: ColumnKind::Category { labels: GUARD_LABELS },
             doc: "rule: epsilon decided every axis; held / forced: the finish rule overrode a drifting axis.",
         },
         Column {

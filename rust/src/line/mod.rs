@@ -13,7 +13,7 @@ pub mod regions_wang;
 pub mod terms;
 pub mod walk6;
 
-use crate::algorithms::AlgorithmInfo;
+use crate::algorithm_info::AlgorithmInfo;
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, gcd};
 use crate::ideal::IdealPath;

@@ -5,7 +5,7 @@
 
 use super::terms::{Term, Terms};
 use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
@@ -31,7 +31,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: MAX_AXES,
     default_tie: Some(TiePolicy::Advance),
-    trace: |req| {
+    trace: |req, _| {
         let gcd = super::gcd_option(req)?;
         super::trace_line(&INFO, req, |from, to, tie| Nd::new(from, to, tie, gcd))
     },

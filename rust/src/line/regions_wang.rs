@@ -13,7 +13,7 @@
 
 use super::terms::{Term, Terms};
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
 use crate::request::{FROM, MAX_STEPS, TO, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
@@ -42,7 +42,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: Some(TiePolicy::Advance),
-    trace: |req| {
+    trace: |req, _| {
         let gcd = super::gcd_option(req)?;
         super::trace_line(&INFO, req, |from, to, tie| {
             RegionsWang::with_gcd(from, to, tie, gcd)
@@ -170,12 +170,12 @@ impl Decision for RegionsWhy {
         },
         Column {
             name: "region",
-            kind: ColumnKind::Category(REGION_LABELS),
+            kind: ColumnKind::Category { labels: REGION_LABELS },
             doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, centre o (Wang section 2.5); none on type ② lines, which have no passive axis.",
         },
         Column {
             name: "corner",
-            kind: ColumnKind::Category(CORNER_LABELS),
+            kind: ColumnKind::Category { labels: CORNER_LABELS },
             doc: "The corner the step goes to: A = first passive axis steps, B = neither, C = second, D = both; none on type ② lines.",
         },
         Column {
@@ -195,12 +195,12 @@ impl Decision for RegionsWhy {
         },
         Column {
             name: "face_u_axis",
-            kind: ColumnKind::Category(SIGNED_AXIS_LABELS),
+            kind: ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
             doc: "The grid axis face_u runs along and the way it grows (+y: toward +y, the direction of travel; an axis that does not move counts as +); empty for type ② lines, which run through the corners and cross no face.",
         },
         Column {
             name: "face_v_axis",
-            kind: ColumnKind::Category(SIGNED_AXIS_LABELS),
+            kind: ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
             doc: "The grid axis face_v runs along and the way it grows; empty with fewer than two passive axes.",
         },
     ];

@@ -10,7 +10,7 @@
 //! t_a; two fractions compare exactly by cross-multiplying, in i128.
 
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
-use crate::algorithms::{AlgorithmInfo, Example, Family};
+use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
@@ -34,7 +34,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: MAX_AXES,
     default_tie: None,
-    trace: |req| {
+    trace: |req, _| {
         let order = TieAxis::from_request(req)?;
         super::trace_line(&INFO, req, |from, to, _| Walk6::new(from, to, order))
     },
@@ -78,7 +78,7 @@ impl Decision for Walk6Why {
     const COLUMNS: &'static [Column] = &[
         Column {
             name: "crosses",
-            kind: ColumnKind::Category(&AXIS_NAMES),
+            kind: ColumnKind::Category { labels: &AXIS_NAMES },
             doc: "The axis whose cell face the segment crosses next (the axis that steps).",
         },
         column(

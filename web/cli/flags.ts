@@ -1,0 +1,142 @@
+/**
+ * Command-line flags, shared by every command: read by Node's own
+ * `util.parseArgs`, and checked against the catalogue's OptionSpecs, from
+ * which they are made (an option `maxSteps` is the flag `--max-steps`). A
+ * new option or machine setting declared in the core is a flag here, with
+ * its help line, without code in the CLI.
+ */
+import { parseArgs } from 'node:util';
+import type { OptionSpec } from '../core/index.js';
+
+/** A command-line mistake: reported in one line plus usage, exit code 2. */
+export class UsageError extends Error {}
+
+export const FORMATS = ['json', 'csv', 'table'] as const;
+export type Format = (typeof FORMATS)[number];
+
+/** The flag of an option: maxSteps -> --max-steps. */
+export function flagOf(option: string): string {
+  return '--' + option.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase());
+}
+
+/** A value after its flag, even a negative number (`--from -3,0,0`), which parseArgs alone would take for a flag. */
+function isValue(arg: string | undefined): arg is string {
+  return arg !== undefined && (!arg.startsWith('--') || /^--?\d/.test(arg)) && arg !== '--';
+}
+
+/**
+ * Flags by their `--name`, in order: `--name value`, `--name=value`, and the
+ * `switches` (such as --help), which take no value. Which names a command
+ * takes depends on what it names (`--algorithm` picks the options), so the
+ * names are checked afterwards, against the specs (`optionsFromFlags`).
+ */
+export function parseFlags(args: readonly string[], switches: readonly string[] = []): Map<string, string> {
+  const allSwitches = ['--help', ...switches];
+  // Each value joined to its flag (--name=value), so that parseArgs reads
+  // negative numbers as values and every flag unambiguously.
+  const joined: string[] = [];
+  for (let i = 0; i < args.length; i++) {
+    const arg = args[i]!;
+    if (!arg.startsWith('--') || arg === '--') throw new UsageError(`unexpected argument '${arg}'`);
+    if (arg.includes('=') || allSwitches.includes(arg)) joined.push(arg);
+    else if (isValue(args[i + 1])) joined.push(`${arg}=${args[++i]}`);
+    else throw new UsageError(`${arg} needs a value`);
+  }
+  const options = Object.fromEntries(allSwitches.map((flag) => [flag.slice(2), { type: 'boolean' as const }]));
+  const { tokens } = parseArgs({ args: joined, options, strict: false, tokens: true });
+  const flags = new Map<string, string>();
+  for (const token of tokens) {
+    if (token.kind !== 'option') continue;
+    const flag = token.rawName.split('=')[0]!;
+    if (flags.has(flag)) throw new UsageError(`${flag} is given twice`);
+    const isSwitch = allSwitches.includes(flag);
+    if (isSwitch && token.value !== undefined) throw new UsageError(`${flag} takes no value`);
+    flags.set(flag, token.value ?? '');
+  }
+  return flags;
+}
+
+function numberOf(flag: string, part: string): number {
+  const v = Number(part);
+  if (part.trim() === '' || !Number.isFinite(v)) throw new UsageError(`${flag}: '${part}' is not a number`);
+  return v;
+}
+
+/** A flag's text as the option's value, checked against its declared kind. */
+export function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
+  switch (spec.kind.type) {
+    case 'point':
+      return text.split(',').map((part) => numberOf(flag, part));
+    case 'number':
+    case 'integer':
+      return numberOf(flag, text);
+    case 'perAxis': {
+      const values = text.split(',').map((part) => numberOf(flag, part));
+      if (values.length !== 1 && values.length !== 3) {
+        throw new UsageError(`${flag}: expected one number or three (x,y,z), got ${values.length}`);
+      }
+      return values.length === 1 ? values[0] : values;
+    }
+    case 'choice':
+      if (!spec.kind.values.includes(text)) {
+        throw new UsageError(`${flag}: expected one of ${spec.kind.values.join(', ')}, got '${text}'`);
+      }
+      return text;
+    case 'boolean':
+      if (text !== 'true' && text !== 'false') throw new UsageError(`${flag}: expected true or false, got '${text}'`);
+      return text === 'true';
+  }
+}
+
+/** How the value of a flag is written, in usage lines. */
+export function valueHint(spec: OptionSpec): string {
+  const kind = spec.kind;
+  switch (kind.type) {
+    case 'point':
+      return 'X,Y[,Z...]';
+    case 'choice':
+      return kind.values.join('|');
+    case 'boolean':
+      return 'true|false';
+    case 'perAxis':
+      return 'N[,N,N]';
+    case 'number':
+    case 'integer':
+      return 'N';
+  }
+}
+
+/** One help line: the flag, its value, its doc and its default. */
+export function describeOption(spec: OptionSpec): string {
+  const flag = `${flagOf(spec.name)} ${valueHint(spec)}`;
+  const extra = spec.required ? ' (required)' : spec.default !== null ? ` (default ${spec.default})` : '';
+  return `    ${flag.padEnd(30)} ${spec.doc}${extra}`;
+}
+
+/** The --format of a command, one of `formats` (json when absent). */
+export function pickFormat<F extends string>(flags: Map<string, string>, formats: readonly F[]): F {
+  const text = flags.get('--format') ?? 'json';
+  const format = formats.find((f) => f === text);
+  if (format === undefined) {
+    const listed = `${formats.slice(0, -1).join(', ')} or ${formats.at(-1)}`;
+    throw new UsageError(`--format: expected ${listed}, got '${text}'`);
+  }
+  return format;
+}
+
+/** Options from flags, each checked against its spec; the `own` flags are the command's, not options. */
+export function optionsFromFlags(
+  flags: Map<string, string>,
+  specs: readonly OptionSpec[],
+  what: string,
+  own: readonly string[] = ['--algorithm', '--format'],
+): Record<string, unknown> {
+  const options: Record<string, unknown> = {};
+  for (const [flag, text] of flags) {
+    if (own.includes(flag)) continue;
+    const spec = specs.find((o) => flagOf(o.name) === flag);
+    if (!spec) throw new UsageError(`unknown flag ${flag} for ${what} (it takes ${specs.map((o) => flagOf(o.name)).join(', ')})`);
+    options[spec.name] = optionValue(spec, flag, text);
+  }
+  return options;
+}
