@@ -102,6 +102,12 @@ fn option_value(option: &'static OptionSpec, dims: usize, base: i64) -> BoxedStr
         .boxed(),
         OptionKind::Choice { values } => prop::sample::select(values).prop_map(Value::from).boxed(),
         OptionKind::Boolean => any::<bool>().prop_map(Value::from).boxed(),
+        // A machine setting: one number for every axis, or one per axis.
+        OptionKind::PerAxis { .. } => prop_oneof![
+            (0.001f64..1e3).prop_map(Value::from),
+            prop::collection::vec(0.001f64..1e3, 3).prop_map(Value::from),
+        ]
+        .boxed(),
     };
     prop_oneof![40 => valid, 1 => junk()].boxed()
 }
