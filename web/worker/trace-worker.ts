@@ -11,8 +11,8 @@ import {
   randomLines,
   runGcode,
   trace,
-  traceToCsv,
-  traceToJson,
+  traceCsvChunks,
+  traceJsonChunks,
   VoxpathError,
 } from '../core/index.js';
 import type { Trace } from '../core/index.js';
@@ -139,7 +139,8 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
     }
     case 'export': {
       const t = held(request.traceId);
-      return { value: request.format === 'csv' ? traceToCsv(t) : JSON.stringify(traceToJson(t)), transfer: [] };
+      // The JSON text as the writer makes it: not parsed into an object and written again.
+      return { value: [...(request.format === 'csv' ? traceCsvChunks(t) : traceJsonChunks(t))].join(''), transfer: [] };
     }
     case 'randomLines':
       return { value: await randomLines(request.options), transfer: [] };
