@@ -18,7 +18,8 @@ use std::io::Read;
 use std::time::Instant;
 use voxpath::Request;
 use voxpath::line::regions_wang::RegionsWang;
-use voxpath::trace::{Stepper, TiePolicy};
+use voxpath::request::TiePolicy;
+use voxpath::trace::Stepper;
 
 /// Seconds of the fastest of `repeat` runs of `f`.
 fn best<T>(repeat: u64, mut f: impl FnMut() -> T) -> f64 {

@@ -4,8 +4,8 @@
 //! can import them without a loop.
 
 use crate::error::Error;
-use crate::request::{OptionSpec, Request};
-use crate::trace::{Column, TiePolicy, Trace};
+use crate::request::{OptionSpec, Request, TiePolicy};
+use crate::trace::{Column, Trace};
 use serde::{Serialize, Serializer};
 use tsify::Tsify;
 
@@ -80,4 +80,23 @@ pub struct AlgorithmInfo {
     /// Runs the algorithm on a request whose `algorithm` is this id.
     #[serde(skip)]
     pub trace: fn(&Request, Find) -> Result<Trace, Error>,
+}
+
+impl AlgorithmInfo {
+    /// Runs this algorithm on the request `json`, with `find` for the
+    /// algorithms it steps with: for a unit test in the algorithm's own file,
+    /// which runs it without the catalogue (the catalogue imports the file).
+    #[cfg(test)]
+    pub fn trace_json(&self, json: &str, find: Find) -> Result<Trace, Error> {
+        (self.trace)(&Request::from_json(json)?, find)
+    }
+}
+
+/// A [`Find`] that finds no algorithm: for a test of one that steps alone.
+#[cfg(test)]
+pub fn find_none(id: &str) -> Result<&'static AlgorithmInfo, Error> {
+    Err(Error::field(
+        "algorithm",
+        format!("'{id}' is not run by this test"),
+    ))
 }

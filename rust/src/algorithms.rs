@@ -4,6 +4,8 @@
 
 pub use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
+use crate::request::Request;
+use crate::trace::Trace;
 
 /// Every algorithm, in the order the page lists them.
 pub const ALGORITHMS: &[&AlgorithmInfo] = &[
@@ -36,9 +38,21 @@ pub fn find(id: &str) -> Result<&'static AlgorithmInfo, Error> {
         })
 }
 
+/// Runs the request described by JSON text, e.g.
+/// `{"algorithm": "regions", "from": [0,0,0], "to": [10,7,6]}`.
+pub fn trace_json(request_json: &str) -> Result<Trace, Error> {
+    run(&Request::from_json(request_json)?)
+}
+
+/// Runs a parsed request with the algorithm it names.
+pub fn run(request: &Request) -> Result<Trace, Error> {
+    (find(&request.algorithm)?.trace)(request, find)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::arc::arc_segments::LINE_ALGORITHMS;
 
     #[test]
     fn ids_are_unique_and_every_column_kind_serializes() {
@@ -60,7 +74,7 @@ mod tests {
             let mut request: serde_json::Value = serde_json::from_str(a.example.options).unwrap();
             request["algorithm"] = a.id.into();
             let trace =
-                crate::trace_json(&request.to_string()).unwrap_or_else(|e| panic!("{}: {e}", a.id));
+                trace_json(&request.to_string()).unwrap_or_else(|e| panic!("{}: {e}", a.id));
             assert!(trace.steps() > 0, "{}", a.id);
         }
     }
@@ -72,5 +86,24 @@ mod tests {
             e.starts_with("algorithm: unknown algorithm 'bresenham9d' (known: regions"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn every_listed_line_algorithm_is_a_catalogue_line_and_no_line_is_missing() {
+        for id in LINE_ALGORITHMS {
+            let info = find(id).unwrap();
+            assert!((info.min_dims..=info.max_dims).contains(&3), "{id}");
+        }
+        // Every 3-axis line algorithm of the catalogue can step a chord.
+        for info in ALGORITHMS {
+            let line_like =
+                info.family == Family::Line && (info.min_dims..=info.max_dims).contains(&3);
+            assert_eq!(
+                line_like,
+                LINE_ALGORITHMS.contains(&info.id),
+                "{} should be listed in LINE_ALGORITHMS exactly when it is a 3-axis line algorithm",
+                info.id
+            );
+        }
     }
 }

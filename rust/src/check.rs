@@ -431,7 +431,7 @@ pub struct Check {
 /// Checks text points against the request given as JSON text.
 pub fn check_text(request_json: &str, text: &str) -> Result<Check, Error> {
     let request = Request::from_json(request_json)?;
-    let trace = crate::run(&request)?;
+    let trace = crate::algorithms::run(&request)?;
     let points = Points::from_text(text, trace.dims())?;
     Ok(check_trace(&request, &trace, &points))
 }
@@ -439,7 +439,7 @@ pub fn check_text(request_json: &str, text: &str) -> Result<Check, Error> {
 /// Checks flat points (`dims` per point) against the request as JSON text.
 pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Check, Error> {
     let request = Request::from_json(request_json)?;
-    let trace = crate::run(&request)?;
+    let trace = crate::algorithms::run(&request)?;
     let points = Points::from_flat(values, dims, trace.dims())?;
     Ok(check_trace(&request, &trace, &points))
 }
@@ -748,7 +748,7 @@ mod tests {
 
     fn check(request_json: &str, points: &Points) -> Check {
         let r = request(request_json);
-        let trace = crate::run(&r).unwrap();
+        let trace = crate::algorithms::run(&r).unwrap();
         check_trace(&r, &trace, points)
     }
 
@@ -774,7 +774,7 @@ mod tests {
             let mut json: Value = serde_json::from_str(info.example.options).unwrap();
             json["algorithm"] = info.id.into();
             let r = request(&json.to_string());
-            let trace = crate::run(&r).unwrap();
+            let trace = crate::algorithms::run(&r).unwrap();
             let points = points_of(&trace);
             let result = check_trace(&r, &trace, &points);
             assert!(result.matches, "{}: {:?}", info.id, result.first_difference);
@@ -786,7 +786,7 @@ mod tests {
             );
             for entry in &result.also_matches {
                 let other = entry_request(&r, entry);
-                let trace = crate::run(&other).unwrap();
+                let trace = crate::algorithms::run(&other).unwrap();
                 let again = check_trace(&other, &trace, &points);
                 assert!(again.matches, "{}: {} does not match", info.id, entry.label);
             }
@@ -795,7 +795,7 @@ mod tests {
 
     #[test]
     fn regions_against_bresenham3d_with_tie_hold() {
-        let hold = crate::trace_json(
+        let hold = crate::algorithms::trace_json(
             r#"{"algorithm":"bresenham3d","from":[0,0,0],"to":[10,7,6],"tie":"hold"}"#,
         )
         .unwrap();
@@ -807,8 +807,10 @@ mod tests {
         let d = result.first_difference.unwrap();
         assert_eq!(d.kind, DifferenceKind::Step);
         assert_eq!(d.point_index, 5);
-        let regions =
-            crate::trace_json(r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#).unwrap();
+        let regions = crate::algorithms::trace_json(
+            r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#,
+        )
+        .unwrap();
         assert_eq!(d.why, regions.explain(4));
         assert!(
             d.why.contains("region g") || d.why.contains("segment g"),
@@ -838,7 +840,7 @@ mod tests {
 
     #[test]
     fn the_printed_2d_variant_is_named_with_its_erratum() {
-        let printed = crate::trace_json(
+        let printed = crate::algorithms::trace_json(
             r#"{"algorithm":"bresenham2d","from":[0,0],"to":[10,3],"variant":"printed"}"#,
         )
         .unwrap();
@@ -862,15 +864,15 @@ mod tests {
     #[test]
     fn a_trace_following_other_steps_stops_where_they_part() {
         let json = r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#;
-        let own = points_of(&crate::trace_json(json).unwrap()).steps();
+        let own = points_of(&crate::algorithms::trace_json(json).unwrap()).steps();
         let r = request(json);
-        let again = crate::run(&r.clone().following(own.clone())).unwrap();
+        let again = crate::algorithms::run(&r.clone().following(own.clone())).unwrap();
         assert_eq!(again.steps(), own.len() as u64);
-        let hold = crate::trace_json(
+        let hold = crate::algorithms::trace_json(
             r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6],"tie":"hold"}"#,
         )
         .unwrap();
-        let Err(e) = crate::run(&r.following(points_of(&hold).steps())) else {
+        let Err(e) = crate::algorithms::run(&r.following(points_of(&hold).steps())) else {
             panic!("a trace that parts from the steps it follows stops")
         };
         assert_eq!(e.field_name(), Some("follow"));
@@ -883,7 +885,7 @@ mod tests {
     #[test]
     fn truncated_and_extended_paths_are_caught() {
         let json = r#"{"algorithm":"regions","from":[0,0,0],"to":[10,7,6]}"#;
-        let trace = crate::trace_json(json).unwrap();
+        let trace = crate::algorithms::trace_json(json).unwrap();
         let full = points_of(&trace);
         let mut short = full.clone();
         short.coords.truncate(8 * 3);
@@ -921,7 +923,7 @@ mod tests {
             algorithm in proptest::sample::select(vec!["regions", "bresenham3d", "nd", "dda", "greedy", "walk6"]),
         ) {
             let json = format!(r#"{{"algorithm":"{algorithm}","from":[0,0,0],"to":{to:?}}}"#);
-            let trace = crate::trace_json(&json).unwrap();
+            let trace = crate::algorithms::trace_json(&json).unwrap();
             prop_assume!(trace.steps() > 0);
             let mut points = points_of(&trace);
             let k = ((at * trace.steps() as f64) as u64).min(trace.steps());

@@ -339,7 +339,7 @@ mod tests {
     use super::*;
 
     fn trace(json: &str) -> Trace {
-        crate::trace_json(json).unwrap()
+        crate::algorithms::trace_json(json).unwrap()
     }
 
     #[test]
@@ -441,7 +441,7 @@ mod tests {
     #[test]
     fn differing_axis_counts_are_refused() {
         let a = trace(r#"{"algorithm":"regions","from":[0,0,0],"to":[1,1,1]}"#);
-        let b = crate::TraceBuilder::new(crate::Point::origin(2), 10).finish("empty");
+        let b = crate::trace::TraceBuilder::new(crate::grid::Point::origin(2), 10).finish("empty");
         assert_eq!(
             compare(&a, &b).unwrap_err().to_string(),
             "b: has 2 axes but a has 3"
@@ -576,7 +576,7 @@ mod request_tests {
             "x and y are active; M = -5 < 0, so the line leaves the cell through region b, and the step goes to B (x-1, y+1, z)."
         );
         // The same segmentLength given to circle alone would be refused.
-        let alone = crate::trace_json(
+        let alone = crate::algorithms::trace_json(
             r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0,0],"segmentLength":100}"#,
         );
         assert_eq!(alone.err().unwrap().field_name(), Some("segmentLength"));

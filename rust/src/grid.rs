@@ -4,6 +4,7 @@
 //! Inputs are limited to |coordinate| <= 2^30 so that every difference fits in
 //! 32 bits and every product of two differences fits in i64 (2^31 * 2^31 = 2^62).
 
+use crate::error::Error;
 use std::fmt;
 
 /// Most axes a path may have: X Y Z A B C.
@@ -32,6 +33,20 @@ pub fn signed_axis(axis: usize, dir: i64) -> u8 {
 
 /// Largest accepted |coordinate| of an input point, in grid units.
 pub const COORD_LIMIT: i64 = 1 << 30;
+
+/// Largest magnitude (exclusive) of the integers whose products the fast
+/// paths form in i64: two factors below 2^31 multiply to below 2^62, so a
+/// sum or difference of two such products stays below 2^63. Inputs within
+/// +-2^30 differ by at most 2^31, so only a move spanning the whole range on
+/// an axis (or a point outside the input box) reaches the i128 fallback.
+pub const I64_PRODUCT_BOUND: u64 = 1 << 31;
+
+/// True when every value is below [`I64_PRODUCT_BOUND`] in magnitude (an OR
+/// of the magnitudes has the highest bit of the largest: one test, no branch
+/// per value).
+pub fn within_i64_product_bound(values: &[i64]) -> bool {
+    values.iter().fold(0, |bits, v| bits | v.unsigned_abs()) < I64_PRODUCT_BOUND
+}
 
 /// A grid point with 1 to [`MAX_AXES`] integer coordinates.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
@@ -63,9 +78,9 @@ impl Point {
 
     /// Validates user input: 2..=MAX_AXES integers within +-COORD_LIMIT.
     /// `field` names the input in the error (for example "from").
-    pub fn parse(field: &str, values: &[f64]) -> Result<Point, crate::Error> {
+    pub fn parse(field: &str, values: &[f64]) -> Result<Point, Error> {
         if !(2..=MAX_AXES).contains(&values.len()) {
-            return Err(crate::Error::field(
+            return Err(Error::field(
                 field,
                 format!("expected 2 to {MAX_AXES} coordinates, got {}", values.len()),
             ));
@@ -74,14 +89,14 @@ impl Point {
         for (axis, &v) in values.iter().enumerate() {
             let name = AXIS_NAMES[axis];
             if !v.is_finite() || v.fract() != 0.0 {
-                return Err(crate::Error::field(
+                return Err(Error::field(
                     field,
                     format!("{name} must be an integer number of grid units, got {v}"),
                 )
                 .on_axis(axis));
             }
             if v.abs() > COORD_LIMIT as f64 {
-                return Err(crate::Error::field(
+                return Err(Error::field(
                     field,
                     format!("{name} = {v} is outside +-2^30 ({COORD_LIMIT})"),
                 )

@@ -30,18 +30,11 @@ pub mod request;
 pub mod trace;
 pub mod wasm;
 
+// The crate's API for other crates (rust/tests, examples): the modules
+// themselves import from the file that declares each item, never through
+// these, so that the crate root sits above every file in the import graph.
+pub use algorithms::{run, trace_json};
 pub use error::Error;
 pub use grid::{Point, Step};
 pub use request::Request;
 pub use trace::{Trace, TraceBuilder};
-
-/// Runs the request described by JSON text, e.g.
-/// `{"algorithm": "regions", "from": [0,0,0], "to": [10,7,6]}`.
-pub fn trace_json(request_json: &str) -> Result<Trace, Error> {
-    run(&Request::from_json(request_json)?)
-}
-
-/// Runs a parsed request with the algorithm it names.
-pub fn run(request: &Request) -> Result<Trace, Error> {
-    (algorithms::find(&request.algorithm)?.trace)(request, algorithms::find)
-}

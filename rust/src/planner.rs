@@ -42,8 +42,8 @@
 //! t = 2s / (v0 + √(v0² + 2as)) (the same root as (−v0 + √(v0² + 2as)) / a,
 //! written without the cancellation at small a·s).
 
+use crate::arc::angle::sin_cos_turns;
 use crate::arc::arc_segments::Chording;
-use crate::arc::curve::sin_cos_turns;
 use crate::error::Error;
 use crate::machine::MACHINE_AXES;
 use crate::request::{OptionKind, OptionSpec};

@@ -4,11 +4,48 @@
 
 use crate::error::Error;
 use crate::grid::{Point, Step};
-use crate::trace::{DEFAULT_MAX_STEPS, MAX_STEPS_LIMIT, TiePolicy};
 use serde::Serialize;
-use tsify::Tsify;
 use serde_json::{Map, Value};
 use std::sync::Arc;
+use tsify::Tsify;
+
+/// Default limit on the length of one trace, in steps.
+pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
+
+/// Hard limit on `maxSteps`: 2 bytes per step must fit in wasm32 memory.
+pub const MAX_STEPS_LIMIT: u64 = 1_000_000_000;
+
+/// What a decision does when its discriminant is exactly zero, i.e. when the
+/// ideal path passes exactly half way between the two candidate cells.
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum TiePolicy {
+    /// Step the axis (Liu's Table 1 and Wang's worked example: M >= 0 steps).
+    Advance,
+    /// Do not step the axis (Saleem's `error > delta`: strictly greater steps).
+    Hold,
+}
+
+impl TiePolicy {
+    pub fn label(self) -> &'static str {
+        match self {
+            TiePolicy::Advance => "advance",
+            TiePolicy::Hold => "hold",
+        }
+    }
+
+    /// Parses the `tie` option.
+    pub fn parse(value: &str) -> Result<TiePolicy, Error> {
+        match value {
+            "advance" => Ok(TiePolicy::Advance),
+            "hold" => Ok(TiePolicy::Hold),
+            other => Err(Error::field(
+                "tie",
+                format!("expected 'advance' or 'hold', got '{other}'"),
+            )),
+        }
+    }
+}
 
 /// The type of an option's value.
 #[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]

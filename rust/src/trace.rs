@@ -14,9 +14,10 @@
 
 use crate::error::Error;
 use crate::grid::{MAX_AXES, Point, Step, displacement};
-use crate::ideal::{IdealPath, IdealPathInfo, Meter};
+use crate::ideal::info::IdealPathInfo;
+use crate::ideal::{IdealPath, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
-use crate::request::Request;
+use crate::request::{MAX_STEPS_LIMIT, Request};
 use serde::Serialize;
 use std::cell::OnceCell;
 use std::sync::Arc;
@@ -24,44 +25,6 @@ use tsify::Tsify;
 
 /// Steps between two stored positions / stepper states.
 pub const CHECKPOINT_INTERVAL: u64 = 4096;
-
-/// Default limit on the length of one trace, in steps.
-pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
-
-/// Hard limit on `maxSteps`: 2 bytes per step must fit in wasm32 memory.
-pub const MAX_STEPS_LIMIT: u64 = 1_000_000_000;
-
-/// What a decision does when its discriminant is exactly zero, i.e. when the
-/// ideal path passes exactly half way between the two candidate cells.
-#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
-#[serde(rename_all = "lowercase")]
-pub enum TiePolicy {
-    /// Step the axis (Liu's Table 1 and Wang's worked example: M >= 0 steps).
-    Advance,
-    /// Do not step the axis (Saleem's `error > delta`: strictly greater steps).
-    Hold,
-}
-
-impl TiePolicy {
-    pub fn label(self) -> &'static str {
-        match self {
-            TiePolicy::Advance => "advance",
-            TiePolicy::Hold => "hold",
-        }
-    }
-
-    /// Parses the `tie` option.
-    pub fn parse(value: &str) -> Result<TiePolicy, Error> {
-        match value {
-            "advance" => Ok(TiePolicy::Advance),
-            "hold" => Ok(TiePolicy::Hold),
-            other => Err(Error::field(
-                "tie",
-                format!("expected 'advance' or 'hold', got '{other}'"),
-            )),
-        }
-    }
-}
 
 /// The value a category or flag column holds at a step it does not apply to
 /// (a correction step has no fast axis, a line step of a G-code program no

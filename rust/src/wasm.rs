@@ -56,7 +56,7 @@ fn to_js_error(error: &Error) -> JsValue {
 /// Runs one trace. `request_json` is `{"algorithm": id, ...options}`.
 #[wasm_bindgen]
 pub fn trace(request_json: &str) -> Result<TraceHandle, JsValue> {
-    crate::trace_json(request_json)
+    crate::algorithms::trace_json(request_json)
         .map(TraceHandle)
         .map_err(|e| to_js_error(&e))
 }
@@ -71,7 +71,7 @@ pub fn catalogue() -> JsValue {
 /// Runs the `random-lines` experiment.
 #[wasm_bindgen(js_name = randomLines, unchecked_return_type = "RandomLines")]
 pub fn random_lines(request_json: &str) -> Result<JsValue, JsValue> {
-    let result = crate::Request::from_json(request_json)
+    let result = crate::request::Request::from_json(request_json)
         .and_then(|r| crate::experiment::random_lines(&r))
         .map_err(|e| to_js_error(&e))?;
     Ok(to_js(&result))

@@ -25,8 +25,10 @@ use voxpath::arc::ArcSpec;
 use voxpath::arc::circle_saleem::SaleemCircle;
 use voxpath::arc::helix::SaleemHelix;
 use voxpath::grid::{COORD_LIMIT, Point, SIGNED_AXIS_LABELS};
-use voxpath::ideal::{IdealPath, IdealPathInfo};
-use voxpath::trace::{DEFAULT_MAX_STEPS, NO_VALUE, TiePolicy};
+use voxpath::ideal::IdealPath;
+use voxpath::ideal::info::IdealPathInfo;
+use voxpath::request::{DEFAULT_MAX_STEPS, TiePolicy};
+use voxpath::trace::NO_VALUE;
 use voxpath::{Request, Trace, TraceBuilder};
 
 const PLANES: [(&str, [usize; 3]); 3] = [("xy", [0, 1, 2]), ("zx", [2, 0, 1]), ("yz", [1, 2, 0])];

@@ -134,7 +134,7 @@ fn a_helix_replays_its_arc_and_linear_decisions() {
         .counted(&TraceBuilder::new(spec.from, 1 << 20))
         .unwrap();
     let mut helix =
-        voxpath::arc::helix::SaleemHelix::new(&spec, circle, voxpath::trace::TiePolicy::Hold);
+        voxpath::arc::helix::SaleemHelix::new(&spec, circle, voxpath::request::TiePolicy::Hold);
     let mut p = spec.from;
     for k in 0..4100 {
         let (step, why) = helix.next_step().unwrap();

@@ -16,7 +16,8 @@ use voxpath::line::nd::Nd;
 use voxpath::line::regions_wang::{Corner, Region, RegionsWang};
 use voxpath::line::walk6::Walk6;
 use voxpath::line::{Guard, TieAxis};
-use voxpath::trace::{Decision, Stepper, TiePolicy};
+use voxpath::request::TiePolicy;
+use voxpath::trace::{Decision, Stepper};
 
 const SQRT1_2: f64 = std::f64::consts::FRAC_1_SQRT_2;
 

@@ -18,7 +18,8 @@ use voxpath::line::liu_float::LiuFloat;
 use voxpath::line::nd::Nd;
 use voxpath::line::regions_wang::RegionsWang;
 use voxpath::line::walk6::{Crossing, Walk6};
-use voxpath::trace::{Stepper, TiePolicy};
+use voxpath::request::TiePolicy;
+use voxpath::trace::Stepper;
 
 /// Algorithms that move one axis per step (sum |Δ| steps); the others step
 /// every active axis every time (max |Δ| steps).

@@ -8,7 +8,8 @@ use proptest::prelude::*;
 use voxpath::grid::{COORD_LIMIT, Point, SIGNED_AXIS_LABELS};
 use voxpath::ideal::IdealPath;
 use voxpath::line::regions_wang::{Region, RegionsWang};
-use voxpath::trace::{Stepper, TiePolicy};
+use voxpath::request::TiePolicy;
+use voxpath::trace::Stepper;
 
 /// Wang's bound (section 3.2): the chosen corner is at most sqrt(2)/2 from
 /// the ideal line, as the line crosses the exit plane within 1/2 of it along

@@ -15,7 +15,8 @@ use voxpath::line::liu_float::LiuFloat;
 use voxpath::line::nd::Nd;
 use voxpath::line::regions_wang::RegionsWang;
 use voxpath::line::walk6::Walk6;
-use voxpath::trace::{CHECKPOINT_INTERVAL, ColumnKind, Decision, NO_VALUE, Stepper, TiePolicy};
+use voxpath::request::TiePolicy;
+use voxpath::trace::{CHECKPOINT_INTERVAL, ColumnKind, Decision, NO_VALUE, Stepper};
 
 struct DirectRun {
     points: Vec<Point>,

@@ -22,12 +22,13 @@
 //! line algorithm stays within its own bound of the rounded chord (sqrt(2)/2
 //! for regions). So every point is within s + sqrt(2)/2 + sqrt(2)/2 of the arc.
 
-use super::curve::{HelixPath, degrees, sin_cos_turns};
+use super::angle::{degrees, sin_cos_turns};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
 use crate::grid::Point;
 use crate::ideal::IdealPath;
+use crate::ideal::curve::HelixPath;
 use crate::line::Mirror;
 use crate::line::regions_wang::RegionsWhy;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
@@ -385,11 +386,22 @@ pub fn trace_chords(
     Ok(builder.finish(id))
 }
 
+/// The [`Find`] of the unit tests here and in `helix`: the chords' default
+/// line algorithm and no other (the catalogue, which imports this file, is
+/// not theirs to import).
+#[cfg(test)]
+pub(crate) fn find_regions(id: &str) -> Result<&'static AlgorithmInfo, Error> {
+    match id {
+        "regions" => Ok(&crate::line::regions_wang::INFO),
+        _ => crate::algorithm_info::find_none(id),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algorithms;
-    use crate::arc::curve::atan3;
+    use crate::algorithm_info::find_none;
+    use crate::arc::angle::atan3;
     use std::f64::consts::{PI, TAU};
 
     fn spec(json: &str) -> ArcSpec {
@@ -526,19 +538,25 @@ mod tests {
 
     #[test]
     fn each_chord_is_the_line_algorithm_s_own_trace() {
-        let t = crate::trace_json(
-            r#"{"algorithm":"arc-segments","from":[10,0,0],"to":[0,10,0],"center":[0,0,0],"segmentLength":5}"#,
-        )
-        .unwrap();
+        let t = INFO
+            .trace_json(
+                r#"{"algorithm":"arc-segments","from":[10,0,0],"to":[0,10,0],"center":[0,0,0],"segmentLength":5}"#,
+                find_regions,
+            )
+            .unwrap();
         let ends = [[10, 0, 0], [9, 5, 0], [5, 9, 0], [0, 10, 0]];
         assert_eq!(t.segments().len(), 3);
         for (k, segment) in t.segments().iter().enumerate() {
-            let line = crate::trace_json(&format!(
-                r#"{{"algorithm":"regions","from":{:?},"to":{:?}}}"#,
-                ends[k],
-                ends[k + 1]
-            ))
-            .unwrap();
+            let line = crate::line::regions_wang::INFO
+                .trace_json(
+                    &format!(
+                        r#"{{"algorithm":"regions","from":{:?},"to":{:?}}}"#,
+                        ends[k],
+                        ends[k + 1]
+                    ),
+                    find_none,
+                )
+                .unwrap();
             let first = segment.first_step;
             assert_eq!(
                 t.step_range(first, first + segment.steps),
@@ -567,68 +585,5 @@ mod tests {
             note.contains("Chord 1 of 3: (10, 0, 0) -> (9, 5, 0), the arc from 0.0° to 30.0°"),
             "{note}"
         );
-    }
-
-    /// A full circle whose rule counts 1 chord (floor(2π 10 / 1000) = 0,
-    /// at least 1) is a triangle of chords around the centre, ending on the
-    /// start: near the origin, touching 2^30 - 1 and -(2^30 - 1), drawn by
-    /// arc-segments and by helix's method segments alike.
-    #[test]
-    fn a_full_circle_takes_at_least_three_chords() {
-        let edge = (1i64 << 30) - 1;
-        for (from, center) in [
-            ([10, 0, 0], [0, 0, 0]),
-            ([edge, edge - 10, 5], [edge - 10, edge - 10, 5]),
-            ([-edge, -edge + 10, -edge], [-edge + 10, -edge + 10, -edge]),
-        ] {
-            for algorithm in [r#""arc-segments""#, r#""helix","method":"segments""#] {
-                let t = crate::trace_json(&format!(
-                    r#"{{"algorithm":{algorithm},"from":{from:?},"to":{from:?},"center":{center:?},"segmentLength":1000}}"#
-                ))
-                .unwrap();
-                assert_eq!(
-                    t.segments().len(),
-                    MIN_FULL_CIRCLE_CHORDS as usize,
-                    "{algorithm} {from:?}"
-                );
-                assert_eq!(t.end(), Point::new(&from));
-                // Three chords of a circle of radius 10 (each 17.3 long, the
-                // longest axis at least 10 after rounding) take at least 30 steps.
-                assert!(t.steps() >= 30, "{algorithm} {from:?}: {} steps", t.steps());
-                let note = &t.segments()[0].setup_note;
-                assert!(
-                    note.contains(
-                        "gives 1 chord, raised to 3, the fewest that go around a full circle"
-                    ),
-                    "{note}"
-                );
-                // Every point is within the chord bound of the circle.
-                let bound = 10.0 * (1.0 - (PI / 3.0).cos()) + 2f64.sqrt();
-                assert!(
-                    t.metrics().max_deviation <= bound,
-                    "{}",
-                    t.metrics().max_deviation
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn every_listed_line_algorithm_is_a_catalogue_line_and_no_line_is_missing() {
-        for id in LINE_ALGORITHMS {
-            let info = algorithms::find(id).unwrap();
-            assert!((info.min_dims..=info.max_dims).contains(&3), "{id}");
-        }
-        // Every 3-axis line algorithm of the catalogue can step a chord.
-        for info in algorithms::ALGORITHMS {
-            let line_like =
-                info.family == Family::Line && (info.min_dims..=info.max_dims).contains(&3);
-            assert_eq!(
-                line_like,
-                LINE_ALGORITHMS.contains(&info.id),
-                "{} should be listed in LINE_ALGORITHMS exactly when it is a 3-axis line algorithm",
-                info.id
-            );
-        }
     }
 }

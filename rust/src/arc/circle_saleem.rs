@@ -25,8 +25,11 @@ use super::planes::{Frame, OCTANTS, OctantRule, Orientation, in_octant, octant_a
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, norm_sq};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
-use crate::ideal::{IdealPath, within_i64_product_bound};
+use crate::grid::{
+    AXIS_NAMES, OCTANT_LABELS, Point, SIGNED_AXIS_LABELS, Step, signed_axis,
+    within_i64_product_bound,
+};
+use crate::ideal::IdealPath;
 use crate::line::step_target;
 use crate::request::{FROM, MAX_STEPS, Request, TO};
 use crate::trace::{
@@ -633,7 +636,7 @@ fn slow_steps(residual_stay: i64, residual_move: i64) -> bool {
     residual_move.abs() < residual_stay.abs()
 }
 
-/// True when both local coordinates are below [`I64_PRODUCT_BOUND`](crate::ideal::I64_PRODUCT_BOUND), so
+/// True when both local coordinates are below [`I64_PRODUCT_BOUND`](crate::grid::I64_PRODUCT_BOUND), so
 /// squares and cross products of such points are exact in i64. Every point
 /// the circle visits or tests is: it stays within a few units of the circle
 /// (or, correcting, between the circle and an end at most one unit off it),
@@ -737,9 +740,10 @@ impl Stepper for SaleemCircle {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algorithm_info::find_none;
 
     fn trace(json: &str) -> Trace {
-        crate::trace_json(json).unwrap()
+        INFO.trace_json(json, find_none).unwrap()
     }
 
     #[test]
@@ -943,10 +947,14 @@ mod tests {
         // r = 2^20: a full circle is about 5.9 million steps; with maxSteps
         // 1000 the dry run stops after 1001 and nothing is recorded.
         let r = 1 << 20;
-        let e = crate::trace_json(&format!(
-            r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0],"maxSteps":1000}}"#
-        ))
-        .err()
+        let e = INFO
+            .trace_json(
+                &format!(
+                    r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0],"maxSteps":1000}}"#
+                ),
+                find_none,
+            )
+            .err()
         .unwrap();
         assert_eq!(e.field_name(), Some("maxSteps"));
         assert!(e.to_string().contains("at least 1001"), "{e}");

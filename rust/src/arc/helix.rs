@@ -27,17 +27,17 @@
 
 use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
 use super::circle_saleem::{CIRCLE_COLUMNS, CircleWhy, SaleemCircle};
-use super::curve::HelixPath;
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::ideal::IdealPath;
+use crate::ideal::curve::HelixPath;
 use crate::line::step_target;
 use crate::line::terms::Term;
-use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy};
 use crate::trace::{
-    Column, ColumnKind, Decision, Filled, Stepper, TiePolicy, Trace, TraceBuilder, concat_columns,
+    Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, concat_columns,
 };
 use std::fmt::Write;
 
@@ -471,7 +471,9 @@ fn weave(circle: &mut SaleemCircle, out: &mut [Step], mut weave: impl FnMut() ->
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::arc::arc_segments::{self, find_regions};
     use crate::grid::SIGNED_AXIS_LABELS;
+    use std::f64::consts::PI;
 
     fn points(t: &Trace) -> Vec<[i64; 3]> {
         t.points_flat(0, t.steps() + 1)
@@ -486,10 +488,12 @@ mod tests {
         // (0,3), so n_c = 4; n_z = 2. Arc major; errorZ += 4 each time and
         // z steps when it exceeds 4: 4 (a tie: Saleem's strict > holds),
         // 8 (yes, -> 0), 4 (tie, holds), 8 (yes).
-        let t = crate::trace_json(
-            r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,2],"center":[0,0,0]}"#,
-        )
-        .unwrap();
+        let t = INFO
+            .trace_json(
+                r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,2],"center":[0,0,0]}"#,
+                find_regions,
+            )
+            .unwrap();
         assert_eq!(
             points(&t),
             [[3, 0, 0], [3, 1, 0], [2, 2, 1], [1, 3, 1], [0, 3, 2]]
@@ -516,10 +520,12 @@ mod tests {
         // The same quarter with z falling 9: n_z = 9 > n_c = 4. errorCircle
         // += 8 and the arc steps when it exceeds 9: 8, 16 (-> -2), 6, 14
         // (-> -4), 4, 12 (-> -6), 2, 10 (-> -8), 0.
-        let t = crate::trace_json(
-            r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,-9],"center":[0,0,0]}"#,
-        )
-        .unwrap();
+        let t = INFO
+            .trace_json(
+                r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,-9],"center":[0,0,0]}"#,
+                find_regions,
+            )
+            .unwrap();
         let d = t.decisions(0, 9);
         assert_eq!(
             d.columns[8],
@@ -546,20 +552,75 @@ mod tests {
 
     #[test]
     fn segment_options_need_segments_mode() {
-        let e = crate::trace_json(
-            r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,2],"center":[0,0,0],"tolerance":0.1}"#,
-        )
-        .err()
-        .unwrap();
+        let e = INFO
+            .trace_json(
+                r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,2],"center":[0,0,0],"tolerance":0.1}"#,
+                find_regions,
+            )
+            .err()
+            .unwrap();
         assert_eq!(e.to_string(), "tolerance: applies to method segments only");
-        let t = crate::trace_json(
-            r#"{"algorithm":"helix","from":[30,0,0],"to":[0,30,20],"center":[0,0,0],"method":"segments","segmentLength":10}"#,
-        )
-        .unwrap();
+        let t = INFO
+            .trace_json(
+                r#"{"algorithm":"helix","from":[30,0,0],"to":[0,30,20],"center":[0,0,0],"method":"segments","segmentLength":10}"#,
+                find_regions,
+            )
+            .unwrap();
         // floor(15π / 10) = 4 chords, heights 5, 10, 15 then 20.
         assert_eq!(t.segments().len(), 4);
         let starts: Vec<i64> = t.segments().iter().map(|s| s.start.get(2)).collect();
         assert_eq!(starts, [0, 5, 10, 15]);
         assert!(matches!(t.segments()[0].ideal, IdealPath::Helix(_)));
+    }
+
+    /// A full circle whose rule counts 1 chord (floor(2π 10 / 1000) = 0,
+    /// at least 1) is a triangle of chords around the centre, ending on the
+    /// start: near the origin, touching 2^30 - 1 and -(2^30 - 1), drawn by
+    /// arc-segments and by helix's method segments alike.
+    #[test]
+    fn a_full_circle_takes_at_least_three_chords() {
+        let edge = (1i64 << 30) - 1;
+        for (from, center) in [
+            ([10, 0, 0], [0, 0, 0]),
+            ([edge, edge - 10, 5], [edge - 10, edge - 10, 5]),
+            ([-edge, -edge + 10, -edge], [-edge + 10, -edge + 10, -edge]),
+        ] {
+            for (info, algorithm) in [
+                (&arc_segments::INFO, r#""arc-segments""#),
+                (&INFO, r#""helix","method":"segments""#),
+            ] {
+                let t = info
+                    .trace_json(
+                        &format!(
+                            r#"{{"algorithm":{algorithm},"from":{from:?},"to":{from:?},"center":{center:?},"segmentLength":1000}}"#
+                        ),
+                        find_regions,
+                    )
+                    .unwrap();
+                assert_eq!(
+                    t.segments().len(),
+                    arc_segments::MIN_FULL_CIRCLE_CHORDS as usize,
+                    "{algorithm} {from:?}"
+                );
+                assert_eq!(t.end(), Point::new(&from));
+                // Three chords of a circle of radius 10 (each 17.3 long, the
+                // longest axis at least 10 after rounding) take at least 30 steps.
+                assert!(t.steps() >= 30, "{algorithm} {from:?}: {} steps", t.steps());
+                let note = &t.segments()[0].setup_note;
+                assert!(
+                    note.contains(
+                        "gives 1 chord, raised to 3, the fewest that go around a full circle"
+                    ),
+                    "{note}"
+                );
+                // Every point is within the chord bound of the circle.
+                let bound = 10.0 * (1.0 - (PI / 3.0).cos()) + 2f64.sqrt();
+                assert!(
+                    t.metrics().max_deviation <= bound,
+                    "{}",
+                    t.metrics().max_deviation
+                );
+            }
+        }
     }
 }

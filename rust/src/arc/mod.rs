@@ -8,16 +8,17 @@
 //! by at most [`RADIUS_TOLERANCE`] grid unit; each algorithm says how it
 //! closes the difference.
 
+pub mod angle;
 pub mod arc_segments;
 pub mod circle_saleem;
-pub mod curve;
 pub mod helix;
 pub mod planes;
 
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::request::{OptionKind, OptionSpec, Request};
-use curve::{ArcPath, atan3, degrees};
+use crate::ideal::curve::ArcPath;
+use angle::{atan3, degrees};
 use planes::{DIR_VALUES, Frame, PLANE_VALUES, Plane, Turn, same_height};
 use std::f64::consts::TAU;
 

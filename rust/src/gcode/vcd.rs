@@ -115,7 +115,7 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Res
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gcode::{Settings, run};
+    use crate::gcode::program::{Settings, run};
     use vcd::Command;
 
     /// (rising edge times in ns, DIR changes as (ns, value)) per wire name.

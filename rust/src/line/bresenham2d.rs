@@ -13,9 +13,9 @@ use super::{Guard, Mirror, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
-use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
 use crate::trace::{
-    Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy, fill_by_next_step,
+    Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, fill_by_next_step,
 };
 
 pub const ID: &str = "bresenham2d";

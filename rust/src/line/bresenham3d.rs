@@ -11,8 +11,8 @@ use super::terms::Terms;
 use super::{GCD, Mirror, axis_list, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
+use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
+use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 
 pub const ID: &str = "bresenham3d";
 

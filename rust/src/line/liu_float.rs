@@ -12,8 +12,8 @@ use super::{GUARD_LABELS, Guard, Mirror, axis_list, column, step_target, wang_di
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Stepper, TiePolicy};
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
+use crate::trace::{Column, ColumnKind, Decision, Stepper};
 
 pub const ID: &str = "liu-float";
 

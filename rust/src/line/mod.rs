@@ -17,8 +17,8 @@ use crate::algorithm_info::AlgorithmInfo;
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, gcd};
 use crate::ideal::IdealPath;
-use crate::request::{OptionKind, OptionSpec, Request};
-use crate::trace::{Column, ColumnKind, DeviationBound, Stepper, TiePolicy, Trace, TraceBuilder};
+use crate::request::{OptionKind, OptionSpec, Request, TiePolicy};
+use crate::trace::{Column, ColumnKind, DeviationBound, Stepper, Trace, TraceBuilder};
 use std::cmp::Ordering;
 
 /// Traces one straight move with the stepper `make` builds from the request's

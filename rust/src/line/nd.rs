@@ -7,8 +7,8 @@ use super::terms::{Term, Terms};
 use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
-use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
+use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
+use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 
 pub const ID: &str = "nd";
 

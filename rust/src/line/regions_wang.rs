@@ -15,8 +15,8 @@ use super::terms::{Term, Terms};
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
-use crate::request::{FROM, MAX_STEPS, TO, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, TiePolicy};
+use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
+use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 use std::fmt::Write;
 
 pub const ID: &str = "regions";
@@ -523,6 +523,7 @@ impl Stepper for RegionsWang {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algorithm_info::find_none;
     use crate::trace::TraceBuilder;
 
     fn run(from: [i64; 3], to: [i64; 3], tie: TiePolicy) -> Vec<(Point, RegionsWhy)> {
@@ -618,9 +619,12 @@ mod tests {
     fn a_type_two_line_has_no_region_or_corner_rather_than_a_label() {
         // (0,0,0)->(3,3,3): all three axes active (Wang section 2.2, type ②),
         // so no discriminant, no exit face and no corner decides any step.
-        let t =
-            crate::trace_json(r#"{"algorithm": "regions", "from": [0, 0, 0], "to": [3, 3, 3]}"#)
-                .unwrap();
+        let t = INFO
+            .trace_json(
+                r#"{"algorithm": "regions", "from": [0, 0, 0], "to": [3, 3, 3]}"#,
+                find_none,
+            )
+            .unwrap();
         let d = t.decisions(0, 3);
         assert!(d.columns[0].iter().chain(&d.columns[1]).all(|v| v.is_nan()));
         let none = f64::from(crate::trace::NO_VALUE);

@@ -13,7 +13,7 @@
 //! the property tests check that both give the same steps.
 
 use crate::grid::{MAX_AXES, Step};
-use crate::trace::TiePolicy;
+use crate::request::TiePolicy;
 
 /// One passive axis's discriminant, in the form [`Terms`] steps.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,148 +1,7 @@
-//! The ideal (continuous) path a step sequence approximates, and the distance
-//! of a grid point from it.
+//! The distance of a grid point from a straight segment, and its per-axis
+//! error (Wang eq. 11), exact in integers until the last rounding.
 
-use crate::arc::curve::{ArcMeter, ArcPath, HelixPath};
-use crate::grid::{MAX_AXES, Point};
-use serde::Serialize;
-use tsify::Tsify;
-
-/// The path the steps approximate. Deviation is measured against it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum IdealPath {
-    /// The straight segment between two grid points.
-    Line { from: Point, to: Point },
-    /// A circular arc (see `arc::curve`): deviation is the radial error.
-    Arc(ArcPath),
-    /// A helix: deviation is the distance to its nearest point.
-    Helix(HelixPath),
-}
-
-/// How the ideal path is described to a viewer (grid units).
-#[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
-#[serde(tag = "kind", rename_all = "camelCase")]
-pub enum IdealPathInfo {
-    Line {
-        from: Vec<i64>,
-        to: Vec<i64>,
-    },
-    /// Angles in radians, atan2(v, u) in the plane's right-handed frame;
-    /// sweep > 0 is counter-clockwise (G03).
-    #[serde(rename_all = "camelCase")]
-    Arc {
-        center: Vec<i64>,
-        plane: &'static str,
-        radius: f64,
-        start_rad: f64,
-        sweep_rad: f64,
-    },
-    /// As Arc, plus the height on the normal axis: start_height + rise * t
-    /// at fraction t of the sweep.
-    #[serde(rename_all = "camelCase")]
-    Helix {
-        center: Vec<i64>,
-        plane: &'static str,
-        radius: f64,
-        start_rad: f64,
-        sweep_rad: f64,
-        start_height: f64,
-        rise: f64,
-    },
-}
-
-impl IdealPath {
-    pub fn info(&self) -> IdealPathInfo {
-        match self {
-            IdealPath::Line { from, to } => IdealPathInfo::Line {
-                from: from.coords().to_vec(),
-                to: to.coords().to_vec(),
-            },
-            IdealPath::Arc(arc) => arc.info(),
-            IdealPath::Helix(helix) => helix.info(),
-        }
-    }
-
-    /// This path ready to measure many points: its per-path constants
-    /// (direction, squared length, radius) computed once. Build one per
-    /// segment, not per point.
-    pub fn meter(&self) -> Meter<'_> {
-        match self {
-            IdealPath::Line { from, to } => Meter::Line(LineMeter::new(from, to)),
-            IdealPath::Arc(arc) => Meter::Arc(arc.meter()),
-            IdealPath::Helix(helix) => Meter::Helix(helix),
-        }
-    }
-
-    /// Perpendicular distance from `p` to the ideal path, in grid units
-    /// (the Error column of Wang's Tables 1 and 2). See [`Meter::deviation`].
-    pub fn deviation(&self, p: &Point) -> f64 {
-        self.meter().deviation(p)
-    }
-
-    /// Per-axis error of `p` against the ideal position after `step` of
-    /// `steps` equal parts of the path (Wang eq. 11). See [`Meter::axis_error`].
-    pub fn axis_error(&self, p: &Point, step: u64, steps: u64) -> [f64; MAX_AXES] {
-        self.meter().axis_error(p, step, steps)
-    }
-
-    /// Points along the ideal path for drawing, flat with stride `dims`.
-    pub fn polyline(&self) -> Vec<f64> {
-        match self {
-            IdealPath::Line { from, to } => from
-                .coords()
-                .iter()
-                .chain(to.coords())
-                .map(|&c| c as f64)
-                .collect(),
-            IdealPath::Arc(arc) => arc.polyline(),
-            IdealPath::Helix(helix) => helix.polyline(),
-        }
-    }
-}
-
-/// An ideal path with its per-path constants computed, measuring points.
-pub enum Meter<'a> {
-    Line(LineMeter),
-    Arc(ArcMeter<'a>),
-    Helix(&'a HelixPath),
-}
-
-impl Meter<'_> {
-    /// Perpendicular distance from `p` to the ideal path, in grid units.
-    /// Arcs: the distance to the circle; helices: to the nearest point.
-    pub fn deviation(&self, p: &Point) -> f64 {
-        match self {
-            Meter::Line(line) => line.deviation(p),
-            Meter::Arc(arc) => arc.deviation(p),
-            Meter::Helix(helix) => helix.deviation(p),
-        }
-    }
-
-    /// Per-axis error of `p` against the ideal position after `step` of
-    /// `steps` equal parts of the path (Wang eq. 11: phi_x, phi_y, phi_z).
-    /// For a line whose active axis steps every time this is 0 on that axis.
-    /// For arcs and helices progress is the point's own angle (`arc::curve`).
-    pub fn axis_error(&self, p: &Point, step: u64, steps: u64) -> [f64; MAX_AXES] {
-        match self {
-            Meter::Line(line) => line.axis_error(p, step, steps),
-            Meter::Arc(arc) => arc.axis_error(p),
-            Meter::Helix(helix) => helix.axis_error(p),
-        }
-    }
-}
-
-/// Largest magnitude (exclusive) of the integers whose products the fast
-/// paths form in i64: two factors below 2^31 multiply to below 2^62, so a
-/// sum or difference of two such products stays below 2^63. Inputs within
-/// +-2^30 differ by at most 2^31, so only a move spanning the whole range on
-/// an axis (or a point outside the input box) reaches the i128 fallback.
-pub const I64_PRODUCT_BOUND: u64 = 1 << 31;
-
-/// True when every value is below [`I64_PRODUCT_BOUND`] in magnitude (an OR
-/// of the magnitudes has the highest bit of the largest: one test, no branch
-/// per value).
-pub fn within_i64_product_bound(values: &[i64]) -> bool {
-    values.iter().fold(0, |bits, v| bits | v.unsigned_abs()) < I64_PRODUCT_BOUND
-}
+use crate::grid::{I64_PRODUCT_BOUND, MAX_AXES, Point, within_i64_product_bound};
 
 /// A straight segment ready to measure points.
 pub struct LineMeter {
@@ -265,11 +124,8 @@ mod tests {
     use super::*;
     use crate::grid::COORD_LIMIT;
 
-    fn line(from: &[i64], to: &[i64]) -> IdealPath {
-        IdealPath::Line {
-            from: Point::new(from),
-            to: Point::new(to),
-        }
+    fn line(from: &[i64], to: &[i64]) -> LineMeter {
+        LineMeter::new(&Point::new(from), &Point::new(to))
     }
 
     #[test]

@@ -1,0 +1,106 @@
+//! The ideal (continuous) path a step sequence approximates, and the distance
+//! of a grid point from it: the one interface a trace measures through.
+//! Each kind of path is measured in a file of its own ([`line`], [`curve`]);
+//! what a viewer is told of a path is the leaf [`info`], which those files
+//! build without importing this dispatch.
+
+pub mod curve;
+pub mod info;
+pub mod line;
+
+use crate::grid::{MAX_AXES, Point};
+use curve::{ArcMeter, ArcPath, HelixPath};
+use info::IdealPathInfo;
+use line::LineMeter;
+
+/// The path the steps approximate. Deviation is measured against it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum IdealPath {
+    /// The straight segment between two grid points.
+    Line { from: Point, to: Point },
+    /// A circular arc (see [`curve`]): deviation is the radial error.
+    Arc(ArcPath),
+    /// A helix: deviation is the distance to its nearest point.
+    Helix(HelixPath),
+}
+
+impl IdealPath {
+    pub fn info(&self) -> IdealPathInfo {
+        match self {
+            IdealPath::Line { from, to } => IdealPathInfo::Line {
+                from: from.coords().to_vec(),
+                to: to.coords().to_vec(),
+            },
+            IdealPath::Arc(arc) => arc.info(),
+            IdealPath::Helix(helix) => helix.info(),
+        }
+    }
+
+    /// This path ready to measure many points: its per-path constants
+    /// (direction, squared length, radius) computed once. Build one per
+    /// segment, not per point.
+    pub fn meter(&self) -> Meter<'_> {
+        match self {
+            IdealPath::Line { from, to } => Meter::Line(LineMeter::new(from, to)),
+            IdealPath::Arc(arc) => Meter::Arc(arc.meter()),
+            IdealPath::Helix(helix) => Meter::Helix(helix),
+        }
+    }
+
+    /// Perpendicular distance from `p` to the ideal path, in grid units
+    /// (the Error column of Wang's Tables 1 and 2). See [`Meter::deviation`].
+    pub fn deviation(&self, p: &Point) -> f64 {
+        self.meter().deviation(p)
+    }
+
+    /// Per-axis error of `p` against the ideal position after `step` of
+    /// `steps` equal parts of the path (Wang eq. 11). See [`Meter::axis_error`].
+    pub fn axis_error(&self, p: &Point, step: u64, steps: u64) -> [f64; MAX_AXES] {
+        self.meter().axis_error(p, step, steps)
+    }
+
+    /// Points along the ideal path for drawing, flat with stride `dims`.
+    pub fn polyline(&self) -> Vec<f64> {
+        match self {
+            IdealPath::Line { from, to } => from
+                .coords()
+                .iter()
+                .chain(to.coords())
+                .map(|&c| c as f64)
+                .collect(),
+            IdealPath::Arc(arc) => arc.polyline(),
+            IdealPath::Helix(helix) => helix.polyline(),
+        }
+    }
+}
+
+/// An ideal path with its per-path constants computed, measuring points.
+pub enum Meter<'a> {
+    Line(LineMeter),
+    Arc(ArcMeter<'a>),
+    Helix(&'a HelixPath),
+}
+
+impl Meter<'_> {
+    /// Perpendicular distance from `p` to the ideal path, in grid units.
+    /// Arcs: the distance to the circle; helices: to the nearest point.
+    pub fn deviation(&self, p: &Point) -> f64 {
+        match self {
+            Meter::Line(line) => line.deviation(p),
+            Meter::Arc(arc) => arc.deviation(p),
+            Meter::Helix(helix) => helix.deviation(p),
+        }
+    }
+
+    /// Per-axis error of `p` against the ideal position after `step` of
+    /// `steps` equal parts of the path (Wang eq. 11: phi_x, phi_y, phi_z).
+    /// For a line whose active axis steps every time this is 0 on that axis.
+    /// For arcs and helices progress is the point's own angle ([`curve`]).
+    pub fn axis_error(&self, p: &Point, step: u64, steps: u64) -> [f64; MAX_AXES] {
+        match self {
+            Meter::Line(line) => line.axis_error(p, step, steps),
+            Meter::Arc(arc) => arc.axis_error(p),
+            Meter::Helix(helix) => helix.axis_error(p),
+        }
+    }
+}

@@ -1,0 +1,84 @@
+//! A program's timing end to end (`gcode::timing` under `gcode::run`):
+//! motion times worked from the trapezoid profile, moves that join in time,
+//! and the warnings of a feed or a step rate out of range. Here rather than
+//! beside `timing`, which `run`'s file imports.
+
+use voxpath::gcode::{Settings, run};
+
+fn settings(extra: &str) -> Settings {
+    Settings::from_json(&format!(
+        r#"{{"stepsPerMm": 80, "acceleration": 100, "maxRate": 6000{extra}}}"#
+    ))
+    .unwrap()
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
+}
+
+#[test]
+fn the_issues_example_takes_three_seconds() {
+    // G1 X200 F6000 at 80 steps/mm and 100 mm/s², from rest: 1 s up to
+    // 100 mm/s over 50 mm, 1 s at 100 mm/s, 1 s down (see
+    // voxpath::planner's test trapezoid_from_rest_to_rest).
+    let program = run("G1 X200 F6000\n", settings(""));
+    assert!(close(program.info.duration_seconds, 3.0));
+    let t = program.info.moves[0].timing;
+    assert!(close(t.cruise_speed, 100.0) && t.entry_speed == 0.0 && t.exit_speed == 0.0);
+    // The 400th step (index 399) at 5 mm: s = ½at², t = √(2·5/100).
+    let times = program.timeline.step_seconds(399, 400);
+    assert!(close(times[0], (2.0f64 * 5.0 / 100.0).sqrt()));
+    let all = program.timeline.step_seconds(0, 16_000);
+    assert_eq!(all.len(), 16_000);
+    assert!(close(all[15_999], 3.0));
+    assert!(all.windows(2).all(|w| w[0] < w[1]));
+    // Cruising at 100 mm/s along X: 8000 steps/s on X, none on Y, Z.
+    let rates = program.timeline.step_rate_profile(&[80.0; 3]);
+    assert_eq!(rates.len(), 4 * 4);
+    assert!(close(rates[4 + 1], 8000.0) && rates[4 + 2] == 0.0);
+}
+
+#[test]
+fn moves_join_in_time_and_ranges_cross_moves() {
+    let program = run("G0 X10\nG1 Y10 F600\nG2 X20 Y0 I5 J-5\n", settings(""));
+    let moves = &program.info.moves;
+    for pair in moves.windows(2) {
+        assert_eq!(pair[0].timing.end_seconds, pair[1].timing.start_seconds);
+    }
+    let end = moves.last().unwrap().timing.end_seconds;
+    assert!(close(end, program.info.duration_seconds));
+    let steps = program.info.steps;
+    let all = program.timeline.step_seconds(0, steps);
+    let part = program.timeline.step_seconds(700, 900);
+    assert_eq!(&all[700..900], &part[..]);
+    // The arc is planned through Grbl's chords, at most F.
+    assert!(moves[2].timing.cruise_speed <= 10.0 + 1e-9);
+}
+
+#[test]
+fn no_feed_and_step_rate_are_warnings_on_their_line() {
+    let program = run("G1 X10\n", settings(r#", "maxStepRate": 2000"#));
+    let messages: Vec<(u32, String)> = program
+        .info
+        .warnings
+        .iter()
+        .map(|w| (w.line, w.message.clone()))
+        .collect();
+    assert!(messages[0].1.contains("error 22"), "{messages:?}");
+    // Timed at the top rate, 100 mm/s, but 10 mm at 100 mm/s² peak at
+    // √(100·10) = 31.6 mm/s (a triangle): 2530 steps/s on X.
+    assert!(
+        messages[1].1.starts_with("X would step at "),
+        "{messages:?}"
+    );
+    assert_eq!(messages[1].0, 1);
+}
+
+#[test]
+fn limits_are_read_by_name() {
+    let e = Settings::from_json(r#"{"stepsPerMm": 80, "maxRate": [1, 2]}"#).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "maxRate: expected one number or 3 (x, y, z), got 2"
+    );
+}
