@@ -26,7 +26,7 @@ describe('trace (regions)', () => {
   it("gives where the ideal line crosses each step's exit face, from eq. (2)", async () => {
     const t = await trace(LINE);
     // x is active: the line is at y = 0.7 (x_i + 1), z = 0.6 (x_i + 1) on the
-    // exit plane x = x_i + 1, and the face's centre at (y_i + 1/2, z_i + 1/2),
+    // exit plane x = x_i + 1, and the face's center at (y_i + 1/2, z_i + 1/2),
     // (x_i, y_i, z_i) being the point before the step.
     const before = Array.from({ length: t.steps }, (_, k) => t.point(k));
     const u = Array.from(t.decisions.face_u!);
@@ -158,7 +158,7 @@ describe('bad input', () => {
     expect(outside.axis).toBe(1);
     expect((await rejected({ algorithm: 'nope', from: [0, 0, 0], to: [1, 1, 1] })).field).toBe('algorithm');
     expect((await rejected({ ...LINE, tie: 'maybe' })).field).toBe('tie');
-    expect((await rejected({ ...LINE, centre: [1, 1, 1] })).field).toBe('centre');
+    expect((await rejected({ ...LINE, center: [1, 1, 1] })).field).toBe('center');
     expect((await rejected({ ...LINE, from: [0, Number.NaN, 0] })).message).toBe('from: y must be a number, got "NaN"');
     const long = await rejected({ ...LINE, to: [100000, 0, 0], maxSteps: 1000 });
     expect(long.field).toBe('maxSteps');

@@ -1,11 +1,11 @@
 // Every arc algorithm of the catalogue (circle, arc-segments, helix) through
 // the public API against the real wasm core: quarter, half and full circles
-// in each plane and direction, centres in negative quadrants, radii 1, 2 and
+// in each plane and direction, centers in negative quadrants, radii 1, 2 and
 // 2^20, the radial error each states, and bad input.
 //
 // Conventions checked (README, "Algorithms"; SEED-NOTES on the G-code blog):
 // G17/G18/G19 put the plane's axes (u, v) as (x, y), (z, x), (y, z); G03
-// (ccw) increases the angle atan2(v, u) about the centre, G02 (cw)
+// (ccw) increases the angle atan2(v, u) about the center, G02 (cw)
 // decreases it: counter-clockwise / clockwise seen from the positive end of
 // the plane's normal axis, right-handed in all three planes.
 import { describe, expect, it } from 'vitest';
@@ -76,9 +76,9 @@ describe('the catalogue', () => {
 });
 
 describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
-  // r = 5 about a centre in the negative quadrant (u, v) = (-7, -3), at height -4.
+  // r = 5 about a center in the negative quadrant (u, v) = (-7, -3), at height -4.
   const [cu, cv, height, r] = [-7, -3, -4, 5];
-  const center = (plane: Plane) => inPlane(plane, [cu, cv, 9]); // the normal coordinate of a centre is ignored
+  const center = (plane: Plane) => inPlane(plane, [cu, cv, 9]); // the normal coordinate of a center is ignored
   const at = (plane: Plane, angle: number) => inPlane(plane, [cu + Math.round(r * Math.cos(angle)), cv + Math.round(r * Math.sin(angle)), height]);
 
   it.each(PLANES.flatMap((plane) => (['ccw', 'cw'] as const).map((dir) => [plane, dir] as const)))(
@@ -135,7 +135,7 @@ describe.each(ARCS.map((a) => [a.id, a] as const))('%s', (_, a) => {
     const base = arcOptions(a, 'xy', [5, 0, 0], [0, 5, 0], c, 'ccw');
     // The radii differ by more than 1 grid unit: 5 against 7.
     expect((await rejection(trace({ ...base, to: [0, 7, base.to[2]!] }))).field).toBe('to');
-    // r = 0: the centre is the start point.
+    // r = 0: the center is the start point.
     expect((await rejection(trace({ ...base, from: c, to: c }))).field).toBe('center');
     expect((await rejection(trace({ ...base, center: ['a', 0, 0] }))).field).toBe('center');
     expect((await rejection(trace({ ...base, from: [5, Number.NaN, 0] }))).field).toBe('from');
@@ -199,7 +199,7 @@ describe("the circle's candidates", () => {
   it.each(DECIDING.flatMap((a) => PLANES.flatMap((plane) => (['ccw', 'cw'] as const).map((dir) => [a.id, plane, dir, a] as const))))(
     '%s in %s, %s: the step takes the candidate nearer the circle',
     async (_, plane, dir, a) => {
-      // r² = 7² + 4² = 65 about a centre off the origin: 210° counter-clockwise, 270° clockwise.
+      // r² = 7² + 4² = 65 about a center off the origin: 210° counter-clockwise, 270° clockwise.
       const [ua, va] = PLANE_AXES[plane];
       const c = inPlane(plane, [-20, 11, 3]);
       const from = inPlane(plane, [-13, 15, 3]);

@@ -57,7 +57,7 @@ function everyPlane(from: number[], to: number[], center: number[], extra: Recor
 const ARCS: ReferenceOptions[] = [
   // Saleem's r = 5 quarter.
   ...everyPlane([5, 0, 0], [0, 5, 0], [0, 0, 0]),
-  // r = 207 around (100, -41); the end (-146, 147) from the centre is
+  // r = 207 around (100, -41); the end (-146, 147) from the center is
   // 207.18 away, off the circle: correction steps close the gap.
   ...everyPlane([307, -41, 12], [-46, 106, 12], [100, -41, 0]),
   // One full turn of r = sqrt(1300) (end = start, as the bench's circle),

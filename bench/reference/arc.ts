@@ -9,12 +9,12 @@ import { MAGNITUDE_LIMIT, stepCode, type ReferenceOptions } from './common.js';
 
 const PLANE_AXES: Record<string, [number, number, number]> = { xy: [0, 1, 2], zx: [2, 0, 1], yz: [1, 2, 0] };
 
-/** An arc request: the plane's axes (u, v, normal), the mirror sign, the centre, local start and end, r². */
+/** An arc request: the plane's axes (u, v, normal), the mirror sign, the center, local start and end, r². */
 export interface Arc {
   axes: [number, number, number];
   /** +1 for G03 (ccw), -1 for G02 (cw). */
   sign: number;
-  /** The centre with the start's height on the normal axis. */
+  /** The center with the start's height on the normal axis. */
   center: number[];
   start: [number, number];
   end: [number, number];
@@ -76,7 +76,7 @@ function octantAhead(a: number, b: number): number {
   if (a < 0 && b <= a) return 6;
   if (a >= 0 && -b > a) return 7;
   if (b < 0 && a >= -b) return 8;
-  throw new RangeError('the circle never passes through its centre');
+  throw new RangeError('the circle never passes through its center');
 }
 
 const CIRCLE = 0;
@@ -128,7 +128,7 @@ export class Circle {
     const slowSteps = Math.abs(moved) < Math.abs(stay);
     const nextA = slowSteps ? movedA : stayA;
     const nextB = slowSteps ? movedB : stayB;
-    // The ray from the centre through the end: end × point turns from < 0 to >= 0.
+    // The ray from the center through the end: end × point turns from < 0 to >= 0.
     const crossNow = this.endA * this.b - this.endB * this.a;
     const crossNext = this.endA * nextB - this.endB * nextA;
     if (crossNow < 0 && crossNext >= 0) {

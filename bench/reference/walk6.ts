@@ -1,7 +1,7 @@
 /**
  * The 6-connected walk along the line, stepping only: rust/src/line/walk6.rs
  * in plain TypeScript (ties to the lower axis, the default). The segment
- * between the two cell centres crosses one cell face per step; each step
+ * between the two cell centers crosses one cell face per step; each step
  * goes through the face it reaches first, at fraction (2c + 1) / (2|Δ|)
  * for an axis that has crossed c faces, compared exactly by
  * cross-multiplication.

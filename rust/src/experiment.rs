@@ -425,10 +425,10 @@ mod tests {
         );
         // Unknown options reach the algorithm, which names them.
         assert_eq!(
-            run(r#"{"algorithm":"regions","centre":1}"#)
+            run(r#"{"algorithm":"regions","center":1}"#)
                 .unwrap_err()
                 .field_name(),
-            Some("centre")
+            Some("center")
         );
         let hold = run(r#"{"algorithm":"regions","count":30,"seed":2,"tie":"hold"}"#).unwrap();
         let advance = run(r#"{"algorithm":"regions","count":30,"seed":2}"#).unwrap();

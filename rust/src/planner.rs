@@ -542,7 +542,7 @@ impl Plan {
 pub fn arc_chords(
     from_mm: [f64; MACHINE_AXES],
     to_mm: [f64; MACHINE_AXES],
-    centre_mm: [f64; MACHINE_AXES],
+    center_mm: [f64; MACHINE_AXES],
     axes: [usize; 3],
     radius_mm: f64,
     sweep_rad: f64,
@@ -559,14 +559,14 @@ pub fn arc_chords(
         1
     };
     let mut out = Vec::with_capacity(chords.max(1) as usize);
-    let start_angle = (from_mm[v] - centre_mm[v]).atan2(from_mm[u] - centre_mm[u]);
+    let start_angle = (from_mm[v] - center_mm[v]).atan2(from_mm[u] - center_mm[u]);
     for i in 1..chords {
         let f = i as f64 / chords as f64;
         let angle = start_angle + sweep_rad * f;
         let mut p = from_mm;
         let (sin, cos) = sin_cos_turns(angle);
-        p[u] = centre_mm[u] + radius_mm * cos;
-        p[v] = centre_mm[v] + radius_mm * sin;
+        p[u] = center_mm[u] + radius_mm * cos;
+        p[v] = center_mm[v] + radius_mm * sin;
         p[n] = from_mm[n] + (to_mm[n] - from_mm[n]) * f;
         out.push(p);
     }

@@ -447,13 +447,13 @@ mod tests {
     #[test]
     fn unknown_options_are_named() {
         let r = Request::from_json(
-            r#"{"algorithm":"regions","from":[0,0,0],"to":[1,2,3],"centre":[1,1,1]}"#,
+            r#"{"algorithm":"regions","from":[0,0,0],"to":[1,2,3],"center":[1,1,1]}"#,
         )
         .unwrap();
         let e = r.check_options(&[FROM, TO, MAX_STEPS]).unwrap_err();
         assert_eq!(
             e.to_string(),
-            "centre: regions does not take this option (it takes from, to, maxSteps)"
+            "center: regions does not take this option (it takes from, to, maxSteps)"
         );
     }
 

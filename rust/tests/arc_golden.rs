@@ -1,8 +1,8 @@
 //! Circles worked by hand with Saleem's eq. (6)-(11), in every plane and
-//! both directions, around centres in negative quadrants.
+//! both directions, around centers in negative quadrants.
 //!
 //! How the expected cells were derived. In the local frame (u, v relative to
-//! the centre) each step moves the fast axis of the current octant and keeps
+//! the center) each step moves the fast axis of the current octant and keeps
 //! the slow axis or moves it, whichever candidate has the smaller
 //! |u² + v² - r²|. For example r = 5 from (5, 0), octant 1 (v fast, +1; u
 //! slow, -1):
@@ -208,7 +208,7 @@ fn tiny_radii() {
         points(&t),
         [[1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0], [1, 0, 0]]
     );
-    // r² = 2 from (1,1): the eight neighbours of the centre (octant 2:
+    // r² = 2 from (1,1): the eight neighbours of the center (octant 2:
     // (0,1) error 1 | (0,2) error 2 -> (0,1); octant 3: (-1,1) error 0 ...).
     let t = voxpath::trace_json(
         r#"{"algorithm":"circle","from":[1,1,0],"to":[1,1,0],"center":[0,0,0]}"#,

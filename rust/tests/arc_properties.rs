@@ -1,5 +1,5 @@
 //! Properties of circle, arc-segments and helix on random arcs in every
-//! plane, direction and octant, with centres anywhere in the ±2^30 box.
+//! plane, direction and octant, with centers anywhere in the ±2^30 box.
 //!
 //! Bounds asserted, and why they hold:
 //! - circle points are less than 1/2 from the circle: the two candidates of
@@ -38,7 +38,7 @@ struct Arc {
     plane: usize,
     ccw: bool,
     center: [i64; 3],
-    /// Start and end relative to the centre, in the plane's (u, v).
+    /// Start and end relative to the center, in the plane's (u, v).
     start: [i64; 2],
     end: [i64; 2],
     turns: u64,
@@ -74,7 +74,7 @@ impl Arc {
         self.start[0].pow(2) + self.start[1].pow(2)
     }
 
-    /// (u, v) of a grid point relative to the centre.
+    /// (u, v) of a grid point relative to the center.
     fn local(&self, p: &[i64; 3]) -> [i64; 2] {
         let [u, v, _] = self.axes();
         [p[u] - self.center[u], p[v] - self.center[v]]
@@ -463,7 +463,7 @@ proptest! {
 
 #[test]
 fn a_full_circle_of_radius_two_to_the_twenty_near_the_limit() {
-    // r = 2^20 around a centre whose circle touches x = 2^30 - 1 and
+    // r = 2^20 around a center whose circle touches x = 2^30 - 1 and
     // y = -(2^30 - 1): about 4 sqrt(2) r = 5.9 million steps.
     let r = 1i64 << 20;
     let c = COORD_LIMIT - r - 1;

@@ -53,35 +53,35 @@ fn a_code_number_is_never_another_code() {
 }
 
 #[test]
-fn a_far_arc_centre_names_its_word() {
+fn a_far_arc_center_names_its_word() {
     // J12345678901234567890 at 1000 steps/mm was "1:1: center: y =
     // 9223372036854776000 is outside ±2^30" (wrapped, at the wrong column).
     let (line, column, message) = first_error("G3 J12345678901234567890\n", 1000.0);
     assert_eq!((line, column), (1, 4));
     assert!(
-        message.starts_with("J: the arc's centre Y = 12345678901234567000 mm is beyond the machine's ±2^30 steps on y"),
+        message.starts_with("J: the arc's center Y = 12345678901234567000 mm is beyond the machine's ±2^30 steps on y"),
         "{message}"
     );
     let (_, column, message) =
         first_error(&format!("G0 X1\nG2 X2 I1{} J0\n", "0".repeat(300)), 80.0);
     assert_eq!(column, 7);
-    assert!(message.starts_with("I: the arc's centre X"), "{message}");
-    // G90.1 absolute centres with a huge K in G18: K is the zx plane's z.
+    assert!(message.starts_with("I: the arc's center X"), "{message}");
+    // G90.1 absolute centers with a huge K in G18: K is the zx plane's z.
     let (_, column, message) = first_error(
         &format!("G18 G90.1 G2 X0 Z0 K-1{} I0\n", "0".repeat(30)),
         80.0,
     );
     assert_eq!(column, 20);
-    assert!(message.starts_with("K: the arc's centre Z"), "{message}");
+    assert!(message.starts_with("K: the arc's center Z"), "{message}");
 }
 
 #[test]
 fn a_huge_radius_is_an_error_naming_r() {
-    // R = 10^200: R² overflowed, the centre and sweep were NaN (null in JSON).
+    // R = 10^200: R² overflowed, the center and sweep were NaN (null in JSON).
     let (line, column, message) =
         first_error(&format!("G1 F100\nG2 X10 Y0 R1{}\n", "0".repeat(200)), 80.0);
     assert_eq!((line, column), (2, 11));
-    assert!(message.starts_with("R: the arc's centre"), "{message}");
+    assert!(message.starts_with("R: the arc's center"), "{message}");
     // A large radius that does fit is a correct, finite arc.
     let p = program("G2 X10 Y0 R100000 F100\n", 10.0);
     assert_eq!(p.info.errors, []);

@@ -5,7 +5,7 @@
 //! so an axis's pulses are the total distance it travels in steps. Saleem's
 //! circle moves each axis monotonically between the extreme points of the
 //! rasterised circle (each octant steps its axes one way only), and when r
-//! is a whole number of steps the extremes are exactly r from the centre
+//! is a whole number of steps the extremes are exactly r from the center
 //! (the cells (±r, 0) and (0, ±r) have error 0). So a full turn is 4r
 //! pulses on each axis of the plane, and a partial arc travels from its
 //! start to each extreme it passes and on to its end. A straight move along
@@ -96,7 +96,7 @@ fn full_circle_from_ijk_is_a_full_turn() {
 
 #[test]
 fn r_over_180_degrees_takes_the_long_way() {
-    // (0,0) -> (8,0) mm with |R| = 5: the centre is 3 mm off the chord's
+    // (0,0) -> (8,0) mm with |R| = 5: the center is 3 mm off the chord's
     // middle (4, 0). G2 R-5 puts it above, at (4, 3): the arc starts at
     // 216.9°, goes clockwise through 180° (x = 4 - 5 = -1), 90° (y = 8) and
     // 0° (x = 9) to -36.9°. In steps: x 0 -> -10 -> 90 -> 80 = 120 pulses,
@@ -106,7 +106,7 @@ fn r_over_180_degrees_takes_the_long_way() {
     assert_eq!(m.arc.as_ref().unwrap().center_steps, Some([40, 30, 0]));
     assert_eq!(pulses(&p, m), [120, 160, 0]);
     assert_eq!(end(&p), Point::new(&[80, 0, 0]));
-    // R+5: centre (4, -3), the short arc over the top at y = -3 + 5 = 2:
+    // R+5: center (4, -3), the short arc over the top at y = -3 + 5 = 2:
     // x 0 -> 80, y 0 -> 20 -> 0.
     let p = at10("G2 X8 Y0 R5 F100\n");
     assert_eq!(pulses(&p, &p.info.moves[0]), [80, 40, 0]);
@@ -130,7 +130,7 @@ fn g18_clockwise_is_seen_from_plus_y() {
 
 #[test]
 fn g91_arcs_are_relative_to_where_each_starts() {
-    // Each: from the top of a circle of r = 10 mm (centre 10 below, J-10)
+    // Each: from the top of a circle of r = 10 mm (center 10 below, J-10)
     // a clockwise quarter to its right end, 10 right and 10 down.
     let p = at10("G91 G2 X10 Y-10 I0 J-10 F100\nG2 X10 Y-10 I0 J-10\n");
     assert_eq!(p.info.pulses, [200, 200, 0]);
@@ -144,18 +144,18 @@ fn g91_arcs_are_relative_to_where_each_starts() {
 #[test]
 fn arcs_after_g92_use_the_new_origin() {
     // G92 X0 Y0 at machine (10, 10): program (10, 0) is machine (20, 10),
-    // the centre (start + (5, 0)) machine (15, 10). A clockwise half turn
+    // the center (start + (5, 0)) machine (15, 10). A clockwise half turn
     // over the top (y = 15): x 100 -> 200, y 100 -> 150 -> 100.
-    for centre in ["G91.1 G2 X10 Y0 I5 J0", "G90.1 G2 X10 Y0 I5 J0"] {
-        let p = at10(&format!("G0 X10 Y10\nG92 X0 Y0\n{centre} F100\n"));
+    for center in ["G91.1 G2 X10 Y0 I5 J0", "G90.1 G2 X10 Y0 I5 J0"] {
+        let p = at10(&format!("G0 X10 Y10\nG92 X0 Y0\n{center} F100\n"));
         let m = &p.info.moves[1];
         assert_eq!(
             m.arc.as_ref().unwrap().center_steps,
             Some([150, 100, 0]),
-            "{centre}"
+            "{center}"
         );
-        assert_eq!(pulses(&p, m), [100, 100, 0], "{centre}");
-        assert_eq!(end(&p), Point::new(&[200, 100, 0]), "{centre}");
+        assert_eq!(pulses(&p, m), [100, 100, 0], "{center}");
+        assert_eq!(end(&p), Point::new(&[200, 100, 0]), "{center}");
     }
 }
 
@@ -235,7 +235,7 @@ fn an_arc_shorter_than_a_step_is_not_a_full_circle() {
 }
 
 #[test]
-fn rounded_ends_get_a_grid_centre_within_the_arc_tolerance() {
+fn rounded_ends_get_a_grid_center_within_the_arc_tolerance() {
     // At 1 step per mm, r = 10.5 about (0, 0): the start (10.5, 0) rounds to
     // (11, 0), radius 11; the end at 45° (7.4246, 7.4246) to (7, 7), radius
     // 9.90. Those differ by 1.1 steps, more than the arc algorithms accept.
@@ -250,7 +250,7 @@ fn rounded_ends_get_a_grid_centre_within_the_arc_tolerance() {
     let m = &p.info.moves[1];
     assert_eq!(m.arc.as_ref().unwrap().center_steps, Some([1, -1, 0]));
     assert!(
-        m.note.contains("centre moved to (1, -1, 0) steps"),
+        m.note.contains("center moved to (1, -1, 0) steps"),
         "{}",
         m.note
     );
@@ -278,14 +278,14 @@ fn errors_name_line_and_column_and_keep_the_lines_before() {
     };
     assert_eq!(
         first("G0 X5\nG2 X10 Y0 I3 J0\n"),
-        (2, 11, "the arc's end is 2.0000 mm from its centre but its start is 3.0000 mm: the radii differ by 1.0000 mm, more than the tolerance (0.0283 mm and 0.1% of the radius)".to_string())
+        (2, 11, "the arc's end is 2.0000 mm from its center but its start is 3.0000 mm: the radii differ by 1.0000 mm, more than the tolerance (0.0283 mm and 0.1% of the radius)".to_string())
     );
     assert_eq!(
         first("G2 X10 I0 J0\n"),
         (
             1,
             8,
-            "zero-radius arc: the centre is at the arc's start".to_string()
+            "zero-radius arc: the center is at the arc's start".to_string()
         )
     );
     assert_eq!(

@@ -88,7 +88,7 @@ fn reversed(mut p: Vec<Point>) -> Vec<Point> {
 }
 
 /// Is the point at t = num/den of the segment inside the closed unit cell
-/// centred on `cell`? Per axis |from + t·Δ - cell| <= 1/2, times 2·den.
+/// centered on `cell`? Per axis |from + t·Δ - cell| <= 1/2, times 2·den.
 fn in_cell(from: &Point, to: &Point, t: Crossing, cell: &Point) -> bool {
     let d = from.delta_to(to);
     (0..from.dims()).all(|a| {

@@ -130,7 +130,7 @@ proptest! {
 /// along the second; 0 on the line between two regions) each region and
 /// segment of Wang's Figure 4b stands for, read off the figure and the rules
 /// of section 2.5 rather than from the code under test. A line with one
-/// passive axis has no v: it counts as below the centre, as a missing N
+/// passive axis has no v: it counts as below the center, as a missing N
 /// counts as negative. None for a line with no passive axis (no region).
 fn region_signs(region: Option<Region>) -> Option<(i64, i64)> {
     Some(match region? {
@@ -191,7 +191,7 @@ proptest! {
                         // travel: at the exit plane the line has gone
                         // |Δa| t / |Δref| along the axis, where t is how far
                         // the reference axis has gone at the next point; the
-                        // face's centre is half a cell past the current point.
+                        // face's center is half a cell past the current point.
                         // Times 2 |Δref|, an exact integer.
                         let t = travel(reference) * (next.coords()[reference] - from.coords()[reference]);
                         let at = travel(axis) * (p.coords()[axis] - from.coords()[axis]);
@@ -202,7 +202,7 @@ proptest! {
                         // Within [|Δa|/|Δref| - 1, |Δa|/|Δref|]: so inside (-1, 1).
                         prop_assert!(scaled >= 2 * delta[axis].abs() - 2 * longest && scaled <= 2 * delta[axis].abs());
                         prop_assert!(u > -1.0 && u < 1.0);
-                        // The corner agrees: the axis stepped past the centre,
+                        // The corner agrees: the axis stepped past the center,
                         // or on it as the tie policy says.
                         let stepped = step.delta(axis) != 0;
                         let expected_step = u > 0.0 || (u == 0.0 && tie == TiePolicy::Advance);
@@ -226,7 +226,7 @@ proptest! {
 #[test]
 fn face_crossings_of_wang_s_example_from_the_paper_s_equations() {
     // (0,0,0)->(10,7,6), x active. Eq. (2) puts the line at y = 0.7 (x_i + 1)
-    // and z = 0.6 (x_i + 1) on the exit plane; the face's centre is at
+    // and z = 0.6 (x_i + 1) on the exit plane; the face's center is at
     // (y_i + 1/2, z_i + 1/2), with (x_i, y_i, z_i) the points of SEED-NOTES
     // from (0,0,0). Step 3, from (2,1,1): y = 2.1, so u = 2.1 - 1.5 = 0.6,
     // off the face (the line leaves the unit cell through its top first),

@@ -158,7 +158,7 @@ describe('trace mode', () => {
 
   it('draws the exit face in the view when "Decision in 3D" is on, and keeps that in the link', async () => {
     // Step 3 from (2,1,1): the line crosses x = 3 at y = 2.1, z = 1.8 (Wang
-    // eq. 2), 0.6 and 0.3 cells from the face's centre (face_u = M/20 = 0.6,
+    // eq. 2), 0.6 and 0.3 cells from the face's center (face_u = M/20 = 0.6,
     // face_v = N/20 = 0.3). The camera looks at that face from close by.
     const p = await openPage('?from=0,0,0&to=10,7,6&step=3&camera=6.5,-2.5,4.2,3,1.5,1.5,1');
     const { page } = p;
@@ -178,7 +178,7 @@ describe('trace mode', () => {
     // The inspector's figure marks the same crossing, at 0.5 + 0.6 of the face's width: past corner D's side.
     const figure = page.getByTestId('decision-figure');
     expect(await figure.getByTestId('face-crossing').count()).toBe(1);
-    expect(await figure.locator('title').textContent()).toMatch(/at \(0\.6, 0\.3\) cells from the face's centre, in region d/);
+    expect(await figure.locator('title').textContent()).toMatch(/at \(0\.6, 0\.3\) cells from the face's center, in region d/);
 
     // The link restores it.
     const q = await openPage(new URL(page.url()).search);

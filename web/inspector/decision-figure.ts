@@ -3,7 +3,7 @@
  * step fills (never by the algorithm's id), drawn from the values the core
  * replayed:
  * - region and corner (Wang's discriminate regions): the exit face with its
- *   regions a-d, the segments e-h and the centre o between them, the region
+ *   regions a-d, the segments e-h and the center o between them, the region
  *   the core says the line crosses, the point where it crosses (face_u,
  *   face_v) and the corner A-D it picked;
  * - threshold and error columns (Bresenham): one bar per error term against
@@ -47,7 +47,7 @@ function label(columns: readonly ColumnSpec[], name: string, value: number): str
 export interface ExitFace {
   region: string;
   corner: string;
-  /** Cells from the face's centre along the first passive axis, positive the way it travels. */
+  /** Cells from the face's center along the first passive axis, positive the way it travels. */
   u: number;
   /** The same along the second passive axis; undefined with one passive axis (the line leaves through an edge). */
   v: number | undefined;
@@ -130,7 +130,7 @@ export function arcCandidatesOf(columns: readonly ColumnSpec[], row: DecisionRow
  * D and A (the column docs and the core's explanations name them so).
  *
  * The figure shows half a cell of the exit plane around the face: the ideal
- * line crosses the plane within (-1, 1) of the face's centre (the face_u
+ * line crosses the plane within (-1, 1) of the face's center (the face_u
  * column's doc), off the face when it left Wang's unit cell through a side,
  * and the regions are the plane's quadrants, so they are drawn on past the
  * face, fainter.
@@ -159,9 +159,9 @@ const pair = (u: number, v: number | undefined) => (v === undefined ? `${u}` : `
 function regionFace(face: ExitFace): SVGSVGElement {
   const { region, corner } = face;
   const root = svg('svg', { viewBox: `0 0 ${EXTENT} ${EXTENT}`, role: 'img', class: 'face-figure' });
-  const where = region.length === 1 && 'abcd'.includes(region) ? `region ${region}` : region === 'o' ? 'the centre o' : `segment ${region}`;
+  const where = region.length === 1 && 'abcd'.includes(region) ? `region ${region}` : region === 'o' ? 'the center o' : `segment ${region}`;
   root.append(
-    svg('title', {}, `The exit face: the ideal line crosses the exit plane at ${pair(face.u, face.v)} cells from the face's centre, in ${where}; the step goes to corner ${corner}.`),
+    svg('title', {}, `The exit face: the ideal line crosses the exit plane at ${pair(face.u, face.v)} cells from the face's center, in ${where}; the step goes to corner ${corner}.`),
   );
   for (const [name, [u, v]] of Object.entries(QUADRANTS)) {
     // The quadrant of the plane, out to the figure's edge, under the face's part of it.
@@ -177,13 +177,13 @@ function regionFace(face: ExitFace): SVGSVGElement {
     root.append(svg('line', { x1: px(u1), y1: py(v1), x2: px(u2), y2: py(v2), class: name === region ? 'face-segment chosen' : 'face-segment' }));
     root.append(svg('text', { x: px((u1 + u2) / 2) + (u1 === u2 ? 8 : 0), y: py((v1 + v2) / 2) + (u1 === u2 ? 4 : -5), class: 'face-segment-label' }, name));
   }
-  root.append(svg('circle', { cx: px(0.5), cy: py(0.5), r: region === 'o' ? 6 : 3.5, class: region === 'o' ? 'face-centre chosen' : 'face-centre' }));
+  root.append(svg('circle', { cx: px(0.5), cy: py(0.5), r: region === 'o' ? 6 : 3.5, class: region === 'o' ? 'face-center chosen' : 'face-center' }));
   for (const [name, [u, v]] of Object.entries(CORNERS)) {
     const chosen = name === corner;
     root.append(svg('circle', { cx: px(u), cy: py(v), r: chosen ? 8 : 5, class: chosen ? 'face-corner chosen' : 'face-corner' }));
     root.append(svg('text', { x: px(u) + (u ? 10 : -18), y: py(v) + (v ? -6 : 16), class: 'face-corner-label' }, name));
   }
-  // The crossing, in the face's frame (its centre at 0.5, 0.5). A line with
+  // The crossing, in the face's frame (its center at 0.5, 0.5). A line with
   // one passive axis leaves through the edge B-A (a missing N counts as
   // negative, as the region says), so it is drawn on that edge.
   root.append(svg('circle', { cx: px(0.5 + face.u), cy: py(face.v === undefined ? 0 : 0.5 + face.v), r: 5.5, class: 'face-crossing', 'data-testid': 'face-crossing' }));

@@ -30,7 +30,7 @@ const TAKEN_LINE_PX = 4;
 const OTHER_LINE_PX = 2.5;
 /** Dashes of the other candidate's outline, grid units. */
 const DASH = 0.14;
-/** Labels sit this far from their cell's centre, cells, away from the other candidate (along the slow axis). */
+/** Labels sit this far from their cell's center, cells, away from the other candidate (along the slow axis). */
 const LABEL_OFFSET = 1.05;
 
 /** "−8": a residual as the label shows it, with a true minus sign. */
@@ -69,10 +69,10 @@ export class ArcCandidateCells extends OverlayGroup {
     this.add(otherLabel, takenLabel);
   }
 
-  /** The twelve edges of the cube of half edge HALF_EDGE around `centre`. */
-  #outline(centre: THREE.Vector3, widthPx: number, dashed: boolean): void {
+  /** The twelve edges of the cube of half edge HALF_EDGE around `center`. */
+  #outline(center: THREE.Vector3, widthPx: number, dashed: boolean): void {
     const segments: number[] = [];
-    const corner = (bits: number) => [0, 1, 2].map((a) => centre.getComponent(a) + (bits & (1 << a) ? HALF_EDGE : -HALF_EDGE));
+    const corner = (bits: number) => [0, 1, 2].map((a) => center.getComponent(a) + (bits & (1 << a) ? HALF_EDGE : -HALF_EDGE));
     for (let bits = 0; bits < 8; bits++) {
       for (let a = 0; a < 3; a++) {
         if (!(bits & (1 << a))) segments.push(...corner(bits), ...corner(bits | (1 << a)));

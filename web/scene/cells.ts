@@ -2,7 +2,7 @@
  * Cells drawn straight from the trace's points: the Int32Array the worker
  * transferred becomes the GPU buffer as it is (an integer attribute read by
  * the shaders below), never converted or copied per cell. A cell is the unit
- * cube centred on an integer grid point; only its first 3 coordinates are
+ * cube centered on an integer grid point; only its first 3 coordinates are
  * drawn (a 2-axis point has z = 0).
  *
  * Two drawings of a buffer of cells:

@@ -1,5 +1,5 @@
 /**
- * Handles on a move's points (from, to, centre) in the view: buttons placed
+ * Handles on a move's points (from, to, center) in the view: buttons placed
  * over the 3D scene, so each is focusable, labelled and announced like any
  * control. Drag one with the pointer (in the floor's plane in 3D, Shift to
  * move it up and down; in the view's plane in 2D), or focus it and press the

@@ -2,7 +2,7 @@
  * A frame to read coordinates from: a grid whose lines are the cell
  * boundaries (half-integers), on the floor in 3D and in the path's plane
  * behind it in 2D (the pixel grid), x, y, z axes from the near corner of the
- * path's bounding box, and tick labels at integer coordinates (cell centres),
+ * path's bounding box, and tick labels at integer coordinates (cell centers),
  * so a cell's position can be read off the picture.
  */
 import * as THREE from 'three';
@@ -44,7 +44,7 @@ export class GridAxes extends THREE.Group {
    */
   constructor(min: THREE.Vector3, max: THREE.Vector3, axes: number) {
     super();
-    // The corner of the bounding box of the cells, not of their centres.
+    // The corner of the bounding box of the cells, not of their centers.
     const corner = min.clone().subScalar(0.5);
     const size = max.clone().sub(min).addScalar(1);
     const floor = corner.z;

@@ -4,7 +4,7 @@
  * are grid points: the point before the step and the candidates A-D), its
  * exit face split into the regions a-d by the segments e-h, the point where
  * the ideal line crosses the exit plane, and the corner the step went to
- * (the current cell's centre).
+ * (the current cell's center).
  *
  * Everything is placed from the core's columns (region, corner, face_u,
  * face_v and the axes they run along, read by exitFaceOf) and the two points
@@ -13,7 +13,7 @@
  * quadrants of the exit plane, so they are drawn on past the face, fainter.
  *
  * It is drawn over the cells (overlay-group.ts): the face runs through the
- * centres of the cells it is decided between, where the cubes would hide it.
+ * centers of the cells it is decided between, where the cubes would hide it.
  */
 import * as THREE from 'three';
 import type { ExitFace } from '../inspector/decision-figure.js';
@@ -29,13 +29,13 @@ const REGIONS = [
   { name: 'd', u: 1, v: 1, colour: PALETTE.regionD },
 ] as const;
 
-/** Where the segments e-h and the centre o are labelled, face coordinates: only the one the line crosses is. */
+/** Where the segments e-h and the center o are labelled, face coordinates: only the one the line crosses is. */
 const SEGMENT_LABELS: Record<string, [number, number]> = { e: [0, -0.25], f: [-0.25, 0], g: [0, 0.25], h: [0.25, 0], o: [0, 0] };
 
-/** Each corner's face coordinates, cells from the face's centre. */
+/** Each corner's face coordinates, cells from the face's center. */
 const CORNERS = { A: [0.5, -0.5], B: [-0.5, -0.5], C: [-0.5, 0.5], D: [0.5, 0.5] } as const;
 
-/** How far the plane around the face is drawn, cells from its centre: the crossing lies within (-1, 1). */
+/** How far the plane around the face is drawn, cells from its center: the crossing lies within (-1, 1). */
 const PLANE_EXTENT = 1;
 /** Opacity of a region on the face, and on the plane around it. */
 const FACE_OPACITY = 0.55;
@@ -62,13 +62,13 @@ export class RegionFace extends OverlayGroup {
     super();
     const { uAxis, vAxis } = face;
     const regionLabelClass = (name: string) => `scene-label face-region-label${name === face.region ? ' chosen' : ''}`;
-    // The face's centre: half a cell past the point before the step along
+    // The face's center: half a cell past the point before the step along
     // each passive axis, and where the step arrived along the active ones.
-    const centre = new THREE.Vector3();
-    for (let a = 0; a < 3; a++) centre.setComponent(a, a === uAxis ? before[a]! + face.uSign / 2 : a === vAxis ? before[a]! + face.vSign / 2 : after[a]!);
+    const center = new THREE.Vector3();
+    for (let a = 0; a < 3; a++) center.setComponent(a, a === uAxis ? before[a]! + face.uSign / 2 : a === vAxis ? before[a]! + face.vSign / 2 : after[a]!);
     const eu = unit(uAxis, face.uSign);
     const ev = vAxis === undefined ? new THREE.Vector3() : unit(vAxis, face.vSign);
-    const at = (u: number, v: number) => centre.clone().addScaledVector(eu, u).addScaledVector(ev, v);
+    const at = (u: number, v: number) => center.clone().addScaledVector(eu, u).addScaledVector(ev, v);
 
     // The unit cell: from the point before the step, one cell along each axis the way it travels.
     const travel = [0, 1, 2].map((a) => (a === uAxis ? face.uSign : a === vAxis ? face.vSign : after[a]! - before[a]!));
@@ -101,7 +101,7 @@ export class RegionFace extends OverlayGroup {
         this.#quad(at(0, 0), at(r.u / 2, 0), at(r.u / 2, r.v / 2), at(0, r.v / 2), r.colour, FACE_OPACITY);
         this.add(sceneLabel(r.name, regionLabelClass(r.name), at(r.u / 4, r.v / 4)));
       }
-      // The face's outline, and the segments e-h: the cross through its centre o.
+      // The face's outline, and the segments e-h: the cross through its center o.
       const outline = [
         [-0.5, -0.5, 0.5, -0.5],
         [0.5, -0.5, 0.5, 0.5],

@@ -31,7 +31,7 @@ import { VoxelPath } from './voxel-path.js';
 /** Vertical field of view, degrees. */
 const FOV_DEG = 35;
 /**
- * Direction from the path's centre to the camera: in front (-y), above (+z)
+ * Direction from the path's center to the camera: in front (-y), above (+z)
  * and a little to the right (+x), so x runs to the right and y recedes up and
  * to the right, as in an oblique drawing.
  */

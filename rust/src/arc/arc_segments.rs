@@ -55,7 +55,7 @@ pub const LINE_ALGORITHMS: &[&str] = &[
 /// with its own replay state and note.
 pub const MAX_CHORDS: u64 = 1 << 16;
 
-/// Fewest chords of a full circle: a triangle around the centre.
+/// Fewest chords of a full circle: a triangle around the center.
 pub const MIN_FULL_CIRCLE_CHORDS: u64 = 3;
 
 pub const SEGMENT_LENGTH: OptionSpec = OptionSpec {
@@ -284,7 +284,7 @@ pub fn trace_chords(
     // A full circle (ending where it starts, at its own height) in fewer
     // than 3 chords would be one chord from the start to itself, or two out
     // and back: no steps, or no circle. It takes at least 3, the fewest
-    // that go around the centre (the blog and Grbl would not move at all).
+    // that go around the center (the blog and Grbl would not move at all).
     let closed = spec.from == spec.to && spec.rise == 0;
     let n = if closed {
         counted.max(MIN_FULL_CIRCLE_CHORDS)

@@ -1,7 +1,7 @@
 //! Saleem & Saleem (2004), "Bresenham type fast algorithm for 3-D linear and
 //! helical movement in CNC machines", section 4: the integer circle.
 //!
-//! Relative to the centre (eq. 12-13), in the octant the current point is
+//! Relative to the center (eq. 12-13), in the octant the current point is
 //! travelling through, one axis (fast) steps every time; the other (slow)
 //! steps when that puts the point nearer the circle, judged by the integer
 //! error |x² + y² - r²| of the two candidates (eq. 6-9). Arithmetic is exact
@@ -10,7 +10,7 @@
 //! Stopping: the paper's `complete()` stops "at the nearest point" once the
 //! octant of the end is reached. voxpath's rule, which always ends exactly on
 //! the programmed end point: follow the circle until the step that reaches or
-//! passes the ray from the centre through the end point (on the last turn);
+//! passes the ray from the center through the end point (on the last turn);
 //! of the points just before and just after that ray, stop at the one
 //! strictly nearer the end (before, on a tie); then step straight to the end,
 //! moving each in-plane axis one unit toward it while it differs. Those are
@@ -48,13 +48,13 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     family: Family::Arc,
     title: "Bresenham-type circle (arcs G02/G03)",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 4, eq. (6)-(13)",
-    teaching: "Relative to the centre, the circle is x² + y² - r² = 0, and |x² + y² - r²| measures how far a grid point is from it (eq. 6). The plane is cut into eight octants; in each, one axis moves faster along the circle than the other, so it steps every time, and the only question is whether the slow axis steps too. Compare the error of the two candidates, with and without the slow step, and take the smaller (eq. 7-9): integers only, no square roots. The two errors always differ by an odd number, so they are never equal and there are no ties. Clockwise arcs (G02) run the same rule on the mirror image. The path stops at the circle point nearest the programmed end and, if the end is not on the rasterised circle, steps straight to it (correction steps).",
+    teaching: "Relative to the center, the circle is x² + y² - r² = 0, and |x² + y² - r²| measures how far a grid point is from it (eq. 6). The plane is cut into eight octants; in each, one axis moves faster along the circle than the other, so it steps every time, and the only question is whether the slow axis steps too. Compare the error of the two candidates, with and without the slow step, and take the smaller (eq. 7-9): integers only, no square roots. The two errors always differ by an odd number, so they are never equal and there are no ties. Clockwise arcs (G02) run the same rule on the mirror image. The path stops at the circle point nearest the programmed end and, if the end is not on the rasterised circle, steps straight to it (correction steps).",
     errata: &[
         "The pseudo-code handles counter-clockwise travel only, although the text introduces G02 (clockwise). voxpath runs clockwise arcs as counter-clockwise arcs of the mirror image (v -> -v), which keeps every error value.",
         "nextStep mixes x and x1, y and y1 (the start point) in the octant 1/4/5/8 branch and increments x1 instead of x in the other. voxpath uses the current point throughout.",
         "nextStep's tests `2*d*B + d < 0` (when d > 0) and `2*d*B + d > 0` (when d < 0), with d = 1 + 2*incX*x and B the error of the candidate that keeps x, drop the square of eq. (10)'s last term d² and keep the factor the text says to eliminate. Both reduce to 2B + 1 < 0, which is not eq. (10) (2B + d compared with 0) and in octant 1 moves x inward exactly when the kept cell is already inside the circle: from (5, 2) on r = 5 it keeps (5, 3), error 9, where eq. (7) takes (4, 3), error 0. voxpath decides by eq. (7) itself, comparing the two |x² + y² - r²|.",
         "nextStep tests `|x| > |y|` and then `|x| < |y|` with the updated point, so one call can make two moves, and on a diagonal |x| = |y| (for example (5, 5) on r² = 50) it makes none and the loop never ends. voxpath takes the octant ahead of the point: boundaries belong to the octant travel enters.",
-        "complete() stops \"at the nearest point\" once the end's octant is reached, so the path can end off the programmed end point. voxpath stops at the circle point nearest the end (of the two either side of the ray from the centre through it) and closes the rest with marked correction steps.",
+        "complete() stops \"at the nearest point\" once the end's octant is reached, so the path can end off the programmed end point. voxpath stops at the circle point nearest the end (of the two either side of the ray from the center through it) and closes the rest with marked correction steps.",
     ],
     columns: CircleWhy::COLUMNS,
     options: &[FROM, TO, CENTER, DIR, PLANE, TURNS, MAX_STEPS],
@@ -88,7 +88,7 @@ pub const FAST: Column = Column {
 pub const RESIDUAL_STAY: Column = Column {
     name: "residual_stay",
     kind: ColumnKind::Int,
-    doc: "u² + v² - r² (Saleem eq. 6 without its absolute value, u and v relative to the centre; > 0 outside the circle, < 0 inside) of the candidate where only the fast axis steps.",
+    doc: "u² + v² - r² (Saleem eq. 6 without its absolute value, u and v relative to the center; > 0 outside the circle, < 0 inside) of the candidate where only the fast axis steps.",
 };
 
 pub const RESIDUAL_MOVE: Column = Column {
@@ -130,7 +130,7 @@ pub const CIRCLE_COLUMNS: [Column; 7] = [
 /// Why one step of the circle was taken.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CircleWhy {
-    /// Octant 1-8 in the plane's own numbering (None at the centre, which
+    /// Octant 1-8 in the plane's own numbering (None at the center, which
     /// only a correction step could pass through).
     pub octant: Option<u8>,
     pub kind: CircleStep,
@@ -383,7 +383,7 @@ impl SaleemCircle {
 
     /// Fewer steps than this circle takes, known without running it: its
     /// full turns alone. Every circle point is within 0.5 of the circle, so
-    /// a lap around the centre is at least 2π (r - 1) long, and one step
+    /// a lap around the center is at least 2π (r - 1) long, and one step
     /// moves at most sqrt(2): more than 4 (r - 1) steps per full turn.
     pub fn steps_at_least(&self) -> u64 {
         let whole_radius = (self.radius_sq as u64).isqrt();
@@ -430,7 +430,7 @@ impl SaleemCircle {
     /// One step of Saleem's rule from the current point.
     #[inline(always)]
     fn circle_step(&mut self) -> ([i64; 2], CircleStep, u8) {
-        let k = octant_ahead(self.pos).expect("the circle never passes through its centre");
+        let k = octant_ahead(self.pos).expect("the circle never passes through its center");
         let rule = &OCTANTS[k as usize - 1];
         // The fast axis always steps (section 4: "during each iteration y
         // will always increase" in octant 1).
@@ -446,7 +446,7 @@ impl SaleemCircle {
         let slow_steps = slow_steps(residual_stay, residual_move);
         let next = if slow_steps { moved } else { stay };
         let mut last = false;
-        // The ray from the centre through the end is reached when the side
+        // The ray from the center through the end is reached when the side
         // of the end (sign of end × point) turns from negative to >= 0; the
         // turn is strictly forward, so this happens once per lap.
         let reaches_ray = cross(self.end, self.pos) < 0 && cross(self.end, next) >= 0;
@@ -510,7 +510,7 @@ impl SaleemCircle {
                 Some(6) => self.octant_run::<6>(rest, weave),
                 Some(7) => self.octant_run::<7>(rest, weave),
                 Some(8) => self.octant_run::<8>(rest, weave),
-                _ => unreachable!("the circle never passes through its centre"),
+                _ => unreachable!("the circle never passes through its center"),
             };
         }
         k
@@ -640,7 +640,7 @@ fn slow_steps(residual_stay: i64, residual_move: i64) -> bool {
 /// squares and cross products of such points are exact in i64. Every point
 /// the circle visits or tests is: it stays within a few units of the circle
 /// (or, correcting, between the circle and an end at most one unit off it),
-/// and `ArcSpec::parse` keeps the centre ± (r + 1) within ±2^30, so each
+/// and `ArcSpec::parse` keeps the center ± (r + 1) within ±2^30, so each
 /// |u|, |v| is about 2^30 at most and u² + v² stays below 2^62.
 fn local_within_bound(p: [i64; 2]) -> bool {
     within_i64_product_bound(&p)
@@ -704,7 +704,7 @@ impl Stepper for SaleemCircle {
 
     fn setup_note(&self) -> String {
         let f = &self.frame;
-        let mut s = String::from("Saleem's rule (eq. 6-11) relative to the centre (eq. 12-13)");
+        let mut s = String::from("Saleem's rule (eq. 6-11) relative to the center (eq. 12-13)");
         if f.turn.sign() < 0 {
             let v = AXIS_NAMES[f.plane.axes()[1]];
             let _ = write!(

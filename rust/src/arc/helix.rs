@@ -75,7 +75,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     teaching: "A helix is a circle in the plane while the linear (normal) axis travels. Saleem treats it as a 2D line between two axes: the arc, which needs n_c steps (counted by a dry run of the circle, the paper's dummy procedure), and the linear axis, which needs n_z. The larger one steps every iteration; the smaller one keeps a Bresenham error, adding 2 × its count each iteration and stepping when the error exceeds the larger count (then subtracting 2 × the larger count). The linear axis thus advances evenly per arc step, not per degree: the circle takes up to sqrt(2) times more steps per degree near the diagonals, so at a given angle the height differs from the true helix's by up to about 1% of a turn's rise. Method segments, as most controllers do, cuts the helix into chords with the height interpolated by angle.",
     errata: &[
         "The helical() pseudo-code has no loop: the body under `if(nz > nc)` and `else` runs once. voxpath iterates max(n_c, n_z) times.",
-        "helical() calls nextStep(currentX, currentY, r) with currentX and currentY never declared or set; they are the arc's current point relative to the centre (eq. 12-13).",
+        "helical() calls nextStep(currentX, currentY, r) with currentX and currentY never declared or set; they are the arc's current point relative to the center (eq. 12-13).",
         "The circle's own errata apply to its steps (see circle).",
     ],
     columns: HelixWhy::COLUMNS,
@@ -574,7 +574,7 @@ mod tests {
     }
 
     /// A full circle whose rule counts 1 chord (floor(2π 10 / 1000) = 0,
-    /// at least 1) is a triangle of chords around the centre, ending on the
+    /// at least 1) is a triangle of chords around the center, ending on the
     /// start: near the origin, touching 2^30 - 1 and -(2^30 - 1), drawn by
     /// arc-segments and by helix's method segments alike.
     #[test]

@@ -4,7 +4,7 @@
 //!
 //! Every arc is given by absolute `from`, `to` and `center` points (3 axes),
 //! `dir` and `plane`. The radius is that of the start point, r² = u² + v²
-//! relative to the centre, an exact integer. The end may be off that circle
+//! relative to the center, an exact integer. The end may be off that circle
 //! by at most [`RADIUS_TOLERANCE`] grid unit; each algorithm says how it
 //! closes the difference.
 
@@ -35,7 +35,7 @@ pub const CENTER: OptionSpec = OptionSpec {
     kind: OptionKind::Point,
     required: true,
     default: None,
-    doc: "Centre of the circle, absolute grid units; its coordinate on the plane's normal axis is ignored.",
+    doc: "Center of the circle, absolute grid units; its coordinate on the plane's normal axis is ignored.",
 };
 
 pub const DIR: OptionSpec = OptionSpec {
@@ -75,7 +75,7 @@ pub struct ArcSpec {
     pub plane: Plane,
     pub turn: Turn,
     pub turns: u64,
-    /// Centre, with the start's height on the normal axis.
+    /// Center, with the start's height on the normal axis.
     pub frame: Frame,
     /// r² of the start point, exact.
     pub radius_sq: i64,
@@ -137,7 +137,7 @@ impl ArcSpec {
         if end_sq == 0 {
             return Err(Error::field(
                 "to",
-                format!("is the centre in {un} and {vn}: an arc cannot end there"),
+                format!("is the center in {un} and {vn}: an arc cannot end there"),
             ));
         }
         // Every point of the circle must be a valid input point, so that the
@@ -161,7 +161,7 @@ impl ArcSpec {
             return Err(Error::field(
                 "to",
                 format!(
-                    "is {re:.3} from the centre but from is {rs:.3}: the radii differ by {:.3}, more than {RADIUS_TOLERANCE} grid unit",
+                    "is {re:.3} from the center but from is {rs:.3}: the radii differ by {:.3}, more than {RADIUS_TOLERANCE} grid unit",
                     (re - rs).abs()
                 ),
             ));
@@ -227,7 +227,7 @@ impl ArcSpec {
     pub fn describe(&self) -> String {
         let [u, v, _] = self.plane.axes();
         format!(
-            "{} in the {}; centre {}, r² = {}² + {}² = {} (r = {:.3}); sweep {:.1}°",
+            "{} in the {}; center {}, r² = {}² + {}² = {} (r = {:.3}); sweep {:.1}°",
             self.turn.describe(),
             self.plane.describe(),
             self.frame.center,
@@ -317,11 +317,11 @@ mod tests {
         );
         assert_eq!(
             e(r#"{"algorithm":"circle","from":[1,0,0],"to":[0,0,0],"center":[0,0,0]}"#),
-            "to: is the centre in x and y: an arc cannot end there"
+            "to: is the center in x and y: an arc cannot end there"
         );
         assert_eq!(
             e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,7,0],"center":[0,0,0]}"#),
-            "to: is 7.000 from the centre but from is 5.000: the radii differ by 2.000, more than 1 grid unit"
+            "to: is 7.000 from the center but from is 5.000: the radii differ by 2.000, more than 1 grid unit"
         );
         assert_eq!(
             e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0]}"#),
@@ -342,7 +342,7 @@ mod tests {
     }
 
     #[test]
-    fn the_centre_s_normal_coordinate_is_ignored() {
+    fn the_center_s_normal_coordinate_is_ignored() {
         let a = spec(r#"{"algorithm":"circle","from":[5,0,3],"to":[0,5,3],"center":[0,0,-40]}"#)
             .unwrap();
         assert_eq!(a.frame.center, Point::new(&[0, 0, 3]));

@@ -76,7 +76,7 @@ impl Plane {
     }
 }
 
-/// Direction of travel around the centre.
+/// Direction of travel around the center.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Turn {
     /// G02: decreasing angle, seen from the positive end of the normal axis.
@@ -112,13 +112,13 @@ impl Turn {
     }
 }
 
-/// Grid coordinates relative to the centre, mirrored so that travel is
+/// Grid coordinates relative to the center, mirrored so that travel is
 /// counter-clockwise: (a, b) = (u - u_c, s (v - v_c)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Frame {
     pub plane: Plane,
     pub turn: Turn,
-    /// The centre; its normal coordinate is the height of the arc's start.
+    /// The center; its normal coordinate is the height of the arc's start.
     pub center: Point,
 }
 
@@ -157,7 +157,7 @@ impl Frame {
         d
     }
 
-    /// The frame without its centre.
+    /// The frame without its center.
     pub fn orientation(&self) -> Orientation {
         Orientation {
             plane: self.plane,
@@ -166,9 +166,9 @@ impl Frame {
     }
 }
 
-/// How local axes map to grid axes: a [`Frame`] without its centre, two
+/// How local axes map to grid axes: a [`Frame`] without its center, two
 /// bytes, small enough to travel with every step's decision (a decision
-/// that carried the whole frame would copy its 56-byte centre every step).
+/// that carried the whole frame would copy its 56-byte center every step).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Orientation {
     pub plane: Plane,
@@ -289,7 +289,7 @@ pub const OCTANTS: [OctantRule; 8] = [
 
 /// The octant (1-8) counter-clockwise travel from local point (a, b) moves
 /// through: octant k holds the angles [45°(k-1), 45° k), so a point on a
-/// boundary belongs to the octant ahead of it. None at the centre.
+/// boundary belongs to the octant ahead of it. None at the center.
 ///
 /// This replaces the paper's `if(|x| > |y|) ... if(|x| < |y|)`, which does
 /// nothing on the diagonals |x| = |y|: there the octant ahead decides.
@@ -349,7 +349,7 @@ mod tests {
     }
 
     #[test]
-    fn every_point_but_the_centre_has_one_octant_ahead() {
+    fn every_point_but_the_center_has_one_octant_ahead() {
         // Boundaries belong to the octant ahead (counter-clockwise).
         let cases = [
             ([5, 0], 1),

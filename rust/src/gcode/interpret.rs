@@ -2,7 +2,7 @@
 //!
 //! Modal state (kept from line to line until changed): motion mode G0 G1 G2
 //! G3, plane G17 G18 G19 (XY, ZX, YZ), units G20 (inch) G21 (mm, the start),
-//! distance mode G90 (absolute, the start) G91 (incremental), arc centre
+//! distance mode G90 (absolute, the start) G91 (incremental), arc center
 //! mode G90.1 (I J K absolute) G91.1 (incremental, relative to the arc's
 //! start: the start), the G92 offset and the feed F.
 //!
@@ -12,19 +12,19 @@
 //! the current machine position read as X0.
 //!
 //! Arcs:
-//! - centre format, I J K: the centre's offset from the start (G91.1) or
+//! - center format, I J K: the center's offset from the start (G91.1) or
 //!   its position (G90.1) on the plane's two axes; the start and end radii
 //!   must agree within LinuxCNC's default tolerance (0.0283 mm, or 0.00283
 //!   in in G20, and 0.1 % of the radius). An end equal to the start is a
 //!   full circle;
-//! - radius format, R: the centre is on the perpendicular bisector of start
+//! - radius format, R: the center is on the perpendicular bisector of start
 //!   and end. R > 0 takes the arc of at most 180°, R < 0 the one of more
-//!   than 180°: for G02 (clockwise) R > 0 puts the centre to the right of
+//!   than 180°: for G02 (clockwise) R > 0 puts the center to the right of
 //!   the chord from start to end, seen from the positive end of the plane's
 //!   normal, for G03 to the left, and R < 0 the other side. An R arc cannot
 //!   be a full circle, and fails when the end is more than 2|R| from the
 //!   start (LinuxCNC's tolerance: 0.00127 mm);
-//! - the sweep is the angle from start to end around the centre in the
+//! - the sweep is the angle from start to end around the center in the
 //!   plane's right-handed frame (G18 is Z then X, so that G02 is clockwise
 //!   seen from +Y like G17 seen from +Z), pushed a full turn the commanded
 //!   way when it reads the other way within 5e-7 rad (Grbl's
@@ -115,10 +115,10 @@ impl Motion {
     }
 }
 
-/// How an arc's centre was given.
+/// How an arc's center was given.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ArcFormat {
-    Centre,
+    Center,
     Radius,
 }
 
@@ -128,18 +128,18 @@ pub struct ArcMm {
     pub plane: Plane,
     pub turn: Turn,
     pub format: ArcFormat,
-    /// Centre on the plane's two axes; on the normal axis, the start's.
-    pub centre_mm: [f64; MACHINE_AXES],
-    /// Distance of the start from the centre.
+    /// Center on the plane's two axes; on the normal axis, the start's.
+    pub center_mm: [f64; MACHINE_AXES],
+    /// Distance of the start from the center.
     pub radius_mm: f64,
     /// Signed angle travelled (< 0 for G2), extra turns included.
     pub sweep_rad: f64,
     /// Full turns added by P.
     pub extra_turns: u32,
-    /// The word (letter and column) each centre coordinate on the plane's
+    /// The word (letter and column) each center coordinate on the plane's
     /// two axes came from: I, J or K, or R for both; an error about the
-    /// centre names it.
-    pub centre_words: [(char, u32); 2],
+    /// center names it.
+    pub center_words: [(char, u32); 2],
 }
 
 /// One move in machine mm, with the line that asked for it.
@@ -175,7 +175,7 @@ pub struct Interpreter {
     plane: Plane,
     inches: bool,
     incremental: bool,
-    absolute_centres: bool,
+    absolute_centers: bool,
     feed_mm_per_min: Option<f64>,
     /// Programmed position, machine mm (before rounding to steps).
     position_mm: [f64; MACHINE_AXES],
@@ -192,7 +192,7 @@ impl Default for Interpreter {
             plane: Plane::Xy,
             inches: false,
             incremental: false,
-            absolute_centres: false,
+            absolute_centers: false,
             feed_mm_per_min: None,
             position_mm: [0.0; MACHINE_AXES],
             offset_mm: [0.0; MACHINE_AXES],
@@ -256,7 +256,7 @@ impl<'b> Words<'b> {
     }
 
     /// I, J and K words by axis index.
-    fn centre(&self) -> [Option<&'b Word>; MACHINE_AXES] {
+    fn center(&self) -> [Option<&'b Word>; MACHINE_AXES] {
         [self.get('I'), self.get('J'), self.get('K')]
     }
 
@@ -294,7 +294,7 @@ impl Interpreter {
         let mut plane: Option<(Plane, Code)> = None;
         let mut inches: Option<(bool, Code)> = None;
         let mut incremental: Option<(bool, Code)> = None;
-        let mut absolute_centres: Option<(bool, Code)> = None;
+        let mut absolute_centers: Option<(bool, Code)> = None;
         let mut g92: Option<Code> = None;
         let mut axis_code: Option<Code> = None;
         let mut dwell = false;
@@ -315,10 +315,10 @@ impl Interpreter {
                 ('G', 90, 0) => set_once(&mut incremental, false, code, line, "distance mode")?,
                 ('G', 91, 0) => set_once(&mut incremental, true, code, line, "distance mode")?,
                 ('G', 90, 1) => {
-                    set_once(&mut absolute_centres, true, code, line, "arc centre mode")?
+                    set_once(&mut absolute_centers, true, code, line, "arc center mode")?
                 }
                 ('G', 91, 1) => {
-                    set_once(&mut absolute_centres, false, code, line, "arc centre mode")?
+                    set_once(&mut absolute_centers, false, code, line, "arc center mode")?
                 }
                 ('G', 92, 0) => g92 = Some(*code),
                 // Units per minute: the feed mode voxpath runs in.
@@ -354,8 +354,8 @@ impl Interpreter {
         if let Some((v, _)) = incremental {
             self.incremental = v;
         }
-        if let Some((v, _)) = absolute_centres {
-            self.absolute_centres = v;
+        if let Some((v, _)) = absolute_centers {
+            self.absolute_centers = v;
         }
         if let Some(f) = words.get('F') {
             let feed = f.value * self.unit_mm();
@@ -558,7 +558,7 @@ impl Interpreter {
         }
     }
 
-    /// Centre, radius and sweep of an arc from `from_mm` to `to_mm`.
+    /// Center, radius and sweep of an arc from `from_mm` to `to_mm`.
     #[allow(clippy::too_many_arguments)]
     fn arc(
         &self,
@@ -582,7 +582,7 @@ impl Interpreter {
         };
         // Lengths in messages are in the program's units.
         let shown = |mm: f64| format!("{:.4} {units}", mm / unit);
-        let centre_words = words.centre();
+        let center_words = words.center();
         let extra_turns = match words.get('P') {
             None => 0,
             Some(p) if p.value >= 1.0 && p.value.fract() == 0.0 && p.value <= 1e6 => {
@@ -599,11 +599,11 @@ impl Interpreter {
                 ));
             }
         };
-        if let Some(k) = centre_words[n] {
+        if let Some(k) = center_words[n] {
             effects.warnings.push(Problem {
                 column: k.column,
                 message: format!(
-                    "{} ignored: an arc in the {} takes its centre from {} and {}",
+                    "{} ignored: an arc in the {} takes its center from {} and {}",
                     k.letter,
                     plane.describe(),
                     ["I", "J", "K"][u],
@@ -611,16 +611,16 @@ impl Interpreter {
                 ),
             });
         }
-        let (centre_uv, format, centre_source) = match (
+        let (center_uv, format, center_source) = match (
             words.get('R'),
-            centre_words[u].or(centre_words[v]),
+            center_words[u].or(center_words[v]),
         ) {
             (Some(r), Some(c)) => {
                 let first = if r.column < c.column { r } else { c };
                 return Err(Error::at(
                     line,
                     first.column,
-                    "R and I/J/K both give the arc's centre: use one",
+                    "R and I/J/K both give the arc's center: use one",
                 ));
             }
             (None, None) => {
@@ -628,7 +628,7 @@ impl Interpreter {
                     line,
                     column,
                     format!(
-                        "missing centre: an arc in the {} needs {} and/or {} (its centre) or R (its radius)",
+                        "missing center: an arc in the {} needs {} and/or {} (its center) or R (its radius)",
                         plane.describe(),
                         ["I", "J", "K"][u],
                         ["I", "J", "K"][v]
@@ -664,7 +664,7 @@ impl Interpreter {
                         ),
                     ));
                 }
-                // The centre is on the bisector, at h from the chord's middle;
+                // The center is on the bisector, at h from the chord's middle;
                 // (-dv, du) / chord points to the left of the chord.
                 let half = (chord / 2.0).min(radius.abs());
                 // h = sqrt(R² - half²), written so that it stays finite for
@@ -682,15 +682,15 @@ impl Interpreter {
                 )
             }
             (None, Some(first)) => {
-                let offset = |axis: usize| centre_words[axis].map_or(0.0, |w| w.value * unit);
-                let centre = if self.absolute_centres {
+                let offset = |axis: usize| center_words[axis].map_or(0.0, |w| w.value * unit);
+                let center = if self.absolute_centers {
                     // G90.1: I J K are program coordinates; an absent one is 0.
                     [offset(u) + self.offset_mm[u], offset(v) + self.offset_mm[v]]
                 } else {
                     [from_mm[u] + offset(u), from_mm[v] + offset(v)]
                 };
-                let r1 = (from_mm[u] - centre[0]).hypot(from_mm[v] - centre[1]);
-                let r2 = (to_mm[u] - centre[0]).hypot(to_mm[v] - centre[1]);
+                let r1 = (from_mm[u] - center[0]).hypot(from_mm[v] - center[1]);
+                let r2 = (to_mm[u] - center[0]).hypot(to_mm[v] - center[1]);
                 if r1 < radius_tolerance_mm || r2 < radius_tolerance_mm {
                     let which = if r1 < radius_tolerance_mm {
                         "start"
@@ -700,7 +700,7 @@ impl Interpreter {
                     return Err(Error::at(
                         line,
                         first.column,
-                        format!("zero-radius arc: the centre is at the arc's {which}"),
+                        format!("zero-radius arc: the center is at the arc's {which}"),
                     ));
                 }
                 let difference = (r1 - r2).abs();
@@ -711,7 +711,7 @@ impl Interpreter {
                         line,
                         first.column,
                         format!(
-                            "the arc's end is {} from its centre but its start is {}: the radii differ by {}, more than the tolerance ({} and 0.1% of the radius)",
+                            "the arc's end is {} from its center but its start is {}: the radii differ by {}, more than the tolerance ({} and 0.1% of the radius)",
                             shown(r2),
                             shown(r1),
                             shown(difference),
@@ -719,19 +719,19 @@ impl Interpreter {
                         ),
                     ));
                 }
-                // An absent word is 0: the centre coordinate then comes
+                // An absent word is 0: the center coordinate then comes
                 // from the start (G91.1) or the offset, so an error about it
-                // names the first centre word.
+                // names the first center word.
                 let source = |axis: usize| {
-                    centre_words[axis]
+                    center_words[axis]
                         .map_or((first.letter, first.column), |w| (w.letter, w.column))
                 };
-                (centre, ArcFormat::Centre, [source(u), source(v)])
+                (center, ArcFormat::Center, [source(u), source(v)])
             }
         };
         let (a, b) = (
-            [from_mm[u] - centre_uv[0], from_mm[v] - centre_uv[1]],
-            [to_mm[u] - centre_uv[0], to_mm[v] - centre_uv[1]],
+            [from_mm[u] - center_uv[0], from_mm[v] - center_uv[1]],
+            [to_mm[u] - center_uv[0], to_mm[v] - center_uv[1]],
         );
         let mut sweep = (a[0] * b[1] - a[1] * b[0]).atan2(a[0] * b[0] + a[1] * b[1]);
         match turn {
@@ -740,18 +740,18 @@ impl Interpreter {
             _ => {}
         }
         sweep += turn.sign() as f64 * TAU * extra_turns as f64;
-        let mut centre_mm = from_mm;
-        centre_mm[u] = centre_uv[0];
-        centre_mm[v] = centre_uv[1];
+        let mut center_mm = from_mm;
+        center_mm[u] = center_uv[0];
+        center_mm[v] = center_uv[1];
         Ok(ArcMm {
             plane,
             turn,
             format,
-            centre_mm,
+            center_mm,
             radius_mm: a[0].hypot(a[1]),
             sweep_rad: sweep,
             extra_turns,
-            centre_words: centre_source,
+            center_words: center_source,
         })
     }
 }
@@ -794,23 +794,23 @@ mod tests {
 
     #[test]
     fn r_sign_picks_the_short_or_the_long_arc() {
-        // (0,0) -> (8,0), |R| = 5: centre 3 below or above the chord's
+        // (0,0) -> (8,0), |R| = 5: center 3 below or above the chord's
         // middle; the half chord 4 = 5 sin(53.13°), so the short arc sweeps
         // 106.26° and the long one the rest of the turn.
         let short = arc(&["G2 X8 Y0 R5"]);
-        assert!(close(short.centre_mm[0], 4.0) && close(short.centre_mm[1], -3.0));
+        assert!(close(short.center_mm[0], 4.0) && close(short.center_mm[1], -3.0));
         assert!(close(
             short.sweep_rad.to_degrees(),
             -2.0 * 53.13010235415598
         ));
         let long = arc(&["G2 X8 Y0 R-5"]);
-        assert!(close(long.centre_mm[1], 3.0));
+        assert!(close(long.center_mm[1], 3.0));
         assert!(close(
             long.sweep_rad.to_degrees(),
             -(360.0 - 2.0 * 53.13010235415598)
         ));
-        // G3 mirrors G2: R > 0 puts the centre to the left, above.
-        assert!(close(arc(&["G3 X8 Y0 R5"]).centre_mm[1], 3.0));
+        // G3 mirrors G2: R > 0 puts the center to the left, above.
+        assert!(close(arc(&["G3 X8 Y0 R5"]).center_mm[1], 3.0));
     }
 
     #[test]
@@ -833,11 +833,11 @@ mod tests {
         );
         assert_eq!(
             e(&["G2 X10 Y0 I3 J0"]),
-            "line 1, column 11: the arc's end is 7.0000 mm from its centre but its start is 3.0000 mm: the radii differ by 4.0000 mm, more than the tolerance (0.0283 mm and 0.1% of the radius)"
+            "line 1, column 11: the arc's end is 7.0000 mm from its center but its start is 3.0000 mm: the radii differ by 4.0000 mm, more than the tolerance (0.0283 mm and 0.1% of the radius)"
         );
         assert_eq!(
             e(&["G2 X10 I0 J0"]),
-            "line 1, column 8: zero-radius arc: the centre is at the arc's start"
+            "line 1, column 8: zero-radius arc: the center is at the arc's start"
         );
         assert_eq!(
             e(&["G0 X1", "G92"]),
@@ -865,7 +865,7 @@ mod tests {
         );
         assert_eq!(
             e(&["G2 X1"]),
-            "line 1, column 1: missing centre: an arc in the xy plane (G17), seen from +z needs I and/or J (its centre) or R (its radius)"
+            "line 1, column 1: missing center: an arc in the xy plane (G17), seen from +z needs I and/or J (its center) or R (its radius)"
         );
         // Inch programs are told in inches.
         assert!(

@@ -15,17 +15,17 @@
 //!   (method saleem with circle, segments with arc-segments).
 //! - The arc algorithms work on the step grid: the two axes of the plane
 //!   need the same steps per mm (else a circle in mm is an ellipse in
-//!   steps), and the centre must be a grid point with the rounded start and
+//!   steps), and the center must be a grid point with the rounded start and
 //!   end within 1 step of the same radius (the arc module's tolerance). The
-//!   centre used is the grid point nearest the programmed centre's
+//!   center used is the grid point nearest the programmed center's
 //!   projection onto the perpendicular bisector of the rounded start and
 //!   end (where both radii are equal), or one of its 8 neighbours when
 //!   rounding breaks that tolerance; the move's note says when it is not
-//!   simply the rounded centre.
+//!   simply the rounded center.
 //! - On the grid the arc's sweep is measured again; the number of extra
 //!   turns is chosen so that it is nearest the programmed sweep. An arc that
 //!   turns through less than a step (its end rounds onto or just behind its
-//!   start), or whose radius is too small for any grid centre, is stepped as
+//!   start), or whose radius is too small for any grid center, is stepped as
 //!   a straight line to its end, and its note says so.
 
 use super::interpret::{ArcFormat, Interpreter, Motion, MoveMm};
@@ -252,7 +252,7 @@ pub struct ArcInfo {
     pub plane: &'static str,
     /// cw (G2) or ccw (G3).
     pub direction: &'static str,
-    /// ijk (centre) or r (radius).
+    /// ijk (center) or r (radius).
     pub format: &'static str,
     pub center_mm: [f64; MACHINE_AXES],
     pub radius_mm: f64,
@@ -260,7 +260,7 @@ pub struct ArcInfo {
     pub sweep_deg: f64,
     /// Full turns added by P.
     pub extra_turns: u32,
-    /// The grid centre the arc was stepped around; None when it was stepped
+    /// The grid center the arc was stepped around; None when it was stepped
     /// as a straight line.
     pub center_steps: Option<[i64; MACHINE_AXES]>,
 }
@@ -615,9 +615,9 @@ impl Runner {
         })
     }
 
-    /// The grid centre of an arc from `from` to `to` (steps) about
-    /// `centre` (steps, real): see the module comment.
-    fn grid_centre(from: [i64; 2], to: [i64; 2], centre: [f64; 2]) -> Option<[i64; 2]> {
+    /// The grid center of an arc from `from` to `to` (steps) about
+    /// `center` (steps, real): see the module comment.
+    fn grid_center(from: [i64; 2], to: [i64; 2], center: [f64; 2]) -> Option<[i64; 2]> {
         let (s, e) = (
             [from[0] as f64, from[1] as f64],
             [to[0] as f64, to[1] as f64],
@@ -625,13 +625,13 @@ impl Runner {
         let chord = [e[0] - s[0], e[1] - s[1]];
         let length = chord[0].hypot(chord[1]);
         let aim = if length == 0.0 {
-            centre
+            center
         } else {
             // Project onto the bisector: through the chord's middle, along
             // the chord's normal.
             let mid = [(s[0] + e[0]) / 2.0, (s[1] + e[1]) / 2.0];
             let normal = [-chord[1] / length, chord[0] / length];
-            let t = (centre[0] - mid[0]) * normal[0] + (centre[1] - mid[1]) * normal[1];
+            let t = (center[0] - mid[0]) * normal[0] + (center[1] - mid[1]) * normal[1];
             [mid[0] + t * normal[0], mid[1] + t * normal[1]]
         };
         let rounded = [aim[0].round() as i64, aim[1].round() as i64];
@@ -678,11 +678,11 @@ impl Runner {
         let helical = from.get(n) != to.get(n);
         let _ = write!(
             note,
-            ", {} {}in the {}, centre {} mm, r = {} mm, sweep {:.3}°{}",
+            ", {} {}in the {}, center {} mm, r = {} mm, sweep {:.3}°{}",
             arc.turn.describe(),
             if helical { "helix " } else { "arc " },
             arc.plane.describe(),
-            tuple(&[arc.centre_mm[u], arc.centre_mm[v]]),
+            tuple(&[arc.center_mm[u], arc.center_mm[v]]),
             (arc.radius_mm * 1e6).round() / 1e6,
             arc.sweep_rad.to_degrees(),
             match arc.extra_turns {
@@ -697,60 +697,60 @@ impl Runner {
                 Turn::CounterClockwise => "ccw",
             },
             format: match arc.format {
-                ArcFormat::Centre => "ijk",
+                ArcFormat::Center => "ijk",
                 ArcFormat::Radius => "r",
             },
-            center_mm: arc.centre_mm,
+            center_mm: arc.center_mm,
             radius_mm: arc.radius_mm,
             sweep_deg: arc.sweep_rad.to_degrees(),
             extra_turns: arc.extra_turns,
             center_steps: None,
         };
         let kind = if helical { "helix" } else { "arc" };
-        let centre_real = [arc.centre_mm[u] * spm[u], arc.centre_mm[v] * spm[v]];
+        let center_real = [arc.center_mm[u] * spm[u], arc.center_mm[v] * spm[v]];
         for (i, axis) in [u, v].into_iter().enumerate() {
-            // The grid centre is found near this point in i64: it must be
-            // on the grid (a far centre from a huge I, J, K or R would
-            // otherwise wrap).
-            if !(centre_real[i].abs() <= COORD_LIMIT as f64) {
-                let (letter, column) = arc.centre_words[i];
+            // The grid center is found near this point in i64: it must be
+            // on the grid (a far center from a huge I, J, K or R would
+            // otherwise wrap). NaN is refused too.
+            if center_real[i].is_nan() || center_real[i].abs() > COORD_LIMIT as f64 {
+                let (letter, column) = arc.center_words[i];
                 return Err(Error::at(
                     m.line,
                     column,
                     format!(
-                        "{letter}: the arc's centre {} = {} mm is beyond the machine's ±2^30 steps on {} ({} steps/mm)",
+                        "{letter}: the arc's center {} = {} mm is beyond the machine's ±2^30 steps on {} ({} steps/mm)",
                         AXIS_NAMES[axis].to_uppercase(),
-                        arc.centre_mm[axis],
+                        arc.center_mm[axis],
                         AXIS_NAMES[axis],
                         spm[axis]
                     ),
                 ));
             }
         }
-        let grid = Self::grid_centre(
+        let grid = Self::grid_center(
             [from.get(u), from.get(v)],
             [to.get(u), to.get(v)],
-            centre_real,
+            center_real,
         );
         let Some(c) = grid else {
-            let why = "its radius is too small for a centre on the step grid";
+            let why = "its radius is too small for a center on the step grid";
             let line = self.step_as_line(m, from, to, note, why)?;
             return Ok((kind, line, Some(info)));
         };
-        let mut centre = from;
-        centre.coords_mut()[u] = c[0];
-        centre.coords_mut()[v] = c[1];
-        info.center_steps = Some(centre.coords().try_into().expect("3 axes"));
-        let rounded = [centre_real[0].round() as i64, centre_real[1].round() as i64];
+        let mut center = from;
+        center.coords_mut()[u] = c[0];
+        center.coords_mut()[v] = c[1];
+        info.center_steps = Some(center.coords().try_into().expect("3 axes"));
+        let rounded = [center_real[0].round() as i64, center_real[1].round() as i64];
         if c != rounded {
             let _ = write!(
                 note,
-                "; centre moved to {centre} steps ({:.2} steps from the programmed centre) so the rounded start and end are within 1 step of one radius",
-                (c[0] as f64 - centre_real[0]).hypot(c[1] as f64 - centre_real[1])
+                "; center moved to {center} steps ({:.2} steps from the programmed center) so the rounded start and end are within 1 step of one radius",
+                (c[0] as f64 - center_real[0]).hypot(c[1] as f64 - center_real[1])
             );
         }
         let mut request = self.line_request("", from, to);
-        request.set("center", Value::from(centre.coords()));
+        request.set("center", Value::from(center.coords()));
         request.set("dir", Value::from(info.direction));
         request.set("plane", Value::from(info.plane));
         let place = |e: Error| Error::at(m.line, m.column, format!("{}", e));

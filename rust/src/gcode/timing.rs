@@ -76,7 +76,7 @@ pub fn push_move(
         let vertices = planner::arc_chords(
             m.from_mm,
             m.to_mm,
-            arc.centre_mm,
+            arc.center_mm,
             arc.plane.axes(),
             arc.radius_mm,
             arc.sweep_rad,

@@ -2,7 +2,7 @@
 //! from them, per-axis error, and a polyline for drawing.
 //!
 //! Progress along a curve (for the per-axis error of Wang's eq. 11) is the
-//! angle of the point itself around the centre: the ideal position "at the
+//! angle of the point itself around the center: the ideal position "at the
 //! same progress" is the point of the curve at the same angle. For an arc
 //! that is the radial projection, so the in-plane part of the error is the
 //! radial error split per axis; for a helix the normal-axis part is the
@@ -28,9 +28,9 @@ pub const MAX_POLYLINE_SEGMENTS: f64 = 16384.0;
 #[derive(Clone, Debug, PartialEq)]
 pub struct ArcPath {
     pub plane: Plane,
-    /// The centre; its normal coordinate is the height of the arc's plane.
+    /// The center; its normal coordinate is the height of the arc's plane.
     pub center: Point,
-    /// r², exact: the squared distance of the start point from the centre.
+    /// r², exact: the squared distance of the start point from the center.
     pub radius_sq: i64,
     /// Angle of the start, radians, atan2(v, u) in the plane's right-handed frame.
     pub start_rad: f64,
@@ -78,7 +78,7 @@ impl ArcPath {
         (self.radius_sq as f64).sqrt()
     }
 
-    /// (u, v, n) of `p` relative to the centre, in the plane's frame.
+    /// (u, v, n) of `p` relative to the center, in the plane's frame.
     fn relative(&self, p: &Point) -> [i64; 3] {
         let axes = self.plane.axes();
         axes.map(|a| p.get(a) - self.center.get(a))
@@ -108,7 +108,7 @@ impl ArcPath {
     }
 
     /// Grid coordinates of the arc's point at angle `theta` and height
-    /// `height` above the centre's normal coordinate.
+    /// `height` above the center's normal coordinate.
     fn point_at(&self, theta: f64, height: f64) -> [f64; 3] {
         let [au, av, an] = self.plane.axes();
         let r = self.radius();
@@ -174,7 +174,7 @@ impl ArcMeter<'_> {
     }
 
     /// Signed radial error ρ - r of `p` (> 0 outside), ρ = distance from the
-    /// centre axis.
+    /// center axis.
     pub fn radial_error(&self, p: &Point) -> f64 {
         let [u, v, _] = self.arc.relative(p);
         self.radial_error_of(Self::rho_sq(u, v))
@@ -194,7 +194,7 @@ impl ArcMeter<'_> {
         let [au, av, an] = self.arc.plane.axes();
         let mut phi = [0.0; MAX_AXES];
         if rho == 0.0 {
-            // The centre has no angle: compare with the start of the arc.
+            // The center has no angle: compare with the start of the arc.
             phi[au] = -self.radius * self.arc.start_rad.cos();
             phi[av] = -self.radius * self.arc.start_rad.sin();
         } else {
@@ -211,7 +211,7 @@ impl ArcMeter<'_> {
 #[derive(Clone, Debug, PartialEq)]
 pub struct HelixPath {
     pub arc: ArcPath,
-    /// Height of the helix's start above the centre's normal coordinate
+    /// Height of the helix's start above the center's normal coordinate
     /// (0 for a whole helix; fractional for a piece of one).
     pub start_height: f64,
     /// Change of height over the whole sweep, grid units.
@@ -234,7 +234,7 @@ impl HelixPath {
         }
     }
 
-    /// (a, b, h): `p` relative to the centre, h measured from the start height.
+    /// (a, b, h): `p` relative to the center, h measured from the start height.
     fn local(&self, p: &Point) -> [f64; 3] {
         let [u, v, n] = self.arc.relative(p);
         [u as f64, v as f64, n as f64 - self.start_height]
@@ -355,9 +355,9 @@ mod tests {
     #[test]
     fn radial_error_is_exact_for_a_big_circle_far_out() {
         // r = 5 * 2^18 = 1,310,720 (a 3-4-5 circle, so grid points lie on
-        // it), centred near the +2^30 corner. The naive sqrt(u² + v²) - r
+        // it), centered near the +2^30 corner. The naive sqrt(u² + v²) - r
         // rounds u² + v² ≈ 2^41 well, but the test point 2^30 from the origin
-        // would not; here the centre is subtracted first and ρ² - r² is exact.
+        // would not; here the center is subtracted first and ρ² - r² is exact.
         let k = 1i64 << 18;
         let c = (1i64 << 30) - 6 * k;
         let a = arc([c, c, c], 25 * k * k, 0.0, TAU);
@@ -395,7 +395,7 @@ mod tests {
     #[test]
     fn axis_error_is_the_radial_error_split_per_axis() {
         let a = arc([-7, -9, 2], 25, 0.0, TAU);
-        // (-7 + 6, -9 + 8) is 10 from the centre: 5 outside along (3, 4)/5.
+        // (-7 + 6, -9 + 8) is 10 from the center: 5 outside along (3, 4)/5.
         let phi = a.axis_error(&Point::new(&[-1, -1, 2]));
         assert!((phi[0] - 3.0).abs() < 1e-12 && (phi[1] - 4.0).abs() < 1e-12);
         assert_eq!(phi[2], 0.0);

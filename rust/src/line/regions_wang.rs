@@ -51,7 +51,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 };
 
 /// Where the ideal line crosses the exit face of the current cell
-/// (Wang section 2.5, Fig. 4b). Segments e-h and the centre o are ties.
+/// (Wang section 2.5, Fig. 4b). Segments e-h and the center o are ties.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Region {
     A,
@@ -131,7 +131,7 @@ pub struct RegionsWhy {
 
 impl RegionsWhy {
     /// Where the ideal line crosses the exit plane, per passive axis: cells
-    /// from the centre of the cell's exit face, positive in the direction of
+    /// from the center of the cell's exit face, positive in the direction of
     /// travel. Wang eq. (3)-(5) give d_y = d_y1 - d_y2 = 2 (y - y_i) - 1 for
     /// the crossing y at x_i + 1, and eq. (6) is M = |Δx| d_y, so
     /// y - (y_i + 1/2) = M / (2 |Δx|): the discriminant is the crossing,
@@ -171,7 +171,7 @@ impl Decision for RegionsWhy {
         Column {
             name: "region",
             kind: ColumnKind::Category { labels: REGION_LABELS },
-            doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, centre o (Wang section 2.5); none on type ② lines, which have no passive axis.",
+            doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, center o (Wang section 2.5); none on type ② lines, which have no passive axis.",
         },
         Column {
             name: "corner",
@@ -186,7 +186,7 @@ impl Decision for RegionsWhy {
         Column {
             name: "face_u",
             kind: ColumnKind::Float,
-            doc: "Where the ideal line crosses the exit plane (where the active axes arrive at this step), along the first passive axis: cells from the centre of the cell's exit face, positive the way the axis travels (face_u_axis). It is M / (2|Δx|) exactly (Wang eq. 3-6), so its sign is M's and says the region. It lies in [|Δy|/|Δx| - 1, |Δy|/|Δx|], inside (-1, 1); past ±1/2 the line left Wang's unit cell through a side face first, in the same quadrant.",
+            doc: "Where the ideal line crosses the exit plane (where the active axes arrive at this step), along the first passive axis: cells from the center of the cell's exit face, positive the way the axis travels (face_u_axis). It is M / (2|Δx|) exactly (Wang eq. 3-6), so its sign is M's and says the region. It lies in [|Δy|/|Δx| - 1, |Δy|/|Δx|], inside (-1, 1); past ±1/2 the line left Wang's unit cell through a side face first, in the same quadrant.",
         },
         Column {
             name: "face_v",
@@ -248,7 +248,7 @@ impl Decision for RegionsWhy {
                 );
             }
             Region::O => {
-                s.push_str(", so the line passes through the centre o of the exit face (a tie)")
+                s.push_str(", so the line passes through the center o of the exit face (a tie)")
             }
             _ => {
                 let (x, y) = match region {

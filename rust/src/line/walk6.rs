@@ -1,9 +1,9 @@
 //! A 6-connected (4-connected in 2D) walk along the line: the cells the
 //! ideal segment passes through, in the order it enters them. This is the
-//! voxel traversal of Amanatides & Woo (1987) between two cell centres, kept
+//! voxel traversal of Amanatides & Woo (1987) between two cell centers, kept
 //! in integers.
 //!
-//! Grid points are cell centres, so the segment leaves the cell it is in
+//! Grid points are cell centers, so the segment leaves the cell it is in
 //! through a face of axis a when it has gone half a cell plus k_a whole
 //! cells on that axis: at parameter t_a = (2·k_a + 1) / (2·|Δa|), k_a being
 //! the steps that axis has taken. The face crossed first is the smallest
@@ -26,8 +26,8 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     },
     family: Family::Line,
     title: "6-connected walk through the cells the line crosses",
-    citation: "Amanatides & Woo (1987), A Fast Voxel Traversal Algorithm for Ray Tracing, in integers between cell centres; the one-axis-per-step counterpart of the 2009 blog's greedy rule",
-    teaching: "Think of each grid point as the centre of a cell (a square, or a cube in 3D). Travelling along the ideal segment from the start centre, the line leaves its cell through one face; the walk steps into the cell beyond that face, so it visits exactly the cells the segment passes through, one axis per step, |Δx| + |Δy| + |Δz| steps in all. On axis a the line crosses its next face at the fraction t_a = (2k_a + 1)/(2|Δa|) of the way, where k_a is how many faces of that axis it has crossed already; the face with the smallest t comes first. Fractions are compared by cross-multiplying, (2k_a + 1)·|Δb| against (2k_b + 1)·|Δa|, so no rounding ever decides. When two t are equal the line passes exactly through an edge (or a corner) where cells meet, and any of those axes may go first: voxpath steps the lower axis first by default (tieAxis = higher reverses it); the cell it passes through then touches the line only at that edge. Every visited cell touches the segment, so no centre is farther than half a cell diagonal from the line: 1/sqrt(2) in 2D, sqrt(3)/2 in 3D.",
+    citation: "Amanatides & Woo (1987), A Fast Voxel Traversal Algorithm for Ray Tracing, in integers between cell centers; the one-axis-per-step counterpart of the 2009 blog's greedy rule",
+    teaching: "Think of each grid point as the center of a cell (a square, or a cube in 3D). Travelling along the ideal segment from the start center, the line leaves its cell through one face; the walk steps into the cell beyond that face, so it visits exactly the cells the segment passes through, one axis per step, |Δx| + |Δy| + |Δz| steps in all. On axis a the line crosses its next face at the fraction t_a = (2k_a + 1)/(2|Δa|) of the way, where k_a is how many faces of that axis it has crossed already; the face with the smallest t comes first. Fractions are compared by cross-multiplying, (2k_a + 1)·|Δb| against (2k_b + 1)·|Δa|, so no rounding ever decides. When two t are equal the line passes exactly through an edge (or a corner) where cells meet, and any of those axes may go first: voxpath steps the lower axis first by default (tieAxis = higher reverses it); the cell it passes through then touches the line only at that edge. Every visited cell touches the segment, so no center is farther than half a cell diagonal from the line: 1/sqrt(2) in 2D, sqrt(3)/2 in 3D.",
     errata: &[],
     columns: Walk6Why::COLUMNS,
     options: &[FROM, TO, TIE_AXIS, MAX_STEPS],
@@ -286,20 +286,20 @@ impl Stepper for Walk6 {
     }
 
     /// Every cell the walk visits contains a point of the segment, so its
-    /// centre is within half the cell's diagonal of it: √D / 2 in D axes.
+    /// center is within half the cell's diagonal of it: √D / 2 in D axes.
     fn deviation_bound(&self) -> Option<DeviationBound> {
         let dims = self.mirror.dims();
         Some(DeviationBound {
             value: (dims as f64).sqrt() / 2.0,
             why: format!(
-                "every cell visited holds a point of the segment, so its centre is within half a cell's diagonal, √{dims}/2, of the line"
+                "every cell visited holds a point of the segment, so its center is within half a cell's diagonal, √{dims}/2, of the line"
             ),
         })
     }
 
     fn setup_note(&self) -> String {
         format!(
-            "|Δ| = {}: the segment between the two cell centres crosses {} cell faces, one step each; exact edge or corner crossings step the {} axis first.{}",
+            "|Δ| = {}: the segment between the two cell centers crosses {} cell faces, one step each; exact edge or corner crossings step the {} axis first.{}",
             self.mirror.magnitudes_text(1),
             self.mirror.total(),
             self.order.label(),

@@ -48,7 +48,7 @@ pub fn trace(json: &str) -> voxpath::Trace {
     voxpath::trace_json(json).unwrap_or_else(|e| panic!("{json}: {e}"))
 }
 
-/// The catalogue's line algorithms (arcs need a centre and cannot run on from/to alone).
+/// The catalogue's line algorithms (arcs need a center and cannot run on from/to alone).
 pub fn line_algorithms() -> impl Iterator<Item = &'static voxpath::algorithms::AlgorithmInfo> {
     voxpath::algorithms::ALGORITHMS
         .iter()
