@@ -300,7 +300,7 @@ describe('golden cases from the documents', () => {
     const to = [10, 7, -6, 5, 3];
     const t = await trace({ algorithm: 'nd', from, to });
     const points = pointsOf(t);
-    const names = ['Dx', 'Dy', 'Dz', 'Da', 'Db'];
+    const names = ['discriminantX', 'discriminantY', 'discriminantZ', 'discriminantA', 'discriminantB'];
     for (let k = 0; k < t.steps; k++) {
       const x = points[k]![0]!;
       for (let axis = 1; axis < 5; axis++) {
@@ -308,7 +308,7 @@ describe('golden cases from the documents', () => {
         const done = Math.abs(points[k]![axis]!);
         expect(t.decisions[names[axis]!]![k]).toBe(2 * d * x - 2 * 10 * done + 2 * d - 10);
       }
-      expect(t.decisions.Dx![k]).toBeNaN();
+      expect(t.decisions.discriminantX![k]).toBeNaN();
     }
     // In three axes it is Wang's 3D rule.
     expect(pointsOf(await trace({ algorithm: 'nd', from: [0, 0, 0], to: [10, 7, 6] }))).toEqual(
@@ -360,8 +360,8 @@ describe('golden cases from the documents', () => {
     const points = pointsOf(t);
     for (let k = 0; k < t.steps; k++) {
       const [x, y] = points[k]!;
-      expect(t.decisions.dist2X![k]).toBe(x! < 8 ? (8 - x! - 1) ** 2 + (3 - y!) ** 2 : NaN);
-      expect(t.decisions.dist2Y![k]).toBe(y! < 3 ? (8 - x!) ** 2 + (3 - y! - 1) ** 2 : NaN);
+      expect(t.decisions.distSqX![k]).toBe(x! < 8 ? (8 - x! - 1) ** 2 + (3 - y!) ** 2 : NaN);
+      expect(t.decisions.distSqY![k]).toBe(y! < 3 ? (8 - x!) ** 2 + (3 - y! - 1) ** 2 : NaN);
     }
     // It strays with length: further from the line on a longer move of the same slope.
     const long = await trace({ algorithm: 'greedy', from: [0, 0], to: [800, 300] });

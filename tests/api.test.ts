@@ -29,8 +29,8 @@ describe('trace (regions)', () => {
     // exit plane x = x_i + 1, and the face's center at (y_i + 1/2, z_i + 1/2),
     // (x_i, y_i, z_i) being the point before the step.
     const before = Array.from({ length: t.steps }, (_, k) => t.point(k));
-    const u = Array.from(t.decisions.face_u!);
-    const v = Array.from(t.decisions.face_v!);
+    const u = Array.from(t.decisions.faceU!);
+    const v = Array.from(t.decisions.faceV!);
     before.forEach(([x, y, z], k) => {
       expect(u[k]).toBeCloseTo(0.7 * (x! + 1) - (y! + 0.5), 12);
       expect(v[k]).toBeCloseTo(0.6 * (x! + 1) - (z! + 0.5), 12);
@@ -41,24 +41,24 @@ describe('trace (regions)', () => {
       const column = t.columns.find((c) => c.name === name)!;
       return Array.from(t.decisions[name]!, (i) => labelsOf(column)[i]);
     };
-    expect(new Set(axis('face_u_axis'))).toEqual(new Set(['+y']));
-    expect(new Set(axis('face_v_axis'))).toEqual(new Set(['+z']));
+    expect(new Set(axis('faceUAxis'))).toEqual(new Set(['+y']));
+    expect(new Set(axis('faceVAxis'))).toEqual(new Set(['+z']));
     // Mirrored, the coordinates are the same and the axes point the way the line goes.
     const mirrored = await trace({ ...LINE, to: [-10, 7, -6] });
-    expect(Array.from(mirrored.decisions.face_u!)).toEqual(u);
-    expect(Array.from(mirrored.decisions.face_v!)).toEqual(v);
-    const vAxis = mirrored.columns.find((c) => c.name === 'face_v_axis')!;
-    expect(labelsOf(vAxis)[mirrored.decisions.face_v_axis![0]!]).toBe('-z');
+    expect(Array.from(mirrored.decisions.faceU!)).toEqual(u);
+    expect(Array.from(mirrored.decisions.faceV!)).toEqual(v);
+    const vAxis = mirrored.columns.find((c) => c.name === 'faceVAxis')!;
+    expect(labelsOf(vAxis)[mirrored.decisions.faceVAxis![0]!]).toBe('-z');
   });
 
   it('has one face coordinate with one passive axis, and none on a type ② line', async () => {
     // (0,0,0)->(7,7,3): x and y active, z passive; the crossing is N/(2·7) along the exit edge.
     const one = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [7, 7, 3] });
-    expect(one.decisions.face_u![0]).toBeCloseTo((2 * 3 - 7) / 14, 15);
-    expect(Number.isNaN(one.decisions.face_v![0])).toBe(true);
+    expect(one.decisions.faceU![0]).toBeCloseTo((2 * 3 - 7) / 14, 15);
+    expect(Number.isNaN(one.decisions.faceV![0])).toBe(true);
     const diagonal = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [4, 4, 4] });
-    expect(Array.from(diagonal.decisions.face_u!).every(Number.isNaN)).toBe(true);
-    expect(diagonal.decisions.face_u_axis![0]).toBe(NO_VALUE);
+    expect(Array.from(diagonal.decisions.faceU!).every(Number.isNaN)).toBe(true);
+    expect(diagonal.decisions.faceUAxis![0]).toBe(NO_VALUE);
   });
 
   it('states the deviation bound its algorithm guarantees, and none where it guarantees none', async () => {
@@ -174,11 +174,55 @@ describe('algorithms()', () => {
   it('describes regions with its citation, columns and options', async () => {
     const regions = (await algorithms()).find((a) => a.id === 'regions')!;
     expect(regions.citation).toContain('Wang');
-    expect(regions.columns.map((c) => c.name)).toEqual(['M', 'N', 'region', 'corner', 'tie', 'face_u', 'face_v', 'face_u_axis', 'face_v_axis']);
+    expect(regions.columns.map((c) => c.name)).toEqual(['M', 'N', 'region', 'corner', 'tie', 'faceU', 'faceV', 'faceUAxis', 'faceVAxis']);
     expect(regions.options.map((o) => o.name)).toEqual(['from', 'to', 'tie', 'gcd', 'maxSteps']);
     expect(regions.family).toBe('line');
     expect(regions.defaultTie).toBe('advance');
     expect(regions.errata.some((e) => e.includes('Table 2'))).toBe(true);
+  });
+});
+
+describe('column names (README, Conventions)', () => {
+  // A column name is camelCase, a per-axis quantity ends in its axis in
+  // upper case, and a single capital letter is a paper's symbol (Wang's M, N).
+  const CAMEL = /^([a-z][a-zA-Z0-9]*|[A-Z])$/;
+
+  it('every column and option of every algorithm follows the convention', async () => {
+    for (const a of await algorithms()) {
+      for (const c of a.columns) expect(c.name, `${a.id}: ${c.name}`).toMatch(CAMEL);
+      for (const o of a.options) expect(o.name, `${a.id}: ${o.name}`).toMatch(CAMEL);
+    }
+  });
+
+  it('a renamed column declares its former name, and decisions still answer to it, deprecated', async () => {
+    const regions = (await algorithms()).find((a) => a.id === 'regions')!;
+    expect(regions.columns.filter((c) => c.formerName).map((c) => [c.formerName, c.name])).toEqual([
+      ['face_u', 'faceU'],
+      ['face_v', 'faceV'],
+      ['face_u_axis', 'faceUAxis'],
+      ['face_v_axis', 'faceVAxis'],
+    ]);
+    const t = await trace(LINE);
+    expect(t.decisions.face_u).toBe(t.decisions.faceU);
+    const range = t.decisionsInRange(2, 5);
+    expect(Array.from(range.face_v_axis!)).toEqual(Array.from(range.faceVAxis!));
+    // The old names are read, never listed: JSON and CSV carry the new ones only.
+    expect(Object.keys(range)).toEqual(regions.columns.map((c) => c.name));
+    expect(Object.keys(traceToJson(t).decisions)).not.toContain('face_u');
+    expect(traceToCsv(t).split('\n')[0]).not.toContain('face_u');
+    // A column that was never renamed has no former name, and no alias.
+    expect(regions.columns.find((c) => c.name === 'M')!.formerName).toBeUndefined();
+    const nd = await trace({ algorithm: 'nd', from: [0, 0, 0, 0], to: [9, 4, 2, 1] });
+    expect(Array.from(nd.decisions.Dy!)).toEqual(Array.from(nd.decisions.discriminantY!));
+  });
+
+  it('the columns a figure draws as error terms and threshold say so by role', async () => {
+    const roles = Object.fromEntries(
+      (await algorithms()).map((a) => [a.id, a.columns.filter((c) => c.role).map((c) => `${c.name}:${c.role}`)]),
+    );
+    expect(roles.bresenham3d).toEqual(['errorX:errorTerm', 'errorY:errorTerm', 'errorZ:errorTerm', 'threshold:threshold']);
+    expect(roles.bresenham2d).toEqual(['error:errorTerm', 'threshold:threshold']);
+    expect(roles.regions).toEqual([]);
   });
 });
 
@@ -193,7 +237,7 @@ describe('decision values that do not apply to a step', () => {
     const t = (await runGcode(PROGRAM, { stepsPerMm: 4 })).trace;
     expect(t.steps).toBe(10);
     expect(Array.from(t.decisions.octant!.subarray(0, 4))).toEqual([NO_VALUE, NO_VALUE, NO_VALUE, NO_VALUE]);
-    expect(Array.from(t.decisions.slow_steps!.subarray(0, 4))).toEqual([NO_VALUE, NO_VALUE, NO_VALUE, NO_VALUE]);
+    expect(Array.from(t.decisions.slowSteps!.subarray(0, 4))).toEqual([NO_VALUE, NO_VALUE, NO_VALUE, NO_VALUE]);
     expect(Array.from(t.decisions.region!.subarray(4))).toEqual(Array(6).fill(NO_VALUE));
     expect(Array.from(t.decisions.tie!.subarray(4))).toEqual(Array(6).fill(NO_VALUE));
     expect(Array.from(t.decisions.M!.subarray(4)).every(Number.isNaN)).toBe(true);
@@ -210,7 +254,7 @@ describe('decision values that do not apply to a step', () => {
     expect(json.region!.slice(3, 5)).toEqual(['b', null]);
     expect(json.tie!.slice(3, 5)).toEqual([false, null]);
     const csv = traceToCsv(t).split('\n');
-    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,octant,fast,residual_stay,residual_move,slow_steps,correction,other_candidate,deviation');
+    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,faceU,faceV,faceUAxis,faceVAxis,octant,fast,residualStay,residualMove,slowSteps,correction,otherCandidate,deviation');
     // Row 0 has no decision yet; row 1 is regions' step, row 5 the circle's
     // first. Regions on (0,0,0)->(4,2,0): M = 2·2 - 4 = 0 and N = 2·0 - 4 = -4
     // (eq. 10), so the line crosses the exit face at (0, -4/8) (M and N over 2|Δx|).

@@ -174,13 +174,13 @@ describe('arc-segments chord counts', () => {
 
 /**
  * Saleem's two candidates (section 4, eq. 6-7) as the core hands them to the
- * page: at each arc step, the point reached and the cell `other_candidate`
+ * page: at each arc step, the point reached and the cell `otherCandidate`
  * names from it. Checked here against u² + v² - r² worked out from the
  * points alone: the residual columns are those two cells' residuals, the
  * reached one is nearer 0, and the two differ by one in-plane step.
  */
 describe("the circle's candidates", () => {
-  const DECIDING = ARCS.filter((a) => a.columns.some((c) => c.name === 'other_candidate'));
+  const DECIDING = ARCS.filter((a) => a.columns.some((c) => c.name === 'otherCandidate'));
 
   it('are given by circle and helix; arc-segments steps chords, which have none', () => {
     expect(DECIDING.map((a) => a.id).sort()).toEqual(['circle', 'helix']);
@@ -190,10 +190,10 @@ describe("the circle's candidates", () => {
     // The same quarter as the Rust golden (circle_saleem.rs): (stay, move)
     // residuals per step, and the cell not taken from the one reached.
     const t = await trace({ algorithm: 'circle', from: [5, 0, 0], to: [0, 5, 0], center: [0, 0, 0] });
-    expect(Array.from(t.decisions.residual_stay!)).toEqual([1, 4, 9, 7, -5, 1, 0]);
-    expect(Array.from(t.decisions.residual_move!)).toEqual([-8, -5, 0, 0, 4, 12, 11]);
-    const other = t.columns.find((c) => c.name === 'other_candidate')!;
-    expect(Array.from(t.decisions.other_candidate!, (v) => readDecision(other, v))).toEqual(['-x', '-x', '+x', '+x', '-y', '+y', '+y']);
+    expect(Array.from(t.decisions.residualStay!)).toEqual([1, 4, 9, 7, -5, 1, 0]);
+    expect(Array.from(t.decisions.residualMove!)).toEqual([-8, -5, 0, 0, 4, 12, 11]);
+    const other = t.columns.find((c) => c.name === 'otherCandidate')!;
+    expect(Array.from(t.decisions.otherCandidate!, (v) => readDecision(other, v))).toEqual(['-x', '-x', '+x', '+x', '-y', '+y', '+y']);
   });
 
   it.each(DECIDING.flatMap((a) => PLANES.flatMap((plane) => (['ccw', 'cw'] as const).map((dir) => [a.id, plane, dir, a] as const))))(
@@ -205,13 +205,13 @@ describe("the circle's candidates", () => {
       const from = inPlane(plane, [-13, 15, 3]);
       const to = inPlane(plane, dir === 'ccw' ? [-24, 4, 3] : [-24, 18, 3]);
       const t = await trace(arcOptions(a, plane, from, to, c, dir, 5));
-      const other = t.columns.find((col) => col.name === 'other_candidate')!;
+      const other = t.columns.find((col) => col.name === 'otherCandidate')!;
       const residual = (p: number[]) => (p[ua]! - c[ua]!) ** 2 + (p[va]! - c[va]!) ** 2 - 65;
       let decided = 0;
       for (let k = 0; k < t.steps; k++) {
-        const label = readDecision(other, t.decisions.other_candidate![k]!);
+        const label = readDecision(other, t.decisions.otherCandidate![k]!);
         if (label === null) {
-          expect(t.decisions.residual_stay![k]).toBeNaN();
+          expect(t.decisions.residualStay![k]).toBeNaN();
           continue;
         }
         decided++;
@@ -219,8 +219,8 @@ describe("the circle's candidates", () => {
         const axis = 'xyz'.indexOf(String(label)[1]!);
         expect([ua, va]).toContain(axis);
         const cell = reached.map((v, i) => (i === axis ? v + (String(label)[0] === '-' ? -1 : 1) : v));
-        const moved = t.decisions.slow_steps![k] === 1;
-        expect([t.decisions.residual_stay![k], t.decisions.residual_move![k]]).toEqual(moved ? [residual(cell), residual(reached)] : [residual(reached), residual(cell)]);
+        const moved = t.decisions.slowSteps![k] === 1;
+        expect([t.decisions.residualStay![k], t.decisions.residualMove![k]]).toEqual(moved ? [residual(cell), residual(reached)] : [residual(reached), residual(cell)]);
         expect(Math.abs(residual(reached))).toBeLessThan(Math.abs(residual(cell)));
       }
       expect(decided).toBeGreaterThan(10);

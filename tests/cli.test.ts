@@ -29,7 +29,7 @@ describe('voxpath trace', () => {
   it('defaults to JSON and prints CSV and a table for people', () => {
     expect(JSON.parse(voxpath(TRACE).stdout).steps).toBe(10);
     const csv = voxpath([...TRACE, '--format', 'csv']).stdout.trim().split('\n');
-    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,deviation');
+    expect(csv[0]).toBe('k,x,y,z,M,N,region,corner,tie,faceU,faceV,faceUAxis,faceVAxis,deviation');
     expect(csv).toHaveLength(12);
     expect(csv[5]).toBe('4,4,3,2,6,-2,a,A,0,0.3,-0.1,+y,+z,0.441129');
     const table = voxpath([...TRACE, '--format', 'table']).stdout;
@@ -117,7 +117,7 @@ describe('voxpath trace: decision values that do not apply', () => {
   it('prints null in JSON, an empty cell in CSV and - in the table', () => {
     const json = JSON.parse(voxpath(TYPE_2).stdout);
     const none = [null, null, null];
-    expect(json.decisions).toEqual({ M: none, N: none, region: none, corner: none, tie: [false, false, false], face_u: none, face_v: none, face_u_axis: none, face_v_axis: none });
+    expect(json.decisions).toEqual({ M: none, N: none, region: none, corner: none, tie: [false, false, false], faceU: none, faceV: none, faceUAxis: none, faceVAxis: none });
     const csv = voxpath([...TYPE_2, '--format', 'csv']).stdout.trim().split('\n');
     expect(csv.slice(1)).toEqual(['0,0,0,0,,,,,,,,,,0.000000', '1,1,1,1,,,,,0,,,,,0.000000', '2,2,2,2,,,,,0,,,,,0.000000', '3,3,3,3,,,,,0,,,,,0.000000']);
     const table = voxpath([...TYPE_2, '--format', 'table']).stdout.split('\n');

@@ -25,8 +25,8 @@ describe('compare()', () => {
       [5, 3, 3],
     ]);
     expect(d.aWhy!.stepIndex).toBe(4);
-    expect(d.aWhy!.decisions).toEqual({ M: 0, N: 10, region: 'g', corner: 'D', tie: true, face_u: 0, face_v: 0.5, face_u_axis: '+y', face_v_axis: '+z' });
-    expect(Object.keys(d.aWhy!.decisions)).toEqual(['M', 'N', 'region', 'corner', 'tie', 'face_u', 'face_v', 'face_u_axis', 'face_v_axis']);
+    expect(d.aWhy!.decisions).toEqual({ M: 0, N: 10, region: 'g', corner: 'D', tie: true, faceU: 0, faceV: 0.5, faceUAxis: '+y', faceVAxis: '+z' });
+    expect(Object.keys(d.aWhy!.decisions)).toEqual(['M', 'N', 'region', 'corner', 'tie', 'faceU', 'faceV', 'faceUAxis', 'faceVAxis']);
     expect(d.bWhy!.decisions).toMatchObject({ errorX: null, errorY: 10, errorZ: 20, threshold: 10, major: 'x', tie: true });
     // The explanations are the traces' own.
     const [a, b] = await Promise.all([trace({ algorithm: 'regions', ...LINE }), trace({ algorithm: 'bresenham3d', ...LINE })]);
@@ -50,7 +50,7 @@ describe('compare()', () => {
       [5, 1, 0],
       [4, 1, 0],
     ]);
-    expect(c.firstDifference!.aWhy!.decisions).toMatchObject({ octant: '1', fast: 'y', residual_stay: 1, residual_move: -8, other_candidate: '-x' });
+    expect(c.firstDifference!.aWhy!.decisions).toMatchObject({ octant: '1', fast: 'y', residualStay: 1, residualMove: -8, otherCandidate: '-x' });
     expect(c.onlyInA.cells).toEqual([
       [5, 1, 0],
       [5, 2, 0],

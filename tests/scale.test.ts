@@ -68,7 +68,7 @@ describe('long paths within 16 bytes per step', () => {
     const middle = Math.floor(t.steps / 2);
     const decisions = t.decisionsInRange(middle, middle + RANGE);
     const deviation = t.deviationInRange(middle, middle + RANGE);
-    expect(decisions.arc_steps).toHaveLength(RANGE);
+    expect(decisions.arcSteps).toHaveLength(RANGE);
     // Saleem's circle rule keeps every point within 0.5 of the circle; the
     // height lags the ideal helix by up to about 1% of a turn's rise (1000).
     expect(Math.max(...deviation)).toBeLessThan(0.5 + 0.0105 * 1000 + 1);

@@ -490,7 +490,7 @@ mod request_tests {
         assert_eq!(
             decisions(&a),
             serde_json::json!({"M": 0, "N": 10, "region": "g", "corner": "D", "tie": true,
-                "face_u": 0.0, "face_v": 0.5, "face_u_axis": "+y", "face_v_axis": "+z"})
+                "faceU": 0.0, "faceV": 0.5, "faceUAxis": "+y", "faceVAxis": "+z"})
         );
         assert_eq!(
             a.decisions
@@ -503,10 +503,10 @@ mod request_tests {
                 "region",
                 "corner",
                 "tie",
-                "face_u",
-                "face_v",
-                "face_u_axis",
-                "face_v_axis"
+                "faceU",
+                "faceV",
+                "faceUAxis",
+                "faceVAxis"
             ]
         );
         // Saleem's errorY = 2|Δy| k - 2|Δx| (steps so far) = 2·7·5 - 2·10·3
@@ -543,8 +543,8 @@ mod request_tests {
             b.explanation,
             "Squared distance to the goal after moving x 166, y 172, z 174: x is the smallest, so x steps to (x+1, y, z)."
         );
-        assert_eq!(decisions(&b)["dist2Y"], 172.0);
-        assert_eq!(decisions(&b)["dist2A"], Value::Null);
+        assert_eq!(decisions(&b)["distSqY"], 172.0);
+        assert_eq!(decisions(&b)["distSqA"], Value::Null);
         assert_eq!(decisions(&d.a_why.unwrap())["region"], "d");
         // Greedy moves one axis per step: 23 steps against 10.
         assert_eq!((c.a.steps, c.b.steps), (10, 23));
@@ -569,7 +569,7 @@ mod request_tests {
         );
         assert_eq!(
             decisions(&a),
-            serde_json::json!({"octant": "1", "fast": "y", "residual_stay": 1, "residual_move": -8, "slow_steps": false, "correction": false, "other_candidate": "-x"})
+            serde_json::json!({"octant": "1", "fast": "y", "residualStay": 1, "residualMove": -8, "slowSteps": false, "correction": false, "otherCandidate": "-x"})
         );
         assert_eq!(
             b.explanation,

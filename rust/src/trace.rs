@@ -76,12 +76,28 @@ impl ColumnKind {
     }
 }
 
+/// What part a column plays in its step's decision, where a view draws that
+/// part: the page finds the columns it draws by role, never by name.
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
+#[serde(rename_all = "camelCase")]
+pub enum ColumnRole {
+    /// An error term the rule compares with the trace's `threshold` column
+    /// (Bresenham's `error`, `errorX`, ...): an axis steps when its term
+    /// passes the threshold.
+    ErrorTerm,
+    /// The value the error terms are compared with.
+    Threshold,
+}
+
 /// One decision column: a quantity the algorithm computes at each step.
 /// Where it does not apply to a step it holds NaN (int, float) or
 /// [`NO_VALUE`] (category, flag).
 #[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
+#[serde(rename_all = "camelCase")]
 pub struct Column {
-    /// Column name, as in the paper where the paper names it (M, N, ...).
+    /// Column name, camelCase, with a per-axis quantity's axis as an upper-case
+    /// suffix (errorX); a single-letter symbol of the source paper keeps the
+    /// paper's letter (Wang's M and N). See the README's Conventions.
     pub name: &'static str,
     #[serde(flatten)]
     // Named as a type, not an interface to extend: ColumnKind is a union.
@@ -89,6 +105,43 @@ pub struct Column {
     pub kind: ColumnKind,
     /// One sentence: what the value is and where it comes from.
     pub doc: &'static str,
+    /// The part it plays, for the columns a view draws as such.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub role: Option<ColumnRole>,
+    /// The name it had before it was renamed to [`Column::name`]: the JS
+    /// API's decision objects still answer to it (deprecated) until the
+    /// release the README's Conventions name; CSV and JSON use `name` only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub former_name: Option<&'static str>,
+}
+
+impl Column {
+    /// A column with no role and no former name.
+    pub const fn new(name: &'static str, kind: ColumnKind, doc: &'static str) -> Column {
+        Column {
+            name,
+            kind,
+            doc,
+            role: None,
+            former_name: None,
+        }
+    }
+
+    /// This column, playing `role`.
+    pub const fn with_role(self, role: ColumnRole) -> Column {
+        Column {
+            role: Some(role),
+            ..self
+        }
+    }
+
+    /// This column, renamed from `former_name`.
+    pub const fn formerly(self, former_name: &'static str) -> Column {
+        Column {
+            former_name: Some(former_name),
+            ..self
+        }
+    }
 }
 
 /// `first` then `second`, as one array of `N` = A + B columns (checked when

@@ -178,7 +178,7 @@ fn column(t: &Trace, name: &str) -> Vec<f64> {
 }
 
 /// Checks each arc step's two candidates (Saleem section 4, eq. 6-7): the
-/// point reached and the cell `other_candidate` names from it differ by one
+/// point reached and the cell `otherCandidate` names from it differ by one
 /// step of the in-plane axis that is not the fast one; the stay candidate is
 /// one fast-axis step from the point before; the residual columns equal
 /// u² + v² - r² worked out here at those two cells; and the reached one has
@@ -186,11 +186,11 @@ fn column(t: &Trace, name: &str) -> Vec<f64> {
 /// helix's linear-only steps) have no other candidate.
 fn check_candidates(arc: &Arc, t: &Trace, p: &[[i64; 3]]) -> Result<(), TestCaseError> {
     let [stay_col, move_col, slow_col, fast_col, other_col] = [
-        "residual_stay",
-        "residual_move",
-        "slow_steps",
+        "residualStay",
+        "residualMove",
+        "slowSteps",
         "fast",
-        "other_candidate",
+        "otherCandidate",
     ]
     .map(|name| column(t, name));
     let [u, v, _] = arc.axes();
@@ -408,7 +408,7 @@ proptest! {
         // takes max(n_c, n_z) steps.
         let n_c = circle.steps();
         prop_assert_eq!(helix.steps(), n_c.max(rise.unsigned_abs()));
-        let arc_steps = column(&helix, "arc_steps").iter().filter(|&&f| f == 1.0).count();
+        let arc_steps = column(&helix, "arcSteps").iter().filter(|&&f| f == 1.0).count();
         prop_assert_eq!(arc_steps as u64, n_c);
         // The linear axis only ever moves toward its end.
         for w in p.windows(2) {

@@ -276,9 +276,9 @@ fn a_program_s_line_steps_have_no_circle_values_and_its_arc_steps_no_regions_val
     for name in [
         "octant",
         "fast",
-        "slow_steps",
+        "slowSteps",
         "correction",
-        "other_candidate",
+        "otherCandidate",
     ] {
         assert_eq!(column(name)[..4], [none; 4], "{name}");
         assert!(column(name)[4..].iter().all(|&v| v != none), "{name}");

@@ -158,8 +158,8 @@ describe('trace mode', () => {
 
   it('draws the exit face in the view when "Decision in 3D" is on, and keeps that in the link', async () => {
     // Step 3 from (2,1,1): the line crosses x = 3 at y = 2.1, z = 1.8 (Wang
-    // eq. 2), 0.6 and 0.3 cells from the face's center (face_u = M/20 = 0.6,
-    // face_v = N/20 = 0.3). The camera looks at that face from close by.
+    // eq. 2), 0.6 and 0.3 cells from the face's center (faceU = M/20 = 0.6,
+    // faceV = N/20 = 0.3). The camera looks at that face from close by.
     const p = await openPage('?from=0,0,0&to=10,7,6&step=3&camera=6.5,-2.5,4.2,3,1.5,1.5,1');
     const { page } = p;
     await steps(page, 10);
@@ -288,7 +288,7 @@ describe('trace mode', () => {
     await page.getByTestId('export-csv').click();
     const download = await downloading;
     const csv = await new Response((await download.createReadStream()) as unknown as ReadableStream).text();
-    expect(csv.split('\n')[0]).toBe('k,x,y,z,M,N,region,corner,tie,face_u,face_v,face_u_axis,face_v_axis,deviation');
+    expect(csv.split('\n')[0]).toBe('k,x,y,z,M,N,region,corner,tie,faceU,faceV,faceUAxis,faceVAxis,deviation');
     expect(csv.split('\n')[4]).toMatch(/^3,3,2,2,12,6,d,D,0,0\.6,0\.3,\+y,\+z,0\.2205/);
     expect(p.problems()).toEqual([]);
     await p.close();

@@ -99,7 +99,9 @@ export class Trace {
    * core. Category and flag columns are Uint8Array (category values index the
    * column's labels; NO_VALUE where a column does not apply to a step);
    * numeric columns are Float64Array (NaN where it does not apply).
-   * `readDecision` turns a value into what people read.
+   * `readDecision` turns a value into what people read. A renamed column
+   * still answers to its former name (`ColumnSpec.formerName`), deprecated:
+   * see answerFormerName.
    */
   decisionsInRange(from: number, to: number): DecisionColumns {
     checkRange('step indices', from, to, this.steps);
@@ -115,6 +117,7 @@ export class Trace {
         out[c.name]!.set(flat.subarray(i * (end - k), (i + 1) * (end - k)), k - from);
       });
     }
+    for (const c of this.columns) if (c.formerName !== undefined) answerFormerName(out, c.formerName, c.name);
     return out;
   }
 
@@ -204,4 +207,16 @@ export async function trace(options: TraceOptions): Promise<Trace> {
 /** Every algorithm voxpath runs, with citation, teaching text, columns and options. */
 export async function algorithms(): Promise<AlgorithmInfo[]> {
   return (await catalogue()).algorithms;
+}
+
+/**
+ * Lets `decisions[formerName]` read the column now called `name`: a column
+ * renamed after 0.1.0 (face_u -> faceU, ...) answers to its old name through
+ * the 0.2 releases; 0.3.0 drops these aliases (README, Conventions).
+ * Deprecated.
+ * Not enumerable, so Object.keys, JSON and the CSV and JSON writers show the
+ * new name only.
+ */
+function answerFormerName(decisions: DecisionColumns, formerName: string, name: string): void {
+  Object.defineProperty(decisions, formerName, { get: () => decisions[name], enumerable: false, configurable: true });
 }

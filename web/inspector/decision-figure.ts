@@ -4,11 +4,11 @@
  * replayed:
  * - region and corner (Wang's discriminate regions): the exit face with its
  *   regions a-d, the segments e-h and the center o between them, the region
- *   the core says the line crosses, the point where it crosses (face_u,
- *   face_v) and the corner A-D it picked;
+ *   the core says the line crosses, the point where it crosses (faceU,
+ *   faceV) and the corner A-D it picked;
  * - threshold and error columns (Bresenham): one bar per error term against
  *   the threshold it is compared with;
- * - residual_stay and residual_move (Saleem's circle): the residual of each
+ * - residualStay and residualMove (Saleem's circle): the residual of each
  *   candidate, the one the step took marked.
  * A G-code trace has the columns of both its algorithms; each step gets the
  * figure of the algorithm that took it.
@@ -38,9 +38,9 @@ function label(columns: readonly ColumnSpec[], name: string, value: number): str
 
 /**
  * The exit face of a regions decision, read from the core's columns: the
- * region and corner, where the ideal line crosses the exit plane (face_u,
- * face_v) and the grid axis and direction each face coordinate runs along
- * (face_u_axis, face_v_axis). Undefined when the trace has no such columns
+ * region and corner, where the ideal line crosses the exit plane (faceU,
+ * faceV) and the grid axis and direction each face coordinate runs along
+ * (faceUAxis, faceVAxis). Undefined when the trace has no such columns
  * or the step no face (a type ② line, or a step of another algorithm in a
  * G-code program).
  */
@@ -71,20 +71,20 @@ function signedAxis(text: string | undefined): { axis: number; sign: 1 | -1 } | 
 export const hasColumns = (columns: readonly ColumnSpec[], names: readonly string[]) => names.every((name) => columns.some((c) => c.name === name));
 
 /** The columns exitFaceOf reads. */
-export const EXIT_FACE_COLUMNS = ['region', 'corner', 'face_u', 'face_v', 'face_u_axis', 'face_v_axis'] as const;
+export const EXIT_FACE_COLUMNS = ['region', 'corner', 'faceU', 'faceV', 'faceUAxis', 'faceVAxis'] as const;
 
 export function exitFaceOf(columns: readonly ColumnSpec[], row: DecisionRow | undefined): ExitFace | undefined {
   if (!row || !hasColumns(columns, EXIT_FACE_COLUMNS)) return undefined;
   const region = label(columns, 'region', row.region!);
   const corner = label(columns, 'corner', row.corner!);
-  const u = signedAxis(label(columns, 'face_u_axis', row.face_u_axis!));
-  const v = signedAxis(label(columns, 'face_v_axis', row.face_v_axis!));
-  if (!region || !corner || !u || Number.isNaN(row.face_u!)) return undefined;
+  const u = signedAxis(label(columns, 'faceUAxis', row.faceUAxis!));
+  const v = signedAxis(label(columns, 'faceVAxis', row.faceVAxis!));
+  if (!region || !corner || !u || Number.isNaN(row.faceU!)) return undefined;
   return {
     region,
     corner,
-    u: row.face_u!,
-    v: v && !Number.isNaN(row.face_v!) ? row.face_v! : undefined,
+    u: row.faceU!,
+    v: v && !Number.isNaN(row.faceV!) ? row.faceV! : undefined,
     uAxis: u.axis,
     uSign: u.sign,
     vAxis: v?.axis,
@@ -95,7 +95,7 @@ export function exitFaceOf(columns: readonly ColumnSpec[], row: DecisionRow | un
 /**
  * The two candidates of a step of Saleem's circle (section 4, eq. 6-7),
  * read from the core's columns: the cell not taken as a grid axis and
- * direction from the point the step reached (other_candidate), and the
+ * direction from the point the step reached (otherCandidate), and the
  * residual x² + y² − r² of each, the stay candidate (only the fast axis
  * steps) and the move candidate (the slow axis steps too). Undefined when
  * the trace has no such columns or the step made no such decision (a
@@ -113,13 +113,13 @@ export interface ArcCandidates {
 }
 
 /** The columns arcCandidatesOf reads. */
-export const ARC_CANDIDATE_COLUMNS = ['other_candidate', 'slow_steps', 'residual_stay', 'residual_move'] as const;
+export const ARC_CANDIDATE_COLUMNS = ['otherCandidate', 'slowSteps', 'residualStay', 'residualMove'] as const;
 
 export function arcCandidatesOf(columns: readonly ColumnSpec[], row: DecisionRow | undefined): ArcCandidates | undefined {
   if (!row || !hasColumns(columns, ARC_CANDIDATE_COLUMNS)) return undefined;
-  const other = signedAxis(label(columns, 'other_candidate', row.other_candidate!));
-  if (!other || Number.isNaN(row.residual_stay!) || Number.isNaN(row.residual_move!)) return undefined;
-  return { otherAxis: other.axis, otherSign: other.sign, tookMove: row.slow_steps === 1, residualStay: row.residual_stay!, residualMove: row.residual_move! };
+  const other = signedAxis(label(columns, 'otherCandidate', row.otherCandidate!));
+  if (!other || Number.isNaN(row.residualStay!) || Number.isNaN(row.residualMove!)) return undefined;
+  return { otherAxis: other.axis, otherSign: other.sign, tookMove: row.slowSteps === 1, residualStay: row.residualStay!, residualMove: row.residualMove! };
 }
 
 /**
@@ -130,7 +130,7 @@ export function arcCandidatesOf(columns: readonly ColumnSpec[], row: DecisionRow
  * D and A (the column docs and the core's explanations name them so).
  *
  * The figure shows half a cell of the exit plane around the face: the ideal
- * line crosses the plane within (-1, 1) of the face's center (the face_u
+ * line crosses the plane within (-1, 1) of the face's center (the faceU
  * column's doc), off the face when it left Wang's unit cell through a side,
  * and the regions are the plane's quadrants, so they are drawn on past the
  * face, fainter.
@@ -221,15 +221,20 @@ function bars(title: string, values: { label: string; value: number; note?: stri
   return root;
 }
 
-/** Each error term against the threshold it is compared with (Bresenham); undefined where the step has none. */
+/**
+ * Each error term against the threshold it is compared with (Bresenham);
+ * undefined where the step has none. The core marks both kinds of column
+ * with their role.
+ */
 function thresholdFigure(columns: readonly ColumnSpec[], row: DecisionRow): SVGSVGElement | undefined {
-  if (!hasColumns(columns, ['threshold']) || Number.isNaN(row.threshold!)) return undefined;
-  const errors = columns.filter((c) => /^error/.test(c.name) && !Number.isNaN(row[c.name]!));
+  const threshold = columns.find((c) => c.role === 'threshold');
+  if (!threshold || Number.isNaN(row[threshold.name]!)) return undefined;
+  const errors = columns.filter((c) => c.role === 'errorTerm' && !Number.isNaN(row[c.name]!));
   if (errors.length === 0) return undefined;
   return bars(
     'Each error term against the threshold it is compared with; the sentence above says which axes stepped.',
     errors.map((c) => ({ label: c.name, value: row[c.name]! })),
-    { label: 'threshold', value: row.threshold! },
+    { label: threshold.name, value: row[threshold.name]! },
   );
 }
 

@@ -8,8 +8,8 @@
  * scene already draws, it shows why the step went where it did: the taken
  * residual is the one nearer 0.
  *
- * Everything is placed from the core's columns (other_candidate, slow_steps,
- * residual_stay, residual_move, read by arcCandidatesOf) and the point the
+ * Everything is placed from the core's columns (otherCandidate, slowSteps,
+ * residualStay, residualMove, read by arcCandidatesOf) and the point the
  * step reached; the page derives none of it. In a helix the cells are at the
  * reached point's height, as the column's doc says.
  *

@@ -6,10 +6,10 @@
  * the ideal line crosses the exit plane, and the corner the step went to
  * (the current cell's center).
  *
- * Everything is placed from the core's columns (region, corner, face_u,
- * face_v and the axes they run along, read by exitFaceOf) and the two points
+ * Everything is placed from the core's columns (region, corner, faceU,
+ * faceV and the axes they run along, read by exitFaceOf) and the two points
  * of the step; the page derives none of it. The crossing can lie off the
- * face, up to half a cell (the face_u column's doc): the regions are
+ * face, up to half a cell (the faceU column's doc): the regions are
  * quadrants of the exit plane, so they are drawn on past the face, fainter.
  *
  * It is drawn over the cells (overlay-group.ts): the face runs through the

@@ -73,47 +73,51 @@ fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
     Ok(builder.finish(ID))
 }
 
-pub const OCTANT: Column = Column {
-    name: "octant",
-    kind: ColumnKind::Category { labels: &OCTANT_LABELS },
-    doc: "Octant 1-8 the step travels through, counted counter-clockwise from the plane's first axis, seen from the positive end of its normal (Saleem Figure 1); a point on a boundary belongs to the octant ahead.",
-};
+pub const OCTANT: Column = Column::new(
+    "octant",
+    ColumnKind::Category { labels: &OCTANT_LABELS },
+    "Octant 1-8 the step travels through, counted counter-clockwise from the plane's first axis, seen from the positive end of its normal (Saleem Figure 1); a point on a boundary belongs to the octant ahead.",
+);
 
-pub const FAST: Column = Column {
-    name: "fast",
-    kind: ColumnKind::Category { labels: &["x", "y", "z"] },
-    doc: "The axis that steps every time in this octant; empty for correction steps.",
-};
+pub const FAST: Column = Column::new(
+    "fast",
+    ColumnKind::Category { labels: &["x", "y", "z"] },
+    "The axis that steps every time in this octant; empty for correction steps.",
+);
 
-pub const RESIDUAL_STAY: Column = Column {
-    name: "residual_stay",
-    kind: ColumnKind::Int,
-    doc: "u² + v² - r² (Saleem eq. 6 without its absolute value, u and v relative to the center; > 0 outside the circle, < 0 inside) of the candidate where only the fast axis steps.",
-};
+pub const RESIDUAL_STAY: Column = Column::new(
+    "residualStay",
+    ColumnKind::Int,
+    "u² + v² - r² (Saleem eq. 6 without its absolute value, u and v relative to the center; > 0 outside the circle, < 0 inside) of the candidate where only the fast axis steps.",
+)
+.formerly("residual_stay");
 
-pub const RESIDUAL_MOVE: Column = Column {
-    name: "residual_move",
-    kind: ColumnKind::Int,
-    doc: "u² + v² - r² of the candidate where the slow axis steps too; the slow axis steps when this one is nearer 0 (eq. 7 compares the absolute values, Saleem's error).",
-};
+pub const RESIDUAL_MOVE: Column = Column::new(
+    "residualMove",
+    ColumnKind::Int,
+    "u² + v² - r² of the candidate where the slow axis steps too; the slow axis steps when this one is nearer 0 (eq. 7 compares the absolute values, Saleem's error).",
+)
+.formerly("residual_move");
 
-pub const SLOW_STEPS: Column = Column {
-    name: "slow_steps",
-    kind: ColumnKind::Flag,
-    doc: "1 when the slow axis stepped.",
-};
+pub const SLOW_STEPS: Column = Column::new(
+    "slowSteps",
+    ColumnKind::Flag,
+    "1 when the slow axis stepped.",
+)
+.formerly("slow_steps");
 
-pub const CORRECTION: Column = Column {
-    name: "correction",
-    kind: ColumnKind::Flag,
-    doc: "1 for a step that closes the gap between the rasterised circle and a programmed end point that is not on it.",
-};
+pub const CORRECTION: Column = Column::new(
+    "correction",
+    ColumnKind::Flag,
+    "1 for a step that closes the gap between the rasterised circle and a programmed end point that is not on it.",
+);
 
-pub const OTHER_CANDIDATE: Column = Column {
-    name: "other_candidate",
-    kind: ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
-    doc: "The candidate the step did not take, as a direction from the point the step reached: one cell along the slow axis that way (-x: the cell toward -x). The two candidates differ only on the slow axis, so the reached point and this cell are the pair eq. (7) compared: the reached point is the stay candidate when slow_steps is 0 and the move candidate when it is 1. (In a helix the cell is at the reached point's height on the linear axis; u² + v² - r² does not depend on it.) Empty for correction steps.",
-};
+pub const OTHER_CANDIDATE: Column = Column::new(
+    "otherCandidate",
+    ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
+    "The candidate the step did not take, as a direction from the point the step reached: one cell along the slow axis that way (-x: the cell toward -x). The two candidates differ only on the slow axis, so the reached point and this cell are the pair eq. (7) compared: the reached point is the stay candidate when slowSteps is 0 and the move candidate when it is 1. (In a helix the cell is at the reached point's height on the linear axis; u² + v² - r² does not depend on it.) Empty for correction steps.",
+)
+.formerly("other_candidate");
 
 /// The circle's decision columns, in [`CircleWhy::write`]'s order (the
 /// helix's columns start with them).
@@ -793,11 +797,11 @@ mod tests {
             [
                 "octant",
                 "fast",
-                "residual_stay",
-                "residual_move",
-                "slow_steps",
+                "residualStay",
+                "residualMove",
+                "slowSteps",
                 "correction",
-                "other_candidate"
+                "otherCandidate"
             ]
         );
         let row: Vec<f64> = d.columns.iter().map(|c| c[0]).collect();
@@ -872,7 +876,7 @@ mod tests {
         let d = t.decisions(0, 5);
         assert_eq!(d.columns[5], [0.0, 0.0, 0.0, 0.0, 1.0]);
         // A correction step has no fast axis, candidates or slow step: its
-        // fast, slow_steps and other_candidate cells say so, rather than
+        // fast, slowSteps and otherCandidate cells say so, rather than
         // "x", "no" and "+x".
         let none = f64::from(crate::trace::NO_VALUE);
         assert_eq!(

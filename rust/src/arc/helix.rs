@@ -174,31 +174,36 @@ impl Decision for HelixWhy {
             // Not "major": bresenham3d's column of that name holds an axis, and a
             // G-code program's trace unions the columns of its line and arc
             // algorithms by name.
-            Column {
-                name: "helix_major",
-                kind: ColumnKind::Category { labels: MAJOR_LABELS },
-                doc: "Which steps every iteration: the arc (n_c >= n_z) or the linear axis (n_z > n_c) (Saleem section 5).",
-            },
-            Column {
-                name: "helix_error",
-                kind: ColumnKind::Int,
-                doc: "The minor axis's Bresenham error after adding 2 × its count (errorZ or errorCircle); the minor axis steps when it exceeds the major count.",
-            },
-            Column {
-                name: "arc_steps",
-                kind: ColumnKind::Flag,
-                doc: "1 when the arc took a step (the circle columns then hold its decision).",
-            },
-            Column {
-                name: "linear_steps",
-                kind: ColumnKind::Flag,
-                doc: "1 when the linear (normal) axis stepped.",
-            },
-            Column {
-                name: "helix_tie",
-                kind: ColumnKind::Flag,
-                doc: "1 when the helix error equalled the major count and the tie policy decided.",
-            },
+            Column::new(
+                "helixMajor",
+                ColumnKind::Category { labels: MAJOR_LABELS },
+                "Which steps every iteration: the arc (n_c >= n_z) or the linear axis (n_z > n_c) (Saleem section 5).",
+            )
+            .formerly("helix_major"),
+            Column::new(
+                "helixError",
+                ColumnKind::Int,
+                "The minor axis's Bresenham error after adding 2 × its count (errorZ or errorCircle); the minor axis steps when it exceeds the major count.",
+            )
+            .formerly("helix_error"),
+            Column::new(
+                "arcSteps",
+                ColumnKind::Flag,
+                "1 when the arc took a step (the circle columns then hold its decision).",
+            )
+            .formerly("arc_steps"),
+            Column::new(
+                "linearSteps",
+                ColumnKind::Flag,
+                "1 when the linear (normal) axis stepped.",
+            )
+            .formerly("linear_steps"),
+            Column::new(
+                "helixTie",
+                ColumnKind::Flag,
+                "1 when the helix error equalled the major count and the tie policy decided.",
+            )
+            .formerly("helix_tie"),
         ],
     );
 

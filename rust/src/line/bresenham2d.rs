@@ -15,7 +15,7 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
 use crate::trace::{
-    Column, ColumnKind, Decision, DeviationBound, Filled, Stepper, fill_by_next_step,
+    Column, ColumnKind, ColumnRole, Decision, DeviationBound, Filled, Stepper, fill_by_next_step,
 };
 
 pub const ID: &str = "bresenham2d";
@@ -192,31 +192,33 @@ pub struct Bresenham2dWhy {
 
 impl Decision for Bresenham2dWhy {
     const COLUMNS: &'static [Column] = &[
-        Column {
-            name: "error",
-            kind: ColumnKind::Int,
-            doc: "Saleem's 2·Δmajor·ε after adding 2·Δminor (eq. 4), the value compared with the threshold. As printed it can grow without bound (beyond 2^53 it is shown rounded).",
-        },
-        Column {
-            name: "threshold",
-            kind: ColumnKind::Int,
-            doc: "Δmajor (eq. 5): the minor axis steps when the error exceeds it.",
-        },
-        Column {
-            name: "octant",
-            kind: ColumnKind::Category { labels: &OCTANT_LABELS },
-            doc: "Octant 1-8 of the move (Saleem Fig. 1), counter-clockwise from +x; 1, 4, 5, 8 are x-major, 2, 3, 6, 7 y-major.",
-        },
-        Column {
-            name: "tie",
-            kind: ColumnKind::Flag,
-            doc: "1 when the error equalled the threshold and the tie policy decided.",
-        },
-        Column {
-            name: "overshoot",
-            kind: ColumnKind::Int,
-            doc: "variant = printed: units the printed program's minor axis would be past its end coordinate (voxpath holds it there); empty for corrected.",
-        },
+        Column::new(
+            "error",
+            ColumnKind::Int,
+            "Saleem's 2·Δmajor·ε after adding 2·Δminor (eq. 4), the value compared with the threshold. As printed it can grow without bound (beyond 2^53 it is shown rounded).",
+        )
+        .with_role(ColumnRole::ErrorTerm),
+        Column::new(
+            "threshold",
+            ColumnKind::Int,
+            "Δmajor (eq. 5): the minor axis steps when the error exceeds it.",
+        )
+        .with_role(ColumnRole::Threshold),
+        Column::new(
+            "octant",
+            ColumnKind::Category { labels: &OCTANT_LABELS },
+            "Octant 1-8 of the move (Saleem Fig. 1), counter-clockwise from +x; 1, 4, 5, 8 are x-major, 2, 3, 6, 7 y-major.",
+        ),
+        Column::new(
+            "tie",
+            ColumnKind::Flag,
+            "1 when the error equalled the threshold and the tie policy decided.",
+        ),
+        Column::new(
+            "overshoot",
+            ColumnKind::Int,
+            "variant = printed: units the printed program's minor axis would be past its end coordinate (voxpath holds it there); empty for corrected.",
+        ),
     ];
 
     fn write(&self, row: &mut [f64]) {

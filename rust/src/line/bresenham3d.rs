@@ -12,7 +12,7 @@ use super::{GCD, Mirror, axis_list, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
+use crate::trace::{Column, ColumnKind, ColumnRole, Decision, DeviationBound, Filled, Stepper};
 
 pub const ID: &str = "bresenham3d";
 
@@ -56,36 +56,40 @@ pub struct Bresenham3dWhy {
 
 impl Decision for Bresenham3dWhy {
     const COLUMNS: &'static [Column] = &[
-        Column {
-            name: "errorX",
-            kind: ColumnKind::Int,
-            doc: "Saleem's ErrorX after adding 2|Δx| (section 3), compared with |Δmajor|; empty when x is the major axis.",
-        },
-        Column {
-            name: "errorY",
-            kind: ColumnKind::Int,
-            doc: "Saleem's ErrorY after adding 2|Δy|, compared with |Δmajor|; empty when y is the major axis.",
-        },
-        Column {
-            name: "errorZ",
-            kind: ColumnKind::Int,
-            doc: "Saleem's ErrorZ after adding 2|Δz|, compared with |Δmajor|; empty when z is the major axis.",
-        },
-        Column {
-            name: "threshold",
-            kind: ColumnKind::Int,
-            doc: "|Δmajor| (divided by the GCD with gcd = true): a minor axis steps when its error exceeds it.",
-        },
-        Column {
-            name: "major",
-            kind: ColumnKind::Category { labels: &["x", "y", "z"] },
-            doc: "The major axis, which steps every time.",
-        },
-        Column {
-            name: "tie",
-            kind: ColumnKind::Flag,
-            doc: "1 when an error equalled the threshold and the tie policy decided.",
-        },
+        Column::new(
+            "errorX",
+            ColumnKind::Int,
+            "Saleem's ErrorX after adding 2|Δx| (section 3), compared with |Δmajor|; empty when x is the major axis.",
+        )
+        .with_role(ColumnRole::ErrorTerm),
+        Column::new(
+            "errorY",
+            ColumnKind::Int,
+            "Saleem's ErrorY after adding 2|Δy|, compared with |Δmajor|; empty when y is the major axis.",
+        )
+        .with_role(ColumnRole::ErrorTerm),
+        Column::new(
+            "errorZ",
+            ColumnKind::Int,
+            "Saleem's ErrorZ after adding 2|Δz|, compared with |Δmajor|; empty when z is the major axis.",
+        )
+        .with_role(ColumnRole::ErrorTerm),
+        Column::new(
+            "threshold",
+            ColumnKind::Int,
+            "|Δmajor| (divided by the GCD with gcd = true): a minor axis steps when its error exceeds it.",
+        )
+        .with_role(ColumnRole::Threshold),
+        Column::new(
+            "major",
+            ColumnKind::Category { labels: &["x", "y", "z"] },
+            "The major axis, which steps every time.",
+        ),
+        Column::new(
+            "tie",
+            ColumnKind::Flag,
+            "1 when an error equalled the threshold and the tie policy decided.",
+        ),
     ];
 
     fn write(&self, row: &mut [f64]) {

@@ -2,7 +2,7 @@
 //! with the integer rules: add Δa/n to a float accumulator per axis every
 //! step and round it to the nearest cell.
 
-use super::{GUARD_LABELS, Guard, Mirror, column, step_target};
+use super::{GUARD_LABELS, Guard, Mirror, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
@@ -42,41 +42,41 @@ pub struct DdaWhy {
 
 impl Decision for DdaWhy {
     const COLUMNS: &'static [Column] = &[
-        column(
+        Column::new(
             "accX",
             ColumnKind::Float,
             "x accumulator after adding Δx/n (f64, grid units); the point's x is floor(accX + 0.5).",
         ),
-        column(
+        Column::new(
             "accY",
             ColumnKind::Float,
             "y accumulator after adding Δy/n.",
         ),
-        column(
+        Column::new(
             "accZ",
             ColumnKind::Float,
             "z accumulator after adding Δz/n.",
         ),
-        column(
+        Column::new(
             "accA",
             ColumnKind::Float,
             "a accumulator after adding Δa/n.",
         ),
-        column(
+        Column::new(
             "accB",
             ColumnKind::Float,
             "b accumulator after adding Δb/n.",
         ),
-        column(
+        Column::new(
             "accC",
             ColumnKind::Float,
             "c accumulator after adding Δc/n.",
         ),
-        Column {
-            name: "guard",
-            kind: ColumnKind::Category { labels: GUARD_LABELS },
-            doc: "rule: rounding decided every axis; held / forced: the finish rule overrode float drift.",
-        },
+        Column::new(
+            "guard",
+            ColumnKind::Category { labels: GUARD_LABELS },
+            "rule: rounding decided every axis; held / forced: the finish rule overrode float drift.",
+        ),
     ];
 
     /// Rounding has no tie rule to apply: floor(acc + 0.5) takes halves up.

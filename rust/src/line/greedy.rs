@@ -7,7 +7,7 @@
 //! until the distances left are equal, then alternates: it heads for the
 //! goal, not along the line.
 
-use super::{Mirror, TIE_AXIS, TieAxis, column, step_target};
+use super::{Mirror, TIE_AXIS, TieAxis, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
@@ -57,46 +57,52 @@ pub struct GreedyWhy {
 
 impl Decision for GreedyWhy {
     const COLUMNS: &'static [Column] = &[
-        column(
-            "dist2X",
+        Column::new(
+            "distSqX",
             ColumnKind::Float,
             "Squared distance to the goal if x moved one unit toward it (grid units^2, exact below 2^53); empty when x is already there.",
-        ),
-        column(
-            "dist2Y",
+        )
+        .formerly("dist2X"),
+        Column::new(
+            "distSqY",
             ColumnKind::Float,
             "Squared distance to the goal if y moved.",
-        ),
-        column(
-            "dist2Z",
+        )
+        .formerly("dist2Y"),
+        Column::new(
+            "distSqZ",
             ColumnKind::Float,
             "Squared distance to the goal if z moved.",
-        ),
-        column(
-            "dist2A",
+        )
+        .formerly("dist2Z"),
+        Column::new(
+            "distSqA",
             ColumnKind::Float,
             "Squared distance to the goal if a moved.",
-        ),
-        column(
-            "dist2B",
+        )
+        .formerly("dist2A"),
+        Column::new(
+            "distSqB",
             ColumnKind::Float,
             "Squared distance to the goal if b moved.",
-        ),
-        column(
-            "dist2C",
+        )
+        .formerly("dist2B"),
+        Column::new(
+            "distSqC",
             ColumnKind::Float,
             "Squared distance to the goal if c moved.",
+        )
+        .formerly("dist2C"),
+        Column::new(
+            "axis",
+            ColumnKind::Category { labels: &AXIS_NAMES },
+            "The axis that moved: the candidate closest to the goal.",
         ),
-        Column {
-            name: "axis",
-            kind: ColumnKind::Category { labels: &AXIS_NAMES },
-            doc: "The axis that moved: the candidate closest to the goal.",
-        },
-        Column {
-            name: "tie",
-            kind: ColumnKind::Flag,
-            doc: "1 when another axis was exactly as close and the tie order chose.",
-        },
+        Column::new(
+            "tie",
+            ColumnKind::Flag,
+            "1 when another axis was exactly as close and the tie order chose.",
+        ),
     ];
 
     fn write(&self, row: &mut [f64]) {

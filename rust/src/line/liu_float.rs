@@ -8,7 +8,7 @@
 //! arithmetic this is Bresenham's rule (epsilon = Wang's M / 2Δx); kept to d
 //! decimals, the slope k itself is rounded and the error accumulates.
 
-use super::{GUARD_LABELS, Guard, Mirror, axis_list, column, step_target, wang_discriminant};
+use super::{GUARD_LABELS, Guard, Mirror, axis_list, step_target, wang_discriminant};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
@@ -100,42 +100,42 @@ pub struct LiuWhy {
 
 impl Decision for LiuWhy {
     const COLUMNS: &'static [Column] = &[
-        column(
+        Column::new(
             "epsX",
             ColumnKind::Float,
             "Liu's epsilon(x) before the step, kept to d decimals; empty when x is active.",
         ),
-        column(
+        Column::new(
             "epsY",
             ColumnKind::Float,
             "Liu's epsilon(y) before the step (eq. 14), kept to d decimals.",
         ),
-        column(
+        Column::new(
             "epsZ",
             ColumnKind::Float,
             "Liu's epsilon(z) before the step (eq. 15), kept to d decimals.",
         ),
-        column(
+        Column::new(
             "driftX",
             ColumnKind::Float,
             "epsX minus its exact value at this point (Wang's discriminant / 2|Δactive|).",
         ),
-        column(
+        Column::new(
             "driftY",
             ColumnKind::Float,
             "epsY minus its exact value: the rounding accumulated so far (Wang Fig. 10).",
         ),
-        column("driftZ", ColumnKind::Float, "epsZ minus its exact value."),
-        Column {
-            name: "guard",
-            kind: ColumnKind::Category { labels: GUARD_LABELS },
-            doc: "rule: epsilon decided every axis; held / forced: the finish rule overrode a drifting axis.",
-        },
-        Column {
-            name: "tie",
-            kind: ColumnKind::Flag,
-            doc: "1 when an epsilon was exactly 0 and the tie policy decided.",
-        },
+        Column::new("driftZ", ColumnKind::Float, "epsZ minus its exact value."),
+        Column::new(
+            "guard",
+            ColumnKind::Category { labels: GUARD_LABELS },
+            "rule: epsilon decided every axis; held / forced: the finish rule overrode a drifting axis.",
+        ),
+        Column::new(
+            "tie",
+            ColumnKind::Flag,
+            "1 when an epsilon was exactly 0 and the tie policy decided.",
+        ),
     ];
 
     fn write(&self, row: &mut [f64]) {

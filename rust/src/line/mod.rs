@@ -18,7 +18,7 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, gcd};
 use crate::ideal::IdealPath;
 use crate::request::{OptionKind, OptionSpec, Request, TiePolicy};
-use crate::trace::{Column, ColumnKind, DeviationBound, Stepper, Trace, TraceBuilder};
+use crate::trace::{DeviationBound, Stepper, Trace, TraceBuilder};
 use std::cmp::Ordering;
 
 /// Traces one straight move with the stepper `make` builds from the request's
@@ -310,11 +310,6 @@ pub fn wang_discriminant(
 ) -> i128 {
     let (da, dx) = (passive_len as i128, active_len as i128);
     2 * da * active_done as i128 - 2 * dx * passive_done as i128 + 2 * da - dx
-}
-
-/// A decision column; a shorthand for the per-axis column lists.
-pub const fn column(name: &'static str, kind: ColumnKind, doc: &'static str) -> Column {
-    Column { name, kind, doc }
 }
 
 /// "4 > 0", "0", "-2 < 0".

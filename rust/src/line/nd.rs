@@ -4,7 +4,7 @@
 //! method of discriminate regions, M and N.
 
 use super::terms::{Term, Terms};
-use super::{GCD, Mirror, axis_list, column, signed_comparison, step_target, wang_discriminant};
+use super::{GCD, Mirror, axis_list, signed_comparison, step_target, wang_discriminant};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
@@ -49,37 +49,47 @@ pub struct NdWhy {
 
 impl Decision for NdWhy {
     const COLUMNS: &'static [Column] = &[
-        column(
-            "Dx",
+        Column::new(
+            "discriminantX",
             ColumnKind::Int,
-            "Discriminant of x before the step (Wang eq. 6/16); empty when x is active or absent.",
-        ),
-        column(
-            "Dy",
+            "Discriminant of x before the step (Wang eq. 6/16; Dx in the explanation); empty when x is active or absent.",
+        )
+        .formerly("Dx"),
+        Column::new(
+            "discriminantY",
             ColumnKind::Int,
             "Discriminant of y before the step (Wang's M when x is active).",
-        ),
-        column(
-            "Dz",
+        )
+        .formerly("Dy"),
+        Column::new(
+            "discriminantZ",
             ColumnKind::Int,
             "Discriminant of z before the step (Wang's N when x is active).",
-        ),
-        column(
-            "Da",
+        )
+        .formerly("Dz"),
+        Column::new(
+            "discriminantA",
             ColumnKind::Int,
             "Discriminant of a before the step (Wang's H, eq. 16-17).",
-        ),
-        column(
-            "Db",
+        )
+        .formerly("Da"),
+        Column::new(
+            "discriminantB",
             ColumnKind::Int,
             "Discriminant of b before the step (Wang's K, eq. 16-17).",
+        )
+        .formerly("Db"),
+        Column::new(
+            "discriminantC",
+            ColumnKind::Int,
+            "Discriminant of c before the step.",
+        )
+        .formerly("Dc"),
+        Column::new(
+            "tie",
+            ColumnKind::Flag,
+            "1 when a discriminant was exactly 0 and the tie policy decided.",
         ),
-        column("Dc", ColumnKind::Int, "Discriminant of c before the step."),
-        Column {
-            name: "tie",
-            kind: ColumnKind::Flag,
-            doc: "1 when a discriminant was exactly 0 and the tie policy decided.",
-        },
     ];
 
     fn write(&self, row: &mut [f64]) {

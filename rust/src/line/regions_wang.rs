@@ -158,51 +158,55 @@ impl RegionsWhy {
 
 impl Decision for RegionsWhy {
     const COLUMNS: &'static [Column] = &[
-        Column {
-            name: "M",
-            kind: ColumnKind::Int,
-            doc: "Discriminant of the first passive axis before the step (Wang eq. 6, 8, 10; y when x is active); it steps when M > 0, and on M = 0 as the tie policy says.",
-        },
-        Column {
-            name: "N",
-            kind: ColumnKind::Int,
-            doc: "Discriminant of the second passive axis before the step (z when x is active); empty when the line has fewer than two passive axes.",
-        },
-        Column {
-            name: "region",
-            kind: ColumnKind::Category { labels: REGION_LABELS },
-            doc: "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, center o (Wang section 2.5); none on type ② lines, which have no passive axis.",
-        },
-        Column {
-            name: "corner",
-            kind: ColumnKind::Category { labels: CORNER_LABELS },
-            doc: "The corner the step goes to: A = first passive axis steps, B = neither, C = second, D = both; none on type ② lines.",
-        },
-        Column {
-            name: "tie",
-            kind: ColumnKind::Flag,
-            doc: "1 when M or N was exactly 0 and the tie policy decided the step.",
-        },
-        Column {
-            name: "face_u",
-            kind: ColumnKind::Float,
-            doc: "Where the ideal line crosses the exit plane (where the active axes arrive at this step), along the first passive axis: cells from the center of the cell's exit face, positive the way the axis travels (face_u_axis). It is M / (2|Δx|) exactly (Wang eq. 3-6), so its sign is M's and says the region. It lies in [|Δy|/|Δx| - 1, |Δy|/|Δx|], inside (-1, 1); past ±1/2 the line left Wang's unit cell through a side face first, in the same quadrant.",
-        },
-        Column {
-            name: "face_v",
-            kind: ColumnKind::Float,
-            doc: "The crossing along the second passive axis, N / (2|Δx|) (face_v_axis). Empty with one passive axis (types ⑤-⑦): the active axes arrive together, so the line leaves through the edge where they do, and face_u alone places it there, from the edge's midpoint.",
-        },
-        Column {
-            name: "face_u_axis",
-            kind: ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
-            doc: "The grid axis face_u runs along and the way it grows (+y: toward +y, the direction of travel; an axis that does not move counts as +); empty for type ② lines, which run through the corners and cross no face.",
-        },
-        Column {
-            name: "face_v_axis",
-            kind: ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
-            doc: "The grid axis face_v runs along and the way it grows; empty with fewer than two passive axes.",
-        },
+        Column::new(
+            "M",
+            ColumnKind::Int,
+            "Discriminant of the first passive axis before the step (Wang eq. 6, 8, 10; y when x is active); it steps when M > 0, and on M = 0 as the tie policy says.",
+        ),
+        Column::new(
+            "N",
+            ColumnKind::Int,
+            "Discriminant of the second passive axis before the step (z when x is active); empty when the line has fewer than two passive axes.",
+        ),
+        Column::new(
+            "region",
+            ColumnKind::Category { labels: REGION_LABELS },
+            "Where the ideal line crosses the cell's exit face: regions a-d, segments e-h, center o (Wang section 2.5); none on type ② lines, which have no passive axis.",
+        ),
+        Column::new(
+            "corner",
+            ColumnKind::Category { labels: CORNER_LABELS },
+            "The corner the step goes to: A = first passive axis steps, B = neither, C = second, D = both; none on type ② lines.",
+        ),
+        Column::new(
+            "tie",
+            ColumnKind::Flag,
+            "1 when M or N was exactly 0 and the tie policy decided the step.",
+        ),
+        Column::new(
+            "faceU",
+            ColumnKind::Float,
+            "Where the ideal line crosses the exit plane (where the active axes arrive at this step), along the first passive axis: cells from the center of the cell's exit face, positive the way the axis travels (faceUAxis). It is M / (2|Δx|) exactly (Wang eq. 3-6), so its sign is M's and says the region. It lies in [|Δy|/|Δx| - 1, |Δy|/|Δx|], inside (-1, 1); past ±1/2 the line left Wang's unit cell through a side face first, in the same quadrant.",
+        )
+        .formerly("face_u"),
+        Column::new(
+            "faceV",
+            ColumnKind::Float,
+            "The crossing along the second passive axis, N / (2|Δx|) (faceVAxis). Empty with one passive axis (types ⑤-⑦): the active axes arrive together, so the line leaves through the edge where they do, and faceU alone places it there, from the edge's midpoint.",
+        )
+        .formerly("face_v"),
+        Column::new(
+            "faceUAxis",
+            ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
+            "The grid axis faceU runs along and the way it grows (+y: toward +y, the direction of travel; an axis that does not move counts as +); empty for type ② lines, which run through the corners and cross no face.",
+        )
+        .formerly("face_u_axis"),
+        Column::new(
+            "faceVAxis",
+            ColumnKind::Category { labels: SIGNED_AXIS_LABELS },
+            "The grid axis faceV runs along and the way it grows; empty with fewer than two passive axes.",
+        )
+        .formerly("face_v_axis"),
     ];
 
     fn write(&self, row: &mut [f64]) {
@@ -605,7 +609,7 @@ mod tests {
         let d = t.decisions(3, 6);
         assert_eq!(d.columns[0], [6.0, 0.0, -6.0]);
         assert_eq!(d.columns[2], [0.0, 6.0, 2.0]); // a, g, c
-        // face_u = M / 20, face_v = N / 20; the axes +y and +z.
+        // faceU = M / 20, faceV = N / 20; the axes +y and +z.
         assert_eq!(d.columns[5], [0.3, 0.0, -0.3]);
         assert_eq!(d.columns[6], [-0.1, 0.5, 0.1]);
         assert_eq!(d.columns[7], [2.0; 3]);

@@ -9,7 +9,7 @@
 //! the steps that axis has taken. The face crossed first is the smallest
 //! t_a; two fractions compare exactly by cross-multiplying, in i128.
 
-use super::{Mirror, TIE_AXIS, TieAxis, axis_list, column, step_target};
+use super::{Mirror, TIE_AXIS, TieAxis, axis_list, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
@@ -76,46 +76,46 @@ pub struct Walk6Why {
 
 impl Decision for Walk6Why {
     const COLUMNS: &'static [Column] = &[
-        Column {
-            name: "crosses",
-            kind: ColumnKind::Category { labels: &AXIS_NAMES },
-            doc: "The axis whose cell face the segment crosses next (the axis that steps).",
-        },
-        column(
+        Column::new(
+            "crosses",
+            ColumnKind::Category { labels: &AXIS_NAMES },
+            "The axis whose cell face the segment crosses next (the axis that steps).",
+        ),
+        Column::new(
             "tX",
             ColumnKind::Float,
             "Where the segment crosses the next x face, as a fraction of its length: (2k_x + 1)/(2|Δx|); empty when x has arrived.",
         ),
-        column(
+        Column::new(
             "tY",
             ColumnKind::Float,
             "Where the segment crosses the next y face: (2k_y + 1)/(2|Δy|).",
         ),
-        column(
+        Column::new(
             "tZ",
             ColumnKind::Float,
             "Where the segment crosses the next z face.",
         ),
-        column(
+        Column::new(
             "tA",
             ColumnKind::Float,
             "Where the segment crosses the next a face.",
         ),
-        column(
+        Column::new(
             "tB",
             ColumnKind::Float,
             "Where the segment crosses the next b face.",
         ),
-        column(
+        Column::new(
             "tC",
             ColumnKind::Float,
             "Where the segment crosses the next c face.",
         ),
-        Column {
-            name: "tie",
-            kind: ColumnKind::Flag,
-            doc: "1 when two axes cross at exactly the same t (an edge or corner) and the tie order chose.",
-        },
+        Column::new(
+            "tie",
+            ColumnKind::Flag,
+            "1 when two axes cross at exactly the same t (an edge or corner) and the tie order chose.",
+        ),
     ];
 
     fn write(&self, row: &mut [f64]) {
