@@ -47,6 +47,7 @@ const PATH: TracedPath = {
     start: [0, 0, 0],
     end: [1, 1, 0],
     columns: [],
+    figures: [],
     metrics: { steps: 1, stepsMovingAxes: [0, 1, 0], pulsesByAxis: [1, 1, 0], maxDeviation: 0, meanDeviation: 0, stdDeviation: 0, maxAxisError: [0, 0, 0], ties: 0 },
     deviationBound: null,
   },

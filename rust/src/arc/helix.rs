@@ -31,6 +31,7 @@ use super::curve::HelixPath;
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
+use crate::figure::{DecisionFigure, FigureKind};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::ideal::IdealPath;
 use crate::line::step_target;
@@ -219,6 +220,13 @@ impl Decision for HelixWhy {
 
     fn is_tie(&self) -> bool {
         self.tie
+    }
+
+    /// The circle's, where the arc stepped.
+    const FIGURE: Option<FigureKind> = CircleWhy::FIGURE;
+
+    fn figure(&self, from: &Point, step: Step) -> Option<DecisionFigure> {
+        self.arc?.figure(from, step)
     }
 
     fn explain(&self, from: &Point, step: Step) -> String {
