@@ -19,8 +19,8 @@ import { formatPoint } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
 import { renderExperiment } from './experiment/experiment-panel.js';
-import type { DecisionRow } from './inspector/decision-figure.js';
 import { Inspector } from './inspector/inspector.js';
+import { PointDetails } from './inspector/point-details.js';
 import { decisionOverlay, decisionOverlayKinds } from './scene/decision-overlay.js';
 import { PALETTE } from './scene/palette.js';
 import { type SceneCallbacks, SceneView } from './scene/scene-view.js';
@@ -182,13 +182,6 @@ function run(catalogue: Catalogue): void {
     },
     store,
   );
-  /** The decision the inspector shows: the view's decision overlay is drawn from the same values. */
-  let decision: { trace: RemoteTrace; pointIndex: number; row: DecisionRow | undefined } | undefined;
-  /** The shown decision in the view, when asked for and its step has an overlay. */
-  function drawDecision(): void {
-    const d = decision;
-    scene.setOverlay(store.state.decision3d && d ? decisionOverlay(d.trace, d.pointIndex, d.row) : undefined);
-  }
   const inspector = new Inspector({
     point: byId('inspector-point', HTMLElement),
     deviation: byId('inspector-deviation', HTMLElement),
@@ -198,10 +191,20 @@ function run(catalogue: Catalogue): void {
     figure: byId('decision-figure', HTMLDivElement),
     columnDocs: byId('column-docs', HTMLElement),
     setupNote: byId('setup-note', HTMLParagraphElement),
-  }, (trace, pointIndex, row) => {
-    decision = { trace, pointIndex, row };
-    drawDecision();
   });
+  /** The shown point's decision in the view, when asked for and its step has a 3D picture. */
+  function drawDecision(): void {
+    const detail = details.latest;
+    scene.setOverlay(store.state.decision3d && detail ? decisionOverlay(detail) : undefined);
+  }
+  // One request per point: the inspector, its figure and the view's overlay all show its answer.
+  const details = new PointDetails(
+    (detail) => {
+      inspector.showDetail(detail);
+      drawDecision();
+    },
+    (error) => inspector.showError(error),
+  );
   const goTo = (pointIndex: number) => store.update({ pointIndex, playing: false });
   const charts = new PathCharts(byId('charts', HTMLDivElement), goTo);
   const comparePanel = new ComparePanel(byId('comparison', HTMLDivElement), goTo);
@@ -284,7 +287,7 @@ function run(catalogue: Catalogue): void {
     view2d.checked = state.projection === '2d' && scene.planar;
     view2d.disabled = !scene.planar;
     view2d.parentElement!.title = scene.planar ? 'Orthographic view of the path\'s plane, with the pixel grid' : 'The path is not in one plane';
-    const overlays = decisionOverlayKinds(main?.columns ?? []);
+    const overlays = decisionOverlayKinds(main?.figures ?? []);
     decision3d.checked = state.decision3d;
     decision3d.disabled = overlays.length === 0;
     byId('decision-3d-label', HTMLLabelElement).title =
@@ -292,8 +295,8 @@ function run(catalogue: Catalogue): void {
         ? `The current step's decision in the view: ${overlays.join('; or ')}.`
         : "This algorithm's decisions have no 3D picture: only the discriminate regions' exit face and the circle's candidates do";
     scene.setHandles(handles());
-    decision = undefined;
     inspector.setTrace(main, Math.min(pointIndex, main?.steps ?? 0));
+    details.setTrace(main, Math.min(pointIndex, main?.steps ?? 0));
     void charts.setTrace(main);
     comparePanel.show(a, b, difference);
     gcodePanel.setProgram(program);
@@ -466,7 +469,10 @@ function run(catalogue: Catalogue): void {
       const main = shown.program ?? shown.a;
       scene.showPoint(Math.min(k, main?.steps ?? 0));
       sceneB?.showPoint(Math.min(k, shown.b?.steps ?? 0));
-      if (main) inspector.show(Math.min(k, main.steps));
+      if (main) {
+        inspector.showPoint(Math.min(k, main.steps));
+        details.show(Math.min(k, main.steps));
+      }
       charts.showPoint(k);
       timing.showPoint(k);
       if (shown.program) void gcodePanel.showPoint(k);
