@@ -8,9 +8,8 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { GcodeMove, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { StepDetail, TraceOptions } from '../core/types.js';
+import type { ChartSeries, StepDetail, TraceOptions } from '../core/types.js';
 import type {
-  ChartSeries,
   InputError,
   LineSteps,
   PathSummary,

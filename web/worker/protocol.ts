@@ -16,7 +16,7 @@
  * StepDetail.
  */
 import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, ChartSeries, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -49,24 +49,6 @@ export interface TracedPath {
   summary: PathSummary;
   points: Int32Array;
   idealPolyline: Float64Array;
-}
-
-/**
- * Per-point quantities for the charts, at most `maxPoints` rows. Row r is
- * point index pointIndex[r]. A path with more points than that is cut into
- * equal buckets of point indices: positions are the bucket's first point,
- * deviation is the bucket's largest and smallest value, so no peak is lost.
- */
-export interface ChartSeries {
-  pointIndex: Float64Array;
-  /** One array per axis: the point's coordinate, grid units. */
-  position: Float64Array[];
-  /** One array per axis: where the ideal path is at the same progress (point - Wang eq. 11 error). */
-  ideal: Float64Array[];
-  deviationMax: Float64Array;
-  deviationMin: Float64Array;
-  /** True when rows are buckets of several points. */
-  bucketed: boolean;
 }
 
 /**

@@ -16,7 +16,6 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { Trace } from '../core/index.js';
-import { chartSeries } from './series.js';
 import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
@@ -87,7 +86,7 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
     case 'stepDetail':
       return { value: held(request.traceId).stepDetail(request.pointIndex), transfer: [] };
     case 'series': {
-      const series = chartSeries(held(request.traceId), request.maxPoints);
+      const series = held(request.traceId).chartSeries(request.maxPoints);
       const arrays = [series.pointIndex, ...series.position, ...series.ideal, series.deviationMax, series.deviationMin];
       return { value: series, transfer: arrays.map((a) => a.buffer) };
     }
