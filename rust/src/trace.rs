@@ -289,8 +289,12 @@ trait Replay {
     /// Takes the next step, explaining it.
     fn explain_step(&mut self, from: &Point) -> Option<String>;
     /// Takes the next step, writing its decision into `row` (segment
-    /// columns) and explaining and picturing it.
-    fn detail_step(&mut self, from: &Point, row: &mut [f64]) -> Option<ReplayedStep>;
+    /// columns): its explanation and its picture.
+    fn detail_step(
+        &mut self,
+        from: &Point,
+        row: &mut [f64],
+    ) -> Option<(String, Option<DecisionFigure>)>;
     /// Takes `steps` steps: how many of them a tie decided.
     fn count_ties(&mut self, steps: u64) -> u64;
 }
@@ -311,7 +315,11 @@ impl<S: Stepper> Replay for S {
         Some(why.explain(from, step))
     }
 
-    fn detail_step(&mut self, from: &Point, row: &mut [f64]) -> Option<ReplayedStep> {
+    fn detail_step(
+        &mut self,
+        from: &Point,
+        row: &mut [f64],
+    ) -> Option<(String, Option<DecisionFigure>)> {
         let (step, why) = self.next_step()?;
         why.write(row);
         let figure = why.figure(from, step);
@@ -321,11 +329,7 @@ impl<S: Stepper> Replay for S {
                 .is_none_or(|f| Some(f.kind()) == S::Why::FIGURE),
             "a decision's figure is of the kind its type declares"
         );
-        Some(ReplayedStep {
-            values: Vec::new(),
-            explanation: why.explain(from, step),
-            figure,
-        })
+        Some((why.explain(from, step), figure))
     }
 
     fn count_ties(&mut self, steps: u64) -> u64 {
@@ -915,15 +919,19 @@ impl Trace {
         let seg = self.segment_of_step(k);
         let segment = &self.segments[seg];
         let mut row = vec![f64::NAN; MAX_COLUMNS];
-        let mut replayed = self
+        let (explanation, figure) = self
             .replay_to(seg, k)
             .detail_step(&self.point(k), &mut row)
             .expect("a recorded step replays to the same step");
-        replayed.values = self.columns.iter().map(|c| c.kind.no_value()).collect();
+        let mut values: Vec<f64> = self.columns.iter().map(|c| c.kind.no_value()).collect();
         for (local, &global) in segment.column_index.iter().enumerate() {
-            replayed.values[global] = self.columns[global].kind.cell(row[local]);
+            values[global] = self.columns[global].kind.cell(row[local]);
         }
-        replayed
+        ReplayedStep {
+            values,
+            explanation,
+            figure,
+        }
     }
 
     /// One sentence: why step index k was taken.
