@@ -105,6 +105,49 @@ describe('trace (regions)', () => {
     expect(() => t.decisionsInRange(5, 11)).toThrow(RangeError);
   });
 
+  it("gives one point's detail from one replay: the step's decision read, its explanation, deviation, segment and exit face", async () => {
+    const t = await trace(LINE);
+    // Point 3, made by step index 2 from (2,1,1): M = 12, N = 6, region d, corner D.
+    const d = t.stepDetail(3);
+    expect(d).toMatchObject({ pointIndex: 3, stepIndex: 2, point: [3, 2, 2], pointBefore: [2, 1, 1], explanation: t.explain(2), segmentIndex: 0 });
+    expect(d.deviation).toBe(t.deviation[3]);
+    expect(d.segment!.note).toBe(t.segments[0]!.note);
+    const cell = (name: string) => d.decision.find((c) => c.name === name)!;
+    expect(d.decision.map((c) => c.name)).toEqual(t.columns.map((c) => c.name));
+    expect(cell('M')).toEqual({ name: 'M', kind: 'int', value: 12, reading: 12 });
+    expect(cell('region')).toMatchObject({ kind: 'category', reading: 'd' });
+    expect(cell('tie')).toEqual({ name: 'tie', kind: 'flag', value: 0, reading: false });
+    // The line crosses x = 3 at y = 2.1, z = 1.8 (eq. 2): 0.6 and 0.3 cells from the face's center (3, 1.5, 1.5).
+    expect(d.figure).toMatchObject({ kind: 'exitFace', region: 'd', corner: 'D', center: [3, 1.5, 1.5], cell: [[2, 1, 1], [3, 2, 2]] });
+    if (d.figure?.kind !== 'exitFace') throw new Error('expected an exit face');
+    expect(d.figure.crossing[0]).toBeCloseTo(0.6, 12);
+    expect(d.figure.crossing[1]).toBeCloseTo(0.3, 12);
+    // The start point: no step, every cell empty.
+    const start = t.stepDetail(0);
+    expect(start).toMatchObject({ stepIndex: null, pointBefore: null, explanation: null, figure: null, segmentIndex: 0 });
+    expect(start.decision.every((c) => c.value === null && c.reading === null)).toBe(true);
+    expect(() => t.stepDetail(11)).toThrow(RangeError);
+  });
+
+  it("gives a chart's rows in one call: every point, or buckets keeping each one's largest and smallest deviation", async () => {
+    const t = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [100, 37, -20] });
+    const all = t.chartSeries(1000);
+    expect(all.bucketed).toBe(false);
+    expect(Array.from(all.pointIndex)).toEqual(Array.from({ length: 101 }, (_, k) => k));
+    expect(Array.from(all.deviationMax)).toEqual(Array.from(t.deviation));
+    for (let a = 0; a < 3; a++) {
+      expect(Array.from(all.position[a]!)).toEqual(Array.from({ length: 101 }, (_, k) => t.points[k * 3 + a]));
+      expect(Array.from(all.ideal[a]!)).toEqual(Array.from({ length: 101 }, (_, k) => t.points[k * 3 + a]! - t.axisError[k * 3 + a]!));
+    }
+    // 101 points in at most 10 rows: buckets of 11, the last of 2.
+    const some = t.chartSeries(10);
+    expect(some.bucketed).toBe(true);
+    expect(Array.from(some.pointIndex)).toEqual([0, 11, 22, 33, 44, 55, 66, 77, 88, 99]);
+    expect(some.deviationMax[9]).toBe(Math.max(t.deviation[99]!, t.deviation[100]!));
+    expect(some.deviationMin[1]).toBe(Math.min(...t.deviation.subarray(11, 22)));
+    expect(() => t.chartSeries(0)).toThrow(RangeError);
+  });
+
   it('packs each step as step/direction bits that match the points', async () => {
     const t = await trace({ algorithm: 'regions', from: [5, 5, 5], to: [-3, 9, 2] });
     const codes = t.stepCodes(0, t.steps);

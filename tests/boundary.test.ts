@@ -106,16 +106,25 @@ describe('the generated boundary types', () => {
     expect(offered.gcodeSettings.length).toBeGreaterThan(0);
   });
 
-  it("declare every algorithm example's trace summary, as the core hands it over", async () => {
+  it("declare every algorithm example's trace summary and its points' details, as the core hands them over", async () => {
     const core = await loadCore();
+    const figures = new Set<string>();
     for (const info of offered.algorithms) {
       const handle = core.trace(encodeRequest({ ...info.example.options, algorithm: info.id }));
       try {
-        expectFits(handle.summary(), 'TraceSummary');
+        const summary = handle.summary();
+        expectFits(summary, 'TraceSummary');
+        for (const point of new Set([0, 1, Math.floor(summary.steps / 2), summary.steps])) {
+          const detail = handle.stepDetail(point);
+          expectFits(detail, 'StepDetail');
+          if (detail.figure) figures.add(detail.figure.kind);
+        }
       } finally {
         handle.free();
       }
     }
+    // Every kind of picture was among them.
+    expect([...figures].sort()).toEqual(['arcCandidates', 'errorTerms', 'exitFace']);
   });
 
   it('declare a G-code program with arcs, a helix, warnings and an error, and its progress', async () => {
@@ -129,6 +138,13 @@ describe('the generated boundary types', () => {
       const record = result.program();
       expect(record.moves.some((m) => m.arc !== null && m.kind === 'helix') && record.warnings.length > 0 && record.errors.length > 0).toBe(true);
       expectFits(record, 'ProgramInfo');
+      const handle = result.takeTrace();
+      try {
+        const steps = handle.summary().steps;
+        for (const point of [0, 1, Math.floor(steps / 2), steps]) expectFits(handle.stepDetail(point), 'StepDetail');
+      } finally {
+        handle.free();
+      }
     } finally {
       result.free();
     }

@@ -47,6 +47,7 @@ const PATH: TracedPath = {
     start: [0, 0, 0],
     end: [1, 1, 0],
     columns: [],
+    figures: [],
     metrics: { steps: 1, stepsMovingAxes: [0, 1, 0], pulsesByAxis: [1, 1, 0], maxDeviation: 0, meanDeviation: 0, stdDeviation: 0, maxAxisError: [0, 0, 0], ties: 0 },
     deviationBound: null,
   },
@@ -58,8 +59,8 @@ describe('TraceClient', () => {
   it('starts no worker until asked, and matches replies to requests by id', async () => {
     const { client, workers } = setUp();
     expect(workers).toHaveLength(0);
-    const first = client.request({ kind: 'explain', traceId: 1, stepIndex: 0 });
-    const second = client.request({ kind: 'explain', traceId: 1, stepIndex: 1 });
+    const first = client.request({ kind: 'export', traceId: 1, format: 'csv' });
+    const second = client.request({ kind: 'export', traceId: 1, format: 'json' });
     const [a, b] = workers[0]!.received;
     workers[0]!.reply({ id: b!.id, ok: true, value: 'second' });
     workers[0]!.reply({ id: a!.id, ok: true, value: 'first' });
@@ -88,18 +89,18 @@ describe('TraceClient', () => {
     expect(trace.alive).toBe(true);
     expect(Array.from(trace.point(1))).toEqual([1, 1, 0]);
 
-    const explaining = trace.explain(0);
-    const deviating = trace.deviationInRange(0, 2);
-    const [, explainRequest] = workers[0]!.received;
-    workers[0]!.reply({ id: explainRequest!.id, ok: false, failure: 'crash', message: 'RuntimeError: unreachable' });
-    await expect(explaining).rejects.toBeInstanceOf(CoreCrash);
-    await expect(deviating).rejects.toThrow('RuntimeError: unreachable');
+    const start = trace.stepDetail(0);
+    const end = trace.stepDetail(1);
+    const [, startRequest] = workers[0]!.received;
+    workers[0]!.reply({ id: startRequest!.id, ok: false, failure: 'crash', message: 'RuntimeError: unreachable' });
+    await expect(start).rejects.toBeInstanceOf(CoreCrash);
+    await expect(end).rejects.toThrow('RuntimeError: unreachable');
     expect(crashes).toEqual(['RuntimeError: unreachable']);
     expect(workers[0]!.terminated).toBe(true);
 
     // The old trace died with its worker: asking it again fails without a message sent.
     expect(trace.alive).toBe(false);
-    await expect(trace.explain(0)).rejects.toBeInstanceOf(CoreCrash);
+    await expect(trace.stepDetail(0)).rejects.toBeInstanceOf(CoreCrash);
     trace.free();
     expect(workers).toHaveLength(1);
 
@@ -122,7 +123,7 @@ describe('TraceClient', () => {
 
   it('keeps the worker after a bad request from the page', async () => {
     const { client, workers, crashes } = setUp();
-    const pending = client.request({ kind: 'decisions', traceId: 9, fromStep: 0, toStep: 1 });
+    const pending = client.request({ kind: 'stepDetail', traceId: 9, pointIndex: 0 });
     workers[0]!.reply({ id: workers[0]!.received[0]!.id, ok: false, failure: 'error', message: 'Error: this worker holds no trace 9' });
     const error = await pending.catch((e: unknown) => e);
     expect(error).toBeInstanceOf(Error);

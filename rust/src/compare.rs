@@ -16,7 +16,7 @@ use crate::error::Error;
 use crate::grid::MAX_AXES;
 use crate::metrics::Metrics;
 use crate::request::Request;
-use crate::trace::{Column, ColumnKind, Trace};
+use crate::trace::Trace;
 use serde::Serialize;
 use tsify::Tsify;
 use serde_json::Value;
@@ -172,35 +172,22 @@ fn digest(t: &Trace) -> TraceDigest {
     }
 }
 
-/// A decision value as people read it (see [`StepWhy::decisions`]).
-fn readable(column: &Column, value: f64) -> Value {
-    if column.kind.is_no_value(value) {
-        return Value::Null;
-    }
-    match column.kind {
-        ColumnKind::Category { labels } => labels
-            .get(value as usize)
-            .map_or(Value::from(value), |&label| Value::from(label)),
-        ColumnKind::Flag => Value::from(value == 1.0),
-        // Exact integers stay integers in JSON (|v| < 2^53).
-        ColumnKind::Int => Value::from(value as i64),
-        ColumnKind::Float => Value::from(value),
-    }
-}
-
 /// Why `t` took the step that produced point index `k`, if it did.
 pub(crate) fn why_at_point(t: &Trace, k: u64) -> Option<StepWhy> {
     let step = k.checked_sub(1).filter(|&s| s < t.steps())?;
-    let table = t.decisions(step, step + 1);
+    let replayed = t.replay_step(step);
     let decisions = t
         .columns()
         .iter()
-        .zip(&table.columns)
-        .map(|(column, values)| (column.name.to_string(), readable(column, values[0])))
+        .zip(&replayed.values)
+        .map(|(column, &value)| {
+            let reading = serde_json::to_value(column.read(value)).expect("a reading serializes");
+            (column.name.to_string(), reading)
+        })
         .collect();
     Some(StepWhy {
         step_index: step,
-        explanation: t.explain(step),
+        explanation: replayed.explanation,
         decisions,
     })
 }

@@ -19,6 +19,7 @@ pub mod catalogue;
 pub mod compare;
 pub mod error;
 pub mod experiment;
+pub mod figure;
 pub mod gcode;
 pub mod grid;
 pub mod ideal;
@@ -27,6 +28,7 @@ pub mod machine;
 pub mod metrics;
 pub mod planner;
 pub mod request;
+pub mod step_detail;
 pub mod trace;
 pub mod wasm;
 

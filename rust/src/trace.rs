@@ -13,6 +13,7 @@
 //! point k + 1; a *point index* k (0..=steps) names the position after k steps.
 
 use crate::error::Error;
+use crate::figure::{DecisionFigure, FigureKind};
 use crate::grid::{MAX_AXES, Point, Step, displacement};
 use crate::ideal::info::IdealPathInfo;
 use crate::ideal::{IdealPath, Meter};
@@ -144,6 +145,36 @@ impl Column {
     }
 }
 
+impl Column {
+    /// A value of this column as people read it: a category's label, a
+    /// flag's true or false, a number; None where the column does not apply
+    /// to the step.
+    pub fn read(&self, value: f64) -> Option<Reading> {
+        if self.kind.is_no_value(value) {
+            return None;
+        }
+        Some(match self.kind {
+            ColumnKind::Category { labels } => labels
+                .get(value as usize)
+                .map_or(Reading::Float(value), |&label| Reading::Label(label)),
+            ColumnKind::Flag => Reading::Flag(value == 1.0),
+            // Exact integers stay integers in JSON (|v| < 2^53).
+            ColumnKind::Int => Reading::Int(value as i64),
+            ColumnKind::Float => Reading::Float(value),
+        })
+    }
+}
+
+/// A decision value as people read it (see [`Column::read`]).
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
+#[serde(untagged)]
+pub enum Reading {
+    Int(i64),
+    Float(f64),
+    Label(&'static str),
+    Flag(bool),
+}
+
 /// `first` then `second`, as one array of `N` = A + B columns (checked when
 /// the constant is evaluated): for a decision that extends another's
 /// columns, so the two lists cannot drift apart.
@@ -182,6 +213,18 @@ pub trait Decision: Copy {
 
     /// One plain sentence saying why `step` was taken from `from`.
     fn explain(&self, from: &Point, step: Step) -> String;
+
+    /// The picture [`Decision::figure`] makes of this type's steps, if any:
+    /// a trace lists the pictures its steps can have, so a viewer knows
+    /// before asking for a step.
+    const FIGURE: Option<FigureKind> = None;
+
+    /// The picture of this decision, for `step` taken from `from`: of kind
+    /// [`Decision::FIGURE`], or None where a step has none (a correction
+    /// step of the circle, a line of Wang's type ② with no face).
+    fn figure(&self, _from: &Point, _step: Step) -> Option<DecisionFigure> {
+        None
+    }
 }
 
 /// An algorithm in motion: each call yields one step and the decision that
@@ -261,6 +304,13 @@ trait Replay {
     fn replay_step(&mut self, row: &mut [f64]) -> Option<Step>;
     /// Takes the next step, explaining it.
     fn explain_step(&mut self, from: &Point) -> Option<String>;
+    /// Takes the next step, writing its decision into `row` (segment
+    /// columns): its explanation and its picture.
+    fn detail_step(
+        &mut self,
+        from: &Point,
+        row: &mut [f64],
+    ) -> Option<(String, Option<DecisionFigure>)>;
     /// Takes `steps` steps: how many of them a tie decided.
     fn count_ties(&mut self, steps: u64) -> u64;
 }
@@ -279,6 +329,23 @@ impl<S: Stepper> Replay for S {
     fn explain_step(&mut self, from: &Point) -> Option<String> {
         let (step, why) = self.next_step()?;
         Some(why.explain(from, step))
+    }
+
+    fn detail_step(
+        &mut self,
+        from: &Point,
+        row: &mut [f64],
+    ) -> Option<(String, Option<DecisionFigure>)> {
+        let (step, why) = self.next_step()?;
+        why.write(row);
+        let figure = why.figure(from, step);
+        debug_assert!(
+            figure
+                .as_ref()
+                .is_none_or(|f| Some(f.kind()) == S::Why::FIGURE),
+            "a decision's figure is of the kind its type declares"
+        );
+        Some((why.explain(from, step), figure))
     }
 
     fn count_ties(&mut self, steps: u64) -> u64 {
@@ -317,6 +384,8 @@ pub struct Trace {
     positions: Vec<Point>,
     segments: Vec<Segment>,
     columns: Vec<Column>,
+    /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
+    figures: Vec<FigureKind>,
     /// Computed on first use: a pass over every point (deviation and axis
     /// error) and a replay of the decisions (ties), which a caller that only
     /// reads points or appends this trace to another (a chord of an arc)
@@ -334,6 +403,7 @@ pub struct TraceBuilder {
     positions: Vec<Point>,
     segments: Vec<Segment>,
     columns: Vec<Column>,
+    figures: Vec<FigureKind>,
     max_steps: u64,
     /// Steps this trace must take ([`Request::following`]), if any.
     follow: Option<Arc<[Step]>>,
@@ -350,6 +420,7 @@ impl TraceBuilder {
             positions: vec![start],
             segments: Vec::new(),
             columns: Vec::new(),
+            figures: Vec::new(),
             max_steps,
             follow: None,
         }
@@ -400,6 +471,7 @@ impl TraceBuilder {
             .iter()
             .map(|c| self.column_slot(c))
             .collect();
+        self.add_figure(S::Why::FIGURE);
         let mut segment = Segment {
             first_step,
             steps: 0,
@@ -505,6 +577,9 @@ impl TraceBuilder {
         let offset = self.steps.len() as u64;
         self.check_length(offset + part.steps())?;
         let slots: Vec<usize> = part.columns.iter().map(|c| self.column_slot(c)).collect();
+        for &figure in &part.figures {
+            self.add_figure(Some(figure));
+        }
         for mut segment in part.segments {
             segment.first_step += offset;
             for index in &mut segment.column_index {
@@ -537,6 +612,13 @@ impl TraceBuilder {
         }
     }
 
+    /// Lists `figure` among the trace's pictures, once.
+    fn add_figure(&mut self, figure: Option<FigureKind>) {
+        if let Some(figure) = figure.filter(|f| !self.figures.contains(f)) {
+            self.figures.push(figure);
+        }
+    }
+
     /// The finished trace. Its metrics are computed on first use
     /// ([`Trace::metrics`]).
     pub fn finish(self, algorithm: &str) -> Trace {
@@ -548,10 +630,19 @@ impl TraceBuilder {
             positions: self.positions,
             segments: self.segments,
             columns: self.columns,
+            figures: self.figures,
             metrics: OnceCell::new(),
             deviation_bound: None,
         }
     }
+}
+
+/// One step replayed ([`Trace::replay_step`]).
+pub struct ReplayedStep {
+    /// One value per trace column (NaN or [`NO_VALUE`] where it does not apply).
+    pub values: Vec<f64>,
+    pub explanation: String,
+    pub figure: Option<DecisionFigure>,
 }
 
 /// Decision values over a range of steps, one array per trace column.
@@ -592,6 +683,11 @@ impl Trace {
 
     pub fn segments(&self) -> &[Segment] {
         &self.segments
+    }
+
+    /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
+    pub fn figures(&self) -> &[FigureKind] {
+        &self.figures
     }
 
     /// Whole-path statistics, computed the first time they are asked for:
@@ -660,7 +756,7 @@ impl Trace {
     }
 
     /// Index of the segment that point index k belongs to (see `for_each_point`).
-    fn segment_of_point(&self, k: u64) -> usize {
+    pub fn segment_of_point(&self, k: u64) -> usize {
         if k < self.steps() {
             self.segment_of_step(k)
         } else {
@@ -707,8 +803,63 @@ impl Trace {
         out
     }
 
+    /// The rows a chart of points `from..to` draws, at most `max_rows` of
+    /// them, in one pass: every point, or, when there are more, buckets of
+    /// `ceil((to - from) / max_rows)` consecutive points. Column-major, R
+    /// values per column, 3 + 2 dims columns:
+    /// - the point index of the row (the bucket's first point);
+    /// - per axis, that point's coordinate;
+    /// - per axis, where the ideal path is at the same progress: the point
+    ///   less its Wang eq. (11) error ([`Trace::axis_error_range`]);
+    /// - the largest and the smallest deviation in the bucket
+    ///   ([`Trace::deviation_range`]), so no peak is lost.
+    ///
+    /// A trace without segments has no ideal path: its ideal positions
+    /// and deviations are NaN.
+    pub fn chart_rows(&self, from: u64, to: u64, max_rows: u64) -> Vec<f64> {
+        let dims = self.dims();
+        let bucket = (to - from).div_ceil(max_rows.max(1)).max(1);
+        let rows = (to - from).div_ceil(bucket) as usize;
+        let mut out = vec![f64::NAN; rows * (3 + 2 * dims)];
+        let (head, deviation) = out.split_at_mut(rows * (1 + 2 * dims));
+        let (largest, smallest) = deviation.split_at_mut(rows);
+        largest.fill(f64::NEG_INFINITY);
+        smallest.fill(f64::INFINITY);
+        if self.segments.is_empty() {
+            // Nothing to measure against (a program with no move): the
+            // points alone, the rest NaN.
+            self.walk_points(from, to, |k, p| {
+                if (k - from) % bucket == 0 {
+                    let r = ((k - from) / bucket) as usize;
+                    head[r] = k as f64;
+                    for a in 0..dims {
+                        head[(1 + a) * rows + r] = p.get(a) as f64;
+                    }
+                }
+            });
+            largest.fill(f64::NAN);
+            smallest.fill(f64::NAN);
+        }
+        self.for_each_point(from, to, |k, p, seg, meter| {
+            let r = ((k - from) / bucket) as usize;
+            if (k - from) % bucket == 0 {
+                head[r] = k as f64;
+                let local = (k - seg.first_step).min(seg.steps);
+                let error = meter.axis_error(p, local, seg.steps);
+                for a in 0..dims {
+                    head[(1 + a) * rows + r] = p.get(a) as f64;
+                    head[(1 + dims + a) * rows + r] = p.get(a) as f64 - error[a];
+                }
+            }
+            let d = meter.deviation(p);
+            largest[r] = largest[r].max(d);
+            smallest[r] = smallest[r].min(d);
+        });
+        out
+    }
+
     /// Index of the segment containing step index k.
-    fn segment_of_step(&self, k: u64) -> usize {
+    pub fn segment_of_step(&self, k: u64) -> usize {
         self.segments
             .partition_point(|s| s.first_step + s.steps <= k)
     }
@@ -777,6 +928,28 @@ impl Trace {
         }
     }
 
+    /// Step index k replayed once: its decision values (one per trace
+    /// column, as [`Trace::decisions`] gives them), its explanation and its
+    /// picture.
+    pub fn replay_step(&self, k: u64) -> ReplayedStep {
+        let seg = self.segment_of_step(k);
+        let segment = &self.segments[seg];
+        let mut row = vec![f64::NAN; MAX_COLUMNS];
+        let (explanation, figure) = self
+            .replay_to(seg, k)
+            .detail_step(&self.point(k), &mut row)
+            .expect("a recorded step replays to the same step");
+        let mut values: Vec<f64> = self.columns.iter().map(|c| c.kind.no_value()).collect();
+        for (local, &global) in segment.column_index.iter().enumerate() {
+            values[global] = self.columns[global].kind.cell(row[local]);
+        }
+        ReplayedStep {
+            values,
+            explanation,
+            figure,
+        }
+    }
+
     /// One sentence: why step index k was taken.
     pub fn explain(&self, k: u64) -> String {
         let seg = self.segment_of_step(k);
@@ -803,6 +976,9 @@ pub struct TraceSummary<'a> {
     pub end: Vec<i64>,
     /// The decision columns, in the order the decisions array holds them.
     pub columns: &'a [Column],
+    /// The pictures its steps' decisions can have: a step's own is in its
+    /// `StepDetail`.
+    pub figures: &'a [FigureKind],
     pub metrics: &'a Metrics,
     /// Absent (null) where the algorithm guarantees none.
     pub deviation_bound: Option<&'a DeviationBound>,
@@ -824,6 +1000,18 @@ pub struct SegmentSummary<'a> {
     pub note: &'a str,
 }
 
+impl Segment {
+    pub fn summary(&self) -> SegmentSummary<'_> {
+        SegmentSummary {
+            first_step: self.first_step,
+            steps: self.steps,
+            start: self.start.coords().to_vec(),
+            ideal: self.ideal.info(),
+            note: &self.setup_note,
+        }
+    }
+}
+
 impl Trace {
     pub fn summary(&self) -> TraceSummary<'_> {
         TraceSummary {
@@ -833,19 +1021,10 @@ impl Trace {
             start: self.start.coords().to_vec(),
             end: self.end.coords().to_vec(),
             columns: &self.columns,
+            figures: &self.figures,
             metrics: self.metrics(),
             deviation_bound: self.deviation_bound(),
-            segments: self
-                .segments
-                .iter()
-                .map(|s| SegmentSummary {
-                    first_step: s.first_step,
-                    steps: s.steps,
-                    start: s.start.coords().to_vec(),
-                    ideal: s.ideal.info(),
-                    note: &s.setup_note,
-                })
-                .collect(),
+            segments: self.segments.iter().map(Segment::summary).collect(),
         }
     }
 

@@ -8,14 +8,15 @@
 //!   flag column);
 //! - deviation: Float64Array, one value per point index;
 //! - axis error: Float64Array, stride = dims, one row per point index;
+//! - chart rows: Float64Array, column-major (see `Trace::chart_rows`);
 //! - step codes: Uint16Array, one packed step per step index (see `grid::Step`);
 //! - direction levels: Uint8Array, one byte per step index, bit `axis` set
 //!   while that axis's DIR line is at its negative level (see `machine`).
 //!
-//! Small data (summary, catalogue, comparisons, a program's record) crosses
-//! as plain objects: serialized by serde to JSON text, parsed once by the
-//! engine's JSON.parse (faster than building each property through the
-//! boundary). Each is a Rust type deriving `Tsify`, which writes its
+//! Small data (summary, catalogue, comparisons, a program's record, a
+//! point's `StepDetail`) crosses as plain objects: serialized by serde to
+//! JSON text, parsed once by the engine's JSON.parse (faster than building
+//! each property through the boundary). Each is a Rust type deriving `Tsify`, which writes its
 //! TypeScript twin into the package's .d.ts, and each function names that
 //! type as its return type (`unchecked_return_type`): the types the JS side
 //! reads are the Rust types, declared once.
@@ -203,6 +204,26 @@ impl TraceHandle {
     pub fn explain(&self, step: u32) -> Result<String, JsValue> {
         let (step, _) = self.step_range(step, step + 1)?;
         Ok(self.0.explain(step))
+    }
+
+    /// Point index `point` (0..=steps) and the step that produced it (step
+    /// index point - 1): its decision with the values read, explanation,
+    /// deviation, segment and picture, from one replay (see `step_detail`).
+    #[wasm_bindgen(js_name = stepDetail, unchecked_return_type = "StepDetail")]
+    pub fn step_detail(&self, point: u32) -> Result<JsValue, JsValue> {
+        let (point, _) = self.point_range(point, point + 1)?;
+        Ok(to_js(&crate::step_detail::step_detail(&self.0, point)))
+    }
+
+    /// A chart's rows of points `from..to`, at most `max_rows` of them
+    /// (buckets of points past that), column-major: see `Trace::chart_rows`.
+    #[wasm_bindgen(js_name = chartRows)]
+    pub fn chart_rows(&self, from: u32, to: u32, max_rows: u32) -> Result<Vec<f64>, JsValue> {
+        let (from, to) = self.point_range(from, to)?;
+        if max_rows == 0 {
+            return Err(to_js_error(&Error::field("maxRows", "must be at least 1")));
+        }
+        Ok(self.0.chart_rows(from, to, max_rows.into()))
     }
 
     /// This trace against `other` (same dims): both digests, the first

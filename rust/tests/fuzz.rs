@@ -12,7 +12,8 @@
 //! - it has steps + 1 points, each step moving each axis by at most one
 //!   unit and some axis by one, and its step count within `maxSteps`;
 //! - its summary, deviations and metrics are finite numbers;
-//! - every reason can be read (`explain`), and the decision rows are full;
+//! - every reason can be read (`explain`, a point's `step_detail`), and the
+//!   decision rows are full;
 //! - a program's diagnostics name lines inside the program, its step
 //!   instants never go back in time, and its steps are its trace's.
 //!
@@ -222,6 +223,31 @@ fn check_trace(trace: &Trace, request: &Map<String, Value>) {
             assert!(!trace.explain(k).is_empty());
         }
     }
+    // A point's detail replays its step (figure included) and serializes;
+    // its picture is one of those the trace lists.
+    for p in [0, 1.min(steps), steps / 2, steps] {
+        let detail = voxpath::step_detail::step_detail(trace, p);
+        if let Some(figure) = &detail.figure {
+            assert!(trace.figures().contains(&figure.kind()));
+        }
+        // None only where no segment measures it (a program with no move).
+        assert_eq!(detail.deviation.is_some(), !trace.segments().is_empty());
+        assert_finite(
+            "a point's deviation",
+            &detail.deviation.into_iter().collect::<Vec<_>>(),
+        );
+        serde_json::to_string(&detail).expect("a step's detail serializes");
+    }
+    let rows = trace.chart_rows(0, steps + 1, 100);
+    let count = rows.len() / (3 + 2 * dims);
+    assert_eq!(rows.len(), count * (3 + 2 * dims));
+    // The point indices and positions; the ideal and deviations where a segment measures them.
+    let measured = if trace.segments().is_empty() {
+        1 + dims
+    } else {
+        3 + 2 * dims
+    };
+    assert_finite("chart rows", &rows[..count * measured]);
 }
 
 #[test]

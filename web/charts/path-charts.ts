@@ -3,16 +3,15 @@
  * position against the step (6a: the point as stepped, and the ideal path at
  * the same progress), and each point's distance from the ideal path (6b's
  * straightness error) with the largest one marked. Their cursor is the
- * page's step. The rows come from the worker (ChartSeries): every point, or
- * buckets of points on a long path, where the deviation chart shows each
- * bucket's range as a band.
+ * page's step. The rows come from the core through the worker, in one call
+ * for the whole path (ChartSeries): every point, or buckets of points on a
+ * long path, where the deviation chart shows each bucket's range as a band.
  */
 import type uPlot from 'uplot';
-import type { DeviationBound } from '../core/types.js';
+import type { ChartSeries, DeviationBound } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import { afterNextFrame } from '../main-thread.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
-import type { ChartSeries } from '../worker/protocol.js';
 import { StepChart } from './chart.js';
 
 /** Rows the charts ask for: about one per pixel of a wide chart. */

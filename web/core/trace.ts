@@ -9,7 +9,7 @@ import { callCore } from './errors.js';
 import type { TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
-import type { AlgorithmInfo, DecisionColumns, TraceOptions, TraceSummary } from './types.js';
+import type { AlgorithmInfo, ChartSeries, DecisionColumns, StepDetail, TraceOptions, TraceSummary } from './types.js';
 import { loadCore } from './wasm.js';
 
 /**
@@ -167,6 +167,40 @@ export class Trace {
   explain(step: number): string {
     checkRange('step index', step, step + 1, this.steps);
     return callCore(() => this.#handle.explain(step));
+  }
+
+  /**
+   * Point index p and the step that produced it (step index p - 1; none
+   * at p = 0): the point, its deviation, the decision with every value read,
+   * the explanation, the segment and its note, and the picture of the
+   * decision (StepDetail), from one replay of that step in the core.
+   */
+  stepDetail(pointIndex: number): StepDetail {
+    checkRange('point index', pointIndex, pointIndex + 1, this.steps + 1);
+    return callCore(() => this.#handle.stepDetail(pointIndex));
+  }
+
+  /**
+   * A chart's rows of point indices from..to (all points by default), at
+   * most maxRows of them: every point, or buckets of consecutive points
+   * (ChartSeries). One pass of the core over the range.
+   */
+  chartSeries(maxRows: number, from = 0, to = this.steps + 1): ChartSeries {
+    checkRange('point indices', from, to, this.steps + 1);
+    if (!Number.isInteger(maxRows) || maxRows < 1) throw new RangeError(`maxRows must be a whole number of at least 1, got ${maxRows}`);
+    // Column-major: the point index, dims positions, dims ideal positions, largest and smallest deviation.
+    const flat = callCore(() => this.#handle.chartRows(from, to, maxRows));
+    const rows = flat.length / (3 + 2 * this.dims);
+    const column = (c: number) => flat.slice(c * rows, (c + 1) * rows);
+    const axes = Array.from({ length: this.dims }, (_, a) => a);
+    return {
+      pointIndex: column(0),
+      position: axes.map((a) => column(1 + a)),
+      ideal: axes.map((a) => column(1 + this.dims + a)),
+      deviationMax: column(1 + 2 * this.dims),
+      deviationMin: column(2 + 2 * this.dims),
+      bucketed: rows < to - from,
+    };
   }
 
   /**

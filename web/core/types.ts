@@ -25,15 +25,29 @@ export type GridPoint = ArrayLike<number>;
  */
 export type {
   AlgorithmInfo,
+  ArcCandidate,
+  ArcCandidates,
   Catalogue,
   ColumnKind,
+  DecisionCell,
+  DecisionFigure,
   DeviationBound,
+  ErrorTerm,
+  ErrorTerms,
   Example,
+  ExitFace,
+  FaceCorner,
+  FaceRegion,
+  FaceSegment,
   Family,
+  FigureKind,
   Metrics,
   OptionKind,
   OptionSpec,
   PerAxis,
+  Reading,
+  SignedAxis,
+  StepDetail,
   TiePolicy,
   TraceOptions,
   TraceSummary,
@@ -51,3 +65,22 @@ export type IdealPath = IdealPathInfo;
 
 /** Decision columns over a range of step indices; each array has one entry per step. */
 export type DecisionColumns = Record<string, Float64Array | Uint8Array>;
+
+/**
+ * Per-point quantities for a chart, at most the rows asked for
+ * (Trace.chartSeries). Row r is point index pointIndex[r]. A range with more
+ * points than rows is cut into equal buckets of consecutive points:
+ * positions are the bucket's first point, deviation is the bucket's largest
+ * and smallest value, so no peak is lost.
+ */
+export interface ChartSeries {
+  pointIndex: Float64Array;
+  /** One array per axis: the point's coordinate, grid units. */
+  position: Float64Array[];
+  /** One array per axis: where the ideal path is at the same progress (point - Wang eq. 11 error). */
+  ideal: Float64Array[];
+  deviationMax: Float64Array;
+  deviationMin: Float64Array;
+  /** True when rows are buckets of several points. */
+  bucketed: boolean;
+}

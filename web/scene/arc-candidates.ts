@@ -8,17 +8,17 @@
  * scene already draws, it shows why the step went where it did: the taken
  * residual is the one nearer 0.
  *
- * Everything is placed from the core's columns (otherCandidate, slowSteps,
- * residualStay, residualMove, read by arcCandidatesOf) and the point the
- * step reached; the page derives none of it. In a helix the cells are at the
- * reached point's height, as the column's doc says.
+ * Everything is placed from the core's picture of the step (ArcCandidates:
+ * each candidate's cell, residual and whether it was taken), the value the
+ * inspector's figure draws too; the page derives none of it. In a helix the
+ * cells are at the reached point's height.
  *
  * Drawn over the cells (overlay-group.ts), as the exit face is: the taken
  * candidate is the current cell, whose cube would hide its outline.
  */
 import * as THREE from 'three';
 import type { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
-import type { ArcCandidates } from '../inspector/decision-figure.js';
+import type { ArcCandidates } from '../core/types.js';
 import { sceneLabel } from './grid-axes.js';
 import { OverlayGroup } from './overlay-group.js';
 import { PALETTE } from './palette.js';
@@ -37,21 +37,19 @@ const LABEL_OFFSET = 1.05;
 const signed = (v: number) => (v < 0 ? `−${-v}` : String(v));
 
 export class ArcCandidateCells extends OverlayGroup {
-  /** `candidates` of the step that reached `reached` (a point of the trace, 3 coordinates). */
-  constructor(candidates: ArcCandidates, reached: ArrayLike<number>) {
+  /** The two `candidates` of one step (3 coordinates each). */
+  constructor({ candidates }: ArcCandidates) {
     super();
-    const taken = new THREE.Vector3(reached[0], reached[1], reached[2]);
-    const toOther = new THREE.Vector3().setComponent(candidates.otherAxis, candidates.otherSign);
-    const other = taken.clone().add(toOther);
-    const [takenName, otherName] = candidates.tookMove ? ['move', 'stay'] : ['stay', 'move'];
-    const [takenResidual, otherResidual] = candidates.tookMove
-      ? [candidates.residualMove, candidates.residualStay]
-      : [candidates.residualStay, candidates.residualMove];
+    const [takenOne, otherOne] = candidates[0].taken ? candidates : [candidates[1], candidates[0]];
+    const taken = new THREE.Vector3().fromArray(takenOne.cell);
+    const other = new THREE.Vector3().fromArray(otherOne.cell);
+    // One cell along the slow axis: the candidates differ there only.
+    const toOther = other.clone().sub(taken);
 
     this.#outline(other, OTHER_LINE_PX, true);
     this.#outline(taken, TAKEN_LINE_PX, false);
-    const otherLabel = sceneLabel(`${otherName}: ${signed(otherResidual)}`, 'scene-label candidate-label', other.clone().addScaledVector(toOther, LABEL_OFFSET));
-    const takenLabel = sceneLabel(`${takenName}: ${signed(takenResidual)}, taken`, 'scene-label candidate-label chosen', taken.clone().addScaledVector(toOther, -LABEL_OFFSET));
+    const otherLabel = sceneLabel(`${otherOne.name}: ${signed(otherOne.residual)}`, 'scene-label candidate-label', other.clone().addScaledVector(toOther, LABEL_OFFSET));
+    const takenLabel = sceneLabel(`${takenOne.name}: ${signed(takenOne.residual)}, taken`, 'scene-label candidate-label chosen', taken.clone().addScaledVector(toOther, -LABEL_OFFSET));
     // Zoomed out, the two anchors are a few pixels apart: the label whose
     // anchor is higher on screen stands above it and the other hangs below
     // its own, so they never cover each other (CSS2DObject.center is the

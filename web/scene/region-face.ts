@@ -6,34 +6,23 @@
  * the ideal line crosses the exit plane, and the corner the step went to
  * (the current cell's center).
  *
- * Everything is placed from the core's columns (region, corner, faceU,
- * faceV and the axes they run along, read by exitFaceOf) and the two points
- * of the step; the page derives none of it. The crossing can lie off the
- * face, up to half a cell (the faceU column's doc): the regions are
- * quadrants of the exit plane, so they are drawn on past the face, fainter.
+ * Everything is placed from the core's picture of the step (ExitFace: the
+ * face's center and axes, its regions, segments and corners, the crossing,
+ * the unit cell); the inspector's figure draws the same value. The crossing
+ * can lie off the face, up to half a cell: the regions are quadrants of the
+ * exit plane, so they are drawn on past the face, fainter.
  *
  * It is drawn over the cells (overlay-group.ts): the face runs through the
  * centers of the cells it is decided between, where the cubes would hide it.
  */
 import * as THREE from 'three';
-import type { ExitFace } from '../inspector/decision-figure.js';
+import type { ExitFace } from '../core/types.js';
 import { sceneLabel } from './grid-axes.js';
 import { OverlayGroup } from './overlay-group.js';
 import { PALETTE } from './palette.js';
 
-/** Each region's quadrant: the signs of (u, v) in it (Wang Fig. 4b: A steps the first passive axis, C the second). */
-const REGIONS = [
-  { name: 'a', u: 1, v: -1, colour: PALETTE.regionA },
-  { name: 'b', u: -1, v: -1, colour: PALETTE.regionB },
-  { name: 'c', u: -1, v: 1, colour: PALETTE.regionC },
-  { name: 'd', u: 1, v: 1, colour: PALETTE.regionD },
-] as const;
-
-/** Where the segments e-h and the center o are labelled, face coordinates: only the one the line crosses is. */
-const SEGMENT_LABELS: Record<string, [number, number]> = { e: [0, -0.25], f: [-0.25, 0], g: [0, 0.25], h: [0.25, 0], o: [0, 0] };
-
-/** Each corner's face coordinates, cells from the face's center. */
-const CORNERS = { A: [0.5, -0.5], B: [-0.5, -0.5], C: [-0.5, 0.5], D: [0.5, 0.5] } as const;
+/** Each region's colour, by name. */
+const REGION_COLOURS: Record<string, string> = { a: PALETTE.regionA, b: PALETTE.regionB, c: PALETTE.regionC, d: PALETTE.regionD };
 
 /** How far the plane around the face is drawn, cells from its center: the crossing lies within (-1, 1). */
 const PLANE_EXTENT = 1;
@@ -57,78 +46,71 @@ const CORNER_RING: [number, number] = [0.13, 0.19];
 const unit = (axis: number, sign: number) => new THREE.Vector3().setComponent(axis, sign);
 
 export class RegionFace extends OverlayGroup {
-  /** `face` of the step from `before` to `after` (points of the trace, 3 coordinates). */
-  constructor(face: ExitFace, before: ArrayLike<number>, after: ArrayLike<number>) {
+  /** `face` of the step that reached `reached` (the corner it went to, 3 coordinates). */
+  constructor(face: ExitFace, reached: ArrayLike<number>) {
     super();
     const { uAxis, vAxis } = face;
     const regionLabelClass = (name: string) => `scene-label face-region-label${name === face.region ? ' chosen' : ''}`;
-    // The face's center: half a cell past the point before the step along
-    // each passive axis, and where the step arrived along the active ones.
-    const center = new THREE.Vector3();
-    for (let a = 0; a < 3; a++) center.setComponent(a, a === uAxis ? before[a]! + face.uSign / 2 : a === vAxis ? before[a]! + face.vSign / 2 : after[a]!);
-    const eu = unit(uAxis, face.uSign);
-    const ev = vAxis === undefined ? new THREE.Vector3() : unit(vAxis, face.vSign);
+    const center = new THREE.Vector3().fromArray(face.center);
+    const eu = unit(uAxis.axis, uAxis.sign);
+    // With one passive axis the face is its edge: v does not move off it.
+    const ev = vAxis === null ? new THREE.Vector3() : unit(vAxis.axis, vAxis.sign);
     const at = (u: number, v: number) => center.clone().addScaledVector(eu, u).addScaledVector(ev, v);
 
-    // The unit cell: from the point before the step, one cell along each axis the way it travels.
-    const travel = [0, 1, 2].map((a) => (a === uAxis ? face.uSign : a === vAxis ? face.vSign : after[a]! - before[a]!));
+    // The unit cell: the box between its two opposite corners.
+    const [near, far] = face.cell;
     const cellEdges: number[] = [];
     for (let corner = 0; corner < 8; corner++) {
       for (let a = 0; a < 3; a++) {
         if (corner & (1 << a)) continue;
-        const p = [0, 1, 2].map((b) => before[b]! + (corner & (1 << b) ? travel[b]! : 0));
+        const p = [0, 1, 2].map((b) => (corner & (1 << b) ? far[b]! : near[b]!));
         const q = [...p];
-        q[a] = q[a]! + travel[a]!;
+        q[a] = far[a]!;
         cellEdges.push(...p, ...q);
       }
     }
     this.lines(cellEdges, CELL_LINE_PX, PALETTE.axis);
 
-    const corners: [string, number, number][] = [];
-    if (face.v === undefined) {
-      // One passive axis: the line leaves through the edge B-A where the
-      // active axes arrive together; its halves are regions b and a, split
-      // at the point e.
-      for (const r of REGIONS.filter((r) => r.v < 0)) {
-        this.lines([...at(0, 0).toArray(), ...at(r.u / 2, 0).toArray()], EDGE_LINE_PX, r.colour);
-        this.lines([...at(r.u / 2, 0).toArray(), ...at(r.u * PLANE_EXTENT, 0).toArray()], FACE_LINE_PX, r.colour, { opacity: PLANE_EDGE_OPACITY });
-        this.add(sceneLabel(r.name, regionLabelClass(r.name), at(r.u / 4, 0)));
+    for (const r of face.regions) {
+      const [qu, qv] = r.quadrant;
+      const colour = REGION_COLOURS[r.name]!;
+      if (vAxis === null) {
+        // The exit edge B-A: its halves are regions b and a.
+        this.lines([...at(0, 0).toArray(), ...at(qu / 2, 0).toArray()], EDGE_LINE_PX, colour);
+        this.lines([...at(qu / 2, 0).toArray(), ...at(qu * PLANE_EXTENT, 0).toArray()], FACE_LINE_PX, colour, { opacity: PLANE_EDGE_OPACITY });
+        this.add(sceneLabel(r.name, regionLabelClass(r.name), at(qu / 4, 0)));
+      } else {
+        this.#quad(at(0, 0), at(qu * PLANE_EXTENT, 0), at(qu * PLANE_EXTENT, qv * PLANE_EXTENT), at(0, qv * PLANE_EXTENT), colour, PLANE_OPACITY);
+        this.#quad(at(0, 0), at(qu / 2, 0), at(qu / 2, qv / 2), at(0, qv / 2), colour, FACE_OPACITY);
+        this.add(sceneLabel(r.name, regionLabelClass(r.name), at(qu / 4, qv / 4)));
       }
-      corners.push(['A', 0.5, 0], ['B', -0.5, 0]);
-    } else {
-      for (const r of REGIONS) {
-        this.#quad(at(0, 0), at(r.u * PLANE_EXTENT, 0), at(r.u * PLANE_EXTENT, r.v * PLANE_EXTENT), at(0, r.v * PLANE_EXTENT), r.colour, PLANE_OPACITY);
-        this.#quad(at(0, 0), at(r.u / 2, 0), at(r.u / 2, r.v / 2), at(0, r.v / 2), r.colour, FACE_OPACITY);
-        this.add(sceneLabel(r.name, regionLabelClass(r.name), at(r.u / 4, r.v / 4)));
-      }
-      // The face's outline, and the segments e-h: the cross through its center o.
-      const outline = [
-        [-0.5, -0.5, 0.5, -0.5],
-        [0.5, -0.5, 0.5, 0.5],
-        [0.5, 0.5, -0.5, 0.5],
-        [-0.5, 0.5, -0.5, -0.5],
-        [0, -0.5, 0, 0.5],
-        [-0.5, 0, 0.5, 0],
-      ].flatMap(([u1, v1, u2, v2]) => [...at(u1!, v1!).toArray(), ...at(u2!, v2!).toArray()]);
-      this.lines(outline, FACE_LINE_PX, PALETTE.ideal);
-      for (const [name, [u, v]] of Object.entries(CORNERS)) corners.push([name, u, v]);
     }
-    const segmentAt = SEGMENT_LABELS[face.region];
-    if (segmentAt) this.add(sceneLabel(face.region, regionLabelClass(face.region), at(...segmentAt)));
-    for (const [name, u, v] of corners) {
-      this.add(sceneLabel(name, `scene-label face-corner-label${name === face.corner ? ' chosen' : ''}`, at(u * CORNER_LABEL_AT, v * CORNER_LABEL_AT)));
+    if (vAxis !== null) {
+      // The face's outline, and the segments e-h: the cross through its center o.
+      const corner = (name: string) => face.corners.find((c) => c.name === name)!.at;
+      const outline = [...['B', 'A', 'D', 'C'].map(corner), corner('B')];
+      const lines = outline.slice(1).flatMap((to, i) => [...at(...outline[i]!).toArray(), ...at(...to).toArray()]);
+      for (const s of face.segments.filter((s) => s.from.some((c, i) => c !== s.to[i]))) lines.push(...at(...s.from).toArray(), ...at(...s.to).toArray());
+      this.lines(lines, FACE_LINE_PX, PALETTE.ideal);
+    }
+    // The segment (or center) the line crosses is labelled at its middle.
+    const crossed = face.segments.find((s) => s.name === face.region);
+    if (crossed) this.add(sceneLabel(crossed.name, regionLabelClass(crossed.name), at((crossed.from[0] + crossed.to[0]) / 2, (crossed.from[1] + crossed.to[1]) / 2)));
+    for (const c of face.corners) {
+      const [u, v] = c.at;
+      this.add(sceneLabel(c.name, `scene-label face-corner-label${c.name === face.corner ? ' chosen' : ''}`, at(u * CORNER_LABEL_AT, v * CORNER_LABEL_AT)));
     }
 
     // The chosen corner, ringed, in the face's plane: the ring faces the
     // remaining axis (an active one), which is normal to the face.
-    const normalAxis = [0, 1, 2].find((a) => a !== uAxis && a !== vAxis)!;
+    const normalAxis = [0, 1, 2].find((a) => a !== uAxis.axis && a !== vAxis?.axis)!;
     const ringGeometry = new THREE.RingGeometry(CORNER_RING[0], CORNER_RING[1], 40);
     const ring = this.#mesh(ringGeometry, PALETTE.ideal, 1);
-    ring.position.set(after[0]!, after[1]!, after[2]!);
+    ring.position.set(reached[0]!, reached[1]!, reached[2]!);
     ring.lookAt(ring.position.clone().add(unit(normalAxis, 1)));
 
     // The crossing: a yellow dot in a black ring, facing the same way.
-    const crossing = at(face.u, face.v ?? 0);
+    const crossing = at(...face.crossing);
     for (const [radius, colour] of [
       [CROSSING_RING, PALETTE.ideal],
       [CROSSING_RADIUS, PALETTE.crossing],

@@ -412,6 +412,8 @@ export class SceneView {
 
   /** Replaces the decision overlay (undefined: none). The view disposes the old one. */
   setOverlay(overlay: (THREE.Object3D & { dispose(): void }) | undefined): void {
+    // None before and none now (each new point while Decision in 3D is off): no frame to draw.
+    if (!overlay && !this.#overlay) return;
     if (this.#overlay) {
       this.#scene.remove(this.#overlay);
       (this.#overlay as THREE.Object3D & { dispose(): void }).dispose();

@@ -8,9 +8,8 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { GcodeMove, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { DecisionColumns, TraceOptions } from '../core/types.js';
+import type { ChartSeries, StepDetail, TraceOptions } from '../core/types.js';
 import type {
-  ChartSeries,
   InputError,
   LineSteps,
   PathSummary,
@@ -235,24 +234,13 @@ export class RemoteTrace {
     return this.#client.request(request);
   }
 
-  /** Decision columns for step indices fromStep..toStep, replayed by the core. */
-  decisionsInRange(fromStep: number, toStep: number): Promise<DecisionColumns> {
-    return this.ask({ kind: 'decisions', traceId: this.traceId, fromStep, toStep });
-  }
-
-  /** Distance from the ideal path of point indices fromPoint..toPoint, grid units. */
-  deviationInRange(fromPoint: number, toPoint: number): Promise<Float64Array> {
-    return this.ask({ kind: 'deviation', traceId: this.traceId, fromPoint, toPoint });
-  }
-
-  /** The core's one sentence on why step index k was taken. */
-  explain(stepIndex: number): Promise<string> {
-    return this.ask({ kind: 'explain', traceId: this.traceId, stepIndex });
-  }
-
-  /** The note of the segment (move) that takes step index k: what to know about it before it starts. */
-  segmentNote(stepIndex: number): Promise<string> {
-    return this.ask({ kind: 'segmentNote', traceId: this.traceId, stepIndex });
+  /**
+   * Point index p and the step that produced it (step index p - 1), as the
+   * core replays it once: decision read, explanation, deviation, segment and
+   * note, and the decision's picture.
+   */
+  stepDetail(pointIndex: number): Promise<StepDetail> {
+    return this.ask({ kind: 'stepDetail', traceId: this.traceId, pointIndex });
   }
 
   /** The charts' rows: every point, or buckets when there are more than maxPoints. */

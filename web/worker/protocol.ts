@@ -10,22 +10,20 @@
  * copies:
  * - points: Int32Array, stride dims, one row per point index 0..=steps;
  * - idealPolyline: Float64Array, stride dims, grid units;
- * - decisions: one typed array per column, one entry per step index of the range;
- * - deviation: Float64Array, one entry per point index of the range;
  * - series: see ChartSeries; cells: Int32Array, stride dims.
+ * What the page shows of one point (the inspector, the decision's figure
+ * and its 3D overlay) is one request, stepDetail, answered with the core's
+ * StepDetail.
  */
 import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, DecisionColumns, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, ChartSeries, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
   | { kind: 'catalogue' }
   | { kind: 'trace'; traceId: number; options: TraceOptions }
   | { kind: 'gcode'; traceId: number; source: string; settings: GcodeSettings }
-  | { kind: 'decisions'; traceId: number; fromStep: number; toStep: number }
-  | { kind: 'deviation'; traceId: number; fromPoint: number; toPoint: number }
-  | { kind: 'explain'; traceId: number; stepIndex: number }
-  | { kind: 'segmentNote'; traceId: number; stepIndex: number }
+  | { kind: 'stepDetail'; traceId: number; pointIndex: number }
   | { kind: 'series'; traceId: number; maxPoints: number }
   | { kind: 'difference'; traceIdA: number; traceIdB: number }
   | { kind: 'pulses'; traceId: number; fromStep: number; toStep: number }
@@ -41,8 +39,8 @@ export type RequestKind = WorkerRequest['kind'];
 /**
  * The summary the page receives: the trace's, less its segments. A G-code
  * program has a segment per move (100,000 for a program of 100,000 lines),
- * which the page would take a long task to receive; it asks for the one
- * note it shows instead (segmentNote).
+ * which the page would take a long task to receive; the segment of the
+ * point it shows comes with that point's StepDetail instead.
  */
 export type PathSummary = Omit<TraceSummary, 'segments'>;
 
@@ -51,24 +49,6 @@ export interface TracedPath {
   summary: PathSummary;
   points: Int32Array;
   idealPolyline: Float64Array;
-}
-
-/**
- * Per-point quantities for the charts, at most `maxPoints` rows. Row r is
- * point index pointIndex[r]. A path with more points than that is cut into
- * equal buckets of point indices: positions are the bucket's first point,
- * deviation is the bucket's largest and smallest value, so no peak is lost.
- */
-export interface ChartSeries {
-  pointIndex: Float64Array;
-  /** One array per axis: the point's coordinate, grid units. */
-  position: Float64Array[];
-  /** One array per axis: where the ideal path is at the same progress (point - Wang eq. 11 error). */
-  ideal: Float64Array[];
-  deviationMax: Float64Array;
-  deviationMin: Float64Array;
-  /** True when rows are buckets of several points. */
-  bucketed: boolean;
 }
 
 /**
@@ -109,10 +89,7 @@ export interface ReplyValue {
   catalogue: Catalogue;
   trace: TracedPath;
   gcode: RunProgram;
-  decisions: DecisionColumns;
-  deviation: Float64Array;
-  explain: string;
-  segmentNote: string;
+  stepDetail: StepDetail;
   series: ChartSeries;
   difference: TraceDifference;
   /** The core's pulseTrains over the range, one per axis. */

@@ -16,7 +16,6 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { Trace } from '../core/index.js';
-import { chartSeries } from './series.js';
 import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
@@ -53,20 +52,6 @@ function tracedPath(t: Trace): TracedPath {
   return { summary, points, idealPolyline };
 }
 
-/** The note of the segment that takes step index `stepIndex` (the first segment's before any step). */
-function segmentNote(t: Trace, stepIndex: number): string {
-  const segments = t.segments;
-  // Segments are in step order: the last one starting at or before the step, by bisection.
-  let low = 0;
-  let high = segments.length - 1;
-  while (low < high) {
-    const middle = (low + high + 1) >> 1;
-    if (segments[middle]!.firstStep <= stepIndex) low = middle;
-    else high = middle - 1;
-  }
-  return segments[low]?.note ?? '';
-}
-
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {
   switch (request.kind) {
     case 'catalogue':
@@ -98,20 +83,10 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         running.delete(id);
       }
     }
-    case 'decisions': {
-      const columns = held(request.traceId).decisionsInRange(request.fromStep, request.toStep);
-      return { value: columns, transfer: Object.values(columns).map((c) => c.buffer) };
-    }
-    case 'deviation': {
-      const deviation = held(request.traceId).deviationInRange(request.fromPoint, request.toPoint);
-      return { value: deviation, transfer: [deviation.buffer] };
-    }
-    case 'explain':
-      return { value: held(request.traceId).explain(request.stepIndex), transfer: [] };
-    case 'segmentNote':
-      return { value: segmentNote(held(request.traceId), request.stepIndex), transfer: [] };
+    case 'stepDetail':
+      return { value: held(request.traceId).stepDetail(request.pointIndex), transfer: [] };
     case 'series': {
-      const series = chartSeries(held(request.traceId), request.maxPoints);
+      const series = held(request.traceId).chartSeries(request.maxPoints);
       const arrays = [series.pointIndex, ...series.position, ...series.ideal, series.deviationMax, series.deviationMin];
       return { value: series, transfer: arrays.map((a) => a.buffer) };
     }

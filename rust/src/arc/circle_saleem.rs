@@ -25,6 +25,7 @@ use super::planes::{Frame, OCTANTS, OctantRule, Orientation, in_octant, octant_a
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS, norm_sq};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
+use crate::figure::{ArcCandidate, ArcCandidates, DecisionFigure, FigureKind};
 use crate::grid::{
     AXIS_NAMES, OCTANT_LABELS, Point, SIGNED_AXIS_LABELS, Step, signed_axis,
     within_i64_product_bound,
@@ -168,8 +169,79 @@ pub enum CircleStep {
     },
 }
 
+impl CircleWhy {
+    /// The candidate the step did not take, from the point it reached: one
+    /// cell along the slow axis, as (grid axis, direction); None for a
+    /// correction step. The move candidate is the stay one plus the slow
+    /// axis's step, so from the reached point the other candidate is that
+    /// step back (slow axis stepped) or forward (it stayed).
+    fn other_candidate(&self) -> Option<(usize, i64)> {
+        let CircleStep::Arc {
+            rule, slow_steps, ..
+        } = self.kind
+        else {
+            return None;
+        };
+        let local_dir = if slow_steps {
+            -rule.slow_dir
+        } else {
+            rule.slow_dir
+        };
+        let f = &self.orientation;
+        Some((f.axis(rule.slow), f.grid_direction(rule.slow, local_dir)))
+    }
+
+    /// The two candidates eq. (7) compared, for `step` taken from `from`
+    /// (in a helix, at the height of the point the step reached); None for
+    /// a correction step.
+    pub fn candidates(&self, from: &Point, step: Step) -> Option<ArcCandidates> {
+        let CircleStep::Arc {
+            residual_stay,
+            residual_move,
+            slow_steps,
+            ..
+        } = self.kind
+        else {
+            return None;
+        };
+        let (axis, dir) = self.other_candidate()?;
+        let mut reached = *from;
+        reached.apply(step);
+        let mut other = reached;
+        other.coords_mut()[axis] += dir;
+        let (stay, moved) = if slow_steps {
+            (other, reached)
+        } else {
+            (reached, other)
+        };
+        Some(ArcCandidates {
+            candidates: [
+                ArcCandidate {
+                    name: "stay",
+                    cell: stay.coords().to_vec(),
+                    residual: residual_stay,
+                    taken: !slow_steps,
+                },
+                ArcCandidate {
+                    name: "move",
+                    cell: moved.coords().to_vec(),
+                    residual: residual_move,
+                    taken: slow_steps,
+                },
+            ],
+        })
+    }
+}
+
 impl Decision for CircleWhy {
     const COLUMNS: &'static [Column] = &CIRCLE_COLUMNS;
+
+    const FIGURE: Option<FigureKind> = Some(FigureKind::ArcCandidates);
+
+    fn figure(&self, from: &Point, step: Step) -> Option<DecisionFigure> {
+        self.candidates(from, step)
+            .map(DecisionFigure::ArcCandidates)
+    }
 
     /// The two candidates' errors differ by an odd number: never equal.
     const NEVER_TIES: bool = true;
@@ -190,15 +262,8 @@ impl Decision for CircleWhy {
                 row[3] = residual_move as f64;
                 row[4] = slow_steps as u8 as f64;
                 row[5] = 0.0;
-                // The move candidate is the stay one plus the slow axis's
-                // step, so from the reached point the other candidate is that
-                // step back (slow axis stepped) or forward (it stayed).
-                let back_or_forward = if slow_steps { -1 } else { 1 };
-                let local_dir = back_or_forward * rule.slow_dir;
-                row[6] = f64::from(signed_axis(
-                    f.axis(rule.slow),
-                    f.grid_direction(rule.slow, local_dir),
-                ));
+                let (axis, dir) = self.other_candidate().expect("an arc step has one");
+                row[6] = f64::from(signed_axis(axis, dir));
             }
             CircleStep::Correction { .. } => {
                 row[1..5].fill(f64::NAN);

@@ -30,6 +30,7 @@ use super::circle_saleem::{CIRCLE_COLUMNS, CircleWhy, SaleemCircle};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
+use crate::figure::{DecisionFigure, FigureKind};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
@@ -224,6 +225,13 @@ impl Decision for HelixWhy {
 
     fn is_tie(&self) -> bool {
         self.tie
+    }
+
+    /// The circle's, where the arc stepped.
+    const FIGURE: Option<FigureKind> = CircleWhy::FIGURE;
+
+    fn figure(&self, from: &Point, step: Step) -> Option<DecisionFigure> {
+        self.arc?.figure(from, step)
     }
 
     fn explain(&self, from: &Point, step: Step) -> String {

@@ -12,6 +12,7 @@ use super::terms::{Term, Terms};
 use super::{Guard, Mirror, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
+use crate::figure::{DecisionFigure, ErrorTerm, ErrorTerms, FigureKind};
 use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
 use crate::trace::{
@@ -232,6 +233,19 @@ impl Decision for Bresenham2dWhy {
 
     fn is_tie(&self) -> bool {
         self.test.tie
+    }
+
+    const FIGURE: Option<FigureKind> = Some(FigureKind::ErrorTerms);
+
+    fn figure(&self, _from: &Point, _step: Step) -> Option<DecisionFigure> {
+        Some(DecisionFigure::ErrorTerms(ErrorTerms {
+            terms: vec![ErrorTerm {
+                name: Self::COLUMNS[0].name,
+                value: self.test.tested,
+                steps: self.test.steps,
+            }],
+            threshold: self.threshold,
+        }))
     }
 
     fn explain(&self, _from: &Point, step: Step) -> String {

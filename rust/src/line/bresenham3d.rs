@@ -10,6 +10,7 @@ use super::bresenham2d::{SaleemTerm, SaleemTest};
 use super::terms::Terms;
 use super::{GCD, Mirror, axis_list, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+use crate::figure::{DecisionFigure, ErrorTerm, ErrorTerms, FigureKind};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, ColumnRole, Decision, DeviationBound, Filled, Stepper};
@@ -103,6 +104,26 @@ impl Decision for Bresenham3dWhy {
 
     fn is_tie(&self) -> bool {
         self.tests.iter().flatten().any(|t| t.tie)
+    }
+
+    const FIGURE: Option<FigureKind> = Some(FigureKind::ErrorTerms);
+
+    /// Each minor axis's error; its column (errorX, ...) is the axis's, the
+    /// first three of [`Decision::COLUMNS`].
+    fn figure(&self, _from: &Point, _step: Step) -> Option<DecisionFigure> {
+        let terms = (0..3)
+            .filter_map(|axis| {
+                self.tests[axis].map(|t| ErrorTerm {
+                    name: Self::COLUMNS[axis].name,
+                    value: t.tested,
+                    steps: t.steps,
+                })
+            })
+            .collect();
+        Some(DecisionFigure::ErrorTerms(ErrorTerms {
+            terms,
+            threshold: self.threshold,
+        }))
     }
 
     fn explain(&self, _from: &Point, step: Step) -> String {

@@ -14,6 +14,9 @@
 use super::terms::{Term, Terms};
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+use crate::figure::{
+    DecisionFigure, ExitFace, FaceCorner, FaceRegion, FaceSegment, FigureKind, SignedAxis,
+};
 use crate::grid::{AXIS_NAMES, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
 use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
@@ -97,6 +100,26 @@ impl Region {
     fn label(self) -> &'static str {
         REGION_LABELS[self as usize]
     }
+
+    /// Regions a-d as quadrants of the exit plane (Wang Fig. 4b): the signs
+    /// of the face coordinates (u, v) in each, which are M's and N's.
+    const QUADRANTS: [(Region, [i8; 2]); 4] = [
+        (Region::A, [1, -1]),
+        (Region::B, [-1, -1]),
+        (Region::C, [-1, 1]),
+        (Region::D, [1, 1]),
+    ];
+
+    /// Segments e-h (M or N zero: between two regions, from the center o to
+    /// the side between their corners) and the center o itself, face
+    /// coordinates.
+    const SEGMENTS: [(Region, [f64; 2], [f64; 2]); 5] = [
+        (Region::E, [0.0, 0.0], [0.0, -0.5]),
+        (Region::F, [0.0, 0.0], [-0.5, 0.0]),
+        (Region::G, [0.0, 0.0], [0.0, 0.5]),
+        (Region::H, [0.0, 0.0], [0.5, 0.0]),
+        (Region::O, [0.0, 0.0], [0.0, 0.0]),
+    ];
 }
 
 impl Corner {
@@ -109,6 +132,15 @@ impl Corner {
     fn label(self) -> &'static str {
         CORNER_LABELS[self as usize]
     }
+
+    /// Where each corner is on the exit face (Wang Fig. 4b), face
+    /// coordinates: A steps the first passive axis, C the second.
+    const ON_FACE: [(Corner, [f64; 2]); 4] = [
+        (Corner::A, [0.5, -0.5]),
+        (Corner::B, [-0.5, -0.5]),
+        (Corner::C, [-0.5, 0.5]),
+        (Corner::D, [0.5, 0.5]),
+    ];
 }
 
 /// The decision behind one step.
@@ -153,6 +185,72 @@ impl RegionsWhy {
     /// for a passive axis the line does not have.
     pub fn face_axes(&self) -> [Option<u8>; 2] {
         self.geometry.passive_direction
+    }
+
+    /// Wang's Fig. 4 for this step from `from`: the exit face with the parts
+    /// it has, placed on the grid (see [`ExitFace`]); None on a type ② line,
+    /// which crosses no face.
+    pub fn exit_face(&self, from: &Point, step: Step) -> Option<ExitFace> {
+        let (region, corner) = (self.region?, self.corner?);
+        let [u, v] = self.face_crossing();
+        let [u_axis, v_axis] = self.face_axes().map(|a| a.map(SignedAxis::of_label_index));
+        let (u, u_axis) = (u?, u_axis?);
+        // With one passive axis the face is its edge B-A, at v = -1/2, and
+        // only the parts with v < 0 lie on it (a missing N is negative).
+        let edge = v_axis.is_none();
+        let on_edge = |at: [f64; 2]| !edge || at[1] < 0.0;
+        let mut to = *from;
+        to.apply(step);
+        let mut center = vec![0.0; 3];
+        let mut far = from.coords().to_vec();
+        for a in 0..3 {
+            let passive = [Some(u_axis), v_axis]
+                .into_iter()
+                .flatten()
+                .find(|s| usize::from(s.axis) == a);
+            let travel = passive.map_or(to.get(a) - from.get(a), |s| i64::from(s.sign));
+            far[a] += travel;
+            center[a] = match passive {
+                Some(s) => from.get(a) as f64 + f64::from(s.sign) / 2.0,
+                None => to.get(a) as f64,
+            };
+        }
+        Some(ExitFace {
+            region: region.label(),
+            corner: corner.label(),
+            u_axis,
+            v_axis,
+            crossing: [u, v.unwrap_or(-0.5)],
+            regions: Region::QUADRANTS
+                .iter()
+                .filter(|(_, q)| !edge || q[1] < 0)
+                .map(|&(r, quadrant)| FaceRegion {
+                    name: r.label(),
+                    quadrant,
+                })
+                .collect(),
+            segments: Region::SEGMENTS
+                .iter()
+                .filter(|&&(r, _, _)| !edge || r == Region::E)
+                .map(|&(r, from, to)| FaceSegment {
+                    name: r.label(),
+                    // On an edge, e is the point between A and B, where
+                    // the segment e meets the side B-A.
+                    from: if edge { to } else { from },
+                    to,
+                })
+                .collect(),
+            corners: Corner::ON_FACE
+                .iter()
+                .filter(|(_, at)| on_edge(*at))
+                .map(|&(c, at)| FaceCorner {
+                    name: c.label(),
+                    at,
+                })
+                .collect(),
+            center,
+            cell: [from.coords().to_vec(), far],
+        })
     }
 }
 
@@ -225,6 +323,12 @@ impl Decision for RegionsWhy {
 
     fn is_tie(&self) -> bool {
         self.tie
+    }
+
+    const FIGURE: Option<FigureKind> = Some(FigureKind::ExitFace);
+
+    fn figure(&self, from: &Point, step: Step) -> Option<DecisionFigure> {
+        self.exit_face(from, step).map(DecisionFigure::ExitFace)
     }
 
     fn explain(&self, _from: &Point, step: Step) -> String {

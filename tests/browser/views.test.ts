@@ -1,0 +1,100 @@
+// How the page asks the worker, counted: every message the page posts to a
+// Worker is recorded by wrapping Worker.prototype.postMessage before the
+// page's scripts run (no hook in the page itself).
+// - A view-only change (2D, Reset view, Decision in 3D, the camera) touches
+//   the path views alone: no message to the worker, and the inspector's and
+//   the charts' elements are not rebuilt.
+// - A new point costs one request (stepDetail), which the inspector, its
+//   figure and the 3D overlay all draw from.
+import type { Page } from 'playwright-core';
+import { afterAll, describe, expect, it } from 'vitest';
+import { closeAll, openPage } from './harness.js';
+
+afterAll(closeAll);
+
+declare global {
+  interface Window {
+    /** The kind of each request the page posted to a worker ('cancel' for a cancellation), in order. */
+    workerRequests: string[];
+  }
+}
+
+/** Installed before the page's scripts: records the kind of every message posted to a worker. */
+function recordWorkerRequests(): void {
+  window.workerRequests = [];
+  const post = Worker.prototype.postMessage;
+  Worker.prototype.postMessage = function (this: Worker, message: unknown, ...rest: [StructuredSerializeOptions?]) {
+    const request = (message as { request?: { kind: string } }).request;
+    window.workerRequests.push(request?.kind ?? 'cancel');
+    return post.call(this, message, ...rest);
+  } as Worker['postMessage'];
+}
+
+/** The requests posted since the last call. */
+function takeRequests(page: Page): Promise<string[]> {
+  return page.evaluate(() => window.workerRequests.splice(0));
+}
+
+/** Resolves after two frames and a task: whatever a change set going has been asked for by then. */
+function settled(page: Page): Promise<void> {
+  return page.evaluate(() => new Promise<void>((resolve) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(resolve, 50)))));
+}
+
+/** Marks the inspector's M cell and the first chart's canvas, to tell later whether they were replaced. */
+function mark(page: Page): Promise<void> {
+  return page.evaluate(() => {
+    for (const selector of ['[data-testid=inspector-value-M]', '[data-testid=charts] canvas']) {
+      (document.querySelector(selector) as HTMLElement).dataset.marked = 'yes';
+    }
+  });
+}
+
+function marked(page: Page): Promise<number> {
+  return page.evaluate(() => document.querySelectorAll('[data-marked=yes]').length);
+}
+
+describe('the page and its worker', () => {
+  it('changes the view (2D, Reset view, Decision in 3D, camera) without asking the worker or rebuilding the other panels', async () => {
+    // A planar line (z = 0), so the 2D view applies; regions, so Decision in 3D has an exit face to draw.
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=10,7,0&step=3', { initScript: recordWorkerRequests });
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+    await expect.poll(() => page.getByTestId('charts').locator('canvas').count()).toBe(2);
+    await settled(page);
+    expect(await takeRequests(page)).toContain('stepDetail');
+    await mark(page);
+
+    const canvas = page.getByTestId('scene-canvas');
+    await page.getByTestId('view-2d').check();
+    await expect.poll(() => canvas.getAttribute('data-projection')).toBe('2d');
+    await settled(page);
+    await page.getByTestId('reset-view').click();
+    await page.getByTestId('decision-3d').check();
+    await page.waitForURL(/decision3d=1/);
+    await canvas.focus();
+    await page.keyboard.press('ArrowLeft');
+    await page.keyboard.press('+');
+    await page.waitForURL(/camera=/);
+    await page.getByTestId('view-2d').uncheck();
+    await expect.poll(() => canvas.getAttribute('data-projection')).toBe('3d');
+    await page.getByTestId('decision-3d').uncheck();
+    await page.waitForURL(/decision3d=0/);
+    await settled(page);
+
+    expect(await takeRequests(page)).toEqual([]);
+    expect(await marked(page)).toBe(2);
+
+    // One point, one request: the inspector, the figure and the overlay read the same answer.
+    await page.getByTestId('decision-3d').check();
+    await settled(page);
+    await page.getByTestId('next').click();
+    await page.getByTestId('step-counter').filter({ hasText: /^Step 4 of/ }).waitFor();
+    await expect.poll(() => page.getByTestId('inspector-value-M').innerText()).toBe('6');
+    await settled(page);
+    expect(await takeRequests(page)).toEqual(['stepDetail']);
+    expect(await marked(page)).toBe(2);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -1,0 +1,51 @@
+/**
+ * The page's exports: the traces on screen as the CLI writes them (CSV,
+ * JSON, written by the core's writers in the worker), the random lines as
+ * CSV, and the view as a PNG.
+ */
+import { randomLinesToCsv } from '../core/export.js';
+import type { RemoteTrace } from '../worker/client.js';
+import type { Shown } from './shown.js';
+
+export interface ExportButtons {
+  csv: HTMLButtonElement;
+  json: HTMLButtonElement;
+  png: HTMLButtonElement;
+}
+
+/** Saves `blob` as a file named `name` through the browser's download. */
+export function download(name: string, blob: Blob): void {
+  const url = URL.createObjectURL(blob);
+  const link = document.createElement('a');
+  link.href = url;
+  link.download = name;
+  document.body.append(link);
+  link.click();
+  link.remove();
+  // After the click has handed the URL to the download.
+  setTimeout(() => URL.revokeObjectURL(url), 0);
+}
+
+/** The traces on screen and their file names: the program, or the trace, or both compared ones, each under its algorithm's id. */
+function exported(shown: Shown): [RemoteTrace, string][] {
+  if (shown.program) return [[shown.program, 'program']];
+  return [shown.a, shown.b].filter((t) => t !== undefined).map((t) => [t, t.algorithm]);
+}
+
+/**
+ * Wires the export buttons: `shown` says what is on screen when one is
+ * pressed, `view` draws the PNG, `viewName` names it.
+ */
+export function wireExports(buttons: ExportButtons, shown: () => Shown, view: { toPng(): Promise<Blob> }, viewName: () => string): void {
+  buttons.csv.addEventListener('click', async () => {
+    const { experiment } = shown();
+    if (experiment) return download(`random-lines-${experiment.algorithm}.csv`, new Blob([randomLinesToCsv(experiment)], { type: 'text/csv' }));
+    for (const [trace, name] of exported(shown())) download(`${name}-steps.csv`, new Blob([await trace.exportAs('csv')], { type: 'text/csv' }));
+  });
+  buttons.json.addEventListener('click', async () => {
+    for (const [trace, name] of exported(shown())) download(`${name}-steps.json`, new Blob([await trace.exportAs('json')], { type: 'application/json' }));
+  });
+  buttons.png.addEventListener('click', async () => {
+    download(`${viewName()}-view.png`, await view.toPng());
+  });
+}

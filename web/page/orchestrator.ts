@@ -1,0 +1,271 @@
+/**
+ * The page's one direction, input -> core -> views: a change of what is
+ * traced runs the core again (debounced, in the worker; only the latest
+ * run's answer is shown), and the views are given the traces it returns
+ * (present). A change of the shown step goes to every view; a change of how
+ * the paths are looked at (2D, Reset view, the camera, Decision in 3D) goes
+ * to the path views alone (path-views.ts), with no new request.
+ *
+ * Modes (state.mode): trace (one algorithm), compare (two on the same move),
+ * gcode (a program on a machine), experiment (Wang's random lines). Each
+ * mode's results plug into the same views through the RemoteTrace it
+ * produces.
+ */
+import type { PathCharts } from '../charts/path-charts.js';
+import type { ComparePanel } from '../compare/compare-panel.js';
+import type { StepDetail } from '../core/types.js';
+import { renderExperiment } from '../experiment/experiment-panel.js';
+import type { AlgorithmInputs } from '../form/algorithm-inputs.js';
+import type { OptionsForm } from '../form/options-form.js';
+import type { GcodePanel } from '../gcode/gcode-panel.js';
+import type { TimingDiagram } from '../gcode/timing-diagram.js';
+import type { Inspector } from '../inspector/inspector.js';
+import { PointDetails } from '../inspector/point-details.js';
+import type { Handle } from '../scene/endpoint-handles.js';
+import { PALETTE } from '../scene/palette.js';
+import { type AppState, type Catalogue, type Mode, tracedAlgorithms, traceOptions } from '../state/app-state.js';
+import type { Store } from '../state/store.js';
+import type { Timeline } from '../timeline/timeline.js';
+import { Cancelled, CoreCrash, InputRejected, type RemoteProgram, type Running, type TraceClient } from '../worker/client.js';
+import type { LineSteps } from '../worker/protocol.js';
+import { hideAlert, showAlert } from './alert.js';
+import type { ModeTabs } from './mode-tabs.js';
+import type { PathViews } from './path-views.js';
+import { mainTrace, type Shown } from './shown.js';
+import type { Status } from './status.js';
+
+/** Quiet time after the last keystroke before re-tracing, ms. */
+const RETRACE_DELAY_MS = 250;
+
+/** The state's keys whose change means the core must run again, by mode. */
+const INPUT_KEYS: Record<Mode, (keyof AppState)[]> = {
+  trace: ['algorithm', 'options'],
+  compare: ['algorithm', 'other', 'options'],
+  gcode: ['gcode', 'machine'],
+  experiment: ['algorithm', 'experiment'],
+};
+
+/** Everything the orchestrator drives. */
+export interface PageParts {
+  client: TraceClient;
+  catalogue: Catalogue;
+  store: Store<AppState>;
+  status: Status;
+  modeTabs: ModeTabs;
+  views: PathViews;
+  inputs: AlgorithmInputs;
+  experimentForm: OptionsForm;
+  gcodePanel: GcodePanel;
+  timeline: Timeline;
+  inspector: Inspector;
+  charts: PathCharts;
+  comparePanel: ComparePanel;
+  timing: TimingDiagram;
+  experimentView: HTMLElement;
+  inspectorHeading: HTMLElement;
+}
+
+export class Orchestrator {
+  readonly #p: PageParts;
+  /** Asks for the shown point's StepDetail: one request per point, for the inspector and the view's overlay alike. */
+  readonly #details: PointDetails;
+  #shown: Shown = {};
+  /** Counts runs of the core, so only the latest one's answer is shown. */
+  #latestRun = 0;
+  #running: Running<RemoteProgram> | undefined;
+  #retraceTimer: ReturnType<typeof setTimeout> | undefined;
+
+  constructor(parts: PageParts) {
+    this.#p = parts;
+    this.#details = new PointDetails(
+      (detail: StepDetail) => {
+        parts.inspector.showDetail(detail);
+        parts.views.setDetail(detail);
+      },
+      (error) => parts.inspector.showError(error),
+    );
+  }
+
+  /** What is on screen. */
+  get shown(): Shown {
+    return this.#shown;
+  }
+
+  /** Stops the G-code run under way. */
+  cancel(): void {
+    this.#running?.cancel();
+  }
+
+  /** Goes to point index `pointIndex` (a chart or a panel was clicked), stopping playback. */
+  goTo(pointIndex: number): void {
+    this.#p.store.update({ pointIndex, playing: false });
+  }
+
+  /** Highlights the steps of a picked G-code line and goes to its last point. */
+  pickLine(steps: LineSteps): void {
+    const program = this.#shown.program;
+    if (!program) return;
+    const cells = program.points.subarray((steps.firstStep + 1) * program.dims, (steps.firstStep + steps.steps + 1) * program.dims);
+    this.#p.views.setHighlights([{ cells, dims: program.dims, colour: PALETTE.onlyFirst }]);
+    this.goTo(steps.steps > 0 ? steps.firstStep + steps.steps : steps.pointBefore);
+  }
+
+  /** Handles on the move's points: the point options the traced algorithms take (from, to, center). */
+  #handles(): Handle[] {
+    const { store, catalogue } = this.#p;
+    const { mode, options } = store.state;
+    if (mode !== 'trace' && mode !== 'compare') return [];
+    const names = new Set(tracedAlgorithms(store.state, catalogue.algorithms).flatMap((a) => a.options.filter((o) => o.kind.type === 'point').map((o) => o.name)));
+    return [...names].flatMap((name) => {
+      const point = options[name];
+      return Array.isArray(point) && point.every(Number.isFinite) ? [{ name, point }] : [];
+    });
+  }
+
+  /** Gives every view the traces now shown. */
+  #present(): void {
+    const p = this.#p;
+    const state = p.store.state;
+    const { a, b, program, difference } = this.#shown;
+    const main = mainTrace(this.#shown);
+    const steps = Math.max(main?.steps ?? 0, b?.steps ?? 0);
+    const pointIndex = Math.min(state.pointIndex, steps);
+    const mainPoint = Math.min(pointIndex, main?.steps ?? 0);
+    p.views.setDetail(undefined);
+    p.views.show(this.#shown, pointIndex);
+    p.views.setHandles(this.#handles());
+    p.inspector.setTrace(main, mainPoint);
+    this.#details.setTrace(main, mainPoint);
+    void p.charts.setTrace(main);
+    p.comparePanel.show(a, b, difference);
+    p.gcodePanel.setProgram(program);
+    p.timing.setTrace(program, pointIndex);
+    if (program) void p.gcodePanel.showPoint(pointIndex);
+    // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
+    p.timeline.setSteps(main || b ? steps : undefined);
+    // Compared, the inspector follows the first path only: say which.
+    p.inspectorHeading.textContent = state.mode === 'compare' ? `Current point of ${a?.algorithm ?? 'the first'}` : 'Current point';
+  }
+
+  #freeShown(): void {
+    this.#shown.a?.free();
+    this.#shown.b?.free();
+    this.#shown.program?.free();
+    this.#shown = {};
+  }
+
+  /** Runs the core on the current inputs and shows what it returns (unless a later run has started). */
+  async retrace(): Promise<void> {
+    const p = this.#p;
+    const run = ++this.#latestRun;
+    const state = p.store.state;
+    this.#running?.cancel();
+    this.#running = undefined;
+    p.gcodePanel.setProgress(undefined);
+    p.status.tracing(state.mode);
+    try {
+      let next: Shown;
+      if (state.mode === 'trace') {
+        const [info] = tracedAlgorithms(state, p.catalogue.algorithms);
+        next = { a: await p.client.trace(traceOptions(state, info!)) };
+      } else if (state.mode === 'compare') {
+        const [infoA, infoB] = tracedAlgorithms(state, p.catalogue.algorithms);
+        const [a, b] = await Promise.all([p.client.trace(traceOptions(state, infoA!)), p.client.trace(traceOptions(state, infoB!))]);
+        next = { a, b, difference: await p.client.difference(a, b) };
+      } else if (state.mode === 'gcode') {
+        const started = p.client.runGcode(state.gcode, state.machine, (progress) => {
+          if (run === this.#latestRun) {
+            p.gcodePanel.setProgress(progress);
+            p.status.running(progress);
+          }
+        });
+        this.#running = started;
+        next = { program: await started.result };
+      } else {
+        next = { experiment: await p.client.randomLines({ algorithm: state.algorithm, ...state.experiment }) };
+      }
+      if (run !== this.#latestRun) {
+        for (const t of [next.a, next.b, next.program]) t?.free();
+        return;
+      }
+      hideAlert();
+      p.inputs.showCoreError(undefined);
+      p.gcodePanel.showCoreError(undefined);
+      p.experimentForm.showCoreError(undefined);
+      this.#freeShown();
+      this.#shown = next;
+      if (next.experiment) renderExperiment(p.experimentView, next.experiment);
+      else this.#present();
+      p.status.shown(next);
+    } catch (error) {
+      if (run !== this.#latestRun || error instanceof CoreCrash) return;
+      if (error instanceof Cancelled) {
+        p.status.cancelled();
+      } else if (error instanceof InputRejected) {
+        if (state.mode === 'gcode') p.gcodePanel.showCoreError(error);
+        else if (state.mode === 'experiment') p.experimentForm.showCoreError(error);
+        else p.inputs.showCoreError(error);
+        p.status.rejected(this.#shown.a !== undefined || this.#shown.program !== undefined);
+      } else {
+        console.error(error);
+        p.status.bug(error);
+      }
+    } finally {
+      if (run === this.#latestRun) {
+        this.#running = undefined;
+        p.gcodePanel.setProgress(undefined);
+      }
+    }
+  }
+
+  /** The worker's core crashed: its traces died with it. */
+  coreCrashed(message: string): void {
+    // Drop them rather than show values that can no longer be explained.
+    this.#shown = {};
+    this.#present();
+    this.#p.status.clear();
+    showAlert(`The core stopped with an internal error, a bug in voxpath: ${message}. It has been restarted.`, 'Trace again', () => {
+      hideAlert();
+      void this.retrace();
+    });
+  }
+
+  /** Reacts to a change of the state (the store's listener). */
+  stateChanged(state: AppState, previous: AppState): void {
+    const p = this.#p;
+    if (state.mode !== previous.mode || state.layout !== previous.layout) p.modeTabs.render();
+    const inputsChanged = state.mode !== previous.mode || INPUT_KEYS[state.mode].some((k) => state[k] !== previous[k]);
+    if (inputsChanged) {
+      clearTimeout(this.#retraceTimer);
+      this.#retraceTimer = setTimeout(() => void this.retrace(), RETRACE_DELAY_MS);
+      if (state.options !== previous.options) p.views.setHandles(this.#handles());
+    } else if (state.layout !== previous.layout) {
+      // The same traces, laid out anew: the path views only.
+      p.views.show(this.#shown, state.pointIndex);
+    } else if (state.projection !== previous.projection) {
+      p.views.setProjection(state.projection);
+    } else if (state.camera === null && previous.camera !== null) {
+      p.views.resetView();
+    } else if (state.camera && state.camera !== previous.camera) {
+      p.views.setCamera(state.camera);
+    }
+    if (state.decision3d !== previous.decision3d) p.views.setDecision3d(state.decision3d);
+    if (state.mode === 'gcode') p.gcodePanel.render();
+    p.experimentForm.setValues(state.experiment);
+    if (state.pointIndex !== previous.pointIndex) this.#showPoint(state.pointIndex);
+  }
+
+  /** Every view at point index `pointIndex` (each path at most at its end). */
+  #showPoint(pointIndex: number): void {
+    const p = this.#p;
+    const main = mainTrace(this.#shown);
+    p.views.showPoint(pointIndex, this.#shown);
+    if (main) {
+      p.inspector.showPoint(Math.min(pointIndex, main.steps));
+      this.#details.show(Math.min(pointIndex, main.steps));
+    }
+    p.charts.showPoint(pointIndex);
+    p.timing.showPoint(pointIndex);
+    if (this.#shown.program) void p.gcodePanel.showPoint(pointIndex);
+  }
+}

@@ -1,0 +1,170 @@
+/**
+ * The path views: the main view, a second one beside it when two paths are
+ * compared side by side, their tools (2D, Reset view, Decision in 3D) and
+ * their legend.
+ *
+ * show() draws what is on screen, building the views' GPU buffers: for new
+ * traces or a new layout. Everything else only changes how the same paths
+ * are looked at (the projection, the camera, the shown step, the decision
+ * overlay) and is done on the views alone: nothing is rebuilt and the
+ * worker is not asked (tests/browser/views.test.ts checks it).
+ */
+import type { StepDetail } from '../core/types.js';
+import { decisionOverlay, decisionOverlayKinds } from '../scene/decision-overlay.js';
+import type { Handle } from '../scene/endpoint-handles.js';
+import { PALETTE } from '../scene/palette.js';
+import { type Highlight, type SceneCallbacks, SceneView } from '../scene/scene-view.js';
+import type { AppState, CameraState, Projection } from '../state/app-state.js';
+import type { Store } from '../state/store.js';
+import { mainTrace, type Shown } from './shown.js';
+
+export interface PathViewElements {
+  /** Where the second view goes (side by side). */
+  secondViewport: HTMLDivElement;
+  view2d: HTMLInputElement;
+  reset: HTMLButtonElement;
+  decision3d: HTMLInputElement;
+  /** The label of decision3d, whose tooltip says what it draws. */
+  decision3dLabel: HTMLElement;
+  legendVisited: HTMLElement;
+  legendSecondName: HTMLElement;
+  legendOnlyFirst: HTMLElement;
+  legendOnlySecond: HTMLElement;
+}
+
+export class PathViews {
+  readonly #main: SceneView;
+  #second: SceneView | undefined;
+  readonly #e: PathViewElements;
+  readonly #store: Store<AppState>;
+  /** Where the views' camera moves and handle drags go: into the state. */
+  readonly events: SceneCallbacks;
+  /** The shown point's detail, whose decision the overlay draws. */
+  #detail: StepDetail | undefined;
+
+  /** `main` is made early, so that its shaders compile while the core loads (SceneView's warm-up). */
+  constructor(main: SceneView, elements: PathViewElements, store: Store<AppState>) {
+    this.#main = main;
+    this.#e = elements;
+    this.#store = store;
+    this.events = {
+      onCamera: (camera) => store.update({ camera }),
+      onHandle: (name, point) => store.update({ options: { ...store.state.options, [name]: point } }),
+    };
+    const { view2d, reset, decision3d } = elements;
+    view2d.addEventListener('change', () => store.update({ projection: view2d.checked ? '2d' : '3d', camera: null }));
+    reset.addEventListener('click', () => store.update({ camera: null }));
+    decision3d.addEventListener('change', () => store.update({ decision3d: decision3d.checked }));
+  }
+
+  /**
+   * Draws what is shown at `pointIndex` (new traces, or a new layout): the
+   * views' buffers are built again. New traces come without a detail yet
+   * (setDetail(undefined) first).
+   */
+  show(shown: Shown, pointIndex: number): void {
+    const state = this.#store.state;
+    const { a, b, difference } = shown;
+    const main = mainTrace(shown);
+    const side = state.mode === 'compare' && state.layout === 'side';
+    this.#main.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
+    if (state.mode === 'compare' && !side) this.#main.setSecond(b);
+    if (side) {
+      this.#second ??= new SceneView(this.#e.secondViewport, this.events, 'second path view');
+      this.#second.setTrace(b, Math.min(pointIndex, b?.steps ?? 0), state.projection, state.camera);
+    } else {
+      this.#second?.setTrace(undefined, 0, state.projection, null);
+    }
+    if (difference && a && b) {
+      const onlyA = { cells: difference.onlyInA, dims: a.dims, colour: PALETTE.onlyFirst };
+      const onlyB = { cells: difference.onlyInB, dims: b.dims, colour: PALETTE.onlySecond };
+      if (side) {
+        this.#main.setHighlights([onlyA]);
+        this.#second?.setHighlights([onlyB]);
+      } else {
+        this.#main.setHighlights([onlyA, onlyB]);
+      }
+    }
+    this.#showProjection();
+    const { decision3d, decision3dLabel } = this.#e;
+    const overlays = decisionOverlayKinds(main?.figures ?? []);
+    decision3d.checked = state.decision3d;
+    decision3d.disabled = overlays.length === 0;
+    decision3dLabel.title =
+      overlays.length > 0
+        ? `The current step's decision in the view: ${overlays.join('; or ')}.`
+        : "This algorithm's decisions have no 3D picture: only the discriminate regions' exit face and the circle's candidates do";
+    const e = this.#e;
+    const compared = state.mode === 'compare';
+    e.legendVisited.textContent = compared ? `visited by ${a?.algorithm ?? 'the first'}` : 'visited';
+    e.legendSecondName.textContent = `${b?.algorithm ?? 'second'}${side ? ' (right view)' : ''}`;
+    e.legendOnlyFirst.textContent = `only ${a?.algorithm ?? 'first'} visits`;
+    e.legendOnlySecond.textContent = `only ${b?.algorithm ?? 'second'} visits`;
+    // The shown point's decision, on the views built anew.
+    this.#drawDecision();
+  }
+
+  /** The 2D toggle as the main view is: on in 2D, off where the path is not planar. */
+  #showProjection(): void {
+    const { view2d } = this.#e;
+    const planar = this.#main.planar;
+    view2d.checked = this.#store.state.projection === '2d' && planar;
+    view2d.disabled = !planar;
+    view2d.parentElement!.title = planar ? "Orthographic view of the path's plane, with the pixel grid" : 'The path is not in one plane';
+  }
+
+  /** Switches every view to `projection`, framing its path. */
+  setProjection(projection: Projection): void {
+    this.#main.setProjection(projection);
+    this.#second?.setProjection(projection);
+    this.#showProjection();
+  }
+
+  /** Frames every view's path. */
+  resetView(): void {
+    this.#main.resetView();
+    this.#second?.resetView();
+  }
+
+  setCamera(camera: CameraState): void {
+    this.#main.setCamera(camera);
+    this.#second?.setCamera(camera);
+  }
+
+  /** Shows each path after `pointIndex` steps (at most its own). */
+  showPoint(pointIndex: number, shown: Shown): void {
+    this.#main.showPoint(Math.min(pointIndex, mainTrace(shown)?.steps ?? 0));
+    this.#second?.showPoint(Math.min(pointIndex, shown.b?.steps ?? 0));
+  }
+
+  /** Outlines cells of the main view (the steps of a picked G-code line). */
+  setHighlights(highlights: readonly Highlight[]): void {
+    this.#main.setHighlights(highlights);
+  }
+
+  setHandles(handles: readonly Handle[]): void {
+    this.#main.setHandles(handles);
+  }
+
+  /** The shown point's detail: its decision is drawn in the view while Decision in 3D is on. */
+  setDetail(detail: StepDetail | undefined): void {
+    this.#detail = detail;
+    this.#drawDecision();
+  }
+
+  /** Decision in 3D on or off. */
+  setDecision3d(on: boolean): void {
+    this.#e.decision3d.checked = on;
+    this.#drawDecision();
+  }
+
+  #drawDecision(): void {
+    const detail = this.#detail;
+    this.#main.setOverlay(this.#store.state.decision3d && detail ? decisionOverlay(detail) : undefined);
+  }
+
+  /** The main view as a PNG. */
+  toPng(): Promise<Blob> {
+    return this.#main.toPng();
+  }
+}

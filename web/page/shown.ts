@@ -1,0 +1,19 @@
+/** What is on screen: the traces the worker holds for the current mode, and what the core said of them. */
+import type { RandomLinesResult } from '../core/index.js';
+import type { RemoteProgram, RemoteTrace } from '../worker/client.js';
+import type { TraceDifference } from '../worker/protocol.js';
+
+export interface Shown {
+  /** The trace (trace mode), or the first of two compared. */
+  a?: RemoteTrace;
+  /** The second of two compared. */
+  b?: RemoteTrace;
+  program?: RemoteProgram;
+  difference?: TraceDifference;
+  experiment?: RandomLinesResult;
+}
+
+/** The trace the inspector, the charts and the timeline follow: the program's, or the first one's. */
+export function mainTrace(shown: Shown): RemoteTrace | undefined {
+  return shown.program ?? shown.a;
+}

@@ -1,0 +1,79 @@
+/**
+ * The status line under the inputs: what the core is doing, what it traced
+ * (steps, ends, the largest deviation and the bound the rule promises, ties;
+ * a program's lines, moves and stop), and why nothing was traced.
+ */
+import type { GcodeProgress } from '../core/index.js';
+import { formatPoint } from '../format.js';
+import type { Mode } from '../state/app-state.js';
+import type { RemoteTrace } from '../worker/client.js';
+import type { ProgramRecord } from '../worker/protocol.js';
+import type { Shown } from './shown.js';
+
+/** One trace in a sentence. */
+export function traceStatus(trace: RemoteTrace): string {
+  const m = trace.metrics;
+  const bound = trace.deviationBound;
+  return (
+    `${trace.algorithm}: ${trace.steps} steps from ${formatPoint(trace.start)} to ${formatPoint(trace.end)}; ` +
+    `largest distance from the ideal path ${m.maxDeviation.toFixed(3)}` +
+    (bound ? ` (the rule keeps it within ${bound.value.toFixed(3)}: ${bound.why})` : '') +
+    `; ${m.ties} ${m.ties === 1 ? 'tie' : 'ties'}.`
+  );
+}
+
+/** A program run in a sentence: its size, where it stopped and its warnings. */
+export function programStatus(p: ProgramRecord): string {
+  return (
+    `${p.lines} lines, ${p.moveCount} moves, ${p.steps} steps at ${p.stepsPerMm.join(' / ')} steps/mm` +
+    `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${p.errors[0]!.message}` : ''}` +
+    `${p.warnings.length ? `; ${p.warnings.length + p.warningsOmitted} warnings` : ''}.`
+  );
+}
+
+export class Status {
+  readonly #element: HTMLElement;
+
+  constructor(element: HTMLElement) {
+    this.#element = element;
+  }
+
+  #say(text: string): void {
+    this.#element.textContent = text;
+  }
+
+  clear(): void {
+    this.#say('');
+  }
+
+  /** The core was asked to run for `mode`. */
+  tracing(mode: Mode): void {
+    this.#say(mode === 'experiment' ? 'Tracing the lines…' : 'Tracing…');
+  }
+
+  /** How far a program's run has got. */
+  running(progress: GcodeProgress): void {
+    this.#say(`Running: line ${progress.linesDone} of ${progress.lines}, ${progress.steps} steps so far…`);
+  }
+
+  /** What is now on screen. */
+  shown(shown: Shown): void {
+    if (shown.experiment) this.#say(`${shown.experiment.lines.length} lines traced with ${shown.experiment.algorithm}.`);
+    else if (shown.program) this.#say(programStatus(shown.program.program));
+    else this.#say([shown.a, shown.b].filter((t) => t !== undefined).map(traceStatus).join(' '));
+  }
+
+  cancelled(): void {
+    this.#say('Cancelled. The view still shows the last program that ran.');
+  }
+
+  /** The core rejected the input (the form shows why); `keptPrevious`: an earlier path is still on screen. */
+  rejected(keptPrevious: boolean): void {
+    this.#say(keptPrevious ? 'Not traced: see the message above. The view still shows the last valid path.' : 'Not traced: see the message above.');
+  }
+
+  /** Not the input's fault: a bug in the page's request, reported as one. */
+  bug(error: unknown): void {
+    this.#say(`Not traced, because of a bug in voxpath: ${String(error)}`);
+  }
+}
