@@ -65,3 +65,20 @@ export function optionalFunction<F extends (...args: never[]) => unknown>(field:
   if (value !== undefined && typeof value !== 'function') throw argumentError(field, `expected a function, got ${describeValue(value)}`);
   return value as F | undefined;
 }
+
+/** A decimal number as people write it: 12, -3.5, .5, 5., 1e6, +2. */
+const DECIMAL = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
+
+/**
+ * A number typed as text (a CLI flag, a URL key, a form field), blanks
+ * around it ignored, or undefined when it is not a finite decimal number.
+ * Number() alone reads '0x10' as 16, '0b11' as 3, '0o7' as 7, '' and ' ' as
+ * 0, and 'Infinity' as a number; none of these is what a user of a grid
+ * means, so each is refused rather than read.
+ */
+export function readDecimal(text: string): number | undefined {
+  const trimmed = text.trim();
+  if (!DECIMAL.test(trimmed)) return undefined;
+  const value = Number(trimmed);
+  return Number.isFinite(value) ? value : undefined;
+}
