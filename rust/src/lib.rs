@@ -27,6 +27,7 @@ pub mod machine;
 pub mod metrics;
 pub mod planner;
 pub mod request;
+pub mod text;
 pub mod trace;
 pub mod wasm;
 

@@ -32,6 +32,8 @@
 //! for the rest of the line. Keeping it would have meant lexing every line
 //! twice, once to guard it and once to parse it.
 
+use crate::text::echo;
+
 /// An address letter with its value, e.g. X-1.5 or F600.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Word {
@@ -113,36 +115,6 @@ pub const MAX_G_CODES_PER_LINE: usize = 16;
 /// Most M codes one line may hold (LinuxCNC's MAX_EMS: "Too many m codes
 /// on line").
 pub const MAX_M_CODES_PER_LINE: usize = 4;
-
-/// Longest number echoed whole in a message: a 1 MB number is named by its
-/// first digits and its length.
-const ECHO_CHARS: usize = 24;
-
-/// `text` as a message quotes it: cut between characters (a byte offset
-/// could fall inside one: the fuzz target found that panic), and control
-/// characters written as escapes (\u{0}), so that a NUL or an escape
-/// sequence in a program never reaches the terminal raw.
-fn echo(text: &str) -> String {
-    let chars = text.chars().count();
-    let quoted = |part: &mut dyn Iterator<Item = char>| -> String {
-        part.map(|c| {
-            if c.is_control() {
-                c.escape_unicode().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
-    };
-    if chars <= ECHO_CHARS {
-        quoted(&mut text.chars())
-    } else {
-        format!(
-            "{}... ({chars} characters)",
-            quoted(&mut text.chars().take(ECHO_CHARS - 8))
-        )
-    }
-}
 
 /// The reader's place in a line: a byte offset and the character column
 /// it is at, moved forward together.
