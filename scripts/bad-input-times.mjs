@@ -22,9 +22,14 @@ if (!existsSync(LIB)) {
   console.error('bad-input-times: lib/ is not built; run `node scripts/setup.mjs lib` first');
   process.exit(2);
 }
-const { runGcode, trace, VoxpathError } = await import(LIB.href);
+/** @type {typeof import('../web/core/index.js')} */
+const api = await import(LIB.href);
+const { runGcode, trace, VoxpathError } = api;
 
-/** The answer to a G-code program: its first error, else its steps (and first warning). */
+/**
+ * The answer to a G-code program: its first error, else its steps (and first warning).
+ * @param {string} source @param {object} [settings]
+ */
 async function gcode(source, settings = { stepsPerMm: 80 }) {
   const program = await runGcode(source, settings);
   try {
@@ -37,28 +42,37 @@ async function gcode(source, settings = { stepsPerMm: 80 }) {
   }
 }
 
-/** The VoxpathError `call` ends in (or what it returned, if it did not). */
+/**
+ * The VoxpathError `call` ends in (or what it returned, if it did not).
+ * @param {() => unknown} call
+ */
 async function refusal(call) {
   try {
     const result = await call();
     return `returned ${typeof result === 'object' ? result?.constructor?.name : result}`;
   } catch (error) {
-    if (!(error instanceof VoxpathError)) return `threw ${error?.name}: ${error?.message}`;
+    if (!(error instanceof VoxpathError)) return `threw ${String(error)}`;
     return `VoxpathError field=${error.field}: ${error.detail}`;
   }
 }
 
-/** The CLI's exit status and first line of stderr (or how much it printed). */
+/**
+ * The CLI's exit status and first line of stderr (or how much it printed).
+ * @param {string[]} args
+ */
 function cli(...args) {
   const r = spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8', maxBuffer: 1 << 28 });
   return `exit ${r.status}: ${r.stderr.split('\n')[0] || `${r.stdout.length} characters out`}`;
 }
 
+/** A value of the wrong type, as a careless caller passes it (the type checker is told so). */
+const wrong = (/** @type {unknown} */ value) => /** @type {never} */ (value);
+
 const MB = 1_000_000;
-const words = (count) => `G1${' X1'.repeat(count)}`;
+const words = (/** @type {number} */ count) => `G1${' X1'.repeat(count)}`;
 const line = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
 
-/** [issue item, case, run] */
+/** @type {[item: string, name: string, run: () => Promise<string> | string][]} */
 const cases = [
   ['1', 'G2147483649 X10 Y5 F600 (ran as G1)', () => gcode('G2147483649 X10 Y5 F600')],
   ['1', 'G2147483651 X10 Y5 F600 (ran as G3)', () => gcode('G2147483651 X10 Y5 F600')],
@@ -84,13 +98,13 @@ const cases = [
   ['7', 'a 50 MB line of a comment, then a move', () => gcode(`(${'c'.repeat(50 * MB)}) G1 X1 F100`)],
   ['7', '1 MB of 300-digit numbers on one line', () => gcode(`G1 ${`X${'9'.repeat(300)} `.repeat(3300)}`)],
   ['7', '1 MB of 300-digit numbers, one a line', () => gcode(`G1 F100\n${`X${'9'.repeat(300)}\n`.repeat(3300)}`)],
-  ['9', 'runGcode(12345)', () => refusal(() => runGcode(12345, { stepsPerMm: 80 }))],
-  ['9', 'runGcode(Buffer)', () => refusal(() => runGcode(Buffer.from('G1 X1'), { stepsPerMm: 80 }))],
-  ['9', 'trace with BigInt coordinates', () => refusal(() => trace({ ...line, from: [0n, 0n, 0n] }))],
-  ['9', 'explain("3") on a trace', async () => refusal(async () => (await trace(line)).explain('3'))],
+  ['9', 'runGcode(12345)', () => refusal(() => runGcode(wrong(12345), { stepsPerMm: 80 }))],
+  ['9', 'runGcode(Buffer)', () => refusal(() => runGcode(wrong(Buffer.from('G1 X1')), { stepsPerMm: 80 }))],
+  ['9', 'trace with BigInt coordinates', () => refusal(() => trace({ ...line, from: wrong([0n, 0n, 0n]) }))],
+  ['9', 'explain("3") on a trace', async () => refusal(async () => (await trace(line)).explain(wrong('3')))],
 ];
 
-const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
+const median = (/** @type {number[]} */ values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 let over = 0;
 console.log(`${ROUNDS} rounds a case; median and slowest in ms; bound ${BOUND_MS} ms\n`);
 console.log(`${'item'.padEnd(5)}${'case'.padEnd(46)}${'median'.padStart(8)}${'max'.padStart(8)}  answer`);

@@ -20,7 +20,7 @@ import {
   VoxpathError,
 } from '../web/core/index.js';
 import type { Trace } from '../web/core/index.js';
-import { rejection } from './helpers.js';
+import { rejection, voxpath } from './helpers.js';
 
 const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
 const MACHINE = { stepsPerMm: 80 };
@@ -201,5 +201,20 @@ describe('the JS API refuses what the core would misread, naming the argument', 
     }
     // What the guards pass still reaches the core, which reads it as before.
     expect((await checkPoints(request, { points: new Int32Array([0, 0, 0, 1, 1, 1]), dims: 3 })).matches).toBe(true);
+  });
+});
+
+describe('a G-code run past what its outputs hold', () => {
+  it('refuses a VCD of a program longer than its 1 ns ticks reach (every edge was pressed onto the last tick)', async () => {
+    const p = await runGcode('G1 X10 Y5 F600\nG1 X0', { stepsPerMm: 80, acceleration: 1e-300 });
+    expect(p.durationSeconds).toBeGreaterThan(1e150);
+    const e = thrown(() => p.vcd());
+    expect(e.field).toBe('program');
+    expect(e.detail).toMatch(/^the program lasts 1\.255e151 s on its planned profile, past the 1\.845e10 s \(584 years\)/);
+    p.free();
+    // The CLI names the program, not a flag --program.
+    const r = voxpath(['gcode', '-', '--steps-per-mm', '80', '--acceleration', '1e-300', '--format', 'vcd'], 'G1 X10 Y5 F600\nG1 X0\n');
+    expect([r.code, r.stdout]).toEqual([2, '']);
+    expect(r.stderr.split('\n')[0]).toMatch(/^voxpath: program: the program lasts 1\.255e151 s/);
   });
 });
