@@ -2,7 +2,7 @@
 // Golden values: Wang et al. 2020 eq. (6), (8), (10) for (0,0,0)->(10,7,6),
 // as worked out in SEED-NOTES.md (they equal Liu's Table 1 point for point).
 import { describe, expect, it } from 'vitest';
-import { algorithms, NO_VALUE, readDecision, runGcode, trace, traceToCsv, traceToJson, traceToTable } from '../web/core/index.js';
+import { algorithms, NO_VALUE, readDecision, runGcode, trace, traceToCsv, traceToJson, traceToTable, VoxpathError } from '../web/core/index.js';
 import { distanceToLine, labelsOf, rejection } from './helpers.js';
 
 const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
@@ -102,7 +102,7 @@ describe('trace (regions)', () => {
     expect(Array.from(part.M!)).toEqual(Array.from(t.decisions.M!.subarray(3, 7)));
     expect(Array.from(t.deviationInRange(2, 5))).toEqual(Array.from(t.deviation.subarray(2, 5)));
     expect(Array.from(t.pointsInRange(10, 11))).toEqual([10, 7, 6]);
-    expect(() => t.decisionsInRange(5, 11)).toThrow(RangeError);
+    expect(() => t.decisionsInRange(5, 11)).toThrow(VoxpathError);
   });
 
   it("gives one point's detail from one replay: the step's decision read, its explanation, deviation, segment and exit face", async () => {
@@ -126,7 +126,7 @@ describe('trace (regions)', () => {
     const start = t.stepDetail(0);
     expect(start).toMatchObject({ stepIndex: null, pointBefore: null, explanation: null, figure: null, segmentIndex: 0 });
     expect(start.decision.every((c) => c.value === null && c.reading === null)).toBe(true);
-    expect(() => t.stepDetail(11)).toThrow(RangeError);
+    expect(() => t.stepDetail(11)).toThrow(VoxpathError);
   });
 
   it("gives a chart's rows in one call: every point, or buckets keeping each one's largest and smallest deviation", async () => {
@@ -145,7 +145,7 @@ describe('trace (regions)', () => {
     expect(Array.from(some.pointIndex)).toEqual([0, 11, 22, 33, 44, 55, 66, 77, 88, 99]);
     expect(some.deviationMax[9]).toBe(Math.max(t.deviation[99]!, t.deviation[100]!));
     expect(some.deviationMin[1]).toBe(Math.min(...t.deviation.subarray(11, 22)));
-    expect(() => t.chartSeries(0)).toThrow(RangeError);
+    expect(() => t.chartSeries(0)).toThrow(VoxpathError);
   });
 
   it('packs each step as step/direction bits that match the points', async () => {

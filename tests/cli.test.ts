@@ -46,7 +46,7 @@ describe('voxpath trace', () => {
     [['trace', '--algorithm', 'regions', '--from', '0,0,0'], /^voxpath: --to: missing/],
     [[...TRACE, '--fro', '1'], /^voxpath: unknown flag --fro for regions/],
     [[...TRACE, '--format', 'xml'], /^voxpath: --format: expected json, csv or table, got 'xml'/],
-    [['trace', '--algorithm', 'regions', '--from', '0,x,0', '--to', '1,1,1'], /^voxpath: --from: 'x' is not a number/],
+    [['trace', '--algorithm', 'regions', '--from', '0,x,0', '--to', '1,1,1'], /^voxpath: --from: 'x' is not a finite decimal number/],
     [['trace', '--algorithm', 'regions', '--from', '0,0', '--to', '1,1'], /^voxpath: --from: regions takes 3 coordinates, got 2/],
     [['trace', '--algorithm', 'bogus', '--from', '0,0,0', '--to', '1,1,1'], /^voxpath: --algorithm: unknown algorithm 'bogus'/],
     [[...TRACE, '--tie'], /^voxpath: --tie needs a value/],
@@ -66,6 +66,42 @@ describe('voxpath trace', () => {
     expect(r.stdout).toContain('regions: Method of discriminate regions');
     expect(r.stdout).toContain('--max-steps N');
     expect(r.stdout).toContain('--tie advance|hold');
+  });
+});
+
+describe('voxpath reading numbers (issue 15 item 4)', () => {
+  // Number() read '0x10' as 16, '0b11' as 3, '0o7' as 7 and ' ' as 0; a
+  // number flag now takes decimal numbers only, and names the flag otherwise.
+  it.each([
+    [['--to', '0x10,0b11,0o7'], "--to: '0x10'"],
+    [['--to', '10,0b11,6'], "--to: '0b11'"],
+    [['--to', '10,7,0o7'], "--to: '0o7'"],
+    [['--to', '10,7, '], "--to: ' '"],
+    [['--to', '10,,6'], "--to: ''"],
+    [['--to', 'Infinity,7,6'], "--to: 'Infinity'"],
+    [['--to', '1e400,7,6'], "--to: '1e400'"],
+    [['--to', '10,7,6', '--max-steps', '0x100'], "--max-steps: '0x100'"],
+    [['--to', '10,7,6', '--max-steps='], "--max-steps: ''"],
+    [['--to', '10,7,6', '--max-steps', '1_000'], "--max-steps: '1_000'"],
+  ])('refuses %j, naming the flag', (args, named) => {
+    const r = voxpath(['trace', '--algorithm', 'regions', '--from', '0,0,0', ...args]);
+    expect([r.code, r.stdout]).toEqual([2, '']);
+    expect(r.stderr.split('\n')[0]).toBe(`voxpath: ${named} is not a finite decimal number (such as 12, -3.5 or 1e6)`);
+  });
+
+  it('refuses a machine setting written in hex as well', () => {
+    const r = voxpath(['gcode', '-', '--steps-per-mm', '0x50'], 'G1 X1 F100\n');
+    expect(r.code).toBe(2);
+    expect(r.stderr.split('\n')[0]).toBe("voxpath: --steps-per-mm: '0x50' is not a finite decimal number (such as 12, -3.5 or 1e6)");
+  });
+
+  it('reads every decimal form exactly: signs, points, exponents, blanks around', () => {
+    const r = voxpath(['trace', '--algorithm', 'regions', '--from', '-0,+0,0.', '--to', ' .1e2, 7.0 ,6e0', '--max-steps', '1e3']);
+    expect(r.code).toBe(0);
+    expect(JSON.parse(r.stdout).points.at(-1)).toEqual([10, 7, 6]);
+    // A whole number written with an exponent is whole; its range is the core's to judge.
+    const big = voxpath(['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6', '--max-steps', '1e20']);
+    expect(big.stderr.split('\n')[0]).toBe('voxpath: --max-steps: must be 0 to 1000000000, got 100000000000000000000');
   });
 });
 

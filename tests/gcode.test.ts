@@ -3,7 +3,7 @@
 import { readFileSync, readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { pulseTrains, runGcode } from '../web/core/index.js';
+import { pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
 import type { GcodeProgress } from '../web/core/index.js';
 import { rejection, voxpath } from './helpers.js';
 
@@ -35,7 +35,7 @@ describe('runGcode', () => {
     expect(p.moveAtLine(2)).toBeUndefined();
     expect([p.pointBeforeLine(1), p.pointBeforeLine(5), p.pointBeforeLine(7)]).toEqual([0, 4, 8]);
     expect(p.trace.segments[2]!.note).toMatch(/^Line 5, G1: /);
-    expect(() => p.lineOfStep(8)).toThrow(RangeError);
+    expect(() => p.lineOfStep(8)).toThrow(VoxpathError);
     p.free();
   });
 

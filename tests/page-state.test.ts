@@ -19,6 +19,7 @@ import {
 } from '../web/state/app-state.js';
 import { GCODE_URL_LIMIT, STATE_KEYS, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
 import { carriedOptions } from '../web/form/algorithm-inputs.js';
+import { readPerAxis } from '../web/form/options-form.js';
 
 let catalogue: Catalogue;
 const url = { gcodeLimit: GCODE_URL_LIMIT };
@@ -89,6 +90,16 @@ describe('page state in the URL query', () => {
   it('replaces unusable values with defaults', () => {
     const state = stateFromQuery('from=a,b,c&to=1,,2&tie=sometimes&step=-1&speed=3&mode=dance&view=4d&decision3d=yes', catalogue)!;
     expect(state).toEqual(first());
+  });
+
+  it('reads decimal numbers only: 0x10, 0b11, 0o7, Infinity and blanks are unusable, not 16, 3, 7', () => {
+    expect(stateFromQuery('from=0x10,0b11,0o7&to=Infinity,%20,6&step=0x2', catalogue)).toEqual(first());
+    expect(stateFromQuery('from=1e1,-.5,+2&to=%2010%20,7,6', catalogue)!.options).toEqual({ from: [10, -0.5, 2], to: [10, 7, 6] });
+  });
+
+  it("reads the machine form's per-axis fields the same way", () => {
+    expect([readPerAxis('0x50'), readPerAxis('80,0b1,400'), readPerAxis('80,,400'), readPerAxis('Infinity')]).toEqual([null, null, null, null]);
+    expect([readPerAxis(' 80 '), readPerAxis('80, 80, 4e2'), readPerAxis('  ')]).toEqual([80, [80, 80, 400], undefined]);
   });
 
   it('is no state at all when the query has none of its keys', () => {

@@ -20,6 +20,7 @@ use crate::compare::{StepWhy, as_object, why_at_point};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
+use crate::text::{echo, lines};
 use crate::trace::Trace;
 use serde::Serialize;
 use tsify::Tsify;
@@ -203,8 +204,9 @@ impl TextReader {
                         at(
                             offset,
                             format!(
-                                "point {index}: {} = '{cell}' is not a number",
-                                AXIS_NAMES[axis]
+                                "point {index}: {} = '{}' is not a number",
+                                AXIS_NAMES[axis],
+                                echo(cell)
                             ),
                         )
                     })?;
@@ -224,7 +226,9 @@ impl TextReader {
         let mut open: Option<(usize, u32, u32)> = None;
         for (i, c) in text.char_indices() {
             match c {
-                '\n' => {
+                // A line ends at LF, CR LF or a lone CR (`text::split_line`).
+                '\r' if text.as_bytes().get(i + 1) == Some(&b'\n') => {}
+                '\n' | '\r' => {
                     line += 1;
                     line_start = i + 1;
                 }
@@ -249,7 +253,7 @@ impl TextReader {
         let mut picked = Vec::new();
         let mut pick: Option<Vec<usize>> = None;
         let mut first = true;
-        for (number, line) in text.lines().enumerate() {
+        for (number, line) in lines(text).enumerate() {
             let trimmed = line.trim_start();
             if trimmed.is_empty() || trimmed.starts_with('#') {
                 continue;
@@ -635,7 +639,10 @@ fn trace_combination(
                 options.insert(spec.name.to_string(), value.clone());
             }
         }
-        match (info.trace)(&Request::new(info.id, options).following(steps.clone()), algorithms::find) {
+        match (info.trace)(
+            &Request::new(info.id, options).following(steps.clone()),
+            algorithms::find,
+        ) {
             Ok(trace) => return Some(trace),
             Err(e) => {
                 let refused = tried
@@ -1003,6 +1010,35 @@ mod tests {
         assert_eq!(
             f(&[0.0, 0.0, 0.0, 1.0], 3),
             "points: 4 values are not a whole number of 3-coordinate points"
+        );
+    }
+
+    #[test]
+    fn lines_end_at_a_lone_cr_and_messages_quote_control_characters() {
+        // Lone CR ends were one line of 9 coordinates ("point 0 has 9
+        // coordinates"), and a NUL was printed raw inside the message.
+        for text in ["0 0 0\r1 1 1\r2 1 1\r", "0 0 0\r\n1 1 1\r\n2 1 1"] {
+            assert_eq!(
+                Points::from_text(text, 3).unwrap().coords,
+                vec![0, 0, 0, 1, 1, 1, 2, 1, 1]
+            );
+        }
+        let e = |text: &str| Points::from_text(text, 3).unwrap_err().to_string();
+        assert_eq!(
+            e("0 0 0\r1 1\r"),
+            "line 2, column 1: point 1 has 2 coordinates; the move has 3"
+        );
+        assert_eq!(
+            e("[(0,0,0),\r(1,1)]"),
+            "line 2, column 2: point 1 has 2 coordinates; the move has 3"
+        );
+        assert_eq!(
+            e("[(0,0,0),\r\n(1,1)]"),
+            "line 2, column 2: point 1 has 2 coordinates; the move has 3"
+        );
+        assert_eq!(
+            e("0 0 0\n1\u{0} 1 1\n"),
+            "line 2, column 1: point 1: x = '1\\u{0}' is not a number"
         );
     }
 }

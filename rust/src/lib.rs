@@ -29,6 +29,7 @@ pub mod metrics;
 pub mod planner;
 pub mod request;
 pub mod step_detail;
+pub mod text;
 pub mod trace;
 pub mod wasm;
 

@@ -260,8 +260,10 @@ pub fn gcode_vcd(trace: &TraceHandle, result: &GcodeResult) -> Result<Vec<u8>, J
         )));
     }
     let mut out = Vec::new();
+    // Writing to memory does not fail: an error is the program's own (it
+    // lasts longer than the VCD's ticks reach).
     crate::gcode::vcd::write_vcd(&trace.0, &result.timeline, &mut out)
-        .expect("writing to memory does not fail");
+        .map_err(|e| to_js_error(&Error::field("program", e.to_string())))?;
     Ok(out)
 }
 

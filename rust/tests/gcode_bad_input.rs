@@ -179,3 +179,41 @@ fn control_characters_are_quoted_as_escapes() {
         assert!(!message.chars().any(char::is_control), "{message:?}");
     }
 }
+
+/// F1e300 was read as F1 and an E300 word (ignored with a warning), so the
+/// move ran at 1 mm/min; G-code numbers have no exponent.
+#[test]
+fn an_exponent_is_an_error_naming_its_word() {
+    let p = program("G1 X1 F1e300\n", 80.0);
+    assert_eq!((p.info.steps, p.info.warnings.len()), (0, 0));
+    let (line, column, message) = first_error("G1 X1 F1e300\n", 80.0);
+    assert_eq!((line, column), (1, 7));
+    assert!(
+        message.starts_with("malformed number: F1e300: a G-code number has no exponent"),
+        "{message}"
+    );
+}
+
+/// A line that repeats a word or a code is refused at the repeat: 3 MB of
+/// M3 on one line made a million "M3 ignored" warnings (50 MB: 51 s and
+/// 2 GB of wasm memory), and X1 X1 ... a million words, before the
+/// interpreter found the second X.
+#[test]
+fn a_line_of_repeats_stops_at_the_first_one_too_many() {
+    let p = program(&" M3".repeat(1_000_000), 80.0);
+    assert_eq!((p.info.warnings.len(), p.info.warnings_omitted), (0, 0));
+    assert_eq!(
+        first_error(&" M3".repeat(1_000_000), 80.0),
+        (
+            1,
+            14,
+            "too many M codes on this line: a line takes at most 4 (as LinuxCNC has it)"
+                .to_string()
+        )
+    );
+    let (_, column, message) = first_error(&format!("G1{}", " X1".repeat(1_000_000)), 80.0);
+    assert_eq!(
+        (column, message.as_str()),
+        (7, "X appears twice on this line")
+    );
+}

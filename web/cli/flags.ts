@@ -6,6 +6,7 @@
  * its help line, without code in the CLI.
  */
 import { parseArgs } from 'node:util';
+import { readDecimal } from '../core/guard.js';
 import type { OptionSpec } from '../core/index.js';
 
 /** A command-line mistake: reported in one line plus usage, exit code 2. */
@@ -57,8 +58,8 @@ export function parseFlags(args: readonly string[], switches: readonly string[] 
 }
 
 function numberOf(flag: string, part: string): number {
-  const v = Number(part);
-  if (part.trim() === '' || !Number.isFinite(v)) throw new UsageError(`${flag}: '${part}' is not a number`);
+  const v = readDecimal(part);
+  if (v === undefined) throw new UsageError(`${flag}: '${part}' is not a finite decimal number (such as 12, -3.5 or 1e6)`);
   return v;
 }
 

@@ -236,12 +236,13 @@ export async function main(args: string[]): Promise<number> {
       return 2;
     }
     if (error instanceof VoxpathError) {
-      // A learner's points are the FILE of check, not a flag; text errors carry their line and column.
+      // A learner's points are the FILE of check and a G-code program the FILE of gcode, not
+      // flags; text errors carry their line and column.
       const where =
         error.line !== undefined
           ? `line ${error.line}, column ${error.column}: `
-          : error.field === 'points'
-            ? 'points: '
+          : error.field === 'points' || error.field === 'program'
+            ? `${error.field}: `
             : error.field !== undefined
               ? `${flagOf(error.field)}: `
               : '';

@@ -12,7 +12,9 @@
  *   c.firstDifference?.why;           // the rule's sentence for that step
  *   c.alsoMatches.map((m) => m.label) // ['bresenham3d with tie = hold']
  */
-import { VoxpathError, callCore } from './errors.js';
+import { AXIS_NAMES } from './axes.js';
+import { callCore } from './errors.js';
+import { argumentError, describeValue, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import type { Check } from './pkg/voxpath.js';
 import type { TraceOptions } from './types.js';
@@ -30,18 +32,21 @@ export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Arra
 /** The result and its parts are the core's Rust types (rust/src/check.rs). */
 export type { AlsoMatch, AroundRow, Check, DifferenceKind, Difference as CheckDifference } from './pkg/voxpath.js';
 
-/** Rows of numbers as one flat array, for the core; a row of another length is named by index. */
-function flatten(rows: readonly (readonly number[])[]): { values: Float64Array; dims: number } {
-  const dims = rows[0]?.length ?? 0;
+/** Rows of numbers as one flat array, for the core; a row that is not one, or of another length, is named by index. */
+function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number } {
+  const first = rows[0];
+  const dims = Array.isArray(first) ? first.length : 0;
   const values = new Float64Array(rows.length * dims);
   rows.forEach((row, index) => {
-    if (row.length !== dims) {
-      throw new VoxpathError(`points: point ${index} has ${row.length} coordinates; point 0 has ${dims}`, {
-        field: 'points',
-        detail: `point ${index} has ${row.length} coordinates; point 0 has ${dims}`,
-      });
-    }
-    values.set(row, index * dims);
+    if (!Array.isArray(row)) throw argumentError('points', `point ${index} is ${describeValue(row)}; expected an array of coordinates`);
+    if (row.length !== dims) throw argumentError('points', `point ${index} has ${row.length} coordinates; point 0 has ${dims}`);
+    row.forEach((value: unknown, axis) => {
+      // Float64Array.set would read '0x10' as 16 and throw a TypeError on a BigInt.
+      if (typeof value !== 'number') {
+        throw argumentError('points', `point ${index}: ${AXIS_NAMES[axis] ?? `coordinate ${axis}`} must be a number, got ${describeValue(value)}`);
+      }
+      values[index * dims + axis] = value;
+    });
   });
   return { values, dims };
 }
@@ -52,15 +57,19 @@ function flatten(rows: readonly (readonly number[])[]): { values: Float64Array; 
  * (naming the point index, and for text the line and column).
  */
 export async function checkPoints(request: TraceOptions, points: LearnerPoints): Promise<Check> {
-  const core = await loadCore();
   const json = encodeRequest(request);
-  return callCore(() => {
-    if (typeof points === 'string') return core.check(json, points);
-    if (Array.isArray(points)) {
-      const { values, dims } = flatten(points);
-      return core.check(json, values, dims);
+  let given: { values: string | Int32Array | Float64Array; dims?: number };
+  if (typeof points === 'string') given = { values: points };
+  else if (Array.isArray(points)) given = flatten(points);
+  else if (typeof points === 'object' && points !== null && !ArrayBuffer.isView(points)) {
+    const flat = points as { points: unknown; dims: unknown };
+    if (!(flat.points instanceof Int32Array || flat.points instanceof Float64Array)) {
+      throw argumentError('points', `expected { points: Int32Array or Float64Array, dims }, got points = ${describeValue(flat.points)}`);
     }
-    const flat = points as { points: Int32Array; dims: number };
-    return core.check(json, flat.points, flat.dims);
-  });
+    given = { values: flat.points, dims: wholeNumber('dims', flat.dims, 1, 2 ** 32 - 1, 'coordinates per point') };
+  } else {
+    throw argumentError('points', `expected rows of coordinates, { points, dims } or text, got ${describeValue(points)}`);
+  }
+  const core = await loadCore();
+  return callCore(() => core.check(json, given.values, given.dims));
 }

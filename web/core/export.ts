@@ -10,7 +10,7 @@ import { AXIS_NAMES } from './axes.js';
 import type { Check } from './check.js';
 import type { Comparison, StepWhy } from './compare.js';
 import type { MeasureSummary, RandomLinesResult } from './experiment.js';
-import type { Trace } from './trace.js';
+import { type Trace, requireTrace } from './trace.js';
 import { type ColumnSpec, type DecisionColumns, NO_VALUE } from './types.js';
 
 /**
@@ -67,6 +67,7 @@ function* chunks(count: number): Generator<[number, number]> {
  * steps once.
  */
 export function* traceJsonChunks(trace: Trace): Generator<string> {
+  requireTrace('trace', trace);
   yield `{"algorithm":${JSON.stringify(trace.algorithm)},"dims":${trace.dims},"steps":${trace.steps},"points":[`;
   for (const [from, to] of chunks(trace.steps + 1)) {
     const flat = trace.pointsInRange(from, to);
@@ -152,6 +153,7 @@ const plain = (text: string) => text;
 
 /** One CSV row per point, with a header row (the CLI's --format csv), in pieces of at most EXPORT_CHUNK_ROWS rows. */
 export function* traceCsvChunks(trace: Trace): Generator<string> {
+  requireTrace('trace', trace);
   yield rowHeader(trace).map(csvCell).join(',') + '\n';
   const line = (cells: string[]) => cells.join(',');
   for (const [from, to] of chunks(trace.steps + 1)) yield rows(trace, from, to, '', csvCell, line).join('\n') + '\n';
@@ -169,6 +171,7 @@ export function traceToCsv(trace: Trace): string {
  * written as it is read, the way vmstat repeats its header.
  */
 export function* traceTableChunks(trace: Trace): Generator<string> {
+  requireTrace('trace', trace);
   yield [`${trace.algorithm}: ${trace.steps} steps from (${trace.start.join(', ')}) to (${trace.end.join(', ')})`, ...trace.segments.map((s) => s.note), ''].join('\n') + '\n';
   for (const [from, to] of chunks(trace.steps + 1)) {
     yield (from > 0 ? '\n' : '') + alignedTable(rowHeader(trace), rows(trace, from, to, TABLE_NO_VALUE, plain, (cells) => [...cells])).join('\n') + '\n';

@@ -15,8 +15,9 @@
  * progress and take a cancel (an AbortSignal) while a long program runs.
  */
 import { callCore } from './errors.js';
+import { argumentError, describeValue, indexRange, optionalFunction, text, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
-import { Trace } from './trace.js';
+import { Trace, requireTrace } from './trace.js';
 import { loadCore } from './wasm.js';
 import type { GcodeResult, GcodeSettings, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
 
@@ -42,7 +43,8 @@ export class GcodeProgram {
   /** Every step of every move, in order (dims 3: x, y, z in steps). */
   readonly trace: Trace;
   #moveByLine?: Map<number, number>;
-  readonly #result: GcodeResult;
+  /** The core's record of the run; undefined once freed. */
+  #result?: GcodeResult;
   readonly #vcd: () => Uint8Array;
 
   /** `result` is the core's record of the run (its plan); `vcd` writes the run's VCD. */
@@ -53,9 +55,15 @@ export class GcodeProgram {
     this.trace = trace;
   }
 
+  /** The core's record of the run (a VoxpathError once freed). */
+  get #core(): GcodeResult {
+    if (this.#result === undefined) throw argumentError('program', 'this program was freed (free()); run it again to read it');
+    return this.#result;
+  }
+
   /** Index of the move that took step index k (moves are in step order; a binary search). */
   moveOfStep(k: number): number {
-    if (!Number.isInteger(k) || k < 0 || k >= this.steps) throw new RangeError(`step index ${k} is outside 0..${this.steps}`);
+    wholeNumber('k', k, 0, this.steps - 1, 'step index');
     let lo = 0;
     let hi = this.moves.length - 1;
     // The first move whose end (firstStep + steps) is past k.
@@ -75,9 +83,7 @@ export class GcodeProgram {
 
   /** Source lines of step indices from..to: lineByStep[i] produced step from + i. */
   lineByStepInRange(from: number, to: number): Uint32Array {
-    if (!Number.isInteger(from) || !Number.isInteger(to) || from < 0 || to < from || to > this.steps) {
-      throw new RangeError(`step indices ${from}..${to} are outside 0..${this.steps}`);
-    }
+    [from, to] = indexRange(from, to, this.steps, 'step index');
     const out = new Uint32Array(to - from);
     if (from === to) return out;
     for (let i = this.moveOfStep(from), k = from; k < to; i++) {
@@ -91,6 +97,7 @@ export class GcodeProgram {
 
   /** The move programmed on a 1-based source line, if that line moved. */
   moveAtLine(line: number): ProgramInfo['moves'][number] | undefined {
+    wholeNumber('line', line, 1, Number.MAX_SAFE_INTEGER, 'line number');
     this.#moveByLine ??= new Map(this.moves.map((m, i) => [m.line, i]));
     const i = this.#moveByLine.get(line);
     return i === undefined ? undefined : this.moves[i];
@@ -101,6 +108,7 @@ export class GcodeProgram {
    * an earlier line done. For an editor cursor on a line without a move.
    */
   pointBeforeLine(line: number): number {
+    wholeNumber('line', line, 1, Number.MAX_SAFE_INTEGER, 'line number');
     const next = this.moves.find((m) => m.line >= line);
     return next === undefined ? this.steps : next.firstStep;
   }
@@ -111,7 +119,9 @@ export class GcodeProgram {
    * of the move's length. Computed in the core on demand, never stored.
    */
   stepTimes(from: number, to: number): Float64Array {
-    return callCore(() => this.#result.stepTimes(from, to));
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.steps, 'step index');
+    return callCore(() => core.stepTimes(from, to));
   }
 
   /**
@@ -120,7 +130,7 @@ export class GcodeProgram {
    * an arc has one block per chord (Grbl's mc_arc).
    */
   speedProfile(): Float64Array {
-    return this.#result.speedProfile();
+    return this.#core.speedProfile();
   }
 
   /**
@@ -130,13 +140,20 @@ export class GcodeProgram {
    * in PulseView, GTKWave or sigrok as a logic-analyser capture.
    */
   vcd(): Uint8Array {
+    // It reads both the plan and the trace: neither may have been freed.
+    void this.#core;
+    requireTrace('trace', this.trace);
     return callCore(this.#vcd);
   }
 
-  /** Releases the core's memory of the trace and the plan now. */
+  /**
+   * Releases the core's memory of the trace and the plan now. Reading them
+   * afterwards is a VoxpathError; freeing again does nothing.
+   */
   free(): void {
     this.trace.free();
-    this.#result.free();
+    this.#result?.free();
+    this.#result = undefined;
   }
 }
 
@@ -150,6 +167,18 @@ export interface RunGcodeOptions {
   sliceMs?: number;
 }
 
+/** The options of runGcode checked (each named when it is wrong); returns sliceMs. */
+function checkRunOptions(options: unknown): number {
+  if (typeof options !== 'object' || options === null) throw argumentError('options', `expected an object, got ${describeValue(options)}`);
+  const { onProgress, signal, sliceMs = 20 } = options as Record<string, unknown>;
+  optionalFunction('onProgress', onProgress);
+  if (signal !== undefined && !(signal instanceof AbortSignal)) throw argumentError('signal', `expected an AbortSignal, got ${describeValue(signal)}`);
+  if (typeof sliceMs !== 'number' || !(sliceMs > 0) || !Number.isFinite(sliceMs)) {
+    throw argumentError('sliceMs', `expected a number of milliseconds above 0, got ${describeValue(sliceMs)}`);
+  }
+  return sliceMs;
+}
+
 const yieldToEventLoop = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 
 /**
@@ -158,9 +187,11 @@ const yieldToEventLoop = () => new Promise<void>((resolve) => setTimeout(resolve
  * `errors`, and the trace holds the moves before the first of them.
  */
 export async function runGcode(source: string, settings: GcodeSettings, options: RunGcodeOptions = {}): Promise<GcodeProgram> {
+  text('source', source, 'the program');
+  const settingsJson = encodeRequest(settings, 'settings');
+  const sliceMs = checkRunOptions(options);
   const core = await loadCore();
-  const run = callCore(() => new core.GcodeRun(source, encodeRequest(settings)));
-  const sliceMs = options.sliceMs ?? 20;
+  const run = callCore(() => new core.GcodeRun(source, settingsJson));
   let finished = false;
   try {
     let lines = 256;

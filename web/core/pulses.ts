@@ -9,7 +9,8 @@
  * motion profile), each axis's STEP edges get their instants in seconds and
  * the step rate in Hz between them.
  */
-import type { Trace } from './trace.js';
+import { argumentError, describeValue } from './guard.js';
+import { type Trace, requireTrace } from './trace.js';
 
 /** One axis's signals over a range of step indices. */
 export interface PulseTrain {
@@ -32,11 +33,13 @@ export interface PulseTrain {
  * STEP edges in seconds and its step rate in Hz.
  */
 export function pulseTrains(trace: Trace, from: number, to: number, stepSeconds?: Float64Array): PulseTrain[] {
-  if (stepSeconds !== undefined && stepSeconds.length !== to - from) {
-    throw new RangeError(`stepSeconds has ${stepSeconds.length} instants for the ${to - from} steps ${from}..${to}`);
-  }
+  requireTrace('trace', trace);
+  // Checks from and to, naming them.
   const codes = trace.stepCodes(from, to);
   const levels = trace.directionLevels(from, to);
+  if (stepSeconds !== undefined && (stepSeconds as ArrayLike<number> | null)?.length !== to - from) {
+    throw argumentError('stepSeconds', `expected the ${to - from} instants of steps ${from}..${to}, got ${describeValue(stepSeconds)}`);
+  }
   const trains: PulseTrain[] = [];
   for (let axis = 0; axis < trace.dims; axis++) {
     const step = new Uint8Array(to - from);

@@ -1,10 +1,31 @@
-/** Options of a call into the core, as the JSON text the core parses. */
-export function encodeRequest(options: object): string {
-  return JSON.stringify(options, (_key, value: unknown) => {
-    // Typed arrays travel as plain lists; NaN and Infinity as text, so the
-    // core reports them by name instead of JSON turning them into null.
-    if (ArrayBuffer.isView(value)) return Array.from(value as unknown as ArrayLike<number>);
-    if (typeof value === 'number' && !Number.isFinite(value)) return String(value);
-    return value;
-  });
+import { argumentError } from './guard.js';
+
+/**
+ * Options of a call into the core, as the JSON text the core parses; `field`
+ * names the argument (the core names it too, e.g. 'request' or 'settings').
+ * Whatever JSON cannot carry is refused here, naming the option it is in: a
+ * BigInt, or options that contain themselves. What JSON writes as nothing
+ * (undefined, a function) is sent as null, which the core refuses by name.
+ */
+export function encodeRequest(options: unknown, field = 'request'): string {
+  let option = field;
+  const named = typeof options === 'object' && options !== null && !Array.isArray(options);
+  let json: string | undefined;
+  try {
+    json = JSON.stringify(options, function (this: unknown, key: string, value: unknown) {
+      // The holder of a top-level option is the options object itself.
+      if (named && this === options) option = key;
+      if (typeof value === 'bigint') throw argumentError(option, `${value}n is a BigInt; give a number (Number(${value}n))`);
+      // Typed arrays travel as plain lists; NaN and Infinity as text, so the
+      // core reports them by name instead of JSON turning them into null.
+      if (ArrayBuffer.isView(value)) return Array.from(value as unknown as ArrayLike<number>);
+      if (typeof value === 'number' && !Number.isFinite(value)) return String(value);
+      return value;
+    });
+  } catch (error) {
+    if (error instanceof Error && error.name === 'VoxpathError') throw error;
+    // A circular structure, or a toJSON that throws.
+    throw argumentError(option, `cannot be sent to the core as JSON: ${error instanceof Error ? error.message.split('\n')[0] : String(error)}`);
+  }
+  return json ?? 'null';
 }

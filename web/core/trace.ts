@@ -6,6 +6,7 @@
  */
 import type { Comparison } from './compare.js';
 import { callCore } from './errors.js';
+import { argumentError, describeValue, indexRange, wholeNumber } from './guard.js';
 import type { TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
@@ -42,10 +43,17 @@ function copyRows<T extends Int32Array | Float64Array>(
   return out;
 }
 
-function checkRange(what: string, from: number, to: number, length: number): void {
-  if (!Number.isInteger(from) || !Number.isInteger(to) || from < 0 || to < from || to > length) {
-    throw new RangeError(`${what} ${from}..${to} is outside 0..${length}`);
-  }
+/**
+ * The core's trace behind `trace`, `field` naming the argument it came in
+ * as; a VoxpathError when it is not a Trace, or has been freed (the core
+ * would read a null pointer). Set by Trace's static block, the one place
+ * that may read a Trace's handle.
+ */
+let handleOf: (field: string, trace: unknown) => TraceHandle;
+
+/** Throws a VoxpathError naming `field` unless `trace` is a Trace not yet freed (for functions that take one). */
+export function requireTrace(field: string, trace: unknown): asserts trace is Trace {
+  handleOf(field, trace);
 }
 
 /**
@@ -56,11 +64,22 @@ function checkRange(what: string, from: number, to: number, length: number): voi
 // The class takes the summary's fields from the interface of the same name.
 export interface Trace extends Readonly<TraceSummary> {}
 export class Trace {
-  readonly #handle: TraceHandle;
+  /** The core's trace; undefined once freed. */
+  #handle?: TraceHandle;
   #points?: Int32Array;
   #decisions?: DecisionColumns;
   #deviation?: Float64Array;
   #axisError?: Float64Array;
+
+  static {
+    handleOf = (field, trace) => {
+      if (typeof trace !== 'object' || trace === null || !(#handle in trace)) {
+        throw argumentError(field, `expected a Trace (from trace() or runGcode()), got ${describeValue(trace)}`);
+      }
+      if (trace.#handle === undefined) throw argumentError(field, 'this trace was freed (free()); trace it again to read it');
+      return trace.#handle;
+    };
+  }
 
   constructor(handle: TraceHandle) {
     this.#handle = handle;
@@ -73,14 +92,21 @@ export class Trace {
     return this.#points;
   }
 
+  /** This trace's handle in the core (a VoxpathError once freed). */
+  get #core(): TraceHandle {
+    return handleOf('trace', this);
+  }
+
   /** Points with point indices from..to, flat with stride dims. */
   pointsInRange(from: number, to: number): Int32Array {
-    checkRange('point indices', from, to, this.steps + 1);
-    return copyRows(Int32Array, from, to, this.dims, (a, b) => this.#handle.points(a, b));
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.steps + 1, 'point index');
+    return copyRows(Int32Array, from, to, this.dims, (a, b) => core.points(a, b));
   }
 
   /** Point index k as an array of coordinates. */
   point(k: number): number[] {
+    wholeNumber('k', k, 0, this.steps, 'point index');
     return Array.from(this.pointsInRange(k, k + 1));
   }
 
@@ -104,7 +130,8 @@ export class Trace {
    * see answerFormerName.
    */
   decisionsInRange(from: number, to: number): DecisionColumns {
-    checkRange('step indices', from, to, this.steps);
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.steps, 'step index');
     const out: DecisionColumns = {};
     for (const c of this.columns) {
       out[c.name] = c.kind === 'category' || c.kind === 'flag' ? new Uint8Array(to - from) : new Float64Array(to - from);
@@ -112,7 +139,7 @@ export class Trace {
     const rows = chunkRows(Float64Array.BYTES_PER_ELEMENT * Math.max(1, this.columns.length));
     for (let k = from; k < to; k += rows) {
       const end = Math.min(to, k + rows);
-      const flat = callCore(() => this.#handle.decisions(k, end));
+      const flat = callCore(() => core.decisions(k, end));
       this.columns.forEach((c, i) => {
         out[c.name]!.set(flat.subarray(i * (end - k), (i + 1) * (end - k)), k - from);
       });
@@ -128,8 +155,9 @@ export class Trace {
   }
 
   deviationInRange(from: number, to: number): Float64Array {
-    checkRange('point indices', from, to, this.steps + 1);
-    return copyRows(Float64Array, from, to, 1, (a, b) => this.#handle.deviation(a, b));
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.steps + 1, 'point index');
+    return copyRows(Float64Array, from, to, 1, (a, b) => core.deviation(a, b));
   }
 
   /** Per-axis error of every point (Wang eq. 11), flat with stride dims. */
@@ -139,8 +167,9 @@ export class Trace {
   }
 
   axisErrorInRange(from: number, to: number): Float64Array {
-    checkRange('point indices', from, to, this.steps + 1);
-    return copyRows(Float64Array, from, to, this.dims, (a, b) => this.#handle.axisError(a, b));
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.steps + 1, 'point index');
+    return copyRows(Float64Array, from, to, this.dims, (a, b) => core.axisError(a, b));
   }
 
   /**
@@ -149,8 +178,9 @@ export class Trace {
    * pair per axis).
    */
   stepCodes(from: number, to: number): Uint16Array {
-    checkRange('step indices', from, to, this.steps);
-    return callCore(() => this.#handle.stepCodes(from, to));
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.steps, 'step index');
+    return callCore(() => core.stepCodes(from, to));
   }
 
   /**
@@ -159,14 +189,16 @@ export class Trace {
    * starts positive; with stepCodes this is the step/direction signal pair.
    */
   directionLevels(from: number, to: number): Uint8Array {
-    checkRange('step indices', from, to, this.steps);
-    return callCore(() => this.#handle.directionLevels(from, to));
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.steps, 'step index');
+    return callCore(() => core.directionLevels(from, to));
   }
 
   /** One plain sentence: why step index k was taken. */
   explain(step: number): string {
-    checkRange('step index', step, step + 1, this.steps);
-    return callCore(() => this.#handle.explain(step));
+    const core = this.#core;
+    wholeNumber('step', step, 0, this.steps - 1, 'step index');
+    return callCore(() => core.explain(step));
   }
 
   /**
@@ -176,8 +208,9 @@ export class Trace {
    * decision (StepDetail), from one replay of that step in the core.
    */
   stepDetail(pointIndex: number): StepDetail {
-    checkRange('point index', pointIndex, pointIndex + 1, this.steps + 1);
-    return callCore(() => this.#handle.stepDetail(pointIndex));
+    const core = this.#core;
+    wholeNumber('pointIndex', pointIndex, 0, this.steps, 'point index');
+    return callCore(() => core.stepDetail(pointIndex));
   }
 
   /**
@@ -186,10 +219,11 @@ export class Trace {
    * (ChartSeries). One pass of the core over the range.
    */
   chartSeries(maxRows: number, from = 0, to = this.steps + 1): ChartSeries {
-    checkRange('point indices', from, to, this.steps + 1);
-    if (!Number.isInteger(maxRows) || maxRows < 1) throw new RangeError(`maxRows must be a whole number of at least 1, got ${maxRows}`);
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.steps + 1, 'point index');
+    wholeNumber('maxRows', maxRows, 1, 2 ** 32 - 1, 'maxRows');
     // Column-major: the point index, dims positions, dims ideal positions, largest and smallest deviation.
-    const flat = callCore(() => this.#handle.chartRows(from, to, maxRows));
+    const flat = callCore(() => core.chartRows(from, to, maxRows));
     const rows = flat.length / (3 + 2 * this.dims);
     const column = (c: number) => flat.slice(c * rows, (c + 1) * rows);
     const axes = Array.from({ length: this.dims }, (_, a) => a);
@@ -208,7 +242,9 @@ export class Trace {
    * `compare()` returns for two algorithms, for traces already computed.
    */
   compareWith(other: Trace): Comparison {
-    return callCore(() => this.#handle.compareWith(other.#handle));
+    const core = this.#core;
+    const theirs = handleOf('other', other);
+    return callCore(() => core.compareWith(theirs));
   }
 
   /**
@@ -217,17 +253,23 @@ export class Trace {
    * first 1000).
    */
   cellsOnlyIn(other: Trace): Int32Array {
-    return callCore(() => this.#handle.cellsOnlyIn(other.#handle));
+    const core = this.#core;
+    const theirs = handleOf('other', other);
+    return callCore(() => core.cellsOnlyIn(theirs));
   }
 
   /** The ideal path as a polyline for drawing, flat with stride dims. */
   idealPolyline(): Float64Array {
-    return this.#handle.idealPolyline();
+    return this.#core.idealPolyline();
   }
 
-  /** Releases the core's memory now instead of at garbage collection. */
+  /**
+   * Releases the core's memory now instead of at garbage collection. Reading
+   * the trace afterwards is a VoxpathError; freeing it again does nothing.
+   */
   free(): void {
-    this.#handle.free();
+    this.#handle?.free();
+    this.#handle = undefined;
   }
 }
 

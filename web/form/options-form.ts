@@ -10,6 +10,7 @@
  * that field. The one check made here is that a field holds a number at all,
  * because an empty field has no value to send.
  */
+import { readDecimal } from '../core/guard.js';
 import type { OptionSpec } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import type { OptionValue } from '../state/app-state.js';
@@ -39,9 +40,9 @@ export function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Pa
  */
 export function readPerAxis(text: string): number | number[] | undefined | null {
   if (text.trim() === '') return undefined;
-  const values = text.split(',').map((part) => (part.trim() === '' ? NaN : Number(part)));
-  if (values.some((v) => !Number.isFinite(v))) return null;
-  return values.length === 1 ? values[0]! : values;
+  const values = text.split(',').map(readDecimal);
+  if (values.some((v) => v === undefined)) return null;
+  return values.length === 1 ? values[0]! : (values as number[]);
 }
 
 export class OptionsForm {

@@ -15,6 +15,7 @@
  * `playing` is left out on purpose: a page opened from a link starts
  * paused, as moving content should not start by itself.
  */
+import { readDecimal } from '../core/guard.js';
 import type { OptionSpec } from '../core/types.js';
 import {
   type AppState,
@@ -45,12 +46,6 @@ import {
  */
 export const GCODE_URL_LIMIT = 2000;
 
-/** A number as typed in the query, or undefined for text that is not one. */
-function numberOf(text: string): number | undefined {
-  const value = Number(text);
-  return text.trim() !== '' && Number.isFinite(value) ? value : undefined;
-}
-
 /**
  * An option's value from its query text, or undefined when the text cannot be
  * that kind of value. Numbers are kept as given (even out of range or
@@ -59,16 +54,16 @@ function numberOf(text: string): number | undefined {
 function parseOption(spec: OptionSpec, text: string): OptionValue | undefined {
   switch (spec.kind.type) {
     case 'point': {
-      const coords = text.split(',').map(numberOf);
+      const coords = text.split(',').map(readDecimal);
       return coords.every((c) => c !== undefined) ? (coords as number[]) : undefined;
     }
     case 'choice':
       return spec.kind.values.includes(text) ? text : undefined;
     case 'number':
     case 'integer':
-      return numberOf(text);
+      return readDecimal(text);
     case 'perAxis': {
-      const values = text.split(',').map(numberOf);
+      const values = text.split(',').map(readDecimal);
       if (values.some((v) => v === undefined)) return undefined;
       return values.length === 1 ? values[0]! : (values as number[]);
     }
@@ -106,7 +101,7 @@ export function roundCamera(camera: CameraState): CameraState {
 }
 
 function parseCamera(text: string | null): CameraState | null {
-  const v = (text ?? '').split(',').map(numberOf);
+  const v = (text ?? '').split(',').map(readDecimal);
   if (v.length !== 7 || v.some((c) => c === undefined) || v[6]! <= 0) return null;
   const n = v as number[];
   return { position: [n[0]!, n[1]!, n[2]!], target: [n[3]!, n[4]!, n[5]!], zoom: n[6]! };
@@ -180,9 +175,9 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment);
   state.gcode = params.get('gcode') ?? state.gcode;
 
-  const step = numberOf(params.get('step') ?? '');
+  const step = readDecimal(params.get('step') ?? '');
   if (step !== undefined && Number.isSafeInteger(step) && step >= 0) state.pointIndex = step;
-  const speed = numberOf(params.get('speed') ?? '');
+  const speed = readDecimal(params.get('speed') ?? '');
   if (SPEEDS_STEPS_PER_SECOND.some((s) => s === speed)) state.speed = speed!;
   state.projection = PROJECTIONS.find((p) => p === params.get('view')) ?? defaultProjection(axisCount(infos, state.options));
   state.decision3d = params.get('decision3d') === '1';

@@ -224,26 +224,19 @@ fn set_once<T: Copy>(
     Ok(())
 }
 
-/// The words of a line, by letter.
+/// The words of a line, by letter (the reader lets each letter onto a
+/// line once: a second is a syntax error, and such a line is not run).
 struct Words<'b> {
     by_letter: [Option<&'b Word>; 26],
 }
 
 impl<'b> Words<'b> {
-    fn new(words: &'b [Word], line: u32) -> Result<Words<'b>, Error> {
+    fn new(words: &'b [Word]) -> Words<'b> {
         let mut by_letter = [None; 26];
         for w in words {
-            let slot: &mut Option<&Word> = &mut by_letter[(w.letter as u8 - b'A') as usize];
-            if slot.is_some() {
-                return Err(Error::at(
-                    line,
-                    w.column,
-                    format!("{} appears twice on this line", w.letter),
-                ));
-            }
-            *slot = Some(w);
+            by_letter[(w.letter as u8 - b'A') as usize] = Some(w);
         }
-        Ok(Words { by_letter })
+        Words { by_letter }
     }
 
     fn get(&self, letter: char) -> Option<&'b Word> {
@@ -344,7 +337,7 @@ impl Interpreter {
                 }
             }
         }
-        let words = Words::new(&block.words, line)?;
+        let words = Words::new(&block.words);
         if let Some((v, _)) = plane {
             self.plane = v;
         }
@@ -854,10 +847,6 @@ mod tests {
         assert_eq!(
             e(&["G0 G1 X1"]),
             "line 1, column 4: G0 and G1 are both motion codes: give one per line"
-        );
-        assert_eq!(
-            e(&["G1 X1 X2"]),
-            "line 1, column 7: X appears twice on this line"
         );
         assert_eq!(
             e(&["G1 X1 I2"]),

@@ -11,7 +11,13 @@
 //! - values are f64, read from the word's own text (so X123.4567 is exactly
 //!   what the program says), and must be finite;
 //! - a code's number must fit in 32 bits, checked digit by digit: a number
-//!   that does not fit is an error at its column, never another code.
+//!   that does not fit is an error at its column, never another code;
+//! - a letter other than G and M stands at most once on a line (X1 X2 is
+//!   an error at the second X, as LinuxCNC's reader has it), a line holds at
+//!   most 16 G codes (one from each modal group: LinuxCNC's block holds
+//!   16) and at most 4 M codes (LinuxCNC's MAX_EMS). So a line's block
+//!   holds a few dozen entries whatever its length, and a 50 MB line of
+//!   repeated words stops at its second word.
 //!
 //! Each line is read once, left to right, in time linear in its length:
 //! the column of every word is counted as the reader passes it, and the
@@ -25,6 +31,8 @@
 //! command's argument list, so an error at column 10 of a 50 MB line waited
 //! for the rest of the line. Keeping it would have meant lexing every line
 //! twice, once to guard it and once to parse it.
+
+use crate::text::echo;
 
 /// An address letter with its value, e.g. X-1.5 or F600.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -101,35 +109,12 @@ pub fn parse_line_into(text: &str, block: &mut Block) {
     .err();
 }
 
-/// Longest number echoed whole in a message: a 1 MB number is named by its
-/// first digits and its length.
-const ECHO_CHARS: usize = 24;
-
-/// `text` as a message quotes it: cut between characters (a byte offset
-/// could fall inside one: the fuzz target found that panic), and control
-/// characters written as escapes (\u{0}), so that a NUL or an escape
-/// sequence in a program never reaches the terminal raw.
-fn echo(text: &str) -> String {
-    let chars = text.chars().count();
-    let quoted = |part: &mut dyn Iterator<Item = char>| -> String {
-        part.map(|c| {
-            if c.is_control() {
-                c.escape_unicode().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
-    };
-    if chars <= ECHO_CHARS {
-        quoted(&mut text.chars())
-    } else {
-        format!(
-            "{}... ({chars} characters)",
-            quoted(&mut text.chars().take(ECHO_CHARS - 8))
-        )
-    }
-}
+/// Most G codes one line may hold: one from each modal group, and
+/// LinuxCNC's interpreter has 16 (its block's `g_modes[16]`).
+pub const MAX_G_CODES_PER_LINE: usize = 16;
+/// Most M codes one line may hold (LinuxCNC's MAX_EMS: "Too many m codes
+/// on line").
+pub const MAX_M_CODES_PER_LINE: usize = 4;
 
 /// The reader's place in a line: a byte offset and the character column
 /// it is at, moved forward together.
@@ -143,6 +128,42 @@ type Read<T> = Result<T, Problem>;
 
 fn problem(column: u32, message: String) -> Problem {
     Problem { column, message }
+}
+
+/// Lets one more `letter` (upper case) onto the line at `column`, or says
+/// why the line cannot hold it: a second X, a 17th G code, a fifth M code.
+fn admit(block: &Block, letters_seen: &mut u32, letter: u8, column: u32) -> Read<()> {
+    let count_of = |l: char| block.codes.iter().filter(|c| c.letter == l).count();
+    let full = match letter {
+        b'G' => count_of('G') == MAX_G_CODES_PER_LINE,
+        b'M' => count_of('M') == MAX_M_CODES_PER_LINE,
+        _ => {
+            let bit = 1 << (letter - b'A');
+            let again = *letters_seen & bit != 0;
+            *letters_seen |= bit;
+            if again {
+                return Err(problem(
+                    column,
+                    format!("{} appears twice on this line", letter as char),
+                ));
+            }
+            false
+        }
+    };
+    if full {
+        let (most, why) = match letter {
+            b'G' => (MAX_G_CODES_PER_LINE, "one from each modal group"),
+            _ => (MAX_M_CODES_PER_LINE, "as LinuxCNC has it"),
+        };
+        return Err(problem(
+            column,
+            format!(
+                "too many {} codes on this line: a line takes at most {most} ({why})",
+                letter as char
+            ),
+        ));
+    }
+    Ok(())
 }
 
 impl<'t> Reader<'t> {
@@ -189,6 +210,16 @@ impl<'t> Reader<'t> {
         &self.text[start..self.at]
     }
 
+    /// An exponent right after a number: e or E, then a digit, a sign or
+    /// a point (1e300, 1E-3).
+    fn at_exponent(&self) -> bool {
+        let bytes = self.text.as_bytes();
+        matches!(bytes.get(self.at), Some(b'e' | b'E'))
+            && bytes
+                .get(self.at + 1)
+                .is_some_and(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.'))
+    }
+
     fn at_number(&self) -> bool {
         self.peek().is_some_and(|b| b.is_ascii_digit() || b == b'.')
     }
@@ -204,6 +235,8 @@ impl<'t> Reader<'t> {
 
     fn read(mut self, block: &mut Block) -> Read<()> {
         let mut seen_code = false;
+        // Bit i: letter 'A' + i has stood on this line (G and M never set).
+        let mut letters_seen = 0u32;
         loop {
             self.skip_blanks();
             let Some(byte) = self.peek() else {
@@ -235,7 +268,9 @@ impl<'t> Reader<'t> {
                 }
                 letter if letter.is_ascii_alphabetic() => {
                     self.bump();
-                    let letter = letter.to_ascii_uppercase() as char;
+                    let letter = letter.to_ascii_uppercase();
+                    admit(block, &mut letters_seen, letter, column)?;
+                    let letter = letter as char;
                     match letter {
                         'G' | 'M' | 'T' => {
                             seen_code = true;
@@ -393,6 +428,23 @@ impl<'t> Reader<'t> {
             self.skip_blanks();
         }
         let (number_column, text) = self.number_after(letter, column)?;
+        let sign = if negative { "-" } else { "" };
+        if self.at_exponent() {
+            // F1e300 read as F1 and a word E300 would be neither what the
+            // program means nor what any controller does: Marlin reads
+            // 1e300 (strtod), LinuxCNC and Grbl refuse the E.
+            let start = self.at;
+            self.bump();
+            self.take_while(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.'));
+            let exponent = &self.text[start..self.at];
+            return Err(problem(
+                column,
+                format!(
+                    "malformed number: {letter}{sign}{}: a G-code number has no exponent; write it out in full (and an E word after a number needs a blank before it)",
+                    echo(&format!("{text}{exponent}"))
+                ),
+            ));
+        }
         let Ok(magnitude) = text.parse::<f64>() else {
             return Err(problem(
                 number_column,
@@ -400,7 +452,6 @@ impl<'t> Reader<'t> {
             ));
         };
         if !magnitude.is_finite() {
-            let sign = if negative { "-" } else { "" };
             return Err(problem(
                 column,
                 format!(
@@ -587,17 +638,102 @@ mod tests {
     }
 
     #[test]
-    fn a_long_line_is_read_in_one_pass() {
-        // 250,000 words: columns are counted as the reader passes them (the
-        // crate-based reader counted from the line's start for every word,
-        // quadratic in the words: 17 s for this line).
-        let line: String = (0..250_000).map(|i| format!("X{i} ")).collect();
-        let b = parse_line(&line);
-        assert_eq!(b.words.len(), 250_000);
-        let last = b.words[249_999];
+    fn a_letter_stands_once_and_codes_are_counted() {
+        // The interpreter found a second X only after the whole line was
+        // read into a block: a 50 MB line of X1 X1 ... held 16.7 million
+        // words (400 MB), and 50 MB of M3 M3 ... took 51 s and 2 GB of wasm
+        // memory for as many warnings. The reader stops at the second.
         assert_eq!(
-            (last.value, last.column as usize),
-            (249_999.0, line.len() - 7)
+            errors("G1 X1 Y2 X3"),
+            [(10, "X appears twice on this line".to_string())]
+        );
+        for (line, column, message) in [
+            ("N1 N2 G1", 4, "N appears twice on this line"),
+            ("O1 O2", 4, "O appears twice on this line"),
+            ("T1 M6 T2", 7, "T appears twice on this line"),
+            ("g1 x1 X2", 7, "X appears twice on this line"),
+            (
+                "M3 M8 M7 M48 M5",
+                14,
+                "too many M codes on this line: a line takes at most 4 (as LinuxCNC has it)",
+            ),
+        ] {
+            assert_eq!(errors(line), [(column, message.to_string())], "{line}");
+        }
+        let sixteen = "G17 G21 G90 G91.1 G94 G40 G49 G98 G54 G61 G97 G8 G1 G4 G10 G50";
+        let b = parse_line(sixteen);
+        assert_eq!((b.codes.len(), b.error), (MAX_G_CODES_PER_LINE, None));
+        assert_eq!(
+            errors(&format!("{sixteen} G0")),
+            [(
+                sixteen.len() as u32 + 2,
+                "too many G codes on this line: a line takes at most 16 (one from each modal group)"
+                    .to_string()
+            )]
+        );
+    }
+
+    #[test]
+    fn a_block_holds_a_bounded_number_of_entries_whatever_the_line_length() {
+        // Each line below is 3 MB; what the reader keeps of it is a word or
+        // a few codes, and it stops at the first entry the line cannot hold.
+        let words = format!("G1{}", " X1".repeat(1_000_000));
+        let b = parse_line(&words);
+        assert_eq!((b.codes.len(), b.words.len()), (1, 1));
+        assert_eq!(b.error.map(|e| e.column), Some(7));
+        let codes = " M3".repeat(1_000_000);
+        let b = parse_line(&codes);
+        assert_eq!(b.codes.len(), MAX_M_CODES_PER_LINE);
+        assert_eq!(b.error.map(|e| e.column), Some(14));
+        let programs = " O1".repeat(1_000_000);
+        let b = parse_line(&programs);
+        assert_eq!((b.ignored.len(), b.error.map(|e| e.column)), (1, Some(5)));
+    }
+
+    #[test]
+    fn a_long_line_that_holds_nothing_wrong_is_read_whole() {
+        // A 3 MB comment and a number of a million digits: read once, left
+        // to right; the columns after them are counted as the reader passed.
+        let comment = "c".repeat(3_000_000);
+        let digits = format!("1{}", "0".repeat(999_999));
+        let b = parse_line(&format!("G1 ({comment}) X0.{digits} Y2"));
+        assert_eq!(b.error, None);
+        assert_eq!(words(&b)[0].1, 0.1);
+        assert_eq!(words(&b)[1], ('Y', 2.0, 3_000_000 + 1_000_000 + 11));
+    }
+
+    #[test]
+    fn an_exponent_is_an_error_naming_its_word() {
+        // F1e300 was read as F1 and a word E300 (ignored with a warning):
+        // the move ran at 1 mm/min. Before that, the gcode crate read it as
+        // an infinite feed.
+        for (line, column, quoted) in [
+            ("G1 X1 F1e300", 7, "F1e300"),
+            ("G1 X-1.5E-3", 4, "X-1.5E-3"),
+            ("G1 X1e+5 Y1", 4, "X1e+5"),
+            ("G1 Y2E.5", 4, "Y2E.5"),
+        ] {
+            assert_eq!(
+                errors(line),
+                [(
+                    column,
+                    format!(
+                        "malformed number: {quoted}: a G-code number has no exponent; write it out in full (and an E word after a number needs a blank before it)"
+                    )
+                )],
+                "{line}"
+            );
+        }
+        // An E word after a blank is a word; a code's number is followed by
+        // its words without one (G1E3, as RepRap firmware writes it).
+        assert_eq!(
+            words(&parse_line("G1 X1 E3")),
+            [('X', 1.0, 4), ('E', 3.0, 7)]
+        );
+        assert_eq!(words(&parse_line("G1E3")), [('E', 3.0, 3)]);
+        assert_eq!(
+            errors("G1 X1E"),
+            [(6, "malformed number: E has no number after it".to_string())]
         );
     }
 

@@ -40,6 +40,7 @@ use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::machine::{MACHINE_AXES, Machine};
 use crate::planner::{self, Limits, Planner, Timing};
 use crate::request::{MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
+use crate::text::split_line;
 use crate::trace::{Trace, TraceBuilder};
 use serde::Serialize;
 use tsify::Tsify;
@@ -362,17 +363,6 @@ pub struct Runner {
     warnings_omitted: u64,
     errors: Vec<Diagnostic>,
     stopped_at_line: Option<u32>,
-}
-
-/// The first line of `text` (without its break) and the offset of the
-/// next: a line ends at LF, CR LF or a lone CR (classic Mac OS files, and
-/// some CAM exports, end lines with CR alone).
-fn split_line(text: &str) -> (&str, usize) {
-    match text.bytes().position(|b| b == b'\n' || b == b'\r') {
-        None => (text, text.len()),
-        Some(end) if text[end..].starts_with("\r\n") => (&text[..end], end + 2),
-        Some(end) => (&text[..end], end + 1),
-    }
 }
 
 /// Lines of a program as an editor counts them: a final line break ends the

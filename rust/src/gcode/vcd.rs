@@ -28,12 +28,29 @@ pub const STEP_PULSE_SECONDS: f64 = 10e-6;
 /// Steps read per chunk: the times and levels of one chunk at a time.
 const CHUNK_STEPS: u64 = 1 << 16;
 
+/// The last instant a VCD of 1 ns ticks holds (u64 nanoseconds, about
+/// 584 years).
+const LAST_SECONDS: f64 = u64::MAX as f64 / 1e9;
+
 fn nanoseconds(seconds: f64) -> u64 {
     (seconds * 1e9).round().max(0.0) as u64
 }
 
-/// Writes the VCD of `trace`'s steps at the instants of `timeline`.
+/// Writes the VCD of `trace`'s steps at the instants of `timeline`; an
+/// `InvalidInput` error, before anything is written, when the program lasts
+/// longer than a VCD's ticks reach.
 pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Result<()> {
+    // Past the last tick every edge would be pressed onto that one tick
+    // (acceleration 1e-300 made a VCD of two timestamps): refused instead.
+    let duration = timeline.duration_seconds();
+    if duration.is_nan() || duration + STEP_PULSE_SECONDS > LAST_SECONDS {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!(
+                "the program lasts {duration:.3e} s on its planned profile, past the {LAST_SECONDS:.3e} s (584 years) that a VCD of 1 ns ticks reaches"
+            ),
+        ));
+    }
     let dims = trace.dims();
     let mut w = vcd::Writer::new(out);
     w.comment("voxpath: STEP and DIR per axis on the planned motion profile (Grbl 1.1's planner); DIR 1 = negative")?;
@@ -144,6 +161,25 @@ mod tests {
             }
         }
         changes
+    }
+
+    #[test]
+    fn a_program_longer_than_the_ticks_reach_is_refused() {
+        // 1e-300 mm/s²: the planned run lasts 1.3e151 s, and every edge was
+        // written at tick u64::MAX: two timestamps for 3,200 edges.
+        let settings =
+            Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 1e-300}"#).unwrap();
+        let program = run("G1 X10 Y5 F600\nG1 X0\n", settings);
+        let mut out = Vec::new();
+        let error = write_vcd(&program.trace, &program.timeline, &mut out).unwrap_err();
+        assert_eq!(error.kind(), io::ErrorKind::InvalidInput);
+        assert!(
+            error.to_string().starts_with(
+                "the program lasts 1.255e151 s on its planned profile, past the 1.845e10 s"
+            ),
+            "{error}"
+        );
+        assert!(out.is_empty());
     }
 
     #[test]

@@ -1,0 +1,80 @@
+//! Text a user wrote (a G-code program, a learner's points): where its
+//! lines end, and how a message quotes a piece of it. One reading for every
+//! text input, so that a file reads the same in each.
+
+/// The first line of `text` (without its break) and the offset of the
+/// next: a line ends at LF, CR LF or a lone CR (classic Mac OS files, and
+/// some CAM exports, end lines with CR alone).
+pub fn split_line(text: &str) -> (&str, usize) {
+    match text.bytes().position(|b| b == b'\n' || b == b'\r') {
+        None => (text, text.len()),
+        Some(end) if text[end..].starts_with("\r\n") => (&text[..end], end + 2),
+        Some(end) => (&text[..end], end + 1),
+    }
+}
+
+/// The lines of `text`, each without its break (see [`split_line`]); a
+/// final break ends the last line.
+pub fn lines(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = text;
+    std::iter::from_fn(move || {
+        if rest.is_empty() {
+            return None;
+        }
+        let (line, next) = split_line(rest);
+        rest = &rest[next..];
+        Some(line)
+    })
+}
+
+/// Longest number echoed whole in a message: a 1 MB number is named by its
+/// first digits and its length.
+const ECHO_CHARS: usize = 24;
+
+/// `text` as a message quotes it: cut between characters (a byte offset
+/// could fall inside one: the fuzz target found that panic), and control
+/// characters written as escapes (\u{0}), so that a NUL or an escape
+/// sequence in an input never reaches the terminal raw.
+pub fn echo(text: &str) -> String {
+    let chars = text.chars().count();
+    let quoted = |part: &mut dyn Iterator<Item = char>| -> String {
+        part.map(|c| {
+            if c.is_control() {
+                c.escape_unicode().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+    };
+    if chars <= ECHO_CHARS {
+        quoted(&mut text.chars())
+    } else {
+        format!(
+            "{}... ({chars} characters)",
+            quoted(&mut text.chars().take(ECHO_CHARS - 8))
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lines_end_at_lf_cr_lf_or_a_lone_cr() {
+        let all: Vec<&str> = lines("a\nb\r\nc\rd\r\r\ne").collect();
+        assert_eq!(all, ["a", "b", "c", "d", "", "e"]);
+        assert_eq!(lines("a\n").count(), 1);
+        assert_eq!(lines("").count(), 0);
+    }
+
+    #[test]
+    fn quotes_control_characters_as_escapes_and_long_text_by_its_start() {
+        assert_eq!(echo("1\u{0}"), "1\\u{0}");
+        assert_eq!(
+            echo(&"9".repeat(100)),
+            format!("{}... (100 characters)", "9".repeat(16))
+        );
+    }
+}

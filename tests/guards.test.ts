@@ -1,0 +1,220 @@
+// Issue 15 item 9: every argument of the JS API that JSON or wasm-bindgen
+// would misread (a BigInt, a number for text, a string index, a freed
+// handle, a stranger for a Trace) is refused with a VoxpathError naming it,
+// before it reaches the core. Before these guards each of these was a
+// TypeError, a RangeError with a garbled message ("step index 3..31"), a
+// wasm "memory access out of bounds" or "null pointer passed to rust", or a
+// silent misreading (stepTimes() returned nothing, dims '3' was read as 3).
+import { describe, expect, it } from 'vitest';
+import {
+  checkPoints,
+  compare,
+  pulseTrains,
+  randomLines,
+  runGcode,
+  trace,
+  traceCsvChunks,
+  traceToCsv,
+  traceToJson,
+  traceToTable,
+  VoxpathError,
+} from '../web/core/index.js';
+import type { Trace } from '../web/core/index.js';
+import { rejection, voxpath } from './helpers.js';
+
+const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
+const MACHINE = { stepsPerMm: 80 };
+
+/** The VoxpathError `call` throws (failing the test if it returns or throws anything else). */
+function thrown(call: () => unknown): VoxpathError {
+  let error: unknown;
+  try {
+    call();
+  } catch (e) {
+    error = e;
+  }
+  expect(error).toBeInstanceOf(VoxpathError);
+  return error as VoxpathError;
+}
+
+/** Calls that take nothing of the right type, for the type checker to let through. */
+const any = (value: unknown) => value as never;
+
+describe('the JS API refuses what the core would misread, naming the argument', () => {
+  it('refuses BigInt and circular options by the option they are in', async () => {
+    const bigFrom = await rejection(trace({ ...LINE, from: any([0n, 0, 0]) }));
+    expect([bigFrom.field, bigFrom.message]).toEqual(['from', 'from: 0n is a BigInt; give a number (Number(0n))']);
+    expect((await rejection(compare({ algorithms: ['regions', 'greedy'], from: [0, 0, 0], to: any([1n, 1, 1]) }))).field).toBe('to');
+    expect((await rejection(runGcode('G1 X1 F100', { stepsPerMm: any(80n) }))).field).toBe('stepsPerMm');
+    expect((await rejection(randomLines({ algorithm: 'regions', count: any(5n) }))).field).toBe('count');
+    const circular: Record<string, unknown> = { ...LINE };
+    circular.self = circular;
+    expect((await rejection(trace(any(circular)))).field).toBe('self');
+    // No options at all: the core names the argument, as it does for null.
+    for (const missing of [undefined, null, () => 1]) {
+      expect((await rejection(trace(any(missing)))).field).toBe('request');
+      expect((await rejection(randomLines(any(missing)))).field).toBe('request');
+      expect((await rejection(runGcode('G1 X1 F100', any(missing)))).field).toBe('settings');
+    }
+  });
+
+  it("refuses a G-code source that is not text (12345 read wasm memory at address 12345; a Buffer threw 'charCodeAt')", async () => {
+    for (const source of [12345, null, undefined, Buffer.from('G1 X1 F100'), new Uint8Array(3), ['G1 X1']]) {
+      const e = await rejection(runGcode(any(source), MACHINE));
+      expect(e.field).toBe('source');
+      expect(e.detail).toMatch(/^expected the program as a string, got /);
+    }
+    expect((await rejection(runGcode(any(Buffer.from('G1 X1')), MACHINE))).detail).toMatch(/Buffer of length 5; decode the bytes first/);
+  });
+
+  it("refuses runGcode's options by name (a NaN sliceMs ran 0 lines a slice, forever)", async () => {
+    const cases: [unknown, string][] = [
+      [null, 'options'],
+      [5, 'options'],
+      [{ onProgress: 5 }, 'onProgress'],
+      [{ signal: {} }, 'signal'],
+      [{ sliceMs: Number.NaN }, 'sliceMs'],
+      [{ sliceMs: 0 }, 'sliceMs'],
+      [{ sliceMs: '20' }, 'sliceMs'],
+      [{ sliceMs: Number.POSITIVE_INFINITY }, 'sliceMs'],
+    ];
+    for (const [options, field] of cases) expect((await rejection(runGcode('G1 X1 F100', MACHINE, any(options)))).field).toBe(field);
+  });
+
+  it('takes step indices only as whole numbers inside the trace ("step index 3..31 is outside 0..10" before)', async () => {
+    const t = await trace(LINE);
+    const cases: [() => unknown, string, string][] = [
+      [() => t.explain(any('3')), 'step', 'step index must be a whole number, got "3" (text)'],
+      [() => t.explain(2.5), 'step', 'step index must be a whole number, got 2.5'],
+      [() => t.explain(any(undefined)), 'step', 'step index must be a whole number, got nothing'],
+      [() => t.explain(10), 'step', 'step index 10 is outside 0..9'],
+      [() => t.explain(-1), 'step', 'step index -1 is outside 0..9'],
+      [() => t.point(11), 'k', 'point index 11 is outside 0..10'],
+      [() => t.point(any('1')), 'k', 'point index must be a whole number, got "1" (text)'],
+      [() => t.pointsInRange(any('0'), 3), 'from', 'point index must be a whole number, got "0" (text)'],
+      [() => t.pointsInRange(0, any(undefined)), 'to', 'point index must be a whole number, got nothing'],
+      [() => t.pointsInRange(0, 2 ** 33), 'to', 'point index 8589934592 is outside 0..11'],
+      [() => t.decisionsInRange(0, 1.5), 'to', 'step index must be a whole number, got 1.5'],
+      [() => t.deviationInRange(2, 1), 'to', 'point index 1 is outside 2..11'],
+      [() => t.axisErrorInRange(Number.NaN, 1), 'from', 'point index must be a whole number, got NaN'],
+      [() => t.stepCodes(any(0n), any(1n)), 'from', 'step index must be a whole number, got 0n (a BigInt)'],
+      [() => t.directionLevels(any(undefined), any(undefined)), 'from', 'step index must be a whole number, got nothing'],
+      [() => pulseTrains(t, any('0'), 2), 'from', 'step index must be a whole number, got "0" (text)'],
+      [() => pulseTrains(t, 0, 2, new Float64Array(3)), 'stepSeconds', 'expected the 2 instants of steps 0..2, got a Float64Array of length 3'],
+    ];
+    for (const [call, field, detail] of cases) {
+      const e = thrown(call);
+      expect([e.field, e.detail, e.message]).toEqual([field, detail, `${field}: ${detail}`]);
+    }
+    // A trace of no steps has no step to explain.
+    const still = await trace({ algorithm: 'regions', from: [1, 1, 1], to: [1, 1, 1] });
+    expect(thrown(() => still.explain(0)).detail).toBe('step index 0: there is none (the range is empty)');
+    expect(still.stepCodes(0, 0).length).toBe(0);
+  });
+
+  it('takes a Trace only where one is due (compareWith({}) threw "Cannot read private member")', async () => {
+    const t = await trace(LINE);
+    for (const other of [{}, null, undefined, { ...t }, 5]) {
+      expect(thrown(() => t.compareWith(any(other))).field).toBe('other');
+      expect(thrown(() => t.cellsOnlyIn(any(other))).field).toBe('other');
+      expect(thrown(() => pulseTrains(any(other), 0, 1)).field).toBe('trace');
+      for (const write of [traceToCsv, traceToJson, traceToTable]) expect(thrown(() => write(any(other))).field).toBe('trace');
+      expect(thrown(() => traceCsvChunks(any(other)).next()).field).toBe('trace');
+    }
+    expect(thrown(() => t.compareWith(any({}))).detail).toBe('expected a Trace (from trace() or runGcode()), got an object');
+  });
+
+  it('refuses a freed trace or program by name ("null pointer passed to rust" before), and frees twice harmlessly', async () => {
+    const kept = await trace(LINE);
+    const freed = await trace(LINE);
+    freed.free();
+    const reads: ((t: Trace) => unknown)[] = [
+      (t) => t.explain(0),
+      (t) => t.points,
+      (t) => t.decisions,
+      (t) => t.pointsInRange(0, 1),
+      (t) => t.stepCodes(0, 1),
+      (t) => t.idealPolyline(),
+      (t) => t.compareWith(kept),
+      (t) => traceToCsv(t),
+    ];
+    for (const read of reads) {
+      const e = thrown(() => read(freed));
+      expect([e.field, e.detail]).toEqual(['trace', 'this trace was freed (free()); trace it again to read it']);
+    }
+    expect(thrown(() => kept.compareWith(freed)).field).toBe('other');
+    expect(() => freed.free()).not.toThrow();
+    // What was read before the free stays readable.
+    const cached = await trace(LINE);
+    const points = cached.points;
+    cached.free();
+    expect(cached.points).toBe(points);
+
+    const program = await runGcode('G1 X10 Y5 F600', MACHINE);
+    program.free();
+    for (const read of [() => program.stepTimes(0, 1), () => program.speedProfile(), () => program.vcd()]) {
+      expect(thrown(read).field).toBe('program');
+    }
+    expect(thrown(() => program.trace.explain(0)).field).toBe('trace');
+    expect(() => program.free()).not.toThrow();
+    // The VCD reads the trace too: a trace freed on its own is named.
+    const halfFreed = await runGcode('G1 X10 Y5 F600', MACHINE);
+    halfFreed.trace.free();
+    expect(thrown(() => halfFreed.vcd()).field).toBe('trace');
+    halfFreed.free();
+  });
+
+  it("checks a program's step and line arguments (stepTimes() returned nothing, moveAtLine('1') nothing)", async () => {
+    const p = await runGcode('G1 X10 Y5 F600', MACHINE);
+    const cases: [() => unknown, string][] = [
+      [() => p.stepTimes(any(undefined), any(undefined)), 'from'],
+      [() => p.stepTimes(any('0'), 2), 'from'],
+      [() => p.stepTimes(0.5, 2), 'from'],
+      [() => p.stepTimes(0, p.steps + 1), 'to'],
+      [() => p.moveOfStep(any('1')), 'k'],
+      [() => p.lineOfStep(any(undefined)), 'k'],
+      [() => p.lineByStepInRange(0, any(undefined)), 'to'],
+      [() => p.moveAtLine(any('1')), 'line'],
+      [() => p.pointBeforeLine(any('x')), 'line'],
+      [() => p.pointBeforeLine(0), 'line'],
+    ];
+    for (const [call, field] of cases) expect(thrown(call).field).toBe(field);
+    expect(p.stepTimes(0, 2).length).toBe(2);
+    p.free();
+  });
+
+  it("checks a learner's points before the core reads them ('0x10' would be 16, dims -1 was 4294967295)", async () => {
+    const request = { algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1] };
+    const cases: [unknown, string, string][] = [
+      [[[0n, 0n, 0n]], 'points', 'point 0: x must be a number, got 0n (a BigInt)'],
+      [[['0', '0', '0x10']], 'points', 'point 0: x must be a number, got "0" (text)'],
+      [[[0, 0, 0], null], 'points', 'point 1 is null; expected an array of coordinates'],
+      [null, 'points', 'expected rows of coordinates, { points, dims } or text, got null'],
+      [new Int32Array(6), 'points', 'expected rows of coordinates, { points, dims } or text, got an Int32Array of length 6'],
+      [{ points: [0, 0, 0], dims: 3 }, 'points', 'expected { points: Int32Array or Float64Array, dims }, got points = an Array of length 3'],
+      [{ points: new Int32Array(6), dims: '3' }, 'dims', 'coordinates per point must be a whole number, got "3" (text)'],
+      [{ points: new Int32Array(6), dims: -1 }, 'dims', 'coordinates per point -1 is outside 1..4294967295'],
+    ];
+    for (const [points, field, detail] of cases) {
+      const e = await rejection(checkPoints(request, any(points)));
+      expect([e.field, e.detail]).toEqual([field, detail]);
+    }
+    // What the guards pass still reaches the core, which reads it as before.
+    expect((await checkPoints(request, { points: new Int32Array([0, 0, 0, 1, 1, 1]), dims: 3 })).matches).toBe(true);
+  });
+});
+
+describe('a G-code run past what its outputs hold', () => {
+  it('refuses a VCD of a program longer than its 1 ns ticks reach (every edge was pressed onto the last tick)', async () => {
+    const p = await runGcode('G1 X10 Y5 F600\nG1 X0', { stepsPerMm: 80, acceleration: 1e-300 });
+    expect(p.durationSeconds).toBeGreaterThan(1e150);
+    const e = thrown(() => p.vcd());
+    expect(e.field).toBe('program');
+    expect(e.detail).toMatch(/^the program lasts 1\.255e151 s on its planned profile, past the 1\.845e10 s \(584 years\)/);
+    p.free();
+    // The CLI names the program, not a flag --program.
+    const r = voxpath(['gcode', '-', '--steps-per-mm', '80', '--acceleration', '1e-300', '--format', 'vcd'], 'G1 X10 Y5 F600\nG1 X0\n');
+    expect([r.code, r.stdout]).toEqual([2, '']);
+    expect(r.stderr.split('\n')[0]).toMatch(/^voxpath: program: the program lasts 1\.255e151 s/);
+  });
+});

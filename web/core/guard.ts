@@ -1,0 +1,84 @@
+/**
+ * Checks of the arguments a JS caller hands the API, before any of them
+ * reaches the core. wasm-bindgen converts what it is given without asking:
+ * a number where text is due is read as a pointer into wasm memory, '3' + 1
+ * is '31', 2.5 and undefined become 0 as a u32, a freed handle is a null
+ * pointer. Every such argument is refused here with a VoxpathError naming
+ * it, the way the core names a bad option. What the core checks itself (the
+ * options inside a request, the text of a program) is left to the core.
+ */
+import { VoxpathError } from './errors.js';
+
+/** A VoxpathError for the argument `field`: "field: detail". */
+export function argumentError(field: string, detail: string): VoxpathError {
+  return new VoxpathError(`${field}: ${detail}`, { field, detail });
+}
+
+/** A value as a message shows it: a number as itself, anything else with its kind. */
+export function describeValue(value: unknown): string {
+  if (value === undefined) return 'nothing';
+  if (value === null) return 'null';
+  if (typeof value === 'number') return String(value);
+  if (typeof value === 'string') return `${JSON.stringify(value.length > 20 ? `${value.slice(0, 20)}…` : value)} (text)`;
+  if (typeof value === 'bigint') return `${value}n (a BigInt)`;
+  if (typeof value === 'function') return 'a function';
+  const kind = typeof value === 'object' ? (value.constructor?.name ?? 'Object') : typeof value;
+  const length = Array.isArray(value) || ArrayBuffer.isView(value) ? ` of length ${(value as ArrayLike<unknown>).length}` : '';
+  return `${/^[AEIOU]/i.test(kind) ? 'an' : 'a'} ${kind === 'Object' ? 'object' : kind}${length}`;
+}
+
+/**
+ * `value` as a whole number in min..max (both included), else a
+ * VoxpathError naming `field`; `what` names the number ("step index").
+ */
+export function wholeNumber(field: string, value: unknown, min: number, max: number, what: string): number {
+  if (typeof value !== 'number' || !Number.isInteger(value)) {
+    throw argumentError(field, `${what} must be a whole number, got ${describeValue(value)}`);
+  }
+  if (value < min || value > max) {
+    throw argumentError(field, max < min ? `${what} ${value}: there is none (the range is empty)` : `${what} ${value} is outside ${min}..${max}`);
+  }
+  return value;
+}
+
+/**
+ * The half-open range of indices [from, to) inside 0..length, each end a
+ * whole number named by its argument's name, from <= to. `what` names the
+ * indices ("point index").
+ */
+export function indexRange(from: unknown, to: unknown, length: number, what: string): [number, number] {
+  const start = wholeNumber('from', from, 0, length, what);
+  return [start, wholeNumber('to', to, start, length, what)];
+}
+
+/** `value` as text, else a VoxpathError naming `field` (`what` says what text is expected). */
+export function text(field: string, value: unknown, what: string): string {
+  if (typeof value !== 'string') {
+    const hint = ArrayBuffer.isView(value) ? '; decode the bytes first (new TextDecoder().decode(bytes))' : '';
+    throw argumentError(field, `expected ${what} as a string, got ${describeValue(value)}${hint}`);
+  }
+  return value;
+}
+
+/** `value` when it is undefined or a function, else a VoxpathError naming `field`. */
+export function optionalFunction<F extends (...args: never[]) => unknown>(field: string, value: unknown): F | undefined {
+  if (value !== undefined && typeof value !== 'function') throw argumentError(field, `expected a function, got ${describeValue(value)}`);
+  return value as F | undefined;
+}
+
+/** A decimal number as people write it: 12, -3.5, .5, 5., 1e6, +2. */
+const DECIMAL = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
+
+/**
+ * A number typed as text (a CLI flag, a URL key, a form field), blanks
+ * around it ignored, or undefined when it is not a finite decimal number.
+ * Number() alone reads '0x10' as 16, '0b11' as 3, '0o7' as 7, '' and ' ' as
+ * 0, and 'Infinity' as a number; none of these is what a user of a grid
+ * means, so each is refused rather than read.
+ */
+export function readDecimal(text: string): number | undefined {
+  const trimmed = text.trim();
+  if (!DECIMAL.test(trimmed)) return undefined;
+  const value = Number(trimmed);
+  return Number.isFinite(value) ? value : undefined;
+}
