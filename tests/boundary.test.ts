@@ -112,6 +112,7 @@ describe('the generated boundary types', () => {
       const handle = core.trace(encodeRequest({ ...info.example.options, algorithm: info.id }));
       try {
         expectFits(handle.summary(), 'TraceSummary');
+        expectFits(handle.stepClocks(4), 'StepClocks');
       } finally {
         handle.free();
       }
@@ -129,6 +130,8 @@ describe('the generated boundary types', () => {
       const record = result.program();
       expect(record.moves.some((m) => m.arc !== null && m.kind === 'helix') && record.warnings.length > 0 && record.errors.length > 0).toBe(true);
       expectFits(record, 'ProgramInfo');
+      expectFits(result.motionChart(0, record.durationSeconds, 3), 'MotionChart');
+      expectFits(result.motionChart(0, record.durationSeconds, 10_000), 'MotionChart');
     } finally {
       result.free();
     }

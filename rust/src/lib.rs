@@ -27,6 +27,7 @@ pub mod machine;
 pub mod metrics;
 pub mod planner;
 pub mod request;
+pub mod step_clocks;
 pub mod trace;
 pub mod wasm;
 

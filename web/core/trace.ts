@@ -6,7 +6,7 @@
  */
 import type { Comparison } from './compare.js';
 import { callCore } from './errors.js';
-import type { TraceHandle } from './pkg/voxpath.js';
+import type { StepClocks, TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
 import type { AlgorithmInfo, DecisionColumns, TraceOptions, TraceSummary } from './types.js';
@@ -181,6 +181,15 @@ export class Trace {
    */
   cellsOnlyIn(other: Trace): Int32Array {
     return callCore(() => this.#handle.cellsOnlyIn(other.#handle));
+  }
+
+  /**
+   * The tool's speed per step under two clocks, as at most maxRows chart
+   * rows: one tick per step (√m cells per tick for a step moving m axes)
+   * and a constant feed of 1 cell per tick (a step takes √m ticks).
+   */
+  stepClocks(maxRows: number): StepClocks {
+    return callCore(() => this.#handle.stepClocks(maxRows));
   }
 
   /** The ideal path as a polyline for drawing, flat with stride dims. */

@@ -34,6 +34,7 @@ export type {
   OptionKind,
   OptionSpec,
   PerAxis,
+  StepClocks,
   TiePolicy,
   TraceOptions,
   TraceSummary,

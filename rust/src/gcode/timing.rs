@@ -200,6 +200,41 @@ impl Timeline {
         out
     }
 
+    /// The blocks in `blocks` that start a move after another block (where
+    /// the machine turns from one move into the next), ascending.
+    pub fn move_starts(&self, blocks: Range<usize>) -> Vec<usize> {
+        let first = self
+            .moves
+            .partition_point(|(b, _, _)| b.start < blocks.start);
+        let mut starts: Vec<usize> = self.moves[first..]
+            .iter()
+            .map(|(b, _, _)| b.start)
+            .take_while(|&start| start < blocks.end)
+            .filter(|&start| start > 0)
+            .collect();
+        // A move with no blocks starts where the next one does.
+        starts.dedup();
+        starts
+    }
+
+    /// The point index the machine has reached at `seconds`: how many steps
+    /// happen at or before that instant (0 before the first; every step
+    /// once the program has ended). Bisects the steps by their instants
+    /// (`step_seconds`, monotone), so it agrees with them exactly.
+    pub fn points_reached_at(&self, seconds: f64) -> u64 {
+        let steps = self.moves.last().map_or(0, |(_, first, n)| first + n);
+        let (mut lo, mut hi) = (0, steps);
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if self.step_seconds(mid, mid + 1)[0] <= seconds {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+
     /// The instant of every step index in `from..to`, seconds from the
     /// program's start (see the module comment).
     pub fn step_seconds(&self, from: u64, to: u64) -> Vec<f64> {
@@ -274,6 +309,32 @@ mod tests {
         let rates = program.timeline.step_rate_profile(&[80.0; 3]);
         assert_eq!(rates.len(), 4 * 4);
         assert!(close(rates[4 + 1], 8000.0) && rates[4 + 2] == 0.0);
+    }
+
+    #[test]
+    fn the_point_reached_at_an_instant_counts_the_steps_at_or_before_it() {
+        // G1 X200 F6000 from rest at 100 mm/s²: step k (0-based) at
+        // s = (k + 1) / 80 mm, at t = √(2s/a) while accelerating; so by t
+        // the machine has taken ⌊t²·a/2·80⌋ steps: 400 by √(2·5/100) s.
+        let program = run("G1 X200 F6000\n", settings(""));
+        let t = &program.timeline;
+        assert_eq!(t.points_reached_at(-1.0), 0);
+        assert_eq!(t.points_reached_at(0.0), 0);
+        let at = (2.0f64 * 5.0 / 100.0).sqrt();
+        assert_eq!(t.points_reached_at(at), 400);
+        assert_eq!(t.points_reached_at(at * (1.0 - 1e-9)), 399);
+        assert_eq!(t.points_reached_at(0.2501), 250);
+        assert_eq!(t.points_reached_at(3.0), 16_000);
+        assert_eq!(t.points_reached_at(1e9), 16_000);
+        // Agrees with the instants at every step of a program with arcs.
+        let program = run("G0 X10\nG1 Y10 F600\nG2 X20 Y0 I5 J-5\n", settings(""));
+        let t = &program.timeline;
+        let all = t.step_seconds(0, program.info.steps);
+        for (k, &s) in all.iter().enumerate().step_by(37) {
+            let reached = t.points_reached_at(s) as usize;
+            assert!(reached > k && all[reached - 1] <= s, "{k}");
+            assert!(reached == all.len() || all[reached] > s, "{k}");
+        }
     }
 
     #[test]
