@@ -18,6 +18,7 @@ import { OptionsForm } from './form/options-form.js';
 import { formatPoint } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
+import { TimeViews } from './time-views.js';
 import { renderExperiment } from './experiment/experiment-panel.js';
 import type { DecisionRow } from './inspector/decision-figure.js';
 import { Inspector } from './inspector/inspector.js';
@@ -177,6 +178,8 @@ function run(catalogue: Catalogue): void {
       scrubber: byId('scrubber', HTMLInputElement),
       counter: byId('step-counter', HTMLOutputElement),
       speed: byId('speed', HTMLSelectElement),
+      slowdown: byId('slowdown', HTMLSelectElement),
+      machineTime: byId('machine-time', HTMLOutputElement),
       jump: byId('jump', HTMLFormElement),
       jumpInput: byId('jump-input', HTMLInputElement),
     },
@@ -206,6 +209,7 @@ function run(catalogue: Catalogue): void {
   const charts = new PathCharts(byId('charts', HTMLDivElement), goTo);
   const comparePanel = new ComparePanel(byId('comparison', HTMLDivElement), goTo);
   const timing = new TimingDiagram(byId('timing', HTMLDivElement), goTo);
+  const timeViews = new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), vcd: byId('export-vcd', HTMLButtonElement) }, catalogue, timeline, goTo);
   const experimentView = byId('experiment-view', HTMLDivElement);
 
   let shown: Shown = {};
@@ -298,6 +302,7 @@ function run(catalogue: Catalogue): void {
     comparePanel.show(a, b, difference);
     gcodePanel.setProgram(program);
     timing.setTrace(program, pointIndex);
+    timeViews.show(state.mode, program, a, pointIndex);
     if (program) void gcodePanel.showPoint(pointIndex);
     // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
     timeline.setSteps(main || b ? steps : undefined);
@@ -469,6 +474,7 @@ function run(catalogue: Catalogue): void {
       if (main) inspector.show(Math.min(k, main.steps));
       charts.showPoint(k);
       timing.showPoint(k);
+      timeViews.showPoint(k);
       if (shown.program) void gcodePanel.showPoint(k);
     }
   });
