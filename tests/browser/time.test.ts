@@ -64,7 +64,7 @@ describe('G-code mode: time', () => {
     expect(charts.differingFraction).toBeGreaterThan(0.05);
 
     // A window of 1 s with the step a third of the way in: inside the first side's trapezoid.
-    await page.getByTestId('motion-window').selectOption({ label: '1.000 s around the current step' });
+    await page.getByTestId('motion-window').selectOption({ label: '1 s around the current step' });
     await expect.poll(() => motion.locator('.u-title').first().innerText()).toContain(`${(at800 - 1 / 3).toFixed(3)} s to ${(at800 + 2 / 3).toFixed(3)} s (each block its trapezoid`);
 
     const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('export-vcd').click()]);

@@ -29,7 +29,12 @@ export interface TimedProgram {
 }
 
 /** Spans the charts can show around the current step, seconds; null: the whole program. */
-const WINDOWS: readonly (number | null)[] = [null, 10, 1, 0.1];
+const WINDOWS: readonly { span: number | null; label: string }[] = [
+  { span: null, label: 'the whole program' },
+  { span: 10, label: '10 s around the current step' },
+  { span: 1, label: '1 s around the current step' },
+  { span: 0.1, label: '100 ms around the current step' },
+];
 
 /** Most rows asked for: about a pixel each on a wide screen. */
 const MAX_BUCKETS = 2000;
@@ -67,7 +72,7 @@ export class MotionCharts {
     label.textContent = 'Time shown ';
     this.#windowSelect = document.createElement('select');
     this.#windowSelect.dataset.testid = 'motion-window';
-    for (const span of WINDOWS) this.#windowSelect.append(new Option(span === null ? 'the whole program' : `${formatSeconds(span)} around the current step`, String(span ?? '')));
+    for (const { span, label: text } of WINDOWS) this.#windowSelect.append(new Option(text, String(span ?? '')));
     this.#windowSelect.addEventListener('change', () => void this.#load());
     label.append(this.#windowSelect);
     this.#instant = document.createElement('span');
