@@ -119,6 +119,7 @@ describe('the generated boundary types', () => {
           expectFits(detail, 'StepDetail');
           if (detail.figure) figures.add(detail.figure.kind);
         }
+        expectFits(handle.stepClocks(4), 'StepClocks');
       } finally {
         handle.free();
       }
@@ -145,6 +146,8 @@ describe('the generated boundary types', () => {
       } finally {
         handle.free();
       }
+      expectFits(result.motionChart(0, record.durationSeconds, 3), 'MotionChart');
+      expectFits(result.motionChart(0, record.durationSeconds, 10_000), 'MotionChart');
     } finally {
       result.free();
     }

@@ -41,7 +41,7 @@ describe('page state in the URL query', () => {
       { ...first(), options: { from: [-3, 4, 2_000_000_000], to: [0, -7, 1], tie: 'hold', gcd: true }, pointIndex: 7, playing: true, speed: 16, camera, decision3d: true },
       { ...first(), algorithm: 'helix', options: { from: [10, 0, 0], to: [10, 0, 24], center: [0, 0, 0], dir: 'ccw', plane: 'xy', method: 'segments', tolerance: 0.25 } },
       { ...first(), mode: 'compare', other: 'bresenham3d', layout: 'side', options: { from: [0, 0, 0], to: [10, 7, 6], tie: 'hold' }, projection: '2d', embed: true },
-      { ...first(), mode: 'gcode', gcode: 'G1 X10 Y5 F600\nG2 X20 Y5 I5 J0\n', machine: { stepAngle: 1.8, microsteps: 8, pitch: 2, lineAlgorithm: 'bresenham3d', arcAlgorithm: 'arc-segments' }, pointIndex: 3 },
+      { ...first(), mode: 'gcode', gcode: 'G1 X10 Y5 F600\nG2 X20 Y5 I5 J0\n', machine: { stepAngle: 1.8, microsteps: 8, pitch: 2, lineAlgorithm: 'bresenham3d', arcAlgorithm: 'arc-segments' }, pointIndex: 3, slowdown: 100 },
       { ...first(), mode: 'experiment', experiment: { count: 20, seed: 7, maxCoordinate: 50 } },
     ];
     for (const state of states) {
@@ -50,7 +50,7 @@ describe('page state in the URL query', () => {
       expect(back.mode).toBe(mode);
       if (mode === 'trace' || mode === 'compare') expect(back.options).toEqual(state.options);
       if (mode === 'compare') expect([back.other, back.layout]).toEqual([state.other, state.layout]);
-      if (mode === 'gcode') expect([back.gcode, back.machine]).toEqual([state.gcode, { ...state.machine }]);
+      if (mode === 'gcode') expect([back.gcode, back.machine, back.slowdown]).toEqual([state.gcode, { ...state.machine }, state.slowdown]);
       if (mode === 'experiment') expect(back.experiment).toEqual(state.experiment);
       if (mode !== 'experiment') expect([back.pointIndex, back.speed, back.projection, back.decision3d, back.camera]).toEqual([state.pointIndex, state.speed, state.projection, state.decision3d, state.camera]);
       expect(back.embed).toBe(state.embed);
@@ -88,7 +88,7 @@ describe('page state in the URL query', () => {
   });
 
   it('replaces unusable values with defaults', () => {
-    const state = stateFromQuery('from=a,b,c&to=1,,2&tie=sometimes&step=-1&speed=3&mode=dance&view=4d&decision3d=yes', catalogue)!;
+    const state = stateFromQuery('from=a,b,c&to=1,,2&tie=sometimes&step=-1&speed=3&slowdown=7&mode=dance&view=4d&decision3d=yes', catalogue)!;
     expect(state).toEqual(first());
   });
 

@@ -5,7 +5,7 @@
 // in 1 s: 3.0 s. At 80 steps/mm the 400th step is at 5 mm, where s = ½at²
 // gives t = √(2·5/100) s.
 import { describe, expect, it } from 'vitest';
-import { pulseTrains, runGcode } from '../web/core/index.js';
+import { pulseTrains, runGcode, trace } from '../web/core/index.js';
 import { voxpath } from './helpers.js';
 
 const EXAMPLE = 'G1 X200 F6000\n';
@@ -63,6 +63,51 @@ describe('the planned motion profile', () => {
     p.free();
     const bad = runGcode('G1 X1 F1', { stepsPerMm: 80, acceleration: -1 });
     await expect(bad).rejects.toMatchObject({ field: 'acceleration' });
+  });
+});
+
+describe('chart rows and the step reached at an instant, for the page', () => {
+  it("charts the example's trapezoid by its corners, and a window of a long program in buckets", async () => {
+    const p = await runGcode(EXAMPLE, MACHINE);
+    // One block: 0 -> 100 mm/s by 1 s, cruise to 2 s, 0 at 3 s; X steps 80 per mm.
+    const c = p.motionChart(0, 10, 1000);
+    expect(c.exact).toBe(true);
+    expect([c.fromSeconds, c.toSeconds]).toEqual([0, 3]);
+    expect(c.seconds.map((t) => Number(t.toFixed(9)))).toEqual([0, 1, 2, 3]);
+    expect(c.speedMax.map((v) => Number(v!.toFixed(9)))).toEqual([0, 100, 100, 0]);
+    expect(c.stepRateMax[0]!.map((v) => Number(v!.toFixed(6)))).toEqual([0, 8000, 8000, 0]);
+    expect(c.junctionSpeed).toEqual([null, null, null, null]);
+    // Inside the acceleration, by t the machine has taken ⌊80·½at²⌋ steps (the 400th at √(2·5/100) s).
+    expect(p.pointAtSeconds(Math.sqrt(0.1))).toBe(400);
+    expect(p.pointAtSeconds(0.2501)).toBe(250);
+    expect(p.pointAtSeconds(-1)).toBe(0);
+    expect(p.pointAtSeconds(99)).toBe(16_000);
+    expect(() => p.pointAtSeconds(Number.NaN)).toThrow(/seconds/);
+    expect(() => p.motionChart(2, 1, 10)).toThrow(/window/);
+    p.free();
+    // 2,000 moves out and back along X, each reversal a stop: 500 buckets, each with its least and greatest.
+    const long = await runGcode(Array.from({ length: 2000 }, (_, i) => `G1 X${i % 2 === 0 ? 1 : 0} F600`).join('\n'), { stepsPerMm: 80 });
+    const b = long.motionChart(0, long.durationSeconds, 500);
+    expect(b.exact).toBe(false);
+    expect(b.seconds.length).toBe(500);
+    expect(b.speedMin.every((v) => v === 0)).toBe(true);
+    // 1 mm from rest to rest at 10 mm/s²: a triangle peaking at √(a·L) = √10 mm/s, under the 8.33 mm/s cap.
+    expect(Math.max(...b.speedMax.map((v) => v!))).toBeCloseTo(Math.sqrt(10), 9);
+    expect(b.junctionSpeed.filter((v) => v !== null).every((v) => v === 0)).toBe(true);
+    long.free();
+  });
+
+  it("gives a trace's speed per step at one tick a step and at a constant feed", async () => {
+    // Bresenham (0,0) -> (8,3): 5 axis steps and 3 diagonal ones.
+    const t = await trace({ algorithm: 'bresenham2d', from: [0, 0], to: [8, 3] });
+    const c = t.stepClocks(100);
+    expect(c.rowEdges).toEqual([0, 1, 2, 3, 4, 5, 6, 7, 8]);
+    expect([...c.equalTickMax].sort()).toEqual([1, 1, 1, 1, 1, Math.SQRT2, Math.SQRT2, Math.SQRT2]);
+    expect(c.equalTickTotalTicks).toBe(8);
+    expect(c.feedTotalTicks).toBeCloseTo(5 + 3 * Math.SQRT2, 12);
+    expect(c.feedCellsPerTick).toBe(1);
+    expect(t.stepClocks(1).equalTickMin).toEqual([1]);
+    t.free();
   });
 });
 

@@ -10,6 +10,7 @@ import { AlgorithmInputs } from './form/algorithm-inputs.js';
 import { OptionsForm } from './form/options-form.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
+import { TimeViews } from './page/time-views.js';
 import { Inspector } from './inspector/inspector.js';
 import { nextTask } from './main-thread.js';
 import { showAlert } from './page/alert.js';
@@ -126,6 +127,8 @@ function run(catalogue: Catalogue): void {
       scrubber: byId('scrubber', HTMLInputElement),
       counter: byId('step-counter', HTMLOutputElement),
       speed: byId('speed', HTMLSelectElement),
+      slowdown: byId('slowdown', HTMLSelectElement),
+      machineTime: byId('machine-time', HTMLOutputElement),
       jump: byId('jump', HTMLFormElement),
       jumpInput: byId('jump-input', HTMLInputElement),
     },
@@ -181,6 +184,7 @@ function run(catalogue: Catalogue): void {
     charts: new PathCharts(byId('charts', HTMLDivElement), goTo),
     comparePanel: new ComparePanel(byId('comparison', HTMLDivElement), goTo),
     timing: new TimingDiagram(byId('timing', HTMLDivElement), goTo),
+    timeViews: new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), vcd: byId('export-vcd', HTMLButtonElement) }, catalogue, timeline, goTo),
     experimentView: byId('experiment-view', HTMLDivElement),
     inspectorHeading: byId('inspector-heading', HTMLHeadingElement),
   });

@@ -28,6 +28,7 @@ pub mod machine;
 pub mod metrics;
 pub mod planner;
 pub mod request;
+pub mod step_clocks;
 pub mod step_detail;
 pub mod text;
 pub mod trace;

@@ -242,6 +242,15 @@ impl TraceHandle {
         crate::compare::cells_only_in(&self.0, &other.0)
     }
 
+    /// The tool's speed per step at one tick a step and at a constant feed
+    /// (`step_clocks`), in at most `max_rows` rows.
+    #[wasm_bindgen(js_name = stepClocks, unchecked_return_type = "StepClocks")]
+    pub fn step_clocks(&self, max_rows: u32) -> Result<JsValue, JsValue> {
+        crate::step_clocks::step_clocks(&self.0, max_rows)
+            .map(|clocks| to_js(&clocks))
+            .map_err(|e| to_js_error(&e))
+    }
+
     /// The ideal path as a polyline for drawing (Float64Array, stride dims).
     #[wasm_bindgen(js_name = idealPolyline)]
     pub fn ideal_polyline(&self) -> Vec<f64> {
@@ -342,11 +351,30 @@ impl GcodeResult {
         self.timeline.speed_profile()
     }
 
-    /// Each axis's planned step rate at the speed profile's corners:
-    /// (seconds, steps/s per axis) flat, stride 1 + 3.
-    #[wasm_bindgen(js_name = stepRateProfile)]
-    pub fn step_rate_profile(&self) -> Vec<f64> {
-        self.timeline.step_rate_profile(&self.steps_per_mm)
+    /// The planned speed and step rates over `from_seconds..to_seconds` in
+    /// at most `buckets` rows (`gcode::motion_chart`).
+    #[wasm_bindgen(js_name = motionChart, unchecked_return_type = "MotionChart")]
+    pub fn motion_chart(
+        &self,
+        from_seconds: f64,
+        to_seconds: f64,
+        buckets: u32,
+    ) -> Result<JsValue, JsValue> {
+        self.timeline
+            .motion_chart(&self.steps_per_mm, from_seconds, to_seconds, buckets)
+            .map(|chart| to_js(&chart))
+            .map_err(|e| to_js_error(&e))
+    }
+
+    /// The point index reached at `seconds` on the planned profile: how
+    /// many steps happen at or before it.
+    #[wasm_bindgen(js_name = pointAtSeconds)]
+    pub fn point_at_seconds(&self, seconds: f64) -> Result<u32, JsValue> {
+        if seconds.is_nan() {
+            return Err(to_js_error(&Error::field("seconds", "is not a number")));
+        }
+        // At most MAX_STEPS_LIMIT (10^9) steps: a u32, as every step index here.
+        Ok(u32::try_from(self.timeline.points_reached_at(seconds)).expect("at most 10^9 steps"))
     }
 
     /// The trace, handed over once.

@@ -440,6 +440,23 @@ fn gcode_programs_never_panic_and_keep_their_invariants() {
                 "step instants go back in time"
             );
             assert_finite("speed profile", &program.timeline.speed_profile());
+            // The page's chart rows: bounded, finite, and the buckets keep
+            // the corners' extremes.
+            let spm = info.steps_per_mm;
+            let end = info.duration_seconds.max(1e-9);
+            let corners = program
+                .timeline
+                .motion_chart(&spm, 0.0, end, 100_000)
+                .unwrap();
+            let buckets = program.timeline.motion_chart(&spm, 0.0, end, 3).unwrap();
+            assert!(buckets.seconds.len() <= 3);
+            let top = |c: &voxpath::gcode::motion_chart::MotionChart| {
+                c.speed_max.iter().flatten().fold(0.0f64, |m, &v| m.max(v))
+            };
+            assert_finite("chart times", &corners.seconds);
+            assert!((top(&corners) - top(&buckets)).abs() <= 1e-9 * (1.0 + top(&corners)));
+            let reached = program.timeline.points_reached_at(end);
+            assert_eq!(reached, info.steps, "every step is taken by the end");
             serde_json::to_string(info).expect("the program serializes");
             check_trace(&program.trace, &Map::new());
             Ok(())

@@ -82,3 +82,29 @@ fn limits_are_read_by_name() {
         "maxRate: expected one number or 3 (x, y, z), got 2"
     );
 }
+
+#[test]
+fn the_point_reached_at_an_instant_counts_the_steps_at_or_before_it() {
+    // G1 X200 F6000 from rest at 100 mm/s²: step k (0-based) at
+    // s = (k + 1) / 80 mm, at t = √(2s/a) while accelerating; so by t
+    // the machine has taken ⌊t²·a/2·80⌋ steps: 400 by √(2·5/100) s.
+    let program = run("G1 X200 F6000\n", settings(""));
+    let t = &program.timeline;
+    assert_eq!(t.points_reached_at(-1.0), 0);
+    assert_eq!(t.points_reached_at(0.0), 0);
+    let at = (2.0f64 * 5.0 / 100.0).sqrt();
+    assert_eq!(t.points_reached_at(at), 400);
+    assert_eq!(t.points_reached_at(at * (1.0 - 1e-9)), 399);
+    assert_eq!(t.points_reached_at(0.2501), 250);
+    assert_eq!(t.points_reached_at(3.0), 16_000);
+    assert_eq!(t.points_reached_at(1e9), 16_000);
+    // Agrees with the instants at every step of a program with arcs.
+    let program = run("G0 X10\nG1 Y10 F600\nG2 X20 Y0 I5 J-5\n", settings(""));
+    let t = &program.timeline;
+    let all = t.step_seconds(0, program.info.steps);
+    for (k, &s) in all.iter().enumerate().step_by(37) {
+        let reached = t.points_reached_at(s) as usize;
+        assert!(reached > k && all[reached - 1] <= s, "{k}");
+        assert!(reached == all.len() || all[reached] > s, "{k}");
+    }
+}

@@ -183,6 +183,9 @@ describe('a 100,000-line G-code program', () => {
     await page.getByTestId('gcode-run').click();
     await page.getByTestId('trace-status').filter({ hasText: `${program.moves} moves, ${program.steps} steps` }).waitFor({ timeout: 120_000 });
     await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${program.steps}$`) }).waitFor();
+    // Its time charts are in the measure: the whole program's speed and step rates, in buckets of time.
+    await page.getByTestId('motion').locator('.u-title').filter({ hasText: /buckets of/ }).first().waitFor();
+    await page.getByTestId('motion').locator('canvas').nth(1).waitFor();
 
     // Scrub: the last step was made by the last line; a typed step by its own line.
     await page.locator('body').click({ position: { x: 5, y: 5 } });

@@ -31,6 +31,10 @@ export interface ChartSpec {
   legend?: boolean;
   /** Height, CSS pixels, plot area and axes; default HEIGHT_PX. */
   heightPx?: number;
+  /** A chart whose x is not the point index (time): a click gives its x here instead of a point index to onPick. */
+  pickX?: (x: number) => void;
+  /** Text under the chart (a figure caption: what it shows, its source). */
+  caption?: string;
 }
 
 /** The colour of the step cursor (the page's accent, as the scrubber). */
@@ -40,7 +44,8 @@ export class StepChart {
   readonly #plot: uPlot;
   readonly #figure: HTMLElement;
   readonly #resize: ResizeObserver;
-  #pointIndex = 0;
+  /** The cursor's x: the point index, or on a chart over time its instant. */
+  #cursorX = 0;
 
   /** Builds the chart in `container` with `data` (x first); `onPick` gets the point index clicked. */
   constructor(container: HTMLElement, spec: ChartSpec, data: uPlot.AlignedData, onPick: (pointIndex: number) => void) {
@@ -83,7 +88,7 @@ export class StepChart {
               ctx.fillText(r.label, labelX, y - 4 * devicePixelRatio);
             }
             ctx.setLineDash([]);
-            const x = Math.round(u.valToPos(this.#pointIndex, 'x', true));
+            const x = Math.round(u.valToPos(this.#cursorX, 'x', true));
             ctx.strokeStyle = CURSOR_COLOUR;
             ctx.lineWidth = 2 * devicePixelRatio;
             ctx.beginPath();
@@ -96,10 +101,17 @@ export class StepChart {
       },
     };
     this.#plot = new uPlot(opts, data, this.#figure);
+    if (spec.caption) {
+      const caption = document.createElement('figcaption');
+      caption.textContent = spec.caption;
+      this.#figure.append(caption);
+    }
     this.#plot.over.addEventListener('click', () => {
       const left = this.#plot.cursor.left;
       if (left === undefined || left < 0) return;
-      onPick(Math.round(this.#plot.posToVal(left, 'x')));
+      const x = this.#plot.posToVal(left, 'x');
+      if (spec.pickX) spec.pickX(x);
+      else onPick(Math.round(x));
     });
     this.#resize = new ResizeObserver(() => {
       const width = Math.max(200, container.clientWidth - 4);
@@ -115,8 +127,13 @@ export class StepChart {
 
   /** Moves the step cursor to `pointIndex`. */
   showPoint(pointIndex: number): void {
-    if (pointIndex === this.#pointIndex) return;
-    this.#pointIndex = pointIndex;
+    this.showX(pointIndex);
+  }
+
+  /** Moves the cursor to `x` (on a chart over time: an instant). */
+  showX(x: number): void {
+    if (x === this.#cursorX) return;
+    this.#cursorX = x;
     this.#plot.redraw(false, false);
   }
 

@@ -8,6 +8,7 @@
  *   program.errors;         // [{ line, column, message }]
  *   program.durationSeconds; // on the planned motion profile (Grbl 1.1's planner)
  *   program.stepTimes(0, 10); // Float64Array: when each step happens, seconds
+ *   program.motionChart(0, 10, 800); // speed and step rates over 0..10 s, chart rows
  *
  * Machine positions are in steps (integers); moves also report mm. The core
  * runs the program a slice of lines at a time and this module yields to the
@@ -19,7 +20,7 @@ import { argumentError, describeValue, indexRange, optionalFunction, text, whole
 import { encodeRequest } from './request.js';
 import { Trace, requireTrace } from './trace.js';
 import { loadCore } from './wasm.js';
-import type { GcodeResult, GcodeSettings, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
+import type { GcodeResult, GcodeSettings, MotionChart, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
 
 /**
  * The settings (GcodeSettings: one field per setting of the catalogue's
@@ -31,6 +32,7 @@ export type {
   ArcInfo as GcodeArc,
   Diagnostic as GcodeDiagnostic,
   GcodeSettings,
+  MotionChart,
   Move as GcodeMove,
   ProgramInfo as GcodeProgramInfo,
   Progress as GcodeProgress,
@@ -131,6 +133,29 @@ export class GcodeProgram {
    */
   speedProfile(): Float64Array {
     return this.#core.speedProfile();
+  }
+
+  /**
+   * The planned motion over fromSeconds..toSeconds (clipped to the program)
+   * as at most `buckets` chart rows: the tool's speed (mm/s) and each axis's
+   * step rate (steps/s), least and greatest per row, and the planned speed
+   * where each move starts after another (its corner's junction speed).
+   * The rows are the trapezoids' corners when few blocks are in the window,
+   * else equal buckets of time. Its cost is that of the blocks in the window.
+   */
+  motionChart(fromSeconds: number, toSeconds: number, buckets: number): MotionChart {
+    const core = this.#core;
+    wholeNumber('buckets', buckets, 1, 2 ** 32 - 1, 'buckets');
+    return callCore(() => core.motionChart(fromSeconds, toSeconds, buckets));
+  }
+
+  /**
+   * The point index the machine has reached `seconds` into the program: how
+   * many steps happen at or before that instant (stepTimes, bisected).
+   */
+  pointAtSeconds(seconds: number): number {
+    const core = this.#core;
+    return callCore(() => core.pointAtSeconds(seconds));
   }
 
   /**

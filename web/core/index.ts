@@ -30,7 +30,7 @@ export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, Trace
 export { checkPoints } from './check.js';
 export type { AlsoMatch, AroundRow, Check, CheckDifference, DifferenceKind, LearnerPoints } from './check.js';
 export { GcodeProgram, runGcode } from './gcode.js';
-export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, GcodeTiming, RunGcodeOptions } from './gcode.js';
+export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, GcodeTiming, MotionChart, RunGcodeOptions } from './gcode.js';
 export { pulseTrains } from './pulses.js';
 export type { PulseTrain } from './pulses.js';
 export { experiments, randomLines } from './experiment.js';

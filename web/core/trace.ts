@@ -7,7 +7,7 @@
 import type { Comparison } from './compare.js';
 import { callCore } from './errors.js';
 import { argumentError, describeValue, indexRange, wholeNumber } from './guard.js';
-import type { TraceHandle } from './pkg/voxpath.js';
+import type { StepClocks, TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
 import type { AlgorithmInfo, ChartSeries, DecisionColumns, StepDetail, TraceOptions, TraceSummary } from './types.js';
@@ -256,6 +256,17 @@ export class Trace {
     const core = this.#core;
     const theirs = handleOf('other', other);
     return callCore(() => core.cellsOnlyIn(theirs));
+  }
+
+  /**
+   * The tool's speed per step under two clocks, as at most maxRows chart
+   * rows: one tick per step (√m cells per tick for a step moving m axes)
+   * and a constant feed of 1 cell per tick (a step takes √m ticks).
+   */
+  stepClocks(maxRows: number): StepClocks {
+    const core = this.#core;
+    wholeNumber('maxRows', maxRows, 1, 2 ** 32 - 1, 'maxRows');
+    return callCore(() => core.stepClocks(maxRows));
   }
 
   /** The ideal path as a polyline for drawing, flat with stride dims. */

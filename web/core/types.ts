@@ -48,6 +48,7 @@ export type {
   Reading,
   SignedAxis,
   StepDetail,
+  StepClocks,
   TiePolicy,
   TraceOptions,
   TraceSummary,

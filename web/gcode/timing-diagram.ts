@@ -1,19 +1,26 @@
 /**
  * The step/direction signals as a logic analyser draws them: one lane per
- * signal (x STEP, x DIR, y STEP, ...) over a window of ticks around the
- * current step. One tick is one step of the trace (the core's tick model,
- * web/core/pulses.ts: the feed is not modelled). An axis that moves in a
- * tick gets one STEP pulse: it rises at the tick's start and falls at its
- * middle, so that steps on every tick still read as separate pulses. DIR is
- * a level, high while the axis moves (or last moved) towards -, labelled
- * with the direction each level means. The signals are the core's
- * pulseTrains, read in the worker.
+ * signal (x STEP, x DIR, y STEP, ...) over a window of steps around the
+ * current one. An axis that moves in a step gets one STEP pulse; DIR is a
+ * level, high while the axis moves (or last moved) towards -, labelled with
+ * the direction each level means. The signals are the core's pulseTrains,
+ * read in the worker.
+ *
+ * Two clocks. A trace: one tick per step (the core's tick model,
+ * web/core/pulses.ts); a STEP pulse rises at its tick's start and falls at
+ * its middle, so that steps on every tick still read as separate pulses. A
+ * G-code program: each step at its planned instant (the core's stepTimes,
+ * Grbl's planner), the axis in ms or µs; a STEP pulse rises at its step's
+ * instant and is drawn falling half-way to the next step (a driver's pulse
+ * is some µs, too thin to see at this scale). The cursor is the instant the
+ * current point is reached.
  */
 import uPlot from 'uplot';
 import { StepChart } from '../charts/chart.js';
-import type { PulseTrain } from '../core/index.js';
 import { AXIS_NAMES } from '../format.js';
 import { AXIS_COLOURS } from '../scene/palette.js';
+import type { PulseWindow } from '../worker/protocol.js';
+import { timeUnit } from './time-format.js';
 
 /**
  * Ticks shown at once: as many as leave each tick this many CSS pixels, so
@@ -34,7 +41,7 @@ const SWING = 1;
 export interface PulsedTrace {
   dims: number;
   steps: number;
-  pulseTrains(fromStep: number, toStep: number): Promise<PulseTrain[]>;
+  pulseTrains(fromStep: number, toStep: number): Promise<PulseWindow>;
 }
 
 export class TimingDiagram {
@@ -46,6 +53,11 @@ export class TimingDiagram {
   #fromStep = -1;
   #windowTicks = MIN_WINDOW_TICKS;
   #request = 0;
+  /** A program's window: its steps' instants, seconds, and the axis unit's factor from seconds. */
+  #stepSeconds: Float64Array | null = null;
+  #perSecond = 1;
+  /** The x axis's label, to know when the chart must be made again (the unit changed). */
+  #xLabel = '';
 
   constructor(container: HTMLElement, onPick: (pointIndex: number) => void) {
     this.#container = container;
@@ -71,19 +83,59 @@ export class TimingDiagram {
       const ticks = Math.max(MIN_WINDOW_TICKS, Math.floor((this.#container.clientWidth - LABELS_PX) / TICK_PX));
       const fromStep = Math.max(0, Math.min(pointIndex - Math.floor(ticks / 3), trace.steps - ticks));
       const toStep = Math.min(trace.steps, fromStep + ticks);
-      const trains = await trace.pulseTrains(fromStep, toStep);
+      const window = await trace.pulseTrains(fromStep, toStep);
       if (request !== this.#request || trace !== this.#trace) return;
       this.#fromStep = fromStep;
       this.#windowTicks = ticks;
-      this.#draw(trains);
+      this.#draw(window);
     }
-    this.#chart?.showPoint(pointIndex);
+    this.#chart?.showX(this.#xOfPoint(pointIndex));
   }
 
-  #draw(trains: PulseTrain[]): void {
+  /** The x of point index k: k ticks, or (a program) the instant of the step that reached it. */
+  #xOfPoint(pointIndex: number): number {
+    const times = this.#stepSeconds;
+    if (!times) return pointIndex;
+    if (pointIndex === 0) return 0;
+    const i = Math.max(0, Math.min(times.length - 1, pointIndex - 1 - this.#fromStep));
+    return times[i]! * this.#perSecond;
+  }
+
+  /** The point index reached at x (a program: the steps of the window at or before that instant). */
+  #pointOfX(x: number): number {
+    const times = this.#stepSeconds!;
+    let k = 0;
+    while (k < times.length && times[k]! * this.#perSecond <= x) k++;
+    return this.#fromStep + k;
+  }
+
+  /**
+   * The rows' x: two a step, where its STEP pulse rises and where it falls,
+   * and the right edge of the last step. Ticks: a step's start and middle;
+   * a program: its instant and half-way to the next step's (for the last,
+   * as far as the one before it was from it).
+   */
+  #rowsX(ticks: number, times: Float64Array | null): Float64Array {
+    if (!times) return Float64Array.from({ length: 2 * ticks + 1 }, (_, i) => this.#fromStep + i / 2);
+    const x = new Float64Array(2 * ticks + 1);
+    // A single step, or two at one instant (a move of no length between): 1 ms wide.
+    const lastGap = (ticks > 1 ? times[ticks - 1]! - times[ticks - 2]! : 0) || 1e-3;
+    for (let i = 0; i < ticks; i++) {
+      const next = i + 1 < ticks ? times[i + 1]! : times[i]! + lastGap;
+      x[2 * i] = times[i]! * this.#perSecond;
+      x[2 * i + 1] = ((times[i]! + next) / 2) * this.#perSecond;
+    }
+    x[2 * ticks] = (times[ticks - 1]! + lastGap) * this.#perSecond;
+    return x;
+  }
+
+  #draw({ trains, stepSeconds }: PulseWindow): void {
     const ticks = trains[0]!.step.length;
-    // Two samples a tick, at its start and its middle, and the right edge of the last tick.
-    const x = Float64Array.from({ length: 2 * ticks + 1 }, (_, i) => this.#fromStep + i / 2);
+    this.#stepSeconds = stepSeconds;
+    const span = stepSeconds && ticks > 1 ? stepSeconds[ticks - 1]! - stepSeconds[0]! : 0;
+    const { unit, perSecond } = timeUnit(span);
+    this.#perSecond = stepSeconds ? perSecond : 1;
+    const x = this.#rowsX(ticks, stepSeconds);
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
@@ -111,16 +163,25 @@ export class TimingDiagram {
         });
       }
     });
-    const data: uPlot.AlignedData = [x, ...lanes];
-    if (this.#chart) {
+    // A program's first window starts at its start, 0 s, idle until the first step (from rest, its first steps come slowly).
+    const idle = stepSeconds !== null && this.#fromStep === 0 && stepSeconds[0]! > 0;
+    const withStart = (values: Float64Array, first: number) => (idle ? Float64Array.of(first, ...values) : values);
+    const data: uPlot.AlignedData = [withStart(x, 0), ...lanes.map((values, i) => withStart(values, i % 2 === 0 ? values[1]! : values[0]!))];
+    const xLabel = stepSeconds ? `planned instant (${unit})` : 'step';
+    if (this.#chart && xLabel === this.#xLabel) {
       this.#chart.setData(data);
       return;
     }
+    this.#chart?.destroy();
+    this.#xLabel = xLabel;
     this.#chart = new StepChart(
       this.#container,
       {
-        title: 'STEP and DIR per axis (one tick per step: a STEP pulse per step taken, DIR high for -)',
-        xLabel: 'step',
+        title: stepSeconds
+          ? `STEP and DIR per axis at each step's planned instant, ${unit} (a STEP pulse per step, drawn half-way to the next; DIR high for -)`
+          : 'STEP and DIR per axis (one tick per step: a STEP pulse per step taken, DIR high for -)',
+        xLabel,
+        pickX: stepSeconds ? (at) => this.#onPick(this.#pointOfX(at)) : undefined,
         yLabel: '',
         series,
         yRange: [-0.3, count * LANE],

@@ -25,6 +25,7 @@ import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
 import { type AppState, type Catalogue, type Mode, tracedAlgorithms, traceOptions } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
+import type { TimeViews } from './time-views.js';
 import type { Timeline } from '../timeline/timeline.js';
 import { Cancelled, CoreCrash, InputRejected, type RemoteProgram, type Running, type TraceClient } from '../worker/client.js';
 import type { LineSteps } from '../worker/protocol.js';
@@ -61,6 +62,7 @@ export interface PageParts {
   charts: PathCharts;
   comparePanel: ComparePanel;
   timing: TimingDiagram;
+  timeViews: TimeViews;
   experimentView: HTMLElement;
   inspectorHeading: HTMLElement;
 }
@@ -140,6 +142,7 @@ export class Orchestrator {
     p.comparePanel.show(a, b, difference);
     p.gcodePanel.setProgram(program);
     p.timing.setTrace(program, pointIndex);
+    p.timeViews.show(state.mode, program, a, pointIndex);
     if (program) void p.gcodePanel.showPoint(pointIndex);
     // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
     p.timeline.setSteps(main || b ? steps : undefined);
@@ -266,6 +269,7 @@ export class Orchestrator {
     }
     p.charts.showPoint(pointIndex);
     p.timing.showPoint(pointIndex);
+    p.timeViews.showPoint(pointIndex);
     if (this.#shown.program) void p.gcodePanel.showPoint(pointIndex);
   }
 }

@@ -62,6 +62,12 @@ export interface AppState {
   playing: boolean;
   /** Playback speed in steps per second, one of SPEEDS_STEPS_PER_SECOND. */
   speed: number;
+  /**
+   * G-code mode: play in machine time, the program's planned instants
+   * slowed down this many times (one of SLOWDOWNS); null: `speed` steps per
+   * second, every step alike.
+   */
+  slowdown: number | null;
   /** Chrome-less view for an iframe (?embed=1). */
   embed: boolean;
 }
@@ -69,6 +75,9 @@ export interface AppState {
 export const SPEEDS_STEPS_PER_SECOND = [0.5, 1, 2, 4, 8, 16, 32, 64, 256, 1024, 8192] as const;
 
 export const DEFAULT_SPEED = 2;
+
+/** Machine-time playback: real time (1), or 10, 100 or 1000 times slower (a corner of a fast move lasts milliseconds). */
+export const SLOWDOWNS = [1, 10, 100, 1000] as const;
 
 /** The algorithm a first visit shows: DEFAULT_ALGORITHM, or the catalogue's first. */
 export function defaultAlgorithm(catalogue: readonly AlgorithmInfo[]): AlgorithmInfo {
@@ -211,6 +220,7 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     pointIndex: 0,
     playing: false,
     speed: DEFAULT_SPEED,
+    slowdown: null,
     embed: false,
   };
 }

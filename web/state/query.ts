@@ -3,7 +3,7 @@
  *
  *   ?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6&tie=advance&step=3&speed=2&view=3d
  *   ?mode=compare&algorithm=regions&other=greedy&layout=side&from=0,0,0&to=10,7,6
- *   ?mode=gcode&gcode=G1%20X10&stepsPerMm=80&lineAlgorithm=regions&arcAlgorithm=circle
+ *   ?mode=gcode&gcode=G1%20X10&stepsPerMm=80&lineAlgorithm=regions&arcAlgorithm=circle&slowdown=10
  *   ?mode=experiment&algorithm=regions&count=100&seed=1&maxCoordinate=100
  *   ...&decision3d=1&camera=12.5,-30,20,5,3.5,3,1&embed=1
  *
@@ -11,7 +11,9 @@
  * flags (--from 0,0,0); a mode writes only its own keys. `step` is the point
  * index shown (steps taken); `camera` is position x,y,z, target x,y,z and
  * zoom, absent while the page frames the path itself; `decision3d` (1 or 0)
- * is the view's decision overlay (an exit face, a circle's candidates).
+ * is the view's decision overlay (an exit face, a circle's candidates);
+ * `slowdown` (G-code mode) plays in machine time that many times slower
+ * than real time, absent when playback counts steps per second.
  * `playing` is left out on purpose: a page opened from a link starts
  * paused, as moving content should not start by itself.
  */
@@ -26,6 +28,7 @@ import {
   type OptionValue,
   PAGE_OPTIONS,
   PROJECTIONS,
+  SLOWDOWNS,
   SPEEDS_STEPS_PER_SECOND,
   defaultAlgorithm,
   comparableWith,
@@ -124,6 +127,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
   if (state.mode === 'gcode') {
     if (state.gcode.length <= gcodeLimit) pairs.push(['gcode', state.gcode]);
     options(state.machine);
+    if (state.slowdown !== null) pairs.push(['slowdown', String(state.slowdown)]);
   }
   if (state.mode === 'experiment') options(state.experiment);
   else {
@@ -141,7 +145,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
 const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
 /** Keys that say a query describes a state (any option name counts too). */
-export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'decision3d', 'camera', 'gcode', 'embed'];
+export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowdown', 'view', 'decision3d', 'camera', 'gcode', 'embed'];
 
 /**
  * The state a query describes, or undefined when it has none of the state's
@@ -179,6 +183,8 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   if (step !== undefined && Number.isSafeInteger(step) && step >= 0) state.pointIndex = step;
   const speed = readDecimal(params.get('speed') ?? '');
   if (SPEEDS_STEPS_PER_SECOND.some((s) => s === speed)) state.speed = speed!;
+  const slowdown = readDecimal(params.get('slowdown') ?? '');
+  if (SLOWDOWNS.some((s) => s === slowdown)) state.slowdown = slowdown!;
   state.projection = PROJECTIONS.find((p) => p === params.get('view')) ?? defaultProjection(axisCount(infos, state.options));
   state.decision3d = params.get('decision3d') === '1';
   state.camera = parseCamera(params.get('camera'));

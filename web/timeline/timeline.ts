@@ -2,11 +2,17 @@
  * Play / pause / first / previous / next / last, the scrubber, the "step k of
  * n" counter, jump to a step, the speed, and their keys (Space, Left/Right
  * arrows, Home/End).
- * All of them only change the state's pointIndex, playing and speed; the
- * views follow the state.
+ * All of them only change the state's pointIndex, playing, speed and
+ * slowdown; the views follow the state.
+ *
+ * Playback counts steps per second, every step alike; or, for a G-code
+ * program with the slowdown set, it runs in machine time (MachineClock): the
+ * steps come at their planned instants, slowed down.
  */
-import { type AppState, SPEEDS_STEPS_PER_SECOND } from '../state/app-state.js';
+import { formatSeconds } from '../gcode/time-format.js';
+import { type AppState, SLOWDOWNS, SPEEDS_STEPS_PER_SECOND } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
+import { MachineClock, type PlannedInstants } from './machine-clock.js';
 
 export interface TimelineElements {
   first: HTMLButtonElement;
@@ -19,6 +25,10 @@ export interface TimelineElements {
   scrubber: HTMLInputElement;
   counter: HTMLOutputElement;
   speed: HTMLSelectElement;
+  /** The playback clock: steps per second, or machine time slowed down (G-code mode). */
+  slowdown: HTMLSelectElement;
+  /** The machine-time clock while it plays, and where it stopped. */
+  machineTime: HTMLOutputElement;
   /** A form with a number field: submitting it jumps to that step. */
   jump: HTMLFormElement;
   jumpInput: HTMLInputElement;
@@ -46,6 +56,12 @@ export class Timeline {
   /** Playback time not yet turned into whole steps, in seconds. */
   #carrySeconds = 0;
   #lastFrameMs = 0;
+  /** The program whose planned instants machine-time playback follows, if one is shown. */
+  #instants: PlannedInstants | undefined;
+  /** Machine-time playback under way. */
+  #machine: MachineClock | undefined;
+  /** The clock time of the last step machine-time playback showed, seconds. */
+  #machineSeconds: number | undefined;
 
   constructor(elements: TimelineElements, store: Store<AppState>) {
     this.#e = elements;
@@ -60,6 +76,11 @@ export class Timeline {
     elements.play.addEventListener('click', () => this.#togglePlay());
     elements.scrubber.addEventListener('input', () => this.#go(elements.scrubber.valueAsNumber));
     elements.speed.addEventListener('change', () => store.update({ speed: Number(elements.speed.value) }));
+    elements.slowdown.append(new Option('steps/s (Speed)', ''));
+    for (const slowdown of SLOWDOWNS) {
+      elements.slowdown.append(new Option(slowdown === 1 ? 'machine time, real' : `machine time, ${slowdown}× slower`, String(slowdown)));
+    }
+    elements.slowdown.addEventListener('change', () => store.update({ slowdown: elements.slowdown.value === '' ? null : Number(elements.slowdown.value) }));
     elements.jump.addEventListener('submit', (event) => {
       event.preventDefault();
       const wanted = elements.jumpInput.valueAsNumber;
@@ -77,6 +98,32 @@ export class Timeline {
     if (steps !== undefined && pointIndex > steps) this.#store.update({ pointIndex: steps });
     if (steps === undefined) this.#store.update({ playing: false });
     this.#render();
+  }
+
+  /** The planned instants of the program shown (undefined: none, or not a program): machine-time playback follows them. */
+  setClock(instants: PlannedInstants | undefined): void {
+    if (instants === this.#instants) return;
+    this.#instants = instants;
+    this.#stopMachine();
+    this.#machineSeconds = undefined;
+    this.#render();
+  }
+
+  #stopMachine(): void {
+    this.#machine?.stop();
+    this.#machine = undefined;
+  }
+
+  /** Machine time from the current point on, once its instant is known. */
+  #startMachine(instants: PlannedInstants): MachineClock {
+    return new MachineClock(instants, this.#store.state.pointIndex, (pointIndex, seconds) => {
+      const steps = this.#steps ?? 0;
+      this.#machineSeconds = seconds;
+      const next = Math.min(pointIndex, steps);
+      this.#store.update({ pointIndex: next, playing: next < steps });
+      // Shown even when the step did not change (the state then is the same, and no render follows).
+      this.#renderMachineTime();
+    });
   }
 
   #go(pointIndex: number): void {
@@ -113,8 +160,17 @@ export class Timeline {
     const { playing, pointIndex, speed } = this.#store.state;
     if (!playing || this.#steps === undefined) return;
     // A long gap (a hidden tab) is not caught up on: at most a quarter second counts.
-    this.#carrySeconds += Math.min(nowMs - this.#lastFrameMs, 250) / 1000;
+    const elapsedSeconds = Math.min(nowMs - this.#lastFrameMs, 250) / 1000;
     this.#lastFrameMs = nowMs;
+    const { slowdown } = this.#store.state;
+    if (slowdown !== null && this.#instants) {
+      this.#machine ??= this.#startMachine(this.#instants);
+      this.#machine.advance(elapsedSeconds, slowdown);
+      this.#frame = requestAnimationFrame((t) => this.#tick(t));
+      return;
+    }
+    this.#stopMachine();
+    this.#carrySeconds += elapsedSeconds;
     const steps = Math.floor(this.#carrySeconds * speed);
     this.#carrySeconds -= steps / speed;
     if (steps > 0) {
@@ -146,6 +202,8 @@ export class Timeline {
     // Announcing every step of playback would drown a screen reader.
     e.counter.setAttribute('aria-live', playing ? 'off' : 'polite');
     e.speed.value = String(speed);
+    e.slowdown.value = String(this.#store.state.slowdown ?? '');
+    this.#renderMachineTime();
 
     if (playing && this.#frame === undefined) {
       this.#carrySeconds = 0;
@@ -154,6 +212,19 @@ export class Timeline {
     } else if (!playing && this.#frame !== undefined) {
       cancelAnimationFrame(this.#frame);
       this.#frame = undefined;
+      this.#stopMachine();
     }
+  }
+
+  /** The machine-time readout: shown while machine time is chosen for a program. */
+  #renderMachineTime(): void {
+    const out = this.#e.machineTime;
+    const instants = this.#instants;
+    out.hidden = this.#store.state.slowdown === null || !instants;
+    if (!instants) return;
+    const seconds = this.#machineSeconds;
+    out.value = seconds === undefined ? `machine time: the program takes ${formatSeconds(instants.durationSeconds)}` : `machine time ${formatSeconds(seconds)} of ${formatSeconds(instants.durationSeconds)}`;
+    if (seconds === undefined) delete out.dataset.seconds;
+    else out.dataset.seconds = String(seconds);
   }
 }

@@ -7,13 +7,14 @@
  * every pending request is rejected with CoreCrash, the listener is told, and
  * the next request starts a fresh worker: the page stays usable.
  */
-import type { GcodeMove, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ChartSeries, StepDetail, TraceOptions } from '../core/types.js';
+import type { GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { ChartSeries, StepClocks, StepDetail, TraceOptions } from '../core/types.js';
 import type {
   InputError,
   LineSteps,
   PathSummary,
   ProgramRecord,
+  PulseWindow,
   ReplyMessage,
   ReplyValue,
   RequestKind,
@@ -248,9 +249,14 @@ export class RemoteTrace {
     return this.ask({ kind: 'series', traceId: this.traceId, maxPoints });
   }
 
-  /** Each axis's STEP and DIR signals over step indices fromStep..toStep (the core's pulseTrains), for the timing diagram. */
-  pulseTrains(fromStep: number, toStep: number): Promise<PulseTrain[]> {
+  /** Each axis's STEP and DIR signals over step indices fromStep..toStep (the core's pulseTrains), for the timing diagram; a program's with its steps' instants. */
+  pulseTrains(fromStep: number, toStep: number): Promise<PulseWindow> {
     return this.ask({ kind: 'pulses', traceId: this.traceId, fromStep, toStep });
+  }
+
+  /** The tool's speed per step at one tick a step and at a constant feed, in at most maxRows rows (Trace.stepClocks). */
+  stepClocks(maxRows: number): Promise<StepClocks> {
+    return this.ask({ kind: 'stepClocks', traceId: this.traceId, maxRows });
   }
 
   /** The whole trace as the CLI writes it: CSV (one row per point) or JSON. */
@@ -288,5 +294,30 @@ export class RemoteProgram extends RemoteTrace {
   /** The steps a 1-based source line produced, and where the machine is when it starts. */
   lineSteps(line: number): Promise<LineSteps> {
     return this.ask({ kind: 'lineSteps', traceId: this.traceId, line });
+  }
+
+  /** The instants of step indices fromStep..toStep on the planned profile, seconds. */
+  stepTimes(fromStep: number, toStep: number): Promise<Float64Array> {
+    return this.ask({ kind: 'stepTimes', traceId: this.traceId, fromStep, toStep });
+  }
+
+  /** The instant point index k is reached: that of step k - 1 (0 for the start), seconds. */
+  async secondsAtPoint(pointIndex: number): Promise<number> {
+    return pointIndex === 0 ? 0 : (await this.stepTimes(pointIndex - 1, pointIndex))[0]!;
+  }
+
+  /** The point index reached `seconds` into the program (GcodeProgram.pointAtSeconds). */
+  pointAtSeconds(seconds: number): Promise<number> {
+    return this.ask({ kind: 'pointAtSeconds', traceId: this.traceId, seconds });
+  }
+
+  /** The planned speed and step rates over a window of time, in at most `buckets` rows (GcodeProgram.motionChart). */
+  motionChart(fromSeconds: number, toSeconds: number, buckets: number): Promise<MotionChart> {
+    return this.ask({ kind: 'motionChart', traceId: this.traceId, fromSeconds, toSeconds, buckets });
+  }
+
+  /** The STEP and DIR wires as an IEEE 1364 VCD file (GcodeProgram.vcd). */
+  vcd(): Promise<Uint8Array> {
+    return this.ask({ kind: 'vcd', traceId: this.traceId });
   }
 }

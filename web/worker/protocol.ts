@@ -10,13 +10,16 @@
  * copies:
  * - points: Int32Array, stride dims, one row per point index 0..=steps;
  * - idealPolyline: Float64Array, stride dims, grid units;
- * - series: see ChartSeries; cells: Int32Array, stride dims.
+ * - series: see ChartSeries; cells: Int32Array, stride dims;
+ * - step instants: Float64Array, seconds, one per step index of the range;
+ * - motion charts and step clocks: rows bounded by what the page asks for
+ *   (about a chart's width in pixels), however long the program.
  * What the page shows of one point (the inspector, the decision's figure
  * and its 3D overlay) is one request, stepDetail, answered with the core's
  * StepDetail.
  */
-import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, ChartSeries, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { Catalogue, ChartSeries, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -27,6 +30,11 @@ export type WorkerRequest =
   | { kind: 'series'; traceId: number; maxPoints: number }
   | { kind: 'difference'; traceIdA: number; traceIdB: number }
   | { kind: 'pulses'; traceId: number; fromStep: number; toStep: number }
+  | { kind: 'stepClocks'; traceId: number; maxRows: number }
+  | { kind: 'stepTimes'; traceId: number; fromStep: number; toStep: number }
+  | { kind: 'pointAtSeconds'; traceId: number; seconds: number }
+  | { kind: 'motionChart'; traceId: number; fromSeconds: number; toSeconds: number; buckets: number }
+  | { kind: 'vcd'; traceId: number }
   | { kind: 'moves'; traceId: number; fromMove: number; toMove: number }
   | { kind: 'moveOfStep'; traceId: number; stepIndex: number }
   | { kind: 'lineSteps'; traceId: number; line: number }
@@ -84,6 +92,14 @@ export interface LineSteps {
 }
 
 
+/** The signals of a window of steps for the timing diagram. */
+export interface PulseWindow {
+  /** The core's pulseTrains over the range, one per axis (with edgeSeconds and rateHz for a program). */
+  trains: PulseTrain[];
+  /** A program's step instants over the range, seconds, on its planned profile; null for a trace (one tick per step). */
+  stepSeconds: Float64Array | null;
+}
+
 /** The value a successful reply carries, by request kind. */
 export interface ReplyValue {
   catalogue: Catalogue;
@@ -92,8 +108,14 @@ export interface ReplyValue {
   stepDetail: StepDetail;
   series: ChartSeries;
   difference: TraceDifference;
-  /** The core's pulseTrains over the range, one per axis. */
-  pulses: PulseTrain[];
+  pulses: PulseWindow;
+  stepClocks: StepClocks;
+  /** A program's step instants over the range, seconds (GcodeProgram.stepTimes). */
+  stepTimes: Float64Array;
+  pointAtSeconds: number;
+  motionChart: MotionChart;
+  /** The program's STEP and DIR wires as a VCD file (GcodeProgram.vcd). */
+  vcd: Uint8Array;
   moves: GcodeMove[];
   moveOfStep: { moveIndex: number; line: number };
   lineSteps: LineSteps;

@@ -96,8 +96,25 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       return { value: difference, transfer: [difference.onlyInA.buffer, difference.onlyInB.buffer] };
     }
     case 'pulses': {
-      const trains = pulseTrains(held(request.traceId), request.fromStep, request.toStep);
-      return { value: trains, transfer: trains.flatMap((t) => [t.step.buffer, t.dir.buffer]) };
+      // A program's steps have instants on its planned profile; a trace's are ticks.
+      const stepSeconds = programs.get(request.traceId)?.stepTimes(request.fromStep, request.toStep) ?? null;
+      const trains = pulseTrains(held(request.traceId), request.fromStep, request.toStep, stepSeconds ?? undefined);
+      const transfer = trains.flatMap((t) => [t.step.buffer, t.dir.buffer, ...(t.edgeSeconds ? [t.edgeSeconds.buffer, t.rateHz!.buffer] : [])]);
+      return { value: { trains, stepSeconds }, transfer: stepSeconds ? [...transfer, stepSeconds.buffer] : transfer };
+    }
+    case 'stepClocks':
+      return { value: held(request.traceId).stepClocks(request.maxRows), transfer: [] };
+    case 'stepTimes': {
+      const times = heldProgram(request.traceId).stepTimes(request.fromStep, request.toStep);
+      return { value: times, transfer: [times.buffer] };
+    }
+    case 'pointAtSeconds':
+      return { value: heldProgram(request.traceId).pointAtSeconds(request.seconds), transfer: [] };
+    case 'motionChart':
+      return { value: heldProgram(request.traceId).motionChart(request.fromSeconds, request.toSeconds, request.buckets), transfer: [] };
+    case 'vcd': {
+      const bytes = heldProgram(request.traceId).vcd();
+      return { value: bytes, transfer: [bytes.buffer] };
     }
     case 'moves':
       return { value: heldProgram(request.traceId).moves.slice(request.fromMove, request.toMove), transfer: [] };

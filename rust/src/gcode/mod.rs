@@ -17,6 +17,7 @@
 //! can show progress), or all at once with [`run`].
 
 pub mod interpret;
+pub mod motion_chart;
 pub mod parse;
 pub mod program;
 pub mod timing;

@@ -200,6 +200,41 @@ impl Timeline {
         out
     }
 
+    /// The blocks in `blocks` that start a move after another block (where
+    /// the machine turns from one move into the next), ascending.
+    pub fn move_starts(&self, blocks: Range<usize>) -> Vec<usize> {
+        let first = self
+            .moves
+            .partition_point(|(b, _, _)| b.start < blocks.start);
+        let mut starts: Vec<usize> = self.moves[first..]
+            .iter()
+            .map(|(b, _, _)| b.start)
+            .take_while(|&start| start < blocks.end)
+            .filter(|&start| start > 0)
+            .collect();
+        // A move with no blocks starts where the next one does.
+        starts.dedup();
+        starts
+    }
+
+    /// The point index the machine has reached at `seconds`: how many steps
+    /// happen at or before that instant (0 before the first; every step
+    /// once the program has ended). Bisects the steps by their instants
+    /// (`step_seconds`, monotone), so it agrees with them exactly.
+    pub fn points_reached_at(&self, seconds: f64) -> u64 {
+        let steps = self.moves.last().map_or(0, |(_, first, n)| first + n);
+        let (mut lo, mut hi) = (0, steps);
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if self.step_seconds(mid, mid + 1)[0] <= seconds {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+
     /// The instant of every step index in `from..to`, seconds from the
     /// program's start (see the module comment).
     pub fn step_seconds(&self, from: u64, to: u64) -> Vec<f64> {

@@ -1,0 +1,169 @@
+// Time on the page (issue 14), in headless Chromium, with the screenshots
+// checked for content. Expected values are worked from Grbl 1.1's planner
+// (gnea/grbl planner.c, defaults.h), not read from the page: the default
+// program is a 20 mm square at F600 with Grbl's defaults (a = 10 mm/s²,
+// max rate 500 mm/min, junction deviation 0.01 mm), so every side is capped
+// at 500/60 = 8.33 mm/s and each 90° corner is taken at Grbl's junction
+// speed √(a_j·δ·s/(1−s)), s = sin 45°, a_j = a·√2 (the acceleration limited
+// along the corner's bisector, limit_value_by_axis_maximum).
+import { readFileSync } from 'node:fs';
+import type { Page } from 'playwright-core';
+import { afterAll, describe, expect, it } from 'vitest';
+import { closeAll, openPage, screenshot } from './harness.js';
+
+afterAll(closeAll);
+
+const A = 10;
+const TOP = 500 / 60;
+const S45 = Math.SQRT1_2;
+const CORNER = Math.sqrt((A * Math.SQRT2 * 0.01 * S45) / (1 - S45));
+
+/** Seconds of a trapezoid over l mm from v0 to v1, top speed vc, acceleration a: Δv/a per ramp, the rest at vc. */
+function side(l: number, v0: number, v1: number, vc: number, a: number): number {
+  const ramps = (vc * vc - v0 * v0) / (2 * a) + (vc * vc - v1 * v1) / (2 * a);
+  return (vc - v0) / a + (vc - v1) / a + (l - ramps) / vc;
+}
+
+/**
+ * Where the first side (from rest, accelerating to 8.33 mm/s in 0.833 s over
+ * 3.47 mm, cruising until it slows for the corner at 2.4 s) is at t seconds,
+ * mm: s = ½at², then s_a + v·(t − t_a).
+ */
+function firstSideMm(t: number): number {
+  const ta = TOP / A;
+  return t <= ta ? 0.5 * A * t * t : 0.5 * A * ta * ta + TOP * (t - ta);
+}
+
+function counterStep(text: string): number {
+  return Number(/^Step (\d+) of/.exec(text)![1]);
+}
+
+async function loaded(page: Page, steps: number): Promise<void> {
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${steps}$`) }).waitFor();
+}
+
+describe('G-code mode: time', () => {
+  it("shows the total time worked from Grbl's formulas, the current step's instant, the charts, and exports the VCD", async () => {
+    const p = await openPage('?mode=gcode&stepsPerMm=80');
+    const { page } = p;
+    await loaded(page, 6400);
+    const total = side(20, 0, CORNER, TOP, A) + 2 * side(20, CORNER, CORNER, TOP, A) + side(20, CORNER, 0, TOP, A);
+    await expect.poll(() => page.getByTestId('total-time').innerText()).toContain(`${total.toFixed(3)} s for 6,400 steps`);
+    // The whole program in view: four trapezoids, drawn by their corners.
+    const motion = page.getByTestId('motion');
+    await expect.poll(() => motion.locator('canvas').count()).toBe(2);
+    expect(await motion.locator('.u-title').first().innerText()).toMatch(/each block its trapezoid/);
+    await page.getByTestId('timing').getByText(/planned instant, ms/).waitFor();
+
+    // Step 800 of the first side: 10 mm in, cruising: t = t_a + (10 − s_a)/v.
+    await page.getByTestId('jump-input').fill('800');
+    await page.getByTestId('jump-input').press('Enter');
+    const at800 = TOP / A + (10 - (0.5 * TOP * TOP) / A) / TOP;
+    await expect.poll(async () => Number(await page.getByTestId('step-instant').getAttribute('data-seconds'))).toBeCloseTo(at800, 9);
+    const charts = await screenshot(page, 'gcode-time-charts', '[data-testid=motion]');
+    expect(charts.differingFraction).toBeGreaterThan(0.05);
+
+    // A window of 1 s with the step a third of the way in: inside the first side's trapezoid.
+    await page.getByTestId('motion-window').selectOption({ label: '1 s around the current step' });
+    await expect.poll(() => motion.locator('.u-title').first().innerText()).toContain(`${(at800 - 1 / 3).toFixed(3)} s to ${(at800 + 2 / 3).toFixed(3)} s (each block its trapezoid`);
+
+    const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('export-vcd').click()]);
+    const vcd = readFileSync((await download.path())!, 'utf8');
+    const id = /\$var wire 1 (\S+) x_step \$end/.exec(vcd)![1]!;
+    // X moves 1600 steps out and 1600 back: a rising edge each.
+    expect(vcd.split('\n').filter((line) => line === `1${id}`).length).toBe(3200);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('plays in machine time: the step shown is the one the machine has reached by the clock, at the planned instants', async () => {
+    const p = await openPage('?mode=gcode&stepsPerMm=80&slowdown=1');
+    const { page } = p;
+    await loaded(page, 6400);
+    expect(await page.getByTestId('slowdown').inputValue()).toBe('1');
+    await page.getByTestId('machine-time').filter({ hasText: 'the program takes' }).waitFor();
+    const started = Date.now();
+    await page.getByTestId('play').click();
+    // Step and clock read in one task, as the page sets them together.
+    const read = () =>
+      page.evaluate(() => ({
+        counter: document.querySelector<HTMLOutputElement>('[data-testid=step-counter]')!.value,
+        seconds: document.querySelector<HTMLOutputElement>('[data-testid=machine-time]')!.dataset.seconds,
+      }));
+    const samples: { step: number; seconds: number }[] = [];
+    // Until the clock is 1.2 s in (the first side runs until 2.4 s before it slows for the corner).
+    while (Date.now() - started < 15_000 && (samples.at(-1)?.seconds ?? 0) < 1.2) {
+      const { counter, seconds } = await read();
+      if (seconds !== undefined) samples.push({ step: counterStep(counter), seconds: Number(seconds) });
+      await page.waitForTimeout(50);
+    }
+    await page.getByTestId('play').click();
+    const elapsed = (Date.now() - started) / 1000;
+    const last = samples.at(-1)!.seconds;
+    expect(last).toBeGreaterThanOrEqual(1.2);
+    expect(last).toBeLessThan(2.4);
+    for (const { step, seconds } of samples) {
+      // Step k (0-based) of the side at (k + 1)/80 mm: by t, ⌊80·s(t)⌋ steps.
+      const expected = 80 * firstSideMm(seconds);
+      expect(step, `at ${seconds} s`).toBeGreaterThanOrEqual(Math.floor(expected - 1e-6));
+      expect(step, `at ${seconds} s`).toBeLessThanOrEqual(Math.floor(expected + 1e-6));
+    }
+    // Real time, never ahead of it: the clock ran at most as long as the playback did.
+    expect(last).toBeLessThanOrEqual(elapsed);
+    expect(new Set(samples.map((s) => s.step)).size).toBeGreaterThan(3);
+    // Some while it accelerates, where steps come ever faster (s = ½at²), not one per tick.
+    expect(samples.some((s) => s.seconds < TOP / A && s.step > 0)).toBe(true);
+    // Ten times slower: the clock is kept in the link.
+    await page.getByTestId('slowdown').selectOption('10');
+    await page.waitForURL(/slowdown=10/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('shows the speed profile and the timed STEP/DIR diagram for every sample program', { timeout: 180_000 }, async () => {
+    const samples = JSON.parse(readFileSync(new URL('../../public/samples/index.json', import.meta.url), 'utf8')) as { file: string }[];
+    const p = await openPage('?mode=gcode&stepsPerMm=80');
+    const { page } = p;
+    await loaded(page, 6400);
+    for (const { file } of samples) {
+      await page.getByTestId('sample').selectOption(file);
+      const status = page.getByTestId('trace-status').filter({ hasText: /moves, \d+ steps/ });
+      await status.waitFor();
+      const steps = Number(/moves, (\d+) steps/.exec(await status.innerText())![1]);
+      expect(steps, file).toBeGreaterThan(0);
+      await loaded(page, steps);
+      const motion = page.getByTestId('motion');
+      await expect.poll(() => motion.locator('canvas').count(), { message: file }).toBe(2);
+      expect(await page.getByTestId('total-time').innerText()).toMatch(/^Total time on the planned profile: \d+\.\d{3} s/);
+      await page.getByTestId('timing').getByText(/planned instant, (ms|µs)/).waitFor();
+      const name = file.replace('.gcode', '');
+      const speed = await screenshot(page, `time-${name}-speed`, '[data-testid=motion] .chart');
+      expect(speed.differingFraction, file).toBeGreaterThan(0.03);
+      const timing = await screenshot(page, `time-${name}-timing`, '[data-testid=timing]');
+      expect(timing.differingFraction, file).toBeGreaterThan(0.02);
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+describe('trace mode: the speed per step under two clocks', () => {
+  it("charts a line's speed at one tick a step beside a constant feed, citing the 2009 blog, and none for a circle", async () => {
+    // Bresenham from (0,0) to (8,3): 8 steps, 3 of them diagonal.
+    const p = await openPage('?algorithm=bresenham2d&from=0,0&to=8,3');
+    const { page } = p;
+    await loaded(page, 8);
+    const chart = page.getByTestId('step-clocks');
+    await chart.locator('canvas').waitFor();
+    expect(await chart.locator('figcaption').innerText()).toContain('“This means the speed would not be constant if I applied this algorithm directly.”');
+    // 5 + 3√2 ticks at 1 cell a tick.
+    expect(await chart.locator('.u-title').innerText()).toContain(`takes 8 ticks) or a constant feed (${(5 + 3 * Math.SQRT2).toFixed(2)} ticks)`);
+    const shot = await screenshot(page, 'trace-step-clocks', '[data-testid=step-clocks]');
+    expect(shot.differingFraction).toBeGreaterThan(0.05);
+    await page.getByTestId('algorithm').selectOption('circle');
+    await page.getByTestId('trace-status').filter({ hasText: 'circle' }).waitFor();
+    await expect.poll(() => chart.isHidden()).toBe(true);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
