@@ -8,7 +8,7 @@
  * long path, where the deviation chart shows each bucket's range as a band.
  */
 import type uPlot from 'uplot';
-import type { ChartSeries, DeviationBound } from '../core/types.js';
+import type { ChartSeries, TraceSummary } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import { afterNextFrame } from '../main-thread.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
@@ -17,10 +17,8 @@ import { StepChart } from './chart.js';
 /** Rows the charts ask for: about one per pixel of a wide chart. */
 export const CHART_POINTS = 2000;
 
-export interface ChartedTrace {
-  dims: number;
-  metrics: { maxDeviation: number };
-  deviationBound: DeviationBound | null;
+export interface ChartedTrace extends Pick<TraceSummary, 'dims' | 'deviationBound'> {
+  metrics: Pick<TraceSummary['metrics'], 'maxDeviation'>;
   series(maxPoints: number): Promise<ChartSeries>;
 }
 

@@ -14,7 +14,7 @@
  */
 import type uPlot from 'uplot';
 import { StepChart } from '../charts/chart.js';
-import type { MotionChart } from '../core/index.js';
+import type { GcodeProgramInfo, MotionChart } from '../core/index.js';
 import { AXIS_NAMES } from '../format.js';
 import { afterNextFrame } from '../main-thread.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
@@ -22,7 +22,7 @@ import { formatSeconds } from './time-format.js';
 
 /** What the charts need of a program the worker holds (a RemoteProgram). */
 export interface TimedProgram {
-  readonly program: { durationSeconds: number; pulses: number[]; steps: number };
+  readonly program: Pick<GcodeProgramInfo, 'durationSeconds' | 'pulses' | 'steps'>;
   motionChart(fromSeconds: number, toSeconds: number, buckets: number): Promise<MotionChart>;
   secondsAtPoint(pointIndex: number): Promise<number>;
   pointAtSeconds(seconds: number): Promise<number>;
