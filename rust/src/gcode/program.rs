@@ -57,7 +57,7 @@ pub const STEPS_PER_MM: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
-    doc: "Steps per mm: one number for every axis or [x, y, z]. Or give stepAngle, microsteps and pitch.",
+    doc: "Steps per mm: one number for every axis, or one per axis as x,y,z (80,80,400). Or give stepAngle, microsteps and pitch.",
 };
 
 pub const STEP_ANGLE: OptionSpec = OptionSpec {
@@ -65,7 +65,7 @@ pub const STEP_ANGLE: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
-    doc: "Motor step angle θ, degrees (one or [x, y, z]): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
+    doc: "Motor step angle θ, degrees (one, or x,y,z): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
 };
 
 pub const MICROSTEPS: OptionSpec = OptionSpec {
@@ -73,7 +73,7 @@ pub const MICROSTEPS: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: true },
     required: false,
     default: None,
-    doc: "Microsteps s per full step (one or [x, y, z]).",
+    doc: "Microsteps s per full step (one, or x,y,z).",
 };
 
 pub const PITCH: OptionSpec = OptionSpec {
@@ -81,7 +81,7 @@ pub const PITCH: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
-    doc: "Lead-screw pitch P, mm per turn (one or [x, y, z]): one step is L = P / p_m mm.",
+    doc: "Lead-screw pitch P, mm per turn (one, or x,y,z): one step is L = P / p_m mm.",
 };
 
 pub const PROGRAM_LINE_ALGORITHM: OptionSpec = OptionSpec {
