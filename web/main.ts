@@ -15,6 +15,7 @@ import { PathCharts } from './charts/path-charts.js';
 import { download } from './export.js';
 import { AlgorithmInputs } from './form/algorithm-inputs.js';
 import { OptionsForm } from './form/options-form.js';
+import { diagnosticText } from './form/page-advice.js';
 import { formatPoint } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
@@ -375,7 +376,7 @@ function run(catalogue: Catalogue): void {
         const p = next.program.program;
         status.textContent =
           `${p.lines} lines, ${p.moveCount} moves, ${p.steps} steps at ${p.stepsPerMm.join(' / ')} steps/mm` +
-          `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${p.errors[0]!.message}` : ''}` +
+          `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${diagnosticText(p.errors[0]!)}` : ''}` +
           `${p.warnings.length ? `; ${p.warnings.length + p.warningsOmitted} warnings` : ''}.`;
       } else {
         status.textContent = [next.a, next.b].filter((t) => t !== undefined).map(statusOf).join(' ');

@@ -30,7 +30,7 @@ pub mod request;
 pub mod trace;
 pub mod wasm;
 
-pub use error::Error;
+pub use error::{Error, Limit};
 pub use grid::{Point, Step};
 pub use request::Request;
 pub use trace::{Trace, TraceBuilder};

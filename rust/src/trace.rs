@@ -12,7 +12,7 @@
 //! Index spaces: a *step index* k (0..steps) names the step from point k to
 //! point k + 1; a *point index* k (0..=steps) names the position after k steps.
 
-use crate::error::Error;
+use crate::error::{Error, Limit};
 use crate::grid::{MAX_AXES, Point, Step, displacement};
 use crate::ideal::{IdealPath, IdealPathInfo, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
@@ -30,6 +30,17 @@ pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
 
 /// Hard limit on `maxSteps`: 2 bytes per step must fit in wasm32 memory.
 pub const MAX_STEPS_LIMIT: u64 = 1_000_000_000;
+
+/// What to do about a path or program that needs `at_least` steps, more than
+/// maxSteps allows: raise maxSteps when that can be enough, else shorten
+/// `what` (no maxSteps allows more than [`MAX_STEPS_LIMIT`]).
+pub fn too_long_advice(at_least: u64, what: &str) -> String {
+    if at_least > MAX_STEPS_LIMIT {
+        format!("that is more than any maxSteps allows ({MAX_STEPS_LIMIT}): shorten {what}")
+    } else {
+        format!("raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten {what}")
+    }
+}
 
 /// What a decision does when its discriminant is exactly zero, i.e. when the
 /// ideal path passes exactly half way between the two candidate cells.
@@ -466,10 +477,17 @@ impl TraceBuilder {
         Error::field(
             "maxSteps",
             format!(
-                "the path needs more than {} steps (at least {steps}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten the move",
-                self.max_steps
+                "the path needs more than {} steps (at least {steps}); {}",
+                self.max_steps,
+                too_long_advice(steps, "the move")
             ),
         )
+        .with_limit(Limit {
+            option: "maxSteps".into(),
+            value: self.max_steps,
+            at_least: steps,
+            most: MAX_STEPS_LIMIT,
+        })
     }
 
     /// Appends a finished trace that starts where this one ends (a chord of

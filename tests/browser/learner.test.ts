@@ -44,3 +44,40 @@ describe('steps per mm per axis', () => {
     await p.close();
   });
 });
+
+describe('messages about a cap', () => {
+  it('say what to do on the page, not raise a maxSteps it has no control for', async () => {
+    // A line to x = 2^30 takes 2^30 steps (regions: one per unit of the
+    // longest axis): more than the page's 1,500,000 and than any maxSteps (10^9).
+    const p = await openPage('?from=0,0,0&to=1073741824,0,0');
+    const { page } = p;
+    const formError = page.getByTestId('form-error');
+    await formError.filter({ hasText: 'steps' }).waitFor();
+    const far = await formError.innerText();
+    expect(far).toMatch(/^This path needs at least 1,073,741,824 steps; the page draws at most 1,500,000 \(its maxSteps, fixed\)\. Shorten the move/);
+    expect(far).toContain('No trace may have that many steps (1,000,000,000 at most, anywhere).');
+    expect(far).not.toMatch(/raise/i);
+
+    // 2,000,000 steps: the command line could, and the message says how.
+    await page.getByTestId('input-to-x').fill('2000000');
+    await formError.filter({ hasText: '2,000,000' }).waitFor();
+    expect(await formError.innerText()).toContain('The command line goes up to 1,000,000,000 steps: voxpath trace --max-steps 2000000.');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("word a program's cap at its line, where the program is edited", async () => {
+    // 700,000 mm at 80 steps/mm is 56,000,000 steps, past the 50,000,000 the page runs.
+    const gcode = encodeURIComponent('G21 G90\nG1 X700000 F600\n');
+    const p = await openPage(`?mode=gcode&gcode=${gcode}&stepsPerMm=80`);
+    const { page } = p;
+    const diagnostics = page.getByTestId('gcode-diagnostics');
+    await diagnostics.filter({ hasText: 'line 2' }).waitFor();
+    const message = await diagnostics.innerText();
+    expect(message).toContain('By line 2 the program needs at least 56,000,000 steps; the page runs at most 50,000,000 (its maxSteps, fixed). Lower stepsPerMm under Machine, or shorten the moves.');
+    expect(message).toContain('voxpath gcode --max-steps 56000000');
+    expect(message).not.toMatch(/raise/i);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

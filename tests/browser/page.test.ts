@@ -131,7 +131,7 @@ describe('the page', () => {
     await page.getByTestId('input-to-x').fill('2000000');
     const formError = page.getByTestId('form-error');
     await formError.filter({ hasText: 'maxSteps' }).waitFor();
-    expect(await formError.innerText()).toMatch(/^maxSteps: this page sets it to 1,500,000, so shorten the move \(the CLI and the API take more\)\. The core says: the path needs more than 1500000 steps/);
+    expect(await formError.innerText()).toMatch(/^This path needs at least 2,000,000 steps; the page draws at most 1,500,000 \(its maxSteps, fixed\)\./);
 
     await page.getByTestId('input-to-x').fill('12');
     await traced(page, 12);

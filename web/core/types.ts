@@ -30,6 +30,7 @@ export type {
   DeviationBound,
   Example,
   Family,
+  Limit,
   Metrics,
   OptionKind,
   OptionSpec,

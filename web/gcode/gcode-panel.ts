@@ -17,6 +17,7 @@
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
+import { diagnosticText } from '../form/page-advice.js';
 import { formatPoint } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
@@ -283,7 +284,7 @@ export class GcodePanel {
     const item = (kind: string, d: GcodeDiagnostic) => {
       const go = element('button', { type: 'button', className: 'link', textContent: `line ${d.line}:${d.column}` });
       go.addEventListener('click', () => this.#goToLine(d.line));
-      return element('li', { className: kind }, element('span', { textContent: `${kind} ` }), go, ` ${d.message}`);
+      return element('li', { className: kind }, element('span', { textContent: `${kind} ` }), go, ` ${diagnosticText(d)}`);
     };
     list.append(...program.program.errors.map((d) => item('error', d)), ...program.program.warnings.map((d) => item('warning', d)));
     if (program.program.warningsOmitted > 0) list.append(element('li', { textContent: `and ${program.program.warningsOmitted} more warnings` }));

@@ -28,10 +28,12 @@ import type {
 export class InputRejected extends Error implements InputError {
   override readonly name = 'InputRejected';
   readonly field?: string;
+  readonly limit?: InputError['limit'];
 
   constructor(error: InputError) {
     super(error.message);
     this.field = error.field;
+    this.limit = error.limit;
   }
 }
 

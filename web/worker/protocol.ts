@@ -15,7 +15,7 @@
  * - series: see ChartSeries; cells: Int32Array, stride dims.
  */
 import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, DecisionColumns, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, DecisionColumns, Limit, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -125,10 +125,11 @@ export interface ReplyValue {
   free: null;
 }
 
-/** An input the core rejected; `field` names the option at fault (as in VoxpathError). */
+/** An input the core rejected; `field` names the option at fault and `limit` the cap it ran into (as in VoxpathError). */
 export interface InputError {
   field?: string;
   message: string;
+  limit?: Limit;
 }
 
 export type RequestMessage = { id: number; request: WorkerRequest } | { id: number; cancel: true };

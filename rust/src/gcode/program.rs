@@ -35,12 +35,12 @@ use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, radii_within_tolerance};
-use crate::error::{Error, Location};
+use crate::error::{Error, Limit, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::machine::{MACHINE_AXES, Machine};
 use crate::planner::{self, Limits, Planner, Timing};
 use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
-use crate::trace::{MAX_STEPS_LIMIT, Trace, TraceBuilder};
+use crate::trace::{MAX_STEPS_LIMIT, Trace, TraceBuilder, too_long_advice};
 use serde::Serialize;
 use tsify::Tsify;
 use serde_json::{Map, Value};
@@ -221,6 +221,10 @@ pub struct Diagnostic {
     pub line: u32,
     pub column: u32,
     pub message: String,
+    /// The cap the program ran into, when that is what stopped it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub limit: Option<Limit>,
 }
 
 impl Diagnostic {
@@ -229,6 +233,7 @@ impl Diagnostic {
             line,
             column: problem.column,
             message: problem.message.clone(),
+            limit: None,
         }
     }
 
@@ -240,6 +245,7 @@ impl Diagnostic {
             line,
             column,
             message: error.message,
+            limit: error.limit,
         }
     }
 }
@@ -529,14 +535,25 @@ impl Runner {
         note: &str,
     ) -> Result<(u64, usize), Error> {
         let place = |e: Error| match e.field_name() {
-            Some("maxSteps") => Error::at(
-                m.line,
-                m.column,
-                format!(
-                    "the program needs more than maxSteps = {} steps by this move; raise maxSteps (up to {MAX_STEPS_LIMIT})",
-                    self.settings.max_steps
-                ),
-            ),
+            Some("maxSteps") => {
+                // The whole program needs the steps before this move and at least the move's.
+                let at_least = self.steps + e.limit.as_ref().map_or(1, |l| l.at_least);
+                Error::at(
+                    m.line,
+                    m.column,
+                    format!(
+                        "the program needs more than maxSteps = {} steps by this move (at least {at_least}); {}",
+                        self.settings.max_steps,
+                        too_long_advice(at_least, "the program or lower its steps per mm")
+                    ),
+                )
+                .with_limit(Limit {
+                    option: "maxSteps".into(),
+                    value: self.settings.max_steps,
+                    at_least,
+                    most: MAX_STEPS_LIMIT,
+                })
+            }
             Some(field) => Error::at(m.line, m.column, format!("{field}: {}", e.message)),
             None => e,
         };
@@ -824,6 +841,7 @@ impl Runner {
                 line,
                 column,
                 message: timing::step_rate_message(axis, needed, max),
+                limit: None,
             });
         }
         let trace = self.builder.finish(&format!(
