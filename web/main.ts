@@ -30,6 +30,7 @@ import { type AppState, type Catalogue, MODES, type Mode, randomLinesExperiment,
 import { nextTask } from './main-thread.js';
 import { loadState, persistState } from './state/persist.js';
 import { Store } from './state/store.js';
+import { StepReason } from './timeline/step-reason.js';
 import { Timeline, handlesItsOwnKeys } from './timeline/timeline.js';
 import { Cancelled, CoreCrash, InputRejected, type RemoteProgram, type RemoteTrace, type Running, TraceClient } from './worker/client.js';
 import type { TraceDifference } from './worker/protocol.js';
@@ -183,6 +184,7 @@ function run(catalogue: Catalogue): void {
     },
     store,
   );
+  const stepReason = new StepReason(byId('step-reason', HTMLParagraphElement));
   /** The decision the inspector shows: the view's decision overlay is drawn from the same values. */
   let decision: { trace: RemoteTrace; pointIndex: number; row: DecisionRow | undefined } | undefined;
   /** The shown decision in the view, when asked for and its step has an overlay. */
@@ -295,6 +297,7 @@ function run(catalogue: Catalogue): void {
     scene.setHandles(handles());
     decision = undefined;
     inspector.setTrace(main, Math.min(pointIndex, main?.steps ?? 0));
+    stepReason.setTraces(state.mode === 'compare' ? [a, b] : [main], pointIndex);
     void charts.setTrace(main);
     comparePanel.show(a, b, difference);
     gcodePanel.setProgram(program);
@@ -468,6 +471,7 @@ function run(catalogue: Catalogue): void {
       scene.showPoint(Math.min(k, main?.steps ?? 0));
       sceneB?.showPoint(Math.min(k, shown.b?.steps ?? 0));
       if (main) inspector.show(Math.min(k, main.steps));
+      stepReason.show(k);
       charts.showPoint(k);
       timing.showPoint(k);
       if (shown.program) void gcodePanel.showPoint(k);
