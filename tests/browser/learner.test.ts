@@ -5,8 +5,10 @@
 // (Wang et al. 2020, section 2), so a G-code move of (dx, dy, dz) steps takes
 // max(|dx|, |dy|, |dz|) of them.
 import type { Page } from 'playwright-core';
+import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
-import { closeAll, openPage } from './harness.js';
+import { PALETTE } from '../../web/scene/palette.js';
+import { closeAll, openPage, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -19,6 +21,96 @@ async function status(page: Page, wanted: string | RegExp): Promise<string> {
   await page.getByTestId('trace-status').filter({ hasText: wanted }).waitFor();
   return text(page, 'trace-status');
 }
+
+/** The view's canvas alone (no HTML labels), as the PNG export writes it. */
+async function canvasPng(page: Page): Promise<PNG> {
+  const downloading = page.waitForEvent('download');
+  await page.getByTestId('export-png').click();
+  const download = await downloading;
+  const chunks: Buffer[] = [];
+  for await (const chunk of await download.createReadStream()) chunks.push(chunk as Buffer);
+  return PNG.sync.read(Buffer.concat(chunks));
+}
+
+/** The box around the pixels within `tolerance` per channel of the colour `hex`, or undefined when there are none. */
+function colourBox(png: PNG, hex: string, tolerance: number): { left: number; top: number; right: number; bottom: number; count: number } | undefined {
+  const rgb = [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+  let box: { left: number; top: number; right: number; bottom: number; count: number } | undefined;
+  for (let y = 0; y < png.height; y++) {
+    for (let x = 0; x < png.width; x++) {
+      const i = (y * png.width + x) * 4;
+      if (rgb.some((v, c) => Math.abs(png.data[i + c]! - v) > tolerance)) continue;
+      box ??= { left: x, top: y, right: x, bottom: y, count: 0 };
+      box.left = Math.min(box.left, x);
+      box.right = Math.max(box.right, x);
+      box.top = Math.min(box.top, y);
+      box.bottom = Math.max(box.bottom, y);
+      box.count++;
+    }
+  }
+  return box;
+}
+
+/** Pairs of the view's tick and axis labels whose boxes overlap, by their text. */
+async function overlappingLabels(page: Page): Promise<string[]> {
+  return page.evaluate(() => {
+    const labels = [...document.querySelectorAll<HTMLElement>('#viewport .scene-label.tick, #viewport .scene-label.axis-name')].filter((e) => e.offsetParent !== null);
+    const boxes = labels.map((e) => ({ text: e.textContent ?? '', box: e.getBoundingClientRect() }));
+    const overlaps: string[] = [];
+    boxes.forEach((a, i) => {
+      for (const b of boxes.slice(i + 1)) {
+        // A pixel of slack: glyph boxes touch where the text does not.
+        if (a.box.left + 1 < b.box.right && b.box.left + 1 < a.box.right && a.box.top + 1 < b.box.bottom && b.box.top + 1 < a.box.bottom) overlaps.push(`${a.text} / ${b.text}`);
+      }
+    });
+    return overlaps;
+  });
+}
+
+describe('G-code mode', () => {
+  it('opens on a visible path: over a grid that reaches past it, framed, its axes in mm with steps beside', async () => {
+    // The square sample: 20 mm sides at 80 steps/mm, 1600 steps each.
+    const p = await openPage('?mode=gcode');
+    const { page } = p;
+    await status(page, '6400 steps at 80 / 80 / 80 steps/mm');
+    await page.getByTestId('step-counter').filter({ hasText: 'of 6400' }).waitFor();
+    const ticks = await page.locator('#viewport .scene-label.tick').allInnerTexts();
+    expect(ticks).toContain('20 mm1600');
+    expect(ticks).toContain('10 mm800');
+    expect(await overlappingLabels(page)).toEqual([]);
+
+    const png = await canvasPng(page);
+    // The ideal path is the square; the grid must show around it on every side, not end on it.
+    const path = colourBox(png, PALETTE.ideal, 16)!;
+    const grid = colourBox(png, PALETTE.grid, 3)!;
+    expect(path.count).toBeGreaterThan(500);
+    for (const [side, beyond] of [
+      ['left', path.left - grid.left],
+      ['top', path.top - grid.top],
+      ['right', grid.right - path.right],
+      ['bottom', grid.bottom - path.bottom],
+    ] as const) {
+      expect(beyond, `grid past the path on the ${side}`).toBeGreaterThan(4);
+    }
+    // Framed: the square spans most of the view's width.
+    expect((path.right - path.left) / png.width).toBeGreaterThan(0.55);
+    await screenshot(page, 'gcode-opens');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+describe('the view of a long path', () => {
+  it('keeps its axis names clear of the last ticks', async () => {
+    const p = await openPage('?from=0,0,0&to=300,170,90');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'of 300' }).waitFor();
+    await expect.poll(() => page.locator('#viewport .scene-label.tick').count()).toBeGreaterThan(10);
+    expect(await overlappingLabels(page)).toEqual([]);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
 
 describe('steps per mm per axis', () => {
   it('are typed and linked as the CLI takes them, 80,80,400', async () => {

@@ -76,6 +76,8 @@ export interface DrawnTrace {
   end: number[];
   points: Int32Array;
   idealPolyline: Float64Array;
+  /** Per axis, when the grid is a machine's (a G-code program): its axes are labelled in mm. */
+  stepsPerMm?: readonly number[];
 }
 
 /** Cells to pick out, flat with stride dims, in one colour. */
@@ -295,7 +297,7 @@ export class SceneView {
     const drawn: Drawn = {
       voxels: new VoxelPath(trace.points, trace.dims, bounds),
       ideal: new IdealPath(trace.idealPolyline, trace.dims),
-      axes: new GridAxes(min, max, trace.dims === 2 ? 2 : 3),
+      axes: new GridAxes(min, max, trace.dims === 2 ? 2 : 3, trace.stepsPerMm),
       bounds,
       planeNormal,
     };

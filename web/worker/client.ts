@@ -289,6 +289,11 @@ export class RemoteProgram extends RemoteTrace {
     this.program = run.program;
   }
 
+  /** The machine's steps per mm on each axis, which the view labels its axes with. */
+  get stepsPerMm(): number[] {
+    return this.program.stepsPerMm;
+  }
+
   /** Moves fromMove..toMove of the program, in step order. */
   moves(fromMove: number, toMove: number): Promise<GcodeMove[]> {
     return this.ask({ kind: 'moves', traceId: this.traceId, fromMove, toMove });
