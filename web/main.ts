@@ -269,7 +269,7 @@ function run(catalogue: Catalogue): void {
     scene.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
     if (state.mode === 'compare' && !side) scene.setSecond(b);
     if (side) {
-      sceneB ??= new SceneView(byId('viewport-b', HTMLDivElement), events, 'second path view');
+      sceneB ??= new SceneView(byId('viewport-b', HTMLDivElement), events, 'second path view', PALETTE.second);
       sceneB.setTrace(b, Math.min(pointIndex, b?.steps ?? 0), state.projection, state.camera);
     } else {
       sceneB?.setTrace(undefined, 0, state.projection, null);

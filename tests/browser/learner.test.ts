@@ -173,3 +173,72 @@ describe('messages about a cap', () => {
     await p.close();
   });
 });
+
+/** Hue (degrees), saturation and value (0..1) of an RGB colour. */
+function hsv(r: number, g: number, b: number): [number, number, number] {
+  const max = Math.max(r, g, b);
+  const min = Math.min(r, g, b);
+  const d = max - min;
+  const h = d === 0 ? 0 : max === r ? ((g - b) / d + 6) % 6 : max === g ? (b - r) / d + 2 : (r - g) / d + 4;
+  return [h * 60, max === 0 ? 0 : d / max, max / 255];
+}
+
+/**
+ * Pixels of `png` drawn in `rgb` as the view shades it: a cell's faces are
+ * the colour times a light factor (0.62 to 1), which keeps its hue and
+ * saturation and lowers its value; an outline is the colour itself.
+ */
+function pixelsShadedAs(png: PNG, [r, g, b]: readonly number[]): number {
+  const [h0, s0, v0] = hsv(r!, g!, b!);
+  let count = 0;
+  for (let i = 0; i < png.data.length; i += 4) {
+    const [h, s, v] = hsv(png.data[i]!, png.data[i + 1]!, png.data[i + 2]!);
+    const dh = Math.min(Math.abs(h - h0), 360 - Math.abs(h - h0));
+    if (dh < 10 && Math.abs(s - s0) < 0.25 && v <= v0 + 0.06 && v >= 0.45 * v0) count++;
+  }
+  return count;
+}
+
+/** The colour of a legend swatch as drawn: its middle pixel, or its border's (a highlight's swatch is outlined in its colour). */
+async function swatchColour(page: Page, selector: string, where: 'middle' | 'border'): Promise<number[]> {
+  const png = PNG.sync.read(await page.locator(`${selector}:visible`).screenshot());
+  const x = where === 'middle' ? png.width >> 1 : 0;
+  const i = ((png.height >> 1) * png.width + x) * 4;
+  return [png.data[i]!, png.data[i + 1]!, png.data[i + 2]!];
+}
+
+describe('compare mode', () => {
+  it("draws each path and each path's own cells in its legend colour, overlaid and side by side", async () => {
+    // regions and greedy on (0,0,0)->(10,7,6) share only a few cells: 8 are
+    // regions' alone and 21 greedy's (greedy's 23 steps wander from the line).
+    const p = await openPage('?mode=compare&algorithm=regions&other=greedy&layout=overlay&from=0,0,0&to=10,7,6&step=23');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 23 of 23' }).waitFor();
+    await page.getByTestId('first-difference').waitFor();
+    const legend = {
+      first: await swatchColour(page, '.swatch-visited', 'middle'),
+      second: await swatchColour(page, '.swatch-second', 'middle'),
+      onlyFirst: await swatchColour(page, '.swatch-only-first', 'border'),
+      onlySecond: await swatchColour(page, '.swatch-only-second', 'border'),
+    };
+    const overlay = await canvasPng(page);
+    for (const [name, colour] of Object.entries(legend)) {
+      expect(pixelsShadedAs(overlay, colour), `overlaid: ${name} ${colour.join(',')}`).toBeGreaterThan(150);
+    }
+
+    await page.getByTestId('layout-side').check();
+    await expect.poll(() => page.locator('#viewport-b canvas').isVisible()).toBe(true);
+    await page.waitForTimeout(500);
+    const left = await canvasPng(page);
+    const right = PNG.sync.read(await page.locator('#viewport-b canvas').screenshot());
+    expect(pixelsShadedAs(left, legend.first), 'left: first').toBeGreaterThan(150);
+    expect(pixelsShadedAs(left, legend.onlyFirst), 'left: only first').toBeGreaterThan(150);
+    expect(pixelsShadedAs(right, legend.second), 'right: second').toBeGreaterThan(150);
+    expect(pixelsShadedAs(right, legend.onlySecond), 'right: only second').toBeGreaterThan(150);
+    // The right view is the second path's: none of the first's colour.
+    expect(pixelsShadedAs(right, legend.first), 'right: first').toBeLessThan(20);
+    await screenshot(page, 'compare-side-colours');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -43,7 +43,10 @@ const FRAME_MARGIN_SHARE = 0.08;
 const KEY_ZOOM_FACTOR = 1.15;
 /** Edge of a highlighted cell: larger than a path's cell, so it shows around it. */
 const HIGHLIGHT_SIZE = 1.06;
-/** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it. */
+/** A highlighted cube's fill: faint, so the cells inside show; its outline carries the colour. Points (a long path) have no outline: opaque. */
+const HIGHLIGHT_FILL_OPACITY = 0.1;
+const HIGHLIGHT_POINT_OPACITY = 0.9;
+/** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it (they are drawn over it). */
 const SECOND_PATH_SIZE = 0.5;
 
 /** Whether WebGL draws on the CPU, found once per page by softwareRenderer(). */
@@ -153,9 +156,13 @@ export class SceneView {
   /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
   readonly #warm = new THREE.Group();
 
+  /** The colour of the path's visited cells: the second path's in the right view side by side. */
+  readonly #visitedColour: string;
+
   /** Fills `container` (a positioned element) with the canvas and its label layer. */
-  constructor(container: HTMLElement, callbacks: SceneCallbacks, label = 'path view') {
+  constructor(container: HTMLElement, callbacks: SceneCallbacks, label = 'path view', visitedColour: string = PALETTE.visited) {
     this.#container = container;
+    this.#visitedColour = visitedColour;
     this.#callbacks = callbacks;
     this.#renderer = new THREE.WebGLRenderer({ antialias: !softwareRenderer(), preserveDrawingBuffer: false });
     this.#renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
@@ -236,8 +243,9 @@ export class SceneView {
       new IdealPath(new Float64Array([0, 0, 0, 1, 0, 0]), 3),
       new IdealPath(longLine, 3),
       new GridAxes(new THREE.Vector3(0, 0, 0), new THREE.Vector3(1, 1, 1), 3),
-      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, false, box),
-      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, true, box),
+      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: HIGHLIGHT_FILL_OPACITY, outline: true }, false, box),
+      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: HIGHLIGHT_POINT_OPACITY }, true, box),
+      new VoxelPath(short, 3, box, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE, onTop: true }),
     );
     // The real scene's lights, so the lit materials get the programs the real frames use.
     this.#renderer.compile(this.#warm, this.#perspective, this.#scene);
@@ -295,7 +303,7 @@ export class SceneView {
     const planeNormal = trace.dims === 2 ? 2 : flat.length > 0 ? flat[flat.length - 1] : undefined;
     const bounds = new THREE.Box3(min.clone().subScalar(0.5), max.clone().addScalar(0.5));
     const drawn: Drawn = {
-      voxels: new VoxelPath(trace.points, trace.dims, bounds),
+      voxels: new VoxelPath(trace.points, trace.dims, bounds, { visited: this.#visitedColour }),
       ideal: new IdealPath(trace.idealPolyline, trace.dims),
       axes: new GridAxes(min, max, trace.dims === 2 ? 2 : 3, trace.stepsPerMm),
       bounds,
@@ -384,7 +392,7 @@ export class SceneView {
     if (trace) {
       const { min, max } = pointBounds(trace.points, trace.dims);
       const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
-      this.#second = new VoxelPath(trace.points, trace.dims, bounds, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE });
+      this.#second = new VoxelPath(trace.points, trace.dims, bounds, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE, onTop: true });
       this.#scene.add(this.#second);
       this.#second.show(Math.min(this.#pointIndex, this.#second.steps));
     }
@@ -403,7 +411,9 @@ export class SceneView {
         const { min, max } = pointBounds(h.cells, h.dims);
         const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
         const count = h.cells.length / h.dims;
-        const cells = new Cells(h.cells, h.dims, { colour: h.colour, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, (this.#drawn?.voxels.light ?? false), bounds);
+        const light = this.#drawn?.voxels.light ?? false;
+        const style = light ? { opacity: HIGHLIGHT_POINT_OPACITY } : { opacity: HIGHLIGHT_FILL_OPACITY, outline: true };
+        const cells = new Cells(h.cells, h.dims, { colour: h.colour, cellSize: HIGHLIGHT_SIZE, ...style }, light, bounds);
         cells.setRange(0, count);
         this.#scene.add(cells);
         return cells;

@@ -52,6 +52,8 @@ export interface PathStyle {
   visited: string;
   /** Edge of visited and ahead cells, grid units. */
   cellSize?: number;
+  /** Cells drawn over what is drawn before them (CellStyle.onTop): the second path of an overlaid comparison. */
+  onTop?: boolean;
 }
 
 /** Cubes for cells first..first + count - 1 of a path: visited from the start, ahead reversed. */
@@ -66,8 +68,9 @@ class CubeRun {
     this.count = count;
     const run = points.subarray(first * dims, (first + count) * dims);
     const cellSize = style.cellSize ?? CELL_SIZE;
-    this.visited = new Cells(run, dims, { colour: style.visited, cellSize, opacity: 1 }, false, bounds);
-    this.ahead = new Cells(reversed(run, dims), dims, { colour: PALETTE.ahead, cellSize, opacity: 0.22 }, false, bounds);
+    const onTop = style.onTop;
+    this.visited = new Cells(run, dims, { colour: style.visited, cellSize, opacity: 1, onTop }, false, bounds);
+    this.ahead = new Cells(reversed(run, dims), dims, { colour: PALETTE.ahead, cellSize, opacity: 0.22, onTop }, false, bounds);
   }
 
   /** Shows the run's cells before point `pointIndex` as visited and those after it as ahead. */
@@ -111,8 +114,9 @@ export class VoxelPath extends THREE.Group {
       const every = Math.max(1, Math.ceil(this.#count / SAMPLED_POINTS));
       const rows = sampled(points, dims, every);
       const cellSize = style.cellSize ?? CELL_SIZE;
-      const visited = new Cells(rows, dims, { colour: style.visited, cellSize, opacity: 1 }, true, bounds);
-      const ahead = new Cells(rows, dims, { colour: PALETTE.ahead, cellSize, opacity: 0.35 }, true, bounds, visited.attribute);
+      const onTop = style.onTop;
+      const visited = new Cells(rows, dims, { colour: style.visited, cellSize, opacity: 1, onTop }, true, bounds);
+      const ahead = new Cells(rows, dims, { colour: PALETTE.ahead, cellSize, opacity: 0.35, onTop }, true, bounds, visited.attribute);
       this.#sampled = { visited, ahead, every };
       this.add(visited, ahead);
     } else {
