@@ -224,6 +224,7 @@ function run(catalogue: Catalogue): void {
       longNote: byId('gcode-long', HTMLParagraphElement),
       editAnyway: byId('gcode-edit-anyway', HTMLButtonElement),
       gutter: byId('gcode-gutter', HTMLPreElement),
+      problems: byId('gcode-problems', HTMLDivElement),
       backdrop: byId('gcode-backdrop', HTMLPreElement),
       machine: byId('machine-fields', HTMLDivElement),
       formError,

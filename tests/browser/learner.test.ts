@@ -242,3 +242,36 @@ describe('compare mode', () => {
     await p.close();
   });
 });
+
+describe("a G-code program's errors", () => {
+  it('are marked in the gutter, on their line and above the editor, which goes to the line', async () => {
+    // Line 2 moves with no feed rate yet (a warning: Grbl's error 22); line 3's X1.2.3 is no number.
+    const gcode = encodeURIComponent('G21 G90\nG1 X1 Y1\nG1 X1.2.3 F600\nG1 X5\n');
+    const p = await openPage(`?mode=gcode&gcode=${gcode}&stepsPerMm=10`);
+    const { page } = p;
+    await status(page, 'stopped at line 3');
+    const problems = page.getByTestId('gcode-problems');
+    await problems.waitFor();
+    expect(await text(page, 'gcode-error')).toMatch(/^Line 3:\d+: malformed number/);
+    expect(await problems.innerText()).toMatch(/1 warning, listed under Moves; the first: line 2:\d+: /);
+    expect(await page.getByTestId('gutter-error').allInnerTexts()).toEqual(['3']);
+    expect(await page.getByTestId('gutter-warning').allInnerTexts()).toEqual(['2']);
+    expect(await page.getByTestId('gcode-error-line').getAttribute('data-line')).toBe('3');
+    expect(await page.getByTestId('gcode-text').getAttribute('aria-invalid')).toBe('true');
+    await screenshot(page, 'gcode-error-marked', '.inputs');
+
+    // The error's link puts the cursor on its line.
+    await page.getByTestId('gcode-error').getByRole('button').click();
+    await expect.poll(() => page.getByTestId('gcode-picked-line').getAttribute('data-line')).toBe('3');
+    expect(await page.getByTestId('gcode-text').evaluate((e: HTMLTextAreaElement) => e.value.slice(0, e.selectionStart).split('\n').length)).toBe(3);
+
+    // Fixed, the marks go.
+    await page.getByTestId('gcode-text').fill('G21 G90\nG1 X1 Y1 F600\nG1 X1.2 F600\nG1 X5\n');
+    await status(page, '3 moves');
+    expect(await problems.isHidden()).toBe(true);
+    expect(await page.getByTestId('gutter-error').count()).toBe(0);
+    expect(await page.getByTestId('gcode-text').getAttribute('aria-invalid')).toBe('false');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
