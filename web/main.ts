@@ -29,6 +29,7 @@ import type { Handle } from './scene/endpoint-handles.js';
 import { type AppState, type Catalogue, MODES, type Mode, randomLinesExperiment, tracedAlgorithms, traceOptions } from './state/app-state.js';
 import { nextTask } from './main-thread.js';
 import { loadState, persistState } from './state/persist.js';
+import { markStale } from './state/stale.js';
 import { Store } from './state/store.js';
 import { StepReason } from './timeline/step-reason.js';
 import { Timeline, handlesItsOwnKeys } from './timeline/timeline.js';
@@ -106,6 +107,7 @@ function run(catalogue: Catalogue): void {
   document.body.classList.toggle('embed', store.state.embed);
   const status = byId('trace-status', HTMLParagraphElement);
   const formError = byId('form-error', HTMLParagraphElement);
+  const staleNote = byId('stale-note', HTMLParagraphElement);
 
   // Mode tabs and the parts each mode shows.
   const modeButtons = [...document.querySelectorAll<HTMLButtonElement>('.modes button')];
@@ -368,6 +370,7 @@ function run(catalogue: Catalogue): void {
       inputs.showCoreError(undefined);
       gcodePanel.showCoreError(undefined);
       experimentForm.showCoreError(undefined);
+      markStale(staleNote, undefined);
       freeShown();
       shown = next;
       if (next.experiment) {
@@ -389,7 +392,9 @@ function run(catalogue: Catalogue): void {
       if (run !== latestRun || error instanceof CoreCrash) return;
       if (error instanceof Cancelled) {
         status.textContent = 'Cancelled. The view still shows the last program that ran.';
+        if (shown.program) markStale(staleNote, 'cancelled');
       } else if (error instanceof InputRejected) {
+        if (Object.keys(shown).length > 0) markStale(staleNote, 'rejected');
         if (state.mode === 'gcode') gcodePanel.showCoreError(error);
         else if (state.mode === 'experiment') experimentForm.showCoreError(error);
         else inputs.showCoreError(error);

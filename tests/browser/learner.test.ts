@@ -275,3 +275,43 @@ describe("a G-code program's errors", () => {
     await p.close();
   });
 });
+
+describe('results of a rejected input', () => {
+  it('are marked out of date until a valid input is traced, in trace and experiment mode, the rejected handle kept in sight', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    const note = page.getByTestId('stale-note');
+    const opacity = (selector: string) => page.locator(selector).first().evaluate((e) => getComputedStyle(e).opacity);
+    await page.getByTestId('step-counter').filter({ hasText: 'of 10' }).waitFor();
+    expect(await note.isVisible()).toBe(false);
+    expect(await opacity('#viewport')).toBe('1');
+
+    // Past +-2^30: rejected, the last path stays, marked.
+    await page.getByTestId('input-to-x').fill('2000000000');
+    await note.filter({ hasText: 'Out of date' }).waitFor();
+    expect(await opacity('#viewport')).toBe('0.5');
+    expect(await opacity('.inspector > *')).toBe('0.5');
+    // The rejected point's handle stays in the view, at its edge, to be dragged back.
+    const handle = page.getByTestId('handle-to');
+    await expect.poll(() => handle.getAttribute('class')).toContain('pinned');
+    const view = (await page.locator('#viewport').boundingBox())!;
+    const box = (await handle.boundingBox())!;
+    expect(box.x >= view.x && box.x + box.width <= view.x + view.width && box.y >= view.y && box.y + box.height <= view.y + view.height).toBe(true);
+    await page.getByTestId('input-to-x').fill('12');
+    await page.getByTestId('step-counter').filter({ hasText: 'of 12' }).waitFor();
+    await expect.poll(() => note.isVisible()).toBe(false);
+    expect(await opacity('#viewport')).toBe('1');
+
+    // The experiment's table, after a count it cannot take.
+    await page.getByTestId('mode-experiment').click();
+    await page.getByTestId('lines-table').waitFor();
+    await page.getByTestId('input-experiment-count').fill('0');
+    await note.filter({ hasText: 'Out of date' }).waitFor();
+    expect(await opacity('#experiment-view > *')).toBe('0.5');
+    await page.getByTestId('input-experiment-count').fill('20');
+    await page.getByTestId('experiment-view').filter({ hasText: '20 random lines' }).waitFor();
+    await expect.poll(() => note.isVisible()).toBe(false);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

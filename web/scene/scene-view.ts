@@ -507,6 +507,8 @@ export class SceneView {
     if (!this.#drawn && !this.#drawnOnce) return;
     this.#drawnOnce = true;
     const camera = this.#activeCamera();
+    camera.updateMatrixWorld();
+    this.#handles.pinToView(camera, this.#controls.target);
     this.#renderer.render(this.#scene, camera);
     this.#labels.render(this.#scene, camera);
   }
