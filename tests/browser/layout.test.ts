@@ -64,3 +64,29 @@ describe('the view, the timeline and the reason, together', () => {
     });
   }
 });
+
+describe('the coordinate fields', () => {
+  it('show ten digits whole: coordinates reach 2^30', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.setViewportSize({ width: 1024, height: 768 });
+    for (const [axis, value] of [
+      ['x', '-1073741824'],
+      ['y', '1073741824'],
+      ['z', '-1073741823'],
+    ] as const) {
+      await page.getByTestId(`input-to-${axis}`).fill(value);
+    }
+    const clipped = await page.evaluate(() =>
+      [...document.querySelectorAll<HTMLInputElement>('.axis input')].filter((i) => i.scrollWidth > i.clientWidth).map((i) => `${i.id} ${i.scrollWidth} > ${i.clientWidth}`),
+    );
+    expect(clipped).toEqual([]);
+    // Each field still beside its axis name.
+    for (const axis of ['x', 'y', 'z']) {
+      const input = (await page.getByTestId(`input-to-${axis}`).boundingBox())!;
+      const panel = (await page.locator('.inputs').boundingBox())!;
+      expect(input.x + input.width).toBeLessThanOrEqual(panel.x + panel.width);
+    }
+    await p.close();
+  });
+});
