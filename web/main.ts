@@ -19,7 +19,7 @@ import { diagnosticText } from './form/page-advice.js';
 import { formatPoint } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
-import { renderExperiment } from './experiment/experiment-panel.js';
+import { ExperimentPanel } from './experiment/experiment-panel.js';
 import type { DecisionRow } from './inspector/decision-figure.js';
 import { Inspector } from './inspector/inspector.js';
 import { decisionOverlay, decisionOverlayKinds } from './scene/decision-overlay.js';
@@ -211,7 +211,7 @@ function run(catalogue: Catalogue): void {
   const charts = new PathCharts(byId('charts', HTMLDivElement), goTo);
   const comparePanel = new ComparePanel(byId('comparison', HTMLDivElement), goTo);
   const timing = new TimingDiagram(byId('timing', HTMLDivElement), goTo);
-  const experimentView = byId('experiment-view', HTMLDivElement);
+  const experimentPanel = new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue);
 
   let shown: Shown = {};
   /** Counts runs of the core, so only the latest one's answer is shown. */
@@ -374,7 +374,7 @@ function run(catalogue: Catalogue): void {
       freeShown();
       shown = next;
       if (next.experiment) {
-        renderExperiment(experimentView, next.experiment);
+        experimentPanel.show(next.experiment);
         status.textContent = `${next.experiment.lines.length} lines traced with ${next.experiment.algorithm}.`;
         return;
       }

@@ -315,3 +315,43 @@ describe('results of a rejected input', () => {
     await p.close();
   });
 });
+
+describe('the experiment', () => {
+  it('opens a line in Trace mode from its row, and says when two algorithms gave the same statistics', async () => {
+    const p = await openPage('?mode=experiment&algorithm=regions&count=20&seed=1&maxCoordinate=100');
+    const { page } = p;
+    const view = page.getByTestId('experiment-view');
+    await view.filter({ hasText: '20 random lines traced with regions' }).waitFor();
+    expect(await page.getByTestId('same-statistics').count()).toBe(0);
+
+    // bresenham3d steps as regions does except at ties: the same numbers.
+    await page.getByTestId('algorithm').selectOption('bresenham3d');
+    await view.filter({ hasText: 'traced with bresenham3d' }).waitFor();
+    const regionsRows = await page.getByTestId('lines-table').locator('tbody tr').allInnerTexts();
+    expect(await text(page, 'same-statistics')).toMatch(/^Every statistic here is the one regions gave on these 20 lines, line for line/);
+    // greedy strays from the line: no such note.
+    await page.getByTestId('algorithm').selectOption('greedy');
+    await view.filter({ hasText: 'traced with greedy' }).waitFor();
+    expect(await page.getByTestId('same-statistics').count()).toBe(0);
+    await page.getByTestId('algorithm').selectOption('bresenham3d');
+    await view.filter({ hasText: 'traced with bresenham3d' }).waitFor();
+
+    // Row 3: its point and step count, in Trace mode.
+    const [, to, steps] = regionsRows[2]!.split('\t');
+    const [x, y, z] = to!.replace(/[()]/g, '').split(', ');
+    await page.getByTestId('lines-table').locator('tbody tr').nth(2).locator('td').nth(3).click();
+    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step 0 of ${steps}$`) }).waitFor();
+    expect(await page.getByTestId('mode-trace').getAttribute('aria-pressed')).toBe('true');
+    expect(await page.getByTestId('algorithm').inputValue()).toBe('bresenham3d');
+    expect([await page.getByTestId('input-to-x').inputValue(), await page.getByTestId('input-to-y').inputValue(), await page.getByTestId('input-to-z').inputValue()]).toEqual([x, y, z]);
+    expect(await page.getByTestId('input-from-x').inputValue()).toBe('0');
+
+    // And from the keyboard: the row's button.
+    await page.getByTestId('mode-experiment').click();
+    await page.getByTestId('open-line-5').focus();
+    await page.keyboard.press('Enter');
+    await expect.poll(() => page.getByTestId('mode-trace').getAttribute('aria-pressed')).toBe('true');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
