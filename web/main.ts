@@ -23,6 +23,7 @@ import { ExperimentPanel } from './experiment/experiment-panel.js';
 import type { DecisionRow } from './inspector/decision-figure.js';
 import { Inspector } from './inspector/inspector.js';
 import { decisionOverlay, decisionOverlayKinds } from './scene/decision-overlay.js';
+import { followControl } from './scene/follow.js';
 import { PALETTE } from './scene/palette.js';
 import { type SceneCallbacks, SceneView } from './scene/scene-view.js';
 import type { Handle } from './scene/endpoint-handles.js';
@@ -167,6 +168,7 @@ function run(catalogue: Catalogue): void {
   const view2d = byId('view-2d', HTMLInputElement);
   view2d.addEventListener('change', () => store.update({ projection: view2d.checked ? '2d' : '3d', camera: null }));
   byId('reset-view', HTMLButtonElement).addEventListener('click', () => store.update({ camera: null }));
+  followControl(store, byId('follow', HTMLInputElement), () => [scene, sceneB]);
   const decision3d = byId('decision-3d', HTMLInputElement);
   decision3d.addEventListener('change', () => store.update({ decision3d: decision3d.checked }));
 

@@ -355,3 +355,49 @@ describe('the experiment', () => {
     await p.close();
   });
 });
+
+/** Pixels within 12 per channel of the colour `hex`, and their centre as a share of the image's width and height. */
+function colourSpot(png: PNG, hex: string): { count: number; x: number; y: number } {
+  const box = colourBox(png, hex, 12);
+  if (!box) return { count: 0, x: NaN, y: NaN };
+  return { count: box.count, x: (box.left + box.right) / 2 / png.width, y: (box.top + box.bottom) / 2 / png.height };
+}
+
+describe('following the current cell', () => {
+  it('keeps it in the middle of the view at a readable size as it steps, toggled with F', async () => {
+    // 300 steps: framed whole, a cell is a few pixels and the exit face a speck.
+    const p = await openPage('?from=0,0,0&to=300,170,90&step=150&decision3d=1');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 150 of 300' }).waitFor();
+    await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+    const framedPng = await canvasPng(page);
+    const framed = colourSpot(framedPng, PALETTE.current);
+    expect(framed.count).toBeLessThan(300);
+
+    await page.keyboard.press('f');
+    await expect.poll(() => page.getByTestId('scene-canvas').first().getAttribute('data-follow')).toBe('true');
+    expect(await page.getByTestId('follow').isChecked()).toBe(true);
+    await expect.poll(() => new URL(page.url()).searchParams.get('follow')).toBe('1');
+    const near = colourSpot(await canvasPng(page), PALETTE.current);
+    expect(near.count).toBeGreaterThan(20 * framed.count);
+    expect(Math.abs(near.x - 0.5)).toBeLessThan(0.1);
+    expect(Math.abs(near.y - 0.5)).toBeLessThan(0.1);
+    // The exit face's crossing dot grows with it.
+    expect(colourSpot(await canvasPng(page), PALETTE.crossing).count).toBeGreaterThan(3 * Math.max(1, colourSpot(framedPng, PALETTE.crossing).count));
+
+    // Twenty steps on, still there.
+    for (let i = 0; i < 20; i++) await page.keyboard.press('ArrowRight');
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 170 of 300' }).waitFor();
+    await page.waitForTimeout(300);
+    const later = colourSpot(await canvasPng(page), PALETTE.current);
+    expect(later.count).toBeGreaterThan(20 * framed.count);
+    expect(Math.abs(later.x - 0.5)).toBeLessThan(0.1);
+    expect(Math.abs(later.y - 0.5)).toBeLessThan(0.1);
+
+    await page.keyboard.press('f');
+    await expect.poll(() => page.getByTestId('scene-canvas').first().getAttribute('data-follow')).toBe('false');
+    await screenshot(page, 'follow-off');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -39,6 +39,12 @@ const VIEW_DIRECTION = new THREE.Vector3(0.6, -1.4, 0.9).normalize();
 /** Room around the cells for the axis arrows and tick labels: grid units, and a share of the path's size. */
 const FRAME_MARGIN = 1.3;
 const FRAME_MARGIN_SHARE = 0.08;
+/**
+ * Following the current cell (setFollow), the view is at least this close:
+ * about this many cells from its top to its bottom, so a cell and its
+ * decision overlay read however long the path.
+ */
+const FOLLOW_SPAN_CELLS = 14;
 /** How much one press of + or - zooms the view. */
 const KEY_ZOOM_FACTOR = 1.15;
 /** Edge of a highlighted cell: larger than a path's cell, so it shows around it. */
@@ -151,6 +157,8 @@ export class SceneView {
   #overlay: THREE.Object3D | undefined;
   #renderPending = false;
   #pointIndex = 0;
+  /** The camera moves with the current cell (setFollow). */
+  #follow = false;
   /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
   #drawnOnce = false;
   /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
@@ -321,6 +329,35 @@ export class SceneView {
     if (camera) this.setCamera(camera);
     else this.resetView();
     this.showPoint(pointIndex);
+    if (this.#follow) this.#followCell(true);
+  }
+
+  /**
+   * Follows the current cell (or stops): the camera comes close enough for a
+   * cell to read (FOLLOW_SPAN_CELLS) and then moves with the cell at each
+   * step, keeping its direction and any zoom or orbit the user adds.
+   */
+  setFollow(follow: boolean): void {
+    if (follow === this.#follow) return;
+    this.#follow = follow;
+    this.canvas.dataset.follow = String(follow);
+    if (follow) this.#followCell(true);
+  }
+
+  /** Centres the view on the current cell; `closer`: also comes in to the following distance, if farther. */
+  #followCell(closer: boolean): void {
+    const drawn = this.#drawn;
+    if (!drawn) return;
+    const cell = drawn.voxels.currentCell;
+    const camera = this.#activeCamera();
+    const offset = camera.position.clone().sub(this.#controls.target);
+    let zoom = this.#projection === '2d' ? this.#orthographic.zoom : 1;
+    if (closer && this.#projection === '2d') {
+      zoom = Math.max(zoom, this.#orthoHeight / FOLLOW_SPAN_CELLS);
+    } else if (closer) {
+      offset.setLength(Math.min(offset.length(), FOLLOW_SPAN_CELLS / 2 / Math.tan(THREE.MathUtils.degToRad(FOV_DEG / 2))));
+    }
+    this.setCamera({ position: cell.clone().add(offset).toArray(), target: cell.toArray(), zoom });
   }
 
   /** True when the path on screen lies in one plane, so the 2D view applies. */
@@ -379,6 +416,7 @@ export class SceneView {
     this.#pointIndex = pointIndex;
     this.#drawn?.voxels.show(pointIndex);
     this.#second?.show(Math.min(pointIndex, this.#second.steps));
+    if (this.#follow) this.#followCell(false);
     this.requestRender();
   }
 

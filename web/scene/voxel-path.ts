@@ -133,6 +133,11 @@ export class VoxelPath extends THREE.Group {
     this.add(this.#current);
   }
 
+  /** Where the current cell is, grid units. */
+  get currentCell(): THREE.Vector3 {
+    return this.#current.position.clone();
+  }
+
   /** Steps of the path (its last point index). */
   get steps(): number {
     return this.#count - 1;

@@ -57,6 +57,8 @@ export interface AppState {
   camera: CameraState | null;
   /** Draw the current step's decision in the view (scene/decision-overlay.ts: an exit face, a circle's candidates), for traces that have one. */
   decision3d: boolean;
+  /** The camera follows the current cell at a readable zoom (scene/follow.ts), instead of staying where it is. */
+  follow: boolean;
   /** Point index shown: the position after this many steps (0..=steps). */
   pointIndex: number;
   playing: boolean;
@@ -208,6 +210,7 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     projection: defaultProjection(axisCount([info], {})),
     camera: null,
     decision3d: false,
+    follow: false,
     pointIndex: 0,
     playing: false,
     speed: DEFAULT_SPEED,
