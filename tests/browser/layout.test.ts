@@ -38,6 +38,15 @@ async function check(page: Page, name: string): Promise<void> {
   const view = (await page.locator('#viewport').boundingBox())!;
   const { width, height } = page.viewportSize()!;
   expect(view.width * view.height, `${name}: view area`).toBeGreaterThan(0.2 * width * height);
+  // The legend clear of the view's tools (2D, Decision in 3D, Follow, Reset view).
+  const overlaps = await page.evaluate(() => {
+    const legend = document.querySelector('#viewport .legend')!.getBoundingClientRect();
+    return [...document.querySelectorAll('#viewport .view-tools > *')]
+      .map((e) => ({ text: (e as HTMLElement).innerText, box: e.getBoundingClientRect() }))
+      .filter(({ box }) => box.left < legend.right && legend.left < box.right && box.top < legend.bottom && legend.top < box.bottom)
+      .map(({ text }) => text);
+  });
+  expect(overlaps, `${name}: legend over the tools`).toEqual([]);
   await screenshot(page, `layout-${name}`);
 }
 
