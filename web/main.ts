@@ -12,6 +12,7 @@ import { randomLinesToCsv } from './core/export.js';
 import type { RandomLinesResult } from './core/index.js';
 import { ComparePanel } from './compare/compare-panel.js';
 import { PathCharts } from './charts/path-charts.js';
+import { embedding } from './embed/embed.js';
 import { download } from './export.js';
 import { AlgorithmInputs } from './form/algorithm-inputs.js';
 import { OptionsForm } from './form/options-form.js';
@@ -106,6 +107,15 @@ function run(catalogue: Catalogue): void {
   const store = new Store<AppState>(loadState(catalogue));
   persistState(store);
   document.body.classList.toggle('embed', store.state.embed);
+  embedding(store, catalogue, {
+    open: byId('open-full', HTMLAnchorElement),
+    button: byId('embed-open', HTMLButtonElement),
+    dialog: byId('embed', HTMLDialogElement),
+    snippet: byId('embed-snippet', HTMLTextAreaElement),
+    note: byId('embed-note', HTMLParagraphElement),
+    copy: byId('embed-copy', HTMLButtonElement),
+    copied: byId('embed-copied', HTMLSpanElement),
+  });
   const status = byId('trace-status', HTMLParagraphElement);
   const formError = byId('form-error', HTMLParagraphElement);
   const staleNote = byId('stale-note', HTMLParagraphElement);

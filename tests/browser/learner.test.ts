@@ -8,7 +8,7 @@ import type { Page } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { PALETTE } from '../../web/scene/palette.js';
-import { closeAll, openPage, screenshot } from './harness.js';
+import { canvasPng, closeAll, openPage, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -20,16 +20,6 @@ function text(page: Page, testId: string): Promise<string> {
 async function status(page: Page, wanted: string | RegExp): Promise<string> {
   await page.getByTestId('trace-status').filter({ hasText: wanted }).waitFor();
   return text(page, 'trace-status');
-}
-
-/** The view's canvas alone (no HTML labels), as the PNG export writes it. */
-async function canvasPng(page: Page): Promise<PNG> {
-  const downloading = page.waitForEvent('download');
-  await page.getByTestId('export-png').click();
-  const download = await downloading;
-  const chunks: Buffer[] = [];
-  for await (const chunk of await download.createReadStream()) chunks.push(chunk as Buffer);
-  return PNG.sync.read(Buffer.concat(chunks));
 }
 
 /** The box around the pixels within `tolerance` per channel of the colour `hex`, or undefined when there are none. */

@@ -5,9 +5,12 @@
 // N = 2, -6, 6, -2, 10, ...; M_3 = 12 > 0 and N_3 = 6 > 0 put the line in
 // region d, and the third step goes to D = (3, 2, 2) (as Liu's Table 1).
 //
-// The README screenshot is the 'readme' one this file saves in
-// tests/browser/__screenshots__/actual/; refresh it with
+// The README screenshots are the readme* ones the browser tests save in
+// tests/browser/__screenshots__/actual/ (this file's, and embed.test.ts's
+// readme-embed); refresh them with
 //   cp tests/browser/__screenshots__/actual/readme.png docs/screenshot.png
+//   cp tests/browser/__screenshots__/actual/readme-gcode.png docs/gcode.png
+//   cp tests/browser/__screenshots__/actual/readme-embed.png docs/embed.png
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
 import { closeAll, openPage, screenshot, siteUrl } from './harness.js';

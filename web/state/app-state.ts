@@ -66,6 +66,8 @@ export interface AppState {
   speed: number;
   /** Chrome-less view for an iframe (?embed=1). */
   embed: boolean;
+  /** Embedded, the current step's reason under the timeline (off with ?explain=0). */
+  explain: boolean;
 }
 
 export const SPEEDS_STEPS_PER_SECOND = [0.5, 1, 2, 4, 8, 16, 32, 64, 256, 1024, 8192] as const;
@@ -215,6 +217,7 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     playing: false,
     speed: DEFAULT_SPEED,
     embed: false,
+    explain: true,
   };
 }
 

@@ -5,14 +5,15 @@
  *   ?mode=compare&algorithm=regions&other=greedy&layout=side&from=0,0,0&to=10,7,6
  *   ?mode=gcode&gcode=G1%20X10&stepsPerMm=80&lineAlgorithm=regions&arcAlgorithm=circle
  *   ?mode=experiment&algorithm=regions&count=100&seed=1&maxCoordinate=100
- *   ...&decision3d=1&camera=12.5,-30,20,5,3.5,3,1&follow=1&embed=1
+ *   ...&decision3d=1&camera=12.5,-30,20,5,3.5,3,1&follow=1&embed=1&explain=0
  *
  * Option keys are the API's option names, so a link reads like the CLI's
  * flags (--from 0,0,0); a mode writes only its own keys. `step` is the point
  * index shown (steps taken); `camera` is position x,y,z, target x,y,z and
  * zoom, absent while the page frames the path itself; `decision3d` (1 or 0)
  * is the view's decision overlay (an exit face, a circle's candidates);
- * `follow=1` keeps the camera on the current cell (written only when on).
+ * `follow=1` keeps the camera on the current cell (written only when on);
+ * `explain=0` leaves the step's reason out of an embedded view.
  * `playing` is left out on purpose: a page opened from a link starts
  * paused, as moving content should not start by itself.
  */
@@ -141,6 +142,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
     if (state.follow) pairs.push(['follow', '1']);
   }
   if (state.embed) pairs.push(['embed', '1']);
+  if (!state.explain) pairs.push(['explain', '0']);
   return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v).replaceAll('%2C', ',')}`).join('&');
 }
 
@@ -148,7 +150,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
 const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
 /** Keys that say a query describes a state (any option name counts too). */
-export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'decision3d', 'camera', 'follow', 'gcode', 'embed'];
+export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'view', 'decision3d', 'camera', 'follow', 'gcode', 'embed', 'explain'];
 
 /**
  * The state a query describes, or undefined when it has none of the state's
@@ -191,5 +193,6 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   state.follow = params.get('follow') === '1';
   state.camera = parseCamera(params.get('camera'));
   state.embed = params.get('embed') === '1';
+  state.explain = params.get('explain') !== '0';
   return state;
 }
