@@ -178,15 +178,18 @@ function hsv(r: number, g: number, b: number): [number, number, number] {
  * the colour times a light factor (0.62 to 1), which keeps its hue and
  * saturation and lowers its value; an outline is the colour itself.
  */
-function pixelsShadedAs(png: PNG, [r, g, b]: readonly number[]): number {
-  const [h0, s0, v0] = hsv(r!, g!, b!);
+function pixelsShadedAs(png: PNG, rgb: readonly number[]): number {
   let count = 0;
-  for (let i = 0; i < png.data.length; i += 4) {
-    const [h, s, v] = hsv(png.data[i]!, png.data[i + 1]!, png.data[i + 2]!);
-    const dh = Math.min(Math.abs(h - h0), 360 - Math.abs(h - h0));
-    if (dh < 10 && Math.abs(s - s0) < 0.25 && v <= v0 + 0.06 && v >= 0.45 * v0) count++;
-  }
+  for (let i = 0; i < png.data.length; i += 4) if (shadedAs(png.data[i]!, png.data[i + 1]!, png.data[i + 2]!, rgb)) count++;
   return count;
+}
+
+/** True when the pixel (r, g, b) is the colour `rgb` as the view shades it (see pixelsShadedAs). */
+function shadedAs(r: number, g: number, b: number, rgb: readonly number[]): boolean {
+  const [h0, s0, v0] = hsv(rgb[0]!, rgb[1]!, rgb[2]!);
+  const [h, s, v] = hsv(r, g, b);
+  const dh = Math.min(Math.abs(h - h0), 360 - Math.abs(h - h0));
+  return dh < 10 && Math.abs(s - s0) < 0.25 && v <= v0 + 0.06 && v >= 0.45 * v0;
 }
 
 /** The colour of a legend swatch as drawn: its middle pixel, or its border's (a highlight's swatch is outlined in its colour). */
@@ -346,11 +349,20 @@ describe('the experiment', () => {
   });
 });
 
-/** Pixels within 12 per channel of the colour `hex`, and their centre as a share of the image's width and height. */
+/** Pixels of the colour `hex` as the view shades it (pixelsShadedAs), and their mean position as a share of the image's width and height. */
 function colourSpot(png: PNG, hex: string): { count: number; x: number; y: number } {
-  const box = colourBox(png, hex, 12);
-  if (!box) return { count: 0, x: NaN, y: NaN };
-  return { count: box.count, x: (box.left + box.right) / 2 / png.width, y: (box.top + box.bottom) / 2 / png.height };
+  const rgb = [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+  let [count, sx, sy] = [0, 0, 0];
+  for (let y = 0; y < png.height; y++) {
+    for (let x = 0; x < png.width; x++) {
+      const i = (y * png.width + x) * 4;
+      if (!shadedAs(png.data[i]!, png.data[i + 1]!, png.data[i + 2]!, rgb)) continue;
+      count++;
+      sx += x;
+      sy += y;
+    }
+  }
+  return { count, x: sx / count / png.width, y: sy / count / png.height };
 }
 
 describe('following the current cell', () => {
@@ -362,14 +374,15 @@ describe('following the current cell', () => {
     await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
     const framedPng = await canvasPng(page);
     const framed = colourSpot(framedPng, PALETTE.current);
-    expect(framed.count).toBeLessThan(300);
+    expect(framed.count).toBeLessThan(200);
 
     await page.keyboard.press('f');
     await expect.poll(() => page.getByTestId('scene-canvas').first().getAttribute('data-follow')).toBe('true');
     expect(await page.getByTestId('follow').isChecked()).toBe(true);
     await expect.poll(() => new URL(page.url()).searchParams.get('follow')).toBe('1');
+    // Framed, a marker of a few pixels; followed, the cell itself, some 40 pixels across.
     const near = colourSpot(await canvasPng(page), PALETTE.current);
-    expect(near.count).toBeGreaterThan(20 * framed.count);
+    expect(near.count).toBeGreaterThan(Math.max(600, 5 * framed.count));
     expect(Math.abs(near.x - 0.5)).toBeLessThan(0.1);
     expect(Math.abs(near.y - 0.5)).toBeLessThan(0.1);
     // The exit face's crossing dot grows with it.
@@ -380,7 +393,7 @@ describe('following the current cell', () => {
     await page.getByTestId('step-counter').filter({ hasText: 'Step 170 of 300' }).waitFor();
     await page.waitForTimeout(300);
     const later = colourSpot(await canvasPng(page), PALETTE.current);
-    expect(later.count).toBeGreaterThan(20 * framed.count);
+    expect(later.count).toBeGreaterThan(Math.max(600, 5 * framed.count));
     expect(Math.abs(later.x - 0.5)).toBeLessThan(0.1);
     expect(Math.abs(later.y - 0.5)).toBeLessThan(0.1);
 

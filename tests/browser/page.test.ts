@@ -171,6 +171,20 @@ describe('the page', () => {
     await p.close();
   });
 
+  it("saves the README screenshot of the G-code mode: the square sample at step 2000, line 5's", async () => {
+    // 1600 steps a side (20 mm at 80 steps/mm): steps 1601..3200 are line 5's (Y20).
+    const p = await openPage('?mode=gcode&stepsPerMm=80&step=2000');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 2000 of 6400' }).waitFor();
+    await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('5');
+    await page.getByTestId('moves-table').waitFor();
+    await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+    const stats = await screenshot(page, 'readme-gcode');
+    expect(stats).toMatchObject({ width: 1280, height: 720 });
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('saves the README screenshot: the example line at its tie, step 5 of 10, its exit face drawn', async () => {
     // Close to the current cell, so that its exit face and the crossing read.
     const p = await openPage(`${EXAMPLE}&step=5&decision3d=1&camera=10.5,-1.5,7.5,5,3.5,3,1`);

@@ -60,8 +60,18 @@ export function sceneLabel(text: string, className: string, position: THREE.Vect
 /** Which side of the cells the 2D grid lies on, per plane normal: away from the 2D camera (scene-view's PLANE_VIEWS). */
 const FAR_SIDE: Record<number, 'min' | 'max'> = { 0: 'min', 1: 'max', 2: 'min' };
 
+/** Rough widths of a tick's characters, CSS pixels (12 px digits, 10 px for the steps beside mm): enough to keep a label inside the view when framing. */
+const TICK_CHAR_PX = 7;
+const STEPS_CHAR_PX = 6;
+
 export class GridAxes extends THREE.Group {
   #grid: THREE.LineSegments | undefined;
+  /**
+   * How far the tick labels reach out sideways from their points, CSS
+   * pixels: y's to the right of the floor, z's to the left of its axis. The
+   * view's framing keeps that much room at its sides.
+   */
+  readonly labelRoomPx = { left: 0, right: 0 };
 
   /**
    * `min` and `max`: the smallest and largest grid coordinate of the path on
@@ -102,13 +112,15 @@ export class GridAxes extends THREE.Group {
         for (let k = Math.ceil(low / perMm / step); k * step * perMm <= high + 1e-9; k++) {
           const mm = k * step;
           if (!shown(mm * perMm)) continue;
-          const label = sceneLabel(`${tickText(mm, step)} mm`, 'scene-label tick', base.clone().setComponent(axis, mm * perMm));
+          const text = `${tickText(mm, step)} mm`;
+          const label = sceneLabel(text, 'scene-label tick', base.clone().setComponent(axis, mm * perMm));
           label.center.copy(TICK_ANCHORS[axis]!);
           const steps = document.createElement('span');
           steps.className = 'tick-steps';
           steps.textContent = String(Math.round(mm * perMm));
           label.element.append(steps);
           this.add(label);
+          this.#reach(axis, text.length * TICK_CHAR_PX + (steps.textContent.length + 1) * STEPS_CHAR_PX);
         }
       } else {
         const step = Math.max(1, niceStep(size.getComponent(axis), MAX_TICKS));
@@ -117,9 +129,16 @@ export class GridAxes extends THREE.Group {
           const label = sceneLabel(String(c), 'scene-label tick', base.clone().setComponent(axis, c));
           label.center.copy(TICK_ANCHORS[axis]!);
           this.add(label);
+          this.#reach(axis, String(c).length * TICK_CHAR_PX);
         }
       }
     });
+  }
+
+  /** Notes a tick label `widthPx` wide on `axis`: y's reach right, z's left, x's hang below. */
+  #reach(axis: number, widthPx: number): void {
+    if (axis === 1) this.labelRoomPx.right = Math.max(this.labelRoomPx.right, widthPx);
+    if (axis === 2) this.labelRoomPx.left = Math.max(this.labelRoomPx.left, widthPx);
   }
 
   /**

@@ -570,13 +570,17 @@ export class SceneView {
       for (let c = 0; c < 8; c++) corners.push(new THREE.Vector3(cell.x + (c & 1 ? 0.5 : -0.5), cell.y + (c & 2 ? 0.5 : -0.5), cell.z + (c & 4 ? 0.5 : -0.5)));
     }
     // The picture goes below the legend and the tools, FIT_EDGE_PX from the
-    // edges: within `freeX` of the middle across (-1..1, screen right), and
+    // edges: within `freeX` of `middleX` across (-1..1, screen right), and
     // in the lower part of the height, within `freeY` of `middle` (screen up).
     const { clientWidth: width, clientHeight: height } = this.#container;
     const inset = this.#topInset();
     // A small view (an embedded one) spares less of itself for the edges.
     const edge = Math.min(FIT_EDGE_PX, FIT_EDGE_SHARE * Math.min(width, height));
-    const freeX = 1 - (2 * edge) / Math.max(width, 1);
+    // Sideways, the tick labels that reach out of the picture need their width.
+    const { left, right: rightRoom } = drawn.axes.labelRoomPx;
+    const [edgeLeft, edgeRight] = [Math.max(edge, left), Math.max(edge, rightRoom)];
+    const freeX = 1 - (edgeLeft + edgeRight) / Math.max(width, 1);
+    const middleX = (edgeLeft - edgeRight) / Math.max(width, 1);
     const freeY = 1 - inset - (2 * edge) / Math.max(height, 1);
     const middle = -inset;
     const center = box.getCenter(new THREE.Vector3());
@@ -603,7 +607,7 @@ export class SceneView {
         spread.top = Math.max(spread.top, y);
       }
       // Look so the middle of the picture is the middle of the free part, at about the same depth.
-      center.addScaledVector(right, ((spread.left + spread.right) / 2) * distance * tanH);
+      center.addScaledVector(right, ((spread.left + spread.right) / 2 - middleX) * distance * tanH);
       center.addScaledVector(up, ((spread.bottom + spread.top) / 2 - middle) * distance * tanV);
     }
     this.setCamera({ position: center.clone().addScaledVector(direction, distance).toArray(), target: center.toArray(), zoom: 1 });

@@ -26,6 +26,8 @@ import { PALETTE } from './palette.js';
 const CELL_SIZE = 0.84;
 /** Drawn edge of the current cell: a little larger, so it stands out among its neighbours. */
 const CURRENT_SIZE = 1.0;
+/** The lighter drawing's marker of the current cell, CSS pixels: it stays this size however far out the view is. */
+const CURRENT_MARKER_PX = 9;
 /** The lighter drawing's points along the whole path, at most. */
 export const SAMPLED_POINTS = 20_000;
 /** The lighter drawing's cubes: every cell within this many steps of the current one. */
@@ -130,6 +132,14 @@ export class VoxelPath extends THREE.Group {
       new THREE.Mesh(currentBox, new THREE.MeshLambertMaterial({ color: PALETTE.current })),
       new THREE.LineSegments(new THREE.EdgesGeometry(currentBox), new THREE.LineBasicMaterial({ color: PALETTE.ideal })),
     );
+    if (this.light) {
+      // A path drawn as points is framed far out, where the current cube is under a pixel: a marker of a fixed size shows where it is.
+      const marker = new THREE.BufferGeometry().setAttribute('position', new THREE.Float32BufferAttribute([0, 0, 0], 3));
+      const dot = new THREE.Points(marker, new THREE.PointsMaterial({ color: PALETTE.current, size: CURRENT_MARKER_PX, sizeAttenuation: false }));
+      // Over the ideal path (drawn at 2), which passes through it.
+      dot.renderOrder = 3;
+      this.#current.add(dot);
+    }
     this.add(this.#current);
   }
 
@@ -181,7 +191,7 @@ export class VoxelPath extends THREE.Group {
     this.#sampled?.visited.dispose();
     this.#sampled?.ahead.dispose();
     this.#current.traverse((o) => {
-      if (o instanceof THREE.Mesh || o instanceof THREE.LineSegments) {
+      if (o instanceof THREE.Mesh || o instanceof THREE.LineSegments || o instanceof THREE.Points) {
         o.geometry.dispose();
         (o.material as THREE.Material).dispose();
       }
