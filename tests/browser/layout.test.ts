@@ -99,3 +99,21 @@ describe('the coordinate fields', () => {
     await p.close();
   });
 });
+
+describe('the decision cards', () => {
+  it('stay where they are as their values change length', async () => {
+    // (0,0,0)->(1000,7,6): eq. (10) gives M_1 = 2*7 - 1000 = -986, and M grows by 14 a step (eq. 8) to short values.
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=1000,7,6&step=1');
+    const { page } = p;
+    await page.getByTestId('inspector-value-M').filter({ hasText: '-986' }).waitFor();
+    const cards = () => page.locator('[data-testid="inspector-decisions"] > div').evaluateAll((divs) => divs.map((d) => { const r = d.getBoundingClientRect(); return [Math.round(r.x), Math.round(r.y), Math.round(r.width)]; }));
+    const before = await cards();
+    await page.getByTestId('jump-input').fill('70');
+    await page.getByTestId('jump-go').click();
+    await page.locator('#decision-heading').filter({ hasText: 'step 70' }).waitFor();
+    await expect.poll(() => page.getByTestId('inspector-value-M').innerText()).not.toBe('-986');
+    expect((await page.getByTestId('inspector-value-M').innerText()).length).toBeLessThan(4);
+    expect(await cards()).toEqual(before);
+    await p.close();
+  });
+});
