@@ -117,3 +117,22 @@ describe('the decision cards', () => {
     await p.close();
   });
 });
+
+describe('the algorithm picker', () => {
+  it("shows the chosen algorithm's whole title, on more lines when it is long", async () => {
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    const picker = page.getByTestId('algorithm');
+    await page.getByTestId('step-counter').filter({ hasText: 'of 10' }).waitFor();
+    await picker.selectOption('liu-float');
+    await page.getByTestId('algorithm-title').filter({ hasText: "Liu's 3D Bresenham" }).waitFor();
+    // "Liu's 3D Bresenham with a decimal discriminant kept to d places (liu-float)": three lines in a 270-pixel panel.
+    const box = (await picker.boundingBox())!;
+    const lineHeight = await picker.evaluate((e) => parseFloat(getComputedStyle(e).fontSize) * 1.25);
+    expect(box.height).toBeGreaterThan(2.5 * lineHeight);
+    const panel = (await page.locator('.inputs').boundingBox())!;
+    expect(box.x + box.width).toBeLessThanOrEqual(panel.x + panel.width);
+    await screenshot(page, 'picker-long-title', '.inputs');
+    await p.close();
+  });
+});
