@@ -257,6 +257,7 @@ function run(catalogue: Catalogue): void {
         scene.setHighlights([{ cells, dims: program.dims, colour: PALETTE.onlyFirst }]);
         goTo(steps.steps > 0 ? steps.firstStep + steps.steps : steps.pointBefore);
       },
+      onColumns: (names) => inspector.showColumns(names),
       onRun: () => void retrace(),
       onCancel: () => running?.cancel(),
     },

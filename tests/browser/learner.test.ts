@@ -7,6 +7,7 @@
 import type { Page } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
+import { catalogue } from '../../web/core/index.js';
 import { PALETTE } from '../../web/scene/palette.js';
 import { canvasPng, closeAll, openPage, screenshot } from './harness.js';
 
@@ -400,6 +401,27 @@ describe('following the current cell', () => {
     await page.keyboard.press('f');
     await expect.poll(() => page.getByTestId('scene-canvas').first().getAttribute('data-follow')).toBe('false');
     await screenshot(page, 'follow-off');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+describe("a G-code step's decision", () => {
+  it("shows the columns of the step's own algorithm: regions' on a line, the circle's on an arc", async () => {
+    // At 4 steps/mm, G1 to (4, 2) is steps 1-4 (regions), the G2 steps 5-10 (Saleem's circle).
+    const gcode = encodeURIComponent('G21 G90\nG1 X1 Y0.5\nG2 X1 Y-0.5 I0 J-0.5\n');
+    const p = await openPage(`?mode=gcode&gcode=${gcode}&stepsPerMm=4&step=2`);
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'of 10' }).waitFor();
+    await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+    const shown = () => page.locator('[data-testid="inspector-decisions"] > div:visible dt').allInnerTexts();
+    // The columns each algorithm declares in the core's catalogue.
+    const { algorithms } = await catalogue();
+    const columnsOf = (id: string) => algorithms.find((a) => a.id === id)!.columns.map((c) => c.name);
+    await expect.poll(shown).toEqual(columnsOf('regions'));
+    await page.getByTestId('jump-input').fill('6');
+    await page.getByTestId('jump-input').press('Enter');
+    await expect.poll(shown).toEqual(columnsOf('circle'));
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -82,6 +82,9 @@ export class GcodePanel {
   #diagnosticLines = new Map<number, 'error' | 'warning'>();
   /** Called with the steps of a picked line, to highlight them and move the step there. */
   readonly #onPick: (line: number, steps: LineSteps) => void;
+  /** Called with the decision columns of the current step's algorithm (undefined: no step, so all), for the inspector to show those only. */
+  readonly #onColumns: (names: ReadonlySet<string> | undefined) => void;
+  readonly #catalogue: Catalogue;
   #program: RemoteProgram | undefined;
   #pickedLine: number | undefined;
   #currentLine: number | undefined;
@@ -101,10 +104,17 @@ export class GcodePanel {
   readonly #listingLines: HTMLElement;
   readonly #listingSpacer: HTMLElement;
 
-  constructor(elements: GcodePanelElements, catalogue: Catalogue, store: Store<AppState>, events: { onPick(line: number, steps: LineSteps): void; onRun(): void; onCancel(): void }) {
+  constructor(
+    elements: GcodePanelElements,
+    catalogue: Catalogue,
+    store: Store<AppState>,
+    events: { onPick(line: number, steps: LineSteps): void; onColumns(names: ReadonlySet<string> | undefined): void; onRun(): void; onCancel(): void },
+  ) {
     this.#e = elements;
     this.#store = store;
+    this.#catalogue = catalogue;
     this.#onPick = events.onPick;
+    this.#onColumns = events.onColumns;
     this.#currentMark = element('div', { className: 'line-mark current' });
     this.#currentMark.dataset.testid = 'gcode-current-line';
     this.#pickedMark = element('div', { className: 'line-mark picked' });
@@ -366,6 +376,9 @@ export class GcodePanel {
     const from = Math.max(0, Math.min(moveIndex - (MOVES_SHOWN >> 1), program.program.moveCount - MOVES_SHOWN));
     const moves = await program.moves(from, from + MOVES_SHOWN);
     if (request !== this.#stepRequest || program !== this.#program) return;
+    // A program's trace has the columns of every algorithm it ran: the step's own are the ones that mean something here.
+    const algorithm = this.#catalogue.algorithms.find((a) => a.id === moves[moveIndex - from]?.algorithm);
+    this.#onColumns(algorithm && new Set(algorithm.columns.map((c) => c.name)));
     this.#currentLine = line;
     const scroller = this.#scroller;
     const top = (line - 1) * this.#lineHeightPx;

@@ -84,6 +84,11 @@ export class Inspector {
     this.show(pointIndex);
   }
 
+  /** Shows the decision cards of the columns in `names` only (a G-code step's own algorithm's), or all of them (undefined). */
+  showColumns(names: ReadonlySet<string> | undefined): void {
+    for (const [name, cell] of this.#cells) cell.parentElement!.hidden = names !== undefined && !names.has(name);
+  }
+
   /** Shows point index `pointIndex`: the point at once, the replayed decision when the worker answers. */
   show(pointIndex: number): void {
     const trace = this.#trace;
