@@ -6,6 +6,8 @@
  */
 import { PathCharts } from './charts/path-charts.js';
 import { ComparePanel } from './compare/compare-panel.js';
+import { embedding } from './embed/embed.js';
+import { ExperimentPanel } from './experiment/experiment-panel.js';
 import { AlgorithmInputs } from './form/algorithm-inputs.js';
 import { OptionsForm } from './form/options-form.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
@@ -21,11 +23,13 @@ import { ModeTabs } from './page/mode-tabs.js';
 import { Orchestrator } from './page/orchestrator.js';
 import { PathViews } from './page/path-views.js';
 import { Status } from './page/status.js';
+import { followControl } from './scene/follow.js';
 import { PALETTE } from './scene/palette.js';
 import { SceneView } from './scene/scene-view.js';
 import { type AppState, type Catalogue, randomLinesExperiment } from './state/app-state.js';
 import { loadState, persistState } from './state/persist.js';
 import { Store } from './state/store.js';
+import { StepReason } from './timeline/step-reason.js';
 import { Timeline } from './timeline/timeline.js';
 import { TraceClient } from './worker/client.js';
 
@@ -58,6 +62,15 @@ function run(catalogue: Catalogue): void {
   const store = new Store<AppState>(loadState(catalogue));
   persistState(store);
   document.body.classList.toggle('embed', store.state.embed);
+  embedding(store, catalogue, {
+    open: byId('open-full', HTMLAnchorElement),
+    button: byId('embed-open', HTMLButtonElement),
+    dialog: byId('embed', HTMLDialogElement),
+    snippet: byId('embed-snippet', HTMLTextAreaElement),
+    note: byId('embed-note', HTMLParagraphElement),
+    copy: byId('embed-copy', HTMLButtonElement),
+    copied: byId('embed-copied', HTMLSpanElement),
+  });
   const formError = byId('form-error', HTMLParagraphElement);
   const goTo = (pointIndex: number) => page.goTo(pointIndex);
 
@@ -116,6 +129,7 @@ function run(catalogue: Catalogue): void {
     store,
   );
   views = pathViews;
+  followControl(store, byId('follow', HTMLInputElement), () => pathViews.scenes);
   const timeline = new Timeline(
     {
       first: byId('first', HTMLButtonElement),
@@ -152,6 +166,7 @@ function run(catalogue: Catalogue): void {
       longNote: byId('gcode-long', HTMLParagraphElement),
       editAnyway: byId('gcode-edit-anyway', HTMLButtonElement),
       gutter: byId('gcode-gutter', HTMLPreElement),
+      problems: byId('gcode-problems', HTMLDivElement),
       backdrop: byId('gcode-backdrop', HTMLPreElement),
       machine: byId('machine-fields', HTMLDivElement),
       formError,
@@ -164,6 +179,7 @@ function run(catalogue: Catalogue): void {
     store,
     {
       onPick: (_line, steps) => page.pickLine(steps),
+      onColumns: (names) => inspector.showColumns(names),
       onRun: () => void page.retrace(),
       onCancel: () => page.cancel(),
     },
@@ -185,7 +201,9 @@ function run(catalogue: Catalogue): void {
     comparePanel: new ComparePanel(byId('comparison', HTMLDivElement), goTo),
     timing: new TimingDiagram(byId('timing', HTMLDivElement), goTo),
     timeViews: new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), vcd: byId('export-vcd', HTMLButtonElement) }, catalogue, timeline, goTo),
-    experimentView: byId('experiment-view', HTMLDivElement),
+    experimentPanel: new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue),
+    stepReason: new StepReason(byId('step-reason', HTMLParagraphElement)),
+    staleNote: byId('stale-note', HTMLParagraphElement),
     inspectorHeading: byId('inspector-heading', HTMLHeadingElement),
   });
   orchestrator = page;

@@ -1,7 +1,9 @@
 //! Errors a user can act on: each names the input field (or the G-code line
 //! and column) it is about.
 
+use serde::Serialize;
 use std::fmt;
+use tsify::Tsify;
 
 /// Where in the input an error is.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -12,12 +14,28 @@ pub enum Location {
     Source { line: u32, column: u32 },
 }
 
+/// A cap the input ran into, for a caller to word its own advice (a page
+/// whose cap is fixed cannot tell its reader to raise it): the option that
+/// sets the cap, its value in force, what the input needs at least, and the
+/// most the option may be set to.
+#[derive(Serialize, Tsify, Clone, Debug, PartialEq, Eq)]
+#[serde(rename_all = "camelCase")]
+pub struct Limit {
+    /// The option, e.g. `maxSteps`.
+    pub option: String,
+    pub value: u64,
+    pub at_least: u64,
+    pub most: u64,
+}
+
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Error {
     pub location: Location,
     pub message: String,
     /// For a point option, the axis index (0 = x) the error is about.
     pub axis: Option<usize>,
+    /// The cap the input ran into, when that is what is wrong.
+    pub limit: Option<Limit>,
 }
 
 impl Error {
@@ -26,6 +44,7 @@ impl Error {
             location: Location::Field(field.to_string()),
             message: message.into(),
             axis: None,
+            limit: None,
         }
     }
 
@@ -34,12 +53,19 @@ impl Error {
             location: Location::Source { line, column },
             message: message.into(),
             axis: None,
+            limit: None,
         }
     }
 
     /// This error, about coordinate `axis` of a point option.
     pub fn on_axis(mut self, axis: usize) -> Error {
         self.axis = Some(axis);
+        self
+    }
+
+    /// This error, as one of running into `limit`.
+    pub fn with_limit(mut self, limit: Limit) -> Error {
+        self.limit = Some(limit);
         self
     }
 

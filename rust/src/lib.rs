@@ -38,7 +38,7 @@ pub mod wasm;
 // themselves import from the file that declares each item, never through
 // these, so that the crate root sits above every file in the import graph.
 pub use algorithms::{run, trace_json};
-pub use error::Error;
+pub use error::{Error, Limit};
 pub use grid::{Point, Step};
 pub use request::Request;
 pub use trace::{Trace, TraceBuilder};

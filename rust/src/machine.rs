@@ -148,7 +148,7 @@ impl Machine {
             ),
             (None, 0) => Err(Error::field(
                 "stepsPerMm",
-                "missing: give steps per mm (80, or [80, 80, 400] for x, y, z), or stepAngle, microsteps and pitch",
+                "missing: give steps per mm (80, or 80,80,400 for x, y, z), or stepAngle, microsteps and pitch",
             )),
             (None, _) => {
                 let missing = drive

@@ -73,7 +73,7 @@ pub const ACCELERATION: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: Some("10"),
-    doc: "Acceleration, mm/s²: one number for every axis or [x, y, z] (Grbl $120-$122; default Grbl's 10).",
+    doc: "Acceleration, mm/s²: one number for every axis, or x,y,z (Grbl $120-$122; default Grbl's 10).",
 };
 
 pub const MAX_RATE: OptionSpec = OptionSpec {
@@ -81,7 +81,7 @@ pub const MAX_RATE: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: Some("500"),
-    doc: "Top rate, mm/min: one number or [x, y, z]; also the rate of G0 (Grbl $110-$112; default Grbl's 500).",
+    doc: "Top rate, mm/min: one number, or x,y,z; also the rate of G0 (Grbl $110-$112; default Grbl's 500).",
 };
 
 pub const JUNCTION_DEVIATION: OptionSpec = OptionSpec {
@@ -97,7 +97,7 @@ pub const MAX_STEP_RATE: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
-    doc: "Fastest step rate the drivers take, steps/s: one number or [x, y, z]; a move that needs more is a warning.",
+    doc: "Fastest step rate the drivers take, steps/s: one number, or x,y,z; a move that needs more is a warning.",
 };
 
 /// The machine's motion limits.

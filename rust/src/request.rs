@@ -15,6 +15,17 @@ pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
 /// Hard limit on `maxSteps`: 2 bytes per step must fit in wasm32 memory.
 pub const MAX_STEPS_LIMIT: u64 = 1_000_000_000;
 
+/// What to do about a path or program that needs `at_least` steps, more than
+/// maxSteps allows: raise maxSteps when that can be enough, else shorten
+/// `what` (no maxSteps allows more than [`MAX_STEPS_LIMIT`]).
+pub fn too_long_advice(at_least: u64, what: &str) -> String {
+    if at_least > MAX_STEPS_LIMIT {
+        format!("that is more than any maxSteps allows ({MAX_STEPS_LIMIT}): shorten {what}")
+    } else {
+        format!("raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten {what}")
+    }
+}
+
 /// What a decision does when its discriminant is exactly zero, i.e. when the
 /// ideal path passes exactly half way between the two candidate cells.
 #[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]

@@ -12,13 +12,13 @@
 //! Index spaces: a *step index* k (0..steps) names the step from point k to
 //! point k + 1; a *point index* k (0..=steps) names the position after k steps.
 
-use crate::error::Error;
+use crate::error::{Error, Limit};
 use crate::figure::{DecisionFigure, FigureKind};
 use crate::grid::{MAX_AXES, Point, Step, displacement};
 use crate::ideal::info::IdealPathInfo;
 use crate::ideal::{IdealPath, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
-use crate::request::{MAX_STEPS_LIMIT, Request};
+use crate::request::{MAX_STEPS_LIMIT, Request, too_long_advice};
 use serde::Serialize;
 use std::cell::OnceCell;
 use std::sync::Arc;
@@ -554,10 +554,17 @@ impl TraceBuilder {
         Error::field(
             "maxSteps",
             format!(
-                "the path needs more than {} steps (at least {steps}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or shorten the move",
-                self.max_steps
+                "the path needs more than {} steps (at least {steps}); {}",
+                self.max_steps,
+                too_long_advice(steps, "the move")
             ),
         )
+        .with_limit(Limit {
+            option: "maxSteps".into(),
+            value: self.max_steps,
+            at_least: steps,
+            most: MAX_STEPS_LIMIT,
+        })
     }
 
     /// Appends a finished trace that starts where this one ends (a chord of

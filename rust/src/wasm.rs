@@ -21,7 +21,7 @@
 //! type as its return type (`unchecked_return_type`): the types the JS side
 //! reads are the Rust types, declared once.
 //! Errors are JS `Error` objects named `VoxpathError` with `field`, or
-//! `line` and `column`, set.
+//! `line` and `column`, set, and `limit` (a `Limit`) when a cap was met.
 
 use crate::error::{Error, Location};
 use crate::trace::Trace;
@@ -43,6 +43,9 @@ fn to_js_error(error: &Error) -> JsValue {
     set("detail", JsValue::from_str(&error.message));
     if let Some(axis) = error.axis {
         set("axis", JsValue::from(axis as u32));
+    }
+    if let Some(limit) = &error.limit {
+        set("limit", to_js(limit));
     }
     match &error.location {
         Location::Field(field) => set("field", JsValue::from_str(field)),

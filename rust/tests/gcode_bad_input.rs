@@ -18,6 +18,7 @@ fn first_error(source: &str, steps_per_mm: f64) -> (u32, u32, String) {
         line,
         column,
         message,
+        ..
     } = p
         .info
         .errors

@@ -7,9 +7,10 @@
 
 mod common;
 
-use voxpath::Error;
 use voxpath::arc::ArcSpec;
 use voxpath::arc::circle_saleem::SaleemCircle;
+use voxpath::gcode::{Settings, run};
+use voxpath::{Error, Limit};
 
 fn refusal(json: &str) -> Error {
     match voxpath::trace_json(json) {
@@ -18,11 +19,13 @@ fn refusal(json: &str) -> Error {
     }
 }
 
-/// The N of "... (at least N); ...".
+/// The N of "... (at least N); ...", which the error's limit carries too.
 fn at_least(e: &Error) -> u64 {
     assert_eq!(e.field_name(), Some("maxSteps"), "{e}");
     let tail = e.message.split("(at least ").nth(1).expect("a count");
-    tail[..tail.find(')').unwrap()].parse().unwrap()
+    let n = tail[..tail.find(')').unwrap()].parse().unwrap();
+    assert_eq!(e.limit.as_ref().map(|l| l.at_least), Some(n), "{e}");
+    n
 }
 
 #[test]
@@ -32,6 +35,66 @@ fn a_line_is_refused_from_its_length() {
         r#"{"algorithm":"regions","from":[-1073741824,0,0],"to":[1073741824,5,9],"maxSteps":1000000000}"#,
     );
     assert_eq!(at_least(&e), 1 << 31);
+    assert_eq!(
+        e.limit,
+        Some(Limit {
+            option: "maxSteps".into(),
+            value: 1_000_000_000,
+            at_least: 1 << 31,
+            most: 1_000_000_000,
+        })
+    );
+    // No maxSteps is enough, so raising it is not the advice.
+    assert!(
+        e.message
+            .ends_with("that is more than any maxSteps allows (1000000000): shorten the move"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_path_that_a_higher_max_steps_allows_is_told_to_raise_it() {
+    let e = refusal(r#"{"algorithm":"regions","from":[0,0,0],"to":[5000,1,1],"maxSteps":4000}"#);
+    assert_eq!(
+        e.limit,
+        Some(Limit {
+            option: "maxSteps".into(),
+            value: 4000,
+            at_least: 5000,
+            most: 1_000_000_000,
+        })
+    );
+    assert!(
+        e.message
+            .ends_with("raise maxSteps (up to 1000000000) or shorten the move"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_program_is_stopped_at_the_move_past_max_steps_with_what_the_program_needs() {
+    // 10 steps/mm: the first move is 100 steps, the second 200 (regions
+    // takes |Δx| steps), so the program needs at least 300 against 250.
+    let p = run(
+        "G1 X10 F600\nG1 X30\n",
+        Settings::from_json(r#"{"stepsPerMm": 10, "maxSteps": 250}"#).unwrap(),
+    );
+    let error = &p.info.errors[0];
+    assert_eq!((error.line, error.column), (2, 1));
+    assert_eq!(
+        error.limit,
+        Some(Limit {
+            option: "maxSteps".into(),
+            value: 250,
+            at_least: 300,
+            most: 1_000_000_000,
+        })
+    );
+    assert!(
+        error.message.contains("(at least 300)"),
+        "{}",
+        error.message
+    );
 }
 
 #[test]

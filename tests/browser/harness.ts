@@ -263,3 +263,18 @@ export async function screenshot(
   writeFileSync(file, png);
   return { ...imageStats(png, options), file };
 }
+
+/**
+ * The view's canvas alone (no HTML labels or legend over it), as the page's
+ * PNG export writes it: drawn and encoded in one task, since the canvas
+ * keeps no drawing buffer to read later. In an embedded page, which has no
+ * export button, the export is asked for through the same click.
+ */
+export async function canvasPng(page: Page): Promise<PNG> {
+  const downloading = page.waitForEvent('download');
+  await page.evaluate(() => document.querySelector<HTMLButtonElement>('[data-testid="export-png"]')!.click());
+  const download = await downloading;
+  const chunks: Buffer[] = [];
+  for await (const chunk of await download.createReadStream()) chunks.push(chunk as Buffer);
+  return PNG.sync.read(Buffer.concat(chunks));
+}

@@ -5,9 +5,12 @@
 // N = 2, -6, 6, -2, 10, ...; M_3 = 12 > 0 and N_3 = 6 > 0 put the line in
 // region d, and the third step goes to D = (3, 2, 2) (as Liu's Table 1).
 //
-// The README screenshot is the 'readme' one this file saves in
-// tests/browser/__screenshots__/actual/; refresh it with
+// The README screenshots are the readme* ones the browser tests save in
+// tests/browser/__screenshots__/actual/ (this file's, and embed.test.ts's
+// readme-embed); refresh them with
 //   cp tests/browser/__screenshots__/actual/readme.png docs/screenshot.png
+//   cp tests/browser/__screenshots__/actual/readme-gcode.png docs/gcode.png
+//   cp tests/browser/__screenshots__/actual/readme-embed.png docs/embed.png
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
 import { closeAll, openPage, screenshot, siteUrl } from './harness.js';
@@ -131,7 +134,7 @@ describe('the page', () => {
     await page.getByTestId('input-to-x').fill('2000000');
     const formError = page.getByTestId('form-error');
     await formError.filter({ hasText: 'maxSteps' }).waitFor();
-    expect(await formError.innerText()).toMatch(/^maxSteps: this page sets it to 1,500,000, so shorten the move \(the CLI and the API take more\)\. The core says: the path needs more than 1500000 steps/);
+    expect(await formError.innerText()).toMatch(/^This path needs at least 2,000,000 steps; the page draws at most 1,500,000 \(its maxSteps, fixed\)\./);
 
     await page.getByTestId('input-to-x').fill('12');
     await traced(page, 12);
@@ -164,6 +167,20 @@ describe('the page', () => {
     await traced(page, 3);
     expect(await page.getByTestId('input-to-y').inputValue()).toBe('2');
     expect(await page.getByTestId('input-from-x').inputValue()).toBe('1');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("saves the README screenshot of the G-code mode: the square sample at step 2000, line 5's", async () => {
+    // 1600 steps a side (20 mm at 80 steps/mm): steps 1601..3200 are line 5's (Y20).
+    const p = await openPage('?mode=gcode&stepsPerMm=80&step=2000');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 2000 of 6400' }).waitFor();
+    await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('5');
+    await page.getByTestId('moves-table').waitFor();
+    await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+    const stats = await screenshot(page, 'readme-gcode');
+    expect(stats).toMatchObject({ width: 1280, height: 720 });
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -8,6 +8,7 @@
  */
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
+import { placeReferenceLabels } from './reference-labels.js';
 
 /** Chart height by default, CSS pixels, plot area and axes (the legend is extra). */
 const HEIGHT_PX = 170;
@@ -74,19 +75,27 @@ export class StepChart {
             ctx.save();
             ctx.lineWidth = 1.5 * devicePixelRatio;
             ctx.setLineDash([6 * devicePixelRatio, 4 * devicePixelRatio]);
-            for (const r of references) {
-              const y = Math.round(u.valToPos(r.value, 'y', true));
+            ctx.font = `${11 * devicePixelRatio}px system-ui, sans-serif`;
+            const lineYs = references.map((r) => Math.round(u.valToPos(r.value, 'y', true)));
+            const baselines = placeReferenceLabels(
+              references.map((r, i) => ({ lineY: lineYs[i]!, width: ctx.measureText(r.label).width, atRight: r.labelAtRight ?? false })),
+              u.bbox,
+              11 * devicePixelRatio,
+              4 * devicePixelRatio,
+              4 * devicePixelRatio,
+            );
+            references.forEach((r, i) => {
+              const y = lineYs[i]!;
               ctx.strokeStyle = r.colour;
               ctx.beginPath();
               ctx.moveTo(u.bbox.left, y);
               ctx.lineTo(u.bbox.left + u.bbox.width, y);
               ctx.stroke();
               ctx.fillStyle = r.colour;
-              ctx.font = `${11 * devicePixelRatio}px system-ui, sans-serif`;
               ctx.textAlign = r.labelAtRight ? 'right' : 'left';
               const labelX = r.labelAtRight ? u.bbox.left + u.bbox.width - 4 * devicePixelRatio : u.bbox.left + 4 * devicePixelRatio;
-              ctx.fillText(r.label, labelX, y - 4 * devicePixelRatio);
-            }
+              ctx.fillText(r.label, labelX, baselines[i]!);
+            });
             ctx.setLineDash([]);
             const x = Math.round(u.valToPos(this.#cursorX, 'x', true));
             ctx.strokeStyle = CURSOR_COLOUR;

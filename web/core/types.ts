@@ -41,6 +41,7 @@ export type {
   FaceSegment,
   Family,
   FigureKind,
+  Limit,
   Metrics,
   OptionKind,
   OptionSpec,

@@ -11,7 +11,6 @@ import {
   COMPARE_LAYOUTS,
   type Mode,
   type OptionValue,
-  PAGE_OPTIONS,
   axisChoices,
   axisCount,
   comparableWith,
@@ -27,6 +26,7 @@ import {
 import type { Store } from '../state/store.js';
 import type { InputError } from '../worker/protocol.js';
 import { OptionsForm, element } from './options-form.js';
+import { pathLimitAdvice } from './page-advice.js';
 
 export interface AlgorithmInputElements {
   algorithm: HTMLSelectElement;
@@ -127,12 +127,11 @@ export class AlgorithmInputs {
 
   /**
    * Shows the core's verdict on the last request: beside the option it
-   * names, or under the form. An option the page sets itself has no field
-   * to fix, so the message says that the page set it and to what.
+   * names, or under the form. A cap the page sets itself (maxSteps) has no
+   * field to fix, so the page says what can be done here instead.
    */
   showCoreError(error: InputError | undefined): void {
-    const pageValue = error?.field === undefined ? undefined : PAGE_OPTIONS[error.field];
-    const shown = error && pageValue !== undefined ? { ...error, message: `this page sets it to ${pageValue.toLocaleString('en')}, so shorten the move (the CLI and the API take more). The core says: ${error.message}` } : error;
+    const shown = error?.limit ? { message: pathLimitAdvice(error.limit) } : error;
     if (this.#form) this.#form.showCoreError(shown);
     else this.#e.formError.textContent = shown ? shown.message : '';
   }

@@ -1,6 +1,7 @@
 /**
  * G-code mode: the editor (a textarea with line numbers and two line marks),
- * the sample programs, the machine's settings, the run's progress with
+ * the program's errors and warnings marked where it is edited (in the gutter,
+ * the error's line tinted, and said above the editor), the sample programs, the machine's settings, the run's progress with
  * Cancel, the program's diagnostics and its move list. Sync goes both ways
  * through the program the worker holds:
  * - picking a line (the editor's cursor, a move or a diagnostic) asks which
@@ -17,6 +18,7 @@
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
+import { diagnosticText } from '../form/page-advice.js';
 import { formatPoint } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
@@ -43,6 +45,8 @@ export interface GcodePanelElements {
   longNote: HTMLElement;
   editAnyway: HTMLButtonElement;
   gutter: HTMLElement;
+  /** Above the editor: the program's error (and how many warnings), each with a way to its line. */
+  problems: HTMLElement;
   backdrop: HTMLElement;
   machine: HTMLElement;
   formError: HTMLElement;
@@ -72,8 +76,15 @@ export class GcodePanel {
   readonly #machineForm: OptionsForm;
   readonly #currentMark: HTMLElement;
   readonly #pickedMark: HTMLElement;
+  /** The line of the program's error (a run stops at its first). */
+  readonly #errorMark: HTMLElement;
+  /** Lines with a diagnostic of the program on screen, marked in the gutter: an error wins over a warning. */
+  #diagnosticLines = new Map<number, 'error' | 'warning'>();
   /** Called with the steps of a picked line, to highlight them and move the step there. */
   readonly #onPick: (line: number, steps: LineSteps) => void;
+  /** Called with the decision columns of the current step's algorithm (undefined: no step, so all), for the inspector to show those only. */
+  readonly #onColumns: (names: ReadonlySet<string> | undefined) => void;
+  readonly #catalogue: Catalogue;
   #program: RemoteProgram | undefined;
   #pickedLine: number | undefined;
   #currentLine: number | undefined;
@@ -93,15 +104,24 @@ export class GcodePanel {
   readonly #listingLines: HTMLElement;
   readonly #listingSpacer: HTMLElement;
 
-  constructor(elements: GcodePanelElements, catalogue: Catalogue, store: Store<AppState>, events: { onPick(line: number, steps: LineSteps): void; onRun(): void; onCancel(): void }) {
+  constructor(
+    elements: GcodePanelElements,
+    catalogue: Catalogue,
+    store: Store<AppState>,
+    events: { onPick(line: number, steps: LineSteps): void; onColumns(names: ReadonlySet<string> | undefined): void; onRun(): void; onCancel(): void },
+  ) {
     this.#e = elements;
     this.#store = store;
+    this.#catalogue = catalogue;
     this.#onPick = events.onPick;
+    this.#onColumns = events.onColumns;
     this.#currentMark = element('div', { className: 'line-mark current' });
     this.#currentMark.dataset.testid = 'gcode-current-line';
     this.#pickedMark = element('div', { className: 'line-mark picked' });
     this.#pickedMark.dataset.testid = 'gcode-picked-line';
-    elements.backdrop.append(this.#currentMark, this.#pickedMark);
+    this.#errorMark = element('div', { className: 'line-mark error' });
+    this.#errorMark.dataset.testid = 'gcode-error-line';
+    elements.backdrop.append(this.#errorMark, this.#currentMark, this.#pickedMark);
     this.#gutterLines = element('span', { className: 'gutter-lines' });
     elements.gutter.replaceChildren(this.#gutterLines);
 
@@ -235,9 +255,19 @@ export class GcodePanel {
     const scroller = this.#scroller;
     const first = Math.floor(scroller.scrollTop / this.#lineHeightPx);
     const last = Math.min(this.#lineCount, first + Math.ceil(scroller.clientHeight / this.#lineHeightPx) + 1);
-    const numbers: number[] = [];
-    for (let line = first + 1; line <= last; line++) numbers.push(line);
-    this.#gutterLines.textContent = numbers.join('\n');
+    const numbers: (string | HTMLElement)[] = [];
+    for (let line = first + 1; line <= last; line++) {
+      const kind = this.#diagnosticLines.get(line);
+      if (line > first + 1) numbers.push('\n');
+      if (!kind) {
+        numbers.push(String(line));
+        continue;
+      }
+      const marked = element('span', { className: `gutter-${kind}`, textContent: String(line), title: `${kind} on line ${line}` });
+      marked.dataset.testid = `gutter-${kind}`;
+      numbers.push(marked);
+    }
+    this.#gutterLines.replaceChildren(...numbers);
     this.#gutterLines.style.transform = `translateY(${first * this.#lineHeightPx - scroller.scrollTop}px)`;
     if (this.#listed) {
       // Lines first + 1..last, without the last one's line break.
@@ -251,6 +281,9 @@ export class GcodePanel {
     const scroller = this.#scroller;
     this.#renderGutter();
     const top = (line: number | undefined) => (line === undefined ? -1e6 : (line - 1) * this.#lineHeightPx - scroller.scrollTop + this.#paddingTopPx);
+    const errorLine = this.#program?.program.errors[0]?.line;
+    this.#errorMark.style.transform = `translateY(${top(errorLine)}px)`;
+    this.#errorMark.dataset.line = String(errorLine ?? '');
     this.#currentMark.style.transform = `translateY(${top(this.#currentLine)}px)`;
     this.#pickedMark.style.transform = `translateY(${top(this.#pickedLine)}px)`;
     this.#currentMark.dataset.line = String(this.#currentLine ?? '');
@@ -273,8 +306,37 @@ export class GcodePanel {
     this.#program = program;
     this.#currentLine = undefined;
     this.#pickedLine = undefined;
+    const { errors = [], warnings = [] } = program?.program ?? {};
+    this.#diagnosticLines = new Map([...warnings.map((d) => [d.line, 'warning'] as const), ...errors.map((d) => [d.line, 'error'] as const)]);
     this.#placeMarks();
     this.#e.moves.replaceChildren(...(program ? [this.#diagnostics(program)] : []));
+    this.#showProblems(program);
+  }
+
+  /** Above the editor: the error the run stopped at, and how many warnings, each a link to its line. */
+  #showProblems(program: RemoteProgram | undefined): void {
+    const { problems, text } = this.#e;
+    const record = program?.program;
+    const parts: HTMLElement[] = [];
+    const go = (line: number, label: string) => {
+      const button = element('button', { type: 'button', className: 'link', textContent: label });
+      button.addEventListener('click', () => this.#goToLine(line));
+      return button;
+    };
+    const error = record?.errors[0];
+    if (error) {
+      const p = element('p', { className: 'gcode-error' }, go(error.line, `Line ${error.line}:${error.column}`), `: ${diagnosticText(error)} The run stopped there.`);
+      p.dataset.testid = 'gcode-error';
+      parts.push(p);
+    }
+    const warnings = record ? record.warnings.length + record.warningsOmitted : 0;
+    if (record && warnings > 0) {
+      const first = record.warnings[0]!;
+      parts.push(element('p', { className: 'gcode-warning' }, `${warnings} ${warnings === 1 ? 'warning' : 'warnings'}, listed under Moves; the first: `, go(first.line, `line ${first.line}:${first.column}`), `: ${first.message}`));
+    }
+    problems.replaceChildren(...parts);
+    problems.hidden = parts.length === 0;
+    text.setAttribute('aria-invalid', String(error !== undefined));
   }
 
   #diagnostics(program: RemoteProgram): HTMLElement {
@@ -283,7 +345,7 @@ export class GcodePanel {
     const item = (kind: string, d: GcodeDiagnostic) => {
       const go = element('button', { type: 'button', className: 'link', textContent: `line ${d.line}:${d.column}` });
       go.addEventListener('click', () => this.#goToLine(d.line));
-      return element('li', { className: kind }, element('span', { textContent: `${kind} ` }), go, ` ${d.message}`);
+      return element('li', { className: kind }, element('span', { textContent: `${kind} ` }), go, ` ${diagnosticText(d)}`);
     };
     list.append(...program.program.errors.map((d) => item('error', d)), ...program.program.warnings.map((d) => item('warning', d)));
     if (program.program.warningsOmitted > 0) list.append(element('li', { textContent: `and ${program.program.warningsOmitted} more warnings` }));
@@ -314,6 +376,9 @@ export class GcodePanel {
     const from = Math.max(0, Math.min(moveIndex - (MOVES_SHOWN >> 1), program.program.moveCount - MOVES_SHOWN));
     const moves = await program.moves(from, from + MOVES_SHOWN);
     if (request !== this.#stepRequest || program !== this.#program) return;
+    // A program's trace has the columns of every algorithm it ran: the step's own are the ones that mean something here.
+    const algorithm = this.#catalogue.algorithms.find((a) => a.id === moves[moveIndex - from]?.algorithm);
+    this.#onColumns(algorithm && new Set(algorithm.columns.map((c) => c.name)));
     this.#currentLine = line;
     const scroller = this.#scroller;
     const top = (line - 1) * this.#lineHeightPx;

@@ -74,6 +74,11 @@ export class Inspector {
     this.showPoint(pointIndex);
   }
 
+  /** Shows the decision cards of the columns in `names` only (a G-code step's own algorithm's), or all of them (undefined). */
+  showColumns(names: ReadonlySet<string> | undefined): void {
+    for (const [name, cell] of this.#cells) cell.parentElement!.hidden = names !== undefined && !names.has(name);
+  }
+
   /** Shows point index `pointIndex` at once from the trace's points; its detail follows (showDetail). */
   showPoint(pointIndex: number): void {
     const trace = this.#trace;

@@ -14,7 +14,7 @@
 import type { PathCharts } from '../charts/path-charts.js';
 import type { ComparePanel } from '../compare/compare-panel.js';
 import type { StepDetail } from '../core/types.js';
-import { renderExperiment } from '../experiment/experiment-panel.js';
+import type { ExperimentPanel } from '../experiment/experiment-panel.js';
 import type { AlgorithmInputs } from '../form/algorithm-inputs.js';
 import type { OptionsForm } from '../form/options-form.js';
 import type { GcodePanel } from '../gcode/gcode-panel.js';
@@ -24,7 +24,9 @@ import { PointDetails } from '../inspector/point-details.js';
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
 import { type AppState, type Catalogue, type Mode, tracedAlgorithms, traceOptions } from '../state/app-state.js';
+import { markStale } from '../state/stale.js';
 import type { Store } from '../state/store.js';
+import type { StepReason } from '../timeline/step-reason.js';
 import type { TimeViews } from './time-views.js';
 import type { Timeline } from '../timeline/timeline.js';
 import { Cancelled, CoreCrash, InputRejected, type RemoteProgram, type Running, type TraceClient } from '../worker/client.js';
@@ -63,7 +65,11 @@ export interface PageParts {
   comparePanel: ComparePanel;
   timing: TimingDiagram;
   timeViews: TimeViews;
-  experimentView: HTMLElement;
+  experimentPanel: ExperimentPanel;
+  /** The current step's reason under the timeline (where the inspector is out of sight). */
+  stepReason: StepReason;
+  /** Says when the results on screen are not of the inputs shown. */
+  staleNote: HTMLElement;
   inspectorHeading: HTMLElement;
 }
 
@@ -137,6 +143,7 @@ export class Orchestrator {
     p.views.show(this.#shown, pointIndex);
     p.views.setHandles(this.#handles());
     p.inspector.setTrace(main, mainPoint);
+    p.stepReason.setTraces(state.mode === 'compare' ? [a, b] : [main], pointIndex);
     this.#details.setTrace(main, mainPoint);
     void p.charts.setTrace(main);
     p.comparePanel.show(a, b, difference);
@@ -195,16 +202,19 @@ export class Orchestrator {
       p.inputs.showCoreError(undefined);
       p.gcodePanel.showCoreError(undefined);
       p.experimentForm.showCoreError(undefined);
+      markStale(p.staleNote, undefined);
       this.#freeShown();
       this.#shown = next;
-      if (next.experiment) renderExperiment(p.experimentView, next.experiment);
+      if (next.experiment) p.experimentPanel.show(next.experiment);
       else this.#present();
       p.status.shown(next);
     } catch (error) {
       if (run !== this.#latestRun || error instanceof CoreCrash) return;
       if (error instanceof Cancelled) {
         p.status.cancelled();
+        if (this.#shown.program) markStale(p.staleNote, 'cancelled');
       } else if (error instanceof InputRejected) {
+        if (Object.keys(this.#shown).length > 0) markStale(p.staleNote, 'rejected');
         if (state.mode === 'gcode') p.gcodePanel.showCoreError(error);
         else if (state.mode === 'experiment') p.experimentForm.showCoreError(error);
         else p.inputs.showCoreError(error);
@@ -267,6 +277,7 @@ export class Orchestrator {
       p.inspector.showPoint(Math.min(pointIndex, main.steps));
       this.#details.show(Math.min(pointIndex, main.steps));
     }
+    p.stepReason.show(pointIndex);
     p.charts.showPoint(pointIndex);
     p.timing.showPoint(pointIndex);
     p.timeViews.showPoint(pointIndex);

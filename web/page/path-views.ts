@@ -39,6 +39,11 @@ export class PathViews {
   readonly #store: Store<AppState>;
   /** Where the views' camera moves and handle drags go: into the state. */
   readonly events: SceneCallbacks;
+
+  /** Both views (the second only once made): for what applies to each alike, such as following the current cell. */
+  get scenes(): readonly (SceneView | undefined)[] {
+    return [this.#main, this.#second];
+  }
   /** The shown point's detail, whose decision the overlay draws. */
   #detail: StepDetail | undefined;
 
@@ -70,7 +75,7 @@ export class PathViews {
     this.#main.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
     if (state.mode === 'compare' && !side) this.#main.setSecond(b);
     if (side) {
-      this.#second ??= new SceneView(this.#e.secondViewport, this.events, 'second path view');
+      this.#second ??= new SceneView(this.#e.secondViewport, this.events, 'second path view', PALETTE.second);
       this.#second.setTrace(b, Math.min(pointIndex, b?.steps ?? 0), state.projection, state.camera);
     } else {
       this.#second?.setTrace(undefined, 0, state.projection, null);

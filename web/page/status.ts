@@ -4,6 +4,7 @@
  * a program's lines, moves and stop), and why nothing was traced.
  */
 import type { GcodeProgress } from '../core/index.js';
+import { diagnosticText } from '../form/page-advice.js';
 import { formatPoint } from '../format.js';
 import type { Mode } from '../state/app-state.js';
 import type { RemoteTrace } from '../worker/client.js';
@@ -26,7 +27,7 @@ export function traceStatus(trace: RemoteTrace): string {
 export function programStatus(p: ProgramRecord): string {
   return (
     `${p.lines} lines, ${p.moveCount} moves, ${p.steps} steps at ${p.stepsPerMm.join(' / ')} steps/mm` +
-    `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${p.errors[0]!.message}` : ''}` +
+    `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${diagnosticText(p.errors[0]!)}` : ''}` +
     `${p.warnings.length ? `; ${p.warnings.length + p.warningsOmitted} warnings` : ''}.`
   );
 }

@@ -77,6 +77,21 @@ void main() {
   gl_PointSize = clamp(cellSize * projectionMatrix[1][1] * halfHeightPx * perspective, 2.0, 64.0);
 }`;
 
+/** A cube's 12 edges per cell, unshaded: the outline of a highlighted cell, in its colour exactly. */
+const EDGE_VERTEX = /* glsl */ `
+precision highp float;
+precision highp int;
+uniform mat4 modelViewMatrix;
+uniform mat4 projectionMatrix;
+uniform float cellSize;
+in vec3 position;
+in ivec3 cell;
+out float shade;
+void main() {
+  shade = 1.0;
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position * cellSize + vec3(cell), 1.0);
+}`;
+
 const FRAGMENT = /* glsl */ `
 precision highp float;
 uniform vec3 colour;
@@ -93,7 +108,18 @@ export interface CellStyle {
   cellSize: number;
   /** 1 opaque; below 1 drawn blended, without writing depth, after opaque things. */
   opacity: number;
+  /** Cubes only: each cube's edges drawn too, opaque, in the colour itself (a highlight reads in its legend colour over whatever it surrounds). */
+  outline?: boolean;
+  /**
+   * Drawn over everything drawn before it, depth or not, after the blended
+   * cells: the second path of an overlaid comparison, whose smaller cells
+   * sit inside the first path's.
+   */
+  onTop?: boolean;
 }
+
+/** Draw order of cells drawn on top: after blended cells (1), before the ideal path (2), which stays over them. */
+const ON_TOP_ORDER = 1.5;
 
 /** Uniforms shared by every cell drawing; halfHeightPx is updated on resize. */
 export const cellUniforms = { halfHeightPx: { value: 300 } };
@@ -111,12 +137,14 @@ function material(style: CellStyle, vertexShader: string): THREE.RawShaderMateri
       halfHeightPx: cellUniforms.halfHeightPx,
     },
     transparent,
-    depthWrite: !transparent,
+    depthWrite: !transparent && !style.onTop,
+    depthTest: !style.onTop,
   });
 }
 
-/** Box vertices and normals, shared by every cube drawing. */
+/** Box vertices and normals, shared by every cube drawing, and its edges, by every outline. */
 const UNIT_BOX = new THREE.BoxGeometry(1, 1, 1);
+const UNIT_EDGES = new THREE.EdgesGeometry(UNIT_BOX);
 
 /**
  * A run of cells, drawn from the start of `points` (cubes) or over any
@@ -126,6 +154,8 @@ export class Cells extends THREE.Group {
   readonly #object: THREE.Mesh | THREE.Points;
   readonly #geometry: THREE.BufferGeometry;
   readonly #material: THREE.RawShaderMaterial;
+  /** The cubes' edges, when outlined. */
+  readonly #edges: THREE.LineSegments<THREE.InstancedBufferGeometry, THREE.RawShaderMaterial> | undefined;
   readonly light: boolean;
   /** How many cells `points` holds. */
   readonly count: number;
@@ -151,12 +181,22 @@ export class Cells extends THREE.Group {
       this.#geometry = geometry;
       this.#material = material(style, CUBE_VERTEX);
       this.#object = new THREE.Mesh(this.#geometry, this.#material);
+      if (style.outline) {
+        const edges = new THREE.InstancedBufferGeometry();
+        edges.setAttribute('position', UNIT_EDGES.getAttribute('position'));
+        edges.setAttribute('cell', cells);
+        edges.instanceCount = this.count;
+        edges.boundingBox = bounds.clone();
+        edges.boundingSphere = bounds.getBoundingSphere(new THREE.Sphere());
+        this.#edges = new THREE.LineSegments(edges, material({ ...style, opacity: 1 }, EDGE_VERTEX));
+        this.add(this.#edges);
+      }
     }
     // Bounds from the path's box, not from a scan of a million cells.
     this.#geometry.boundingBox = bounds.clone();
     this.#geometry.boundingSphere = bounds.getBoundingSphere(new THREE.Sphere());
     // Faint cells blend over what is behind them, so they come after the opaque ones.
-    this.#object.renderOrder = style.opacity < 1 ? 1 : 0;
+    this.#object.renderOrder = style.onTop ? ON_TOP_ORDER : style.opacity < 1 ? 1 : 0;
     this.add(this.#object);
   }
 
@@ -170,11 +210,17 @@ export class Cells extends THREE.Group {
     if (this.light) this.#geometry.setDrawRange(first, count);
     else (this.#geometry as THREE.InstancedBufferGeometry).instanceCount = count;
     this.#object.visible = count > 0;
+    if (this.#edges) {
+      this.#edges.geometry.instanceCount = count;
+      this.#edges.visible = count > 0;
+    }
   }
 
   dispose(): void {
-    // The box's own buffers are shared (UNIT_BOX); only this drawing's are released.
+    // The box's own buffers are shared (UNIT_BOX, UNIT_EDGES); only this drawing's are released.
     this.#geometry.dispose();
     this.#material.dispose();
+    this.#edges?.geometry.dispose();
+    this.#edges?.material.dispose();
   }
 }

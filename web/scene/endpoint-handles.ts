@@ -5,6 +5,10 @@
  * move it up and down; in the view's plane in 2D), or focus it and press the
  * arrow keys (x and y) and Page Up / Page Down (z). The point moves on the
  * grid, one unit at a time.
+ *
+ * A point outside the view (say a `to` the core rejected as too far) keeps
+ * its handle at the view's edge, toward the point and marked as pinned
+ * there, so it can still be seen and dragged back.
  */
 import * as THREE from 'three';
 import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
@@ -22,6 +26,9 @@ interface Placed {
   button: HTMLButtonElement;
   point: number[];
 }
+
+/** How far from the view's center a pinned handle sits, in normalized device coordinates (1 is the edge). */
+const PIN_EDGE = 0.9;
 
 /** The letter on each point's handle. */
 const HANDLE_LETTERS: Record<string, string> = { from: 'S', to: 'E', center: 'c' };
@@ -93,6 +100,31 @@ export class EndpointHandles {
     this.#scene.add(object);
     this.#placed.set(name, placed);
     return placed;
+  }
+
+  /**
+   * Before each frame: a handle whose point is outside the view seen by
+   * `camera` is drawn at the view's edge toward it, `target` (the orbit
+   * center) giving the depth.
+   */
+  pinToView(camera: THREE.Camera, target: THREE.Vector3): void {
+    const depth = target.clone().project(camera).z;
+    for (const placed of this.#placed.values()) {
+      const point = new THREE.Vector3(placed.point[0] ?? 0, placed.point[1] ?? 0, placed.point[2] ?? 0);
+      const eye = point.clone().applyMatrix4(camera.matrixWorldInverse);
+      const ndc = point.clone().project(camera);
+      // Behind a perspective camera the projection mirrors: the point lies the other way.
+      if (camera instanceof THREE.PerspectiveCamera && eye.z > 0) ndc.multiplyScalar(-1);
+      const reach = Math.max(Math.abs(ndc.x), Math.abs(ndc.y));
+      const outside = reach > 1 || (camera instanceof THREE.PerspectiveCamera && eye.z > 0) || !(Math.abs(ndc.z) <= 1);
+      if (outside) {
+        const scale = PIN_EDGE / Math.max(reach, 1e-9);
+        placed.object.position.set(ndc.x * scale, ndc.y * scale, depth).unproject(camera);
+      } else {
+        placed.object.position.copy(point);
+      }
+      placed.button.classList.toggle('pinned', outside);
+    }
   }
 
   #place(name: string, placed: Placed, point: number[]): void {

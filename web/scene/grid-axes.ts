@@ -3,7 +3,13 @@
  * boundaries (half-integers), on the floor in 3D and in the path's plane
  * behind it in 2D (the pixel grid), x, y, z axes from the near corner of the
  * path's bounding box, and tick labels at integer coordinates (cell centers),
- * so a cell's position can be read off the picture.
+ * so a cell's position can be read off the picture. A machine's grid (a
+ * G-code program) is labelled in mm, with the step each tick is at beside it,
+ * as its move list counts mm.
+ *
+ * The grid reaches past the path by a margin and is drawn first, never
+ * hiding anything: a path along its border (the square sample's) stands out
+ * on it rather than vanishing into its lines.
  */
 import * as THREE from 'three';
 import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
@@ -11,15 +17,34 @@ import { AXIS_NAMES } from '../format.js';
 import { PALETTE } from './palette.js';
 
 /** At most this many tick labels per axis; longer axes label every 2nd, 5th, 10th... coordinate. */
-const MAX_TICKS = 12;
-/** At most this many grid lines per direction, for the same reason. */
-const MAX_GRID_LINES = 120;
+const MAX_TICKS = 8;
+/** Fewer for mm ticks, each wider with its step beside it. */
+const MAX_MM_TICKS = 6;
+/**
+ * Where each axis's tick labels hang from their point (CSS2DObject.center):
+ * x's below it, y's to its right, z's to its left, so each reads away from
+ * the box and from the other axes' labels at the shared corners.
+ */
+const TICK_ANCHORS = [new THREE.Vector2(0.5, 0), new THREE.Vector2(0, 0.5), new THREE.Vector2(1, 0.5)];
+/** At most this many grid lines per direction: a pixel grid up to this size, a lighter reference beyond. */
+const MAX_GRID_LINES = 48;
+/** The grid's margin around the path, as a share of its largest extent (at least one line's spacing). */
+const GRID_MARGIN_SHARE = 0.06;
+/** How far each axis arrow reaches past the path: grid units, and a share of its largest extent, so its name stays clear of the last tick. */
+const AXIS_REACH = 1.2;
+const AXIS_REACH_SHARE = 0.09;
+const TICK_PAD_SHARE = 0.035;
 
-/** The smallest of 1, 2, 5, 10, 20, 50... that splits `extent` into at most `parts`. */
-function niceStep(extent: number, parts: number): number {
-  for (let decade = 1; ; decade *= 10) {
-    for (const m of [1, 2, 5]) if (extent / (m * decade) <= parts) return m * decade;
-  }
+/** The smallest of 1, 2 or 5 times a power of ten (fractions too) that splits `extent` into at most `parts`. */
+export function niceStep(extent: number, parts: number): number {
+  const rough = Math.max(extent, Number.MIN_VALUE) / parts;
+  const decade = 10 ** Math.floor(Math.log10(rough));
+  return [1, 2, 5, 10].map((m) => m * decade).find((step) => step >= rough * (1 - 1e-12))!;
+}
+
+/** `value` as a tick prints it: no more decimals than the tick spacing `step` has. */
+function tickText(value: number, step: number): string {
+  return String(Number(value.toFixed(Math.max(0, -Math.floor(Math.log10(step))))));
 }
 
 /** A text label at `position` in the scene, an HTML element drawn by the view's label layer. */
@@ -35,46 +60,91 @@ export function sceneLabel(text: string, className: string, position: THREE.Vect
 /** Which side of the cells the 2D grid lies on, per plane normal: away from the 2D camera (scene-view's PLANE_VIEWS). */
 const FAR_SIDE: Record<number, 'min' | 'max'> = { 0: 'min', 1: 'max', 2: 'min' };
 
+/** Rough widths of a tick's characters, CSS pixels (12 px digits, 10 px for the steps beside mm): enough to keep a label inside the view when framing. */
+const TICK_CHAR_PX = 7;
+const STEPS_CHAR_PX = 6;
+
 export class GridAxes extends THREE.Group {
   #grid: THREE.LineSegments | undefined;
+  /**
+   * How far the tick labels reach out sideways from their points, CSS
+   * pixels: y's to the right of the floor, z's to the left of its axis. The
+   * view's framing keeps that much room at its sides.
+   */
+  readonly labelRoomPx = { left: 0, right: 0 };
 
   /**
    * `min` and `max`: the smallest and largest grid coordinate of the path on
-   * each axis (3 axes); `axes`: how many axes to draw (2 leaves out z).
+   * each axis (3 axes); `axes`: how many axes to draw (2 leaves out z);
+   * `stepsPerMm`: per axis, for a machine's grid labelled in mm.
    */
-  constructor(min: THREE.Vector3, max: THREE.Vector3, axes: number) {
+  constructor(min: THREE.Vector3, max: THREE.Vector3, axes: number, stepsPerMm?: readonly number[]) {
     super();
     // The corner of the bounding box of the cells, not of their centers.
     const corner = min.clone().subScalar(0.5);
     const size = max.clone().sub(min).addScalar(1);
     const floor = corner.z;
+    const largest = Math.max(size.x, size.y, size.z);
+    const reach = Math.max(AXIS_REACH, AXIS_REACH_SHARE * largest);
+    // The ticks' distance from the box, grid units: a few pixels when framed, however large the path.
+    const pad = Math.max(0.6, TICK_PAD_SHARE * largest);
 
-    const reach = 1.2;
     const directions = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)].slice(0, axes);
     directions.forEach((direction, axis) => {
       const length = size.getComponent(axis) + reach;
-      this.add(new THREE.ArrowHelper(direction, corner, length, PALETTE.axis, 0.45, 0.25));
-      const tip = corner.clone().addScaledVector(direction, length + 0.45);
+      this.add(new THREE.ArrowHelper(direction, corner, length, PALETTE.axis, 0.375 * reach, 0.21 * reach));
+      const tip = corner.clone().addScaledVector(direction, length + 0.375 * reach);
       this.add(sceneLabel(AXIS_NAMES[axis]!, 'scene-label axis-name', tip));
       // Ticks sit just outside the box: x along the front edge, z beside its
       // axis, y along the far-x edge of the floor, away from z's ticks.
       const base = [
-        new THREE.Vector3(0, corner.y - 0.6, floor),
-        new THREE.Vector3(corner.x + size.x + 0.6, 0, floor),
-        new THREE.Vector3(corner.x - 0.45, corner.y - 0.45, 0),
+        new THREE.Vector3(0, corner.y - pad, floor),
+        new THREE.Vector3(corner.x + size.x + pad, 0, floor),
+        new THREE.Vector3(corner.x - 0.75 * pad, corner.y - 0.75 * pad, 0),
       ][axis]!;
-      const step = niceStep(size.getComponent(axis), MAX_TICKS);
-      const first = Math.ceil(min.getComponent(axis) / step) * step;
-      for (let c = first; c <= max.getComponent(axis); c += step) {
-        this.add(sceneLabel(String(c), 'scene-label tick', base.clone().setComponent(axis, c)));
+      const [low, high] = [min.getComponent(axis), max.getComponent(axis)];
+      // y and z start at a corner of the box that x's ticks already label, beside x's own labels: their first tick is left out there.
+      const shown = (c: number) => axis === 0 || c > low;
+      const perMm = stepsPerMm?.[axis];
+      if (perMm) {
+        // Ticks at round mm, each at the step its mm rounds to (the machine's round(mm × steps/mm)).
+        const step = niceStep((high - low + 1) / perMm, MAX_MM_TICKS);
+        for (let k = Math.ceil(low / perMm / step); k * step * perMm <= high + 1e-9; k++) {
+          const mm = k * step;
+          if (!shown(mm * perMm)) continue;
+          const text = `${tickText(mm, step)} mm`;
+          const label = sceneLabel(text, 'scene-label tick', base.clone().setComponent(axis, mm * perMm));
+          label.center.copy(TICK_ANCHORS[axis]!);
+          const steps = document.createElement('span');
+          steps.className = 'tick-steps';
+          steps.textContent = String(Math.round(mm * perMm));
+          label.element.append(steps);
+          this.add(label);
+          this.#reach(axis, text.length * TICK_CHAR_PX + (steps.textContent.length + 1) * STEPS_CHAR_PX);
+        }
+      } else {
+        const step = Math.max(1, niceStep(size.getComponent(axis), MAX_TICKS));
+        for (let c = Math.ceil(low / step) * step; c <= high; c += step) {
+          if (!shown(c)) continue;
+          const label = sceneLabel(String(c), 'scene-label tick', base.clone().setComponent(axis, c));
+          label.center.copy(TICK_ANCHORS[axis]!);
+          this.add(label);
+          this.#reach(axis, String(c).length * TICK_CHAR_PX);
+        }
       }
     });
+  }
+
+  /** Notes a tick label `widthPx` wide on `axis`: y's reach right, z's left, x's hang below. */
+  #reach(axis: number, widthPx: number): void {
+    if (axis === 1) this.labelRoomPx.right = Math.max(this.labelRoomPx.right, widthPx);
+    if (axis === 2) this.labelRoomPx.left = Math.max(this.labelRoomPx.left, widthPx);
   }
 
   /**
    * Draws the grid in the plane normal to axis `normal` (2 = the floor),
    * through the far side of `bounds` (the cells' box), its lines on the cell
-   * boundaries.
+   * boundaries, a margin around the cells.
    */
   setGridPlane(normal: number, bounds: THREE.Box3): void {
     if (this.#grid) {
@@ -84,6 +154,15 @@ export class GridAxes extends THREE.Group {
     }
     const [u, v] = [0, 1, 2].filter((a) => a !== normal) as [number, number];
     const size = bounds.getSize(new THREE.Vector3());
+    const largest = Math.max(size.getComponent(u), size.getComponent(v));
+    const step = Math.max(1, niceStep(largest * (1 + 2 * GRID_MARGIN_SHARE), MAX_GRID_LINES));
+    // Whole steps of the grid, so its lines stay on cell boundaries.
+    const margin = step * Math.ceil((GRID_MARGIN_SHARE * largest) / step);
+    const area = bounds.clone();
+    for (const a of [u, v]) {
+      area.min.setComponent(a, bounds.min.getComponent(a) - margin);
+      area.max.setComponent(a, bounds.max.getComponent(a) + margin);
+    }
     const level = (FAR_SIDE[normal] === 'min' ? bounds.min : bounds.max).getComponent(normal);
     const grid: number[] = [];
     const line = (a: THREE.Vector3, b: THREE.Vector3) => grid.push(a.x, a.y, a.z, b.x, b.y, b.z);
@@ -91,17 +170,16 @@ export class GridAxes extends THREE.Group {
       [u, v],
       [v, u],
     ] as const) {
-      const step = niceStep(size.getComponent(along), MAX_GRID_LINES);
-      for (let t = 0; t <= size.getComponent(along) + 1e-9; t += step) {
-        const a = bounds.min.clone().setComponent(normal, level);
-        a.setComponent(along, bounds.min.getComponent(along) + t);
-        const b = a.clone().setComponent(across, bounds.max.getComponent(across));
-        line(a, b);
+      for (let t = area.min.getComponent(along); t <= area.max.getComponent(along) + 1e-9; t += step) {
+        const a = area.min.clone().setComponent(normal, level).setComponent(along, t);
+        line(a, a.clone().setComponent(across, area.max.getComponent(across)));
       }
     }
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.Float32BufferAttribute(grid, 3));
-    this.#grid = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: PALETTE.grid }));
+    // First and leaving no depth: whatever the path draws is over it.
+    this.#grid = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: PALETTE.grid, depthWrite: false }));
+    this.#grid.renderOrder = -1;
     this.add(this.#grid);
   }
 

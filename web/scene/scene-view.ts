@@ -36,14 +36,40 @@ const FOV_DEG = 35;
  * to the right, as in an oblique drawing.
  */
 const VIEW_DIRECTION = new THREE.Vector3(0.6, -1.4, 0.9).normalize();
+/** Children of the view starting this close to its top (px) lie over it there (#topInset)... */
+const OVERLAY_TOP_PX = 16;
+/** ...and take at most this share of its height from the framed picture. */
+const MAX_TOP_INSET = 0.3;
+/** Rounds of framing (#fit): each centers the picture and brings the camera in; three settle it within a pixel or so. */
+const FIT_ROUNDS = 4;
 /** Room around the cells for the axis arrows and tick labels: grid units, and a share of the path's size. */
 const FRAME_MARGIN = 1.3;
 const FRAME_MARGIN_SHARE = 0.08;
+/**
+ * The 3D framing (#fit) keeps this many pixels free at each edge of the
+ * view, for the labels and handles drawn at the path's ends and corners
+ * (pixel-sized however large the path is), and widens what it frames by a
+ * share of the path's size for the ticks, which stand that far out, and for
+ * the z axis's arrow and name above the path.
+ */
+const FIT_EDGE_PX = 26;
+const FIT_EDGE_SHARE = 0.06;
+const FIT_TICK_SHARE = 0.04;
+const FIT_Z_TIP_SHARE = 0.14;
+/**
+ * Following the current cell (setFollow), the view is at least this close:
+ * about this many cells from its top to its bottom, so a cell and its
+ * decision overlay read however long the path.
+ */
+const FOLLOW_SPAN_CELLS = 14;
 /** How much one press of + or - zooms the view. */
 const KEY_ZOOM_FACTOR = 1.15;
 /** Edge of a highlighted cell: larger than a path's cell, so it shows around it. */
 const HIGHLIGHT_SIZE = 1.06;
-/** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it. */
+/** A highlighted cube's fill: faint, so the cells inside show; its outline carries the colour. Points (a long path) have no outline: opaque. */
+const HIGHLIGHT_FILL_OPACITY = 0.1;
+const HIGHLIGHT_POINT_OPACITY = 0.9;
+/** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it (they are drawn over it). */
 const SECOND_PATH_SIZE = 0.5;
 
 /** Whether WebGL draws on the CPU, found once per page by softwareRenderer(). */
@@ -76,6 +102,8 @@ export interface DrawnTrace {
   end: number[];
   points: Int32Array;
   idealPolyline: Float64Array;
+  /** Per axis, when the grid is a machine's (a G-code program): its axes are labelled in mm. */
+  stepsPerMm?: readonly number[];
 }
 
 /** Cells to pick out, flat with stride dims, in one colour. */
@@ -93,6 +121,22 @@ interface Drawn {
   bounds: THREE.Box3;
   /** The axis (0..2) all points share a coordinate on, or undefined when the path is not planar. */
   planeNormal: number | undefined;
+  /** Up to FRAMED_CELLS of the path's cells, evenly along it (the first and the last among them): what the 3D view frames. */
+  framedCells: THREE.Vector3[];
+}
+
+/** Cells of a path the 3D framing looks at (#fit): enough to follow a helix's turns, few enough to project four times at once. */
+const FRAMED_CELLS = 128;
+
+/** Up to `count` cells of `points` evenly along the path, the last one included. */
+function sampleCells(points: Int32Array, dims: number, count: number): THREE.Vector3[] {
+  const cells = points.length / dims;
+  const every = Math.max(1, Math.ceil((cells - 1) / (count - 1)));
+  const out: THREE.Vector3[] = [];
+  for (let k = 0; k < cells; k = k === cells - 1 ? cells : Math.min(k + every, cells - 1)) {
+    out.push(new THREE.Vector3(points[k * dims]!, points[k * dims + 1]!, dims > 2 ? points[k * dims + 2]! : 0));
+  }
+  return out;
 }
 
 /** The smallest and largest coordinate of the points on each of the first 3 axes (0 for a missing axis). */
@@ -146,14 +190,20 @@ export class SceneView {
   #overlay: THREE.Object3D | undefined;
   #renderPending = false;
   #pointIndex = 0;
+  /** The camera moves with the current cell (setFollow). */
+  #follow = false;
   /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
   #drawnOnce = false;
   /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
   readonly #warm = new THREE.Group();
 
+  /** The colour of the path's visited cells: the second path's in the right view side by side. */
+  readonly #visitedColour: string;
+
   /** Fills `container` (a positioned element) with the canvas and its label layer. */
-  constructor(container: HTMLElement, callbacks: SceneCallbacks, label = 'path view') {
+  constructor(container: HTMLElement, callbacks: SceneCallbacks, label = 'path view', visitedColour: string = PALETTE.visited) {
     this.#container = container;
+    this.#visitedColour = visitedColour;
     this.#callbacks = callbacks;
     this.#renderer = new THREE.WebGLRenderer({ antialias: !softwareRenderer(), preserveDrawingBuffer: false });
     this.#renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
@@ -234,8 +284,9 @@ export class SceneView {
       new IdealPath(new Float64Array([0, 0, 0, 1, 0, 0]), 3),
       new IdealPath(longLine, 3),
       new GridAxes(new THREE.Vector3(0, 0, 0), new THREE.Vector3(1, 1, 1), 3),
-      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, false, box),
-      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, true, box),
+      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: HIGHLIGHT_FILL_OPACITY, outline: true }, false, box),
+      new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: HIGHLIGHT_POINT_OPACITY }, true, box),
+      new VoxelPath(short, 3, box, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE, onTop: true }),
     );
     // The real scene's lights, so the lit materials get the programs the real frames use.
     this.#renderer.compile(this.#warm, this.#perspective, this.#scene);
@@ -293,11 +344,12 @@ export class SceneView {
     const planeNormal = trace.dims === 2 ? 2 : flat.length > 0 ? flat[flat.length - 1] : undefined;
     const bounds = new THREE.Box3(min.clone().subScalar(0.5), max.clone().addScalar(0.5));
     const drawn: Drawn = {
-      voxels: new VoxelPath(trace.points, trace.dims, bounds),
+      voxels: new VoxelPath(trace.points, trace.dims, bounds, { visited: this.#visitedColour }),
       ideal: new IdealPath(trace.idealPolyline, trace.dims),
-      axes: new GridAxes(min, max, trace.dims === 2 ? 2 : 3),
+      axes: new GridAxes(min, max, trace.dims === 2 ? 2 : 3, trace.stepsPerMm),
       bounds,
       planeNormal,
+      framedCells: sampleCells(trace.points, trace.dims, FRAMED_CELLS),
     };
     this.#scene.add(drawn.voxels, drawn.ideal, drawn.axes);
     this.#drawn = drawn;
@@ -311,6 +363,35 @@ export class SceneView {
     if (camera) this.setCamera(camera);
     else this.resetView();
     this.showPoint(pointIndex);
+    if (this.#follow) this.#followCell(true);
+  }
+
+  /**
+   * Follows the current cell (or stops): the camera comes close enough for a
+   * cell to read (FOLLOW_SPAN_CELLS) and then moves with the cell at each
+   * step, keeping its direction and any zoom or orbit the user adds.
+   */
+  setFollow(follow: boolean): void {
+    if (follow === this.#follow) return;
+    this.#follow = follow;
+    this.canvas.dataset.follow = String(follow);
+    if (follow) this.#followCell(true);
+  }
+
+  /** Centres the view on the current cell; `closer`: also comes in to the following distance, if farther. */
+  #followCell(closer: boolean): void {
+    const drawn = this.#drawn;
+    if (!drawn) return;
+    const cell = drawn.voxels.currentCell;
+    const camera = this.#activeCamera();
+    const offset = camera.position.clone().sub(this.#controls.target);
+    let zoom = this.#projection === '2d' ? this.#orthographic.zoom : 1;
+    if (closer && this.#projection === '2d') {
+      zoom = Math.max(zoom, this.#orthoHeight / FOLLOW_SPAN_CELLS);
+    } else if (closer) {
+      offset.setLength(Math.min(offset.length(), FOLLOW_SPAN_CELLS / 2 / Math.tan(THREE.MathUtils.degToRad(FOV_DEG / 2))));
+    }
+    this.setCamera({ position: cell.clone().add(offset).toArray(), target: cell.toArray(), zoom });
   }
 
   /** True when the path on screen lies in one plane, so the 2D view applies. */
@@ -369,6 +450,7 @@ export class SceneView {
     this.#pointIndex = pointIndex;
     this.#drawn?.voxels.show(pointIndex);
     this.#second?.show(Math.min(pointIndex, this.#second.steps));
+    if (this.#follow) this.#followCell(false);
     this.requestRender();
   }
 
@@ -382,7 +464,7 @@ export class SceneView {
     if (trace) {
       const { min, max } = pointBounds(trace.points, trace.dims);
       const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
-      this.#second = new VoxelPath(trace.points, trace.dims, bounds, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE });
+      this.#second = new VoxelPath(trace.points, trace.dims, bounds, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE, onTop: true });
       this.#scene.add(this.#second);
       this.#second.show(Math.min(this.#pointIndex, this.#second.steps));
     }
@@ -401,7 +483,9 @@ export class SceneView {
         const { min, max } = pointBounds(h.cells, h.dims);
         const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
         const count = h.cells.length / h.dims;
-        const cells = new Cells(h.cells, h.dims, { colour: h.colour, cellSize: HIGHLIGHT_SIZE, opacity: 0.55 }, (this.#drawn?.voxels.light ?? false), bounds);
+        const light = this.#drawn?.voxels.light ?? false;
+        const style = light ? { opacity: HIGHLIGHT_POINT_OPACITY } : { opacity: HIGHLIGHT_FILL_OPACITY, outline: true };
+        const cells = new Cells(h.cells, h.dims, { colour: h.colour, cellSize: HIGHLIGHT_SIZE, ...style }, light, bounds);
         cells.setRange(0, count);
         this.#scene.add(cells);
         return cells;
@@ -442,49 +526,110 @@ export class SceneView {
       const width = Math.abs(size.dot(right));
       const height = Math.abs(size.dot(view.up));
       const aspect = this.#container.clientWidth / Math.max(1, this.#container.clientHeight);
-      this.#orthoHeight = Math.max(height, width / aspect, 2);
+      // Below the legend and the tools: the picture fills what they leave.
+      const free = 1 - this.#topInset();
+      this.#orthoHeight = Math.max(height / free, width / aspect, 2);
       this.#updateProjections();
-      const center = box.getCenter(new THREE.Vector3());
+      const center = box.getCenter(new THREE.Vector3()).addScaledVector(view.up, (1 - free) * (this.#orthoHeight / 2));
       const distance = size.length() + 10;
       this.#orthographic.up.copy(view.up);
       this.#orthographic.zoom = 1;
       this.setCamera({ position: center.clone().addScaledVector(view.direction, distance).toArray(), target: center.toArray(), zoom: 1 });
     } else {
-      this.#fit(VIEW_DIRECTION, drawn.bounds);
+      this.#fit(VIEW_DIRECTION, drawn);
     }
   }
 
   /**
-   * Frames `bounds` looking along -`direction` (a unit vector): the camera
-   * backs off until every corner of the box, widened for the axes and their
-   * labels, is inside the view.
+   * Frames the path looking along -`direction` (a unit vector), filling the
+   * view: the camera backs off until what is drawn (the floor with its
+   * ticks, the z axis, the path's cells) is inside the view, a few pixels
+   * from its edges for labels and handles, and is moved across so the picture is
+   * centered (a path seen obliquely is not centered on its center), which lets
+   * it come closer. A few rounds settle both. The path's cells, not its
+   * bounding box: a diagonal line leaves most of its box empty.
    */
-  #fit(direction: THREE.Vector3, bounds: THREE.Box3): void {
+  #fit(direction: THREE.Vector3, drawn: Drawn): void {
     // The container's shape now, not as the last resize report left it: a
     // layout change (side by side) reshapes the view in the same task that
     // frames the path, before any ResizeObserver callback.
     this.#updateProjections();
     const camera = this.#perspective;
-    // Room for the axis labels, which stand a few pixels outside the box however large the path is.
-    const extent = bounds.getSize(new THREE.Vector3());
-    const box = bounds.clone().expandByScalar(FRAME_MARGIN + FRAME_MARGIN_SHARE * Math.max(extent.x, extent.y, extent.z));
-    const center = box.getCenter(new THREE.Vector3());
+    const bounds = drawn.bounds;
+    const largest = Math.max(...bounds.getSize(new THREE.Vector3()).toArray());
     const right = new THREE.Vector3().crossVectors(camera.up, direction).normalize();
     const up = new THREE.Vector3().crossVectors(direction, right);
     const tanV = Math.tan(THREE.MathUtils.degToRad(FOV_DEG / 2));
     const tanH = tanV * camera.aspect;
+    const ticks = FIT_TICK_SHARE * largest;
+    const box = bounds.clone().expandByScalar(ticks);
+    const corners: THREE.Vector3[] = [];
+    // The floor with its ticks, and the z axis's tip above its corner.
+    for (let c = 0; c < 4; c++) corners.push(new THREE.Vector3(c & 1 ? box.max.x : box.min.x, c & 2 ? box.max.y : box.min.y, bounds.min.z));
+    corners.push(new THREE.Vector3(bounds.min.x, bounds.min.y, bounds.max.z + Math.max(1.5, FIT_Z_TIP_SHARE * largest)));
+    // Each framed cell, whole.
+    for (const cell of drawn.framedCells) {
+      for (let c = 0; c < 8; c++) corners.push(new THREE.Vector3(cell.x + (c & 1 ? 0.5 : -0.5), cell.y + (c & 2 ? 0.5 : -0.5), cell.z + (c & 4 ? 0.5 : -0.5)));
+    }
+    // The picture goes below the legend and the tools, FIT_EDGE_PX from the
+    // edges: within `freeX` of `middleX` across (-1..1, screen right), and
+    // in the lower part of the height, within `freeY` of `middle` (screen up).
+    const { clientWidth: width, clientHeight: height } = this.#container;
+    const inset = this.#topInset();
+    // A small view (an embedded one) spares less of itself for the edges.
+    const edge = Math.min(FIT_EDGE_PX, FIT_EDGE_SHARE * Math.min(width, height));
+    // Sideways, the tick labels that reach out of the picture need their width.
+    const { left, right: rightRoom } = drawn.axes.labelRoomPx;
+    const [edgeLeft, edgeRight] = [Math.max(edge, left), Math.max(edge, rightRoom)];
+    const freeX = 1 - (edgeLeft + edgeRight) / Math.max(width, 1);
+    const middleX = (edgeLeft - edgeRight) / Math.max(width, 1);
+    const freeY = 1 - inset - (2 * edge) / Math.max(height, 1);
+    const middle = -inset;
+    const center = box.getCenter(new THREE.Vector3());
     let distance = 0;
-    for (let corner = 0; corner < 8; corner++) {
-      const p = new THREE.Vector3(
-        corner & 1 ? box.max.x : box.min.x,
-        corner & 2 ? box.max.y : box.min.y,
-        corner & 4 ? box.max.z : box.min.z,
-      ).sub(center);
-      // A corner nearer the camera (p . direction > 0) needs the camera farther back.
-      const towardCamera = p.dot(direction);
-      distance = Math.max(distance, towardCamera + Math.abs(p.dot(right)) / tanH, towardCamera + Math.abs(p.dot(up)) / tanV);
+    for (let round = 0; round < FIT_ROUNDS; round++) {
+      // The distance at which every corner is inside the view (within the free height), looking at `center`.
+      distance = 0;
+      for (const corner of corners) {
+        const p = corner.clone().sub(center);
+        // A corner nearer the camera (p . direction > 0) needs the camera farther back.
+        const towardCamera = p.dot(direction);
+        distance = Math.max(distance, towardCamera + Math.abs(p.dot(right)) / (tanH * freeX), towardCamera + Math.abs(p.dot(up)) / (tanV * freeY));
+      }
+      // Where the corners land on screen from there (-1..1 each way), and the middle of their spread.
+      const spread = { left: Infinity, right: -Infinity, bottom: Infinity, top: -Infinity };
+      for (const corner of corners) {
+        const p = corner.clone().sub(center);
+        const depth = distance - p.dot(direction);
+        const x = p.dot(right) / (depth * tanH);
+        const y = p.dot(up) / (depth * tanV);
+        spread.left = Math.min(spread.left, x);
+        spread.right = Math.max(spread.right, x);
+        spread.bottom = Math.min(spread.bottom, y);
+        spread.top = Math.max(spread.top, y);
+      }
+      // Look so the middle of the picture is the middle of the free part, at about the same depth.
+      center.addScaledVector(right, ((spread.left + spread.right) / 2 - middleX) * distance * tanH);
+      center.addScaledVector(up, ((spread.bottom + spread.top) / 2 - middle) * distance * tanV);
     }
     this.setCamera({ position: center.clone().addScaledVector(direction, distance).toArray(), target: center.toArray(), zoom: 1 });
+  }
+
+  /**
+   * The share of the view's height (0..MAX_TOP_INSET) taken at its top by
+   * what lies over it there (the legend, the view's tools): the other
+   * children of the container that start at its top.
+   */
+  #topInset(): number {
+    const top = this.#container.getBoundingClientRect().top;
+    const height = Math.max(1, this.#container.clientHeight);
+    let bottom = 0;
+    for (const child of this.#container.children) {
+      if (child === this.canvas || child === this.#labels.domElement) continue;
+      const box = child.getBoundingClientRect();
+      if (box.height > 0 && box.top - top < OVERLAY_TOP_PX) bottom = Math.max(bottom, box.bottom - top);
+    }
+    return Math.min(bottom / height, MAX_TOP_INSET);
   }
 
   /** The view as a PNG (the canvas; labels are HTML and not in it). */
@@ -497,6 +642,8 @@ export class SceneView {
     if (!this.#drawn && !this.#drawnOnce) return;
     this.#drawnOnce = true;
     const camera = this.#activeCamera();
+    camera.updateMatrixWorld();
+    this.#handles.pinToView(camera, this.#controls.target);
     this.#renderer.render(this.#scene, camera);
     this.#labels.render(this.#scene, camera);
   }

@@ -26,6 +26,8 @@ import { PALETTE } from './palette.js';
 const CELL_SIZE = 0.84;
 /** Drawn edge of the current cell: a little larger, so it stands out among its neighbours. */
 const CURRENT_SIZE = 1.0;
+/** The lighter drawing's marker of the current cell, CSS pixels: it stays this size however far out the view is. */
+const CURRENT_MARKER_PX = 9;
 /** The lighter drawing's points along the whole path, at most. */
 export const SAMPLED_POINTS = 20_000;
 /** The lighter drawing's cubes: every cell within this many steps of the current one. */
@@ -52,6 +54,8 @@ export interface PathStyle {
   visited: string;
   /** Edge of visited and ahead cells, grid units. */
   cellSize?: number;
+  /** Cells drawn over what is drawn before them (CellStyle.onTop): the second path of an overlaid comparison. */
+  onTop?: boolean;
 }
 
 /** Cubes for cells first..first + count - 1 of a path: visited from the start, ahead reversed. */
@@ -66,8 +70,9 @@ class CubeRun {
     this.count = count;
     const run = points.subarray(first * dims, (first + count) * dims);
     const cellSize = style.cellSize ?? CELL_SIZE;
-    this.visited = new Cells(run, dims, { colour: style.visited, cellSize, opacity: 1 }, false, bounds);
-    this.ahead = new Cells(reversed(run, dims), dims, { colour: PALETTE.ahead, cellSize, opacity: 0.22 }, false, bounds);
+    const onTop = style.onTop;
+    this.visited = new Cells(run, dims, { colour: style.visited, cellSize, opacity: 1, onTop }, false, bounds);
+    this.ahead = new Cells(reversed(run, dims), dims, { colour: PALETTE.ahead, cellSize, opacity: 0.22, onTop }, false, bounds);
   }
 
   /** Shows the run's cells before point `pointIndex` as visited and those after it as ahead. */
@@ -111,8 +116,9 @@ export class VoxelPath extends THREE.Group {
       const every = Math.max(1, Math.ceil(this.#count / SAMPLED_POINTS));
       const rows = sampled(points, dims, every);
       const cellSize = style.cellSize ?? CELL_SIZE;
-      const visited = new Cells(rows, dims, { colour: style.visited, cellSize, opacity: 1 }, true, bounds);
-      const ahead = new Cells(rows, dims, { colour: PALETTE.ahead, cellSize, opacity: 0.35 }, true, bounds, visited.attribute);
+      const onTop = style.onTop;
+      const visited = new Cells(rows, dims, { colour: style.visited, cellSize, opacity: 1, onTop }, true, bounds);
+      const ahead = new Cells(rows, dims, { colour: PALETTE.ahead, cellSize, opacity: 0.35, onTop }, true, bounds, visited.attribute);
       this.#sampled = { visited, ahead, every };
       this.add(visited, ahead);
     } else {
@@ -126,7 +132,20 @@ export class VoxelPath extends THREE.Group {
       new THREE.Mesh(currentBox, new THREE.MeshLambertMaterial({ color: PALETTE.current })),
       new THREE.LineSegments(new THREE.EdgesGeometry(currentBox), new THREE.LineBasicMaterial({ color: PALETTE.ideal })),
     );
+    if (this.light) {
+      // A path drawn as points is framed far out, where the current cube is under a pixel: a marker of a fixed size shows where it is.
+      const marker = new THREE.BufferGeometry().setAttribute('position', new THREE.Float32BufferAttribute([0, 0, 0], 3));
+      const dot = new THREE.Points(marker, new THREE.PointsMaterial({ color: PALETTE.current, size: CURRENT_MARKER_PX, sizeAttenuation: false }));
+      // Over the ideal path (drawn at 2), which passes through it.
+      dot.renderOrder = 3;
+      this.#current.add(dot);
+    }
     this.add(this.#current);
+  }
+
+  /** Where the current cell is, grid units. */
+  get currentCell(): THREE.Vector3 {
+    return this.#current.position.clone();
   }
 
   /** Steps of the path (its last point index). */
@@ -172,7 +191,7 @@ export class VoxelPath extends THREE.Group {
     this.#sampled?.visited.dispose();
     this.#sampled?.ahead.dispose();
     this.#current.traverse((o) => {
-      if (o instanceof THREE.Mesh || o instanceof THREE.LineSegments) {
+      if (o instanceof THREE.Mesh || o instanceof THREE.LineSegments || o instanceof THREE.Points) {
         o.geometry.dispose();
         (o.material as THREE.Material).dispose();
       }

@@ -57,6 +57,8 @@ export interface AppState {
   camera: CameraState | null;
   /** Draw the current step's decision in the view (scene/decision-overlay.ts: an exit face, a circle's candidates), for traces that have one. */
   decision3d: boolean;
+  /** The camera follows the current cell at a readable zoom (scene/follow.ts), instead of staying where it is. */
+  follow: boolean;
   /** Point index shown: the position after this many steps (0..=steps). */
   pointIndex: number;
   playing: boolean;
@@ -70,6 +72,8 @@ export interface AppState {
   slowdown: number | null;
   /** Chrome-less view for an iframe (?embed=1). */
   embed: boolean;
+  /** Embedded, the current step's reason under the timeline (off with ?explain=0). */
+  explain: boolean;
 }
 
 export const SPEEDS_STEPS_PER_SECOND = [0.5, 1, 2, 4, 8, 16, 32, 64, 256, 1024, 8192] as const;
@@ -217,11 +221,13 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     projection: defaultProjection(axisCount([info], {})),
     camera: null,
     decision3d: false,
+    follow: false,
     pointIndex: 0,
     playing: false,
     speed: DEFAULT_SPEED,
     slowdown: null,
     embed: false,
+    explain: true,
   };
 }
 

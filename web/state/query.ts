@@ -5,7 +5,7 @@
  *   ?mode=compare&algorithm=regions&other=greedy&layout=side&from=0,0,0&to=10,7,6
  *   ?mode=gcode&gcode=G1%20X10&stepsPerMm=80&lineAlgorithm=regions&arcAlgorithm=circle&slowdown=10
  *   ?mode=experiment&algorithm=regions&count=100&seed=1&maxCoordinate=100
- *   ...&decision3d=1&camera=12.5,-30,20,5,3.5,3,1&embed=1
+ *   ...&decision3d=1&camera=12.5,-30,20,5,3.5,3,1&follow=1&embed=1&explain=0
  *
  * Option keys are the API's option names, so a link reads like the CLI's
  * flags (--from 0,0,0); a mode writes only its own keys. `step` is the point
@@ -14,6 +14,8 @@
  * is the view's decision overlay (an exit face, a circle's candidates);
  * `slowdown` (G-code mode) plays in machine time that many times slower
  * than real time, absent when playback counts steps per second.
+ * `follow=1` keeps the camera on the current cell (written only when on);
+ * `explain=0` leaves the step's reason out of an embedded view.
  * `playing` is left out on purpose: a page opened from a link starts
  * paused, as moving content should not start by itself.
  */
@@ -136,8 +138,10 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
       const c = state.camera;
       pairs.push(['camera', [...c.position, ...c.target, c.zoom].map(formatOption).join(',')]);
     }
+    if (state.follow) pairs.push(['follow', '1']);
   }
   if (state.embed) pairs.push(['embed', '1']);
+  if (!state.explain) pairs.push(['explain', '0']);
   return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v).replaceAll('%2C', ',')}`).join('&');
 }
 
@@ -145,7 +149,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
 const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
 /** Keys that say a query describes a state (any option name counts too). */
-export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowdown', 'view', 'decision3d', 'camera', 'gcode', 'embed'];
+export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowdown', 'view', 'decision3d', 'camera', 'follow', 'gcode', 'embed', 'explain'];
 
 /**
  * The state a query describes, or undefined when it has none of the state's
@@ -187,7 +191,9 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   if (SLOWDOWNS.some((s) => s === slowdown)) state.slowdown = slowdown!;
   state.projection = PROJECTIONS.find((p) => p === params.get('view')) ?? defaultProjection(axisCount(infos, state.options));
   state.decision3d = params.get('decision3d') === '1';
+  state.follow = params.get('follow') === '1';
   state.camera = parseCamera(params.get('camera'));
   state.embed = params.get('embed') === '1';
+  state.explain = params.get('explain') !== '0';
   return state;
 }

@@ -28,10 +28,12 @@ import type {
 export class InputRejected extends Error implements InputError {
   override readonly name = 'InputRejected';
   readonly field?: string;
+  readonly limit?: InputError['limit'];
 
   constructor(error: InputError) {
     super(error.message);
     this.field = error.field;
+    this.limit = error.limit;
   }
 }
 
@@ -279,6 +281,11 @@ export class RemoteProgram extends RemoteTrace {
   constructor(client: TraceClient, traceId: number, generation: number, run: RunProgram) {
     super(client, traceId, generation, run.summary, run.points, run.idealPolyline);
     this.program = run.program;
+  }
+
+  /** The machine's steps per mm on each axis, which the view labels its axes with. */
+  get stepsPerMm(): number[] {
+    return this.program.stepsPerMm;
   }
 
   /** Moves fromMove..toMove of the program, in step order. */

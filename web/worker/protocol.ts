@@ -19,7 +19,7 @@
  * StepDetail.
  */
 import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, ChartSeries, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, ChartSeries, Limit, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -124,10 +124,11 @@ export interface ReplyValue {
   free: null;
 }
 
-/** An input the core rejected; `field` names the option at fault (as in VoxpathError). */
+/** An input the core rejected; `field` names the option at fault and `limit` the cap it ran into (as in VoxpathError). */
 export interface InputError {
   field?: string;
   message: string;
+  limit?: Limit;
 }
 
 export type RequestMessage = { id: number; request: WorkerRequest } | { id: number; cancel: true };

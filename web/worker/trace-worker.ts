@@ -148,7 +148,7 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
 function failure(id: number, error: unknown): ReplyMessage {
   if (error instanceof VoxpathError) {
     // The detail, without the "field: " prefix: the page shows it beside that field.
-    return { id, ok: false, failure: 'input', error: { field: error.field, message: error.field ? error.detail : error.message } };
+    return { id, ok: false, failure: 'input', error: { field: error.field, message: error.field ? error.detail : error.message, limit: error.limit } };
   }
   const message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
   if (error instanceof DOMException && error.name === 'AbortError') return { id, ok: false, failure: 'cancelled', message };

@@ -35,11 +35,11 @@ use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, radii_within_tolerance};
-use crate::error::{Error, Location};
+use crate::error::{Error, Limit, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::machine::{MACHINE_AXES, Machine};
 use crate::planner::{self, Limits, Planner, Timing};
-use crate::request::{MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
+use crate::request::{MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, too_long_advice};
 use crate::text::split_line;
 use crate::trace::{Trace, TraceBuilder};
 use serde::Serialize;
@@ -58,7 +58,7 @@ pub const STEPS_PER_MM: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
-    doc: "Steps per mm: one number for every axis or [x, y, z]. Or give stepAngle, microsteps and pitch.",
+    doc: "Steps per mm: one number for every axis, or one per axis as x,y,z (80,80,400). Or give stepAngle, microsteps and pitch.",
 };
 
 pub const STEP_ANGLE: OptionSpec = OptionSpec {
@@ -66,7 +66,7 @@ pub const STEP_ANGLE: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
-    doc: "Motor step angle θ, degrees (one or [x, y, z]): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
+    doc: "Motor step angle θ, degrees (one, or x,y,z): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
 };
 
 pub const MICROSTEPS: OptionSpec = OptionSpec {
@@ -74,7 +74,7 @@ pub const MICROSTEPS: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: true },
     required: false,
     default: None,
-    doc: "Microsteps s per full step (one or [x, y, z]).",
+    doc: "Microsteps s per full step (one, or x,y,z).",
 };
 
 pub const PITCH: OptionSpec = OptionSpec {
@@ -82,7 +82,7 @@ pub const PITCH: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
-    doc: "Lead-screw pitch P, mm per turn (one or [x, y, z]): one step is L = P / p_m mm.",
+    doc: "Lead-screw pitch P, mm per turn (one, or x,y,z): one step is L = P / p_m mm.",
 };
 
 pub const PROGRAM_LINE_ALGORITHM: OptionSpec = OptionSpec {
@@ -222,6 +222,10 @@ pub struct Diagnostic {
     pub line: u32,
     pub column: u32,
     pub message: String,
+    /// The cap the program ran into, when that is what stopped it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub limit: Option<Limit>,
 }
 
 impl Diagnostic {
@@ -230,6 +234,7 @@ impl Diagnostic {
             line,
             column: problem.column,
             message: problem.message.clone(),
+            limit: None,
         }
     }
 
@@ -241,6 +246,7 @@ impl Diagnostic {
             line,
             column,
             message: error.message,
+            limit: error.limit,
         }
     }
 }
@@ -519,14 +525,25 @@ impl Runner {
         note: &str,
     ) -> Result<(u64, usize), Error> {
         let place = |e: Error| match e.field_name() {
-            Some("maxSteps") => Error::at(
-                m.line,
-                m.column,
-                format!(
-                    "the program needs more than maxSteps = {} steps by this move; raise maxSteps (up to {MAX_STEPS_LIMIT})",
-                    self.settings.max_steps
-                ),
-            ),
+            Some("maxSteps") => {
+                // The whole program needs the steps before this move and at least the move's.
+                let at_least = self.steps + e.limit.as_ref().map_or(1, |l| l.at_least);
+                Error::at(
+                    m.line,
+                    m.column,
+                    format!(
+                        "the program needs more than maxSteps = {} steps by this move (at least {at_least}); {}",
+                        self.settings.max_steps,
+                        too_long_advice(at_least, "the program or lower its steps per mm")
+                    ),
+                )
+                .with_limit(Limit {
+                    option: "maxSteps".into(),
+                    value: self.settings.max_steps,
+                    at_least,
+                    most: MAX_STEPS_LIMIT,
+                })
+            }
             Some(field) => Error::at(m.line, m.column, format!("{field}: {}", e.message)),
             None => e,
         };
@@ -814,6 +831,7 @@ impl Runner {
                 line,
                 column,
                 message: timing::step_rate_message(axis, needed, max),
+                limit: None,
             });
         }
         let trace = self.builder.finish(&format!(

@@ -1,0 +1,125 @@
+// The page in a course author's material (issue 16, items 11 and 12), in
+// headless Chromium: embedded, the view fills its frame with the current
+// step's reason under the playback and a link to the same state in the full
+// page; in the full page, the Embed button gives the <iframe> of the state
+// on screen at the page's real address. The reason expected at step 5 of
+// Wang et al.'s example (0,0,0)->(10,7,6) is eq. (8)'s M_5 = 0, a tie
+// (region g), with N_5 = 10.
+import type { PNG } from 'pngjs';
+import { afterAll, describe, expect, it } from 'vitest';
+import { canvasPng, closeAll, openPage, screenshot, siteUrl } from './harness.js';
+
+afterAll(closeAll);
+
+const EXAMPLE = 'algorithm=regions&from=0,0,0&to=10,7,6&step=5';
+
+/** The box around the canvas pixels unlike its first (background) pixel. */
+function inkBox(png: PNG): { left: number; top: number; right: number; bottom: number } {
+  const bg = [png.data[0]!, png.data[1]!, png.data[2]!];
+  const box = { left: png.width, top: png.height, right: -1, bottom: -1 };
+  for (let y = 0; y < png.height; y++) {
+    for (let x = 0; x < png.width; x++) {
+      const i = (y * png.width + x) * 4;
+      if (bg.every((v, c) => Math.abs(png.data[i + c]! - v) <= 24)) continue;
+      box.left = Math.min(box.left, x);
+      box.right = Math.max(box.right, x);
+      box.top = Math.min(box.top, y);
+      box.bottom = Math.max(box.bottom, y);
+    }
+  }
+  return box;
+}
+
+describe('embedded', () => {
+  it("shows the step's reason under the playback, links to the same state, and fills its frame", async () => {
+    const p = await openPage(`?embed=1&${EXAMPLE}`);
+    const { page } = p;
+    await page.setViewportSize({ width: 640, height: 480 });
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 10' }).waitFor();
+    const reason = page.getByTestId('step-reason');
+    await reason.filter({ hasText: 'Step 5:' }).waitFor();
+    expect(await reason.innerText()).toMatch(/^Step 5: x is the active axis; M = 0 and N = 10 > 0, so the line crosses segment g/);
+    const timeline = (await page.locator('.timeline').boundingBox())!;
+    const under = (await reason.boundingBox())!;
+    expect(under.y).toBeGreaterThanOrEqual(timeline.y + timeline.height - 1);
+    expect(under.y + under.height).toBeLessThanOrEqual(480);
+
+    // The link: the full page, same state.
+    const open = page.getByTestId('open-full');
+    expect(await open.isVisible()).toBe(true);
+    const link = new URL((await open.getAttribute('href'))!);
+    const here = new URL(page.url());
+    expect(link.origin + link.pathname).toBe(here.origin + here.pathname);
+    expect(link.searchParams.has('embed')).toBe(false);
+    expect(Object.fromEntries(['algorithm', 'from', 'to', 'step'].map((k) => [k, link.searchParams.get(k)]))).toEqual({ algorithm: 'regions', from: '0,0,0', to: '10,7,6', step: '5' });
+    expect(await open.getAttribute('target')).toBe('_blank');
+    await page.getByTestId('next').click();
+    await expect.poll(async () => new URL((await open.getAttribute('href'))!).searchParams.get('step')).toBe('6');
+    await reason.filter({ hasText: 'Step 6:' }).waitFor();
+
+    // Framed to fill what the legend and the tools leave of the view.
+    await page.getByTestId('reset-view').click();
+    await page.waitForTimeout(300);
+    const png = await canvasPng(page);
+    const ink = inkBox(png);
+    const scale = png.width / (await page.locator('#viewport').boundingBox())!.width;
+    const overlays = await page.evaluate(() => Math.max(...[...document.querySelectorAll('#viewport > .legend, #viewport > .view-tools')].map((e) => e.getBoundingClientRect().bottom - document.querySelector('#viewport')!.getBoundingClientRect().top)));
+    const freeTop = overlays * scale;
+    expect(ink.top, 'the picture starts below the legend and the tools').toBeGreaterThanOrEqual(freeTop - 2);
+    // The labels and handles are not in the canvas: the room kept for them is the rest.
+    const fill = Math.max((ink.right - ink.left) / png.width, (ink.bottom - ink.top) / (png.height - freeTop));
+    expect(fill, 'the picture fills the free part of the view across or down').toBeGreaterThan(0.7);
+    expect(Math.abs((ink.left + ink.right) / 2 / png.width - 0.5), 'centered across').toBeLessThan(0.08);
+    await screenshot(page, 'readme-embed');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('leaves the reason out with explain=0', async () => {
+    const p = await openPage(`?embed=1&explain=0&${EXAMPLE}`);
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 10' }).waitFor();
+    await page.waitForTimeout(300);
+    expect(await page.getByTestId('step-reason').isVisible()).toBe(false);
+    expect(new URL((await page.getByTestId('open-full').getAttribute('href'))!).searchParams.get('explain')).toBe('0');
+    await p.close();
+  });
+});
+
+describe('the Embed button', () => {
+  it("gives the <iframe> of the state on screen at the page's own address, ready to copy", async () => {
+    const p = await openPage(`?${EXAMPLE}`);
+    const { page, context } = p;
+    await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(siteUrl()).origin });
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 10' }).waitFor();
+    await page.getByTestId('embed-open').click();
+    const dialog = page.getByTestId('embed-dialog');
+    await dialog.waitFor();
+    const snippet = await page.getByTestId('embed-snippet').inputValue();
+    const frame = await page.evaluate((html) => {
+      const iframe = new DOMParser().parseFromString(html, 'text/html').querySelector('iframe');
+      return iframe && { src: iframe.src, title: iframe.title, width: iframe.width, height: iframe.height, count: new DOMParser().parseFromString(html, 'text/html').body.children.length };
+    }, snippet);
+    expect(frame).not.toBeNull();
+    const src = new URL(frame!.src);
+    // The real address the page is served from (the test server's sub-path), not a placeholder.
+    expect(src.origin + src.pathname).toBe(siteUrl());
+    expect(src.searchParams.get('embed')).toBe('1');
+    expect(Object.fromEntries(['algorithm', 'from', 'to', 'step'].map((k) => [k, src.searchParams.get(k)]))).toEqual({ algorithm: 'regions', from: '0,0,0', to: '10,7,6', step: '5' });
+    expect(frame!.title).toBe('Method of discriminate regions (3D line), (0, 0, 0) to (10, 7, 6), step by step (voxpath)');
+    expect([frame!.width, frame!.height, frame!.count]).toEqual(['640', '480', 1]);
+
+    await page.getByTestId('embed-copy').click();
+    await page.getByTestId('embed-copied').filter({ hasText: 'Copied.' }).waitFor();
+    expect(await page.evaluate(() => navigator.clipboard.readText())).toBe(snippet);
+    await screenshot(page, 'embed-dialog');
+
+    // What it embeds: this state, embedded.
+    const embedded = await openPage(src.search);
+    await embedded.page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 10' }).waitFor();
+    expect(await embedded.page.evaluate(() => document.body.classList.contains('embed'))).toBe(true);
+    await embedded.close();
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -1,0 +1,138 @@
+// The page's layout in headless Chromium at the window sizes of issue 16:
+// 1400x900 and 1024x768 (a laptop), 390x844 (a phone). The view, the
+// timeline and the current step's reason must be on the first screen
+// together, with nothing scrolled. The reason expected is the core's
+// sentence for Wang et al.'s example (0,0,0)->(10,7,6) at step 3: M_3 = 12
+// and N_3 = 6 (eq. 8) put the line in region d, so the step goes to D.
+import type { Locator, Page } from 'playwright-core';
+import { afterAll, describe, expect, it } from 'vitest';
+import { closeAll, openPage, screenshot } from './harness.js';
+
+afterAll(closeAll);
+
+const REASON = 'M = 12 > 0 and N = 6 > 0';
+
+/** True when the element is shown and wholly inside the window as it is (not scrolled). */
+async function onFirstScreen(page: Page, locator: Locator): Promise<boolean> {
+  if (!(await locator.isVisible())) return false;
+  const box = (await locator.boundingBox())!;
+  const { width, height } = page.viewportSize()!;
+  return box.x >= 0 && box.y >= 0 && box.x + box.width <= width + 0.5 && box.y + box.height <= height + 0.5;
+}
+
+/** The elements showing the current step's reason that are on the first screen. */
+async function reasonsInSight(page: Page, text: string): Promise<number> {
+  const candidates = page.locator('[data-testid="inspector-explanation"], [data-testid="step-reason"]').filter({ hasText: text });
+  let seen = 0;
+  for (const candidate of await candidates.all()) if (await onFirstScreen(page, candidate)) seen++;
+  return seen;
+}
+
+async function check(page: Page, name: string): Promise<void> {
+  await page.getByTestId('inspector-explanation').filter({ hasText: REASON }).waitFor();
+  await expect.poll(() => reasonsInSight(page, REASON), { message: `${name}: reason` }).toBeGreaterThan(0);
+  expect(await onFirstScreen(page, page.locator('#viewport')), `${name}: view`).toBe(true);
+  expect(await onFirstScreen(page, page.locator('.timeline')), `${name}: timeline`).toBe(true);
+  expect(await page.evaluate(() => window.scrollY), `${name}: scrolled`).toBe(0);
+  // The view is a real share of the window, not squeezed to make room.
+  const view = (await page.locator('#viewport').boundingBox())!;
+  const { width, height } = page.viewportSize()!;
+  expect(view.width * view.height, `${name}: view area`).toBeGreaterThan(0.2 * width * height);
+  // The legend clear of the view's tools (2D, Decision in 3D, Follow, Reset view).
+  const overlaps = await page.evaluate(() => {
+    const legend = document.querySelector('#viewport .legend')!.getBoundingClientRect();
+    return [...document.querySelectorAll('#viewport .view-tools > *')]
+      .map((e) => ({ text: (e as HTMLElement).innerText, box: e.getBoundingClientRect() }))
+      .filter(({ box }) => box.left < legend.right && legend.left < box.right && box.top < legend.bottom && legend.top < box.bottom)
+      .map(({ text }) => text);
+  });
+  expect(overlaps, `${name}: legend over the tools`).toEqual([]);
+  await screenshot(page, `layout-${name}`);
+}
+
+describe('the view, the timeline and the reason, together', () => {
+  for (const [width, height] of [
+    [1400, 900],
+    [1024, 768],
+    [390, 844],
+  ] as const) {
+    it(`are on the first screen at ${width}x${height}, in trace and compare mode`, async () => {
+      const p = await openPage('?algorithm=regions&from=0,0,0&to=10,7,6&step=3');
+      const { page } = p;
+      await page.setViewportSize({ width, height });
+      await check(page, `trace-${width}x${height}`);
+      // Compare mode: its table tops the inspector, so the reason has its own place.
+      await page.getByTestId('mode-compare').click();
+      await page.getByTestId('step-counter').filter({ hasText: /of 23$/ }).waitFor();
+      await page.getByTestId('jump-input').fill('3');
+      await page.getByTestId('jump-go').click();
+      await check(page, `compare-${width}x${height}`);
+      expect(await page.getByTestId('step-reason').innerText()).toMatch(/^regions, step 3: .*\ngreedy, step 3: /s);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    });
+  }
+});
+
+describe('the coordinate fields', () => {
+  it('show ten digits whole: coordinates reach 2^30', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.setViewportSize({ width: 1024, height: 768 });
+    for (const [axis, value] of [
+      ['x', '-1073741824'],
+      ['y', '1073741824'],
+      ['z', '-1073741823'],
+    ] as const) {
+      await page.getByTestId(`input-to-${axis}`).fill(value);
+    }
+    const clipped = await page.evaluate(() =>
+      [...document.querySelectorAll<HTMLInputElement>('.axis input')].filter((i) => i.scrollWidth > i.clientWidth).map((i) => `${i.id} ${i.scrollWidth} > ${i.clientWidth}`),
+    );
+    expect(clipped).toEqual([]);
+    // Each field still beside its axis name.
+    for (const axis of ['x', 'y', 'z']) {
+      const input = (await page.getByTestId(`input-to-${axis}`).boundingBox())!;
+      const panel = (await page.locator('.inputs').boundingBox())!;
+      expect(input.x + input.width).toBeLessThanOrEqual(panel.x + panel.width);
+    }
+    await p.close();
+  });
+});
+
+describe('the decision cards', () => {
+  it('stay where they are as their values change length', async () => {
+    // (0,0,0)->(1000,7,6): eq. (10) gives M_1 = 2*7 - 1000 = -986, and M grows by 14 a step (eq. 8) to short values.
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=1000,7,6&step=1');
+    const { page } = p;
+    await page.getByTestId('inspector-value-M').filter({ hasText: '-986' }).waitFor();
+    const cards = () => page.locator('[data-testid="inspector-decisions"] > div').evaluateAll((divs) => divs.map((d) => { const r = d.getBoundingClientRect(); return [Math.round(r.x), Math.round(r.y), Math.round(r.width)]; }));
+    const before = await cards();
+    await page.getByTestId('jump-input').fill('70');
+    await page.getByTestId('jump-go').click();
+    await page.locator('#decision-heading').filter({ hasText: 'step 70' }).waitFor();
+    await expect.poll(() => page.getByTestId('inspector-value-M').innerText()).not.toBe('-986');
+    expect((await page.getByTestId('inspector-value-M').innerText()).length).toBeLessThan(4);
+    expect(await cards()).toEqual(before);
+    await p.close();
+  });
+});
+
+describe('the algorithm picker', () => {
+  it("shows the chosen algorithm's whole title, on more lines when it is long", async () => {
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    const picker = page.getByTestId('algorithm');
+    await page.getByTestId('step-counter').filter({ hasText: 'of 10' }).waitFor();
+    await picker.selectOption('liu-float');
+    await page.getByTestId('algorithm-title').filter({ hasText: "Liu's 3D Bresenham" }).waitFor();
+    // "Liu's 3D Bresenham with a decimal discriminant kept to d places (liu-float)": three lines in a 270-pixel panel.
+    const box = (await picker.boundingBox())!;
+    const lineHeight = await picker.evaluate((e) => parseFloat(getComputedStyle(e).fontSize) * 1.25);
+    expect(box.height).toBeGreaterThan(2.5 * lineHeight);
+    const panel = (await page.locator('.inputs').boundingBox())!;
+    expect(box.x + box.width).toBeLessThanOrEqual(panel.x + panel.width);
+    await screenshot(page, 'picker-long-title', '.inputs');
+    await p.close();
+  });
+});

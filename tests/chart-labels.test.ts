@@ -1,0 +1,57 @@
+// The charts' reference labels (web/charts/reference-labels.ts): "largest"
+// and "bound" never sit on each other, however close their lines are.
+import { describe, expect, it } from 'vitest';
+import { placeReferenceLabels } from '../web/charts/reference-labels.js';
+
+const BOX = { left: 50, top: 10, width: 220, height: 150 };
+const TEXT = 11;
+const GAP = 4;
+
+describe('reference labels', () => {
+  it('stand above their lines when those are apart', () => {
+    const baselines = placeReferenceLabels(
+      [
+        { lineY: 120, width: 90, atRight: false },
+        { lineY: 60, width: 150, atRight: true },
+      ],
+      BOX,
+      TEXT,
+      GAP,
+      4,
+    );
+    expect(baselines).toEqual([116, 56]);
+  });
+
+  it('put the second below its line when both lines are at one height and the labels would meet', () => {
+    // largest = bound (a path at its bound): 90 + 150 px of labels in a 220 px plot.
+    const baselines = placeReferenceLabels(
+      [
+        { lineY: 60, width: 90, atRight: false },
+        { lineY: 60, width: 150, atRight: true },
+      ],
+      BOX,
+      TEXT,
+      GAP,
+      4,
+    );
+    expect(baselines).toEqual([56, 75]);
+  });
+
+  it('keep both above when the labels fit side by side', () => {
+    const baselines = placeReferenceLabels(
+      [
+        { lineY: 60, width: 60, atRight: false },
+        { lineY: 62, width: 60, atRight: true },
+      ],
+      BOX,
+      TEXT,
+      GAP,
+      4,
+    );
+    expect(baselines).toEqual([56, 58]);
+  });
+
+  it('go below a line at the top of the plot', () => {
+    expect(placeReferenceLabels([{ lineY: 14, width: 90, atRight: false }], BOX, TEXT, GAP, 4)).toEqual([29]);
+  });
+});
