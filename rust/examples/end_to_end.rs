@@ -38,7 +38,7 @@ fn main() {
 
     let voxpath_points = || {
         let trace = voxpath::run(&request).expect("the request traces");
-        trace.points_flat(0, trace.steps() + 1)
+        trace.points_i32(0, trace.steps() + 1)
     };
     let line_drawing_points = || {
         line_drawing::Bresenham3d::new(voxel(&from), voxel(&to)).collect::<Vec<(i32, i32, i32)>>()

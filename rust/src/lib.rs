@@ -26,6 +26,7 @@ pub mod line;
 pub mod machine;
 pub mod metrics;
 pub mod planner;
+pub mod points;
 pub mod request;
 pub mod trace;
 pub mod wasm;

@@ -16,6 +16,7 @@ use crate::error::Error;
 use crate::grid::{MAX_AXES, Point, Step, displacement};
 use crate::ideal::{IdealPath, IdealPathInfo, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
+use crate::points::Coordinate;
 use crate::request::Request;
 use serde::Serialize;
 use std::cell::OnceCell;
@@ -609,9 +610,9 @@ impl Trace {
     /// Point index k: the position after k steps.
     pub fn point(&self, k: u64) -> Point {
         let mut p = self.positions[(k / CHECKPOINT_INTERVAL) as usize];
-        for &s in &self.steps[(k - k % CHECKPOINT_INTERVAL) as usize..k as usize] {
-            p.apply(s);
-        }
+        p.displace(&displacement(
+            &self.steps[(k - k % CHECKPOINT_INTERVAL) as usize..k as usize],
+        ));
         p
     }
 
@@ -668,9 +669,73 @@ impl Trace {
 
     /// Points with point indices `from..to`, flat with stride `dims`.
     pub fn points_flat(&self, from: u64, to: u64) -> Vec<i64> {
-        let mut out = Vec::with_capacity((to - from) as usize * self.dims());
-        self.walk_points(from, to, |_, p| out.extend_from_slice(p.coords()));
+        let mut out = vec![0; (to - from) as usize * self.dims()];
+        self.write_points(from, &mut out);
         out
+    }
+
+    /// The same as i32, the type every trace coordinate fits (see
+    /// [`Coordinate`]) and the one that crosses to JavaScript.
+    pub fn points_i32(&self, from: u64, to: u64) -> Vec<i32> {
+        let mut out = vec![0; (to - from) as usize * self.dims()];
+        self.write_points(from, &mut out);
+        out
+    }
+
+    /// Writes the points with point indices `from..` into `out`, stride
+    /// `dims`, as many as it holds: the first from its checkpoint, the
+    /// others by the decode specialised for this trace's number of axes
+    /// ([`crate::points::decode`]), straight into `out`.
+    pub fn write_points<C: Coordinate>(&self, from: u64, out: &mut [C]) {
+        let dims = self.dims();
+        assert_eq!(out.len() % dims, 0, "whole points");
+        let count = (out.len() / dims) as u64;
+        if count == 0 {
+            return;
+        }
+        let first = self.point(from);
+        let (head, rest) = out.split_at_mut(dims);
+        for (c, &v) in head.iter_mut().zip(first.coords()) {
+            *c = C::from_i64(v);
+        }
+        crate::points::decode(&first, self.step_range(from, from + count - 1), rest);
+    }
+
+    /// Points `from..to` through `buffer`, a chunk at a time: each chunk,
+    /// as many whole points as `buffer` holds, is decoded into it and
+    /// handed to `f` with the point index of its first point. Each chunk
+    /// goes on from the last point of the one before, so only the first
+    /// point is found from a checkpoint.
+    pub fn points_by_chunk<C: Coordinate>(
+        &self,
+        from: u64,
+        to: u64,
+        buffer: &mut [C],
+        mut f: impl FnMut(u64, &[C]),
+    ) {
+        let dims = self.dims();
+        let rows = (buffer.len() / dims) as u64;
+        assert!(rows > 0, "a buffer of at least one point");
+        if from >= to {
+            return;
+        }
+        let mut p = self.point(from);
+        for (c, &v) in buffer.iter_mut().zip(p.coords()) {
+            *c = C::from_i64(v);
+        }
+        // The first chunk holds the first point and the points of the
+        // steps after it; every later chunk the points of its steps.
+        let mut k = from;
+        let mut head = 1;
+        while k < to {
+            let end = to.min(k + rows);
+            let steps = self.step_range(k + head - 1, end - 1);
+            let chunk = &mut buffer[..(end - k) as usize * dims];
+            p = crate::points::decode(&p, steps, &mut chunk[head as usize * dims..]);
+            f(k, chunk);
+            k = end;
+            head = 0;
+        }
     }
 
     /// Perpendicular deviation of points `from..to` from the ideal path.
@@ -773,7 +838,9 @@ impl Trace {
 
 /// What a viewer needs to know about a trace besides its bulk arrays.
 /// Point index k runs 0..=steps, step index k runs 0..steps-1; coordinates
-/// are grid units.
+/// are grid units. Its metrics are not in it: they take a pass over every
+/// point, which a caller that only reads points should not pay for, so they
+/// are asked for on their own ([`Trace::metrics`]).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct TraceSummary<'a> {
@@ -787,7 +854,6 @@ pub struct TraceSummary<'a> {
     pub end: Vec<i64>,
     /// The decision columns, in the order the decisions array holds them.
     pub columns: &'a [Column],
-    pub metrics: &'a Metrics,
     /// Absent (null) where the algorithm guarantees none.
     pub deviation_bound: Option<&'a DeviationBound>,
     pub segments: Vec<SegmentSummary<'a>>,
@@ -817,7 +883,6 @@ impl Trace {
             start: self.start.coords().to_vec(),
             end: self.end.coords().to_vec(),
             columns: &self.columns,
-            metrics: self.metrics(),
             deviation_bound: self.deviation_bound(),
             segments: self
                 .segments

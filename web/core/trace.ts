@@ -1,15 +1,17 @@
 /**
  * The headless API: `await trace(options)` runs an algorithm in the wasm core
- * and returns a Trace. Bulk arrays are copied out of wasm memory in chunks of
- * about CHUNK_BYTES, so a long path never needs a second full-size copy
- * inside wasm (whose memory, once grown, is never given back).
+ * and returns a Trace: the steps recorded, nothing else computed until it is
+ * read. Points are filled by the core into the array returned; the other
+ * bulk arrays are copied out of wasm memory in chunks of about CHUNK_BYTES.
+ * Either way a long path never needs a second full-size copy inside wasm
+ * (whose memory, once grown, is never given back).
  */
 import type { Comparison } from './compare.js';
 import { callCore } from './errors.js';
 import type { TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
-import type { AlgorithmInfo, DecisionColumns, TraceOptions, TraceSummary } from './types.js';
+import type { AlgorithmInfo, DecisionColumns, Metrics, TraceOptions, TraceSummary } from './types.js';
 import { loadCore } from './wasm.js';
 
 /**
@@ -61,10 +63,22 @@ export class Trace {
   #decisions?: DecisionColumns;
   #deviation?: Float64Array;
   #axisError?: Float64Array;
+  #metrics?: Metrics;
 
   constructor(handle: TraceHandle) {
     this.#handle = handle;
     Object.assign(this, handle.summary());
+  }
+
+  /**
+   * Whole-path statistics (deviation, per-axis error, ties, pulses),
+   * computed by the core on first read: a pass over every point that
+   * `trace()` does not make, so a caller that only wants points never pays
+   * for it. Not one of the summary's fields: spreading a Trace leaves it out.
+   */
+  get metrics(): Metrics {
+    this.#metrics ??= callCore(() => this.#handle.metrics());
+    return this.#metrics;
   }
 
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
@@ -73,10 +87,14 @@ export class Trace {
     return this.#points;
   }
 
-  /** Points with point indices from..to, flat with stride dims. */
+  /**
+   * Points with point indices from..to, flat with stride dims: decoded by
+   * the core a chunk at a time straight into the array returned (its wasm
+   * memory grows by one chunk's buffer, not by the points).
+   */
   pointsInRange(from: number, to: number): Int32Array {
     checkRange('point indices', from, to, this.steps + 1);
-    return copyRows(Int32Array, from, to, this.dims, (a, b) => this.#handle.points(a, b));
+    return callCore(() => this.#handle.points(from, to));
   }
 
   /** Point index k as an array of coordinates. */

@@ -15,7 +15,7 @@
  * - series: see ChartSeries; cells: Int32Array, stride dims.
  */
 import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, DecisionColumns, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, DecisionColumns, Metrics, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -44,7 +44,7 @@ export type RequestKind = WorkerRequest['kind'];
  * which the page would take a long task to receive; it asks for the one
  * note it shows instead (segmentNote).
  */
-export type PathSummary = Omit<TraceSummary, 'segments'>;
+export type PathSummary = Omit<TraceSummary, 'segments'> & { metrics: Metrics };
 
 /** A finished trace as the page receives it: the summary and the arrays every view needs at once. */
 export interface TracedPath {
