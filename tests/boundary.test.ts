@@ -106,13 +106,16 @@ describe('the generated boundary types', () => {
     expect(offered.gcodeSettings.length).toBeGreaterThan(0);
   });
 
-  it("declare every algorithm example's trace summary and metrics, as the core hands them over", async () => {
+  it("declare every algorithm example's trace summary, metrics and segments, as the core hands them over", async () => {
     const core = await loadCore();
     for (const info of offered.algorithms) {
       const handle = core.trace(encodeRequest({ ...info.example.options, algorithm: info.id }));
       try {
         expectFits(handle.summary(), 'TraceSummary');
         expectFits(handle.metrics(), 'Metrics');
+        const segments = handle.segments();
+        expect(segments.length).toBeGreaterThan(0);
+        for (const segment of segments) expectFits(segment, 'SegmentSummary');
       } finally {
         handle.free();
       }
@@ -148,7 +151,7 @@ describe('the generated boundary types', () => {
   });
 
   it('find a field the core sends and the .d.ts lacks', () => {
-    const summary = { algorithm: 'x', dims: 2, steps: 0, start: [0, 0], end: [0, 0], columns: [], deviationBound: {}, segments: [], extra: 1 };
+    const summary = { algorithm: 'x', dims: 2, steps: 0, start: [0, 0], end: [0, 0], columns: [], deviationBound: {}, extra: 1 };
     const problems = misfits(summary, declared('TraceSummary'), 'TraceSummary');
     expect(problems).toContain('TraceSummary.extra: sent by the core, not declared in TraceSummary');
     expect(problems.some((p) => p.startsWith('TraceSummary.deviationBound.value: declared in the .d.ts'))).toBe(true);

@@ -117,7 +117,7 @@ impl ColumnKind {
 /// One decision column: a quantity the algorithm computes at each step.
 /// Where it does not apply to a step it holds NaN (int, float) or
 /// [`NO_VALUE`] (category, flag).
-#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Copy, Debug)]
 pub struct Column {
     /// Column name, as in the paper where the paper names it (M, N, ...).
     pub name: &'static str,
@@ -127,6 +127,19 @@ pub struct Column {
     pub kind: ColumnKind,
     /// One sentence: what the value is and where it comes from.
     pub doc: &'static str,
+}
+
+/// Two columns are one when they declare the same name, kind and doc. The
+/// same column is nearly always the same constant, whose doc is then the
+/// same string in memory: compared by address first, the long sentences are
+/// read only for copies (a trace joins every segment's columns this way, a
+/// G-code program once per move).
+impl PartialEq for Column {
+    fn eq(&self, other: &Column) -> bool {
+        self.name == other.name
+            && self.kind == other.kind
+            && (std::ptr::eq(self.doc, other.doc) || self.doc == other.doc)
+    }
 }
 
 /// `first` then `second`, as one array of `N` = A + B columns (checked when
@@ -480,7 +493,7 @@ impl TraceBuilder {
     /// ideal path and note: a chord is measured against the arc it stands for.
     pub fn append(
         &mut self,
-        part: Trace,
+        mut part: Trace,
         mut adapt: impl FnMut(&mut Segment),
     ) -> Result<(), Error> {
         assert_eq!(
@@ -490,7 +503,7 @@ impl TraceBuilder {
         let offset = self.steps.len() as u64;
         self.check_length(offset + part.steps())?;
         let slots: Vec<usize> = part.columns.iter().map(|c| self.column_slot(c)).collect();
-        for mut segment in part.segments {
+        for mut segment in std::mem::take(&mut part.segments) {
             segment.first_step += offset;
             for index in &mut segment.column_index {
                 *index = slots[*index];
@@ -498,15 +511,16 @@ impl TraceBuilder {
             adapt(&mut segment);
             self.segments.push(segment);
         }
-        self.steps.reserve(part.steps.len());
         self.check_follows(self.steps.len(), &part.steps)?;
-        for step in part.steps {
-            self.position.apply(step);
-            self.steps.push(step);
-            if self.steps.len() as u64 % CHECKPOINT_INTERVAL == 0 {
-                self.positions.push(self.position);
-            }
+        self.steps.extend_from_slice(&part.steps);
+        // A position where one is due: the part's own point there, found
+        // from the part's checkpoints (a chord's steps are not walked).
+        let mut due = (offset / CHECKPOINT_INTERVAL + 1) * CHECKPOINT_INTERVAL;
+        while due <= self.steps() {
+            self.positions.push(part.point(due - offset));
+            due += CHECKPOINT_INTERVAL;
         }
+        self.position = part.end;
         Ok(())
     }
 
@@ -838,9 +852,11 @@ impl Trace {
 
 /// What a viewer needs to know about a trace besides its bulk arrays.
 /// Point index k runs 0..=steps, step index k runs 0..steps-1; coordinates
-/// are grid units. Its metrics are not in it: they take a pass over every
-/// point, which a caller that only reads points should not pay for, so they
-/// are asked for on their own ([`Trace::metrics`]).
+/// are grid units. Its metrics and its segments are not in it: the metrics
+/// take a pass over every point and the segments are one object (with a
+/// sentence) per chord or G-code move, which a caller that only reads points
+/// should not pay for, so each is asked for on its own ([`Trace::metrics`],
+/// [`Trace::segment_summaries`]).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct TraceSummary<'a> {
@@ -856,7 +872,6 @@ pub struct TraceSummary<'a> {
     pub columns: &'a [Column],
     /// Absent (null) where the algorithm guarantees none.
     pub deviation_bound: Option<&'a DeviationBound>,
-    pub segments: Vec<SegmentSummary<'a>>,
 }
 
 /// One stretch of a trace produced by one stepper (a line, a chord, a
@@ -884,18 +899,21 @@ impl Trace {
             end: self.end.coords().to_vec(),
             columns: &self.columns,
             deviation_bound: self.deviation_bound(),
-            segments: self
-                .segments
-                .iter()
-                .map(|s| SegmentSummary {
-                    first_step: s.first_step,
-                    steps: s.steps,
-                    start: s.start.coords().to_vec(),
-                    ideal: s.ideal.info(),
-                    note: &s.setup_note,
-                })
-                .collect(),
         }
+    }
+
+    /// Every segment as a viewer reads it, in step order.
+    pub fn segment_summaries(&self) -> Vec<SegmentSummary<'_>> {
+        self.segments
+            .iter()
+            .map(|s| SegmentSummary {
+                first_step: s.first_step,
+                steps: s.steps,
+                start: s.start.coords().to_vec(),
+                ideal: s.ideal.info(),
+                note: &s.setup_note,
+            })
+            .collect()
     }
 
     /// The ideal path of all segments joined, for drawing (stride dims).

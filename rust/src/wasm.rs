@@ -153,10 +153,17 @@ impl TraceHandle {
 
 #[wasm_bindgen]
 impl TraceHandle {
-    /// Algorithm, dims, steps, columns and segments.
+    /// Algorithm, dims, steps, columns and deviation bound.
     #[wasm_bindgen(unchecked_return_type = "TraceSummary")]
     pub fn summary(&self) -> JsValue {
         to_js(&self.0.summary())
+    }
+
+    /// Every segment, with its ideal path and note (one per chord of an
+    /// arc, one per G-code move).
+    #[wasm_bindgen(unchecked_return_type = "SegmentSummary[]")]
+    pub fn segments(&self) -> JsValue {
+        to_js(&self.0.segment_summaries())
     }
 
     /// Whole-path statistics, computed on the first call (a pass over

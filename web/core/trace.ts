@@ -11,7 +11,7 @@ import { callCore } from './errors.js';
 import type { TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
-import type { AlgorithmInfo, DecisionColumns, Metrics, TraceOptions, TraceSummary } from './types.js';
+import type { AlgorithmInfo, DecisionColumns, Metrics, SegmentInfo, TraceOptions, TraceSummary } from './types.js';
 import { loadCore } from './wasm.js';
 
 /**
@@ -64,6 +64,7 @@ export class Trace {
   #deviation?: Float64Array;
   #axisError?: Float64Array;
   #metrics?: Metrics;
+  #segments?: SegmentInfo[];
 
   constructor(handle: TraceHandle) {
     this.#handle = handle;
@@ -79,6 +80,17 @@ export class Trace {
   get metrics(): Metrics {
     this.#metrics ??= callCore(() => this.#handle.metrics());
     return this.#metrics;
+  }
+
+  /**
+   * The stretches of the path, each by one stepper against one ideal path
+   * (a line; a chord of an arc; a G-code move), with a note for a learner,
+   * in step order; fetched from the core on first read (an arc in chords
+   * or a G-code program has thousands). Not one of the summary's fields.
+   */
+  get segments(): SegmentInfo[] {
+    this.#segments ??= callCore(() => this.#handle.segments());
+    return this.#segments;
   }
 
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */

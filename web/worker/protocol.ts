@@ -39,12 +39,12 @@ export type WorkerRequest =
 export type RequestKind = WorkerRequest['kind'];
 
 /**
- * The summary the page receives: the trace's, less its segments. A G-code
- * program has a segment per move (100,000 for a program of 100,000 lines),
- * which the page would take a long task to receive; it asks for the one
- * note it shows instead (segmentNote).
+ * The summary the page receives: the trace's, with its metrics. Not its
+ * segments: a G-code program has a segment per move (100,000 for a program
+ * of 100,000 lines), which the page would take a long task to receive; it
+ * asks for the one note it shows instead (segmentNote).
  */
-export type PathSummary = Omit<TraceSummary, 'segments'> & { metrics: Metrics };
+export type PathSummary = TraceSummary & { metrics: Metrics };
 
 /** A finished trace as the page receives it: the summary and the arrays every view needs at once. */
 export interface TracedPath {

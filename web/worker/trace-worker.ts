@@ -48,10 +48,9 @@ function tracedPath(t: Trace): TracedPath {
   // detached here, and the cache would then hand out an empty array.
   const points = t.pointsInRange(0, t.steps + 1);
   const idealPolyline = t.idealPolyline();
-  // The summary's own fields, as the core declared them, less the segments;
-  // the metrics, which the page shows at once, asked of the core here.
-  const { segments: _segments, ...fields } = t;
-  return { summary: { ...fields, metrics: t.metrics }, points, idealPolyline };
+  // The summary's own fields, as the core declared them, and the metrics,
+  // which the page shows at once, asked of the core here.
+  return { summary: { ...t, metrics: t.metrics }, points, idealPolyline };
 }
 
 /** The note of the segment that takes step index `stepIndex` (the first segment's before any step). */
