@@ -1,8 +1,9 @@
 #!/usr/bin/env node
-// `npm run bench`: runs every bench/*.bench.ts in name order (or those named
-// on the command line) and prints one table per file. A bench file
-// default-exports an async function returning { title, notes, rows }
-// (bench/types.ts), so a new one needs no change here. Node 20 does not run TypeScript, so the files go through vite's
+// `npm run bench`: runs every bench/*.bench.ts in name order and prints one
+// table per file; `npm run bench -- end-to-end lines` runs only the files
+// whose names contain one of the words given. A bench file default-exports an async function returning
+// { title, notes, rows } (bench/types.ts), so a new one needs no change
+// here. Node 20 does not run TypeScript, so the files go through vite's
 // module runner (vite is already a dependency; this is what vitest does).
 //
 // Timings are not asserted anywhere: they depend on the machine and on
@@ -58,7 +59,6 @@ function rustc() {
   }
 }
 
-// `npm run bench -- page-reads` runs only the files whose names contain one of the words given.
 const only = process.argv.slice(2);
 const files = readdirSync(BENCH)
   .filter((f) => f.endsWith('.bench.ts') && (only.length === 0 || only.some((word) => f.includes(word))))

@@ -27,6 +27,7 @@ pub mod line;
 pub mod machine;
 pub mod metrics;
 pub mod planner;
+pub mod points;
 pub mod request;
 pub mod step_clocks;
 pub mod step_detail;

@@ -18,6 +18,7 @@ use crate::grid::{MAX_AXES, Point, Step, displacement};
 use crate::ideal::info::IdealPathInfo;
 use crate::ideal::{IdealPath, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
+use crate::points::Coordinate;
 use crate::request::{MAX_STEPS_LIMIT, Request, too_long_advice};
 use serde::Serialize;
 use std::cell::OnceCell;
@@ -93,7 +94,7 @@ pub enum ColumnRole {
 /// One decision column: a quantity the algorithm computes at each step.
 /// Where it does not apply to a step it holds NaN (int, float) or
 /// [`NO_VALUE`] (category, flag).
-#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
+#[derive(Serialize, Tsify, Clone, Copy, Debug)]
 #[serde(rename_all = "camelCase")]
 pub struct Column {
     /// Column name, camelCase, with a per-axis quantity's axis as an upper-case
@@ -173,6 +174,19 @@ pub enum Reading {
     Float(f64),
     Label(&'static str),
     Flag(bool),
+}
+
+/// Two columns are one when they declare the same name, kind and doc. The
+/// same column is nearly always the same constant, whose doc is then the
+/// same string in memory: compared by address first, the long sentences are
+/// read only for copies (a trace joins every segment's columns this way, a
+/// G-code program once per move).
+impl PartialEq for Column {
+    fn eq(&self, other: &Column) -> bool {
+        self.name == other.name
+            && self.kind == other.kind
+            && (std::ptr::eq(self.doc, other.doc) || self.doc == other.doc)
+    }
 }
 
 /// `first` then `second`, as one array of `N` = A + B columns (checked when
@@ -574,7 +588,7 @@ impl TraceBuilder {
     /// ideal path and note: a chord is measured against the arc it stands for.
     pub fn append(
         &mut self,
-        part: Trace,
+        mut part: Trace,
         mut adapt: impl FnMut(&mut Segment),
     ) -> Result<(), Error> {
         assert_eq!(
@@ -587,7 +601,7 @@ impl TraceBuilder {
         for &figure in &part.figures {
             self.add_figure(Some(figure));
         }
-        for mut segment in part.segments {
+        for mut segment in std::mem::take(&mut part.segments) {
             segment.first_step += offset;
             for index in &mut segment.column_index {
                 *index = slots[*index];
@@ -595,15 +609,16 @@ impl TraceBuilder {
             adapt(&mut segment);
             self.segments.push(segment);
         }
-        self.steps.reserve(part.steps.len());
         self.check_follows(self.steps.len(), &part.steps)?;
-        for step in part.steps {
-            self.position.apply(step);
-            self.steps.push(step);
-            if self.steps.len() as u64 % CHECKPOINT_INTERVAL == 0 {
-                self.positions.push(self.position);
-            }
+        self.steps.extend_from_slice(&part.steps);
+        // A position where one is due: the part's own point there, found
+        // from the part's checkpoints (a chord's steps are not walked).
+        let mut due = (offset / CHECKPOINT_INTERVAL + 1) * CHECKPOINT_INTERVAL;
+        while due <= self.steps() {
+            self.positions.push(part.point(due - offset));
+            due += CHECKPOINT_INTERVAL;
         }
+        self.position = part.end;
         Ok(())
     }
 
@@ -728,9 +743,9 @@ impl Trace {
     /// Point index k: the position after k steps.
     pub fn point(&self, k: u64) -> Point {
         let mut p = self.positions[(k / CHECKPOINT_INTERVAL) as usize];
-        for &s in &self.steps[(k - k % CHECKPOINT_INTERVAL) as usize..k as usize] {
-            p.apply(s);
-        }
+        p.displace(&displacement(
+            &self.steps[(k - k % CHECKPOINT_INTERVAL) as usize..k as usize],
+        ));
         p
     }
 
@@ -787,9 +802,73 @@ impl Trace {
 
     /// Points with point indices `from..to`, flat with stride `dims`.
     pub fn points_flat(&self, from: u64, to: u64) -> Vec<i64> {
-        let mut out = Vec::with_capacity((to - from) as usize * self.dims());
-        self.walk_points(from, to, |_, p| out.extend_from_slice(p.coords()));
+        let mut out = vec![0; (to - from) as usize * self.dims()];
+        self.write_points(from, &mut out);
         out
+    }
+
+    /// The same as i32, the type every trace coordinate fits (see
+    /// [`Coordinate`]) and the one that crosses to JavaScript.
+    pub fn points_i32(&self, from: u64, to: u64) -> Vec<i32> {
+        let mut out = vec![0; (to - from) as usize * self.dims()];
+        self.write_points(from, &mut out);
+        out
+    }
+
+    /// Writes the points with point indices `from..` into `out`, stride
+    /// `dims`, as many as it holds: the first from its checkpoint, the
+    /// others by the decode specialised for this trace's number of axes
+    /// ([`crate::points::decode`]), straight into `out`.
+    pub fn write_points<C: Coordinate>(&self, from: u64, out: &mut [C]) {
+        let dims = self.dims();
+        assert_eq!(out.len() % dims, 0, "whole points");
+        let count = (out.len() / dims) as u64;
+        if count == 0 {
+            return;
+        }
+        let first = self.point(from);
+        let (head, rest) = out.split_at_mut(dims);
+        for (c, &v) in head.iter_mut().zip(first.coords()) {
+            *c = C::from_i64(v);
+        }
+        crate::points::decode(&first, self.step_range(from, from + count - 1), rest);
+    }
+
+    /// Points `from..to` through `buffer`, a chunk at a time: each chunk,
+    /// as many whole points as `buffer` holds, is decoded into it and
+    /// handed to `f` with the point index of its first point. Each chunk
+    /// goes on from the last point of the one before, so only the first
+    /// point is found from a checkpoint.
+    pub fn points_by_chunk<C: Coordinate>(
+        &self,
+        from: u64,
+        to: u64,
+        buffer: &mut [C],
+        mut f: impl FnMut(u64, &[C]),
+    ) {
+        let dims = self.dims();
+        let rows = (buffer.len() / dims) as u64;
+        assert!(rows > 0, "a buffer of at least one point");
+        if from >= to {
+            return;
+        }
+        let mut p = self.point(from);
+        for (c, &v) in buffer.iter_mut().zip(p.coords()) {
+            *c = C::from_i64(v);
+        }
+        // The first chunk holds the first point and the points of the
+        // steps after it; every later chunk the points of its steps.
+        let mut k = from;
+        let mut head = 1;
+        while k < to {
+            let end = to.min(k + rows);
+            let steps = self.step_range(k + head - 1, end - 1);
+            let chunk = &mut buffer[..(end - k) as usize * dims];
+            p = crate::points::decode(&p, steps, &mut chunk[head as usize * dims..]);
+            f(k, chunk);
+            k = end;
+            head = 0;
+        }
     }
 
     /// Perpendicular deviation of points `from..to` from the ideal path.
@@ -969,7 +1048,11 @@ impl Trace {
 
 /// What a viewer needs to know about a trace besides its bulk arrays.
 /// Point index k runs 0..=steps, step index k runs 0..steps-1; coordinates
-/// are grid units.
+/// are grid units. Its metrics and its segments are not in it: the metrics
+/// take a pass over every point and the segments are one object (with a
+/// sentence) per chord or G-code move, which a caller that only reads points
+/// should not pay for, so each is asked for on its own ([`Trace::metrics`],
+/// [`Trace::segment_summaries`]).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct TraceSummary<'a> {
@@ -986,10 +1069,8 @@ pub struct TraceSummary<'a> {
     /// The pictures its steps' decisions can have: a step's own is in its
     /// `StepDetail`.
     pub figures: &'a [FigureKind],
-    pub metrics: &'a Metrics,
     /// Absent (null) where the algorithm guarantees none.
     pub deviation_bound: Option<&'a DeviationBound>,
-    pub segments: Vec<SegmentSummary<'a>>,
 }
 
 /// One stretch of a trace produced by one stepper (a line, a chord, a
@@ -1029,10 +1110,22 @@ impl Trace {
             end: self.end.coords().to_vec(),
             columns: &self.columns,
             figures: &self.figures,
-            metrics: self.metrics(),
             deviation_bound: self.deviation_bound(),
-            segments: self.segments.iter().map(Segment::summary).collect(),
         }
+    }
+
+    /// Every segment as a viewer reads it, in step order.
+    pub fn segment_summaries(&self) -> Vec<SegmentSummary<'_>> {
+        self.segments
+            .iter()
+            .map(|s| SegmentSummary {
+                first_step: s.first_step,
+                steps: s.steps,
+                start: s.start.coords().to_vec(),
+                ideal: s.ideal.info(),
+                note: &s.setup_note,
+            })
+            .collect()
     }
 
     /// The ideal path of all segments joined, for drawing (stride dims).

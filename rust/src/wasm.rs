@@ -1,7 +1,8 @@
 //! The WebAssembly boundary, and the only module that knows about JavaScript.
 //!
 //! Bulk data crosses as flat typed arrays, copied out of wasm memory once:
-//! - points: Int32Array, stride = dims, one row per point index;
+//! - points: Int32Array, stride = dims, one row per point index (made on the
+//!   JS side and filled from wasm memory a chunk at a time);
 //! - decisions: Float64Array, column-major, one run of (to - from) values per
 //!   trace column, in the order of the summary's `columns` (where a column
 //!   does not apply to a step: NaN, or `trace::NO_VALUE` in a category or
@@ -124,6 +125,12 @@ pub fn check(
     Ok(to_js(&check))
 }
 
+/// Coordinates decoded into wasm memory at a time when points are read
+/// (128 KiB): large enough that the calls across the boundary per chunk
+/// cost nothing measurable, small enough to stay in the processor's cache
+/// between the decode and the copy.
+const POINTS_CHUNK_VALUES: usize = 1 << 15;
+
 /// A finished trace held in wasm memory.
 #[wasm_bindgen]
 pub struct TraceHandle(Trace);
@@ -150,22 +157,41 @@ impl TraceHandle {
 
 #[wasm_bindgen]
 impl TraceHandle {
-    /// Algorithm, dims, steps, columns, metrics and segments.
+    /// Algorithm, dims, steps, columns and deviation bound.
     #[wasm_bindgen(unchecked_return_type = "TraceSummary")]
     pub fn summary(&self) -> JsValue {
         to_js(&self.0.summary())
     }
 
-    /// Points with point indices `from..to` (Int32Array, stride dims),
-    /// decoded straight into the i32 array JS receives: 4 bytes per
-    /// coordinate in wasm memory while the copy is made, nothing more.
-    pub fn points(&self, from: u32, to: u32) -> Result<Vec<i32>, JsValue> {
+    /// Every segment, with its ideal path and note (one per chord of an
+    /// arc, one per G-code move).
+    #[wasm_bindgen(unchecked_return_type = "SegmentSummary[]")]
+    pub fn segments(&self) -> JsValue {
+        to_js(&self.0.segment_summaries())
+    }
+
+    /// Whole-path statistics, computed on the first call (a pass over
+    /// every point and a replay of the decisions for the ties).
+    #[wasm_bindgen(unchecked_return_type = "Metrics")]
+    pub fn metrics(&self) -> JsValue {
+        to_js(self.0.metrics())
+    }
+
+    /// Points with point indices `from..to` (Int32Array, stride dims): the
+    /// array is made on the JS side and filled a chunk at a time, each
+    /// chunk decoded ([`Trace::points_by_chunk`]) into one buffer of
+    /// [`POINTS_CHUNK_VALUES`] in wasm memory and copied out of it. So the
+    /// points cross with one copy, and reading them all grows wasm memory
+    /// by that buffer, whatever the trace's length.
+    pub fn points(&self, from: u32, to: u32) -> Result<js_sys::Int32Array, JsValue> {
         let (from, to) = self.point_range(from, to)?;
-        let mut out = Vec::with_capacity((to - from) as usize * self.0.dims());
-        // Every point lies between validated endpoints or within a validated
-        // arc's bounding box, so it fits in i32 (|c| <= 2^31 - 1).
-        self.0.walk_points(from, to, |_, p| {
-            out.extend(p.coords().iter().map(|&c| c as i32))
+        let dims = self.0.dims();
+        let out = js_sys::Int32Array::new_with_length(((to - from) as usize * dims) as u32);
+        let rows = (POINTS_CHUNK_VALUES / dims) as u64;
+        let mut buffer = vec![0i32; rows.min(to - from).max(1) as usize * dims];
+        self.0.points_by_chunk(from, to, &mut buffer, |k, chunk| {
+            let at = ((k - from) as usize * dims) as u32;
+            out.subarray(at, at + chunk.len() as u32).copy_from(chunk);
         });
         Ok(out)
     }

@@ -169,8 +169,11 @@ proptest! {
     ) {
         // Bresenham2d (corrected), Bresenham3d and Nd record through the
         // shared branch-free loop (line::terms), greedy and walk6 through
-        // loops of their own; none through next_step.
+        // loops of their own, liu-float on the integers its decimals stand
+        // for, the DDA with its number of axes a constant; none through
+        // next_step.
         common::check_fill(|| Nd::new(from, to, tie, gcd), chunk).map_err(TestCaseError::fail)?;
+        common::check_fill(|| Dda::new(from, to), chunk).map_err(TestCaseError::fail)?;
         for order in [TieAxis::Lower, TieAxis::Higher] {
             common::check_fill(|| Greedy::new(from, to, order), chunk).map_err(TestCaseError::fail)?;
             common::check_fill(|| Walk6::new(from, to, order), chunk).map_err(TestCaseError::fail)?;
@@ -182,6 +185,9 @@ proptest! {
         }
         if from.dims() == 3 {
             common::check_fill(|| Bresenham3d::new(from, to, tie, gcd), chunk).map_err(TestCaseError::fail)?;
+            for decimals in [0, 1, 4, 10] {
+                common::check_fill(|| LiuFloat::new(from, to, tie, decimals), chunk).map_err(TestCaseError::fail)?;
+            }
         }
     }
 
@@ -498,5 +504,23 @@ fn float_rules_on_the_longest_lines() {
         // error and Liu's rounding need millions of steps to add up to cells.
         assert!(ideal.deviation(&p) <= passive_bound(&from, &to));
         assert!(ideal.deviation(&q) <= passive_bound(&from, &to));
+    }
+    // The recording loops take the same steps this far out, with every
+    // number of decimals (Liu's on the integers the decimals stand for).
+    let filled = first_steps_filled(Dda::new(from, to));
+    let mut dda = Dda::new(from, to);
+    for (k, &step) in filled.iter().enumerate() {
+        assert_eq!(dda.next_step().unwrap().0, step, "dda fill, step {k}");
+    }
+    for decimals in 0..=10 {
+        let mut liu = LiuFloat::new(from, to, TiePolicy::Hold, decimals);
+        let filled = first_steps_filled(liu.clone());
+        for (k, &step) in filled.iter().enumerate() {
+            assert_eq!(
+                liu.next_step().unwrap().0,
+                step,
+                "liu-float fill, {decimals} decimals, step {k}"
+            );
+        }
     }
 }

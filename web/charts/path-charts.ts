@@ -8,7 +8,7 @@
  * long path, where the deviation chart shows each bucket's range as a band.
  */
 import type uPlot from 'uplot';
-import type { ChartSeries, TraceSummary } from '../core/types.js';
+import type { ChartSeries, Metrics, TraceSummary } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import { afterNextFrame } from '../main-thread.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
@@ -18,7 +18,7 @@ import { StepChart } from './chart.js';
 export const CHART_POINTS = 2000;
 
 export interface ChartedTrace extends Pick<TraceSummary, 'dims' | 'deviationBound'> {
-  metrics: Pick<TraceSummary['metrics'], 'maxDeviation'>;
+  metrics: Pick<Metrics, 'maxDeviation'>;
   series(maxPoints: number): Promise<ChartSeries>;
 }
 

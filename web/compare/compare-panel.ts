@@ -7,11 +7,11 @@
  */
 import { element } from '../form/options-form.js';
 import { formatPoint, NO_VALUE_TEXT } from '../format.js';
-import type { StepWhy, TraceSummary } from '../core/index.js';
-import type { TraceDifference } from '../worker/protocol.js';
+import type { StepWhy } from '../core/index.js';
+import type { PathSummary, TraceDifference } from '../worker/protocol.js';
 
 /** The parts of a trace the table reads. */
-export type ComparedTrace = Pick<TraceSummary, 'algorithm' | 'dims' | 'steps' | 'end' | 'metrics'>;
+export type ComparedTrace = Pick<PathSummary, 'algorithm' | 'dims' | 'steps' | 'end' | 'metrics'>;
 
 /** A step's decision values as one line, "M = 2, N = —, region = a", with a dash where a column does not apply. */
 function decisionList(why: StepWhy): HTMLElement {

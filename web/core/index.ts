@@ -6,7 +6,7 @@
  *   t.points;          // Int32Array, stride t.dims
  *   t.decisions.M;     // Float64Array, one value per step
  *   t.deviation;       // Float64Array, one value per point
- *   t.metrics;         // { steps, maxDeviation, meanDeviation, ... }
+ *   t.metrics;         // { steps, maxDeviation, meanDeviation, ... }, computed when first read
  *
  *   const c = await compare({ algorithms: ['regions', 'greedy'], from: [0, 0, 0], to: [10, 7, 6] });
  *   c.firstDifference; // { pointIndex, a, b, aWhy: { explanation, decisions }, bWhy }

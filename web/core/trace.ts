@@ -1,8 +1,10 @@
 /**
  * The headless API: `await trace(options)` runs an algorithm in the wasm core
- * and returns a Trace. Bulk arrays are copied out of wasm memory in chunks of
- * about CHUNK_BYTES, so a long path never needs a second full-size copy
- * inside wasm (whose memory, once grown, is never given back).
+ * and returns a Trace: the steps recorded, nothing else computed until it is
+ * read. Points are filled by the core into the array returned; the other
+ * bulk arrays are copied out of wasm memory in chunks of about CHUNK_BYTES.
+ * Either way a long path never needs a second full-size copy inside wasm
+ * (whose memory, once grown, is never given back).
  */
 import type { Comparison } from './compare.js';
 import { callCore } from './errors.js';
@@ -10,7 +12,7 @@ import { argumentError, describeValue, indexRange, wholeNumber } from './guard.j
 import type { StepClocks, TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
-import type { AlgorithmInfo, ChartSeries, DecisionColumns, StepDetail, TraceOptions, TraceSummary } from './types.js';
+import type { AlgorithmInfo, ChartSeries, DecisionColumns, Metrics, SegmentInfo, StepDetail, TraceOptions, TraceSummary } from './types.js';
 import { loadCore } from './wasm.js';
 
 /**
@@ -70,6 +72,8 @@ export class Trace {
   #decisions?: DecisionColumns;
   #deviation?: Float64Array;
   #axisError?: Float64Array;
+  #metrics?: Metrics;
+  #segments?: SegmentInfo[];
 
   static {
     handleOf = (field, trace) => {
@@ -86,6 +90,30 @@ export class Trace {
     Object.assign(this, handle.summary());
   }
 
+  /**
+   * Whole-path statistics (deviation, per-axis error, ties, pulses),
+   * computed by the core on first read: a pass over every point that
+   * `trace()` does not make, so a caller that only wants points never pays
+   * for it. Not one of the summary's fields: spreading a Trace leaves it out.
+   */
+  get metrics(): Metrics {
+    const core = this.#core;
+    this.#metrics ??= callCore(() => core.metrics());
+    return this.#metrics;
+  }
+
+  /**
+   * The stretches of the path, each by one stepper against one ideal path
+   * (a line; a chord of an arc; a G-code move), with a note for a learner,
+   * in step order; fetched from the core on first read (an arc in chords
+   * or a G-code program has thousands). Not one of the summary's fields.
+   */
+  get segments(): SegmentInfo[] {
+    const core = this.#core;
+    this.#segments ??= callCore(() => core.segments());
+    return this.#segments;
+  }
+
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
   get points(): Int32Array {
     this.#points ??= this.pointsInRange(0, this.steps + 1);
@@ -97,11 +125,15 @@ export class Trace {
     return handleOf('trace', this);
   }
 
-  /** Points with point indices from..to, flat with stride dims. */
+  /**
+   * Points with point indices from..to, flat with stride dims: decoded by
+   * the core a chunk at a time straight into the array returned (its wasm
+   * memory grows by one chunk's buffer, not by the points).
+   */
   pointsInRange(from: number, to: number): Int32Array {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
-    return copyRows(Int32Array, from, to, this.dims, (a, b) => core.points(a, b));
+    return callCore(() => core.points(from, to));
   }
 
   /** Point index k as an array of coordinates. */

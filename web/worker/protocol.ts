@@ -19,7 +19,7 @@
  * StepDetail.
  */
 import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, ChartSeries, Limit, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, ChartSeries, Limit, Metrics, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -45,12 +45,12 @@ export type WorkerRequest =
 export type RequestKind = WorkerRequest['kind'];
 
 /**
- * The summary the page receives: the trace's, less its segments. A G-code
- * program has a segment per move (100,000 for a program of 100,000 lines),
- * which the page would take a long task to receive; the segment of the
- * point it shows comes with that point's StepDetail instead.
+ * The summary the page receives: the trace's, with its metrics. Not its
+ * segments: a G-code program has a segment per move (100,000 for a program
+ * of 100,000 lines), which the page would take a long task to receive; the
+ * segment of the point it shows comes with that point's StepDetail instead.
  */
-export type PathSummary = Omit<TraceSummary, 'segments'>;
+export type PathSummary = TraceSummary & { metrics: Metrics };
 
 /** A finished trace as the page receives it: the summary and the arrays every view needs at once. */
 export interface TracedPath {

@@ -47,9 +47,9 @@ function tracedPath(t: Trace): TracedPath {
   // detached here, and the cache would then hand out an empty array.
   const points = t.pointsInRange(0, t.steps + 1);
   const idealPolyline = t.idealPolyline();
-  // The summary's own fields, as the core declared them, less the segments.
-  const { segments: _segments, ...summary } = t;
-  return { summary, points, idealPolyline };
+  // The summary's own fields, as the core declared them, and the metrics,
+  // which the page shows at once, asked of the core here.
+  return { summary: { ...t, metrics: t.metrics }, points, idealPolyline };
 }
 
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {

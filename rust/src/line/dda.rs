@@ -6,7 +6,7 @@ use super::{GUARD_LABELS, Guard, Mirror, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO};
-use crate::trace::{Column, ColumnKind, Decision, Stepper};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 
 pub const ID: &str = "dda";
 
@@ -188,6 +188,18 @@ impl Stepper for Dda {
         Some((step, why))
     }
 
+    /// The steps of [`Stepper::next_step`], with the number of axes a
+    /// constant ([`Dda::fill_axes`]) and no decision built.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        match self.mirror.dims() {
+            2 => self.fill_axes::<2>(out),
+            3 => self.fill_axes::<3>(out),
+            4 => self.fill_axes::<4>(out),
+            5 => self.fill_axes::<5>(out),
+            _ => self.fill_axes::<MAX_AXES>(out),
+        }
+    }
+
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
     }
@@ -201,5 +213,48 @@ impl Stepper for Dda {
             self.mirror.longest(),
             incs.join(", ")
         )
+    }
+}
+
+impl Dda {
+    /// [`Stepper::fill`] for `DIMS` axes: `next_step`'s arithmetic, the
+    /// same f64 additions in the same order, on local copies (in
+    /// registers); the units left per axis are counted down instead of
+    /// found from the position.
+    #[inline(always)]
+    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let toward: [Step; DIMS] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
+        let sign: [i64; DIMS] = std::array::from_fn(|a| self.mirror.sign(a));
+        let inc: [f64; DIMS] = std::array::from_fn(|a| self.inc[a]);
+        let mut acc: [f64; DIMS] = std::array::from_fn(|a| self.acc[a]);
+        let start: [i64; DIMS] = std::array::from_fn(|a| self.at.get(a));
+        let mut at = start;
+        let mut left: [i64; DIMS] =
+            std::array::from_fn(|a| self.mirror.magnitude(a) - self.mirror.progress(&self.at, a));
+        let mut remaining = self.remaining;
+        for slot in &mut out[..taken] {
+            let mut step = Step::NONE;
+            for axis in 0..DIMS {
+                acc[axis] += inc[axis];
+                let rounded = (acc[axis] + 0.5).floor() as i64;
+                let wants = (rounded - at[axis]) * sign[axis] > 0;
+                let (moves, _) = Guard::apply(wants, left[axis], remaining);
+                if moves {
+                    step = Step(step.0 | toward[axis].0);
+                    at[axis] += sign[axis];
+                    left[axis] -= 1;
+                }
+            }
+            *slot = step;
+            remaining -= 1;
+        }
+        self.acc[..DIMS].copy_from_slice(&acc);
+        self.at.coords_mut().copy_from_slice(&at);
+        self.remaining = remaining;
+        Filled {
+            steps: taken,
+            displacement: std::array::from_fn(|a| if a < DIMS { at[a] - start[a] } else { 0 }),
+        }
     }
 }

@@ -213,40 +213,14 @@ impl Stepper for Greedy {
     }
 
     /// The same choices as [`Stepper::next_step`] without the squared
-    /// distances: a step along `axis` turns l^2 into (l - 1)^2, changing the
-    /// sum by 1 - 2l, so the candidate nearest the goal is the axis with the
-    /// most units left (ties in the same order). No i128, no decision.
+    /// distances ([`Greedy::fill_axes`]), with the number of axes a constant.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
-        let taken = out.len().min(self.remaining as usize);
-        let out = &mut out[..taken];
-        let dims = self.mirror.dims();
-        let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
-        // A local copy: the loop keeps it in registers, not in `self`.
-        let start = self.left;
-        let mut left = start;
-        // A later axis wins a tie with the higher-axis order: "at least"
-        // rather than "more than", a + 1 on the left of the comparison.
-        let ties_to_later = i64::from(self.order == TieAxis::Higher);
-        for slot in out.iter_mut() {
-            let (mut chosen, mut most_left) = (0, 0);
-            for axis in 0..dims {
-                let l = left[axis];
-                // An axis at its goal is no candidate (the half-plane trick);
-                // a larger l is a smaller distance. Selects, not branches:
-                // which axis wins is as good as random to a branch predictor.
-                let take = (l > 0) & (l + ties_to_later > most_left);
-                chosen = if take { axis } else { chosen };
-                most_left = if take { l } else { most_left };
-            }
-            left[chosen] -= 1;
-            *slot = toward[chosen];
-        }
-        self.left = left;
-        self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            // One step per unit no longer left, toward the end.
-            displacement: std::array::from_fn(|a| self.mirror.sign(a) * (start[a] - left[a])),
+        match self.mirror.dims() {
+            2 => self.fill_axes::<2>(out),
+            3 => self.fill_axes::<3>(out),
+            4 => self.fill_axes::<4>(out),
+            5 => self.fill_axes::<5>(out),
+            _ => self.fill_axes::<MAX_AXES>(out),
         }
     }
 
@@ -262,5 +236,50 @@ impl Stepper for Greedy {
             self.order.label(),
             self.mirror.mirror_note()
         )
+    }
+}
+
+impl Greedy {
+    /// [`Stepper::fill`] for `DIMS` axes: the same choices as
+    /// [`Stepper::next_step`] without the squared
+    /// distances: a step along `axis` turns l^2 into (l - 1)^2, changing the
+    /// sum by 1 - 2l, so the candidate nearest the goal is the axis with the
+    /// most units left (ties in the same order). No i128, no decision.
+    #[inline(always)]
+    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let out = &mut out[..taken];
+        let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
+        // A local copy: the loop keeps it in registers, not in `self`.
+        let start = self.left;
+        let mut left = start;
+        // A later axis wins a tie with the higher-axis order: "at least"
+        // rather than "more than", a + 1 on the left of the comparison.
+        let ties_to_later = i64::from(self.order == TieAxis::Higher);
+        for slot in out.iter_mut() {
+            let (mut chosen, mut most_left) = (0, 0);
+            for axis in 0..DIMS {
+                let l = left[axis];
+                // An axis at its goal is no candidate (the half-plane trick);
+                // a larger l is a smaller distance. Selects, not branches:
+                // which axis wins is as good as random to a branch predictor.
+                let take = (l > 0) & (l + ties_to_later > most_left);
+                chosen = if take { axis } else { chosen };
+                most_left = if take { l } else { most_left };
+            }
+            // Every axis by a select, not the chosen one by its index: the
+            // counts stay in registers instead of going through memory.
+            for axis in 0..DIMS {
+                left[axis] -= i64::from(axis == chosen);
+            }
+            *slot = toward[chosen];
+        }
+        self.left = left;
+        self.remaining -= taken as u64;
+        Filled {
+            steps: taken,
+            // One step per unit no longer left, toward the end.
+            displacement: std::array::from_fn(|a| self.mirror.sign(a) * (start[a] - left[a])),
+        }
     }
 }

@@ -13,7 +13,7 @@ use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
-use crate::trace::{Column, ColumnKind, Decision, Stepper};
+use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, fill_by_next_step};
 
 pub const ID: &str = "liu-float";
 
@@ -80,9 +80,27 @@ fn decimals_option(req: &Request) -> Result<u32, Error> {
 /// `round`), divided by 10^d. The product is itself an f64, so a decimal
 /// half that binary cannot store exactly rounds the way its stored value lies.
 pub fn round_decimals(v: f64, decimals: u32) -> f64 {
-    let scale = 10f64.powi(decimals as i32);
+    round_to_scale(v, decimal_scale(decimals))
+}
+
+/// 10^d, as [`round_decimals`] scales by it (exact: every power of ten up
+/// to 10^22 is an f64, and so is each partial product).
+pub fn decimal_scale(decimals: u32) -> f64 {
+    10f64.powi(decimals as i32)
+}
+
+/// [`round_decimals`] with its scale computed once, for a stepper that
+/// rounds every step.
+#[inline(always)]
+fn round_to_scale(v: f64, scale: f64) -> f64 {
     (v * scale).round() / scale
 }
+
+/// Magnitude below which [`LiuFloat::fill`] runs Liu's rule on integers:
+/// with |E|, 10^d and |K| below it, the three f64 operations of a step
+/// (e - 1, + k, x 10^d) err by less than 4 * 2^-53 * 2^48 = 1/8 in all,
+/// so rounding their result gives the integer E - 10^d + K exactly.
+const EXACT_SCALED: i64 = 1 << 48;
 
 /// The decision behind one step.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -199,6 +217,8 @@ pub struct LiuFloat {
     left: [i64; 3],
     remaining: u64,
     decimals: u32,
+    /// 10^decimals ([`decimal_scale`]).
+    scale: f64,
     tie: TiePolicy,
 }
 
@@ -219,34 +239,18 @@ impl LiuFloat {
             left: [0, 1, 2].map(|a| mirror.magnitude(a)),
             remaining: longest as u64,
             decimals,
+            scale: decimal_scale(decimals),
             tie,
         }
     }
 
-    /// Liu's epsilon for `axis` computed exactly at the current point:
-    /// Wang's discriminant (eq. 6) over 2|Δactive|.
-    fn exact_epsilon(&self, axis: usize) -> f64 {
-        let (dx, da) = (self.mirror.longest(), self.mirror.magnitude(axis));
-        let reference = dx - self.left[self.mirror.major()];
-        let m = wang_discriminant(da, dx, reference, da - self.left[axis]);
-        m as f64 / (2 * dx) as f64
-    }
-}
-
-impl Stepper for LiuFloat {
-    type Why = LiuWhy;
-
-    fn next_step(&mut self) -> Option<(Step, LiuWhy)> {
-        if self.remaining == 0 {
-            return None;
-        }
+    /// One step of Liu's rule: the step, the guard of each axis and whether
+    /// an epsilon was exactly 0; epsilon and the units left move on.
+    #[inline(always)]
+    fn advance(&mut self) -> (Step, [Guard; 3], bool) {
         let mut step = Step::NONE;
-        // Measured before any axis moves: the exact value at this point.
-        let drift: [Option<f64>; 3] =
-            std::array::from_fn(|a| Some(self.epsilon[a]? - self.exact_epsilon(a)));
         let mut guards = [Guard::Rule; 3];
         let mut tie = false;
-        let epsilon = self.epsilon;
         for axis in 0..3 {
             let (Some(e), Some(k)) = (self.epsilon[axis], self.slope[axis]) else {
                 // Active: one unit every step.
@@ -267,9 +271,58 @@ impl Stepper for LiuFloat {
                 next -= 1.0;
             }
             // Every step epsilon gains k, and the sum is kept to d decimals.
-            self.epsilon[axis] = Some(round_decimals(next + k, self.decimals));
+            self.epsilon[axis] = Some(round_to_scale(next + k, self.scale));
         }
         self.remaining -= 1;
+        (step, guards, tie)
+    }
+
+    /// For [`Stepper::fill`]: each passive axis's epsilon and slope as the
+    /// integers E = epsilon * 10^d and K = k * 10^d they stand for (every
+    /// epsilon and k is such an integer rounded and divided by 10^d), when
+    /// they and `steps` more steps stay below [`EXACT_SCALED`]: then each
+    /// step's f64 arithmetic rounds to E - (10^d if the axis steps) + K
+    /// exactly, and epsilon > 0, = 0 are E > 0, = 0. None otherwise.
+    fn scaled(&self, steps: u64) -> Option<[Option<(i64, i64)>; 3]> {
+        let mut out = [None; 3];
+        for axis in 0..3 {
+            let (Some(e), Some(k)) = (self.epsilon[axis], self.slope[axis]) else {
+                continue;
+            };
+            let (big_e, big_k) = ((e * self.scale).round(), (k * self.scale).round());
+            // Each must give its value back exactly (it does below the bound).
+            let reach = big_e.abs() + steps as f64 * (big_k.abs() + self.scale);
+            if !(reach < EXACT_SCALED as f64) || big_e / self.scale != e || big_k / self.scale != k
+            {
+                return None;
+            }
+            out[axis] = Some((big_e as i64, big_k as i64));
+        }
+        Some(out)
+    }
+
+    /// Liu's epsilon for `axis` computed exactly at the current point:
+    /// Wang's discriminant (eq. 6) over 2|Δactive|.
+    fn exact_epsilon(&self, axis: usize) -> f64 {
+        let (dx, da) = (self.mirror.longest(), self.mirror.magnitude(axis));
+        let reference = dx - self.left[self.mirror.major()];
+        let m = wang_discriminant(da, dx, reference, da - self.left[axis]);
+        m as f64 / (2 * dx) as f64
+    }
+}
+
+impl Stepper for LiuFloat {
+    type Why = LiuWhy;
+
+    fn next_step(&mut self) -> Option<(Step, LiuWhy)> {
+        if self.remaining == 0 {
+            return None;
+        }
+        // Measured before any axis moves: the exact value at this point.
+        let drift: [Option<f64>; 3] =
+            std::array::from_fn(|a| Some(self.epsilon[a]? - self.exact_epsilon(a)));
+        let epsilon = self.epsilon;
+        let (step, guards, tie) = self.advance();
         let why = LiuWhy {
             epsilon,
             drift,
@@ -279,6 +332,66 @@ impl Stepper for LiuFloat {
             decimals: self.decimals,
         };
         Some((step, why))
+    }
+
+    /// Liu's rule on the integers epsilon and k stand for ([`Self::scaled`]),
+    /// no rounding, no division, no decision built; the last step of the
+    /// chunk by [`Self::advance`] in f64, so the state left behind is the
+    /// rule's to the bit (a zero epsilon keeps the sign its f64 arithmetic
+    /// gives it). Falls back to `next_step` where the integers could leave
+    /// the exact range.
+    fn fill(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let Some(scaled) = self.scaled(taken as u64).filter(|_| taken > 0) else {
+            return fill_by_next_step(self, out);
+        };
+        let scale = self.scale as i64;
+        // epsilon > threshold steps: >= 0 with tie = advance, > 0 with hold.
+        let threshold = -i64::from(self.tie == TiePolicy::Advance);
+        let toward: [Step; 3] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
+        let always = (0..3)
+            .filter(|&a| scaled[a].is_none())
+            .fold(Step::NONE, |s, a| Step(s.0 | toward[a].0));
+        let start_left = self.left;
+        let mut values = scaled.map(|v| v.map_or(0, |(e, _)| e));
+        let mut remaining = self.remaining;
+        for slot in &mut out[..taken - 1] {
+            let mut step = always;
+            for axis in 0..3 {
+                let Some((_, k)) = scaled[axis] else {
+                    continue;
+                };
+                let wants = values[axis] > threshold;
+                let (moves, _) = Guard::apply(wants, self.left[axis], remaining);
+                if moves {
+                    step = Step(step.0 | toward[axis].0);
+                    self.left[axis] -= 1;
+                    values[axis] -= scale;
+                }
+                values[axis] += k;
+            }
+            *slot = step;
+            remaining -= 1;
+        }
+        for axis in 0..3 {
+            if scaled[axis].is_none() {
+                self.left[axis] -= taken as i64 - 1;
+            } else {
+                self.epsilon[axis] = Some(values[axis] as f64 / self.scale);
+            }
+        }
+        self.remaining = remaining;
+        out[taken - 1] = self.advance().0;
+        Filled {
+            steps: taken,
+            displacement: std::array::from_fn(|a| {
+                if a < 3 {
+                    self.mirror.sign(a) * (start_left[a] - self.left[a])
+                } else {
+                    0
+                }
+            }),
+        }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

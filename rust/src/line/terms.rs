@@ -74,7 +74,17 @@ impl Term {
             // No step (and a zero-length line's decrement is 0).
             return 0;
         }
-        // In i128: steps·increment reaches 2^63 on the longest lines.
+        // In i64 where it fits (a chord's or a short line's terms: an i128
+        // division is a library call in wasm, and a trace makes one per
+        // chunk), else in i128: steps·increment reaches 2^63 on the longest
+        // lines.
+        if let Some(gone) = (steps as i64)
+            .checked_mul(self.increment)
+            .and_then(|total| total.checked_add(self.value))
+            .and_then(|total| total.checked_sub(value_after))
+        {
+            return gone / self.decrement;
+        }
         ((self.value as i128 + steps as i128 * self.increment as i128 - value_after as i128)
             / self.decrement as i128) as i64
     }
@@ -92,10 +102,28 @@ impl Term {
         if steps == 0 {
             return *self;
         }
+        // In i64 where it fits, as in `moves`, else in i128: steps·increment
+        // reaches 2^63 on the longest lines.
+        let total = (steps as i64)
+            .checked_mul(self.increment)
+            .and_then(|gained| gained.checked_add(self.value));
+        let excess = total.and_then(|t| {
+            t.checked_sub(self.steps_above)
+                .and_then(|e| e.checked_sub(self.increment))
+        });
+        if let (Some(total), Some(less)) = (total, excess.and_then(i64::checked_neg)) {
+            // n = ceil(excess / decrement), decrement > 0 on any line with
+            // steps; n·decrement is at most the excess plus a decrement.
+            let n = -less.div_euclid(self.decrement);
+            if let Some(value) = n
+                .checked_mul(self.decrement)
+                .and_then(|d| total.checked_sub(d))
+            {
+                return Term { value, ..*self };
+            }
+        }
         let (inc, dec) = (self.increment as i128, self.decrement as i128);
-        // In i128: steps·increment reaches 2^63 on the longest lines.
         let excess = self.value as i128 + steps as i128 * inc - self.steps_above as i128 - inc;
-        // n = ceil(excess / decrement), decrement > 0 on any line with steps.
         let n = -(-excess).div_euclid(dec);
         Term {
             value: (self.value as i128 + steps as i128 * inc - n * dec) as i64,

@@ -231,53 +231,15 @@ impl Stepper for Walk6 {
         Some((self.mirror.toward(Step::NONE, crossed), why))
     }
 
-    /// The same walk as [`Stepper::next_step`], comparing crossings in u64:
-    /// t = (2k + 1) / (2|Δ|) orders as (2k + 1) / |Δ|, and with k <= |Δ| <=
-    /// 2^31 each cross product (2k + 1)·|Δ'| stays below 2^63 + 2^31 < 2^64
-    /// (an arrived axis, k = |Δ|, is compared too, and its result ignored).
-    /// No decision.
+    /// The same walk as [`Stepper::next_step`] ([`Walk6::fill_axes`]), with
+    /// the number of axes a constant.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
-        let taken = out.len().min(self.remaining as usize);
-        let out = &mut out[..taken];
-        let dims = self.mirror.dims();
-        let magnitude: [u64; MAX_AXES] = std::array::from_fn(|a| {
-            if a < dims {
-                self.mirror.magnitude(a) as u64
-            } else {
-                0
-            }
-        });
-        let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
-        // A local copy: the loop keeps it in registers, not in `self`.
-        let start = self.crossed;
-        let mut crossed = start;
-        // A later axis wins a tie with the higher-axis order: "at most"
-        // rather than "less than", a + 1 on the right of the comparison.
-        let ties_to_later = u64::from(self.order == TieAxis::Higher);
-        for slot in out.iter_mut() {
-            // The best crossing so far as (2k + 1, |Δ|); (1, 0) is t = ∞,
-            // which every face ahead beats.
-            let (mut first, mut best) = (0, (1u64, 0u64));
-            for axis in 0..dims {
-                let k = crossed[axis] as u64;
-                let num = 2 * k + 1;
-                let ahead = k < magnitude[axis];
-                let sooner = num * best.1 < best.0 * magnitude[axis] + ties_to_later;
-                // Selects, not branches: which face comes first is as good
-                // as random to a branch predictor.
-                let take = ahead & sooner;
-                first = if take { axis } else { first };
-                best = if take { (num, magnitude[axis]) } else { best };
-            }
-            crossed[first] += 1;
-            *slot = toward[first];
-        }
-        self.crossed = crossed;
-        self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            // One step per face crossed, toward the end.
-            displacement: std::array::from_fn(|a| self.mirror.sign(a) * (crossed[a] - start[a])),
+        match self.mirror.dims() {
+            2 => self.fill_axes::<2>(out),
+            3 => self.fill_axes::<3>(out),
+            4 => self.fill_axes::<4>(out),
+            5 => self.fill_axes::<5>(out),
+            _ => self.fill_axes::<MAX_AXES>(out),
         }
     }
 
@@ -305,5 +267,62 @@ impl Stepper for Walk6 {
             self.order.label(),
             self.mirror.mirror_note()
         )
+    }
+}
+
+impl Walk6 {
+    /// [`Stepper::fill`] for `DIMS` axes: the same walk as
+    /// [`Stepper::next_step`], comparing crossings in u64:
+    /// t = (2k + 1) / (2|Δ|) orders as (2k + 1) / |Δ|, and with k <= |Δ| <=
+    /// 2^31 each cross product (2k + 1)·|Δ'| stays below 2^63 + 2^31 < 2^64
+    /// (an arrived axis, k = |Δ|, is compared too, and its result ignored).
+    /// No decision.
+    #[inline(always)]
+    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) -> Filled {
+        let taken = out.len().min(self.remaining as usize);
+        let out = &mut out[..taken];
+        let magnitude: [u64; MAX_AXES] = std::array::from_fn(|a| {
+            if a < DIMS {
+                self.mirror.magnitude(a) as u64
+            } else {
+                0
+            }
+        });
+        let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
+        // A local copy: the loop keeps it in registers, not in `self`.
+        let start = self.crossed;
+        let mut crossed = start;
+        // A later axis wins a tie with the higher-axis order: "at most"
+        // rather than "less than", a + 1 on the right of the comparison.
+        let ties_to_later = u64::from(self.order == TieAxis::Higher);
+        for slot in out.iter_mut() {
+            // The best crossing so far as (2k + 1, |Δ|); (1, 0) is t = ∞,
+            // which every face ahead beats.
+            let (mut first, mut best) = (0, (1u64, 0u64));
+            for axis in 0..DIMS {
+                let k = crossed[axis] as u64;
+                let num = 2 * k + 1;
+                let ahead = k < magnitude[axis];
+                let sooner = num * best.1 < best.0 * magnitude[axis] + ties_to_later;
+                // Selects, not branches: which face comes first is as good
+                // as random to a branch predictor.
+                let take = ahead & sooner;
+                first = if take { axis } else { first };
+                best = if take { (num, magnitude[axis]) } else { best };
+            }
+            // Every axis by a select, not the crossed one by its index: the
+            // counts stay in registers instead of going through memory.
+            for axis in 0..DIMS {
+                crossed[axis] += i64::from(axis == first);
+            }
+            *slot = toward[first];
+        }
+        self.crossed = crossed;
+        self.remaining -= taken as u64;
+        Filled {
+            steps: taken,
+            // One step per face crossed, toward the end.
+            displacement: std::array::from_fn(|a| self.mirror.sign(a) * (crossed[a] - start[a])),
+        }
     }
 }

@@ -3,7 +3,7 @@
 #![allow(dead_code)] // each test crate uses its own subset
 
 use voxpath::grid::{Point, Step, displacement};
-use voxpath::trace::{ColumnKind, Stepper};
+use voxpath::trace::{ColumnKind, Decision, Stepper};
 
 /// Every step of `stepper` from `from`: the point after the step and why.
 pub fn run<S: Stepper>(mut stepper: S, from: Point) -> Vec<(Point, S::Why)> {
@@ -56,15 +56,26 @@ pub fn line_algorithms() -> impl Iterator<Item = &'static voxpath::algorithms::A
         .filter(|a| a.family == voxpath::algorithms::Family::Line)
 }
 
+/// The values a decision writes, as bits (NaN included), so that two
+/// decisions compare exactly, the sign of a zero too.
+fn decision_bits<D: Decision>(why: &D) -> Vec<u64> {
+    let mut row = vec![f64::NAN; D::COLUMNS.len()];
+    why.write(&mut row);
+    row.iter().map(|v| v.to_bits()).collect()
+}
+
 /// Checks a stepper's recording loop (`fill`) against its steps one by one:
 /// filled in chunks of `chunk`, with one `next_step` between chunks (so the
-/// state `fill` leaves behind must be the rule's), the same steps, the
-/// displacement they add up to, and the steps left after each chunk.
+/// state `fill` leaves behind must be the rule's, to the bit of every
+/// decision value that step writes), the same steps, the displacement they
+/// add up to, and the steps left after each chunk.
 pub fn check_fill<S: Stepper>(make: impl Fn() -> S, chunk: usize) -> Result<(), String> {
     let mut one_by_one = make();
     let mut expected = Vec::new();
-    while let Some((step, _)) = one_by_one.next_step() {
+    let mut expected_why = Vec::new();
+    while let Some((step, why)) = one_by_one.next_step() {
         expected.push(step);
+        expected_why.push(decision_bits(&why));
     }
     let mut stepper = make();
     let mut taken = Vec::new();
@@ -75,7 +86,10 @@ pub fn check_fill<S: Stepper>(make: impl Fn() -> S, chunk: usize) -> Result<(), 
             return Err(format!("displacement after {} steps", taken.len()));
         }
         taken.extend_from_slice(&out[..filled.steps]);
-        if let Some((step, _)) = stepper.next_step() {
+        if let Some((step, why)) = stepper.next_step() {
+            if expected_why.get(taken.len()) != Some(&decision_bits(&why)) {
+                return Err(format!("the decision of step {} after a fill", taken.len()));
+            }
             taken.push(step);
         }
         if stepper.remaining_steps()

@@ -1,0 +1,193 @@
+/**
+ * End to end: what a user calls and reads, against what they would pick
+ * instead. Every voxpath figure is `(await trace({...})).points` in Node:
+ * the run, every point copied out of wasm into an Int32Array, and the
+ * trace freed. The peers write the same points into an Int32Array through
+ * their own API (bench/peers), or, for the algorithms only voxpath names,
+ * are their plain TypeScript references (bench/reference, the step codes
+ * alone, which tests/reference.test.ts checks are the core's) or voxpath's
+ * own circle per cell. The native row runs rust/examples/end_to_end.rs.
+ *
+ * Each figure is the median of ROUNDS rounds after one untimed round; in a
+ * round the two sides of a ratio run in turn, so that a slow moment of the
+ * machine falls on both. The goal column is the ratio issue 13 asks for.
+ */
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { trace } from '../web/core/index.js';
+import type { TraceOptions } from '../web/core/index.js';
+import { npmBresenham, zinglCircle } from './peers/npm.js';
+import { plainBresenham3d } from './peers/plain-bresenham3d.js';
+import { REFERENCES } from './reference/index.js';
+import type { ReferenceOptions } from './reference/index.js';
+import type { BenchGroup, BenchRow } from './types.js';
+
+/** Timed rounds per row; the median counts. */
+const ROUNDS = 7;
+
+const N = 2_000_000;
+const FROM_3D = [0, 0, 0];
+const TO_3D = [N, (7 * N) / 10 + 1, (6 * N) / 10 + 3];
+const TO_2D = TO_3D.slice(0, 2);
+const RADIUS = 300_000;
+const CIRCLE = { from: [RADIUS, 0, 0], to: [RADIUS, 0, 0], center: [0, 0, 0] };
+/** One turn of the same radius rising 100,000: the arc is still the major axis. */
+const HELIX = { from: [RADIUS, 0, 0], to: [RADIUS, 0, 100_000], center: [0, 0, 0] };
+
+const COLUMNS = {
+  voxpath: 'voxpath',
+  peer: 'peer',
+  ratio: 'voxpath/peer',
+  goal: 'goal',
+} as const;
+
+/** One side of a comparison: a run, and how many points (or cells, or steps) it counts. */
+interface Side {
+  run: () => unknown;
+  /** Points (cells, steps) per run: what the rate counts. */
+  count: number;
+}
+
+const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
+
+/**
+ * Median seconds of each side over ROUNDS rounds, the sides in turn within
+ * a round, after one untimed round (V8 compiles JavaScript and wasm in
+ * tiers: a first run measures the compiler as much as the code).
+ */
+async function medianSeconds(sides: Side[]): Promise<number[]> {
+  const times: number[][] = sides.map(() => []);
+  for (let round = 0; round <= ROUNDS; round++) {
+    for (const [i, side] of sides.entries()) {
+      const start = performance.now();
+      await side.run();
+      if (round > 0) times[i]!.push((performance.now() - start) / 1000);
+    }
+  }
+  return times.map(median);
+}
+
+/** `(await trace(request)).points`, the trace freed: what one call costs a user. */
+async function voxpathPoints(request: TraceOptions): Promise<Int32Array> {
+  const t = await trace(request);
+  const points = t.points;
+  t.free();
+  return points;
+}
+
+/** A voxpath side for `request`, its count the points of its path. */
+async function voxpathSide(request: TraceOptions): Promise<Side> {
+  const points = (await voxpathPoints(request)).length / request.from.length;
+  return { run: () => voxpathPoints(request), count: points };
+}
+
+/** A row: voxpath against its peer, as rates of their own counts, and the ratio of the rates. */
+async function row(name: string, ours: Side, theirs: Side, goal: number): Promise<BenchRow> {
+  const [a, b] = await medianSeconds([ours, theirs]);
+  const [ourRate, theirRate] = [ours.count / a!, theirs.count / b!];
+  return {
+    name,
+    steps: ours.count,
+    rates: { [COLUMNS.voxpath]: ourRate, [COLUMNS.peer]: theirRate },
+    ratios: { [COLUMNS.ratio]: ourRate / theirRate, [COLUMNS.goal]: goal },
+  };
+}
+
+/** A peer side from a function returning points with `dims` values each. */
+function pointsSide(dims: number, run: () => Int32Array): Side {
+  return { run, count: run().length / dims };
+}
+
+/** The TypeScript reference of `request.algorithm`, counting its steps. */
+function referenceSide(request: TraceOptions): Side {
+  const { algorithm, ...options } = request;
+  const reference = REFERENCES[algorithm];
+  if (!reference) throw new Error(`no TypeScript reference for ${algorithm}`);
+  const run = () => reference(options as ReferenceOptions);
+  return { run, count: run().length };
+}
+
+/** What rust/examples/end_to_end.rs prints. */
+interface NativeResult {
+  points: number;
+  voxpathSeconds: number;
+  lineDrawingSeconds: number;
+}
+
+const MANIFEST = fileURLToPath(new URL('../rust/Cargo.toml', import.meta.url));
+
+/** The native comparison (a release build; cargo builds it on first use). */
+function native(request: TraceOptions): NativeResult {
+  const run = spawnSync('cargo', ['run', '--quiet', '--release', '--manifest-path', MANIFEST, '--example', 'end_to_end'], {
+    input: JSON.stringify({ request, rounds: ROUNDS }),
+    encoding: 'utf8',
+    stdio: ['pipe', 'pipe', 'inherit'],
+  });
+  if (run.status !== 0) throw new Error(`cargo run --example end_to_end failed (exit ${run.status ?? run.signal})`);
+  return JSON.parse(run.stdout) as NativeResult;
+}
+
+const line3d = (algorithm: string): TraceOptions => ({ algorithm, from: FROM_3D, to: TO_3D });
+
+export default async function endToEnd(): Promise<BenchGroup> {
+  const rows: BenchRow[] = [];
+  const plain = pointsSide(3, () => plainBresenham3d(FROM_3D, TO_3D));
+  const plainName = 'plain JS Bresenham into an Int32Array';
+  for (const [algorithm, goal] of [
+    ['bresenham3d', 2],
+    ['regions', 2],
+    ['nd', 2],
+    ['liu-float', 1],
+    ['dda', 1],
+    ['greedy', 1],
+    ['walk6', 1],
+  ] as const) {
+    rows.push(await row(`${algorithm}, 3D line, vs ${plainName}`, await voxpathSide(line3d(algorithm)), plain, goal));
+  }
+  const line2d = { algorithm: 'bresenham2d', from: [0, 0], to: TO_2D };
+  rows.push(
+    await row('bresenham2d, 2D line, vs npm bresenham', await voxpathSide(line2d), pointsSide(2, () => npmBresenham([0, 0], TO_2D)), 2),
+  );
+  const circle = await voxpathSide({ algorithm: 'circle', ...CIRCLE });
+  rows.push(await row(`circle r = ${RADIUS}, vs npm bresenham-zingl circle`, circle, pointsSide(2, () => zinglCircle(RADIUS)), 2));
+  rows.push(await row('helix, one turn of the same radius, vs voxpath circle', await voxpathSide({ algorithm: 'helix', ...HELIX }), circle, 1));
+  rows.push(await row('arc-segments, the same circle in chords, vs voxpath circle', await voxpathSide({ algorithm: 'arc-segments', ...CIRCLE }), circle, 1));
+  for (const request of [
+    line3d('liu-float'),
+    line3d('dda'),
+    line3d('greedy'),
+    line3d('walk6'),
+    { algorithm: 'arc-segments', ...CIRCLE },
+    { algorithm: 'helix', method: 'segments', ...HELIX },
+  ]) {
+    const label = `${request.algorithm}${'method' in request ? ` (${request.method})` : ''}`;
+    rows.push(await row(`${label} vs its TypeScript reference (step codes)`, await voxpathSide(request), referenceSide(request), 1));
+  }
+
+  const bresenham3d = line3d('bresenham3d');
+  const nativeResult = native(bresenham3d);
+  const lineDrawingRate = nativeResult.points / nativeResult.lineDrawingSeconds;
+  rows.push({
+    name: 'native: Trace + every point vs line_drawing::Bresenham3d into a Vec',
+    steps: nativeResult.points,
+    rates: { [COLUMNS.voxpath]: nativeResult.points / nativeResult.voxpathSeconds, [COLUMNS.peer]: lineDrawingRate },
+    ratios: { [COLUMNS.ratio]: nativeResult.lineDrawingSeconds / nativeResult.voxpathSeconds, [COLUMNS.goal]: 2 },
+  });
+  const [wasmSeconds] = await medianSeconds([await voxpathSide(bresenham3d)]);
+  const wasmRate = nativeResult.points / wasmSeconds!;
+  rows.push({
+    name: 'bresenham3d in Node (wasm) vs native line_drawing',
+    steps: nativeResult.points,
+    rates: { [COLUMNS.voxpath]: wasmRate, [COLUMNS.peer]: lineDrawingRate },
+    ratios: { [COLUMNS.ratio]: wasmRate / lineDrawingRate, [COLUMNS.goal]: 1 },
+  });
+  return {
+    title: 'End to end: trace() with every point, against what a user would pick instead',
+    notes: [
+      `${COLUMNS.voxpath}: points (cells, steps) per second of \`(await trace({...})).points\` in Node, the trace freed after; native: \`voxpath::run\` and every point.`,
+      `${COLUMNS.peer}: the same for the peer named in the row, each rate counting its own points (greedy and walk6 take more steps than the Bresenham line they are measured against; a peer's circle may have other cells).`,
+      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round.`,
+    ],
+    rows,
+  };
+}

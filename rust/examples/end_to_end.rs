@@ -1,0 +1,67 @@
+//! Native end to end, for `npm run bench` (bench/end-to-end.bench.ts runs
+//! this with `cargo run --release --example end_to_end`): a 3D line traced
+//! by voxpath with every point read, against the `line_drawing` crate's
+//! `Bresenham3d` collected into a Vec, what a Rust user would pick instead.
+//!
+//! Reads `{"request": {...a 3D line request...}, "rounds": n}` on stdin and
+//! prints `{"points", "voxpathSeconds", "lineDrawingSeconds"}`: the median
+//! of `n` rounds each, the two taken in turn within a round so that a slow
+//! moment of the machine falls on both, after one round that is not timed.
+
+use serde_json::{Value, json};
+use std::io::Read;
+use std::time::Instant;
+use voxpath::Request;
+
+/// Seconds of one run of `f`; its result is dropped outside the timing.
+fn seconds<T>(f: impl FnOnce() -> T) -> (f64, T) {
+    let start = Instant::now();
+    let out = std::hint::black_box(f());
+    (start.elapsed().as_secs_f64(), out)
+}
+
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
+
+fn main() {
+    let mut input = String::new();
+    std::io::stdin()
+        .read_to_string(&mut input)
+        .expect("a case on stdin");
+    let case: Value = serde_json::from_str(&input).expect("a JSON case");
+    let request = Request::from_json(&case["request"].to_string()).expect("a valid request");
+    let rounds = case["rounds"].as_u64().unwrap_or(5).max(1) as usize;
+    let (from, to) = request.endpoints(3, 3).expect("a 3D line");
+    let voxel = |p: &voxpath::Point| (p.get(0) as i32, p.get(1) as i32, p.get(2) as i32);
+
+    let voxpath_points = || {
+        let trace = voxpath::run(&request).expect("the request traces");
+        trace.points_i32(0, trace.steps() + 1)
+    };
+    let line_drawing_points = || {
+        line_drawing::Bresenham3d::new(voxel(&from), voxel(&to)).collect::<Vec<(i32, i32, i32)>>()
+    };
+
+    let (mut ours, mut theirs) = (Vec::new(), Vec::new());
+    let mut points = 0;
+    for round in 0..=rounds {
+        let (a, p) = seconds(voxpath_points);
+        let (b, q) = seconds(line_drawing_points);
+        assert_eq!(p.len(), 3 * q.len(), "both give every point of the line");
+        points = q.len();
+        if round > 0 {
+            ours.push(a);
+            theirs.push(b);
+        }
+    }
+    println!(
+        "{}",
+        json!({
+            "points": points,
+            "voxpathSeconds": median(ours),
+            "lineDrawingSeconds": median(theirs),
+        })
+    );
+}

@@ -1,0 +1,196 @@
+//! Points from packed steps: the decode behind every bulk read of a
+//! trace's points ([`crate::Trace::write_points`]).
+//!
+//! A point is the one before it plus its step's move on each axis. Taking
+//! that move apart bit by bit costs several operations per axis per step
+//! ([`crate::Point::apply`], which stays the reference the tests hold this
+//! to); here, for 2 to 4 axes, a step's moving and negative bits index a
+//! table of its moves per axis, padded to four lanes, so a step is one
+//! table read and one four-wide addition (which the compiler may turn into
+//! one vector instruction) whatever way the axes go. The number of axes is
+//! a constant in each decode loop, so its loops over axes unroll.
+
+use crate::grid::{MAX_AXES, Point, Step};
+
+/// A coordinate type points are written as: i64, as the core computes
+/// them, or i32, what crosses to JavaScript (every trace coordinate is
+/// within +-2^30: inputs are, and every arc is checked to stay within them).
+pub trait Coordinate: Copy + Default + std::ops::AddAssign {
+    fn from_i32(v: i32) -> Self;
+    fn from_i64(v: i64) -> Self;
+    fn to_i64(self) -> i64;
+}
+
+impl Coordinate for i32 {
+    #[inline(always)]
+    fn from_i32(v: i32) -> i32 {
+        v
+    }
+    #[inline(always)]
+    fn from_i64(v: i64) -> i32 {
+        debug_assert!(i32::try_from(v).is_ok(), "coordinate {v} past i32");
+        v as i32
+    }
+    #[inline(always)]
+    fn to_i64(self) -> i64 {
+        self as i64
+    }
+}
+
+impl Coordinate for i64 {
+    #[inline(always)]
+    fn from_i32(v: i32) -> i64 {
+        v as i64
+    }
+    #[inline(always)]
+    fn from_i64(v: i64) -> i64 {
+        v
+    }
+    #[inline(always)]
+    fn to_i64(self) -> i64 {
+        self
+    }
+}
+
+/// The table index of a step on `dims` axes: its moving bits, then its
+/// negative bits (bits 8.. of the code) right above them.
+#[inline(always)]
+const fn table_index(code: u16, dims: usize) -> usize {
+    let mask = (1usize << dims) - 1;
+    let code = code as usize;
+    (code & mask) | ((code >> (8 - dims)) & (mask << dims))
+}
+
+/// Per table index of a step on `DIMS` axes (4^DIMS of them, `ENTRIES`),
+/// its move per axis, as [`Step::delta`] gives it (a negative bit without
+/// its moving bit moves nothing), padded with zeros to four lanes.
+const fn move_table<const DIMS: usize, const ENTRIES: usize>() -> [[i32; 4]; ENTRIES] {
+    assert!(ENTRIES == 1 << (2 * DIMS) && DIMS <= 4);
+    let mut table = [[0; 4]; ENTRIES];
+    let mut index = 0;
+    while index < ENTRIES {
+        let mut axis = 0;
+        while axis < DIMS {
+            let moved = (index >> axis & 1) as i32;
+            let negative = (index >> (DIMS + axis) & 1) as i32;
+            table[index][axis] = moved - 2 * (moved & negative);
+            axis += 1;
+        }
+        index += 1;
+    }
+    table
+}
+
+static MOVES_2: [[i32; 4]; 16] = move_table::<2, 16>();
+static MOVES_3: [[i32; 4]; 64] = move_table::<3, 64>();
+static MOVES_4: [[i32; 4]; 256] = move_table::<4, 256>();
+
+/// Writes the point after each of `steps`, taken from `start`, into `out`
+/// (stride `start.dims()`, `out.len()` = that times `steps.len()`), and
+/// returns the last (`start` when there are no steps).
+pub fn decode<C: Coordinate>(start: &Point, steps: &[Step], out: &mut [C]) -> Point {
+    assert_eq!(out.len(), steps.len() * start.dims(), "one row per step");
+    match start.dims() {
+        2 => by_table::<C, 2, 16>(&MOVES_2, start, steps, out),
+        3 => by_table::<C, 3, 64>(&MOVES_3, start, steps, out),
+        4 => by_table::<C, 4, 256>(&MOVES_4, start, steps, out),
+        1 => by_bits::<C, 1>(start, steps, out),
+        5 => by_bits::<C, 5>(start, steps, out),
+        _ => by_bits::<C, MAX_AXES>(start, steps, out),
+    }
+}
+
+/// [`decode`] for 2 to 4 axes: one table read and a four-lane add per step.
+#[inline(always)]
+fn by_table<C: Coordinate, const DIMS: usize, const ENTRIES: usize>(
+    table: &[[i32; 4]; ENTRIES],
+    start: &Point,
+    steps: &[Step],
+    out: &mut [C],
+) -> Point {
+    let mut p = [C::default(); 4];
+    for axis in 0..DIMS {
+        p[axis] = C::from_i64(start.get(axis));
+    }
+    for (step, row) in steps.iter().zip(out.chunks_exact_mut(DIMS)) {
+        let moves = &table[table_index(step.0, DIMS)];
+        for lane in 0..4 {
+            p[lane] += C::from_i32(moves[lane]);
+        }
+        row.copy_from_slice(&p[..DIMS]);
+    }
+    end_point(start, &p[..DIMS])
+}
+
+/// `start` moved to `coords`.
+#[inline(always)]
+fn end_point<C: Coordinate>(start: &Point, coords: &[C]) -> Point {
+    let mut end = *start;
+    for (c, &v) in end.coords_mut().iter_mut().zip(coords) {
+        *c = v.to_i64();
+    }
+    end
+}
+
+/// [`decode`] for 1, 5 or 6 axes (a table would have 4^6 entries): each
+/// axis's move from its two bits, as [`Step::delta`] forms it.
+#[inline(always)]
+fn by_bits<C: Coordinate, const DIMS: usize>(
+    start: &Point,
+    steps: &[Step],
+    out: &mut [C],
+) -> Point {
+    let mut p = [C::default(); DIMS];
+    for axis in 0..DIMS {
+        p[axis] = C::from_i64(start.get(axis));
+    }
+    for (step, row) in steps.iter().zip(out.chunks_exact_mut(DIMS)) {
+        let code = step.0 as i32;
+        for axis in 0..DIMS {
+            let moved = code >> axis & 1;
+            let negative = code >> (8 + axis) & moved;
+            p[axis] += C::from_i32(moved - 2 * negative);
+        }
+        row.copy_from_slice(&p);
+    }
+    end_point(start, &p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every code a step on `dims` axes can have, with stray negative bits
+    /// (on axes that do not move) included.
+    fn every_code(dims: usize) -> impl Iterator<Item = Step> {
+        let mask = (1u16 << dims) - 1;
+        (0..1u16 << (2 * dims)).map(move |i| Step((i & mask) | (i >> dims & mask) << 8))
+    }
+
+    #[test]
+    fn every_step_code_moves_as_apply_does() {
+        for dims in 1..=MAX_AXES {
+            let start = Point::new(&[-(1 << 30), 5, 1 << 30, 0, -7, 3][..dims]);
+            let steps: Vec<Step> = every_code(dims).collect();
+            let mut out = vec![0i64; steps.len() * dims];
+            let end = decode(&start, &steps, &mut out);
+            let mut narrow = vec![0i32; steps.len() * dims];
+            decode(&start, &steps, &mut narrow);
+            let mut p = start;
+            for (k, step) in steps.iter().enumerate() {
+                p.apply(*step);
+                assert_eq!(
+                    &out[k * dims..(k + 1) * dims],
+                    p.coords(),
+                    "{dims} axes, {step:?}"
+                );
+                let wide: Vec<i64> = narrow[k * dims..(k + 1) * dims]
+                    .iter()
+                    .map(|&c| c as i64)
+                    .collect();
+                assert_eq!(wide, p.coords());
+            }
+            assert_eq!(end, p);
+        }
+    }
+}
