@@ -5,6 +5,7 @@
  * line, the exports and the keyboard help have modules of their own (page/).
  */
 import { PathCharts } from './charts/path-charts.js';
+import { CheckPanel } from './check/check-panel.js';
 import { ComparePanel } from './compare/compare-panel.js';
 import { embedding } from './embed/embed.js';
 import { ExperimentPanel } from './experiment/experiment-panel.js';
@@ -125,6 +126,8 @@ function run(catalogue: Catalogue): void {
       legendSecondName: byId('legend-second-name', HTMLSpanElement),
       legendOnlyFirst: byId('legend-only-first', HTMLSpanElement),
       legendOnlySecond: byId('legend-only-second', HTMLSpanElement),
+      legendLearner: byId('legend-learner', HTMLLIElement),
+      legendDifference: byId('legend-difference', HTMLLIElement),
     },
     store,
   );
@@ -143,6 +146,7 @@ function run(catalogue: Catalogue): void {
       speed: byId('speed', HTMLSelectElement),
       slowdown: byId('slowdown', HTMLSelectElement),
       machineTime: byId('machine-time', HTMLOutputElement),
+      marker: byId('check-marker', HTMLButtonElement),
       jump: byId('jump', HTMLFormElement),
       jumpInput: byId('jump-input', HTMLInputElement),
     },
@@ -199,6 +203,7 @@ function run(catalogue: Catalogue): void {
     inspector,
     charts: new PathCharts(byId('charts', HTMLDivElement), goTo),
     comparePanel: new ComparePanel(byId('comparison', HTMLDivElement), goTo),
+    checkPanel: new CheckPanel({ box: byId('check-points', HTMLDetailsElement), text: byId('learner-points', HTMLTextAreaElement), result: byId('check-result', HTMLDivElement) }, store, goTo),
     timing: new TimingDiagram(byId('timing', HTMLDivElement), goTo),
     timeViews: new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), vcd: byId('export-vcd', HTMLButtonElement) }, catalogue, timeline, goTo),
     experimentPanel: new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue),

@@ -23,9 +23,9 @@ use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
 use crate::text::{echo, lines};
 use crate::trace::Trace;
 use serde::Serialize;
-use tsify::Tsify;
 use serde_json::{Map, Value};
 use std::sync::Arc;
+use tsify::Tsify;
 
 /// Points shown on each side of the first difference.
 pub const AROUND: u64 = 3;

@@ -18,9 +18,9 @@ use crate::metrics::Metrics;
 use crate::request::Request;
 use crate::trace::Trace;
 use serde::Serialize;
-use tsify::Tsify;
 use serde_json::Value;
 use std::collections::HashSet;
+use tsify::Tsify;
 
 /// Most cells listed per side; `count` still counts them all.
 pub const CELL_LIMIT: usize = 1000;

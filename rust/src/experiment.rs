@@ -15,8 +15,8 @@ use crate::error::Error;
 use crate::grid::MAX_AXES;
 use crate::request::{OptionKind, OptionSpec, Request};
 use serde::Serialize;
-use tsify::Tsify;
 use serde_json::Value;
+use tsify::Tsify;
 
 /// Most lines one experiment may trace.
 pub const MAX_LINES: u64 = 100_000;

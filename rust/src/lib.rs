@@ -14,8 +14,8 @@
 pub mod algorithm_info;
 pub mod algorithms;
 pub mod arc;
-pub mod check;
 pub mod catalogue;
+pub mod check;
 pub mod compare;
 pub mod error;
 pub mod experiment;

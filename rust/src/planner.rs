@@ -48,8 +48,8 @@ use crate::error::Error;
 use crate::machine::MACHINE_AXES;
 use crate::request::{OptionKind, OptionSpec};
 use serde::Serialize;
-use tsify::Tsify;
 use std::ops::Range;
+use tsify::Tsify;
 
 /// Grbl's defaults (defaults.h, DEFAULTS_GENERIC): 10 mm/s² per axis
 /// (10·60·60 mm/min²).

@@ -131,6 +131,23 @@ pub fn check(
 /// between the decode and the copy.
 const POINTS_CHUNK_VALUES: usize = 1 << 15;
 
+/// A learner's points read from text as `check` reads it (CSV,
+/// blank-separated rows or a printed list), `dims` coordinates each, flat:
+/// for a view that draws them beside the rule's path and then checks them
+/// as a flat array, reading the text once. Errors give the line and column.
+#[wasm_bindgen(js_name = readPoints)]
+pub fn read_points(text: &str, dims: u32) -> Result<Vec<f64>, JsValue> {
+    let axes = crate::grid::AXIS_NAMES.len();
+    if dims == 0 || dims as usize > axes {
+        let message = format!("{dims} coordinates per point; expected 1 to {axes}");
+        return Err(to_js_error(&Error::field("dims", message)));
+    }
+    let points =
+        crate::check::Points::from_text(text, dims as usize).map_err(|e| to_js_error(&e))?;
+    // Exact: the reader refuses coordinates past 2^53.
+    Ok(points.coords.iter().map(|&c| c as f64).collect())
+}
+
 /// A finished trace held in wasm memory.
 #[wasm_bindgen]
 pub struct TraceHandle(Trace);

@@ -21,13 +21,13 @@ import type { TraceOptions } from './types.js';
 import { loadCore } from './wasm.js';
 
 /**
- * A learner's points: rows of [x, y, z] (or [x, y] ...), a flat Int32Array
+ * A learner's points: rows of [x, y, z] (or [x, y] ...), a flat Int32Array (or Float64Array)
  * of `dims` values per point, or text: CSV or blank-separated rows with an
  * optional header (its x, y, z columns are read, so voxpath's own CSV works),
  * or the list a program printed (`[(0, 0, 0), (1, 1, 0), ...]`). Text is read
  * by the core, once.
  */
-export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Array; dims: number } | string;
+export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Array | Float64Array; dims: number } | string;
 
 /** The result and its parts are the core's Rust types (rust/src/check.rs). */
 export type { AlsoMatch, AroundRow, Check, DifferenceKind, Difference as CheckDifference } from './pkg/voxpath.js';
@@ -72,4 +72,17 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints):
   }
   const core = await loadCore();
   return callCore(() => core.check(json, given.values, given.dims));
+}
+
+/**
+ * A learner's points read from text as checkPoints reads it (CSV,
+ * blank-separated rows or a printed list), `dims` coordinates each, flat:
+ * for a view that draws them and then checks them as { points, dims },
+ * reading the text once. Rejects with a VoxpathError giving the line and
+ * column of what is not a point, or not a path.
+ */
+export async function readPoints(text: string, dims: number): Promise<Float64Array> {
+  if (typeof text !== 'string') throw argumentError('text', `expected text, got ${describeValue(text)}`);
+  const core = await loadCore();
+  return callCore(() => core.readPoints(text, wholeNumber('dims', dims, 1, AXIS_NAMES.length, 'coordinates per point')));
 }

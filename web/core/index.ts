@@ -27,7 +27,7 @@ export { VoxpathError } from './errors.js';
 export { memoryBytes } from './wasm.js';
 export { compare } from './compare.js';
 export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDigest } from './compare.js';
-export { checkPoints } from './check.js';
+export { checkPoints, readPoints } from './check.js';
 export type { AlsoMatch, AroundRow, Check, CheckDifference, DifferenceKind, LearnerPoints } from './check.js';
 export { GcodeProgram, runGcode } from './gcode.js';
 export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, GcodeTiming, MotionChart, RunGcodeOptions } from './gcode.js';

@@ -6,14 +6,21 @@
  * the paths are looked at (2D, Reset view, the camera, Decision in 3D) goes
  * to the path views alone (path-views.ts), with no new request.
  *
+ * In trace mode a learner's points (Check points) are checked against the
+ * traced rule in the worker once the trace is shown, and again (debounced)
+ * when the points change; the answer goes to the check panel, the view (the
+ * points beside the rule's path) and the timeline (a marker at the first
+ * difference).
+ *
  * Modes (state.mode): trace (one algorithm), compare (two on the same move),
  * gcode (a program on a machine), experiment (Wang's random lines). Each
  * mode's results plug into the same views through the RemoteTrace it
  * produces.
  */
 import type { PathCharts } from '../charts/path-charts.js';
+import type { CheckPanel } from '../check/check-panel.js';
 import type { ComparePanel } from '../compare/compare-panel.js';
-import type { StepDetail } from '../core/types.js';
+import type { StepDetail, TraceOptions } from '../core/types.js';
 import type { ExperimentPanel } from '../experiment/experiment-panel.js';
 import type { AlgorithmInputs } from '../form/algorithm-inputs.js';
 import type { OptionsForm } from '../form/options-form.js';
@@ -30,7 +37,7 @@ import type { StepReason } from '../timeline/step-reason.js';
 import type { TimeViews } from './time-views.js';
 import type { Timeline } from '../timeline/timeline.js';
 import { Cancelled, CoreCrash, InputRejected, type RemoteProgram, type Running, type TraceClient } from '../worker/client.js';
-import type { LineSteps } from '../worker/protocol.js';
+import type { LearnerCheck, LineSteps } from '../worker/protocol.js';
 import { hideAlert, showAlert } from './alert.js';
 import type { ModeTabs } from './mode-tabs.js';
 import type { PathViews } from './path-views.js';
@@ -63,6 +70,7 @@ export interface PageParts {
   inspector: Inspector;
   charts: PathCharts;
   comparePanel: ComparePanel;
+  checkPanel: CheckPanel;
   timing: TimingDiagram;
   timeViews: TimeViews;
   experimentPanel: ExperimentPanel;
@@ -82,6 +90,11 @@ export class Orchestrator {
   #latestRun = 0;
   #running: Running<RemoteProgram> | undefined;
   #retraceTimer: ReturnType<typeof setTimeout> | undefined;
+  /** The request the shown trace-mode trace was made from: a learner's points are checked against its rule. */
+  #ruleOptions: TraceOptions | undefined;
+  /** Counts checks of a learner's points, so only the latest one's answer is shown. */
+  #latestCheck = 0;
+  #checkTimer: ReturnType<typeof setTimeout> | undefined;
 
   constructor(parts: PageParts) {
     this.#p = parts;
@@ -153,6 +166,7 @@ export class Orchestrator {
     if (program) void p.gcodePanel.showPoint(pointIndex);
     // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
     p.timeline.setSteps(main || b ? steps : undefined);
+    this.#markDifference();
     // Compared, the inspector follows the first path only: say which.
     p.inspectorHeading.textContent = state.mode === 'compare' ? `Current point of ${a?.algorithm ?? 'the first'}` : 'Current point';
   }
@@ -175,9 +189,11 @@ export class Orchestrator {
     p.status.tracing(state.mode);
     try {
       let next: Shown;
+      let ruleOptions: TraceOptions | undefined;
       if (state.mode === 'trace') {
         const [info] = tracedAlgorithms(state, p.catalogue.algorithms);
-        next = { a: await p.client.trace(traceOptions(state, info!)) };
+        ruleOptions = traceOptions(state, info!);
+        next = { a: await p.client.trace(ruleOptions) };
       } else if (state.mode === 'compare') {
         const [infoA, infoB] = tracedAlgorithms(state, p.catalogue.algorithms);
         const [a, b] = await Promise.all([p.client.trace(traceOptions(state, infoA!)), p.client.trace(traceOptions(state, infoB!))]);
@@ -205,9 +221,11 @@ export class Orchestrator {
       markStale(p.staleNote, undefined);
       this.#freeShown();
       this.#shown = next;
+      this.#ruleOptions = ruleOptions;
       if (next.experiment) p.experimentPanel.show(next.experiment);
       else this.#present();
       p.status.shown(next);
+      void this.#check();
     } catch (error) {
       if (run !== this.#latestRun || error instanceof CoreCrash) return;
       if (error instanceof Cancelled) {
@@ -231,6 +249,52 @@ export class Orchestrator {
     }
   }
 
+  /**
+   * Checks the learner's points against the shown trace's rule (in the
+   * worker) and shows the answer; with no points, or outside trace mode,
+   * clears it.
+   */
+  async #check(): Promise<void> {
+    const p = this.#p;
+    const check = ++this.#latestCheck;
+    clearTimeout(this.#checkTimer);
+    const { mode, learnerPoints } = p.store.state;
+    const rule = this.#shown.a;
+    const options = this.#ruleOptions;
+    if (mode !== 'trace' || !rule || !options || learnerPoints.trim() === '') {
+      this.#showLearner(undefined);
+      p.checkPanel.clear();
+      return;
+    }
+    try {
+      const learner = await p.client.check(rule, options, learnerPoints);
+      if (check !== this.#latestCheck || rule !== this.#shown.a) return;
+      this.#showLearner(learner);
+      p.checkPanel.show(learner.check);
+    } catch (error) {
+      if (check !== this.#latestCheck || rule !== this.#shown.a || error instanceof CoreCrash) return;
+      this.#showLearner(undefined);
+      if (error instanceof InputRejected) {
+        p.checkPanel.showError(error.field ? `${error.field}: ${error.message}` : error.message);
+      } else {
+        console.error(error);
+        p.checkPanel.showError(`The check failed, a bug in voxpath: ${String(error)}`);
+      }
+    }
+  }
+
+  #showLearner(learner: LearnerCheck | undefined): void {
+    this.#shown.learner = learner;
+    this.#p.views.setLearner(learner);
+    this.#markDifference();
+  }
+
+  /** The timeline's marker at the first difference of the learner's points, if any. */
+  #markDifference(): void {
+    const first = this.#shown.learner?.check.firstDifference;
+    this.#p.timeline.setMarker(first?.pointIndex, first ? `First difference of your points: point ${first.pointIndex}` : undefined);
+  }
+
   /** The worker's core crashed: its traces died with it. */
   coreCrashed(message: string): void {
     // Drop them rather than show values that can no longer be explained.
@@ -252,6 +316,10 @@ export class Orchestrator {
       clearTimeout(this.#retraceTimer);
       this.#retraceTimer = setTimeout(() => void this.retrace(), RETRACE_DELAY_MS);
       if (state.options !== previous.options) p.views.setHandles(this.#handles());
+    } else if (state.learnerPoints !== previous.learnerPoints) {
+      // The same rule: only the check runs again.
+      clearTimeout(this.#checkTimer);
+      this.#checkTimer = setTimeout(() => void this.#check(), RETRACE_DELAY_MS);
     } else if (state.layout !== previous.layout) {
       // The same traces, laid out anew: the path views only.
       p.views.show(this.#shown, state.pointIndex);

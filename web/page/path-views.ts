@@ -1,7 +1,7 @@
 /**
  * The path views: the main view, a second one beside it when two paths are
  * compared side by side, their tools (2D, Reset view, Decision in 3D) and
- * their legend.
+ * their legend; in trace mode, a learner's checked points beside the rule's.
  *
  * show() draws what is on screen, building the views' GPU buffers: for new
  * traces or a new layout. Everything else only changes how the same paths
@@ -16,6 +16,7 @@ import { PALETTE } from '../scene/palette.js';
 import { type Highlight, type SceneCallbacks, SceneView } from '../scene/scene-view.js';
 import type { AppState, CameraState, Projection } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
+import type { LearnerCheck } from '../worker/protocol.js';
 import { mainTrace, type Shown } from './shown.js';
 
 export interface PathViewElements {
@@ -30,6 +31,9 @@ export interface PathViewElements {
   legendSecondName: HTMLElement;
   legendOnlyFirst: HTMLElement;
   legendOnlySecond: HTMLElement;
+  /** The legend's entries for a learner's checked points and their first difference, shown while there are some. */
+  legendLearner: HTMLElement;
+  legendDifference: HTMLElement;
 }
 
 export class PathViews {
@@ -105,8 +109,27 @@ export class PathViews {
     e.legendSecondName.textContent = `${b?.algorithm ?? 'second'}${side ? ' (right view)' : ''}`;
     e.legendOnlyFirst.textContent = `only ${a?.algorithm ?? 'first'} visits`;
     e.legendOnlySecond.textContent = `only ${b?.algorithm ?? 'second'} visits`;
+    this.setLearner(shown.learner);
     // The shown point's decision, on the views built anew.
     this.#drawDecision();
+  }
+
+  /**
+   * Trace mode: a learner's checked points as a second path, in their own
+   * colour, and the first difference's cells (the rule's and theirs)
+   * outlined; undefined removes them. Nothing else is rebuilt.
+   */
+  setLearner(learner: LearnerCheck | undefined): void {
+    const traced = this.#store.state.mode === 'trace';
+    const points = traced ? learner?.points : undefined;
+    const difference = traced ? learner?.check.firstDifference : undefined;
+    const cells = [difference?.expected, difference?.got].filter((p): p is number[] => p !== null && p !== undefined);
+    this.#e.legendLearner.hidden = !points;
+    this.#e.legendDifference.hidden = cells.length === 0;
+    // Other modes' second path and highlights are their own.
+    if (!traced) return;
+    this.#main.setSecond(points ? { points, dims: learner!.dims } : undefined, PALETTE.learner, true);
+    this.#main.setHighlights(cells.length > 0 ? [{ cells: Int32Array.from(cells.flat()), dims: learner!.dims, colour: PALETTE.onlyFirst }] : []);
   }
 
   /** The 2D toggle as the main view is: on in 2D, off where the path is not planar. */

@@ -1,7 +1,7 @@
 /** What is on screen: the traces the worker holds for the current mode, and what the core said of them. */
 import type { RandomLinesResult } from '../core/index.js';
 import type { RemoteProgram, RemoteTrace } from '../worker/client.js';
-import type { TraceDifference } from '../worker/protocol.js';
+import type { LearnerCheck, TraceDifference } from '../worker/protocol.js';
 
 export interface Shown {
   /** The trace (trace mode), or the first of two compared. */
@@ -11,6 +11,8 @@ export interface Shown {
   program?: RemoteProgram;
   difference?: TraceDifference;
   experiment?: RandomLinesResult;
+  /** Trace mode: a learner's points checked against the trace's rule (Check points). */
+  learner?: LearnerCheck;
 }
 
 /** The trace the inspector, the charts and the timeline follow: the program's, or the first one's. */

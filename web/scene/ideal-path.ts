@@ -24,8 +24,8 @@ export class IdealPath extends THREE.Group {
   readonly #geometry: THREE.BufferGeometry;
   readonly #materials: THREE.Material[];
 
-  /** `polyline`: flat, stride `dims`, grid units (Trace.idealPolyline()). */
-  constructor(polyline: Float64Array, dims: number) {
+  /** `polyline`: flat, stride `dims`, grid units (Trace.idealPolyline(), or a path's cell centers), drawn in `colour`. */
+  constructor(polyline: Float64Array, dims: number, colour: string = PALETTE.ideal) {
     super();
     const count = polyline.length / dims;
     // A program that made no move (empty, or stopped at its first line) has
@@ -42,7 +42,7 @@ export class IdealPath extends THREE.Group {
     if (count > FAT_LINE_POINTS) {
       this.#geometry = new THREE.BufferGeometry();
       this.#geometry.setAttribute('position', new THREE.BufferAttribute(xyz, 3));
-      this.#materials = [new THREE.LineBasicMaterial({ color: PALETTE.ideal })];
+      this.#materials = [new THREE.LineBasicMaterial({ color: colour })];
       const line = new THREE.Line(this.#geometry, this.#materials[0]);
       line.renderOrder = 2;
       this.add(line);
@@ -52,9 +52,9 @@ export class IdealPath extends THREE.Group {
     geometry.setPositions(xyz);
     this.#geometry = geometry;
 
-    const visible = new LineMaterial({ color: PALETTE.ideal, linewidth: WIDTH_PX });
+    const visible = new LineMaterial({ color: colour, linewidth: WIDTH_PX });
     const hidden = new LineMaterial({
-      color: PALETTE.ideal,
+      color: colour,
       linewidth: WIDTH_PX * 0.75,
       dashed: true,
       dashSize: 0.22,

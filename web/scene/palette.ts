@@ -15,7 +15,9 @@ export const PALETTE = {
   ideal: '#1a1a1a',
   /** The second path of an overlaid comparison (Okabe-Ito bluish green). */
   second: '#009e73',
-  /** Cells only the first compared path visits, and the steps of the picked G-code line (Okabe-Ito orange). */
+  /** A learner's points checked against the rule (Check points; Okabe-Ito blue). */
+  learner: '#0072b2',
+  /** Cells only the first compared path visits, the first difference of checked points, and the steps of the picked G-code line (Okabe-Ito orange). */
   onlyFirst: '#e69f00',
   /** Cells only the second compared path visits (Okabe-Ito reddish purple). */
   onlySecond: '#cc79a7',

@@ -1,7 +1,7 @@
 /**
  * The view of one trace: its cells (scene/voxel-path.ts), the ideal path
  * (scene/ideal-path.ts), a labelled frame (scene/grid-axes.ts), and what the
- * mode adds: a second path (compare, overlaid), highlighted cells (the cells
+ * mode adds: a second path (compare, overlaid; a learner's checked points), highlighted cells (the cells
  * one compared path visits and the other does not, the steps of a G-code
  * line), the decision overlay (scene/region-face.ts) and endpoint handles
  * (scene/endpoint-handles.ts). World units are grid units and z is up, as on
@@ -186,6 +186,8 @@ export class SceneView {
   #orthoHeight = 10;
   #drawn: Drawn | undefined;
   #second: VoxelPath | undefined;
+  /** A line through the second path's cell centers, when it has one (a learner's points). */
+  #secondLine: IdealPath | undefined;
   #highlights: Cells[] = [];
   #overlay: THREE.Object3D | undefined;
   #renderPending = false;
@@ -454,17 +456,32 @@ export class SceneView {
     this.requestRender();
   }
 
-  /** A second path drawn over the first with smaller cells (an overlaid comparison); undefined removes it. */
-  setSecond(trace: DrawnTrace | undefined): void {
+  /**
+   * A second path drawn over the first with smaller cells, in `colour` (an
+   * overlaid comparison, a learner's checked points); undefined removes it.
+   * With `throughCenters`, also a line through its cells' centers in that
+   * colour: a learner's path mostly runs inside the rule's cells, and the
+   * line shows where it goes there.
+   */
+  setSecond(trace: Pick<DrawnTrace, 'points' | 'dims'> | undefined, colour: string = PALETTE.second, throughCenters = false): void {
     if (this.#second) {
       this.#scene.remove(this.#second);
       this.#second.dispose();
       this.#second = undefined;
     }
+    if (this.#secondLine) {
+      this.#scene.remove(this.#secondLine);
+      this.#secondLine.dispose();
+      this.#secondLine = undefined;
+    }
+    if (trace && throughCenters) {
+      this.#secondLine = new IdealPath(Float64Array.from(trace.points), trace.dims, colour);
+      this.#scene.add(this.#secondLine);
+    }
     if (trace) {
       const { min, max } = pointBounds(trace.points, trace.dims);
       const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
-      this.#second = new VoxelPath(trace.points, trace.dims, bounds, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE, onTop: true });
+      this.#second = new VoxelPath(trace.points, trace.dims, bounds, { visited: colour, cellSize: SECOND_PATH_SIZE, onTop: true });
       this.#scene.add(this.#second);
       this.#second.show(Math.min(this.#pointIndex, this.#second.steps));
     }

@@ -48,6 +48,8 @@ export interface AppState {
   options: Record<string, OptionValue>;
   /** G-code mode: the program's text. */
   gcode: string;
+  /** Trace mode: a learner's points as pasted into Check points (CSV, rows or a printed list), checked against the rule; '' for none. */
+  learnerPoints: string;
   /** G-code mode: the machine, by GcodeSettings name (stepsPerMm or stepAngle + microsteps + pitch, line/arc algorithm). */
   machine: Record<string, OptionValue>;
   /** Experiment mode: the random-lines options (count, seed, maxCoordinate, dims); the algorithm is `algorithm`. */
@@ -216,6 +218,7 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     layout: 'overlay',
     options: defaultOptions([info]),
     gcode: DEFAULT_GCODE,
+    learnerPoints: '',
     machine: { ...DEFAULT_MACHINE },
     experiment: { ...DEFAULT_EXPERIMENT },
     projection: defaultProjection(axisCount([info], {})),

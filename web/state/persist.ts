@@ -27,13 +27,15 @@ function storage(): Storage | undefined {
 
 /**
  * The state to start from: the URL's, else the last visit's, else the
- * defaults. A program too long for the URL comes from localStorage, which
- * keeps it whole, so the editor's text survives a reload.
+ * defaults. A program or a learner's points too long for the URL come from
+ * localStorage, which keeps them whole, so the text typed survives a reload.
  */
 export function loadState(catalogue: Catalogue): AppState {
   const stored = stateFromQuery(storage()?.getItem(STORAGE_KEY) ?? '', catalogue);
   const linked = stateFromQuery(window.location.search, catalogue);
-  if (linked && stored && !new URLSearchParams(window.location.search).has('gcode')) linked.gcode = stored.gcode;
+  const params = new URLSearchParams(window.location.search);
+  if (linked && stored && !params.has('gcode')) linked.gcode = stored.gcode;
+  if (linked && stored && !params.has('points')) linked.learnerPoints = stored.learnerPoints;
   return linked ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
 }
 

@@ -16,6 +16,7 @@
  * than real time, absent when playback counts steps per second.
  * `follow=1` keeps the camera on the current cell (written only when on);
  * `explain=0` leaves the step's reason out of an embedded view.
+ * `points` (trace mode) is the learner's points of Check points, as pasted.
  * `playing` is left out on purpose: a page opened from a link starts
  * paused, as moving content should not start by itself.
  */
@@ -46,8 +47,9 @@ import {
 } from './app-state.js';
 
 /**
- * A program longer than this many characters stays out of the URL (links
- * get unwieldy, and servers refuse long ones); localStorage keeps it.
+ * A program, or a learner's points, longer than this many characters stays
+ * out of the URL (links get unwieldy, and servers refuse long ones);
+ * localStorage keeps it.
  */
 export const GCODE_URL_LIMIT = 2000;
 
@@ -113,7 +115,7 @@ function parseCamera(text: string | null): CameraState | null {
 }
 
 export interface QueryOptions {
-  /** Programs longer than this many characters are left out (the URL); Infinity keeps any (localStorage). */
+  /** Programs and learner's points longer than this many characters are left out (the URL); Infinity keeps any (localStorage). */
   gcodeLimit: number;
 }
 
@@ -126,6 +128,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
   if (state.mode !== 'gcode') pairs.push(['algorithm', state.algorithm]);
   if (state.mode === 'compare') pairs.push(['other', state.other], ['layout', state.layout]);
   if (state.mode === 'trace' || state.mode === 'compare') options(state.options);
+  if (state.mode === 'trace' && state.learnerPoints !== '' && state.learnerPoints.length <= gcodeLimit) pairs.push(['points', state.learnerPoints]);
   if (state.mode === 'gcode') {
     if (state.gcode.length <= gcodeLimit) pairs.push(['gcode', state.gcode]);
     options(state.machine);
@@ -149,7 +152,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
 const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
 /** Keys that say a query describes a state (any option name counts too). */
-export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowdown', 'view', 'decision3d', 'camera', 'follow', 'gcode', 'embed', 'explain'];
+export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowdown', 'view', 'decision3d', 'camera', 'follow', 'gcode', 'points', 'embed', 'explain'];
 
 /**
  * The state a query describes, or undefined when it has none of the state's
@@ -182,6 +185,7 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   const experiment = randomLinesExperiment(catalogue);
   if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment);
   state.gcode = params.get('gcode') ?? state.gcode;
+  state.learnerPoints = params.get('points') ?? state.learnerPoints;
 
   const step = readDecimal(params.get('step') ?? '');
   if (step !== undefined && Number.isSafeInteger(step) && step >= 0) state.pointIndex = step;

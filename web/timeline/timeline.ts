@@ -29,6 +29,8 @@ export interface TimelineElements {
   slowdown: HTMLSelectElement;
   /** The machine-time clock while it plays, and where it stopped. */
   machineTime: HTMLOutputElement;
+  /** A mark on the scrubber at one point index (a checked path's first difference): pressing it goes there. */
+  marker: HTMLButtonElement;
   /** A form with a number field: submitting it jumps to that step. */
   jump: HTMLFormElement;
   jumpInput: HTMLInputElement;
@@ -62,6 +64,8 @@ export class Timeline {
   #machine: MachineClock | undefined;
   /** The clock time of the last step machine-time playback showed, seconds. */
   #machineSeconds: number | undefined;
+  /** The point index the marker stands at, or undefined for no marker. */
+  #markerPoint: number | undefined;
 
   constructor(elements: TimelineElements, store: Store<AppState>) {
     this.#e = elements;
@@ -74,6 +78,7 @@ export class Timeline {
     elements.next.addEventListener('click', () => this.#go(this.#store.state.pointIndex + 1));
     elements.last.addEventListener('click', () => this.#go(this.#steps ?? 0));
     elements.play.addEventListener('click', () => this.#togglePlay());
+    elements.marker.addEventListener('click', () => this.#go(this.#markerPoint ?? 0));
     elements.scrubber.addEventListener('input', () => this.#go(elements.scrubber.valueAsNumber));
     elements.speed.addEventListener('change', () => store.update({ speed: Number(elements.speed.value) }));
     elements.slowdown.append(new Option('steps/s (Speed)', ''));
@@ -97,6 +102,15 @@ export class Timeline {
     const { pointIndex } = this.#store.state;
     if (steps !== undefined && pointIndex > steps) this.#store.update({ pointIndex: steps });
     if (steps === undefined) this.#store.update({ playing: false });
+    this.#render();
+  }
+
+  /** Puts the marker at point index `pointIndex`, saying `label` (undefined: no marker). */
+  setMarker(pointIndex: number | undefined, label = ''): void {
+    this.#markerPoint = pointIndex;
+    const marker = this.#e.marker;
+    marker.title = label;
+    marker.setAttribute('aria-label', label);
     this.#render();
   }
 
@@ -201,6 +215,13 @@ export class Timeline {
     e.counter.value = text;
     // Announcing every step of playback would drown a screen reader.
     e.counter.setAttribute('aria-live', playing ? 'off' : 'polite');
+    // Over the scrubber's track, where its thumb stands at that point (the thumb's center runs from half a thumb in).
+    const marked = this.#markerPoint;
+    e.marker.hidden = none || marked === undefined;
+    if (marked !== undefined) {
+      e.marker.dataset.pointIndex = String(marked);
+      e.marker.style.left = `calc(var(--thumb) / 2 + (100% - var(--thumb)) * ${steps > 0 ? Math.min(marked, steps) / steps : 0})`;
+    }
     e.speed.value = String(speed);
     e.slowdown.value = String(this.#store.state.slowdown ?? '');
     this.#renderMachineTime();

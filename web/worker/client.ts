@@ -11,6 +11,7 @@ import type { GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, 
 import type { ChartSeries, StepClocks, StepDetail, TraceOptions } from '../core/types.js';
 import type {
   InputError,
+  LearnerCheck,
   LineSteps,
   PathSummary,
   ProgramRecord,
@@ -181,6 +182,12 @@ export class TraceClient {
   difference(a: RemoteTrace, b: RemoteTrace): Promise<TraceDifference> {
     if (!a.alive || !b.alive) return Promise.reject(new CoreCrash('a trace was lost with a crashed worker; trace again'));
     return this.request({ kind: 'difference', traceIdA: a.traceId, traceIdB: b.traceId });
+  }
+
+  /** A learner's points (text, as pasted) checked against the rule `options` traces, whose trace `rule` the worker holds. */
+  check(rule: RemoteTrace, options: TraceOptions, text: string): Promise<LearnerCheck> {
+    if (!rule.alive) return Promise.reject(new CoreCrash('the trace was lost with a crashed worker; trace again'));
+    return this.request({ kind: 'check', traceId: rule.traceId, options, text });
   }
 
   /** Wang's random-lines experiment (section 3.2, Figure 9). */

@@ -18,7 +18,7 @@
  * and its 3D overlay) is one request, stepDetail, answered with the core's
  * StepDetail.
  */
-import type { FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { Check, FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { Catalogue, ChartSeries, Limit, Metrics, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
@@ -40,6 +40,7 @@ export type WorkerRequest =
   | { kind: 'lineSteps'; traceId: number; line: number }
   | { kind: 'export'; traceId: number; format: 'csv' | 'json' }
   | { kind: 'randomLines'; options: RandomLinesOptions }
+  | { kind: 'check'; traceId: number; options: TraceOptions; text: string }
   | { kind: 'free'; traceId: number };
 
 export type RequestKind = WorkerRequest['kind'];
@@ -100,6 +101,14 @@ export interface PulseWindow {
   stepSeconds: Float64Array | null;
 }
 
+/** A learner's points checked against the rule of a trace (the core's readPoints, then checkPoints). */
+export interface LearnerCheck {
+  check: Check;
+  /** The learner's points as read, flat with stride dims, to draw; null when a coordinate is past what the view draws (int32). */
+  points: Int32Array | null;
+  dims: number;
+}
+
 /** The value a successful reply carries, by request kind. */
 export interface ReplyValue {
   catalogue: Catalogue;
@@ -121,6 +130,7 @@ export interface ReplyValue {
   lineSteps: LineSteps;
   export: string;
   randomLines: RandomLinesResult;
+  check: LearnerCheck;
   free: null;
 }
 

@@ -7,7 +7,9 @@
 import {
   GcodeProgram,
   catalogue,
+  checkPoints,
   pulseTrains,
+  readPoints,
   randomLines,
   runGcode,
   trace,
@@ -136,6 +138,15 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
     }
     case 'randomLines':
       return { value: await randomLines(request.options), transfer: [] };
+    case 'check': {
+      // The text is read once, giving its line and column to any error, and checked as the flat points read.
+      const dims = held(request.traceId).dims;
+      const read = await readPoints(request.text, dims);
+      const check = await checkPoints(request.options, { points: read, dims });
+      const drawable = read.every((c) => c === (c | 0));
+      const points = drawable ? Int32Array.from(read) : null;
+      return { value: { check, points, dims }, transfer: points ? [points.buffer] : [] };
+    }
     case 'free':
       // A program owns its trace: freeing the program frees both.
       (programs.get(request.traceId) ?? traces.get(request.traceId))?.free();

@@ -76,13 +76,17 @@ fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
 
 pub const OCTANT: Column = Column::new(
     "octant",
-    ColumnKind::Category { labels: &OCTANT_LABELS },
+    ColumnKind::Category {
+        labels: &OCTANT_LABELS,
+    },
     "Octant 1-8 the step travels through, counted counter-clockwise from the plane's first axis, seen from the positive end of its normal (Saleem Figure 1); a point on a boundary belongs to the octant ahead.",
 );
 
 pub const FAST: Column = Column::new(
     "fast",
-    ColumnKind::Category { labels: &["x", "y", "z"] },
+    ColumnKind::Category {
+        labels: &["x", "y", "z"],
+    },
     "The axis that steps every time in this octant; empty for correction steps.",
 );
 

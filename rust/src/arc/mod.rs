@@ -16,8 +16,8 @@ pub mod planes;
 
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
-use crate::request::{OptionKind, OptionSpec, Request};
 use crate::ideal::curve::ArcPath;
+use crate::request::{OptionKind, OptionSpec, Request};
 use angle::{atan3, degrees};
 use planes::{DIR_VALUES, Frame, PLANE_VALUES, Plane, Turn, same_height};
 use std::f64::consts::TAU;

@@ -43,9 +43,9 @@ use crate::request::{MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request
 use crate::text::split_line;
 use crate::trace::{Trace, TraceBuilder};
 use serde::Serialize;
-use tsify::Tsify;
 use serde_json::{Map, Value};
 use std::f64::consts::TAU;
+use tsify::Tsify;
 
 /// Arc algorithms a program may run its arcs with.
 pub const ARC_ALGORITHMS: &[&str] = &["circle", "arc-segments"];

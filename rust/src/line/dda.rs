@@ -74,7 +74,9 @@ impl Decision for DdaWhy {
         ),
         Column::new(
             "guard",
-            ColumnKind::Category { labels: GUARD_LABELS },
+            ColumnKind::Category {
+                labels: GUARD_LABELS,
+            },
             "rule: rounding decided every axis; held / forced: the finish rule overrode float drift.",
         ),
     ];

@@ -146,7 +146,9 @@ impl Decision for LiuWhy {
         Column::new("driftZ", ColumnKind::Float, "epsZ minus its exact value."),
         Column::new(
             "guard",
-            ColumnKind::Category { labels: GUARD_LABELS },
+            ColumnKind::Category {
+                labels: GUARD_LABELS,
+            },
             "rule: epsilon decided every axis; held / forced: the finish rule overrode a drifting axis.",
         ),
         Column::new(

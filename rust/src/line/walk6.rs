@@ -78,7 +78,9 @@ impl Decision for Walk6Why {
     const COLUMNS: &'static [Column] = &[
         Column::new(
             "crosses",
-            ColumnKind::Category { labels: &AXIS_NAMES },
+            ColumnKind::Category {
+                labels: &AXIS_NAMES,
+            },
             "The axis whose cell face the segment crosses next (the axis that steps).",
         ),
         Column::new(

@@ -1,0 +1,111 @@
+// Trace mode's Check points panel (issue 17 item 4), on the issue's
+// done-when case: the bresenham3d (tie = hold) path, computed by the core
+// here, checked against regions from (0, 0, 0) to (10, 7, 6) on the page.
+import type { Page } from 'playwright-core';
+import { PNG } from 'pngjs';
+import { afterAll, describe, expect, it } from 'vitest';
+import { trace } from '../../web/core/index.js';
+import { closeAll, openPage, screenshot } from './harness.js';
+import { pointsOf } from '../helpers.js';
+
+afterAll(closeAll);
+
+const MOVE = { from: [0, 0, 0], to: [10, 7, 6] };
+
+/**
+ * Pixels of the learner's path, PALETTE.learner (#0072b2, Okabe-Ito blue)
+ * lit: blue with hardly any red. The rule's visited cells (sky blue,
+ * #56b4e9) keep a red of about 0.37 of their blue under the view's white
+ * lights; nothing else in a line's view is blue.
+ */
+function learnerPixels(png: Buffer): number {
+  const { data } = PNG.sync.read(png);
+  let count = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    const [r, g, b] = [data[i]!, data[i + 1]!, data[i + 2]!];
+    if (b > 60 && r < 0.15 * b && g > 0.4 * b && g < 0.85 * b) count++;
+  }
+  return count;
+}
+
+async function canvasPng(page: Page): Promise<Buffer> {
+  return page.getByTestId('scene-canvas').screenshot();
+}
+
+describe('Check points (trace mode)', () => {
+  it("shows where bresenham3d (tie = hold) parts from regions, with regions' reason, the rules it follows, the path and a marker; kept over a reload", async () => {
+    const hold = await trace({ algorithm: 'bresenham3d', ...MOVE, tie: 'hold' });
+    const csv = 'x,y,z\n' + pointsOf(hold).map((r) => r.join(',')).join('\n') + '\n';
+    hold.free();
+    const regions = await trace({ algorithm: 'regions', ...MOVE });
+    const why = regions.explain(4);
+    regions.free();
+
+    const p = await openPage('?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    expect(await page.getByTestId('check-marker').isHidden()).toBe(true);
+    const before = learnerPixels(await canvasPng(page));
+
+    await page.getByTestId('check-points').locator('summary').click();
+    await page.getByTestId('learner-points').fill(csv);
+    const verdict = page.getByTestId('check-verdict');
+    await verdict.waitFor();
+    expect(await verdict.innerText()).toBe('Your points part from regions at point 5: at point 5 your path goes to (5, 3, 3); the rule goes to (5, 4, 3).');
+    const reason = await page.getByTestId('check-why').innerText();
+    // The core's own sentence for regions' step 4, and its decision values: segment g, a tie, advance.
+    expect(reason).toContain(why);
+    expect(reason).toMatch(/region = g/);
+    expect(reason).toMatch(/tie = true/);
+    expect(reason).toMatch(/advance/);
+    expect(await page.getByTestId('check-follows').innerText()).toContain('bresenham3d with tie = hold');
+
+    // The marker on the timeline at point 5, which goes there.
+    const marker = page.getByTestId('check-marker');
+    await marker.waitFor();
+    expect(await marker.getAttribute('data-point-index')).toBe('5');
+    await marker.click();
+    expect(await page.getByTestId('step-counter').innerText()).toBe('Step 5 of 10');
+    // Both cells at point 5 outlined, the learner's path drawn in its colour, with its legend entry.
+    expect(await page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('2');
+    expect(await page.getByTestId('legend-learner').isVisible()).toBe(true);
+    await page.getByTestId('last').click();
+    const stats = await screenshot(page, 'check-points', '[data-testid=scene-canvas]');
+    expect(stats.differingFraction).toBeGreaterThan(0.02);
+    expect(learnerPixels(await canvasPng(page))).toBeGreaterThan(before + 200);
+    await screenshot(page, 'check-points-page');
+
+    // The points are in the link (short) and survive a reload.
+    await page.waitForURL(/points=/);
+    await page.reload();
+    await page.getByTestId('check-verdict').filter({ hasText: 'at point 5' }).waitFor();
+    expect(await page.getByTestId('learner-points').inputValue()).toBe(csv);
+    expect(await page.getByTestId('check-marker').getAttribute('data-point-index')).toBe('5');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("names the line of a malformed point with the core's message, and keeps long points in storage", async () => {
+    const p = await openPage('?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    await page.getByTestId('check-points').locator('summary').click();
+    await page.getByTestId('learner-points').fill('0,0,0\n1,1,1\n2,x,2\n');
+    const error = page.getByTestId('check-error');
+    await error.waitFor();
+    expect(await error.innerText()).toBe("line 3, column 3: point 2: y = 'x' is not a number");
+    expect(await page.getByTestId('check-marker').isHidden()).toBe(true);
+
+    // Longer than a link keeps: in storage, whole, over a reload.
+    const long = '# ' + 'a comment line\n# '.repeat(200) + '\n0,0,0\n1,1,1\n';
+    await page.getByTestId('learner-points').fill(long);
+    await page.getByTestId('check-verdict').filter({ hasText: 'point 2' }).waitFor();
+    await page.waitForTimeout(600);
+    expect(page.url()).not.toContain('points=');
+    await page.reload();
+    await page.getByTestId('check-verdict').filter({ hasText: 'your path stops at step 1 of 10' }).waitFor();
+    expect(await page.getByTestId('learner-points').inputValue()).toBe(long);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -1,0 +1,109 @@
+/**
+ * Trace mode's Check points panel: a learner pastes the points their
+ * program printed; the core (in the worker) checks them against the rule
+ * traced, and this panel shows its answer: the first point where the two
+ * part with the core's sentence and the rule's reason and decision values
+ * there, the points around it side by side, and every catalogue rule the
+ * points do follow. Malformed points show the core's error, which names the
+ * line and column. The text goes into the state (learnerPoints), which the
+ * link or storage keeps.
+ */
+import type { Check } from '../core/index.js';
+import { element } from '../form/options-form.js';
+import { formatPoint, NO_VALUE_TEXT } from '../format.js';
+import type { AppState } from '../state/app-state.js';
+import type { Store } from '../state/store.js';
+
+export interface CheckPanelElements {
+  /** The disclosure holding the panel: opened when the state has points. */
+  box: HTMLDetailsElement;
+  text: HTMLTextAreaElement;
+  result: HTMLElement;
+}
+
+/** A point, or what stands where a path has none. */
+function pointText(point: number[] | null | undefined, none: string): string {
+  return point ? formatPoint(point) : none;
+}
+
+export class CheckPanel {
+  readonly #e: CheckPanelElements;
+  readonly #onGo: (pointIndex: number) => void;
+
+  constructor(elements: CheckPanelElements, store: Store<AppState>, onGo: (pointIndex: number) => void) {
+    this.#e = elements;
+    this.#onGo = onGo;
+    elements.text.value = store.state.learnerPoints;
+    elements.box.open = store.state.learnerPoints !== '';
+    elements.text.addEventListener('input', () => store.update({ learnerPoints: elements.text.value }));
+  }
+
+  /** Nothing to show: no points, or a new rule being traced. */
+  clear(): void {
+    this.#e.result.replaceChildren();
+  }
+
+  /** The core refused the points (or the rule): its message, naming the line and column. */
+  showError(message: string): void {
+    const p = element('p', { className: 'field-error', textContent: message });
+    p.dataset.testid = 'check-error';
+    this.#e.result.replaceChildren(p);
+  }
+
+  /** The core's check of the points against `check.algorithm`'s path. */
+  show(check: Check): void {
+    const parts: HTMLElement[] = [];
+    const first = check.firstDifference;
+    const verdict = element('p', {
+      className: 'check-verdict',
+      textContent: first
+        ? `Your points part from ${check.algorithm} at point ${first.pointIndex}: ${first.message}.`
+        : `Your points are ${check.algorithm}'s path, point for point (${check.steps} steps).`,
+    });
+    verdict.dataset.testid = 'check-verdict';
+    verdict.dataset.matches = String(check.matches);
+    parts.push(verdict);
+    if (first) {
+      const values = Object.entries(first.decisions).map(([name, v]) => `${name} = ${v === null ? NO_VALUE_TEXT : String(v)}`);
+      const why = element(
+        'div',
+        { className: 'first-difference' },
+        element('p', {}, element('strong', { textContent: first.stepIndex === null ? 'The rule: ' : `The rule at step ${first.stepIndex}: ` }), first.why),
+        ...(values.length > 0 ? [element('p', { className: 'first-difference-values', textContent: values.join(', ') })] : []),
+      );
+      why.dataset.testid = 'check-why';
+      const rows = first.around.map((row) => {
+        const tr = element(
+          'tr',
+          {},
+          element('th', { scope: 'row', textContent: String(row.pointIndex) }),
+          element('td', { textContent: pointText(row.expected, 'ended') }),
+          element('td', { textContent: pointText(row.got, 'ended') }),
+        );
+        if (row.pointIndex === first.pointIndex) tr.className = 'check-differs';
+        return tr;
+      });
+      const table = element(
+        'table',
+        { className: 'metrics-table' },
+        element('caption', { textContent: 'Around it' }),
+        element('thead', {}, element('tr', {}, ...['point', 'rule', 'yours'].map((h) => element('th', { scope: 'col', textContent: h })))),
+        element('tbody', {}, ...rows),
+      );
+      const go = element('button', { type: 'button', textContent: `Go to point ${first.pointIndex}` });
+      go.dataset.testid = 'go-check-difference';
+      go.addEventListener('click', () => this.#onGo(first.pointIndex));
+      parts.push(why, table, go);
+    }
+    const follows = element(
+      'p',
+      { className: 'check-follows' },
+      check.alsoMatches.length > 0 ? `Your points follow: ${check.alsoMatches.map((m) => m.label).join('; ')}.` : 'Your points follow no rule of the catalogue on this move.',
+    );
+    follows.dataset.testid = 'check-follows';
+    parts.push(follows);
+    const errata = check.alsoMatches.flatMap((m) => m.errata.map((e) => element('li', { textContent: `${m.label}: ${e}` })));
+    if (errata.length > 0) parts.push(element('ul', { className: 'errata' }, ...errata));
+    this.#e.result.replaceChildren(...parts);
+  }
+}
