@@ -66,11 +66,23 @@ impl MetricsAccumulator {
     }
 
     pub fn add_point(&mut self, deviation: f64, axis_error: &[f64; MAX_AXES]) {
+        self.add_deviation(deviation);
+        self.add_axis_error(axis_error);
+    }
+
+    /// A point's deviation alone (its axis error added apart, as the largest
+    /// of a stretch of points: [`Self::add_axis_error`]).
+    #[inline]
+    pub fn add_deviation(&mut self, deviation: f64) {
         self.points += 1;
         self.max_deviation = self.max_deviation.max(deviation);
         let delta = deviation - self.mean;
         self.mean += delta / self.points as f64;
         self.m2 += delta * (deviation - self.mean);
+    }
+
+    /// A per-axis error (of one point, or the largest of several).
+    pub fn add_axis_error(&mut self, axis_error: &[f64; MAX_AXES]) {
         for axis in 0..self.dims {
             self.max_axis_error[axis] = self.max_axis_error[axis].max(axis_error[axis].abs());
         }

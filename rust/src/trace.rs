@@ -16,6 +16,7 @@ use crate::error::{Error, Limit};
 use crate::figure::{DecisionFigure, FigureKind};
 use crate::grid::{MAX_AXES, Point, Step, displacement};
 use crate::ideal::info::IdealPathInfo;
+use crate::ideal::line::LineMeter;
 use crate::ideal::{IdealPath, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
 use crate::points::Coordinate;
@@ -667,6 +668,49 @@ pub struct ReplayedStep {
     pub figure: Option<DecisionFigure>,
 }
 
+/// Consecutive points of one segment: the first, and the steps to each
+/// one after it.
+struct Piece<'a> {
+    segment: &'a Segment,
+    /// Point index of the first point.
+    first: u64,
+    start: Point,
+    steps: &'a [Step],
+}
+
+impl Piece<'_> {
+    /// The first point's step index within the segment.
+    fn local(&self) -> u64 {
+        (self.first - self.segment.first_step).min(self.segment.steps)
+    }
+
+    /// Walks the points along a line segment incrementally
+    /// ([`crate::ideal::LineMeter::walk`]): false, calling nothing, where
+    /// the segment is no line or the walk does not apply.
+    fn walk_line(&self, f: impl FnMut(f64, &[i64; MAX_AXES])) -> bool {
+        let IdealPath::Line { from, to } = &self.segment.ideal else {
+            return false;
+        };
+        LineMeter::new(from, to).walk(&self.start, self.local(), self.segment.steps, self.steps, f)
+    }
+
+    /// Calls `f(k, point k, meter, step of the segment, its steps)` for
+    /// each point, each measured on its own: the reference the line walk
+    /// is held to, and the way arcs and helices are measured.
+    fn for_each_point(&self, mut f: impl FnMut(u64, &Point, &Meter, u64, u64)) {
+        let meter = self.segment.ideal.meter();
+        let n = self.segment.steps;
+        let mut p = self.start;
+        let local = self.local();
+        f(self.first, &p, &meter, local, n);
+        for (i, &s) in self.steps.iter().enumerate() {
+            p.apply(s);
+            let i = i as u64 + 1;
+            f(self.first + i, &p, &meter, (local + i).min(n), n);
+        }
+    }
+}
+
 /// Decision values over a range of steps, one array per trace column.
 pub struct DecisionTable {
     pub columns: Vec<Vec<f64>>,
@@ -722,9 +766,24 @@ impl Trace {
             for step in &self.steps {
                 acc.add_step(*step);
             }
-            self.for_each_point(0, self.steps() + 1, |k, p, seg, meter| {
-                let (local, n) = (k - seg.first_step, seg.steps);
-                acc.add_point(meter.deviation(p), &meter.axis_error(p, local.min(n), n));
+            self.for_each_piece(0, self.steps() + 1, |piece| {
+                let mut largest = [0i64; MAX_AXES];
+                let walked = piece.walk_line(|deviation, numerator| {
+                    acc.add_deviation(deviation);
+                    for (l, v) in largest.iter_mut().zip(numerator) {
+                        *l = (*l).max(v.abs());
+                    }
+                });
+                if walked {
+                    // max |numerator / n| is max |numerator| / n: the division
+                    // and the rounding keep the order.
+                    let n = piece.segment.steps as f64;
+                    acc.add_axis_error(&largest.map(|l| l as f64 / n));
+                } else {
+                    piece.for_each_point(|_, p, meter, local, n| {
+                        acc.add_point(meter.deviation(p), &meter.axis_error(p, local, n));
+                    });
+                }
             });
             let ties = self
                 .segments
@@ -874,7 +933,11 @@ impl Trace {
     /// Perpendicular deviation of points `from..to` from the ideal path.
     pub fn deviation_range(&self, from: u64, to: u64) -> Vec<f64> {
         let mut out = Vec::with_capacity((to - from) as usize);
-        self.for_each_point(from, to, |_, p, _, meter| out.push(meter.deviation(p)));
+        self.for_each_piece(from, to, |piece| {
+            if !piece.walk_line(|deviation, _| out.push(deviation)) {
+                piece.for_each_point(|_, p, meter, _, _| out.push(meter.deviation(p)));
+            }
+        });
         out
     }
 
@@ -882,9 +945,16 @@ impl Trace {
     pub fn axis_error_range(&self, from: u64, to: u64) -> Vec<f64> {
         let dims = self.dims();
         let mut out = Vec::with_capacity((to - from) as usize * dims);
-        self.for_each_point(from, to, |k, p, seg, meter| {
-            let local = (k - seg.first_step).min(seg.steps);
-            out.extend_from_slice(&meter.axis_error(p, local, seg.steps)[..dims]);
+        self.for_each_piece(from, to, |piece| {
+            let n = piece.segment.steps as f64;
+            let walked = piece.walk_line(|_, numerator| {
+                out.extend(numerator[..dims].iter().map(|&v| v as f64 / n));
+            });
+            if !walked {
+                piece.for_each_point(|_, p, meter, local, steps| {
+                    out.extend_from_slice(&meter.axis_error(p, local, steps)[..dims]);
+                });
+            }
         });
         out
     }
@@ -942,6 +1012,40 @@ impl Trace {
             smallest[r] = smallest[r].min(d);
         });
         out
+    }
+
+    /// Calls `f` with each stretch of point indices `from..to` that belongs
+    /// to one segment, in order: its first point found once, each later
+    /// stretch's from the one before. Point k belongs to the segment whose
+    /// step k starts from it; the last point belongs to the last segment
+    /// that took a step.
+    fn for_each_piece(&self, from: u64, to: u64, mut f: impl FnMut(Piece<'_>)) {
+        if from >= to || self.segments.is_empty() {
+            return;
+        }
+        let mut start = self.point(from);
+        let mut k = from;
+        while k < to {
+            let seg = self.segment_of_point(k);
+            let segment = &self.segments[seg];
+            let seg_end = segment.first_step + segment.steps;
+            // The last point belongs to the last segment that took a step.
+            let end = to.min(if seg_end == self.steps() {
+                seg_end + 1
+            } else {
+                seg_end
+            });
+            f(Piece {
+                segment,
+                first: k,
+                start,
+                steps: &self.steps[k as usize..(end - 1) as usize],
+            });
+            if end < to {
+                start.displace(&displacement(&self.steps[k as usize..end as usize]));
+            }
+            k = end;
+        }
     }
 
     /// Index of the segment containing step index k.

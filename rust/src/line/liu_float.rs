@@ -294,8 +294,9 @@ impl LiuFloat {
             let (big_e, big_k) = ((e * self.scale).round(), (k * self.scale).round());
             // Each must give its value back exactly (it does below the bound).
             let reach = big_e.abs() + steps as f64 * (big_k.abs() + self.scale);
-            if !(reach < EXACT_SCALED as f64) || big_e / self.scale != e || big_k / self.scale != k
-            {
+            // (A NaN reach is not below the bound either.)
+            let exact = reach < EXACT_SCALED as f64;
+            if !exact || big_e / self.scale != e || big_k / self.scale != k {
                 return None;
             }
             out[axis] = Some((big_e as i64, big_k as i64));

@@ -1,0 +1,272 @@
+//! The fast paths a trace reads through, held to the replay they replace,
+//! to the bit: points decoded per number of axes (`points::decode`, as
+//! i64, as i32 and a chunk at a time) against applying every step to a
+//! point; deviations, per-axis errors and metrics measured incrementally
+//! along line segments (`LineMeter::walk`) against measuring every point on
+//! its own. On random lines of every line algorithm (near +-2^30 too),
+//! paths of several line segments, arcs, chorded arcs and helices.
+
+mod common;
+
+use proptest::prelude::*;
+use voxpath::grid::{COORD_LIMIT, MAX_AXES, Point, Step};
+use voxpath::ideal::IdealPath;
+use voxpath::ideal::line::LineMeter;
+use voxpath::line::bresenham3d::Bresenham3d;
+use voxpath::line::dda::Dda;
+use voxpath::line::nd::Nd;
+use voxpath::line::regions_wang::RegionsWang;
+use voxpath::metrics::{Metrics, MetricsAccumulator};
+use voxpath::request::TiePolicy;
+use voxpath::trace::{Trace, TraceBuilder};
+
+/// Points `from..to` by the replay: every step applied to a point.
+fn replayed_points(t: &Trace, from: u64, to: u64) -> Vec<i64> {
+    let mut out = Vec::new();
+    t.walk_points(from, to, |_, p| out.extend_from_slice(p.coords()));
+    out
+}
+
+/// Every point's deviation and per-axis error, each measured on its own
+/// against the segment it belongs to (the one whose step starts from it;
+/// the last point, the last segment that took a step), and the metrics
+/// they add up to (the ties, which a replay of the decisions counts, taken
+/// from the trace).
+fn measured_point_by_point(t: &Trace) -> (Vec<f64>, Vec<f64>, Metrics) {
+    let dims = t.dims();
+    let segments = t.segments();
+    let last = segments.iter().rposition(|s| s.steps > 0).unwrap_or(0);
+    let mut acc = MetricsAccumulator::new(dims);
+    for &s in t.step_range(0, t.steps()) {
+        acc.add_step(s);
+    }
+    let (mut deviation, mut axis_error) = (Vec::new(), Vec::new());
+    t.walk_points(0, t.steps() + 1, |k, p| {
+        let seg = if k < t.steps() {
+            segments
+                .iter()
+                .position(|s| s.first_step <= k && k < s.first_step + s.steps)
+                .unwrap()
+        } else {
+            last
+        };
+        let s = &segments[seg];
+        let d = s.ideal.deviation(p);
+        let e = s
+            .ideal
+            .axis_error(p, (k - s.first_step).min(s.steps), s.steps);
+        deviation.push(d);
+        axis_error.extend_from_slice(&e[..dims]);
+        acc.add_point(d, &e);
+    });
+    (deviation, axis_error, acc.finish(t.metrics().ties))
+}
+
+fn bits(values: &[f64]) -> Vec<u64> {
+    values.iter().map(|v| v.to_bits()).collect()
+}
+
+/// Every read of `t` against the replay: all points and a range, as i64,
+/// i32 and through chunks of `chunk` points; deviation, axis error and
+/// metrics of every point and of the range.
+fn check_trace(t: &Trace, range: (u64, u64), chunk: usize) -> Result<(), TestCaseError> {
+    let (dims, n) = (t.dims(), t.steps() + 1);
+    let all = replayed_points(t, 0, n);
+    prop_assert_eq!(&t.points_flat(0, n), &all);
+    let narrow: Vec<i64> = t.points_i32(0, n).into_iter().map(i64::from).collect();
+    prop_assert_eq!(&narrow, &all);
+    let (a, b) = (range.0.min(n - 1), range.1.min(n));
+    let (a, b) = (a.min(b), a.max(b));
+    prop_assert_eq!(t.points_flat(a, b), replayed_points(t, a, b));
+    let mut buffer = vec![0i32; chunk * dims];
+    let mut chunked = Vec::new();
+    let mut next = a;
+    t.points_by_chunk(a, b, &mut buffer, |k, points| {
+        assert_eq!(k, next, "chunks in order");
+        next += (points.len() / dims) as u64;
+        chunked.extend(points.iter().map(|&c| i64::from(c)));
+    });
+    prop_assert_eq!(chunked, replayed_points(t, a, b));
+
+    let (deviation, axis_error, metrics) = measured_point_by_point(t);
+    prop_assert_eq!(bits(&t.deviation_range(0, n)), bits(&deviation));
+    prop_assert_eq!(bits(&t.axis_error_range(0, n)), bits(&axis_error));
+    prop_assert_eq!(
+        bits(&t.deviation_range(a, b)),
+        bits(&deviation[a as usize..b as usize])
+    );
+    prop_assert_eq!(
+        bits(&t.axis_error_range(a, b)),
+        bits(&axis_error[a as usize * dims..b as usize * dims])
+    );
+    prop_assert_eq!(t.metrics(), &metrics);
+    Ok(())
+}
+
+/// A coordinate anywhere in the grid, or at one of its edges (so that a
+/// short move from it reaches +-2^30).
+fn start_coordinate() -> impl Strategy<Value = i64> {
+    let room = COORD_LIMIT - 400;
+    prop_oneof![-room..=room, Just(-room), Just(room)]
+}
+
+/// A move of up to 400 units per axis from an edge-or-anywhere start.
+fn line(dims: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = (Point, Point)> {
+    (
+        dims,
+        prop::array::uniform6(start_coordinate()),
+        prop::array::uniform6(-400i64..=400),
+    )
+        .prop_map(|(dims, start, delta)| {
+            let to: Vec<i64> = (0..dims).map(|a| start[a] + delta[a]).collect();
+            (Point::new(&start[..dims]), Point::new(&to))
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(120))]
+
+    #[test]
+    fn every_line_algorithm_reads_as_its_replay(
+        (from, to) in line(2..=6),
+        range in (0u64..1300, 0u64..1300),
+        chunk in 1usize..200,
+    ) {
+        for a in common::line_algorithms() {
+            if !(a.min_dims..=a.max_dims).contains(&from.dims()) {
+                continue;
+            }
+            let t = common::trace(&format!(
+                r#"{{"algorithm":"{}","from":{:?},"to":{:?}}}"#, a.id, from.coords(), to.coords()
+            ));
+            check_trace(&t, range, chunk)?;
+        }
+    }
+
+    #[test]
+    fn paths_of_several_lines_read_as_their_replay(
+        (start, _) in line(3..=3),
+        legs in prop::collection::vec((prop::array::uniform3(-300i64..=300), 0usize..4), 1..6),
+        range in (0u64..3000, 0u64..3000),
+        chunk in 1usize..500,
+    ) {
+        // As a G-code program runs its moves: one segment per leg, each
+        // measured against its own line, some legs of no length.
+        let mut builder = TraceBuilder::new(start, 1 << 20);
+        for (delta, rule) in legs {
+            let from = builder.position();
+            let to = Point::new(&[0, 1, 2].map(|a| from.get(a) + delta[a]));
+            let ideal = IdealPath::Line { from, to };
+            match rule {
+                0 => builder.run(RegionsWang::new(from, to, TiePolicy::Advance), ideal),
+                1 => builder.run(Bresenham3d::new(from, to, TiePolicy::Hold, false), ideal),
+                2 => builder.run(Nd::new(from, to, TiePolicy::Hold, false), ideal),
+                _ => builder.run(Dda::new(from, to), ideal),
+            }
+            .unwrap();
+        }
+        check_trace(&builder.finish("legs"), range, chunk)?;
+    }
+
+    #[test]
+    fn arcs_and_helices_read_as_their_replay(
+        radius in 1i64..2000,
+        center in prop::array::uniform3(start_coordinate()),
+        turn in 0.0f64..std::f64::consts::TAU,
+        rise in -500i64..=500,
+        which in 0usize..4,
+        range in (0u64..20_000, 0u64..20_000),
+        chunk in 1usize..3000,
+    ) {
+        // Centre kept far enough inside the grid for the circle.
+        let c = center.map(|v| v.clamp(-COORD_LIMIT + 2100, COORD_LIMIT - 2100));
+        let from = [c[0] + radius, c[1], c[2]];
+        let end = [
+            c[0] + (radius as f64 * turn.cos()).round() as i64,
+            c[1] + (radius as f64 * turn.sin()).round() as i64,
+            c[2],
+        ];
+        let request = match which {
+            0 => format!(r#"{{"algorithm":"circle","from":{from:?},"to":{end:?},"center":{c:?}}}"#),
+            1 => format!(r#"{{"algorithm":"arc-segments","from":{from:?},"to":{end:?},"center":{c:?}}}"#),
+            2 => format!(
+                r#"{{"algorithm":"helix","from":{from:?},"to":{:?},"center":{c:?}}}"#,
+                [end[0], end[1], end[2] + rise]
+            ),
+            _ => format!(
+                r#"{{"algorithm":"helix","method":"segments","from":{from:?},"to":{:?},"center":{c:?}}}"#,
+                [end[0], end[1], end[2] + rise]
+            ),
+        };
+        let t = common::trace(&request);
+        check_trace(&t, range, chunk)?;
+    }
+
+    #[test]
+    fn the_line_walk_is_each_point_measured_at_the_edge_of_the_grid(
+        ends in prop::array::uniform6(-COORD_LIMIT..=COORD_LIMIT),
+        start in prop::array::uniform3(-COORD_LIMIT + 600..=COORD_LIMIT - 600),
+        moves in prop::collection::vec(prop::array::uniform3(-1i64..=1), 1..600),
+        steps in 1u64..(1 << 30) - 1,
+        fraction in 0.0f64..1.0,
+    ) {
+        // A line between any two points of the grid (so |Δ| up to 2^31:
+        // cross products near 2^63), points anywhere within it, any step
+        // count up to the largest: the walk gives what each point gives.
+        let (from, to) = (Point::new(&ends[..3]), Point::new(&ends[3..]));
+        let meter = LineMeter::new(&from, &to);
+        let ideal = IdealPath::Line { from, to };
+        let first = ((steps - 1) as f64 * fraction) as u64;
+        let moves: Vec<Step> = moves
+            .iter()
+            .map(|m| (0..3).fold(Step::NONE, |s, a| s.with(a, m[a])))
+            .collect();
+        let mut expected = Vec::new();
+        let mut p = Point::new(&start);
+        for k in 0..=moves.len() {
+            if k > 0 {
+                p.apply(moves[k - 1]);
+            }
+            let i = (first + k as u64).min(steps);
+            expected.push((ideal.deviation(&p), ideal.axis_error(&p, i, steps)));
+        }
+        let mut walked = Vec::new();
+        let small = (0..3).all(|a| (ends[3 + a] - ends[a]).abs() < 1 << 31);
+        let applies = from != to && small && first + moves.len() as u64 <= steps;
+        if !applies {
+            return Ok(());
+        }
+        let applied = meter.walk(&Point::new(&start), first, steps, &moves, |d, numerator| {
+            let mut e = [0.0; MAX_AXES];
+            for a in 0..3 {
+                e[a] = numerator[a] as f64 / steps as f64;
+            }
+            walked.push((d, e));
+        });
+        prop_assert!(applied);
+        prop_assert_eq!(walked.len(), expected.len());
+        for (k, ((d, e), (want_d, want_e))) in walked.iter().zip(&expected).enumerate() {
+            prop_assert_eq!(d.to_bits(), want_d.to_bits(), "deviation of point {}", k);
+            prop_assert_eq!(e.map(f64::to_bits), want_e.map(f64::to_bits), "axis error of point {}", k);
+        }
+    }
+}
+
+#[test]
+fn the_line_walk_leaves_moves_past_the_product_bound_to_the_point_by_point_path() {
+    // |Δx| = 2^31: products past i64's exact range, so walk declines.
+    let (from, to) = (
+        Point::new(&[-COORD_LIMIT, 0, 0]),
+        Point::new(&[COORD_LIMIT, 3, 5]),
+    );
+    let meter = LineMeter::new(&from, &to);
+    assert!(
+        !meter.walk(&from, 0, 1 << 29, &[Step::along(0, 1)], |_, _| {
+            panic!("nothing is measured")
+        })
+    );
+    // A line of no length, and a segment of no steps, too.
+    assert!(!LineMeter::new(&from, &from).walk(&from, 0, 1, &[], |_, _| panic!()));
+    let short = LineMeter::new(&from, &Point::new(&[-COORD_LIMIT + 1, 0, 0]));
+    assert!(!short.walk(&from, 0, 0, &[], |_, _| panic!()));
+}

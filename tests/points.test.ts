@@ -1,0 +1,110 @@
+// Reading a trace through the real wasm core: the points the core decodes
+// into the array it returns (a chunk at a time through one buffer in wasm
+// memory) are the points its step codes add up to, whatever the range,
+// the number of axes, the length or the place in the grid; reading them
+// grows wasm memory by that buffer, not by the points; and what trace()
+// no longer computes up front (metrics, segments) is there when read.
+import { describe, expect, it } from 'vitest';
+import { memoryBytes, runGcode, trace } from '../web/core/index.js';
+import type { Trace, TraceOptions } from '../web/core/index.js';
+
+/**
+ * The points of steps `from..to` replayed in plain JS from point `from`:
+ * each step code moves axis a by +1 (bit a) or -1 (bits a and 8 + a).
+ */
+function replayed(t: Trace, from: number, to: number): Int32Array {
+  const out = new Int32Array((to - from) * t.dims);
+  if (to <= from) return out;
+  const p = t.point(from);
+  const codes = t.stepCodes(from, to - 1);
+  out.set(p, 0);
+  for (let k = 0; k < codes.length; k++) {
+    for (let a = 0; a < t.dims; a++) {
+      if ((codes[k]! >> a) & 1) p[a] += (codes[k]! >> (8 + a)) & 1 ? -1 : 1;
+    }
+    out.set(p, (k + 1) * t.dims);
+  }
+  return out;
+}
+
+/** A 3D line crosses the core's 32768-value buffer every 10922 points, a 2D one every 16384. */
+const CASES: [string, TraceOptions][] = [
+  ['a 3D line over several chunks', { algorithm: 'regions', from: [0, 0, 0], to: [40_000, -28_001, 24_003] }],
+  ['a 2D line', { algorithm: 'bresenham2d', from: [5, -5], to: [-37_000, 12_345] }],
+  ['a 6D line', { algorithm: 'nd', from: [0, 0, 0, 0, 0, 0], to: [9000, -8000, 7000, -6000, 5000, 1] }],
+  ['a 4D line by one axis a step', { algorithm: 'greedy', from: [0, 0, 0, 0], to: [3000, -2000, 1000, 7] }],
+  ['a line at the edge of the grid', { algorithm: 'bresenham3d', from: [2 ** 30, -(2 ** 30), 2 ** 30 - 5], to: [2 ** 30 - 20_000, -(2 ** 30) + 13_001, 2 ** 30] }],
+  ['a circle', { algorithm: 'circle', from: [3000, 0, 0], to: [3000, 0, 0], center: [0, 0, 0] }],
+  ['a helix in chords', { algorithm: 'helix', method: 'segments', from: [-2000, 0, 50], to: [-2000, 0, 1050], center: [0, 0, 0], turns: 2 }],
+];
+
+describe('points', () => {
+  it.each(CASES)('of %s are the step codes replayed, for the whole path and any range', async (_, options) => {
+    const t = await trace(options);
+    const n = t.steps + 1;
+    expect(t.points).toEqual(replayed(t, 0, n));
+    expect(Array.from(t.points.subarray(0, t.dims))).toEqual(Array.from(options.from));
+    for (const [a, b] of [
+      [0, 1],
+      [n - 1, n],
+      [1, Math.min(n, 10_923)],
+      [Math.floor(n / 3), Math.floor((2 * n) / 3)],
+      [10_921, Math.min(n, 32_768 + 5)],
+    ] as const) {
+      if (a > b || b > n) continue;
+      expect(t.pointsInRange(a, b)).toEqual(replayed(t, a, b));
+      expect(t.pointsInRange(a, b)).toEqual(t.points.subarray(a * t.dims, b * t.dims));
+    }
+    expect(t.pointsInRange(n, n)).toHaveLength(0);
+    t.free();
+  });
+
+  it('of a G-code program are its moves replayed', async () => {
+    const program = await runGcode('G21 G90\nG1 X10 Y5 F600\nG2 X20 Y5 I5 J0\nG1 X-3 Y-7 Z2\n', { stepsPerMm: 80 });
+    const t = program.trace;
+    expect(t.points).toEqual(replayed(t, 0, t.steps + 1));
+    program.free();
+  });
+
+  it('are refused outside the path, naming the range', async () => {
+    const t = await trace(CASES[0]![1]);
+    expect(() => t.pointsInRange(0, t.steps + 2)).toThrow(/point indices 0\.\.\d+ is outside/);
+    t.free();
+  });
+
+  it('grow wasm memory by one chunk buffer at most, however many are read', async () => {
+    const t = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [3_000_000, 2_100_001, 1_800_003] });
+    t.pointsInRange(0, 2); // the buffer for a small read, and anything the first read allocates
+    const before = memoryBytes();
+    const points = t.points;
+    expect(points.length).toBe(3 * (t.steps + 1));
+    // 36 MB of points read; the core's buffer is 128 KiB.
+    expect(memoryBytes() - before).toBeLessThanOrEqual(1 << 18);
+    t.free();
+  });
+});
+
+describe('what trace() leaves until it is read', () => {
+  it('gives the metrics the points have, when first read', async () => {
+    const t = await trace({ algorithm: 'dda', from: [0, 0, 0], to: [5000, 3001, -1999] });
+    expect(Object.keys(t)).not.toContain('metrics');
+    const m = t.metrics;
+    expect(m.steps).toBe(t.steps);
+    expect(m.maxDeviation).toBe(Math.max(...t.deviation));
+    expect(m.meanDeviation).toBeCloseTo(t.deviation.reduce((s, v) => s + v, 0) / (t.steps + 1), 12);
+    expect(m.pulsesByAxis).toEqual([5000, 3001, 1999]);
+    expect(t.metrics).toBe(m);
+    t.free();
+  });
+
+  it('gives the segments with their notes, when first read', async () => {
+    const t = await trace({ algorithm: 'arc-segments', from: [1000, 0, 0], to: [0, 1000, 0], center: [0, 0, 0] });
+    expect(Object.keys(t)).not.toContain('segments');
+    const segments = t.segments;
+    expect(segments.length).toBeGreaterThan(10);
+    expect(segments[0]!.firstStep).toBe(0);
+    expect(segments.at(-1)!.firstStep + segments.at(-1)!.steps).toBe(t.steps);
+    expect(segments[1]!.note).toMatch(/^Chord 2 of /);
+    t.free();
+  });
+});
