@@ -68,7 +68,7 @@ describe('points', () => {
 
   it('are refused outside the path, naming the range', async () => {
     const t = await trace(CASES[0]![1]);
-    expect(() => t.pointsInRange(0, t.steps + 2)).toThrow(/point indices 0\.\.\d+ is outside/);
+    expect(() => t.pointsInRange(0, t.steps + 2)).toThrow(/^to: point index \d+ is outside 0\.\.\d+$/);
     t.free();
   });
 
