@@ -10,6 +10,24 @@ use std::fmt;
 /// Most axes a path may have: X Y Z A B C.
 pub const MAX_AXES: usize = 6;
 
+/// Calls `$recv.$method::<DIMS>(args)` with the number of axes `$dims` as
+/// the const `DIMS`, so that a stepper's per-axis loops unroll for each
+/// count; 1 axis, or 6, takes [`MAX_AXES`] (the loops stop at the path's own
+/// axis count either way). One dispatch for every `fill_axes` of the line
+/// steppers, not a `match` written out in each.
+macro_rules! by_axis_count {
+    ($dims:expr, $recv:ident . $method:ident ( $($arg:expr),* )) => {
+        match $dims {
+            2 => $recv.$method::<2>($($arg),*),
+            3 => $recv.$method::<3>($($arg),*),
+            4 => $recv.$method::<4>($($arg),*),
+            5 => $recv.$method::<5>($($arg),*),
+            _ => $recv.$method::<{ $crate::grid::MAX_AXES }>($($arg),*),
+        }
+    };
+}
+pub(crate) use by_axis_count;
+
 /// Axis names in index order.
 pub const AXIS_NAMES: [&str; MAX_AXES] = ["x", "y", "z", "a", "b", "c"];
 

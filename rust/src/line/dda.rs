@@ -4,7 +4,7 @@
 
 use super::{GUARD_LABELS, Guard, Mirror, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 
@@ -193,13 +193,7 @@ impl Stepper for Dda {
     /// The steps of [`Stepper::next_step`], with the number of axes a
     /// constant ([`Dda::fill_axes`]) and no decision built.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
-        match self.mirror.dims() {
-            2 => self.fill_axes::<2>(out),
-            3 => self.fill_axes::<3>(out),
-            4 => self.fill_axes::<4>(out),
-            5 => self.fill_axes::<5>(out),
-            _ => self.fill_axes::<MAX_AXES>(out),
-        }
+        by_axis_count!(self.mirror.dims(), self.fill_axes(out))
     }
 
     fn remaining_steps(&self) -> Option<u64> {

@@ -9,7 +9,7 @@
 
 use super::{Mirror, TIE_AXIS, TieAxis, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 
@@ -215,13 +215,7 @@ impl Stepper for Greedy {
     /// The same choices as [`Stepper::next_step`] without the squared
     /// distances ([`Greedy::fill_axes`]), with the number of axes a constant.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
-        match self.mirror.dims() {
-            2 => self.fill_axes::<2>(out),
-            3 => self.fill_axes::<3>(out),
-            4 => self.fill_axes::<4>(out),
-            5 => self.fill_axes::<5>(out),
-            _ => self.fill_axes::<MAX_AXES>(out),
-        }
+        by_axis_count!(self.mirror.dims(), self.fill_axes(out))
     }
 
     fn remaining_steps(&self) -> Option<u64> {

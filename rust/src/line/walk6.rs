@@ -11,7 +11,7 @@
 
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 use std::cmp::Ordering;
@@ -236,13 +236,7 @@ impl Stepper for Walk6 {
     /// The same walk as [`Stepper::next_step`] ([`Walk6::fill_axes`]), with
     /// the number of axes a constant.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
-        match self.mirror.dims() {
-            2 => self.fill_axes::<2>(out),
-            3 => self.fill_axes::<3>(out),
-            4 => self.fill_axes::<4>(out),
-            5 => self.fill_axes::<5>(out),
-            _ => self.fill_axes::<MAX_AXES>(out),
-        }
+        by_axis_count!(self.mirror.dims(), self.fill_axes(out))
     }
 
     fn remaining_steps(&self) -> Option<u64> {
