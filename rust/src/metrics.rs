@@ -88,11 +88,16 @@ impl MetricsAccumulator {
         }
     }
 
+    /// Pulses per axis of the steps added so far (the STEP edges of each).
+    pub fn pulses_by_axis(&self) -> Vec<u64> {
+        self.pulses_by_axis[..self.dims].to_vec()
+    }
+
     pub fn finish(self, ties: u64) -> Metrics {
         Metrics {
             steps: self.steps,
             steps_moving_axes: self.steps_moving_axes[..self.dims].to_vec(),
-            pulses_by_axis: self.pulses_by_axis[..self.dims].to_vec(),
+            pulses_by_axis: self.pulses_by_axis(),
             max_deviation: self.max_deviation,
             mean_deviation: self.mean,
             std_deviation: if self.points > 0 {

@@ -756,6 +756,20 @@ impl Trace {
         &self.figures
     }
 
+    /// Pulses per axis: one pass over the steps, or the metrics' count when
+    /// they were read already. For a caller that needs the counts alone (a
+    /// program's record), without the deviation pass [`Self::metrics`] makes.
+    pub fn pulses_by_axis(&self) -> Vec<u64> {
+        if let Some(metrics) = self.metrics.get() {
+            return metrics.pulses_by_axis.clone();
+        }
+        let mut acc = MetricsAccumulator::new(self.dims());
+        for step in &self.steps {
+            acc.add_step(*step);
+        }
+        acc.pulses_by_axis()
+    }
+
     /// Whole-path statistics, computed the first time they are asked for:
     /// one pass over the points, and the ties counted by replaying each
     /// segment from its first state (steps are recorded without their

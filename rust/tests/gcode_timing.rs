@@ -108,3 +108,14 @@ fn the_point_reached_at_an_instant_counts_the_steps_at_or_before_it() {
         assert!(reached == all.len() || all[reached] > s, "{k}");
     }
 }
+
+#[test]
+fn a_programs_pulses_are_counted_from_its_steps_as_the_metrics_count_them() {
+    // The record counts pulses without the metrics' deviation pass; the
+    // counts must be the metrics' own, on lines and arcs in both directions.
+    let program = run("G0 X10\nG1 Y10 Z-3 F600\nG2 X20 Y0 I5 J-5\nG3 X10 Y10 R7\n", settings(""));
+    let pulses = program.info.pulses.clone();
+    assert_eq!(pulses, program.trace.metrics().pulses_by_axis);
+    assert_eq!(program.trace.pulses_by_axis(), pulses);
+    assert!(pulses.iter().all(|&p| p > 0), "{pulses:?}");
+}

@@ -846,7 +846,7 @@ impl Runner {
             arc_algorithm: self.settings.arc_algorithm,
             moves: self.moves,
             duration_seconds: timeline.duration_seconds(),
-            pulses: trace.metrics().pulses_by_axis.clone(),
+            pulses: trace.pulses_by_axis(),
             warnings: self.warnings,
             warnings_omitted: self.warnings_omitted,
             errors: self.errors,
