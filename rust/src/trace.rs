@@ -822,35 +822,9 @@ impl Trace {
         p
     }
 
-    /// Calls `f(k, point k, segment of point k, that segment's meter)` for
-    /// point indices `from..to`. Point k belongs to the segment whose step k
-    /// starts from it; the last point belongs to the last segment that took
-    /// a step. A segment's meter is built once, when the walk enters it.
-    fn for_each_point(&self, from: u64, to: u64, mut f: impl FnMut(u64, &Point, &Segment, &Meter)) {
-        if from >= to || self.segments.is_empty() {
-            return;
-        }
-        let mut p = self.point(from);
-        let mut seg = self.segment_of_point(from);
-        let mut meter = self.segments[seg].ideal.meter();
-        // Point index where the walk leaves the current segment.
-        let mut seg_end = self.segments[seg].first_step + self.segments[seg].steps;
-        for k in from..to {
-            if k > from {
-                p.apply(self.steps[k as usize - 1]);
-                if k >= seg_end && k < self.steps() {
-                    while self.segments[seg].first_step + self.segments[seg].steps <= k {
-                        seg += 1;
-                    }
-                    meter = self.segments[seg].ideal.meter();
-                    seg_end = self.segments[seg].first_step + self.segments[seg].steps;
-                }
-            }
-            f(k, &p, &self.segments[seg], &meter);
-        }
-    }
-
-    /// Index of the segment that point index k belongs to (see `for_each_point`).
+    /// Index of the segment that point index k belongs to: the segment whose
+    /// step k starts from it; the last point belongs to the last segment
+    /// that took a step.
     pub fn segment_of_point(&self, k: u64) -> usize {
         if k < self.steps() {
             self.segment_of_step(k)
@@ -1010,20 +984,40 @@ impl Trace {
             largest.fill(f64::NAN);
             smallest.fill(f64::NAN);
         }
-        self.for_each_point(from, to, |k, p, seg, meter| {
+        // One row's share of point k: its coordinates and ideal position
+        // when it starts a bucket (the error is computed only then), its
+        // deviation always.
+        let mut record = |k: u64, p: &Point, deviation: f64, error: &dyn Fn() -> [f64; MAX_AXES]| {
             let r = ((k - from) / bucket) as usize;
             if (k - from) % bucket == 0 {
                 head[r] = k as f64;
-                let local = (k - seg.first_step).min(seg.steps);
-                let error = meter.axis_error(p, local, seg.steps);
+                let error = error();
                 for a in 0..dims {
                     head[(1 + a) * rows + r] = p.get(a) as f64;
                     head[(1 + dims + a) * rows + r] = p.get(a) as f64 - error[a];
                 }
             }
-            let d = meter.deviation(p);
-            largest[r] = largest[r].max(d);
-            smallest[r] = smallest[r].min(d);
+            largest[r] = largest[r].max(deviation);
+            smallest[r] = smallest[r].min(deviation);
+        };
+        self.for_each_piece(from, to, |piece| {
+            // A line is walked incrementally, as the metrics are; its points
+            // decoded alongside, since the walk hands out numerators alone.
+            let n = piece.segment.steps as f64;
+            let mut p = piece.start;
+            let mut i = 0;
+            let walked = piece.walk_line(|deviation, numerator| {
+                if i > 0 {
+                    p.apply(piece.steps[i - 1]);
+                }
+                record(piece.first + i as u64, &p, deviation, &|| numerator.map(|v| v as f64 / n));
+                i += 1;
+            });
+            if !walked {
+                piece.for_each_point(|k, p, meter, local, steps| {
+                    record(k, p, meter.deviation(p), &|| meter.axis_error(p, local, steps));
+                });
+            }
         });
         out
     }

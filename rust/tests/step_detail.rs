@@ -232,11 +232,19 @@ fn a_program_lists_both_pictures_and_each_step_has_its_own_algorithm_s() {
 
 #[test]
 fn chart_rows_are_the_points_deviation_and_axis_error_of_their_buckets() {
-    // Chords of a circle: many segments, each measured against the arc.
-    let t = trace(
+    // Chords of a circle: many segments, each measured against the arc
+    // point by point; and a line, walked incrementally.
+    let chords = trace(
         r#"{"algorithm":"arc-segments","from":[40,0,0],"to":[-40,0,0],"center":[0,0,0],"segmentLength":7}"#,
     );
-    assert!(t.segments().len() > 10);
+    assert!(chords.segments().len() > 10);
+    let line = trace(r#"{"algorithm":"bresenham3d","from":[-3,5,0],"to":[40,-17,29]}"#);
+    for t in [&chords, &line] {
+        chart_rows_hold(t);
+    }
+}
+
+fn chart_rows_hold(t: &Trace) {
     let (dims, points) = (t.dims(), t.steps() + 1);
     let deviation = t.deviation_range(0, points);
     let error = t.axis_error_range(0, points);
