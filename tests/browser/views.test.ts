@@ -5,7 +5,9 @@
 //   the path views alone: no message to the worker, and the inspector's and
 //   the charts' elements are not rebuilt.
 // - A new point costs one request (stepDetail), which the inspector, its
-//   figure and the 3D overlay all draw from.
+//   figure and the 3D overlay all draw from, and so does the step's reason
+//   under the timeline where it shows (a narrow window); compared, the
+//   second path's reason is the one request more.
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
 import { closeAll, openPage } from './harness.js';
@@ -94,6 +96,36 @@ describe('the page and its worker', () => {
     await settled(page);
     expect(await takeRequests(page)).toEqual(['stepDetail']);
     expect(await marked(page)).toBe(2);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('explains the step under the timeline from the same request, in a narrow window; a compared second path costs one more', async () => {
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=10,7,6&step=3', { initScript: recordWorkerRequests });
+    const { page } = p;
+    await page.setViewportSize({ width: 700, height: 900 });
+    const reason = page.getByTestId('step-reason');
+    await expect.poll(() => reason.innerText()).toMatch(/^Step 3: /);
+    await settled(page);
+    await takeRequests(page);
+    await page.getByTestId('next').click();
+    await expect.poll(() => reason.innerText()).toMatch(/^Step 4: /);
+    await settled(page);
+    expect(await takeRequests(page)).toEqual(['stepDetail']);
+    expect(await reason.innerText()).toBe(`Step 4: ${await page.getByTestId('inspector-explanation').textContent()}`);
+
+    // Compare mode: its table tops the inspector, so the reason has its own place.
+    await page.getByTestId('mode-compare').click();
+    await page.getByTestId('step-counter').filter({ hasText: /of 23$/ }).waitFor();
+    await page.getByTestId('jump-input').fill('3');
+    await page.getByTestId('jump-go').click();
+    await expect.poll(() => reason.innerText()).toMatch(/^regions, step 3: .*\ngreedy, step 3: /s);
+    await settled(page);
+    await takeRequests(page);
+    await page.getByTestId('next').click();
+    await expect.poll(() => reason.innerText()).toMatch(/^regions, step 4: .*\ngreedy, step 4: /s);
+    await settled(page);
+    expect((await takeRequests(page)).sort()).toEqual(['stepDetail', 'stepDetail']);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

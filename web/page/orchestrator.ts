@@ -102,6 +102,7 @@ export class Orchestrator {
       (detail: StepDetail) => {
         parts.inspector.showDetail(detail);
         parts.views.setDetail(detail);
+        parts.stepReason.setMainDetail(detail);
       },
       (error) => parts.inspector.showError(error),
     );
@@ -156,7 +157,7 @@ export class Orchestrator {
     p.views.show(this.#shown, pointIndex);
     p.views.setHandles(this.#handles());
     p.inspector.setTrace(main, mainPoint);
-    p.stepReason.setTraces(state.mode === 'compare' ? [a, b] : [main], pointIndex);
+    p.stepReason.setTraces(main, state.mode === 'compare' ? b : undefined, pointIndex);
     this.#details.setTrace(main, mainPoint);
     void p.charts.setTrace(main);
     p.comparePanel.show(a, b, difference);
