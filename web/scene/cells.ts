@@ -41,32 +41,38 @@ function cellAttribute(points: Int32Array, dims: number, instanced: boolean): TH
   return new THREE.InterleavedBufferAttribute(buffer, 3, 0);
 }
 
-const CUBE_VERTEX = /* glsl */ `
-precision highp float;
-precision highp int;
-uniform mat4 modelViewMatrix;
-uniform mat4 projectionMatrix;
-uniform float cellSize;
-in vec3 position;
-in vec3 normal;
-in ivec3 cell;
-out float shade;
-void main() {
-  // Lit from front-left-above, so the three visible faces of a cell differ in shade.
-  vec3 light = normalize(vec3(-0.7, -1.1, 1.6));
-  shade = 0.62 + 0.38 * max(dot(normal, light), 0.0);
-  gl_Position = projectionMatrix * modelViewMatrix * vec4(position * cellSize + vec3(cell), 1.0);
-}`;
-
-const POINT_VERTEX = /* glsl */ `
+/**
+ * What every cell vertex shader starts with: the precisions and the
+ * uniforms three.js and the material set (RawShaderMaterial adds none).
+ */
+const VERTEX_PREAMBLE = /* glsl */ `
 precision highp float;
 precision highp int;
 uniform mat4 modelViewMatrix;
 uniform mat4 projectionMatrix;
 uniform float cellSize;
 uniform float halfHeightPx;
+out float shade;`;
+
+/** Where a vertex of the unit cube `position` lies in the cell `cell`: the cube drawn cellSize wide about the cell's centre. */
+const CELL_CORNER = /* glsl */ `
+in vec3 position;
+in ivec3 cell;
+vec4 cellCorner() {
+  return projectionMatrix * modelViewMatrix * vec4(position * cellSize + vec3(cell), 1.0);
+}`;
+
+const CUBE_VERTEX = /* glsl */ `${VERTEX_PREAMBLE}${CELL_CORNER}
+in vec3 normal;
+void main() {
+  // Lit from front-left-above, so the three visible faces of a cell differ in shade.
+  vec3 light = normalize(vec3(-0.7, -1.1, 1.6));
+  shade = 0.62 + 0.38 * max(dot(normal, light), 0.0);
+  gl_Position = cellCorner();
+}`;
+
+const POINT_VERTEX = /* glsl */ `${VERTEX_PREAMBLE}
 in ivec3 position;
-out float shade;
 void main() {
   shade = 1.0;
   vec4 eye = modelViewMatrix * vec4(vec3(position), 1.0);
@@ -78,18 +84,10 @@ void main() {
 }`;
 
 /** A cube's 12 edges per cell, unshaded: the outline of a highlighted cell, in its colour exactly. */
-const EDGE_VERTEX = /* glsl */ `
-precision highp float;
-precision highp int;
-uniform mat4 modelViewMatrix;
-uniform mat4 projectionMatrix;
-uniform float cellSize;
-in vec3 position;
-in ivec3 cell;
-out float shade;
+const EDGE_VERTEX = /* glsl */ `${VERTEX_PREAMBLE}${CELL_CORNER}
 void main() {
   shade = 1.0;
-  gl_Position = projectionMatrix * modelViewMatrix * vec4(position * cellSize + vec3(cell), 1.0);
+  gl_Position = cellCorner();
 }`;
 
 const FRAGMENT = /* glsl */ `
