@@ -14,7 +14,7 @@
  */
 import { AXIS_NAMES } from './axes.js';
 import { callCore } from './errors.js';
-import { argumentError, describeValue, wholeNumber } from './guard.js';
+import { argumentError, describeValue, text as guardText, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import type { Check } from './pkg/voxpath.js';
 import type { TraceOptions } from './types.js';
@@ -90,7 +90,7 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints):
  * column of what is not a point, or not a path.
  */
 export async function readPoints(text: string, dims: number): Promise<Float64Array> {
-  if (typeof text !== 'string') throw argumentError('text', `expected text, got ${describeValue(text)}`);
+  const points = guardText('text', text, 'the points');
   const core = await loadCore();
-  return callCore(() => core.readPoints(utf8.encode(text), wholeNumber('dims', dims, 1, AXIS_NAMES.length, 'coordinates per point')));
+  return callCore(() => core.readPoints(utf8.encode(points), wholeNumber('dims', dims, 1, AXIS_NAMES.length, 'coordinates per point')));
 }
