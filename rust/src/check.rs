@@ -584,39 +584,36 @@ pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Che
 
 /// Checks points against the trace of `request` (already run).
 pub fn check_trace(request: &Request, trace: &Trace, points: &Points) -> Check {
-    let first_difference = first_difference(trace, points);
+    // The points' steps, made once: the rule's path is compared with them,
+    // and every candidate of alsoMatches follows them.
+    let steps = points.steps();
+    let first_difference = first_difference(trace, points, &steps);
     Check {
         matches: first_difference.is_none(),
         algorithm: trace.algorithm.clone(),
         steps: trace.steps(),
         your_steps: points.len() - 1,
         first_difference,
-        also_matches: also_matches(request, points),
+        also_matches: also_matches(request, points, &steps),
     }
 }
 
-/// Points read from a trace at a time while comparing.
-const CHUNK_POINTS: u64 = 1 << 16;
-
 /// The first point index below both lengths where `trace` and `points`
-/// differ, comparing a chunk at a time so that a mismatch stops early.
-fn first_mismatch(trace: &Trace, points: &Points) -> Option<u64> {
-    let shared = (trace.steps() + 1).min(points.len());
-    let dims = points.dims;
-    let mut from = 0;
-    while from < shared {
-        let to = (from + CHUNK_POINTS).min(shared);
-        let expected = trace.points_flat(from, to);
-        let got = &points.coords[from as usize * dims..to as usize * dims];
-        // The whole chunk at once first (one comparison of memory, not one
-        // call per point); the point only when the chunk differs.
-        if expected != got {
-            let i = expected.chunks(dims).zip(got.chunks(dims)).position(|(e, g)| e != g);
-            return Some(from + i.expect("a chunk that differs has a point that does") as u64);
-        }
-        from = to;
+/// differ. Two paths from the same start are the same points exactly as
+/// far as their steps are the same, and the step that differs first
+/// leads to the first point that does: so the step codes (2 bytes a step)
+/// are compared, not the points (8 bytes a coordinate, decoded from the
+/// trace's steps first).
+fn first_mismatch(trace: &Trace, points: &Points, steps: &[Step]) -> Option<u64> {
+    if trace.start().coords() != points.get(0) {
+        return Some(0);
     }
-    None
+    let shared = trace.steps().min(steps.len() as u64);
+    let rule = trace.step_range(0, shared);
+    rule.iter()
+        .zip(steps)
+        .position(|(a, b)| a != b)
+        .map(|step| step as u64 + 1)
 }
 
 /// Whether `trace`, traced to follow `steps` (the points' own steps), is
@@ -626,9 +623,9 @@ fn follows(trace: &Trace, points: &Points, steps: &[Step]) -> bool {
     trace.steps() == steps.len() as u64 && trace.start().coords() == points.get(0)
 }
 
-fn first_difference(trace: &Trace, points: &Points) -> Option<Difference> {
+fn first_difference(trace: &Trace, points: &Points, your_steps: &[Step]) -> Option<Difference> {
     let steps = trace.steps();
-    let (kind, k) = match first_mismatch(trace, points) {
+    let (kind, k) = match first_mismatch(trace, points, your_steps) {
         Some(0) => (DifferenceKind::Start, 0),
         Some(k) => (DifferenceKind::Step, k),
         None if points.len() < steps + 1 => (DifferenceKind::Stops, points.len()),
@@ -707,12 +704,11 @@ fn family_of(request: &Request) -> Option<Family> {
 /// values [`tried_values`] gives, whose path equals `points`. The request's
 /// other options go to each algorithm that takes them; `maxSteps` is held
 /// to the points' length, so a rule that needs more steps stops early.
-pub fn also_matches(request: &Request, points: &Points) -> Vec<AlsoMatch> {
+pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> Vec<AlsoMatch> {
     let Some(family) = family_of(request) else {
         return Vec::new();
     };
     let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
-    let steps = points.steps();
     let mut out = Vec::new();
     for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
         let tried: Vec<(&OptionSpec, Vec<Value>)> = info
@@ -738,8 +734,8 @@ pub fn also_matches(request: &Request, points: &Points) -> Vec<AlsoMatch> {
                 .zip(&choice)
                 .map(|((_, values), &i)| Some(values[i].clone()))
                 .collect();
-            if let Some(trace) = trace_combination(info, &base, &tried, &steps, &mut combination)
-                && follows(&trace, points, &steps)
+            if let Some(trace) = trace_combination(info, &base, &tried, steps, &mut combination)
+                && follows(&trace, points, steps)
                 && !matched.contains(&combination)
             {
                 matched.push(combination);
