@@ -8,8 +8,16 @@
 import { describe, expect, it } from 'vitest';
 import {
   checkPoints,
+  checkToTable,
   compare,
+  comparisonToCsv,
+  comparisonToTable,
   pulseTrains,
+  randomLinesToCsv,
+  randomLinesToTable,
+  NO_VALUE,
+  readDecision,
+  readPoints,
   randomLines,
   runGcode,
   trace,
@@ -199,8 +207,64 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       const e = await rejection(checkPoints(request, any(points)));
       expect([e.field, e.detail]).toEqual([field, detail]);
     }
+    for (const text of [null, 5, new Uint8Array(3)]) {
+      const e = await rejection(readPoints(any(text), 3));
+      expect(e.field).toBe('text');
+      expect(e.detail).toMatch(/^expected the points as a string, got /);
+    }
+    expect((await rejection(readPoints('0 0 0', any('3')))).field).toBe('dims');
     // What the guards pass still reaches the core, which reads it as before.
     expect((await checkPoints(request, { points: new Int32Array([0, 0, 0, 1, 1, 1]), dims: 3 })).matches).toBe(true);
+  });
+});
+
+describe("the writers of plain data refuse what is not that data, naming the argument (comparisonToCsv(null) threw 'Cannot read properties of null')", () => {
+  it('refuses null, numbers, BigInt, text, arrays, a Trace (live or freed) and objects missing a field', async () => {
+    const live = await trace(LINE);
+    const freed = await trace(LINE);
+    freed.free();
+    const strangers: unknown[] = [null, undefined, 5, 5n, 'comparison', [], new Float64Array(2), () => 1, live, freed];
+    const comparison = await compare({ algorithms: ['regions', 'greedy'], from: [0, 0, 0], to: [10, 7, 6] });
+    const lines = await randomLines({ algorithm: 'regions', count: 3, seed: 1 });
+    const check = await checkPoints(LINE, '0,0,0\n1,1,1\n');
+    const writers: [(value: never) => string, string, unknown, string][] = [
+      [comparisonToCsv, 'comparison', comparison, 'b'],
+      [comparisonToTable, 'comparison', comparison, 'onlyInA'],
+      [randomLinesToCsv, 'result', lines, 'lines'],
+      [randomLinesToTable, 'result', lines, 'perpendicular'],
+      [checkToTable, 'check', check, 'alsoMatches'],
+    ];
+    for (const [write, field, good, needed] of writers) {
+      for (const stranger of strangers) expect(thrown(() => write(any(stranger))).field).toBe(field);
+      // One field short of the real thing.
+      const short = { ...(good as object) } as Record<string, unknown>;
+      delete short[needed];
+      expect(thrown(() => write(any(short))).detail).toMatch(new RegExp(`^expected .*, got an object without ${needed}$`));
+      // The real thing still writes.
+      expect(write(any(good)).length).toBeGreaterThan(0);
+    }
+    expect(thrown(() => comparisonToCsv(any(null))).message).toBe('comparison: expected a Comparison (from compare() or compareWith()), got null');
+    expect(thrown(() => checkToTable(any(live))).detail).toMatch(/^expected a Check \(from checkPoints\(\)\), got a Trace without /);
+  });
+
+  it("readDecision takes a column and a number (a null column threw 'reading kind'; text was returned as it was)", async () => {
+    const region = (await trace(LINE)).columns.find((c) => c.name === 'region')!;
+    for (const column of [null, undefined, 5, 'region', {}, [region]]) expect(thrown(() => readDecision(any(column), 1)).field).toBe('column');
+    for (const value of [null, undefined, '1', 1n, [1]]) {
+      const e = thrown(() => readDecision(region, any(value)));
+      expect([e.field, e.detail]).toEqual(['value', `expected a decision value (a number), got ${value === null ? 'null' : value === undefined ? 'nothing' : value === '1' ? '"1" (text)' : value === 1n ? '1n (a BigInt)' : 'an Array of length 1'}`]);
+    }
+    expect(readDecision(region, Number.NaN)).toBeNull();
+    expect(readDecision(region, NO_VALUE)).toBeNull();
+  });
+
+  it('pulseTrains takes step instants only as a Float64Array of the range (text of length 1 was read as one instant)', async () => {
+    const t = await trace(LINE);
+    for (const seconds of ['x', [0], null, new Float32Array(1)]) {
+      const e = thrown(() => pulseTrains(t, 0, 1, any(seconds)));
+      expect(e.field).toBe('stepSeconds');
+    }
+    expect(pulseTrains(t, 0, 1, new Float64Array(1)).length).toBe(3);
   });
 });
 

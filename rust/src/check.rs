@@ -20,7 +20,7 @@ use crate::compare::{StepWhy, as_object, why_at_point};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
-use crate::text::{echo, lines};
+use crate::text::{echo, split_line};
 use crate::trace::Trace;
 use serde::Serialize;
 use serde_json::{Map, Value};
@@ -92,28 +92,32 @@ impl Points {
     /// `(...)`, as programs print lists. Errors give the line and column,
     /// and name the point index.
     pub fn from_text(text: &str, dims: usize) -> Result<Points, Error> {
-        let mut reader = TextReader {
-            dims,
-            coords: Vec::new(),
-            written: Vec::new(),
+        let mut reader = TextReader::new(dims);
+        // Text with a bracket anywhere is a printed list. Plain rows have
+        // none, so the rows are read until a line with one shows (then the
+        // list is read from the start), and an error before it stands only
+        // if no bracket follows: the text is read once, not searched first.
+        let listed = match reader.line_rows(text) {
+            Ok(rows) => rows == Rows::Listed,
+            Err(_) if text.contains(BRACKETS) => true,
+            Err(e) => return Err(e),
         };
-        if text.contains(['[', '(']) {
+        if listed {
+            reader = TextReader::new(dims);
             reader.bracket_rows(text)?;
-        } else {
-            reader.line_rows(text)?;
         }
-        if reader.written.is_empty() {
+        if reader.points == 0 {
             return Err(Error::at(1, 1, "there are no points"));
         }
+        let first_jump = reader.first_jump;
         let points = Points {
             dims,
             coords: reader.coords,
         };
-        points.check_path().map_err(|(index, message)| {
-            let (line, column) = reader.written[index];
-            Error::at(line, column, message)
-        })?;
-        Ok(points)
+        match first_jump {
+            Some((index, line, column)) => Err(Error::at(line, column, points.jump(index))),
+            None => Ok(points),
+        }
     }
 
     /// The step from each point to the next (a path: see [`Self::check_path`]).
@@ -134,22 +138,26 @@ impl Points {
         if self.is_empty() {
             return Err((0, "there are no points".to_string()));
         }
-        for k in 1..self.len() {
-            let (before, now) = (self.get(k - 1), self.get(k));
-            if before.iter().zip(now).any(|(a, b)| (a - b).abs() > 1) {
-                return Err((
-                    k as usize,
-                    format!(
-                        "point {k} {} is more than one cell from point {} {}: a path moves each axis at most one cell per step",
-                        Point::new(now),
-                        k - 1,
-                        Point::new(before)
-                    ),
-                ));
-            }
+        match (1..self.len()).find(|&k| jumps(self.get(k - 1), self.get(k))) {
+            Some(k) => Err((k as usize, self.jump(k))),
+            None => Ok(()),
         }
-        Ok(())
     }
+
+    /// Why point k, more than one cell from point k - 1, is not a path.
+    fn jump(&self, k: u64) -> String {
+        format!(
+            "point {k} {} is more than one cell from point {} {}: a path moves each axis at most one cell per step",
+            Point::new(self.get(k)),
+            k - 1,
+            Point::new(self.get(k - 1))
+        )
+    }
+}
+
+/// Whether `now` is more than one cell from `before` on some axis.
+fn jumps(before: &[i64], now: &[i64]) -> bool {
+    before.iter().zip(now).any(|(a, b)| (a - b).abs() > 1)
 }
 
 /// A coordinate read from input: a whole number, exactly representable.
@@ -169,20 +177,79 @@ fn coordinate(value: f64, index: usize, axis: usize) -> Result<i64, String> {
     Ok(value as i64)
 }
 
-/// Reads text into points, a row at a time, with no allocation per row
-/// (a million-point file is read in one pass).
+/// Reads text into points in one pass, a row at a time, with no
+/// allocation per row (a million-point file is read at the speed of its
+/// bytes).
 struct TextReader {
     dims: usize,
     coords: Vec<i64>,
-    /// Line and 1-based column where each point's row starts.
-    written: Vec<(u32, u32)>,
+    /// Points read so far.
+    points: u64,
+    /// The first point more than one cell from the one before it: its
+    /// index, and the line and 1-based column where its row starts. It is
+    /// reported once the whole text has been read, so that a row that is
+    /// not a point is named first, wherever it is.
+    first_jump: Option<(u64, u32, u32)>,
+}
+
+/// The brackets that make text a printed list of points.
+const BRACKETS: [char; 2] = ['[', '('];
+
+/// What reading text as one point per line found.
+#[derive(PartialEq)]
+enum Rows {
+    /// Every line was read.
+    Read,
+    /// A line has a bracket: the text is a printed list.
+    Listed,
+}
+
+/// Most digits of a coordinate [`TextReader::plain_row`] reads: every
+/// 15-digit number is below 2^53, exact in f64 and far from i64's limits.
+const PLAIN_DIGITS: usize = 15;
+
+/// Most cells of a row [`TextReader::plain_row`] reads (voxpath's own CSV
+/// has k, x, y, z and the M column).
+const PLAIN_CELLS: usize = 8;
+
+/// The bytes that separate cells within a line ([`split_cells`]).
+fn is_separator(byte: u8) -> bool {
+    matches!(byte, b',' | b';' | b' ' | b'\t')
+}
+
+/// The bytes that end a line (`text::split_line`).
+fn is_line_break(byte: u8) -> bool {
+    matches!(byte, b'\n' | b'\r')
 }
 
 impl TextReader {
+    fn new(dims: usize) -> TextReader {
+        TextReader {
+            dims,
+            coords: Vec::new(),
+            points: 0,
+            first_jump: None,
+        }
+    }
+
+    /// Counts the point just appended to `coords`, written at `line` from
+    /// `column`, and notes it if it is the first to jump.
+    fn point_added(&mut self, line: u32, column: u32) {
+        let index = self.points;
+        self.points += 1;
+        if index > 0 && self.first_jump.is_none() {
+            let end = self.coords.len();
+            let (before, now) = self.coords[end - 2 * self.dims..].split_at(self.dims);
+            if jumps(before, now) {
+                self.first_jump = Some((index, line, column));
+            }
+        }
+    }
+
     /// Appends one point from the cells of a row written at `line` from
     /// `column` (each cell's offset counts from there).
     fn push_row(&mut self, line: u32, column: u32, cells: &[(usize, &str)]) -> Result<(), Error> {
-        let index = self.written.len();
+        let index = self.points;
         let at = |offset: usize, message: String| Error::at(line, column + offset as u32, message);
         if cells.len() != self.dims {
             return Err(at(
@@ -194,6 +261,7 @@ impl TextReader {
                 ),
             ));
         }
+        let index = index as usize;
         for (axis, &(offset, cell)) in cells.iter().enumerate() {
             // Whole numbers as such (the common case, and exact at any
             // size); anything else as a number, to say what is wrong with it.
@@ -215,8 +283,63 @@ impl TextReader {
             };
             self.coords.push(value.map_err(|m| at(offset, m))?);
         }
-        self.written.push((line, column));
+        self.point_added(line, column);
         Ok(())
+    }
+
+    /// Reads the line that starts at byte `start` as a point, if it is a
+    /// plain row: whole numbers of at most [`PLAIN_DIGITS`] digits, each
+    /// with an optional sign, between separators, as nearly every program
+    /// writes its points; the columns `pick` names (else exactly `dims`
+    /// cells). Returns the offset of the next line; None, having read
+    /// nothing, for any other line (a header, a comment, a blank line,
+    /// quotes, decimals, a wrong number of cells), which the general
+    /// reading then reads, to the same values or to its error. This is
+    /// the million-point file's path: one look at each byte, the number
+    /// built as its digits go by.
+    fn plain_row(&mut self, bytes: &[u8], start: usize, line: u32, pick: Option<&[usize]>) -> Option<usize> {
+        let mut cells = [0i64; PLAIN_CELLS];
+        let mut count = 0;
+        let mut i = start;
+        loop {
+            while i < bytes.len() && is_separator(bytes[i]) {
+                i += 1;
+            }
+            if i == bytes.len() || is_line_break(bytes[i]) {
+                break;
+            }
+            let negative = bytes[i] == b'-';
+            if negative || bytes[i] == b'+' {
+                i += 1;
+            }
+            let digits = i;
+            let mut value = 0i64;
+            while i < bytes.len() && bytes[i].is_ascii_digit() && i - digits < PLAIN_DIGITS {
+                value = value * 10 + i64::from(bytes[i] - b'0');
+                i += 1;
+            }
+            let ends = i == bytes.len() || is_separator(bytes[i]) || is_line_break(bytes[i]);
+            if i == digits || !ends || count == PLAIN_CELLS {
+                return None;
+            }
+            cells[count] = if negative { -value } else { value };
+            count += 1;
+        }
+        let row = &cells[..count];
+        match pick {
+            None if count == self.dims => self.coords.extend_from_slice(row),
+            Some(columns) if columns.iter().all(|&c| c < count) => {
+                self.coords.extend(columns.iter().map(|&c| row[c]));
+            }
+            _ => return None,
+        }
+        self.point_added(line, 1);
+        // The line ends at LF, CR LF or a lone CR, as `text::split_line` says.
+        Some(match bytes.get(i..i + 2) {
+            None if i == bytes.len() => i,
+            Some(b"\r\n") => i + 2,
+            _ => i + 1,
+        })
     }
 
     /// One row per innermost bracket pair, `[...]` or `(...)`.
@@ -248,17 +371,28 @@ impl TextReader {
     /// One row per non-blank line; a first line that is not all numbers is
     /// a header, whose x, y, z, ... columns (any case) are the ones read,
     /// or, if it does not name them all, its first `dims` columns.
-    fn line_rows(&mut self, text: &str) -> Result<(), Error> {
+    fn line_rows(&mut self, text: &str) -> Result<Rows, Error> {
         let mut cells = Vec::new();
         let mut picked = Vec::new();
         let mut pick: Option<Vec<usize>> = None;
         let mut first = true;
-        for (number, line) in lines(text).enumerate() {
+        let (mut at, mut line_number) = (0, 0u32);
+        while at < text.len() {
+            line_number += 1;
+            if let Some(next) = self.plain_row(text.as_bytes(), at, line_number, pick.as_deref()) {
+                at = next;
+                first = false;
+                continue;
+            }
+            let (line, next) = split_line(&text[at..]);
+            at += next;
+            if line.contains(BRACKETS) {
+                return Ok(Rows::Listed);
+            }
             let trimmed = line.trim_start();
             if trimmed.is_empty() || trimmed.starts_with('#') {
                 continue;
             }
-            let line_number = number as u32 + 1;
             split_cells(line, &mut cells);
             if first {
                 first = false;
@@ -288,7 +422,7 @@ impl TextReader {
                                 1,
                                 format!(
                                     "point {} has {} cells; the header has more columns",
-                                    self.written.len(),
+                                    self.points,
                                     cells.len()
                                 ),
                             )
@@ -299,7 +433,7 @@ impl TextReader {
                 }
             }
         }
-        Ok(())
+        Ok(Rows::Read)
     }
 }
 
@@ -312,7 +446,7 @@ fn split_cells<'a>(text: &'a str, out: &mut Vec<(usize, &'a str)>) {
     // ASCII bytes is always on a char boundary.
     let mut start = None;
     for (i, &b) in text.as_bytes().iter().enumerate() {
-        let separator = matches!(b, b',' | b';' | b' ' | b'\t' | b'\r');
+        let separator = is_separator(b) || b == b'\r';
         match (separator, start) {
             (true, Some(s)) => {
                 out.push((s, &text[s..i]));
@@ -450,40 +584,36 @@ pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Che
 
 /// Checks points against the trace of `request` (already run).
 pub fn check_trace(request: &Request, trace: &Trace, points: &Points) -> Check {
-    let first_difference = first_difference(trace, points);
+    // The points' steps, made once: the rule's path is compared with them,
+    // and every candidate of alsoMatches follows them.
+    let steps = points.steps();
+    let first_difference = first_difference(trace, points, &steps);
     Check {
         matches: first_difference.is_none(),
         algorithm: trace.algorithm.clone(),
         steps: trace.steps(),
         your_steps: points.len() - 1,
         first_difference,
-        also_matches: also_matches(request, points),
+        also_matches: also_matches(request, points, &steps),
     }
 }
 
-/// Points read from a trace at a time while comparing.
-const CHUNK_POINTS: u64 = 1 << 16;
-
 /// The first point index below both lengths where `trace` and `points`
-/// differ, comparing a chunk at a time so that a mismatch stops early.
-fn first_mismatch(trace: &Trace, points: &Points) -> Option<u64> {
-    let shared = (trace.steps() + 1).min(points.len());
-    let dims = points.dims;
-    let mut from = 0;
-    while from < shared {
-        let to = (from + CHUNK_POINTS).min(shared);
-        let expected = trace.points_flat(from, to);
-        let got = &points.coords[from as usize * dims..to as usize * dims];
-        if let Some(i) = expected
-            .chunks(dims)
-            .zip(got.chunks(dims))
-            .position(|(e, g)| e != g)
-        {
-            return Some(from + i as u64);
-        }
-        from = to;
+/// differ. Two paths from the same start are the same points exactly as
+/// far as their steps are the same, and the step that differs first
+/// leads to the first point that does: so the step codes (2 bytes a step)
+/// are compared, not the points (8 bytes a coordinate, decoded from the
+/// trace's steps first).
+fn first_mismatch(trace: &Trace, points: &Points, steps: &[Step]) -> Option<u64> {
+    if trace.start().coords() != points.get(0) {
+        return Some(0);
     }
-    None
+    let shared = trace.steps().min(steps.len() as u64);
+    let rule = trace.step_range(0, shared);
+    rule.iter()
+        .zip(steps)
+        .position(|(a, b)| a != b)
+        .map(|step| step as u64 + 1)
 }
 
 /// Whether `trace`, traced to follow `steps` (the points' own steps), is
@@ -493,9 +623,9 @@ fn follows(trace: &Trace, points: &Points, steps: &[Step]) -> bool {
     trace.steps() == steps.len() as u64 && trace.start().coords() == points.get(0)
 }
 
-fn first_difference(trace: &Trace, points: &Points) -> Option<Difference> {
+fn first_difference(trace: &Trace, points: &Points, your_steps: &[Step]) -> Option<Difference> {
     let steps = trace.steps();
-    let (kind, k) = match first_mismatch(trace, points) {
+    let (kind, k) = match first_mismatch(trace, points, your_steps) {
         Some(0) => (DifferenceKind::Start, 0),
         Some(k) => (DifferenceKind::Step, k),
         None if points.len() < steps + 1 => (DifferenceKind::Stops, points.len()),
@@ -574,12 +704,11 @@ fn family_of(request: &Request) -> Option<Family> {
 /// values [`tried_values`] gives, whose path equals `points`. The request's
 /// other options go to each algorithm that takes them; `maxSteps` is held
 /// to the points' length, so a rule that needs more steps stops early.
-pub fn also_matches(request: &Request, points: &Points) -> Vec<AlsoMatch> {
+pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> Vec<AlsoMatch> {
     let Some(family) = family_of(request) else {
         return Vec::new();
     };
     let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
-    let steps = points.steps();
     let mut out = Vec::new();
     for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
         let tried: Vec<(&OptionSpec, Vec<Value>)> = info
@@ -605,8 +734,8 @@ pub fn also_matches(request: &Request, points: &Points) -> Vec<AlsoMatch> {
                 .zip(&choice)
                 .map(|((_, values), &i)| Some(values[i].clone()))
                 .collect();
-            if let Some(trace) = trace_combination(info, &base, &tried, &steps, &mut combination)
-                && follows(&trace, points, &steps)
+            if let Some(trace) = trace_combination(info, &base, &tried, steps, &mut combination)
+                && follows(&trace, points, steps)
                 && !matched.contains(&combination)
             {
                 matched.push(combination);
@@ -950,6 +1079,59 @@ mod tests {
         }
     }
 
+    /// Where a reading of text failed, without the column: a quoted cell
+    /// starts a byte later than the same cell unquoted.
+    fn line_and_message(result: Result<Points, Error>) -> Result<Vec<i64>, (String, String)> {
+        result.map(|p| p.coords).map_err(|e| {
+            let text = e.to_string();
+            let (line, rest) = text.split_once(", column ").unwrap();
+            let (_, message) = rest.split_once(": ").unwrap();
+            (line.to_string(), message.to_string())
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(512))]
+        /// The plain rows' quick path reads what the general reading reads:
+        /// the same text with every cell in quotes (which only the general
+        /// reading takes) gives the same points, or fails at the same line
+        /// with the same message.
+        #[test]
+        fn plain_rows_read_as_quoted_rows_do(
+            dims in 2usize..4,
+            header in proptest::sample::select(vec!["", "x,y,z\n", "z;y;x;k\n", "a b\n", "# points\n"]),
+            rows in proptest::collection::vec(
+                (
+                    proptest::collection::vec(
+                        prop_oneof![
+                            6 => "[+-]?[01]",
+                            2 => "[+-]?[0-9]{1,17}",
+                            1 => "[+-]|0x1|1\\.5|1e3|x",
+                        ],
+                        0..5,
+                    ),
+                    proptest::sample::select(vec![",", ", ", " ", "\t", ";", ",,", " \t"]),
+                    proptest::sample::select(vec!["\n", "\r\n", "\r", "\n\n", "\n# 1,2\n", "\n  \n", "\n,\n"]),
+                ),
+                0..12,
+            ),
+        ) {
+            let write = |quote: &str| -> String {
+                let mut text = header.to_string();
+                for (cells, separator, end) in &rows {
+                    let quoted: Vec<String> = cells.iter().map(|c| format!("{quote}{c}{quote}")).collect();
+                    text += &quoted.join(separator);
+                    text += end;
+                }
+                text
+            };
+            prop_assert_eq!(
+                line_and_message(Points::from_text(&write(""), dims)),
+                line_and_message(Points::from_text(&write("\""), dims))
+            );
+        }
+    }
+
     #[test]
     fn text_reads_csv_headers_lists_and_blank_separated_rows() {
         let csv = "k,x,y,z,M\n0,0,0,0,\n1,1,1,1,0\n";
@@ -971,6 +1153,15 @@ mod tests {
         assert_eq!(
             Points::from_text(python, 2).unwrap().coords,
             vec![0, 0, 1, -1]
+        );
+        // A bracket anywhere makes the text a list, even after rows read
+        // as lines, or after a line that is not a point.
+        for text in ["5 5 5\n[1, 1, 1]", "0,0,0\n1,a\n[[1, 1, 1]]", "# 1 2\n1 1 1\n(1 1 1)"] {
+            assert_eq!(Points::from_text(text, 3).unwrap().coords, vec![1, 1, 1]);
+        }
+        assert_eq!(
+            Points::from_text("0 0 0\n# (a list)\n", 3).unwrap_err().to_string(),
+            "line 2, column 4: point 0 has 2 coordinates; the move has 3"
         );
     }
 

@@ -90,18 +90,27 @@ pub fn compare(request_json: &str) -> Result<JsValue, JsValue> {
     Ok(to_js(&result))
 }
 
+/// Text as UTF-8 bytes, as the JS side's `TextEncoder` writes them: a
+/// Uint8Array crosses the boundary by one copy, where a JS string would be
+/// re-encoded a character at a time (a 20 MB CSV took longer to arrive
+/// than to read).
+fn utf8<'a>(field: &'static str, bytes: &'a [u8]) -> Result<&'a str, JsValue> {
+    std::str::from_utf8(bytes)
+        .map_err(|e| to_js_error(&Error::field(field, format!("is not UTF-8 text: {e}"))))
+}
+
 /// Checks a learner's points against the request (see `check`): `points`
-/// is text (CSV, blank-separated rows or a printed list, parsed here and
-/// nowhere else) or a flat Int32Array / Float64Array with `dims` values per
-/// point.
+/// is text as UTF-8 bytes (CSV, blank-separated rows or a printed list,
+/// parsed here and nowhere else) or a flat Int32Array / Float64Array with
+/// `dims` values per point.
 #[wasm_bindgen(js_name = check, unchecked_return_type = "Check")]
 pub fn check(
     request_json: &str,
-    #[wasm_bindgen(unchecked_param_type = "string | Int32Array | Float64Array")] points: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Uint8Array | Int32Array | Float64Array")] points: JsValue,
     dims: Option<u32>,
 ) -> Result<JsValue, JsValue> {
-    let result = if let Some(text) = points.as_string() {
-        crate::check::check_text(request_json, &text)
+    let result = if let Some(bytes) = points.dyn_ref::<js_sys::Uint8Array>() {
+        crate::check::check_text(request_json, utf8("points", &bytes.to_vec())?)
     } else {
         let values: Vec<f64> = if let Some(ints) = points.dyn_ref::<js_sys::Int32Array>() {
             ints.to_vec().into_iter().map(f64::from).collect()
@@ -110,7 +119,7 @@ pub fn check(
         } else {
             return Err(to_js_error(&Error::field(
                 "points",
-                "expected text, an Int32Array or a Float64Array",
+                "expected UTF-8 text (a Uint8Array), an Int32Array or a Float64Array",
             )));
         };
         let dims = dims.ok_or_else(|| {
@@ -131,19 +140,19 @@ pub fn check(
 /// between the decode and the copy.
 const POINTS_CHUNK_VALUES: usize = 1 << 15;
 
-/// A learner's points read from text as `check` reads it (CSV,
+/// A learner's points read from text (UTF-8 bytes) as `check` reads it (CSV,
 /// blank-separated rows or a printed list), `dims` coordinates each, flat:
 /// for a view that draws them beside the rule's path and then checks them
 /// as a flat array, reading the text once. Errors give the line and column.
 #[wasm_bindgen(js_name = readPoints)]
-pub fn read_points(text: &str, dims: u32) -> Result<Vec<f64>, JsValue> {
+pub fn read_points(text: &[u8], dims: u32) -> Result<Vec<f64>, JsValue> {
     let axes = crate::grid::AXIS_NAMES.len();
     if dims == 0 || dims as usize > axes {
         let message = format!("{dims} coordinates per point; expected 1 to {axes}");
         return Err(to_js_error(&Error::field("dims", message)));
     }
-    let points =
-        crate::check::Points::from_text(text, dims as usize).map_err(|e| to_js_error(&e))?;
+    let points = crate::check::Points::from_text(utf8("text", text)?, dims as usize)
+        .map_err(|e| to_js_error(&e))?;
     // Exact: the reader refuses coordinates past 2^53.
     Ok(points.coords.iter().map(|&c| c as f64).collect())
 }

@@ -8,6 +8,7 @@
  */
 import { AXIS_NAMES } from './axes.js';
 import type { Check } from './check.js';
+import { argumentError, describeValue, plainData } from './guard.js';
 import type { Comparison, StepWhy } from './compare.js';
 import type { MeasureSummary, RandomLinesResult } from './experiment.js';
 import { type Trace, requireTrace } from './trace.js';
@@ -19,6 +20,13 @@ import { type ColumnSpec, type DecisionColumns, NO_VALUE } from './types.js';
  * in a number column, NO_VALUE in a category or flag column).
  */
 export function readDecision(column: ColumnSpec, value: number): string | number | boolean | null {
+  plainData<ColumnSpec>('column', column, ['name', 'kind'], "a decision column (from a trace's columns)");
+  if (typeof value !== 'number') throw argumentError('value', `expected a decision value (a number), got ${describeValue(value)}`);
+  return decisionValue(column, value);
+}
+
+/** readDecision, unchecked: for the writers' loops over a trace's own columns. */
+function decisionValue(column: ColumnSpec, value: number): string | number | boolean | null {
   if (Number.isNaN(value)) return null;
   if (column.kind === 'category') return value === NO_VALUE ? null : (column.labels?.[value] ?? value);
   if (column.kind === 'flag') return value === NO_VALUE ? null : value === 1;
@@ -80,7 +88,7 @@ export function* traceJsonChunks(trace: Trace): Generator<string> {
     yield `${i > 0 ? ',' : ''}${JSON.stringify(column.name)}:[`;
     for (const [from, to] of chunks(trace.steps)) {
       const values = trace.decisionsInRange(from, to)[column.name]!;
-      yield (from > 0 ? ',' : '') + Array.from(values, (v) => JSON.stringify(readDecision(column, v))).join(',');
+      yield (from > 0 ? ',' : '') + Array.from(values, (v) => JSON.stringify(decisionValue(column, v))).join(',');
     }
     yield ']';
   }
@@ -124,7 +132,7 @@ function rows<R>(trace: Trace, from: number, to: number, absent: string, cell: (
       const value = values[i]!;
       let text = known.get(value);
       if (text === undefined) {
-        const read = readDecision(column, value);
+        const read = decisionValue(column, value);
         text = cell(read === null ? absent : typeof read === 'boolean' ? (read ? '1' : '0') : String(read));
         if (column.kind === 'category' || column.kind === 'flag') known.set(value, text);
       }
@@ -214,15 +222,19 @@ function lineRows(result: RandomLinesResult): { header: string[]; body: string[]
   return { header, body };
 }
 
+/** The fields of a random-lines result the writers read. */
+const RANDOM_LINES_KEYS = ['algorithm', 'seed', 'maxCoordinate', 'lines', 'perpendicular', 'axisError', 'paperFigure9', 'paperFigure9Erratum'] as const;
+const RANDOM_LINES = 'a random-lines result (from randomLines())';
+
 /** One CSV row per random line (the CLI's experiment --format csv). */
 export function randomLinesToCsv(result: RandomLinesResult): string {
-  const { header, body } = lineRows(result);
+  const { header, body } = lineRows(plainData<RandomLinesResult>('result', result, RANDOM_LINES_KEYS, RANDOM_LINES));
   return [header, ...body].map((r) => r.join(',')).join('\n') + '\n';
 }
 
 /** Per-line rows, then the spread of each statistic beside Wang's Figure 9. */
 export function randomLinesToTable(result: RandomLinesResult): string {
-  const { header, body } = lineRows(result);
+  const { header, body } = lineRows(plainData<RandomLinesResult>('result', result, RANDOM_LINES_KEYS, RANDOM_LINES));
   const spread = (m: MeasureSummary, key: 'max' | 'mean' | 'std') => [m[key].max, m[key].min, m[key].mean].map((v) => v.toFixed(4));
   const summary = (['mean', 'max', 'std'] as const).map((key) => [
     `delta_${key[0]!.toUpperCase()}${key.slice(1)} per line`,
@@ -276,8 +288,13 @@ function comparisonRows(c: Comparison): string[][] {
   ];
 }
 
+/** The fields of a comparison the writers read. */
+const COMPARISON_KEYS = ['a', 'b', 'firstDifference', 'onlyInA', 'onlyInB'] as const;
+const COMPARISON = 'a Comparison (from compare() or compareWith())';
+
 /** A comparison as CSV: one row per quantity, one column per algorithm (the CLI's compare --format csv). */
-export function comparisonToCsv(c: Comparison): string {
+export function comparisonToCsv(comparison: Comparison): string {
+  const c = plainData<Comparison>('comparison', comparison, COMPARISON_KEYS, COMPARISON);
   return [['quantity', ...sideLabels(c)], ...comparisonRows(c)].map((r) => r.map(csvCell).join(',')).join('\n') + '\n';
 }
 
@@ -292,7 +309,8 @@ function decisionsText(decisions: StepWhy['decisions']): string {
 }
 
 /** A comparison for people: metrics side by side, where and why the paths part, the cells only in each (the CLI's compare --format table). */
-export function comparisonToTable(c: Comparison): string {
+export function comparisonToTable(comparison: Comparison): string {
+  const c = plainData<Comparison>('comparison', comparison, COMPARISON_KEYS, COMPARISON);
   const labels = sideLabels(c);
   const d = c.firstDifference;
   const lines = [
@@ -336,7 +354,8 @@ export function comparisonToTable(c: Comparison): string {
  * rule's reason and decision values, the points around it side by side,
  * and the rules the points do follow.
  */
-export function checkToTable(c: Check): string {
+export function checkToTable(check: Check): string {
+  const c = plainData<Check>('check', check, ['algorithm', 'steps', 'yourSteps', 'firstDifference', 'alsoMatches'], 'a Check (from checkPoints())');
   const d = c.firstDifference;
   const lines: string[] = [];
   if (d === null) {

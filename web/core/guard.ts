@@ -60,6 +60,24 @@ export function text(field: string, value: unknown, what: string): string {
   return value;
 }
 
+/**
+ * `value` when it is an object (not an array) with each of `keys`: plain
+ * data that an API function returned, handed back to be written out (a
+ * Comparison to comparisonToCsv). Else a VoxpathError naming `field`, where
+ * reading a field of null, a number or a Trace would throw a TypeError from
+ * inside the writer; `what` names the data and its source ("a Comparison
+ * (from compare())").
+ */
+export function plainData<T>(field: string, value: unknown, keys: readonly (keyof T & string)[], what: string): T {
+  const isObject = typeof value === 'object' && value !== null && !Array.isArray(value) && !ArrayBuffer.isView(value);
+  const missing = isObject ? keys.filter((key) => !(key in value)) : [];
+  if (!isObject || missing.length > 0) {
+    const lacking = missing.length > 0 ? ` without ${missing.join(', ')}` : '';
+    throw argumentError(field, `expected ${what}, got ${describeValue(value)}${lacking}`);
+  }
+  return value as T;
+}
+
 /** `value` when it is undefined or a function, else a VoxpathError naming `field`. */
 export function optionalFunction<F extends (...args: never[]) => unknown>(field: string, value: unknown): F | undefined {
   if (value !== undefined && typeof value !== 'function') throw argumentError(field, `expected a function, got ${describeValue(value)}`);

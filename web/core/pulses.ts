@@ -37,7 +37,7 @@ export function pulseTrains(trace: Trace, from: number, to: number, stepSeconds?
   // Checks from and to, naming them.
   const codes = trace.stepCodes(from, to);
   const levels = trace.directionLevels(from, to);
-  if (stepSeconds !== undefined && (stepSeconds as ArrayLike<number> | null)?.length !== to - from) {
+  if (stepSeconds !== undefined && !(stepSeconds instanceof Float64Array && stepSeconds.length === to - from)) {
     throw argumentError('stepSeconds', `expected the ${to - from} instants of steps ${from}..${to}, got ${describeValue(stepSeconds)}`);
   }
   const trains: PulseTrain[] = [];
