@@ -358,6 +358,8 @@ impl Stepper for LiuFloat {
         let start_left = self.left;
         let mut values = scaled.map(|v| v.map_or(0, |(e, _)| e));
         let mut remaining = self.remaining;
+        // Counted in a local (a register), not through `self`.
+        let mut left = self.left;
         for slot in &mut out[..taken - 1] {
             let mut step = always;
             for axis in 0..3 {
@@ -365,17 +367,16 @@ impl Stepper for LiuFloat {
                     continue;
                 };
                 let wants = values[axis] > threshold;
-                let (moves, _) = Guard::apply(wants, self.left[axis], remaining);
-                if moves {
-                    step = Step(step.0 | toward[axis].0);
-                    self.left[axis] -= 1;
-                    values[axis] -= scale;
-                }
-                values[axis] += k;
+                // Branch-free: the step's bit and the counts move by 0 or 1.
+                let moves = Guard::moves(wants, left[axis], remaining);
+                step = Step(step.0 | (toward[axis].0 * moves as u16));
+                left[axis] -= moves as i64;
+                values[axis] += k - scale * moves as i64;
             }
             *slot = step;
             remaining -= 1;
         }
+        self.left = left;
         for axis in 0..3 {
             if scaled[axis].is_none() {
                 self.left[axis] -= taken as i64 - 1;
