@@ -20,6 +20,8 @@
  */
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
+import { setFlagsFromString } from 'node:v8';
+import { runInNewContext } from 'node:vm';
 import { trace } from '../web/core/index.js';
 import type { TraceOptions } from '../web/core/index.js';
 import { npmBresenham, zinglCircle } from './peers/npm.js';
@@ -56,6 +58,23 @@ interface Side {
 
 const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
 
+// V8's collector, callable: a context made after --expose-gc is set has
+// gc() as a global (bench/run.mjs is started without the flag).
+setFlagsFromString('--expose-gc');
+const gc = runInNewContext('gc') as (options: { type: 'minor' | 'major' }) => void;
+
+/**
+ * A young-generation collection, untimed, before each run: it frees the
+ * arrays the runs before left behind (an ArrayBuffer dies young). Not a
+ * full collection: that also throws away optimised code holding closures
+ * that died (each peer's callback is a new closure per run), so that a
+ * peer would start every run unoptimised.
+ */
+const collectGarbage = () => gc({ type: 'minor' });
+
+/** Milliseconds to wait after collecting garbage before a timed run. */
+const SETTLE_MS = 20;
+
 /** CPU seconds the process has run, all its threads, user and kernel time. */
 function cpuSeconds(): number {
   const { user, system } = process.cpuUsage();
@@ -65,12 +84,20 @@ function cpuSeconds(): number {
 /**
  * Median CPU seconds of each side over ROUNDS rounds, the sides in turn within
  * a round, after one untimed round (V8 compiles JavaScript and wasm in
- * tiers: a first run measures the compiler as much as the code).
+ * tiers: a first run measures the compiler as much as the code). The
+ * garbage of the runs before is collected before each run, untimed: every
+ * side leaves an array of millions of points behind, and V8 collects them
+ * when the memory outside its heap passes a threshold, which with the sides
+ * in turn falls on the same side round after round (seen with --trace-gc:
+ * 10 to 15 ms of a 30 ms run). A short pause after it lets the collector's
+ * threads finish giving that memory back before the clock starts.
  */
 async function medianSeconds(sides: Side[]): Promise<number[]> {
   const times: number[][] = sides.map(() => []);
   for (let round = 0; round <= ROUNDS; round++) {
     for (const [i, side] of sides.entries()) {
+      collectGarbage();
+      await new Promise((resolve) => setTimeout(resolve, SETTLE_MS));
       const start = cpuSeconds();
       await side.run();
       if (round > 0) times[i]!.push(cpuSeconds() - start);
@@ -198,7 +225,7 @@ export default async function endToEnd(): Promise<BenchGroup> {
     notes: [
       `${COLUMNS.voxpath}: points (cells, steps) per second of \`(await trace({...})).points\` in Node, the trace freed after; native: \`voxpath::run\` and every point.`,
       `${COLUMNS.peer}: the same for the peer named in the row, each rate counting its own points (greedy and walk6 take more steps than the Bresenham line they are measured against; a peer's circle may have other cells).`,
-      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round, each run timed by the CPU time it takes (Node: process.cpuUsage, every thread; native: the thread's CPU clock), not wall time, which on a shared machine counts waits for a core.`,
+      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round, each run timed by the CPU time it takes (Node: process.cpuUsage, every thread; native: the thread's CPU clock), not wall time, which on a shared machine counts waits for a core; in Node the garbage of earlier runs is collected, untimed, before each run.`,
     ],
     rows,
   };
