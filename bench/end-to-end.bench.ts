@@ -10,10 +10,18 @@
  *
  * Each figure is the median of ROUNDS rounds after one untimed round; in a
  * round the two sides of a ratio run in turn, so that a slow moment of the
- * machine falls on both. The goal column is the ratio issue 13 asks for.
+ * machine falls on both. A run is timed by the CPU time Node's process
+ * spends on it (process.cpuUsage: every thread, the garbage collector's and
+ * the kernel's page faults included), not by the clock on the wall: on a
+ * machine shared with other work, wall time also counts the moments the
+ * run waits for a free core, which fall on one side or the other at random.
+ * The native example times itself the same way. The goal column is the
+ * ratio issue 13 asks for.
  */
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
+import { setFlagsFromString } from 'node:v8';
+import { runInNewContext } from 'node:vm';
 import { trace } from '../web/core/index.js';
 import type { TraceOptions } from '../web/core/index.js';
 import { npmBresenham, zinglCircle } from './peers/npm.js';
@@ -50,18 +58,50 @@ interface Side {
 
 const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
 
+// V8's collector, callable: a context made after --expose-gc is set has
+// gc() as a global (bench/run.mjs is started without the flag).
+setFlagsFromString('--expose-gc');
+const gc = runInNewContext('gc') as (options: { type: 'minor' | 'major' }) => void;
+
 /**
- * Median seconds of each side over ROUNDS rounds, the sides in turn within
+ * A young-generation collection, untimed, before each run: it frees the
+ * arrays the runs before left behind (an ArrayBuffer dies young). Not a
+ * full collection: in two whole runs of this table with one, the peers
+ * that write through a callback (a new closure each run) ran 3 to 4 times
+ * slower than with none, as if their optimised code were thrown away with
+ * the closures that died.
+ */
+const collectGarbage = () => gc({ type: 'minor' });
+
+/** Milliseconds to wait after collecting garbage before a timed run. */
+const SETTLE_MS = 20;
+
+/** CPU seconds the process has run, all its threads, user and kernel time. */
+function cpuSeconds(): number {
+  const { user, system } = process.cpuUsage();
+  return (user + system) / 1e6;
+}
+
+/**
+ * Median CPU seconds of each side over ROUNDS rounds, the sides in turn within
  * a round, after one untimed round (V8 compiles JavaScript and wasm in
- * tiers: a first run measures the compiler as much as the code).
+ * tiers: a first run measures the compiler as much as the code). The
+ * garbage of the runs before is collected before each run, untimed: every
+ * side leaves an array of millions of points behind, and V8 collects them
+ * when the memory outside its heap passes a threshold, which with the sides
+ * in turn falls on the same side round after round (seen with --trace-gc:
+ * 10 to 15 ms of a 30 ms run). A short pause after it lets the collector's
+ * threads finish giving that memory back before the clock starts.
  */
 async function medianSeconds(sides: Side[]): Promise<number[]> {
   const times: number[][] = sides.map(() => []);
   for (let round = 0; round <= ROUNDS; round++) {
     for (const [i, side] of sides.entries()) {
-      const start = performance.now();
+      collectGarbage();
+      await new Promise((resolve) => setTimeout(resolve, SETTLE_MS));
+      const start = cpuSeconds();
       await side.run();
-      if (round > 0) times[i]!.push((performance.now() - start) / 1000);
+      if (round > 0) times[i]!.push(cpuSeconds() - start);
     }
   }
   return times.map(median);
@@ -186,7 +226,7 @@ export default async function endToEnd(): Promise<BenchGroup> {
     notes: [
       `${COLUMNS.voxpath}: points (cells, steps) per second of \`(await trace({...})).points\` in Node, the trace freed after; native: \`voxpath::run\` and every point.`,
       `${COLUMNS.peer}: the same for the peer named in the row, each rate counting its own points (greedy and walk6 take more steps than the Bresenham line they are measured against; a peer's circle may have other cells).`,
-      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round.`,
+      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round, each run timed by the CPU time it takes (Node: process.cpuUsage, every thread; native: the thread's CPU clock), not wall time, which on a shared machine counts waits for a core; in Node the garbage of earlier runs is collected, untimed, before each run.`,
     ],
     rows,
   };

@@ -235,12 +235,11 @@ impl Dda {
                 acc[axis] += inc[axis];
                 let rounded = (acc[axis] + 0.5).floor() as i64;
                 let wants = (rounded - at[axis]) * sign[axis] > 0;
-                let (moves, _) = Guard::apply(wants, left[axis], remaining);
-                if moves {
-                    step = Step(step.0 | toward[axis].0);
-                    at[axis] += sign[axis];
-                    left[axis] -= 1;
-                }
+                // Branch-free: the step's bit and the counts move by 0 or 1.
+                let moves = Guard::moves(wants, left[axis], remaining);
+                step = Step(step.0 | (toward[axis].0 * moves as u16));
+                at[axis] += sign[axis] * moves as i64;
+                left[axis] -= moves as i64;
             }
             *slot = step;
             remaining -= 1;

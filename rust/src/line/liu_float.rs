@@ -352,34 +352,33 @@ impl Stepper for LiuFloat {
         // epsilon > threshold steps: >= 0 with tie = advance, > 0 with hold.
         let threshold = -i64::from(self.tie == TiePolicy::Advance);
         let toward: [Step; 3] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
-        let always = (0..3)
-            .filter(|&a| scaled[a].is_none())
-            .fold(Step::NONE, |s, a| Step(s.0 | toward[a].0));
         let start_left = self.left;
-        let mut values = scaled.map(|v| v.map_or(0, |(e, _)| e));
+        // One loop body for every axis, no case per axis: an active axis
+        // (no epsilon) is a value that always wants to step and never
+        // changes (k = 0, and 0 taken off when it steps); it has as many
+        // units left as steps, so the finish rule lets it step every time.
+        let k_by_axis = scaled.map(|v| v.map_or(0, |(_, k)| k));
+        let scale_by_axis = scaled.map(|v| v.map_or(0, |_| scale));
+        let mut values = scaled.map(|v| v.map_or(1, |(e, _)| e));
         let mut remaining = self.remaining;
+        // Counted in a local (a register), not through `self`.
+        let mut left = self.left;
         for slot in &mut out[..taken - 1] {
-            let mut step = always;
+            let mut step = Step::NONE;
             for axis in 0..3 {
-                let Some((_, k)) = scaled[axis] else {
-                    continue;
-                };
                 let wants = values[axis] > threshold;
-                let (moves, _) = Guard::apply(wants, self.left[axis], remaining);
-                if moves {
-                    step = Step(step.0 | toward[axis].0);
-                    self.left[axis] -= 1;
-                    values[axis] -= scale;
-                }
-                values[axis] += k;
+                // Branch-free: the step's bit and the counts move by 0 or 1.
+                let moves = Guard::moves(wants, left[axis], remaining);
+                step = Step(step.0 | (toward[axis].0 * moves as u16));
+                left[axis] -= moves as i64;
+                values[axis] += k_by_axis[axis] - scale_by_axis[axis] * moves as i64;
             }
             *slot = step;
             remaining -= 1;
         }
+        self.left = left;
         for axis in 0..3 {
-            if scaled[axis].is_none() {
-                self.left[axis] -= taken as i64 - 1;
-            } else {
+            if scaled[axis].is_some() {
                 self.epsilon[axis] = Some(values[axis] as f64 / self.scale);
             }
         }

@@ -271,6 +271,18 @@ impl Guard {
         }
     }
 
+    /// Whether the axis steps under [`Guard::apply`], for the fill loops
+    /// that need no guard: the same cases folded into one expression of
+    /// non-short-circuit operators, so that the compiler can make it a few
+    /// compares and bit operations instead of a branch per axis per step
+    /// (a rule's decisions follow no pattern a branch predictor learns).
+    /// Held: `wants` with no unit left fails the first term and the second
+    /// needs a unit left; forced: the second term; otherwise `wants`.
+    #[inline(always)]
+    pub fn moves(wants: bool, units_left: i64, steps_left: u64) -> bool {
+        (wants & (units_left != 0)) | ((units_left as u64 >= steps_left) & (units_left > 0))
+    }
+
     /// The guard of a step over several axes: the first that the finish
     /// rule overrode, else Rule.
     pub fn of_step(guards: &[Guard]) -> Guard {
@@ -370,6 +382,21 @@ mod tests {
         assert_eq!(Guard::apply(false, 0, 0), (false, Guard::Rule));
         assert_eq!(Guard::of_step(&[Guard::Rule, Guard::Forced]), Guard::Forced);
         assert_eq!(Guard::of_step(&[Guard::Rule; 3]), Guard::Rule);
+    }
+
+    #[test]
+    fn the_branch_free_finish_rule_moves_as_apply_does() {
+        for wants in [false, true] {
+            for units_left in 0..6 {
+                for steps_left in 0..6u64 {
+                    assert_eq!(
+                        Guard::moves(wants, units_left, steps_left),
+                        Guard::apply(wants, units_left, steps_left).0,
+                        "wants {wants}, {units_left} units and {steps_left} steps left"
+                    );
+                }
+            }
+        }
     }
 
     #[test]
