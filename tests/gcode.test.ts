@@ -39,6 +39,19 @@ describe('runGcode', () => {
     p.free();
   });
 
+  it('reads the moves from the core on demand, by index or by range', async () => {
+    const p = await runGcode(SQUARE, { stepsPerMm: 2 });
+    expect(p.moveCount).toBe(4);
+    expect(p.movesInRange(1, 3)).toEqual(p.moves.slice(1, 3));
+    expect(p.move(3)).toEqual(p.moves[3]);
+    expect(p.move(3).note).toMatch(/^Line 6, G1: \(0, 1, 0\) -> \(0, 0, 0\) mm/);
+    expect(p.movesInRange(2, 2)).toEqual([]);
+    expect(() => p.move(4)).toThrow(expect.objectContaining({ field: 'i' }));
+    expect(() => p.movesInRange(0, 5)).toThrow(VoxpathError);
+    p.free();
+    expect(() => p.move(0)).toThrow(expect.objectContaining({ field: 'program' }));
+  });
+
   it('skips moves of no steps when mapping steps to lines', async () => {
     // Line 3 rounds to the start (0.1 mm at 2 steps/mm is 0.2 step).
     const p = await runGcode('G1 X1 F1\nG1 X1.1\nG1 X2\n', { stepsPerMm: 2 });

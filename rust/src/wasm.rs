@@ -30,7 +30,7 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 /// A boundary value as the plain object its Tsify type describes.
-fn to_js<T: Serialize>(value: &T) -> JsValue {
+fn to_js<T: Serialize + ?Sized>(value: &T) -> JsValue {
     let json = serde_json::to_string(value).expect("boundary types serialize");
     js_sys::JSON::parse(&json).expect("serde_json writes valid JSON")
 }
@@ -350,6 +350,7 @@ impl GcodeRun {
         let program = self.0.finish();
         GcodeResult {
             program: to_js(&program.info),
+            moves: program.moves,
             steps: program.trace.steps(),
             steps_per_mm: program.info.steps_per_mm,
             trace: Some(program.trace),
@@ -362,6 +363,7 @@ impl GcodeRun {
 #[wasm_bindgen]
 pub struct GcodeResult {
     program: JsValue,
+    moves: Vec<crate::gcode::Move>,
     steps: u64,
     steps_per_mm: [f64; crate::machine::MACHINE_AXES],
     trace: Option<Trace>,
@@ -370,10 +372,44 @@ pub struct GcodeResult {
 
 #[wasm_bindgen]
 impl GcodeResult {
-    /// Moves, pulses, warnings and errors (see `gcode::ProgramInfo`).
+    /// Pulses, warnings, errors and the number of moves (see
+    /// `gcode::ProgramInfo`); the moves themselves are read by range.
     #[wasm_bindgen(unchecked_return_type = "ProgramInfo")]
     pub fn program(&self) -> JsValue {
         self.program.clone()
+    }
+
+    /// The moves of indices `from..to`.
+    #[wasm_bindgen(unchecked_return_type = "Move[]")]
+    pub fn moves(&self, from: u32, to: u32) -> Result<JsValue, JsValue> {
+        let (from, to) = (from as usize, to as usize);
+        if from > to || to > self.moves.len() {
+            return Err(to_js_error(&Error::field(
+                "range",
+                format!("move indices {from}..{to} are outside 0..{}", self.moves.len()),
+            )));
+        }
+        Ok(to_js(&self.moves[from..to]))
+    }
+
+    /// Index of the move that took step index `k` (`k` below the steps).
+    #[wasm_bindgen(js_name = moveOfStep)]
+    pub fn move_of_step(&self, k: u32) -> Option<u32> {
+        crate::gcode::program::move_of_step(&self.moves, k as u64).map(|i| i as u32)
+    }
+
+    /// Index of the move programmed on a 1-based source line, if it moved.
+    #[wasm_bindgen(js_name = moveAtLine)]
+    pub fn move_at_line(&self, line: u32) -> Option<u32> {
+        crate::gcode::program::move_at_line(&self.moves, line).map(|i| i as u32)
+    }
+
+    /// The step index where the machine is when `line` starts.
+    #[wasm_bindgen(js_name = pointBeforeLine)]
+    pub fn point_before_line(&self, line: u32) -> u32 {
+        let k = crate::gcode::program::first_step_from_line(&self.moves, line).unwrap_or(self.steps);
+        // At most MAX_STEPS_LIMIT (10^9) steps: a u32, as every step index here.
+        u32::try_from(k).expect("at most 10^9 steps")
     }
 
     /// The instant of each step index in `from..to`, seconds from the

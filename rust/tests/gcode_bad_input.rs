@@ -34,7 +34,7 @@ fn a_code_number_is_never_another_code() {
     // 800 steps; it is a G code voxpath does not model.
     // It sets no motion mode, so its X is refused.
     let p = program("G2147483649 X10 Y5 F600\n", 80.0);
-    assert_eq!((p.info.steps, p.info.moves.len()), (0, 0));
+    assert_eq!((p.info.steps, p.moves.len()), (0, 0));
     assert_eq!(
         (p.info.errors[0].column, p.info.errors[0].message.as_str()),
         (
@@ -86,7 +86,7 @@ fn a_huge_radius_is_an_error_naming_r() {
     // A large radius that does fit is a correct, finite arc.
     let p = program("G2 X10 Y0 R100000 F100\n", 10.0);
     assert_eq!(p.info.errors, []);
-    let arc = p.info.moves[0].arc.as_ref().unwrap();
+    let arc = p.moves[0].arc.as_ref().unwrap();
     assert!(arc.center_mm.iter().all(|c| c.is_finite()) && arc.sweep_deg.is_finite());
 }
 
@@ -121,7 +121,7 @@ fn lone_cr_ends_a_line() {
         let p = program(source, 10.0);
         assert_eq!(p.info.errors, []);
         assert_eq!(p.info.lines, 3, "{source:?}");
-        let lines: Vec<u32> = p.info.moves.iter().map(|m| m.line).collect();
+        let lines: Vec<u32> = p.moves.iter().map(|m| m.line).collect();
         assert_eq!(lines, [1, 2, 3], "{source:?}");
         assert_eq!(p.info.steps, 30);
     }

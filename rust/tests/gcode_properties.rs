@@ -34,8 +34,8 @@ proptest! {
         )).unwrap();
         let p = run(&source, settings);
         prop_assert_eq!(&p.info.errors, &vec![]);
-        prop_assert_eq!(p.info.moves.len(), targets.len());
-        for (m, want) in p.info.moves.iter().zip(&expected) {
+        prop_assert_eq!(p.moves.len(), targets.len());
+        for (m, want) in p.moves.iter().zip(&expected) {
             prop_assert_eq!(m.to_steps, *want);
             // Where the trace really is after the move's last step.
             prop_assert_eq!(p.trace.point(m.first_step + m.steps), Point::new(want));

@@ -324,7 +324,10 @@ pub struct ProgramInfo {
     pub steps_per_mm: [f64; MACHINE_AXES],
     pub line_algorithm: &'static str,
     pub arc_algorithm: &'static str,
-    pub moves: Vec<Move>,
+    /// How many moves ran; each is read on demand ([`Program::moves`], and
+    /// in the JS API `move(i)` and `movesInRange(from, to)`), so a long
+    /// program's record stays small.
+    pub move_count: usize,
     /// How long the program takes on the planned profile, seconds.
     pub duration_seconds: f64,
     /// Pulses per axis (x, y, z) over the whole program.
@@ -343,8 +346,32 @@ pub struct ProgramInfo {
 pub struct Program {
     pub trace: Trace,
     pub info: ProgramInfo,
+    /// Every move, in order (`info.move_count` of them).
+    pub moves: Vec<Move>,
     /// When every step happens (computed on demand).
     pub timeline: Timeline,
+}
+
+/// Index of the move that took step index `k` among `moves` (in step
+/// order), or None past their last step.
+pub fn move_of_step(moves: &[Move], k: u64) -> Option<usize> {
+    let index = moves.partition_point(|m| m.first_step + m.steps <= k);
+    (index < moves.len()).then_some(index)
+}
+
+/// Index of the move programmed on a 1-based source line among `moves` (in
+/// line order, at most one per line), if that line moved.
+pub fn move_at_line(moves: &[Move], line: u32) -> Option<usize> {
+    let index = moves.partition_point(|m| m.line < line);
+    (moves.get(index)?.line == line).then_some(index)
+}
+
+/// The step index where the machine is when `line` starts (every move of an
+/// earlier line done), or None when no move comes at or after it (then the
+/// program's end).
+pub fn first_step_from_line(moves: &[Move], line: u32) -> Option<u64> {
+    let index = moves.partition_point(|m| m.line < line);
+    moves.get(index).map(|m| m.first_step)
 }
 
 /// Runs a program a slice of lines at a time (see [`Runner::advance`]).
@@ -844,7 +871,7 @@ impl Runner {
             steps_per_mm: self.settings.machine.steps_per_mm(),
             line_algorithm: self.settings.line_algorithm,
             arc_algorithm: self.settings.arc_algorithm,
-            moves: self.moves,
+            move_count: self.moves.len(),
             duration_seconds: timeline.duration_seconds(),
             pulses: trace.pulses_by_axis(),
             warnings: self.warnings,
@@ -855,6 +882,7 @@ impl Runner {
         Program {
             trace,
             info,
+            moves: self.moves,
             timeline,
         }
     }
