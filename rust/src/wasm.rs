@@ -340,9 +340,23 @@ impl GcodeRun {
     }
 
     /// Runs up to `max_lines` more lines; returns how far the run has got.
+    /// Throws, saying how far it got and what to change, when the program
+    /// does not fit in memory (`gcode::Runner::advance`): the run is then
+    /// over, and can still be freed.
     #[wasm_bindgen(unchecked_return_type = "Progress")]
-    pub fn advance(&mut self, max_lines: u32) -> JsValue {
-        to_js(&self.0.advance(max_lines))
+    pub fn advance(&mut self, max_lines: u32) -> Result<JsValue, JsValue> {
+        let progress = self.0.advance(max_lines);
+        match self.0.out_of_memory() {
+            Some(error) => Err(to_js_error(error)),
+            None => Ok(to_js(&progress)),
+        }
+    }
+
+    /// Stops the run once the core holds more than `bytes` of heap, instead
+    /// of `memory::HEAP_BUDGET_BYTES` (3 GiB): for tests of that stop.
+    #[wasm_bindgen(js_name = setHeapBudget)]
+    pub fn set_heap_budget(&mut self, bytes: f64) {
+        self.0.set_heap_budget(bytes as usize);
     }
 
     /// The program as run so far (all of it once `done`).

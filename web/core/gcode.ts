@@ -238,12 +238,14 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
   const core = await loadCore();
   const run = callCore(() => new core.GcodeRun(source, settingsJson));
   let finished = false;
+  let linesDone = 0;
   try {
     let lines = 256;
     for (;;) {
       options.signal?.throwIfAborted();
       const started = performance.now();
-      const progress = run.advance(lines);
+      const progress = callCore(() => trapsAsErrors(() => run.advance(lines), linesDone));
+      linesDone = progress.linesDone;
       const elapsed = performance.now() - started;
       options.onProgress?.(progress);
       if (progress.done) break;
@@ -262,7 +264,29 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
       throw error;
     }
   } finally {
-    // finish() consumes the run; free it only when it was not reached.
-    if (!finished) run.free();
+    // finish() consumes the run; free it only when it was not reached. A
+    // run that trapped stays borrowed and cannot be freed: that must not
+    // hide the error that stopped it.
+    if (!finished) {
+      try {
+        run.free();
+      } catch {
+        // The instance's memory is lost with the trap; the error already thrown says so.
+      }
+    }
+  }
+}
+
+/**
+ * Runs `call`, turning a trap of the core (a WebAssembly.RuntimeError, such
+ * as memory exhausted past the core's own check) into a VoxpathError that
+ * says how far the run got: a caller sees no wasm trap.
+ */
+function trapsAsErrors<T>(call: () => T, linesDone: number): T {
+  try {
+    return call();
+  } catch (error) {
+    if (!(error instanceof WebAssembly.RuntimeError)) throw error;
+    throw argumentError('program', `the core failed (${error.message}) after ${linesDone} lines; run the program in parts of fewer lines, or lower stepsPerMm`);
   }
 }

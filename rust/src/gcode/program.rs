@@ -38,6 +38,7 @@ use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Limit, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::machine::{MACHINE_AXES, Machine};
+use crate::memory::{HEAP_BUDGET_BYTES, held_bytes};
 use crate::planner::{self, Limits, Planner, Timing};
 use crate::request::{MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, too_long_advice};
 use crate::text::split_line;
@@ -396,6 +397,10 @@ pub struct Runner {
     warnings_omitted: u64,
     errors: Vec<Diagnostic>,
     stopped_at_line: Option<u32>,
+    /// Heap the core may hold (all of it, this run's and others') before
+    /// the run stops; see [`crate::memory`].
+    heap_budget_bytes: usize,
+    out_of_memory: Option<Error>,
 }
 
 /// Lines of a program as an editor counts them: a final line break ends the
@@ -442,7 +447,15 @@ impl Runner {
             warnings_omitted: 0,
             errors: Vec::new(),
             stopped_at_line: None,
+            heap_budget_bytes: HEAP_BUDGET_BYTES,
+            out_of_memory: None,
         }
+    }
+
+    /// Stops the run once the core holds more than `bytes` of heap (the
+    /// default is [`HEAP_BUDGET_BYTES`]; tests set less).
+    pub fn set_heap_budget(&mut self, bytes: usize) {
+        self.heap_budget_bytes = bytes;
     }
 
     pub fn progress(&self) -> Progress {
@@ -456,10 +469,19 @@ impl Runner {
     }
 
     /// Reads and runs up to `max_lines` more lines. A slice takes time in
-    /// proportion to its lines and to the steps of their moves.
+    /// proportion to its lines and to the steps of their moves. When the
+    /// core holds more heap than the run may, the run stops where it is
+    /// (done, the lines after it not even read) with the error
+    /// [`Runner::out_of_memory`] returns, also the program's last error.
     pub fn advance(&mut self, max_lines: u32) -> Progress {
         for _ in 0..max_lines {
             if self.lines_done == self.lines {
+                break;
+            }
+            if let Err(error) = self.check_memory() {
+                self.stop(Diagnostic::from_error(error.clone()));
+                self.out_of_memory = Some(error);
+                self.lines_done = self.lines;
                 break;
             }
             let rest = &self.source[self.offset..];
@@ -472,6 +494,35 @@ impl Runner {
             self.block = block;
         }
         self.progress()
+    }
+
+    /// Why the run stopped for memory, if it did (see [`Runner::advance`]).
+    pub fn out_of_memory(&self) -> Option<&Error> {
+        self.out_of_memory.as_ref()
+    }
+
+    /// An error once more heap is held than the run may hold, placed at the
+    /// line it would run next.
+    fn check_memory(&self) -> Result<(), Error> {
+        let held = held_bytes();
+        if held <= self.heap_budget_bytes {
+            return Ok(());
+        }
+        let mb = |bytes: usize| bytes.div_ceil(1 << 20);
+        Err(Error::at(
+            self.lines_done + 1,
+            1,
+            format!(
+                "the program does not fit in memory: after {} of its {} lines ({} moves, {} steps) the core holds {} MB, past the {} MB a run may hold; run it in parts of fewer lines (this far is about {} lines), or lower stepsPerMm, or free the programs and traces held before it",
+                self.lines_done,
+                self.lines,
+                self.moves.len(),
+                self.steps,
+                mb(held),
+                mb(self.heap_budget_bytes),
+                self.lines_done
+            ),
+        ))
     }
 
     /// Runs every line left.
