@@ -364,7 +364,7 @@ impl GcodeRun {
         let program = self.0.finish();
         GcodeResult {
             program: to_js(&program.info),
-            moves: program.moves,
+            moves: program.records,
             steps: program.trace.steps(),
             steps_per_mm: program.info.steps_per_mm,
             trace: Some(program.trace),
@@ -377,7 +377,7 @@ impl GcodeRun {
 #[wasm_bindgen]
 pub struct GcodeResult {
     program: JsValue,
-    moves: Vec<crate::gcode::Move>,
+    moves: crate::gcode::program::MoveRecords,
     steps: u64,
     steps_per_mm: [f64; crate::machine::MACHINE_AXES],
     trace: Option<Trace>,
@@ -403,25 +403,27 @@ impl GcodeResult {
                 format!("move indices {from}..{to} are outside 0..{}", self.moves.len()),
             )));
         }
-        Ok(to_js(&self.moves[from..to]))
+        let moves: Vec<crate::gcode::Move> =
+            (from..to).map(|i| self.moves.get(i, &self.timeline)).collect();
+        Ok(to_js(&moves))
     }
 
     /// Index of the move that took step index `k` (`k` below the steps).
     #[wasm_bindgen(js_name = moveOfStep)]
     pub fn move_of_step(&self, k: u32) -> Option<u32> {
-        crate::gcode::program::move_of_step(&self.moves, k as u64).map(|i| i as u32)
+        self.moves.move_of_step(k as u64).map(|i| i as u32)
     }
 
     /// Index of the move programmed on a 1-based source line, if it moved.
     #[wasm_bindgen(js_name = moveAtLine)]
     pub fn move_at_line(&self, line: u32) -> Option<u32> {
-        crate::gcode::program::move_at_line(&self.moves, line).map(|i| i as u32)
+        self.moves.move_at_line(line).map(|i| i as u32)
     }
 
     /// The step index where the machine is when `line` starts.
     #[wasm_bindgen(js_name = pointBeforeLine)]
     pub fn point_before_line(&self, line: u32) -> u32 {
-        let k = crate::gcode::program::first_step_from_line(&self.moves, line).unwrap_or(self.steps);
+        let k = self.moves.first_step_from_line(line).unwrap_or(self.steps);
         // At most MAX_STEPS_LIMIT (10^9) steps: a u32, as every step index here.
         u32::try_from(k).expect("at most 10^9 steps")
     }

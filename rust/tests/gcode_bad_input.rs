@@ -35,7 +35,7 @@ fn a_code_number_is_never_another_code() {
     // 800 steps; it is a G code voxpath does not model.
     // It sets no motion mode, so its X is refused.
     let p = program("G2147483649 X10 Y5 F600\n", 80.0);
-    assert_eq!((p.info.steps, p.moves.len()), (0, 0));
+    assert_eq!((p.info.steps, p.moves().len()), (0, 0));
     assert_eq!(
         (p.info.errors[0].column, p.info.errors[0].message.as_str()),
         (
@@ -87,7 +87,7 @@ fn a_huge_radius_is_an_error_naming_r() {
     // A large radius that does fit is a correct, finite arc.
     let p = program("G2 X10 Y0 R100000 F100\n", 10.0);
     assert_eq!(p.info.errors, []);
-    let arc = p.moves[0].arc.as_ref().unwrap();
+    let arc = p.moves()[0].arc.clone().unwrap();
     assert!(arc.center_mm.iter().all(|c| c.is_finite()) && arc.sweep_deg.is_finite());
 }
 
@@ -122,7 +122,7 @@ fn lone_cr_ends_a_line() {
         let p = program(source, 10.0);
         assert_eq!(p.info.errors, []);
         assert_eq!(p.info.lines, 3, "{source:?}");
-        let lines: Vec<u32> = p.moves.iter().map(|m| m.line).collect();
+        let lines: Vec<u32> = p.moves().iter().map(|m| m.line).collect();
         assert_eq!(lines, [1, 2, 3], "{source:?}");
         assert_eq!(p.info.steps, 30);
     }
@@ -236,7 +236,7 @@ fn a_program_that_does_not_fit_in_memory_stops_cleanly_saying_how_far_it_got() {
     let error = runner.out_of_memory().expect("the run stopped for memory").clone();
     let p = runner.finish();
     // The lines before the stop ran, one move each; the stop is the last error, at the next line.
-    let ran = p.moves.len() as u32;
+    let ran = p.moves().len() as u32;
     assert!(ran > 0 && ran < lines, "{ran} moves");
     assert_eq!(p.info.stopped_at_line, Some(ran + 1));
     let last = p.info.errors.last().unwrap();
@@ -253,6 +253,6 @@ fn a_program_that_does_not_fit_in_memory_stops_cleanly_saying_how_far_it_got() {
     // What ran is a whole trace: it ends where the last move ended.
     assert_eq!(
         p.trace.point(p.info.steps).coords(),
-        p.moves.last().unwrap().to_steps
+        p.moves().last().unwrap().to_steps
     );
 }
