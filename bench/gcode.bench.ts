@@ -51,7 +51,7 @@ const COLUMNS = {
   lines: 'lines/s',
   steps: 'steps/s',
   peerLines: 'gcode-toolpath lines/s',
-  finishPerMove: 'finish µs/move',
+  finishMoves: 'finish moves/s',
   stepTimes: 'stepTimes steps/s',
 } as const;
 
@@ -116,7 +116,7 @@ export default async function benchGcode(): Promise<BenchGroup> {
       [COLUMNS.lines]: GCODE_BENCH_LINES / median(ours),
       [COLUMNS.steps]: steps / median(ours),
       [COLUMNS.peerLines]: GCODE_BENCH_LINES / median(peer),
-      [COLUMNS.finishPerMove]: (median(finish) * 1e6) / moves,
+      [COLUMNS.finishMoves]: moves / median(finish),
     },
     ratios: { 'voxpath / gcode-toolpath': median(peer) / median(ours) },
   });
@@ -140,7 +140,7 @@ export default async function benchGcode(): Promise<BenchGroup> {
       rates: {
         [COLUMNS.lines]: p.lines / median(seconds),
         [COLUMNS.steps]: p.steps / median(seconds),
-        [COLUMNS.finishPerMove]: (median(finishSeconds) * 1e6) / p.moveCount,
+        [COLUMNS.finishMoves]: p.moveCount / median(finishSeconds),
         [COLUMNS.stepTimes]: p.steps / median(stepTimeSeconds),
       },
       ratios: { 'finish / run': median(finishSeconds) / median(seconds) },
@@ -153,7 +153,7 @@ export default async function benchGcode(): Promise<BenchGroup> {
       `A generated ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program through runGcode (wasm): parse, interpret, step every move (lines by regions), build the trace; the moves stay in the core, read on demand.`,
       `${COLUMNS.lines} and ${COLUMNS.steps}: source lines and steps over the seconds of the whole run, as a worker sees it (median of ${ROUNDS} rounds).`,
       `${COLUMNS.peerLines}: cncjs's gcode-toolpath 3.0.0 (parse, modal state, one callback per line or arc) on the same text, rounds alternating with runGcode's; 'voxpath / gcode-toolpath' is its time over runGcode's (issue 13's goal: 5x).`,
-      `${COLUMNS.finishPerMove}: the run's finish (after the last line ran), per move: Grbl 1.1-style look-ahead planning of every block (the planner's cost), each move's timing, the record, the trace; 'finish / run' is its share of the whole run.`,
+      `${COLUMNS.finishMoves}: moves over the seconds of the run's finish (after the last line ran): Grbl 1.1-style look-ahead planning of every block, the step-rate checks, the record, the trace. The planner's cost per move, so measured: ${rows.map((r) => `${(1e6 / r.rates[COLUMNS.finishMoves]!).toFixed(2)} µs`).join(', ')} (rows in order); 'finish / run' is its share of the whole run.`,
       `${COLUMNS.stepTimes}: program.stepTimes(0, steps), every step's instant from the plan in closed form (median of ${ROUNDS} rounds).`,
     ],
     rows,
