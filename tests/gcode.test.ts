@@ -43,7 +43,7 @@ describe('runGcode', () => {
   });
 
   it('stops a run that does not fit in memory with a VoxpathError saying how far it got, and frees it', async () => {
-    // The core's heap budget is 3 GiB (issue 15 item 6); a run told to hold
+    // The core's heap budget is 2 GiB (issue 15 item 6); a run told to hold
     // none stops before its first line, as a long one stops where the budget ends.
     const core = await loadCore();
     const run = new core.GcodeRun(SQUARE, encodeRequest({ stepsPerMm: 2 }));

@@ -7,10 +7,12 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// What a G-code run may see held before it stops: 3 GiB, leaving a quarter
-/// of wasm32's 4 GiB for the last allocations to grow (a vector doubles) and
-/// for what a caller reads of the result.
-pub const HEAP_BUDGET_BYTES: usize = 3 << 30;
+/// What a G-code run may see held before it stops: 2 GiB, half of wasm32's
+/// 4 GiB. The rest is for the allocator's slack and the run's vectors, which
+/// double as they grow (the trace's segments and steps, the move records):
+/// one doubling of a vector holding a fifth of the heap needs 40% more for
+/// a moment, and what a caller then reads of the result needs room too.
+pub const HEAP_BUDGET_BYTES: usize = 2 << 30;
 
 static HELD_BYTES: AtomicUsize = AtomicUsize::new(0);
 

@@ -353,7 +353,7 @@ impl GcodeRun {
     }
 
     /// Stops the run once the core holds more than `bytes` of heap, instead
-    /// of `memory::HEAP_BUDGET_BYTES` (3 GiB): for tests of that stop.
+    /// of `memory::HEAP_BUDGET_BYTES` (2 GiB): for tests of that stop.
     #[wasm_bindgen(js_name = setHeapBudget)]
     pub fn set_heap_budget(&mut self, bytes: f64) {
         self.0.set_heap_budget(bytes as usize);
