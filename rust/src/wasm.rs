@@ -414,6 +414,18 @@ impl GcodeResult {
         self.moves.move_of_step(k as u64).map(|i| i as u32)
     }
 
+    /// The 1-based source line of each step index in `from..to`.
+    #[wasm_bindgen(js_name = lineByStep)]
+    pub fn line_by_step(&self, from: u32, to: u32) -> Result<Vec<u32>, JsValue> {
+        if from > to || to as u64 > self.steps {
+            return Err(to_js_error(&Error::field(
+                "range",
+                format!("step indices {from}..{to} are outside 0..{}", self.steps),
+            )));
+        }
+        Ok(self.moves.line_by_step(from as u64, to as u64))
+    }
+
     /// Index of the move programmed on a 1-based source line, if it moved.
     #[wasm_bindgen(js_name = moveAtLine)]
     pub fn move_at_line(&self, line: u32) -> Option<u32> {

@@ -125,6 +125,16 @@ proptest! {
             }
         }
         prop_assert_eq!(next_step, p.info.steps);
+        let by_scan: Vec<u32> = moves
+            .iter()
+            .flat_map(|m| std::iter::repeat_n(m.line, m.steps as usize))
+            .collect();
+        prop_assert_eq!(p.records.line_by_step(0, p.info.steps), by_scan.clone());
+        let (from, to) = (p.info.steps / 3, p.info.steps * 2 / 3);
+        prop_assert_eq!(
+            p.records.line_by_step(from, to),
+            by_scan[from as usize..to as usize].to_vec()
+        );
         prop_assert_eq!(p.records.move_of_step(p.info.steps), None);
         prop_assert_eq!(p.records.move_at_line(1), None);
     }

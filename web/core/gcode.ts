@@ -103,18 +103,9 @@ export class GcodeProgram {
 
   /** Source lines of step indices from..to: lineByStep[i] produced step from + i. */
   lineByStepInRange(from: number, to: number): Uint32Array {
+    const core = this.#core;
     [from, to] = indexRange(from, to, this.steps, 'step index');
-    const out = new Uint32Array(to - from);
-    if (from === to) return out;
-    const first = this.moveOfStep(from);
-    const moves = this.movesInRange(first, this.moveOfStep(to - 1) + 1);
-    for (let k = from, i = 0; k < to; i++) {
-      const m = moves[i]!;
-      const end = Math.min(to, m.firstStep + m.steps);
-      out.fill(m.line, k - from, end - from);
-      k = Math.max(k, end);
-    }
-    return out;
+    return callCore(() => core.lineByStep(from, to));
   }
 
   /** The move programmed on a 1-based source line, if that line moved. */

@@ -597,6 +597,26 @@ impl MoveRecords {
         self.records.get(index).map(|m| m.first_step)
     }
 
+    /// The 1-based source line of each step index in `from..to` (below the
+    /// moves' last step), read from the records alone.
+    pub fn line_by_step(&self, from: u64, to: u64) -> Vec<u32> {
+        let mut out = Vec::with_capacity(to.saturating_sub(from) as usize);
+        let Some(first) = self.move_of_step(from) else {
+            return out;
+        };
+        for r in &self.records[first..] {
+            let end = to.min(r.first_step + r.steps);
+            let k = from + out.len() as u64;
+            if end > k {
+                out.resize(out.len() + (end - k) as usize, r.line);
+            }
+            if end == to {
+                break;
+            }
+        }
+        out
+    }
+
     /// (first step, steps) of move `index`.
     fn steps_of(&self, index: usize) -> (u64, u64) {
         let r = &self.records[index];
