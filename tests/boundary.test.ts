@@ -141,8 +141,10 @@ describe('the generated boundary types', () => {
     const result = run.finish();
     try {
       const record = result.program();
-      expect(record.moves.some((m) => m.arc !== null && m.kind === 'helix') && record.warnings.length > 0 && record.errors.length > 0).toBe(true);
+      const moves = result.moves(0, record.moveCount);
+      expect(moves.some((m) => m.arc !== null && m.kind === 'helix') && record.warnings.length > 0 && record.errors.length > 0).toBe(true);
       expectFits(record, 'ProgramInfo');
+      for (const m of moves) expectFits(m, 'Move');
       const handle = result.takeTrace();
       try {
         const steps = handle.summary().steps;

@@ -5,6 +5,9 @@ import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
 import type { GcodeProgress } from '../web/core/index.js';
+import { callCore } from '../web/core/errors.js';
+import { encodeRequest } from '../web/core/request.js';
+import { loadCore } from '../web/core/wasm.js';
 import { rejection, voxpath } from './helpers.js';
 
 const SAMPLES = fileURLToPath(new URL('../public/samples/', import.meta.url));
@@ -37,6 +40,38 @@ describe('runGcode', () => {
     expect(p.trace.segments[2]!.note).toMatch(/^Line 5, G1: /);
     expect(() => p.lineOfStep(8)).toThrow(VoxpathError);
     p.free();
+  });
+
+  it('stops a run that does not fit in memory with a VoxpathError saying how far it got, and frees it', async () => {
+    // The core's heap budget is 2 GiB (issue 15 item 6); a run told to hold
+    // none stops before its first line, as a long one stops where the budget ends.
+    const core = await loadCore();
+    const run = new core.GcodeRun(SQUARE, encodeRequest({ stepsPerMm: 2 }));
+    run.setHeapBudget(0);
+    let error: unknown;
+    try {
+      callCore(() => run.advance(100));
+    } catch (e) {
+      error = e;
+    }
+    expect(error).toBeInstanceOf(VoxpathError);
+    expect(error).toMatchObject({ line: 1, column: 1 });
+    expect((error as VoxpathError).detail).toMatch(/^the program does not fit in memory: after 0 of its 6 lines \(0 moves, 0 steps\) the core holds \d+ MB, past the 0 MB a run may hold; run it in parts of fewer lines/);
+    // The run is not left borrowed: it frees.
+    expect(() => run.free()).not.toThrow();
+  });
+
+  it('reads the moves from the core on demand, by index or by range', async () => {
+    const p = await runGcode(SQUARE, { stepsPerMm: 2 });
+    expect(p.moveCount).toBe(4);
+    expect(p.movesInRange(1, 3)).toEqual(p.moves.slice(1, 3));
+    expect(p.move(3)).toEqual(p.moves[3]);
+    expect(p.move(3).note).toMatch(/^Line 6, G1: \(0, 1, 0\) -> \(0, 0, 0\) mm/);
+    expect(p.movesInRange(2, 2)).toEqual([]);
+    expect(() => p.move(4)).toThrow(expect.objectContaining({ field: 'i' }));
+    expect(() => p.movesInRange(0, 5)).toThrow(VoxpathError);
+    p.free();
+    expect(() => p.move(0)).toThrow(expect.objectContaining({ field: 'program' }));
   });
 
   it('skips moves of no steps when mapping steps to lines', async () => {

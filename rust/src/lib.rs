@@ -25,6 +25,7 @@ pub mod grid;
 pub mod ideal;
 pub mod line;
 pub mod machine;
+pub mod memory;
 pub mod metrics;
 pub mod planner;
 pub mod points;

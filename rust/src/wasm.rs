@@ -30,7 +30,7 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 /// A boundary value as the plain object its Tsify type describes.
-fn to_js<T: Serialize>(value: &T) -> JsValue {
+fn to_js<T: Serialize + ?Sized>(value: &T) -> JsValue {
     let json = serde_json::to_string(value).expect("boundary types serialize");
     js_sys::JSON::parse(&json).expect("serde_json writes valid JSON")
 }
@@ -349,9 +349,23 @@ impl GcodeRun {
     }
 
     /// Runs up to `max_lines` more lines; returns how far the run has got.
+    /// Throws, saying how far it got and what to change, when the program
+    /// does not fit in memory (`gcode::Runner::advance`): the run is then
+    /// over, and can still be freed.
     #[wasm_bindgen(unchecked_return_type = "Progress")]
-    pub fn advance(&mut self, max_lines: u32) -> JsValue {
-        to_js(&self.0.advance(max_lines))
+    pub fn advance(&mut self, max_lines: u32) -> Result<JsValue, JsValue> {
+        let progress = self.0.advance(max_lines);
+        match self.0.out_of_memory() {
+            Some(error) => Err(to_js_error(error)),
+            None => Ok(to_js(&progress)),
+        }
+    }
+
+    /// Stops the run once the core holds more than `bytes` of heap, instead
+    /// of `memory::HEAP_BUDGET_BYTES` (2 GiB): for tests of that stop.
+    #[wasm_bindgen(js_name = setHeapBudget)]
+    pub fn set_heap_budget(&mut self, bytes: f64) {
+        self.0.set_heap_budget(bytes as usize);
     }
 
     /// The program as run so far (all of it once `done`).
@@ -359,6 +373,7 @@ impl GcodeRun {
         let program = self.0.finish();
         GcodeResult {
             program: to_js(&program.info),
+            moves: program.records,
             steps: program.trace.steps(),
             steps_per_mm: program.info.steps_per_mm,
             trace: Some(program.trace),
@@ -371,6 +386,7 @@ impl GcodeRun {
 #[wasm_bindgen]
 pub struct GcodeResult {
     program: JsValue,
+    moves: crate::gcode::program::MoveRecords,
     steps: u64,
     steps_per_mm: [f64; crate::machine::MACHINE_AXES],
     trace: Option<Trace>,
@@ -379,10 +395,58 @@ pub struct GcodeResult {
 
 #[wasm_bindgen]
 impl GcodeResult {
-    /// Moves, pulses, warnings and errors (see `gcode::ProgramInfo`).
+    /// Pulses, warnings, errors and the number of moves (see
+    /// `gcode::ProgramInfo`); the moves themselves are read by range.
     #[wasm_bindgen(unchecked_return_type = "ProgramInfo")]
     pub fn program(&self) -> JsValue {
         self.program.clone()
+    }
+
+    /// The moves of indices `from..to`.
+    #[wasm_bindgen(unchecked_return_type = "Move[]")]
+    pub fn moves(&self, from: u32, to: u32) -> Result<JsValue, JsValue> {
+        let (from, to) = (from as usize, to as usize);
+        if from > to || to > self.moves.len() {
+            return Err(to_js_error(&Error::field(
+                "range",
+                format!("move indices {from}..{to} are outside 0..{}", self.moves.len()),
+            )));
+        }
+        let moves: Vec<crate::gcode::Move> =
+            (from..to).map(|i| self.moves.get(i, &self.timeline)).collect();
+        Ok(to_js(&moves))
+    }
+
+    /// Index of the move that took step index `k` (`k` below the steps).
+    #[wasm_bindgen(js_name = moveOfStep)]
+    pub fn move_of_step(&self, k: u32) -> Option<u32> {
+        self.moves.move_of_step(k as u64).map(|i| i as u32)
+    }
+
+    /// The 1-based source line of each step index in `from..to`.
+    #[wasm_bindgen(js_name = lineByStep)]
+    pub fn line_by_step(&self, from: u32, to: u32) -> Result<Vec<u32>, JsValue> {
+        if from > to || to as u64 > self.steps {
+            return Err(to_js_error(&Error::field(
+                "range",
+                format!("step indices {from}..{to} are outside 0..{}", self.steps),
+            )));
+        }
+        Ok(self.moves.line_by_step(from as u64, to as u64))
+    }
+
+    /// Index of the move programmed on a 1-based source line, if it moved.
+    #[wasm_bindgen(js_name = moveAtLine)]
+    pub fn move_at_line(&self, line: u32) -> Option<u32> {
+        self.moves.move_at_line(line).map(|i| i as u32)
+    }
+
+    /// The step index where the machine is when `line` starts.
+    #[wasm_bindgen(js_name = pointBeforeLine)]
+    pub fn point_before_line(&self, line: u32) -> u32 {
+        let k = self.moves.first_step_from_line(line).unwrap_or(self.steps);
+        // At most MAX_STEPS_LIMIT (10^9) steps: a u32, as every step index here.
+        u32::try_from(k).expect("at most 10^9 steps")
     }
 
     /// The instant of each step index in `from..to`, seconds from the

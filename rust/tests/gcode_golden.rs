@@ -51,8 +51,7 @@ fn square() {
     assert_eq!(p.info.pulses, [3200, 3200, 0]);
     assert_eq!(end(&p), Point::new(&[0, 0, 0]));
     let lines: Vec<(u32, u64, u64)> = p
-        .info
-        .moves
+        .moves()
         .iter()
         .map(|m| (m.line, m.first_step, m.steps))
         .collect();
@@ -65,7 +64,7 @@ fn square() {
             (6, 4800, 1600)
         ]
     );
-    assert_eq!(p.info.moves[1].to_steps, [1600, 1600, 0]);
+    assert_eq!(p.moves()[1].to_steps, [1600, 1600, 0]);
 }
 
 #[test]
@@ -73,20 +72,20 @@ fn full_circle_from_ijk_is_a_full_turn() {
     // End = start with I J is a full circle (a tool that takes the sweep as
     // end angle - start angle draws nothing). r = 10 mm = 100 steps: 4r.
     let p = at10("G0 X10\nG2 I-10 J0 F100\n");
-    let circle = &p.info.moves[1];
+    let circle = &p.moves()[1];
     assert_eq!((circle.kind, circle.algorithm), ("arc", "circle"));
     assert_eq!(pulses(&p, circle), [400, 400, 0]);
     assert_eq!(end(&p), Point::new(&[100, 0, 0]));
     // P3: three turns, 12r each.
     let p = at10("G0 X10\nG2 I-10 J0 P3 F100\n");
-    assert_eq!(pulses(&p, &p.info.moves[1]), [1200, 1200, 0]);
-    assert_eq!(p.info.moves[1].arc.as_ref().unwrap().extra_turns, 2);
+    assert_eq!(pulses(&p, &p.moves()[1]), [1200, 1200, 0]);
+    assert_eq!(p.moves()[1].arc.as_ref().unwrap().extra_turns, 2);
     // As chords the corners are cut: at most 4r, ending exactly at the start.
     let p = program(
         "G0 X10\nG2 I-10 J0 F100\n",
         r#"{"stepsPerMm": 10, "arcAlgorithm": "arc-segments"}"#,
     );
-    let chords = pulses(&p, &p.info.moves[1]);
+    let chords = pulses(&p, &p.moves()[1]);
     assert!(
         chords[0] <= 400 && chords[1] <= 400 && chords[0] > 300,
         "{chords:?}"
@@ -102,14 +101,14 @@ fn r_over_180_degrees_takes_the_long_way() {
     // 0° (x = 9) to -36.9°. In steps: x 0 -> -10 -> 90 -> 80 = 120 pulses,
     // y 0 -> 80 -> 0 = 160.
     let p = at10("G2 X8 Y0 R-5 F100\n");
-    let m = &p.info.moves[0];
+    let m = &p.moves()[0];
     assert_eq!(m.arc.as_ref().unwrap().center_steps, Some([40, 30, 0]));
     assert_eq!(pulses(&p, m), [120, 160, 0]);
     assert_eq!(end(&p), Point::new(&[80, 0, 0]));
     // R+5: center (4, -3), the short arc over the top at y = -3 + 5 = 2:
     // x 0 -> 80, y 0 -> 20 -> 0.
     let p = at10("G2 X8 Y0 R5 F100\n");
-    assert_eq!(pulses(&p, &p.info.moves[0]), [80, 40, 0]);
+    assert_eq!(pulses(&p, &p.moves()[0]), [80, 40, 0]);
 }
 
 #[test]
@@ -119,7 +118,7 @@ fn g18_clockwise_is_seen_from_plus_y() {
     // is a quarter turn through x > 0, z > 0: 100 pulses on each. Taking
     // (x, z) as the frame instead goes the other way round: 270°, 300 each.
     let p = at10("G0 X10\nG18 G2 X0 Z10 I-10 K0 F100\n");
-    let m = &p.info.moves[1];
+    let m = &p.moves()[1];
     assert_eq!(pulses(&p, m), [100, 0, 100]);
     assert_eq!(end(&p), Point::new(&[0, 0, 100]));
     let points = p
@@ -136,7 +135,7 @@ fn g91_arcs_are_relative_to_where_each_starts() {
     assert_eq!(p.info.pulses, [200, 200, 0]);
     assert_eq!(end(&p), Point::new(&[200, -200, 0]));
     assert_eq!(
-        p.info.moves[1].arc.as_ref().unwrap().center_steps,
+        p.moves()[1].arc.as_ref().unwrap().center_steps,
         Some([100, -200, 0])
     );
 }
@@ -148,7 +147,7 @@ fn arcs_after_g92_use_the_new_origin() {
     // over the top (y = 15): x 100 -> 200, y 100 -> 150 -> 100.
     for center in ["G91.1 G2 X10 Y0 I5 J0", "G90.1 G2 X10 Y0 I5 J0"] {
         let p = at10(&format!("G0 X10 Y10\nG92 X0 Y0\n{center} F100\n"));
-        let m = &p.info.moves[1];
+        let m = &p.moves()[1];
         assert_eq!(
             m.arc.as_ref().unwrap().center_steps,
             Some([150, 100, 0]),
@@ -180,7 +179,7 @@ fn helix_moves_the_normal_axis_during_the_turns() {
             "G0 X10\nG3 X10 Y0 Z-2 I-10 J0 P2 F100\n",
             &format!(r#"{{"stepsPerMm": 10, "arcAlgorithm": "{arcs}"}}"#),
         );
-        let m = &p.info.moves[1];
+        let m = &p.moves()[1];
         assert_eq!((m.kind, m.algorithm), ("helix", "helix"));
         let got = pulses(&p, m);
         assert_eq!(got[2], 20, "{arcs}");
@@ -200,8 +199,8 @@ fn small_incremental_moves_do_not_drift() {
         r#"{"stepsPerMm": 80}"#,
     );
     assert_eq!(end(&p), Point::new(&[800, 0, 0]));
-    assert_eq!(p.info.moves.len(), 1000);
-    assert_eq!(p.info.moves.iter().filter(|m| m.steps == 0).count(), 200);
+    assert_eq!(p.moves().len(), 1000);
+    assert_eq!(p.moves().iter().filter(|m| m.steps == 0).count(), 200);
 }
 
 #[test]
@@ -229,7 +228,7 @@ fn an_arc_shorter_than_a_step_is_not_a_full_circle() {
         "G0 X10\nG3 X9.99999 Y0.004 I-10 J0 F1\n",
         r#"{"stepsPerMm": 80}"#,
     );
-    let m = &p.info.moves[1];
+    let m = &p.moves()[1];
     assert_eq!((m.kind, m.steps), ("arc", 0));
     assert!(m.note.contains("stepped as a straight line"), "{}", m.note);
 }
@@ -247,7 +246,7 @@ fn rounded_ends_get_a_grid_center_within_the_arc_tolerance() {
         r#"{"stepsPerMm": 1}"#,
     );
     assert_eq!(p.info.errors, []);
-    let m = &p.info.moves[1];
+    let m = &p.moves()[1];
     assert_eq!(m.arc.as_ref().unwrap().center_steps, Some([1, -1, 0]));
     assert!(
         m.note.contains("center moved to (1, -1, 0) steps"),
@@ -268,7 +267,7 @@ fn errors_name_line_and_column_and_keep_the_lines_before() {
         "R arc cannot reach its end: the end is 9.0000 mm from the start, more than 2|R| = 8.0000 mm"
     );
     assert_eq!(p.info.stopped_at_line, Some(2));
-    assert_eq!(p.info.moves.len(), 1);
+    assert_eq!(p.moves().len(), 1);
     assert_eq!(end(&p), Point::new(&[80, 0, 0]));
 
     let first = |source: &str| {
@@ -358,7 +357,7 @@ fn decision_columns_of_every_algorithm_pair_have_distinct_names() {
 fn segment_notes_name_the_line_and_the_move() {
     let p = at10("G0 X1\nG1 Y1 F10\nG2 X0 Y2 I-1\n");
     let segments = p.trace.segments();
-    for m in &p.info.moves {
+    for m in &p.moves() {
         for s in &segments[m.first_segment..m.first_segment + m.segments] {
             assert!(
                 s.setup_note
@@ -369,7 +368,7 @@ fn segment_notes_name_the_line_and_the_move() {
         }
     }
     assert!(segments[0].setup_note.contains("a rapid, stepped like G1"));
-    assert_eq!(p.info.moves[0].kind, "rapid");
+    assert_eq!(p.moves()[0].kind, "rapid");
 }
 
 #[test]

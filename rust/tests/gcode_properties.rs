@@ -34,11 +34,108 @@ proptest! {
         )).unwrap();
         let p = run(&source, settings);
         prop_assert_eq!(&p.info.errors, &vec![]);
-        prop_assert_eq!(p.info.moves.len(), targets.len());
-        for (m, want) in p.info.moves.iter().zip(&expected) {
+        prop_assert_eq!(p.moves().len(), targets.len());
+        for (m, want) in p.moves().iter().zip(&expected) {
             prop_assert_eq!(m.to_steps, *want);
             // Where the trace really is after the move's last step.
             prop_assert_eq!(p.trace.point(m.first_step + m.steps), Point::new(want));
         }
+    }
+}
+
+/// One line of a random program: a straight move, an arc by its center or
+/// its radius (helical or not, with extra turns), or a line that does not
+/// move; coordinates in hundredths of a mm.
+fn program_line() -> impl Strategy<Value = String> {
+    let mm = || (-3000i64..=3000).prop_map(|v| format!("{:.2}", v as f64 / 100.0));
+    prop_oneof![
+        (prop::sample::select(vec!["G0", "G1"]), mm(), mm(), mm())
+            .prop_map(|(g, x, y, z)| format!("{g} X{x} Y{y} Z{z} F{}", 300)),
+        (prop::sample::select(vec!["G2", "G3"]), mm(), mm(), mm(), mm(), 0u32..3)
+            .prop_map(|(g, x, y, i, j, p)| format!("{g} X{x} Y{y} I{i} J{j} P{}", p + 1)),
+        (prop::sample::select(vec!["G2", "G3"]), mm(), mm(), mm(), mm())
+            .prop_map(|(g, x, y, z, r)| format!("{g} X{x} Y{y} Z{z} R{r}")),
+        Just("G4 P0.1".to_string()),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// A run keeps each move as a compact record and builds what users
+    /// read from it on demand: the decoded move says what the run did. Its
+    /// steps and segments are where the trace has them, its note is how the
+    /// run's own segment notes begin (they were written from the move as
+    /// it was stepped), its ends are the trace's points, its timing the
+    /// plan's, its lookups agree with a scan.
+    #[test]
+    fn decoded_moves_are_what_the_run_stepped(
+        lines in prop::collection::vec(program_line(), 1..16),
+        steps_per_mm in prop::sample::select(vec![1.0, 3.0, 10.0, 80.0]),
+        arcs in prop::sample::select(voxpath::gcode::program::ARC_ALGORITHMS),
+    ) {
+        let source = format!("G21 G90 G17 F600\n{}\n", lines.join("\n"));
+        let settings = Settings::from_json(&format!(
+            r#"{{"stepsPerMm": {steps_per_mm}, "arcAlgorithm": "{arcs}"}}"#
+        )).unwrap();
+        let p = run(&source, settings);
+        let moves = p.moves();
+        prop_assert_eq!(moves.len(), p.info.move_count);
+        let segments = p.trace.segments();
+        let mut next_step = 0;
+        let mut next_segment = 0;
+        for (index, m) in moves.iter().enumerate() {
+            prop_assert_eq!((m.first_step, m.first_segment), (next_step, next_segment));
+            next_step += m.steps;
+            next_segment += m.segments;
+            prop_assert_eq!(p.trace.point(m.first_step), Point::new(&m.from_steps));
+            prop_assert_eq!(p.trace.point(m.first_step + m.steps), Point::new(&m.to_steps));
+            let prefix = format!("Line {}, {}: ", m.line, m.code);
+            prop_assert!(m.note.starts_with(&prefix), "{}", m.note);
+            for s in &segments[m.first_segment..m.first_segment + m.segments] {
+                prop_assert!(s.setup_note.starts_with(&format!("{} ", m.note)), "{} / {}", m.note, s.setup_note);
+            }
+            prop_assert_eq!(m.timing, p.timeline.move_timing(index));
+            prop_assert_eq!(m.arc.is_some(), m.code == "G2" || m.code == "G3");
+            prop_assert_eq!(m.feed_mm_per_min.is_none(), m.code == "G0");
+            prop_assert_eq!(
+                m.kind,
+                match (m.code, m.arc.as_ref().map(|a| a.center_steps)) {
+                    ("G0", _) => "rapid",
+                    ("G1", _) => "line",
+                    _ if m.from_steps[2] != m.to_steps[2] => "helix",
+                    _ => "arc",
+                }
+            );
+            let stepped_as_line = m.arc.as_ref().is_some_and(|a| a.center_steps.is_none())
+                || m.note.contains("so it is stepped as a straight line");
+            prop_assert_eq!(
+                m.algorithm,
+                match m.kind {
+                    "rapid" | "line" => "regions",
+                    _ if stepped_as_line => "regions",
+                    "helix" => "helix",
+                    _ => arcs,
+                }
+            );
+            prop_assert_eq!(p.records.move_at_line(m.line), Some(index));
+            prop_assert_eq!(p.records.first_step_from_line(m.line), Some(m.first_step));
+            if m.steps > 0 {
+                prop_assert_eq!(p.records.move_of_step(m.first_step + m.steps - 1), Some(index));
+            }
+        }
+        prop_assert_eq!(next_step, p.info.steps);
+        let by_scan: Vec<u32> = moves
+            .iter()
+            .flat_map(|m| std::iter::repeat_n(m.line, m.steps as usize))
+            .collect();
+        prop_assert_eq!(p.records.line_by_step(0, p.info.steps), by_scan.clone());
+        let (from, to) = (p.info.steps / 3, p.info.steps * 2 / 3);
+        prop_assert_eq!(
+            p.records.line_by_step(from, to),
+            by_scan[from as usize..to as usize].to_vec()
+        );
+        prop_assert_eq!(p.records.move_of_step(p.info.steps), None);
+        prop_assert_eq!(p.records.move_at_line(1), None);
     }
 }

@@ -23,7 +23,7 @@ fn the_issues_example_takes_three_seconds() {
     // voxpath::planner's test trapezoid_from_rest_to_rest).
     let program = run("G1 X200 F6000\n", settings(""));
     assert!(close(program.info.duration_seconds, 3.0));
-    let t = program.info.moves[0].timing;
+    let t = program.moves()[0].timing;
     assert!(close(t.cruise_speed, 100.0) && t.entry_speed == 0.0 && t.exit_speed == 0.0);
     // The 400th step (index 399) at 5 mm: s = ½at², t = √(2·5/100).
     let times = program.timeline.step_seconds(399, 400);
@@ -41,7 +41,7 @@ fn the_issues_example_takes_three_seconds() {
 #[test]
 fn moves_join_in_time_and_ranges_cross_moves() {
     let program = run("G0 X10\nG1 Y10 F600\nG2 X20 Y0 I5 J-5\n", settings(""));
-    let moves = &program.info.moves;
+    let moves = &program.moves();
     for pair in moves.windows(2) {
         assert_eq!(pair[0].timing.end_seconds, pair[1].timing.start_seconds);
     }

@@ -71,6 +71,7 @@ function toJson(program: GcodeProgram, stepTimes: boolean): string {
     JSON.stringify({
       // The program's record as the core declares it, then the per-step arrays.
       ...record(program),
+      moves: program.moves,
       points: pointRows(program),
       lineByStep: Array.from(program.lineByStepInRange(0, program.steps)),
       ...(stepTimes ? { stepTimes: Array.from(program.stepTimes(0, program.steps)) } : {}),
@@ -110,7 +111,7 @@ function toTable(program: GcodeProgram): string {
   const diagnostics = (title: string, list: { line: number; column: number; message: string }[]) =>
     list.length === 0 ? [] : ['', `${title}:`, ...list.map((d) => `  line ${d.line}, column ${d.column}: ${d.message}`)];
   return [
-    `gcode: ${program.lines} lines, ${program.moves.length} moves, ${program.steps} steps; ${program.stepsPerMm.join(', ')} steps/mm (x, y, z); lines: ${program.lineAlgorithm}, arcs: ${program.arcAlgorithm}`,
+    `gcode: ${program.lines} lines, ${program.moveCount} moves, ${program.steps} steps; ${program.stepsPerMm.join(', ')} steps/mm (x, y, z); lines: ${program.lineAlgorithm}, arcs: ${program.arcAlgorithm}`,
     '',
     row(header),
     ...body.map(row),

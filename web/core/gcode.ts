@@ -3,7 +3,9 @@
  *
  *   const program = await runGcode('G1 X10 Y5 F600', { stepsPerMm: 80 }, { onProgress });
  *   program.trace;          // every step (a Trace: points, decisions, explain...)
- *   program.moves;          // each with its source line and its steps
+ *   program.moveCount;      // how many moves ran
+ *   program.move(0);        // a move: its source line, mm, steps, note, arc and timing
+ *   program.movesInRange(0, 100); // moves 0..100, read from the core on demand
  *   program.lineOfStep(k);  // the line that produced step k
  *   program.errors;         // [{ line, column, message }]
  *   program.durationSeconds; // on the planned motion profile (Grbl 1.1's planner)
@@ -20,7 +22,7 @@ import { argumentError, describeValue, indexRange, optionalFunction, text, whole
 import { encodeRequest } from './request.js';
 import { Trace, requireTrace } from './trace.js';
 import { loadCore } from './wasm.js';
-import type { GcodeResult, GcodeSettings, MotionChart, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
+import type { GcodeResult, GcodeSettings, MotionChart, Move, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
 
 /**
  * The settings (GcodeSettings: one field per setting of the catalogue's
@@ -44,7 +46,6 @@ export interface GcodeProgram extends Readonly<ProgramInfo> {}
 export class GcodeProgram {
   /** Every step of every move, in order (dims 3: x, y, z in steps). */
   readonly trace: Trace;
-  #moveByLine?: Map<number, number>;
   /** The core's record of the run; undefined once freed. */
   #result?: GcodeResult;
   readonly #vcd: () => Uint8Array;
@@ -63,46 +64,56 @@ export class GcodeProgram {
     return this.#result;
   }
 
-  /** Index of the move that took step index k (moves are in step order; a binary search). */
+  /**
+   * The moves of indices from..to, each with its source line, mm, steps,
+   * note, arc and timing: the core keeps them compact and builds these
+   * objects only when asked.
+   */
+  movesInRange(from: number, to: number): Move[] {
+    const core = this.#core;
+    [from, to] = indexRange(from, to, this.moveCount, 'move index');
+    return callCore(() => core.moves(from, to));
+  }
+
+  /** The move of index i (0 ≤ i < moveCount). */
+  move(i: number): Move {
+    wholeNumber('i', i, 0, this.moveCount - 1, 'move index');
+    return this.movesInRange(i, i + 1)[0]!;
+  }
+
+  /**
+   * Every move at once (movesInRange(0, moveCount)), built on each read: a
+   * long program's are better read by range.
+   */
+  get moves(): Move[] {
+    return this.movesInRange(0, this.moveCount);
+  }
+
+  /** Index of the move that took step index k (moves are in step order). */
   moveOfStep(k: number): number {
+    const core = this.#core;
     wholeNumber('k', k, 0, this.steps - 1, 'step index');
-    let lo = 0;
-    let hi = this.moves.length - 1;
-    // The first move whose end (firstStep + steps) is past k.
-    while (lo < hi) {
-      const mid = (lo + hi) >> 1;
-      const m = this.moves[mid]!;
-      if (m.firstStep + m.steps <= k) lo = mid + 1;
-      else hi = mid;
-    }
-    return lo;
+    return core.moveOfStep(k)!;
   }
 
   /** The 1-based source line that produced step index k. */
   lineOfStep(k: number): number {
-    return this.moves[this.moveOfStep(k)]!.line;
+    return this.move(this.moveOfStep(k)).line;
   }
 
   /** Source lines of step indices from..to: lineByStep[i] produced step from + i. */
   lineByStepInRange(from: number, to: number): Uint32Array {
+    const core = this.#core;
     [from, to] = indexRange(from, to, this.steps, 'step index');
-    const out = new Uint32Array(to - from);
-    if (from === to) return out;
-    for (let i = this.moveOfStep(from), k = from; k < to; i++) {
-      const m = this.moves[i]!;
-      const end = Math.min(to, m.firstStep + m.steps);
-      out.fill(m.line, k - from, end - from);
-      k = Math.max(k, end);
-    }
-    return out;
+    return callCore(() => core.lineByStep(from, to));
   }
 
   /** The move programmed on a 1-based source line, if that line moved. */
-  moveAtLine(line: number): ProgramInfo['moves'][number] | undefined {
+  moveAtLine(line: number): Move | undefined {
+    const core = this.#core;
     wholeNumber('line', line, 1, Number.MAX_SAFE_INTEGER, 'line number');
-    this.#moveByLine ??= new Map(this.moves.map((m, i) => [m.line, i]));
-    const i = this.#moveByLine.get(line);
-    return i === undefined ? undefined : this.moves[i];
+    const i = core.moveAtLine(Math.min(line, 2 ** 32 - 1));
+    return i === undefined ? undefined : this.move(i);
   }
 
   /**
@@ -110,9 +121,9 @@ export class GcodeProgram {
    * an earlier line done. For an editor cursor on a line without a move.
    */
   pointBeforeLine(line: number): number {
+    const core = this.#core;
     wholeNumber('line', line, 1, Number.MAX_SAFE_INTEGER, 'line number');
-    const next = this.moves.find((m) => m.line >= line);
-    return next === undefined ? this.steps : next.firstStep;
+    return core.pointBeforeLine(Math.min(line, 2 ** 32 - 1));
   }
 
   /**
@@ -218,12 +229,14 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
   const core = await loadCore();
   const run = callCore(() => new core.GcodeRun(source, settingsJson));
   let finished = false;
+  let linesDone = 0;
   try {
     let lines = 256;
     for (;;) {
       options.signal?.throwIfAborted();
       const started = performance.now();
-      const progress = run.advance(lines);
+      const progress = callCore(() => trapsAsErrors(() => run.advance(lines), linesDone));
+      linesDone = progress.linesDone;
       const elapsed = performance.now() - started;
       options.onProgress?.(progress);
       if (progress.done) break;
@@ -242,7 +255,29 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
       throw error;
     }
   } finally {
-    // finish() consumes the run; free it only when it was not reached.
-    if (!finished) run.free();
+    // finish() consumes the run; free it only when it was not reached. A
+    // run that trapped stays borrowed and cannot be freed: that must not
+    // hide the error that stopped it.
+    if (!finished) {
+      try {
+        run.free();
+      } catch {
+        // The instance's memory is lost with the trap; the error already thrown says so.
+      }
+    }
+  }
+}
+
+/**
+ * Runs `call`, turning a trap of the core (a WebAssembly.RuntimeError, such
+ * as memory exhausted past the core's own check) into a VoxpathError that
+ * says how far the run got: a caller sees no wasm trap.
+ */
+function trapsAsErrors<T>(call: () => T, linesDone: number): T {
+  try {
+    return call();
+  } catch (error) {
+    if (!(error instanceof WebAssembly.RuntimeError)) throw error;
+    throw argumentError('program', `the core failed (${error.message}) after ${linesDone} lines; run the program in parts of fewer lines, or lower stepsPerMm`);
   }
 }

@@ -17,7 +17,7 @@
  *
  *   import { runGcode } from 'voxpath';
  *   const p = await runGcode('G1 X10 Y5 F600', { stepsPerMm: 80 });
- *   p.moves;           // each with its source line, mm and steps
+ *   p.move(0);         // a move: its source line, mm and steps (p.moveCount of them, read on demand)
  *   p.trace;           // a Trace of every step
  */
 export { trace, algorithms, Trace } from './trace.js';

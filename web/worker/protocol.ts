@@ -73,10 +73,10 @@ export interface TraceDifference {
 }
 
 /**
- * The program's record as the page receives it: the core's, without its
- * move list (which the page asks for by range), and with the number of moves.
+ * The program's record as the page receives it: the core's, which counts the
+ * moves (the page asks for them by range).
  */
-export type ProgramRecord = Omit<GcodeProgramInfo, 'moves'> & { moveCount: number };
+export type ProgramRecord = GcodeProgramInfo;
 
 /** A G-code run as the page receives it: the trace's arrays and the program's record. */
 export interface RunProgram extends TracedPath {

@@ -75,10 +75,10 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         traces.set(request.traceId, program.trace);
         programs.set(request.traceId, program);
         const path = tracedPath(program.trace);
-        // The record's own fields, as the core declared them, less the moves (asked for by range).
-        const { moves, trace: _trace, ...record } = program;
+        // The record's own fields, as the core declared them (the moves are asked for by range).
+        const { trace: _trace, ...record } = program;
         return {
-          value: { ...path, program: { ...record, moveCount: moves.length } },
+          value: { ...path, program: record },
           transfer: [path.points.buffer, path.idealPolyline.buffer],
         };
       } finally {
@@ -118,12 +118,15 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       const bytes = heldProgram(request.traceId).vcd();
       return { value: bytes, transfer: [bytes.buffer] };
     }
-    case 'moves':
-      return { value: heldProgram(request.traceId).moves.slice(request.fromMove, request.toMove), transfer: [] };
+    case 'moves': {
+      const program = heldProgram(request.traceId);
+      const to = Math.min(request.toMove, program.moveCount);
+      return { value: program.movesInRange(Math.min(request.fromMove, to), to), transfer: [] };
+    }
     case 'moveOfStep': {
       const program = heldProgram(request.traceId);
       const moveIndex = program.moveOfStep(request.stepIndex);
-      return { value: { moveIndex, line: program.moves[moveIndex]!.line }, transfer: [] };
+      return { value: { moveIndex, line: program.move(moveIndex).line }, transfer: [] };
     }
     case 'lineSteps': {
       const program = heldProgram(request.traceId);

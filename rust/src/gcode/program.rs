@@ -28,7 +28,7 @@
 //!   start), or whose radius is too small for any grid center, is stepped as
 //!   a straight line to its end, and its note says so.
 
-use super::interpret::{ArcFormat, Interpreter, Motion, MoveMm};
+use super::interpret::{ArcFormat, ArcMm, Interpreter, Motion, MoveMm};
 use super::parse::{Block, Problem, parse_line_into};
 use super::timing::{self, Timeline};
 use crate::algorithms;
@@ -38,6 +38,7 @@ use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Limit, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::machine::{MACHINE_AXES, Machine};
+use crate::memory::{HEAP_BUDGET_BYTES, held_bytes};
 use crate::planner::{self, Limits, Planner, Timing};
 use crate::request::{MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, too_long_advice};
 use crate::text::split_line;
@@ -324,7 +325,10 @@ pub struct ProgramInfo {
     pub steps_per_mm: [f64; MACHINE_AXES],
     pub line_algorithm: &'static str,
     pub arc_algorithm: &'static str,
-    pub moves: Vec<Move>,
+    /// How many moves ran; each is read on demand ([`Program::moves`], and
+    /// in the JS API `move(i)` and `movesInRange(from, to)`), so a long
+    /// program's record stays small.
+    pub move_count: usize,
     /// How long the program takes on the planned profile, seconds.
     pub duration_seconds: f64,
     /// Pulses per axis (x, y, z) over the whole program.
@@ -343,8 +347,286 @@ pub struct ProgramInfo {
 pub struct Program {
     pub trace: Trace,
     pub info: ProgramInfo,
+    /// Every move, in order (`info.move_count` of them), kept compact.
+    pub records: MoveRecords,
     /// When every step happens (computed on demand).
     pub timeline: Timeline,
+}
+
+impl Program {
+    /// Every move, decoded (for tests and small programs; a long program's
+    /// are better read one at a time with [`MoveRecords::get`]).
+    pub fn moves(&self) -> Vec<Move> {
+        (0..self.records.len())
+            .map(|i| self.records.get(i, &self.timeline))
+            .collect()
+    }
+}
+
+/// Sentinel of [`MoveRecord::arc`]: the move is not an arc.
+const NO_ARC: u32 = u32::MAX;
+
+/// A move as a run keeps it: fixed size (120 bytes), no heap of its own.
+/// Its note, arc and timing are made when it is read ([`MoveRecords::get`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MoveRecord {
+    pub from_mm: [f64; MACHINE_AXES],
+    pub to_mm: [f64; MACHINE_AXES],
+    /// mm/min; NaN when none was in force (never a feed's value: F is finite).
+    feed_mm_per_min: f64,
+    pub first_step: u64,
+    pub steps: u64,
+    /// Grid points fit i32: coordinates stay within ±2^30.
+    from_steps: [i32; MACHINE_AXES],
+    to_steps: [i32; MACHINE_AXES],
+    pub line: u32,
+    pub column: u32,
+    first_segment: u32,
+    segments: u32,
+    /// Index among [`MoveRecords`]' arcs, or [`NO_ARC`].
+    arc: u32,
+    motion: Motion,
+}
+
+/// What an arc move keeps beyond its [`MoveRecord`]: the arc as programmed
+/// and how it was stepped.
+#[derive(Clone, Debug, PartialEq)]
+struct ArcRecord {
+    arc: ArcMm,
+    /// The grid center it was stepped around; None when stepped as a line.
+    center_steps: Option<[i64; MACHINE_AXES]>,
+    /// Why it was stepped as a straight line, if it was.
+    as_line: Option<&'static str>,
+}
+
+/// Why an arc is stepped as a straight line (its note says so).
+const TOO_SMALL: &str = "its radius is too small for a center on the step grid";
+const UNDER_ONE_STEP: &str = "on the grid it turns less than one step";
+
+/// The moves of a run, compact, and what decoding them needs.
+#[derive(Clone, Debug)]
+pub struct MoveRecords {
+    records: Vec<MoveRecord>,
+    arcs: Vec<ArcRecord>,
+    line_algorithm: &'static str,
+    arc_algorithm: &'static str,
+    steps_per_mm: [f64; MACHINE_AXES],
+}
+
+fn grid_point(c: [i32; MACHINE_AXES]) -> Point {
+    Point::new(&c.map(i64::from))
+}
+
+impl MoveRecords {
+    fn new(settings: &Settings) -> MoveRecords {
+        MoveRecords {
+            records: Vec::new(),
+            arcs: Vec::new(),
+            line_algorithm: settings.line_algorithm,
+            arc_algorithm: settings.arc_algorithm,
+            steps_per_mm: settings.machine.steps_per_mm(),
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.records.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.records.is_empty()
+    }
+
+    /// Move `index` as users read it, its timing from `timeline`.
+    pub fn get(&self, index: usize, timeline: &Timeline) -> Move {
+        let r = &self.records[index];
+        let arc = self.arc_of(r);
+        let helical = self.helical(r, arc);
+        Move {
+            line: r.line,
+            column: r.column,
+            code: r.motion.code(),
+            kind: match (r.motion, helical) {
+                (Motion::Rapid, _) => "rapid",
+                (Motion::Linear, _) => "line",
+                (Motion::Arc(_), false) => "arc",
+                (Motion::Arc(_), true) => "helix",
+            },
+            from_mm: r.from_mm,
+            to_mm: r.to_mm,
+            from_steps: r.from_steps.map(i64::from),
+            to_steps: r.to_steps.map(i64::from),
+            feed_mm_per_min: (!r.feed_mm_per_min.is_nan()).then_some(r.feed_mm_per_min),
+            first_step: r.first_step,
+            steps: r.steps,
+            first_segment: r.first_segment as usize,
+            segments: r.segments as usize,
+            algorithm: self.algorithm(r, arc),
+            arc: arc.map(|a| ArcInfo {
+                plane: a.arc.plane.label(),
+                direction: match a.arc.turn {
+                    Turn::Clockwise => "cw",
+                    Turn::CounterClockwise => "ccw",
+                },
+                format: match a.arc.format {
+                    ArcFormat::Center => "ijk",
+                    ArcFormat::Radius => "r",
+                },
+                center_mm: a.arc.center_mm,
+                radius_mm: a.arc.radius_mm,
+                sweep_deg: a.arc.sweep_rad.to_degrees(),
+                extra_turns: a.arc.extra_turns,
+                center_steps: a.center_steps,
+            }),
+            note: self.note(r, arc),
+            timing: timeline.move_timing(index),
+        }
+    }
+
+    fn arc_of(&self, r: &MoveRecord) -> Option<&ArcRecord> {
+        (r.arc != NO_ARC).then(|| &self.arcs[r.arc as usize])
+    }
+
+    /// True when an arc's normal axis moves (a helix).
+    fn helical(&self, r: &MoveRecord, arc: Option<&ArcRecord>) -> bool {
+        arc.is_some_and(|a| {
+            let n = a.arc.plane.axes()[2];
+            r.from_steps[n] != r.to_steps[n]
+        })
+    }
+
+    /// The catalogue algorithm that stepped a move.
+    fn algorithm(&self, r: &MoveRecord, arc: Option<&ArcRecord>) -> &'static str {
+        match arc {
+            Some(a) if a.as_line.is_none() => {
+                if self.helical(r, arc) {
+                    "helix"
+                } else {
+                    self.arc_algorithm
+                }
+            }
+            _ => self.line_algorithm,
+        }
+    }
+
+    /// What a move is, in a sentence: its note, which also starts its
+    /// segments' notes in the trace.
+    fn note(&self, r: &MoveRecord, arc: Option<&ArcRecord>) -> String {
+        use std::fmt::Write;
+        let mut note = String::with_capacity(160);
+        let _ = write!(note, "Line {}, {}: ", r.line, r.motion.code());
+        tuple_into(&mut note, &r.from_mm);
+        note.push_str(" -> ");
+        tuple_into(&mut note, &r.to_mm);
+        let _ = write!(
+            note,
+            " mm = {} -> {} steps",
+            grid_point(r.from_steps),
+            grid_point(r.to_steps)
+        );
+        let Some(a) = arc else {
+            note.push_str(if r.motion == Motion::Rapid {
+                ", a rapid, stepped like G1 and timed at the top rate along it (a real G0 may also dog-leg, each axis at its own top speed)."
+            } else {
+                ", a straight line."
+            });
+            return note;
+        };
+        let [u, v, _] = a.arc.plane.axes();
+        let _ = write!(
+            note,
+            ", {} {}in the {}, center ",
+            a.arc.turn.describe(),
+            if self.helical(r, arc) { "helix " } else { "arc " },
+            a.arc.plane.describe(),
+        );
+        tuple_into(&mut note, &[a.arc.center_mm[u], a.arc.center_mm[v]]);
+        let _ = write!(
+            note,
+            " mm, r = {} mm, sweep {:.3}°",
+            (a.arc.radius_mm * 1e6).round() / 1e6,
+            a.arc.sweep_rad.to_degrees(),
+        );
+        match a.arc.extra_turns {
+            0 => {}
+            t => {
+                let _ = write!(note, " (P adds {t} full turn{})", if t == 1 { "" } else { "s" });
+            }
+        }
+        if let Some(center) = a.center_steps {
+            let spm = self.steps_per_mm;
+            let center_real = [a.arc.center_mm[u] * spm[u], a.arc.center_mm[v] * spm[v]];
+            let rounded = [center_real[0].round() as i64, center_real[1].round() as i64];
+            let c = [center[u], center[v]];
+            if c != rounded {
+                let _ = write!(
+                    note,
+                    "; center moved to {} steps ({:.2} steps from the programmed center) so the rounded start and end are within 1 step of one radius",
+                    Point::new(&center),
+                    (c[0] as f64 - center_real[0]).hypot(c[1] as f64 - center_real[1])
+                );
+            }
+        }
+        match a.as_line {
+            Some(why) => {
+                let _ = write!(note, "; {why}, so it is stepped as a straight line to its end.");
+            }
+            None => note.push('.'),
+        }
+        note
+    }
+
+    /// Index of the move that took step index `k` (moves are in step
+    /// order), or None past their last step.
+    pub fn move_of_step(&self, k: u64) -> Option<usize> {
+        let index = self.records.partition_point(|m| m.first_step + m.steps <= k);
+        (index < self.records.len()).then_some(index)
+    }
+
+    /// Index of the move programmed on a 1-based source line (moves are in
+    /// line order, at most one per line), if that line moved.
+    pub fn move_at_line(&self, line: u32) -> Option<usize> {
+        let index = self.records.partition_point(|m| m.line < line);
+        (self.records.get(index)?.line == line).then_some(index)
+    }
+
+    /// The step index where the machine is when `line` starts (every move
+    /// of an earlier line done), or None when no move comes at or after it
+    /// (then the program's end).
+    pub fn first_step_from_line(&self, line: u32) -> Option<u64> {
+        let index = self.records.partition_point(|m| m.line < line);
+        self.records.get(index).map(|m| m.first_step)
+    }
+
+    /// The 1-based source line of each step index in `from..to` (below the
+    /// moves' last step), read from the records alone.
+    pub fn line_by_step(&self, from: u64, to: u64) -> Vec<u32> {
+        let mut out = Vec::with_capacity(to.saturating_sub(from) as usize);
+        let Some(first) = self.move_of_step(from) else {
+            return out;
+        };
+        for r in &self.records[first..] {
+            let end = to.min(r.first_step + r.steps);
+            let k = from + out.len() as u64;
+            if end > k {
+                out.resize(out.len() + (end - k) as usize, r.line);
+            }
+            if end == to {
+                break;
+            }
+        }
+        out
+    }
+
+    /// (first step, steps) of move `index`.
+    fn steps_of(&self, index: usize) -> (u64, u64) {
+        let r = &self.records[index];
+        (r.first_step, r.steps)
+    }
+
+    fn place(&self, index: usize) -> (u32, u32) {
+        let r = &self.records[index];
+        (r.line, r.column)
+    }
 }
 
 /// Runs a program a slice of lines at a time (see [`Runner::advance`]).
@@ -364,11 +646,15 @@ pub struct Runner {
     move_blocks: Vec<std::ops::Range<usize>>,
     steps: u64,
     segments: usize,
-    moves: Vec<Move>,
+    moves: MoveRecords,
     warnings: Vec<Diagnostic>,
     warnings_omitted: u64,
     errors: Vec<Diagnostic>,
     stopped_at_line: Option<u32>,
+    /// Heap the core may hold (all of it, this run's and others') before
+    /// the run stops; see [`crate::memory`].
+    heap_budget_bytes: usize,
+    out_of_memory: Option<Error>,
 }
 
 /// Lines of a program as an editor counts them: a final line break ends the
@@ -385,18 +671,23 @@ fn count_lines(text: &str) -> u32 {
     lines.max(1)
 }
 
-/// "(1, 2.5, 0)".
-fn tuple(values: &[f64]) -> String {
-    let parts: Vec<String> = values
-        .iter()
-        .map(|v| format!("{}", (v * 1e6).round() / 1e6))
-        .collect();
-    format!("({})", parts.join(", "))
+/// Appends "(1, 2.5, 0)": values rounded to 6 decimals.
+fn tuple_into(out: &mut String, values: &[f64]) {
+    use std::fmt::Write;
+    out.push('(');
+    for (i, v) in values.iter().enumerate() {
+        if i > 0 {
+            out.push_str(", ");
+        }
+        let _ = write!(out, "{}", (v * 1e6).round() / 1e6);
+    }
+    out.push(')');
 }
 
 impl Runner {
     pub fn new(source: String, settings: Settings) -> Runner {
         let lines = count_lines(&source);
+        let moves = MoveRecords::new(&settings);
         Runner {
             source,
             offset: 0,
@@ -410,12 +701,20 @@ impl Runner {
             block: Block::default(),
             steps: 0,
             segments: 0,
-            moves: Vec::new(),
+            moves,
             warnings: Vec::new(),
             warnings_omitted: 0,
             errors: Vec::new(),
             stopped_at_line: None,
+            heap_budget_bytes: HEAP_BUDGET_BYTES,
+            out_of_memory: None,
         }
+    }
+
+    /// Stops the run once the core holds more than `bytes` of heap (the
+    /// default is [`HEAP_BUDGET_BYTES`]; tests set less).
+    pub fn set_heap_budget(&mut self, bytes: usize) {
+        self.heap_budget_bytes = bytes;
     }
 
     pub fn progress(&self) -> Progress {
@@ -429,10 +728,19 @@ impl Runner {
     }
 
     /// Reads and runs up to `max_lines` more lines. A slice takes time in
-    /// proportion to its lines and to the steps of their moves.
+    /// proportion to its lines and to the steps of their moves. When the
+    /// core holds more heap than the run may, the run stops where it is
+    /// (done, the lines after it not even read) with the error
+    /// [`Runner::out_of_memory`] returns, also the program's last error.
     pub fn advance(&mut self, max_lines: u32) -> Progress {
         for _ in 0..max_lines {
             if self.lines_done == self.lines {
+                break;
+            }
+            if let Err(error) = self.check_memory() {
+                self.stop(Diagnostic::from_error(error.clone()));
+                self.out_of_memory = Some(error);
+                self.lines_done = self.lines;
                 break;
             }
             let rest = &self.source[self.offset..];
@@ -445,6 +753,35 @@ impl Runner {
             self.block = block;
         }
         self.progress()
+    }
+
+    /// Why the run stopped for memory, if it did (see [`Runner::advance`]).
+    pub fn out_of_memory(&self) -> Option<&Error> {
+        self.out_of_memory.as_ref()
+    }
+
+    /// An error once more heap is held than the run may hold, placed at the
+    /// line it would run next.
+    fn check_memory(&self) -> Result<(), Error> {
+        let held = held_bytes();
+        if held <= self.heap_budget_bytes {
+            return Ok(());
+        }
+        let mb = |bytes: usize| bytes.div_ceil(1 << 20);
+        Err(Error::at(
+            self.lines_done + 1,
+            1,
+            format!(
+                "the program does not fit in memory: after {} of its {} lines ({} moves, {} steps) the core holds {} MB, past the {} MB a run may hold; run it in parts of fewer lines (this far is about {} lines), or lower stepsPerMm, or free the programs and traces held before it",
+                self.lines_done,
+                self.lines,
+                self.moves.len(),
+                self.steps,
+                mb(held),
+                mb(self.heap_budget_bytes),
+                self.lines_done
+            ),
+        ))
     }
 
     /// Runs every line left.
@@ -484,9 +821,8 @@ impl Runner {
             self.warn(Diagnostic::at(line, w));
         }
         if let Some(m) = effects.motion {
-            match self.step_move(&m) {
-                Ok(mv) => self.moves.push(mv),
-                Err(e) => self.stop(Diagnostic::from_error(e)),
+            if let Err(e) = self.step_move(&m) {
+                self.stop(Diagnostic::from_error(e));
             }
         }
     }
@@ -571,55 +907,48 @@ impl Runner {
         Request::new(algorithm, options)
     }
 
-    fn step_move(&mut self, m: &MoveMm) -> Result<Move, Error> {
+    /// Steps one move and keeps its record.
+    fn step_move(&mut self, m: &MoveMm) -> Result<(), Error> {
         let from = self.builder.position();
         let to = self.steps_of(m, m.to_mm)?;
-        let (first_step, first_segment) = (self.steps, self.segments);
-        let mut note = format!(
-            "Line {}, {}: {} -> {} mm = {} -> {} steps",
-            m.line,
-            m.motion.code(),
-            tuple(&m.from_mm),
-            tuple(&m.to_mm),
-            from,
-            to
-        );
-        let (kind, algorithm, arc) = match &m.arc {
-            None => {
-                let kind = if m.motion == Motion::Rapid {
-                    note.push_str(", a rapid, stepped like G1 and timed at the top rate along it (a real G0 may also dog-leg, each axis at its own top speed).");
-                    "rapid"
-                } else {
-                    note.push_str(", a straight line.");
-                    "line"
-                };
-                let line = self.settings.line_algorithm;
-                self.append(m, self.line_request(line, from, to), &note)?;
-                (kind, line, None)
-            }
-            Some(_) => self.step_arc(m, from, to, &mut note)?,
+        let grid = |p: &Point| -> [i32; MACHINE_AXES] {
+            std::array::from_fn(|axis| {
+                i32::try_from(p.get(axis)).expect("grid coordinates are within ±2^30")
+            })
         };
-        let blocks = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
-        self.move_blocks.push(blocks);
-        Ok(Move {
-            line: m.line,
-            column: m.column,
-            code: m.motion.code(),
-            kind,
+        let mut record = MoveRecord {
             from_mm: m.from_mm,
             to_mm: m.to_mm,
-            from_steps: from.coords().try_into().expect("3 axes"),
-            to_steps: to.coords().try_into().expect("3 axes"),
-            feed_mm_per_min: m.feed_mm_per_min,
-            first_step,
-            steps: self.steps - first_step,
-            first_segment,
-            segments: self.segments - first_segment,
-            algorithm,
-            arc,
-            note,
-            timing: Timing::default(),
-        })
+            feed_mm_per_min: m.feed_mm_per_min.unwrap_or(f64::NAN),
+            first_step: self.steps,
+            steps: 0,
+            from_steps: grid(&from),
+            to_steps: grid(&to),
+            line: m.line,
+            column: m.column,
+            first_segment: self.segments as u32,
+            segments: 0,
+            arc: NO_ARC,
+            motion: m.motion,
+        };
+        match &m.arc {
+            None => {
+                let note = self.moves.note(&record, None);
+                let line = self.settings.line_algorithm;
+                self.append(m, self.line_request(line, from, to), &note)?;
+            }
+            Some(arc) => {
+                let arc = self.step_arc(m, arc, from, to, &record)?;
+                record.arc = u32::try_from(self.moves.arcs.len()).expect("fewer arcs than lines");
+                self.moves.arcs.push(arc);
+            }
+        }
+        record.steps = self.steps - record.first_step;
+        record.segments = self.segments as u32 - record.first_segment;
+        let blocks = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
+        self.move_blocks.push(blocks);
+        self.moves.records.push(record);
+        Ok(())
     }
 
     /// The grid center of an arc from `from` to `to` (steps) about
@@ -657,15 +986,16 @@ impl Runner {
         })
     }
 
+    /// Steps an arc move (`record` so far: no steps yet) and returns what
+    /// its record keeps of the arc.
     fn step_arc(
         &mut self,
         m: &MoveMm,
+        arc: &ArcMm,
         from: Point,
         to: Point,
-        note: &mut String,
-    ) -> Result<(&'static str, &'static str, Option<ArcInfo>), Error> {
-        use std::fmt::Write;
-        let arc = m.arc.as_ref().expect("an arc move");
+        record: &MoveRecord,
+    ) -> Result<ArcRecord, Error> {
         let [u, v, n] = arc.plane.axes();
         let spm = self.settings.machine.steps_per_mm();
         let (un, vn) = (AXIS_NAMES[u].to_uppercase(), AXIS_NAMES[v].to_uppercase());
@@ -683,37 +1013,11 @@ impl Runner {
             ));
         }
         let helical = from.get(n) != to.get(n);
-        let _ = write!(
-            note,
-            ", {} {}in the {}, center {} mm, r = {} mm, sweep {:.3}°{}",
-            arc.turn.describe(),
-            if helical { "helix " } else { "arc " },
-            arc.plane.describe(),
-            tuple(&[arc.center_mm[u], arc.center_mm[v]]),
-            (arc.radius_mm * 1e6).round() / 1e6,
-            arc.sweep_rad.to_degrees(),
-            match arc.extra_turns {
-                0 => String::new(),
-                t => format!(" (P adds {t} full turn{})", if t == 1 { "" } else { "s" }),
-            }
-        );
-        let mut info = ArcInfo {
-            plane: arc.plane.label(),
-            direction: match arc.turn {
-                Turn::Clockwise => "cw",
-                Turn::CounterClockwise => "ccw",
-            },
-            format: match arc.format {
-                ArcFormat::Center => "ijk",
-                ArcFormat::Radius => "r",
-            },
-            center_mm: arc.center_mm,
-            radius_mm: arc.radius_mm,
-            sweep_deg: arc.sweep_rad.to_degrees(),
-            extra_turns: arc.extra_turns,
+        let mut kept = ArcRecord {
+            arc: arc.clone(),
             center_steps: None,
+            as_line: None,
         };
-        let kind = if helical { "helix" } else { "arc" };
         let center_real = [arc.center_mm[u] * spm[u], arc.center_mm[v] * spm[v]];
         for (i, axis) in [u, v].into_iter().enumerate() {
             // The grid center is found near this point in i64: it must be
@@ -740,26 +1044,22 @@ impl Runner {
             center_real,
         );
         let Some(c) = grid else {
-            let why = "its radius is too small for a center on the step grid";
-            let line = self.step_as_line(m, from, to, note, why)?;
-            return Ok((kind, line, Some(info)));
+            kept.as_line = Some(TOO_SMALL);
+            self.step_as_line(m, from, to, record, &kept)?;
+            return Ok(kept);
         };
         let mut center = from;
         center.coords_mut()[u] = c[0];
         center.coords_mut()[v] = c[1];
-        info.center_steps = Some(center.coords().try_into().expect("3 axes"));
-        let rounded = [center_real[0].round() as i64, center_real[1].round() as i64];
-        if c != rounded {
-            let _ = write!(
-                note,
-                "; center moved to {center} steps ({:.2} steps from the programmed center) so the rounded start and end are within 1 step of one radius",
-                (c[0] as f64 - center_real[0]).hypot(c[1] as f64 - center_real[1])
-            );
-        }
+        kept.center_steps = Some(center.coords().try_into().expect("3 axes"));
+        let direction = match arc.turn {
+            Turn::Clockwise => "cw",
+            Turn::CounterClockwise => "ccw",
+        };
         let mut request = self.line_request("", from, to);
         request.set("center", Value::from(center.coords()));
-        request.set("dir", Value::from(info.direction));
-        request.set("plane", Value::from(info.plane));
+        request.set("dir", Value::from(direction));
+        request.set("plane", Value::from(arc.plane.label()));
         let place = |e: Error| Error::at(m.line, m.column, format!("{}", e));
         let local = ArcSpec::parse(&request, true)
             .map_err(place)?
@@ -768,9 +1068,9 @@ impl Runner {
         // the programmed one.
         let turns = ((arc.sweep_rad.abs() - local) / TAU).round();
         if turns < 0.0 {
-            let why = "on the grid it turns less than one step";
-            let line = self.step_as_line(m, from, to, note, why)?;
-            return Ok((kind, line, Some(info)));
+            kept.as_line = Some(UNDER_ONE_STEP);
+            self.step_as_line(m, from, to, record, &kept)?;
+            return Ok(kept);
         }
         request.set("turns", Value::from(turns as u64));
         let segments = self.settings.arc_algorithm == "arc-segments";
@@ -787,27 +1087,24 @@ impl Runner {
             request.set("lineAlgorithm", Value::from(self.settings.line_algorithm));
         }
         request.algorithm = algorithm.to_string();
-        note.push('.');
-        self.append(m, request, note)?;
-        Ok((kind, algorithm, Some(info)))
+        let note = self.moves.note(record, Some(&kept));
+        self.append(m, request, &note)?;
+        Ok(kept)
     }
 
-    /// Steps an arc as a straight line, saying `why` in its note; returns
-    /// the line algorithm.
+    /// Steps an arc as a straight line (`kept` says why, for its note).
     fn step_as_line(
         &mut self,
         m: &MoveMm,
         from: Point,
         to: Point,
-        note: &mut String,
-        why: &str,
-    ) -> Result<&'static str, Error> {
-        note.push_str(&format!(
-            "; {why}, so it is stepped as a straight line to its end."
-        ));
+        record: &MoveRecord,
+        kept: &ArcRecord,
+    ) -> Result<(), Error> {
+        let note = self.moves.note(record, Some(kept));
         let line = self.settings.line_algorithm;
-        self.append(m, self.line_request(line, from, to), note)?;
-        Ok(line)
+        self.append(m, self.line_request(line, from, to), &note)?;
+        Ok(())
     }
 
     /// Finishes the trace (the moves run so far) and the program's record.
@@ -817,16 +1114,16 @@ impl Runner {
             planner,
             std::mem::take(&mut self.move_blocks)
                 .into_iter()
-                .zip(&self.moves)
-                .map(|(blocks, m)| (blocks, m.first_step, m.steps))
+                .enumerate()
+                .map(|(index, blocks)| {
+                    let (first_step, steps) = self.moves.steps_of(index);
+                    (blocks, first_step, steps)
+                })
                 .collect(),
         );
-        for (index, m) in self.moves.iter_mut().enumerate() {
-            m.timing = timeline.move_timing(index);
-        }
         let spm = self.settings.machine.steps_per_mm();
         for (index, axis, needed, max) in timeline.step_rate_excesses(&self.settings.limits, &spm) {
-            let (line, column) = (self.moves[index].line, self.moves[index].column);
+            let (line, column) = self.moves.place(index);
             self.warn(Diagnostic {
                 line,
                 column,
@@ -844,7 +1141,7 @@ impl Runner {
             steps_per_mm: self.settings.machine.steps_per_mm(),
             line_algorithm: self.settings.line_algorithm,
             arc_algorithm: self.settings.arc_algorithm,
-            moves: self.moves,
+            move_count: self.moves.len(),
             duration_seconds: timeline.duration_seconds(),
             pulses: trace.pulses_by_axis(),
             warnings: self.warnings,
@@ -855,6 +1152,7 @@ impl Runner {
         Program {
             trace,
             info,
+            records: self.moves,
             timeline,
         }
     }

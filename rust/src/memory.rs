@@ -1,0 +1,61 @@
+//! How much heap the core holds, so that a long run stops cleanly before
+//! memory runs out. A wasm32 instance has at most 4 GiB; an allocation past
+//! it aborts with a trap (`RuntimeError: unreachable`) that leaves the
+//! instance's objects borrowed, so no caller could recover or even free
+//! what it holds. Counting every allocation costs one relaxed add.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// What a G-code run may see held before it stops: 2 GiB, half of wasm32's
+/// 4 GiB. The rest is for the allocator's slack and the run's vectors, which
+/// double as they grow (the trace's segments and steps, the move records):
+/// one doubling of a vector holding a fifth of the heap needs 40% more for
+/// a moment, and what a caller then reads of the result needs room too.
+pub const HEAP_BUDGET_BYTES: usize = 2 << 30;
+
+static HELD_BYTES: AtomicUsize = AtomicUsize::new(0);
+
+/// The system allocator, counting the bytes it holds.
+struct Counting;
+
+// SAFETY: every call is passed to `System` unchanged; only the count is added.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let p = unsafe { System.alloc(layout) };
+        if !p.is_null() {
+            HELD_BYTES.fetch_add(layout.size(), Ordering::Relaxed);
+        }
+        p
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        let p = unsafe { System.alloc_zeroed(layout) };
+        if !p.is_null() {
+            HELD_BYTES.fetch_add(layout.size(), Ordering::Relaxed);
+        }
+        p
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) };
+        HELD_BYTES.fetch_sub(layout.size(), Ordering::Relaxed);
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let p = unsafe { System.realloc(ptr, layout, new_size) };
+        if !p.is_null() {
+            HELD_BYTES.fetch_add(new_size, Ordering::Relaxed);
+            HELD_BYTES.fetch_sub(layout.size(), Ordering::Relaxed);
+        }
+        p
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// Bytes of heap held now, by everything in this process (or wasm instance).
+pub fn held_bytes() -> usize {
+    HELD_BYTES.load(Ordering::Relaxed)
+}
