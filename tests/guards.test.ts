@@ -185,9 +185,17 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       [() => p.moveAtLine(any('1')), 'line'],
       [() => p.pointBeforeLine(any('x')), 'line'],
       [() => p.pointBeforeLine(0), 'line'],
+      // null and [] were read as 0 s, 5n threw a TypeError from the glue.
+      [() => p.pointAtSeconds(any(null)), 'seconds'],
+      [() => p.pointAtSeconds(any([])), 'seconds'],
+      [() => p.pointAtSeconds(any(5n)), 'seconds'],
+      [() => p.pointAtSeconds(Number.NaN), 'seconds'],
+      [() => p.motionChart(any(null), 1, 10), 'fromSeconds'],
+      [() => p.motionChart(0, any('1'), 10), 'toSeconds'],
     ];
     for (const [call, field] of cases) expect(thrown(call).field).toBe(field);
     expect(p.stepTimes(0, 2).length).toBe(2);
+    expect(p.pointAtSeconds(Number.POSITIVE_INFINITY)).toBe(p.steps);
     p.free();
   });
 

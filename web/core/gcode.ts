@@ -18,7 +18,7 @@
  * progress and take a cancel (an AbortSignal) while a long program runs.
  */
 import { callCore } from './errors.js';
-import { argumentError, describeValue, indexRange, optionalFunction, text, wholeNumber } from './guard.js';
+import { aNumber, argumentError, describeValue, indexRange, optionalFunction, text, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import { Trace, requireTrace } from './trace.js';
 import { loadCore } from './wasm.js';
@@ -156,6 +156,8 @@ export class GcodeProgram {
    */
   motionChart(fromSeconds: number, toSeconds: number, buckets: number): MotionChart {
     const core = this.#core;
+    aNumber('fromSeconds', fromSeconds, 'seconds');
+    aNumber('toSeconds', toSeconds, 'seconds');
     wholeNumber('buckets', buckets, 1, 2 ** 32 - 1, 'buckets');
     return callCore(() => core.motionChart(fromSeconds, toSeconds, buckets));
   }
@@ -166,6 +168,7 @@ export class GcodeProgram {
    */
   pointAtSeconds(seconds: number): number {
     const core = this.#core;
+    aNumber('seconds', seconds, 'seconds');
     return callCore(() => core.pointAtSeconds(seconds));
   }
 

@@ -51,6 +51,19 @@ export function indexRange(from: unknown, to: unknown, length: number, what: str
   return [start, wholeNumber('to', to, start, length, what)];
 }
 
+/**
+ * `value` when it is a number other than NaN (an infinity allowed: "the
+ * end"), else a VoxpathError naming `field`; `what` names the number
+ * ("seconds"). wasm-bindgen reads null and [] as 0 for an f64 and throws a
+ * TypeError on a BigInt.
+ */
+export function aNumber(field: string, value: unknown, what: string): number {
+  if (typeof value !== 'number' || Number.isNaN(value)) {
+    throw argumentError(field, `${what} must be a number, got ${describeValue(value)}`);
+  }
+  return value;
+}
+
 /** `value` as text, else a VoxpathError naming `field` (`what` says what text is expected). */
 export function text(field: string, value: unknown, what: string): string {
   if (typeof value !== 'string') {
