@@ -339,11 +339,13 @@ impl Planner {
 
     /// Adds a straight block of displacement `delta_mm` (`plan_buffer_line`).
     /// A block of length 0 is skipped, as Grbl skips an empty block; the
-    /// junction is then between its neighbours.
-    pub fn push(&mut self, delta_mm: [f64; MACHINE_AXES], rate: Rate) {
+    /// junction is then between its neighbours. Returns the block's top
+    /// rate (mm/min) when a programmed feed was above it and was capped to
+    /// it, as Grbl caps it without a word.
+    pub fn push(&mut self, delta_mm: [f64; MACHINE_AXES], rate: Rate) -> Option<f64> {
         let (length_mm, unit) = unit_vector(delta_mm);
         if length_mm == 0.0 || !length_mm.is_finite() {
-            return;
+            return None;
         }
         let acceleration = limit_value_by_axis_maximum(&self.limits.acceleration_mm_per_s2, &unit);
         let top_mm_per_min = limit_value_by_axis_maximum(&self.limits.max_rate_mm_per_min, &unit);
@@ -372,6 +374,10 @@ impl Planner {
         });
         self.previous_unit = Some(unit);
         self.previous_nominal = nominal;
+        match rate {
+            Rate::Feed(f) if f > top_mm_per_min => Some(top_mm_per_min),
+            _ => None,
+        }
     }
 
     /// Plans every block pushed: the last one ends at rest.

@@ -75,6 +75,34 @@ fn no_feed_and_step_rate_are_warnings_on_their_line() {
 }
 
 #[test]
+fn a_feed_above_the_max_rate_is_capped_with_a_warning_once_per_feed() {
+    // Grbl's default $110 = 500 mm/min: F6000 runs at 500 mm/min (Grbl's
+    // plan_buffer_line takes min(F, the direction's top rate)), so 200 mm
+    // at 8.33 mm/s and 100 mm/s² takes 200/v + v/a = 24.083 s.
+    let program = run(
+        "G1 X200 F6000\nG1 X0\nG1 X100 F400\nG1 X0 F7000\n",
+        Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 100}"#).unwrap(),
+    );
+    let v = 500.0 / 60.0;
+    let first = program.moves()[0].timing;
+    assert!(close(first.end_seconds, 200.0 / v + v / 100.0), "{first:?}");
+    let warned: Vec<(u32, &str)> = program
+        .info
+        .warnings
+        .iter()
+        .map(|w| (w.line, w.message.as_str()))
+        .collect();
+    // Line 2 runs at the same F6000 and line 3 below the top: no repeat.
+    assert_eq!(warned.len(), 2, "{warned:?}");
+    assert_eq!(warned[0].0, 1);
+    assert!(warned[0].1.starts_with("F6000 mm/min is above the max rate along this move (500 mm/min"));
+    assert_eq!(warned[1].0, 4);
+    assert!(warned[1].1.starts_with("F7000 mm/min"));
+    // At maxRate 6000 the same line runs at its F, silently.
+    assert!(run("G1 X200 F6000\n", settings("")).info.warnings.is_empty());
+}
+
+#[test]
 fn limits_are_read_by_name() {
     let e = Settings::from_json(r#"{"stepsPerMm": 80, "maxRate": [1, 2]}"#).unwrap_err();
     assert_eq!(

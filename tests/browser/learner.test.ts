@@ -240,7 +240,7 @@ describe('compare mode', () => {
 describe("a G-code program's errors", () => {
   it('are marked in the gutter, on their line and above the editor, which goes to the line', async () => {
     // Line 2 moves with no feed rate yet (a warning: Grbl's error 22); line 3's X1.2.3 is no number.
-    const gcode = encodeURIComponent('G21 G90\nG1 X1 Y1\nG1 X1.2.3 F600\nG1 X5\n');
+    const gcode = encodeURIComponent('G21 G90\nG1 X1 Y1\nG1 X1.2.3 F500\nG1 X5\n');
     const p = await openPage(`?mode=gcode&gcode=${gcode}&stepsPerMm=10`);
     const { page } = p;
     await status(page, 'stopped at line 3');
@@ -260,7 +260,7 @@ describe("a G-code program's errors", () => {
     expect(await page.getByTestId('gcode-text').evaluate((e: HTMLTextAreaElement) => e.value.slice(0, e.selectionStart).split('\n').length)).toBe(3);
 
     // Fixed, the marks go.
-    await page.getByTestId('gcode-text').fill('G21 G90\nG1 X1 Y1 F600\nG1 X1.2 F600\nG1 X5\n');
+    await page.getByTestId('gcode-text').fill('G21 G90\nG1 X1 Y1 F500\nG1 X1.2 F500\nG1 X5\n');
     await status(page, '3 moves');
     expect(await problems.isHidden()).toBe(true);
     expect(await page.getByTestId('gutter-error').count()).toBe(0);

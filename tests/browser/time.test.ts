@@ -1,8 +1,8 @@
 // Time on the page (issue 14), in headless Chromium, with the screenshots
 // checked for content. Expected values are worked from Grbl 1.1's planner
 // (gnea/grbl planner.c, defaults.h), not read from the page: the default
-// program is a 20 mm square at F600 with Grbl's defaults (a = 10 mm/s²,
-// max rate 500 mm/min, junction deviation 0.01 mm), so every side is capped
+// program is a 20 mm square at F500 with Grbl's defaults (a = 10 mm/s²,
+// max rate 500 mm/min, junction deviation 0.01 mm), so every side runs
 // at 500/60 = 8.33 mm/s and each 90° corner is taken at Grbl's junction
 // speed √(a_j·δ·s/(1−s)), s = sin 45°, a_j = a·√2 (the acceleration limited
 // along the corner's bisector, limit_value_by_axis_maximum).

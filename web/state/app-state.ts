@@ -205,7 +205,7 @@ export function machineSpecs(catalogue: Catalogue): OptionSpec[] {
 }
 
 /** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */
-export const DEFAULT_GCODE = '(A 20 mm square, absolute coordinates)\nG21 G90 G17\nG0 X0 Y0 Z0\nG1 X20 Y0 F600\nY20\nX0\nY0\n';
+export const DEFAULT_GCODE = '(A 20 mm square, absolute coordinates)\nG21 G90 G17\nG0 X0 Y0 Z0\nG1 X20 Y0 F500\nY20\nX0\nY0\n';
 
 /** Wang's experiment: 100 lines to points in 0..100, seed 1. */
 export const DEFAULT_EXPERIMENT: Readonly<Record<string, OptionValue>> = { count: 100, seed: 1, maxCoordinate: 100 };

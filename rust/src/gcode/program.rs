@@ -649,6 +649,8 @@ pub struct Runner {
     moves: MoveRecords,
     warnings: Vec<Diagnostic>,
     warnings_omitted: u64,
+    /// The last feed (mm/min) warned of as capped to maxRate.
+    capped_feed_warned: Option<f64>,
     errors: Vec<Diagnostic>,
     stopped_at_line: Option<u32>,
     /// Heap the core may hold (all of it, this run's and others') before
@@ -704,6 +706,7 @@ impl Runner {
             moves,
             warnings: Vec::new(),
             warnings_omitted: 0,
+            capped_feed_warned: None,
             errors: Vec::new(),
             stopped_at_line: None,
             heap_budget_bytes: HEAP_BUDGET_BYTES,
@@ -945,8 +948,20 @@ impl Runner {
         }
         record.steps = self.steps - record.first_step;
         record.segments = self.segments as u32 - record.first_segment;
-        let blocks = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
-        self.move_blocks.push(blocks);
+        let pushed = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
+        self.move_blocks.push(pushed.blocks);
+        // Once per feed value: every later move at the same F is capped alike.
+        if let (Some(top), Some(feed)) = (pushed.feed_capped_to_mm_per_min, m.feed_mm_per_min) {
+            if self.capped_feed_warned != Some(feed) {
+                self.capped_feed_warned = Some(feed);
+                self.warn(Diagnostic {
+                    line: record.line,
+                    column: record.column,
+                    message: timing::feed_capped_message(feed, top),
+                    limit: None,
+                });
+            }
+        }
         self.moves.records.push(record);
         Ok(())
     }

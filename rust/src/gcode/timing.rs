@@ -54,15 +54,22 @@ pub fn limits_from_settings(settings: &Map<String, Value>) -> Result<Limits, Err
     )
 }
 
-/// Pushes the blocks of move `m`, stepped from `from` to `to` (steps);
-/// returns the range of blocks it took (empty when it does not move).
+/// The blocks a move took, and the lowest top rate (mm/min) its feed was
+/// capped to, if any of them capped it.
+pub struct PushedMove {
+    pub blocks: Range<usize>,
+    pub feed_capped_to_mm_per_min: Option<f64>,
+}
+
+/// Pushes the blocks of move `m`, stepped from `from` to `to` (steps):
+/// the range of blocks it took (empty when it does not move).
 pub fn push_move(
     planner: &mut Planner,
     machine: &Machine,
     m: &MoveMm,
     from: &Point,
     to: &Point,
-) -> Range<usize> {
+) -> PushedMove {
     let first = planner.len();
     let spm = machine.steps_per_mm();
     let rate = match (m.motion, m.feed_mm_per_min) {
@@ -91,12 +98,27 @@ pub fn push_move(
     }
     targets.push(to);
     let mut previous: [i64; MACHINE_AXES] = from.coords().try_into().expect("3 axes");
+    let mut capped: Option<f64> = None;
     for target in targets {
         let delta = std::array::from_fn(|axis| (target[axis] - previous[axis]) as f64 / spm[axis]);
-        planner.push(delta, rate);
+        if let Some(top) = planner.push(delta, rate) {
+            capped = Some(capped.map_or(top, |c| c.min(top)));
+        }
         previous = target;
     }
-    first..planner.len()
+    PushedMove {
+        blocks: first..planner.len(),
+        feed_capped_to_mm_per_min: capped,
+    }
+}
+
+/// The warning for a feed above what maxRate allows along a move: Grbl
+/// runs it at the top rate and says nothing, so a learner who times
+/// `G1 X200 F6000` against the default 500 mm/min would be puzzled.
+pub fn feed_capped_message(feed_mm_per_min: f64, top_mm_per_min: f64) -> String {
+    format!(
+        "F{feed_mm_per_min} mm/min is above the max rate along this move ({top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): it runs at {top_mm_per_min:.0} mm/min, as Grbl caps it; raise maxRate to run at F{feed_mm_per_min}"
+    )
 }
 
 /// The plan of a finished program, and which blocks and steps each move has.
