@@ -19,7 +19,9 @@ use crate::algorithms::{self, AlgorithmInfo, Family};
 use crate::compare::{StepWhy, as_object, why_at_point};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
+use crate::line::GCD;
+use crate::line::liu_float::{self, DECIMALS};
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
 use crate::text::{echo, split_line};
 use crate::trace::Trace;
 use serde::Serialize;
@@ -727,6 +729,9 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
             base.insert(MAX_STEPS.name.to_string(), Value::from(max_steps));
         }
         let mut matched: Vec<Vec<Option<Value>>> = Vec::new();
+        // The combinations traced so far, each with whether it matched, for
+        // those whose path is known to be the path of an earlier one.
+        let mut traced: Vec<(Vec<Option<Value>>, bool)> = Vec::new();
         let mut choice = vec![0usize; tried.len()];
         loop {
             let mut combination: Vec<Option<Value>> = tried
@@ -734,10 +739,23 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
                 .zip(&choice)
                 .map(|((_, values), &i)| Some(values[i].clone()))
                 .collect();
-            if let Some(trace) = trace_combination(info, &base, &tried, steps, &mut combination)
-                && follows(&trace, points, steps)
-                && !matched.contains(&combination)
-            {
+            let known = same_path_as(info, request, &tried, &combination).and_then(|earlier| {
+                traced
+                    .iter()
+                    .find(|(c, _)| *c == earlier)
+                    .map(|&(_, path_follows)| path_follows)
+            });
+            let path_follows = known.unwrap_or_else(|| {
+                let asked = combination.clone();
+                let path_follows = trace_combination(info, &base, &tried, steps, &mut combination)
+                    .is_some_and(|trace| follows(&trace, points, steps));
+                // Only a combination traced as asked stands for another.
+                if combination == asked {
+                    traced.push((asked, path_follows));
+                }
+                path_follows
+            });
+            if path_follows && !matched.contains(&combination) {
                 matched.push(combination);
             }
             if !next_combination(&mut choice, &tried) {
@@ -747,6 +765,42 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
         out.extend(describe_matches(info, &tried, matched));
     }
     out
+}
+
+/// A combination earlier in the odometer's order (each option's values in
+/// their declared order) whose path is this combination's on the request's
+/// line, known without tracing either; None when there is none. `gcd`
+/// never changes a path (Wang section 4, [`crate::line::Mirror::divisor`]),
+/// so gcd = true has the path of gcd = false; and liu-float's path is the
+/// same at every `decimals` from [`liu_float::exact_decimals`] up (the
+/// argument is there). Either way, the combination follows the points
+/// exactly when the earlier one does: alsoMatches does not trace the same
+/// path twice, and is what it would be if it did (property-tested).
+fn same_path_as(
+    info: &AlgorithmInfo,
+    request: &Request,
+    tried: &[(&OptionSpec, Vec<Value>)],
+    combination: &[Option<Value>],
+) -> Option<Vec<Option<Value>>> {
+    let exact_decimals = || {
+        let (from, to) = (request.point(FROM.name).ok()?, request.point(TO.name).ok()?);
+        (from.dims() == to.dims()).then(|| liu_float::exact_decimals(from, to))?
+    };
+    let mut earlier = combination.to_vec();
+    for ((spec, _), value) in tried.iter().zip(earlier.iter_mut()) {
+        if spec.name == GCD.name && *value == Some(Value::from(true)) {
+            *value = Some(Value::from(false));
+        }
+        if info.id == liu_float::ID && spec.name == DECIMALS.name {
+            let asked = value.as_ref().and_then(Value::as_i64);
+            if let (Some(asked), Some(exact)) = (asked, exact_decimals())
+                && asked > i64::from(exact)
+            {
+                *value = Some(Value::from(exact));
+            }
+        }
+    }
+    (earlier != combination).then_some(earlier)
 }
 
 /// Traces `info` with `base` and the combination's values, following
@@ -1075,6 +1129,139 @@ mod tests {
                     prop_assert_eq!(d.got, Some(points.get(k).to_vec()));
                 }
                 Err((index, _)) => prop_assert!(index as u64 == k || index as u64 == k + 1),
+            }
+        }
+    }
+
+    /// Every combination of tried values of `info`, as odometer order gives them.
+    fn combinations(tried: &[(&OptionSpec, Vec<Value>)]) -> Vec<Vec<Option<Value>>> {
+        let mut out = Vec::new();
+        let mut choice = vec![0usize; tried.len()];
+        loop {
+            out.push(
+                tried
+                    .iter()
+                    .zip(&choice)
+                    .map(|((_, values), &i)| Some(values[i].clone()))
+                    .collect(),
+            );
+            if !next_combination(&mut choice, tried) {
+                return out;
+            }
+        }
+    }
+
+    /// The full path (steps, not following any) of `info` on `base`'s line
+    /// with the combination's values, or None where it does not trace.
+    fn full_path(
+        info: &AlgorithmInfo,
+        base: &Request,
+        tried: &[(&OptionSpec, Vec<Value>)],
+        combination: &[Option<Value>],
+    ) -> Option<Vec<Step>> {
+        let mut options = Map::new();
+        for name in [FROM.name, TO.name] {
+            options.insert(name.to_string(), base.options()[name].clone());
+        }
+        for ((spec, _), value) in tried.iter().zip(combination) {
+            options.insert(spec.name.to_string(), value.clone()?);
+        }
+        let trace = (info.trace)(&Request::new(info.id, options), algorithms::find).ok()?;
+        Some(trace.step_range(0, trace.steps()).to_vec())
+    }
+
+    /// A move's end: a round longest distance (10, 25, 1000, ... whose
+    /// slopes are short decimals) or any, the other axes anywhere up to it,
+    /// in any order and direction.
+    fn line_end() -> impl Strategy<Value = Vec<i64>> {
+        (
+            prop_oneof![
+                proptest::sample::select(vec![1i64, 2, 4, 5, 8, 10, 16, 20, 25, 40, 50, 64, 80, 100, 125, 200, 250, 1000]),
+                1i64..300,
+            ],
+            0.0f64..=1.0,
+            0.0f64..=1.0,
+            0usize..3,
+            proptest::collection::vec(proptest::bool::ANY, 3),
+        )
+            .prop_map(|(n, a, b, major, negative)| {
+                let mut end = vec![n, (a * n as f64).round() as i64, (b * n as f64).round() as i64];
+                end.swap(0, major);
+                for (c, &neg) in end.iter_mut().zip(&negative) {
+                    if neg {
+                        *c = -*c;
+                    }
+                }
+                end
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// What alsoMatches takes without tracing is so: on random lines,
+        /// each combination [`same_path_as`] pairs with an earlier one has
+        /// that one's full path, step for step.
+        #[test]
+        fn combinations_paired_without_tracing_have_the_same_path(from in proptest::collection::vec(-50i64..50, 3), end in line_end()) {
+            let to: Vec<i64> = from.iter().zip(&end).map(|(f, e)| f + e).collect();
+            let base = request(&format!(r#"{{"algorithm":"regions","from":{from:?},"to":{to:?}}}"#));
+            for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == Family::Line) {
+                let tried: Vec<(&OptionSpec, Vec<Value>)> = info
+                    .options
+                    .iter()
+                    .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
+                    .collect();
+                let all = combinations(&tried);
+                for (at, combination) in all.iter().enumerate() {
+                    let Some(earlier) = same_path_as(info, &base, &tried, combination) else {
+                        continue;
+                    };
+                    prop_assert!(all[..at].contains(&earlier), "{}: {:?} pairs with a later {:?}", info.id, combination, earlier);
+                    prop_assert_eq!(
+                        full_path(info, &base, &tried, combination),
+                        full_path(info, &base, &tried, &earlier),
+                        "{}: {:?} and {:?}", info.id, combination, earlier
+                    );
+                }
+            }
+        }
+
+        /// alsoMatches against every combination's full path: on a random
+        /// line, the points of a random rule are matched by an entry for
+        /// exactly the combinations whose full path they are.
+        #[test]
+        fn also_matches_names_every_combination_whose_full_path_is_the_points(
+            end in line_end(),
+            algorithm in proptest::sample::select(vec!["regions", "bresenham3d", "nd", "liu-float", "dda", "greedy", "walk6"]),
+            tie in proptest::sample::select(vec!["advance", "hold"]),
+            decimals in 0i64..=10,
+        ) {
+            let options = match algorithm {
+                "liu-float" => format!(r#","tie":"{tie}","decimals":{decimals}"#),
+                "regions" | "bresenham3d" | "nd" => format!(r#","tie":"{tie}""#),
+                _ => String::new(),
+            };
+            let json = format!(r#"{{"algorithm":"{algorithm}","from":[0,0,0],"to":{end:?}{options}}}"#);
+            let r = request(&json);
+            let points = points_of(&crate::algorithms::run(&r).unwrap());
+            let steps = points.steps();
+            let entries = also_matches(&r, &points, &steps);
+            for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == Family::Line) {
+                let tried: Vec<(&OptionSpec, Vec<Value>)> = info
+                    .options
+                    .iter()
+                    .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
+                    .collect();
+                for combination in combinations(&tried) {
+                    let same = full_path(info, &r, &tried, &combination).as_deref() == Some(&steps[..]);
+                    let named = entries.iter().any(|e| {
+                        e.algorithm == info.id
+                            && e.options.iter().all(|(name, value)| {
+                                tried.iter().zip(&combination).any(|((spec, _), v)| spec.name == name && v.as_ref() == Some(value))
+                            })
+                    });
+                    prop_assert_eq!(same, named, "{}: {:?} in {:?}", info.id, combination, entries);
+                }
             }
         }
     }
