@@ -214,6 +214,36 @@ const PLAIN_DIGITS: usize = 15;
 /// has k, x, y, z and the M column).
 const PLAIN_CELLS: usize = 8;
 
+/// 10^0 to 10^8.
+const POWERS_OF_TEN: [i64; 9] = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000];
+
+/// The ASCII digits that start `word` (eight bytes of text, the first in
+/// the lowest byte): how many (0 to 8), and the number they write. A loop
+/// over the bytes would take a multiply and an add per digit, one after
+/// the other; this takes a dozen operations on the whole word ("SWAR").
+#[inline(always)]
+fn leading_digits(word: u64) -> (usize, i64) {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    // Each byte minus '0' is below 10 for a digit. A byte below '0' wraps
+    // to 0x80 or more (it may borrow from the bytes above it, which are
+    // past the first non-digit and not looked at); a byte above '9' is 10
+    // or more, and 10 + 0x76 sets the top bit. Digits carry nothing.
+    let less = word.wrapping_sub(ONES * b'0' as u64);
+    let not_digit = (less | less.wrapping_add(ONES * 0x76)) & (ONES * 0x80);
+    let count = (not_digit.trailing_zeros() / 8) as usize;
+    if count == 0 {
+        return (0, 0);
+    }
+    // The digits moved to the top bytes, zeros (leading zeros) below, then
+    // pairs, fours and the eight combined: d0 * 10 + d1, ... (the first
+    // digit is the most significant).
+    let digits = (less << (8 * (8 - count))) & (ONES * 0x0f);
+    let pairs = (digits.wrapping_mul(10 << 8 | 1) >> 8) & 0x00ff_00ff_00ff_00ff;
+    let fours = (pairs.wrapping_mul(100 << 16 | 1) >> 16) & 0x0000_ffff_0000_ffff;
+    let eight = fours.wrapping_mul(10_000 << 32 | 1) >> 32;
+    (count, eight as i64)
+}
+
 /// The bytes that separate cells within a line ([`split_cells`]).
 fn is_separator(byte: u8) -> bool {
     matches!(byte, b',' | b';' | b' ' | b'\t')
@@ -316,12 +346,22 @@ impl TextReader {
             }
             let digits = i;
             let mut value = 0i64;
-            while i < bytes.len() && bytes[i].is_ascii_digit() && i - digits < PLAIN_DIGITS {
+            // Eight bytes at a time while eight are left ([`leading_digits`]).
+            while let Some(word) = bytes.get(i..i + 8) {
+                let word = u64::from_le_bytes(word.try_into().expect("eight bytes"));
+                let (count, run) = leading_digits(word);
+                value = value * POWERS_OF_TEN[count] + run;
+                i += count;
+                if count < 8 || i - digits > PLAIN_DIGITS {
+                    break;
+                }
+            }
+            while i < bytes.len() && bytes[i].is_ascii_digit() && i - digits <= PLAIN_DIGITS {
                 value = value * 10 + i64::from(bytes[i] - b'0');
                 i += 1;
             }
             let ends = i == bytes.len() || is_separator(bytes[i]) || is_line_break(bytes[i]);
-            if i == digits || !ends || count == PLAIN_CELLS {
+            if i == digits || i - digits > PLAIN_DIGITS || !ends || count == PLAIN_CELLS {
                 return None;
             }
             cells[count] = if negative { -value } else { value };
