@@ -94,7 +94,13 @@ impl Points {
     /// `(...)`, as programs print lists. Errors give the line and column,
     /// and name the point index.
     pub fn from_text(text: &str, dims: usize) -> Result<Points, Error> {
-        let mut reader = TextReader::new(dims);
+        Self::read_text(text, dims, false).map(|(points, _)| points)
+    }
+
+    /// [`Self::from_text`], and when `with_steps`, the points' steps
+    /// ([`Self::steps`]) made as the rows are read, not in a second pass.
+    fn read_text(text: &str, dims: usize, with_steps: bool) -> Result<(Points, Option<Arc<[Step]>>), Error> {
+        let mut reader = TextReader::new(dims, with_steps);
         // Text with a bracket anywhere is a printed list. Plain rows have
         // none, so the rows are read until a line with one shows (then the
         // list is read from the start), and an error before it stands only
@@ -105,7 +111,7 @@ impl Points {
             Err(e) => return Err(e),
         };
         if listed {
-            reader = TextReader::new(dims);
+            reader = TextReader::new(dims, with_steps);
             reader.bracket_rows(text)?;
         }
         if reader.points == 0 {
@@ -118,19 +124,14 @@ impl Points {
         };
         match first_jump {
             Some((index, line, column)) => Err(Error::at(line, column, points.jump(index))),
-            None => Ok(points),
+            None => Ok((points, reader.steps.map(Arc::from))),
         }
     }
 
     /// The step from each point to the next (a path: see [`Self::check_path`]).
     pub fn steps(&self) -> Arc<[Step]> {
         (1..self.len())
-            .map(|k| {
-                let (before, now) = (self.get(k - 1), self.get(k));
-                (0..self.dims).fold(Step::NONE, |step, axis| {
-                    step.with(axis, now[axis] - before[axis])
-                })
-            })
+            .map(|k| step_between(self.get(k - 1), self.get(k)))
             .collect()
     }
 
@@ -155,6 +156,11 @@ impl Points {
             Point::new(self.get(k - 1))
         )
     }
+}
+
+/// The step from `before` to `now`, at most one cell apart on each axis.
+fn step_between(before: &[i64], now: &[i64]) -> Step {
+    (0..before.len()).fold(Step::NONE, |step, axis| step.with(axis, now[axis] - before[axis]))
 }
 
 /// Whether `now` is more than one cell from `before` on some axis.
@@ -192,6 +198,9 @@ struct TextReader {
     /// reported once the whole text has been read, so that a row that is
     /// not a point is named first, wherever it is.
     first_jump: Option<(u64, u32, u32)>,
+    /// The step to each point from the one before, when asked for (and
+    /// only up to the first jump, after which there is no path).
+    steps: Option<Vec<Step>>,
 }
 
 /// The brackets that make text a printed list of points.
@@ -255,17 +264,18 @@ fn is_line_break(byte: u8) -> bool {
 }
 
 impl TextReader {
-    fn new(dims: usize) -> TextReader {
+    fn new(dims: usize, with_steps: bool) -> TextReader {
         TextReader {
             dims,
             coords: Vec::new(),
             points: 0,
             first_jump: None,
+            steps: with_steps.then(Vec::new),
         }
     }
 
     /// Counts the point just appended to `coords`, written at `line` from
-    /// `column`, and notes it if it is the first to jump.
+    /// `column`, and notes it if it is the first to jump; else its step.
     fn point_added(&mut self, line: u32, column: u32) {
         let index = self.points;
         self.points += 1;
@@ -274,6 +284,8 @@ impl TextReader {
             let (before, now) = self.coords[end - 2 * self.dims..].split_at(self.dims);
             if jumps(before, now) {
                 self.first_jump = Some((index, line, column));
+            } else if let Some(steps) = &mut self.steps {
+                steps.push(step_between(before, now));
             }
         }
     }
@@ -612,8 +624,9 @@ pub struct Check {
 pub fn check_text(request_json: &str, text: &str) -> Result<Check, Error> {
     let request = Request::from_json(request_json)?;
     let trace = crate::algorithms::run(&request)?;
-    let points = Points::from_text(text, trace.dims())?;
-    Ok(check_trace(&request, &trace, &points))
+    let (points, steps) = Points::read_text(text, trace.dims(), true)?;
+    let steps = steps.expect("asked for with the points");
+    Ok(check_with_steps(&request, &trace, &points, &steps))
 }
 
 /// Checks flat points (`dims` per point) against the request as JSON text.
@@ -626,17 +639,20 @@ pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Che
 
 /// Checks points against the trace of `request` (already run).
 pub fn check_trace(request: &Request, trace: &Trace, points: &Points) -> Check {
-    // The points' steps, made once: the rule's path is compared with them,
-    // and every candidate of alsoMatches follows them.
-    let steps = points.steps();
-    let first_difference = first_difference(trace, points, &steps);
+    check_with_steps(request, trace, points, &points.steps())
+}
+
+/// [`check_trace`] with the points' steps, made once: the rule's path is
+/// compared with them, and every candidate of alsoMatches follows them.
+fn check_with_steps(request: &Request, trace: &Trace, points: &Points, steps: &Arc<[Step]>) -> Check {
+    let first_difference = first_difference(trace, points, steps);
     Check {
         matches: first_difference.is_none(),
         algorithm: trace.algorithm.clone(),
         steps: trace.steps(),
         your_steps: points.len() - 1,
         first_difference,
-        also_matches: also_matches(request, points, &steps),
+        also_matches: also_matches(request, points, steps),
     }
 }
 
@@ -1356,6 +1372,12 @@ mod tests {
                 line_and_message(Points::from_text(&write(""), dims)),
                 line_and_message(Points::from_text(&write("\""), dims))
             );
+            // The steps made while reading are the points' steps.
+            for quote in ["", "\""] {
+                if let Ok((points, steps)) = Points::read_text(&write(quote), dims, true) {
+                    prop_assert_eq!(steps, Some(points.steps()));
+                }
+            }
         }
     }
 
