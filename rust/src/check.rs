@@ -20,6 +20,8 @@ use crate::compare::{StepWhy, as_object, why_at_point};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::line::GCD;
+use crate::line::bresenham3d;
+use crate::request::tie_option;
 use crate::line::liu_float::{self, DECIMALS};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
 use crate::text::{echo, split_line};
@@ -768,6 +770,9 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
     };
     let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
     let mut out = Vec::new();
+    // The combinations traced so far, by algorithm, each with whether it
+    // matched, for those whose path is known to be the path of one of them.
+    let mut traced: Vec<(&str, Vec<Option<Value>>, bool)> = Vec::new();
     for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
         let tried: Vec<(&OptionSpec, Vec<Value>)> = info
             .options
@@ -785,9 +790,6 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
             base.insert(MAX_STEPS.name.to_string(), Value::from(max_steps));
         }
         let mut matched: Vec<Vec<Option<Value>>> = Vec::new();
-        // The combinations traced so far, each with whether it matched, for
-        // those whose path is known to be the path of an earlier one.
-        let mut traced: Vec<(Vec<Option<Value>>, bool)> = Vec::new();
         let mut choice = vec![0usize; tried.len()];
         loop {
             let mut combination: Vec<Option<Value>> = tried
@@ -795,11 +797,11 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
                 .zip(&choice)
                 .map(|((_, values), &i)| Some(values[i].clone()))
                 .collect();
-            let known = same_path_as(info, request, &tried, &combination).and_then(|earlier| {
+            let known = same_path_as(info, request, &tried, &combination).and_then(|(id, earlier)| {
                 traced
                     .iter()
-                    .find(|(c, _)| *c == earlier)
-                    .map(|&(_, path_follows)| path_follows)
+                    .find(|(i, c, _)| *i == id && *c == earlier)
+                    .map(|&(_, _, path_follows)| path_follows)
             });
             let path_follows = known.unwrap_or_else(|| {
                 let asked = combination.clone();
@@ -807,7 +809,7 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
                     .is_some_and(|trace| follows(&trace, points, steps));
                 // Only a combination traced as asked stands for another.
                 if combination == asked {
-                    traced.push((asked, path_follows));
+                    traced.push((info.id, asked, path_follows));
                 }
                 path_follows
             });
@@ -823,40 +825,66 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
     out
 }
 
-/// A combination earlier in the odometer's order (each option's values in
-/// their declared order) whose path is this combination's on the request's
-/// line, known without tracing either; None when there is none. `gcd`
-/// never changes a path (Wang section 4, [`crate::line::Mirror::divisor`]),
-/// so gcd = true has the path of gcd = false; and liu-float's path is the
-/// same at every `decimals` from [`liu_float::exact_decimals`] up (the
-/// argument is there). Either way, the combination follows the points
-/// exactly when the earlier one does: alsoMatches does not trace the same
-/// path twice, and is what it would be if it did (property-tested).
+/// The name of the `tie` option.
+const TIE: &str = tie_option("advance").name;
+
+/// A combination traced before this one (an algorithm earlier in the
+/// catalogue, or a combination earlier in the odometer's order, each
+/// option's values in their declared order) whose path is this
+/// combination's on the request's line, known without tracing either; None
+/// when there is none. `gcd` never changes a path (Wang section 4,
+/// [`crate::line::Mirror::divisor`]), so gcd = true has the path of
+/// gcd = false. liu-float's epsilon is exactly Liu's rule in exact
+/// arithmetic at every `decimals` from [`liu_float::exact_decimals`] up
+/// (the argument is there): epsilon = M / 2|Δactive|, M Wang's discriminant
+/// (eq. 6), and a passive axis steps when epsilon > 0, a tie (0) going to
+/// the tie policy. That is bresenham3d's rule: Saleem's error, 2|Δa| added
+/// each step and 2|Δmajor| taken off when the axis steps, exceeds
+/// |Δmajor| exactly when M > 0, and a tie goes to the same policy (an axis
+/// as long as the major one steps every time under both). So those have
+/// bresenham3d's path with the same tie. Either way, the combination
+/// follows the points exactly when the one it is paired with does:
+/// alsoMatches does not trace the same path twice, and is what it would be
+/// if it did (property-tested, full paths compared).
 fn same_path_as(
     info: &AlgorithmInfo,
     request: &Request,
     tried: &[(&OptionSpec, Vec<Value>)],
     combination: &[Option<Value>],
-) -> Option<Vec<Option<Value>>> {
-    let exact_decimals = || {
-        let (from, to) = (request.point(FROM.name).ok()?, request.point(TO.name).ok()?);
-        (from.dims() == to.dims()).then(|| liu_float::exact_decimals(from, to))?
+) -> Option<(&'static str, Vec<Option<Value>>)> {
+    let value_of = |name: &str| {
+        tried
+            .iter()
+            .zip(combination)
+            .find(|((spec, _), _)| spec.name == name)
+            .and_then(|(_, value)| value.clone())
     };
+    if info.id == liu_float::ID {
+        let (from, to) = (request.point(FROM.name).ok()?, request.point(TO.name).ok()?);
+        let exact = (from.dims() == to.dims()).then(|| liu_float::exact_decimals(from, to))??;
+        if value_of(DECIMALS.name)?.as_i64()? < i64::from(exact) {
+            return None;
+        }
+        let tie = value_of(TIE)?;
+        let earlier = bresenham3d::INFO
+            .options
+            .iter()
+            .filter(|spec| tried_values(spec).is_some())
+            .map(|spec| match spec.name {
+                TIE => Some(Some(tie.clone())),
+                name if name == GCD.name => Some(Some(Value::from(false))),
+                _ => None,
+            })
+            .collect::<Option<Vec<_>>>()?;
+        return Some((bresenham3d::ID, earlier));
+    }
     let mut earlier = combination.to_vec();
     for ((spec, _), value) in tried.iter().zip(earlier.iter_mut()) {
         if spec.name == GCD.name && *value == Some(Value::from(true)) {
             *value = Some(Value::from(false));
         }
-        if info.id == liu_float::ID && spec.name == DECIMALS.name {
-            let asked = value.as_ref().and_then(Value::as_i64);
-            if let (Some(asked), Some(exact)) = (asked, exact_decimals())
-                && asked > i64::from(exact)
-            {
-                *value = Some(Value::from(exact));
-            }
-        }
     }
-    (earlier != combination).then_some(earlier)
+    (earlier != combination).then_some((info.id, earlier))
 }
 
 /// Traces `info` with `base` and the combination's values, following
@@ -1269,14 +1297,24 @@ mod tests {
                     .collect();
                 let all = combinations(&tried);
                 for (at, combination) in all.iter().enumerate() {
-                    let Some(earlier) = same_path_as(info, &base, &tried, combination) else {
+                    let Some((id, earlier)) = same_path_as(info, &base, &tried, combination) else {
                         continue;
                     };
-                    prop_assert!(all[..at].contains(&earlier), "{}: {:?} pairs with a later {:?}", info.id, combination, earlier);
+                    let position = |id| algorithms::ALGORITHMS.iter().position(|a| a.id == id);
+                    let other = algorithms::find(id).unwrap();
+                    let other_tried: Vec<(&OptionSpec, Vec<Value>)> = other
+                        .options
+                        .iter()
+                        .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
+                        .collect();
+                    prop_assert!(
+                        position(id) < position(info.id) || (id == info.id && all[..at].contains(&earlier)),
+                        "{}: {:?} pairs with a later {} {:?}", info.id, combination, id, earlier
+                    );
                     prop_assert_eq!(
                         full_path(info, &base, &tried, combination),
-                        full_path(info, &base, &tried, &earlier),
-                        "{}: {:?} and {:?}", info.id, combination, earlier
+                        full_path(other, &base, &other_tried, &earlier),
+                        "{}: {:?} and {} {:?}", info.id, combination, id, earlier
                     );
                 }
             }
