@@ -3,7 +3,7 @@
 // checked against regions), the exercise's deliberate bug, and bad input.
 import { expect as jestExpect } from 'expect';
 import { describe, expect, it } from 'vitest';
-import { checkPoints, checkToTable, trace } from '../web/core/index.js';
+import { checkPoints, checkToTable, readPoints, trace } from '../web/core/index.js';
 import { voxpathMatchers } from '../web/core/vitest.js';
 import type { VoxpathMatchers } from '../web/core/vitest.js';
 import { bresenham3d } from '../examples/exercise-bresenham3d/bresenham3d.js';
@@ -59,6 +59,17 @@ describe('checkPoints', () => {
       'line 2, column 3: point 1: y = 1.5 is not a whole number',
     );
     expect((await rejection(checkPoints(REGIONS, [[0, 0, 0], [1, 1]]))).field).toBe('points');
+  });
+
+  it('reads text beyond ASCII as it reads ASCII (more UTF-8 bytes than characters)', async () => {
+    const { rows, csv } = await holdPath();
+    // A comment of 2-, 3- and 4-byte characters (the last two UTF-16 units) first.
+    const text = '# pointés → 🎯\n' + csv;
+    const plain = await checkPoints(REGIONS, csv);
+    expect(await checkPoints(REGIONS, text)).toEqual(plain);
+    expect(await readPoints(text, 3)).toEqual(Float64Array.from(rows.flat()));
+    // A cell beyond ASCII is named with its line and column, in characters as written.
+    expect((await rejection(checkPoints(REGIONS, '0,0,0\n1,é,1\n'))).message).toBe("line 2, column 3: point 1: y = 'é' is not a number");
   });
 });
 

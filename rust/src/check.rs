@@ -19,7 +19,11 @@ use crate::algorithms::{self, AlgorithmInfo, Family};
 use crate::compare::{StepWhy, as_object, why_at_point};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::request::{MAX_STEPS, OptionKind, OptionSpec, Request};
+use crate::line::GCD;
+use crate::line::bresenham3d;
+use crate::request::tie_option;
+use crate::line::liu_float::{self, DECIMALS};
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
 use crate::text::{echo, split_line};
 use crate::trace::Trace;
 use serde::Serialize;
@@ -92,7 +96,13 @@ impl Points {
     /// `(...)`, as programs print lists. Errors give the line and column,
     /// and name the point index.
     pub fn from_text(text: &str, dims: usize) -> Result<Points, Error> {
-        let mut reader = TextReader::new(dims);
+        Self::read_text(text, dims, false).map(|(points, _)| points)
+    }
+
+    /// [`Self::from_text`], and when `with_steps`, the points' steps
+    /// ([`Self::steps`]) made as the rows are read, not in a second pass.
+    fn read_text(text: &str, dims: usize, with_steps: bool) -> Result<(Points, Option<Arc<[Step]>>), Error> {
+        let mut reader = TextReader::new(dims, with_steps);
         // Text with a bracket anywhere is a printed list. Plain rows have
         // none, so the rows are read until a line with one shows (then the
         // list is read from the start), and an error before it stands only
@@ -103,7 +113,7 @@ impl Points {
             Err(e) => return Err(e),
         };
         if listed {
-            reader = TextReader::new(dims);
+            reader = TextReader::new(dims, with_steps);
             reader.bracket_rows(text)?;
         }
         if reader.points == 0 {
@@ -116,19 +126,14 @@ impl Points {
         };
         match first_jump {
             Some((index, line, column)) => Err(Error::at(line, column, points.jump(index))),
-            None => Ok(points),
+            None => Ok((points, reader.steps.map(Arc::from))),
         }
     }
 
     /// The step from each point to the next (a path: see [`Self::check_path`]).
     pub fn steps(&self) -> Arc<[Step]> {
         (1..self.len())
-            .map(|k| {
-                let (before, now) = (self.get(k - 1), self.get(k));
-                (0..self.dims).fold(Step::NONE, |step, axis| {
-                    step.with(axis, now[axis] - before[axis])
-                })
-            })
+            .map(|k| step_between(self.get(k - 1), self.get(k)))
             .collect()
     }
 
@@ -153,6 +158,11 @@ impl Points {
             Point::new(self.get(k - 1))
         )
     }
+}
+
+/// The step from `before` to `now`, at most one cell apart on each axis.
+fn step_between(before: &[i64], now: &[i64]) -> Step {
+    (0..before.len()).fold(Step::NONE, |step, axis| step.with(axis, now[axis] - before[axis]))
 }
 
 /// Whether `now` is more than one cell from `before` on some axis.
@@ -190,6 +200,9 @@ struct TextReader {
     /// reported once the whole text has been read, so that a row that is
     /// not a point is named first, wherever it is.
     first_jump: Option<(u64, u32, u32)>,
+    /// The step to each point from the one before, when asked for (and
+    /// only up to the first jump, after which there is no path).
+    steps: Option<Vec<Step>>,
 }
 
 /// The brackets that make text a printed list of points.
@@ -212,6 +225,36 @@ const PLAIN_DIGITS: usize = 15;
 /// has k, x, y, z and the M column).
 const PLAIN_CELLS: usize = 8;
 
+/// 10^0 to 10^8.
+const POWERS_OF_TEN: [i64; 9] = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000];
+
+/// The ASCII digits that start `word` (eight bytes of text, the first in
+/// the lowest byte): how many (0 to 8), and the number they write. A loop
+/// over the bytes would take a multiply and an add per digit, one after
+/// the other; this takes a dozen operations on the whole word ("SWAR").
+#[inline(always)]
+fn leading_digits(word: u64) -> (usize, i64) {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    // Each byte minus '0' is below 10 for a digit. A byte below '0' wraps
+    // to 0x80 or more (it may borrow from the bytes above it, which are
+    // past the first non-digit and not looked at); a byte above '9' is 10
+    // or more, and 10 + 0x76 sets the top bit. Digits carry nothing.
+    let less = word.wrapping_sub(ONES * b'0' as u64);
+    let not_digit = (less | less.wrapping_add(ONES * 0x76)) & (ONES * 0x80);
+    let count = (not_digit.trailing_zeros() / 8) as usize;
+    if count == 0 {
+        return (0, 0);
+    }
+    // The digits moved to the top bytes, zeros (leading zeros) below, then
+    // pairs, fours and the eight combined: d0 * 10 + d1, ... (the first
+    // digit is the most significant).
+    let digits = (less << (8 * (8 - count))) & (ONES * 0x0f);
+    let pairs = (digits.wrapping_mul(10 << 8 | 1) >> 8) & 0x00ff_00ff_00ff_00ff;
+    let fours = (pairs.wrapping_mul(100 << 16 | 1) >> 16) & 0x0000_ffff_0000_ffff;
+    let eight = fours.wrapping_mul(10_000 << 32 | 1) >> 32;
+    (count, eight as i64)
+}
+
 /// The bytes that separate cells within a line ([`split_cells`]).
 fn is_separator(byte: u8) -> bool {
     matches!(byte, b',' | b';' | b' ' | b'\t')
@@ -223,17 +266,18 @@ fn is_line_break(byte: u8) -> bool {
 }
 
 impl TextReader {
-    fn new(dims: usize) -> TextReader {
+    fn new(dims: usize, with_steps: bool) -> TextReader {
         TextReader {
             dims,
             coords: Vec::new(),
             points: 0,
             first_jump: None,
+            steps: with_steps.then(Vec::new),
         }
     }
 
     /// Counts the point just appended to `coords`, written at `line` from
-    /// `column`, and notes it if it is the first to jump.
+    /// `column`, and notes it if it is the first to jump; else its step.
     fn point_added(&mut self, line: u32, column: u32) {
         let index = self.points;
         self.points += 1;
@@ -242,6 +286,8 @@ impl TextReader {
             let (before, now) = self.coords[end - 2 * self.dims..].split_at(self.dims);
             if jumps(before, now) {
                 self.first_jump = Some((index, line, column));
+            } else if let Some(steps) = &mut self.steps {
+                steps.push(step_between(before, now));
             }
         }
     }
@@ -314,12 +360,22 @@ impl TextReader {
             }
             let digits = i;
             let mut value = 0i64;
-            while i < bytes.len() && bytes[i].is_ascii_digit() && i - digits < PLAIN_DIGITS {
+            // Eight bytes at a time while eight are left ([`leading_digits`]).
+            while let Some(word) = bytes.get(i..i + 8) {
+                let word = u64::from_le_bytes(word.try_into().expect("eight bytes"));
+                let (count, run) = leading_digits(word);
+                value = value * POWERS_OF_TEN[count] + run;
+                i += count;
+                if count < 8 || i - digits > PLAIN_DIGITS {
+                    break;
+                }
+            }
+            while i < bytes.len() && bytes[i].is_ascii_digit() && i - digits <= PLAIN_DIGITS {
                 value = value * 10 + i64::from(bytes[i] - b'0');
                 i += 1;
             }
             let ends = i == bytes.len() || is_separator(bytes[i]) || is_line_break(bytes[i]);
-            if i == digits || !ends || count == PLAIN_CELLS {
+            if i == digits || i - digits > PLAIN_DIGITS || !ends || count == PLAIN_CELLS {
                 return None;
             }
             cells[count] = if negative { -value } else { value };
@@ -570,8 +626,9 @@ pub struct Check {
 pub fn check_text(request_json: &str, text: &str) -> Result<Check, Error> {
     let request = Request::from_json(request_json)?;
     let trace = crate::algorithms::run(&request)?;
-    let points = Points::from_text(text, trace.dims())?;
-    Ok(check_trace(&request, &trace, &points))
+    let (points, steps) = Points::read_text(text, trace.dims(), true)?;
+    let steps = steps.expect("asked for with the points");
+    Ok(check_with_steps(&request, &trace, &points, &steps))
 }
 
 /// Checks flat points (`dims` per point) against the request as JSON text.
@@ -584,17 +641,20 @@ pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Che
 
 /// Checks points against the trace of `request` (already run).
 pub fn check_trace(request: &Request, trace: &Trace, points: &Points) -> Check {
-    // The points' steps, made once: the rule's path is compared with them,
-    // and every candidate of alsoMatches follows them.
-    let steps = points.steps();
-    let first_difference = first_difference(trace, points, &steps);
+    check_with_steps(request, trace, points, &points.steps())
+}
+
+/// [`check_trace`] with the points' steps, made once: the rule's path is
+/// compared with them, and every candidate of alsoMatches follows them.
+fn check_with_steps(request: &Request, trace: &Trace, points: &Points, steps: &Arc<[Step]>) -> Check {
+    let first_difference = first_difference(trace, points, steps);
     Check {
         matches: first_difference.is_none(),
         algorithm: trace.algorithm.clone(),
         steps: trace.steps(),
         your_steps: points.len() - 1,
         first_difference,
-        also_matches: also_matches(request, points, &steps),
+        also_matches: also_matches(request, points, steps),
     }
 }
 
@@ -710,6 +770,9 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
     };
     let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
     let mut out = Vec::new();
+    // The combinations traced so far, by algorithm, each with whether it
+    // matched, for those whose path is known to be the path of one of them.
+    let mut traced: Vec<(&str, Vec<Option<Value>>, bool)> = Vec::new();
     for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
         let tried: Vec<(&OptionSpec, Vec<Value>)> = info
             .options
@@ -734,10 +797,23 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
                 .zip(&choice)
                 .map(|((_, values), &i)| Some(values[i].clone()))
                 .collect();
-            if let Some(trace) = trace_combination(info, &base, &tried, steps, &mut combination)
-                && follows(&trace, points, steps)
-                && !matched.contains(&combination)
-            {
+            let known = same_path_as(info, request, &tried, &combination).and_then(|(id, earlier)| {
+                traced
+                    .iter()
+                    .find(|(i, c, _)| *i == id && *c == earlier)
+                    .map(|&(_, _, path_follows)| path_follows)
+            });
+            let path_follows = known.unwrap_or_else(|| {
+                let asked = combination.clone();
+                let path_follows = trace_combination(info, &base, &tried, steps, &mut combination)
+                    .is_some_and(|trace| follows(&trace, points, steps));
+                // Only a combination traced as asked stands for another.
+                if combination == asked {
+                    traced.push((info.id, asked, path_follows));
+                }
+                path_follows
+            });
+            if path_follows && !matched.contains(&combination) {
                 matched.push(combination);
             }
             if !next_combination(&mut choice, &tried) {
@@ -747,6 +823,68 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
         out.extend(describe_matches(info, &tried, matched));
     }
     out
+}
+
+/// The name of the `tie` option.
+const TIE: &str = tie_option("advance").name;
+
+/// A combination traced before this one (an algorithm earlier in the
+/// catalogue, or a combination earlier in the odometer's order, each
+/// option's values in their declared order) whose path is this
+/// combination's on the request's line, known without tracing either; None
+/// when there is none. `gcd` never changes a path (Wang section 4,
+/// [`crate::line::Mirror::divisor`]), so gcd = true has the path of
+/// gcd = false. liu-float's epsilon is exactly Liu's rule in exact
+/// arithmetic at every `decimals` from [`liu_float::exact_decimals`] up
+/// (the argument is there): epsilon = M / 2|Δactive|, M Wang's discriminant
+/// (eq. 6), and a passive axis steps when epsilon > 0, a tie (0) going to
+/// the tie policy. That is bresenham3d's rule: Saleem's error, 2|Δa| added
+/// each step and 2|Δmajor| taken off when the axis steps, exceeds
+/// |Δmajor| exactly when M > 0, and a tie goes to the same policy (an axis
+/// as long as the major one steps every time under both). So those have
+/// bresenham3d's path with the same tie. Either way, the combination
+/// follows the points exactly when the one it is paired with does:
+/// alsoMatches does not trace the same path twice, and is what it would be
+/// if it did (property-tested, full paths compared).
+fn same_path_as(
+    info: &AlgorithmInfo,
+    request: &Request,
+    tried: &[(&OptionSpec, Vec<Value>)],
+    combination: &[Option<Value>],
+) -> Option<(&'static str, Vec<Option<Value>>)> {
+    let value_of = |name: &str| {
+        tried
+            .iter()
+            .zip(combination)
+            .find(|((spec, _), _)| spec.name == name)
+            .and_then(|(_, value)| value.clone())
+    };
+    if info.id == liu_float::ID {
+        let (from, to) = (request.point(FROM.name).ok()?, request.point(TO.name).ok()?);
+        let exact = (from.dims() == to.dims()).then(|| liu_float::exact_decimals(from, to))??;
+        if value_of(DECIMALS.name)?.as_i64()? < i64::from(exact) {
+            return None;
+        }
+        let tie = value_of(TIE)?;
+        let earlier = bresenham3d::INFO
+            .options
+            .iter()
+            .filter(|spec| tried_values(spec).is_some())
+            .map(|spec| match spec.name {
+                TIE => Some(Some(tie.clone())),
+                name if name == GCD.name => Some(Some(Value::from(false))),
+                _ => None,
+            })
+            .collect::<Option<Vec<_>>>()?;
+        return Some((bresenham3d::ID, earlier));
+    }
+    let mut earlier = combination.to_vec();
+    for ((spec, _), value) in tried.iter().zip(earlier.iter_mut()) {
+        if spec.name == GCD.name && *value == Some(Value::from(true)) {
+            *value = Some(Value::from(false));
+        }
+    }
+    (earlier != combination).then_some((info.id, earlier))
 }
 
 /// Traces `info` with `base` and the combination's values, following
@@ -1079,6 +1217,149 @@ mod tests {
         }
     }
 
+    /// Every combination of tried values of `info`, as odometer order gives them.
+    fn combinations(tried: &[(&OptionSpec, Vec<Value>)]) -> Vec<Vec<Option<Value>>> {
+        let mut out = Vec::new();
+        let mut choice = vec![0usize; tried.len()];
+        loop {
+            out.push(
+                tried
+                    .iter()
+                    .zip(&choice)
+                    .map(|((_, values), &i)| Some(values[i].clone()))
+                    .collect(),
+            );
+            if !next_combination(&mut choice, tried) {
+                return out;
+            }
+        }
+    }
+
+    /// The full path (steps, not following any) of `info` on `base`'s line
+    /// with the combination's values, or None where it does not trace.
+    fn full_path(
+        info: &AlgorithmInfo,
+        base: &Request,
+        tried: &[(&OptionSpec, Vec<Value>)],
+        combination: &[Option<Value>],
+    ) -> Option<Vec<Step>> {
+        let mut options = Map::new();
+        for name in [FROM.name, TO.name] {
+            options.insert(name.to_string(), base.options()[name].clone());
+        }
+        for ((spec, _), value) in tried.iter().zip(combination) {
+            options.insert(spec.name.to_string(), value.clone()?);
+        }
+        let trace = (info.trace)(&Request::new(info.id, options), algorithms::find).ok()?;
+        Some(trace.step_range(0, trace.steps()).to_vec())
+    }
+
+    /// A move's end: a round longest distance (10, 25, 1000, ... whose
+    /// slopes are short decimals) or any, the other axes anywhere up to it,
+    /// in any order and direction.
+    fn line_end() -> impl Strategy<Value = Vec<i64>> {
+        (
+            prop_oneof![
+                proptest::sample::select(vec![1i64, 2, 4, 5, 8, 10, 16, 20, 25, 40, 50, 64, 80, 100, 125, 200, 250, 1000]),
+                1i64..300,
+            ],
+            0.0f64..=1.0,
+            0.0f64..=1.0,
+            0usize..3,
+            proptest::collection::vec(proptest::bool::ANY, 3),
+        )
+            .prop_map(|(n, a, b, major, negative)| {
+                let mut end = vec![n, (a * n as f64).round() as i64, (b * n as f64).round() as i64];
+                end.swap(0, major);
+                for (c, &neg) in end.iter_mut().zip(&negative) {
+                    if neg {
+                        *c = -*c;
+                    }
+                }
+                end
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// What alsoMatches takes without tracing is so: on random lines,
+        /// each combination [`same_path_as`] pairs with an earlier one has
+        /// that one's full path, step for step.
+        #[test]
+        fn combinations_paired_without_tracing_have_the_same_path(from in proptest::collection::vec(-50i64..50, 3), end in line_end()) {
+            let to: Vec<i64> = from.iter().zip(&end).map(|(f, e)| f + e).collect();
+            let base = request(&format!(r#"{{"algorithm":"regions","from":{from:?},"to":{to:?}}}"#));
+            for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == Family::Line) {
+                let tried: Vec<(&OptionSpec, Vec<Value>)> = info
+                    .options
+                    .iter()
+                    .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
+                    .collect();
+                let all = combinations(&tried);
+                for (at, combination) in all.iter().enumerate() {
+                    let Some((id, earlier)) = same_path_as(info, &base, &tried, combination) else {
+                        continue;
+                    };
+                    let position = |id| algorithms::ALGORITHMS.iter().position(|a| a.id == id);
+                    let other = algorithms::find(id).unwrap();
+                    let other_tried: Vec<(&OptionSpec, Vec<Value>)> = other
+                        .options
+                        .iter()
+                        .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
+                        .collect();
+                    prop_assert!(
+                        position(id) < position(info.id) || (id == info.id && all[..at].contains(&earlier)),
+                        "{}: {:?} pairs with a later {} {:?}", info.id, combination, id, earlier
+                    );
+                    prop_assert_eq!(
+                        full_path(info, &base, &tried, combination),
+                        full_path(other, &base, &other_tried, &earlier),
+                        "{}: {:?} and {} {:?}", info.id, combination, id, earlier
+                    );
+                }
+            }
+        }
+
+        /// alsoMatches against every combination's full path: on a random
+        /// line, the points of a random rule are matched by an entry for
+        /// exactly the combinations whose full path they are.
+        #[test]
+        fn also_matches_names_every_combination_whose_full_path_is_the_points(
+            end in line_end(),
+            algorithm in proptest::sample::select(vec!["regions", "bresenham3d", "nd", "liu-float", "dda", "greedy", "walk6"]),
+            tie in proptest::sample::select(vec!["advance", "hold"]),
+            decimals in 0i64..=10,
+        ) {
+            let options = match algorithm {
+                "liu-float" => format!(r#","tie":"{tie}","decimals":{decimals}"#),
+                "regions" | "bresenham3d" | "nd" => format!(r#","tie":"{tie}""#),
+                _ => String::new(),
+            };
+            let json = format!(r#"{{"algorithm":"{algorithm}","from":[0,0,0],"to":{end:?}{options}}}"#);
+            let r = request(&json);
+            let points = points_of(&crate::algorithms::run(&r).unwrap());
+            let steps = points.steps();
+            let entries = also_matches(&r, &points, &steps);
+            for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == Family::Line) {
+                let tried: Vec<(&OptionSpec, Vec<Value>)> = info
+                    .options
+                    .iter()
+                    .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
+                    .collect();
+                for combination in combinations(&tried) {
+                    let same = full_path(info, &r, &tried, &combination).as_deref() == Some(&steps[..]);
+                    let named = entries.iter().any(|e| {
+                        e.algorithm == info.id
+                            && e.options.iter().all(|(name, value)| {
+                                tried.iter().zip(&combination).any(|((spec, _), v)| spec.name == name && v.as_ref() == Some(value))
+                            })
+                    });
+                    prop_assert_eq!(same, named, "{}: {:?} in {:?}", info.id, combination, entries);
+                }
+            }
+        }
+    }
+
     /// Where a reading of text failed, without the column: a quoted cell
     /// starts a byte later than the same cell unquoted.
     fn line_and_message(result: Result<Points, Error>) -> Result<Vec<i64>, (String, String)> {
@@ -1129,6 +1410,12 @@ mod tests {
                 line_and_message(Points::from_text(&write(""), dims)),
                 line_and_message(Points::from_text(&write("\""), dims))
             );
+            // The steps made while reading are the points' steps.
+            for quote in ["", "\""] {
+                if let Ok((points, steps)) = Points::read_text(&write(quote), dims, true) {
+                    prop_assert_eq!(steps, Some(points.steps()));
+                }
+            }
         }
     }
 

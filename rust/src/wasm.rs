@@ -99,38 +99,71 @@ fn utf8<'a>(field: &'static str, bytes: &'a [u8]) -> Result<&'a str, JsValue> {
         .map_err(|e| to_js_error(&Error::field(field, format!("is not UTF-8 text: {e}"))))
 }
 
-/// Checks a learner's points against the request (see `check`): `points`
-/// is text as UTF-8 bytes (CSV, blank-separated rows or a printed list,
-/// parsed here and nowhere else) or a flat Int32Array / Float64Array with
-/// `dims` values per point.
+/// Text for the core as UTF-8 bytes in wasm memory, written there by the
+/// caller (`TextEncoder.encodeInto` on [`TextBytes::view`]): a 20 MB text
+/// crosses once, with no JavaScript array of its bytes made and copied in.
+#[wasm_bindgen]
+pub struct TextBytes(Vec<u8>);
+
+#[wasm_bindgen]
+impl TextBytes {
+    /// Room for `capacity` bytes.
+    #[wasm_bindgen(constructor)]
+    pub fn new(capacity: u32) -> TextBytes {
+        TextBytes(vec![0; capacity as usize])
+    }
+
+    /// The bytes as a view into wasm memory, for the caller to write at
+    /// once: a view is detached when wasm memory grows, which any call into
+    /// the core may do.
+    pub fn view(&mut self) -> js_sys::Uint8Array {
+        // SAFETY: the view covers this Vec's own initialised bytes, which
+        // stay where they are until it is truncated or freed; the caller
+        // writes it before its next call into the core (see above).
+        unsafe { js_sys::Uint8Array::view_mut_raw(self.0.as_mut_ptr(), self.0.len()) }
+    }
+
+    /// Keeps the first `len` bytes, the ones written.
+    pub fn truncate(&mut self, len: u32) {
+        self.0.truncate(len as usize);
+    }
+}
+
+/// Checks a learner's points, text (CSV, blank-separated rows or a printed
+/// list, parsed here and nowhere else), against the request (see `check`).
+#[wasm_bindgen(js_name = checkText, unchecked_return_type = "Check")]
+pub fn check_text(request_json: &str, text: &TextBytes) -> Result<JsValue, JsValue> {
+    let check = crate::check::check_text(request_json, utf8("points", &text.0)?)
+        .map_err(|e| to_js_error(&e))?;
+    Ok(to_js(&check))
+}
+
+/// Checks a learner's points, a flat Int32Array / Float64Array with `dims`
+/// values per point, against the request (see `check`).
 #[wasm_bindgen(js_name = check, unchecked_return_type = "Check")]
 pub fn check(
     request_json: &str,
-    #[wasm_bindgen(unchecked_param_type = "Uint8Array | Int32Array | Float64Array")] points: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Int32Array | Float64Array")] points: JsValue,
     dims: Option<u32>,
 ) -> Result<JsValue, JsValue> {
-    let result = if let Some(bytes) = points.dyn_ref::<js_sys::Uint8Array>() {
-        crate::check::check_text(request_json, utf8("points", &bytes.to_vec())?)
+    let values: Vec<f64> = if let Some(ints) = points.dyn_ref::<js_sys::Int32Array>() {
+        ints.to_vec().into_iter().map(f64::from).collect()
+    } else if let Some(floats) = points.dyn_ref::<js_sys::Float64Array>() {
+        floats.to_vec()
     } else {
-        let values: Vec<f64> = if let Some(ints) = points.dyn_ref::<js_sys::Int32Array>() {
-            ints.to_vec().into_iter().map(f64::from).collect()
-        } else if let Some(floats) = points.dyn_ref::<js_sys::Float64Array>() {
-            floats.to_vec()
-        } else {
-            return Err(to_js_error(&Error::field(
-                "points",
-                "expected UTF-8 text (a Uint8Array), an Int32Array or a Float64Array",
-            )));
-        };
-        let dims = dims.ok_or_else(|| {
-            to_js_error(&Error::field(
-                "dims",
-                "missing: give the coordinates per point",
-            ))
-        })?;
-        crate::check::check_flat(request_json, &values, dims as usize)
+        return Err(to_js_error(&Error::field(
+            "points",
+            "expected an Int32Array or a Float64Array",
+        )));
     };
-    let check = result.map_err(|e| to_js_error(&e))?;
+    let dims = dims.ok_or_else(|| {
+        to_js_error(&Error::field(
+            "dims",
+            "missing: give the coordinates per point",
+        ))
+    })?;
+    let check = crate::check::check_flat(request_json, &values, dims as usize)
+        .map_err(|e| to_js_error(&e))?;
     Ok(to_js(&check))
 }
 
@@ -140,18 +173,18 @@ pub fn check(
 /// between the decode and the copy.
 const POINTS_CHUNK_VALUES: usize = 1 << 15;
 
-/// A learner's points read from text (UTF-8 bytes) as `check` reads it (CSV,
+/// A learner's points read from text as `checkText` reads it (CSV,
 /// blank-separated rows or a printed list), `dims` coordinates each, flat:
 /// for a view that draws them beside the rule's path and then checks them
 /// as a flat array, reading the text once. Errors give the line and column.
 #[wasm_bindgen(js_name = readPoints)]
-pub fn read_points(text: &[u8], dims: u32) -> Result<Vec<f64>, JsValue> {
+pub fn read_points(text: &TextBytes, dims: u32) -> Result<Vec<f64>, JsValue> {
     let axes = crate::grid::AXIS_NAMES.len();
     if dims == 0 || dims as usize > axes {
         let message = format!("{dims} coordinates per point; expected 1 to {axes}");
         return Err(to_js_error(&Error::field("dims", message)));
     }
-    let points = crate::check::Points::from_text(utf8("text", text)?, dims as usize)
+    let points = crate::check::Points::from_text(utf8("text", &text.0)?, dims as usize)
         .map_err(|e| to_js_error(&e))?;
     // Exact: the reader refuses coordinates past 2^53.
     Ok(points.coords.iter().map(|&c| c as f64).collect())

@@ -16,9 +16,9 @@ import { AXIS_NAMES } from './axes.js';
 import { callCore } from './errors.js';
 import { argumentError, describeValue, text as guardText, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
-import type { Check } from './pkg/voxpath.js';
+import type { Check, TextBytes } from './pkg/voxpath.js';
 import type { TraceOptions } from './types.js';
-import { loadCore } from './wasm.js';
+import { type CoreBindings, loadCore } from './wasm.js';
 
 /**
  * A learner's points: rows of [x, y, z] (or [x, y] ...), a flat Int32Array (or Float64Array)
@@ -33,12 +33,32 @@ export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Arra
 export type { AlsoMatch, AroundRow, Check, DifferenceKind, Difference as CheckDifference } from './pkg/voxpath.js';
 
 /**
- * Text goes to the core as UTF-8 bytes: one native encoding and one copy
- * into wasm memory, where passing the string itself re-encodes it a
- * character at a time in JavaScript (for a 20 MB CSV, longer than the core
- * takes to read it).
+ * Text goes to the core as UTF-8 bytes, encoded natively straight into wasm
+ * memory (`encodeInto` on the core's TextBytes): passing the string itself
+ * re-encodes it a character at a time in JavaScript, and `encode` makes a
+ * JavaScript array of the bytes that is then copied in (for a 20 MB CSV,
+ * each longer than the encoding).
  */
 const utf8 = new TextEncoder();
+
+/** `text` as UTF-8 in wasm memory, for `use`; freed after it. */
+function withTextBytes<T>(core: CoreBindings, text: string, use: (bytes: TextBytes) => T): T {
+  // Room for one byte a character, enough for ASCII text; else for three,
+  // the most UTF-8 takes for one UTF-16 unit.
+  let bytes = new core.TextBytes(text.length);
+  let written = utf8.encodeInto(text, bytes.view());
+  if (written.read < text.length) {
+    bytes.free();
+    bytes = new core.TextBytes(3 * text.length);
+    written = utf8.encodeInto(text, bytes.view());
+  }
+  try {
+    bytes.truncate(written.written);
+    return use(bytes);
+  } finally {
+    bytes.free();
+  }
+}
 
 /** Rows of numbers as one flat array, for the core; a row that is not one, or of another length, is named by index. */
 function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number } {
@@ -66,9 +86,12 @@ function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number
  */
 export async function checkPoints(request: TraceOptions, points: LearnerPoints): Promise<Check> {
   const json = encodeRequest(request);
-  let given: { values: Uint8Array | Int32Array | Float64Array; dims?: number };
-  if (typeof points === 'string') given = { values: utf8.encode(points) };
-  else if (Array.isArray(points)) given = flatten(points);
+  if (typeof points === 'string') {
+    const core = await loadCore();
+    return callCore(() => withTextBytes(core, points, (bytes) => core.checkText(json, bytes)));
+  }
+  let given: { values: Int32Array | Float64Array; dims: number };
+  if (Array.isArray(points)) given = flatten(points);
   else if (typeof points === 'object' && points !== null && !ArrayBuffer.isView(points)) {
     const flat = points as { points: unknown; dims: unknown };
     if (!(flat.points instanceof Int32Array || flat.points instanceof Float64Array)) {
@@ -92,5 +115,6 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints):
 export async function readPoints(text: string, dims: number): Promise<Float64Array> {
   const points = guardText('text', text, 'the points');
   const core = await loadCore();
-  return callCore(() => core.readPoints(utf8.encode(points), wholeNumber('dims', dims, 1, AXIS_NAMES.length, 'coordinates per point')));
+  const perPoint = wholeNumber('dims', dims, 1, AXIS_NAMES.length, 'coordinates per point');
+  return callCore(() => withTextBytes(core, points, (bytes) => core.readPoints(bytes, perPoint)));
 }

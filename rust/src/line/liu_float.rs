@@ -96,6 +96,41 @@ fn round_to_scale(v: f64, scale: f64) -> f64 {
     (v * scale).round() / scale
 }
 
+/// The fewest decimals, from 1, that give the same path as any more
+/// decimals (up to [`MAX_DECIMALS`], same tie policy) on the line from
+/// `from` to `to`: the first d at which every passive axis's slope
+/// k = |Δa| / n (n = |Δactive|) is a decimal of d places, |Δa| * 10^d a
+/// multiple of n. None when no d up to [`MAX_DECIMALS`] has that.
+///
+/// Why this is exact. With 10^d = S and K = |Δa| * S / n a whole number,
+/// [`LiuFloat::new`] keeps k as the f64 nearest K / S and epsilon_1 as the
+/// f64 nearest (K - S/2) / S (S/2 is whole from d = 1; each product with S
+/// is within 10^-5 of K or K - S/2 before it is rounded). Say epsilon stands
+/// for the integer E = epsilon * S. Every step then computes E - S * moved
+/// + K exactly, as long as |E|, K and S stay below [`EXACT_SCALED`] (the
+/// argument there, which holds for `advance` and for `fill`'s integer loop
+/// alike), and compares epsilon with 0, which is comparing E with 0. So
+/// E / S is exactly Liu's epsilon in exact arithmetic, k(i + 1) - 1/2 - y_i,
+/// the same rational number for every such d: each decision, and the path,
+/// is the same for all of them. The bound holds: without the finish rule,
+/// epsilon stays in [k - 1, k] (from k - 1/2; a step from epsilon >= 0, or
+/// > 0 with hold, lands in [k - 1, 2k - 1], a hold from epsilon <= 0 in
+/// [2k - 1, k]), so |E| <= S <= 10^10; and the finish rule never acts, since
+/// y_n = kn + k - 1/2 - epsilon_n is a whole number within 1/2 of |Δa|,
+/// so it is |Δa|, and y never passes |Δa| nor falls so far behind that it
+/// needs a forced step. A line with no passive axis (every axis moves as
+/// far, or none moves) has the same path at every d: 1.
+pub fn exact_decimals(from: Point, to: Point) -> Option<u32> {
+    let mirror = Mirror::new(from, to);
+    let n = mirror.longest() as u128;
+    (1..=MAX_DECIMALS as u32).find(|&d| {
+        let scale = 10u128.pow(d);
+        (0..mirror.dims())
+            .filter(|&a| !mirror.is_active(a))
+            .all(|a| (mirror.magnitude(a) as u128 * scale) % n == 0)
+    })
+}
+
 /// Magnitude below which [`LiuFloat::fill`] runs Liu's rule on integers:
 /// with |E|, 10^d and |K| below it, the three f64 operations of a step
 /// (e - 1, + k, x 10^d) err by less than 4 * 2^-53 * 2^48 = 1/8 in all,
