@@ -4,8 +4,9 @@
  * the run, every point copied out of wasm into an Int32Array, and the
  * trace freed. The peers write the same points into an Int32Array through
  * their own API (bench/peers), or, for the algorithms only voxpath names,
- * are their plain TypeScript references (bench/reference, the step codes
- * alone, which tests/reference.test.ts checks are the core's) or voxpath's
+ * are their plain TypeScript references (bench/reference, whose step codes
+ * tests/reference.test.ts checks are the core's) with the points those
+ * steps take, so that both sides hand over the same points, or voxpath's
  * own circle per cell. The native row runs rust/examples/end_to_end.rs.
  *
  * Each figure is the median of ROUNDS rounds after one untimed round; in a
@@ -138,13 +139,43 @@ function pointsSide(dims: number, run: () => Int32Array): Side {
   return { run, count: run().length / dims };
 }
 
-/** The TypeScript reference of `request.algorithm`, counting its steps. */
-function referenceSide(request: TraceOptions): Side {
+/**
+ * Every point of the path the step codes `steps` take from `from`, flat
+ * with stride dims, start included: what a user of a TypeScript reference
+ * writes to get the points `trace().points` gives. A plain loop, one axis
+ * at a time from the code's bits (bit a: axis a moves; bit 8 + a: it moves
+ * negatively).
+ */
+function pointsOfSteps(from: ArrayLike<number>, steps: Uint16Array): Int32Array {
+  const dims = from.length;
+  const out = new Int32Array(dims * (steps.length + 1));
+  const p = Int32Array.from(from);
+  out.set(p);
+  for (let k = 0; k < steps.length; k++) {
+    const code = steps[k]!;
+    for (let a = 0; a < dims; a++) {
+      if ((code >> a) & 1) p[a]! += (code >> (8 + a)) & 1 ? -1 : 1;
+      out[(k + 1) * dims + a] = p[a]!;
+    }
+  }
+  return out;
+}
+
+/**
+ * The TypeScript reference of `request.algorithm` with its points, as
+ * `trace().points` gives them: its step codes, then the points they take
+ * (pointsOfSteps); the count is its points.
+ */
+async function referenceSide(request: TraceOptions): Promise<Side> {
   const { algorithm, ...options } = request;
   const reference = REFERENCES[algorithm];
   if (!reference) throw new Error(`no TypeScript reference for ${algorithm}`);
-  const run = () => reference(options as ReferenceOptions);
-  return { run, count: run().length };
+  const run = () => pointsOfSteps(request.from, reference(options as ReferenceOptions));
+  const [theirs, ours] = [run(), await voxpathPoints(request)];
+  if (theirs.length !== ours.length || theirs.some((v, i) => v !== ours[i])) {
+    throw new Error(`the TypeScript reference of ${algorithm} and trace() give different points`);
+  }
+  return { run, count: theirs.length / request.from.length };
 }
 
 /** What rust/examples/end_to_end.rs prints. */
@@ -201,7 +232,7 @@ export default async function endToEnd(): Promise<BenchGroup> {
     { algorithm: 'helix', method: 'segments', ...HELIX },
   ]) {
     const label = `${request.algorithm}${'method' in request ? ` (${request.method})` : ''}`;
-    rows.push(await row(`${label} vs its TypeScript reference (step codes)`, await voxpathSide(request), referenceSide(request), 1));
+    rows.push(await row(`${label} vs its TypeScript reference with its points`, await voxpathSide(request), await referenceSide(request), 1));
   }
 
   const bresenham3d = line3d('bresenham3d');
