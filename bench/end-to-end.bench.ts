@@ -85,7 +85,7 @@ function cpuSeconds(): number {
 
 /**
  * Median CPU seconds of each side over ROUNDS rounds, the sides in turn within
- * a round, after one untimed round (V8 compiles JavaScript and wasm in
+ * a round (first one, then the other, every other round), after one untimed round (V8 compiles JavaScript and wasm in
  * tiers: a first run measures the compiler as much as the code). The
  * garbage of the runs before is collected before each run, untimed: every
  * side leaves an array of millions of points behind, and V8 collects them
@@ -97,7 +97,12 @@ function cpuSeconds(): number {
 async function medianSeconds(sides: Side[]): Promise<number[]> {
   const times: number[][] = sides.map(() => []);
   for (let round = 0; round <= ROUNDS; round++) {
-    for (const [i, side] of sides.entries()) {
+    // Every other round the sides go in the other order: the side that
+    // runs second in a round was seen to run up to 2.5 times slower (voxpath's
+    // circle as the peer of the helix row against the circle row itself).
+    const order = [...sides.entries()];
+    if (round % 2 === 1) order.reverse();
+    for (const [i, side] of order) {
       collectGarbage();
       await new Promise((resolve) => setTimeout(resolve, SETTLE_MS));
       const start = cpuSeconds();
