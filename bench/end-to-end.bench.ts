@@ -31,8 +31,11 @@ import { REFERENCES } from './reference/index.js';
 import type { ReferenceOptions } from './reference/index.js';
 import type { BenchGroup, BenchRow } from './types.js';
 
-/** Timed rounds per row; the median counts. */
-const ROUNDS = 7;
+/**
+ * Timed rounds per row; the median counts. Even, so that each side goes
+ * first in as many timed rounds as it goes second.
+ */
+const ROUNDS = 8;
 
 const N = 2_000_000;
 const FROM_3D = [0, 0, 0];
@@ -57,7 +60,12 @@ interface Side {
   count: number;
 }
 
-const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
+/** The middle value, or the mean of the two middle values of an even count. */
+function median(values: number[]): number {
+  const sorted = [...values].sort((a, b) => a - b);
+  const half = sorted.length >> 1;
+  return sorted.length % 2 === 1 ? sorted[half]! : (sorted[half - 1]! + sorted[half]!) / 2;
+}
 
 // V8's collector, callable: a context made after --expose-gc is set has
 // gc() as a global (bench/run.mjs is started without the flag).
@@ -97,11 +105,12 @@ function cpuSeconds(): number {
 async function medianSeconds(sides: Side[]): Promise<number[]> {
   const times: number[][] = sides.map(() => []);
   for (let round = 0; round <= ROUNDS; round++) {
-    // Every other round the sides go in the other order: the side that
-    // runs second in a round was seen to run up to 2.5 times slower (voxpath's
-    // circle as the peer of the helix row against the circle row itself).
+    // Every other round the sides go in the other order, the timed rounds
+    // split evenly: the side that runs second in a round was seen to run
+    // up to 2.5 times slower (voxpath's circle as the peer of the helix
+    // row against the circle row itself).
     const order = [...sides.entries()];
-    if (round % 2 === 1) order.reverse();
+    if (round % 2 === 0) order.reverse();
     for (const [i, side] of order) {
       collectGarbage();
       await new Promise((resolve) => setTimeout(resolve, SETTLE_MS));
@@ -262,7 +271,7 @@ export default async function endToEnd(): Promise<BenchGroup> {
     notes: [
       `${COLUMNS.voxpath}: points (cells, steps) per second of \`(await trace({...})).points\` in Node, the trace freed after; native: \`voxpath::run\` and every point.`,
       `${COLUMNS.peer}: the same for the peer named in the row, each rate counting its own points (greedy and walk6 take more steps than the Bresenham line they are measured against; a peer's circle may have other cells).`,
-      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round, each run timed by the CPU time it takes (Node: process.cpuUsage, every thread; native: the thread's CPU clock), not wall time, which on a shared machine counts waits for a core; in Node the garbage of earlier runs is collected, untimed, before each run.`,
+      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round, each first in half of them (the side that ran second was seen to run up to 2.5 times slower), each run timed by the CPU time it takes (Node: process.cpuUsage, every thread; native: the thread's CPU clock), not wall time, which on a shared machine counts waits for a core; in Node the garbage of earlier runs is collected, untimed, before each run.`,
     ],
     rows,
   };
