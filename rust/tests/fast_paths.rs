@@ -288,7 +288,10 @@ fn points_of_a_long_line_are_the_replay() {
     .unwrap();
     let t = b.finish("bresenham3d");
     let n = t.steps() + 1;
-    assert!(n as usize * 3 * 4 > 8 << 20, "more than four huge pages of i32");
+    assert!(
+        n as usize * 3 * 4 > 8 << 20,
+        "more than four huge pages of i32"
+    );
     let all = replayed_points(&t, 0, n);
     let narrow: Vec<i64> = t.points_i32(0, n).into_iter().map(i64::from).collect();
     assert!(narrow == all, "i32 points are the replay");
