@@ -4,8 +4,9 @@
  * the run, every point copied out of wasm into an Int32Array, and the
  * trace freed. The peers write the same points into an Int32Array through
  * their own API (bench/peers), or, for the algorithms only voxpath names,
- * are their plain TypeScript references (bench/reference, the step codes
- * alone, which tests/reference.test.ts checks are the core's) or voxpath's
+ * are their plain TypeScript references (bench/reference, whose step codes
+ * tests/reference.test.ts checks are the core's) with the points those
+ * steps take, so that both sides hand over the same points, or voxpath's
  * own circle per cell. The native row runs rust/examples/end_to_end.rs.
  *
  * Each figure is the median of ROUNDS rounds after one untimed round; in a
@@ -30,8 +31,11 @@ import { REFERENCES } from './reference/index.js';
 import type { ReferenceOptions } from './reference/index.js';
 import type { BenchGroup, BenchRow } from './types.js';
 
-/** Timed rounds per row; the median counts. */
-const ROUNDS = 7;
+/**
+ * Timed rounds per row; the median counts. Even, so that each side goes
+ * first in as many timed rounds as it goes second.
+ */
+const ROUNDS = 8;
 
 const N = 2_000_000;
 const FROM_3D = [0, 0, 0];
@@ -56,7 +60,12 @@ interface Side {
   count: number;
 }
 
-const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
+/** The middle value, or the mean of the two middle values of an even count. */
+function median(values: number[]): number {
+  const sorted = [...values].sort((a, b) => a - b);
+  const half = sorted.length >> 1;
+  return sorted.length % 2 === 1 ? sorted[half]! : (sorted[half - 1]! + sorted[half]!) / 2;
+}
 
 // V8's collector, callable: a context made after --expose-gc is set has
 // gc() as a global (bench/run.mjs is started without the flag).
@@ -84,7 +93,7 @@ function cpuSeconds(): number {
 
 /**
  * Median CPU seconds of each side over ROUNDS rounds, the sides in turn within
- * a round, after one untimed round (V8 compiles JavaScript and wasm in
+ * a round (first one, then the other, every other round), after one untimed round (V8 compiles JavaScript and wasm in
  * tiers: a first run measures the compiler as much as the code). The
  * garbage of the runs before is collected before each run, untimed: every
  * side leaves an array of millions of points behind, and V8 collects them
@@ -96,7 +105,13 @@ function cpuSeconds(): number {
 async function medianSeconds(sides: Side[]): Promise<number[]> {
   const times: number[][] = sides.map(() => []);
   for (let round = 0; round <= ROUNDS; round++) {
-    for (const [i, side] of sides.entries()) {
+    // Every other round the sides go in the other order, the timed rounds
+    // split evenly: the side that runs second in a round was seen to run
+    // up to 2.5 times slower (voxpath's circle as the peer of the helix
+    // row against the circle row itself).
+    const order = [...sides.entries()];
+    if (round % 2 === 0) order.reverse();
+    for (const [i, side] of order) {
       collectGarbage();
       await new Promise((resolve) => setTimeout(resolve, SETTLE_MS));
       const start = cpuSeconds();
@@ -138,13 +153,43 @@ function pointsSide(dims: number, run: () => Int32Array): Side {
   return { run, count: run().length / dims };
 }
 
-/** The TypeScript reference of `request.algorithm`, counting its steps. */
-function referenceSide(request: TraceOptions): Side {
+/**
+ * Every point of the path the step codes `steps` take from `from`, flat
+ * with stride dims, start included: what a user of a TypeScript reference
+ * writes to get the points `trace().points` gives. A plain loop, one axis
+ * at a time from the code's bits (bit a: axis a moves; bit 8 + a: it moves
+ * negatively).
+ */
+function pointsOfSteps(from: ArrayLike<number>, steps: Uint16Array): Int32Array {
+  const dims = from.length;
+  const out = new Int32Array(dims * (steps.length + 1));
+  const p = Int32Array.from(from);
+  out.set(p);
+  for (let k = 0; k < steps.length; k++) {
+    const code = steps[k]!;
+    for (let a = 0; a < dims; a++) {
+      if ((code >> a) & 1) p[a]! += (code >> (8 + a)) & 1 ? -1 : 1;
+      out[(k + 1) * dims + a] = p[a]!;
+    }
+  }
+  return out;
+}
+
+/**
+ * The TypeScript reference of `request.algorithm` with its points, as
+ * `trace().points` gives them: its step codes, then the points they take
+ * (pointsOfSteps); the count is its points.
+ */
+async function referenceSide(request: TraceOptions): Promise<Side> {
   const { algorithm, ...options } = request;
   const reference = REFERENCES[algorithm];
   if (!reference) throw new Error(`no TypeScript reference for ${algorithm}`);
-  const run = () => reference(options as ReferenceOptions);
-  return { run, count: run().length };
+  const run = () => pointsOfSteps(request.from, reference(options as ReferenceOptions));
+  const [theirs, ours] = [run(), await voxpathPoints(request)];
+  if (theirs.length !== ours.length || theirs.some((v, i) => v !== ours[i])) {
+    throw new Error(`the TypeScript reference of ${algorithm} and trace() give different points`);
+  }
+  return { run, count: theirs.length / request.from.length };
 }
 
 /** What rust/examples/end_to_end.rs prints. */
@@ -201,7 +246,7 @@ export default async function endToEnd(): Promise<BenchGroup> {
     { algorithm: 'helix', method: 'segments', ...HELIX },
   ]) {
     const label = `${request.algorithm}${'method' in request ? ` (${request.method})` : ''}`;
-    rows.push(await row(`${label} vs its TypeScript reference (step codes)`, await voxpathSide(request), referenceSide(request), 1));
+    rows.push(await row(`${label} vs its TypeScript reference with its points`, await voxpathSide(request), await referenceSide(request), 1));
   }
 
   const bresenham3d = line3d('bresenham3d');
@@ -226,7 +271,7 @@ export default async function endToEnd(): Promise<BenchGroup> {
     notes: [
       `${COLUMNS.voxpath}: points (cells, steps) per second of \`(await trace({...})).points\` in Node, the trace freed after; native: \`voxpath::run\` and every point.`,
       `${COLUMNS.peer}: the same for the peer named in the row, each rate counting its own points (greedy and walk6 take more steps than the Bresenham line they are measured against; a peer's circle may have other cells).`,
-      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round, each run timed by the CPU time it takes (Node: process.cpuUsage, every thread; native: the thread's CPU clock), not wall time, which on a shared machine counts waits for a core; in Node the garbage of earlier runs is collected, untimed, before each run.`,
+      `${COLUMNS.ratio}: voxpath's rate over the peer's; ${COLUMNS.goal}: the ratio issue 13 asks for. Median of ${ROUNDS} rounds, the two sides in turn in each round, each first in half of them (the side that ran second was seen to run up to 2.5 times slower), each run timed by the CPU time it takes (Node: process.cpuUsage, every thread; native: the thread's CPU clock), not wall time, which on a shared machine counts waits for a core; in Node the garbage of earlier runs is collected, untimed, before each run.`,
     ],
     rows,
   };

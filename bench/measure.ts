@@ -1,8 +1,8 @@
 /**
  * Measuring helpers the bench files share: the best of several runs (the
  * one least disturbed by other work on the machine), the native numbers
- * from the Rust example, and the core's trace with and without its
- * metrics.
+ * from the Rust example, the core's raw trace, and trace() as users call
+ * it (which computes no metrics: they wait until first read).
  */
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
@@ -57,16 +57,16 @@ export function native(requests: TraceOptions[], repeat = REPEAT): NativeResult[
   return JSON.parse(run.stdout) as NativeResult[];
 }
 
-/** Seconds of the core's trace in wasm without its metrics: stepping and recording only. */
+/** Seconds of the core's trace in wasm: stepping and recording only. */
 export async function wasmStepsSeconds(request: TraceOptions): Promise<number> {
   const core = await loadCore();
   const json = encodeRequest(request);
-  // The raw binding: the public trace() asks for the summary, and with it
-  // the metrics, straight away.
+  // The raw binding: the public trace() also asks for the summary and
+  // makes the Trace object around it.
   return bestSeconds(() => core.trace(json).free());
 }
 
-/** Seconds of trace() as users call it: steps, metrics and summary. */
+/** Seconds of trace() as users call it: steps and summary, no metrics (computed when first read). */
 export async function wasmFullSeconds(request: TraceOptions): Promise<number> {
   return bestSeconds(async () => (await trace(request)).free());
 }
@@ -92,7 +92,7 @@ export const COLUMNS = {
 /** What the shared columns measure. */
 export const COLUMN_NOTES = [
   `${COLUMNS.nativeSteps} / ${COLUMNS.wasmSteps}: stepping and recording, as the core's trace does before anything is asked of it (2 bytes per step, a position and a stepper state every 4096 steps; circles and helices include Saleem's dry run).`,
-  `${COLUMNS.nativeFull} / ${COLUMNS.wasmFull}: the same plus the metrics pass (deviation and per-axis error of every point); wasm full is trace() as users call it, summary included.`,
+  `${COLUMNS.nativeFull}: the same plus the metrics pass (deviation and per-axis error of every point). ${COLUMNS.wasmFull}: trace() as users call it, the summary and the Trace object included; no metrics, which the core computes only when they are first read.`,
   `${COLUMNS.typescriptSteps}: the plain TypeScript reference (bench/reference) filling a Uint16Array with the same step codes (tests/reference.test.ts checks they are the core's), dry runs included.`,
   `${COLUMNS.ratio}: wasm steps over TS steps, like with like. Rates are steps per second, the best of ${REPEAT} runs after one untimed run.`,
 ];

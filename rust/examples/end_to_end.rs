@@ -6,7 +6,8 @@
 //! Reads `{"request": {...a 3D line request...}, "rounds": n}` on stdin and
 //! prints `{"points", "voxpathSeconds", "lineDrawingSeconds"}`: the median
 //! of `n` rounds each, the two taken in turn within a round so that a slow
-//! moment of the machine falls on both, after one round that is not timed.
+//! moment of the machine falls on both (which goes first alternating from
+//! round to round), after one round that is not timed.
 //! Seconds are this thread's CPU time (page faults included, the kernel
 //! runs them on the thread), not wall time: on a machine shared with other
 //! work, wall time also counts the waits for a free core.
@@ -34,9 +35,16 @@ fn seconds<T>(f: impl FnOnce() -> T) -> (f64, T) {
     (thread_cpu_seconds() - start, out)
 }
 
+/// The middle value, or the mean of the two middle values of an even count
+/// (the bench asks for an even number of rounds, half with each side first).
 fn median(mut values: Vec<f64>) -> f64 {
     values.sort_by(f64::total_cmp);
-    values[values.len() / 2]
+    let half = values.len() / 2;
+    if values.len() % 2 == 1 {
+        values[half]
+    } else {
+        (values[half - 1] + values[half]) / 2.0
+    }
 }
 
 fn main() {
@@ -61,8 +69,15 @@ fn main() {
     let (mut ours, mut theirs) = (Vec::new(), Vec::new());
     let mut points = 0;
     for round in 0..=rounds {
-        let (a, p) = seconds(voxpath_points);
-        let (b, q) = seconds(line_drawing_points);
+        // Every other round the other side goes first, so that neither
+        // always meets the memory the other has just let go of.
+        let ((a, p), (b, q)) = if round % 2 == 1 {
+            let ours = seconds(voxpath_points);
+            (ours, seconds(line_drawing_points))
+        } else {
+            let theirs = seconds(line_drawing_points);
+            (seconds(voxpath_points), theirs)
+        };
         assert_eq!(p.len(), 3 * q.len(), "both give every point of the line");
         points = q.len();
         if round > 0 {

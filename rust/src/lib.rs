@@ -22,6 +22,7 @@ pub mod experiment;
 pub mod figure;
 pub mod gcode;
 pub mod grid;
+pub mod huge_pages;
 pub mod ideal;
 pub mod line;
 pub mod machine;

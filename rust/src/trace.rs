@@ -481,6 +481,7 @@ impl TraceBuilder {
         if let Some(n) = stepper.remaining_steps() {
             self.check_length(first_step + n)?;
             self.steps.reserve(n as usize);
+            crate::huge_pages::advise(self.steps.spare_capacity_mut());
         }
         let column_index = S::Why::COLUMNS
             .iter()
@@ -560,6 +561,7 @@ impl TraceBuilder {
     pub fn reserve(&mut self, more: u64) -> Result<(), Error> {
         self.check_length(self.steps() + more)?;
         self.steps.reserve_exact(more as usize);
+        crate::huge_pages::advise(self.steps.spare_capacity_mut());
         Ok(())
     }
 
@@ -849,15 +851,21 @@ impl Trace {
 
     /// Points with point indices `from..to`, flat with stride `dims`.
     pub fn points_flat(&self, from: u64, to: u64) -> Vec<i64> {
-        let mut out = vec![0; (to - from) as usize * self.dims()];
-        self.write_points(from, &mut out);
-        out
+        self.points_vec(from, to)
     }
 
     /// The same as i32, the type every trace coordinate fits (see
     /// [`Coordinate`]) and the one that crosses to JavaScript.
     pub fn points_i32(&self, from: u64, to: u64) -> Vec<i32> {
-        let mut out = vec![0; (to - from) as usize * self.dims()];
+        self.points_vec(from, to)
+    }
+
+    /// Points `from..to` in a new vector, its memory advised for huge pages
+    /// before the points are written ([`crate::huge_pages`]): a zeroed
+    /// allocation this large comes untouched from the kernel.
+    fn points_vec<C: Coordinate>(&self, from: u64, to: u64) -> Vec<C> {
+        let mut out = vec![C::default(); (to - from) as usize * self.dims()];
+        crate::huge_pages::advise(&mut out);
         self.write_points(from, &mut out);
         out
     }

@@ -270,3 +270,30 @@ fn the_line_walk_leaves_moves_past_the_product_bound_to_the_point_by_point_path(
     let short = LineMeter::new(&from, &Point::new(&[-COORD_LIMIT + 1, 0, 0]));
     assert!(!short.walk(&from, 0, 0, &[], |_, _| panic!()));
 }
+
+/// A line long enough that its points fill whole huge pages, which the
+/// native reads advise for huge pages before writing (`huge_pages`): the
+/// points are still the replay's, whatever backs their memory.
+#[test]
+fn points_of_a_long_line_are_the_replay() {
+    let (from, to) = (
+        Point::new(&[-(1 << 30), 1 << 30, 5]),
+        Point::new(&[-(1 << 30) + 900_000, (1 << 30) - 630_001, 5 - 540_003]),
+    );
+    let mut b = TraceBuilder::new(from, u64::MAX);
+    b.run(
+        Bresenham3d::new(from, to, TiePolicy::Hold, false),
+        IdealPath::Line { from, to },
+    )
+    .unwrap();
+    let t = b.finish("bresenham3d");
+    let n = t.steps() + 1;
+    assert!(
+        n as usize * 3 * 4 > 8 << 20,
+        "more than four huge pages of i32"
+    );
+    let all = replayed_points(&t, 0, n);
+    let narrow: Vec<i64> = t.points_i32(0, n).into_iter().map(i64::from).collect();
+    assert!(narrow == all, "i32 points are the replay");
+    assert!(t.points_flat(0, n) == all, "i64 points are the replay");
+}
