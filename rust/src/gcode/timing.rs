@@ -71,7 +71,12 @@ pub fn push_move(
         (_, None) => Rate::Unset,
     };
     let to: [i64; MACHINE_AXES] = to.coords().try_into().expect("3 axes");
-    let mut targets = Vec::new();
+    let mut previous: [i64; MACHINE_AXES] = from.coords().try_into().expect("3 axes");
+    let mut push = |target: [i64; MACHINE_AXES]| {
+        let delta = std::array::from_fn(|axis| (target[axis] - previous[axis]) as f64 / spm[axis]);
+        planner.push(delta, rate);
+        previous = target;
+    };
     if let Some(arc) = &m.arc {
         let vertices = planner::arc_chords(
             m.from_mm,
@@ -84,18 +89,12 @@ pub fn push_move(
         for vertex in &vertices[..vertices.len() - 1] {
             // A vertex lies within the arc's box, whose corners were
             // rounded to steps already: its rounding fits too.
-            targets.push(std::array::from_fn(|axis| {
+            push(std::array::from_fn(|axis| {
                 machine.to_steps(axis, vertex[axis]).unwrap_or(to[axis])
             }));
         }
     }
-    targets.push(to);
-    let mut previous: [i64; MACHINE_AXES] = from.coords().try_into().expect("3 axes");
-    for target in targets {
-        let delta = std::array::from_fn(|axis| (target[axis] - previous[axis]) as f64 / spm[axis]);
-        planner.push(delta, rate);
-        previous = target;
-    }
+    push(to);
     first..planner.len()
 }
 
