@@ -595,7 +595,6 @@ impl TraceBuilder {
         Ok(())
     }
 
-
     fn check_length(&self, steps: u64) -> Result<(), Error> {
         if steps > self.max_steps {
             return Err(self.too_long(steps));

@@ -33,6 +33,7 @@ use super::parse::{Block, Problem, parse_line_into};
 use super::timing::{self, Timeline};
 use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
+use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Limit, Location};
@@ -587,7 +588,11 @@ impl MoveRecords {
             note,
             ", {} {}in the {}, center ",
             a.arc.turn.describe(),
-            if self.helical(r, arc) { "helix " } else { "arc " },
+            if self.helical(r, arc) {
+                "helix "
+            } else {
+                "arc "
+            },
             a.arc.plane.describe(),
         );
         tuple_into(&mut note, &[a.arc.center_mm[u], a.arc.center_mm[v]]);
@@ -600,7 +605,11 @@ impl MoveRecords {
         match a.arc.extra_turns {
             0 => {}
             t => {
-                let _ = write!(note, " (P adds {t} full turn{})", if t == 1 { "" } else { "s" });
+                let _ = write!(
+                    note,
+                    " (P adds {t} full turn{})",
+                    if t == 1 { "" } else { "s" }
+                );
             }
         }
         if let Some(center) = a.center_steps {
@@ -619,7 +628,10 @@ impl MoveRecords {
         }
         match a.as_line {
             Some(why) => {
-                let _ = write!(note, "; {why}, so it is stepped as a straight line to its end.");
+                let _ = write!(
+                    note,
+                    "; {why}, so it is stepped as a straight line to its end."
+                );
             }
             None => note.push('.'),
         }
@@ -639,7 +651,9 @@ impl MoveRecords {
     /// Index of the move that took step index `k` (moves are in step
     /// order), or None past their last step.
     pub fn move_of_step(&self, k: u64) -> Option<usize> {
-        let index = self.records.partition_point(|m| m.first_step + m.steps <= k);
+        let index = self
+            .records
+            .partition_point(|m| m.first_step + m.steps <= k);
         (index < self.records.len()).then_some(index)
     }
 
@@ -704,6 +718,10 @@ pub struct Runner {
     builder: TraceBuilder,
     /// How straight moves are stepped.
     line_stepper: LineStepper,
+    /// True (always, but in tests): straight moves and circle arcs run in
+    /// place where they can; false: every move through the catalogue's
+    /// request, the reference the in-place paths are tested against.
+    in_place: bool,
     planner: Planner,
     /// Per move, the planner blocks it took.
     move_blocks: Vec<std::ops::Range<usize>>,
@@ -758,6 +776,7 @@ impl Runner {
             lines,
             builder: TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps),
             line_stepper: LineStepper::of(settings.line_algorithm),
+            in_place: true,
             planner: Planner::new(settings.limits),
             move_blocks: Vec::new(),
             settings,
@@ -1136,30 +1155,60 @@ impl Runner {
             request.set("lineAlgorithm", Value::from(self.settings.line_algorithm));
         }
         request.algorithm = algorithm.to_string();
-        self.append(m, request)?;
+        if !(self.in_place && algorithm == circle_saleem::INFO.id && self.run_circle(&request)) {
+            self.append(m, request)?;
+        }
         Ok(kept)
     }
 
     /// Steps a straight move from `from` to `to` with the line algorithm.
     fn step_line(&mut self, m: &MoveMm, from: Point, to: Point) -> Result<(), Error> {
-        let direct = match self.line_stepper {
-            LineStepper::Regions(tie, gcd) => {
-                self.run_line(RegionsWang::with_gcd(from, to, tie, gcd), from, to)
-            }
-            LineStepper::Bresenham3d(tie, gcd) => {
-                self.run_line(Bresenham3d::new(from, to, tie, gcd), from, to)
-            }
-            LineStepper::Nd(tie, gcd) => self.run_line(Nd::new(from, to, tie, gcd), from, to),
-            LineStepper::Greedy(order) => self.run_line(Greedy::new(from, to, order), from, to),
-            LineStepper::Walk6(order) => self.run_line(Walk6::new(from, to, order), from, to),
-            LineStepper::Dda => self.run_line(Dda::new(from, to), from, to),
-            LineStepper::ByRequest => false,
-        };
+        let direct = self.in_place
+            && match self.line_stepper {
+                LineStepper::Regions(tie, gcd) => {
+                    self.run_line(RegionsWang::with_gcd(from, to, tie, gcd), from, to)
+                }
+                LineStepper::Bresenham3d(tie, gcd) => {
+                    self.run_line(Bresenham3d::new(from, to, tie, gcd), from, to)
+                }
+                LineStepper::Nd(tie, gcd) => self.run_line(Nd::new(from, to, tie, gcd), from, to),
+                LineStepper::Greedy(order) => self.run_line(Greedy::new(from, to, order), from, to),
+                LineStepper::Walk6(order) => self.run_line(Walk6::new(from, to, order), from, to),
+                LineStepper::Dda => self.run_line(Dda::new(from, to), from, to),
+                LineStepper::ByRequest => false,
+            };
         if !direct {
             let line = self.settings.line_algorithm;
             self.append(m, self.line_request(line, from, to))?;
         }
         Ok(())
+    }
+
+    /// Runs a circle request's stepper straight into the program's trace,
+    /// read and counted as the circle algorithm's own trace reads and
+    /// counts it (maxSteps being what the program has left), so it takes
+    /// the same steps, segment and checkpoints the catalogue path would
+    /// append. False, doing nothing, where that path would fail (it then
+    /// says why).
+    fn run_circle(&mut self, request: &Request) -> bool {
+        if request.check_options(circle_saleem::INFO.options).is_err() {
+            return false;
+        }
+        let Ok(spec) = ArcSpec::parse(request, false) else {
+            return false;
+        };
+        let left = self.settings.max_steps - self.steps;
+        let Ok(stepper) = SaleemCircle::new(&spec).counted(&TraceBuilder::new(spec.from, left))
+        else {
+            return false;
+        };
+        let before = self.builder.steps();
+        self.builder
+            .run_note_when_read(stepper, IdealPath::Arc(spec.ideal_arc()))
+            .expect("a counted circle within maxSteps runs");
+        self.steps += self.builder.steps() - before;
+        self.segments += 1;
+        true
     }
 
     /// Runs a line stepper straight into the program's trace when its
@@ -1254,9 +1303,7 @@ mod tests {
     /// fast path.
     fn run_with(source: &str, settings: &str, by_request: bool) -> Program {
         let mut runner = Runner::new(source.to_string(), Settings::from_json(settings).unwrap());
-        if by_request {
-            runner.line_stepper = LineStepper::ByRequest;
-        }
+        runner.in_place = !by_request;
         runner.run_to_end()
     }
 
@@ -1290,8 +1337,9 @@ mod tests {
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
 
-        /// Straight moves stepped straight into the program's trace give
-        /// what the catalogue path gave: the same steps, points, segments
+        /// Straight moves and circle arcs stepped straight into the
+        /// program's trace give what the catalogue path gives: the same
+        /// steps, points, segments
         /// and notes, decisions, explanations, moves and diagnostics, with
         /// every line algorithm, either arc algorithm and a maxSteps the
         /// program may run into.
