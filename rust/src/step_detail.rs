@@ -102,7 +102,7 @@ pub fn step_detail(trace: &Trace, p: u64) -> StepDetail<'_> {
         explanation,
         figure,
         segment_index,
-        segment: segment_index.map(|s| trace.segments()[s].summary()),
+        segment: segment_index.map(|s| trace.segment_summary(s)),
     }
 }
 

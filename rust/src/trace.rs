@@ -22,7 +22,9 @@ use crate::metrics::{Metrics, MetricsAccumulator};
 use crate::points::Coordinate;
 use crate::request::{MAX_STEPS_LIMIT, Request, too_long_advice};
 use serde::Serialize;
+use std::borrow::Cow;
 use std::cell::OnceCell;
+use std::rc::Rc;
 use std::sync::Arc;
 use tsify::Tsify;
 
@@ -328,6 +330,8 @@ trait Replay {
     ) -> Option<(String, Option<DecisionFigure>)>;
     /// Takes `steps` steps: how many of them a tie decided.
     fn count_ties(&mut self, steps: u64) -> u64;
+    /// The stepper's [`Stepper::setup_note`] (of the state it is in).
+    fn setup_note(&self) -> String;
 }
 
 impl<S: Stepper> Replay for S {
@@ -372,6 +376,10 @@ impl<S: Stepper> Replay for S {
             .filter(|(_, why)| why.is_tie())
             .count() as u64
     }
+
+    fn setup_note(&self) -> String {
+        Stepper::setup_note(self)
+    }
 }
 
 /// A stretch of the trace produced by one stepper against one ideal path
@@ -382,9 +390,15 @@ pub struct Segment {
     pub steps: u64,
     pub start: Point,
     pub ideal: IdealPath,
+    /// The note of its stepper; empty when [`Segment::note_at_start`] says
+    /// it is made when read.
     pub setup_note: String,
-    /// For each of the stepper's columns, its index among the trace columns.
-    column_index: Vec<usize>,
+    /// True when the note is the stepper's own, made when read from its
+    /// state at the segment's start (`states[0]`) instead of kept.
+    note_at_start: bool,
+    /// For each of the stepper's columns, its index among the trace columns
+    /// (shared by the segments of one stepper type).
+    column_index: Rc<[usize]>,
     /// Stepper state before segment step j * CHECKPOINT_INTERVAL.
     states: Vec<Box<dyn Replay>>,
 }
@@ -408,7 +422,14 @@ pub struct Trace {
     metrics: OnceCell<Metrics>,
     /// What the algorithm promises of the deviation, when it promises one.
     deviation_bound: Option<DeviationBound>,
+    /// What starts the note of segment i, made when read (a G-code move's
+    /// sentence, so a program keeps no text per move).
+    note_prefix: Option<NotePrefix>,
 }
+
+/// Makes the text that starts a segment's note from the segment's index
+/// ([`Trace::with_note_prefix`]).
+pub type NotePrefix = Rc<dyn Fn(usize) -> String>;
 
 /// Builds a trace by running steppers one after another from a start point.
 pub struct TraceBuilder {
@@ -422,6 +443,10 @@ pub struct TraceBuilder {
     max_steps: u64,
     /// Steps this trace must take ([`Request::following`]), if any.
     follow: Option<Arc<[Step]>>,
+    /// The last stepper columns run and their indices among the trace's,
+    /// so that a run of one stepper type after another (a G-code
+    /// program's moves) finds them once.
+    last_slots: Option<(&'static [Column], Rc<[usize]>)>,
 }
 
 impl TraceBuilder {
@@ -438,6 +463,7 @@ impl TraceBuilder {
             figures: Vec::new(),
             max_steps,
             follow: None,
+            last_slots: None,
         }
     }
 
@@ -477,23 +503,56 @@ impl TraceBuilder {
     /// Runs `stepper` to its end from the current position, measuring its
     /// points against `ideal`.
     pub fn run<S: Stepper>(&mut self, stepper: S, ideal: IdealPath) -> Result<(), Error> {
+        let note = stepper.setup_note();
+        self.run_segment(stepper, ideal, note, false)
+    }
+
+    /// [`Self::run`], keeping no note: the segment's note is made from the
+    /// stepper's state at its start when read. For a caller that runs many
+    /// steppers into one trace (a G-code program's moves), whose notes few
+    /// read.
+    pub fn run_note_when_read<S: Stepper>(
+        &mut self,
+        stepper: S,
+        ideal: IdealPath,
+    ) -> Result<(), Error> {
+        self.run_segment(stepper, ideal, String::new(), true)
+    }
+
+    /// Indices of `columns` among the trace's, adding the new ones.
+    fn column_slots(&mut self, columns: &'static [Column]) -> Rc<[usize]> {
+        if let Some((last, slots)) = &self.last_slots {
+            if std::ptr::eq(*last, columns) {
+                return Rc::clone(slots);
+            }
+        }
+        let slots: Rc<[usize]> = columns.iter().map(|c| self.column_slot(c)).collect();
+        self.last_slots = Some((columns, Rc::clone(&slots)));
+        slots
+    }
+
+    fn run_segment<S: Stepper>(
+        &mut self,
+        stepper: S,
+        ideal: IdealPath,
+        setup_note: String,
+        note_at_start: bool,
+    ) -> Result<(), Error> {
         let first_step = self.steps.len() as u64;
         if let Some(n) = stepper.remaining_steps() {
             self.check_length(first_step + n)?;
             self.steps.reserve(n as usize);
             crate::huge_pages::advise(self.steps.spare_capacity_mut());
         }
-        let column_index = S::Why::COLUMNS
-            .iter()
-            .map(|c| self.column_slot(c))
-            .collect();
+        let column_index = self.column_slots(S::Why::COLUMNS);
         self.add_figure(S::Why::FIGURE);
         let mut segment = Segment {
             first_step,
             steps: 0,
             start: self.position,
             ideal,
-            setup_note: stepper.setup_note(),
+            setup_note,
+            note_at_start,
             column_index,
             states: Vec::new(),
         };
@@ -606,9 +665,7 @@ impl TraceBuilder {
         }
         for mut segment in std::mem::take(&mut part.segments) {
             segment.first_step += offset;
-            for index in &mut segment.column_index {
-                *index = slots[*index];
-            }
+            segment.column_index = segment.column_index.iter().map(|&i| slots[i]).collect();
             adapt(&mut segment);
             self.segments.push(segment);
         }
@@ -658,6 +715,7 @@ impl TraceBuilder {
             figures: self.figures,
             metrics: OnceCell::new(),
             deviation_bound: None,
+            note_prefix: None,
         }
     }
 }
@@ -1205,17 +1263,16 @@ pub struct SegmentSummary<'a> {
     pub start: Vec<i64>,
     pub ideal: IdealPathInfo,
     /// What a learner should know about this move before it starts.
-    pub note: &'a str,
+    pub note: Cow<'a, str>,
 }
 
 impl Segment {
-    pub fn summary(&self) -> SegmentSummary<'_> {
-        SegmentSummary {
-            first_step: self.first_step,
-            steps: self.steps,
-            start: self.start.coords().to_vec(),
-            ideal: self.ideal.info(),
-            note: &self.setup_note,
+    /// The stepper's note: kept, or made from its state at the start.
+    fn own_note(&self) -> Cow<'_, str> {
+        if self.note_at_start {
+            Cow::Owned(self.states[0].setup_note())
+        } else {
+            Cow::Borrowed(&self.setup_note)
         }
     }
 }
@@ -1234,17 +1291,38 @@ impl Trace {
         }
     }
 
+    /// This trace with `prefix` starting every segment's note (then a
+    /// space, then the stepper's own note), made when a note is read.
+    pub fn with_note_prefix(mut self, prefix: NotePrefix) -> Trace {
+        self.note_prefix = Some(prefix);
+        self
+    }
+
+    /// The note of segment `index`: what a learner should know before it.
+    pub fn segment_note(&self, index: usize) -> Cow<'_, str> {
+        let own = self.segments[index].own_note();
+        match &self.note_prefix {
+            None => own,
+            Some(prefix) => Cow::Owned(format!("{} {own}", prefix(index))),
+        }
+    }
+
+    /// Segment `index` as a viewer reads it.
+    pub fn segment_summary(&self, index: usize) -> SegmentSummary<'_> {
+        let s = &self.segments[index];
+        SegmentSummary {
+            first_step: s.first_step,
+            steps: s.steps,
+            start: s.start.coords().to_vec(),
+            ideal: s.ideal.info(),
+            note: self.segment_note(index),
+        }
+    }
+
     /// Every segment as a viewer reads it, in step order.
     pub fn segment_summaries(&self) -> Vec<SegmentSummary<'_>> {
-        self.segments
-            .iter()
-            .map(|s| SegmentSummary {
-                first_step: s.first_step,
-                steps: s.steps,
-                start: s.start.coords().to_vec(),
-                ideal: s.ideal.info(),
-                note: &s.setup_note,
-            })
+        (0..self.segments.len())
+            .map(|i| self.segment_summary(i))
             .collect()
     }
 

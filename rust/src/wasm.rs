@@ -419,7 +419,7 @@ impl GcodeRun {
 #[wasm_bindgen]
 pub struct GcodeResult {
     program: JsValue,
-    moves: crate::gcode::program::MoveRecords,
+    moves: std::rc::Rc<crate::gcode::program::MoveRecords>,
     steps: u64,
     steps_per_mm: [f64; crate::machine::MACHINE_AXES],
     trace: Option<Trace>,

@@ -356,18 +356,16 @@ fn decision_columns_of_every_algorithm_pair_have_distinct_names() {
 #[test]
 fn segment_notes_name_the_line_and_the_move() {
     let p = at10("G0 X1\nG1 Y1 F10\nG2 X0 Y2 I-1\n");
-    let segments = p.trace.segments();
     for m in &p.moves() {
-        for s in &segments[m.first_segment..m.first_segment + m.segments] {
+        for s in m.first_segment..m.first_segment + m.segments {
+            let note = p.trace.segment_note(s);
             assert!(
-                s.setup_note
-                    .starts_with(&format!("Line {}, {}:", m.line, m.code)),
-                "{}",
-                s.setup_note
+                note.starts_with(&format!("Line {}, {}:", m.line, m.code)),
+                "{note}"
             );
         }
     }
-    assert!(segments[0].setup_note.contains("a rapid, stepped like G1"));
+    assert!(p.trace.segment_note(0).contains("a rapid, stepped like G1"));
     assert_eq!(p.moves()[0].kind, "rapid");
 }
 

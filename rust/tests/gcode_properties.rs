@@ -81,7 +81,6 @@ proptest! {
         let p = run(&source, settings);
         let moves = p.moves();
         prop_assert_eq!(moves.len(), p.info.move_count);
-        let segments = p.trace.segments();
         let mut next_step = 0;
         let mut next_segment = 0;
         for (index, m) in moves.iter().enumerate() {
@@ -92,8 +91,9 @@ proptest! {
             prop_assert_eq!(p.trace.point(m.first_step + m.steps), Point::new(&m.to_steps));
             let prefix = format!("Line {}, {}: ", m.line, m.code);
             prop_assert!(m.note.starts_with(&prefix), "{}", m.note);
-            for s in &segments[m.first_segment..m.first_segment + m.segments] {
-                prop_assert!(s.setup_note.starts_with(&format!("{} ", m.note)), "{} / {}", m.note, s.setup_note);
+            for s in m.first_segment..m.first_segment + m.segments {
+                let note = p.trace.segment_note(s);
+                prop_assert!(note.starts_with(&format!("{} ", m.note)), "{} / {}", m.note, note);
             }
             prop_assert_eq!(m.timing, p.timeline.move_timing(index));
             prop_assert_eq!(m.arc.is_some(), m.code == "G2" || m.code == "G3");
@@ -125,6 +125,7 @@ proptest! {
             }
         }
         prop_assert_eq!(next_step, p.info.steps);
+        prop_assert_eq!(next_segment, p.trace.segments().len());
         let by_scan: Vec<u32> = moves
             .iter()
             .flat_map(|m| std::iter::repeat_n(m.line, m.steps as usize))

@@ -33,19 +33,31 @@ use super::parse::{Block, Problem, parse_line_into};
 use super::timing::{self, Timeline};
 use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
+use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Limit, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
+use crate::ideal::IdealPath;
+use crate::line::bresenham3d::Bresenham3d;
+use crate::line::dda::Dda;
+use crate::line::greedy::Greedy;
+use crate::line::nd::Nd;
+use crate::line::regions_wang::RegionsWang;
+use crate::line::walk6::Walk6;
+use crate::line::{TieAxis, gcd_option};
 use crate::machine::{MACHINE_AXES, Machine};
 use crate::memory::{HEAP_BUDGET_BYTES, held_bytes};
 use crate::planner::{self, Limits, Planner, Timing};
-use crate::request::{MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, too_long_advice};
+use crate::request::{
+    MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, TiePolicy, too_long_advice,
+};
 use crate::text::split_line;
-use crate::trace::{Trace, TraceBuilder};
+use crate::trace::{Stepper, Trace, TraceBuilder};
 use serde::Serialize;
 use serde_json::{Map, Value};
 use std::f64::consts::TAU;
+use std::rc::Rc;
 use tsify::Tsify;
 
 /// Arc algorithms a program may run its arcs with.
@@ -217,6 +229,45 @@ impl Settings {
     }
 }
 
+/// The program's line algorithm with its options at their defaults (a
+/// move gives only its endpoints), so that a straight move is stepped
+/// straight into the program's trace from typed endpoints: no request to
+/// read and no trace of its own to copy. Its options are read once, from an
+/// empty request, by the algorithm's own readers, as the catalogue path
+/// reads them for every move.
+#[derive(Clone, Copy, Debug)]
+enum LineStepper {
+    Regions(TiePolicy, bool),
+    Bresenham3d(TiePolicy, bool),
+    Nd(TiePolicy, bool),
+    Greedy(TieAxis),
+    Walk6(TieAxis),
+    Dda,
+    /// Stepped through the catalogue's request, as every move once was
+    /// (liu-float, whose options have no public reader).
+    ByRequest,
+}
+
+impl LineStepper {
+    fn of(id: &'static str) -> LineStepper {
+        let request = Request::new(id, Map::new());
+        let defaults = || -> Result<LineStepper, Error> {
+            let info = algorithms::find(id)?;
+            let tie = || request.tie(info.default_tie.unwrap_or(TiePolicy::Advance));
+            Ok(match id {
+                "regions" => LineStepper::Regions(tie()?, gcd_option(&request)?),
+                "bresenham3d" => LineStepper::Bresenham3d(tie()?, gcd_option(&request)?),
+                "nd" => LineStepper::Nd(tie()?, gcd_option(&request)?),
+                "greedy" => LineStepper::Greedy(TieAxis::from_request(&request)?),
+                "walk6" => LineStepper::Walk6(TieAxis::from_request(&request)?),
+                "dda" => LineStepper::Dda,
+                _ => LineStepper::ByRequest,
+            })
+        };
+        defaults().unwrap_or(LineStepper::ByRequest)
+    }
+}
+
 /// A warning or an error at a place in the program (1-based).
 #[derive(Serialize, Tsify, Clone, Debug, PartialEq, Eq)]
 pub struct Diagnostic {
@@ -347,8 +398,9 @@ pub struct ProgramInfo {
 pub struct Program {
     pub trace: Trace,
     pub info: ProgramInfo,
-    /// Every move, in order (`info.move_count` of them), kept compact.
-    pub records: MoveRecords,
+    /// Every move, in order (`info.move_count` of them), kept compact;
+    /// shared with the trace, whose segment notes start with their move's.
+    pub records: Rc<MoveRecords>,
     /// When every step happens (computed on demand).
     pub timeline: Timeline,
 }
@@ -536,7 +588,11 @@ impl MoveRecords {
             note,
             ", {} {}in the {}, center ",
             a.arc.turn.describe(),
-            if self.helical(r, arc) { "helix " } else { "arc " },
+            if self.helical(r, arc) {
+                "helix "
+            } else {
+                "arc "
+            },
             a.arc.plane.describe(),
         );
         tuple_into(&mut note, &[a.arc.center_mm[u], a.arc.center_mm[v]]);
@@ -549,7 +605,11 @@ impl MoveRecords {
         match a.arc.extra_turns {
             0 => {}
             t => {
-                let _ = write!(note, " (P adds {t} full turn{})", if t == 1 { "" } else { "s" });
+                let _ = write!(
+                    note,
+                    " (P adds {t} full turn{})",
+                    if t == 1 { "" } else { "s" }
+                );
             }
         }
         if let Some(center) = a.center_steps {
@@ -568,17 +628,32 @@ impl MoveRecords {
         }
         match a.as_line {
             Some(why) => {
-                let _ = write!(note, "; {why}, so it is stepped as a straight line to its end.");
+                let _ = write!(
+                    note,
+                    "; {why}, so it is stepped as a straight line to its end."
+                );
             }
             None => note.push('.'),
         }
         note
     }
 
+    /// The note of the move whose steps trace segment `segment` holds
+    /// (moves are in segment order, each with at least one segment).
+    fn note_of_segment(&self, segment: usize) -> String {
+        let index = self
+            .records
+            .partition_point(|r| (r.first_segment + r.segments) as usize <= segment);
+        let r = &self.records[index];
+        self.note(r, self.arc_of(r))
+    }
+
     /// Index of the move that took step index `k` (moves are in step
     /// order), or None past their last step.
     pub fn move_of_step(&self, k: u64) -> Option<usize> {
-        let index = self.records.partition_point(|m| m.first_step + m.steps <= k);
+        let index = self
+            .records
+            .partition_point(|m| m.first_step + m.steps <= k);
         (index < self.records.len()).then_some(index)
     }
 
@@ -641,6 +716,12 @@ pub struct Runner {
     /// The line being run, its vectors reused from line to line.
     block: Block,
     builder: TraceBuilder,
+    /// How straight moves are stepped.
+    line_stepper: LineStepper,
+    /// True (always, but in tests): straight moves and circle arcs run in
+    /// place where they can; false: every move through the catalogue's
+    /// request, the reference the in-place paths are tested against.
+    in_place: bool,
     planner: Planner,
     /// Per move, the planner blocks it took.
     move_blocks: Vec<std::ops::Range<usize>>,
@@ -696,6 +777,8 @@ impl Runner {
             lines_done: 0,
             lines,
             builder: TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps),
+            line_stepper: LineStepper::of(settings.line_algorithm),
+            in_place: true,
             planner: Planner::new(settings.limits),
             move_blocks: Vec::new(),
             settings,
@@ -855,14 +938,9 @@ impl Runner {
         Ok(Point::new(&c))
     }
 
-    /// Runs one catalogue request and appends its trace; the segments'
-    /// notes start with `note`. Returns (steps, segments) added.
-    fn append(
-        &mut self,
-        m: &MoveMm,
-        mut request: Request,
-        note: &str,
-    ) -> Result<(u64, usize), Error> {
+    /// Runs one catalogue request and appends its trace. Returns (steps,
+    /// segments) added.
+    fn append(&mut self, m: &MoveMm, mut request: Request) -> Result<(u64, usize), Error> {
         let place = |e: Error| match e.field_name() {
             Some("maxSteps") => {
                 // The whole program needs the steps before this move and at least the move's.
@@ -893,11 +971,7 @@ impl Runner {
         let info = algorithms::find(&request.algorithm).map_err(place)?;
         let part = (info.trace)(&request, algorithms::find).map_err(place)?;
         let added = (part.steps(), part.segments().len());
-        self.builder
-            .append(part, |segment| {
-                segment.setup_note = format!("{note} {}", segment.setup_note);
-            })
-            .map_err(place)?;
+        self.builder.append(part, |_| {}).map_err(place)?;
         self.steps += added.0;
         self.segments += added.1;
         Ok(added)
@@ -935,13 +1009,9 @@ impl Runner {
             motion: m.motion,
         };
         match &m.arc {
-            None => {
-                let note = self.moves.note(&record, None);
-                let line = self.settings.line_algorithm;
-                self.append(m, self.line_request(line, from, to), &note)?;
-            }
+            None => self.step_line(m, from, to)?,
             Some(arc) => {
-                let arc = self.step_arc(m, arc, from, to, &record)?;
+                let arc = self.step_arc(m, arc, from, to)?;
                 record.arc = u32::try_from(self.moves.arcs.len()).expect("fewer arcs than lines");
                 self.moves.arcs.push(arc);
             }
@@ -1001,15 +1071,13 @@ impl Runner {
         })
     }
 
-    /// Steps an arc move (`record` so far: no steps yet) and returns what
-    /// its record keeps of the arc.
+    /// Steps an arc move and returns what its record keeps of the arc.
     fn step_arc(
         &mut self,
         m: &MoveMm,
         arc: &ArcMm,
         from: Point,
         to: Point,
-        record: &MoveRecord,
     ) -> Result<ArcRecord, Error> {
         let [u, v, n] = arc.plane.axes();
         let spm = self.settings.machine.steps_per_mm();
@@ -1060,7 +1128,7 @@ impl Runner {
         );
         let Some(c) = grid else {
             kept.as_line = Some(TOO_SMALL);
-            self.step_as_line(m, from, to, record, &kept)?;
+            self.step_line(m, from, to)?;
             return Ok(kept);
         };
         let mut center = from;
@@ -1084,7 +1152,7 @@ impl Runner {
         let turns = ((arc.sweep_rad.abs() - local) / TAU).round();
         if turns < 0.0 {
             kept.as_line = Some(UNDER_ONE_STEP);
-            self.step_as_line(m, from, to, record, &kept)?;
+            self.step_line(m, from, to)?;
             return Ok(kept);
         }
         request.set("turns", Value::from(turns as u64));
@@ -1102,24 +1170,81 @@ impl Runner {
             request.set("lineAlgorithm", Value::from(self.settings.line_algorithm));
         }
         request.algorithm = algorithm.to_string();
-        let note = self.moves.note(record, Some(&kept));
-        self.append(m, request, &note)?;
+        if !(self.in_place && algorithm == circle_saleem::INFO.id && self.run_circle(&request)) {
+            self.append(m, request)?;
+        }
         Ok(kept)
     }
 
-    /// Steps an arc as a straight line (`kept` says why, for its note).
-    fn step_as_line(
-        &mut self,
-        m: &MoveMm,
-        from: Point,
-        to: Point,
-        record: &MoveRecord,
-        kept: &ArcRecord,
-    ) -> Result<(), Error> {
-        let note = self.moves.note(record, Some(kept));
-        let line = self.settings.line_algorithm;
-        self.append(m, self.line_request(line, from, to), &note)?;
+    /// Steps a straight move from `from` to `to` with the line algorithm.
+    fn step_line(&mut self, m: &MoveMm, from: Point, to: Point) -> Result<(), Error> {
+        let direct = self.in_place
+            && match self.line_stepper {
+                LineStepper::Regions(tie, gcd) => {
+                    self.run_line(RegionsWang::with_gcd(from, to, tie, gcd), from, to)
+                }
+                LineStepper::Bresenham3d(tie, gcd) => {
+                    self.run_line(Bresenham3d::new(from, to, tie, gcd), from, to)
+                }
+                LineStepper::Nd(tie, gcd) => self.run_line(Nd::new(from, to, tie, gcd), from, to),
+                LineStepper::Greedy(order) => self.run_line(Greedy::new(from, to, order), from, to),
+                LineStepper::Walk6(order) => self.run_line(Walk6::new(from, to, order), from, to),
+                LineStepper::Dda => self.run_line(Dda::new(from, to), from, to),
+                LineStepper::ByRequest => false,
+            };
+        if !direct {
+            let line = self.settings.line_algorithm;
+            self.append(m, self.line_request(line, from, to))?;
+        }
         Ok(())
+    }
+
+    /// Runs a circle request's stepper straight into the program's trace,
+    /// read and counted as the circle algorithm's own trace reads and
+    /// counts it (maxSteps being what the program has left), so it takes
+    /// the same steps, segment and checkpoints the catalogue path would
+    /// append. False, doing nothing, where that path would fail (it then
+    /// says why).
+    fn run_circle(&mut self, request: &Request) -> bool {
+        if request.check_options(circle_saleem::INFO.options).is_err() {
+            return false;
+        }
+        let Ok(spec) = ArcSpec::parse(request, false) else {
+            return false;
+        };
+        let left = self.settings.max_steps - self.steps;
+        let Ok(stepper) = SaleemCircle::new(&spec).counted(&TraceBuilder::new(spec.from, left))
+        else {
+            return false;
+        };
+        let before = self.builder.steps();
+        self.builder
+            .run_note_when_read(stepper, IdealPath::Arc(spec.ideal_arc()))
+            .expect("a counted circle within maxSteps runs");
+        self.steps += self.builder.steps() - before;
+        self.segments += 1;
+        true
+    }
+
+    /// Runs a line stepper straight into the program's trace when its
+    /// length is known and fits what is left of maxSteps: then it cannot
+    /// fail, and it takes exactly the steps, segment, note and checkpoints
+    /// the catalogue path would append. False, doing nothing, otherwise (the
+    /// catalogue path then says why it cannot run).
+    fn run_line<S: Stepper>(&mut self, stepper: S, from: Point, to: Point) -> bool {
+        let Some(steps) = stepper.remaining_steps() else {
+            return false;
+        };
+        if steps > self.settings.max_steps - self.steps {
+            return false;
+        }
+        let before = self.builder.steps();
+        self.builder
+            .run_note_when_read(stepper, IdealPath::Line { from, to })
+            .expect("a line of known length within maxSteps runs");
+        self.steps += self.builder.steps() - before;
+        self.segments += 1;
+        true
     }
 
     /// Finishes the trace (the moves run so far) and the program's record.
@@ -1146,17 +1271,22 @@ impl Runner {
                 limit: None,
             });
         }
-        let trace = self.builder.finish(&format!(
-            "gcode ({}, {})",
-            self.settings.line_algorithm, self.settings.arc_algorithm
-        ));
+        let records = Rc::new(self.moves);
+        let notes = Rc::clone(&records);
+        let trace = self
+            .builder
+            .finish(&format!(
+                "gcode ({}, {})",
+                self.settings.line_algorithm, self.settings.arc_algorithm
+            ))
+            .with_note_prefix(Rc::new(move |segment| notes.note_of_segment(segment)));
         let info = ProgramInfo {
             lines: self.lines,
             steps: trace.steps(),
             steps_per_mm: self.settings.machine.steps_per_mm(),
             line_algorithm: self.settings.line_algorithm,
             arc_algorithm: self.settings.arc_algorithm,
-            move_count: self.moves.len(),
+            move_count: records.len(),
             duration_seconds: timeline.duration_seconds(),
             pulses: trace.pulses_by_axis(),
             warnings: self.warnings,
@@ -1167,7 +1297,7 @@ impl Runner {
         Program {
             trace,
             info,
-            records: self.moves,
+            records,
             timeline,
         }
     }
@@ -1176,4 +1306,73 @@ impl Runner {
 /// Runs a whole program.
 pub fn run(source: &str, settings: Settings) -> Program {
     Runner::new(source.to_string(), settings).run_to_end()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A run of `source` with straight moves stepped as chosen: straight
+    /// into the trace, or through the catalogue's request, as before the
+    /// fast path.
+    fn run_with(source: &str, settings: &str, by_request: bool) -> Program {
+        let mut runner = Runner::new(source.to_string(), Settings::from_json(settings).unwrap());
+        runner.in_place = !by_request;
+        runner.run_to_end()
+    }
+
+    /// Everything a user reads of a program's trace and moves, as text.
+    fn seen(p: &Program) -> Vec<String> {
+        let t = &p.trace;
+        let mut out = vec![
+            serde_json::to_string(&p.info).unwrap(),
+            serde_json::to_string(&p.moves()).unwrap(),
+            serde_json::to_string(&t.summary()).unwrap(),
+            serde_json::to_string(&t.segment_summaries()).unwrap(),
+            format!("{:?}", t.points_flat(0, t.steps() + 1)),
+            format!("{:?}", t.decisions_flat(0, t.steps())),
+        ];
+        out.extend((0..t.steps()).map(|k| t.explain(k)));
+        out
+    }
+
+    fn program_line() -> impl Strategy<Value = String> {
+        let mm = || (-800i64..=800).prop_map(|v| format!("{:.2}", v as f64 / 100.0));
+        prop_oneof![
+            4 => (prop::sample::select(vec!["G0", "G1"]), mm(), mm(), mm())
+                .prop_map(|(g, x, y, z)| format!("{g} X{x} Y{y} Z{z} F300")),
+            1 => (prop::sample::select(vec!["G2", "G3"]), mm(), mm(), mm(), mm(), 0u32..2)
+                .prop_map(|(g, x, y, i, j, p)| format!("{g} X{x} Y{y} I{i} J{j} P{}", p + 1)),
+            1 => (prop::sample::select(vec!["G2", "G3"]), mm(), mm(), mm(), mm())
+                .prop_map(|(g, x, y, z, r)| format!("{g} X{x} Y{y} Z{z} R{r}")),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Straight moves and circle arcs stepped straight into the
+        /// program's trace give what the catalogue path gives: the same
+        /// steps, points, segments
+        /// and notes, decisions, explanations, moves and diagnostics, with
+        /// every line algorithm, either arc algorithm and a maxSteps the
+        /// program may run into.
+        #[test]
+        fn straight_moves_stepped_in_place_match_the_catalogue_path(
+            lines in prop::collection::vec(program_line(), 1..10),
+            line in prop::sample::select(crate::arc::arc_segments::LINE_ALGORITHMS),
+            arc in prop::sample::select(ARC_ALGORITHMS),
+            steps_per_mm in prop::sample::select(vec![1.0, 3.0, 10.0, 80.0]),
+            max_steps in prop::sample::select(vec![50u64, 2000, 50_000_000]),
+        ) {
+            let source = lines.join("\n");
+            let settings = format!(
+                r#"{{"stepsPerMm": {steps_per_mm}, "lineAlgorithm": "{line}", "arcAlgorithm": "{arc}", "maxSteps": {max_steps}}}"#
+            );
+            let fast = run_with(&source, &settings, false);
+            let slow = run_with(&source, &settings, true);
+            prop_assert_eq!(seen(&fast), seen(&slow));
+        }
+    }
 }

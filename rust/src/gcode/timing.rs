@@ -78,7 +78,15 @@ pub fn push_move(
         (_, None) => Rate::Unset,
     };
     let to: [i64; MACHINE_AXES] = to.coords().try_into().expect("3 axes");
-    let mut targets = Vec::new();
+    let mut previous: [i64; MACHINE_AXES] = from.coords().try_into().expect("3 axes");
+    let mut capped: Option<f64> = None;
+    let mut push = |target: [i64; MACHINE_AXES]| {
+        let delta = std::array::from_fn(|axis| (target[axis] - previous[axis]) as f64 / spm[axis]);
+        if let Some(top) = planner.push(delta, rate) {
+            capped = Some(capped.map_or(top, |c: f64| c.min(top)));
+        }
+        previous = target;
+    };
     if let Some(arc) = &m.arc {
         let vertices = planner::arc_chords(
             m.from_mm,
@@ -91,21 +99,12 @@ pub fn push_move(
         for vertex in &vertices[..vertices.len() - 1] {
             // A vertex lies within the arc's box, whose corners were
             // rounded to steps already: its rounding fits too.
-            targets.push(std::array::from_fn(|axis| {
+            push(std::array::from_fn(|axis| {
                 machine.to_steps(axis, vertex[axis]).unwrap_or(to[axis])
             }));
         }
     }
-    targets.push(to);
-    let mut previous: [i64; MACHINE_AXES] = from.coords().try_into().expect("3 axes");
-    let mut capped: Option<f64> = None;
-    for target in targets {
-        let delta = std::array::from_fn(|axis| (target[axis] - previous[axis]) as f64 / spm[axis]);
-        if let Some(top) = planner.push(delta, rate) {
-            capped = Some(capped.map_or(top, |c| c.min(top)));
-        }
-        previous = target;
-    }
+    push(to);
     PushedMove {
         blocks: first..planner.len(),
         feed_capped_to_mm_per_min: capped,
