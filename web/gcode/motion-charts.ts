@@ -151,6 +151,8 @@ export class MotionCharts {
   #clearCharts(): void {
     for (const chart of this.#charts) chart.destroy();
     this.#charts = [];
+    // Until the next window is drawn: tells a reader (a test) that the charts on screen are not yet this program's.
+    this.#chartsBox.dataset.drawn = 'false';
   }
 
   /** Asks for the chosen window around the cursor and draws it. */
@@ -240,5 +242,6 @@ export class MotionCharts {
         () => undefined,
       ),
     );
+    this.#chartsBox.dataset.drawn = 'true';
   }
 }
