@@ -7,7 +7,9 @@
 //! - a copy of the stepper's state every [`CHECKPOINT_INTERVAL`] steps of each
 //!   segment, so the decisions (discriminants, error terms, ...) of any step
 //!   range are recomputed exactly by replaying at most that many steps,
-//!   instead of being stored for every step.
+//!   instead of being stored for every step. The state at a segment's start
+//!   may instead be made again from its ideal path when read ([`Restart`]),
+//!   so that a trace of a million short segments keeps no stepper per segment.
 //!
 //! Index spaces: a *step index* k (0..steps) names the step from point k to
 //! point k + 1; a *point index* k (0..=steps) names the position after k steps.
@@ -399,8 +401,31 @@ pub struct Segment {
     /// For each of the stepper's columns, its index among the trace columns
     /// (shared by the segments of one stepper type).
     column_index: Rc<[usize]>,
-    /// Stepper state before segment step j * CHECKPOINT_INTERVAL.
+    /// Stepper state before the segment's first step.
+    first_state: FirstState,
+    /// Stepper state before segment step j * CHECKPOINT_INTERVAL, j >= 1
+    /// (at index j - 1): a segment shorter than that keeps none.
     states: Vec<Box<dyn Replay>>,
+}
+
+/// A segment's stepper state at its start: a copy, or made again when read.
+enum FirstState {
+    Kept(Box<dyn Replay>),
+    Restarted(Restart),
+}
+
+/// Makes a stepper again, at its start, from the ideal path it was run
+/// against ([`TraceBuilder::run_restartable`]): shared by the segments of one
+/// stepper type, so that a trace of many short segments (a G-code
+/// program's straight moves) keeps no copy of a stepper per segment.
+#[derive(Clone)]
+pub struct Restart(Rc<dyn Fn(&IdealPath) -> Box<dyn Replay>>);
+
+impl Restart {
+    /// `make` must give the stepper exactly as it was run from `ideal`.
+    pub fn new<S: Stepper>(make: impl Fn(&IdealPath) -> S + 'static) -> Restart {
+        Restart(Rc::new(move |ideal| Box::new(make(ideal))))
+    }
 }
 
 /// A finished trace.
@@ -504,7 +529,7 @@ impl TraceBuilder {
     /// points against `ideal`.
     pub fn run<S: Stepper>(&mut self, stepper: S, ideal: IdealPath) -> Result<(), Error> {
         let note = stepper.setup_note();
-        self.run_segment(stepper, ideal, note, false)
+        self.run_segment(stepper, ideal, note, false, None)
     }
 
     /// [`Self::run`], keeping no note: the segment's note is made from the
@@ -516,7 +541,18 @@ impl TraceBuilder {
         stepper: S,
         ideal: IdealPath,
     ) -> Result<(), Error> {
-        self.run_segment(stepper, ideal, String::new(), true)
+        self.run_segment(stepper, ideal, String::new(), true, None)
+    }
+
+    /// [`Self::run_note_when_read`], keeping no copy of the stepper's state
+    /// at the start either: `restart` makes it again when read.
+    pub fn run_restartable<S: Stepper>(
+        &mut self,
+        stepper: S,
+        ideal: IdealPath,
+        restart: &Restart,
+    ) -> Result<(), Error> {
+        self.run_segment(stepper, ideal, String::new(), true, Some(restart))
     }
 
     /// Indices of `columns` among the trace's, adding the new ones.
@@ -537,6 +573,7 @@ impl TraceBuilder {
         ideal: IdealPath,
         setup_note: String,
         note_at_start: bool,
+        restart: Option<&Restart>,
     ) -> Result<(), Error> {
         let first_step = self.steps.len() as u64;
         if let Some(n) = stepper.remaining_steps() {
@@ -546,6 +583,10 @@ impl TraceBuilder {
         }
         let column_index = self.column_slots(S::Why::COLUMNS);
         self.add_figure(S::Why::FIGURE);
+        let first_state = match restart {
+            Some(restart) => FirstState::Restarted(restart.clone()),
+            None => FirstState::Kept(Box::new(stepper.clone())),
+        };
         let mut segment = Segment {
             first_step,
             steps: 0,
@@ -554,6 +595,7 @@ impl TraceBuilder {
             setup_note,
             note_at_start,
             column_index,
+            first_state,
             states: Vec::new(),
         };
         let mut stepper = stepper;
@@ -562,7 +604,7 @@ impl TraceBuilder {
         // CHECKPOINT_INTERVAL steps of the trace) is due, written straight
         // into the array; the position moves by each chunk's displacement.
         loop {
-            if segment.steps % CHECKPOINT_INTERVAL == 0 {
+            if segment.steps > 0 && segment.steps % CHECKPOINT_INTERVAL == 0 {
                 segment.states.push(Box::new(stepper.clone()));
             }
             let total = self.steps.len() as u64;
@@ -862,7 +904,7 @@ impl Trace {
             let ties = self
                 .segments
                 .iter()
-                .map(|s| s.states[0].clone_box().count_ties(s.steps))
+                .map(|s| s.state_at(0).count_ties(s.steps))
                 .sum();
             acc.finish(ties)
         })
@@ -1132,7 +1174,7 @@ impl Trace {
     fn replay_to(&self, seg: usize, k: u64) -> Box<dyn Replay> {
         let segment = &self.segments[seg];
         let local = k - segment.first_step;
-        let mut stepper = segment.states[(local / CHECKPOINT_INTERVAL) as usize].clone_box();
+        let mut stepper = segment.state_at((local / CHECKPOINT_INTERVAL) as usize);
         let mut scratch = vec![0.0; MAX_COLUMNS];
         for _ in 0..local % CHECKPOINT_INTERVAL {
             stepper.replay_step(&mut scratch);
@@ -1267,10 +1309,20 @@ pub struct SegmentSummary<'a> {
 }
 
 impl Segment {
+    /// A copy of the stepper's state before segment step
+    /// `checkpoint` * CHECKPOINT_INTERVAL.
+    fn state_at(&self, checkpoint: usize) -> Box<dyn Replay> {
+        match (checkpoint, &self.first_state) {
+            (0, FirstState::Kept(state)) => state.clone_box(),
+            (0, FirstState::Restarted(restart)) => (restart.0)(&self.ideal),
+            _ => self.states[checkpoint - 1].clone_box(),
+        }
+    }
+
     /// The stepper's note: kept, or made from its state at the start.
     fn own_note(&self) -> Cow<'_, str> {
         if self.note_at_start {
-            Cow::Owned(self.states[0].setup_note())
+            Cow::Owned(self.state_at(0).setup_note())
         } else {
             Cow::Borrowed(&self.setup_note)
         }

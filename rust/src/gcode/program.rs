@@ -53,7 +53,7 @@ use crate::request::{
     MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, TiePolicy, too_long_advice,
 };
 use crate::text::split_line;
-use crate::trace::{Stepper, Trace, TraceBuilder};
+use crate::trace::{Restart, Stepper, Trace, TraceBuilder};
 use serde::Serialize;
 use serde_json::{Map, Value};
 use std::f64::consts::TAU;
@@ -265,6 +265,30 @@ impl LineStepper {
             })
         };
         defaults().unwrap_or(LineStepper::ByRequest)
+    }
+
+    /// Makes a straight move's stepper again from its segment's line, as
+    /// [`Runner::step_line`] made it, so the trace keeps no copy per move.
+    fn restart(self) -> Option<Restart> {
+        fn from_line<S: Stepper>(make: impl Fn(Point, Point) -> S + 'static) -> Option<Restart> {
+            Some(Restart::new(move |ideal| match ideal {
+                IdealPath::Line { from, to } => make(*from, *to),
+                _ => unreachable!("a straight move is measured against its line"),
+            }))
+        }
+        match self {
+            LineStepper::Regions(tie, gcd) => {
+                from_line(move |from, to| RegionsWang::with_gcd(from, to, tie, gcd))
+            }
+            LineStepper::Bresenham3d(tie, gcd) => {
+                from_line(move |from, to| Bresenham3d::new(from, to, tie, gcd))
+            }
+            LineStepper::Nd(tie, gcd) => from_line(move |from, to| Nd::new(from, to, tie, gcd)),
+            LineStepper::Greedy(order) => from_line(move |from, to| Greedy::new(from, to, order)),
+            LineStepper::Walk6(order) => from_line(move |from, to| Walk6::new(from, to, order)),
+            LineStepper::Dda => from_line(Dda::new),
+            LineStepper::ByRequest => None,
+        }
     }
 }
 
@@ -718,6 +742,8 @@ pub struct Runner {
     builder: TraceBuilder,
     /// How straight moves are stepped.
     line_stepper: LineStepper,
+    /// Makes a straight move's stepper again when its segment is read.
+    line_restart: Option<Restart>,
     /// True (always, but in tests): straight moves and circle arcs run in
     /// place where they can; false: every move through the catalogue's
     /// request, the reference the in-place paths are tested against.
@@ -778,6 +804,7 @@ impl Runner {
             lines,
             builder: TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps),
             line_stepper: LineStepper::of(settings.line_algorithm),
+            line_restart: LineStepper::of(settings.line_algorithm).restart(),
             in_place: true,
             planner: Planner::new(settings.limits),
             move_blocks: Vec::new(),
@@ -1238,9 +1265,12 @@ impl Runner {
         if steps > self.settings.max_steps - self.steps {
             return false;
         }
+        let Some(restart) = &self.line_restart else {
+            return false;
+        };
         let before = self.builder.steps();
         self.builder
-            .run_note_when_read(stepper, IdealPath::Line { from, to })
+            .run_restartable(stepper, IdealPath::Line { from, to }, restart)
             .expect("a line of known length within maxSteps runs");
         self.steps += self.builder.steps() - before;
         self.segments += 1;
@@ -1347,6 +1377,27 @@ mod tests {
             1 => (prop::sample::select(vec!["G2", "G3"]), mm(), mm(), mm(), mm())
                 .prop_map(|(g, x, y, z, r)| format!("{g} X{x} Y{y} Z{z} R{r}")),
         ]
+    }
+
+    /// A straight move longer than a checkpoint interval keeps stepper
+    /// states past its start, while its first state is made again when
+    /// read: every line algorithm reads back as the catalogue path's.
+    #[test]
+    fn long_straight_moves_read_back_as_the_catalogue_path() {
+        let source = "G1 X70 Y-23 Z9 F600\nG1 X1 Y2 Z3\nG0 X-60 Y70 Z0";
+        for line in crate::arc::arc_segments::LINE_ALGORITHMS {
+            let settings = format!(r#"{{"stepsPerMm": 80, "lineAlgorithm": "{line}"}}"#);
+            let fast = run_with(source, &settings, false);
+            assert!(
+                fast.trace.steps() > 2 * crate::trace::CHECKPOINT_INTERVAL,
+                "{line}"
+            );
+            assert_eq!(
+                seen(&fast),
+                seen(&run_with(source, &settings, true)),
+                "{line}"
+            );
+        }
     }
 
     proptest! {
