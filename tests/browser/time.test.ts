@@ -142,7 +142,16 @@ describe('G-code mode: time', () => {
       // The box of the speed and step-rate charts, which stays while the
       // charts in it are redrawn for a new window (a chart itself could be
       // replaced while the screenshot waited for it: 'not attached to the DOM').
-      const speed = await screenshot(page, `time-${name}-speed`, '[data-testid=motion] > .charts');
+      // A window redrawn for the cursor (it follows the playback) can leave the
+      // box empty for a frame: wait for its charts again and take it again.
+      let speed: Awaited<ReturnType<typeof screenshot>> | undefined;
+      for (let attempt = 0; !speed; attempt++) {
+        await motion.locator('.charts[data-drawn=true] canvas').first().waitFor();
+        speed = await screenshot(page, `time-${name}-speed`, '[data-testid=motion] > .charts').catch((error: unknown) => {
+          if (attempt >= 4) throw error;
+          return undefined;
+        });
+      }
       expect(speed.differingFraction, file).toBeGreaterThan(0.03);
       const timing = await screenshot(page, `time-${name}-timing`, '[data-testid=timing]');
       expect(timing.differingFraction, file).toBeGreaterThan(0.02);
