@@ -49,6 +49,9 @@ pub struct Points {
     pub coords: Vec<i64>,
 }
 
+/// Points read from text, and their steps when asked for.
+type PointsRead = (Points, Option<Arc<[Step]>>);
+
 impl Points {
     pub fn len(&self) -> u64 {
         (self.coords.len() / self.dims) as u64
@@ -101,7 +104,7 @@ impl Points {
 
     /// [`Self::from_text`], and when `with_steps`, the points' steps
     /// ([`Self::steps`]) made as the rows are read, not in a second pass.
-    fn read_text(text: &str, dims: usize, with_steps: bool) -> Result<(Points, Option<Arc<[Step]>>), Error> {
+    fn read_text(text: &str, dims: usize, with_steps: bool) -> Result<PointsRead, Error> {
         let mut reader = TextReader::new(dims, with_steps);
         // Text with a bracket anywhere is a printed list. Plain rows have
         // none, so the rows are read until a line with one shows (then the
@@ -739,6 +742,15 @@ fn first_difference(trace: &Trace, points: &Points, your_steps: &[Step]) -> Opti
     })
 }
 
+/// The options of `info` that a check tries, each with its values (see
+/// [`tried_values`]), in the order `info` declares them.
+fn tried_options(info: &AlgorithmInfo) -> Vec<(&OptionSpec, Vec<Value>)> {
+    info.options
+        .iter()
+        .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
+        .collect()
+}
+
 /// The values of an option that a check tries: every choice, both booleans,
 /// each integer of a small declared range; None for any other option (kept
 /// as the request gives it).
@@ -774,11 +786,7 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
     // matched, for those whose path is known to be the path of one of them.
     let mut traced: Vec<(&str, Vec<Option<Value>>, bool)> = Vec::new();
     for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
-        let tried: Vec<(&OptionSpec, Vec<Value>)> = info
-            .options
-            .iter()
-            .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
-            .collect();
+        let tried = tried_options(info);
         let mut base = Map::new();
         for (name, value) in request.options() {
             let declared = info.options.iter().find(|o| o.name == name);
@@ -1290,11 +1298,7 @@ mod tests {
             let to: Vec<i64> = from.iter().zip(&end).map(|(f, e)| f + e).collect();
             let base = request(&format!(r#"{{"algorithm":"regions","from":{from:?},"to":{to:?}}}"#));
             for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == Family::Line) {
-                let tried: Vec<(&OptionSpec, Vec<Value>)> = info
-                    .options
-                    .iter()
-                    .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
-                    .collect();
+                let tried = tried_options(info);
                 let all = combinations(&tried);
                 for (at, combination) in all.iter().enumerate() {
                     let Some((id, earlier)) = same_path_as(info, &base, &tried, combination) else {
@@ -1302,11 +1306,7 @@ mod tests {
                     };
                     let position = |id| algorithms::ALGORITHMS.iter().position(|a| a.id == id);
                     let other = algorithms::find(id).unwrap();
-                    let other_tried: Vec<(&OptionSpec, Vec<Value>)> = other
-                        .options
-                        .iter()
-                        .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
-                        .collect();
+                    let other_tried = tried_options(other);
                     prop_assert!(
                         position(id) < position(info.id) || (id == info.id && all[..at].contains(&earlier)),
                         "{}: {:?} pairs with a later {} {:?}", info.id, combination, id, earlier
@@ -1341,11 +1341,7 @@ mod tests {
             let steps = points.steps();
             let entries = also_matches(&r, &points, &steps);
             for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == Family::Line) {
-                let tried: Vec<(&OptionSpec, Vec<Value>)> = info
-                    .options
-                    .iter()
-                    .filter_map(|spec| tried_values(spec).map(|values| (spec, values)))
-                    .collect();
+                let tried = tried_options(info);
                 for combination in combinations(&tried) {
                     let same = full_path(info, &r, &tried, &combination).as_deref() == Some(&steps[..]);
                     let named = entries.iter().any(|e| {
