@@ -426,6 +426,19 @@ pub struct GcodeResult {
     timeline: crate::gcode::timing::Timeline,
 }
 
+impl GcodeResult {
+    /// `from..to` as step indices of the program, else an error naming `range`.
+    fn step_range(&self, from: u32, to: u32) -> Result<(u64, u64), JsValue> {
+        if from > to || to as u64 > self.steps {
+            return Err(to_js_error(&Error::field(
+                "range",
+                format!("step indices {from}..{to} are outside 0..{}", self.steps),
+            )));
+        }
+        Ok((from as u64, to as u64))
+    }
+}
+
 #[wasm_bindgen]
 impl GcodeResult {
     /// Pulses, warnings, errors and the number of moves (see
@@ -459,13 +472,8 @@ impl GcodeResult {
     /// The 1-based source line of each step index in `from..to`.
     #[wasm_bindgen(js_name = lineByStep)]
     pub fn line_by_step(&self, from: u32, to: u32) -> Result<Vec<u32>, JsValue> {
-        if from > to || to as u64 > self.steps {
-            return Err(to_js_error(&Error::field(
-                "range",
-                format!("step indices {from}..{to} are outside 0..{}", self.steps),
-            )));
-        }
-        Ok(self.moves.line_by_step(from as u64, to as u64))
+        let (from, to) = self.step_range(from, to)?;
+        Ok(self.moves.line_by_step(from, to))
     }
 
     /// Index of the move programmed on a 1-based source line, if it moved.
@@ -486,13 +494,8 @@ impl GcodeResult {
     /// program's start, on the planned profile (`gcode::timing`).
     #[wasm_bindgen(js_name = stepTimes)]
     pub fn step_times(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
-        if from > to || to as u64 > self.steps {
-            return Err(to_js_error(&Error::field(
-                "range",
-                format!("step indices {from}..{to} are outside 0..{}", self.steps),
-            )));
-        }
-        Ok(self.timeline.step_seconds(from as u64, to as u64))
+        let (from, to) = self.step_range(from, to)?;
+        Ok(self.timeline.step_seconds(from, to))
     }
 
     /// The planned speed over time as corners of a polyline: (seconds,
