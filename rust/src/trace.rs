@@ -392,12 +392,9 @@ pub struct Segment {
     pub steps: u64,
     pub start: Point,
     pub ideal: IdealPath,
-    /// The note of its stepper; empty when [`Segment::note_at_start`] says
-    /// it is made when read.
-    pub setup_note: String,
-    /// True when the note is the stepper's own, made when read from its
-    /// state at the segment's start (`states[0]`) instead of kept.
-    note_at_start: bool,
+    /// The note of its stepper, or None when it is made when read from the
+    /// stepper's state at the segment's start ([`Segment::note`]).
+    pub setup_note: Option<String>,
     /// For each of the stepper's columns, its index among the trace columns
     /// (shared by the segments of one stepper type).
     column_index: Rc<[usize]>,
@@ -419,7 +416,10 @@ enum FirstState {
 /// stepper type, so that a trace of many short segments (a G-code
 /// program's straight moves) keeps no copy of a stepper per segment.
 #[derive(Clone)]
-pub struct Restart(Rc<dyn Fn(&IdealPath) -> Box<dyn Replay>>);
+pub struct Restart(Rc<MakeStepper>);
+
+/// Makes a stepper at its start from the ideal path it runs against.
+type MakeStepper = dyn Fn(&IdealPath) -> Box<dyn Replay>;
 
 impl Restart {
     /// `make` must give the stepper exactly as it was run from `ideal`.
@@ -529,7 +529,7 @@ impl TraceBuilder {
     /// points against `ideal`.
     pub fn run<S: Stepper>(&mut self, stepper: S, ideal: IdealPath) -> Result<(), Error> {
         let note = stepper.setup_note();
-        self.run_segment(stepper, ideal, note, false, None)
+        self.run_segment(stepper, ideal, Some(note), None)
     }
 
     /// [`Self::run`], keeping no note: the segment's note is made from the
@@ -541,7 +541,7 @@ impl TraceBuilder {
         stepper: S,
         ideal: IdealPath,
     ) -> Result<(), Error> {
-        self.run_segment(stepper, ideal, String::new(), true, None)
+        self.run_segment(stepper, ideal, None, None)
     }
 
     /// [`Self::run_note_when_read`], keeping no copy of the stepper's state
@@ -552,7 +552,7 @@ impl TraceBuilder {
         ideal: IdealPath,
         restart: &Restart,
     ) -> Result<(), Error> {
-        self.run_segment(stepper, ideal, String::new(), true, Some(restart))
+        self.run_segment(stepper, ideal, None, Some(restart))
     }
 
     /// Indices of `columns` among the trace's, adding the new ones.
@@ -571,8 +571,7 @@ impl TraceBuilder {
         &mut self,
         stepper: S,
         ideal: IdealPath,
-        setup_note: String,
-        note_at_start: bool,
+        setup_note: Option<String>,
         restart: Option<&Restart>,
     ) -> Result<(), Error> {
         let first_step = self.steps.len() as u64;
@@ -593,7 +592,6 @@ impl TraceBuilder {
             start: self.position,
             ideal,
             setup_note,
-            note_at_start,
             column_index,
             first_state,
             states: Vec::new(),
@@ -1320,11 +1318,10 @@ impl Segment {
     }
 
     /// The stepper's note: kept, or made from its state at the start.
-    fn own_note(&self) -> Cow<'_, str> {
-        if self.note_at_start {
-            Cow::Owned(self.state_at(0).setup_note())
-        } else {
-            Cow::Borrowed(&self.setup_note)
+    pub fn note(&self) -> Cow<'_, str> {
+        match &self.setup_note {
+            Some(note) => Cow::Borrowed(note),
+            None => Cow::Owned(self.state_at(0).setup_note()),
         }
     }
 }
@@ -1352,7 +1349,7 @@ impl Trace {
 
     /// The note of segment `index`: what a learner should know before it.
     pub fn segment_note(&self, index: usize) -> Cow<'_, str> {
-        let own = self.segments[index].own_note();
+        let own = self.segments[index].note();
         match &self.note_prefix {
             None => own,
             Some(prefix) => Cow::Owned(format!("{} {own}", prefix(index))),

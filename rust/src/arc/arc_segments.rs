@@ -380,7 +380,7 @@ pub fn trace_chords(
     for (part, ideal, note) in parts {
         builder.append(part, |segment| {
             segment.ideal = ideal.clone();
-            segment.setup_note = format!("{note}: {}", segment.setup_note);
+            segment.setup_note = Some(format!("{note}: {}", segment.note()));
         })?;
     }
     Ok(builder.finish(id))
@@ -576,7 +576,7 @@ mod tests {
             assert!(matches!(segment.ideal, IdealPath::Arc(_)));
         }
         assert_eq!(t.end(), Point::new(&[0, 10, 0]));
-        let note = &t.segments()[0].setup_note;
+        let note = t.segments()[0].note();
         assert!(
             note.contains("floor(arc length / segmentLength 5) gives 3 chords"),
             "{note}"

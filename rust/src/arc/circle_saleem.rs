@@ -881,7 +881,7 @@ mod tests {
         );
         assert!(
             t.segments()[0]
-                .setup_note
+                .note()
                 .contains("7 circle steps to (0, 5, 0), which is the end point")
         );
     }
@@ -967,7 +967,7 @@ mod tests {
         assert_eq!(t.end(), Point::new(&[0, 6, 0]));
         assert!(
             t.segments()[0]
-                .setup_note
+                .note()
                 .contains("1 correction step close")
         );
     }

@@ -525,7 +525,7 @@ mod tests {
         assert!(t.explain(0).starts_with(
             "n_c = 4 >= n_z = 2, so the arc steps every time; the linear axis's error is 4 = 4 (a tie, decided by 'hold'), so the linear axis waits. Arc: Octant 1:"
         ), "{}", t.explain(0));
-        assert!(t.segments()[0].setup_note.contains("n_c = 4 steps"));
+        assert!(t.segments()[0].note().contains("n_c = 4 steps"));
     }
 
     #[test]
@@ -619,7 +619,7 @@ mod tests {
                 // Three chords of a circle of radius 10 (each 17.3 long, the
                 // longest axis at least 10 after rounding) take at least 30 steps.
                 assert!(t.steps() >= 30, "{algorithm} {from:?}: {} steps", t.steps());
-                let note = &t.segments()[0].setup_note;
+                let note = t.segments()[0].note();
                 assert!(
                     note.contains(
                         "gives 1 chord, raised to 3, the fewest that go around a full circle"
