@@ -106,15 +106,15 @@ fn round_to_scale(v: f64, scale: f64) -> f64 {
 /// [`LiuFloat::new`] keeps k as the f64 nearest K / S and epsilon_1 as the
 /// f64 nearest (K - S/2) / S (S/2 is whole from d = 1; each product with S
 /// is within 10^-5 of K or K - S/2 before it is rounded). Say epsilon stands
-/// for the integer E = epsilon * S. Every step then computes E - S * moved
-/// + K exactly, as long as |E|, K and S stay below [`EXACT_SCALED`] (the
+/// for the integer E = epsilon * S. Every step then computes
+/// E - S * moved + K exactly, as long as |E|, K and S stay below [`EXACT_SCALED`] (the
 /// argument there, which holds for `advance` and for `fill`'s integer loop
 /// alike), and compares epsilon with 0, which is comparing E with 0. So
 /// E / S is exactly Liu's epsilon in exact arithmetic, k(i + 1) - 1/2 - y_i,
 /// the same rational number for every such d: each decision, and the path,
 /// is the same for all of them. The bound holds: without the finish rule,
-/// epsilon stays in [k - 1, k] (from k - 1/2; a step from epsilon >= 0, or
-/// > 0 with hold, lands in [k - 1, 2k - 1], a hold from epsilon <= 0 in
+/// epsilon stays in [k - 1, k] (from k - 1/2; a step from epsilon >= 0,
+/// or above 0 with hold, lands in [k - 1, 2k - 1], a hold from epsilon <= 0 in
 /// [2k - 1, k]), so |E| <= S <= 10^10; and the finish rule never acts, since
 /// y_n = kn + k - 1/2 - epsilon_n is a whole number within 1/2 of |Δa|,
 /// so it is |Δa|, and y never passes |Δa| nor falls so far behind that it
