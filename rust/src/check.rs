@@ -21,8 +21,8 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::line::GCD;
 use crate::line::bresenham3d;
-use crate::request::tie_option;
 use crate::line::liu_float::{self, DECIMALS};
+use crate::request::tie_option;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
 use crate::text::{echo, split_line};
 use crate::trace::Trace;
@@ -165,7 +165,9 @@ impl Points {
 
 /// The step from `before` to `now`, at most one cell apart on each axis.
 fn step_between(before: &[i64], now: &[i64]) -> Step {
-    (0..before.len()).fold(Step::NONE, |step, axis| step.with(axis, now[axis] - before[axis]))
+    (0..before.len()).fold(Step::NONE, |step, axis| {
+        step.with(axis, now[axis] - before[axis])
+    })
 }
 
 /// Whether `now` is more than one cell from `before` on some axis.
@@ -229,7 +231,17 @@ const PLAIN_DIGITS: usize = 15;
 const PLAIN_CELLS: usize = 8;
 
 /// 10^0 to 10^8.
-const POWERS_OF_TEN: [i64; 9] = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000];
+const POWERS_OF_TEN: [i64; 9] = [
+    1,
+    10,
+    100,
+    1_000,
+    10_000,
+    100_000,
+    1_000_000,
+    10_000_000,
+    100_000_000,
+];
 
 /// The ASCII digits that start `word` (eight bytes of text, the first in
 /// the lowest byte): how many (0 to 8), and the number they write. A loop
@@ -346,7 +358,13 @@ impl TextReader {
     /// reading then reads, to the same values or to its error. This is
     /// the million-point file's path: one look at each byte, the number
     /// built as its digits go by.
-    fn plain_row(&mut self, bytes: &[u8], start: usize, line: u32, pick: Option<&[usize]>) -> Option<usize> {
+    fn plain_row(
+        &mut self,
+        bytes: &[u8],
+        start: usize,
+        line: u32,
+        pick: Option<&[usize]>,
+    ) -> Option<usize> {
         let mut cells = [0i64; PLAIN_CELLS];
         let mut count = 0;
         let mut i = start;
@@ -649,7 +667,12 @@ pub fn check_trace(request: &Request, trace: &Trace, points: &Points) -> Check {
 
 /// [`check_trace`] with the points' steps, made once: the rule's path is
 /// compared with them, and every candidate of alsoMatches follows them.
-fn check_with_steps(request: &Request, trace: &Trace, points: &Points, steps: &Arc<[Step]>) -> Check {
+fn check_with_steps(
+    request: &Request,
+    trace: &Trace,
+    points: &Points,
+    steps: &Arc<[Step]>,
+) -> Check {
     let first_difference = first_difference(trace, points, steps);
     Check {
         matches: first_difference.is_none(),
@@ -805,12 +828,13 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
                 .zip(&choice)
                 .map(|((_, values), &i)| Some(values[i].clone()))
                 .collect();
-            let known = same_path_as(info, request, &tried, &combination).and_then(|(id, earlier)| {
-                traced
-                    .iter()
-                    .find(|(i, c, _)| *i == id && *c == earlier)
-                    .map(|&(_, _, path_follows)| path_follows)
-            });
+            let known =
+                same_path_as(info, request, &tried, &combination).and_then(|(id, earlier)| {
+                    traced
+                        .iter()
+                        .find(|(i, c, _)| *i == id && *c == earlier)
+                        .map(|&(_, _, path_follows)| path_follows)
+                });
             let path_follows = known.unwrap_or_else(|| {
                 let asked = combination.clone();
                 let path_follows = trace_combination(info, &base, &tried, steps, &mut combination)
@@ -1268,7 +1292,9 @@ mod tests {
     fn line_end() -> impl Strategy<Value = Vec<i64>> {
         (
             prop_oneof![
-                proptest::sample::select(vec![1i64, 2, 4, 5, 8, 10, 16, 20, 25, 40, 50, 64, 80, 100, 125, 200, 250, 1000]),
+                proptest::sample::select(vec![
+                    1i64, 2, 4, 5, 8, 10, 16, 20, 25, 40, 50, 64, 80, 100, 125, 200, 250, 1000
+                ]),
                 1i64..300,
             ],
             0.0f64..=1.0,
@@ -1277,7 +1303,11 @@ mod tests {
             proptest::collection::vec(proptest::bool::ANY, 3),
         )
             .prop_map(|(n, a, b, major, negative)| {
-                let mut end = vec![n, (a * n as f64).round() as i64, (b * n as f64).round() as i64];
+                let mut end = vec![
+                    n,
+                    (a * n as f64).round() as i64,
+                    (b * n as f64).round() as i64,
+                ];
                 end.swap(0, major);
                 for (c, &neg) in end.iter_mut().zip(&negative) {
                     if neg {
@@ -1439,11 +1469,17 @@ mod tests {
         );
         // A bracket anywhere makes the text a list, even after rows read
         // as lines, or after a line that is not a point.
-        for text in ["5 5 5\n[1, 1, 1]", "0,0,0\n1,a\n[[1, 1, 1]]", "# 1 2\n1 1 1\n(1 1 1)"] {
+        for text in [
+            "5 5 5\n[1, 1, 1]",
+            "0,0,0\n1,a\n[[1, 1, 1]]",
+            "# 1 2\n1 1 1\n(1 1 1)",
+        ] {
             assert_eq!(Points::from_text(text, 3).unwrap().coords, vec![1, 1, 1]);
         }
         assert_eq!(
-            Points::from_text("0 0 0\n# (a list)\n", 3).unwrap_err().to_string(),
+            Points::from_text("0 0 0\n# (a list)\n", 3)
+                .unwrap_err()
+                .to_string(),
             "line 2, column 4: point 0 has 2 coordinates; the move has 3"
         );
     }

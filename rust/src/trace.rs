@@ -1093,19 +1093,20 @@ impl Trace {
         // One row's share of point k: its coordinates and ideal position
         // when it starts a bucket (the error is computed only then), its
         // deviation always.
-        let mut record = |k: u64, p: &Point, deviation: f64, error: &dyn Fn() -> [f64; MAX_AXES]| {
-            let r = ((k - from) / bucket) as usize;
-            if (k - from) % bucket == 0 {
-                head[r] = k as f64;
-                let error = error();
-                for a in 0..dims {
-                    head[(1 + a) * rows + r] = p.get(a) as f64;
-                    head[(1 + dims + a) * rows + r] = p.get(a) as f64 - error[a];
+        let mut record =
+            |k: u64, p: &Point, deviation: f64, error: &dyn Fn() -> [f64; MAX_AXES]| {
+                let r = ((k - from) / bucket) as usize;
+                if (k - from) % bucket == 0 {
+                    head[r] = k as f64;
+                    let error = error();
+                    for a in 0..dims {
+                        head[(1 + a) * rows + r] = p.get(a) as f64;
+                        head[(1 + dims + a) * rows + r] = p.get(a) as f64 - error[a];
+                    }
                 }
-            }
-            largest[r] = largest[r].max(deviation);
-            smallest[r] = smallest[r].min(deviation);
-        };
+                largest[r] = largest[r].max(deviation);
+                smallest[r] = smallest[r].min(deviation);
+            };
         self.for_each_piece(from, to, |piece| {
             // A line is walked incrementally, as the metrics are; its points
             // decoded alongside, since the walk hands out numerators alone.
@@ -1116,12 +1117,16 @@ impl Trace {
                 if i > 0 {
                     p.apply(piece.steps[i - 1]);
                 }
-                record(piece.first + i as u64, &p, deviation, &|| numerator.map(|v| v as f64 / n));
+                record(piece.first + i as u64, &p, deviation, &|| {
+                    numerator.map(|v| v as f64 / n)
+                });
                 i += 1;
             });
             if !walked {
                 piece.for_each_point(|k, p, meter, local, steps| {
-                    record(k, p, meter.deviation(p), &|| meter.axis_error(p, local, steps));
+                    record(k, p, meter.deviation(p), &|| {
+                        meter.axis_error(p, local, steps)
+                    });
                 });
             }
         });

@@ -455,11 +455,15 @@ impl GcodeResult {
         if from > to || to > self.moves.len() {
             return Err(to_js_error(&Error::field(
                 "range",
-                format!("move indices {from}..{to} are outside 0..{}", self.moves.len()),
+                format!(
+                    "move indices {from}..{to} are outside 0..{}",
+                    self.moves.len()
+                ),
             )));
         }
-        let moves: Vec<crate::gcode::Move> =
-            (from..to).map(|i| self.moves.get(i, &self.timeline)).collect();
+        let moves: Vec<crate::gcode::Move> = (from..to)
+            .map(|i| self.moves.get(i, &self.timeline))
+            .collect();
         Ok(to_js(&moves))
     }
 

@@ -233,7 +233,10 @@ fn a_program_that_does_not_fit_in_memory_stops_cleanly_saying_how_far_it_got() {
     runner.set_heap_budget(held_bytes() + (1 << 20));
     let progress = runner.advance(u32::MAX);
     assert!(progress.done, "a stopped run is over");
-    let error = runner.out_of_memory().expect("the run stopped for memory").clone();
+    let error = runner
+        .out_of_memory()
+        .expect("the run stopped for memory")
+        .clone();
     let p = runner.finish();
     // The lines before the stop ran, one move each; the stop is the last error, at the next line.
     let ran = p.moves().len() as u32;
@@ -249,7 +252,11 @@ fn a_program_that_does_not_fit_in_memory_stops_cleanly_saying_how_far_it_got() {
         "{}",
         error.message
     );
-    assert!(error.message.contains("run it in parts of fewer lines"), "{}", error.message);
+    assert!(
+        error.message.contains("run it in parts of fewer lines"),
+        "{}",
+        error.message
+    );
     // What ran is a whole trace: it ends where the last move ended.
     assert_eq!(
         p.trace.point(p.info.steps).coords(),

@@ -51,9 +51,22 @@ fn program_line() -> impl Strategy<Value = String> {
     prop_oneof![
         (prop::sample::select(vec!["G0", "G1"]), mm(), mm(), mm())
             .prop_map(|(g, x, y, z)| format!("{g} X{x} Y{y} Z{z} F{}", 300)),
-        (prop::sample::select(vec!["G2", "G3"]), mm(), mm(), mm(), mm(), 0u32..3)
+        (
+            prop::sample::select(vec!["G2", "G3"]),
+            mm(),
+            mm(),
+            mm(),
+            mm(),
+            0u32..3
+        )
             .prop_map(|(g, x, y, i, j, p)| format!("{g} X{x} Y{y} I{i} J{j} P{}", p + 1)),
-        (prop::sample::select(vec!["G2", "G3"]), mm(), mm(), mm(), mm())
+        (
+            prop::sample::select(vec!["G2", "G3"]),
+            mm(),
+            mm(),
+            mm(),
+            mm()
+        )
             .prop_map(|(g, x, y, z, r)| format!("{g} X{x} Y{y} Z{z} R{r}")),
         Just("G4 P0.1".to_string()),
     ]

@@ -95,11 +95,20 @@ fn a_feed_above_the_max_rate_is_capped_with_a_warning_once_per_feed() {
     // Line 2 runs at the same F6000 and line 3 below the top: no repeat.
     assert_eq!(warned.len(), 2, "{warned:?}");
     assert_eq!(warned[0].0, 1);
-    assert!(warned[0].1.starts_with("F6000 mm/min is above the max rate along this move (500 mm/min"));
+    assert!(
+        warned[0]
+            .1
+            .starts_with("F6000 mm/min is above the max rate along this move (500 mm/min")
+    );
     assert_eq!(warned[1].0, 4);
     assert!(warned[1].1.starts_with("F7000 mm/min"));
     // At maxRate 6000 the same line runs at its F, silently.
-    assert!(run("G1 X200 F6000\n", settings("")).info.warnings.is_empty());
+    assert!(
+        run("G1 X200 F6000\n", settings(""))
+            .info
+            .warnings
+            .is_empty()
+    );
 }
 
 #[test]
@@ -141,7 +150,10 @@ fn the_point_reached_at_an_instant_counts_the_steps_at_or_before_it() {
 fn a_programs_pulses_are_counted_from_its_steps_as_the_metrics_count_them() {
     // The record counts pulses without the metrics' deviation pass; the
     // counts must be the metrics' own, on lines and arcs in both directions.
-    let program = run("G0 X10\nG1 Y10 Z-3 F600\nG2 X20 Y0 I5 J-5\nG3 X10 Y10 R7\n", settings(""));
+    let program = run(
+        "G0 X10\nG1 Y10 Z-3 F600\nG2 X20 Y0 I5 J-5\nG3 X10 Y10 R7\n",
+        settings(""),
+    );
     let pulses = program.info.pulses.clone();
     assert_eq!(pulses, program.trace.metrics().pulses_by_axis);
     assert_eq!(program.trace.pulses_by_axis(), pulses);

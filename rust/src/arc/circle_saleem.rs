@@ -965,11 +965,7 @@ mod tests {
         assert_eq!(points(&t)[7], [0, 5, 0]);
         assert!(t.explain(6).contains("nearest the end"));
         assert_eq!(t.end(), Point::new(&[0, 6, 0]));
-        assert!(
-            t.segments()[0]
-                .note()
-                .contains("1 correction step close")
-        );
+        assert!(t.segments()[0].note().contains("1 correction step close"));
     }
 
     #[test]
