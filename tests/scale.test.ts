@@ -2,10 +2,12 @@
 // line and a 1,000,000-step helix trace in Node holding no more than about
 // 16 bytes per step, counting both the growth of wasm linear memory (which
 // never shrinks, so its growth is the most the core needed at once) and
-// the JS arrays read out of it. Timings are the bench's business
-// (`npm run bench`); here only the test timeout bounds them.
+// the JS arrays read out of it; and a long G-code program holding no more
+// than 200 bytes of the core's heap per line. Timings are the bench's
+// business (`npm run bench`); here only the test timeout bounds them.
 import { beforeAll, describe, expect, it } from 'vitest';
-import { memoryBytes, trace } from '../web/core/index.js';
+import { generateProgram } from '../bench/gcode.bench.js';
+import { heapBytes, memoryBytes, runGcode, trace } from '../web/core/index.js';
 import type { DecisionColumns } from '../web/core/index.js';
 import { rejection } from './helpers.js';
 
@@ -97,5 +99,24 @@ describe('long paths within 16 bytes per step', () => {
     const perStep = (memoryBytes() - baseline + held) / t.steps;
     expect(perStep).toBeLessThan(BYTES_PER_STEP);
     t.free();
+  });
+});
+
+describe('a 200,000-line G-code program', () => {
+  it("holds at most 200 bytes of the core's heap a line, and gives all of it back when freed", { timeout: 60_000 }, async () => {
+    // The bench's program (short G1 moves, a quarter arc every tenth line)
+    // at its 1 step/mm: what a finished run keeps, its steps included
+    // (the issue's bound: "at most 200 bytes of retained state per source line").
+    const lines = 200_000;
+    const source = generateProgram(lines);
+    const before = heapBytes();
+    const program = await runGcode(source, { stepsPerMm: 1 });
+    expect(program.errors).toEqual([]);
+    expect(program.moveCount).toBe(lines - 1);
+    const perLine = (heapBytes() - before) / lines;
+    program.free();
+    expect(perLine).toBeGreaterThan(50);
+    expect(perLine).toBeLessThanOrEqual(200);
+    expect(heapBytes()).toBe(before);
   });
 });

@@ -422,6 +422,8 @@ impl Planner {
             b.start_seconds = seconds;
             seconds += b.duration_seconds();
         }
+        // Kept as long as the program: without the slack of its growth.
+        blocks.shrink_to_fit();
         Plan {
             blocks,
             duration_seconds: seconds,

@@ -71,7 +71,7 @@ pub fn step_detail(trace: &Trace, p: u64) -> StepDetail<'_> {
     let replayed = step_index.map(|k| trace.replay_step(k));
     let segment_index = match step_index {
         Some(k) => Some(trace.segment_of_step(k)),
-        None => (!trace.segments().is_empty()).then(|| trace.segment_of_point(0)),
+        None => (trace.segment_count() > 0).then(|| trace.segment_of_point(0)),
     };
     let decision = trace
         .columns()

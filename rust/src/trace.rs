@@ -7,9 +7,10 @@
 //! - a copy of the stepper's state every [`CHECKPOINT_INTERVAL`] steps of each
 //!   segment, so the decisions (discriminants, error terms, ...) of any step
 //!   range are recomputed exactly by replaying at most that many steps,
-//!   instead of being stored for every step. The state at a segment's start
-//!   may instead be made again from its ideal path when read ([`Restart`]),
-//!   so that a trace of a million short segments keeps no stepper per segment.
+//!   instead of being stored for every step. A short segment may instead be
+//!   made again, whole, when read ([`SegmentMaker`]), so that a trace of a
+//!   million short segments (a G-code program's moves) keeps 12 bytes per
+//!   segment, not its ideal path, start and stepper state.
 //!
 //! Index spaces: a *step index* k (0..steps) names the step from point k to
 //! point k + 1; a *point index* k (0..=steps) names the position after k steps.
@@ -399,32 +400,121 @@ pub struct Segment {
     /// (shared by the segments of one stepper type).
     column_index: Rc<[usize]>,
     /// Stepper state before the segment's first step.
-    first_state: FirstState,
+    first_state: Box<dyn Replay>,
     /// Stepper state before segment step j * CHECKPOINT_INTERVAL, j >= 1
     /// (at index j - 1): a segment shorter than that keeps none.
     states: Vec<Box<dyn Replay>>,
 }
 
-/// A segment's stepper state at its start: a copy, or made again when read.
-enum FirstState {
-    Kept(Box<dyn Replay>),
-    Restarted(Restart),
+/// A segment as read: kept by the trace, or made again when read.
+// Returned, never stored: boxing the larger variant would add an
+// allocation to every read.
+#[allow(clippy::large_enum_variant)]
+pub enum SegmentRef<'a> {
+    Kept(&'a Segment),
+    Made(Segment),
 }
 
-/// Makes a stepper again, at its start, from the ideal path it was run
-/// against ([`TraceBuilder::run_restartable`]): shared by the segments of one
-/// stepper type, so that a trace of many short segments (a G-code
-/// program's straight moves) keeps no copy of a stepper per segment.
-#[derive(Clone)]
-pub struct Restart(Rc<MakeStepper>);
+impl std::ops::Deref for SegmentRef<'_> {
+    type Target = Segment;
 
-/// Makes a stepper at its start from the ideal path it runs against.
-type MakeStepper = dyn Fn(&IdealPath) -> Box<dyn Replay>;
+    fn deref(&self) -> &Segment {
+        match self {
+            SegmentRef::Kept(segment) => segment,
+            SegmentRef::Made(segment) => segment,
+        }
+    }
+}
 
-impl Restart {
-    /// `make` must give the stepper exactly as it was run from `ideal`.
-    pub fn new<S: Stepper>(make: impl Fn(&IdealPath) -> S + 'static) -> Restart {
-        Restart(Rc::new(move |ideal| Box::new(make(ideal))))
+/// What a segment run by [`TraceBuilder::run_made_when_read`] is made
+/// again from when read: where it starts, its ideal path and its stepper
+/// as it was before the segment's first step.
+pub struct MadeSegment {
+    start: Point,
+    ideal: IdealPath,
+    first_state: Box<dyn Replay>,
+    columns: &'static [Column],
+}
+
+impl MadeSegment {
+    /// `stepper` must be the one the segment was run with, in the state it
+    /// was in before its first step.
+    pub fn new<S: Stepper>(start: Point, ideal: IdealPath, stepper: S) -> MadeSegment {
+        MadeSegment {
+            start,
+            ideal,
+            first_state: Box::new(stepper),
+            columns: S::Why::COLUMNS,
+        }
+    }
+}
+
+/// Makes segment `index` of a trace again ([`Trace::with_segment_maker`]):
+/// the owner of a trace of many short segments (a G-code program, from its
+/// move records) knows each one's line and stepper without a copy here.
+pub type SegmentMaker = Rc<dyn Fn(usize) -> MadeSegment>;
+
+/// Sentinel of [`Segments::slots`]: the segment is made when read.
+const MADE: u32 = u32::MAX;
+
+/// The segments of a trace, in step order: each one's first step, and the
+/// segment itself where it is kept.
+#[derive(Default)]
+struct Segments {
+    /// Step index of each segment's first step (nondecreasing).
+    first_steps: Vec<u64>,
+    /// Per segment: its index in `kept`, or [`MADE`].
+    slots: Vec<u32>,
+    kept: Vec<Segment>,
+}
+
+impl Segments {
+    fn len(&self) -> usize {
+        self.first_steps.len()
+    }
+
+    fn is_empty(&self) -> bool {
+        self.first_steps.is_empty()
+    }
+
+    fn push_kept(&mut self, segment: Segment) {
+        self.first_steps.push(segment.first_step);
+        self.slots
+            .push(u32::try_from(self.kept.len()).expect("fewer than 2^32 segments"));
+        self.kept.push(segment);
+    }
+
+    fn push_made(&mut self, first_step: u64) {
+        self.first_steps.push(first_step);
+        self.slots.push(MADE);
+    }
+
+    /// Steps of segment `index`, in a trace of `total` steps.
+    fn steps(&self, index: usize, total: u64) -> u64 {
+        self.first_steps.get(index + 1).copied().unwrap_or(total) - self.first_steps[index]
+    }
+
+    /// Index of the segment containing step index k: the last that starts
+    /// at or before it (those before it that start there too took no step).
+    fn of_step(&self, k: u64) -> usize {
+        self.first_steps
+            .partition_point(|&f| f <= k)
+            .saturating_sub(1)
+    }
+
+    /// Index of the last segment that took a step, in a trace of `total`
+    /// steps (0 when none did).
+    fn last_stepping(&self, total: u64) -> usize {
+        self.first_steps
+            .partition_point(|&f| f < total)
+            .saturating_sub(1)
+    }
+
+    /// Gives back the memory the vectors grew past their length.
+    fn shrink_to_fit(&mut self) {
+        self.first_steps.shrink_to_fit();
+        self.slots.shrink_to_fit();
+        self.kept.shrink_to_fit();
     }
 }
 
@@ -436,7 +526,9 @@ pub struct Trace {
     steps: Vec<Step>,
     /// Position after k * CHECKPOINT_INTERVAL steps.
     positions: Vec<Point>,
-    segments: Vec<Segment>,
+    segments: Segments,
+    /// Makes the segments that are made when read.
+    segment_maker: Option<SegmentMaker>,
     columns: Vec<Column>,
     /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
     figures: Vec<FigureKind>,
@@ -462,7 +554,7 @@ pub struct TraceBuilder {
     position: Point,
     steps: Vec<Step>,
     positions: Vec<Point>,
-    segments: Vec<Segment>,
+    segments: Segments,
     columns: Vec<Column>,
     figures: Vec<FigureKind>,
     max_steps: u64,
@@ -483,7 +575,7 @@ impl TraceBuilder {
             position: start,
             steps: Vec::new(),
             positions: vec![start],
-            segments: Vec::new(),
+            segments: Segments::default(),
             columns: Vec::new(),
             figures: Vec::new(),
             max_steps,
@@ -529,30 +621,22 @@ impl TraceBuilder {
     /// points against `ideal`.
     pub fn run<S: Stepper>(&mut self, stepper: S, ideal: IdealPath) -> Result<(), Error> {
         let note = stepper.setup_note();
-        self.run_segment(stepper, ideal, Some(note), None)
+        self.run_segment(stepper, ideal, Some(note), false)
     }
 
-    /// [`Self::run`], keeping no note: the segment's note is made from the
-    /// stepper's state at its start when read. For a caller that runs many
-    /// steppers into one trace (a G-code program's moves), whose notes few
-    /// read.
-    pub fn run_note_when_read<S: Stepper>(
+    /// [`Self::run`], keeping no note (it is made from the stepper's state
+    /// at the segment's start when read) and, when the segment is shorter
+    /// than [`CHECKPOINT_INTERVAL`], nothing of it but where it starts: the
+    /// finished trace's [`SegmentMaker`] makes it again when read (a longer
+    /// one is kept, with its checkpoints, whose steps outweigh it). For a
+    /// caller that runs many steppers into one trace (a G-code program's
+    /// moves), whose segments few read.
+    pub fn run_made_when_read<S: Stepper>(
         &mut self,
         stepper: S,
         ideal: IdealPath,
     ) -> Result<(), Error> {
-        self.run_segment(stepper, ideal, None, None)
-    }
-
-    /// [`Self::run_note_when_read`], keeping no copy of the stepper's state
-    /// at the start either: `restart` makes it again when read.
-    pub fn run_restartable<S: Stepper>(
-        &mut self,
-        stepper: S,
-        ideal: IdealPath,
-        restart: &Restart,
-    ) -> Result<(), Error> {
-        self.run_segment(stepper, ideal, None, Some(restart))
+        self.run_segment(stepper, ideal, None, true)
     }
 
     /// Indices of `columns` among the trace's, adding the new ones.
@@ -572,7 +656,7 @@ impl TraceBuilder {
         stepper: S,
         ideal: IdealPath,
         setup_note: Option<String>,
-        restart: Option<&Restart>,
+        made_when_read: bool,
     ) -> Result<(), Error> {
         let first_step = self.steps.len() as u64;
         if let Some(n) = stepper.remaining_steps() {
@@ -582,31 +666,22 @@ impl TraceBuilder {
         }
         let column_index = self.column_slots(S::Why::COLUMNS);
         self.add_figure(S::Why::FIGURE);
-        let first_state = match restart {
-            Some(restart) => FirstState::Restarted(restart.clone()),
-            None => FirstState::Kept(Box::new(stepper.clone())),
-        };
-        let mut segment = Segment {
-            first_step,
-            steps: 0,
-            start: self.position,
-            ideal,
-            setup_note,
-            column_index,
-            first_state,
-            states: Vec::new(),
-        };
+        // A copy on the stack: boxed only if the segment is kept.
+        let first_state = stepper.clone();
+        let start = self.position;
+        let mut segment_steps = 0;
+        let mut states: Vec<Box<dyn Replay>> = Vec::new();
         let mut stepper = stepper;
         // Steps go in chunks that end where a stepper state (every
         // CHECKPOINT_INTERVAL steps of the segment) or a position (every
         // CHECKPOINT_INTERVAL steps of the trace) is due, written straight
         // into the array; the position moves by each chunk's displacement.
         loop {
-            if segment.steps > 0 && segment.steps % CHECKPOINT_INTERVAL == 0 {
-                segment.states.push(Box::new(stepper.clone()));
+            if segment_steps > 0 && segment_steps % CHECKPOINT_INTERVAL == 0 {
+                states.push(Box::new(stepper.clone()));
             }
             let total = self.steps.len() as u64;
-            let mut chunk = (CHECKPOINT_INTERVAL - segment.steps % CHECKPOINT_INTERVAL)
+            let mut chunk = (CHECKPOINT_INTERVAL - segment_steps % CHECKPOINT_INTERVAL)
                 .min(CHECKPOINT_INTERVAL - total % CHECKPOINT_INTERVAL);
             if let Some(left) = stepper.remaining_steps() {
                 // Known lengths were reserved: the chunk stays within them.
@@ -621,7 +696,7 @@ impl TraceBuilder {
             self.steps.truncate(start + filled.steps);
             self.check_follows(start, &self.steps[start..])?;
             self.position.displace(&filled.displacement);
-            segment.steps += filled.steps as u64;
+            segment_steps += filled.steps as u64;
             let total = self.steps.len() as u64;
             if filled.steps > 0 && total % CHECKPOINT_INTERVAL == 0 {
                 self.check_length(total)?;
@@ -632,7 +707,20 @@ impl TraceBuilder {
             }
         }
         self.check_length(self.steps.len() as u64)?;
-        self.segments.push(segment);
+        if made_when_read && states.is_empty() {
+            self.segments.push_made(first_step);
+        } else {
+            self.segments.push_kept(Segment {
+                first_step,
+                steps: segment_steps,
+                start,
+                ideal,
+                setup_note,
+                column_index,
+                first_state: Box::new(first_state),
+                states,
+            });
+        }
         Ok(())
     }
 
@@ -703,11 +791,16 @@ impl TraceBuilder {
         for &figure in &part.figures {
             self.add_figure(Some(figure));
         }
-        for mut segment in std::mem::take(&mut part.segments) {
+        let part_segments = std::mem::take(&mut part.segments);
+        assert!(
+            part_segments.slots.iter().all(|&slot| slot != MADE),
+            "an appended trace keeps its segments"
+        );
+        for mut segment in part_segments.kept {
             segment.first_step += offset;
             segment.column_index = segment.column_index.iter().map(|&i| slots[i]).collect();
             adapt(&mut segment);
-            self.segments.push(segment);
+            self.segments.push_kept(segment);
         }
         self.check_follows(self.steps.len(), &part.steps)?;
         self.steps.extend_from_slice(&part.steps);
@@ -743,7 +836,12 @@ impl TraceBuilder {
 
     /// The finished trace. Its metrics are computed on first use
     /// ([`Trace::metrics`]).
-    pub fn finish(self, algorithm: &str) -> Trace {
+    pub fn finish(mut self, algorithm: &str) -> Trace {
+        // Kept as long as the trace: without the slack of their growth (a
+        // G-code program's steps grow move by move).
+        self.steps.shrink_to_fit();
+        self.positions.shrink_to_fit();
+        self.segments.shrink_to_fit();
         Trace {
             algorithm: algorithm.to_string(),
             start: self.start,
@@ -751,6 +849,7 @@ impl TraceBuilder {
             steps: self.steps,
             positions: self.positions,
             segments: self.segments,
+            segment_maker: None,
             columns: self.columns,
             figures: self.figures,
             metrics: OnceCell::new(),
@@ -771,7 +870,7 @@ pub struct ReplayedStep {
 /// Consecutive points of one segment: the first, and the steps to each
 /// one after it.
 struct Piece<'a> {
-    segment: &'a Segment,
+    segment: SegmentRef<'a>,
     /// Point index of the first point.
     first: u64,
     start: Point,
@@ -847,8 +946,55 @@ impl Trace {
         &self.columns
     }
 
-    pub fn segments(&self) -> &[Segment] {
-        &self.segments
+    /// How many segments it has.
+    pub fn segment_count(&self) -> usize {
+        self.segments.len()
+    }
+
+    /// Segment `index`: kept, or made again ([`Self::with_segment_maker`]).
+    pub fn segment(&self, index: usize) -> SegmentRef<'_> {
+        let slot = self.segments.slots[index];
+        if slot != MADE {
+            return SegmentRef::Kept(&self.segments.kept[slot as usize]);
+        }
+        let maker = self
+            .segment_maker
+            .as_ref()
+            .expect("a trace with segments made when read has their maker");
+        let made = maker(index);
+        let column_index = made
+            .columns
+            .iter()
+            .map(|c| {
+                self.columns
+                    .iter()
+                    .position(|t| t == c)
+                    .expect("a made segment's columns are the trace's")
+            })
+            .collect();
+        SegmentRef::Made(Segment {
+            first_step: self.segments.first_steps[index],
+            steps: self.segments.steps(index, self.steps()),
+            start: made.start,
+            ideal: made.ideal,
+            setup_note: None,
+            column_index,
+            first_state: made.first_state,
+            states: Vec::new(),
+        })
+    }
+
+    /// Every segment, in step order (those made when read are made one at
+    /// a time).
+    pub fn segments(&self) -> impl Iterator<Item = SegmentRef<'_>> {
+        (0..self.segments.len()).map(|i| self.segment(i))
+    }
+
+    /// This trace with `maker` making its segments run by
+    /// [`TraceBuilder::run_made_when_read`] when they are read.
+    pub fn with_segment_maker(mut self, maker: SegmentMaker) -> Trace {
+        self.segment_maker = Some(maker);
+        self
     }
 
     /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
@@ -900,8 +1046,7 @@ impl Trace {
                 }
             });
             let ties = self
-                .segments
-                .iter()
+                .segments()
                 .map(|s| s.state_at(0).count_ties(s.steps))
                 .sum();
             acc.finish(ties)
@@ -929,7 +1074,7 @@ impl Trace {
         if k < self.steps() {
             self.segment_of_step(k)
         } else {
-            self.segments.iter().rposition(|s| s.steps > 0).unwrap_or(0)
+            self.segments.last_stepping(self.steps())
         }
     }
 
@@ -1145,8 +1290,7 @@ impl Trace {
         let mut start = self.point(from);
         let mut k = from;
         while k < to {
-            let seg = self.segment_of_point(k);
-            let segment = &self.segments[seg];
+            let segment = self.segment(self.segment_of_point(k));
             let seg_end = segment.first_step + segment.steps;
             // The last point belongs to the last segment that took a step.
             let end = to.min(if seg_end == self.steps() {
@@ -1169,13 +1313,11 @@ impl Trace {
 
     /// Index of the segment containing step index k.
     pub fn segment_of_step(&self, k: u64) -> usize {
-        self.segments
-            .partition_point(|s| s.first_step + s.steps <= k)
+        self.segments.of_step(k)
     }
 
-    /// Replays segment `seg` so that its next step is step index `k`.
-    fn replay_to(&self, seg: usize, k: u64) -> Box<dyn Replay> {
-        let segment = &self.segments[seg];
+    /// Replays `segment` so that its next step is step index `k`.
+    fn replay_to(segment: &Segment, k: u64) -> Box<dyn Replay> {
         let local = k - segment.first_step;
         let mut stepper = segment.state_at((local / CHECKPOINT_INTERVAL) as usize);
         let mut scratch = vec![0.0; MAX_COLUMNS];
@@ -1221,10 +1363,9 @@ impl Trace {
         let mut row = vec![f64::NAN; MAX_COLUMNS];
         let mut k = from;
         while k < to {
-            let seg = self.segment_of_step(k);
-            let segment = &self.segments[seg];
+            let segment = self.segment(self.segment_of_step(k));
             let seg_end = (segment.first_step + segment.steps).min(to);
-            let mut stepper = self.replay_to(seg, k);
+            let mut stepper = Self::replay_to(&segment, k);
             for i in k..seg_end {
                 row.fill(f64::NAN);
                 stepper.replay_step(&mut row);
@@ -1241,11 +1382,9 @@ impl Trace {
     /// column, as [`Trace::decisions`] gives them), its explanation and its
     /// picture.
     pub fn replay_step(&self, k: u64) -> ReplayedStep {
-        let seg = self.segment_of_step(k);
-        let segment = &self.segments[seg];
+        let segment = self.segment(self.segment_of_step(k));
         let mut row = vec![f64::NAN; MAX_COLUMNS];
-        let (explanation, figure) = self
-            .replay_to(seg, k)
+        let (explanation, figure) = Self::replay_to(&segment, k)
             .detail_step(&self.point(k), &mut row)
             .expect("a recorded step replays to the same step");
         let mut values: Vec<f64> = self.columns.iter().map(|c| c.kind.no_value()).collect();
@@ -1261,9 +1400,9 @@ impl Trace {
 
     /// One sentence: why step index k was taken.
     pub fn explain(&self, k: u64) -> String {
-        let seg = self.segment_of_step(k);
+        let segment = self.segment(self.segment_of_step(k));
         let from = self.point(k);
-        self.replay_to(seg, k)
+        Self::replay_to(&segment, k)
             .explain_step(&from)
             .expect("a recorded step replays to the same step")
     }
@@ -1315,9 +1454,8 @@ impl Segment {
     /// A copy of the stepper's state before segment step
     /// `checkpoint` * CHECKPOINT_INTERVAL.
     fn state_at(&self, checkpoint: usize) -> Box<dyn Replay> {
-        match (checkpoint, &self.first_state) {
-            (0, FirstState::Kept(state)) => state.clone_box(),
-            (0, FirstState::Restarted(restart)) => (restart.0)(&self.ideal),
+        match checkpoint {
+            0 => self.first_state.clone_box(),
             _ => self.states[checkpoint - 1].clone_box(),
         }
     }
@@ -1354,7 +1492,10 @@ impl Trace {
 
     /// The note of segment `index`: what a learner should know before it.
     pub fn segment_note(&self, index: usize) -> Cow<'_, str> {
-        let own = self.segments[index].note();
+        let own = match self.segment(index) {
+            SegmentRef::Kept(segment) => segment.note(),
+            SegmentRef::Made(segment) => Cow::Owned(segment.note().into_owned()),
+        };
         match &self.note_prefix {
             None => own,
             Some(prefix) => Cow::Owned(format!("{} {own}", prefix(index))),
@@ -1363,7 +1504,7 @@ impl Trace {
 
     /// Segment `index` as a viewer reads it.
     pub fn segment_summary(&self, index: usize) -> SegmentSummary<'_> {
-        let s = &self.segments[index];
+        let s = self.segment(index);
         SegmentSummary {
             first_step: s.first_step,
             steps: s.steps,
@@ -1386,7 +1527,7 @@ impl Trace {
     pub fn ideal_polyline(&self) -> Vec<f64> {
         let dims = self.dims();
         let mut out: Vec<f64> = Vec::new();
-        for segment in &self.segments {
+        for segment in self.segments() {
             let line = segment.ideal.polyline();
             let skip =
                 out.len() >= dims && line.len() >= dims && out[out.len() - dims..] == line[..dims];

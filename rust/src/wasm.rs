@@ -66,6 +66,13 @@ pub fn trace(request_json: &str) -> Result<TraceHandle, JsValue> {
         .map_err(|e| to_js_error(&e))
 }
 
+/// Bytes of heap the core holds now: what every trace, program and buffer
+/// not yet freed retains (`crate::memory`).
+#[wasm_bindgen(js_name = heapBytes)]
+pub fn heap_bytes() -> f64 {
+    crate::memory::held_bytes() as f64
+}
+
 /// Everything the core offers: algorithms, experiments and G-code settings
 /// (see `catalogue::Catalogue`).
 #[wasm_bindgen(unchecked_return_type = "Catalogue")]

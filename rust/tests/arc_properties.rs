@@ -282,7 +282,8 @@ proptest! {
         let corrections = correction.len() - circle_steps;
         prop_assert!(correction[circle_steps..].iter().all(|&c| c == 1.0));
         prop_assert!(corrections <= 2, "{} corrections", corrections);
-        let ideal = &t.segments()[0].ideal;
+        let first = t.segment(0);
+        let ideal = &first.ideal;
         for (k, q) in p.iter().enumerate() {
             let e = ideal.deviation(&Point::new(q));
             if k <= circle_steps {
@@ -377,7 +378,6 @@ proptest! {
         // measures each chord against.
         let widest = t
             .segments()
-            .iter()
             .map(|s| match s.ideal.info() {
                 IdealPathInfo::Arc { sweep_rad, .. } => sweep_rad.abs(),
                 other => panic!("a chord is measured against its arc, not {other:?}"),
@@ -430,7 +430,7 @@ proptest! {
         // height for the run of linear steps taken at one arc position, one
         // more because the discrete circle's step count at an angle differs
         // from the continuous r sin(theta) by up to a step, and half a linear step.
-        let IdealPathInfo::Helix { sweep_rad, .. } = helix.segments()[0].ideal.info() else {
+        let IdealPathInfo::Helix { sweep_rad, .. } = helix.segment(0).ideal.info() else {
             panic!("a helix is measured against a helix")
         };
         let pitch = rise.abs() as f64 * TAU / sweep_rad.abs();
@@ -513,7 +513,7 @@ fn a_big_arc_stays_under_half_a_cell_off_and_chords_follow_grbl() {
     // Grbl with tolerance 0.5: floor(0.5 × 0.1745 × 2^20 / sqrt(0.5 × (2^21 - 0.5)))
     // = floor(91,503 / 1,024) = 89 chords, sagitta about 0.5 each.
     let chords = voxpath::trace_json(&request("arc-segments")).unwrap();
-    assert_eq!(chords.segments().len(), 89);
+    assert_eq!(chords.segment_count(), 89);
     assert!(chords.metrics().max_deviation < 0.5 + SQRT_2);
     assert_eq!(chords.end(), circle.end());
 }

@@ -63,7 +63,7 @@ fn spliced_chords_keep_their_positions_and_decisions() {
     // steps: checkpoints fall inside chords.
     let json = r#"{"algorithm":"arc-segments","from":[3000,0,5],"to":[-3000,0,5],"center":[0,0,0],"segmentLength":3000}"#;
     let trace = voxpath::trace_json(json).unwrap();
-    assert_eq!(trace.segments().len(), 3);
+    assert_eq!(trace.segment_count(), 3);
     let mut builder = TraceBuilder::new(Point::new(&[3000, 0, 5]), 1 << 20);
     let mut rows: Vec<Vec<f64>> = Vec::new();
     for segment in trace.segments() {

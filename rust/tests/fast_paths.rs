@@ -34,7 +34,7 @@ fn replayed_points(t: &Trace, from: u64, to: u64) -> Vec<i64> {
 /// from the trace).
 fn measured_point_by_point(t: &Trace) -> (Vec<f64>, Vec<f64>, Metrics) {
     let dims = t.dims();
-    let segments = t.segments();
+    let segments: Vec<_> = t.segments().collect();
     let last = segments.iter().rposition(|s| s.steps > 0).unwrap_or(0);
     let mut acc = MetricsAccumulator::new(dims);
     for &s in t.step_range(0, t.steps()) {

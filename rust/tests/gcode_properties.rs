@@ -138,7 +138,7 @@ proptest! {
             }
         }
         prop_assert_eq!(next_step, p.info.steps);
-        prop_assert_eq!(next_segment, p.trace.segments().len());
+        prop_assert_eq!(next_segment, p.trace.segment_count());
         let by_scan: Vec<u32> = moves
             .iter()
             .flat_map(|m| std::iter::repeat_n(m.line, m.steps as usize))

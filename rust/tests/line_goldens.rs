@@ -383,10 +383,7 @@ fn gcd_reduction_keeps_the_path_and_divides_the_discriminants() {
                 );
             }
         }
-        assert!(
-            reduced.segments()[0].note().contains("(8, 6, 5)"),
-            "{algorithm}"
-        );
+        assert!(reduced.segment_note(0).contains("(8, 6, 5)"), "{algorithm}");
     }
 }
 
@@ -440,7 +437,7 @@ fn every_algorithm_takes_a_zero_length_move_as_an_empty_trace() {
         ));
         assert_eq!(t.steps(), 0, "{}", a.id);
         assert_eq!(t.metrics().max_deviation, 0.0, "{}", a.id);
-        assert!(!t.segments()[0].note().is_empty(), "{}", a.id);
+        assert!(!t.segment_note(0).is_empty(), "{}", a.id);
     }
 }
 

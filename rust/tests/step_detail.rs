@@ -84,7 +84,7 @@ fn every_point_of_every_example_reads_as_the_trace_s_ranges_do() {
                 );
             }
             let segment = d.segment_index.unwrap();
-            let s = &t.segments()[segment];
+            let s = t.segment(segment);
             assert!(s.first_step <= k && k < s.first_step + s.steps);
             assert_eq!(d.segment.unwrap().note, s.note());
             if let Some(figure) = &d.figure {
@@ -237,7 +237,7 @@ fn chart_rows_are_the_points_deviation_and_axis_error_of_their_buckets() {
     let chords = trace(
         r#"{"algorithm":"arc-segments","from":[40,0,0],"to":[-40,0,0],"center":[0,0,0],"segmentLength":7}"#,
     );
-    assert!(chords.segments().len() > 10);
+    assert!(chords.segment_count() > 10);
     let line = trace(r#"{"algorithm":"bresenham3d","from":[-3,5,0],"to":[40,-17,29]}"#);
     for t in [&chords, &line] {
         chart_rows_hold(t);

@@ -24,7 +24,7 @@ export { trace, algorithms, Trace } from './trace.js';
 export { catalogue } from './catalogue.js';
 export { AXIS_NAMES } from './axes.js';
 export { VoxpathError } from './errors.js';
-export { memoryBytes } from './wasm.js';
+export { heapBytes, memoryBytes } from './wasm.js';
 export { compare } from './compare.js';
 export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDigest } from './compare.js';
 export { checkPoints, readPoints } from './check.js';

@@ -47,3 +47,13 @@ export function loadCore(): Promise<CoreBindings> {
 export function memoryBytes(): number {
   return memory?.buffer.byteLength ?? 0;
 }
+
+/**
+ * Bytes of heap the wasm core holds now (0 before it is loaded): what the
+ * results not yet freed retain, where {@link memoryBytes} is the most the
+ * core ever needed at once. A finished G-code run holds its move records,
+ * its plan and its steps here, about 160 bytes a line.
+ */
+export function heapBytes(): number {
+  return memory ? bindings.heapBytes() : 0;
+}

@@ -545,8 +545,8 @@ mod tests {
             )
             .unwrap();
         let ends = [[10, 0, 0], [9, 5, 0], [5, 9, 0], [0, 10, 0]];
-        assert_eq!(t.segments().len(), 3);
-        for (k, segment) in t.segments().iter().enumerate() {
+        assert_eq!(t.segment_count(), 3);
+        for (k, segment) in t.segments().enumerate() {
             let line = crate::line::regions_wang::INFO
                 .trace_json(
                     &format!(
@@ -576,7 +576,7 @@ mod tests {
             assert!(matches!(segment.ideal, IdealPath::Arc(_)));
         }
         assert_eq!(t.end(), Point::new(&[0, 10, 0]));
-        let note = t.segments()[0].note();
+        let note = t.segment_note(0);
         assert!(
             note.contains("floor(arc length / segmentLength 5) gives 3 chords"),
             "{note}"

@@ -880,7 +880,7 @@ mod tests {
             "Octant 1: y is the fast axis and steps +1; x stays (x² + y² - r² = 1) or steps -1 (-8); |1| < |-8|, so x stays (eq. 7): (x, y+1, z)."
         );
         assert!(
-            t.segments()[0]
+            t.segment(0)
                 .note()
                 .contains("7 circle steps to (0, 5, 0), which is the end point")
         );
@@ -965,7 +965,7 @@ mod tests {
         assert_eq!(points(&t)[7], [0, 5, 0]);
         assert!(t.explain(6).contains("nearest the end"));
         assert_eq!(t.end(), Point::new(&[0, 6, 0]));
-        assert!(t.segments()[0].note().contains("1 correction step close"));
+        assert!(t.segment_note(0).contains("1 correction step close"));
     }
 
     #[test]

@@ -525,7 +525,7 @@ mod tests {
         assert!(t.explain(0).starts_with(
             "n_c = 4 >= n_z = 2, so the arc steps every time; the linear axis's error is 4 = 4 (a tie, decided by 'hold'), so the linear axis waits. Arc: Octant 1:"
         ), "{}", t.explain(0));
-        assert!(t.segments()[0].note().contains("n_c = 4 steps"));
+        assert!(t.segment_note(0).contains("n_c = 4 steps"));
     }
 
     #[test]
@@ -580,10 +580,10 @@ mod tests {
             )
             .unwrap();
         // floor(15π / 10) = 4 chords, heights 5, 10, 15 then 20.
-        assert_eq!(t.segments().len(), 4);
-        let starts: Vec<i64> = t.segments().iter().map(|s| s.start.get(2)).collect();
+        assert_eq!(t.segment_count(), 4);
+        let starts: Vec<i64> = t.segments().map(|s| s.start.get(2)).collect();
         assert_eq!(starts, [0, 5, 10, 15]);
-        assert!(matches!(t.segments()[0].ideal, IdealPath::Helix(_)));
+        assert!(matches!(t.segment(0).ideal, IdealPath::Helix(_)));
     }
 
     /// A full circle whose rule counts 1 chord (floor(2π 10 / 1000) = 0,
@@ -611,7 +611,7 @@ mod tests {
                     )
                     .unwrap();
                 assert_eq!(
-                    t.segments().len(),
+                    t.segment_count(),
                     arc_segments::MIN_FULL_CIRCLE_CHORDS as usize,
                     "{algorithm} {from:?}"
                 );
@@ -619,7 +619,7 @@ mod tests {
                 // Three chords of a circle of radius 10 (each 17.3 long, the
                 // longest axis at least 10 after rounding) take at least 30 steps.
                 assert!(t.steps() >= 30, "{algorithm} {from:?}: {} steps", t.steps());
-                let note = t.segments()[0].note();
+                let note = t.segment_note(0);
                 assert!(
                     note.contains(
                         "gives 1 chord, raised to 3, the fewest that go around a full circle"

@@ -30,7 +30,7 @@
 
 use super::interpret::{ArcFormat, ArcMm, Interpreter, Motion, MoveMm};
 use super::parse::{Block, Problem, parse_line_into};
-use super::timing::{self, Timeline};
+use super::timing::{self, MoveSpans, Timeline};
 use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::circle_saleem::{self, SaleemCircle};
@@ -53,7 +53,7 @@ use crate::request::{
     MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, TiePolicy, too_long_advice,
 };
 use crate::text::split_line;
-use crate::trace::{Restart, Stepper, Trace, TraceBuilder};
+use crate::trace::{MadeSegment, Stepper, Trace, TraceBuilder};
 use serde::Serialize;
 use serde_json::{Map, Value};
 use std::f64::consts::TAU;
@@ -267,28 +267,56 @@ impl LineStepper {
         defaults().unwrap_or(LineStepper::ByRequest)
     }
 
-    /// Makes a straight move's stepper again from its segment's line, as
-    /// [`Runner::step_line`] made it, so the trace keeps no copy per move.
-    fn restart(self) -> Option<Restart> {
-        fn from_line<S: Stepper>(make: impl Fn(Point, Point) -> S + 'static) -> Option<Restart> {
-            Some(Restart::new(move |ideal| match ideal {
-                IdealPath::Line { from, to } => make(*from, *to),
-                _ => unreachable!("a straight move is measured against its line"),
-            }))
-        }
-        match self {
-            LineStepper::Regions(tie, gcd) => {
-                from_line(move |from, to| RegionsWang::with_gcd(from, to, tie, gcd))
-            }
-            LineStepper::Bresenham3d(tie, gcd) => {
-                from_line(move |from, to| Bresenham3d::new(from, to, tie, gcd))
-            }
-            LineStepper::Nd(tie, gcd) => from_line(move |from, to| Nd::new(from, to, tie, gcd)),
-            LineStepper::Greedy(order) => from_line(move |from, to| Greedy::new(from, to, order)),
-            LineStepper::Walk6(order) => from_line(move |from, to| Walk6::new(from, to, order)),
-            LineStepper::Dda => from_line(Dda::new),
-            LineStepper::ByRequest => None,
-        }
+    /// `user` given this algorithm's stepper from `from` to `to`, or None
+    /// for [`LineStepper::ByRequest`]: the one place a straight move's
+    /// stepper is made, when it is run ([`Runner::step_line`]) and when its
+    /// segment is made again to be read ([`MoveRecords::made_segment`]).
+    fn with<U: StepperUser>(self, from: Point, to: Point, user: U) -> Option<U::Out> {
+        Some(match self {
+            LineStepper::Regions(tie, gcd) => user.using(RegionsWang::with_gcd(from, to, tie, gcd)),
+            LineStepper::Bresenham3d(tie, gcd) => user.using(Bresenham3d::new(from, to, tie, gcd)),
+            LineStepper::Nd(tie, gcd) => user.using(Nd::new(from, to, tie, gcd)),
+            LineStepper::Greedy(order) => user.using(Greedy::new(from, to, order)),
+            LineStepper::Walk6(order) => user.using(Walk6::new(from, to, order)),
+            LineStepper::Dda => user.using(Dda::new(from, to)),
+            LineStepper::ByRequest => return None,
+        })
+    }
+}
+
+/// What is done with a line stepper of whichever type [`LineStepper::with`]
+/// makes: a closure generic over the stepper's type.
+trait StepperUser {
+    type Out;
+    fn using<S: Stepper>(self, stepper: S) -> Self::Out;
+}
+
+/// Runs a straight move's stepper into the program's trace
+/// ([`Runner::run_line`]).
+struct RunInPlace<'a> {
+    runner: &'a mut Runner,
+    from: Point,
+    to: Point,
+}
+
+impl StepperUser for RunInPlace<'_> {
+    type Out = bool;
+    fn using<S: Stepper>(self, stepper: S) -> bool {
+        self.runner.run_line(stepper, self.from, self.to)
+    }
+}
+
+/// Makes a straight move's segment again, measured against its line.
+struct MakeLineSegment {
+    from: Point,
+    to: Point,
+}
+
+impl StepperUser for MakeLineSegment {
+    type Out = MadeSegment;
+    fn using<S: Stepper>(self, stepper: S) -> MadeSegment {
+        let (from, to) = (self.from, self.to);
+        MadeSegment::new(from, IdealPath::Line { from, to }, stepper)
     }
 }
 
@@ -442,23 +470,22 @@ impl Program {
 /// Sentinel of [`MoveRecord::arc`]: the move is not an arc.
 const NO_ARC: u32 = u32::MAX;
 
-/// A move as a run keeps it: fixed size (120 bytes), no heap of its own.
+/// A move as a run keeps it: fixed size (64 bytes), no heap of its own.
 /// Its note, arc and timing are made when it is read ([`MoveRecords::get`]).
+/// What follows from its neighbours is not kept: a move starts where the
+/// one before it ended (in mm and in steps: only a move changes the
+/// position), and its segments run up to where the next move's start. Its
+/// steps and planner blocks are in [`MoveSpans`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MoveRecord {
-    pub from_mm: [f64; MACHINE_AXES],
     pub to_mm: [f64; MACHINE_AXES],
     /// mm/min; NaN when none was in force (never a feed's value: F is finite).
     feed_mm_per_min: f64,
-    pub first_step: u64,
-    pub steps: u64,
     /// Grid points fit i32: coordinates stay within ±2^30.
-    from_steps: [i32; MACHINE_AXES],
     to_steps: [i32; MACHINE_AXES],
     pub line: u32,
     pub column: u32,
     first_segment: u32,
-    segments: u32,
     /// Index among [`MoveRecords`]' arcs, or [`NO_ARC`].
     arc: u32,
     motion: Motion,
@@ -471,6 +498,8 @@ struct ArcRecord {
     arc: ArcMm,
     /// The grid center it was stepped around; None when stepped as a line.
     center_steps: Option<[i64; MACHINE_AXES]>,
+    /// Full turns added on the grid (see the module comment).
+    turns: u64,
     /// Why it was stepped as a straight line, if it was.
     as_line: Option<&'static str>,
 }
@@ -486,7 +515,13 @@ pub struct MoveRecords {
     arcs: Vec<ArcRecord>,
     line_algorithm: &'static str,
     arc_algorithm: &'static str,
+    /// How straight moves are stepped, and their segments made again.
+    line_stepper: LineStepper,
     steps_per_mm: [f64; MACHINE_AXES],
+    /// Where each move starts in the steps and the planner's blocks.
+    spans: Rc<MoveSpans>,
+    /// Trace segments of all the moves, where the last one's end.
+    segments: u32,
 }
 
 fn grid_point(c: [i32; MACHINE_AXES]) -> Point {
@@ -500,8 +535,67 @@ impl MoveRecords {
             arcs: Vec::new(),
             line_algorithm: settings.line_algorithm,
             arc_algorithm: settings.arc_algorithm,
+            line_stepper: LineStepper::of(settings.line_algorithm),
             steps_per_mm: settings.machine.steps_per_mm(),
+            spans: Rc::default(),
+            segments: 0,
         }
+    }
+
+    /// Where move `index` starts, in mm: where the one before it ended, or
+    /// the origin, where the machine starts.
+    fn start_mm(&self, index: usize) -> [f64; MACHINE_AXES] {
+        index
+            .checked_sub(1)
+            .map_or([0.0; MACHINE_AXES], |i| self.records[i].to_mm)
+    }
+
+    /// Where move `index` starts, in steps.
+    fn start_steps(&self, index: usize) -> [i32; MACHINE_AXES] {
+        index
+            .checked_sub(1)
+            .map_or([0; MACHINE_AXES], |i| self.records[i].to_steps)
+    }
+
+    /// Move `index`'s trace segments.
+    fn segments_of(&self, index: usize) -> std::ops::Range<usize> {
+        let end = self
+            .records
+            .get(index + 1)
+            .map_or(self.segments, |r| r.first_segment);
+        self.records[index].first_segment as usize..end as usize
+    }
+
+    /// The move whose steps trace segment `segment` holds (moves are in
+    /// segment order, each with at least one segment).
+    fn move_of_segment(&self, segment: usize) -> usize {
+        self.records
+            .partition_point(|r| r.first_segment as usize <= segment)
+            - 1
+    }
+
+    /// Segment `segment` made again: the straight move or circle arc that
+    /// was stepped in place into it ([`Runner::run_line`],
+    /// [`Runner::run_circle`]), from its record.
+    fn made_segment(&self, segment: usize) -> MadeSegment {
+        let index = self.move_of_segment(segment);
+        let r = &self.records[index];
+        let (from, to) = (grid_point(self.start_steps(index)), grid_point(r.to_steps));
+        if let Some(a) = self.arc_of(r).filter(|a| a.center_steps.is_some()) {
+            if !self.helical(index) {
+                let center = Point::new(&a.center_steps.expect("filtered"));
+                let mut request = arc_request(from, to, center, &a.arc);
+                request.set("turns", Value::from(a.turns));
+                let spec = ArcSpec::parse(&request, false).expect("it was parsed when run");
+                let stepper = SaleemCircle::new(&spec)
+                    .counted(&TraceBuilder::new(from, MAX_STEPS_LIMIT))
+                    .expect("it was counted when run");
+                return MadeSegment::new(from, IdealPath::Arc(spec.ideal_arc()), stepper);
+            }
+        }
+        self.line_stepper
+            .with(from, to, MakeLineSegment { from, to })
+            .expect("a move stepped by its request keeps its segment")
     }
 
     pub fn len(&self) -> usize {
@@ -516,7 +610,9 @@ impl MoveRecords {
     pub fn get(&self, index: usize, timeline: &Timeline) -> Move {
         let r = &self.records[index];
         let arc = self.arc_of(r);
-        let helical = self.helical(r, arc);
+        let helical = self.helical(index);
+        let (first_step, steps) = self.spans.steps_of(index);
+        let segments = self.segments_of(index);
         Move {
             line: r.line,
             column: r.column,
@@ -527,16 +623,16 @@ impl MoveRecords {
                 (Motion::Arc(_), false) => "arc",
                 (Motion::Arc(_), true) => "helix",
             },
-            from_mm: r.from_mm,
+            from_mm: self.start_mm(index),
             to_mm: r.to_mm,
-            from_steps: r.from_steps.map(i64::from),
+            from_steps: self.start_steps(index).map(i64::from),
             to_steps: r.to_steps.map(i64::from),
             feed_mm_per_min: (!r.feed_mm_per_min.is_nan()).then_some(r.feed_mm_per_min),
-            first_step: r.first_step,
-            steps: r.steps,
-            first_segment: r.first_segment as usize,
-            segments: r.segments as usize,
-            algorithm: self.algorithm(r, arc),
+            first_step,
+            steps,
+            first_segment: segments.start,
+            segments: segments.len(),
+            algorithm: self.algorithm(index),
             arc: arc.map(|a| ArcInfo {
                 plane: a.arc.plane.label(),
                 direction: match a.arc.turn {
@@ -553,7 +649,7 @@ impl MoveRecords {
                 extra_turns: a.arc.extra_turns,
                 center_steps: a.center_steps,
             }),
-            note: self.note(r, arc),
+            note: self.note(index),
             timing: timeline.move_timing(index),
         }
     }
@@ -562,19 +658,20 @@ impl MoveRecords {
         (r.arc != NO_ARC).then(|| &self.arcs[r.arc as usize])
     }
 
-    /// True when an arc's normal axis moves (a helix).
-    fn helical(&self, r: &MoveRecord, arc: Option<&ArcRecord>) -> bool {
-        arc.is_some_and(|a| {
+    /// True when move `index` is an arc whose normal axis moves (a helix).
+    fn helical(&self, index: usize) -> bool {
+        let r = &self.records[index];
+        self.arc_of(r).is_some_and(|a| {
             let n = a.arc.plane.axes()[2];
-            r.from_steps[n] != r.to_steps[n]
+            self.start_steps(index)[n] != r.to_steps[n]
         })
     }
 
-    /// The catalogue algorithm that stepped a move.
-    fn algorithm(&self, r: &MoveRecord, arc: Option<&ArcRecord>) -> &'static str {
-        match arc {
+    /// The catalogue algorithm that stepped move `index`.
+    fn algorithm(&self, index: usize) -> &'static str {
+        match self.arc_of(&self.records[index]) {
             Some(a) if a.as_line.is_none() => {
-                if self.helical(r, arc) {
+                if self.helical(index) {
                     "helix"
                 } else {
                     self.arc_algorithm
@@ -586,17 +683,19 @@ impl MoveRecords {
 
     /// What a move is, in a sentence: its note, which also starts its
     /// segments' notes in the trace.
-    fn note(&self, r: &MoveRecord, arc: Option<&ArcRecord>) -> String {
+    fn note(&self, index: usize) -> String {
         use std::fmt::Write;
+        let r = &self.records[index];
+        let arc = self.arc_of(r);
         let mut note = String::with_capacity(160);
         let _ = write!(note, "Line {}, {}: ", r.line, r.motion.code());
-        tuple_into(&mut note, &r.from_mm);
+        tuple_into(&mut note, &self.start_mm(index));
         note.push_str(" -> ");
         tuple_into(&mut note, &r.to_mm);
         let _ = write!(
             note,
             " mm = {} -> {} steps",
-            grid_point(r.from_steps),
+            grid_point(self.start_steps(index)),
             grid_point(r.to_steps)
         );
         let Some(a) = arc else {
@@ -612,7 +711,7 @@ impl MoveRecords {
             note,
             ", {} {}in the {}, center ",
             a.arc.turn.describe(),
-            if self.helical(r, arc) {
+            if self.helical(index) {
                 "helix "
             } else {
                 "arc "
@@ -665,20 +764,13 @@ impl MoveRecords {
     /// The note of the move whose steps trace segment `segment` holds
     /// (moves are in segment order, each with at least one segment).
     fn note_of_segment(&self, segment: usize) -> String {
-        let index = self
-            .records
-            .partition_point(|r| (r.first_segment + r.segments) as usize <= segment);
-        let r = &self.records[index];
-        self.note(r, self.arc_of(r))
+        self.note(self.move_of_segment(segment))
     }
 
     /// Index of the move that took step index `k` (moves are in step
     /// order), or None past their last step.
     pub fn move_of_step(&self, k: u64) -> Option<usize> {
-        let index = self
-            .records
-            .partition_point(|m| m.first_step + m.steps <= k);
-        (index < self.records.len()).then_some(index)
+        self.spans.move_of_step(k)
     }
 
     /// Index of the move programmed on a 1-based source line (moves are in
@@ -693,7 +785,7 @@ impl MoveRecords {
     /// (then the program's end).
     pub fn first_step_from_line(&self, line: u32) -> Option<u64> {
         let index = self.records.partition_point(|m| m.line < line);
-        self.records.get(index).map(|m| m.first_step)
+        (index < self.records.len()).then(|| self.spans.steps_of(index).0)
     }
 
     /// The 1-based source line of each step index in `from..to` (below the
@@ -703,11 +795,12 @@ impl MoveRecords {
         let Some(first) = self.move_of_step(from) else {
             return out;
         };
-        for r in &self.records[first..] {
-            let end = to.min(r.first_step + r.steps);
+        for index in first..self.records.len() {
+            let (first_step, steps) = self.spans.steps_of(index);
+            let end = to.min(first_step + steps);
             let k = from + out.len() as u64;
             if end > k {
-                out.resize(out.len() + (end - k) as usize, r.line);
+                out.resize(out.len() + (end - k) as usize, self.records[index].line);
             }
             if end == to {
                 break;
@@ -716,16 +809,33 @@ impl MoveRecords {
         out
     }
 
-    /// (first step, steps) of move `index`.
-    fn steps_of(&self, index: usize) -> (u64, u64) {
-        let r = &self.records[index];
-        (r.first_step, r.steps)
-    }
-
     fn place(&self, index: usize) -> (u32, u32) {
         let r = &self.records[index];
         (r.line, r.column)
     }
+}
+
+/// The catalogue request of a line from `from` to `to`.
+fn line_request(algorithm: &str, from: Point, to: Point) -> Request {
+    let mut options = Map::new();
+    options.insert("from".into(), Value::from(from.coords()));
+    options.insert("to".into(), Value::from(to.coords()));
+    Request::new(algorithm, options)
+}
+
+/// The request of an arc from `from` to `to` about the grid point
+/// `center`, turning as `arc` does in its plane; whoever runs it adds its
+/// algorithm, its turns and its method.
+fn arc_request(from: Point, to: Point, center: Point, arc: &ArcMm) -> Request {
+    let mut request = line_request("", from, to);
+    request.set("center", Value::from(center.coords()));
+    let direction = match arc.turn {
+        Turn::Clockwise => "cw",
+        Turn::CounterClockwise => "ccw",
+    };
+    request.set("dir", Value::from(direction));
+    request.set("plane", Value::from(arc.plane.label()));
+    request
 }
 
 /// Runs a program a slice of lines at a time (see [`Runner::advance`]).
@@ -740,17 +850,13 @@ pub struct Runner {
     /// The line being run, its vectors reused from line to line.
     block: Block,
     builder: TraceBuilder,
-    /// How straight moves are stepped.
-    line_stepper: LineStepper,
-    /// Makes a straight move's stepper again when its segment is read.
-    line_restart: Option<Restart>,
     /// True (always, but in tests): straight moves and circle arcs run in
     /// place where they can; false: every move through the catalogue's
     /// request, the reference the in-place paths are tested against.
     in_place: bool,
     planner: Planner,
-    /// Per move, the planner blocks it took.
-    move_blocks: Vec<std::ops::Range<usize>>,
+    /// Where each move starts in the steps and the planner's blocks.
+    spans: MoveSpans,
     steps: u64,
     segments: usize,
     moves: MoveRecords,
@@ -803,11 +909,9 @@ impl Runner {
             lines_done: 0,
             lines,
             builder: TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps),
-            line_stepper: LineStepper::of(settings.line_algorithm),
-            line_restart: LineStepper::of(settings.line_algorithm).restart(),
             in_place: true,
             planner: Planner::new(settings.limits),
-            move_blocks: Vec::new(),
+            spans: MoveSpans::default(),
             settings,
             interpreter: Interpreter::default(),
             block: Block::default(),
@@ -997,18 +1101,11 @@ impl Runner {
         );
         let info = algorithms::find(&request.algorithm).map_err(place)?;
         let part = (info.trace)(&request, algorithms::find).map_err(place)?;
-        let added = (part.steps(), part.segments().len());
+        let added = (part.steps(), part.segment_count());
         self.builder.append(part, |_| {}).map_err(place)?;
         self.steps += added.0;
         self.segments += added.1;
         Ok(added)
-    }
-
-    fn line_request(&self, algorithm: &str, from: Point, to: Point) -> Request {
-        let mut options = Map::new();
-        options.insert("from".into(), Value::from(from.coords()));
-        options.insert("to".into(), Value::from(to.coords()));
-        Request::new(algorithm, options)
     }
 
     /// Steps one move and keeps its record.
@@ -1020,18 +1117,20 @@ impl Runner {
                 i32::try_from(p.get(axis)).expect("grid coordinates are within ±2^30")
             })
         };
+        let index = self.moves.len();
+        debug_assert_eq!(
+            (m.from_mm, grid(&from)),
+            (self.moves.start_mm(index), self.moves.start_steps(index)),
+            "a move starts where the one before it ended"
+        );
+        let first_step = self.steps;
         let mut record = MoveRecord {
-            from_mm: m.from_mm,
             to_mm: m.to_mm,
             feed_mm_per_min: m.feed_mm_per_min.unwrap_or(f64::NAN),
-            first_step: self.steps,
-            steps: 0,
-            from_steps: grid(&from),
             to_steps: grid(&to),
             line: m.line,
             column: m.column,
-            first_segment: self.segments as u32,
-            segments: 0,
+            first_segment: u32::try_from(self.segments).expect("fewer than 2^32 segments"),
             arc: NO_ARC,
             motion: m.motion,
         };
@@ -1043,10 +1142,8 @@ impl Runner {
                 self.moves.arcs.push(arc);
             }
         }
-        record.steps = self.steps - record.first_step;
-        record.segments = self.segments as u32 - record.first_segment;
         let pushed = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
-        self.move_blocks.push(pushed.blocks);
+        self.spans.push(first_step, pushed.blocks.start);
         // Once per feed value: every later move at the same F is capped alike.
         if let (Some(top), Some(feed)) = (pushed.feed_capped_to_mm_per_min, m.feed_mm_per_min) {
             if self.capped_feed_warned != Some(feed) {
@@ -1126,6 +1223,7 @@ impl Runner {
         let mut kept = ArcRecord {
             arc: arc.clone(),
             center_steps: None,
+            turns: 0,
             as_line: None,
         };
         let center_real = [arc.center_mm[u] * spm[u], arc.center_mm[v] * spm[v]];
@@ -1162,14 +1260,7 @@ impl Runner {
         center.coords_mut()[u] = c[0];
         center.coords_mut()[v] = c[1];
         kept.center_steps = Some(center.coords().try_into().expect("3 axes"));
-        let direction = match arc.turn {
-            Turn::Clockwise => "cw",
-            Turn::CounterClockwise => "ccw",
-        };
-        let mut request = self.line_request("", from, to);
-        request.set("center", Value::from(center.coords()));
-        request.set("dir", Value::from(direction));
-        request.set("plane", Value::from(arc.plane.label()));
+        let mut request = arc_request(from, to, center, arc);
         let place = |e: Error| Error::at(m.line, m.column, format!("{}", e));
         let local = ArcSpec::parse(&request, true)
             .map_err(place)?
@@ -1182,7 +1273,8 @@ impl Runner {
             self.step_line(m, from, to)?;
             return Ok(kept);
         }
-        request.set("turns", Value::from(turns as u64));
+        kept.turns = turns as u64;
+        request.set("turns", Value::from(kept.turns));
         let segments = self.settings.arc_algorithm == "arc-segments";
         let algorithm = if helical {
             request.set(
@@ -1205,23 +1297,22 @@ impl Runner {
 
     /// Steps a straight move from `from` to `to` with the line algorithm.
     fn step_line(&mut self, m: &MoveMm, from: Point, to: Point) -> Result<(), Error> {
+        let line_stepper = self.moves.line_stepper;
         let direct = self.in_place
-            && match self.line_stepper {
-                LineStepper::Regions(tie, gcd) => {
-                    self.run_line(RegionsWang::with_gcd(from, to, tie, gcd), from, to)
-                }
-                LineStepper::Bresenham3d(tie, gcd) => {
-                    self.run_line(Bresenham3d::new(from, to, tie, gcd), from, to)
-                }
-                LineStepper::Nd(tie, gcd) => self.run_line(Nd::new(from, to, tie, gcd), from, to),
-                LineStepper::Greedy(order) => self.run_line(Greedy::new(from, to, order), from, to),
-                LineStepper::Walk6(order) => self.run_line(Walk6::new(from, to, order), from, to),
-                LineStepper::Dda => self.run_line(Dda::new(from, to), from, to),
-                LineStepper::ByRequest => false,
-            };
+            && line_stepper
+                .with(
+                    from,
+                    to,
+                    RunInPlace {
+                        runner: self,
+                        from,
+                        to,
+                    },
+                )
+                .unwrap_or(false);
         if !direct {
             let line = self.settings.line_algorithm;
-            self.append(m, self.line_request(line, from, to))?;
+            self.append(m, line_request(line, from, to))?;
         }
         Ok(())
     }
@@ -1246,7 +1337,7 @@ impl Runner {
         };
         let before = self.builder.steps();
         self.builder
-            .run_note_when_read(stepper, IdealPath::Arc(spec.ideal_arc()))
+            .run_made_when_read(stepper, IdealPath::Arc(spec.ideal_arc()))
             .expect("a counted circle within maxSteps runs");
         self.steps += self.builder.steps() - before;
         self.segments += 1;
@@ -1265,12 +1356,9 @@ impl Runner {
         if steps > self.settings.max_steps - self.steps {
             return false;
         }
-        let Some(restart) = &self.line_restart else {
-            return false;
-        };
         let before = self.builder.steps();
         self.builder
-            .run_restartable(stepper, IdealPath::Line { from, to }, restart)
+            .run_made_when_read(stepper, IdealPath::Line { from, to })
             .expect("a line of known length within maxSteps runs");
         self.steps += self.builder.steps() - before;
         self.segments += 1;
@@ -1280,20 +1368,22 @@ impl Runner {
     /// Finishes the trace (the moves run so far) and the program's record.
     pub fn finish(mut self) -> Program {
         let planner = std::mem::replace(&mut self.planner, Planner::new(self.settings.limits));
-        let timeline = Timeline::new(
-            planner,
-            std::mem::take(&mut self.move_blocks)
-                .into_iter()
-                .enumerate()
-                .map(|(index, blocks)| {
-                    let (first_step, steps) = self.moves.steps_of(index);
-                    (blocks, first_step, steps)
-                })
-                .collect(),
-        );
+        let mut spans = std::mem::take(&mut self.spans);
+        spans.finish(self.steps, planner.len());
+        let spans = Rc::new(spans);
+        let moves = &mut self.moves;
+        moves.spans = Rc::clone(&spans);
+        moves.segments = u32::try_from(self.segments).expect("fewer than 2^32 segments");
+        moves.records.shrink_to_fit();
+        moves.arcs.shrink_to_fit();
+        let records = Rc::new(std::mem::replace(
+            &mut self.moves,
+            MoveRecords::new(&self.settings),
+        ));
+        let timeline = Timeline::new(planner, spans);
         let spm = self.settings.machine.steps_per_mm();
         for (index, axis, needed, max) in timeline.step_rate_excesses(&self.settings.limits, &spm) {
-            let (line, column) = self.moves.place(index);
+            let (line, column) = records.place(index);
             self.warn(Diagnostic {
                 line,
                 column,
@@ -1301,15 +1391,15 @@ impl Runner {
                 limit: None,
             });
         }
-        let records = Rc::new(self.moves);
-        let notes = Rc::clone(&records);
+        let (notes, segments) = (Rc::clone(&records), Rc::clone(&records));
         let trace = self
             .builder
             .finish(&format!(
                 "gcode ({}, {})",
                 self.settings.line_algorithm, self.settings.arc_algorithm
             ))
-            .with_note_prefix(Rc::new(move |segment| notes.note_of_segment(segment)));
+            .with_note_prefix(Rc::new(move |segment| notes.note_of_segment(segment)))
+            .with_segment_maker(Rc::new(move |segment| segments.made_segment(segment)));
         let info = ProgramInfo {
             lines: self.lines,
             steps: trace.steps(),
@@ -1362,6 +1452,9 @@ mod tests {
             serde_json::to_string(&t.segment_summaries()).unwrap(),
             format!("{:?}", t.points_flat(0, t.steps() + 1)),
             format!("{:?}", t.decisions_flat(0, t.steps())),
+            format!("{:?}", t.metrics()),
+            format!("{:?}", t.chart_rows(0, t.steps() + 1, 7)),
+            format!("{:?}", t.ideal_polyline()),
         ];
         out.extend((0..t.steps()).map(|k| t.explain(k)));
         out
@@ -1379,9 +1472,9 @@ mod tests {
         ]
     }
 
-    /// A straight move longer than a checkpoint interval keeps stepper
-    /// states past its start, while its first state is made again when
-    /// read: every line algorithm reads back as the catalogue path's.
+    /// A straight move longer than a checkpoint interval is kept whole,
+    /// with its stepper states, beside short moves made again when read:
+    /// every line algorithm reads back as the catalogue path's.
     #[test]
     fn long_straight_moves_read_back_as_the_catalogue_path() {
         let source = "G1 X70 Y-23 Z9 F600\nG1 X1 Y2 Z3\nG0 X-60 Y70 Z0";

@@ -23,6 +23,7 @@ use crate::machine::{MACHINE_AXES, Machine, per_axis};
 use crate::planner::{self, Limits, Plan, Planner, Rate, Timing};
 use serde_json::{Map, Value};
 use std::ops::Range;
+use std::rc::Rc;
 
 /// Reads `acceleration`, `maxRate`, `junctionDeviation` and `maxStepRate`
 /// (Grbl's defaults when absent); errors name the setting.
@@ -120,18 +121,89 @@ pub fn feed_capped_message(feed_mm_per_min: f64, top_mm_per_min: f64) -> String 
     )
 }
 
+/// Where each move of a program starts in its steps and in its planner's
+/// blocks, in step order; a move ends where the next one starts (12 bytes
+/// a move).
+#[derive(Clone, Debug, Default)]
+pub struct MoveSpans {
+    first_step: Vec<u64>,
+    first_block: Vec<u32>,
+    /// Steps and blocks in all, where the last move ends.
+    steps: u64,
+    blocks: u32,
+}
+
+impl MoveSpans {
+    /// Adds a move starting at `first_step` and `first_block`, where the
+    /// one before it ends.
+    pub fn push(&mut self, first_step: u64, first_block: usize) {
+        self.first_step.push(first_step);
+        self.first_block
+            .push(u32::try_from(first_block).expect("fewer than 2^32 planner blocks"));
+    }
+
+    /// Ends the last move at `steps` steps and `blocks` blocks in all, and
+    /// gives back the memory the vectors grew past their length.
+    pub fn finish(&mut self, steps: u64, blocks: usize) {
+        self.steps = steps;
+        self.blocks = u32::try_from(blocks).expect("fewer than 2^32 planner blocks");
+        self.first_step.shrink_to_fit();
+        self.first_block.shrink_to_fit();
+    }
+
+    pub fn len(&self) -> usize {
+        self.first_step.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.first_step.is_empty()
+    }
+
+    /// Steps of all the moves.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// (first step index, steps) of move `index`.
+    pub fn steps_of(&self, index: usize) -> (u64, u64) {
+        let first = self.first_step[index];
+        let end = self
+            .first_step
+            .get(index + 1)
+            .copied()
+            .unwrap_or(self.steps);
+        (first, end - first)
+    }
+
+    /// The planner blocks of move `index`.
+    pub fn blocks_of(&self, index: usize) -> Range<usize> {
+        let end = self
+            .first_block
+            .get(index + 1)
+            .copied()
+            .unwrap_or(self.blocks);
+        self.first_block[index] as usize..end as usize
+    }
+
+    /// Index of the move that took step index `k`, or None past their last
+    /// step: the last move that starts at or before it (those before it
+    /// that start there too took no step).
+    pub fn move_of_step(&self, k: u64) -> Option<usize> {
+        (k < self.steps).then(|| self.first_step.partition_point(|&f| f <= k) - 1)
+    }
+}
+
 /// The plan of a finished program, and which blocks and steps each move has.
 #[derive(Clone, Debug, Default)]
 pub struct Timeline {
     plan: Plan,
-    /// Per move: its blocks, its first step index and its step count.
-    moves: Vec<(Range<usize>, u64, u64)>,
+    moves: Rc<MoveSpans>,
 }
 
 impl Timeline {
-    /// Plans `planner`'s blocks; `moves` is, per move, (blocks, first step,
-    /// steps), in step order.
-    pub fn new(planner: Planner, moves: Vec<(Range<usize>, u64, u64)>) -> Timeline {
+    /// Plans `planner`'s blocks, which the moves of `moves` took (all of
+    /// them: see [`MoveSpans::finish`]).
+    pub fn new(planner: Planner, moves: Rc<MoveSpans>) -> Timeline {
         Timeline {
             plan: planner.plan(),
             moves,
@@ -148,13 +220,13 @@ impl Timeline {
 
     /// The timing of move `index`.
     pub fn move_timing(&self, index: usize) -> Timing {
-        let (blocks, _, _) = &self.moves[index];
+        let blocks = self.moves.blocks_of(index);
         // A move with no blocks is an instant, where the last move before
         // it ended.
         let at = self.plan.blocks[..blocks.start]
             .last()
             .map_or(0.0, |b| b.start_seconds + b.duration_seconds());
-        self.plan.timing(blocks.clone(), at)
+        self.plan.timing(blocks, at)
     }
 
     /// Step-rate warnings: (move index, axis, steps/s needed, the limit).
@@ -167,8 +239,10 @@ impl Timeline {
             return Vec::new();
         };
         let mut out = Vec::new();
-        for (index, (blocks, _, _)) in self.moves.iter().enumerate() {
-            let peak = self.plan.peak_step_rates_hz(blocks.clone(), steps_per_mm);
+        for index in 0..self.moves.len() {
+            let peak = self
+                .plan
+                .peak_step_rates_hz(self.moves.blocks_of(index), steps_per_mm);
             for axis in 0..MACHINE_AXES {
                 if peak[axis] > max[axis] * (1.0 + 1e-9) {
                     out.push((index, axis, peak[axis], max[axis]));
@@ -226,10 +300,10 @@ impl Timeline {
     pub fn move_starts(&self, blocks: Range<usize>) -> Vec<usize> {
         let first = self
             .moves
-            .partition_point(|(b, _, _)| b.start < blocks.start);
-        let mut starts: Vec<usize> = self.moves[first..]
-            .iter()
-            .map(|(b, _, _)| b.start)
+            .first_block
+            .partition_point(|&b| (b as usize) < blocks.start);
+        let mut starts: Vec<usize> = (first..self.moves.len())
+            .map(|index| self.moves.blocks_of(index).start)
             .take_while(|&start| start < blocks.end)
             .filter(|&start| start > 0)
             .collect();
@@ -243,8 +317,7 @@ impl Timeline {
     /// once the program has ended). Bisects the steps by their instants
     /// (`step_seconds`, monotone), so it agrees with them exactly.
     pub fn points_reached_at(&self, seconds: f64) -> u64 {
-        let steps = self.moves.last().map_or(0, |(_, first, n)| first + n);
-        let (mut lo, mut hi) = (0, steps);
+        let (mut lo, mut hi) = (0, self.moves.steps());
         while lo < hi {
             let mid = lo + (hi - lo) / 2;
             if self.step_seconds(mid, mid + 1)[0] <= seconds {
@@ -263,21 +336,20 @@ impl Timeline {
         if from >= to {
             return out;
         }
-        // The first move whose steps end past `from`.
-        let mut index = self
-            .moves
-            .partition_point(|(_, first, steps)| first + steps <= from);
-        while out.len() < (to - from) as usize {
-            let Some((blocks, first, steps)) = self.moves.get(index) else {
-                break;
-            };
-            let (lo, hi) = (from.max(*first) - first, to.min(first + steps) - first);
+        // The move that took step `from`.
+        let Some(mut index) = self.moves.move_of_step(from) else {
+            return out;
+        };
+        while out.len() < (to - from) as usize && index < self.moves.len() {
+            let blocks = self.moves.blocks_of(index);
+            let (first, steps) = self.moves.steps_of(index);
+            let (lo, hi) = (from.max(first) - first, to.min(first + steps) - first);
             if blocks.is_empty() {
                 let at = self.move_timing(index).start_seconds;
                 out.extend(std::iter::repeat_n(at, (hi - lo) as usize));
             } else {
                 self.plan
-                    .visit_fractions(blocks.clone(), *steps, lo, hi, |_, t| out.push(t));
+                    .visit_fractions(blocks, steps, lo, hi, |_, t| out.push(t));
             }
             index += 1;
         }

@@ -719,7 +719,7 @@ mod tests {
         assert_eq!(d.columns[7], [2.0; 3]);
         assert_eq!(d.columns[8], [4.0; 3]);
         assert_eq!(t.metrics().ties, 1);
-        let note = t.segments()[0].note();
+        let note = t.segment_note(0);
         assert!(note.contains("M_1 = 2|Δy| - |Δx| = 2·7 - 10 = 4"), "{note}");
     }
 
