@@ -66,9 +66,15 @@ export class TimingDiagram {
 
   setTrace(trace: PulsedTrace | undefined, pointIndex: number): void {
     this.#trace = trace;
-    this.#chart?.destroy();
-    this.#chart = undefined;
     this.#fromStep = -1;
+    // The old chart stays until the new trace's first window replaces it
+    // (#draw makes a new chart for a new label), so the box never empties
+    // for the moment the window is fetched; none stays for no steps.
+    this.#xLabel = '';
+    if (!trace || trace.steps === 0) {
+      this.#chart?.destroy();
+      this.#chart = undefined;
+    }
     void this.showPoint(pointIndex);
   }
 
