@@ -222,7 +222,8 @@ pub fn max_junction_speed_sqr(
     (junction_acceleration * limits.junction_deviation_mm * sin_half / (1.0 - sin_half)).max(0.0)
 }
 
-/// One planned block: a straight piece of a move at a trapezoidal profile.
+/// One planned block as read ([`Plan::block`]): a straight piece of a move
+/// at a trapezoidal profile.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Block {
     pub delta_mm: [f64; MACHINE_AXES],
@@ -235,6 +236,39 @@ pub struct Block {
     pub peak_speed_mm_per_s: f64,
     pub exit_speed_mm_per_s: f64,
     pub start_seconds: f64,
+}
+
+/// A block as a plan keeps it, in 40 bytes: its displacement, its nominal
+/// speed and its planned entry speed². The rest of a [`Block`]
+/// is derived when read, by the operations that planned it
+/// ([`Plan::block`]), so a read gives exactly what was planned while a
+/// program of a million moves keeps half the bytes of their whole profiles.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct StoredBlock {
+    delta_mm: [f64; MACHINE_AXES],
+    nominal_speed_mm_per_s: f64,
+    /// The planned entry speed², (mm/s)²; while the blocks are pushed, the
+    /// most it may be (the junction's limit and both nominal speeds).
+    entry_speed_sqr: f64,
+}
+
+/// Blocks between two kept block starts: a block's start is at most this
+/// many durations from one.
+const START_INTERVAL: usize = 16;
+
+/// A block's length and its acceleration along it
+/// (`limit_value_by_axis_maximum`), as pushing, planning and reading it
+/// all compute them.
+fn length_and_acceleration(
+    delta_mm: [f64; MACHINE_AXES],
+    acceleration: &[f64; MACHINE_AXES],
+) -> (f64, [f64; MACHINE_AXES], f64) {
+    let (length_mm, unit) = unit_vector(delta_mm);
+    (
+        length_mm,
+        unit,
+        limit_value_by_axis_maximum(acceleration, &unit),
+    )
 }
 
 /// The three phases of a block's profile, distances in mm, times in s.
@@ -310,9 +344,7 @@ impl Block {
 /// Blocks being collected for one plan.
 pub struct Planner {
     limits: Limits,
-    blocks: Vec<Block>,
-    /// (max entry speed², block) per block, for the passes.
-    max_entry_sqr: Vec<f64>,
+    blocks: Vec<StoredBlock>,
     previous_unit: Option<[f64; MACHINE_AXES]>,
     previous_nominal: f64,
 }
@@ -322,7 +354,6 @@ impl Planner {
         Planner {
             limits,
             blocks: Vec::new(),
-            max_entry_sqr: Vec::new(),
             previous_unit: None,
             previous_nominal: 0.0,
         }
@@ -347,7 +378,6 @@ impl Planner {
         if length_mm == 0.0 || !length_mm.is_finite() {
             return None;
         }
-        let acceleration = limit_value_by_axis_maximum(&self.limits.acceleration_mm_per_s2, &unit);
         let top_mm_per_min = limit_value_by_axis_maximum(&self.limits.max_rate_mm_per_min, &unit);
         let programmed = match rate {
             Rate::Rapid | Rate::Unset => top_mm_per_min,
@@ -360,17 +390,10 @@ impl Planner {
             Some(previous) => max_junction_speed_sqr(previous, &unit, &self.limits),
         };
         let neighbour = nominal.min(self.previous_nominal);
-        self.max_entry_sqr
-            .push((neighbour * neighbour).min(junction_sqr));
-        self.blocks.push(Block {
+        self.blocks.push(StoredBlock {
             delta_mm,
-            length_mm,
-            acceleration_mm_per_s2: acceleration,
             nominal_speed_mm_per_s: nominal,
-            entry_speed_mm_per_s: 0.0,
-            peak_speed_mm_per_s: 0.0,
-            exit_speed_mm_per_s: 0.0,
-            start_seconds: 0.0,
+            entry_speed_sqr: (neighbour * neighbour).min(junction_sqr),
         });
         self.previous_unit = Some(unit);
         self.previous_nominal = nominal;
@@ -383,58 +406,54 @@ impl Planner {
     /// Plans every block pushed: the last one ends at rest.
     pub fn plan(self) -> Plan {
         let Planner {
-            mut blocks,
-            max_entry_sqr,
-            ..
+            limits, mut blocks, ..
         } = self;
-        let n = blocks.len();
-        let mut entry_sqr = max_entry_sqr;
+        let acceleration = limits.acceleration_mm_per_s2;
+        let two_al = |b: &StoredBlock| {
+            let (l, _, a) = length_and_acceleration(b.delta_mm, &acceleration);
+            2.0 * a * l
+        };
         // Reverse pass (planner_recalculate): entry² ≤ exit² + 2aL.
         let mut exit_sqr = 0.0;
-        for i in (0..n).rev() {
-            let b = &blocks[i];
-            entry_sqr[i] =
-                entry_sqr[i].min(exit_sqr + 2.0 * b.acceleration_mm_per_s2 * b.length_mm);
-            exit_sqr = entry_sqr[i];
+        for b in blocks.iter_mut().rev() {
+            b.entry_speed_sqr = b.entry_speed_sqr.min(exit_sqr + two_al(b));
+            exit_sqr = b.entry_speed_sqr;
         }
         // Forward pass: exit² (the next entry²) ≤ entry² + 2aL.
-        for i in 0..n.saturating_sub(1) {
-            let b = &blocks[i];
-            let reachable = entry_sqr[i] + 2.0 * b.acceleration_mm_per_s2 * b.length_mm;
-            if reachable < entry_sqr[i + 1] {
-                entry_sqr[i + 1] = reachable;
+        for i in 1..blocks.len() {
+            let reachable = blocks[i - 1].entry_speed_sqr + two_al(&blocks[i - 1]);
+            if reachable < blocks[i].entry_speed_sqr {
+                blocks[i].entry_speed_sqr = reachable;
             }
-        }
-        let mut seconds = 0.0;
-        for i in 0..n {
-            let exit_sqr = if i + 1 < n { entry_sqr[i + 1] } else { 0.0 };
-            let b = &mut blocks[i];
-            let (a, l) = (b.acceleration_mm_per_s2, b.length_mm);
-            let nominal_sqr = b.nominal_speed_mm_per_s * b.nominal_speed_mm_per_s;
-            // A triangle when accelerating to nominal and decelerating from
-            // it take more than the block: the peak where both meet.
-            let peak_sqr = nominal_sqr
-                .min(0.5 * (2.0 * a * l + entry_sqr[i] + exit_sqr))
-                .max(entry_sqr[i].max(exit_sqr));
-            b.entry_speed_mm_per_s = entry_sqr[i].sqrt();
-            b.exit_speed_mm_per_s = exit_sqr.sqrt();
-            b.peak_speed_mm_per_s = peak_sqr.sqrt();
-            b.start_seconds = seconds;
-            seconds += b.duration_seconds();
         }
         // Kept as long as the program: without the slack of its growth.
         blocks.shrink_to_fit();
-        Plan {
+        let n = blocks.len();
+        let mut plan = Plan {
             blocks,
-            duration_seconds: seconds,
+            acceleration_mm_per_s2: acceleration,
+            starts: Vec::with_capacity(n.div_ceil(START_INTERVAL)),
+            duration_seconds: 0.0,
+        };
+        let mut seconds = 0.0;
+        for i in 0..n {
+            if i % START_INTERVAL == 0 {
+                plan.starts.push(seconds);
+            }
+            seconds += plan.profile(i, seconds).duration_seconds();
         }
+        plan.duration_seconds = seconds;
+        plan
     }
 }
 
 /// A planned program: every block's profile and start.
 #[derive(Clone, Debug, Default)]
 pub struct Plan {
-    pub blocks: Vec<Block>,
+    blocks: Vec<StoredBlock>,
+    acceleration_mm_per_s2: [f64; MACHINE_AXES],
+    /// The start of block j · [`START_INTERVAL`], seconds.
+    starts: Vec<f64>,
     pub duration_seconds: f64,
 }
 
@@ -451,10 +470,88 @@ pub struct Timing {
 }
 
 impl Plan {
+    /// How many blocks it has.
+    pub fn len(&self) -> usize {
+        self.blocks.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.blocks.is_empty()
+    }
+
+    /// Block `i` as planned, starting at `start_seconds`: the profile
+    /// [`Planner::plan`] gave it, made again from what is kept.
+    fn profile(&self, i: usize, start_seconds: f64) -> Block {
+        let kept = &self.blocks[i];
+        let (length_mm, _, a) =
+            length_and_acceleration(kept.delta_mm, &self.acceleration_mm_per_s2);
+        let entry_sqr = kept.entry_speed_sqr;
+        let exit_sqr = self
+            .blocks
+            .get(i + 1)
+            .map_or(0.0, |next| next.entry_speed_sqr);
+        let nominal_sqr = kept.nominal_speed_mm_per_s * kept.nominal_speed_mm_per_s;
+        // A triangle when accelerating to nominal and decelerating from it
+        // take more than the block: the peak where both meet.
+        let peak_sqr = nominal_sqr
+            .min(0.5 * (2.0 * a * length_mm + entry_sqr + exit_sqr))
+            .max(entry_sqr.max(exit_sqr));
+        Block {
+            delta_mm: kept.delta_mm,
+            length_mm,
+            acceleration_mm_per_s2: a,
+            nominal_speed_mm_per_s: kept.nominal_speed_mm_per_s,
+            entry_speed_mm_per_s: entry_sqr.sqrt(),
+            peak_speed_mm_per_s: peak_sqr.sqrt(),
+            exit_speed_mm_per_s: exit_sqr.sqrt(),
+            start_seconds,
+        }
+    }
+
+    /// Block `i` as planned: its start from the nearest kept one before it.
+    pub fn block(&self, i: usize) -> Block {
+        let first = i - i % START_INTERVAL;
+        let mut start = self.starts[i / START_INTERVAL];
+        for j in first..i {
+            start += self.profile(j, start).duration_seconds();
+        }
+        self.profile(i, start)
+    }
+
+    /// Blocks `range` as planned, in order, each start found from the
+    /// block before (the sums [`Planner::plan`] made, so the same values).
+    pub fn blocks(&self, range: Range<usize>) -> impl Iterator<Item = Block> + '_ {
+        let mut start = match range.is_empty() {
+            true => 0.0,
+            false => self.block(range.start).start_seconds,
+        };
+        range.map(move |i| {
+            let block = self.profile(i, start);
+            start += block.duration_seconds();
+            block
+        })
+    }
+
+    /// The first block index for which `after(block)` holds, where it holds
+    /// for every block from some index on (a bisection, as
+    /// `slice::partition_point` with the predicate negated).
+    pub fn first_block_where(&self, after: impl Fn(&Block) -> bool) -> usize {
+        let (mut lo, mut hi) = (0, self.len());
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if after(&self.block(mid)) {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        lo
+    }
+
     /// The timing of blocks `range`; an empty range is an instant at
     /// `at_seconds` at rest or passing through.
     pub fn timing(&self, range: Range<usize>, at_seconds: f64) -> Timing {
-        let blocks = &self.blocks[range];
+        let blocks: Vec<Block> = self.blocks(range).collect();
         let (Some(first), Some(last)) = (blocks.first(), blocks.last()) else {
             return Timing {
                 start_seconds: at_seconds,
@@ -489,7 +586,7 @@ impl Plan {
         to: u64,
         mut visit: impl FnMut(u64, f64),
     ) {
-        let blocks = &self.blocks[range];
+        let blocks: Vec<Block> = self.blocks(range).collect();
         let Some(last) = blocks.last() else {
             return;
         };
@@ -527,7 +624,7 @@ impl Plan {
         steps_per_mm: &[f64; MACHINE_AXES],
     ) -> [f64; MACHINE_AXES] {
         let mut peak = [0.0f64; MACHINE_AXES];
-        for b in &self.blocks[range] {
+        for b in self.blocks(range) {
             for axis in 0..MACHINE_AXES {
                 let rate = b.peak_speed_mm_per_s
                     * (b.delta_mm[axis] / b.length_mm).abs()
@@ -613,7 +710,7 @@ mod tests {
             limits(100.0, 6000.0, 0.01),
             &[([200.0, 0.0, 0.0], Rate::Feed(6000.0))],
         );
-        let b = p.blocks[0];
+        let b = p.block(0);
         let ph = b.phases();
         assert!(close(ph.accelerate_mm, 50.0) && close(ph.cruise_mm, 100.0));
         assert!(close(ph.decelerate_mm, 50.0));
@@ -641,7 +738,7 @@ mod tests {
             limits(100.0, 6000.0, 0.01),
             &[([0.0, 50.0, 0.0], Rate::Feed(6000.0))],
         );
-        let b = p.blocks[0];
+        let b = p.block(0);
         let ph = b.phases();
         assert!(close(b.peak_speed_mm_per_s, 5000.0f64.sqrt()));
         assert!(close(ph.accelerate_mm, 25.0) && ph.cruise_mm.abs() < 1e-9);
@@ -655,18 +752,15 @@ mod tests {
         let l = limits(10.0, 500.0, 0.01);
         let p = plan(l, &[([100.0, 100.0, 0.0], Rate::Rapid)]);
         assert!(close(
-            p.blocks[0].nominal_speed_mm_per_s,
+            p.block(0).nominal_speed_mm_per_s,
             500.0 * 2f64.sqrt() / 60.0
         ));
         // The same for acceleration.
-        assert!(close(
-            p.blocks[0].acceleration_mm_per_s2,
-            10.0 * 2f64.sqrt()
-        ));
+        assert!(close(p.block(0).acceleration_mm_per_s2, 10.0 * 2f64.sqrt()));
         let p = plan(l, &[([100.0, 0.0, 0.0], Rate::Feed(9000.0))]);
-        assert!(close(p.blocks[0].nominal_speed_mm_per_s, 500.0 / 60.0));
+        assert!(close(p.block(0).nominal_speed_mm_per_s, 500.0 / 60.0));
         let p = plan(l, &[([100.0, 0.0, 0.0], Rate::Unset)]);
-        assert!(close(p.blocks[0].nominal_speed_mm_per_s, 500.0 / 60.0));
+        assert!(close(p.block(0).nominal_speed_mm_per_s, 500.0 / 60.0));
     }
 
     #[test]
@@ -699,8 +793,8 @@ mod tests {
             ],
         );
         let v90 = (a * 2f64.sqrt() * d * 0.5f64.sqrt() / (1.0 - 0.5f64.sqrt())).sqrt();
-        assert!(close(p.blocks[0].exit_speed_mm_per_s, v90));
-        assert!(close(p.blocks[1].entry_speed_mm_per_s, v90));
+        assert!(close(p.block(0).exit_speed_mm_per_s, v90));
+        assert!(close(p.block(1).entry_speed_mm_per_s, v90));
     }
 
     #[test]
@@ -714,7 +808,7 @@ mod tests {
             ],
         );
         // Two 100 mm halves of the 200 mm trapezoid: the join at 100 mm/s.
-        assert!(close(p.blocks[0].exit_speed_mm_per_s, 100.0));
+        assert!(close(p.block(0).exit_speed_mm_per_s, 100.0));
         assert!(close(p.duration_seconds, 3.0));
         let p = plan(
             l,
@@ -723,8 +817,8 @@ mod tests {
                 ([-100.0, 0.0, 0.0], Rate::Feed(6000.0)),
             ],
         );
-        assert_eq!(p.blocks[0].exit_speed_mm_per_s, 0.0);
-        assert_eq!(p.blocks[1].entry_speed_mm_per_s, 0.0);
+        assert_eq!(p.block(0).exit_speed_mm_per_s, 0.0);
+        assert_eq!(p.block(1).entry_speed_mm_per_s, 0.0);
         // A slower second move: the junction is at most its nominal speed.
         let p = plan(
             l,
@@ -733,7 +827,7 @@ mod tests {
                 ([100.0, 0.0, 0.0], Rate::Feed(600.0)),
             ],
         );
-        assert!(close(p.blocks[0].exit_speed_mm_per_s, 10.0));
+        assert!(close(p.block(0).exit_speed_mm_per_s, 10.0));
     }
 
     #[test]
@@ -811,7 +905,8 @@ mod tests {
             let p = plan(l, &blocks);
             let eps = 1e-9;
             let mut previous_end = 0.0;
-            for (i, b) in p.blocks.iter().enumerate() {
+            let blocks: Vec<Block> = p.blocks(0..p.len()).collect();
+            for (i, b) in blocks.iter().enumerate() {
                 let (v0, vp, v1) = (b.entry_speed_mm_per_s, b.peak_speed_mm_per_s, b.exit_speed_mm_per_s);
                 // No speed above the block's nominal (itself within the
                 // axis limits) and the acceleration within every axis's.
@@ -826,23 +921,25 @@ mod tests {
                 let two_al = 2.0 * b.acceleration_mm_per_s2 * b.length_mm;
                 prop_assert!((v1 * v1 - v0 * v0).abs() <= two_al * (1.0 + 1e-9) + eps);
                 // Blocks join up in speed and time.
-                if i + 1 < p.blocks.len() {
-                    prop_assert_eq!(v1, p.blocks[i + 1].entry_speed_mm_per_s);
+                if i + 1 < blocks.len() {
+                    prop_assert_eq!(v1, blocks[i + 1].entry_speed_mm_per_s);
                 }
+                // Each block read alone is the one read in order.
+                prop_assert_eq!(*b, p.block(i));
                 prop_assert!((b.start_seconds - previous_end).abs() <= 1e-9 * (1.0 + previous_end));
                 previous_end = b.start_seconds + b.duration_seconds();
                 prop_assert!(previous_end >= b.start_seconds);
             }
-            prop_assert_eq!(p.blocks.first().map(|b| b.entry_speed_mm_per_s), p.blocks.first().map(|_| 0.0));
-            prop_assert_eq!(p.blocks.last().map(|b| b.exit_speed_mm_per_s), p.blocks.last().map(|_| 0.0));
+            prop_assert_eq!(blocks.first().map(|b| b.entry_speed_mm_per_s), blocks.first().map(|_| 0.0));
+            prop_assert_eq!(blocks.last().map(|b| b.exit_speed_mm_per_s), blocks.last().map(|_| 0.0));
             // Step instants are monotone and end at the plan's end.
             let n = 1000;
             let mut last = 0.0;
-            p.visit_fractions(0..p.blocks.len(), n, 0, n, |_, t| {
+            p.visit_fractions(0..p.len(), n, 0, n, |_, t| {
                 assert!(t >= last - 1e-12, "{t} after {last}");
                 last = t;
             });
-            if !p.blocks.is_empty() {
+            if !p.is_empty() {
                 prop_assert!((last - p.duration_seconds).abs() <= 1e-9 * (1.0 + p.duration_seconds));
             }
         }

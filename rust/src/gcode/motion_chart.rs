@@ -135,9 +135,9 @@ impl Timeline {
         if from >= to {
             return Ok(chart);
         }
-        let blocks = &self.plan().blocks;
-        let first = blocks.partition_point(|b| b.start_seconds + b.duration_seconds() <= from);
-        let last = blocks.partition_point(|b| b.start_seconds < to);
+        let plan = self.plan();
+        let first = plan.first_block_where(|b| b.start_seconds + b.duration_seconds() > from);
+        let last = plan.first_block_where(|b| b.start_seconds >= to);
         // The blocks that start a move after another, in step order.
         let starts_move = self.move_starts(first..last);
         chart.exact = 4 * (last - first) as u64 <= u64::from(buckets);
@@ -146,8 +146,7 @@ impl Timeline {
         }
         let width = (to - from) / f64::from(buckets);
         let mut junctions = starts_move.into_iter().peekable();
-        for i in first..last {
-            let b = &blocks[i];
+        for (i, b) in (first..last).zip(plan.blocks(first..last)) {
             let p = b.phases();
             let rate_per_speed: [f64; MACHINE_AXES] = std::array::from_fn(|axis| {
                 (b.delta_mm[axis] / b.length_mm).abs() * steps_per_mm[axis]

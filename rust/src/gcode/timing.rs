@@ -223,9 +223,10 @@ impl Timeline {
         let blocks = self.moves.blocks_of(index);
         // A move with no blocks is an instant, where the last move before
         // it ended.
-        let at = self.plan.blocks[..blocks.start]
-            .last()
-            .map_or(0.0, |b| b.start_seconds + b.duration_seconds());
+        let at = blocks.start.checked_sub(1).map_or(0.0, |before| {
+            let b = self.plan.block(before);
+            b.start_seconds + b.duration_seconds()
+        });
         self.plan.timing(blocks, at)
     }
 
@@ -255,8 +256,8 @@ impl Timeline {
     /// The planned speed as polyline corners, (seconds, mm/s) flat, four
     /// per block: start, end of acceleration, start of deceleration, end.
     pub fn speed_profile(&self) -> Vec<f64> {
-        let mut out = Vec::with_capacity(8 * self.plan.blocks.len());
-        for b in &self.plan.blocks {
+        let mut out = Vec::with_capacity(8 * self.plan.len());
+        for b in self.plan.blocks(0..self.plan.len()) {
             let p = b.phases();
             let t0 = b.start_seconds;
             let t1 = t0 + p.accelerate_seconds;
@@ -282,7 +283,8 @@ impl Timeline {
     pub fn step_rate_profile(&self, steps_per_mm: &[f64; MACHINE_AXES]) -> Vec<f64> {
         let speeds = self.speed_profile();
         let mut out = Vec::with_capacity(speeds.len() / 2 * (1 + MACHINE_AXES));
-        for (b, corners) in self.plan.blocks.iter().zip(speeds.chunks_exact(8)) {
+        let blocks = self.plan.blocks(0..self.plan.len());
+        for (b, corners) in blocks.zip(speeds.chunks_exact(8)) {
             for corner in corners.chunks_exact(2) {
                 out.push(corner[0]);
                 for axis in 0..MACHINE_AXES {
