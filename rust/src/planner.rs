@@ -178,10 +178,18 @@ pub enum Rate {
 /// Grbl's `limit_value_by_axis_maximum` (nuts_bolts.c): the largest value
 /// along unit vector `u` for which no axis exceeds its `max`.
 pub fn limit_value_by_axis_maximum(max: &[f64; MACHINE_AXES], u: &[f64; MACHINE_AXES]) -> f64 {
-    (0..MACHINE_AXES)
-        .filter(|&i| u[i] != 0.0)
-        .map(|i| (max[i] / u[i]).abs())
-        .fold(f64::INFINITY, f64::min)
+    // Compared by hand: f64::min, which must pass over a NaN, is a call
+    // to libm's fmin in wasm, and no value here is NaN.
+    let mut limit = f64::INFINITY;
+    for i in 0..MACHINE_AXES {
+        if u[i] != 0.0 {
+            let along = (max[i] / u[i]).abs();
+            if along < limit {
+                limit = along;
+            }
+        }
+    }
+    limit
 }
 
 /// `|v|`, and `v` scaled to a unit vector (unchanged when 0).
@@ -345,6 +353,9 @@ impl Block {
 pub struct Planner {
     limits: Limits,
     blocks: Vec<StoredBlock>,
+    /// Per block, its length and its acceleration along it, for the
+    /// passes (dropped once planned: a plan derives them when read).
+    length_and_acceleration: Vec<(f64, f64)>,
     previous_unit: Option<[f64; MACHINE_AXES]>,
     previous_nominal: f64,
 }
@@ -354,6 +365,7 @@ impl Planner {
         Planner {
             limits,
             blocks: Vec::new(),
+            length_and_acceleration: Vec::new(),
             previous_unit: None,
             previous_nominal: 0.0,
         }
@@ -374,7 +386,8 @@ impl Planner {
     /// rate (mm/min) when a programmed feed was above it and was capped to
     /// it, as Grbl caps it without a word.
     pub fn push(&mut self, delta_mm: [f64; MACHINE_AXES], rate: Rate) -> Option<f64> {
-        let (length_mm, unit) = unit_vector(delta_mm);
+        let (length_mm, unit, acceleration) =
+            length_and_acceleration(delta_mm, &self.limits.acceleration_mm_per_s2);
         if length_mm == 0.0 || !length_mm.is_finite() {
             return None;
         }
@@ -395,6 +408,7 @@ impl Planner {
             nominal_speed_mm_per_s: nominal,
             entry_speed_sqr: (neighbour * neighbour).min(junction_sqr),
         });
+        self.length_and_acceleration.push((length_mm, acceleration));
         self.previous_unit = Some(unit);
         self.previous_nominal = nominal;
         match rate {
@@ -406,22 +420,24 @@ impl Planner {
     /// Plans every block pushed: the last one ends at rest.
     pub fn plan(self) -> Plan {
         let Planner {
-            limits, mut blocks, ..
+            limits,
+            mut blocks,
+            length_and_acceleration,
+            ..
         } = self;
-        let acceleration = limits.acceleration_mm_per_s2;
-        let two_al = |b: &StoredBlock| {
-            let (l, _, a) = length_and_acceleration(b.delta_mm, &acceleration);
+        let two_al = |i: usize| {
+            let (l, a) = length_and_acceleration[i];
             2.0 * a * l
         };
         // Reverse pass (planner_recalculate): entry² ≤ exit² + 2aL.
         let mut exit_sqr = 0.0;
-        for b in blocks.iter_mut().rev() {
-            b.entry_speed_sqr = b.entry_speed_sqr.min(exit_sqr + two_al(b));
+        for (i, b) in blocks.iter_mut().enumerate().rev() {
+            b.entry_speed_sqr = b.entry_speed_sqr.min(exit_sqr + two_al(i));
             exit_sqr = b.entry_speed_sqr;
         }
         // Forward pass: exit² (the next entry²) ≤ entry² + 2aL.
         for i in 1..blocks.len() {
-            let reachable = blocks[i - 1].entry_speed_sqr + two_al(&blocks[i - 1]);
+            let reachable = blocks[i - 1].entry_speed_sqr + two_al(i - 1);
             if reachable < blocks[i].entry_speed_sqr {
                 blocks[i].entry_speed_sqr = reachable;
             }
@@ -431,7 +447,7 @@ impl Planner {
         let n = blocks.len();
         let mut plan = Plan {
             blocks,
-            acceleration_mm_per_s2: acceleration,
+            acceleration_mm_per_s2: limits.acceleration_mm_per_s2,
             starts: Vec::with_capacity(n.div_ceil(START_INTERVAL)),
             duration_seconds: 0.0,
         };
@@ -440,7 +456,8 @@ impl Planner {
             if i % START_INTERVAL == 0 {
                 plan.starts.push(seconds);
             }
-            seconds += plan.profile(i, seconds).duration_seconds();
+            let (l, a) = length_and_acceleration[i];
+            seconds += plan.profile_of(i, seconds, l, a).duration_seconds();
         }
         plan.duration_seconds = seconds;
         plan
@@ -482,9 +499,15 @@ impl Plan {
     /// Block `i` as planned, starting at `start_seconds`: the profile
     /// [`Planner::plan`] gave it, made again from what is kept.
     fn profile(&self, i: usize, start_seconds: f64) -> Block {
-        let kept = &self.blocks[i];
         let (length_mm, _, a) =
-            length_and_acceleration(kept.delta_mm, &self.acceleration_mm_per_s2);
+            length_and_acceleration(self.blocks[i].delta_mm, &self.acceleration_mm_per_s2);
+        self.profile_of(i, start_seconds, length_mm, a)
+    }
+
+    /// [`Self::profile`] of a block of length `length_mm` and acceleration
+    /// `a` along it (what [`length_and_acceleration`] gives for it).
+    fn profile_of(&self, i: usize, start_seconds: f64, length_mm: f64, a: f64) -> Block {
+        let kept = &self.blocks[i];
         let entry_sqr = kept.entry_speed_sqr;
         let exit_sqr = self
             .blocks

@@ -560,10 +560,10 @@ pub struct TraceBuilder {
     max_steps: u64,
     /// Steps this trace must take ([`Request::following`]), if any.
     follow: Option<Arc<[Step]>>,
-    /// The last stepper columns run and their indices among the trace's,
-    /// so that a run of one stepper type after another (a G-code
-    /// program's moves) finds them once.
-    last_slots: Option<(&'static [Column], Rc<[usize]>)>,
+    /// The stepper columns run so far and their indices among the
+    /// trace's, so that stepper types taking turns (a G-code program's
+    /// lines and arcs) find theirs once.
+    known_slots: Vec<(&'static [Column], Rc<[usize]>)>,
 }
 
 impl TraceBuilder {
@@ -580,7 +580,7 @@ impl TraceBuilder {
             figures: Vec::new(),
             max_steps,
             follow: None,
-            last_slots: None,
+            known_slots: Vec::new(),
         }
     }
 
@@ -641,13 +641,12 @@ impl TraceBuilder {
 
     /// Indices of `columns` among the trace's, adding the new ones.
     fn column_slots(&mut self, columns: &'static [Column]) -> Rc<[usize]> {
-        if let Some((last, slots)) = &self.last_slots {
-            if std::ptr::eq(*last, columns) {
-                return Rc::clone(slots);
-            }
+        let known = self.known_slots.iter();
+        if let Some((_, slots)) = known.into_iter().find(|(c, _)| std::ptr::eq(*c, columns)) {
+            return Rc::clone(slots);
         }
         let slots: Rc<[usize]> = columns.iter().map(|c| self.column_slot(c)).collect();
-        self.last_slots = Some((columns, Rc::clone(&slots)));
+        self.known_slots.push((columns, Rc::clone(&slots)));
         slots
     }
 
@@ -661,8 +660,13 @@ impl TraceBuilder {
         let first_step = self.steps.len() as u64;
         if let Some(n) = stepper.remaining_steps() {
             self.check_length(first_step + n)?;
+            let capacity = self.steps.capacity();
             self.steps.reserve(n as usize);
-            crate::huge_pages::advise(self.steps.spare_capacity_mut());
+            // Advised once per new allocation, not once per segment: a
+            // program of a million short moves would make a million calls.
+            if self.steps.capacity() != capacity {
+                crate::huge_pages::advise(self.steps.spare_capacity_mut());
+            }
         }
         let column_index = self.column_slots(S::Why::COLUMNS);
         self.add_figure(S::Why::FIGURE);
@@ -1010,9 +1014,7 @@ impl Trace {
             return metrics.pulses_by_axis.clone();
         }
         let mut acc = MetricsAccumulator::new(self.dims());
-        for step in &self.steps {
-            acc.add_step(*step);
-        }
+        acc.add_steps(&self.steps);
         acc.pulses_by_axis()
     }
 
@@ -1023,9 +1025,7 @@ impl Trace {
     pub fn metrics(&self) -> &Metrics {
         self.metrics.get_or_init(|| {
             let mut acc = MetricsAccumulator::new(self.dims());
-            for step in &self.steps {
-                acc.add_step(*step);
-            }
+            acc.add_steps(&self.steps);
             self.for_each_piece(0, self.steps() + 1, |piece| {
                 let mut largest = [0i64; MAX_AXES];
                 let walked = piece.walk_line(|deviation, numerator| {

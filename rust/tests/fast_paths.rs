@@ -37,9 +37,7 @@ fn measured_point_by_point(t: &Trace) -> (Vec<f64>, Vec<f64>, Metrics) {
     let segments: Vec<_> = t.segments().collect();
     let last = segments.iter().rposition(|s| s.steps > 0).unwrap_or(0);
     let mut acc = MetricsAccumulator::new(dims);
-    for &s in t.step_range(0, t.steps()) {
-        acc.add_step(s);
-    }
+    acc.add_steps(t.step_range(0, t.steps()));
     let (mut deviation, mut axis_error) = (Vec::new(), Vec::new());
     t.walk_points(0, t.steps() + 1, |k, p| {
         let seg = if k < t.steps() {

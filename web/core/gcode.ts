@@ -218,7 +218,23 @@ function checkRunOptions(options: unknown): number {
   return sliceMs;
 }
 
-const yieldToEventLoop = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
+/**
+ * Lets the event loop run the tasks waiting (a cancel, a progress report)
+ * before the next slice: a message posted to a channel of its own, which
+ * comes back as a task with no delay, where a timer would wait its clamp
+ * (a nested setTimeout(0) waits 4 ms in a browser, 1 ms in Node, which a
+ * run of 20 ms slices would spend idle a fifth or a twentieth of its time).
+ */
+function yieldToEventLoop(): Promise<void> {
+  return new Promise((resolve) => {
+    const { port1, port2 } = new MessageChannel();
+    port1.onmessage = () => {
+      port1.close();
+      resolve();
+    };
+    port2.postMessage(null);
+  });
+}
 
 /**
  * Parses and runs a G-code program. Bad settings reject with a VoxpathError
