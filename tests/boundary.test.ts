@@ -13,7 +13,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { catalogue, compare, randomLines } from '../web/core/index.js';
 import type { Catalogue } from '../web/core/index.js';
 import { encodeRequest } from '../web/core/request.js';
-import { loadCore } from '../web/core/wasm.js';
+import { loadCore, withTextBytes } from '../web/core/wasm.js';
 
 const DECLARATIONS = fileURLToPath(new URL('../web/core/pkg/voxpath.d.ts', import.meta.url));
 
@@ -135,7 +135,7 @@ describe('the generated boundary types', () => {
   it('declare a G-code program with arcs, a helix, warnings and an error, and its progress', async () => {
     const core = await loadCore();
     const source = 'G21 G90 G17\nG0 X0 Y0\nG1 X10 F600\nG2 X10 Y10 I0 J5\nG3 X0 Y10 Z2 R5\nM3\nG1 X\n';
-    const run = new core.GcodeRun(source, encodeRequest({ stepsPerMm: 10, maxStepRate: 10 }));
+    const run = withTextBytes(core, source, (bytes) => new core.GcodeRun(bytes, encodeRequest({ stepsPerMm: 10, maxStepRate: 10 })));
     expectFits(run.advance(3), 'Progress');
     expectFits(run.advance(100), 'Progress');
     const result = run.finish();

@@ -7,7 +7,7 @@ import { pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
 import type { GcodeProgress } from '../web/core/index.js';
 import { callCore } from '../web/core/errors.js';
 import { encodeRequest } from '../web/core/request.js';
-import { loadCore } from '../web/core/wasm.js';
+import { loadCore, withTextBytes } from '../web/core/wasm.js';
 import { rejection, voxpath } from './helpers.js';
 
 const SAMPLES = fileURLToPath(new URL('../public/samples/', import.meta.url));
@@ -46,7 +46,7 @@ describe('runGcode', () => {
     // The core's heap budget is 2 GiB (issue 15 item 6); a run told to hold
     // none stops before its first line, as a long one stops where the budget ends.
     const core = await loadCore();
-    const run = new core.GcodeRun(SQUARE, encodeRequest({ stepsPerMm: 2 }));
+    const run = withTextBytes(core, SQUARE, (bytes) => new core.GcodeRun(bytes, encodeRequest({ stepsPerMm: 2 })));
     run.setHeapBudget(0);
     let error: unknown;
     try {

@@ -378,13 +378,17 @@ pub struct GcodeRun(crate::gcode::Runner);
 
 #[wasm_bindgen]
 impl GcodeRun {
+    /// `source`: the program as UTF-8 bytes (see [`TextBytes`]);
     /// `settings_json`: a `GcodeSettings` object as JSON text (its fields
     /// are the catalogue's `gcodeSettings`). Bad settings throw, naming the
     /// setting.
     #[wasm_bindgen(constructor)]
-    pub fn new(source: String, settings_json: &str) -> Result<GcodeRun, JsValue> {
+    pub fn new(source: &mut TextBytes, settings_json: &str) -> Result<GcodeRun, JsValue> {
         let settings =
             crate::gcode::Settings::from_json(settings_json).map_err(|e| to_js_error(&e))?;
+        // The bytes are taken, not copied: the TextBytes is left empty.
+        let source = String::from_utf8(std::mem::take(&mut source.0))
+            .map_err(|e| to_js_error(&Error::field("source", format!("is not UTF-8 text: {e}"))))?;
         Ok(GcodeRun(crate::gcode::Runner::new(source, settings)))
     }
 

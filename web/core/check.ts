@@ -16,9 +16,9 @@ import { AXIS_NAMES } from './axes.js';
 import { callCore } from './errors.js';
 import { argumentError, describeValue, text as guardText, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
-import type { Check, TextBytes } from './pkg/voxpath.js';
+import type { Check } from './pkg/voxpath.js';
 import type { TraceOptions } from './types.js';
-import { type CoreBindings, loadCore } from './wasm.js';
+import { loadCore, withTextBytes } from './wasm.js';
 
 /**
  * A learner's points: rows of [x, y, z] (or [x, y] ...), a flat Int32Array (or Float64Array)
@@ -31,34 +31,6 @@ export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Arra
 
 /** The result and its parts are the core's Rust types (rust/src/check.rs). */
 export type { AlsoMatch, AroundRow, Check, DifferenceKind, Difference as CheckDifference } from './pkg/voxpath.js';
-
-/**
- * Text goes to the core as UTF-8 bytes, encoded natively straight into wasm
- * memory (`encodeInto` on the core's TextBytes): passing the string itself
- * re-encodes it a character at a time in JavaScript, and `encode` makes a
- * JavaScript array of the bytes that is then copied in (for a 20 MB CSV,
- * each longer than the encoding).
- */
-const utf8 = new TextEncoder();
-
-/** `text` as UTF-8 in wasm memory, for `use`; freed after it. */
-function withTextBytes<T>(core: CoreBindings, text: string, use: (bytes: TextBytes) => T): T {
-  // Room for one byte a character, enough for ASCII text; else for three,
-  // the most UTF-8 takes for one UTF-16 unit.
-  let bytes = new core.TextBytes(text.length);
-  let written = utf8.encodeInto(text, bytes.view());
-  if (written.read < text.length) {
-    bytes.free();
-    bytes = new core.TextBytes(3 * text.length);
-    written = utf8.encodeInto(text, bytes.view());
-  }
-  try {
-    bytes.truncate(written.written);
-    return use(bytes);
-  } finally {
-    bytes.free();
-  }
-}
 
 /** Rows of numbers as one flat array, for the core; a row that is not one, or of another length, is named by index. */
 function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number } {

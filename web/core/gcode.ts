@@ -21,7 +21,7 @@ import { callCore } from './errors.js';
 import { aNumber, argumentError, describeValue, indexRange, optionalFunction, text, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import { Trace, requireTrace } from './trace.js';
-import { loadCore } from './wasm.js';
+import { loadCore, withTextBytes } from './wasm.js';
 import type { GcodeResult, GcodeSettings, MotionChart, Move, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
 
 /**
@@ -246,7 +246,7 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
   const settingsJson = encodeRequest(settings, 'settings');
   const sliceMs = checkRunOptions(options);
   const core = await loadCore();
-  const run = callCore(() => new core.GcodeRun(source, settingsJson));
+  const run = callCore(() => withTextBytes(core, source, (bytes) => new core.GcodeRun(bytes, settingsJson)));
   let finished = false;
   let linesDone = 0;
   try {

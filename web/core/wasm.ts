@@ -57,3 +57,31 @@ export function memoryBytes(): number {
 export function heapBytes(): number {
   return memory ? bindings.heapBytes() : 0;
 }
+
+/**
+ * Text goes to the core as UTF-8 bytes, encoded natively straight into wasm
+ * memory (`encodeInto` on the core's TextBytes): passing the string itself
+ * re-encodes it a character at a time in JavaScript, and `encode` makes a
+ * JavaScript array of the bytes that is then copied in (for a 20 MB CSV,
+ * each longer than the encoding).
+ */
+const utf8 = new TextEncoder();
+
+/** `text` as UTF-8 in wasm memory, for `use` (which may take the bytes); freed after it. */
+export function withTextBytes<T>(core: CoreBindings, text: string, use: (bytes: bindings.TextBytes) => T): T {
+  // Room for one byte a character, enough for ASCII text; else for three,
+  // the most UTF-8 takes for one UTF-16 unit.
+  let bytes = new core.TextBytes(text.length);
+  let written = utf8.encodeInto(text, bytes.view());
+  if (written.read < text.length) {
+    bytes.free();
+    bytes = new core.TextBytes(3 * text.length);
+    written = utf8.encodeInto(text, bytes.view());
+  }
+  try {
+    bytes.truncate(written.written);
+    return use(bytes);
+  } finally {
+    bytes.free();
+  }
+}

@@ -110,6 +110,28 @@ impl ArcSpec {
                 ));
             }
         };
+        ArcSpec::new(from, to, center, plane, turn, turns, allow_rise)
+    }
+
+    /// The arc from `from` to `to` (3 axes) about `center` (its coordinates
+    /// on the plane's axes), checked as [`Self::parse`] checks a request's:
+    /// for a caller with typed values (a G-code program's arcs), which has
+    /// no request to read.
+    pub fn new(
+        from: Point,
+        to: Point,
+        center: Point,
+        plane: Plane,
+        turn: Turn,
+        turns: u64,
+        allow_rise: bool,
+    ) -> Result<ArcSpec, Error> {
+        if turns > MAX_TURNS as u64 {
+            return Err(Error::field(
+                "turns",
+                format!("must be 0 to {MAX_TURNS}, got {turns}"),
+            ));
+        }
         if !allow_rise {
             same_height(plane, &from, &to)?;
         }

@@ -584,9 +584,8 @@ impl MoveRecords {
         if let Some(a) = self.arc_of(r).filter(|a| a.center_steps.is_some()) {
             if !self.helical(index) {
                 let center = Point::new(&a.center_steps.expect("filtered"));
-                let mut request = arc_request(from, to, center, &a.arc);
-                request.set("turns", Value::from(a.turns));
-                let spec = ArcSpec::parse(&request, false).expect("it was parsed when run");
+                let spec = ArcSpec::new(from, to, center, a.arc.plane, a.arc.turn, a.turns, false)
+                    .expect("it was checked when run");
                 let stepper = SaleemCircle::new(&spec)
                     .counted(&TraceBuilder::new(from, MAX_STEPS_LIMIT))
                     .expect("it was counted when run");
@@ -1180,16 +1179,20 @@ impl Runner {
             [mid[0] + t * normal[0], mid[1] + t * normal[1]]
         };
         let rounded = [aim[0].round() as i64, aim[1].round() as i64];
-        let mut candidates: Vec<[i64; 2]> = (-1..=1)
+        // Nearest first, by squared distance, each found once.
+        let mut candidates: Vec<(f64, [i64; 2])> = (-1..=1)
             .flat_map(|du| (-1..=1).map(move |dv| [rounded[0] + du, rounded[1] + dv]))
+            .map(|c| {
+                let (du, dv) = (c[0] as f64 - aim[0], c[1] as f64 - aim[1]);
+                (du * du + dv * dv, c)
+            })
             .collect();
-        let distance = |c: &[i64; 2]| (c[0] as f64 - aim[0]).hypot(c[1] as f64 - aim[1]);
-        candidates.sort_by(|a, b| distance(a).total_cmp(&distance(b)));
+        candidates.sort_by(|a, b| a.0.total_cmp(&b.0));
         let radius_sq = |p: [i64; 2], c: [i64; 2]| {
             let (du, dv) = ((p[0] - c[0]) as i128, (p[1] - c[1]) as i128);
             du * du + dv * dv
         };
-        candidates.into_iter().find(|&c| {
+        candidates.into_iter().map(|(_, c)| c).find(|&c| {
             let (a, b) = (radius_sq(from, c), radius_sq(to, c));
             a > 0 && b > 0 && radii_within_tolerance(a, b)
         })
@@ -1260,9 +1263,8 @@ impl Runner {
         center.coords_mut()[u] = c[0];
         center.coords_mut()[v] = c[1];
         kept.center_steps = Some(center.coords().try_into().expect("3 axes"));
-        let mut request = arc_request(from, to, center, arc);
         let place = |e: Error| Error::at(m.line, m.column, format!("{}", e));
-        let local = ArcSpec::parse(&request, true)
+        let local = ArcSpec::new(from, to, center, arc.plane, arc.turn, 0, true)
             .map_err(place)?
             .local_sweep_rad();
         // Extra turns on the grid: those that bring the grid sweep nearest
@@ -1274,6 +1276,12 @@ impl Runner {
             return Ok(kept);
         }
         kept.turns = turns as u64;
+        let circle = self.settings.arc_algorithm == circle_saleem::INFO.id;
+        if self.in_place && circle && !helical && self.run_circle(from, to, center, arc, kept.turns)
+        {
+            return Ok(kept);
+        }
+        let mut request = arc_request(from, to, center, arc);
         request.set("turns", Value::from(kept.turns));
         let segments = self.settings.arc_algorithm == "arc-segments";
         let algorithm = if helical {
@@ -1289,9 +1297,7 @@ impl Runner {
             request.set("lineAlgorithm", Value::from(self.settings.line_algorithm));
         }
         request.algorithm = algorithm.to_string();
-        if !(self.in_place && algorithm == circle_saleem::INFO.id && self.run_circle(&request)) {
-            self.append(m, request)?;
-        }
+        self.append(m, request)?;
         Ok(kept)
     }
 
@@ -1317,17 +1323,21 @@ impl Runner {
         Ok(())
     }
 
-    /// Runs a circle request's stepper straight into the program's trace,
-    /// read and counted as the circle algorithm's own trace reads and
-    /// counts it (maxSteps being what the program has left), so it takes
-    /// the same steps, segment and checkpoints the catalogue path would
-    /// append. False, doing nothing, where that path would fail (it then
-    /// says why).
-    fn run_circle(&mut self, request: &Request) -> bool {
-        if request.check_options(circle_saleem::INFO.options).is_err() {
-            return false;
-        }
-        let Ok(spec) = ArcSpec::parse(request, false) else {
+    /// Runs the circle arc from `from` to `to` about `center`, `turns`
+    /// extra turns, straight into the program's trace, checked and counted
+    /// as the circle algorithm's own trace checks and counts it (maxSteps
+    /// being what the program has left), so it takes the same steps,
+    /// segment and checkpoints the catalogue path would append. False,
+    /// doing nothing, where that path would fail (it then says why).
+    fn run_circle(
+        &mut self,
+        from: Point,
+        to: Point,
+        center: Point,
+        arc: &ArcMm,
+        turns: u64,
+    ) -> bool {
+        let Ok(spec) = ArcSpec::new(from, to, center, arc.plane, arc.turn, turns, false) else {
             return false;
         };
         let left = self.settings.max_steps - self.steps;
