@@ -371,6 +371,13 @@ impl Planner {
         }
     }
 
+    /// Makes room for `more` blocks, for a caller that knows about how many
+    /// it will push, so that they are not copied as they grow.
+    pub fn reserve(&mut self, more: usize) {
+        self.blocks.reserve(more);
+        self.length_and_acceleration.reserve(more);
+    }
+
     /// Blocks pushed so far.
     pub fn len(&self) -> usize {
         self.blocks.len()

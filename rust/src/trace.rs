@@ -484,6 +484,11 @@ impl Segments {
         self.kept.push(segment);
     }
 
+    fn reserve(&mut self, more: usize) {
+        self.first_steps.reserve(more);
+        self.slots.reserve(more);
+    }
+
     fn push_made(&mut self, first_step: u64) {
         self.first_steps.push(first_step);
         self.slots.push(MADE);
@@ -743,6 +748,13 @@ impl TraceBuilder {
     /// Steps taken so far.
     pub fn steps(&self) -> u64 {
         self.steps.len() as u64
+    }
+
+    /// Makes room for `more` segments, for a caller that knows about how
+    /// many it will run (a G-code program, a segment per line), so that
+    /// their table is not copied as it grows.
+    pub fn reserve_segments(&mut self, more: usize) {
+        self.segments.reserve(more);
     }
 
     /// Makes room for exactly `more` steps, after checking them against

@@ -445,7 +445,7 @@ impl<'t> Reader<'t> {
                 ),
             ));
         }
-        let Ok(magnitude) = text.parse::<f64>() else {
+        let Some(magnitude) = short_decimal(text).or_else(|| text.parse::<f64>().ok()) else {
             return Err(problem(
                 number_column,
                 format!("malformed number: '{}' is not a number", echo(text)),
@@ -468,9 +468,56 @@ impl<'t> Reader<'t> {
     }
 }
 
+/// `text`, digits with at most one point (as [`Reader::number`] reads
+/// them), as a number when it has at most 15 digits: the digits as an
+/// integer over a power of ten, both exact in f64, so the one rounding of
+/// the division gives the correctly rounded value, as `str::parse` does,
+/// without its general machinery (most G-code numbers look like 25.655).
+/// None otherwise, for `str::parse` to read.
+fn short_decimal(text: &str) -> Option<f64> {
+    const POWERS_OF_TEN: [f64; 16] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+    ];
+    let (mut mantissa, mut digits, mut fraction_digits) = (0u64, 0, 0);
+    let mut point = false;
+    for &b in text.as_bytes() {
+        match b {
+            b'0'..=b'9' if digits < 15 => {
+                mantissa = mantissa * 10 + u64::from(b - b'0');
+                digits += 1;
+                fraction_digits += usize::from(point);
+            }
+            b'.' if !point => point = true,
+            _ => return None,
+        }
+    }
+    (digits > 0).then(|| mantissa as f64 / POWERS_OF_TEN[fraction_digits])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        /// The short path reads every number of up to 15 digits as
+        /// `str::parse` does, bit for bit, and leaves the rest to it.
+        #[test]
+        fn short_decimals_read_as_str_parse_reads_them(
+            whole in "[0-9]{0,12}",
+            fraction in proptest::option::of("[0-9]{0,12}"),
+        ) {
+            let text = match &fraction {
+                Some(f) => format!("{whole}.{f}"),
+                None => whole.clone(),
+            };
+            let parsed = text.parse::<f64>().ok().map(f64::to_bits);
+            let digits = text.bytes().filter(u8::is_ascii_digit).count();
+            match short_decimal(&text) {
+                Some(v) => proptest::prop_assert_eq!(Some(v.to_bits()), parsed),
+                None => proptest::prop_assert!(digits == 0 || digits > 15),
+            }
+        }
+    }
 
     fn words(b: &Block) -> Vec<(char, f64, u32)> {
         b.words

@@ -901,16 +901,27 @@ fn tuple_into(out: &mut String, values: &[f64]) {
 impl Runner {
     pub fn new(source: String, settings: Settings) -> Runner {
         let lines = count_lines(&source);
-        let moves = MoveRecords::new(&settings);
+        // A line moves once at most: room for a move a line (up to a
+        // million) in each table a move adds to, so that they are not
+        // copied as they grow; the finish gives back what is left.
+        let expected_moves = (lines as usize).min(1 << 20);
+        let mut moves = MoveRecords::new(&settings);
+        moves.records.reserve(expected_moves);
+        let mut builder = TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps);
+        builder.reserve_segments(expected_moves);
+        let mut planner = Planner::new(settings.limits);
+        planner.reserve(expected_moves);
+        let mut spans = MoveSpans::default();
+        spans.reserve(expected_moves);
         Runner {
             source,
             offset: 0,
             lines_done: 0,
             lines,
-            builder: TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps),
+            builder,
             in_place: true,
-            planner: Planner::new(settings.limits),
-            spans: MoveSpans::default(),
+            planner,
+            spans,
             settings,
             interpreter: Interpreter::default(),
             block: Block::default(),

@@ -155,6 +155,12 @@ impl MoveSpans {
         self.first_step.len()
     }
 
+    /// Makes room for `more` moves.
+    pub fn reserve(&mut self, more: usize) {
+        self.first_step.reserve(more);
+        self.first_block.reserve(more);
+    }
+
     pub fn is_empty(&self) -> bool {
         self.first_step.is_empty()
     }
