@@ -224,8 +224,9 @@ fn a_line_of_repeats_stops_at_the_first_one_too_many() {
 fn a_program_that_does_not_fit_in_memory_stops_cleanly_saying_how_far_it_got() {
     // Issue 15 item 6: a program past the wasm instance's 4 GiB trapped.
     // The run now stops between lines once the core holds more heap than
-    // its budget; here the budget is what is held now and 1 MiB more.
-    let lines = 20_000;
+    // its budget; here the budget is what is held once the run has made
+    // room for its moves, and 1 MiB more, which its steps outgrow.
+    let lines = 100_000;
     let source: String = (0..lines)
         .map(|i| format!("G1 X{} Y{} F600\n", i % 50, (i * 7) % 50))
         .collect();
