@@ -73,7 +73,7 @@ pub const ACCELERATION: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: Some("10"),
-    doc: "Acceleration, mm/s²: one number for every axis, or x,y,z (Grbl $120-$122; default Grbl's 10).",
+    doc: "Acceleration, mm/s²: one number for every axis, or x,y,z (Grbl $120-$122; the default is Grbl's).",
 };
 
 pub const MAX_RATE: OptionSpec = OptionSpec {
@@ -81,7 +81,7 @@ pub const MAX_RATE: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: Some("500"),
-    doc: "Top rate, mm/min: one number, or x,y,z; also the rate of G0 (Grbl $110-$112; default Grbl's 500).",
+    doc: "Top rate, mm/min: one number, or x,y,z; also the rate of G0 (Grbl $110-$112; the default is Grbl's).",
 };
 
 pub const JUNCTION_DEVIATION: OptionSpec = OptionSpec {
@@ -89,7 +89,7 @@ pub const JUNCTION_DEVIATION: OptionSpec = OptionSpec {
     kind: OptionKind::Number,
     required: false,
     default: Some("0.01"),
-    doc: "Junction deviation δ, mm: how fast corners are taken, v² = a·δ·s/(1−s) (Grbl $11; default 0.01).",
+    doc: "Junction deviation δ, mm: how fast corners are taken, v² = a·δ·s/(1−s) (Grbl $11; the default is Grbl's).",
 };
 
 pub const MAX_STEP_RATE: OptionSpec = OptionSpec {
