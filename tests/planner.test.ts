@@ -53,9 +53,17 @@ describe('the planned motion profile', () => {
   });
 
   it("uses Grbl's defaults when no limits are given, and warns where Grbl would refuse", async () => {
-    // defaults.h: max rate 500 mm/min on every axis, so F6000 runs at 8.33 mm/s.
+    // defaults.h: max rate 500 mm/min and 10 mm/s² on every axis. G1 X10 has
+    // no F, so it is timed at the max rate, v = 500/60 mm/s, from rest; it
+    // ends at the next move's F2 (read as 2 mm/min, G93 ignored), which Grbl's
+    // max entry speed takes as the lower nominal speed of the two: up v/a
+    // seconds, down (v − v1)/a, the rest of the 10 mm cruising at v.
     const p = await runGcode('G1 X10\nG93 G1 X20 F2\n', { stepsPerMm: 80 });
-    expect(p.moves[0]!.timing.cruiseSpeed).toBeLessThanOrEqual(500 / 60 + 1e-9);
+    const [a, v, v1] = [10, 500 / 60, 2 / 60];
+    const cruiseMm = 10 - (v * v) / (2 * a) - (v * v - v1 * v1) / (2 * a);
+    expect(p.moves[0]!.timing.cruiseSpeed).toBeCloseTo(v, 9);
+    expect(p.moves[0]!.timing.exitSpeed).toBeCloseTo(v1, 9);
+    expect(p.moves[0]!.timing.endSeconds).toBeCloseTo(v / a + (v - v1) / a + cruiseMm / v, 9);
     expect(p.warnings.map((w) => [w.line, w.message.match(/error 22|G93/)?.[0]])).toEqual([
       [1, 'error 22'],
       [2, 'G93'],
