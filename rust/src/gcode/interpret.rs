@@ -181,7 +181,6 @@ pub struct Interpreter {
     position_mm: [f64; MACHINE_AXES],
     /// G92: machine = program + offset.
     offset_mm: [f64; MACHINE_AXES],
-    warned_no_feed: bool,
 }
 
 impl Default for Interpreter {
@@ -196,7 +195,6 @@ impl Default for Interpreter {
             feed_mm_per_min: None,
             position_mm: [0.0; MACHINE_AXES],
             offset_mm: [0.0; MACHINE_AXES],
-            warned_no_feed: false,
         }
     }
 }
@@ -513,8 +511,9 @@ impl Interpreter {
                 Some(self.arc(line, column, turn, from_mm, to_mm, &words, &mut effects)?)
             }
         };
-        if mode != Motion::Rapid && self.feed_mm_per_min.is_none() && !self.warned_no_feed {
-            self.warned_no_feed = true;
+        // On every such line, as Grbl would refuse each (the program's
+        // warnings past the first thousand are counted, not listed).
+        if mode != Motion::Rapid && self.feed_mm_per_min.is_none() {
             effects.warnings.push(Problem {
                 column,
                 message: format!(
@@ -933,5 +932,14 @@ mod tests {
             e.warnings[0].message,
             "G1 with no feed rate set (F): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate"
         );
+        // Each feed move before any F, on its line; none once F is set.
+        let (_, e) = run(&["G1 X1", "G2 X3 Y0 R1"]).unwrap();
+        assert!(
+            e.warnings[0]
+                .message
+                .starts_with("G2 with no feed rate set (F)")
+        );
+        let (_, e) = run(&["G1 X1", "G1 X4 F100", "G1 X5"]).unwrap();
+        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
     }
 }
