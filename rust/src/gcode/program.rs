@@ -581,16 +581,18 @@ impl MoveRecords {
         let index = self.move_of_segment(segment);
         let r = &self.records[index];
         let (from, to) = (grid_point(self.start_steps(index)), grid_point(r.to_steps));
-        if let Some(a) = self.arc_of(r).filter(|a| a.center_steps.is_some()) {
-            if !self.helical(index) {
-                let center = Point::new(&a.center_steps.expect("filtered"));
-                let spec = ArcSpec::new(from, to, center, a.arc.plane, a.arc.turn, a.turns, false)
-                    .expect("it was checked when run");
-                let stepper = SaleemCircle::new(&spec)
-                    .counted(&TraceBuilder::new(from, MAX_STEPS_LIMIT))
-                    .expect("it was counted when run");
-                return MadeSegment::new(from, IdealPath::Arc(spec.ideal_arc()), stepper);
-            }
+        // An arc made in place ran the circle; one stepped as a line (its
+        // radius too small, or its grid sweep under a step, though it has a
+        // grid center) ran the line algorithm, as every straight move.
+        if let Some(a) = self.arc_of(r).filter(|a| a.as_line.is_none()) {
+            debug_assert!(!self.helical(index), "a helix keeps its segments");
+            let center = Point::new(&a.center_steps.expect("an arc not stepped as a line"));
+            let spec = ArcSpec::new(from, to, center, a.arc.plane, a.arc.turn, a.turns, false)
+                .expect("it was checked when run");
+            let stepper = SaleemCircle::new(&spec)
+                .counted(&TraceBuilder::new(from, MAX_STEPS_LIMIT))
+                .expect("it was counted when run");
+            return MadeSegment::new(from, IdealPath::Arc(spec.ideal_arc()), stepper);
         }
         self.line_stepper
             .with(from, to, MakeLineSegment { from, to })
@@ -1510,6 +1512,33 @@ mod tests {
                 seen(&fast),
                 seen(&run_with(source, &settings, true)),
                 "{line}"
+            );
+        }
+    }
+
+    /// An arc whose end rounds onto its start (or just behind it) turns
+    /// less than a step on the grid and is stepped as a line, though it has
+    /// a grid center: its segment, made again when read, is the line's
+    /// (the fuzz target found it made as a circle, whose columns the trace
+    /// did not have).
+    #[test]
+    fn arcs_stepped_as_lines_read_back_as_lines() {
+        for source in [
+            "G2 X0.001 Y0.1 I5 J0 F300",
+            "G1 X1 F300\nG2 X1.001 Y0.1 I5 J0\nG1 X3",
+        ] {
+            let settings = r#"{"stepsPerMm": 1}"#;
+            let fast = run_with(source, settings, false);
+            let arc = fast.moves().into_iter().find(|m| m.arc.is_some()).unwrap();
+            assert!(
+                arc.note.contains("stepped as a straight line"),
+                "{source}: {}",
+                arc.note
+            );
+            assert_eq!(
+                seen(&fast),
+                seen(&run_with(source, settings, true)),
+                "{source}"
             );
         }
     }
