@@ -6,7 +6,7 @@
 // than 200 bytes of the core's heap per line. Timings are the bench's
 // business (`npm run bench`); here only the test timeout bounds them.
 import { beforeAll, describe, expect, it } from 'vitest';
-import { generateProgram } from '../bench/gcode.bench.js';
+import { generateProgram } from '../bench/programs.js';
 import { heapBytes, memoryBytes, runGcode, trace } from '../web/core/index.js';
 import type { DecisionColumns } from '../web/core/index.js';
 import { rejection } from './helpers.js';

@@ -31,6 +31,7 @@ pub mod metrics;
 pub mod planner;
 pub mod points;
 pub mod request;
+pub mod starts;
 pub mod step_clocks;
 pub mod step_detail;
 pub mod text;

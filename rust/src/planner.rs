@@ -260,9 +260,11 @@ struct StoredBlock {
     entry_speed_sqr: f64,
 }
 
+const _: () = assert!(std::mem::size_of::<StoredBlock>() == 40);
+
 /// Blocks between two kept block starts: a block's start is at most this
 /// many durations from one.
-const START_INTERVAL: usize = 16;
+const START_INTERVAL: usize = 4;
 
 /// A block's length and its acceleration along it
 /// (`limit_value_by_axis_maximum`), as pushing, planning and reading it
@@ -476,7 +478,7 @@ impl Planner {
 pub struct Plan {
     blocks: Vec<StoredBlock>,
     acceleration_mm_per_s2: [f64; MACHINE_AXES],
-    /// The start of block j · [`START_INTERVAL`], seconds.
+    /// The start of block j · [`START_INTERVAL`], seconds (2 bytes a block).
     starts: Vec<f64>,
     pub duration_seconds: f64,
 }

@@ -24,6 +24,7 @@ use crate::ideal::{IdealPath, Meter};
 use crate::metrics::{Metrics, MetricsAccumulator};
 use crate::points::Coordinate;
 use crate::request::{MAX_STEPS_LIMIT, Request, too_long_advice};
+use crate::starts::Starts;
 use serde::Serialize;
 use std::borrow::Cow;
 use std::cell::OnceCell;
@@ -454,71 +455,57 @@ impl MadeSegment {
 /// move records) knows each one's line and stepper without a copy here.
 pub type SegmentMaker = Rc<dyn Fn(usize) -> MadeSegment>;
 
-/// Sentinel of [`Segments::slots`]: the segment is made when read.
+/// Sentinel of [`Segments::kept_index`]: the segment is made when read.
 const MADE: u32 = u32::MAX;
 
-/// The segments of a trace, in step order: each one's first step, and the
-/// segment itself where it is kept.
+/// The segments of a trace, in step order: where each one's steps start,
+/// and the segment itself where it is kept.
 #[derive(Default)]
 struct Segments {
-    /// Step index of each segment's first step (nondecreasing).
-    first_steps: Vec<u64>,
+    /// Each segment's steps, as where they start (ending at the trace's
+    /// last step once finished).
+    steps: Starts<u64>,
     /// Per segment: its index in `kept`, or [`MADE`].
-    slots: Vec<u32>,
+    kept_index: Vec<u32>,
     kept: Vec<Segment>,
 }
 
 impl Segments {
     fn len(&self) -> usize {
-        self.first_steps.len()
+        self.steps.len()
     }
 
     fn is_empty(&self) -> bool {
-        self.first_steps.is_empty()
+        self.steps.is_empty()
     }
 
     fn push_kept(&mut self, segment: Segment) {
-        self.first_steps.push(segment.first_step);
-        self.slots
+        self.steps.push(segment.first_step);
+        self.kept_index
             .push(u32::try_from(self.kept.len()).expect("fewer than 2^32 segments"));
         self.kept.push(segment);
     }
 
     fn reserve(&mut self, more: usize) {
-        self.first_steps.reserve(more);
-        self.slots.reserve(more);
+        self.steps.reserve(more);
+        self.kept_index.reserve(more);
     }
 
     fn push_made(&mut self, first_step: u64) {
-        self.first_steps.push(first_step);
-        self.slots.push(MADE);
+        self.steps.push(first_step);
+        self.kept_index.push(MADE);
     }
 
-    /// Steps of segment `index`, in a trace of `total` steps.
-    fn steps(&self, index: usize, total: u64) -> u64 {
-        self.first_steps.get(index + 1).copied().unwrap_or(total) - self.first_steps[index]
+    /// Index of the last segment that took a step (0 when none did).
+    fn last_stepping(&self) -> usize {
+        self.steps.holding(self.steps.end().saturating_sub(1))
     }
 
-    /// Index of the segment containing step index k: the last that starts
-    /// at or before it (those before it that start there too took no step).
-    fn of_step(&self, k: u64) -> usize {
-        self.first_steps
-            .partition_point(|&f| f <= k)
-            .saturating_sub(1)
-    }
-
-    /// Index of the last segment that took a step, in a trace of `total`
-    /// steps (0 when none did).
-    fn last_stepping(&self, total: u64) -> usize {
-        self.first_steps
-            .partition_point(|&f| f < total)
-            .saturating_sub(1)
-    }
-
-    /// Gives back the memory the vectors grew past their length.
-    fn shrink_to_fit(&mut self) {
-        self.first_steps.shrink_to_fit();
-        self.slots.shrink_to_fit();
+    /// Ends the last segment at the trace's `total` steps, and gives back
+    /// the memory the vectors grew past their length.
+    fn finish(&mut self, total: u64) {
+        self.steps.finish(total);
+        self.kept_index.shrink_to_fit();
         self.kept.shrink_to_fit();
     }
 }
@@ -809,7 +796,7 @@ impl TraceBuilder {
         }
         let part_segments = std::mem::take(&mut part.segments);
         assert!(
-            part_segments.slots.iter().all(|&slot| slot != MADE),
+            part_segments.kept_index.iter().all(|&slot| slot != MADE),
             "an appended trace keeps its segments"
         );
         for mut segment in part_segments.kept {
@@ -857,7 +844,7 @@ impl TraceBuilder {
         // G-code program's steps grow move by move).
         self.steps.shrink_to_fit();
         self.positions.shrink_to_fit();
-        self.segments.shrink_to_fit();
+        self.segments.finish(self.steps.len() as u64);
         Trace {
             algorithm: algorithm.to_string(),
             start: self.start,
@@ -969,7 +956,7 @@ impl Trace {
 
     /// Segment `index`: kept, or made again ([`Self::with_segment_maker`]).
     pub fn segment(&self, index: usize) -> SegmentRef<'_> {
-        let slot = self.segments.slots[index];
+        let slot = self.segments.kept_index[index];
         if slot != MADE {
             return SegmentRef::Kept(&self.segments.kept[slot as usize]);
         }
@@ -988,9 +975,10 @@ impl Trace {
                     .expect("a made segment's columns are the trace's")
             })
             .collect();
+        let (first_step, end) = self.segments.steps.span(index);
         SegmentRef::Made(Segment {
-            first_step: self.segments.first_steps[index],
-            steps: self.segments.steps(index, self.steps()),
+            first_step,
+            steps: end - first_step,
             start: made.start,
             ideal: made.ideal,
             setup_note: None,
@@ -1086,7 +1074,7 @@ impl Trace {
         if k < self.steps() {
             self.segment_of_step(k)
         } else {
-            self.segments.last_stepping(self.steps())
+            self.segments.last_stepping()
         }
     }
 
@@ -1325,7 +1313,7 @@ impl Trace {
 
     /// Index of the segment containing step index k.
     pub fn segment_of_step(&self, k: u64) -> usize {
-        self.segments.of_step(k)
+        self.segments.steps.holding(k)
     }
 
     /// Replays `segment` so that its next step is step index `k`.

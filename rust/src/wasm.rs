@@ -386,8 +386,11 @@ impl GcodeRun {
     pub fn new(source: &mut TextBytes, settings_json: &str) -> Result<GcodeRun, JsValue> {
         let settings =
             crate::gcode::Settings::from_json(settings_json).map_err(|e| to_js_error(&e))?;
-        // The bytes are taken, not copied: the TextBytes is left empty.
-        let source = String::from_utf8(std::mem::take(&mut source.0))
+        // The bytes are taken, not copied: the TextBytes is left empty. A
+        // text of other than ASCII was given room for 3 bytes a character.
+        let mut bytes = std::mem::take(&mut source.0);
+        bytes.shrink_to_fit();
+        let source = String::from_utf8(bytes)
             .map_err(|e| to_js_error(&Error::field("source", format!("is not UTF-8 text: {e}"))))?;
         Ok(GcodeRun(crate::gcode::Runner::new(source, settings)))
     }

@@ -246,7 +246,7 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
   const settingsJson = encodeRequest(settings, 'settings');
   const sliceMs = checkRunOptions(options);
   const core = await loadCore();
-  const run = callCore(() => withTextBytes(core, source, (bytes) => new core.GcodeRun(bytes, settingsJson)));
+  const run = callCore(() => trapsAsErrors(() => withTextBytes(core, source, (bytes) => new core.GcodeRun(bytes, settingsJson)), 0));
   let finished = false;
   let linesDone = 0;
   try {

@@ -52,7 +52,8 @@ export function memoryBytes(): number {
  * Bytes of heap the wasm core holds now (0 before it is loaded): what the
  * results not yet freed retain, where {@link memoryBytes} is the most the
  * core ever needed at once. A finished G-code run holds its move records,
- * its plan and its steps here, about 160 bytes a line.
+ * its plan and its steps here (135 bytes a line for the bench's program at 1
+ * step/mm, README's Limits).
  */
 export function heapBytes(): number {
   return memory ? bindings.heapBytes() : 0;

@@ -89,7 +89,17 @@ export class TimingDiagram {
       const ticks = Math.max(MIN_WINDOW_TICKS, Math.floor((this.#container.clientWidth - LABELS_PX) / TICK_PX));
       const fromStep = Math.max(0, Math.min(pointIndex - Math.floor(ticks / 3), trace.steps - ticks));
       const toStep = Math.min(trace.steps, fromStep + ticks);
-      const window = await trace.pulseTrains(fromStep, toStep);
+      let window: PulseWindow;
+      try {
+        window = await trace.pulseTrains(fromStep, toStep);
+      } catch (error) {
+        // The last trace's chart, kept until this window came, must not stay.
+        if (request === this.#request && this.#fromStep < 0) {
+          this.#chart?.destroy();
+          this.#chart = undefined;
+        }
+        throw error;
+      }
       if (request !== this.#request || trace !== this.#trace) return;
       this.#fromStep = fromStep;
       this.#windowTicks = ticks;
@@ -187,7 +197,9 @@ export class TimingDiagram {
           ? `STEP and DIR per axis at each step's planned instant, ${unit} (a STEP pulse per step, drawn half-way to the next; DIR high for -)`
           : 'STEP and DIR per axis (one tick per step: a STEP pulse per step taken, DIR high for -)',
         xLabel,
-        pickX: stepSeconds ? (at) => this.#onPick(this.#pointOfX(at)) : undefined,
+        // No pick while a new trace's first window is fetched: the chart
+        // still shows the last trace's instants.
+        pickX: stepSeconds ? (at) => this.#fromStep >= 0 && this.#onPick(this.#pointOfX(at)) : undefined,
         yLabel: '',
         series,
         yRange: [-0.3, count * LANE],

@@ -271,24 +271,28 @@ impl LineStepper {
     /// for [`LineStepper::ByRequest`]: the one place a straight move's
     /// stepper is made, when it is run ([`Runner::step_line`]) and when its
     /// segment is made again to be read ([`MoveRecords::made_segment`]).
-    fn with<U: StepperUser>(self, from: Point, to: Point, user: U) -> Option<U::Out> {
+    fn with_stepper<V: StepperVisitor>(self, from: Point, to: Point, visitor: V) -> Option<V::Out> {
         Some(match self {
-            LineStepper::Regions(tie, gcd) => user.using(RegionsWang::with_gcd(from, to, tie, gcd)),
-            LineStepper::Bresenham3d(tie, gcd) => user.using(Bresenham3d::new(from, to, tie, gcd)),
-            LineStepper::Nd(tie, gcd) => user.using(Nd::new(from, to, tie, gcd)),
-            LineStepper::Greedy(order) => user.using(Greedy::new(from, to, order)),
-            LineStepper::Walk6(order) => user.using(Walk6::new(from, to, order)),
-            LineStepper::Dda => user.using(Dda::new(from, to)),
+            LineStepper::Regions(tie, gcd) => {
+                visitor.visit(RegionsWang::with_gcd(from, to, tie, gcd))
+            }
+            LineStepper::Bresenham3d(tie, gcd) => {
+                visitor.visit(Bresenham3d::new(from, to, tie, gcd))
+            }
+            LineStepper::Nd(tie, gcd) => visitor.visit(Nd::new(from, to, tie, gcd)),
+            LineStepper::Greedy(order) => visitor.visit(Greedy::new(from, to, order)),
+            LineStepper::Walk6(order) => visitor.visit(Walk6::new(from, to, order)),
+            LineStepper::Dda => visitor.visit(Dda::new(from, to)),
             LineStepper::ByRequest => return None,
         })
     }
 }
 
-/// What is done with a line stepper of whichever type [`LineStepper::with`]
+/// What is done with a line stepper of whichever type [`LineStepper::with_stepper`]
 /// makes: a closure generic over the stepper's type.
-trait StepperUser {
+trait StepperVisitor {
     type Out;
-    fn using<S: Stepper>(self, stepper: S) -> Self::Out;
+    fn visit<S: Stepper>(self, stepper: S) -> Self::Out;
 }
 
 /// Runs a straight move's stepper into the program's trace
@@ -299,9 +303,9 @@ struct RunInPlace<'a> {
     to: Point,
 }
 
-impl StepperUser for RunInPlace<'_> {
+impl StepperVisitor for RunInPlace<'_> {
     type Out = bool;
-    fn using<S: Stepper>(self, stepper: S) -> bool {
+    fn visit<S: Stepper>(self, stepper: S) -> bool {
         self.runner.run_line(stepper, self.from, self.to)
     }
 }
@@ -312,9 +316,9 @@ struct MakeLineSegment {
     to: Point,
 }
 
-impl StepperUser for MakeLineSegment {
+impl StepperVisitor for MakeLineSegment {
     type Out = MadeSegment;
-    fn using<S: Stepper>(self, stepper: S) -> MadeSegment {
+    fn visit<S: Stepper>(self, stepper: S) -> MadeSegment {
         let (from, to) = (self.from, self.to);
         MadeSegment::new(from, IdealPath::Line { from, to }, stepper)
     }
@@ -470,11 +474,12 @@ impl Program {
 /// Sentinel of [`MoveRecord::arc`]: the move is not an arc.
 const NO_ARC: u32 = u32::MAX;
 
-/// A move as a run keeps it: fixed size (64 bytes), no heap of its own.
+/// A move as a run keeps it: fixed size (64 bytes, which the README's
+/// Limits states), no heap of its own.
 /// Its note, arc and timing are made when it is read ([`MoveRecords::get`]).
 /// What follows from its neighbours is not kept: a move starts where the
 /// one before it ended (in mm and in steps: only a move changes the
-/// position), and its segments run up to where the next move's start. Its
+/// position), and its segments end where the next move's begin. Its
 /// steps and planner blocks are in [`MoveSpans`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MoveRecord {
@@ -490,6 +495,8 @@ pub struct MoveRecord {
     arc: u32,
     motion: Motion,
 }
+
+const _: () = assert!(std::mem::size_of::<MoveRecord>() == 64);
 
 /// What an arc move keeps beyond its [`MoveRecord`]: the arc as programmed
 /// and how it was stepped.
@@ -520,7 +527,7 @@ pub struct MoveRecords {
     steps_per_mm: [f64; MACHINE_AXES],
     /// Where each move starts in the steps and the planner's blocks.
     spans: Rc<MoveSpans>,
-    /// Trace segments of all the moves, where the last one's end.
+    /// Trace segments of all the moves: where the last move's end.
     segments: u32,
 }
 
@@ -595,7 +602,7 @@ impl MoveRecords {
             return MadeSegment::new(from, IdealPath::Arc(spec.ideal_arc()), stepper);
         }
         self.line_stepper
-            .with(from, to, MakeLineSegment { from, to })
+            .with_stepper(from, to, MakeLineSegment { from, to })
             .expect("a move stepped by its request keeps its segment")
     }
 
@@ -906,7 +913,11 @@ impl Runner {
         // A line moves once at most: room for a move a line (up to a
         // million) in each table a move adds to, so that they are not
         // copied as they grow; the finish gives back what is left.
-        let expected_moves = (lines as usize).min(1 << 20);
+        // Bounded by the heap budget too: a reservation is held as soon as
+        // it is made, and 256 bytes a move covers every table.
+        let expected_moves = (lines as usize)
+            .min(1 << 20)
+            .min(HEAP_BUDGET_BYTES.saturating_sub(held_bytes()) / 256);
         let mut moves = MoveRecords::new(&settings);
         moves.records.reserve(expected_moves);
         let mut builder = TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps);
@@ -1319,7 +1330,7 @@ impl Runner {
         let line_stepper = self.moves.line_stepper;
         let direct = self.in_place
             && line_stepper
-                .with(
+                .with_stepper(
                     from,
                     to,
                     RunInPlace {
@@ -1394,19 +1405,10 @@ impl Runner {
         let mut spans = std::mem::take(&mut self.spans);
         spans.finish(self.steps, planner.len());
         let spans = Rc::new(spans);
-        let moves = &mut self.moves;
-        moves.spans = Rc::clone(&spans);
-        moves.segments = u32::try_from(self.segments).expect("fewer than 2^32 segments");
-        moves.records.shrink_to_fit();
-        moves.arcs.shrink_to_fit();
-        let records = Rc::new(std::mem::replace(
-            &mut self.moves,
-            MoveRecords::new(&self.settings),
-        ));
-        let timeline = Timeline::new(planner, spans);
+        let timeline = Timeline::new(planner, Rc::clone(&spans));
         let spm = self.settings.machine.steps_per_mm();
         for (index, axis, needed, max) in timeline.step_rate_excesses(&self.settings.limits, &spm) {
-            let (line, column) = records.place(index);
+            let (line, column) = self.moves.place(index);
             self.warn(Diagnostic {
                 line,
                 column,
@@ -1414,6 +1416,12 @@ impl Runner {
                 limit: None,
             });
         }
+        let mut moves = self.moves;
+        moves.spans = spans;
+        moves.segments = u32::try_from(self.segments).expect("fewer than 2^32 segments");
+        moves.records.shrink_to_fit();
+        moves.arcs.shrink_to_fit();
+        let records = Rc::new(moves);
         let (notes, segments) = (Rc::clone(&records), Rc::clone(&records));
         let trace = self
             .builder

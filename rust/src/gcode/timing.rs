@@ -21,6 +21,7 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point};
 use crate::machine::{MACHINE_AXES, Machine, per_axis};
 use crate::planner::{self, Limits, Plan, Planner, Rate, Timing};
+use crate::starts::Starts;
 use serde_json::{Map, Value};
 use std::ops::Range;
 use std::rc::Rc;
@@ -126,76 +127,68 @@ pub fn feed_capped_message(feed_mm_per_min: f64, top_mm_per_min: f64) -> String 
 /// a move).
 #[derive(Clone, Debug, Default)]
 pub struct MoveSpans {
-    first_step: Vec<u64>,
-    first_block: Vec<u32>,
-    /// Steps and blocks in all, where the last move ends.
-    steps: u64,
-    blocks: u32,
+    steps: Starts<u64>,
+    blocks: Starts<u32>,
 }
 
 impl MoveSpans {
     /// Adds a move starting at `first_step` and `first_block`, where the
     /// one before it ends.
     pub fn push(&mut self, first_step: u64, first_block: usize) {
-        self.first_step.push(first_step);
-        self.first_block
+        self.steps.push(first_step);
+        self.blocks
             .push(u32::try_from(first_block).expect("fewer than 2^32 planner blocks"));
     }
 
     /// Ends the last move at `steps` steps and `blocks` blocks in all, and
-    /// gives back the memory the vectors grew past their length.
+    /// gives back the memory the tables grew past their length.
     pub fn finish(&mut self, steps: u64, blocks: usize) {
-        self.steps = steps;
-        self.blocks = u32::try_from(blocks).expect("fewer than 2^32 planner blocks");
-        self.first_step.shrink_to_fit();
-        self.first_block.shrink_to_fit();
+        self.steps.finish(steps);
+        self.blocks
+            .finish(u32::try_from(blocks).expect("fewer than 2^32 planner blocks"));
     }
 
     pub fn len(&self) -> usize {
-        self.first_step.len()
+        self.steps.len()
     }
 
     /// Makes room for `more` moves.
     pub fn reserve(&mut self, more: usize) {
-        self.first_step.reserve(more);
-        self.first_block.reserve(more);
+        self.steps.reserve(more);
+        self.blocks.reserve(more);
     }
 
     pub fn is_empty(&self) -> bool {
-        self.first_step.is_empty()
+        self.steps.is_empty()
     }
 
     /// Steps of all the moves.
     pub fn steps(&self) -> u64 {
-        self.steps
+        self.steps.end()
     }
 
     /// (first step index, steps) of move `index`.
     pub fn steps_of(&self, index: usize) -> (u64, u64) {
-        let first = self.first_step[index];
-        let end = self
-            .first_step
-            .get(index + 1)
-            .copied()
-            .unwrap_or(self.steps);
+        let (first, end) = self.steps.span(index);
         (first, end - first)
     }
 
     /// The planner blocks of move `index`.
     pub fn blocks_of(&self, index: usize) -> Range<usize> {
-        let end = self
-            .first_block
-            .get(index + 1)
-            .copied()
-            .unwrap_or(self.blocks);
-        self.first_block[index] as usize..end as usize
+        let (first, end) = self.blocks.span(index);
+        first as usize..end as usize
+    }
+
+    /// The first move whose blocks start at or after block `block`.
+    pub fn first_move_from_block(&self, block: usize) -> usize {
+        // Past 2^32 no block starts: every move is before it.
+        u32::try_from(block).map_or(self.len(), |b| self.blocks.first_from(b))
     }
 
     /// Index of the move that took step index `k`, or None past their last
-    /// step: the last move that starts at or before it (those before it
-    /// that start there too took no step).
+    /// step.
     pub fn move_of_step(&self, k: u64) -> Option<usize> {
-        (k < self.steps).then(|| self.first_step.partition_point(|&f| f <= k) - 1)
+        (k < self.steps()).then(|| self.steps.holding(k))
     }
 }
 
@@ -306,10 +299,7 @@ impl Timeline {
     /// The blocks in `blocks` that start a move after another block (where
     /// the machine turns from one move into the next), ascending.
     pub fn move_starts(&self, blocks: Range<usize>) -> Vec<usize> {
-        let first = self
-            .moves
-            .first_block
-            .partition_point(|&b| (b as usize) < blocks.start);
+        let first = self.moves.first_move_from_block(blocks.start);
         let mut starts: Vec<usize> = (first..self.moves.len())
             .map(|index| self.moves.blocks_of(index).start)
             .take_while(|&start| start < blocks.end)
