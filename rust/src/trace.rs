@@ -633,8 +633,11 @@ impl TraceBuilder {
 
     /// Indices of `columns` among the trace's, adding the new ones.
     fn column_slots(&mut self, columns: &'static [Column]) -> Rc<[usize]> {
-        let known = self.known_slots.iter();
-        if let Some((_, slots)) = known.into_iter().find(|(c, _)| std::ptr::eq(*c, columns)) {
+        if let Some((_, slots)) = self
+            .known_slots
+            .iter()
+            .find(|(c, _)| std::ptr::eq(*c, columns))
+        {
             return Rc::clone(slots);
         }
         let slots: Rc<[usize]> = columns.iter().map(|c| self.column_slot(c)).collect();
@@ -1026,7 +1029,12 @@ impl Trace {
         self.metrics.get_or_init(|| {
             let mut acc = MetricsAccumulator::new(self.dims());
             acc.add_steps(&self.steps);
+            // Over every point, each segment that took a step is one piece
+            // (one that took none has no tie to count), so its ties are
+            // counted here, the segment read once.
+            let mut ties = 0;
             self.for_each_piece(0, self.steps() + 1, |piece| {
+                ties += piece.segment.state_at(0).count_ties(piece.segment.steps);
                 let mut largest = [0i64; MAX_AXES];
                 let walked = piece.walk_line(|deviation, numerator| {
                     acc.add_deviation(deviation);
@@ -1045,10 +1053,6 @@ impl Trace {
                     });
                 }
             });
-            let ties = self
-                .segments()
-                .map(|s| s.state_at(0).count_ties(s.steps))
-                .sum();
             acc.finish(ties)
         })
     }

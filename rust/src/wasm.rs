@@ -102,8 +102,12 @@ pub fn compare(request_json: &str) -> Result<JsValue, JsValue> {
 /// re-encoded a character at a time (a 20 MB CSV took longer to arrive
 /// than to read).
 fn utf8<'a>(field: &'static str, bytes: &'a [u8]) -> Result<&'a str, JsValue> {
-    std::str::from_utf8(bytes)
-        .map_err(|e| to_js_error(&Error::field(field, format!("is not UTF-8 text: {e}"))))
+    std::str::from_utf8(bytes).map_err(|e| not_utf8(field, e))
+}
+
+/// The error for text in `field` that is not UTF-8.
+fn not_utf8(field: &'static str, e: std::str::Utf8Error) -> JsValue {
+    to_js_error(&Error::field(field, format!("is not UTF-8 text: {e}")))
 }
 
 /// Text for the core as UTF-8 bytes in wasm memory, written there by the
@@ -390,8 +394,7 @@ impl GcodeRun {
         // text of other than ASCII was given room for 3 bytes a character.
         let mut bytes = std::mem::take(&mut source.0);
         bytes.shrink_to_fit();
-        let source = String::from_utf8(bytes)
-            .map_err(|e| to_js_error(&Error::field("source", format!("is not UTF-8 text: {e}"))))?;
+        let source = String::from_utf8(bytes).map_err(|e| not_utf8("source", e.utf8_error()))?;
         Ok(GcodeRun(crate::gcode::Runner::new(source, settings)))
     }
 

@@ -594,12 +594,10 @@ impl MoveRecords {
         if let Some(a) = self.arc_of(r).filter(|a| a.as_line.is_none()) {
             debug_assert!(!self.helical(index), "a helix keeps its segments");
             let center = Point::new(&a.center_steps.expect("an arc not stepped as a line"));
-            let spec = ArcSpec::new(from, to, center, a.arc.plane, a.arc.turn, a.turns, false)
-                .expect("it was checked when run");
-            let stepper = SaleemCircle::new(&spec)
-                .counted(&TraceBuilder::new(from, MAX_STEPS_LIMIT))
-                .expect("it was counted when run");
-            return MadeSegment::new(from, IdealPath::Arc(spec.ideal_arc()), stepper);
+            let (stepper, ideal) =
+                counted_circle(from, to, center, &a.arc, a.turns, MAX_STEPS_LIMIT)
+                    .expect("it was checked and counted when run");
+            return MadeSegment::new(from, ideal, stepper);
         }
         self.line_stepper
             .with_stepper(from, to, MakeLineSegment { from, to })
@@ -829,6 +827,28 @@ fn line_request(algorithm: &str, from: Point, to: Point) -> Request {
     options.insert("from".into(), Value::from(from.coords()));
     options.insert("to".into(), Value::from(to.coords()));
     Request::new(algorithm, options)
+}
+
+/// The circle stepper of an arc from `from` to `to` about the grid point
+/// `center`, `turns` extra turns, checked and counted as the circle
+/// algorithm's own trace checks and counts it (at most `max_steps`), and
+/// the arc it is measured against: the one place a circle arc's stepper is
+/// made, when it is run ([`Runner::run_circle`]) and when its segment is
+/// made again to be read ([`MoveRecords::made_segment`]). None where the
+/// circle algorithm would refuse it.
+fn counted_circle(
+    from: Point,
+    to: Point,
+    center: Point,
+    arc: &ArcMm,
+    turns: u64,
+    max_steps: u64,
+) -> Option<(SaleemCircle, IdealPath)> {
+    let spec = ArcSpec::new(from, to, center, arc.plane, arc.turn, turns, false).ok()?;
+    let stepper = SaleemCircle::new(&spec)
+        .counted(&TraceBuilder::new(from, max_steps))
+        .ok()?;
+    Some((stepper, IdealPath::Arc(spec.ideal_arc())))
 }
 
 /// The request of an arc from `from` to `to` about the grid point
@@ -1361,17 +1381,13 @@ impl Runner {
         arc: &ArcMm,
         turns: u64,
     ) -> bool {
-        let Ok(spec) = ArcSpec::new(from, to, center, arc.plane, arc.turn, turns, false) else {
-            return false;
-        };
         let left = self.settings.max_steps - self.steps;
-        let Ok(stepper) = SaleemCircle::new(&spec).counted(&TraceBuilder::new(spec.from, left))
-        else {
+        let Some((stepper, ideal)) = counted_circle(from, to, center, arc, turns, left) else {
             return false;
         };
         let before = self.builder.steps();
         self.builder
-            .run_made_when_read(stepper, IdealPath::Arc(spec.ideal_arc()))
+            .run_made_when_read(stepper, ideal)
             .expect("a counted circle within maxSteps runs");
         self.steps += self.builder.steps() - before;
         self.segments += 1;
