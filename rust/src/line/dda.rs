@@ -229,20 +229,45 @@ impl Dda {
         let mut left: [i64; DIMS] =
             std::array::from_fn(|a| self.mirror.magnitude(a) - self.mirror.progress(&self.at, a));
         let mut remaining = self.remaining;
-        for slot in &mut out[..taken] {
-            let mut step = Step::NONE;
-            for axis in 0..DIMS {
-                acc[axis] += inc[axis];
-                let rounded = (acc[axis] + 0.5).floor() as i64;
-                let wants = (rounded - at[axis]) * sign[axis] > 0;
-                // Branch-free: the step's bit and the counts move by 0 or 1.
-                let moves = Guard::moves(wants, left[axis], remaining);
-                step = Step(step.0 | (toward[axis].0 * moves as u16));
-                at[axis] += sign[axis] * moves as i64;
-                left[axis] -= moves as i64;
+        let mut done = 0;
+        while done < taken {
+            // Where the finish rule changes nothing, the rule runs on the
+            // free axes alone (most of a line); near its ends, guarded.
+            let plan = Guard::unguarded(&left, remaining);
+            let span = (plan.span as usize).min(taken - done);
+            if span >= MIN_UNGUARDED_SPAN && DIMS <= 3 {
+                let axes = Axes { toward: &toward, sign: &sign, inc: &inc, acc: &mut acc, at: &mut at, left: &mut left };
+                let (free, forced, out) = (&plan.free[..plan.free_count], &plan.forced, &mut out[done..done + span]);
+                match (DIMS, plan.free_count) {
+                    (2, 0) => axes.unguarded::<0, 2>(free, forced, out),
+                    (2, 1) => axes.unguarded::<1, 1>(free, forced, out),
+                    (2, _) => axes.unguarded::<2, 0>(free, forced, out),
+                    (_, 0) => axes.unguarded::<0, 3>(free, forced, out),
+                    (_, 1) => axes.unguarded::<1, 2>(free, forced, out),
+                    (_, 2) => axes.unguarded::<2, 1>(free, forced, out),
+                    _ => axes.unguarded::<3, 0>(free, forced, out),
+                }
+                remaining -= span as u64;
+                done += span;
+                continue;
             }
-            *slot = step;
-            remaining -= 1;
+            let guarded = if DIMS <= 3 { MIN_UNGUARDED_SPAN.min(taken - done) } else { taken - done };
+            for slot in &mut out[done..done + guarded] {
+                let mut step = Step::NONE;
+                for axis in 0..DIMS {
+                    acc[axis] += inc[axis];
+                    let rounded = (acc[axis] + 0.5).floor() as i64;
+                    let wants = (rounded - at[axis]) * sign[axis] > 0;
+                    // Branch-free: the step's bit and the counts move by 0 or 1.
+                    let moves = Guard::moves(wants, left[axis], remaining);
+                    step = Step(step.0 | (toward[axis].0 * moves as u16));
+                    at[axis] += sign[axis] * moves as i64;
+                    left[axis] -= moves as i64;
+                }
+                *slot = step;
+                remaining -= 1;
+            }
+            done += guarded;
         }
         self.acc[..DIMS].copy_from_slice(&acc);
         self.at.coords_mut().copy_from_slice(&at);
@@ -250,6 +275,81 @@ impl Dda {
         Filled {
             steps: taken,
             displacement: std::array::from_fn(|a| if a < DIMS { at[a] - start[a] } else { 0 }),
+        }
+    }
+}
+
+/// Steps a fill loop runs guarded before it looks again for a stretch the
+/// finish rule leaves alone (and the shortest such stretch worth a loop of
+/// its own).
+const MIN_UNGUARDED_SPAN: usize = 16;
+
+/// The DDA's state per axis, for [`Axes::unguarded`].
+struct Axes<'a> {
+    toward: &'a [Step],
+    sign: &'a [i64],
+    inc: &'a [f64],
+    acc: &'a mut [f64],
+    at: &'a mut [i64],
+    left: &'a mut [i64],
+}
+
+impl Axes<'_> {
+    /// `out.len()` steps over which the finish rule changes nothing
+    /// ([`Guard::unguarded`]): each accumulator gains its increment every
+    /// step, the same f64 additions in the same order as
+    /// [`Stepper::next_step`]'s, but only the `FREE` free axes are rounded
+    /// and compared; the `FIXED` others (forced: step every time; held:
+    /// never) need only their sums. Their numbers are constants, so every
+    /// value stays in a register.
+    #[inline(always)]
+    fn unguarded<const FREE: usize, const FIXED: usize>(self, free: &[usize], forced: &[bool], out: &mut [Step]) {
+        let free: [usize; FREE] = std::array::from_fn(|i| free[i]);
+        let mut others = (0..self.acc.len()).filter(|a| !free.contains(a));
+        let fixed: [usize; FIXED] = std::array::from_fn(|_| others.next().expect("an axis not free"));
+        let bits = free.map(|a| self.toward[a].0);
+        let sign = free.map(|a| self.sign[a]);
+        let inc = free.map(|a| self.inc[a]);
+        let mut acc = free.map(|a| self.acc[a]);
+        // floor(acc + 0.5) passes the position `at` (the rule's test)
+        // exactly when acc + 0.5 >= at + 1 going up, or < at going down
+        // (at is an integer, exact in f64): one compare against the edge
+        // of the cell, no float-to-integer conversion.
+        let down = sign.map(|s| s < 0);
+        let mut edge = free.map(|a| (self.at[a] + (self.sign[a] > 0) as i64) as f64);
+        let step_f = sign.map(|s| s as f64);
+        let fixed_inc = fixed.map(|a| self.inc[a]);
+        let mut fixed_acc = fixed.map(|a| self.acc[a]);
+        let forced_bits = fixed
+            .iter()
+            .filter(|&&a| forced[a])
+            .fold(0, |bits, &a| bits | self.toward[a].0);
+        for slot in out.iter_mut() {
+            for j in 0..FIXED {
+                fixed_acc[j] += fixed_inc[j];
+            }
+            let mut step = forced_bits;
+            for i in 0..FREE {
+                acc[i] += inc[i];
+                let moves = (acc[i] + 0.5 >= edge[i]) != down[i];
+                step |= bits[i] * moves as u16;
+                edge[i] += if moves { step_f[i] } else { 0.0 };
+            }
+            *slot = Step(step);
+        }
+        let n = out.len() as i64;
+        for (i, &a) in free.iter().enumerate() {
+            let at = edge[i] as i64 - (sign[i] > 0) as i64;
+            self.left[a] -= (at - self.at[a]) * sign[i];
+            self.acc[a] = acc[i];
+            self.at[a] = at;
+        }
+        for (j, &a) in fixed.iter().enumerate() {
+            self.acc[a] = fixed_acc[j];
+            if forced[a] {
+                self.at[a] += self.sign[a] * n;
+                self.left[a] -= n;
+            }
         }
     }
 }

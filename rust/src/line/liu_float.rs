@@ -8,7 +8,7 @@
 //! arithmetic this is Bresenham's rule (epsilon = Wang's M / 2Δx); kept to d
 //! decimals, the slope k itself is rounded and the error accumulates.
 
-use super::{GUARD_LABELS, Guard, Mirror, axis_list, step_target, wang_discriminant};
+use super::{GUARD_LABELS, Guard, Mirror, Unguarded, axis_list, step_target, wang_discriminant};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
@@ -349,6 +349,70 @@ impl LiuFloat {
     }
 }
 
+/// Steps a fill loop runs guarded before it looks again for a stretch the
+/// finish rule leaves alone (and the shortest such stretch worth a loop of
+/// its own).
+const MIN_UNGUARDED_SPAN: usize = 16;
+
+/// Liu's rule on the scaled integers ([`LiuFloat::scaled`]), per axis: the
+/// step toward its end, K (0 for an active axis) and 10^d (0 for an active
+/// axis, whose value stays 1: it always wants to step).
+struct ScaledRule {
+    toward: [Step; 3],
+    /// E > threshold steps.
+    threshold: i64,
+    k: [i64; 3],
+    scale: [i64; 3],
+}
+
+impl ScaledRule {
+    /// `out.len()` steps over which the finish rule changes nothing
+    /// ([`Guard::unguarded`]): the rule on the `FREE` free axes alone (in
+    /// registers: their number a constant), the forced axes' bits on every
+    /// step; then the other axes' values and units moved on in closed form
+    /// (exact: [`LiuFloat::scaled`] bounds them over the whole chunk).
+    #[inline(always)]
+    fn unguarded<const FREE: usize>(
+        &self,
+        plan: &Unguarded<3>,
+        values: &mut [i64; 3],
+        left: &mut [i64; 3],
+        out: &mut [Step],
+    ) {
+        let free: [usize; FREE] = std::array::from_fn(|i| plan.free[i]);
+        let bits: [u16; FREE] = free.map(|a| self.toward[a].0);
+        let k: [i64; FREE] = free.map(|a| self.k[a]);
+        let scale: [i64; FREE] = free.map(|a| self.scale[a]);
+        let mut value: [i64; FREE] = free.map(|a| values[a]);
+        let mut moved = [0i64; FREE];
+        let forced_bits = (0..3)
+            .filter(|&a| plan.forced[a])
+            .fold(0, |bits, a| bits | self.toward[a].0);
+        for slot in out.iter_mut() {
+            let mut step = forced_bits;
+            for i in 0..FREE {
+                let moves = value[i] > self.threshold;
+                step |= bits[i] * moves as u16;
+                moved[i] += moves as i64;
+                value[i] += k[i] - scale[i] * moves as i64;
+            }
+            *slot = Step(step);
+        }
+        let n = out.len() as i64;
+        for axis in 0..3 {
+            if let Some(i) = free.iter().position(|&a| a == axis) {
+                values[axis] = value[i];
+                left[axis] -= moved[i];
+            } else if plan.forced[axis] {
+                values[axis] += n * (self.k[axis] - self.scale[axis]);
+                left[axis] -= n;
+            } else {
+                values[axis] += n * self.k[axis];
+            }
+        }
+    }
+}
+
 impl Stepper for LiuFloat {
     type Why = LiuWhy;
 
@@ -398,18 +462,41 @@ impl Stepper for LiuFloat {
         let mut remaining = self.remaining;
         // Counted in a local (a register), not through `self`.
         let mut left = self.left;
-        for slot in &mut out[..taken - 1] {
-            let mut step = Step::NONE;
-            for axis in 0..3 {
-                let wants = values[axis] > threshold;
-                // Branch-free: the step's bit and the counts move by 0 or 1.
-                let moves = Guard::moves(wants, left[axis], remaining);
-                step = Step(step.0 | (toward[axis].0 * moves as u16));
-                left[axis] -= moves as i64;
-                values[axis] += k_by_axis[axis] - scale_by_axis[axis] * moves as i64;
+        let body = taken - 1;
+        let mut done = 0;
+        while done < body {
+            // Where the finish rule changes nothing, the rule runs on the
+            // free axes alone (most of a line); near its ends, guarded.
+            let plan = Guard::unguarded(&left, remaining);
+            let span = (plan.span as usize).min(body - done);
+            if span >= MIN_UNGUARDED_SPAN {
+                let out = &mut out[done..done + span];
+                let rule = ScaledRule { toward, threshold, k: k_by_axis, scale: scale_by_axis };
+                match plan.free_count {
+                    0 => rule.unguarded::<0>(&plan, &mut values, &mut left, out),
+                    1 => rule.unguarded::<1>(&plan, &mut values, &mut left, out),
+                    2 => rule.unguarded::<2>(&plan, &mut values, &mut left, out),
+                    _ => rule.unguarded::<3>(&plan, &mut values, &mut left, out),
+                }
+                remaining -= span as u64;
+                done += span;
+                continue;
             }
-            *slot = step;
-            remaining -= 1;
+            let guarded = MIN_UNGUARDED_SPAN.min(body - done);
+            for slot in &mut out[done..done + guarded] {
+                let mut step = Step::NONE;
+                for axis in 0..3 {
+                    let wants = values[axis] > threshold;
+                    // Branch-free: the step's bit and the counts move by 0 or 1.
+                    let moves = Guard::moves(wants, left[axis], remaining);
+                    step = Step(step.0 | (toward[axis].0 * moves as u16));
+                    left[axis] -= moves as i64;
+                    values[axis] += k_by_axis[axis] - scale_by_axis[axis] * moves as i64;
+                }
+                *slot = step;
+                remaining -= 1;
+            }
+            done += guarded;
         }
         self.left = left;
         for axis in 0..3 {

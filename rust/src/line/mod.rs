@@ -145,10 +145,13 @@ impl Mirror {
     /// |Δ_major| / divisor steps the discriminants are back at their initial
     /// values: the pattern repeats `divisor` times with no extra code.
     pub fn divisor(&self, reduce: bool) -> i64 {
+        if !reduce {
+            return 1;
+        }
         let g = self.magnitude[..self.dims()]
             .iter()
             .fold(0, |g, &m| gcd(g, m as u64)) as i64;
-        if reduce && g > 1 { g } else { 1 }
+        g.max(1)
     }
 
     /// "(8, 6, 5)": |Δ| per axis divided by `divisor`.
@@ -256,6 +259,19 @@ pub enum Guard {
 
 pub const GUARD_LABELS: &[&str] = &["rule", "held", "forced"];
 
+/// What [`Guard::unguarded`] finds: which axes the finish rule leaves to
+/// their rule, which it forces, and for how many steps.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Unguarded<const DIMS: usize> {
+    /// The free axes, in increasing order; the first `free_count` count.
+    pub free: [usize; DIMS],
+    pub free_count: usize,
+    /// Per axis, whether it steps on every step (held axes are neither).
+    pub forced: [bool; DIMS],
+    /// Steps over which this holds.
+    pub span: u64,
+}
+
 impl Guard {
     /// The finish rule: a passive axis never passes its end coordinate and
     /// never falls so far behind that it cannot reach it in the steps left.
@@ -281,6 +297,44 @@ impl Guard {
     #[inline(always)]
     pub fn moves(wants: bool, units_left: i64, steps_left: u64) -> bool {
         (wants & (units_left != 0)) | ((units_left as u64 >= steps_left) & (units_left > 0))
+    }
+
+    /// The next steps over which the finish rule changes no decision, for
+    /// the fill loops of the rules it guards: how each axis fares over
+    /// them, from its units left (`units_left`) and the steps left.
+    /// - Held (no unit left): it cannot step; it stays held.
+    /// - Forced (as many units as steps): it steps every time; it stays
+    ///   forced. (An active axis is one from the start.)
+    /// - Free (otherwise): it steps exactly when its rule wants, as long as
+    ///   it has a unit left and fewer units than steps: for at least
+    ///   min(units, steps - units) steps, since each step takes one step
+    ///   and at most one unit.
+    ///
+    /// `span` is the fewest of those over the free axes (every step left
+    /// when none is free). Over that many steps a fill loop can run the
+    /// rule on the free axes alone, with no guard, the forced axes' bits on
+    /// every step: the same steps [`Guard::apply`] gives.
+    pub fn unguarded<const DIMS: usize>(units_left: &[i64; DIMS], steps_left: u64) -> Unguarded<DIMS> {
+        let mut out = Unguarded {
+            free: [0; DIMS],
+            free_count: 0,
+            forced: [false; DIMS],
+            span: steps_left,
+        };
+        for (axis, &units) in units_left.iter().enumerate() {
+            let units = units.max(0) as u64;
+            if units == 0 {
+                continue;
+            }
+            if units >= steps_left {
+                out.forced[axis] = true;
+                continue;
+            }
+            out.free[out.free_count] = axis;
+            out.free_count += 1;
+            out.span = out.span.min(units).min(steps_left - units);
+        }
+        out
     }
 
     /// The guard of a step over several axes: the first that the finish
@@ -358,6 +412,33 @@ pub fn axis_list(axes: impl Iterator<Item = usize>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        /// Over the span `Guard::unguarded` gives, whatever each rule wants
+        /// at each step, `Guard::apply` steps a free axis exactly when it
+        /// wants, a forced one always and a held one never.
+        #[test]
+        fn the_finish_rule_changes_nothing_over_the_unguarded_span(
+            steps_left in 1u64..200,
+            units in proptest::array::uniform3(0u64..=200),
+            wants_seed in proptest::num::u64::ANY,
+        ) {
+            let mut left: [i64; 3] = units.map(|u| u.min(steps_left) as i64);
+            let plan = Guard::unguarded(&left, steps_left);
+            let free = |axis: usize| plan.free[..plan.free_count].contains(&axis);
+            let mut seed = wants_seed;
+            for j in 0..plan.span {
+                for axis in 0..3 {
+                    seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    let wants = seed >> 63 == 1;
+                    let (moves, _) = Guard::apply(wants, left[axis], steps_left - j);
+                    let unguarded = if free(axis) { wants } else { plan.forced[axis] };
+                    proptest::prop_assert_eq!(moves, unguarded, "axis {} at step {} of {}", axis, j, plan.span);
+                    left[axis] -= moves as i64;
+                }
+            }
+        }
+    }
 
     #[test]
     fn mirror_measures_along_the_direction_of_travel() {
