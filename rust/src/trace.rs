@@ -610,14 +610,14 @@ impl TraceBuilder {
     }
 
     /// Runs `stepper` to its end from the current position, measuring its
-    /// points against `ideal`.
+    /// points against `ideal`. Its note is made from its first state when
+    /// read ([`Segment::note`]): nobody may read it, and a circle's note
+    /// runs Saleem's dry run.
     pub fn run<S: Stepper>(&mut self, stepper: S, ideal: IdealPath) -> Result<(), Error> {
-        let note = stepper.setup_note();
-        self.run_segment(stepper, ideal, Some(note), false)
+        self.run_segment(stepper, ideal, false)
     }
 
-    /// [`Self::run`], keeping no note (it is made from the stepper's state
-    /// at the segment's start when read) and, when the segment is shorter
+    /// [`Self::run`], keeping, when the segment is shorter
     /// than [`CHECKPOINT_INTERVAL`], nothing of it but where it starts: the
     /// finished trace's [`SegmentMaker`] makes it again when read (a longer
     /// one is kept, with its checkpoints, whose steps outweigh it). For a
@@ -628,7 +628,7 @@ impl TraceBuilder {
         stepper: S,
         ideal: IdealPath,
     ) -> Result<(), Error> {
-        self.run_segment(stepper, ideal, None, true)
+        self.run_segment(stepper, ideal, true)
     }
 
     /// Indices of `columns` among the trace's, adding the new ones.
@@ -649,7 +649,6 @@ impl TraceBuilder {
         &mut self,
         stepper: S,
         ideal: IdealPath,
-        setup_note: Option<String>,
         made_when_read: bool,
     ) -> Result<(), Error> {
         let first_step = self.steps.len() as u64;
@@ -714,7 +713,7 @@ impl TraceBuilder {
                 steps: segment_steps,
                 start,
                 ideal,
-                setup_note,
+                setup_note: None,
                 column_index,
                 first_state: Box::new(first_state),
                 states,

@@ -69,7 +69,7 @@ fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
     let spec = ArcSpec::parse(req, false)?;
     let mut builder = TraceBuilder::for_request(spec.from, req)?;
-    let stepper = SaleemCircle::new(&spec).counted(&builder)?;
+    let stepper = SaleemCircle::new(&spec).within(&builder)?;
     builder.run(stepper, IdealPath::Arc(spec.ideal_arc()))?;
     Ok(builder.finish(ID))
 }
@@ -464,6 +464,36 @@ impl SaleemCircle {
         full_turns.saturating_mul(4 * whole_radius.saturating_sub(1))
     }
 
+    /// More steps than this circle can take, known without running it. In
+    /// each octant the fast axis moves one unit every step, one way, within
+    /// the circle's box (every point is within a cell of the circle, so
+    /// |u|, |v| <= R = floor(r) + 2): at most 2R steps an octant, 16R a
+    /// turn; the run ends within `crossings_left` crossings of the ray
+    /// through the end, plus a partial turn before the first. The
+    /// correction steps are at most the Chebyshev distance from a circle
+    /// point to the end.
+    pub fn steps_at_most(&self) -> u64 {
+        let box_half = (self.radius_sq as u64).isqrt() + 2;
+        let turns = self.crossings_left.saturating_add(1);
+        let correction = box_half + self.end[0].unsigned_abs().max(self.end[1].unsigned_abs());
+        turns
+            .saturating_mul(16 * box_half)
+            .saturating_add(correction)
+    }
+
+    /// This stepper ready to run within `builder`'s maxSteps: as it is when
+    /// [`Self::steps_at_most`] fits (a trace counts its steps as it records
+    /// them, and the note runs the dry run when it is read), else counted
+    /// ([`Self::counted`]), which refuses it when it would not fit. The
+    /// dry run doubled the cost of recording a circle.
+    pub fn within(self, builder: &TraceBuilder) -> Result<SaleemCircle, Error> {
+        if self.steps_at_most() <= builder.max_steps() {
+            Ok(self)
+        } else {
+            self.counted(builder)
+        }
+    }
+
     /// This stepper with its steps counted by the dry run, or the maxSteps
     /// error of `builder` when it would take more than the builder allows
     /// (at once when its full turns alone need more).
@@ -785,7 +815,9 @@ impl Stepper for SaleemCircle {
                 ", run on the mirror image {v} -> -{v} because the paper's rule is counter-clockwise"
             );
         }
-        if let Some(plan) = self.plan {
+        // Saleem's dummy procedure (section 5), run now if the stepper ran
+        // without it ([`Self::within`]): from the start, every step counts.
+        if let Some(plan) = self.plan.or_else(|| self.plan(u64::MAX)) {
             let _ = write!(s, ": {} circle steps to {}", plan.circle_steps, plan.stop);
             let end = f.point(self.end, self.height);
             if plan.correction_steps == 0 {

@@ -595,8 +595,8 @@ impl MoveRecords {
             debug_assert!(!self.helical(index), "a helix keeps its segments");
             let center = Point::new(&a.center_steps.expect("an arc not stepped as a line"));
             let (stepper, ideal) =
-                counted_circle(from, to, center, &a.arc, a.turns, MAX_STEPS_LIMIT)
-                    .expect("it was checked and counted when run");
+                circle_arc_stepper(from, to, center, &a.arc, a.turns, MAX_STEPS_LIMIT)
+                    .expect("it was checked when run");
             return MadeSegment::new(from, ideal, stepper);
         }
         self.line_stepper
@@ -830,13 +830,13 @@ fn line_request(algorithm: &str, from: Point, to: Point) -> Request {
 }
 
 /// The circle stepper of an arc from `from` to `to` about the grid point
-/// `center`, `turns` extra turns, checked and counted as the circle
-/// algorithm's own trace checks and counts it (at most `max_steps`), and
+/// `center`, `turns` extra turns, checked against `max_steps` as the
+/// circle algorithm's own trace checks it ([`SaleemCircle::within`]), and
 /// the arc it is measured against: the one place a circle arc's stepper is
 /// made, when it is run ([`Runner::run_circle`]) and when its segment is
 /// made again to be read ([`MoveRecords::made_segment`]). None where the
 /// circle algorithm would refuse it.
-fn counted_circle(
+fn circle_arc_stepper(
     from: Point,
     to: Point,
     center: Point,
@@ -846,7 +846,7 @@ fn counted_circle(
 ) -> Option<(SaleemCircle, IdealPath)> {
     let spec = ArcSpec::new(from, to, center, arc.plane, arc.turn, turns, false).ok()?;
     let stepper = SaleemCircle::new(&spec)
-        .counted(&TraceBuilder::new(from, max_steps))
+        .within(&TraceBuilder::new(from, max_steps))
         .ok()?;
     Some((stepper, IdealPath::Arc(spec.ideal_arc())))
 }
@@ -1368,8 +1368,8 @@ impl Runner {
     }
 
     /// Runs the circle arc from `from` to `to` about `center`, `turns`
-    /// extra turns, straight into the program's trace, checked and counted
-    /// as the circle algorithm's own trace checks and counts it (maxSteps
+    /// extra turns, straight into the program's trace, checked as the
+    /// circle algorithm's own trace checks it (maxSteps
     /// being what the program has left), so it takes the same steps,
     /// segment and checkpoints the catalogue path would append. False,
     /// doing nothing, where that path would fail (it then says why).
@@ -1382,13 +1382,13 @@ impl Runner {
         turns: u64,
     ) -> bool {
         let left = self.settings.max_steps - self.steps;
-        let Some((stepper, ideal)) = counted_circle(from, to, center, arc, turns, left) else {
+        let Some((stepper, ideal)) = circle_arc_stepper(from, to, center, arc, turns, left) else {
             return false;
         };
         let before = self.builder.steps();
         self.builder
             .run_made_when_read(stepper, ideal)
-            .expect("a counted circle within maxSteps runs");
+            .expect("a circle within maxSteps runs");
         self.steps += self.builder.steps() - before;
         self.segments += 1;
         true
