@@ -28,7 +28,7 @@ use voxpath::grid::{COORD_LIMIT, Point, SIGNED_AXIS_LABELS};
 use voxpath::ideal::IdealPath;
 use voxpath::ideal::info::IdealPathInfo;
 use voxpath::request::{DEFAULT_MAX_STEPS, TiePolicy};
-use voxpath::trace::NO_VALUE;
+use voxpath::trace::{NO_VALUE, Stepper};
 use voxpath::{Request, Trace, TraceBuilder};
 
 const PLANES: [(&str, [usize; 3]); 3] = [("xy", [0, 1, 2]), ("zx", [2, 0, 1]), ("yz", [1, 2, 0])];
@@ -258,6 +258,19 @@ proptest! {
         let tie = if hold { TiePolicy::Hold } else { TiePolicy::Advance };
         check_fills(&arc.request("circle", 0, ""), tie, chunk)?;
         check_fills(&arc.request("helix", rise, ""), tie, chunk)?;
+    }
+
+    #[test]
+    fn a_circle_takes_no_more_steps_than_its_bound(
+        arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(300)],
+    ) {
+        // SaleemCircle::within lets a circle run without the dry run when
+        // steps_at_most fits maxSteps: the bound must hold for every arc
+        // (extra turns, ends off the circle, tiny radii).
+        let (spec, circle) = counted_circle(&arc.request("circle", 0, ""));
+        let bound = SaleemCircle::new(&spec).steps_at_most();
+        let steps = circle.remaining_steps().expect("counted");
+        prop_assert!(steps <= bound, "{} steps, bound {}", steps, bound);
     }
 
     #[test]
