@@ -650,13 +650,15 @@ impl Plan {
 
     /// The highest step rate per axis in blocks `range`, steps/s: peak speed
     /// times the axis's share of the direction times its steps per mm.
+    /// Each block's profile alone: a peak needs no start time, which would
+    /// be derived from the nearest kept one (a program checks every move).
     pub fn peak_step_rates_hz(
         &self,
         range: Range<usize>,
         steps_per_mm: &[f64; MACHINE_AXES],
     ) -> [f64; MACHINE_AXES] {
         let mut peak = [0.0f64; MACHINE_AXES];
-        for b in self.blocks(range) {
+        for b in range.map(|i| self.profile(i, f64::NAN)) {
             for axis in 0..MACHINE_AXES {
                 let rate = b.peak_speed_mm_per_s
                     * (b.delta_mm[axis] / b.length_mm).abs()

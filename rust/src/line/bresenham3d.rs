@@ -173,14 +173,14 @@ impl Bresenham3d {
         let mirror = Mirror::new(from, to);
         let major = mirror.major();
         let divisor = mirror.divisor(gcd);
-        let major_len = mirror.magnitude(major) / divisor;
+        let major_len = mirror.reduced(major, divisor);
         let minors = match major {
             0 => [1, 2],
             1 => [0, 2],
             _ => [0, 1],
         };
         let terms = minors.map(|axis| {
-            SaleemTerm::new(mirror.magnitude(axis) / divisor, major_len, 2 * major_len)
+            SaleemTerm::new(mirror.reduced(axis, divisor), major_len, 2 * major_len)
         });
         Bresenham3d {
             mirror,

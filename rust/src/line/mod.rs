@@ -154,10 +154,21 @@ impl Mirror {
         g.max(1)
     }
 
+    /// |Δ| of `axis` divided by `divisor` ([`Self::divisor`]), with no
+    /// division when it is 1 (most lines): an i64 division takes tens of
+    /// cycles, and a G-code program sets up a stepper every move.
+    pub fn reduced(&self, axis: usize, divisor: i64) -> i64 {
+        if divisor == 1 {
+            self.magnitude[axis]
+        } else {
+            self.magnitude[axis] / divisor
+        }
+    }
+
     /// "(8, 6, 5)": |Δ| per axis divided by `divisor`.
     pub fn magnitudes_text(&self, divisor: i64) -> String {
         let parts: Vec<String> = (0..self.dims())
-            .map(|a| (self.magnitude[a] / divisor).to_string())
+            .map(|a| self.reduced(a, divisor).to_string())
             .collect();
         format!("({})", parts.join(", "))
     }
@@ -171,7 +182,7 @@ impl Mirror {
             " GCD reduction (Wang section 4): |Δ| = {} / {divisor} = {}, so the decision values are {divisor} times smaller and their pattern of {} steps repeats {divisor} times.",
             self.magnitudes_text(1),
             self.magnitudes_text(divisor),
-            self.longest() / divisor,
+            self.reduced(self.major(), divisor),
         )
     }
 

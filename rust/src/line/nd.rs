@@ -161,12 +161,12 @@ impl Nd {
         let divisor = mirror.divisor(gcd);
         let magnitude = std::array::from_fn(|a| {
             if a < mirror.dims() {
-                mirror.magnitude(a) / divisor
+                mirror.reduced(a, divisor)
             } else {
                 0
             }
         });
-        let longest = mirror.longest() / divisor;
+        let longest = mirror.reduced(mirror.major(), divisor);
         let discriminant = std::array::from_fn(|a| {
             // Eq. (17): H_1 = 2ΔA - Δx.
             (a < mirror.dims() && !mirror.is_active(a)).then(|| 2 * magnitude[a] - longest)

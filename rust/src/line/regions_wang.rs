@@ -461,8 +461,8 @@ impl RegionsWang {
     pub fn with_gcd(from: Point, to: Point, tie: TiePolicy, gcd: bool) -> RegionsWang {
         let mirror = Mirror::new(from, to);
         let divisor = mirror.divisor(gcd);
-        let magnitude = [0, 1, 2].map(|a| mirror.magnitude(a) / divisor);
-        let largest = mirror.longest() / divisor;
+        let magnitude = [0, 1, 2].map(|a| mirror.reduced(a, divisor));
+        let largest = mirror.reduced(mirror.major(), divisor);
         let reference = mirror.major();
         let mut geometry = Geometry {
             active_mask: 0,
