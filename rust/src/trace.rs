@@ -801,7 +801,12 @@ impl TraceBuilder {
             part_segments.kept_index.iter().all(|&slot| slot != MADE),
             "an appended trace keeps its segments"
         );
-        for mut segment in part_segments.kept {
+        for (index, mut segment) in part_segments.kept.into_iter().enumerate() {
+            // A note the part would make when read joins it now: this
+            // trace has no prefix of the part's (an arc's chords).
+            if let Some(prefix) = &part.note_prefix {
+                segment.setup_note = Some(format!("{} {}", prefix(index), segment.note()));
+            }
             segment.first_step += offset;
             segment.column_index = segment.column_index.iter().map(|&i| slots[i]).collect();
             adapt(&mut segment);

@@ -104,8 +104,17 @@ fn in_cell(from: &Point, to: &Point, t: Crossing, cell: &Point) -> bool {
 /// must take those ties as next_step does, going up and going down.
 #[test]
 fn the_dda_recording_loop_rounds_exact_halves_as_next_step_does() {
-    for to in [[2000, 1000, 500], [-2000, 1000, -1500], [4096, -3072, 1024], [-1000, -500, 250], [1000, 500, 0]] {
-        let (from, to) = (Point::new(&[3, -7, 11]), Point::new(&[to[0] + 3, to[1] - 7, to[2] + 11]));
+    for to in [
+        [2000, 1000, 500],
+        [-2000, 1000, -1500],
+        [4096, -3072, 1024],
+        [-1000, -500, 250],
+        [1000, 500, 0],
+    ] {
+        let (from, to) = (
+            Point::new(&[3, -7, 11]),
+            Point::new(&[to[0] + 3, to[1] - 7, to[2] + 11]),
+        );
         for chunk in [17, 100, 4096] {
             common::check_fill(|| Dda::new(from, to), chunk).unwrap();
         }

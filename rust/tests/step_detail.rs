@@ -86,7 +86,7 @@ fn every_point_of_every_example_reads_as_the_trace_s_ranges_do() {
             let segment = d.segment_index.unwrap();
             let s = t.segment(segment);
             assert!(s.first_step <= k && k < s.first_step + s.steps);
-            assert_eq!(d.segment.unwrap().note, s.note());
+            assert_eq!(d.segment.unwrap().note, t.segment_note(segment));
             if let Some(figure) = &d.figure {
                 assert!(
                     t.figures().contains(&figure.kind()),

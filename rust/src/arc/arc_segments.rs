@@ -30,11 +30,12 @@ use crate::grid::Point;
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
 use crate::line::Mirror;
+use crate::line::line_stepper::{LineStepper, StepperVisitor};
 use crate::line::regions_wang::RegionsWhy;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
-use crate::trace::{Decision, Trace, TraceBuilder};
+use crate::trace::{Decision, Stepper, Trace, TraceBuilder};
 use serde_json::{Map, Value};
-use std::fmt::Write;
+use std::rc::Rc;
 
 pub const ID: &str = "arc-segments";
 
@@ -276,6 +277,21 @@ pub fn trace_chords(
     helical: bool,
     find: Find,
 ) -> Result<Trace, Error> {
+    chords_by(id, req, spec, helical, find, true)
+}
+
+/// [`trace_chords`], its chords' steppers run straight into the arc's
+/// trace when `in_place` and the line algorithm has a [`LineStepper`],
+/// else each chord the catalogue's trace, appended (the tests hold the
+/// two to the same trace).
+fn chords_by(
+    id: &str,
+    req: &Request,
+    spec: &ArcSpec,
+    helical: bool,
+    find: Find,
+    in_place: bool,
+) -> Result<Trace, Error> {
     let chording = Chording::parse(req)?;
     let line = req.choice(&LINE_ALGORITHM)?.unwrap_or(LINE_ALGORITHMS[0]);
     let line_info = find(line)?;
@@ -310,49 +326,15 @@ pub fn trace_chords(
     if at_least > builder.max_steps() {
         return Err(builder.too_long(at_least));
     }
-    // Every chord is traced first, each within what is left of maxSteps
-    // (so a too-long arc fails at the chord that passes the limit, before
-    // anything larger is allocated); then the whole is reserved once and
-    // the chords appended.
-    let mut parts = Vec::with_capacity(chords.len());
-    let mut total_steps = 0;
-    let mut from = Vertex {
-        point: spec.from,
-        fraction: 0.0,
-    };
-    for (k, to) in chords.iter().enumerate() {
-        let mut options = Map::new();
-        options.insert("from".into(), Value::from(from.point.coords()));
-        options.insert("to".into(), Value::from(to.point.coords()));
-        options.insert(
-            "maxSteps".into(),
-            Value::from(builder.max_steps() - total_steps),
-        );
-        if let Some(tie) = tie {
-            options.insert("tie".into(), Value::from(tie));
-        }
-        let part = (line_info.trace)(&Request::new(line, options), find).map_err(|e| {
-            if e.field_name() == Some("maxSteps") {
-                builder.too_long(builder.max_steps() + 1)
-            } else {
-                e
-            }
-        })?;
-        total_steps += part.steps();
-        let ideal = if helical {
-            IdealPath::Helix(helix.piece(from.fraction, to.fraction))
-        } else {
-            let sweep = arc.sweep_rad;
-            IdealPath::Arc(arc.piece(
-                arc.start_rad + sweep * from.fraction,
-                sweep * (to.fraction - from.fraction),
-            ))
-        };
-        let mut note = String::new();
-        if k == 0 {
+    let mut line_options = Map::new();
+    if let Some(tie) = tie {
+        line_options.insert("tie".into(), Value::from(tie));
+    }
+    let line_request = Request::new(line, line_options);
+    let notes = Rc::new(ChordNotes {
+        intro: {
             let sagitta = spec.radius() * (1.0 - (spec.sweep_rad().abs() / (2 * n) as f64).cos());
-            let _ = write!(
-                note,
+            format!(
                 "{}. {}{}, each of sagitta {sagitta:.3}; vertices are the arc points at i/{n} of the sweep, rounded to the grid. ",
                 spec.describe(),
                 chording.describe(counted),
@@ -361,29 +343,156 @@ pub fn trace_chords(
                 } else {
                     String::new()
                 },
-            );
+            )
+        },
+        start: spec.from,
+        chords,
+        start_rad: arc.start_rad,
+        sweep_rad: arc.sweep_rad,
+        line: line_info.id,
+    });
+    let ideal_of = |from: &Vertex, to: &Vertex| {
+        if helical {
+            IdealPath::Helix(helix.piece(from.fraction, to.fraction))
+        } else {
+            let sweep = arc.sweep_rad;
+            IdealPath::Arc(arc.piece(
+                arc.start_rad + sweep * from.fraction,
+                sweep * (to.fraction - from.fraction),
+            ))
         }
-        let _ = write!(
-            note,
-            "Chord {} of {}: {} -> {}, the arc from {:.1}° to {:.1}°, stepped by {line}",
+    };
+    let stepper = match in_place {
+        true => LineStepper::for_request(line_info, &line_request),
+        false => LineStepper::ByRequest,
+    };
+    if let LineStepper::ByRequest = stepper {
+        by_requests(
+            &mut builder,
+            &notes,
+            &line_request,
+            line_info,
+            find,
+            ideal_of,
+        )?;
+        return Ok(builder.finish(id));
+    }
+    // Each chord's stepper straight into the arc's trace, measured against
+    // its piece of the arc; its note made when read (most are not).
+    builder.reserve(at_least)?;
+    let mut from = Vertex {
+        point: spec.from,
+        fraction: 0.0,
+    };
+    for to in &notes.chords {
+        let run = RunChord {
+            builder: &mut builder,
+            ideal: ideal_of(&from, to),
+        };
+        stepper
+            .with_stepper(from.point, to.point, run)
+            .expect("not ByRequest")?;
+        from = *to;
+    }
+    Ok(builder
+        .finish(id)
+        .with_note_prefix(Rc::new(move |k| notes.prefix(k))))
+}
+
+/// What a learner reads before each chord: the arc's chording before the
+/// first, then the chord's ends and the part of the arc it stands for.
+struct ChordNotes {
+    intro: String,
+    start: Point,
+    chords: Vec<Vertex>,
+    start_rad: f64,
+    sweep_rad: f64,
+    line: &'static str,
+}
+
+impl ChordNotes {
+    /// The start of chord `k`'s note (its stepper's own note follows).
+    fn prefix(&self, k: usize) -> String {
+        let from = k.checked_sub(1).map_or(
+            Vertex {
+                point: self.start,
+                fraction: 0.0,
+            },
+            |j| self.chords[j],
+        );
+        let to = self.chords[k];
+        format!(
+            "{}Chord {} of {}: {} -> {}, the arc from {:.1}° to {:.1}°, stepped by {}:",
+            if k == 0 { self.intro.as_str() } else { "" },
             k + 1,
-            chords.len(),
+            self.chords.len(),
             from.point,
             to.point,
-            degrees(arc.start_rad + arc.sweep_rad * from.fraction),
-            degrees(arc.start_rad + arc.sweep_rad * to.fraction),
+            degrees(self.start_rad + self.sweep_rad * from.fraction),
+            degrees(self.start_rad + self.sweep_rad * to.fraction),
+            self.line,
+        )
+    }
+}
+
+/// Runs one chord's line stepper into the arc's trace.
+struct RunChord<'a> {
+    builder: &'a mut TraceBuilder,
+    ideal: IdealPath,
+}
+
+impl StepperVisitor for RunChord<'_> {
+    type Out = Result<(), Error>;
+    fn visit<S: Stepper>(self, stepper: S) -> Result<(), Error> {
+        self.builder.run(stepper, self.ideal)
+    }
+}
+
+/// The chords of a line algorithm without a [`LineStepper`] (liu-float):
+/// each the trace the catalogue gives for it, within what is left of
+/// maxSteps (so a too-long arc fails at the chord that passes the limit,
+/// before anything larger is allocated), then appended with its note.
+fn by_requests(
+    builder: &mut TraceBuilder,
+    notes: &ChordNotes,
+    line_request: &Request,
+    line_info: &AlgorithmInfo,
+    find: Find,
+    ideal_of: impl Fn(&Vertex, &Vertex) -> IdealPath,
+) -> Result<(), Error> {
+    let mut parts = Vec::with_capacity(notes.chords.len());
+    let mut total_steps = 0;
+    let mut from = Vertex {
+        point: notes.start,
+        fraction: 0.0,
+    };
+    for to in &notes.chords {
+        let mut options = line_request.options().clone();
+        options.insert("from".into(), Value::from(from.point.coords()));
+        options.insert("to".into(), Value::from(to.point.coords()));
+        options.insert(
+            "maxSteps".into(),
+            Value::from(builder.max_steps() - total_steps),
         );
-        parts.push((part, ideal, note));
+        let part = (line_info.trace)(&Request::new(line_info.id, options), find).map_err(|e| {
+            if e.field_name() == Some("maxSteps") {
+                builder.too_long(builder.max_steps() + 1)
+            } else {
+                e
+            }
+        })?;
+        total_steps += part.steps();
+        parts.push((part, ideal_of(&from, to)));
         from = *to;
     }
     builder.reserve(total_steps)?;
-    for (part, ideal, note) in parts {
+    for (k, (part, ideal)) in parts.into_iter().enumerate() {
         builder.append(part, |segment| {
             segment.ideal = ideal.clone();
-            segment.setup_note = Some(format!("{note}: {}", segment.note()));
+            segment.setup_note = Some(format!("{} {}", notes.prefix(k), segment.note()));
         })?;
     }
-    Ok(builder.finish(id))
+    Ok(())
 }
 
 /// The [`Find`] of the unit tests here and in `helix`: the chords' default
@@ -401,6 +510,84 @@ pub(crate) fn find_regions(id: &str) -> Result<&'static AlgorithmInfo, Error> {
 mod tests {
     use super::*;
     use crate::algorithm_info::find_none;
+
+    /// Everything a reader gets of a trace, as text.
+    fn seen(t: &Trace) -> Vec<String> {
+        let mut out = vec![
+            serde_json::to_string(&t.summary()).unwrap(),
+            serde_json::to_string(&t.segment_summaries()).unwrap(),
+            format!("{:?}", t.points_flat(0, t.steps() + 1)),
+            format!("{:?}", t.decisions_flat(0, t.steps())),
+            format!("{:?}", t.metrics()),
+            format!("{:?}", t.ideal_polyline()),
+        ];
+        // Every 37th step's explanation (each replays its segment's
+        // stepper from its last state), and the last one.
+        out.extend(
+            (0..t.steps())
+                .step_by(37)
+                .chain(t.steps().checked_sub(1))
+                .map(|k| t.explain(k)),
+        );
+        out
+    }
+
+    /// The chords' line algorithms, for the test below (the catalogue,
+    /// which imports this file, is not the tests' to import).
+    fn find_line(id: &str) -> Result<&'static AlgorithmInfo, Error> {
+        use crate::line::*;
+        [
+            &regions_wang::INFO,
+            &bresenham3d::INFO,
+            &nd::INFO,
+            &liu_float::INFO,
+            &dda::INFO,
+            &greedy::INFO,
+            &walk6::INFO,
+        ]
+        .into_iter()
+        .find(|info| info.id == id)
+        .map_or_else(|| find_none(id), Ok)
+    }
+
+    /// Chords run in place read back as the catalogue's traces of the
+    /// chords appended, for every line algorithm, with and without a tie
+    /// option, on an arc and a helix, chords long and short (a chord past
+    /// a checkpoint interval keeps stepper states).
+    #[test]
+    fn chords_in_place_read_back_as_the_catalogue_s_chords() {
+        for &line in LINE_ALGORITHMS {
+            for (algorithm, extra, to) in [
+                ("arc-segments", r#""tolerance": 0.3"#, "[0, 90, 0]"),
+                ("arc-segments", r#""segmentLength": 9000"#, "[0, 9000, 0]"),
+                (
+                    "helix",
+                    r#""method": "segments", "segmentLength": 50"#,
+                    "[0, 90, 40]",
+                ),
+            ] {
+                let from = if to == "[0, 9000, 0]" {
+                    "[9000, 0, 0]"
+                } else {
+                    "[90, 0, 0]"
+                };
+                for tie in ["", r#", "lineTie": "hold""#] {
+                    let json = format!(
+                        r#"{{"algorithm": "{algorithm}", "from": {from}, "to": {to}, "center": [0, 0, 0], "lineAlgorithm": "{line}", {extra}{tie}}}"#
+                    );
+                    let req = Request::from_json(&json).unwrap();
+                    let helical = algorithm == "helix";
+                    let spec = ArcSpec::parse(&req, helical).unwrap();
+                    let fast = chords_by(algorithm, &req, &spec, helical, find_line, true);
+                    let slow = chords_by(algorithm, &req, &spec, helical, find_line, false);
+                    match (fast, slow) {
+                        (Ok(a), Ok(b)) => assert_eq!(seen(&a), seen(&b), "{json}"),
+                        (a, b) => assert_eq!(a.err(), b.err(), "{json}"),
+                    }
+                }
+            }
+        }
+    }
     use crate::arc::angle::atan3;
     use std::f64::consts::{PI, TAU};
 

@@ -39,18 +39,12 @@ use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Limit, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::ideal::IdealPath;
-use crate::line::bresenham3d::Bresenham3d;
-use crate::line::dda::Dda;
-use crate::line::greedy::Greedy;
-use crate::line::nd::Nd;
-use crate::line::regions_wang::RegionsWang;
-use crate::line::walk6::Walk6;
-use crate::line::{TieAxis, gcd_option};
+use crate::line::line_stepper::{LineStepper, StepperVisitor};
 use crate::machine::{MACHINE_AXES, Machine};
 use crate::memory::{HEAP_BUDGET_BYTES, held_bytes};
 use crate::planner::{self, Limits, Planner, Timing};
 use crate::request::{
-    MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, TiePolicy, too_long_advice,
+    MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, too_long_advice,
 };
 use crate::text::split_line;
 use crate::trace::{MadeSegment, Stepper, Trace, TraceBuilder};
@@ -230,69 +224,11 @@ impl Settings {
 }
 
 /// The program's line algorithm with its options at their defaults (a
-/// move gives only its endpoints), so that a straight move is stepped
-/// straight into the program's trace from typed endpoints: no request to
-/// read and no trace of its own to copy. Its options are read once, from an
-/// empty request, by the algorithm's own readers, as the catalogue path
-/// reads them for every move.
-#[derive(Clone, Copy, Debug)]
-enum LineStepper {
-    Regions(TiePolicy, bool),
-    Bresenham3d(TiePolicy, bool),
-    Nd(TiePolicy, bool),
-    Greedy(TieAxis),
-    Walk6(TieAxis),
-    Dda,
-    /// Stepped through the catalogue's request, as every move once was
-    /// (liu-float, whose options have no public reader).
-    ByRequest,
-}
-
-impl LineStepper {
-    fn of(id: &'static str) -> LineStepper {
-        let request = Request::new(id, Map::new());
-        let defaults = || -> Result<LineStepper, Error> {
-            let info = algorithms::find(id)?;
-            let tie = || request.tie(info.default_tie.unwrap_or(TiePolicy::Advance));
-            Ok(match id {
-                "regions" => LineStepper::Regions(tie()?, gcd_option(&request)?),
-                "bresenham3d" => LineStepper::Bresenham3d(tie()?, gcd_option(&request)?),
-                "nd" => LineStepper::Nd(tie()?, gcd_option(&request)?),
-                "greedy" => LineStepper::Greedy(TieAxis::from_request(&request)?),
-                "walk6" => LineStepper::Walk6(TieAxis::from_request(&request)?),
-                "dda" => LineStepper::Dda,
-                _ => LineStepper::ByRequest,
-            })
-        };
-        defaults().unwrap_or(LineStepper::ByRequest)
-    }
-
-    /// `user` given this algorithm's stepper from `from` to `to`, or None
-    /// for [`LineStepper::ByRequest`]: the one place a straight move's
-    /// stepper is made, when it is run ([`Runner::step_line`]) and when its
-    /// segment is made again to be read ([`MoveRecords::made_segment`]).
-    fn with_stepper<V: StepperVisitor>(self, from: Point, to: Point, visitor: V) -> Option<V::Out> {
-        Some(match self {
-            LineStepper::Regions(tie, gcd) => {
-                visitor.visit(RegionsWang::with_gcd(from, to, tie, gcd))
-            }
-            LineStepper::Bresenham3d(tie, gcd) => {
-                visitor.visit(Bresenham3d::new(from, to, tie, gcd))
-            }
-            LineStepper::Nd(tie, gcd) => visitor.visit(Nd::new(from, to, tie, gcd)),
-            LineStepper::Greedy(order) => visitor.visit(Greedy::new(from, to, order)),
-            LineStepper::Walk6(order) => visitor.visit(Walk6::new(from, to, order)),
-            LineStepper::Dda => visitor.visit(Dda::new(from, to)),
-            LineStepper::ByRequest => return None,
-        })
-    }
-}
-
-/// What is done with a line stepper of whichever type [`LineStepper::with_stepper`]
-/// makes: a closure generic over the stepper's type.
-trait StepperVisitor {
-    type Out;
-    fn visit<S: Stepper>(self, stepper: S) -> Self::Out;
+/// move gives only its endpoints), read once.
+fn line_stepper_of(id: &'static str) -> LineStepper {
+    algorithms::find(id).map_or(LineStepper::ByRequest, |info| {
+        LineStepper::for_request(info, &Request::new(id, Map::new()))
+    })
 }
 
 /// Runs a straight move's stepper into the program's trace
@@ -542,7 +478,7 @@ impl MoveRecords {
             arcs: Vec::new(),
             line_algorithm: settings.line_algorithm,
             arc_algorithm: settings.arc_algorithm,
-            line_stepper: LineStepper::of(settings.line_algorithm),
+            line_stepper: line_stepper_of(settings.line_algorithm),
             steps_per_mm: settings.machine.steps_per_mm(),
             spans: Rc::default(),
             segments: 0,

@@ -179,9 +179,8 @@ impl Bresenham3d {
             1 => [0, 2],
             _ => [0, 1],
         };
-        let terms = minors.map(|axis| {
-            SaleemTerm::new(mirror.reduced(axis, divisor), major_len, 2 * major_len)
-        });
+        let terms = minors
+            .map(|axis| SaleemTerm::new(mirror.reduced(axis, divisor), major_len, 2 * major_len));
         Bresenham3d {
             mirror,
             major,

@@ -236,8 +236,19 @@ impl Dda {
             let plan = Guard::unguarded(&left, remaining);
             let span = (plan.span as usize).min(taken - done);
             if span >= MIN_UNGUARDED_SPAN && DIMS <= 3 {
-                let axes = Axes { toward: &toward, sign: &sign, inc: &inc, acc: &mut acc, at: &mut at, left: &mut left };
-                let (free, forced, out) = (&plan.free[..plan.free_count], &plan.forced, &mut out[done..done + span]);
+                let axes = Axes {
+                    toward: &toward,
+                    sign: &sign,
+                    inc: &inc,
+                    acc: &mut acc,
+                    at: &mut at,
+                    left: &mut left,
+                };
+                let (free, forced, out) = (
+                    &plan.free[..plan.free_count],
+                    &plan.forced,
+                    &mut out[done..done + span],
+                );
                 match (DIMS, plan.free_count) {
                     (2, 0) => axes.unguarded::<0, 2>(free, forced, out),
                     (2, 1) => axes.unguarded::<1, 1>(free, forced, out),
@@ -251,7 +262,11 @@ impl Dda {
                 done += span;
                 continue;
             }
-            let guarded = if DIMS <= 3 { MIN_UNGUARDED_SPAN.min(taken - done) } else { taken - done };
+            let guarded = if DIMS <= 3 {
+                MIN_UNGUARDED_SPAN.min(taken - done)
+            } else {
+                taken - done
+            };
             for slot in &mut out[done..done + guarded] {
                 let mut step = Step::NONE;
                 for axis in 0..DIMS {
@@ -303,10 +318,16 @@ impl Axes<'_> {
     /// never) need only their sums. Their numbers are constants, so every
     /// value stays in a register.
     #[inline(always)]
-    fn unguarded<const FREE: usize, const FIXED: usize>(self, free: &[usize], forced: &[bool], out: &mut [Step]) {
+    fn unguarded<const FREE: usize, const FIXED: usize>(
+        self,
+        free: &[usize],
+        forced: &[bool],
+        out: &mut [Step],
+    ) {
         let free: [usize; FREE] = std::array::from_fn(|i| free[i]);
         let mut others = (0..self.acc.len()).filter(|a| !free.contains(a));
-        let fixed: [usize; FIXED] = std::array::from_fn(|_| others.next().expect("an axis not free"));
+        let fixed: [usize; FIXED] =
+            std::array::from_fn(|_| others.next().expect("an axis not free"));
         let bits = free.map(|a| self.toward[a].0);
         let sign = free.map(|a| self.sign[a]);
         let inc = free.map(|a| self.inc[a]);

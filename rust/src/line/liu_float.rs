@@ -471,7 +471,12 @@ impl Stepper for LiuFloat {
             let span = (plan.span as usize).min(body - done);
             if span >= MIN_UNGUARDED_SPAN {
                 let out = &mut out[done..done + span];
-                let rule = ScaledRule { toward, threshold, k: k_by_axis, scale: scale_by_axis };
+                let rule = ScaledRule {
+                    toward,
+                    threshold,
+                    k: k_by_axis,
+                    scale: scale_by_axis,
+                };
                 match plan.free_count {
                     0 => rule.unguarded::<0>(&plan, &mut values, &mut left, out),
                     1 => rule.unguarded::<1>(&plan, &mut values, &mut left, out),

@@ -7,6 +7,7 @@ pub mod bresenham2d;
 pub mod bresenham3d;
 pub mod dda;
 pub mod greedy;
+pub mod line_stepper;
 pub mod liu_float;
 pub mod nd;
 pub mod regions_wang;
@@ -325,7 +326,10 @@ impl Guard {
     /// when none is free). Over that many steps a fill loop can run the
     /// rule on the free axes alone, with no guard, the forced axes' bits on
     /// every step: the same steps [`Guard::apply`] gives.
-    pub fn unguarded<const DIMS: usize>(units_left: &[i64; DIMS], steps_left: u64) -> Unguarded<DIMS> {
+    pub fn unguarded<const DIMS: usize>(
+        units_left: &[i64; DIMS],
+        steps_left: u64,
+    ) -> Unguarded<DIMS> {
         let mut out = Unguarded {
             free: [0; DIMS],
             free_count: 0,
