@@ -373,11 +373,20 @@ impl Planner {
         }
     }
 
+    /// Bytes a block takes while the planner holds it.
+    pub const BYTES_PER_BLOCK: usize =
+        std::mem::size_of::<StoredBlock>() + std::mem::size_of::<(f64, f64)>();
+
     /// Makes room for `more` blocks, for a caller that knows about how many
     /// it will push, so that they are not copied as they grow.
     pub fn reserve(&mut self, more: usize) {
         self.blocks.reserve(more);
         self.length_and_acceleration.reserve(more);
+    }
+
+    /// Blocks the planner holds room for.
+    pub fn capacity(&self) -> usize {
+        self.blocks.capacity().min(self.length_and_acceleration.capacity())
     }
 
     /// Blocks pushed so far.

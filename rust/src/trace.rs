@@ -746,6 +746,11 @@ impl TraceBuilder {
         self.segments.reserve(more);
     }
 
+    /// Steps the trace holds room for.
+    pub fn step_capacity(&self) -> u64 {
+        self.steps.capacity() as u64
+    }
+
     /// Makes room for exactly `more` steps, after checking them against
     /// `maxSteps`: for a caller that knows the length of what it will
     /// append, so the steps are not copied into ever larger arrays (which

@@ -37,7 +37,7 @@ use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, radii_within_tolerance};
 use crate::error::{Error, Limit, Location};
-use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
+use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step};
 use crate::ideal::IdealPath;
 use crate::line::line_stepper::{LineStepper, StepperVisitor};
 use crate::machine::{MACHINE_AXES, Machine};
@@ -929,6 +929,7 @@ impl Runner {
     /// (done, the lines after it not even read) with the error
     /// [`Runner::out_of_memory`] returns, also the program's last error.
     pub fn advance(&mut self, max_lines: u32) -> Progress {
+        self.reserve_as_so_far();
         for _ in 0..max_lines {
             if self.lines_done == self.lines {
                 break;
@@ -949,6 +950,35 @@ impl Runner {
             self.block = block;
         }
         self.progress()
+    }
+
+    /// Makes room for the steps and planner blocks the whole program would
+    /// take at the rate of the lines run so far (a line may make a dozen
+    /// blocks, an arc's chords, and thousands of steps), when that is more
+    /// than the room there is, so that those tables are not copied into
+    /// ever larger ones as they grow (a copy of megabytes each time, with
+    /// wasm memory growing past the last). Within maxSteps, and within
+    /// half of the heap the run may still take.
+    fn reserve_as_so_far(&mut self) {
+        if self.lines_done == 0 || self.lines_done == self.lines {
+            return;
+        }
+        let scale = |so_far: u64| so_far.saturating_mul(self.lines as u64) / self.lines_done as u64;
+        let spare = self.heap_budget_bytes.saturating_sub(held_bytes()) as u64 / 2;
+        let steps = self.builder.steps();
+        let steps_wanted = scale(steps)
+            .min(self.builder.max_steps())
+            .min(steps + spare / std::mem::size_of::<Step>() as u64);
+        if steps_wanted > self.builder.step_capacity() {
+            // Within maxSteps by the line above: it cannot fail.
+            let _ = self.builder.reserve(steps_wanted - steps);
+        }
+        let blocks = self.planner.len();
+        let blocks_wanted = (scale(blocks as u64) as usize)
+            .min(blocks + spare as usize / Planner::BYTES_PER_BLOCK);
+        if blocks_wanted > self.planner.capacity() {
+            self.planner.reserve(blocks_wanted - blocks);
+        }
     }
 
     /// Why the run stopped for memory, if it did (see [`Runner::advance`]).
