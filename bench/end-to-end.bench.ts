@@ -21,10 +21,9 @@
  */
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
-import { setFlagsFromString } from 'node:v8';
-import { runInNewContext } from 'node:vm';
 import { trace } from '../web/core/index.js';
 import type { TraceOptions } from '../web/core/index.js';
+import { collectGarbage } from './measure.js';
 import { npmBresenham, zinglCircle } from './peers/npm.js';
 import { plainBresenham3d } from './peers/plain-bresenham3d.js';
 import { REFERENCES } from './reference/index.js';
@@ -35,7 +34,7 @@ import type { BenchGroup, BenchRow } from './types.js';
  * Timed rounds per row; the median counts. Even, so that each side goes
  * first in as many timed rounds as it goes second.
  */
-const ROUNDS = 8;
+const ROUNDS = 12;
 
 const N = 2_000_000;
 const FROM_3D = [0, 0, 0];
@@ -67,24 +66,6 @@ function median(values: number[]): number {
   return sorted.length % 2 === 1 ? sorted[half]! : (sorted[half - 1]! + sorted[half]!) / 2;
 }
 
-// V8's collector, callable: a context made after --expose-gc is set has
-// gc() as a global (bench/run.mjs is started without the flag).
-setFlagsFromString('--expose-gc');
-const gc = runInNewContext('gc') as (options: { type: 'minor' | 'major' }) => void;
-
-/**
- * A young-generation collection, untimed, before each run: it frees the
- * arrays the runs before left behind (an ArrayBuffer dies young). Not a
- * full collection: in two whole runs of this table with one, the peers
- * that write through a callback (a new closure each run) ran 3 to 4 times
- * slower than with none, as if their optimised code were thrown away with
- * the closures that died.
- */
-const collectGarbage = () => gc({ type: 'minor' });
-
-/** Milliseconds to wait after collecting garbage before a timed run. */
-const SETTLE_MS = 20;
-
 /** CPU seconds the process has run, all its threads, user and kernel time. */
 function cpuSeconds(): number {
   const { user, system } = process.cpuUsage();
@@ -112,8 +93,7 @@ async function medianSeconds(sides: Side[]): Promise<number[]> {
     const order = [...sides.entries()];
     if (round % 2 === 0) order.reverse();
     for (const [i, side] of order) {
-      collectGarbage();
-      await new Promise((resolve) => setTimeout(resolve, SETTLE_MS));
+      await collectGarbage();
       const start = cpuSeconds();
       await side.run();
       if (round > 0) times[i]!.push(cpuSeconds() - start);

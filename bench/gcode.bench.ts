@@ -12,6 +12,7 @@
 import Toolpath from 'gcode-toolpath';
 import { runGcode } from '../web/core/index.js';
 import type { GcodeProgram, GcodeSettings } from '../web/core/index.js';
+import { collectGarbage } from './measure.js';
 import { generateProgram } from './programs.js';
 import type { BenchGroup, BenchRow } from './types.js';
 
@@ -28,7 +29,7 @@ const COLUMNS = {
 } as const;
 
 /** Rounds of each measurement; the median is reported. */
-const ROUNDS = 5;
+const ROUNDS = 6;
 
 const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
 
@@ -71,8 +72,21 @@ export default async function benchGcode(): Promise<BenchGroup> {
   let moves = 0;
   let steps = 0;
   for (let round = 0; round <= ROUNDS; round++) {
+    // The two sides in turn, each first in every other round and each
+    // after an untimed collection of the garbage before it (as the
+    // end-to-end table measures): the side that runs second, in the
+    // other's garbage, was seen to run slower.
+    let peerRun = 0;
+    if (round % 2 === 1) {
+      await collectGarbage();
+      peerRun = peerSeconds(source);
+    }
+    await collectGarbage();
     const run = await runSeconds(source, { stepsPerMm: 1 });
-    const peerRun = peerSeconds(source);
+    if (round % 2 === 0) {
+      await collectGarbage();
+      peerRun = peerSeconds(source);
+    }
     [moves, steps] = [run.program.moveCount, run.program.steps];
     run.program.free();
     // The first round warms both up (V8 compiles JavaScript and wasm in tiers).
@@ -97,6 +111,7 @@ export default async function benchGcode(): Promise<BenchGroup> {
     let program: GcodeProgram | undefined;
     for (let round = 0; round < ROUNDS; round++) {
       program?.free();
+      await collectGarbage();
       const run = await runSeconds(source, { stepsPerMm: 80, arcAlgorithm });
       program = run.program;
       seconds.push(run.seconds);
@@ -124,7 +139,7 @@ export default async function benchGcode(): Promise<BenchGroup> {
     notes: [
       `A generated ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program through runGcode (wasm): parse, interpret, step every move (lines by regions), build the trace; the moves stay in the core, read on demand.`,
       `${COLUMNS.lines} and ${COLUMNS.steps}: source lines and steps over the seconds of the whole run, as a worker sees it (median of ${ROUNDS} rounds).`,
-      `${COLUMNS.peerLines}: cncjs's gcode-toolpath 3.0.0 (parse, modal state, one callback per line or arc) on the same text, rounds alternating with runGcode's; 'voxpath / gcode-toolpath' is its time over runGcode's (issue 13's goal: 5x).`,
+      `${COLUMNS.peerLines}: cncjs's gcode-toolpath 3.0.0 (parse, modal state, one callback per line or arc) on the same text, in turn with runGcode, each first in every other round, each after an untimed young-generation collection; 'voxpath / gcode-toolpath' is its time over runGcode's (issue 13's goal: 5x).`,
       `${COLUMNS.finishMoves}: moves over the seconds of the run's finish (after the last line ran): Grbl 1.1-style look-ahead planning of every block, the step-rate checks, the record, the trace. The planner's cost per move, so measured: ${rows.map((r) => `${(1e6 / r.rates[COLUMNS.finishMoves]!).toFixed(2)} µs`).join(', ')} (rows in order); 'finish / run' is its share of the whole run.`,
       `${COLUMNS.stepTimes}: program.stepTimes(0, steps), every step's instant from the plan in closed form (median of ${ROUNDS} rounds).`,
     ],
