@@ -386,7 +386,9 @@ impl Planner {
 
     /// Blocks the planner holds room for.
     pub fn capacity(&self) -> usize {
-        self.blocks.capacity().min(self.length_and_acceleration.capacity())
+        self.blocks
+            .capacity()
+            .min(self.length_and_acceleration.capacity())
     }
 
     /// Blocks pushed so far.

@@ -974,8 +974,8 @@ impl Runner {
             let _ = self.builder.reserve(steps_wanted - steps);
         }
         let blocks = self.planner.len();
-        let blocks_wanted = (scale(blocks as u64) as usize)
-            .min(blocks + spare as usize / Planner::BYTES_PER_BLOCK);
+        let blocks_wanted =
+            (scale(blocks as u64) as usize).min(blocks + spare as usize / Planner::BYTES_PER_BLOCK);
         if blocks_wanted > self.planner.capacity() {
             self.planner.reserve(blocks_wanted - blocks);
         }

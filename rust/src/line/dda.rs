@@ -2,7 +2,7 @@
 //! with the integer rules: add Δa/n to a float accumulator per axis every
 //! step and round it to the nearest cell.
 
-use super::{GUARD_LABELS, Guard, Mirror, step_target};
+use super::{GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
 use crate::request::{FROM, MAX_STEPS, TO};
@@ -293,11 +293,6 @@ impl Dda {
         }
     }
 }
-
-/// Steps a fill loop runs guarded before it looks again for a stretch the
-/// finish rule leaves alone (and the shortest such stretch worth a loop of
-/// its own).
-const MIN_UNGUARDED_SPAN: usize = 16;
 
 /// The DDA's state per axis, for [`Axes::unguarded`].
 struct Axes<'a> {

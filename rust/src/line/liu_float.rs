@@ -8,7 +8,10 @@
 //! arithmetic this is Bresenham's rule (epsilon = Wang's M / 2Δx); kept to d
 //! decimals, the slope k itself is rounded and the error accumulates.
 
-use super::{GUARD_LABELS, Guard, Mirror, Unguarded, axis_list, step_target, wang_discriminant};
+use super::{
+    GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, Unguarded, axis_list, step_target,
+    wang_discriminant,
+};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point, Step};
@@ -348,11 +351,6 @@ impl LiuFloat {
         m as f64 / (2 * dx) as f64
     }
 }
-
-/// Steps a fill loop runs guarded before it looks again for a stretch the
-/// finish rule leaves alone (and the shortest such stretch worth a loop of
-/// its own).
-const MIN_UNGUARDED_SPAN: usize = 16;
 
 /// Liu's rule on the scaled integers ([`LiuFloat::scaled`]), per axis: the
 /// step toward its end, K (0 for an active axis) and 10^d (0 for an active

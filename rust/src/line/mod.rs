@@ -271,6 +271,11 @@ pub enum Guard {
 
 pub const GUARD_LABELS: &[&str] = &["rule", "held", "forced"];
 
+/// Steps a fill loop runs guarded before it looks again for a stretch the
+/// finish rule leaves alone (and the shortest such stretch worth a loop of
+/// its own).
+pub const MIN_UNGUARDED_SPAN: usize = 16;
+
 /// What [`Guard::unguarded`] finds: which axes the finish rule leaves to
 /// their rule, which it forces, and for how many steps.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
