@@ -801,16 +801,22 @@ impl TraceBuilder {
         for &figure in &part.figures {
             self.add_figure(Some(figure));
         }
+        // A note the part would make when read with its prefix (an arc's
+        // chords) is made now: this trace has no prefix of the part's.
+        let mut prefixed_notes = part.note_prefix.is_some().then(|| {
+            (0..part.segments.len())
+                .map(|index| part.segment_note(index).into_owned())
+                .collect::<Vec<_>>()
+                .into_iter()
+        });
         let part_segments = std::mem::take(&mut part.segments);
         assert!(
             part_segments.kept_index.iter().all(|&slot| slot != MADE),
             "an appended trace keeps its segments"
         );
-        for (index, mut segment) in part_segments.kept.into_iter().enumerate() {
-            // A note the part would make when read joins it now: this
-            // trace has no prefix of the part's (an arc's chords).
-            if let Some(prefix) = &part.note_prefix {
-                segment.setup_note = Some(format!("{} {}", prefix(index), segment.note()));
+        for mut segment in part_segments.kept {
+            if let Some(notes) = &mut prefixed_notes {
+                segment.setup_note = notes.next();
             }
             segment.first_step += offset;
             segment.column_index = segment.column_index.iter().map(|&i| slots[i]).collect();

@@ -375,25 +375,27 @@ fn chords_by(
             find,
             ideal_of,
         )?;
-        return Ok(builder.finish(id));
-    }
-    // Each chord's stepper straight into the arc's trace, measured against
-    // its piece of the arc; its note made when read (most are not).
-    builder.reserve(at_least)?;
-    let mut from = Vertex {
-        point: spec.from,
-        fraction: 0.0,
-    };
-    for to in &notes.chords {
-        let run = RunChord {
-            builder: &mut builder,
-            ideal: ideal_of(&from, to),
+    } else {
+        // Each chord's stepper straight into the arc's trace, measured
+        // against its piece of the arc.
+        builder.reserve(at_least)?;
+        let mut from = Vertex {
+            point: spec.from,
+            fraction: 0.0,
         };
-        stepper
-            .with_stepper(from.point, to.point, run)
-            .expect("not ByRequest")?;
-        from = *to;
+        for to in &notes.chords {
+            let run = RunChord {
+                builder: &mut builder,
+                ideal: ideal_of(&from, to),
+            };
+            stepper
+                .with_stepper(from.point, to.point, run)
+                .expect("not ByRequest")?;
+            from = *to;
+        }
     }
+    // Either way a segment per chord, in order: each note made when read
+    // (most are not), the chord's sentence before its stepper's.
     Ok(builder
         .finish(id)
         .with_note_prefix(Rc::new(move |k| notes.prefix(k))))
@@ -451,7 +453,7 @@ impl StepperVisitor for RunChord<'_> {
 /// The chords of a line algorithm without a [`LineStepper`] (liu-float):
 /// each the trace the catalogue gives for it, within what is left of
 /// maxSteps (so a too-long arc fails at the chord that passes the limit,
-/// before anything larger is allocated), then appended with its note.
+/// before anything larger is allocated), then appended.
 fn by_requests(
     builder: &mut TraceBuilder,
     notes: &ChordNotes,
@@ -486,11 +488,8 @@ fn by_requests(
         from = *to;
     }
     builder.reserve(total_steps)?;
-    for (k, (part, ideal)) in parts.into_iter().enumerate() {
-        builder.append(part, |segment| {
-            segment.ideal = ideal.clone();
-            segment.setup_note = Some(format!("{} {}", notes.prefix(k), segment.note()));
-        })?;
+    for (part, ideal) in parts {
+        builder.append(part, |segment| segment.ideal = ideal.clone())?;
     }
     Ok(())
 }
