@@ -966,12 +966,17 @@ impl Runner {
         let scale = |so_far: u64| so_far.saturating_mul(self.lines as u64) / self.lines_done as u64;
         let spare = self.heap_budget_bytes.saturating_sub(held_bytes()) as u64 / 2;
         let steps = self.builder.steps();
-        let steps_wanted = scale(steps)
-            .min(self.builder.max_steps())
-            .min(steps + spare / std::mem::size_of::<Step>() as u64);
-        if steps_wanted > self.builder.step_capacity() {
+        let steps_expected = scale(steps);
+        if steps_expected > self.builder.step_capacity() {
+            // A quarter more than expected: the reservation is exact, and
+            // an estimate that creeps past it slice after slice would copy
+            // every step each time.
+            let steps_wanted = steps_expected
+                .saturating_add(steps_expected / 4)
+                .min(self.builder.max_steps())
+                .min(steps + spare / std::mem::size_of::<Step>() as u64);
             // Within maxSteps by the line above: it cannot fail.
-            let _ = self.builder.reserve(steps_wanted - steps);
+            let _ = self.builder.reserve(steps_wanted.saturating_sub(steps));
         }
         let blocks = self.planner.len();
         let blocks_wanted =
