@@ -22,7 +22,7 @@ mod common;
 use proptest::prelude::*;
 use std::f64::consts::{PI, SQRT_2, TAU};
 use voxpath::arc::ArcSpec;
-use voxpath::arc::circle_saleem::SaleemCircle;
+use voxpath::arc::circle_saleem::{CirclePlan, CircleStep, SaleemCircle};
 use voxpath::arc::helix::SaleemHelix;
 use voxpath::grid::{COORD_LIMIT, Point, SIGNED_AXIS_LABELS};
 use voxpath::ideal::IdealPath;
@@ -128,6 +128,40 @@ fn counted_circle(json: &str) -> (ArcSpec, SaleemCircle) {
     let builder = TraceBuilder::new(spec.from, DEFAULT_MAX_STEPS);
     let circle = SaleemCircle::new(&spec).counted(&builder).unwrap();
     (spec, circle)
+}
+
+/// Saleem's dry run taken one step at a time, as the paper's dummy
+/// procedure does: a fresh stepper's `next_step` to the end, each step
+/// counted as a circle or a correction step by its decision.
+fn plan_step_by_step(spec: &ArcSpec) -> CirclePlan {
+    let mut circle = SaleemCircle::new(spec);
+    let (mut circle_steps, mut correction_steps, mut stop) = (0, 0, None);
+    loop {
+        let before = circle.point();
+        let Some((_, why)) = circle.next_step() else {
+            break;
+        };
+        if let CircleStep::Correction { .. } = why.kind {
+            correction_steps += 1;
+            stop.get_or_insert(before);
+        } else {
+            circle_steps += 1;
+        }
+    }
+    CirclePlan {
+        circle_steps,
+        correction_steps,
+        stop: stop.unwrap_or(circle.point()),
+    }
+}
+
+/// The dry run's count (which leaps along the path where the closed form
+/// knows it) against the step-by-step one.
+fn check_plan(json: &str) -> Result<(), TestCaseError> {
+    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true).unwrap();
+    let by_leaps = SaleemCircle::new(&spec).plan(u64::MAX);
+    prop_assert_eq!(by_leaps, Some(plan_step_by_step(&spec)), "{}", json);
+    Ok(())
 }
 
 /// Checks the circle's and the helix's recording loops (`fill`) against
@@ -271,6 +305,13 @@ proptest! {
         let bound = SaleemCircle::new(&spec).steps_at_most();
         let steps = circle.remaining_steps().expect("counted");
         prop_assert!(steps <= bound, "{} steps, bound {}", steps, bound);
+    }
+
+    #[test]
+    fn the_dry_run_counts_the_steps_the_rule_takes(
+        arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(300), arc_strategy(30_000)],
+    ) {
+        check_plan(&arc.request("circle", 0, ""))?;
     }
 
     #[test]
@@ -475,6 +516,43 @@ proptest! {
 }
 
 #[test]
+fn the_dry_run_counts_every_small_circle_and_arc_exactly() {
+    // Every start within 40 of the center, as a full circle and a turn
+    // more, and as arcs ending near each 45° ray (on and beside the
+    // diagonals, where the closed form hands over to the rule's steps).
+    for u in -40i64..=40 {
+        for v in -40i64..=40 {
+            if [u, v] == [0, 0] {
+                continue;
+            }
+            let r = ((u * u + v * v) as f64).sqrt();
+            let mut ends = vec![[u, v]];
+            for k in 0..16 {
+                let angle = k as f64 * PI / 8.0 + 0.01;
+                ends.push([
+                    (r * angle.cos()).round() as i64,
+                    (r * angle.sin()).round() as i64,
+                ]);
+            }
+            for (i, end) in ends.into_iter().enumerate() {
+                if end == [0, 0] {
+                    continue;
+                }
+                let arc = Arc {
+                    plane: 0,
+                    ccw: true,
+                    center: [0, 0, 0],
+                    start: [u, v],
+                    end,
+                    turns: (i == 0 && (u + v) % 2 == 0) as u64,
+                };
+                check_plan(&arc.request("circle", 0, "")).unwrap();
+            }
+        }
+    }
+}
+
+#[test]
 fn a_full_circle_of_radius_two_to_the_twenty_near_the_limit() {
     // r = 2^20 around a center whose circle touches x = 2^30 - 1 and
     // y = -(2^30 - 1): about 4 sqrt(2) r = 5.9 million steps.
@@ -566,6 +644,7 @@ fn the_recording_loops_stay_exact_on_the_largest_circles() {
                         point(to, rise)
                     )
                 };
+                check_plan(&json("circle", 0)).unwrap();
                 for chunk in [1, 7, 300, 4096] {
                     check_fills(&json("circle", 0), TiePolicy::Hold, chunk).unwrap();
                     check_fills(&json("helix", 700), TiePolicy::Advance, chunk).unwrap();

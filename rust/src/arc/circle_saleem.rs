@@ -425,10 +425,14 @@ impl SaleemCircle {
         // The circle part by the recording loop, which leaves it on the
         // step that ends it: the last circle step, or the first correction
         // when the circle stops before the ray.
+        //
+        // Where the closed form knows the path ([`Self::leap`]), the count
+        // jumps along it: a few isqrts an octant instead of a step each.
         let mut scratch = [Step::NONE; 1024];
         let mut taken = 0u64;
         while dry.phase == Phase::Circle {
-            taken += dry.weave_fill(&mut scratch, &mut || (true, 0)) as u64;
+            taken += dry.leap();
+            taken += dry.octant_fill(&mut scratch, &mut || (true, 0)) as u64;
             if taken > limit {
                 return None;
             }
@@ -484,8 +488,9 @@ impl SaleemCircle {
     /// This stepper ready to run within `builder`'s maxSteps: as it is when
     /// [`Self::steps_at_most`] fits (a trace counts its steps as it records
     /// them, and the note runs the dry run when it is read), else counted
-    /// ([`Self::counted`]), which refuses it when it would not fit. The
-    /// dry run doubled the cost of recording a circle.
+    /// ([`Self::counted`]), which refuses it when it would not fit. Even
+    /// leaping, the dry run's isqrts cost more than a short arc's steps
+    /// (most G-code arcs).
     pub fn within(self, builder: &TraceBuilder) -> Result<SaleemCircle, Error> {
         if self.steps_at_most() <= builder.max_steps() {
             Ok(self)
@@ -603,20 +608,109 @@ impl SaleemCircle {
     ) -> usize {
         let mut k = 0;
         while k < out.len() && self.phase == Phase::Circle {
-            let rest = &mut out[k..];
-            k += match octant_ahead(self.pos) {
-                Some(1) => self.octant_run::<1>(rest, weave),
-                Some(2) => self.octant_run::<2>(rest, weave),
-                Some(3) => self.octant_run::<3>(rest, weave),
-                Some(4) => self.octant_run::<4>(rest, weave),
-                Some(5) => self.octant_run::<5>(rest, weave),
-                Some(6) => self.octant_run::<6>(rest, weave),
-                Some(7) => self.octant_run::<7>(rest, weave),
-                Some(8) => self.octant_run::<8>(rest, weave),
-                _ => unreachable!("the circle never passes through its center"),
-            };
+            k += self.octant_fill(&mut out[k..], weave);
         }
         k
+    }
+
+    /// [`Self::octant_run`] in the octant the point is in: at least one
+    /// iteration, ending where the point leaves that octant (or the circle
+    /// part ends, or `out` is full).
+    #[inline(always)]
+    fn octant_fill(&mut self, out: &mut [Step], weave: &mut impl FnMut() -> (bool, u16)) -> usize {
+        match octant_ahead(self.pos) {
+            Some(1) => self.octant_run::<1>(out, weave),
+            Some(2) => self.octant_run::<2>(out, weave),
+            Some(3) => self.octant_run::<3>(out, weave),
+            Some(4) => self.octant_run::<4>(out, weave),
+            Some(5) => self.octant_run::<5>(out, weave),
+            Some(6) => self.octant_run::<6>(out, weave),
+            Some(7) => self.octant_run::<7>(out, weave),
+            Some(8) => self.octant_run::<8>(out, weave),
+            _ => unreachable!("the circle never passes through its center"),
+        }
+    }
+
+    /// The dry run's jump along the path where it is known in closed form:
+    /// moves the point as many circle steps ahead as it can without
+    /// stepping, and returns how many (0 when it cannot).
+    ///
+    /// In an octant, let X be the fast coordinate's size and Y the slow
+    /// one's, and call a point *nearest* when no other Y at its X has a
+    /// smaller |X² + Y² - r²|: Y = [`nearest_root`](r² - X²). Each step
+    /// moves X by one and keeps Y or moves it by one, whichever candidate
+    /// is nearer (eq. 7), so from a nearest point the next point is
+    /// nearest whenever the nearest Y of the next X is one of the two
+    /// candidates. With T = r² - X², a nearest Y has
+    /// Y² - Y + 1 <= T <= Y² + Y, and:
+    /// - in odd octants X grows and Y shrinks (toward the diagonal): T
+    ///   drops by 2X + 1, to at least Y² - Y - 2X, which is at least
+    ///   (Y-1)² - (Y-1) + 1 when Y - X >= 2. So the path is the nearest
+    ///   points until the first X with nearest Y - X < 2, a step or two
+    ///   before the octant ends;
+    /// - in even octants X shrinks and Y grows (Y >= X >= 1 there): T rises
+    ///   by 2X - 1, to at most Y² + Y + 2X - 1 < (Y+1)² + (Y+1). So the
+    ///   path is the nearest points down to X = 0, the next octant.
+    ///
+    /// The start (residual 0) is nearest. Every octant entry the tests
+    /// meet is nearest too, but nothing above proves it for the entry
+    /// after a diagonal, so an entry is checked: one that is not leaps
+    /// nowhere, and the recording loop steps on.
+    ///
+    /// The circle part ends at the ray through the end: every step turns
+    /// forward and an octant spans 45°, so a leap passes that ray at most
+    /// once, exactly when end × point goes from negative to >= 0 over it.
+    /// Passing it on an earlier lap counts the crossing; on the last lap
+    /// the leap stops at the last point before it, and the loop takes the
+    /// step that decides where the circle part stops.
+    fn leap(&mut self) -> u64 {
+        let Some(k) = octant_ahead(self.pos) else {
+            return 0;
+        };
+        let rule = &OCTANTS[k as usize - 1];
+        let odd = k % 2 == 1;
+        // The signs of the fast and slow coordinates in this octant: odd
+        // octants move the fast one away from 0 and the slow one toward it.
+        let (fast_sign, slow_sign) = if odd {
+            (rule.fast_dir, -rule.slow_dir)
+        } else {
+            (-rule.fast_dir, rule.slow_dir)
+        };
+        let x0 = self.pos[rule.fast] * fast_sign;
+        let nearest_y = |x: i64| nearest_root(self.radius_sq - x * x);
+        if self.pos[rule.slow] * slow_sign != nearest_y(x0) {
+            return 0;
+        }
+        // Steps to the last point the closed form knows.
+        let known = if odd {
+            let near_diagonal = |x: i64| nearest_y(x) - x < 2;
+            if near_diagonal(x0) {
+                return 0;
+            }
+            // nearest_y(x) - x falls as x grows; past r it is -x.
+            let beyond = (self.radius_sq as u64).isqrt() as i64 + 2;
+            first_true(x0 + 1, beyond, near_diagonal) - x0
+        } else {
+            x0
+        };
+        let point_at = |steps: i64| {
+            let x = if odd { x0 + steps } else { x0 - steps };
+            let mut p = [0; 2];
+            p[rule.fast] = fast_sign * x;
+            p[rule.slow] = slow_sign * nearest_y(x);
+            p
+        };
+        let mut steps = known;
+        let past_ray = |steps: i64| cross(self.end, point_at(steps)) >= 0;
+        if steps > 0 && cross(self.end, self.pos) < 0 && past_ray(steps) {
+            if self.crossings_left == 1 {
+                steps = first_true(1, steps, past_ray) - 1;
+            } else {
+                self.crossings_left -= 1;
+            }
+        }
+        self.pos = point_at(steps);
+        steps as u64
     }
 
     /// Iterations of [`Self::weave_fill`] while the point stays in octant
@@ -754,6 +848,27 @@ fn local_within_bound(p: [i64; 2]) -> bool {
 fn cross(a: [i64; 2], b: [i64; 2]) -> i64 {
     debug_assert!(local_within_bound(a) && local_within_bound(b));
     a[0] * b[1] - a[1] * b[0]
+}
+
+/// The Y >= 0 with the smallest |Y² - t|: for t >= 1 the one with
+/// Y² - Y + 1 <= t <= Y² + Y (the candidates' errors differ by an odd
+/// number, so there is one), 0 for t <= 0.
+fn nearest_root(t: i64) -> i64 {
+    if t <= 0 {
+        return 0;
+    }
+    let y = (t as u64).isqrt() as i64;
+    if t > y * y + y { y + 1 } else { y }
+}
+
+/// The first n in [lo, hi] where `holds` (false before it, true from it
+/// on, and true at hi), by bisection.
+fn first_true(mut lo: i64, mut hi: i64, holds: impl Fn(i64) -> bool) -> i64 {
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if holds(mid) { hi = mid } else { lo = mid + 1 }
+    }
+    lo
 }
 
 fn chebyshev(p: [i64; 2], q: [i64; 2]) -> u64 {
