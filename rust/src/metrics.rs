@@ -58,11 +58,26 @@ impl MetricsAccumulator {
     /// pulses. One increment a step, of a count per set of moving axes,
     /// summed per axis after: a loop over the axes at every step was most
     /// of the time a long program took to finish.
+    ///
+    /// Consecutive steps mostly move the same axes, so one table's count
+    /// would be read right after the store before it, a wait each step;
+    /// eight tables, a step to each in turn, let eight counts run at once
+    /// (the pulses of the 100,000-line bench program at 80 steps/mm,
+    /// natively: 6.6 -> 1.8 ms; four tables, 2.6 ms).
     pub fn add_steps(&mut self, steps: &[Step]) {
-        let mut by_moving = [0u64; 256];
-        for step in steps {
-            by_moving[step.moving_axes() as usize] += 1;
+        const TABLES: usize = 8;
+        let mut tables = [[0u64; 256]; TABLES];
+        let mut quads = steps.chunks_exact(TABLES);
+        for quad in &mut quads {
+            for (table, step) in tables.iter_mut().zip(quad) {
+                table[step.moving_axes() as usize] += 1;
+            }
         }
+        for step in quads.remainder() {
+            tables[0][step.moving_axes() as usize] += 1;
+        }
+        let by_moving: [u64; 256] =
+            std::array::from_fn(|moving| tables.iter().map(|table| table[moving]).sum());
         for (moving, &count) in by_moving.iter().enumerate() {
             if count == 0 {
                 continue;
@@ -153,5 +168,36 @@ mod tests {
         let m = acc.finish(0);
         assert_eq!(m.steps_moving_axes, vec![1, 1, 1]);
         assert_eq!(m.pulses_by_axis, vec![3, 2, 1]);
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn the_table_counts_are_the_step_by_step_counts(
+            moving in proptest::collection::vec(0u8..64, 0..100),
+            split in 0usize..100,
+        ) {
+            // Any length (a remainder past the tables' turns), in two calls.
+            let steps: Vec<Step> = moving
+                .iter()
+                .map(|&m| (0..6).filter(|a| m >> a & 1 != 0).fold(Step::NONE, |s, a| s.with(a, 1)))
+                .collect();
+            let mut acc = MetricsAccumulator::new(6);
+            let (first, second) = steps.split_at(split.min(steps.len()));
+            acc.add_steps(first);
+            acc.add_steps(second);
+            let m = acc.finish(0);
+            let mut pulses = vec![0u64; 6];
+            let mut steps_moving_axes = vec![0u64; 6];
+            for step in &steps {
+                for (axis, p) in pulses.iter_mut().enumerate() {
+                    *p += u64::from(step.moving_axes() >> axis & 1);
+                }
+                if let Some(k) = (step.axis_count() as usize).checked_sub(1) {
+                    steps_moving_axes[k] += 1;
+                }
+            }
+            proptest::prop_assert_eq!(m.pulses_by_axis, pulses);
+            proptest::prop_assert_eq!(m.steps_moving_axes, steps_moving_axes);
+        }
     }
 }
