@@ -6,7 +6,7 @@
 /// next: a line ends at LF, CR LF or a lone CR (classic Mac OS files, and
 /// some CAM exports, end lines with CR alone).
 pub fn split_line(text: &str) -> (&str, usize) {
-    match text.bytes().position(|b| b == b'\n' || b == b'\r') {
+    match memchr::memchr2(b'\n', b'\r', text.as_bytes()) {
         None => (text, text.len()),
         Some(end) if text[end..].starts_with("\r\n") => (&text[..end], end + 2),
         Some(end) => (&text[..end], end + 1),

@@ -182,10 +182,15 @@ impl<'t> Reader<'t> {
 
     /// Moves past the bytes `keep` accepts; returns them.
     fn take_while(&mut self, keep: impl Fn(u8) -> bool) -> &'t str {
-        let start = self.at;
-        while self.peek().is_some_and(&keep) {
-            self.bump();
+        // As bump() byte by byte, on locals: the loop runs over every
+        // number and blank of a program.
+        let (start, bytes) = (self.at, self.text.as_bytes());
+        let (mut at, mut column) = (start, self.column);
+        while at < bytes.len() && keep(bytes[at]) {
+            column += u32::from(bytes[at] & 0xC0 != 0x80);
+            at += 1;
         }
+        (self.at, self.column) = (at, column);
         // `keep` stops only at ASCII bytes or at the end, so the slice
         // ends on a character boundary.
         &self.text[start..self.at]
@@ -199,11 +204,12 @@ impl<'t> Reader<'t> {
     /// them ("12", "1.5", ".5", "1."). Empty when none is here.
     fn number(&mut self) -> &'t str {
         let start = self.at;
-        if self.peek() == Some(b'.') {
+        let leading_point = self.peek() == Some(b'.');
+        if leading_point {
             self.bump();
         }
         self.take_while(|b| b.is_ascii_digit());
-        if self.peek() == Some(b'.') && !self.text[start..self.at].contains('.') {
+        if self.peek() == Some(b'.') && !leading_point {
             self.bump();
             self.take_while(|b| b.is_ascii_digit());
         }
@@ -357,7 +363,12 @@ impl<'t> Reader<'t> {
         }
         let number_column = self.column;
         let text = self.number();
-        let (major, minor) = text.split_once('.').unwrap_or((text, "0"));
+        // By position, not split_once: a search for the point is a memchr
+        // call, and every G1 of a program has a code.
+        let (major, minor) = match text.bytes().position(|b| b == b'.') {
+            Some(point) => (&text[..point], &text[point + 1..]),
+            None => (text, "0"),
+        };
         if major.is_empty() || minor.len() != 1 {
             return Err(problem(
                 number_column,
