@@ -170,13 +170,28 @@ impl Machine {
     /// The position in steps nearest `mm` on `axis`: round(mm × steps/mm),
     /// halves away from zero. None beyond ±2^30 steps (the grid's limit).
     pub fn to_steps(&self, axis: usize, mm: f64) -> Option<i64> {
-        let steps = (mm * self.steps_per_mm[axis]).round();
+        let steps = round_half_away(mm * self.steps_per_mm[axis]);
         (steps.abs() <= COORD_LIMIT as f64).then_some(steps as i64)
     }
 
     /// The position of a step count in mm.
     pub fn to_mm(&self, axis: usize, steps: i64) -> f64 {
         steps as f64 / self.steps_per_mm[axis]
+    }
+}
+
+/// `x.round()`: the nearest whole number, halves away from zero. Wasm has
+/// only round-half-to-even, so f64::round is a libm call there, once per
+/// axis of every G-code move; trunc and copysign are wasm instructions.
+/// x - trunc(x) is exact (Sterbenz: for |x| >= 1, trunc(x) is within a
+/// factor 2 of x; below 1 it is 0), so comparing it with 1/2 decides as
+/// round does; NaN and the infinities come out as they go in.
+fn round_half_away(x: f64) -> f64 {
+    let whole = x.trunc();
+    if (x - whole).abs() >= 0.5 {
+        whole + x.signum()
+    } else {
+        whole
     }
 }
 
@@ -217,6 +232,7 @@ mod tests {
     use crate::grid::{Point, Step};
     use crate::ideal::IdealPath;
     use crate::trace::{Column, Decision, Stepper, TraceBuilder};
+    use proptest::prelude::*;
     use serde_json::json;
 
     #[test]
@@ -338,5 +354,46 @@ mod tests {
         // A range that starts later finds the same levels by scanning back.
         assert_eq!(direction_levels(&t, 3, 5), vec![0b001, 0b101]);
         assert_eq!(direction_levels(&t, 5, 5), Vec::<u8>::new());
+    }
+
+    #[test]
+    fn rounding_takes_halves_away_from_zero_as_f64_round() {
+        let halves = [
+            0.5,
+            1.5,
+            2.5,
+            -0.5,
+            -2.5,
+            0.49999999999999994,
+            4503599627370495.5,
+        ];
+        let special = [
+            0.0,
+            -0.0,
+            -0.3,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            1e300,
+            -1e-300,
+        ];
+        for x in halves.into_iter().chain(special) {
+            assert_eq!(round_half_away(x).to_bits(), x.round().to_bits(), "{x}");
+        }
+        assert!(round_half_away(f64::NAN).is_nan());
+    }
+
+    proptest! {
+        #[test]
+        fn rounding_is_f64_round_on_every_value(bits in any::<u64>(), whole in -(1i64 << 31)..(1i64 << 31)) {
+            // Any bit pattern, and values right at and beside a half.
+            let x = f64::from_bits(bits);
+            if !x.is_nan() {
+                prop_assert_eq!(round_half_away(x).to_bits(), x.round().to_bits());
+            }
+            let half = whole as f64 + 0.5;
+            for y in [half, f64::from_bits(half.to_bits() - 1), f64::from_bits(half.to_bits() + 1)] {
+                prop_assert_eq!(round_half_away(y).to_bits(), y.round().to_bits(), "{}", y);
+            }
+        }
     }
 }

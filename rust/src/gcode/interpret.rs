@@ -251,10 +251,10 @@ impl<'b> Words<'b> {
         [self.get('I'), self.get('J'), self.get('K')]
     }
 
-    fn first_of(&self, letters: &str) -> Option<&'b Word> {
+    fn first_of(&self, letters: &[char]) -> Option<&'b Word> {
         letters
-            .chars()
-            .filter_map(|c| self.get(c))
+            .iter()
+            .filter_map(|&c| self.get(c))
             .min_by_key(|w| w.column)
     }
 }
@@ -363,7 +363,10 @@ impl Interpreter {
             self.feed_mm_per_min = Some(feed);
         }
         for w in &block.words {
-            if !"XYZIJKRPF".contains(w.letter) {
+            if !matches!(
+                w.letter,
+                'X' | 'Y' | 'Z' | 'I' | 'J' | 'K' | 'R' | 'P' | 'F'
+            ) {
                 effects.warnings.push(Problem {
                     column: w.column,
                     message: format!(
@@ -374,8 +377,8 @@ impl Interpreter {
             }
         }
         let axes = words.axes();
-        let first_axis = words.first_of("XYZ");
-        let arc_word = words.first_of("IJKR");
+        let first_axis = words.first_of(&['X', 'Y', 'Z']);
+        let arc_word = words.first_of(&['I', 'J', 'K', 'R']);
         if let Some(code) = g92 {
             if let Some((_, c)) = motion {
                 return Err(Error::at(

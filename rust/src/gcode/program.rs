@@ -1194,14 +1194,13 @@ impl Runner {
             [mid[0] + t * normal[0], mid[1] + t * normal[1]]
         };
         let rounded = [aim[0].round() as i64, aim[1].round() as i64];
-        // Nearest first, by squared distance, each found once.
-        let mut candidates: Vec<(f64, [i64; 2])> = (-1..=1)
-            .flat_map(|du| (-1..=1).map(move |dv| [rounded[0] + du, rounded[1] + dv]))
-            .map(|c| {
-                let (du, dv) = (c[0] as f64 - aim[0], c[1] as f64 - aim[1]);
-                (du * du + dv * dv, c)
-            })
-            .collect();
+        // Nearest first, by squared distance, each found once (in an array:
+        // every arc of a program looks for its center).
+        let mut candidates: [(f64, [i64; 2]); 9] = std::array::from_fn(|k| {
+            let c = [rounded[0] + k as i64 / 3 - 1, rounded[1] + k as i64 % 3 - 1];
+            let (du, dv) = (c[0] as f64 - aim[0], c[1] as f64 - aim[1]);
+            (du * du + dv * dv, c)
+        });
         candidates.sort_by(|a, b| a.0.total_cmp(&b.0));
         let radius_sq = |p: [i64; 2], c: [i64; 2]| {
             let (du, dv) = ((p[0] - c[0]) as i128, (p[1] - c[1]) as i128);
