@@ -175,18 +175,29 @@ pub enum Rate {
     Unset,
 }
 
+/// The smaller of `a` and `b`, neither of them NaN. f64::min, which must
+/// pass over a NaN, is a call to libm's fmin in wasm (whose f64.min
+/// propagates it), made several times a block; the planner's lengths,
+/// speeds and accelerations are never NaN (settings and moves are checked
+/// finite first), so a comparison gives what f64::min would.
+fn smaller(a: f64, b: f64) -> f64 {
+    debug_assert!(!a.is_nan() && !b.is_nan());
+    if b < a { b } else { a }
+}
+
+/// The larger of `a` and `b`, neither of them NaN (see [`smaller`]).
+fn larger(a: f64, b: f64) -> f64 {
+    debug_assert!(!a.is_nan() && !b.is_nan());
+    if b > a { b } else { a }
+}
+
 /// Grbl's `limit_value_by_axis_maximum` (nuts_bolts.c): the largest value
 /// along unit vector `u` for which no axis exceeds its `max`.
 pub fn limit_value_by_axis_maximum(max: &[f64; MACHINE_AXES], u: &[f64; MACHINE_AXES]) -> f64 {
-    // Compared by hand: f64::min, which must pass over a NaN, is a call
-    // to libm's fmin in wasm, and no value here is NaN.
     let mut limit = f64::INFINITY;
     for i in 0..MACHINE_AXES {
         if u[i] != 0.0 {
-            let along = (max[i] / u[i]).abs();
-            if along < limit {
-                limit = along;
-            }
+            limit = smaller(limit, (max[i] / u[i]).abs());
         }
     }
     limit
@@ -298,7 +309,7 @@ fn time_over(s: f64, v0: f64, a: f64) -> f64 {
     if s <= 0.0 {
         return 0.0;
     }
-    let root = (v0 * v0 + 2.0 * a * s).max(0.0).sqrt();
+    let root = larger(v0 * v0 + 2.0 * a * s, 0.0).sqrt();
     let sum = v0 + root;
     if sum > 0.0 { 2.0 * s / sum } else { 0.0 }
 }
@@ -414,19 +425,19 @@ impl Planner {
         let top_mm_per_min = limit_value_by_axis_maximum(&self.limits.max_rate_mm_per_min, &unit);
         let programmed = match rate {
             Rate::Rapid | Rate::Unset => top_mm_per_min,
-            Rate::Feed(f) => f.min(top_mm_per_min),
+            Rate::Feed(f) => smaller(f, top_mm_per_min),
         };
-        let nominal = programmed.max(MINIMUM_FEED_RATE_MM_PER_MIN) / 60.0;
+        let nominal = larger(programmed, MINIMUM_FEED_RATE_MM_PER_MIN) / 60.0;
         let junction_sqr = match &self.previous_unit {
             // From rest.
             None => 0.0,
             Some(previous) => max_junction_speed_sqr(previous, &unit, &self.limits),
         };
-        let neighbour = nominal.min(self.previous_nominal);
+        let neighbour = smaller(nominal, self.previous_nominal);
         self.blocks.push(StoredBlock {
             delta_mm,
             nominal_speed_mm_per_s: nominal,
-            entry_speed_sqr: (neighbour * neighbour).min(junction_sqr),
+            entry_speed_sqr: smaller(neighbour * neighbour, junction_sqr),
         });
         self.length_and_acceleration.push((length_mm, acceleration));
         self.previous_unit = Some(unit);
@@ -452,7 +463,7 @@ impl Planner {
         // Reverse pass (planner_recalculate): entry² ≤ exit² + 2aL.
         let mut exit_sqr = 0.0;
         for (i, b) in blocks.iter_mut().enumerate().rev() {
-            b.entry_speed_sqr = b.entry_speed_sqr.min(exit_sqr + two_al(i));
+            b.entry_speed_sqr = smaller(b.entry_speed_sqr, exit_sqr + two_al(i));
             exit_sqr = b.entry_speed_sqr;
         }
         // Forward pass: exit² (the next entry²) ≤ entry² + 2aL.
@@ -536,9 +547,13 @@ impl Plan {
         let nominal_sqr = kept.nominal_speed_mm_per_s * kept.nominal_speed_mm_per_s;
         // A triangle when accelerating to nominal and decelerating from it
         // take more than the block: the peak where both meet.
-        let peak_sqr = nominal_sqr
-            .min(0.5 * (2.0 * a * length_mm + entry_sqr + exit_sqr))
-            .max(entry_sqr.max(exit_sqr));
+        let peak_sqr = larger(
+            smaller(
+                nominal_sqr,
+                0.5 * (2.0 * a * length_mm + entry_sqr + exit_sqr),
+            ),
+            larger(entry_sqr, exit_sqr),
+        );
         Block {
             delta_mm: kept.delta_mm,
             length_mm,
