@@ -12,7 +12,7 @@
 //! the decision a learner reads) keeps the rule in the paper's words, and
 //! the property tests check that both give the same steps.
 
-use crate::grid::{MAX_AXES, Step};
+use crate::grid::{MAX_AXES, Step, displacement};
 use crate::request::TiePolicy;
 
 /// One passive axis's discriminant, in the form [`Terms`] steps.
@@ -153,6 +153,12 @@ const LANES: usize = 2;
 /// than they save.
 const MIN_LANE_STEPS: usize = 32;
 
+/// Up to this many steps, [`Terms::fill`] sums the displacement from the
+/// steps it wrote ([`displacement`]: a few operations a step) rather than
+/// from its terms (a division per term and a sum per axis and term): the
+/// moves of a G-code program at 1 step/mm take a handful of steps each.
+const MAX_STEPS_SUMMED: usize = 16;
+
 impl<const N: usize> Terms<N> {
     /// One step of every term, each value of `values` with the constants of
     /// the term at its index.
@@ -190,7 +196,8 @@ impl<const N: usize> Terms<N> {
     ///
     /// The displacement needs no pass over the steps: the active axes moved
     /// every step, and a term's value says how often its axis did (value_end
-    /// = value_start + steps·increment - moves·decrement).
+    /// = value_start + steps·increment - moves·decrement); a few steps are
+    /// summed instead ([`MAX_STEPS_SUMMED`]).
     #[inline(always)]
     pub fn fill(&mut self, out: &mut [Step]) -> [i64; MAX_AXES] {
         let terms = self.terms;
@@ -219,6 +226,9 @@ impl<const N: usize> Terms<N> {
         }
         self.set_values(values);
         let steps = out.len();
+        if steps <= MAX_STEPS_SUMMED {
+            return displacement(out);
+        }
         let moves = std::array::from_fn::<_, N, _>(|i| terms[i].moves(steps as u64, values[i]));
         std::array::from_fn(|axis| {
             let passive: i64 = terms
@@ -315,7 +325,7 @@ mod tests {
 
     #[test]
     fn lanes_take_the_steps_of_one_chain() {
-        for len in [0, 1, 127, 128, 129, 4096, 4099] {
+        for len in [0, 1, 16, 17, 127, 128, 129, 4096, 4099] {
             let start = Terms {
                 always: Step(1),
                 terms: [
