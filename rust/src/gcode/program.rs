@@ -930,6 +930,9 @@ impl Runner {
     /// [`Runner::out_of_memory`] returns, also the program's last error.
     pub fn advance(&mut self, max_lines: u32) -> Progress {
         self.reserve_as_so_far();
+        // Out of self for the slice (run_block borrows self mutably), not
+        // moved out and back for every line.
+        let mut block = std::mem::take(&mut self.block);
         for _ in 0..max_lines {
             if self.lines_done == self.lines {
                 break;
@@ -942,13 +945,12 @@ impl Runner {
             }
             let rest = &self.source[self.offset..];
             let (text, next) = split_line(rest);
-            parse_line_into(text, &mut self.block);
+            parse_line_into(text, &mut block);
             self.offset += next;
             self.lines_done += 1;
-            let block = std::mem::take(&mut self.block);
             self.run_block(self.lines_done, &block);
-            self.block = block;
         }
+        self.block = block;
         self.progress()
     }
 
