@@ -1,7 +1,9 @@
 /**
  * Saleem & Saleem (2004), section 4: the integer circle, stepping only:
  * rust/src/arc/circle_saleem.rs in plain TypeScript (any plane, either
- * direction, extra turns), counted first by a dry run as the core does.
+ * direction, extra turns), counted first by a step-by-step dry run, the
+ * paper's dummy procedure (the core skips it when a bound shows the circle
+ * fits maxSteps, and counts by leaps along the closed form when it runs it).
  */
 import { Circle, moveCodes, readArc } from './arc.js';
 import { onlyOptions, type ReferenceOptions } from './common.js';
