@@ -203,17 +203,44 @@ impl<'t> Reader<'t> {
     /// A number's text: digits, with at most one point among or before
     /// them ("12", "1.5", ".5", "1."). Empty when none is here.
     fn number(&mut self) -> &'t str {
-        let start = self.at;
-        let leading_point = self.peek() == Some(b'.');
-        if leading_point {
-            self.bump();
+        self.decimal().0
+    }
+
+    /// [`Self::number`], and its value when it has 1 to 15 digits, read on
+    /// the way: the digits as an integer over a power of ten, both exact
+    /// in f64, so the one rounding of the division gives the correctly
+    /// rounded value, as `str::parse` does, without its general machinery
+    /// (most G-code numbers look like 25.655). None otherwise, for
+    /// `str::parse` to read. One pass over the bytes, on locals.
+    fn decimal(&mut self) -> (&'t str, Option<f64>) {
+        const POWERS_OF_TEN: [f64; 16] = [
+            1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+        ];
+        let (start, bytes) = (self.at, self.text.as_bytes());
+        let mut at = start;
+        let (mut mantissa, mut digits, mut fraction_digits) = (0u64, 0usize, 0usize);
+        let mut point = false;
+        loop {
+            match bytes.get(at) {
+                Some(&b) if b.is_ascii_digit() => {
+                    if digits < 15 {
+                        mantissa = mantissa * 10 + u64::from(b - b'0');
+                        fraction_digits += usize::from(point);
+                    }
+                    digits += 1;
+                }
+                Some(b'.') if !point => point = true,
+                _ => break,
+            }
+            at += 1;
         }
-        self.take_while(|b| b.is_ascii_digit());
-        if self.peek() == Some(b'.') && !leading_point {
-            self.bump();
-            self.take_while(|b| b.is_ascii_digit());
-        }
-        &self.text[start..self.at]
+        // Digits and points are ASCII: a column each.
+        self.column += (at - start) as u32;
+        self.at = at;
+        let value = (1..=15)
+            .contains(&digits)
+            .then(|| mantissa as f64 / POWERS_OF_TEN[fraction_digits]);
+        (&self.text[start..at], value)
     }
 
     /// An exponent right after a number: e or E, then a digit, a sign or
@@ -400,10 +427,11 @@ impl<'t> Reader<'t> {
         })
     }
 
-    /// The number text at the reader (the caller has read any blanks and
-    /// sign) and the column it starts at; an error at the letter's `column`
-    /// when no number follows.
-    fn number_after(&mut self, letter: char, column: u32) -> Read<(u32, &'t str)> {
+    /// The number at the reader (the caller has read any blanks and sign):
+    /// the column it starts at, its text and its short value
+    /// ([`Self::decimal`]); an error at the letter's `column` when no number
+    /// follows.
+    fn number_after(&mut self, letter: char, column: u32) -> Read<(u32, &'t str, Option<f64>)> {
         if !self.at_number() {
             return Err(problem(
                 column,
@@ -411,13 +439,14 @@ impl<'t> Reader<'t> {
             ));
         }
         let number_column = self.column;
-        Ok((number_column, self.number()))
+        let (text, value) = self.decimal();
+        Ok((number_column, text, value))
     }
 
     /// The whole number after N or O (its part before any point).
     fn whole_number(&mut self, letter: char, column: u32) -> Read<u32> {
         self.skip_blanks();
-        let (number_column, text) = self.number_after(letter, column)?;
+        let (number_column, text, _) = self.number_after(letter, column)?;
         let whole = text.split_once('.').map_or(text, |(w, _)| w);
         whole.parse::<u32>().map_err(|_| {
             problem(
@@ -438,7 +467,7 @@ impl<'t> Reader<'t> {
             self.bump();
             self.skip_blanks();
         }
-        let (number_column, text) = self.number_after(letter, column)?;
+        let (number_column, text, short) = self.number_after(letter, column)?;
         let sign = if negative { "-" } else { "" };
         if self.at_exponent() {
             // F1e300 read as F1 and a word E300 would be neither what the
@@ -456,7 +485,7 @@ impl<'t> Reader<'t> {
                 ),
             ));
         }
-        let Some(magnitude) = short_decimal(text).or_else(|| text.parse::<f64>().ok()) else {
+        let Some(magnitude) = short.or_else(|| text.parse::<f64>().ok()) else {
             return Err(problem(
                 number_column,
                 format!("malformed number: '{}' is not a number", echo(text)),
@@ -479,32 +508,6 @@ impl<'t> Reader<'t> {
     }
 }
 
-/// `text`, digits with at most one point (as [`Reader::number`] reads
-/// them), as a number when it has at most 15 digits: the digits as an
-/// integer over a power of ten, both exact in f64, so the one rounding of
-/// the division gives the correctly rounded value, as `str::parse` does,
-/// without its general machinery (most G-code numbers look like 25.655).
-/// None otherwise, for `str::parse` to read.
-fn short_decimal(text: &str) -> Option<f64> {
-    const POWERS_OF_TEN: [f64; 16] = [
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-    ];
-    let (mut mantissa, mut digits, mut fraction_digits) = (0u64, 0, 0);
-    let mut point = false;
-    for &b in text.as_bytes() {
-        match b {
-            b'0'..=b'9' if digits < 15 => {
-                mantissa = mantissa * 10 + u64::from(b - b'0');
-                digits += 1;
-                fraction_digits += usize::from(point);
-            }
-            b'.' if !point => point = true,
-            _ => return None,
-        }
-    }
-    (digits > 0).then(|| mantissa as f64 / POWERS_OF_TEN[fraction_digits])
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -523,7 +526,13 @@ mod tests {
             };
             let parsed = text.parse::<f64>().ok().map(f64::to_bits);
             let digits = text.bytes().filter(u8::is_ascii_digit).count();
-            match short_decimal(&text) {
+            // Read from a line, with what stops the number after it.
+            let line = format!("{text}X");
+            let mut reader = Reader { text: &line, at: 0, column: 1 };
+            let (read, short) = reader.decimal();
+            proptest::prop_assert_eq!(read, text.as_str());
+            proptest::prop_assert_eq!(reader.column as usize, 1 + text.len());
+            match short {
                 Some(v) => proptest::prop_assert_eq!(Some(v.to_bits()), parsed),
                 None => proptest::prop_assert!(digits == 0 || digits > 15),
             }
