@@ -346,6 +346,11 @@ impl Decision for CircleWhy {
     }
 }
 
+/// A circle whose [`SaleemCircle::steps_at_most`] reaches this many steps
+/// is counted before it runs ([`SaleemCircle::within`]): a few microseconds
+/// of leaps, against the growth of a trace of this length.
+const COUNTED_FROM_STEPS: u64 = 1 << 14;
+
 /// What the dry run learns before the real run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CirclePlan {
@@ -486,13 +491,16 @@ impl SaleemCircle {
     }
 
     /// This stepper ready to run within `builder`'s maxSteps: as it is when
-    /// [`Self::steps_at_most`] fits (a trace counts its steps as it records
-    /// them, and the note runs the dry run when it is read), else counted
-    /// ([`Self::counted`]), which refuses it when it would not fit. Even
-    /// leaping, the dry run's isqrts cost more than a short arc's steps
-    /// (most G-code arcs).
+    /// it is short and [`Self::steps_at_most`] fits (a trace counts its
+    /// steps as it records them, and the note runs the dry run when it is
+    /// read), else counted ([`Self::counted`]), which refuses it when it
+    /// would not fit. Even leaping, the dry run's isqrts cost more than a
+    /// short arc's steps (most G-code arcs); a long one's count pays for
+    /// itself, as the trace then takes room for its steps at once instead
+    /// of growing into it (copying them each time).
     pub fn within(self, builder: &TraceBuilder) -> Result<SaleemCircle, Error> {
-        if self.steps_at_most() <= builder.max_steps() {
+        let at_most = self.steps_at_most();
+        if at_most <= builder.max_steps() && at_most < COUNTED_FROM_STEPS {
             Ok(self)
         } else {
             self.counted(builder)

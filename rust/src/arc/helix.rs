@@ -396,9 +396,10 @@ impl Stepper for SaleemHelix {
     }
 
     /// The same iterations as [`Stepper::next_step`], without decisions:
-    /// the circle's recording loop with the line's term woven in
-    /// ([`SaleemCircle::weave_fill`]); the circle's few correction steps by
-    /// its `next_step`. The displacement: where the arc's point moved, and
+    /// the circle's recording loop ([`SaleemCircle::weave_fill`]), with the
+    /// line's term woven in when the linear axis leads, or its steps put in
+    /// after ([`Term::or_steps_into`]) when the arc does; the circle's few
+    /// correction steps by its `next_step`. The displacement: where the arc's point moved, and
     /// on the linear axis every iteration (linear major) or as often as
     /// the term says its minor axis stepped.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
@@ -409,10 +410,13 @@ impl Stepper for SaleemHelix {
         let line = self.line;
         let mut value = line.value;
         match self.major {
-            Major::Arc => weave(&mut self.circle, out, || {
-                let minor = line.advance_mask(&mut value);
-                (true, linear & minor as u16)
-            }),
+            // The arc steps every iteration: the circle's own loop, then
+            // the linear axis's few steps put in by jumps (in wasm, its
+            // term woven into that loop slowed it by a fifth).
+            Major::Arc => {
+                weave(&mut self.circle, out, || (true, 0));
+                line.or_steps_into(&mut value, out, linear);
+            }
             Major::Linear => weave(&mut self.circle, out, || {
                 (line.advance_mask(&mut value) != 0, linear)
             }),

@@ -66,6 +66,51 @@ impl Term {
         mask
     }
 
+    /// ORs `bits` into the steps of `out` at which this term steps its
+    /// axis, `value` being the one the first of them compares (moved on
+    /// past them all): the steps [`Term::advance_mask`] marks, found by
+    /// jumping from one to the next rather than testing every step, for
+    /// an axis that steps seldom (a helix's linear axis beside a wide arc;
+    /// one that steps more than every other step is tested step by step).
+    ///
+    /// From value v the axis next steps j steps on, the least j with
+    /// v + j·increment > steps_above: a division, once. Then the value is
+    /// v + (j + 1)·increment - decrement, which lies above
+    /// steps_above + increment - decrement and at most at
+    /// steps_above + 2·increment - decrement (it stepped at most an
+    /// increment above steps_above), so the next j is Q - 1 or Q, with
+    /// Q = decrement / increment: a comparison or two per step of the axis.
+    pub fn or_steps_into(&self, value: &mut i64, out: &mut [Step], bits: u16) {
+        let (increment, decrement, above) = (self.increment, self.decrement, self.steps_above);
+        if increment == 0 || 2 * increment > decrement {
+            for slot in out.iter_mut() {
+                slot.0 |= bits & self.advance_mask(value) as u16;
+            }
+            return;
+        }
+        let steps = out.len() as i64;
+        let q = decrement / increment;
+        let mut v = *value;
+        let mut j = if v > above {
+            0
+        } else {
+            (above - v) / increment + 1
+        };
+        let mut at = 0;
+        while at + j < steps {
+            at += j;
+            out[at as usize].0 |= bits;
+            v += (j + 1) * increment - decrement;
+            at += 1;
+            j = q - 1;
+            if v + j * increment <= above {
+                j += 1;
+            }
+            debug_assert!(v + j * increment > above && v + (j - 1) * increment <= above);
+        }
+        *value = v + (steps - at) * increment;
+    }
+
     /// How many of `steps` steps, taken from this term, stepped its axis,
     /// given the value they left: value_after = value + steps·increment -
     /// moves·decrement, so the value says it without a pass over the steps.
@@ -302,6 +347,42 @@ mod tests {
                     stepped.value = value;
                 }
             }
+        }
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn jumping_to_an_axis_s_steps_marks_the_steps_it_takes(
+            minor in 0i64..2000,
+            extra in 0i64..50_000,
+            start in 0u64..100_000,
+            len in 0usize..3000,
+            advance in proptest::bool::ANY,
+        ) {
+            // Saleem's helix term for n_z = minor against n_c = minor + extra
+            // (sparse and dense minor axes, ties both ways), taken `start`
+            // steps in, over `len` steps: the same marks and value as a
+            // step-by-step pass.
+            let major = minor + extra;
+            let tie = if advance { TiePolicy::Advance } else { TiePolicy::Hold };
+            let term = Term {
+                value: 2 * minor,
+                increment: 2 * minor,
+                decrement: 2 * major,
+                steps_above: Term::steps_above(major, tie),
+                step: Step::NONE,
+            }
+            .jumped(start);
+            let mut by_step = vec![Step(1); len];
+            let mut value = term.value;
+            for slot in by_step.iter_mut() {
+                slot.0 |= 4 & term.advance_mask(&mut value) as u16;
+            }
+            let mut by_jumps = vec![Step(1); len];
+            let mut jumped_value = term.value;
+            term.or_steps_into(&mut jumped_value, &mut by_jumps, 4);
+            proptest::prop_assert_eq!(by_jumps, by_step);
+            proptest::prop_assert_eq!(jumped_value, value);
         }
     }
 
