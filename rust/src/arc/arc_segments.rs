@@ -362,9 +362,10 @@ fn chords_by(
             ))
         }
     };
-    let stepper = match in_place {
-        true => LineStepper::for_request(line_info, &line_request),
-        false => LineStepper::ByRequest,
+    let stepper = if in_place {
+        LineStepper::for_request(line_info, &line_request)
+    } else {
+        LineStepper::ByRequest
     };
     if let LineStepper::ByRequest = stepper {
         by_requests(

@@ -399,9 +399,9 @@ impl Stepper for SaleemHelix {
     /// the circle's recording loop ([`SaleemCircle::weave_fill`]), with the
     /// line's term woven in when the linear axis leads, or its steps put in
     /// after ([`Term::or_steps_into`]) when the arc does; the circle's few
-    /// correction steps by its `next_step`. The displacement: where the arc's point moved, and
-    /// on the linear axis every iteration (linear major) or as often as
-    /// the term says its minor axis stepped.
+    /// correction steps by its `next_step`. The displacement: where the
+    /// arc's point moved, and on the linear axis every iteration (linear
+    /// major) or as often as the term says its minor axis stepped.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let out = &mut out[..taken];
