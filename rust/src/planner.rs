@@ -193,7 +193,22 @@ fn larger(a: f64, b: f64) -> f64 {
 
 /// Grbl's `limit_value_by_axis_maximum` (nuts_bolts.c): the largest value
 /// along unit vector `u` for which no axis exceeds its `max`.
+///
+/// When every axis has the same `max` (Grbl's defaults, and most machines'
+/// acceleration), one division gives the same bits as Grbl's one per
+/// moving axis: a rounded division max / x never grows as x grows, so the
+/// smallest of max / |u_i| is max over the largest |u_i|. A planner pushes
+/// a block with two of these, and a division is the slowest of its
+/// arithmetic (tens of cycles, in wasm too).
 pub fn limit_value_by_axis_maximum(max: &[f64; MACHINE_AXES], u: &[f64; MACHINE_AXES]) -> f64 {
+    if max.iter().all(|&m| m == max[0]) {
+        let largest = u.iter().fold(0.0, |largest, &x| larger(largest, x.abs()));
+        return if largest == 0.0 {
+            f64::INFINITY
+        } else {
+            max[0] / largest
+        };
+    }
     let mut limit = f64::INFINITY;
     for i in 0..MACHINE_AXES {
         if u[i] != 0.0 {
@@ -203,13 +218,16 @@ pub fn limit_value_by_axis_maximum(max: &[f64; MACHINE_AXES], u: &[f64; MACHINE_
     limit
 }
 
-/// `|v|`, and `v` scaled to a unit vector (unchanged when 0).
+/// `|v|`, and `v` scaled to a unit vector (unchanged when 0), as Grbl's
+/// `convert_delta_vector_to_unit_vector` (nuts_bolts.c) scales it: by one
+/// reciprocal of the length, multiplied in, not a division per axis.
 fn unit_vector(v: [f64; MACHINE_AXES]) -> (f64, [f64; MACHINE_AXES]) {
     let length = v.iter().map(|x| x * x).sum::<f64>().sqrt();
     if length == 0.0 {
         return (0.0, v);
     }
-    (length, v.map(|x| x / length))
+    let inverse_length = 1.0 / length;
+    (length, v.map(|x| x * inverse_length))
 }
 
 /// Grbl's maximum junction speed², (mm/s)², between blocks of directions
@@ -953,7 +971,30 @@ mod tests {
             .prop_map(|(d, r)| ([d[0] as f64 * 0.7, d[1] as f64 * 0.3, d[2] as f64 * 0.1], r))
     }
 
+    /// A unit vector's components, zero on some axes: every pattern of
+    /// moving axes, signs and sizes a block may have.
+    fn unit_strategy() -> impl Strategy<Value = [f64; MACHINE_AXES]> {
+        prop::array::uniform3(prop_oneof![Just(0.0), -1e3f64..1e3, -1e-6f64..1e-6])
+            .prop_map(|v| unit_vector(v).1)
+    }
+
     proptest! {
+        /// The one division taken when every axis has the same limit
+        /// gives the bits of Grbl's loop, a division per moving axis.
+        #[test]
+        fn a_shared_limit_is_limited_as_grbl_limits_each_axis(
+            u in unit_strategy(),
+            max in prop_oneof![1e-3f64..1e6, Just(DEFAULT_ACCELERATION_MM_PER_S2)],
+        ) {
+            let mut grbl = f64::INFINITY;
+            for &x in &u {
+                if x != 0.0 {
+                    grbl = grbl.min((max / x).abs());
+                }
+            }
+            prop_assert_eq!(limit_value_by_axis_maximum(&[max; MACHINE_AXES], &u).to_bits(), grbl.to_bits());
+        }
+
         #[test]
         fn plans_are_monotone_within_limits_and_reachable(
             blocks in prop::collection::vec(block_strategy(), 1..30),

@@ -1224,8 +1224,10 @@ impl Runner {
     ) -> Result<ArcRecord, Error> {
         let [u, v, n] = arc.plane.axes();
         let spm = self.settings.machine.steps_per_mm();
-        let (un, vn) = (AXIS_NAMES[u].to_uppercase(), AXIS_NAMES[v].to_uppercase());
         if spm[u] != spm[v] {
+            // Named here only: two strings made for every arc cost more
+            // than the rest of this check.
+            let (un, vn) = (AXIS_NAMES[u].to_uppercase(), AXIS_NAMES[v].to_uppercase());
             return Err(Error::at(
                 m.line,
                 m.column,

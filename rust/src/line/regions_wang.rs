@@ -462,8 +462,17 @@ impl RegionsWang {
         let mirror = Mirror::new(from, to);
         let divisor = mirror.divisor(gcd);
         let magnitude = [0, 1, 2].map(|a| mirror.reduced(a, divisor));
-        let largest = mirror.reduced(mirror.major(), divisor);
-        let reference = mirror.major();
+        // Found once here (a G-code program sets up a line every move): the
+        // divisor divides every |delta|, so the reduced ones have the same
+        // largest axis, the first of them being Mirror::major.
+        let largest = magnitude[0].max(magnitude[1]).max(magnitude[2]);
+        let reference = if magnitude[0] == largest {
+            0
+        } else if magnitude[1] == largest {
+            1
+        } else {
+            2
+        };
         let mut geometry = Geometry {
             active_mask: 0,
             passive: [0; 2],
@@ -511,7 +520,7 @@ impl RegionsWang {
             reference,
             geometry,
             terms: Terms { always, terms },
-            remaining: mirror.longest() as u64,
+            remaining: (largest * divisor) as u64,
             tie,
         }
     }
