@@ -720,8 +720,9 @@ impl Plan {
 /// evenly for a helix; one straight block when that is 0. Grbl
 /// rotates the radius vector by a small-angle approximation and corrects it
 /// every N_ARC_CORRECTION chords; the vertices here are the exact points on
-/// the arc it approximates. Returns the vertices after the start, the end
-/// last, in mm.
+/// the arc it approximates. Gives the vertices after the start, the end
+/// last, in mm, one at a time (a program pushes them into its planner as
+/// they come: a list per arc would be an allocation per arc).
 pub fn arc_chords(
     from_mm: [f64; MACHINE_AXES],
     to_mm: [f64; MACHINE_AXES],
@@ -729,7 +730,7 @@ pub fn arc_chords(
     axes: [usize; 3],
     radius_mm: f64,
     sweep_rad: f64,
-) -> Vec<[f64; MACHINE_AXES]> {
+) -> impl ExactSizeIterator<Item = [f64; MACHINE_AXES]> {
     let [u, v, n] = axes;
     // Grbl's count (the arc-segments algorithm's rule); a radius within
     // the tolerance is one straight block, as Grbl's NaN count of 0 is.
@@ -737,13 +738,15 @@ pub fn arc_chords(
         Chording::Tolerance(ARC_TOLERANCE_MM)
             .chords(radius_mm, sweep_rad)
             .unwrap_or(MAX_ARC_CHORDS)
-            .min(MAX_ARC_CHORDS)
+            .clamp(1, MAX_ARC_CHORDS) as usize
     } else {
         1
     };
-    let mut out = Vec::with_capacity(chords.max(1) as usize);
     let start_angle = (from_mm[v] - center_mm[v]).atan2(from_mm[u] - center_mm[u]);
-    for i in 1..chords {
+    (1..chords + 1).map(move |i| {
+        if i == chords {
+            return to_mm;
+        }
         let f = i as f64 / chords as f64;
         let angle = start_angle + sweep_rad * f;
         let mut p = from_mm;
@@ -751,10 +754,8 @@ pub fn arc_chords(
         p[u] = center_mm[u] + radius_mm * cos;
         p[v] = center_mm[v] + radius_mm * sin;
         p[n] = from_mm[n] + (to_mm[n] - from_mm[n]) * f;
-        out.push(p);
-    }
-    out.push(to_mm);
-    out
+        p
+    })
 }
 
 #[cfg(test)]
@@ -928,14 +929,15 @@ mod tests {
     fn arcs_are_planned_through_grbls_chords() {
         // r = 10, a half turn: |½·π·10| / √(0.002·(20 − 0.002)) = 78.5...
         // -> 78 chords.
-        let chords = arc_chords(
+        let chords: Vec<_> = arc_chords(
             [10.0, 0.0, 0.0],
             [-10.0, 0.0, 0.0],
             [0.0; 3],
             [0, 1, 2],
             10.0,
             std::f64::consts::PI,
-        );
+        )
+        .collect();
         let expected =
             (0.5 * std::f64::consts::PI * 10.0 / (0.002f64 * (20.0 - 0.002)).sqrt()).floor();
         assert_eq!(chords.len() as f64, expected);

@@ -540,6 +540,24 @@ pub struct Trace {
 /// ([`Trace::with_note_prefix`]).
 pub type NotePrefix = Rc<dyn Fn(usize) -> String>;
 
+/// The error for a path found to need at least `steps` steps, more than
+/// `max_steps` allows (for steppers that count before running).
+pub fn path_too_long(max_steps: u64, steps: u64) -> Error {
+    Error::field(
+        "maxSteps",
+        format!(
+            "the path needs more than {max_steps} steps (at least {steps}); {}",
+            too_long_advice(steps, "the move")
+        ),
+    )
+    .with_limit(Limit {
+        option: "maxSteps".into(),
+        value: max_steps,
+        at_least: steps,
+        most: MAX_STEPS_LIMIT,
+    })
+}
+
 /// Builds a trace by running steppers one after another from a start point.
 pub struct TraceBuilder {
     start: Point,
@@ -765,20 +783,7 @@ impl TraceBuilder {
     /// The error for a path found to need at least `steps` steps, more than
     /// [`Self::max_steps`] (for steppers that count before running).
     pub fn too_long(&self, steps: u64) -> Error {
-        Error::field(
-            "maxSteps",
-            format!(
-                "the path needs more than {} steps (at least {steps}); {}",
-                self.max_steps,
-                too_long_advice(steps, "the move")
-            ),
-        )
-        .with_limit(Limit {
-            option: "maxSteps".into(),
-            value: self.max_steps,
-            at_least: steps,
-            most: MAX_STEPS_LIMIT,
-        })
+        path_too_long(self.max_steps, steps)
     }
 
     /// Appends a finished trace that starts where this one ends (a chord of

@@ -29,7 +29,7 @@ use voxpath::ideal::IdealPath;
 use voxpath::ideal::info::IdealPathInfo;
 use voxpath::request::{DEFAULT_MAX_STEPS, TiePolicy};
 use voxpath::trace::{NO_VALUE, Stepper};
-use voxpath::{Request, Trace, TraceBuilder};
+use voxpath::{Request, Trace};
 
 const PLANES: [(&str, [usize; 3]); 3] = [("xy", [0, 1, 2]), ("zx", [2, 0, 1]), ("yz", [1, 2, 0])];
 
@@ -125,8 +125,7 @@ fn arc_strategy(max_r: i64) -> impl Strategy<Value = Arc> {
 /// as a trace counts it.
 fn counted_circle(json: &str) -> (ArcSpec, SaleemCircle) {
     let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true).unwrap();
-    let builder = TraceBuilder::new(spec.from, DEFAULT_MAX_STEPS);
-    let circle = SaleemCircle::new(&spec).counted(&builder).unwrap();
+    let circle = SaleemCircle::new(&spec).counted(DEFAULT_MAX_STEPS).unwrap();
     (spec, circle)
 }
 

@@ -35,6 +35,7 @@ use crate::line::step_target;
 use crate::request::{FROM, MAX_STEPS, Request, TO};
 use crate::trace::{
     Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, fill_by_next_step,
+    path_too_long,
 };
 use std::fmt::Write;
 
@@ -69,7 +70,7 @@ fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
     let spec = ArcSpec::parse(req, false)?;
     let mut builder = TraceBuilder::for_request(spec.from, req)?;
-    let stepper = SaleemCircle::new(&spec).within(&builder)?;
+    let stepper = SaleemCircle::new(&spec).within(builder.max_steps())?;
     builder.run(stepper, IdealPath::Arc(spec.ideal_arc()))?;
     Ok(builder.finish(ID))
 }
@@ -490,7 +491,7 @@ impl SaleemCircle {
             .saturating_add(correction)
     }
 
-    /// This stepper ready to run within `builder`'s maxSteps: as it is when
+    /// This stepper ready to run within `max_steps` (a trace's maxSteps): as it is when
     /// it is short and [`Self::steps_at_most`] fits (a trace counts its
     /// steps as it records them, and the note runs the dry run when it is
     /// read), else counted ([`Self::counted`]), which refuses it when it
@@ -498,27 +499,26 @@ impl SaleemCircle {
     /// short arc's steps (most G-code arcs); a long one's count pays for
     /// itself, as the trace then takes room for its steps at once instead
     /// of growing into it (copying them each time).
-    pub fn within(self, builder: &TraceBuilder) -> Result<SaleemCircle, Error> {
+    pub fn within(self, max_steps: u64) -> Result<SaleemCircle, Error> {
         let at_most = self.steps_at_most();
-        if at_most <= builder.max_steps() && at_most < COUNTED_FROM_STEPS {
+        if at_most <= max_steps && at_most < COUNTED_FROM_STEPS {
             Ok(self)
         } else {
-            self.counted(builder)
+            self.counted(max_steps)
         }
     }
 
     /// This stepper with its steps counted by the dry run, or the maxSteps
-    /// error of `builder` when it would take more than the builder allows
+    /// error when it would take more than `max_steps`
     /// (at once when its full turns alone need more).
-    pub fn counted(mut self, builder: &TraceBuilder) -> Result<SaleemCircle, Error> {
-        let limit = builder.max_steps();
+    pub fn counted(mut self, max_steps: u64) -> Result<SaleemCircle, Error> {
         let at_least = self.steps_at_least();
-        if at_least > limit {
-            return Err(builder.too_long(at_least));
+        if at_least > max_steps {
+            return Err(path_too_long(max_steps, at_least));
         }
         let plan = self
-            .plan(limit)
-            .ok_or_else(|| builder.too_long(limit + 1))?;
+            .plan(max_steps)
+            .ok_or_else(|| path_too_long(max_steps, max_steps + 1))?;
         self.remaining = Some(plan.circle_steps + plan.correction_steps);
         self.plan = Some(plan);
         Ok(self)

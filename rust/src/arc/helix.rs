@@ -125,7 +125,7 @@ fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     if n_z > builder.max_steps() {
         return Err(builder.too_long(n_z));
     }
-    let circle = SaleemCircle::new(&spec).counted(&builder)?;
+    let circle = SaleemCircle::new(&spec).counted(builder.max_steps())?;
     let helix = SaleemHelix::new(&spec, circle, tie);
     if helix.remaining > builder.max_steps() {
         return Err(builder.too_long(helix.remaining));

@@ -35,7 +35,7 @@ use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
-use crate::arc::{ArcSpec, radii_within_tolerance};
+use crate::arc::{ArcSpec, MAX_TURNS, radii_within_tolerance};
 use crate::error::{Error, Limit, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step};
 use crate::ideal::IdealPath;
@@ -530,9 +530,11 @@ impl MoveRecords {
         if let Some(a) = self.arc_of(r).filter(|a| a.as_line.is_none()) {
             debug_assert!(!self.helical(index), "a helix keeps its segments");
             let center = Point::new(&a.center_steps.expect("an arc not stepped as a line"));
-            let (stepper, ideal) =
-                circle_arc_stepper(from, to, center, &a.arc, a.turns, MAX_STEPS_LIMIT)
-                    .expect("it was checked when run");
+            let spec = ArcSpec::new(from, to, center, a.arc.plane, a.arc.turn, a.turns, false);
+            let (stepper, ideal) = spec
+                .ok()
+                .and_then(|spec| circle_arc_stepper(&spec, MAX_STEPS_LIMIT))
+                .expect("it was checked when run");
             return MadeSegment::new(from, ideal, stepper);
         }
         self.line_stepper
@@ -765,25 +767,15 @@ fn line_request(algorithm: &str, from: Point, to: Point) -> Request {
     Request::new(algorithm, options)
 }
 
-/// The circle stepper of an arc from `from` to `to` about the grid point
-/// `center`, `turns` extra turns, checked against `max_steps` as the
-/// circle algorithm's own trace checks it ([`SaleemCircle::within`]), and
-/// the arc it is measured against: the one place a circle arc's stepper is
-/// made, when it is run ([`Runner::run_circle`]) and when its segment is
-/// made again to be read ([`MoveRecords::made_segment`]). None where the
-/// circle algorithm would refuse it.
-fn circle_arc_stepper(
-    from: Point,
-    to: Point,
-    center: Point,
-    arc: &ArcMm,
-    turns: u64,
-    max_steps: u64,
-) -> Option<(SaleemCircle, IdealPath)> {
-    let spec = ArcSpec::new(from, to, center, arc.plane, arc.turn, turns, false).ok()?;
-    let stepper = SaleemCircle::new(&spec)
-        .within(&TraceBuilder::new(from, max_steps))
-        .ok()?;
+/// The circle stepper of the planar arc `spec`, checked against
+/// `max_steps` as the circle algorithm's own trace checks it
+/// ([`SaleemCircle::within`]), and the arc it is measured against: the one
+/// place a circle arc's stepper is made, when it is run
+/// ([`Runner::run_circle`]) and when its segment is made again to be read
+/// ([`MoveRecords::made_segment`]). None where the circle algorithm would
+/// refuse it.
+fn circle_arc_stepper(spec: &ArcSpec, max_steps: u64) -> Option<(SaleemCircle, IdealPath)> {
+    let stepper = SaleemCircle::new(spec).within(max_steps).ok()?;
     Some((stepper, IdealPath::Arc(spec.ideal_arc())))
 }
 
@@ -1282,9 +1274,8 @@ impl Runner {
         center.coords_mut()[v] = c[1];
         kept.center_steps = Some(center.coords().try_into().expect("3 axes"));
         let place = |e: Error| Error::at(m.line, m.column, format!("{}", e));
-        let local = ArcSpec::new(from, to, center, arc.plane, arc.turn, 0, true)
-            .map_err(place)?
-            .local_sweep_rad();
+        let spec = ArcSpec::new(from, to, center, arc.plane, arc.turn, 0, true).map_err(place)?;
+        let local = spec.local_sweep_rad();
         // Extra turns on the grid: those that bring the grid sweep nearest
         // the programmed one.
         let turns = ((arc.sweep_rad.abs() - local) / TAU).round();
@@ -1295,7 +1286,16 @@ impl Runner {
         }
         kept.turns = turns as u64;
         let circle = self.settings.arc_algorithm == circle_saleem::INFO.id;
-        if self.in_place && circle && !helical && self.run_circle(from, to, center, arc, kept.turns)
+        // A planar arc's spec with its turns is the one the circle checks
+        // (same height, and turns within what a request may ask).
+        if self.in_place
+            && circle
+            && !helical
+            && kept.turns <= MAX_TURNS as u64
+            && self.run_circle(&ArcSpec {
+                turns: kept.turns,
+                ..spec
+            })
         {
             return Ok(kept);
         }
@@ -1341,22 +1341,15 @@ impl Runner {
         Ok(())
     }
 
-    /// Runs the circle arc from `from` to `to` about `center`, `turns`
-    /// extra turns, straight into the program's trace, checked as the
+    /// Runs the planar circle arc `spec` straight into the program's
+    /// trace, checked as the
     /// circle algorithm's own trace checks it (maxSteps
     /// being what the program has left), so it takes the same steps,
     /// segment and checkpoints the catalogue path would append. False,
     /// doing nothing, where that path would fail (it then says why).
-    fn run_circle(
-        &mut self,
-        from: Point,
-        to: Point,
-        center: Point,
-        arc: &ArcMm,
-        turns: u64,
-    ) -> bool {
+    fn run_circle(&mut self, spec: &ArcSpec) -> bool {
         let left = self.settings.max_steps - self.steps;
-        let Some((stepper, ideal)) = circle_arc_stepper(from, to, center, arc, turns, left) else {
+        let Some((stepper, ideal)) = circle_arc_stepper(spec, left) else {
             return false;
         };
         let before = self.builder.steps();

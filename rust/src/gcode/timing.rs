@@ -98,7 +98,8 @@ pub fn push_move(
             arc.radius_mm,
             arc.sweep_rad,
         );
-        for vertex in &vertices[..vertices.len() - 1] {
+        let between = vertices.len() - 1;
+        for vertex in vertices.take(between) {
             // A vertex lies within the arc's box, whose corners were
             // rounded to steps already: its rounding fits too.
             push(std::array::from_fn(|axis| {
