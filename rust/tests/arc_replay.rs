@@ -130,9 +130,7 @@ fn a_helix_replays_its_arc_and_linear_decisions() {
     // The explanations recomputed from the checkpoint before step 4096
     // describe the same steps as a run from the start would.
     let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true).unwrap();
-    let circle = SaleemCircle::new(&spec)
-        .counted(1 << 20)
-        .unwrap();
+    let circle = SaleemCircle::new(&spec).counted(1 << 20).unwrap();
     let mut helix =
         voxpath::arc::helix::SaleemHelix::new(&spec, circle, voxpath::request::TiePolicy::Hold);
     let mut p = spec.from;
