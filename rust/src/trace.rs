@@ -632,7 +632,7 @@ impl TraceBuilder {
     /// read ([`Segment::note`]): nobody may read it, and a circle's note
     /// runs Saleem's dry run.
     pub fn run<S: Stepper>(&mut self, stepper: S, ideal: IdealPath) -> Result<(), Error> {
-        self.run_segment(stepper, ideal, false)
+        self.run_segment(stepper, || ideal, false)
     }
 
     /// [`Self::run`], keeping, when the segment is shorter
@@ -640,11 +640,12 @@ impl TraceBuilder {
     /// finished trace's [`SegmentMaker`] makes it again when read (a longer
     /// one is kept, with its checkpoints, whose steps outweigh it). For a
     /// caller that runs many steppers into one trace (a G-code program's
-    /// moves), whose segments few read.
+    /// moves), whose segments few read. `ideal` is called only for a kept
+    /// segment: an arc's ideal path costs its angles.
     pub fn run_made_when_read<S: Stepper>(
         &mut self,
         stepper: S,
-        ideal: IdealPath,
+        ideal: impl FnOnce() -> IdealPath,
     ) -> Result<(), Error> {
         self.run_segment(stepper, ideal, true)
     }
@@ -666,7 +667,7 @@ impl TraceBuilder {
     fn run_segment<S: Stepper>(
         &mut self,
         stepper: S,
-        ideal: IdealPath,
+        ideal: impl FnOnce() -> IdealPath,
         made_when_read: bool,
     ) -> Result<(), Error> {
         let first_step = self.steps.len() as u64;
@@ -730,7 +731,7 @@ impl TraceBuilder {
                 first_step,
                 steps: segment_steps,
                 start,
-                ideal,
+                ideal: ideal(),
                 setup_note: None,
                 column_index,
                 first_state: Box::new(first_state),

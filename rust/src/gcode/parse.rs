@@ -239,7 +239,9 @@ impl<'t> Reader<'t> {
         self.at = at;
         let value = (1..=15)
             .contains(&digits)
-            .then(|| mantissa as f64 / POWERS_OF_TEN[fraction_digits]);
+            // Through i64 (below 10^15, so exact): wasm converts a signed
+            // integer to f64 in one instruction, an unsigned one in several.
+            .then(|| mantissa as i64 as f64 / POWERS_OF_TEN[fraction_digits]);
         (&self.text[start..at], value)
     }
 

@@ -530,12 +530,11 @@ impl MoveRecords {
         if let Some(a) = self.arc_of(r).filter(|a| a.as_line.is_none()) {
             debug_assert!(!self.helical(index), "a helix keeps its segments");
             let center = Point::new(&a.center_steps.expect("an arc not stepped as a line"));
-            let spec = ArcSpec::new(from, to, center, a.arc.plane, a.arc.turn, a.turns, false);
-            let (stepper, ideal) = spec
-                .ok()
-                .and_then(|spec| circle_arc_stepper(&spec, MAX_STEPS_LIMIT))
+            let spec = ArcSpec::new(from, to, center, a.arc.plane, a.arc.turn, a.turns, false)
                 .expect("it was checked when run");
-            return MadeSegment::new(from, ideal, stepper);
+            let stepper =
+                circle_arc_stepper(&spec, MAX_STEPS_LIMIT).expect("it was checked when run");
+            return MadeSegment::new(from, IdealPath::Arc(spec.ideal_arc()), stepper);
         }
         self.line_stepper
             .with_stepper(from, to, MakeLineSegment { from, to })
@@ -769,14 +768,13 @@ fn line_request(algorithm: &str, from: Point, to: Point) -> Request {
 
 /// The circle stepper of the planar arc `spec`, checked against
 /// `max_steps` as the circle algorithm's own trace checks it
-/// ([`SaleemCircle::within`]), and the arc it is measured against: the one
-/// place a circle arc's stepper is made, when it is run
-/// ([`Runner::run_circle`]) and when its segment is made again to be read
-/// ([`MoveRecords::made_segment`]). None where the circle algorithm would
-/// refuse it.
-fn circle_arc_stepper(spec: &ArcSpec, max_steps: u64) -> Option<(SaleemCircle, IdealPath)> {
-    let stepper = SaleemCircle::new(spec).within(max_steps).ok()?;
-    Some((stepper, IdealPath::Arc(spec.ideal_arc())))
+/// ([`SaleemCircle::within`]): the one place a circle arc's stepper is
+/// made, when it is run ([`Runner::run_circle`]) and when its segment is
+/// made again to be read ([`MoveRecords::made_segment`]); its segment is
+/// measured against `spec.ideal_arc()`. None where the circle algorithm
+/// would refuse it.
+fn circle_arc_stepper(spec: &ArcSpec, max_steps: u64) -> Option<SaleemCircle> {
+    SaleemCircle::new(spec).within(max_steps).ok()
 }
 
 /// The request of an arc from `from` to `to` about the grid point
@@ -1045,8 +1043,8 @@ impl Runner {
         for w in &effects.warnings {
             self.warn(Diagnostic::at(line, w));
         }
-        if let Some(m) = effects.motion {
-            if let Err(e) = self.step_move(&m) {
+        if let Some(m) = &effects.motion {
+            if let Err(e) = self.step_move(m) {
                 self.stop(Diagnostic::from_error(e));
             }
         }
@@ -1349,12 +1347,12 @@ impl Runner {
     /// doing nothing, where that path would fail (it then says why).
     fn run_circle(&mut self, spec: &ArcSpec) -> bool {
         let left = self.settings.max_steps - self.steps;
-        let Some((stepper, ideal)) = circle_arc_stepper(spec, left) else {
+        let Some(stepper) = circle_arc_stepper(spec, left) else {
             return false;
         };
         let before = self.builder.steps();
         self.builder
-            .run_made_when_read(stepper, ideal)
+            .run_made_when_read(stepper, || IdealPath::Arc(spec.ideal_arc()))
             .expect("a circle within maxSteps runs");
         self.steps += self.builder.steps() - before;
         self.segments += 1;
@@ -1375,7 +1373,7 @@ impl Runner {
         }
         let before = self.builder.steps();
         self.builder
-            .run_made_when_read(stepper, IdealPath::Line { from, to })
+            .run_made_when_read(stepper, || IdealPath::Line { from, to })
             .expect("a line of known length within maxSteps runs");
         self.steps += self.builder.steps() - before;
         self.segments += 1;
