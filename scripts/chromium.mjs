@@ -1,6 +1,7 @@
-// Where the browser tests find Chromium. Shared by scripts/setup.mjs (which
-// installs Chromium when it is missing) and tests/browser/harness.ts (which
-// launches it), so both always agree on which binary is used.
+// Where the browser tests find Chromium, and how they launch it. Shared by
+// scripts/setup.mjs (which installs Chromium when it is missing),
+// tests/browser/harness.ts and bench/page-gcode.bench.ts (which launch it),
+// so all agree on which binary is used and how.
 // Plain Node, no dependencies: setup.mjs imports it before `npm install`.
 import { accessSync, constants } from 'node:fs';
 import { delimiter, join } from 'node:path';
@@ -52,3 +53,24 @@ export function findChromium() {
     .flatMap((dir) => NAMES.map((name) => join(dir, name)));
   return [...FIXED, ...onPath].find(isExecutable) ?? null;
 }
+
+// Headless and offline-friendly: without the background-networking flags,
+// Chromium keeps trying to reach Google's hosts, which this network refuses;
+// --no-sandbox because Chromium's sandbox does not run as root (CI is root).
+// WebGL: --disable-gpu leaves WebGL on SwiftShader (software, through ANGLE
+// on Vulkan), which works here for three.js. Chromium has deprecated that
+// automatic fallback and prints a console warning about it unless
+// --enable-unsafe-swiftshader is given; playwright-core passes that flag by
+// default too, but it is named here so the harness does not depend on it.
+/** The flags Chromium is launched with, by the browser tests and the page bench. */
+export const CHROMIUM_ARGS = [
+  '--headless',
+  '--no-sandbox',
+  '--disable-gpu',
+  '--enable-unsafe-swiftshader',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--no-first-run',
+  '--disable-quic',
+  '--disable-sync',
+];

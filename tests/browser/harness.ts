@@ -13,32 +13,12 @@ import { fileURLToPath } from 'node:url';
 import { type Browser, type BrowserContext, chromium, type Page } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { inject } from 'vitest';
-import { CHROMIUM_HINT, findChromium } from '../../scripts/chromium.mjs';
+import { CHROMIUM_ARGS, CHROMIUM_HINT, findChromium } from '../../scripts/chromium.mjs';
 
 export const VIEWPORT = { width: 1280, height: 720 };
 
 /** Where screenshot() writes its PNGs (gitignored). */
 export const SCREENSHOT_DIR = join(dirname(fileURLToPath(import.meta.url)), '__screenshots__', 'actual');
-
-// Headless and offline-friendly: without the background-networking flags,
-// Chromium keeps trying to reach Google's hosts, which this network refuses;
-// --no-sandbox because Chromium's sandbox does not run as root (CI is root).
-// WebGL: --disable-gpu leaves WebGL on SwiftShader (software, through ANGLE
-// on Vulkan), which works here for three.js. Chromium has deprecated that
-// automatic fallback and prints a console warning about it unless
-// --enable-unsafe-swiftshader is given; playwright-core passes that flag by
-// default too, but it is named here so the harness does not depend on it.
-const LAUNCH_ARGS = [
-  '--headless',
-  '--no-sandbox',
-  '--disable-gpu',
-  '--enable-unsafe-swiftshader',
-  '--disable-background-networking',
-  '--disable-component-update',
-  '--no-first-run',
-  '--disable-quic',
-  '--disable-sync',
-];
 
 /** One HTTP response the page received. */
 export interface ResponseRecord {
@@ -83,7 +63,7 @@ async function launch(): Promise<Browser> {
   const executablePath = findChromium();
   if (!executablePath) throw new Error(CHROMIUM_HINT);
   // A plain launch: playwright gives each launch a fresh temporary profile.
-  return chromium.launch({ executablePath, args: LAUNCH_ARGS });
+  return chromium.launch({ executablePath, args: CHROMIUM_ARGS });
 }
 
 export interface OpenOptions {
