@@ -8,7 +8,7 @@
  * long path, where the deviation chart shows each bucket's range as a band.
  */
 import type uPlot from 'uplot';
-import type { ChartSeries, Metrics, TraceSummary } from '../core/types.js';
+import type { ChartSeries, TraceSummary } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import { afterNextFrame } from '../main-thread.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
@@ -18,7 +18,6 @@ import { StepChart } from './chart.js';
 export const CHART_POINTS = 2000;
 
 export interface ChartedTrace extends Pick<TraceSummary, 'dims' | 'deviationBound'> {
-  metrics: Pick<Metrics, 'maxDeviation'>;
   series(maxPoints: number): Promise<ChartSeries>;
 }
 
@@ -66,7 +65,10 @@ export class PathCharts {
       deviationSeries.push({ label: 'smallest in bucket', stroke: PALETTE.visited, width: 1 });
       deviationData.push(series.deviationMin);
     }
-    const largest = trace.metrics.maxDeviation;
+    // The series keeps every bucket's peak (ChartSeries), so the largest of
+    // them is the path's largest deviation: a program's metrics, which make
+    // each of its segments again, are not asked for to draw it.
+    const largest = series.deviationMax.reduce((a, b) => Math.max(a, b), 0);
     // The algorithm's promise, as Wang's Fig. 6b draws √2/2: the core states it.
     const bound = trace.deviationBound;
     this.#charts.push(

@@ -1,13 +1,13 @@
 /** What is on screen: the traces the worker holds for the current mode, and what the core said of them. */
 import type { RandomLinesResult } from '../core/index.js';
-import type { RemoteProgram, RemoteTrace } from '../worker/client.js';
+import type { MeasuredTrace, RemoteProgram, RemoteTrace } from '../worker/client.js';
 import type { LearnerCheck, TraceDifference } from '../worker/protocol.js';
 
 export interface Shown {
   /** The trace (trace mode), or the first of two compared. */
-  a?: RemoteTrace;
+  a?: MeasuredTrace;
   /** The second of two compared. */
-  b?: RemoteTrace;
+  b?: MeasuredTrace;
   program?: RemoteProgram;
   difference?: TraceDifference;
   experiment?: RandomLinesResult;

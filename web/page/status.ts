@@ -7,12 +7,12 @@ import type { GcodeProgress } from '../core/index.js';
 import { diagnosticText } from '../form/page-advice.js';
 import { formatPoint } from '../format.js';
 import type { Mode } from '../state/app-state.js';
-import type { RemoteTrace } from '../worker/client.js';
+import type { MeasuredTrace } from '../worker/client.js';
 import type { ProgramRecord } from '../worker/protocol.js';
 import type { Shown } from './shown.js';
 
 /** One trace in a sentence. */
-export function traceStatus(trace: RemoteTrace): string {
+export function traceStatus(trace: MeasuredTrace): string {
   const m = trace.metrics;
   const bound = trace.deviationBound;
   return (

@@ -8,7 +8,7 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ChartSeries, StepClocks, StepDetail, TraceOptions } from '../core/types.js';
+import type { ChartSeries, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 import type {
   InputError,
   LearnerCheck,
@@ -163,11 +163,11 @@ export class TraceClient {
   }
 
   /** Runs a trace in the worker; rejects with InputRejected naming the option at fault. */
-  async trace(options: TraceOptions): Promise<RemoteTrace> {
+  async trace(options: TraceOptions): Promise<MeasuredTrace> {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
     const path = await this.request({ kind: 'trace', traceId, options });
-    return new RemoteTrace(this, traceId, generation, path.summary, path.points, path.idealPolyline);
+    return new MeasuredTrace(this, traceId, generation, path.summary, path.points, path.idealPolyline);
   }
 
   /** Runs a G-code program in the worker, reporting progress after every slice of lines; cancellable. */
@@ -202,7 +202,7 @@ export class TraceClient {
  * step index k runs 0..steps-1 (step k moves point k to point k + 1), as in
  * the core's Trace.
  */
-export interface RemoteTrace extends Readonly<PathSummary> {}
+export interface RemoteTrace extends Readonly<TraceSummary> {}
 export class RemoteTrace {
   /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
   readonly points: Int32Array;
@@ -217,7 +217,7 @@ export class RemoteTrace {
     client: TraceClient,
     traceId: number,
     generation: number,
-    summary: PathSummary,
+    summary: TraceSummary,
     points: Int32Array,
     idealPolyline: Float64Array,
   ) {
@@ -277,6 +277,21 @@ export class RemoteTrace {
   free(): void {
     // A crash while this is on its way takes the trace with it: nothing to report.
     if (this.alive) this.#client.request({ kind: 'free', traceId: this.traceId }).catch(() => undefined);
+  }
+}
+
+/** A trace the worker ran for the page (trace and compare modes), with its metrics, which the status line shows at once. */
+export interface MeasuredTrace extends Readonly<PathSummary> {}
+export class MeasuredTrace extends RemoteTrace {
+  constructor(
+    client: TraceClient,
+    traceId: number,
+    generation: number,
+    summary: PathSummary,
+    points: Int32Array,
+    idealPolyline: Float64Array,
+  ) {
+    super(client, traceId, generation, summary, points, idealPolyline);
   }
 }
 

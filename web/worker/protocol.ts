@@ -78,8 +78,16 @@ export interface TraceDifference {
  */
 export type ProgramRecord = GcodeProgramInfo;
 
-/** A G-code run as the page receives it: the trace's arrays and the program's record. */
-export interface RunProgram extends TracedPath {
+/**
+ * A G-code run as the page receives it: the trace's summary and arrays and
+ * the program's record. Not its metrics: for a program they make each of
+ * its segments again (one per move) and replay it for its ties, several
+ * times the run's own time, and no view of a program shows them.
+ */
+export interface RunProgram {
+  summary: TraceSummary;
+  points: Int32Array;
+  idealPolyline: Float64Array;
   program: ProgramRecord;
 }
 

@@ -18,7 +18,7 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { Trace } from '../core/index.js';
-import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
+import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, RunProgram, TracedPath, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
 const programs = new Map<number, GcodeProgram>();
@@ -44,14 +44,19 @@ interface Answer {
 }
 
 /** The arrays every view needs at once, freshly copied so they can be transferred. */
-function tracedPath(t: Trace): TracedPath {
+function pathOf(t: Trace): Omit<RunProgram, 'program'> {
   // pointsInRange, not the cached `points` getter: a transferred buffer is
   // detached here, and the cache would then hand out an empty array.
   const points = t.pointsInRange(0, t.steps + 1);
   const idealPolyline = t.idealPolyline();
-  // The summary's own fields, as the core declared them, and the metrics,
-  // which the page shows at once, asked of the core here.
-  return { summary: { ...t, metrics: t.metrics }, points, idealPolyline };
+  // The summary's own fields, as the core declared them.
+  return { summary: { ...t }, points, idealPolyline };
+}
+
+/** pathOf, with the metrics, which the page shows at once for a trace (its status line), asked of the core here. */
+function tracedPath(t: Trace): TracedPath {
+  const path = pathOf(t);
+  return { ...path, summary: { ...path.summary, metrics: t.metrics } };
 }
 
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {
@@ -74,7 +79,7 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         });
         traces.set(request.traceId, program.trace);
         programs.set(request.traceId, program);
-        const path = tracedPath(program.trace);
+        const path = pathOf(program.trace);
         // The record's own fields, as the core declared them (the moves are asked for by range).
         const { trace: _trace, ...record } = program;
         return {
