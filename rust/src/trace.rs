@@ -455,6 +455,10 @@ impl MadeSegment {
 /// move records) knows each one's line and stepper without a copy here.
 pub type SegmentMaker = Rc<dyn Fn(usize) -> MadeSegment>;
 
+/// The ideal path of segment `index` alone ([`Trace::with_segment_maker`]),
+/// for a reader that needs no stepper (the whole path's polyline).
+pub type IdealMaker = Rc<dyn Fn(usize) -> IdealPath>;
+
 /// Sentinel of [`Segments::kept_index`]: the segment is made when read.
 const MADE: u32 = u32::MAX;
 
@@ -519,8 +523,9 @@ pub struct Trace {
     /// Position after k * CHECKPOINT_INTERVAL steps.
     positions: Vec<Point>,
     segments: Segments,
-    /// Makes the segments that are made when read.
-    segment_maker: Option<SegmentMaker>,
+    /// Makes the segments that are made when read, and their ideal paths
+    /// alone.
+    segment_maker: Option<(SegmentMaker, IdealMaker)>,
     columns: Vec<Column>,
     /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
     figures: Vec<FigureKind>,
@@ -984,7 +989,7 @@ impl Trace {
         if slot != MADE {
             return SegmentRef::Kept(&self.segments.kept[slot as usize]);
         }
-        let maker = self
+        let (maker, _) = self
             .segment_maker
             .as_ref()
             .expect("a trace with segments made when read has their maker");
@@ -1019,10 +1024,24 @@ impl Trace {
     }
 
     /// This trace with `maker` making its segments run by
-    /// [`TraceBuilder::run_made_when_read`] when they are read.
-    pub fn with_segment_maker(mut self, maker: SegmentMaker) -> Trace {
-        self.segment_maker = Some(maker);
+    /// [`TraceBuilder::run_made_when_read`] when they are read, and `ideal`
+    /// their ideal paths alone, as `maker` makes them.
+    pub fn with_segment_maker(mut self, maker: SegmentMaker, ideal: IdealMaker) -> Trace {
+        self.segment_maker = Some((maker, ideal));
         self
+    }
+
+    /// The ideal path of segment `index`, without making its stepper.
+    fn ideal_of(&self, index: usize) -> IdealPath {
+        let slot = self.segments.kept_index[index];
+        if slot != MADE {
+            return self.segments.kept[slot as usize].ideal.clone();
+        }
+        let (_, ideal) = self
+            .segment_maker
+            .as_ref()
+            .expect("a trace with segments made when read has their maker");
+        ideal(index)
     }
 
     /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
@@ -1552,8 +1571,8 @@ impl Trace {
     pub fn ideal_polyline(&self) -> Vec<f64> {
         let dims = self.dims();
         let mut out: Vec<f64> = Vec::new();
-        for segment in self.segments() {
-            let line = segment.ideal.polyline();
+        for index in 0..self.segments.len() {
+            let line = self.ideal_of(index).polyline();
             let skip =
                 out.len() >= dims && line.len() >= dims && out[out.len() - dims..] == line[..dims];
             out.extend_from_slice(&line[if skip { dims } else { 0 }..]);

@@ -246,6 +246,12 @@ impl StepperVisitor for RunInPlace<'_> {
     }
 }
 
+/// What a segment made when read was stepped as: a circle arc, or a line.
+enum MadePath {
+    Circle(ArcSpec),
+    Line { from: Point, to: Point },
+}
+
 /// Makes a straight move's segment again, measured against its line.
 struct MakeLineSegment {
     from: Point,
@@ -517,10 +523,9 @@ impl MoveRecords {
             - 1
     }
 
-    /// Segment `segment` made again: the straight move or circle arc that
-    /// was stepped in place into it ([`Runner::run_line`],
+    /// What segment `segment` was stepped as in place ([`Runner::run_line`],
     /// [`Runner::run_circle`]), from its record.
-    fn made_segment(&self, segment: usize) -> MadeSegment {
+    fn made_path(&self, segment: usize) -> MadePath {
         let index = self.move_of_segment(segment);
         let r = &self.records[index];
         let (from, to) = (grid_point(self.start_steps(index)), grid_point(r.to_steps));
@@ -532,13 +537,33 @@ impl MoveRecords {
             let center = Point::new(&a.center_steps.expect("an arc not stepped as a line"));
             let spec = ArcSpec::new(from, to, center, a.arc.plane, a.arc.turn, a.turns, false)
                 .expect("it was checked when run");
-            let stepper =
-                circle_arc_stepper(&spec, MAX_STEPS_LIMIT).expect("it was checked when run");
-            return MadeSegment::new(from, IdealPath::Arc(spec.ideal_arc()), stepper);
+            return MadePath::Circle(spec);
         }
-        self.line_stepper
-            .with_stepper(from, to, MakeLineSegment { from, to })
-            .expect("a move stepped by its request keeps its segment")
+        MadePath::Line { from, to }
+    }
+
+    /// Segment `segment` made again, its stepper and its ideal path.
+    fn made_segment(&self, segment: usize) -> MadeSegment {
+        match self.made_path(segment) {
+            MadePath::Circle(spec) => {
+                let stepper =
+                    circle_arc_stepper(&spec, MAX_STEPS_LIMIT).expect("it was checked when run");
+                MadeSegment::new(spec.from, IdealPath::Arc(spec.ideal_arc()), stepper)
+            }
+            MadePath::Line { from, to } => self
+                .line_stepper
+                .with_stepper(from, to, MakeLineSegment { from, to })
+                .expect("a move stepped by its request keeps its segment"),
+        }
+    }
+
+    /// The ideal path of segment `segment`, as [`Self::made_segment`] makes
+    /// it, without its stepper.
+    fn made_ideal(&self, segment: usize) -> IdealPath {
+        match self.made_path(segment) {
+            MadePath::Circle(spec) => IdealPath::Arc(spec.ideal_arc()),
+            MadePath::Line { from, to } => IdealPath::Line { from, to },
+        }
     }
 
     pub fn len(&self) -> usize {
@@ -1403,7 +1428,11 @@ impl Runner {
         moves.records.shrink_to_fit();
         moves.arcs.shrink_to_fit();
         let records = Rc::new(moves);
-        let (notes, segments) = (Rc::clone(&records), Rc::clone(&records));
+        let (notes, segments, ideals) = (
+            Rc::clone(&records),
+            Rc::clone(&records),
+            Rc::clone(&records),
+        );
         let trace = self
             .builder
             .finish(&format!(
@@ -1411,7 +1440,10 @@ impl Runner {
                 self.settings.line_algorithm, self.settings.arc_algorithm
             ))
             .with_note_prefix(Rc::new(move |segment| notes.note_of_segment(segment)))
-            .with_segment_maker(Rc::new(move |segment| segments.made_segment(segment)));
+            .with_segment_maker(
+                Rc::new(move |segment| segments.made_segment(segment)),
+                Rc::new(move |segment| ideals.made_ideal(segment)),
+            );
         let info = ProgramInfo {
             lines: self.lines,
             steps: trace.steps(),
