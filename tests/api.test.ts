@@ -148,6 +148,25 @@ describe('trace (regions)', () => {
     expect(() => t.chartSeries(0)).toThrow(VoxpathError);
   });
 
+  // The page's deviation chart marks the path's largest deviation as the
+  // largest of its series' bucket peaks, and asks no program for its metrics.
+  it("keeps the path's largest deviation among a chart's bucket peaks: a line, a circle and a program", async () => {
+    const program = await runGcode('G1 X12.3 Y4.5 F600\nG2 X15.3 Y7.5 I0 J3\nG1 X1 Y-2 Z0.7\n', { stepsPerMm: 80 });
+    const traces = [
+      await trace({ algorithm: 'regions', from: [0, 0, 0], to: [123457, 34567, -9101] }),
+      await trace({ algorithm: 'circle', from: [3000, 0, 0], to: [3000, 0, 0], center: [0, 0, 0] }),
+      program.trace,
+    ];
+    for (const t of traces) {
+      for (const rows of [7, 2000, t.steps + 1]) {
+        expect(t.chartSeries(rows).deviationMax.reduce((a, b) => Math.max(a, b), 0)).toBe(t.metrics.maxDeviation);
+      }
+    }
+    traces[0]!.free();
+    traces[1]!.free();
+    program.free();
+  });
+
   it('packs each step as step/direction bits that match the points', async () => {
     const t = await trace({ algorithm: 'regions', from: [5, 5, 5], to: [-3, 9, 2] });
     const codes = t.stepCodes(0, t.steps);
