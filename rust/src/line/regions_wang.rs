@@ -462,17 +462,11 @@ impl RegionsWang {
         let mirror = Mirror::new(from, to);
         let divisor = mirror.divisor(gcd);
         let magnitude = [0, 1, 2].map(|a| mirror.reduced(a, divisor));
-        // Found once here (a G-code program sets up a line every move): the
-        // divisor divides every |delta|, so the reduced ones have the same
-        // largest axis, the first of them being Mirror::major.
-        let largest = magnitude[0].max(magnitude[1]).max(magnitude[2]);
-        let reference = if magnitude[0] == largest {
-            0
-        } else if magnitude[1] == largest {
-            1
-        } else {
-            2
-        };
+        // Found once (a G-code program sets up a line every move): the
+        // divisor divides every |delta|, so the reduced ones share the
+        // largest axis.
+        let reference = mirror.major();
+        let largest = magnitude[reference];
         let mut geometry = Geometry {
             active_mask: 0,
             passive: [0; 2],
@@ -520,7 +514,7 @@ impl RegionsWang {
             reference,
             geometry,
             terms: Terms { always, terms },
-            remaining: (largest * divisor) as u64,
+            remaining: mirror.magnitude(reference) as u64,
             tie,
         }
     }
