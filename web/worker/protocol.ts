@@ -53,9 +53,12 @@ export type RequestKind = WorkerRequest['kind'];
  */
 export type PathSummary = TraceSummary & { metrics: Metrics };
 
-/** A finished trace as the page receives it: the summary and the arrays every view needs at once. */
-export interface TracedPath {
-  summary: PathSummary;
+/**
+ * A finished trace as the page receives it: the summary (a trace's with its
+ * metrics, by default) and the arrays every view needs at once.
+ */
+export interface TracedPath<Summary extends TraceSummary = PathSummary> {
+  summary: Summary;
   points: Int32Array;
   idealPolyline: Float64Array;
 }
@@ -84,10 +87,7 @@ export type ProgramRecord = GcodeProgramInfo;
  * its segments again (one per move) and replay it for its ties, several
  * times the run's own time, and no view of a program shows them.
  */
-export interface RunProgram {
-  summary: TraceSummary;
-  points: Int32Array;
-  idealPolyline: Float64Array;
+export interface RunProgram extends TracedPath<TraceSummary> {
   program: ProgramRecord;
 }
 

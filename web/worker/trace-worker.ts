@@ -17,8 +17,8 @@ import {
   traceJsonChunks,
   VoxpathError,
 } from '../core/index.js';
-import type { Trace } from '../core/index.js';
-import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, RunProgram, TracedPath, WorkerRequest } from './protocol.js';
+import type { Trace, TraceSummary } from '../core/index.js';
+import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
 const programs = new Map<number, GcodeProgram>();
@@ -44,7 +44,7 @@ interface Answer {
 }
 
 /** The arrays every view needs at once, freshly copied so they can be transferred. */
-function pathOf(t: Trace): Omit<RunProgram, 'program'> {
+function pathOf(t: Trace): TracedPath<TraceSummary> {
   // pointsInRange, not the cached `points` getter: a transferred buffer is
   // detached here, and the cache would then hand out an empty array.
   const points = t.pointsInRange(0, t.steps + 1);
