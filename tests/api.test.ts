@@ -167,6 +167,33 @@ describe('trace (regions)', () => {
     program.free();
   });
 
+  // The page frames a path with the core's bounds instead of scanning its
+  // points; here they are held to the points' own extremes, on paths whose
+  // box is not their ends' (a circle, a program that comes back).
+  it('bounds every point: per axis, the smallest and largest coordinate, for a line, a circle, a 2D line and a program', async () => {
+    const program = await runGcode('G1 X12.3 Y4.5 F600\nG2 X15.3 Y7.5 I0 J3\nG1 X1 Y-2 Z0.7\nG1 X0 Y0 Z0\n', { stepsPerMm: 80 });
+    const traces = [
+      await trace({ algorithm: 'regions', from: [5, -3, 2], to: [-123457, 34567, -9101] }),
+      await trace({ algorithm: 'circle', from: [3000, 0, 0], to: [3000, 0, 0], center: [0, 0, 0] }),
+      await trace({ algorithm: 'bresenham2d', from: [2 ** 30, -(2 ** 30)], to: [2 ** 30 - 977, -(2 ** 30) + 45] }),
+      program.trace,
+    ];
+    for (const t of traces) {
+      const { points, dims } = t;
+      const axis = (a: number) => points.filter((_, i) => i % dims === a);
+      const extremes = { min: [] as number[], max: [] as number[] };
+      for (let a = 0; a < dims; a++) {
+        extremes.min.push(axis(a).reduce((x, y) => Math.min(x, y)));
+        extremes.max.push(axis(a).reduce((x, y) => Math.max(x, y)));
+      }
+      expect(t.bounds).toEqual(extremes);
+    }
+    // A circle's box is its radius either side of its center, not its ends.
+    expect(traces[1]!.bounds).toEqual({ min: [-3000, -3000, 0], max: [3000, 3000, 0] });
+    for (const t of traces.slice(0, 3)) t.free();
+    program.free();
+  });
+
   it('packs each step as step/direction bits that match the points', async () => {
     const t = await trace({ algorithm: 'regions', from: [5, 5, 5], to: [-3, 9, 2] });
     const codes = t.stepCodes(0, t.steps);

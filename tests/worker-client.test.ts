@@ -53,6 +53,7 @@ const PATH: TracedPath = {
   },
   points: new Int32Array([0, 0, 0, 1, 1, 0]),
   idealPolyline: new Float64Array([0, 0, 0, 1, 1, 0]),
+  bounds: { min: [0, 0, 0], max: [1, 1, 0] },
 };
 
 describe('TraceClient', () => {

@@ -156,6 +156,77 @@ fn by_bits<C: Coordinate, const DIMS: usize>(
     end_point(start, &p)
 }
 
+/// The smallest and the largest coordinate on each axis over `start` and
+/// the point after each of `steps`: the box every point of the path lies
+/// in. The same moves as [`decode`] (a table read per step for 2 to 4
+/// axes), kept in registers rather than written out.
+pub fn bounds(start: &Point, steps: &[Step]) -> (Point, Point) {
+    match start.dims() {
+        2 => bounds_by_table::<2, 16>(&MOVES_2, start, steps),
+        3 => bounds_by_table::<3, 64>(&MOVES_3, start, steps),
+        4 => bounds_by_table::<4, 256>(&MOVES_4, start, steps),
+        1 => bounds_by_bits::<1>(start, steps),
+        5 => bounds_by_bits::<5>(start, steps),
+        _ => bounds_by_bits::<MAX_AXES>(start, steps),
+    }
+}
+
+/// Whether each axis moves one way only over `steps`, or not at all: then
+/// the path's extremes on each axis are at its two ends. An OR of every
+/// code, a few operations a step, where [`bounds`] takes a table read and
+/// a min and max per axis.
+pub fn one_way(steps: &[Step]) -> bool {
+    let (mut forward, mut backward) = (0u16, 0u16);
+    for step in steps {
+        // Bit 8 + a: axis a's move is negative (read only where bit a moves).
+        let negative = step.0 >> 8;
+        forward |= step.0 & !negative;
+        backward |= step.0 & negative;
+    }
+    forward & backward & 0xFF == 0
+}
+
+/// [`bounds`] for 2 to 4 axes: one table read, then an add, a min and a
+/// max on each axis per step.
+#[inline(always)]
+fn bounds_by_table<const DIMS: usize, const ENTRIES: usize>(
+    table: &[[i32; 4]; ENTRIES],
+    start: &Point,
+    steps: &[Step],
+) -> (Point, Point) {
+    let mut p = [0i64; DIMS];
+    p.copy_from_slice(start.coords());
+    let (mut low, mut high) = (p, p);
+    for step in steps {
+        let moves = &table[table_index(step.0, DIMS)];
+        for axis in 0..DIMS {
+            p[axis] += moves[axis] as i64;
+            low[axis] = low[axis].min(p[axis]);
+            high[axis] = high[axis].max(p[axis]);
+        }
+    }
+    (end_point(start, &low), end_point(start, &high))
+}
+
+/// [`bounds`] for 1, 5 or 6 axes: each axis's move from its two bits.
+#[inline(always)]
+fn bounds_by_bits<const DIMS: usize>(start: &Point, steps: &[Step]) -> (Point, Point) {
+    let mut p = [0i64; DIMS];
+    p.copy_from_slice(start.coords());
+    let (mut low, mut high) = (p, p);
+    for step in steps {
+        let code = step.0 as i64;
+        for axis in 0..DIMS {
+            let moved = code >> axis & 1;
+            let negative = code >> (8 + axis) & moved;
+            p[axis] += moved - 2 * negative;
+            low[axis] = low[axis].min(p[axis]);
+            high[axis] = high[axis].max(p[axis]);
+        }
+    }
+    (end_point(start, &low), end_point(start, &high))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -191,6 +262,49 @@ mod tests {
                 assert_eq!(wide, p.coords());
             }
             assert_eq!(end, p);
+        }
+    }
+
+    #[test]
+    fn one_way_is_whether_no_axis_moves_both_ways() {
+        for dims in 1..=MAX_AXES {
+            let codes: Vec<Step> = every_code(dims).collect();
+            for a in &codes {
+                for b in &codes {
+                    let both_ways = (0..dims).any(|axis| a.delta(axis) * b.delta(axis) < 0);
+                    assert_eq!(
+                        one_way(&[*a, *b]),
+                        !both_ways,
+                        "{dims} axes, {a:?} then {b:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn bounds_are_the_extremes_of_the_points_apply_gives() {
+        for dims in 1..=MAX_AXES {
+            let start = Point::new(&[-(1 << 30), 5, 1 << 30, 0, -7, 3][..dims]);
+            // Every code, then every code again in reverse: each axis goes
+            // both ways, so each bound is met in the middle of the path.
+            let mut steps: Vec<Step> = every_code(dims).collect();
+            steps.extend(every_code(dims).collect::<Vec<_>>().into_iter().rev());
+            for len in [0, 1, steps.len() / 3, steps.len()] {
+                let (low, high) = bounds(&start, &steps[..len]);
+                let mut p = start;
+                let (mut want_low, mut want_high) =
+                    (start.coords().to_vec(), start.coords().to_vec());
+                for step in &steps[..len] {
+                    p.apply(*step);
+                    for (axis, &c) in p.coords().iter().enumerate() {
+                        want_low[axis] = want_low[axis].min(c);
+                        want_high[axis] = want_high[axis].max(c);
+                    }
+                }
+                assert_eq!(low.coords(), &want_low[..], "{dims} axes, {len} steps");
+                assert_eq!(high.coords(), &want_high[..], "{dims} axes, {len} steps");
+            }
         }
     }
 }

@@ -1213,6 +1213,36 @@ impl Trace {
         }
     }
 
+    /// The box every point lies in ([`PointBounds`]): one pass over the
+    /// steps, made when asked (the page frames a path with it), not when
+    /// the trace is made.
+    ///
+    /// A stretch between two stored positions on which no axis turns back
+    /// (every stretch of a line) has its extremes at those positions, so
+    /// only an OR of its codes is taken; the others are walked.
+    pub fn bounds(&self) -> PointBounds {
+        let (mut min, mut max) = (self.start.coords().to_vec(), self.start.coords().to_vec());
+        let mut widen = |low: &Point, high: &Point| {
+            for axis in 0..min.len() {
+                min[axis] = min[axis].min(low.get(axis));
+                max[axis] = max[axis].max(high.get(axis));
+            }
+        };
+        for (j, steps) in self.steps.chunks(CHECKPOINT_INTERVAL as usize).enumerate() {
+            // Stretch j runs from position j to position j + 1 (the end, for
+            // a last stretch shorter than the interval).
+            let from = &self.positions[j];
+            if crate::points::one_way(steps) {
+                let to = self.positions.get(j + 1).unwrap_or(&self.end);
+                widen(to, to);
+            } else {
+                let (low, high) = crate::points::bounds(from, steps);
+                widen(&low, &high);
+            }
+        }
+        PointBounds { min, max }
+    }
+
     /// Perpendicular deviation of points `from..to` from the ideal path.
     pub fn deviation_range(&self, from: u64, to: u64) -> Vec<f64> {
         let mut out = Vec::with_capacity((to - from) as usize);
@@ -1477,6 +1507,17 @@ pub struct TraceSummary<'a> {
     pub figures: &'a [FigureKind],
     /// Absent (null) where the algorithm guarantees none.
     pub deviation_bound: Option<&'a DeviationBound>,
+}
+
+/// The box every point of a trace lies in, grid units: on each axis the
+/// smallest and the largest coordinate over point indices 0..=steps
+/// ([`Trace::bounds`]).
+#[derive(Serialize, Tsify, Debug, PartialEq)]
+pub struct PointBounds {
+    /// One coordinate per axis.
+    pub min: Vec<i64>,
+    /// One coordinate per axis.
+    pub max: Vec<i64>,
 }
 
 /// One stretch of a trace produced by one stepper (a line, a chord, a

@@ -247,6 +247,12 @@ impl TraceHandle {
         to_js(self.0.metrics())
     }
 
+    /// The box every point lies in (a pass over the steps on each call).
+    #[wasm_bindgen(unchecked_return_type = "PointBounds")]
+    pub fn bounds(&self) -> JsValue {
+        to_js(&self.0.bounds())
+    }
+
     /// Points with point indices `from..to` (Int32Array, stride dims): the
     /// array is made on the JS side and filled a chunk at a time, each
     /// chunk decoded ([`Trace::points_by_chunk`]) into one buffer of

@@ -3,7 +3,8 @@
 //! i64, as i32 and a chunk at a time) against applying every step to a
 //! point; deviations, per-axis errors and metrics measured incrementally
 //! along line segments (`LineMeter::walk`) against measuring every point on
-//! its own. On random lines of every line algorithm (near +-2^30 too),
+//! its own; the bounds (`points::bounds`) against the replayed points'
+//! extremes. On random lines of every line algorithm (near +-2^30 too),
 //! paths of several line segments, arcs, chorded arcs and helices.
 
 mod common;
@@ -85,6 +86,21 @@ fn check_trace(t: &Trace, range: (u64, u64), chunk: usize) -> Result<(), TestCas
         chunked.extend(points.iter().map(|&c| i64::from(c)));
     });
     prop_assert_eq!(chunked, replayed_points(t, a, b));
+    // The bounds: each axis's extremes over every point replayed.
+    let column = |axis: usize| all.iter().skip(axis).step_by(dims).copied();
+    let bounds = t.bounds();
+    prop_assert_eq!(
+        &bounds.min,
+        &(0..dims)
+            .map(|a| column(a).min().unwrap())
+            .collect::<Vec<_>>()
+    );
+    prop_assert_eq!(
+        &bounds.max,
+        &(0..dims)
+            .map(|a| column(a).max().unwrap())
+            .collect::<Vec<_>>()
+    );
 
     let (deviation, axis_error, metrics) = measured_point_by_point(t);
     prop_assert_eq!(bits(&t.deviation_range(0, n)), bits(&deviation));

@@ -12,7 +12,7 @@ import { argumentError, describeValue, indexRange, wholeNumber } from './guard.j
 import type { StepClocks, TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
-import type { AlgorithmInfo, ChartSeries, DecisionColumns, Metrics, SegmentInfo, StepDetail, TraceOptions, TraceSummary } from './types.js';
+import type { AlgorithmInfo, ChartSeries, DecisionColumns, Metrics, PointBounds, SegmentInfo, StepDetail, TraceOptions, TraceSummary } from './types.js';
 import { loadCore } from './wasm.js';
 
 /**
@@ -73,6 +73,7 @@ export class Trace {
   #deviation?: Float64Array;
   #axisError?: Float64Array;
   #metrics?: Metrics;
+  #bounds?: PointBounds;
   #segments?: SegmentInfo[];
 
   static {
@@ -100,6 +101,17 @@ export class Trace {
     const core = this.#core;
     this.#metrics ??= callCore(() => core.metrics());
     return this.#metrics;
+  }
+
+  /**
+   * The box every point lies in (min and max per axis, grid units), made by
+   * the core on first read from the steps: a view framing the path reads it
+   * rather than scanning the points itself. Not one of the summary's fields.
+   */
+  get bounds(): PointBounds {
+    const core = this.#core;
+    this.#bounds ??= callCore(() => core.bounds());
+    return this.#bounds;
   }
 
   /**

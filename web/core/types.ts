@@ -46,6 +46,7 @@ export type {
   OptionKind,
   OptionSpec,
   PerAxis,
+  PointBounds,
   Reading,
   SignedAxis,
   StepDetail,

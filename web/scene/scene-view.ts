@@ -18,6 +18,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
+import type { PointBounds } from '../core/types.js';
 import { formatPoint } from '../format.js';
 import type { CameraState, Projection } from '../state/app-state.js';
 import { roundCamera } from '../state/query.js';
@@ -102,6 +103,8 @@ export interface DrawnTrace {
   end: number[];
   points: Int32Array;
   idealPolyline: Float64Array;
+  /** The box every point lies in, as the core found it. */
+  bounds: PointBounds;
   /** Per axis, when the grid is a machine's (a G-code program): its axes are labelled in mm. */
   stepsPerMm?: readonly number[];
 }
@@ -139,18 +142,28 @@ function sampleCells(points: Int32Array, dims: number, count: number): THREE.Vec
   return out;
 }
 
-/** The smallest and largest coordinate of the points on each of the first 3 axes (0 for a missing axis). */
-export function pointBounds(points: Int32Array, dims: number): { min: THREE.Vector3; max: THREE.Vector3 } {
-  const min = [Infinity, Infinity, dims > 2 ? Infinity : 0];
-  const max = [-Infinity, -Infinity, dims > 2 ? -Infinity : 0];
-  for (let o = 0; o < points.length; o += dims) {
-    for (let a = 0; a < Math.min(dims, 3); a++) {
+/**
+ * The smallest and largest coordinate of `points` on each axis, as the
+ * core's PointBounds: for points that did not come from the core (a
+ * learner's, the cells a comparison picks out); a trace's come with it.
+ */
+export function pointBounds(points: Int32Array, dims: number): PointBounds {
+  const min = Array.from(points.subarray(0, dims));
+  const max = [...min];
+  for (let o = dims; o < points.length; o += dims) {
+    for (let a = 0; a < dims; a++) {
       const c = points[o + a]!;
       if (c < min[a]!) min[a] = c;
-      if (c > max[a]!) max[a] = c;
+      else if (c > max[a]!) max[a] = c;
     }
   }
-  return { min: new THREE.Vector3(...min), max: new THREE.Vector3(...max) };
+  return { min, max };
+}
+
+/** `bounds` on the scene's three axes: 0 on an axis the path lacks (axes past the third are not drawn). */
+function sceneCorners(bounds: PointBounds): { min: THREE.Vector3; max: THREE.Vector3 } {
+  const corner = (values: readonly number[]) => new THREE.Vector3(values[0] ?? 0, values[1] ?? 0, values[2] ?? 0);
+  return { min: corner(bounds.min), max: corner(bounds.max) };
 }
 
 /**
@@ -341,7 +354,7 @@ export class SceneView {
       this.requestRender();
       return;
     }
-    const { min, max } = pointBounds(trace.points, trace.dims);
+    const { min, max } = sceneCorners(trace.bounds);
     const flat = [0, 1, 2].filter((a) => min.getComponent(a) === max.getComponent(a));
     const planeNormal = trace.dims === 2 ? 2 : flat.length > 0 ? flat[flat.length - 1] : undefined;
     const bounds = new THREE.Box3(min.clone().subScalar(0.5), max.clone().addScalar(0.5));
@@ -463,7 +476,7 @@ export class SceneView {
    * colour: a learner's path mostly runs inside the rule's cells, and the
    * line shows where it goes there.
    */
-  setSecond(trace: Pick<DrawnTrace, 'points' | 'dims'> | undefined, colour: string = PALETTE.second, throughCenters = false): void {
+  setSecond(trace: Pick<DrawnTrace, 'points' | 'dims' | 'bounds'> | undefined, colour: string = PALETTE.second, throughCenters = false): void {
     if (this.#second) {
       this.#scene.remove(this.#second);
       this.#second.dispose();
@@ -479,7 +492,7 @@ export class SceneView {
       this.#scene.add(this.#secondLine);
     }
     if (trace) {
-      const { min, max } = pointBounds(trace.points, trace.dims);
+      const { min, max } = sceneCorners(trace.bounds);
       const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
       this.#second = new VoxelPath(trace.points, trace.dims, bounds, { visited: colour, cellSize: SECOND_PATH_SIZE, onTop: true });
       this.#scene.add(this.#second);
@@ -497,7 +510,7 @@ export class SceneView {
     this.#highlights = highlights
       .filter((h) => h.cells.length > 0)
       .map((h) => {
-        const { min, max } = pointBounds(h.cells, h.dims);
+        const { min, max } = sceneCorners(pointBounds(h.cells, h.dims));
         const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
         const count = h.cells.length / h.dims;
         const light = this.#drawn?.voxels.light ?? false;

@@ -8,7 +8,7 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ChartSeries, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { ChartSeries, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 import type {
   InputError,
   LearnerCheck,
@@ -22,6 +22,7 @@ import type {
   RequestMessage,
   RunProgram,
   TraceDifference,
+  TracedPath,
   WorkerRequest,
 } from './protocol.js';
 
@@ -167,7 +168,7 @@ export class TraceClient {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
     const path = await this.request({ kind: 'trace', traceId, options });
-    return new MeasuredTrace(this, traceId, generation, path.summary, path.points, path.idealPolyline);
+    return new MeasuredTrace(this, traceId, generation, path);
   }
 
   /** Runs a G-code program in the worker, reporting progress after every slice of lines; cancellable. */
@@ -208,25 +209,21 @@ export class RemoteTrace {
   readonly points: Int32Array;
   /** The ideal path as the core draws it, flat with stride dims, grid units. */
   readonly idealPolyline: Float64Array;
+  /** The box every point lies in (min and max per axis, grid units), as the core found it. */
+  readonly bounds: PointBounds;
   readonly #client: TraceClient;
   /** The id the worker holds this trace by. */
   readonly traceId: number;
   readonly #generation: number;
 
-  constructor(
-    client: TraceClient,
-    traceId: number,
-    generation: number,
-    summary: TraceSummary,
-    points: Int32Array,
-    idealPolyline: Float64Array,
-  ) {
+  constructor(client: TraceClient, traceId: number, generation: number, path: TracedPath<TraceSummary>) {
     this.#client = client;
     this.traceId = traceId;
     this.#generation = generation;
-    Object.assign(this, summary);
-    this.points = points;
-    this.idealPolyline = idealPolyline;
+    Object.assign(this, path.summary);
+    this.points = path.points;
+    this.idealPolyline = path.idealPolyline;
+    this.bounds = path.bounds;
   }
 
   /** Point index k as its coordinates (a view into `points`). */
@@ -283,15 +280,8 @@ export class RemoteTrace {
 /** A trace the worker ran for the page (trace and compare modes), with its metrics, which the status line shows at once. */
 export interface MeasuredTrace extends Readonly<PathSummary> {}
 export class MeasuredTrace extends RemoteTrace {
-  constructor(
-    client: TraceClient,
-    traceId: number,
-    generation: number,
-    summary: PathSummary,
-    points: Int32Array,
-    idealPolyline: Float64Array,
-  ) {
-    super(client, traceId, generation, summary, points, idealPolyline);
+  constructor(client: TraceClient, traceId: number, generation: number, path: TracedPath) {
+    super(client, traceId, generation, path);
   }
 }
 
@@ -301,7 +291,7 @@ export class RemoteProgram extends RemoteTrace {
   readonly program: ProgramRecord;
 
   constructor(client: TraceClient, traceId: number, generation: number, run: RunProgram) {
-    super(client, traceId, generation, run.summary, run.points, run.idealPolyline);
+    super(client, traceId, generation, run);
     this.program = run.program;
   }
 

@@ -10,6 +10,7 @@
  * copies:
  * - points: Int32Array, stride dims, one row per point index 0..=steps;
  * - idealPolyline: Float64Array, stride dims, grid units;
+ * - bounds: the core's PointBounds of the points (min and max per axis);
  * - series: see ChartSeries; cells: Int32Array, stride dims;
  * - step instants: Float64Array, seconds, one per step index of the range;
  * - motion charts and step clocks: rows bounded by what the page asks for
@@ -19,7 +20,7 @@
  * StepDetail.
  */
 import type { Check, FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, ChartSeries, Limit, Metrics, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, ChartSeries, Limit, Metrics, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -61,6 +62,8 @@ export interface TracedPath<Summary extends TraceSummary = PathSummary> {
   summary: Summary;
   points: Int32Array;
   idealPolyline: Float64Array;
+  /** The box every point lies in, as the core found it (the view frames the path with it). */
+  bounds: PointBounds;
 }
 
 /**

@@ -50,7 +50,7 @@ function pathOf(t: Trace): TracedPath<TraceSummary> {
   const points = t.pointsInRange(0, t.steps + 1);
   const idealPolyline = t.idealPolyline();
   // The summary's own fields, as the core declared them.
-  return { summary: { ...t }, points, idealPolyline };
+  return { summary: { ...t }, points, idealPolyline, bounds: t.bounds };
 }
 
 /** pathOf, with the metrics, which the page shows at once for a trace (its status line), asked of the core here. */
