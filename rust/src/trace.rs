@@ -1613,10 +1613,12 @@ impl Trace {
         let dims = self.dims();
         let mut out: Vec<f64> = Vec::new();
         for index in 0..self.segments.len() {
-            let line = self.ideal_of(index).polyline();
-            let skip =
-                out.len() >= dims && line.len() >= dims && out[out.len() - dims..] == line[..dims];
-            out.extend_from_slice(&line[if skip { dims } else { 0 }..]);
+            let at = out.len();
+            self.ideal_of(index).polyline_into(&mut out);
+            if at >= dims && out.len() >= at + dims && out[at - dims..at] == out[at..at + dims] {
+                out.copy_within(at + dims.., at);
+                out.truncate(out.len() - dims);
+            }
         }
         out
     }

@@ -50,6 +50,7 @@ use crate::text::split_line;
 use crate::trace::{MadeSegment, Stepper, Trace, TraceBuilder};
 use serde::Serialize;
 use serde_json::{Map, Value};
+use std::cell::Cell;
 use std::f64::consts::TAU;
 use std::rc::Rc;
 use tsify::Tsify;
@@ -471,6 +472,9 @@ pub struct MoveRecords {
     spans: Rc<MoveSpans>,
     /// Trace segments of all the moves: where the last move's end.
     segments: u32,
+    /// The move [`Self::move_of_segment`] found last: a reader going through
+    /// the segments in order finds the next one there or just after it.
+    last_found: Cell<usize>,
 }
 
 fn grid_point(c: [i32; MACHINE_AXES]) -> Point {
@@ -488,6 +492,7 @@ impl MoveRecords {
             steps_per_mm: settings.machine.steps_per_mm(),
             spans: Rc::default(),
             segments: 0,
+            last_found: Cell::new(0),
         }
     }
 
@@ -517,10 +522,25 @@ impl MoveRecords {
 
     /// The move whose steps trace segment `segment` holds (moves are in
     /// segment order, each with at least one segment).
+    ///
+    /// The move found last is tried first, then the one after it: a reader
+    /// of every segment in order (the whole path's polyline, the metrics)
+    /// would otherwise pay a binary search over every record, a cache miss
+    /// at each probe, for each segment.
     fn move_of_segment(&self, segment: usize) -> usize {
-        self.records
-            .partition_point(|r| r.first_segment as usize <= segment)
-            - 1
+        let holds = |index: usize| self.segments_of(index).contains(&segment);
+        let last = self.last_found.get();
+        let index = if last < self.records.len() && holds(last) {
+            last
+        } else if last + 1 < self.records.len() && holds(last + 1) {
+            last + 1
+        } else {
+            self.records
+                .partition_point(|r| r.first_segment as usize <= segment)
+                - 1
+        };
+        self.last_found.set(index);
+        index
     }
 
     /// What segment `segment` was stepped as in place ([`Runner::run_line`],
@@ -1588,6 +1608,31 @@ mod tests {
             let fast = run_with(&source, &settings, false);
             let slow = run_with(&source, &settings, true);
             prop_assert_eq!(seen(&fast), seen(&slow));
+        }
+
+        /// The move of a segment, looked up in any order (so the move found
+        /// last is sometimes the right one, sometimes the one before, and
+        /// sometimes far off), is the one a search of the records finds:
+        /// moves of one segment, of many (chords, helices) and of none.
+        #[test]
+        fn the_move_of_a_segment_is_found_in_any_order(
+            lines in prop::collection::vec(program_line(), 1..12),
+            arc in prop::sample::select(ARC_ALGORITHMS),
+            order in prop::collection::vec(any::<prop::sample::Index>(), 1..64),
+        ) {
+            let source = format!("{}\nG1 X0 Y0 Z0\nG1 X0 Y0 Z0", lines.join("\n"));
+            let settings = format!(r#"{{"stepsPerMm": 10, "arcAlgorithm": "{arc}"}}"#);
+            let p = run_with(&source, &settings, false);
+            let records = &p.records;
+            let segments = records.segments as usize;
+            prop_assume!(segments > 0);
+            let searched = |segment: usize| {
+                records.records.partition_point(|r| r.first_segment as usize <= segment) - 1
+            };
+            let in_order = (0..segments).chain(order.iter().map(|i| i.index(segments)));
+            for segment in in_order {
+                prop_assert_eq!(records.move_of_segment(segment), searched(segment), "segment {}", segment);
+            }
         }
     }
 }

@@ -120,19 +120,27 @@ impl ArcPath {
         c
     }
 
-    /// Vertices for drawing: `height(t)` gives the height at fraction t.
-    fn polyline_with(&self, height: impl Fn(f64) -> f64) -> Vec<f64> {
+    /// Vertices for drawing, appended to `out`: `height(t)` gives the
+    /// height at fraction t.
+    fn polyline_with(&self, out: &mut Vec<f64>, height: impl Fn(f64) -> f64) {
         let segments = (self.sweep_rad.abs() / self.draw_step_rad).ceil().max(1.0) as usize;
-        let mut out = Vec::with_capacity((segments + 1) * 3);
+        out.reserve((segments + 1) * 3);
         for i in 0..=segments {
             let t = i as f64 / segments as f64;
             out.extend_from_slice(&self.point_at(self.start_rad + self.sweep_rad * t, height(t)));
         }
-        out
     }
 
-    pub fn polyline(&self) -> Vec<f64> {
-        self.polyline_with(|_| 0.0)
+    /// Vertices for drawing (stride 3), appended to `out`.
+    pub fn polyline_into(&self, out: &mut Vec<f64>) {
+        self.polyline_with(out, |_| 0.0)
+    }
+
+    #[cfg(test)]
+    fn polyline(&self) -> Vec<f64> {
+        let mut out = Vec::new();
+        self.polyline_into(&mut out);
+        out
     }
 
     pub fn info(&self) -> IdealPathInfo {
@@ -319,9 +327,10 @@ impl HelixPath {
         phi
     }
 
-    pub fn polyline(&self) -> Vec<f64> {
+    /// Vertices for drawing (stride 3), appended to `out`.
+    pub fn polyline_into(&self, out: &mut Vec<f64>) {
         self.arc
-            .polyline_with(|t| self.start_height + self.rise * t)
+            .polyline_with(out, |t| self.start_height + self.rise * t)
     }
 
     pub fn info(&self) -> IdealPathInfo {

@@ -59,17 +59,15 @@ impl IdealPath {
         self.meter().axis_error(p, step, steps)
     }
 
-    /// Points along the ideal path for drawing, flat with stride `dims`.
-    pub fn polyline(&self) -> Vec<f64> {
+    /// Points along the ideal path for drawing, flat with stride `dims`,
+    /// appended to `out` (a whole path's polyline is one array).
+    pub fn polyline_into(&self, out: &mut Vec<f64>) {
         match self {
-            IdealPath::Line { from, to } => from
-                .coords()
-                .iter()
-                .chain(to.coords())
-                .map(|&c| c as f64)
-                .collect(),
-            IdealPath::Arc(arc) => arc.polyline(),
-            IdealPath::Helix(helix) => helix.polyline(),
+            IdealPath::Line { from, to } => {
+                out.extend(from.coords().iter().chain(to.coords()).map(|&c| c as f64))
+            }
+            IdealPath::Arc(arc) => arc.polyline_into(out),
+            IdealPath::Helix(helix) => helix.polyline_into(out),
         }
     }
 }
