@@ -36,8 +36,10 @@ export const NEAR_CELLS = 2_000;
 /** Rows of `points` (stride dims) in reverse order. */
 function reversed(points: Int32Array, dims: number): Int32Array {
   const out = new Int32Array(points.length);
-  const count = points.length / dims;
-  for (let k = 0; k < count; k++) out.set(points.subarray(k * dims, (k + 1) * dims), (count - 1 - k) * dims);
+  // Value by value: a subarray and a set per row cost several times the copy.
+  for (let from = 0, to = points.length - dims; from < points.length; from += dims, to -= dims) {
+    for (let a = 0; a < dims; a++) out[to + a] = points[from + a]!;
+  }
   return out;
 }
 
@@ -45,7 +47,9 @@ function reversed(points: Int32Array, dims: number): Int32Array {
 function sampled(points: Int32Array, dims: number, every: number): Int32Array {
   const rows = Math.ceil(points.length / dims / every);
   const out = new Int32Array(rows * dims);
-  for (let r = 0; r < rows; r++) out.set(points.subarray(r * every * dims, (r * every + 1) * dims), r * dims);
+  for (let r = 0; r < rows; r++) {
+    for (let a = 0; a < dims; a++) out[r * dims + a] = points[r * every * dims + a]!;
+  }
   return out;
 }
 
