@@ -233,40 +233,72 @@ impl Stepper for Greedy {
     }
 }
 
+/// Rounds of a level written by one copy in [`Greedy::fill_axes`].
+const ROUNDS_PER_BLOCK: usize = 64;
+
 impl Greedy {
     /// [`Stepper::fill`] for `DIMS` axes: the same choices as
-    /// [`Stepper::next_step`] without the squared
-    /// distances: a step along `axis` turns l^2 into (l - 1)^2, changing the
-    /// sum by 1 - 2l, so the candidate nearest the goal is the axis with the
-    /// most units left (ties in the same order). No i128, no decision.
+    /// [`Stepper::next_step`] without the squared distances, a run at a
+    /// time. A step along `axis` turns l^2 into (l - 1)^2, changing the sum
+    /// by 1 - 2l, so the candidate nearest the goal is the axis with the
+    /// most units left, ties going in the order's turn. So the path is
+    /// levels: the axes with the most left (one at first) each step once
+    /// per round, in tie order, and after as many rounds as their lead over
+    /// the next axis, that axis joins them; an axis at its goal is no
+    /// candidate. Each level's rounds are written as one repeated pattern,
+    /// with no comparison per step.
     #[inline(always)]
     fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
-        let out = &mut out[..taken];
         let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
-        // A local copy: the loop keeps it in registers, not in `self`.
+        // The axes in the order a tie goes: the lower axis first, or the higher.
+        let tie_order: [usize; DIMS] = std::array::from_fn(|k| match self.order {
+            TieAxis::Lower => k,
+            TieAxis::Higher => DIMS - 1 - k,
+        });
         let start = self.left;
         let mut left = start;
-        // A later axis wins a tie with the higher-axis order: "at least"
-        // rather than "more than", a + 1 on the left of the comparison.
-        let ties_to_later = i64::from(self.order == TieAxis::Higher);
-        for slot in out.iter_mut() {
-            let (mut chosen, mut most_left) = (0, 0);
-            for axis in 0..DIMS {
-                let l = left[axis];
-                // An axis at its goal is no candidate (the half-plane trick);
-                // a larger l is a smaller distance. Selects, not branches:
-                // which axis wins is as good as random to a branch predictor.
-                let take = (l > 0) & (l + ties_to_later > most_left);
-                chosen = if take { axis } else { chosen };
-                most_left = if take { l } else { most_left };
+        let mut written = 0;
+        while written < taken {
+            // Within `taken` <= remaining, some axis has units left.
+            let most = (0..DIMS).map(|a| left[a]).max().unwrap_or(0);
+            debug_assert!(most > 0, "steps remain, so some axis has units left");
+            let below = (0..DIMS)
+                .map(|a| left[a])
+                .filter(|&l| l < most)
+                .max()
+                .unwrap_or(0);
+            let mut round = [Step::NONE; DIMS];
+            let mut leaders = [0usize; DIMS];
+            let mut count = 0;
+            for &axis in &tie_order {
+                if left[axis] == most {
+                    round[count] = toward[axis];
+                    leaders[count] = axis;
+                    count += 1;
+                }
             }
-            // Every axis by a select, not the chosen one by its index: the
-            // counts stay in registers instead of going through memory.
-            for axis in 0..DIMS {
-                left[axis] -= i64::from(axis == chosen);
+            // Rounds until the leaders are down to the next axis's units
+            // left (or to their goal); the last may be cut short by `out`.
+            let run = ((most - below) as usize)
+                .saturating_mul(count)
+                .min(taken - written);
+            // Whole rounds a block at a time (a copy of a few steps per round
+            // costs more than its steps).
+            let mut block = [Step::NONE; ROUNDS_PER_BLOCK * MAX_AXES];
+            let block = &mut block[..ROUNDS_PER_BLOCK * count];
+            for slots in block.chunks_exact_mut(count) {
+                slots.copy_from_slice(&round[..count]);
             }
-            *slot = toward[chosen];
+            for slots in out[written..written + run].chunks_mut(block.len()) {
+                slots.copy_from_slice(&block[..slots.len()]);
+            }
+            // A leader steps once per whole round, and once more if the cut
+            // round reached it (the cut round takes them in tie order).
+            for (k, &axis) in leaders[..count].iter().enumerate() {
+                left[axis] -= (run / count + usize::from(k < run % count)) as i64;
+            }
+            written += run;
         }
         self.left = left;
         self.remaining -= taken as u64;
