@@ -19,6 +19,12 @@ pub trait Coordinate: Copy + Default + std::ops::AddAssign {
     fn from_i32(v: i32) -> Self;
     fn from_i64(v: i64) -> Self;
     fn to_i64(self) -> i64;
+
+    /// [`decode`] on 2 axes: by the table, unless the type has a faster way.
+    #[inline(always)]
+    fn decode_pairs(start: &Point, steps: &[Step], out: &mut [Self]) -> Point {
+        by_table::<Self, 2, 16>(&MOVES_2, start, steps, out)
+    }
 }
 
 impl Coordinate for i32 {
@@ -34,6 +40,11 @@ impl Coordinate for i32 {
     #[inline(always)]
     fn to_i64(self) -> i64 {
         self as i64
+    }
+
+    #[inline(always)]
+    fn decode_pairs(start: &Point, steps: &[Step], out: &mut [i32]) -> Point {
+        by_packed_pairs(start, steps, out)
     }
 }
 
@@ -82,6 +93,18 @@ const fn move_table<const DIMS: usize, const ENTRIES: usize>() -> [[i32; 4]; ENT
 }
 
 static MOVES_2: [[i32; 4]; 16] = move_table::<2, 16>();
+
+/// [`MOVES_2`] as one number per move, dy·2^32 + dx: what a step adds to a
+/// point held as one u64 ([`by_packed_pairs`]).
+static PACKED_MOVES_2: [i64; 16] = {
+    let mut packed = [0i64; 16];
+    let mut index = 0;
+    while index < 16 {
+        packed[index] = MOVES_2[index][1] as i64 * (1 << 32) + MOVES_2[index][0] as i64;
+        index += 1;
+    }
+    packed
+};
 static MOVES_3: [[i32; 4]; 64] = move_table::<3, 64>();
 static MOVES_4: [[i32; 4]; 256] = move_table::<4, 256>();
 
@@ -91,7 +114,7 @@ static MOVES_4: [[i32; 4]; 256] = move_table::<4, 256>();
 pub fn decode<C: Coordinate>(start: &Point, steps: &[Step], out: &mut [C]) -> Point {
     assert_eq!(out.len(), steps.len() * start.dims(), "one row per step");
     match start.dims() {
-        2 => by_table::<C, 2, 16>(&MOVES_2, start, steps, out),
+        2 => C::decode_pairs(start, steps, out),
         3 => by_table::<C, 3, 64>(&MOVES_3, start, steps, out),
         4 => by_table::<C, 4, 256>(&MOVES_4, start, steps, out),
         1 => by_bits::<C, 1>(start, steps, out),
@@ -120,6 +143,31 @@ fn by_table<C: Coordinate, const DIMS: usize, const ENTRIES: usize>(
         row.copy_from_slice(&p[..DIMS]);
     }
     end_point(start, &p[..DIMS])
+}
+
+/// [`decode`] on 2 axes into i32: the point is one u64, x + 2^31 in its low
+/// half and y + 2^31 in its high half, so a step is one add of its packed
+/// move and a row one 8-byte write (the halves with their top bits flipped
+/// are x and y as i32). Every trace coordinate is within +-2^30, so each
+/// half stays within 2^30..3·2^30 and a move never carries into the other.
+#[inline(always)]
+fn by_packed_pairs(start: &Point, steps: &[Step], out: &mut [i32]) -> Point {
+    const OFFSET: i64 = 1 << 31;
+    const FLIP: u64 = 0x8000_0000_8000_0000;
+    let half = |axis: usize| {
+        let c = start.get(axis);
+        debug_assert!(c.unsigned_abs() <= 1 << 30, "coordinate {c} past 2^30");
+        (c + OFFSET) as u64
+    };
+    let mut p = half(1) << 32 | half(0);
+    for (step, row) in steps.iter().zip(out.chunks_exact_mut(2)) {
+        p = p.wrapping_add(PACKED_MOVES_2[table_index(step.0, 2)] as u64);
+        let xy = p ^ FLIP;
+        row[0] = xy as u32 as i32;
+        row[1] = (xy >> 32) as u32 as i32;
+    }
+    let xy = p ^ FLIP;
+    end_point(start, &[xy as u32 as i32, (xy >> 32) as u32 as i32])
 }
 
 /// `start` moved to `coords`.
