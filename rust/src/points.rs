@@ -205,10 +205,11 @@ fn by_bits<C: Coordinate, const DIMS: usize>(
 }
 
 /// The smallest and the largest coordinate on each axis over `start` and
-/// the point after each of `steps`: the box every point of the path lies
-/// in. The same moves as [`decode`] (a table read per step for 2 to 4
-/// axes), kept in registers rather than written out.
-pub fn bounds(start: &Point, steps: &[Step]) -> (Point, Point) {
+/// the point after each of `steps` (the box every point of the path lies
+/// in), and the last of those points. The same moves as [`decode`] (a
+/// table read per step for 2 to 4 axes), kept in registers rather than
+/// written out.
+pub fn bounds(start: &Point, steps: &[Step]) -> (Point, Point, Point) {
     match start.dims() {
         2 => bounds_by_table::<2, 16>(&MOVES_2, start, steps),
         3 => bounds_by_table::<3, 64>(&MOVES_3, start, steps),
@@ -241,7 +242,7 @@ fn bounds_by_table<const DIMS: usize, const ENTRIES: usize>(
     table: &[[i32; 4]; ENTRIES],
     start: &Point,
     steps: &[Step],
-) -> (Point, Point) {
+) -> (Point, Point, Point) {
     let mut p = [0i64; DIMS];
     p.copy_from_slice(start.coords());
     let (mut low, mut high) = (p, p);
@@ -253,12 +254,16 @@ fn bounds_by_table<const DIMS: usize, const ENTRIES: usize>(
             high[axis] = high[axis].max(p[axis]);
         }
     }
-    (end_point(start, &low), end_point(start, &high))
+    (
+        end_point(start, &low),
+        end_point(start, &high),
+        end_point(start, &p),
+    )
 }
 
 /// [`bounds`] for 1, 5 or 6 axes: each axis's move from its two bits.
 #[inline(always)]
-fn bounds_by_bits<const DIMS: usize>(start: &Point, steps: &[Step]) -> (Point, Point) {
+fn bounds_by_bits<const DIMS: usize>(start: &Point, steps: &[Step]) -> (Point, Point, Point) {
     let mut p = [0i64; DIMS];
     p.copy_from_slice(start.coords());
     let (mut low, mut high) = (p, p);
@@ -272,7 +277,11 @@ fn bounds_by_bits<const DIMS: usize>(start: &Point, steps: &[Step]) -> (Point, P
             high[axis] = high[axis].max(p[axis]);
         }
     }
-    (end_point(start, &low), end_point(start, &high))
+    (
+        end_point(start, &low),
+        end_point(start, &high),
+        end_point(start, &p),
+    )
 }
 
 #[cfg(test)]
@@ -339,7 +348,7 @@ mod tests {
             let mut steps: Vec<Step> = every_code(dims).collect();
             steps.extend(every_code(dims).collect::<Vec<_>>().into_iter().rev());
             for len in [0, 1, steps.len() / 3, steps.len()] {
-                let (low, high) = bounds(&start, &steps[..len]);
+                let (low, high, end) = bounds(&start, &steps[..len]);
                 let mut p = start;
                 let (mut want_low, mut want_high) =
                     (start.coords().to_vec(), start.coords().to_vec());
@@ -350,6 +359,7 @@ mod tests {
                         want_high[axis] = want_high[axis].max(c);
                     }
                 }
+                assert_eq!(end, p, "{dims} axes, {len} steps");
                 assert_eq!(low.coords(), &want_low[..], "{dims} axes, {len} steps");
                 assert_eq!(high.coords(), &want_high[..], "{dims} axes, {len} steps");
             }

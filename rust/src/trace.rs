@@ -1217,9 +1217,11 @@ impl Trace {
     /// steps, made when asked (the page frames a path with it), not when
     /// the trace is made.
     ///
-    /// A stretch between two stored positions on which no axis turns back
-    /// (every stretch of a line) has its extremes at those positions, so
-    /// only an OR of its codes is taken; the others are walked.
+    /// The steps are taken in stretches that end at each segment's start
+    /// and at each stored position. A stretch on which no axis turns back
+    /// (a line, a G-code move, an arc's octant) has its extremes at its
+    /// ends, so only an OR of its codes is taken, and its displacement
+    /// where its end is not stored; the others are walked.
     pub fn bounds(&self) -> PointBounds {
         let (mut min, mut max) = (self.start.coords().to_vec(), self.start.coords().to_vec());
         let mut widen = |low: &Point, high: &Point| {
@@ -1228,17 +1230,38 @@ impl Trace {
                 max[axis] = max[axis].max(high.get(axis));
             }
         };
-        for (j, steps) in self.steps.chunks(CHECKPOINT_INTERVAL as usize).enumerate() {
-            // Stretch j runs from position j to position j + 1 (the end, for
-            // a last stretch shorter than the interval).
-            let from = &self.positions[j];
-            if crate::points::one_way(steps) {
-                let to = self.positions.get(j + 1).unwrap_or(&self.end);
-                widen(to, to);
-            } else {
-                let (low, high) = crate::points::bounds(from, steps);
-                widen(&low, &high);
+        let steps = self.steps();
+        let mut position = self.start;
+        let (mut from, mut segment) = (0, 0);
+        while from < steps {
+            while segment < self.segments.len() && self.segments.steps.span(segment).0 <= from {
+                segment += 1;
             }
+            let next_segment = if segment < self.segments.len() {
+                self.segments.steps.span(segment).0
+            } else {
+                steps
+            };
+            let next_position = (from / CHECKPOINT_INTERVAL + 1) * CHECKPOINT_INTERVAL;
+            let to = next_segment.min(next_position).min(steps);
+            let stretch = self.step_range(from, to);
+            if crate::points::one_way(stretch) {
+                position = if to % CHECKPOINT_INTERVAL == 0 {
+                    self.positions[(to / CHECKPOINT_INTERVAL) as usize]
+                } else if to == steps {
+                    self.end
+                } else {
+                    let mut end = position;
+                    end.displace(&displacement(stretch));
+                    end
+                };
+                widen(&position, &position);
+            } else {
+                let (low, high, end) = crate::points::bounds(&position, stretch);
+                widen(&low, &high);
+                position = end;
+            }
+            from = to;
         }
         PointBounds { min, max }
     }

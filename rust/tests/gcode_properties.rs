@@ -94,6 +94,13 @@ proptest! {
         let p = run(&source, settings);
         let moves = p.moves();
         prop_assert_eq!(moves.len(), p.info.move_count);
+        // The bounds, taken by stretches between the moves' starts: each
+        // axis's extremes over every point.
+        let points = p.trace.points_flat(0, p.trace.steps() + 1);
+        let column = |axis: usize| points.iter().skip(axis).step_by(3).copied();
+        let bounds = p.trace.bounds();
+        prop_assert_eq!(bounds.min, (0..3).map(|a| column(a).min().unwrap()).collect::<Vec<_>>());
+        prop_assert_eq!(bounds.max, (0..3).map(|a| column(a).max().unwrap()).collect::<Vec<_>>());
         let mut next_step = 0;
         let mut next_segment = 0;
         for (index, m) in moves.iter().enumerate() {
