@@ -158,7 +158,7 @@ function wasmTools() {
 /** web/core/pkg, rebuilt when the crate's sources, manifest or lockfile change. */
 function wasmPackage() {
   const key = () => hashInputs(
-    [join(CRATE, 'Cargo.toml'), join(CRATE, 'Cargo.lock'), join(CRATE, 'build.rs'), ...listFiles(join(CRATE, 'src'))],
+    [join(CRATE, 'Cargo.toml'), join(CRATE, 'Cargo.lock'), join(CRATE, 'build.rs'), join(CRATE, '.cargo', 'config.toml'), ...listFiles(join(CRATE, 'src'))],
     [...WASM_PACK_ARGS, pinnedWasmBindgen()],
   );
   const built = existsSync(join(PKG, 'voxpath.js')) && existsSync(join(PKG, 'voxpath_bg.wasm'));

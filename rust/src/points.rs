@@ -135,13 +135,29 @@ fn by_table<C: Coordinate, const DIMS: usize, const ENTRIES: usize>(
     for axis in 0..DIMS {
         p[axis] = C::from_i64(start.get(axis));
     }
-    for (step, row) in steps.iter().zip(out.chunks_exact_mut(DIMS)) {
+    // Every row but the last is written with all four lanes, the lanes
+    // past DIMS landing on the next row's first values, which that row's
+    // write then replaces: one four-wide store instead of DIMS narrow ones.
+    let Some((last, body)) = steps.split_last() else {
+        return *start;
+    };
+    assert!(DIMS >= 2 && out.len() == steps.len() * DIMS);
+    let base = out.as_mut_ptr();
+    for (k, step) in body.iter().enumerate() {
         let moves = &table[table_index(step.0, DIMS)];
         for lane in 0..4 {
             p[lane] += C::from_i32(moves[lane]);
         }
-        row.copy_from_slice(&p[..DIMS]);
+        // SAFETY: k <= steps.len() - 2, so row k's four lanes end at
+        // k·DIMS + 4 <= steps.len()·DIMS = out.len() (DIMS >= 2, asserted
+        // above); `out` is borrowed mutably and not otherwise touched here.
+        unsafe { base.add(k * DIMS).cast::<[C; 4]>().write_unaligned(p) };
     }
+    let moves = &table[table_index(last.0, DIMS)];
+    for lane in 0..4 {
+        p[lane] += C::from_i32(moves[lane]);
+    }
+    out[body.len() * DIMS..].copy_from_slice(&p[..DIMS]);
     end_point(start, &p[..DIMS])
 }
 
