@@ -43,7 +43,7 @@ function render(group) {
     row.name,
     row.steps.toLocaleString('en-US'),
     ...rateColumns.map((c) => (row.rates[c] === undefined ? '-' : rateText(row.rates[c]))),
-    ...ratioColumns.map((c) => (row.ratios?.[c] === undefined ? '-' : `${row.ratios[c].toFixed(1)}x`)),
+    ...ratioColumns.map((c) => (row.ratios?.[c] === undefined ? '-' : `${row.ratios[c].toFixed(2)}x`)),
   ]);
   const widths = header.map((h, i) => Math.max(h.length, ...body.map((r) => r[i].length)));
   const line = (/** @type {string[]} */ r) => r.map((cell, i) => (i === 0 ? cell.padEnd(widths[i]) : cell.padStart(widths[i]))).join('  ');
