@@ -259,36 +259,36 @@ fn bounds_by_table<const DIMS: usize, const ENTRIES: usize>(
     start: &Point,
     steps: &[Step],
 ) -> (Point, Point, Point) {
-    let mut p = [0i64; DIMS];
-    p.copy_from_slice(start.coords());
-    let (mut low, mut high) = (p, p);
-    for step in steps {
-        let moves = &table[table_index(step.0, DIMS)];
-        for axis in 0..DIMS {
-            p[axis] += moves[axis] as i64;
-            low[axis] = low[axis].min(p[axis]);
-            high[axis] = high[axis].max(p[axis]);
-        }
-    }
-    (
-        end_point(start, &low),
-        end_point(start, &high),
-        end_point(start, &p),
-    )
+    bounds_by_move::<DIMS>(start, steps, |code, axis| {
+        table[table_index(code, DIMS)][axis] as i64
+    })
 }
 
 /// [`bounds`] for 1, 5 or 6 axes: each axis's move from its two bits.
 #[inline(always)]
 fn bounds_by_bits<const DIMS: usize>(start: &Point, steps: &[Step]) -> (Point, Point, Point) {
+    bounds_by_move::<DIMS>(start, steps, |code, axis| {
+        let code = code as i64;
+        let moved = code >> axis & 1;
+        let negative = code >> (8 + axis) & moved;
+        moved - 2 * negative
+    })
+}
+
+/// [`bounds`] with the move of a step's code on an axis given by
+/// `move_on(code, axis)`: an add, a min and a max on each axis per step.
+#[inline(always)]
+fn bounds_by_move<const DIMS: usize>(
+    start: &Point,
+    steps: &[Step],
+    move_on: impl Fn(u16, usize) -> i64,
+) -> (Point, Point, Point) {
     let mut p = [0i64; DIMS];
     p.copy_from_slice(start.coords());
     let (mut low, mut high) = (p, p);
     for step in steps {
-        let code = step.0 as i64;
         for axis in 0..DIMS {
-            let moved = code >> axis & 1;
-            let negative = code >> (8 + axis) & moved;
-            p[axis] += moved - 2 * negative;
+            p[axis] += move_on(step.0, axis);
             low[axis] = low[axis].min(p[axis]);
             high[axis] = high[axis].max(p[axis]);
         }
