@@ -40,6 +40,32 @@ const LINES_ND = [
   [3, 1, 4, 1, 5, 9],
 ].flatMap((m) => moves(m.map(() => 0), m).slice(0, 8));
 
+/**
+ * `count` lines of `dims` axes drawn from a fixed seed (mulberry32): each
+ * axis's delta up to `longest` either way, from a start anywhere within
+ * +-2^30 that keeps the end within it. Long enough for the core's recording
+ * loops to run their two chains (from 256 steps a line) and its wasm build's
+ * vector path, with the large coordinates a machine's field can have.
+ */
+function randomLines(seed: number, count: number, dims: number, longest: number): ReferenceOptions[] {
+  let state = seed >>> 0;
+  const next = (): number => {
+    state = (state + 0x6d2b79f5) >>> 0;
+    let t = state;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 2 ** 32;
+  };
+  const limit = 2 ** 30 - longest;
+  return Array.from({ length: count }, () => {
+    const from = Array.from({ length: dims }, () => Math.round((2 * next() - 1) * limit));
+    return { from, to: from.map((c) => c + Math.round((2 * next() - 1) * longest)) };
+  });
+}
+const RANDOM_3D = randomLines(13, 24, 3, 20_000);
+const RANDOM_2D = randomLines(17, 24, 2, 20_000);
+const RANDOM_ND = [4, 5, 6].flatMap((dims) => randomLines(19 + dims, 8, dims, 5_000));
+
 /** An arc given in plane coordinates, in every plane and both directions. */
 function everyPlane(from: number[], to: number[], center: number[], extra: Record<string, unknown> = {}): ReferenceOptions[] {
   return PLANES.flatMap((plane) =>
@@ -74,14 +100,14 @@ const HELICES: ReferenceOptions[] = [
 ];
 
 const CASES: [string, ReferenceOptions[]][] = [
-  ['regions', LINES_3D],
-  ['bresenham3d', LINES_3D],
-  ['nd', [...LINES_3D, ...LINES_2D, ...LINES_ND]],
+  ['regions', [...LINES_3D, ...RANDOM_3D]],
+  ['bresenham3d', [...LINES_3D, ...RANDOM_3D]],
+  ['nd', [...LINES_3D, ...LINES_2D, ...LINES_ND, ...RANDOM_3D, ...RANDOM_2D, ...RANDOM_ND]],
   ['liu-float', LINES_3D],
   ['greedy', [...LINES_3D, ...LINES_2D, ...LINES_ND]],
   ['walk6', [...LINES_3D, ...LINES_2D, ...LINES_ND]],
   ['dda', [...LINES_3D, ...LINES_2D, ...LINES_ND]],
-  ['bresenham2d', LINES_2D],
+  ['bresenham2d', [...LINES_2D, ...RANDOM_2D]],
   ['circle', ARCS],
   ['arc-segments', [...ARCS, ...ARCS.map((a) => ({ ...a, segmentLength: 3 }))]],
   ['helix', [...HELICES, ...HELICES.map((h) => ({ ...h, method: 'segments', tolerance: 0.25 }))]],
