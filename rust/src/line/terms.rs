@@ -222,33 +222,17 @@ impl<const N: usize> Terms<N> {
 
     /// The two chains side by side: chain 0 records `first` from the values
     /// `lanes[0]`, chain 1 `second` from `lanes[1]`, a step of each in turn.
-    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
-    #[inline(always)]
-    fn fill_chains(
-        always: u16,
-        terms: &[Term; N],
-        lanes: &mut [[i64; N]; LANES],
-        first: &mut [Step],
-        second: &mut [Step],
-    ) {
-        let [a, b] = lanes;
-        for (s0, s1) in first.iter_mut().zip(second) {
-            *s0 = Self::advance(always, terms, a);
-            *s1 = Self::advance(always, terms, b);
-        }
-    }
-
-    /// [`Self::fill_chains`] with each term's two values in one 128-bit
-    /// vector (lane 0 chain 0's, lane 1 chain 1's): a step of both chains
-    /// is, per term, one compare (the mask [`Term::advance_mask`] builds by
-    /// a subtraction and a shift: all ones where the value exceeds
+    ///
+    /// In wasm with SIMD, each term's two values are one 128-bit vector
+    /// (lane 0 chain 0's, lane 1 chain 1's): a step of both chains is, per
+    /// term, one compare (the mask [`Term::advance_mask`] builds by a
+    /// subtraction and a shift: all ones where the value exceeds
     /// steps_above), an add, two ands, a subtraction and an or, where
-    /// scalar code takes each of them twice; the two codes are then the
-    /// low 16 bits of each lane. Only in wasm: there the engine turns the
-    /// 64-bit compare of two lanes into one instruction on x86-64 (SSE4.2)
-    /// and Arm64 alike, and it made the bench's 3D line's trace 2.7 times
+    /// scalar code takes each of them twice; the two codes are then the low
+    /// 16 bits of each lane. Only in wasm: there the engine turns the 64-bit
+    /// compare of two lanes into one instruction on x86-64 (SSE4.2) and
+    /// Arm64 alike, and it made the bench's 3D line's trace 2.7 times
     /// faster; natively the scalar chains are left as they were measured.
-    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
     #[inline(always)]
     fn fill_chains(
         always: u16,
@@ -257,35 +241,46 @@ impl<const N: usize> Terms<N> {
         first: &mut [Step],
         second: &mut [Step],
     ) {
-        use core::arch::wasm32::{
-            i64x2, i64x2_add, i64x2_extract_lane, i64x2_gt, i64x2_splat, i64x2_sub,
-            u16x8_extract_lane, v128, v128_and, v128_or,
-        };
-        let splat = |f: fn(&Term) -> i64| -> [v128; N] {
-            std::array::from_fn(|i| i64x2_splat(f(&terms[i])))
-        };
-        let above = splat(|t| t.steps_above);
-        let increment = splat(|t| t.increment);
-        let decrement = splat(|t| t.decrement);
-        let bits = splat(|t| t.step.0 as i64);
-        let always = i64x2_splat(always as i64);
-        let mut values: [v128; N] = std::array::from_fn(|i| i64x2(lanes[0][i], lanes[1][i]));
-        for (s0, s1) in first.iter_mut().zip(second) {
-            let mut code = always;
-            for i in 0..N {
-                let mask = i64x2_gt(values[i], above[i]);
-                code = v128_or(code, v128_and(mask, bits[i]));
-                values[i] = i64x2_sub(
-                    i64x2_add(values[i], increment[i]),
-                    v128_and(mask, decrement[i]),
-                );
+        #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+        {
+            let [a, b] = lanes;
+            for (s0, s1) in first.iter_mut().zip(second) {
+                *s0 = Self::advance(always, terms, a);
+                *s1 = Self::advance(always, terms, b);
             }
-            *s0 = Step(u16x8_extract_lane::<0>(code));
-            *s1 = Step(u16x8_extract_lane::<4>(code));
         }
-        for i in 0..N {
-            lanes[0][i] = i64x2_extract_lane::<0>(values[i]);
-            lanes[1][i] = i64x2_extract_lane::<1>(values[i]);
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        {
+            use core::arch::wasm32::{
+                i64x2, i64x2_add, i64x2_extract_lane, i64x2_gt, i64x2_splat, i64x2_sub,
+                u16x8_extract_lane, v128, v128_and, v128_or,
+            };
+            let splat = |f: fn(&Term) -> i64| -> [v128; N] {
+                std::array::from_fn(|i| i64x2_splat(f(&terms[i])))
+            };
+            let above = splat(|t| t.steps_above);
+            let increment = splat(|t| t.increment);
+            let decrement = splat(|t| t.decrement);
+            let bits = splat(|t| t.step.0 as i64);
+            let always = i64x2_splat(always as i64);
+            let mut values: [v128; N] = std::array::from_fn(|i| i64x2(lanes[0][i], lanes[1][i]));
+            for (s0, s1) in first.iter_mut().zip(second) {
+                let mut code = always;
+                for i in 0..N {
+                    let mask = i64x2_gt(values[i], above[i]);
+                    code = v128_or(code, v128_and(mask, bits[i]));
+                    values[i] = i64x2_sub(
+                        i64x2_add(values[i], increment[i]),
+                        v128_and(mask, decrement[i]),
+                    );
+                }
+                *s0 = Step(u16x8_extract_lane::<0>(code));
+                *s1 = Step(u16x8_extract_lane::<4>(code));
+            }
+            for i in 0..N {
+                lanes[0][i] = i64x2_extract_lane::<0>(values[i]);
+                lanes[1][i] = i64x2_extract_lane::<1>(values[i]);
+            }
         }
     }
 
