@@ -197,7 +197,7 @@ fn end_point<C: Coordinate>(start: &Point, coords: &[C]) -> Point {
 }
 
 /// [`decode`] for 1, 5 or 6 axes (a table would have 4^6 entries): each
-/// axis's move from its two bits, as [`Step::delta`] forms it.
+/// axis's move from its two bits ([`Step::delta`]).
 #[inline(always)]
 fn by_bits<C: Coordinate, const DIMS: usize>(
     start: &Point,
@@ -209,11 +209,8 @@ fn by_bits<C: Coordinate, const DIMS: usize>(
         p[axis] = C::from_i64(start.get(axis));
     }
     for (step, row) in steps.iter().zip(out.chunks_exact_mut(DIMS)) {
-        let code = step.0 as i32;
         for axis in 0..DIMS {
-            let moved = code >> axis & 1;
-            let negative = code >> (8 + axis) & moved;
-            p[axis] += C::from_i32(moved - 2 * negative);
+            p[axis] += C::from_i64(step.delta(axis));
         }
         row.copy_from_slice(&p);
     }
@@ -259,36 +256,31 @@ fn bounds_by_table<const DIMS: usize, const ENTRIES: usize>(
     start: &Point,
     steps: &[Step],
 ) -> (Point, Point, Point) {
-    bounds_by_move::<DIMS>(start, steps, |code, axis| {
-        table[table_index(code, DIMS)][axis] as i64
+    bounds_by_move::<DIMS>(start, steps, |step, axis| {
+        table[table_index(step.0, DIMS)][axis] as i64
     })
 }
 
 /// [`bounds`] for 1, 5 or 6 axes: each axis's move from its two bits.
 #[inline(always)]
 fn bounds_by_bits<const DIMS: usize>(start: &Point, steps: &[Step]) -> (Point, Point, Point) {
-    bounds_by_move::<DIMS>(start, steps, |code, axis| {
-        let code = code as i64;
-        let moved = code >> axis & 1;
-        let negative = code >> (8 + axis) & moved;
-        moved - 2 * negative
-    })
+    bounds_by_move::<DIMS>(start, steps, |step, axis| step.delta(axis))
 }
 
-/// [`bounds`] with the move of a step's code on an axis given by
-/// `move_on(code, axis)`: an add, a min and a max on each axis per step.
+/// [`bounds`] with the move of a step on an axis given by
+/// `move_on(step, axis)`: an add, a min and a max on each axis per step.
 #[inline(always)]
 fn bounds_by_move<const DIMS: usize>(
     start: &Point,
     steps: &[Step],
-    move_on: impl Fn(u16, usize) -> i64,
+    move_on: impl Fn(Step, usize) -> i64,
 ) -> (Point, Point, Point) {
     let mut p = [0i64; DIMS];
     p.copy_from_slice(start.coords());
     let (mut low, mut high) = (p, p);
-    for step in steps {
+    for &step in steps {
         for axis in 0..DIMS {
-            p[axis] += move_on(step.0, axis);
+            p[axis] += move_on(step, axis);
             low[axis] = low[axis].min(p[axis]);
             high[axis] = high[axis].max(p[axis]);
         }
