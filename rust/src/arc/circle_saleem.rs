@@ -723,15 +723,25 @@ impl SaleemCircle {
 
     /// Iterations of [`Self::weave_fill`] while the point stays in octant
     /// `K` (which it is in): at least one. The rule is `circle_step`'s, on
-    /// local copies (in registers) and with selects, not branches: the
-    /// residual of the point is carried from step to step ([`candidates`]),
-    /// and so is its side of the ray through the end (end × point, moved by
-    /// end × the step). The step that reaches that ray (once a lap) is left
-    /// to `next_step`, which counts the laps and may end the circle part.
+    /// local copies (in registers) and with selects, not branches. What is
+    /// carried from step to step is the decision itself, the sum of the two
+    /// candidates' residuals ([`slow_steps_in_octant`]), as the midpoint
+    /// circle does: with f = 2 p·fast + 1 and e = 2 p·slow + 1 at point p,
+    /// the candidates' residuals are res(p) + f and res(p) + f + e
+    /// ([`candidates`]), so the sum is 2 res(p) + 2f + e. A step adds f + e
+    /// or f to res(p), 2 to f, and 2 to e when the slow axis moves (unit
+    /// moves, fast ⊥ slow), so the next sum is this one plus 2 f_next, plus
+    /// 2 e + 2 when the slow axis moved: two additions and a select behind
+    /// each decision, where the residual took two absolute values more.
+    /// Its side of the ray through the end (end × point) is carried too,
+    /// moved by end × the step. The step that reaches that ray (once a lap)
+    /// is left to `next_step`, which counts the laps and may end the circle
+    /// part.
     ///
     /// Exact in i64: every point and candidate is within
-    /// [`local_within_bound`], and each carried value is the residual or
-    /// cross product of such a point.
+    /// [`local_within_bound`], and each carried value is a sum of two
+    /// residuals, a dot product or a cross product of such points (debug
+    /// builds check each decision against [`candidates`] from scratch).
     #[inline(always)]
     fn octant_run<const K: u8>(
         &mut self,
@@ -746,7 +756,11 @@ impl SaleemCircle {
         let move_code = code([fast[0] + slow[0], fast[1] + slow[1]]);
         let (side_fast, side_slow) = (cross(self.end, fast), cross(self.end, slow));
         let mut pos = self.pos;
-        let mut residual = self.residual(pos);
+        let dot = |p: [i64; 2], e: [i64; 2]| p[0] * e[0] + p[1] * e[1];
+        let (residual_stay, residual_move) = candidates(pos, self.residual(pos), fast, slow);
+        let mut sum = residual_stay + residual_move;
+        let mut fast_term = 2 * dot(pos, fast) + 1;
+        let mut slow_term = 2 * dot(pos, slow) + 1;
         let mut side = cross(self.end, pos);
         let mut taken = 0;
         let mut arc_steps = 0;
@@ -756,8 +770,11 @@ impl SaleemCircle {
             if !in_octant(K, pos) {
                 break;
             }
-            let (residual_stay, residual_move) = candidates(pos, residual, fast, slow);
-            let moves = slow_steps(residual_stay, residual_move);
+            let moves = slow_steps_in_octant::<K>(sum);
+            debug_assert!({
+                let (stay, moved) = candidates(pos, self.residual(pos), fast, slow);
+                stay + moved == sum && moves == slow_steps(stay, moved)
+            });
             let next = [
                 pos[0] + fast[0] + if moves { slow[0] } else { 0 },
                 pos[1] + fast[1] + if moves { slow[1] } else { 0 },
@@ -770,7 +787,9 @@ impl SaleemCircle {
             }
             if arc {
                 pos = next;
-                residual = if moves { residual_move } else { residual_stay };
+                fast_term += 2;
+                sum += 2 * fast_term + if moves { 2 * slow_term + 2 } else { 0 };
+                slow_term += if moves { 2 } else { 0 };
                 side = next_side;
                 arc_steps += 1;
             }
@@ -839,6 +858,22 @@ fn candidates(pos: [i64; 2], residual: i64, fast: [i64; 2], slow: [i64; 2]) -> (
 #[inline(always)]
 fn slow_steps(residual_stay: i64, residual_move: i64) -> bool {
     residual_move.abs() < residual_stay.abs()
+}
+
+/// [`slow_steps`] for a point in octant `K`, from the sum of the stay and
+/// move candidates' residuals s and m: the sign of one number rather than
+/// two sizes, which is what lets the recording loop carry the decision.
+///
+/// |m| < |s| exactly when (m - s)(m + s) < 0, and m - s = 2 (stay · slow)
+/// + 1 has a sign fixed by the octant: in every octant the slow
+/// coordinate's size Y is at least the fast one's and the point is not the
+/// center, so Y >= 1; odd octants move it toward 0 (m - s = 1 - 2Y < 0),
+/// even ones away (m - s = 2Y + 1 > 0). So the slow axis steps when m + s
+/// is positive in odd octants and negative in even ones (never 0: m - s is
+/// odd, so m + s is too).
+#[inline(always)]
+fn slow_steps_in_octant<const K: u8>(sum: i64) -> bool {
+    if K % 2 == 1 { sum > 0 } else { sum < 0 }
 }
 
 /// True when both local coordinates are below [`I64_PRODUCT_BOUND`](crate::grid::I64_PRODUCT_BOUND), so
