@@ -9,7 +9,7 @@
  * steps take, so that both sides hand over the same points, or voxpath's
  * own circle per cell. The native row runs rust/examples/end_to_end.rs.
  *
- * Each figure is the median of ROUNDS rounds after one untimed round; in a
+ * Each figure is the median of ROUNDS rounds after WARMUP_ROUNDS untimed ones; in a
  * round the two sides of a ratio run in turn, so that a slow moment of the
  * machine falls on both. A run is timed by the CPU time Node's process
  * spends on it (process.cpuUsage: every thread, the garbage collector's and
@@ -35,6 +35,16 @@ import type { BenchGroup, BenchRow } from './types.js';
  * first in as many timed rounds as it goes second.
  */
 const ROUNDS = 12;
+
+/**
+ * Untimed rounds before them. V8 runs wasm and JavaScript first from a quick
+ * compile and optimises what runs hot in background threads, whose CPU
+ * time process.cpuUsage counts: with one untimed round the first timed one
+ * still took 2.5 times the median on both sides of the first row (34 and
+ * 86 ms against 13.6 and 34 ms), and the first row read 20 ms where the
+ * same measurement read 15.5 ms as the last row.
+ */
+const WARMUP_ROUNDS = 3;
 
 const N = 2_000_000;
 const FROM_3D = [0, 0, 0];
@@ -74,7 +84,7 @@ function cpuSeconds(): number {
 
 /**
  * Median CPU seconds of each side over ROUNDS rounds, the sides in turn within
- * a round (first one, then the other, every other round), after one untimed round (V8 compiles JavaScript and wasm in
+ * a round (first one, then the other, every other round), after WARMUP_ROUNDS untimed ones (V8 compiles JavaScript and wasm in
  * tiers: a first run measures the compiler as much as the code). The
  * garbage of the runs before is collected before each run, untimed: every
  * side leaves an array of millions of points behind, and V8 collects them
@@ -85,7 +95,7 @@ function cpuSeconds(): number {
  */
 async function medianSeconds(sides: Side[]): Promise<number[]> {
   const times: number[][] = sides.map(() => []);
-  for (let round = 0; round <= ROUNDS; round++) {
+  for (let round = 0; round < WARMUP_ROUNDS + ROUNDS; round++) {
     // Every other round the sides go in the other order, the timed rounds
     // split evenly: the side that runs second in a round was seen to run
     // up to 2.5 times slower (voxpath's circle as the peer of the helix
@@ -96,7 +106,7 @@ async function medianSeconds(sides: Side[]): Promise<number[]> {
       await collectGarbage();
       const start = cpuSeconds();
       await side.run();
-      if (round > 0) times[i]!.push(cpuSeconds() - start);
+      if (round >= WARMUP_ROUNDS) times[i]!.push(cpuSeconds() - start);
     }
   }
   return times.map(median);
