@@ -469,6 +469,55 @@ fn first_steps_filled<S: Stepper>(mut stepper: S) -> Vec<Step> {
     out
 }
 
+/// `stepper`'s recording loop against its `next_step`, over the first
+/// LONG_STEPS steps: the loop runs two chains (the second started 10,000
+/// steps in by a jump) in one vector where the target has one.
+fn fill_matches_next_step<S: Stepper + Clone>(name: &str, stepper: S) {
+    let filled = first_steps_filled(stepper.clone());
+    let mut stepper = stepper;
+    for (k, &recorded) in filled.iter().enumerate() {
+        let (step, _) = stepper.next_step().unwrap();
+        assert_eq!(step, recorded, "{name} fill, step {k}");
+    }
+}
+
+#[test]
+fn integer_rules_record_the_longest_lines_as_they_step() {
+    // Passive axes of about 0.7, 0.3, 0.4 and 0.8 of the major's 2^31 units,
+    // and of 12,345: right after such an axis steps, its error term is
+    // more than 2^31 below its threshold, so a vector mask built from half
+    // of each 64-bit lane would show here. Then a line near the diagonal.
+    let from = Point::new(&[-L, L, -L, L, -L, 0]);
+    let to = Point::new(&[
+        L,
+        L - 1_503_238_553,
+        -L + 644_245_094,
+        L - 858_993_459,
+        -L + 1_717_986_918,
+        12345,
+    ]);
+    let diagonal = Point::new(&[L, -L + 3, L - 7, -L, L - 1, 12345]);
+    for to in [to, diagonal] {
+        for tie in [TiePolicy::Hold, TiePolicy::Advance] {
+            fill_matches_next_step("nd", Nd::new(from, to, tie, false));
+            let (from3, to3) = (
+                Point::new(&from.coords()[..3]),
+                Point::new(&to.coords()[..3]),
+            );
+            fill_matches_next_step("bresenham3d", Bresenham3d::new(from3, to3, tie, false));
+            fill_matches_next_step("regions", RegionsWang::new(from3, to3, tie));
+        }
+        let (from2, to2) = (
+            Point::new(&from.coords()[..2]),
+            Point::new(&to.coords()[..2]),
+        );
+        fill_matches_next_step(
+            "bresenham2d",
+            Bresenham2d::new(from2, to2, TiePolicy::Hold, Variant::Corrected),
+        );
+    }
+}
+
 #[test]
 fn walk6_and_greedy_on_the_longest_lines() {
     let from = Point::new(&[-L, -L, L]);

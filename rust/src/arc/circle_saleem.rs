@@ -864,8 +864,8 @@ fn slow_steps(residual_stay: i64, residual_move: i64) -> bool {
 /// move candidates' residuals s and m: the sign of one number rather than
 /// two sizes, which is what lets the recording loop carry the decision.
 ///
-/// |m| < |s| exactly when (m - s)(m + s) < 0, and m - s = 2 (stay · slow)
-/// + 1 has a sign fixed by the octant: in every octant the slow
+/// |m| < |s| exactly when (m - s)(m + s) < 0, and m - s =
+/// 2 (stay · slow) + 1 has a sign fixed by the octant: in every octant the slow
 /// coordinate's size Y is at least the fast one's and the point is not the
 /// center, so Y >= 1; odd octants move it toward 0 (m - s = 1 - 2Y < 0),
 /// even ones away (m - s = 2Y + 1 > 0). So the slow axis steps when m + s

@@ -223,16 +223,13 @@ impl<const N: usize> Terms<N> {
     /// The two chains side by side: chain 0 records `first` from the values
     /// `lanes[0]`, chain 1 `second` from `lanes[1]`, a step of each in turn.
     ///
-    /// In wasm with SIMD, each term's two values are one 128-bit vector
-    /// (lane 0 chain 0's, lane 1 chain 1's): a step of both chains is, per
-    /// term, one compare (the mask [`Term::advance_mask`] builds by a
-    /// subtraction and a shift: all ones where the value exceeds
-    /// steps_above), an add, two ands, a subtraction and an or, where
-    /// scalar code takes each of them twice; the two codes are then the low
-    /// 16 bits of each lane. Only in wasm: there the engine turns the 64-bit
-    /// compare of two lanes into one instruction on x86-64 (SSE4.2) and
-    /// Arm64 alike, and it made the bench's 3D line's trace 2.7 times
-    /// faster; natively the scalar chains are left as they were measured.
+    /// Each term's two values are one [`Pair`] (lane 0 chain 0's, lane 1
+    /// chain 1's), a 128-bit vector where the target has one: a step of
+    /// both chains is, per term, one mask ([`Term::advance_mask`]'s, all
+    /// ones where the value exceeds steps_above), an add, two ands, a
+    /// subtraction and an or, where scalar code takes each of them twice;
+    /// the two codes are then the low 16 bits of each lane. In wasm this
+    /// made the bench's 3D line's trace 2.7 times faster.
     #[inline(always)]
     fn fill_chains(
         always: u16,
@@ -241,46 +238,28 @@ impl<const N: usize> Terms<N> {
         first: &mut [Step],
         second: &mut [Step],
     ) {
-        #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
-        {
-            let [a, b] = lanes;
-            for (s0, s1) in first.iter_mut().zip(second) {
-                *s0 = Self::advance(always, terms, a);
-                *s1 = Self::advance(always, terms, b);
-            }
-        }
-        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-        {
-            use core::arch::wasm32::{
-                i64x2, i64x2_add, i64x2_extract_lane, i64x2_gt, i64x2_splat, i64x2_sub,
-                u16x8_extract_lane, v128, v128_and, v128_or,
-            };
-            let splat = |f: fn(&Term) -> i64| -> [v128; N] {
-                std::array::from_fn(|i| i64x2_splat(f(&terms[i])))
-            };
-            let above = splat(|t| t.steps_above);
-            let increment = splat(|t| t.increment);
-            let decrement = splat(|t| t.decrement);
-            let bits = splat(|t| t.step.0 as i64);
-            let always = i64x2_splat(always as i64);
-            let mut values: [v128; N] = std::array::from_fn(|i| i64x2(lanes[0][i], lanes[1][i]));
-            for (s0, s1) in first.iter_mut().zip(second) {
-                let mut code = always;
-                for i in 0..N {
-                    let mask = i64x2_gt(values[i], above[i]);
-                    code = v128_or(code, v128_and(mask, bits[i]));
-                    values[i] = i64x2_sub(
-                        i64x2_add(values[i], increment[i]),
-                        v128_and(mask, decrement[i]),
-                    );
-                }
-                *s0 = Step(u16x8_extract_lane::<0>(code));
-                *s1 = Step(u16x8_extract_lane::<4>(code));
-            }
+        let splat = |f: fn(&Term) -> i64| -> [Pair; N] {
+            std::array::from_fn(|i| Pair::splat(f(&terms[i])))
+        };
+        let above = splat(|t| t.steps_above);
+        let increment = splat(|t| t.increment);
+        let decrement = splat(|t| t.decrement);
+        let bits = splat(|t| t.step.0 as i64);
+        let always = Pair::splat(always as i64);
+        let mut values: [Pair; N] = std::array::from_fn(|i| Pair::new(lanes[0][i], lanes[1][i]));
+        for (s0, s1) in first.iter_mut().zip(second) {
+            let mut code = always;
             for i in 0..N {
-                lanes[0][i] = i64x2_extract_lane::<0>(values[i]);
-                lanes[1][i] = i64x2_extract_lane::<1>(values[i]);
+                let mask = values[i].above(above[i]);
+                code = code.or(mask.and(bits[i]));
+                values[i] = values[i].add(increment[i]).sub(mask.and(decrement[i]));
             }
+            let [c0, c1] = code.low_u16s();
+            *s0 = Step(c0);
+            *s1 = Step(c1);
+        }
+        for (i, value) in values.iter().enumerate() {
+            [lanes[0][i], lanes[1][i]] = value.lanes();
         }
     }
 
@@ -347,6 +326,177 @@ impl<const N: usize> Terms<N> {
                 .sum();
             self.always.delta(axis) * steps as i64 + passive
         })
+    }
+}
+
+/// Two i64 lanes, one per chain of [`Terms::fill_chains`], in one 128-bit
+/// vector where the target has one: wasm with SIMD, where the engine turns
+/// the 64-bit compare into one instruction on x86-64 (SSE4.2) and Arm64
+/// alike, and x86-64, whose every processor has SSE2 (the mask is then a
+/// subtraction, as [`Term::advance_mask`] builds it, and a shuffle and a
+/// shift to spread each lane's sign). Elsewhere, two scalars.
+///
+/// Every value and steps_above the callers keep is below 2^62 in size, so
+/// a difference of two cannot overflow.
+#[derive(Clone, Copy)]
+struct Pair(
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))] core::arch::wasm32::v128,
+    #[cfg(target_arch = "x86_64")] core::arch::x86_64::__m128i,
+    #[cfg(not(any(
+        all(target_arch = "wasm32", target_feature = "simd128"),
+        target_arch = "x86_64"
+    )))]
+    [i64; 2],
+);
+
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+impl Pair {
+    #[inline(always)]
+    fn new(a: i64, b: i64) -> Pair {
+        Pair(core::arch::wasm32::i64x2(a, b))
+    }
+    #[inline(always)]
+    fn splat(x: i64) -> Pair {
+        Pair(core::arch::wasm32::i64x2_splat(x))
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0.
+    #[inline(always)]
+    fn above(self, limit: Pair) -> Pair {
+        Pair(core::arch::wasm32::i64x2_gt(self.0, limit.0))
+    }
+    #[inline(always)]
+    fn add(self, other: Pair) -> Pair {
+        Pair(core::arch::wasm32::i64x2_add(self.0, other.0))
+    }
+    #[inline(always)]
+    fn sub(self, other: Pair) -> Pair {
+        Pair(core::arch::wasm32::i64x2_sub(self.0, other.0))
+    }
+    #[inline(always)]
+    fn and(self, other: Pair) -> Pair {
+        Pair(core::arch::wasm32::v128_and(self.0, other.0))
+    }
+    #[inline(always)]
+    fn or(self, other: Pair) -> Pair {
+        Pair(core::arch::wasm32::v128_or(self.0, other.0))
+    }
+    #[inline(always)]
+    fn low_u16s(self) -> [u16; 2] {
+        use core::arch::wasm32::u16x8_extract_lane;
+        [
+            u16x8_extract_lane::<0>(self.0),
+            u16x8_extract_lane::<4>(self.0),
+        ]
+    }
+    #[inline(always)]
+    fn lanes(self) -> [i64; 2] {
+        use core::arch::wasm32::i64x2_extract_lane;
+        [
+            i64x2_extract_lane::<0>(self.0),
+            i64x2_extract_lane::<1>(self.0),
+        ]
+    }
+}
+
+// SAFETY (every intrinsic below): SSE2 is part of x86-64 itself, so these
+// instructions exist on every processor the target runs on.
+#[cfg(target_arch = "x86_64")]
+impl Pair {
+    #[inline(always)]
+    fn new(a: i64, b: i64) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_set_epi64x(b, a) })
+    }
+    #[inline(always)]
+    fn splat(x: i64) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_set1_epi64x(x) })
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0: the
+    /// sign of limit - value (SSE2 has no 64-bit compare), its high half
+    /// copied to both halves of the lane and shifted arithmetically.
+    #[inline(always)]
+    fn above(self, limit: Pair) -> Pair {
+        use core::arch::x86_64::{_mm_shuffle_epi32, _mm_srai_epi32, _mm_sub_epi64};
+        Pair(unsafe {
+            _mm_srai_epi32::<31>(_mm_shuffle_epi32::<0b11_11_01_01>(_mm_sub_epi64(
+                limit.0, self.0,
+            )))
+        })
+    }
+    #[inline(always)]
+    fn add(self, other: Pair) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_add_epi64(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn sub(self, other: Pair) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_sub_epi64(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn and(self, other: Pair) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_and_si128(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn or(self, other: Pair) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_or_si128(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn low_u16s(self) -> [u16; 2] {
+        use core::arch::x86_64::_mm_extract_epi16;
+        unsafe {
+            [
+                _mm_extract_epi16::<0>(self.0) as u16,
+                _mm_extract_epi16::<4>(self.0) as u16,
+            ]
+        }
+    }
+    #[inline(always)]
+    fn lanes(self) -> [i64; 2] {
+        // SAFETY: __m128i and [i64; 2] are both 16 plain bytes.
+        unsafe { std::mem::transmute::<core::arch::x86_64::__m128i, [i64; 2]>(self.0) }
+    }
+}
+
+#[cfg(not(any(
+    all(target_arch = "wasm32", target_feature = "simd128"),
+    target_arch = "x86_64"
+)))]
+impl Pair {
+    #[inline(always)]
+    fn new(a: i64, b: i64) -> Pair {
+        Pair([a, b])
+    }
+    #[inline(always)]
+    fn splat(x: i64) -> Pair {
+        Pair([x, x])
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0
+    /// ([`Term::advance_mask`]'s subtraction and shift).
+    #[inline(always)]
+    fn above(self, limit: Pair) -> Pair {
+        Pair([0, 1].map(|i| (limit.0[i] - self.0[i]) >> 63))
+    }
+    #[inline(always)]
+    fn add(self, other: Pair) -> Pair {
+        Pair([0, 1].map(|i| self.0[i] + other.0[i]))
+    }
+    #[inline(always)]
+    fn sub(self, other: Pair) -> Pair {
+        Pair([0, 1].map(|i| self.0[i] - other.0[i]))
+    }
+    #[inline(always)]
+    fn and(self, other: Pair) -> Pair {
+        Pair([0, 1].map(|i| self.0[i] & other.0[i]))
+    }
+    #[inline(always)]
+    fn or(self, other: Pair) -> Pair {
+        Pair([0, 1].map(|i| self.0[i] | other.0[i]))
+    }
+    #[inline(always)]
+    fn low_u16s(self) -> [u16; 2] {
+        self.0.map(|x| x as u16)
+    }
+    #[inline(always)]
+    fn lanes(self) -> [i64; 2] {
+        self.0
     }
 }
 
