@@ -59,3 +59,41 @@ static ALLOCATOR: Counting = Counting;
 pub fn held_bytes() -> usize {
     HELD_BYTES.load(Ordering::Relaxed)
 }
+
+/// Makes room in `v` for exactly `more` elements past its length, moving
+/// its elements (its length, not its capacity) into a new allocation when
+/// it has too little. `Vec::reserve` reallocates, which copies the whole
+/// old capacity and doubles it when it is asked for a little more: a
+/// G-code run's planner, given room for one block a line and then told
+/// there are about two, copied 100,000 reserved blocks holding 528 and,
+/// asked for 1.5% more later, doubled 8 MB of them.
+pub fn reserve_moving<T>(v: &mut Vec<T>, more: usize) {
+    if v.capacity() - v.len() >= more {
+        return;
+    }
+    let mut grown = Vec::with_capacity(v.len() + more);
+    grown.append(v);
+    *v = grown;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reserve_moving_keeps_the_elements_and_gives_exactly_the_room_asked() {
+        let mut v: Vec<u32> = Vec::with_capacity(1000);
+        v.extend([7, 8, 9]);
+        let before = v.as_ptr();
+        reserve_moving(&mut v, 997);
+        assert_eq!(
+            (v.as_ptr(), v.capacity()),
+            (before, 1000),
+            "room enough: untouched"
+        );
+        reserve_moving(&mut v, 5000);
+        assert_eq!(v, [7, 8, 9]);
+        // Exactly the room asked for, not the old capacity doubled.
+        assert!(v.capacity() >= 5003 && v.capacity() < 2000 + 5003);
+    }
+}

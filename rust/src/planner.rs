@@ -46,6 +46,7 @@ use crate::arc::angle::sin_cos_turns;
 use crate::arc::arc_segments::Chording;
 use crate::error::Error;
 use crate::machine::MACHINE_AXES;
+use crate::memory::reserve_moving;
 use crate::request::{OptionKind, OptionSpec};
 use serde::Serialize;
 use std::ops::Range;
@@ -406,11 +407,12 @@ impl Planner {
     pub const BYTES_PER_BLOCK: usize =
         std::mem::size_of::<StoredBlock>() + std::mem::size_of::<(f64, f64)>();
 
-    /// Makes room for `more` blocks, for a caller that knows about how many
-    /// it will push, so that they are not copied as they grow.
+    /// Makes room for exactly `more` blocks, for a caller that knows about
+    /// how many it will push, so that they are not copied as they grow
+    /// ([`reserve_moving`]: the blocks held, not the room, are copied).
     pub fn reserve(&mut self, more: usize) {
-        self.blocks.reserve(more);
-        self.length_and_acceleration.reserve(more);
+        reserve_moving(&mut self.blocks, more);
+        reserve_moving(&mut self.length_and_acceleration, more);
     }
 
     /// Blocks the planner holds room for.

@@ -1016,9 +1016,12 @@ impl Runner {
             let _ = self.builder.reserve(steps_wanted.saturating_sub(steps));
         }
         let blocks = self.planner.len();
-        let blocks_wanted =
-            (scale(blocks as u64) as usize).min(blocks + spare as usize / Planner::BYTES_PER_BLOCK);
-        if blocks_wanted > self.planner.capacity() {
+        let blocks_expected = scale(blocks as u64) as usize;
+        if blocks_expected > self.planner.capacity() {
+            // A quarter more, as for the steps: the reservation is exact.
+            let blocks_wanted = blocks_expected
+                .saturating_add(blocks_expected / 4)
+                .min(blocks + spare as usize / Planner::BYTES_PER_BLOCK);
             self.planner.reserve(blocks_wanted - blocks);
         }
     }
