@@ -756,7 +756,6 @@ impl SaleemCircle {
         let move_code = code([fast[0] + slow[0], fast[1] + slow[1]]);
         let (side_fast, side_slow) = (cross(self.end, fast), cross(self.end, slow));
         let mut pos = self.pos;
-        let dot = |p: [i64; 2], e: [i64; 2]| p[0] * e[0] + p[1] * e[1];
         let (residual_stay, residual_move) = candidates(pos, self.residual(pos), fast, slow);
         let mut sum = residual_stay + residual_move;
         let mut fast_term = 2 * dot(pos, fast) + 1;
@@ -847,8 +846,8 @@ impl SaleemCircle {
 #[inline(always)]
 fn candidates(pos: [i64; 2], residual: i64, fast: [i64; 2], slow: [i64; 2]) -> (i64, i64) {
     let stay = [pos[0] + fast[0], pos[1] + fast[1]];
-    let residual_stay = residual + 2 * (pos[0] * fast[0] + pos[1] * fast[1]) + 1;
-    let residual_move = residual_stay + 2 * (stay[0] * slow[0] + stay[1] * slow[1]) + 1;
+    let residual_stay = residual + 2 * dot(pos, fast) + 1;
+    let residual_move = residual_stay + 2 * dot(stay, slow) + 1;
     (residual_stay, residual_move)
 }
 
@@ -884,6 +883,13 @@ fn slow_steps_in_octant<const K: u8>(sum: i64) -> bool {
 /// |u|, |v| is about 2^30 at most and u² + v² stays below 2^62.
 fn local_within_bound(p: [i64; 2]) -> bool {
     within_i64_product_bound(&p)
+}
+
+/// a · b for a local point and a unit move, exact in i64 (the point
+/// within [`local_within_bound`]).
+#[inline(always)]
+fn dot(a: [i64; 2], b: [i64; 2]) -> i64 {
+    a[0] * b[0] + a[1] * b[1]
 }
 
 /// The z component of a × b for local points, exact in i64 (both within
