@@ -34,6 +34,9 @@ const CASES: [string, TraceOptions][] = [
   ['a 6D line', { algorithm: 'nd', from: [0, 0, 0, 0, 0, 0], to: [9000, -8000, 7000, -6000, 5000, 1] }],
   ['a 4D line by one axis a step', { algorithm: 'greedy', from: [0, 0, 0, 0], to: [3000, -2000, 1000, 7] }],
   ['a line at the edge of the grid', { algorithm: 'bresenham3d', from: [2 ** 30, -(2 ** 30), 2 ** 30 - 5], to: [2 ** 30 - 20_000, -(2 ** 30) + 13_001, 2 ** 30] }],
+  // Over 1 MiB of points: in Node its array comes from Buffer.allocUnsafeSlow,
+  // not zeroed, so every value in it is one the core wrote.
+  ['a 3D line past a megabyte of points', { algorithm: 'bresenham3d', from: [7, -3, 0], to: [-150_000, 98_765, -43_210] }],
   ['a circle', { algorithm: 'circle', from: [3000, 0, 0], to: [3000, 0, 0], center: [0, 0, 0] }],
   ['a helix in chords', { algorithm: 'helix', method: 'segments', from: [-2000, 0, 50], to: [-2000, 0, 1050], center: [0, 0, 0], turns: 2 }],
 ];
@@ -56,6 +59,23 @@ describe('points', () => {
       expect(t.pointsInRange(a, b)).toEqual(t.points.subarray(a * t.dims, b * t.dims));
     }
     expect(t.pointsInRange(n, n)).toHaveLength(0);
+    t.free();
+  });
+
+  it('past a megabyte, and the deviations and axis errors beside them, are what smaller reads give', async () => {
+    // 150,001 points: 1.8 MB of points, 1.2 MB of deviations, 3.6 MB of axis
+    // errors, each array made without zeroing in Node; the reads of a few
+    // thousand points each are made zeroed, as every small array is.
+    const t = await trace(CASES.find(([name]) => name.startsWith('a 3D line past'))![1]);
+    const n = t.steps + 1;
+    expect(t.points.byteLength).toBeGreaterThan(1 << 20);
+    const [deviation, axisError] = [t.deviation, t.axisError];
+    expect(deviation.byteLength).toBeGreaterThan(1 << 20);
+    for (let k = 0; k < n; k += 4999) {
+      const to = Math.min(n, k + 4999);
+      expect(deviation.subarray(k, to)).toEqual(t.deviationInRange(k, to));
+      expect(axisError.subarray(k * 3, to * 3)).toEqual(t.axisErrorInRange(k, to));
+    }
     t.free();
   });
 

@@ -253,23 +253,33 @@ impl TraceHandle {
         to_js(&self.0.bounds())
     }
 
-    /// Points with point indices `from..to` (Int32Array, stride dims): the
-    /// array is made on the JS side and filled a chunk at a time, each
-    /// chunk decoded ([`Trace::points_by_chunk`]) into one buffer of
+    /// Writes the points with point indices `from..to` into `out`, an
+    /// Int32Array of exactly (to - from) · dims values (stride dims), made
+    /// on the JS side (where it need not be zeroed first: every value is
+    /// written) and filled a chunk at a time, each chunk decoded
+    /// ([`Trace::points_by_chunk`]) into one buffer of
     /// [`POINTS_CHUNK_VALUES`] in wasm memory and copied out of it. So the
     /// points cross with one copy, and reading them all grows wasm memory
     /// by that buffer, whatever the trace's length.
-    pub fn points(&self, from: u32, to: u32) -> Result<js_sys::Int32Array, JsValue> {
+    pub fn points(&self, from: u32, to: u32, out: &js_sys::Int32Array) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
         let dims = self.0.dims();
-        let out = js_sys::Int32Array::new_with_length(((to - from) as usize * dims) as u32);
+        let values = (to - from) as usize * dims;
+        if out.length() as usize != values {
+            let message = format!(
+                "an Int32Array of {values} values ({} points of {dims}); got {}",
+                to - from,
+                out.length()
+            );
+            return Err(to_js_error(&Error::field("out", message)));
+        }
         let rows = (POINTS_CHUNK_VALUES / dims) as u64;
         let mut buffer = vec![0i32; rows.min(to - from).max(1) as usize * dims];
         self.0.points_by_chunk(from, to, &mut buffer, |k, chunk| {
             let at = ((k - from) as usize * dims) as u32;
             out.subarray(at, at + chunk.len() as u32).copy_from(chunk);
         });
-        Ok(out)
+        Ok(())
     }
 
     /// Decision columns for step indices `from..to`, column-major.
