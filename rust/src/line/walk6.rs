@@ -268,18 +268,26 @@ impl Stepper for Walk6 {
 
 impl Walk6 {
     /// [`Stepper::fill`] for `DIMS` axes: the same walk as
-    /// [`Stepper::next_step`], comparing crossings in u64:
-    /// t = (2k + 1) / (2|Δ|) orders as (2k + 1) / |Δ|, and with k <= |Δ| <=
-    /// 2^31 each cross product (2k + 1)·|Δ'| stays below 2^63 + 2^31 < 2^64
-    /// (an arrived axis, k = |Δ|, is compared too, and its result ignored).
+    /// [`Stepper::next_step`], without multiplying. For each pair of axes
+    /// a < b it carries gap_ab = (2k_a + 1)·|Δb| - (2k_b + 1)·|Δa|, which
+    /// is t_a - t_b times 2|Δa||Δb|: a's face comes first when gap_ab < 0
+    /// (= 0 is an edge or corner, the tie order decides). A step of axis f
+    /// adds 2|Δb| to gap_fb and takes 2|Δa| from gap_af; nothing else
+    /// changes. An axis that never moves has t = ∞ and every gap says so
+    /// (gap_ab = |Δb| > 0 when |Δa| = 0); an arrived axis, k = |Δ|, has its
+    /// next t = 1 + 1/(2|Δ|), after every face still ahead (all before
+    /// t = 1), so the order leaves both out with no test. While two axes
+    /// are under way both next t lie within 1/|Δ| past the current one, so
+    /// |gap| stays within 2^33: i64, where the products of the cross
+    /// multiplication need more (see [`Crossing::compare`]).
     /// No decision.
     #[inline(always)]
     fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let out = &mut out[..taken];
-        let magnitude: [u64; MAX_AXES] = std::array::from_fn(|a| {
+        let magnitude: [i64; MAX_AXES] = std::array::from_fn(|a| {
             if a < DIMS {
-                self.mirror.magnitude(a) as u64
+                self.mirror.magnitude(a)
             } else {
                 0
             }
@@ -288,23 +296,41 @@ impl Walk6 {
         // A local copy: the loop keeps it in registers, not in `self`.
         let start = self.crossed;
         let mut crossed = start;
-        // A later axis wins a tie with the higher-axis order: "at most"
-        // rather than "less than", a + 1 on the right of the comparison.
-        let ties_to_later = u64::from(self.order == TieAxis::Higher);
+        // From the faces crossed so far; each product may pass i64, their
+        // difference does not.
+        let mut gap = [[0i64; MAX_AXES]; MAX_AXES];
+        for a in 0..DIMS {
+            for b in a + 1..DIMS {
+                let t = |k: i64, m: i64| (2 * k as i128 + 1) * m as i128;
+                gap[a][b] = (t(crossed[a], magnitude[b]) - t(crossed[b], magnitude[a])) as i64;
+            }
+        }
+        // a (lower) before b on a tie with the lower-axis order: gap < 1
+        // rather than gap < 0.
+        let lower_first = i64::from(self.order == TieAxis::Lower);
         for slot in out.iter_mut() {
-            // The best crossing so far as (2k + 1, |Δ|); (1, 0) is t = ∞,
-            // which every face ahead beats.
-            let (mut first, mut best) = (0, (1u64, 0u64));
-            for axis in 0..DIMS {
-                let k = crossed[axis] as u64;
-                let num = 2 * k + 1;
-                let ahead = k < magnitude[axis];
-                let sooner = num * best.1 < best.0 * magnitude[axis] + ties_to_later;
-                // Selects, not branches: which face comes first is as good
-                // as random to a branch predictor.
-                let take = ahead & sooner;
-                first = if take { axis } else { first };
-                best = if take { (num, magnitude[axis]) } else { best };
+            // The axis whose face comes before every other's: of the pairs
+            // it is in, it wins each. Exactly one axis does (the order is
+            // by t, then by axis on a tie).
+            let mut first = 0;
+            for f in 0..DIMS {
+                let mut wins = true;
+                for other in 0..DIMS {
+                    if other < f {
+                        wins &= gap[other][f] >= lower_first;
+                    } else if other > f {
+                        wins &= gap[f][other] < lower_first;
+                    }
+                }
+                // A select, not a branch: which face comes first is as
+                // good as random to a branch predictor.
+                first = if wins { f } else { first };
+            }
+            for a in 0..DIMS {
+                for b in a + 1..DIMS {
+                    gap[a][b] += if a == first { 2 * magnitude[b] } else { 0 };
+                    gap[a][b] -= if b == first { 2 * magnitude[a] } else { 0 };
+                }
             }
             // Every axis by a select, not the crossed one by its index: the
             // counts stay in registers instead of going through memory.
