@@ -312,8 +312,8 @@ impl Walk6 {
             // The axis whose face comes before every other's: of the pairs
             // it is in, it wins each. Exactly one axis does (the order is
             // by t, then by axis on a tie).
-            let mut first = 0;
-            for f in 0..DIMS {
+            let mut first = DIMS - 1;
+            for f in 0..DIMS - 1 {
                 let mut wins = true;
                 for other in 0..DIMS {
                     if other < f {
@@ -332,12 +332,12 @@ impl Walk6 {
                     gap[a][b] -= if b == first { 2 * magnitude[a] } else { 0 };
                 }
             }
-            // Every axis by a select, not the crossed one by its index: the
-            // counts stay in registers instead of going through memory.
-            for axis in 0..DIMS {
-                crossed[axis] += i64::from(axis == first);
-            }
             *slot = toward[first];
+        }
+        // The faces each axis crossed, counted from the steps written: a
+        // pass the compiler vectorises, off the loop's chain of selects.
+        for axis in 0..DIMS {
+            crossed[axis] += out.iter().filter(|s| s.0 == toward[axis].0).count() as i64;
         }
         self.crossed = crossed;
         self.remaining -= taken as u64;
