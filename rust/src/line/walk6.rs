@@ -233,10 +233,25 @@ impl Stepper for Walk6 {
         Some((self.mirror.toward(Step::NONE, crossed), why))
     }
 
-    /// The same walk as [`Stepper::next_step`] ([`Walk6::fill_axes`]), with
-    /// the number of axes a constant.
+    /// The same walk as [`Stepper::next_step`]: on two or three axes by
+    /// rounds of the major axis ([`Walk6::fill_rounds`]), the rest (more
+    /// axes, a chunk's last steps, a last tie) a step at a time
+    /// ([`Walk6::fill_axes`], with the number of axes a constant).
     fn fill(&mut self, out: &mut [Step]) -> Filled {
-        by_axis_count!(self.mirror.dims(), self.fill_axes(out))
+        let taken = out.len().min(self.remaining as usize);
+        let out = &mut out[..taken];
+        let start = self.crossed;
+        let dims = self.mirror.dims();
+        let by_rounds = if dims <= 3 { self.fill_rounds(out) } else { 0 };
+        by_axis_count!(dims, self.fill_axes(&mut out[by_rounds..]));
+        self.remaining -= taken as u64;
+        Filled {
+            steps: taken,
+            // One step per face crossed, toward the end.
+            displacement: std::array::from_fn(|a| {
+                self.mirror.sign(a) * (self.crossed[a] - start[a])
+            }),
+        }
     }
 
     fn remaining_steps(&self) -> Option<u64> {
@@ -280,11 +295,9 @@ impl Walk6 {
     /// are under way both next t lie within 1/|Δ| past the current one, so
     /// |gap| stays within 2^33: i64, where the products of the cross
     /// multiplication need more (see [`Crossing::compare`]).
-    /// No decision.
+    /// Fills all of `out` (the walk has that many steps left); no decision.
     #[inline(always)]
-    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) -> Filled {
-        let taken = out.len().min(self.remaining as usize);
-        let out = &mut out[..taken];
+    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) {
         let magnitude: [i64; MAX_AXES] = std::array::from_fn(|a| {
             if a < DIMS {
                 self.mirror.magnitude(a)
@@ -294,8 +307,7 @@ impl Walk6 {
         });
         let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
         // A local copy: the loop keeps it in registers, not in `self`.
-        let start = self.crossed;
-        let mut crossed = start;
+        let mut crossed = self.crossed;
         // From the faces crossed so far; each product may pass i64, their
         // difference does not.
         let mut gap = [[0i64; MAX_AXES]; MAX_AXES];
@@ -340,11 +352,106 @@ impl Walk6 {
             crossed[axis] += out.iter().filter(|s| s.0 == toward[axis].0).count() as i64;
         }
         self.crossed = crossed;
-        self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            // One step per face crossed, toward the end.
-            displacement: std::array::from_fn(|a| self.mirror.sign(a) * (crossed[a] - start[a])),
+    }
+
+    /// The walk on two or three axes by rounds, each the steps up to and
+    /// including one face of the major axis M (the largest |Δ|): between
+    /// two of its faces, 1/|ΔM| apart, every other axis b crosses at most
+    /// one (its faces are 1/|Δb| >= 1/|ΔM| apart), so a round is that
+    /// axis's step where its face comes first (gap_bM = (2k_b + 1)|ΔM| -
+    /// (2k_M + 1)|Δb| below 0, or 0 and b first in the tie order), the
+    /// two passive axes' steps in their own order when both step, then
+    /// M's step: 1 to 3 steps for one set of decisions, where
+    /// [`Self::fill_axes`] decides every step. A third axis on a 2D walk
+    /// has |Δ| = 0 and never steps. Whole rounds go into `out` while three
+    /// slots are left and M has faces ahead; returns the steps written
+    /// (the rest is [`Self::fill_axes`]'s: the last steps of a chunk, and
+    /// a passive axis's last face where it comes on M's last one, after
+    /// it in the tie order). The gaps stay within 2^33, as there.
+    fn fill_rounds(&mut self, out: &mut [Step]) -> usize {
+        let dims = self.mirror.dims();
+        let major = self.mirror.major();
+        // The passive axes in axis order; on a 2D walk the third is a
+        // placeholder that never moves.
+        let (p, q) = match major {
+            0 => (1, 2),
+            1 => (0, 2),
+            _ => (0, 1),
+        };
+        let magnitude = |a: usize| {
+            if a < dims {
+                self.mirror.magnitude(a)
+            } else {
+                0
+            }
+        };
+        let code = |a: usize| {
+            if a < dims {
+                self.mirror.toward(Step::NONE, a)
+            } else {
+                Step::NONE
+            }
+        };
+        let (m, mp, mq) = (magnitude(major), magnitude(p), magnitude(q));
+        let (step_m, step_p, step_q) = (code(major), code(p), code(q));
+        let k = self.crossed;
+        // (2k_a + 1)|Δb| - (2k_b + 1)|Δa|: each product may pass i64, the
+        // difference does not.
+        let gap = |a: usize, b: usize| {
+            let t = |k: i64, m: i64| (2 * k as i128 + 1) * m as i128;
+            (t(k[a], magnitude(b)) - t(k[b], magnitude(a))) as i64
+        };
+        let (mut gap_pm, mut gap_qm, mut gap_pq) = (gap(p, major), gap(q, major), gap(p, q));
+        // The first of a pair on a tie: the lower axis with the lower-axis
+        // order; a before b when gap_ab < bias.
+        let lower = i64::from(self.order == TieAxis::Lower);
+        let bias = |a: usize, b: usize| if a < b { lower } else { 1 - lower };
+        let (bias_pm, bias_qm, bias_pq) = (bias(p, major), bias(q, major), bias(p, q));
+        let rounds = (m - k[major]).max(0) as usize;
+        let (mut written, mut round) = (0, 0);
+        let (mut moved_p, mut moved_q) = (0, 0);
+        // A round's steps by what it decides (p steps, q steps, p's face
+        // before q's), four codes of which the round's 1 to 3 count, so
+        // that a round writes them with one 8-byte store and its length
+        // decides where the next one starts (over the codes past it).
+        let rounds_by_decisions: [[Step; 4]; 8] = std::array::from_fn(|i| {
+            let (steps_p, steps_q, p_before_q) = (i & 1 == 1, i & 2 == 2, i & 4 == 4);
+            let (first, second) = if p_before_q {
+                (step_p, step_q)
+            } else {
+                (step_q, step_p)
+            };
+            match (steps_p, steps_q) {
+                (false, false) => [step_m; 4],
+                (true, false) => [step_p, step_m, step_m, step_m],
+                (false, true) => [step_q, step_m, step_m, step_m],
+                (true, true) => [first, second, step_m, step_m],
+            }
+        });
+        let base = out.as_mut_ptr();
+        while round < rounds && written + 4 <= out.len() {
+            let steps_p = gap_pm < bias_pm;
+            let steps_q = gap_qm < bias_qm;
+            let p_before_q = gap_pq < bias_pq;
+            let codes = rounds_by_decisions
+                [usize::from(steps_p) | usize::from(steps_q) << 1 | usize::from(p_before_q) << 2];
+            // SAFETY: written + 4 <= out.len(): the four codes land in
+            // `out`, which this call borrows mutably.
+            unsafe { base.add(written).cast::<[Step; 4]>().write_unaligned(codes) };
+            written += 1 + usize::from(steps_p) + usize::from(steps_q);
+            let (dp, dq) = (i64::from(steps_p), i64::from(steps_q));
+            gap_pm += dp * 2 * m - 2 * mp;
+            gap_qm += dq * 2 * m - 2 * mq;
+            gap_pq += dp * 2 * mq - dq * 2 * mp;
+            moved_p += dp;
+            moved_q += dq;
+            round += 1;
         }
+        self.crossed[major] += round as i64;
+        self.crossed[p] += moved_p;
+        if q < dims {
+            self.crossed[q] += moved_q;
+        }
+        written
     }
 }
