@@ -274,13 +274,13 @@ impl Interpreter {
         if self.inches { "in" } else { "mm" }
     }
 
-    /// Runs one line. On an error the program stops, so a half-applied line
-    /// is never continued from.
-    pub fn run(&mut self, line: u32, block: &Block) -> Result<Effects, Error> {
-        let mut effects = Effects {
-            motion: None,
-            warnings: block.ignored.clone(),
-        };
+    /// Runs one line, writing what it did besides changing modes into
+    /// `effects` (one value the caller reuses line after line: returned,
+    /// it was copied out for every line). On an error the program stops,
+    /// so a half-applied line is never continued from.
+    pub fn run(&mut self, line: u32, block: &Block, effects: &mut Effects) -> Result<(), Error> {
+        effects.motion = None;
+        effects.warnings.clone_from(&block.ignored);
         let mut motion: Option<(MotionCode, Code)> = None;
         let mut plane: Option<(Plane, Code)> = None;
         let mut inches: Option<(bool, Code)> = None;
@@ -402,7 +402,7 @@ impl Interpreter {
                     self.offset_mm[axis] = self.position_mm[axis] - w.value * self.unit_mm();
                 }
             }
-            return Ok(effects);
+            return Ok(());
         }
         match motion {
             Some((MotionCode::Move(m), _)) => {
@@ -435,7 +435,7 @@ impl Interpreter {
                         code.name()
                     ),
                 });
-                return Ok(effects);
+                return Ok(());
             }
             effects.warnings.push(Problem {
                 column: code.column,
@@ -454,13 +454,13 @@ impl Interpreter {
                         ),
                     });
                 }
-                return Ok(effects);
+                return Ok(());
             }
         }
         if first_axis.is_none() && arc_word.is_none() {
             // A motion code alone sets the mode; nothing moves.
-            self.warn_unused_p(&words, dwell, &mut effects);
-            return Ok(effects);
+            self.warn_unused_p(&words, dwell, effects);
+            return Ok(());
         }
         let Some(mode) = self.motion else {
             let w = first_axis.or(arc_word).expect("one of them is present");
@@ -507,11 +507,11 @@ impl Interpreter {
                         ),
                     ));
                 }
-                self.warn_unused_p(&words, dwell, &mut effects);
+                self.warn_unused_p(&words, dwell, effects);
                 None
             }
             Motion::Arc(turn) => {
-                Some(self.arc(line, column, turn, from_mm, to_mm, &words, &mut effects)?)
+                Some(self.arc(line, column, turn, from_mm, to_mm, &words, effects)?)
             }
         };
         // On every such line, as Grbl would refuse each (the program's
@@ -538,7 +538,7 @@ impl Interpreter {
                 .flatten(),
             arc,
         });
-        Ok(effects)
+        Ok(())
     }
 
     fn warn_unused_p(&self, words: &Words<'_>, dwell: bool, effects: &mut Effects) {
@@ -761,7 +761,7 @@ mod tests {
         let mut it = Interpreter::default();
         let mut last = Effects::default();
         for (i, text) in lines.iter().enumerate() {
-            last = it.run(i as u32 + 1, &parse_line(text))?;
+            it.run(i as u32 + 1, &parse_line(text), &mut last)?;
         }
         Ok((it, last))
     }

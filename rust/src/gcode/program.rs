@@ -28,7 +28,7 @@
 //!   start), or whose radius is too small for any grid center, is stepped as
 //!   a straight line to its end, and its note says so.
 
-use super::interpret::{ArcFormat, ArcMm, Interpreter, Motion, MoveMm};
+use super::interpret::{ArcFormat, ArcMm, Effects, Interpreter, Motion, MoveMm};
 use super::parse::{Block, Problem, parse_line_into};
 use super::timing::{self, MoveSpans, Timeline};
 use crate::algorithms;
@@ -968,6 +968,7 @@ impl Runner {
         // Out of self for the slice (run_block borrows self mutably), not
         // moved out and back for every line.
         let mut block = std::mem::take(&mut self.block);
+        let mut effects = Effects::default();
         for _ in 0..max_lines {
             if self.lines_done == self.lines {
                 break;
@@ -983,7 +984,7 @@ impl Runner {
             parse_line_into(text, &mut block);
             self.offset += next;
             self.lines_done += 1;
-            self.run_block(self.lines_done, &block);
+            self.run_block(self.lines_done, &block, &mut effects);
         }
         self.block = block;
         self.progress()
@@ -1078,7 +1079,7 @@ impl Runner {
         self.errors.push(error);
     }
 
-    fn run_block(&mut self, line: u32, block: &Block) {
+    fn run_block(&mut self, line: u32, block: &Block, effects: &mut Effects) {
         if let Some(problem) = &block.error {
             self.stop(Diagnostic::at(line, problem));
             return;
@@ -1088,10 +1089,9 @@ impl Runner {
             // state a later line would run in is unknown.
             return;
         }
-        let effects = match self.interpreter.run(line, block) {
-            Ok(effects) => effects,
-            Err(e) => return self.stop(Diagnostic::from_error(e)),
-        };
+        if let Err(e) = self.interpreter.run(line, block, effects) {
+            return self.stop(Diagnostic::from_error(e));
+        }
         for w in &effects.warnings {
             self.warn(Diagnostic::at(line, w));
         }
