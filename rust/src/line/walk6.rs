@@ -363,8 +363,8 @@ impl Walk6 {
     /// two passive axes' steps in their own order when both step, then
     /// M's step: 1 to 3 steps for one set of decisions, where
     /// [`Self::fill_axes`] decides every step. A third axis on a 2D walk
-    /// has |Δ| = 0 and never steps. Whole rounds go into `out` while three
-    /// slots are left and M has faces ahead; returns the steps written
+    /// has |Δ| = 0 and never steps. Whole rounds go into `out` while four
+    /// slots are left (a round stores four codes) and M has faces ahead; returns the steps written
     /// (the rest is [`Self::fill_axes`]'s: the last steps of a chunk, and
     /// a passive axis's last face where it comes on M's last one, after
     /// it in the tie order). The gaps stay within 2^33, as there.
