@@ -12,13 +12,15 @@
  * paste) and ends two animation frames after the status line reports the
  * finished program: the run, the result's transfer and the frame that draws
  * it. The status line names the program's lines, moves and steps, which
- * must be Node's, so both sides are checked to run the same program.
+ * must be Node's, so both sides are checked to run the same program. Each
+ * timed run, page or Node, starts on a page left quiet ({@link settle}).
  */
 import { mkdtemp, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { build } from 'vite';
 import { CHROMIUM_ARGS, CHROMIUM_HINT, findChromium } from '../scripts/chromium.mjs';
 import { serveStatic } from '../scripts/static-server.mjs';
@@ -41,6 +43,23 @@ interface Observed {
   reported: number;
   /** Two animation frames after `reported`: the frame that drew it is done. */
   drawn: number;
+}
+
+/**
+ * Quiet time before each timed run, page or Node. When the status line
+ * reports a program the page goes on asking its worker for what the views
+ * show after the first frame (the charts' series, the step clocks) and
+ * Chromium's GPU process draws in software: at 80 steps/mm that work ran
+ * about 330 ms past the status line, so a round started at once was timed
+ * beside the round before's (the page's side to its status line 1.5 to 2
+ * times as long as from a page left idle, and Node's side beside it too).
+ */
+const SETTLE_MS = 1500;
+
+/** Waits until the page has had SETTLE_MS to finish what it does after a round, and its main thread is idle. */
+async function settle(page: Page): Promise<void> {
+  await page.waitForTimeout(SETTLE_MS);
+  await page.evaluate(() => new Promise<void>((resolve) => requestIdleCallback(() => resolve(), { timeout: 10_000 })));
 }
 
 const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1]!;
@@ -114,11 +133,15 @@ export default async function benchPageGcode(): Promise<BenchGroup> {
       await pageRun('paste');
       const [pageSeconds, reportedSeconds, nodeSeconds]: number[][] = [[], [], []];
       for (let round = 0; round < ROUNDS; round++) {
-        // Each side first in every other round.
+        // Each side first in every other round, each after the page has
+        // finished what the round before left it doing.
+        await settle(page);
         const node = round % 2 === 0 ? await nodeRun(source, stepsPerMm) : undefined;
+        if (node) await settle(page);
         const observed = await pageRun('run');
         pageSeconds.push((observed.drawn - observed.started) / 1000);
         reportedSeconds.push((observed.reported - observed.started) / 1000);
+        if (!node) await settle(page);
         nodeSeconds.push((node ?? (await nodeRun(source, stepsPerMm))).seconds);
       }
       await context.close();
@@ -144,7 +167,7 @@ export default async function benchPageGcode(): Promise<BenchGroup> {
   return {
     title: 'G-code on the page: the same program in the worker, drawn, against Node',
     notes: [
-      `The G-code bench's ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program pasted into the built page's G-code mode (headless Chromium, WebGL on SwiftShader, software), then run again by its Run button ${ROUNDS} times, each time with runGcode in Node in turn; medians.`,
+      `The G-code bench's ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program pasted into the built page's G-code mode (headless Chromium, WebGL on SwiftShader, software), then run again by its Run button ${ROUNDS} times, each time with runGcode in Node in turn, each side's run ${SETTLE_MS / 1000} s after the page's last one and once its main thread is idle (the page goes on reading what its views show after the status line); medians.`,
       "page lines/s: from the click to two animation frames after the status line reports the finished program (the worker's run, the result sent to the page, the frame that draws it); 'to its status': to the report alone.",
       'Node lines/s: runGcode of the same text in this process (wall time, as the G-code table times it); the status line must name its lines, moves and steps.',
     ],
