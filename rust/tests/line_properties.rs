@@ -536,6 +536,21 @@ fn walk6_and_greedy_on_the_longest_lines() {
         entered = left;
     }
 
+    // Walk6 by rounds of its major axis, on two axes (the third a
+    // placeholder) and on three, in both tie orders, the major axis first
+    // and last in axis order, across the grid: where the passive faces
+    // tie with the major's (equal |Δ|) and where they do not.
+    for (from, to) in [
+        (Point::new(&[-L, L]), Point::new(&[L, -L + 7])),
+        (Point::new(&[L, -L]), Point::new(&[-L + 2, L])),
+        (Point::new(&[-L, L, 5]), Point::new(&[L - 3, -L, 1_000_005])),
+        (Point::new(&[-L, -L, L]), Point::new(&[L, L, -L])),
+    ] {
+        for order in [TieAxis::Lower, TieAxis::Higher] {
+            fill_matches_next_step("walk6", Walk6::new(from, to, order));
+        }
+    }
+
     let from = Point::new(&[-L, L, -L, L, -L, L]);
     let to = Point::new(&[L, -L, L - 5, -L + 5, L, -L]);
     let mut greedy = Greedy::new(from, to, TieAxis::Lower);
