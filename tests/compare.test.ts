@@ -106,6 +106,19 @@ describe('compare()', () => {
     const flat = await trace({ algorithm: 'bresenham2d', from: [0, 0], to: [5, 3] });
     expect(() => r.compareWith(flat)).toThrow(VoxpathError);
   });
+
+  it('refuses traces on different axes, naming other (cellsOnlyIn read 2-axis cells with stride 3)', async () => {
+    const [line3, line2] = await Promise.all([trace({ algorithm: 'nd', from: [0, 0, 0], to: [4, 0, 0] }), trace({ algorithm: 'nd', from: [0, 0], to: [6, 0] })]);
+    for (const [a, b, message] of [
+      [line3, line2, 'other: has 2 axes but this trace has 3'],
+      [line2, line3, 'other: has 3 axes but this trace has 2'],
+    ] as const) {
+      for (const call of [() => a.compareWith(b), () => a.cellsOnlyIn(b)]) {
+        expect(call).toThrow(VoxpathError);
+        expect(call).toThrow(expect.objectContaining({ field: 'other', message }));
+      }
+    }
+  });
 });
 
 describe('voxpath compare', () => {

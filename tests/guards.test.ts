@@ -55,6 +55,12 @@ describe('the JS API refuses what the core would misread, naming the argument', 
     expect((await rejection(compare({ algorithms: ['regions', 'greedy'], from: [0, 0, 0], to: any([1n, 1, 1]) }))).field).toBe('to');
     expect((await rejection(runGcode('G1 X1 F100', { stepsPerMm: any(80n) }))).field).toBe('stepsPerMm');
     expect((await rejection(randomLines({ algorithm: 'regions', count: any(5n) }))).field).toBe('count');
+    // JSON leaves a function or a symbol out of an object: the option was
+    // dropped and the core ran with its default (tie 'advance' for this one).
+    for (const tie of [() => 'hold', Symbol('hold')]) {
+      const e = await rejection(trace({ ...LINE, algorithm: 'bresenham3d', tie: any(tie) }));
+      expect([e.field, e.message]).toEqual(['tie', `tie: is a ${typeof tie}; give a number, text, true or false, or a list`]);
+    }
     const circular: Record<string, unknown> = { ...LINE };
     circular.self = circular;
     expect((await rejection(trace(any(circular)))).field).toBe('self');

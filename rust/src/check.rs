@@ -105,6 +105,7 @@ impl Points {
     /// [`Self::from_text`], and when `with_steps`, the points' steps
     /// ([`Self::steps`]) made as the rows are read, not in a second pass.
     fn read_text(text: &str, dims: usize, with_steps: bool) -> Result<PointsRead, Error> {
+        let text = crate::text::without_byte_order_mark(text);
         let mut reader = TextReader::new(dims, with_steps);
         // Text with a bracket anywhere is a printed list. Plain rows have
         // none, so the rows are read until a line with one shows (then the
@@ -445,9 +446,12 @@ impl TextReader {
         Ok(())
     }
 
-    /// One row per non-blank line; a first line that is not all numbers is
-    /// a header, whose x, y, z, ... columns (any case) are the ones read,
-    /// or, if it does not name them all, its first `dims` columns.
+    /// One row per non-blank line; a first line with no number in it is a
+    /// header, whose x, y, z, ... columns (any case) are the ones read, or,
+    /// if it names none of them, its first `dims` columns. A first line
+    /// with numbers in it is a point, so that a typo in it ("1 2 three",
+    /// "0,0,0x1") is an error at its column, not a point silently taken for
+    /// a header and dropped.
     fn line_rows(&mut self, text: &str) -> Result<Rows, Error> {
         let mut cells = Vec::new();
         let mut picked = Vec::new();
@@ -473,18 +477,11 @@ impl TextReader {
             split_cells(line, &mut cells);
             if first {
                 first = false;
-                if cells.iter().any(|(_, c)| c.parse::<f64>().is_err()) {
-                    pick = Some(header_columns(&cells, self.dims).ok_or_else(|| {
-                        Error::at(
-                            line_number,
-                            1,
-                            format!(
-                                "the header names neither {} nor {} columns",
-                                AXIS_NAMES[..self.dims].join(", "),
-                                self.dims
-                            ),
-                        )
-                    })?);
+                if cells.iter().all(|(_, c)| c.parse::<f64>().is_err()) {
+                    pick = Some(
+                        header_columns(&cells, self.dims)
+                            .map_err(|m| Error::at(line_number, 1, m))?,
+                    );
                     continue;
                 }
             }
@@ -543,9 +540,13 @@ fn split_cells<'a>(text: &'a str, out: &mut Vec<(usize, &'a str)>) {
     }
 }
 
-/// Which header cells hold the coordinates.
-fn header_columns(header: &[(usize, &str)], dims: usize) -> Option<Vec<usize>> {
-    let named: Option<Vec<usize>> = AXIS_NAMES[..dims]
+/// Which header cells hold the coordinates: those named x, y, z, ...
+/// (any case), or the first `dims` when it names none. A header naming some
+/// axes but not all (`k,x,y` for a 3-axis move) is refused: its first
+/// columns would read k as x.
+fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, String> {
+    let axes = &AXIS_NAMES[..dims];
+    let named: Vec<Option<usize>> = axes
         .iter()
         .map(|axis| {
             header
@@ -553,7 +554,31 @@ fn header_columns(header: &[(usize, &str)], dims: usize) -> Option<Vec<usize>> {
                 .position(|(_, c)| c.eq_ignore_ascii_case(axis))
         })
         .collect();
-    named.or_else(|| (header.len() >= dims).then(|| (0..dims).collect()))
+    if named.iter().all(Option::is_some) {
+        return Ok(named.into_iter().flatten().collect());
+    }
+    if named.iter().any(Option::is_some) {
+        let missing: Vec<&str> = axes
+            .iter()
+            .zip(&named)
+            .filter(|(_, at)| at.is_none())
+            .map(|(axis, _)| *axis)
+            .collect();
+        return Err(format!(
+            "the header has no {} column; the move has {} axes ({})",
+            missing.join(", "),
+            dims,
+            axes.join(", ")
+        ));
+    }
+    if header.len() >= dims {
+        return Ok((0..dims).collect());
+    }
+    Err(format!(
+        "the header names neither {} nor {} columns",
+        axes.join(", "),
+        dims
+    ))
 }
 
 /// What kind of difference the first one is.
@@ -1482,6 +1507,41 @@ mod tests {
                 .to_string(),
             "line 2, column 4: point 0 has 2 coordinates; the move has 3"
         );
+    }
+
+    #[test]
+    fn a_first_line_with_numbers_is_a_point_and_a_header_names_every_axis_or_none() {
+        let e = |text: &str| Points::from_text(text, 3).unwrap_err().to_string();
+        // Each was taken for a header and dropped, the points read from line 2.
+        assert_eq!(
+            e("1 2 three\n1 1 1\n"),
+            "line 1, column 5: point 0: z = 'three' is not a number"
+        );
+        assert_eq!(
+            e("0,0,0x1\n1,1,1\n"),
+            "line 1, column 5: point 0: z = '0x1' is not a number"
+        );
+        assert_eq!(
+            e("0,0,0 # start\n1,1,1\n"),
+            "line 1, column 1: point 0 has 5 coordinates; the move has 3"
+        );
+        // k, x, y read k as x.
+        assert_eq!(
+            e("k,x,y\n0,5,5\n"),
+            "line 1, column 1: the header has no z column; the move has 3 axes (x, y, z)"
+        );
+        // A header of no axis names is its first columns, as before.
+        assert_eq!(
+            Points::from_text("a b c d\n1 2 3 4\n", 3).unwrap().coords,
+            vec![1, 2, 3]
+        );
+        // A byte order mark (a spreadsheet's UTF-8 CSV) is not part of the first line.
+        for text in ["\u{feff}0,0,0\n1,1,1\n", "\u{feff}x,y,z\n0,0,0\n1,1,1\n"] {
+            assert_eq!(
+                Points::from_text(text, 3).unwrap().coords,
+                vec![0, 0, 0, 1, 1, 1]
+            );
+        }
     }
 
     #[test]

@@ -153,13 +153,27 @@ fn missing(t: &Trace, other: &[Key]) -> Cells {
 /// Every cell `a` visits and `b` never does, in `a`'s order, each once,
 /// flat with stride dims: what a view highlights, however many there are
 /// ([`Comparison::only_in_a`] lists the first [`CELL_LIMIT`]).
-pub fn cells_only_in(a: &Trace, b: &Trace) -> Vec<i32> {
+pub fn cells_only_in(a: &Trace, b: &Trace) -> Result<Vec<i32>, Error> {
+    same_axes(a, b)?;
     let mut flat = Vec::new();
     // Trace points lie within ±2^30 (see `key`).
     for_each_missing(a, &sorted_cells(b), |p| {
         flat.extend(p.iter().map(|&c| c as i32))
     });
-    flat
+    Ok(flat)
+}
+
+/// Traces on different numbers of axes have no cell in common to compare:
+/// an error naming `other` (the trace `a` is compared with, as the JS API
+/// calls it), never cells read across mismatched strides.
+fn same_axes(a: &Trace, b: &Trace) -> Result<(), Error> {
+    if a.dims() == b.dims() {
+        return Ok(());
+    }
+    Err(Error::field(
+        "other",
+        format!("has {} axes but this trace has {}", b.dims(), a.dims()),
+    ))
 }
 
 fn digest(t: &Trace) -> TraceDigest {
@@ -231,12 +245,7 @@ fn first_difference(a: &Trace, b: &Trace) -> Option<FirstDifference> {
 
 /// Compares two traces with the same number of axes.
 pub fn compare(a: &Trace, b: &Trace) -> Result<Comparison, Error> {
-    if a.dims() != b.dims() {
-        return Err(Error::field(
-            "b",
-            format!("has {} axes but a has {}", b.dims(), a.dims()),
-        ));
-    }
+    same_axes(a, b)?;
     Ok(Comparison {
         a: digest(a),
         b: digest(b),
@@ -386,7 +395,10 @@ mod tests {
         let a = trace(r#"{"algorithm":"regions","from":[0,0,0],"to":[3000,2000,1000]}"#);
         let b = trace(r#"{"algorithm":"greedy","from":[0,0,0],"to":[3000,2000,1000]}"#);
         let c = compare(&a, &b).unwrap();
-        let (only_a, only_b) = (cells_only_in(&a, &b), cells_only_in(&b, &a));
+        let (only_a, only_b) = (
+            cells_only_in(&a, &b).unwrap(),
+            cells_only_in(&b, &a).unwrap(),
+        );
         assert!(c.only_in_b.count as usize > CELL_LIMIT);
         assert_eq!(only_a.len() as u64, 3 * c.only_in_a.count);
         assert_eq!(only_b.len() as u64, 3 * c.only_in_b.count);
@@ -431,7 +443,11 @@ mod tests {
         let b = crate::trace::TraceBuilder::new(crate::grid::Point::origin(2), 10).finish("empty");
         assert_eq!(
             compare(&a, &b).unwrap_err().to_string(),
-            "b: has 2 axes but a has 3"
+            "other: has 2 axes but this trace has 3"
+        );
+        assert_eq!(
+            cells_only_in(&b, &a).unwrap_err().to_string(),
+            "other: has 3 axes but this trace has 2"
         );
     }
 }

@@ -34,12 +34,16 @@ const ECHO_CHARS: usize = 24;
 /// `text` as a message quotes it: cut between characters (a byte offset
 /// could fall inside one: the fuzz target found that panic), and control
 /// characters written as escapes (\u{0}), so that a NUL or an escape
-/// sequence in an input never reaches the terminal raw.
+/// sequence in an input never reaches the terminal raw. Characters a
+/// reader cannot see are escaped too: whitespace other than the space (a
+/// no-break space pasted from a web page, \u{a0}) and the invisible
+/// format characters ([`invisible`]), so that "'' is not G-code" never
+/// quotes nothing.
 pub fn echo(text: &str) -> String {
     let chars = text.chars().count();
     let quoted = |part: &mut dyn Iterator<Item = char>| -> String {
         part.map(|c| {
-            if c.is_control() {
+            if c.is_control() || (c.is_whitespace() && c != ' ') || invisible(c) {
                 c.escape_unicode().to_string()
             } else {
                 c.to_string()
@@ -57,6 +61,24 @@ pub fn echo(text: &str) -> String {
     }
 }
 
+/// The byte order mark an editor may put before a file's text (UTF-8
+/// files saved by Windows tools, CSV exported from spreadsheets): a mark of
+/// the encoding, not text, so every text input starts after it.
+pub fn without_byte_order_mark(text: &str) -> &str {
+    text.strip_prefix(BYTE_ORDER_MARK).unwrap_or(text)
+}
+
+/// U+FEFF, the byte order mark (bytes EF BB BF in UTF-8).
+pub const BYTE_ORDER_MARK: char = '\u{feff}';
+
+/// Format characters that draw nothing: the soft hyphen, the zero-width
+/// spaces and joiners, the direction marks, the word joiner and invisible
+/// operators, and the byte order mark (Unicode's Cf characters a pasted
+/// text is likely to carry).
+fn invisible(c: char) -> bool {
+    matches!(c, '\u{ad}' | '\u{200b}'..='\u{200f}' | '\u{202a}'..='\u{202e}' | '\u{2060}'..='\u{2064}' | BYTE_ORDER_MARK)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -72,6 +94,10 @@ mod tests {
     #[test]
     fn quotes_control_characters_as_escapes_and_long_text_by_its_start() {
         assert_eq!(echo("1\u{0}"), "1\\u{0}");
+        // What a reader cannot see is named, not quoted as nothing.
+        assert_eq!(echo("X\u{a0}1"), "X\\u{a0}1");
+        assert_eq!(echo("\u{feff}\u{200b}"), "\\u{feff}\\u{200b}");
+        assert_eq!(echo("x y"), "x y");
         assert_eq!(
             echo(&"9".repeat(100)),
             format!("{}... (100 characters)", "9".repeat(16))

@@ -353,8 +353,8 @@ impl TraceHandle {
     /// Every cell this trace visits and `other` never does, in this trace's
     /// order, each once (Int32Array, stride dims).
     #[wasm_bindgen(js_name = cellsOnlyIn)]
-    pub fn cells_only_in(&self, other: &TraceHandle) -> Vec<i32> {
-        crate::compare::cells_only_in(&self.0, &other.0)
+    pub fn cells_only_in(&self, other: &TraceHandle) -> Result<Vec<i32>, JsValue> {
+        crate::compare::cells_only_in(&self.0, &other.0).map_err(|e| to_js_error(&e))
     }
 
     /// The tool's speed per step at one tick a step and at a constant feed

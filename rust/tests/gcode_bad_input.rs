@@ -181,6 +181,29 @@ fn control_characters_are_quoted_as_escapes() {
     }
 }
 
+#[test]
+fn a_byte_order_mark_is_skipped_and_invisible_characters_are_named() {
+    // A UTF-8 file saved with a byte order mark (Windows editors) was
+    // "1:1: '\u{feff}' is not G-code", the mark quoted as nothing.
+    let p = program("\u{feff}G1 X1 F100\nG1 X2\n", 10.0);
+    assert_eq!(p.info.errors, []);
+    assert_eq!((p.info.lines, p.info.steps), (2, 20));
+    // Columns on line 1 count from after the mark.
+    assert_eq!(
+        first_error("\u{feff}G1 X# F100\n", 10.0),
+        first_error("G1 X# F100\n", 10.0)
+    );
+    // A no-break space (pasted from a web page) and a zero-width space are
+    // named by their code points.
+    for (source, quoted) in [
+        ("G1\u{a0}X1 F100\n", "\\u{a0}"),
+        ("G1 X1\u{200b} F100\n", "\\u{200b}"),
+    ] {
+        let (_, _, message) = first_error(source, 10.0);
+        assert!(message.contains(quoted), "{message}");
+    }
+}
+
 /// F1e300 was read as F1 and an E300 word (ignored with a warning), so the
 /// move ran at 1 mm/min; G-code numbers have no exponent.
 #[test]

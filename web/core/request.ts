@@ -4,8 +4,10 @@ import { argumentError } from './guard.js';
  * Options of a call into the core, as the JSON text the core parses; `field`
  * names the argument (the core names it too, e.g. 'request' or 'settings').
  * Whatever JSON cannot carry is refused here, naming the option it is in: a
- * BigInt, or options that contain themselves. What JSON writes as nothing
- * (undefined, a function) is sent as null, which the core refuses by name.
+ * BigInt, a function or a symbol (which JSON would leave out of an object,
+ * so the core would run with its default instead: `tie: () => 'hold'` ran
+ * with tie 'advance'), or options that contain themselves. An option set to
+ * undefined is an option not given, as JSON leaves it out.
  */
 export function encodeRequest(options: unknown, field = 'request'): string {
   let option = field;
@@ -16,6 +18,7 @@ export function encodeRequest(options: unknown, field = 'request'): string {
       // The holder of a top-level option is the options object itself.
       if (named && this === options) option = key;
       if (typeof value === 'bigint') throw argumentError(option, `${value}n is a BigInt; give a number (Number(${value}n))`);
+      if (typeof value === 'function' || typeof value === 'symbol') throw argumentError(option, `is a ${typeof value}; give a number, text, true or false, or a list`);
       // Typed arrays travel as plain lists; NaN and Infinity as text, so the
       // core reports them by name instead of JSON turning them into null.
       if (ArrayBuffer.isView(value)) return Array.from(value as unknown as ArrayLike<number>);

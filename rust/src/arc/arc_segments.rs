@@ -296,6 +296,23 @@ fn chords_by(
     let line = req.choice(&LINE_ALGORITHM)?.unwrap_or(LINE_ALGORITHMS[0]);
     let line_info = find(line)?;
     let tie = req.choice(&LINE_TIE)?;
+    // A tie for a line algorithm without a tie rule would be dropped, and
+    // the chords stepped as without it.
+    let takes_tie = |info: &AlgorithmInfo| info.options.iter().any(|o| o.name == LINE_TIE.name);
+    if tie.is_some() && !takes_tie(line_info) {
+        let with_ties: Vec<&str> = LINE_ALGORITHMS
+            .iter()
+            .copied()
+            .filter(|&id| find(id).is_ok_and(takes_tie))
+            .collect();
+        return Err(Error::field(
+            LINE_TIE.name,
+            format!(
+                "{line}, the chords' lineAlgorithm, has no tie rule to pass it to; tie is for {}",
+                with_ties.join(", ")
+            ),
+        ));
+    }
     let counted = chording.chords(spec.radius(), spec.sweep_rad())?;
     // A full circle (ending where it starts, at its own height) in fewer
     // than 3 chords would be one chord from the start to itself, or two out
@@ -571,7 +588,7 @@ mod tests {
                 } else {
                     "[90, 0, 0]"
                 };
-                for tie in ["", r#", "lineTie": "hold""#] {
+                for tie in ["", r#", "tie": "hold""#] {
                     let json = format!(
                         r#"{{"algorithm": "{algorithm}", "from": {from}, "to": {to}, "center": [0, 0, 0], "lineAlgorithm": "{line}", {extra}{tie}}}"#
                     );
@@ -588,6 +605,39 @@ mod tests {
             }
         }
     }
+    /// A tie given for chords whose line algorithm has no tie rule was
+    /// dropped: greedy's chords with tie hold were its chords without it.
+    #[test]
+    fn a_tie_for_a_line_algorithm_without_one_is_refused() {
+        for line in ["greedy", "walk6", "dda"] {
+            for (algorithm, extra) in [("arc-segments", ""), ("helix", r#", "method": "segments""#)]
+            {
+                let json = format!(
+                    r#"{{"algorithm": "{algorithm}", "from": [100, 0, 0], "to": [0, 100, 0], "center": [0, 0, 0], "lineAlgorithm": "{line}", "tie": "hold"{extra}}}"#
+                );
+                let req = Request::from_json(&json).unwrap();
+                let spec = ArcSpec::parse(&req, algorithm == "helix").unwrap();
+                let Err(error) = chords_by(
+                    algorithm,
+                    &req,
+                    &spec,
+                    algorithm == "helix",
+                    find_line,
+                    true,
+                ) else {
+                    panic!("{json}: stepped");
+                };
+                assert_eq!(
+                    error.to_string(),
+                    format!(
+                        "tie: {line}, the chords' lineAlgorithm, has no tie rule to pass it to; tie is for regions, bresenham3d, nd, liu-float"
+                    ),
+                    "{json}"
+                );
+            }
+        }
+    }
+
     use crate::arc::angle::atan3;
     use std::f64::consts::{PI, TAU};
 

@@ -921,9 +921,11 @@ impl Runner {
         planner.reserve(expected_moves);
         let mut spans = MoveSpans::default();
         spans.reserve(expected_moves);
+        // Line 1 starts after a byte order mark, as every text input does.
+        let offset = source.len() - crate::text::without_byte_order_mark(&source).len();
         Runner {
             source,
-            offset: 0,
+            offset,
             lines_done: 0,
             lines,
             builder,

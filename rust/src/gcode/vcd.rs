@@ -38,7 +38,9 @@ fn nanoseconds(seconds: f64) -> u64 {
 
 /// Writes the VCD of `trace`'s steps at the instants of `timeline`; an
 /// `InvalidInput` error, before anything is written, when the program lasts
-/// longer than a VCD's ticks reach.
+/// longer than a VCD's ticks reach, and where it is found, with part of the
+/// file written, when two steps come too close for a pulse between them
+/// (under 2 ns apart: the callers write to memory and drop it).
 pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Result<()> {
     // Past the last tick every edge would be pressed onto that one tick
     // (acceleration 1e-300 made a VCD of two timestamps): refused instead.
@@ -75,13 +77,14 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Res
     w.end()?;
     let steps = trace.steps();
     let mut written_ns = 0u64;
-    let mut at = |w: &mut vcd::Writer<_>, seconds: f64| -> io::Result<()> {
+    // Moves the file's time to `seconds` (never back), and says to which tick.
+    let mut at = |w: &mut vcd::Writer<_>, seconds: f64| -> io::Result<u64> {
         let ns = nanoseconds(seconds).max(written_ns);
         if ns != written_ns {
             w.timestamp(ns)?;
             written_ns = ns;
         }
-        Ok(())
+        Ok(ns)
     };
     let mut level = 0u8;
     let mut previous_seconds = 0.0;
@@ -109,14 +112,30 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Res
                 }
                 level ^= changed;
             }
-            at(&mut w, t)?;
+            let rise_ns = at(&mut w, t)?;
             for (axis, &(step, _)) in wires.iter().enumerate() {
                 if moving >> axis & 1 == 1 {
                     w.change_scalar(step, Value::V1)?;
                 }
             }
             let following = times.get(i + 1).copied().unwrap_or(next);
-            at(&mut w, t + STEP_PULSE_SECONDS.min((following - t) / 2.0))?;
+            let fall = t + STEP_PULSE_SECONDS.min((following - t) / 2.0);
+            // A pulse whose fall rounds onto its rise's tick would be
+            // written as 1 and 0 at one instant: the step would be in the
+            // file but no logic analyser would see it.
+            if nanoseconds(fall) <= rise_ns {
+                return Err(io::Error::new(
+                    io::ErrorKind::InvalidInput,
+                    format!(
+                        "steps {} and {} come {:.3e} s apart at {t:.9} s on the planned profile ({:.3e} steps/s), too close for a pulse between them in a VCD of 1 ns ticks; lower maxRate or the feed",
+                        from + i as u64,
+                        from + i as u64 + 1,
+                        following - t,
+                        1.0 / (following - t)
+                    ),
+                ));
+            }
+            at(&mut w, fall)?;
             for (axis, &(step, _)) in wires.iter().enumerate() {
                 if moving >> axis & 1 == 1 {
                     w.change_scalar(step, Value::V0)?;
@@ -180,6 +199,41 @@ mod tests {
             "{error}"
         );
         assert!(out.is_empty());
+    }
+
+    #[test]
+    fn steps_too_close_for_a_pulse_between_them_are_refused() {
+        // At 1e300 mm/min and mm/s² all 800 steps came at instant 0, written
+        // as 800 pulses of no width under #0.
+        let settings =
+            Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 1e300, "maxRate": 1e300}"#)
+                .unwrap();
+        let program = run("G0 X10\n", settings);
+        let error = write_vcd(&program.trace, &program.timeline, &mut Vec::new()).unwrap_err();
+        assert_eq!(error.kind(), io::ErrorKind::InvalidInput);
+        assert!(
+            error.to_string().starts_with("steps 0 and 1 come "),
+            "{error}"
+        );
+        assert!(
+            error
+                .to_string()
+                .contains("too close for a pulse between them in a VCD of 1 ns ticks"),
+            "{error}"
+        );
+        // 80 million steps a second, 12.5 ns apart: every pulse is there,
+        // about 6 ns wide.
+        let settings =
+            Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 1e30, "maxRate": 6e7}"#)
+                .unwrap();
+        let program = run("G1 X10 F60000000\n", settings);
+        let mut out = Vec::new();
+        write_vcd(&program.trace, &program.timeline, &mut out).unwrap();
+        assert_eq!(program.info.errors, []);
+        assert_eq!(program.info.steps, 800);
+        let x = &read_back(&out)["x_step"];
+        assert_eq!(x.iter().filter(|c| c.1).count(), 800);
+        assert!(x.windows(2).all(|w| w[0].0 < w[1].0));
     }
 
     #[test]
