@@ -51,6 +51,8 @@ describe('voxpath trace', () => {
     [['trace', '--algorithm', 'bogus', '--from', '0,0,0', '--to', '1,1,1'], /^voxpath: --algorithm: unknown algorithm 'bogus'/],
     [[...TRACE, '--tie'], /^voxpath: --tie needs a value/],
     [['frobnicate'], /^voxpath: unknown command 'frobnicate'/],
+    [['algorithms', '--format', 'json'], /^voxpath: algorithms takes no arguments, got '--format' 'json'/],
+    [['experiment', 'random-lines', '--from', '1,1,1'], /^voxpath: /],
   ])('rejects %j with a one-line error and usage, exit 2', (args, message) => {
     const r = voxpath(args);
     expect(r.code).toBe(2);

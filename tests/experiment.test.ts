@@ -35,6 +35,8 @@ describe('randomLines', () => {
     expect(hold.lines).toHaveLength(30);
     await expect(randomLines({ algorithm: 'regions', count: -1 })).rejects.toMatchObject({ field: 'count' });
     await expect(randomLines({ algorithm: 'regions', tie: 'never' })).rejects.toBeInstanceOf(VoxpathError);
+    // The experiment draws each line's ends: a from given was overwritten, line after line.
+    await expect(randomLines({ algorithm: 'regions', from: [5, 5, 5] } as never)).rejects.toMatchObject({ field: 'from' });
   });
 });
 

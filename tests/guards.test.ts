@@ -254,6 +254,8 @@ describe("the writers of plain data refuse what is not that data, naming the arg
       const short = { ...(good as object) } as Record<string, unknown>;
       delete short[needed];
       expect(thrown(() => write(any(short))).detail).toMatch(new RegExp(`^expected .*, got an object without ${needed}$`));
+      // A field set to undefined is as missing (it threw a TypeError from inside the writer).
+      expect(thrown(() => write(any({ ...(good as object), [needed]: undefined }))).detail).toMatch(new RegExp(`^expected .*, got an object without ${needed}$`));
       // The real thing still writes.
       expect(write(any(good)).length).toBeGreaterThan(0);
     }
@@ -270,6 +272,14 @@ describe("the writers of plain data refuse what is not that data, naming the arg
     }
     expect(readDecision(region, Number.NaN)).toBeNull();
     expect(readDecision(region, NO_VALUE)).toBeNull();
+    // A value no label has (99 came back as 99), and a flag's that is not 0 or 1.
+    if (region.kind !== 'category') throw new Error('region is a category column');
+    for (const value of [99, -1, 1.5, region.labels.length]) {
+      expect(thrown(() => readDecision(region, value)).message).toBe(`value: ${value} is not a value of the category column region: 0 to ${region.labels.length - 1}, or NO_VALUE (255) where it does not apply`);
+    }
+    const tie = (await trace(LINE)).columns.find((c) => c.kind === 'flag')!;
+    expect([readDecision(tie, 0), readDecision(tie, 1), readDecision(tie, NO_VALUE)]).toEqual([false, true, null]);
+    expect(thrown(() => readDecision(tie, 2)).field).toBe('value');
   });
 
   it('pulseTrains takes step instants only as a Float64Array of the range (text of length 1 was read as one instant)', async () => {

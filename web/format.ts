@@ -9,3 +9,8 @@ export const NO_VALUE_TEXT = '—';
 export function formatPoint(coords: ArrayLike<number>): string {
   return `(${Array.from(coords).join(', ')})`;
 }
+
+/** "1 move", "12 moves": a count with its noun, singular for one. */
+export function countOf(count: number, noun: string, plural = `${noun}s`): string {
+  return `${count} ${count === 1 ? noun : plural}`;
+}

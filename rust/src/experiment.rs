@@ -255,6 +255,16 @@ pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
             ),
         ));
     }
+    // Each line's ends are the experiment's to draw: a from or to given
+    // would be replaced, line after line, without a word.
+    for own_end in ["from", "to"] {
+        if request.has(own_end) {
+            return Err(Error::field(
+                own_end,
+                "random-lines draws every line's ends itself (from the origin to a random point); give count, seed, maxCoordinate or dims instead",
+            ));
+        }
+    }
     let count = request.integer("count")?.unwrap_or(100);
     if !(1..=MAX_LINES as i64).contains(&count) {
         return Err(Error::field(
@@ -282,10 +292,14 @@ pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
     if !(info.min_dims as i64..=info.max_dims as i64).contains(&dims) {
         return Err(Error::field(
             "dims",
-            format!(
-                "{} takes {} to {} axes, got {dims}",
-                info.id, info.min_dims, info.max_dims
-            ),
+            if info.min_dims == info.max_dims {
+                format!("{} takes {} axes, got {dims}", info.id, info.min_dims)
+            } else {
+                format!(
+                    "{} takes {} to {} axes, got {dims}",
+                    info.id, info.min_dims, info.max_dims
+                )
+            },
         ));
     }
     let dims = dims as usize;
@@ -417,8 +431,19 @@ mod tests {
             run(r#"{"algorithm":"regions","dims":2}"#)
                 .unwrap_err()
                 .to_string(),
-            "dims: regions takes 3 to 3 axes, got 2"
+            "dims: regions takes 3 axes, got 2"
         );
+        assert_eq!(
+            run(r#"{"algorithm":"nd","dims":7}"#)
+                .unwrap_err()
+                .to_string(),
+            "dims: nd takes 2 to 6 axes, got 7"
+        );
+        // The experiment draws the ends: a from or to given was overwritten.
+        for end in ["from", "to"] {
+            let e = run(&format!(r#"{{"algorithm":"regions","{end}":[1,1,1]}}"#)).unwrap_err();
+            assert_eq!(e.field_name(), Some(end));
+        }
         assert_eq!(
             run(r#"{"algorithm":"circle"}"#).unwrap_err().to_string(),
             "algorithm: random-lines traces lines; circle traces arcs"

@@ -274,6 +274,11 @@ impl Request {
         self.options.get(name)
     }
 
+    /// Whether the option `name` was given.
+    pub fn has(&self, name: &str) -> bool {
+        self.options.contains_key(name)
+    }
+
     /// A required point option.
     pub fn point(&self, name: &str) -> Result<Point, Error> {
         self.optional_point(name)?
@@ -321,6 +326,14 @@ impl Request {
         match self.number(name)? {
             None => Ok(None),
             Some(x) if x.fract() == 0.0 && x.abs() < 9.0e15 => Ok(Some(x as i64)),
+            // Whole, but past what a double holds exactly: 9007199254740993
+            // arrives as ...992. Said so, not "not a whole number".
+            Some(x) if x.fract() == 0.0 => Err(Error::field(
+                name,
+                format!(
+                    "must be within ±9e15, where every whole number is exact as JSON carries it, got {x}"
+                ),
+            )),
             Some(x) => Err(Error::field(
                 name,
                 format!("expected a whole number, got {x}"),
@@ -489,6 +502,12 @@ mod tests {
         assert_eq!(
             r.max_steps().unwrap_err().to_string(),
             "maxSteps: expected a whole number, got 2.5"
+        );
+        // Whole, but past what JSON carries exactly: said so, not "not whole".
+        let r = Request::from_json(r#"{"algorithm":"x","seed":9007199254740991}"#).unwrap();
+        assert_eq!(
+            r.integer("seed").unwrap_err().to_string(),
+            "seed: must be within ±9e15, where every whole number is exact as JSON carries it, got 9007199254740991"
         );
     }
 

@@ -77,6 +77,24 @@ fn a_far_arc_center_names_its_word() {
 }
 
 #[test]
+fn a_circle_reaching_off_the_grid_names_its_center_word() {
+    // Its center is on the grid but the circle about it is not: this was
+    // "1:1: center: ..." at the G2, with the core's field name.
+    let (line, column, message) = first_error("G2 X0 Y0 I100000000 F100\n", 10.0);
+    assert_eq!((line, column), (1, 10));
+    assert_eq!(
+        message,
+        "I: at 10 steps/mm, the circle of radius 1000000000.000 around x = 1000000000 reaches past ±2^30 (1073741824) on x; every point of the circle must be within it"
+    );
+    let (_, column, message) = first_error("G0 X1 Y0\nG3 X1 Y0 I0 J-100000000 F100\n", 10.0);
+    assert_eq!(column, 13);
+    assert!(
+        message.starts_with("J: at 10 steps/mm, the circle of radius"),
+        "{message}"
+    );
+}
+
+#[test]
 fn a_huge_radius_is_an_error_naming_r() {
     // R = 10^200: R² overflowed, the center and sweep were NaN (null in JSON).
     let (line, column, message) =
@@ -99,9 +117,13 @@ fn a_feed_past_any_machine_is_an_error_naming_f() {
         message.starts_with("F (feed) must be more than 0 and at most 1e9 mm/min"),
         "{message}"
     );
-    // In inches the limit is on the feed in mm/min.
-    let (_, column, _) = first_error("G20 G1 X1 F100000000\n", 80.0);
+    // In inches the limit is on the feed in mm/min, and the message gives both.
+    let (_, column, message) = first_error("G20 G1 X1 F100000000\n", 80.0);
     assert_eq!(column, 11);
+    assert_eq!(
+        message,
+        "F (feed) must be more than 0 and at most 1e9 mm/min, got 100000000 in/min (2540000000 mm/min)"
+    );
 }
 
 #[test]

@@ -58,7 +58,7 @@ export class CheckPanel {
       className: 'check-verdict',
       textContent: first
         ? `Your points part from ${check.algorithm} at point ${first.pointIndex}: ${first.message}.`
-        : `Your points are ${check.algorithm}'s path, point for point (${check.steps} steps).`,
+        : `Your points are the path of ${check.algorithm}, point for point (${check.steps} steps).`,
     });
     verdict.dataset.testid = 'check-verdict';
     verdict.dataset.matches = String(check.matches);

@@ -208,6 +208,8 @@ export async function main(args: string[]): Promise<number> {
       return command === undefined ? 2 : 0;
     }
     if (command === 'algorithms') {
+      // Nothing to read after it: `algorithms --format json` printed the table and exited 0.
+      if (rest.length > 0) throw new UsageError(`algorithms takes no arguments, got ${rest.map((a) => `'${a}'`).join(' ')}`);
       await write(catalogues.algorithms.map((a) => `${a.id.padEnd(14)} ${a.title}\n${' '.repeat(15)}${a.citation}\n`).join(''));
       return 0;
     }

@@ -22,6 +22,12 @@ import { type ColumnSpec, type DecisionColumns, NO_VALUE } from './types.js';
 export function readDecision(column: ColumnSpec, value: number): string | number | boolean | null {
   plainData<ColumnSpec>('column', column, ['name', 'kind'], "a decision column (from a trace's columns)");
   if (typeof value !== 'number') throw argumentError('value', `expected a decision value (a number), got ${describeValue(value)}`);
+  // A category's value is a label's index and a flag's 0 or 1 (or NO_VALUE):
+  // anything else came from another column, and was handed back as it was.
+  const labels = column.kind === 'category' ? (column.labels?.length ?? 0) : column.kind === 'flag' ? 2 : undefined;
+  if (labels !== undefined && !Number.isNaN(value) && value !== NO_VALUE && !(Number.isInteger(value) && value >= 0 && value < labels)) {
+    throw argumentError('value', `${value} is not a value of the ${column.kind} column ${column.name}: 0 to ${labels - 1}, or NO_VALUE (${NO_VALUE}) where it does not apply`);
+  }
   return decisionValue(column, value);
 }
 

@@ -74,7 +74,7 @@ export function text(field: string, value: unknown, what: string): string {
 }
 
 /**
- * `value` when it is an object (not an array) with each of `keys`: plain
+ * `value` when it is an object (not an array) with each of `keys` defined: plain
  * data that an API function returned, handed back to be written out (a
  * Comparison to comparisonToCsv). Else a VoxpathError naming `field`, where
  * reading a field of null, a number or a Trace would throw a TypeError from
@@ -83,7 +83,14 @@ export function text(field: string, value: unknown, what: string): string {
  */
 export function plainData<T>(field: string, value: unknown, keys: readonly (keyof T & string)[], what: string): T {
   const isObject = typeof value === 'object' && value !== null && !Array.isArray(value) && !ArrayBuffer.isView(value);
-  const missing = isObject ? keys.filter((key) => !(key in value)) : [];
+  // A key set to undefined is as missing as one left out ({...c,
+  // firstDifference: undefined}); a getter is not called (a freed Trace's throw).
+  const absent = (key: string) => {
+    if (!(key in (value as object))) return true;
+    const own = Object.getOwnPropertyDescriptor(value, key);
+    return own !== undefined && 'value' in own && own.value === undefined;
+  };
+  const missing = isObject ? keys.filter(absent) : [];
   if (!isObject || missing.length > 0) {
     const lacking = missing.length > 0 ? ` without ${missing.join(', ')}` : '';
     throw argumentError(field, `expected ${what}, got ${describeValue(value)}${lacking}`);

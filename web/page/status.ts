@@ -5,7 +5,7 @@
  */
 import type { GcodeProgress } from '../core/index.js';
 import { diagnosticText } from '../form/page-advice.js';
-import { formatPoint } from '../format.js';
+import { countOf, formatPoint } from '../format.js';
 import type { Mode } from '../state/app-state.js';
 import type { MeasuredTrace } from '../worker/client.js';
 import type { ProgramRecord } from '../worker/protocol.js';
@@ -26,9 +26,9 @@ export function traceStatus(trace: MeasuredTrace): string {
 /** A program run in a sentence: its size, where it stopped and its warnings. */
 export function programStatus(p: ProgramRecord): string {
   return (
-    `${p.lines} lines, ${p.moveCount} moves, ${p.steps} steps at ${p.stepsPerMm.join(' / ')} steps/mm` +
+    `${countOf(p.lines, 'line')}, ${countOf(p.moveCount, 'move')}, ${countOf(p.steps, 'step')} at ${p.stepsPerMm.join(' / ')} steps/mm` +
     `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${diagnosticText(p.errors[0]!)}` : ''}` +
-    `${p.warnings.length ? `; ${p.warnings.length + p.warningsOmitted} warnings` : ''}.`
+    `${p.warnings.length ? `; ${countOf(p.warnings.length + p.warningsOmitted, 'warning')}` : ''}.`
   );
 }
 

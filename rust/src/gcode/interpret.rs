@@ -355,8 +355,15 @@ impl Interpreter {
                     line,
                     f.column,
                     format!(
-                        "F (feed) must be more than 0 and at most {MAX_FEED_MM_PER_MIN:e} mm/min, got {}",
-                        f.value
+                        "F (feed) must be more than 0 and at most {MAX_FEED_MM_PER_MIN:e} mm/min, got {}{}",
+                        f.value,
+                        // In G20 the word is in inches: its value in mm too,
+                        // the unit of the limit.
+                        if self.inches {
+                            format!(" in/min ({feed} mm/min)")
+                        } else {
+                            String::new()
+                        }
                     ),
                 ));
             }

@@ -35,7 +35,7 @@ use crate::algorithms;
 use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
-use crate::arc::{ArcSpec, MAX_TURNS, radii_within_tolerance};
+use crate::arc::{ArcSpec, CENTER, MAX_TURNS, radii_within_tolerance};
 use crate::error::{Error, Limit, Location};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step};
 use crate::ideal::IdealPath;
@@ -1329,7 +1329,24 @@ impl Runner {
         center.coords_mut()[u] = c[0];
         center.coords_mut()[v] = c[1];
         kept.center_steps = Some(center.coords().try_into().expect("3 axes"));
-        let place = |e: Error| Error::at(m.line, m.column, format!("{}", e));
+        let place = |e: Error| {
+            if e.field_name() != Some(CENTER.name) {
+                return Error::at(m.line, m.column, format!("{e}"));
+            }
+            // The circle about this center reaches off the grid: the fault
+            // of the word that put the center there (I, J, K or R), named
+            // at its column, on the axis it reaches past.
+            let radius = ((from.get(u) - c[0]) as f64).hypot((from.get(v) - c[1]) as f64);
+            let past = (0..2)
+                .find(|&i| c[i].abs() as f64 + radius > COORD_LIMIT as f64)
+                .unwrap_or(0);
+            let (letter, column) = arc.center_words[past];
+            Error::at(
+                m.line,
+                column,
+                format!("{letter}: at {} steps/mm, {}", spm[u], e.message),
+            )
+        };
         let spec = ArcSpec::new(from, to, center, arc.plane, arc.turn, 0, true).map_err(place)?;
         let local = spec.local_sweep_rad();
         // Extra turns on the grid: those that bring the grid sweep nearest
