@@ -55,6 +55,8 @@ describe('Check points (trace mode)', () => {
     const reason = await page.getByTestId('check-why').innerText();
     // The core's own sentence for regions' step 4, and its decision values: segment g, a tie, advance.
     expect(reason).toContain(why);
+    // Counted as the page counts steps: the decision that reaches point 5 is step 5 (the inspector's "Decision of step 5").
+    expect(reason).toMatch(/^The rule at step 5: /);
     expect(reason).toMatch(/region = g/);
     expect(reason).toMatch(/tie = true/);
     expect(reason).toMatch(/advance/);

@@ -113,6 +113,12 @@ describe('G-code mode: time', () => {
     expect(new Set(samples.map((s) => s.step)).size).toBeGreaterThan(3);
     // Some while it accelerates, where steps come ever faster (s = ½at²), not one per tick.
     expect(samples.some((s) => s.seconds < TOP / A && s.step > 0)).toBe(true);
+    // Paused, a step chosen shows its own instant (the clock stood still at
+    // the pause whatever step was shown): the last step, the program's end.
+    await page.keyboard.press('End');
+    await page.getByTestId('machine-time').filter({ hasText: /^machine time (.+) of \1$/ }).waitFor();
+    await page.keyboard.press('Home');
+    await page.getByTestId('machine-time').filter({ hasText: 'the program takes' }).waitFor();
     // Ten times slower: the clock is kept in the link.
     await page.getByTestId('slowdown').selectOption('10');
     await page.waitForURL(/slowdown=10/);

@@ -50,7 +50,12 @@ export class CheckPanel {
     this.#e.result.replaceChildren(p);
   }
 
-  /** The core's check of the points against `check.algorithm`'s path. */
+  /**
+   * The core's check of the points against `check.algorithm`'s path. Steps
+   * are counted as the rest of the page counts them ("Step 4 of 10", the
+   * inspector's "Decision of step 4"): step n is the one that reaches point
+   * n, the core's step index n - 1.
+   */
   show(check: Check): void {
     const parts: HTMLElement[] = [];
     const first = check.firstDifference;
@@ -68,7 +73,7 @@ export class CheckPanel {
       const why = element(
         'div',
         { className: 'first-difference' },
-        element('p', {}, element('strong', { textContent: first.stepIndex === null ? 'The rule: ' : `The rule at step ${first.stepIndex}: ` }), first.why),
+        element('p', {}, element('strong', { textContent: first.stepIndex === null ? 'The rule: ' : `The rule at step ${first.stepIndex + 1}: ` }), first.why),
         ...(values.length > 0 ? [element('p', { className: 'first-difference-values', textContent: values.join(', ') })] : []),
       );
       why.dataset.testid = 'check-why';

@@ -64,6 +64,10 @@ export class Timeline {
   #machine: MachineClock | undefined;
   /** The clock time of the last step machine-time playback showed, seconds. */
   #machineSeconds: number | undefined;
+  /** The point index #machineSeconds goes with. */
+  #machinePoint: number | undefined;
+  /** Counts the instants asked for a point chosen while paused, so that only the latest answer shows. */
+  #instantAsked = 0;
   /** The point index the marker stands at, or undefined for no marker. */
   #markerPoint: number | undefined;
 
@@ -119,7 +123,7 @@ export class Timeline {
     if (instants === this.#instants) return;
     this.#instants = instants;
     this.#stopMachine();
-    this.#machineSeconds = undefined;
+    this.#machineSeconds = this.#machinePoint = undefined;
     this.#render();
   }
 
@@ -132,8 +136,9 @@ export class Timeline {
   #startMachine(instants: PlannedInstants): MachineClock {
     return new MachineClock(instants, this.#store.state.pointIndex, (pointIndex, seconds) => {
       const steps = this.#steps ?? 0;
-      this.#machineSeconds = seconds;
       const next = Math.min(pointIndex, steps);
+      this.#machineSeconds = seconds;
+      this.#machinePoint = next;
       this.#store.update({ pointIndex: next, playing: next < steps });
       // Shown even when the step did not change (the state then is the same, and no render follows).
       this.#renderMachineTime();
@@ -237,14 +242,34 @@ export class Timeline {
     }
   }
 
-  /** The machine-time readout: shown while machine time is chosen for a program. */
+  /**
+   * The machine-time readout: shown while machine time is chosen for a
+   * program. A point chosen while paused (a step button, the scrubber, a
+   * chart) reads the instant that point is reached, asked of the worker;
+   * until it comes the readout keeps the last one.
+   */
   #renderMachineTime(): void {
     const out = this.#e.machineTime;
     const instants = this.#instants;
-    out.hidden = this.#store.state.slowdown === null || !instants;
+    const { slowdown, playing, pointIndex } = this.#store.state;
+    out.hidden = slowdown === null || !instants;
     if (!instants) return;
+    if (slowdown !== null && !playing && pointIndex !== this.#machinePoint) {
+      const asked = ++this.#instantAsked;
+      this.#machinePoint = pointIndex;
+      instants.secondsAtPoint(pointIndex).then(
+        (seconds) => {
+          if (asked !== this.#instantAsked || instants !== this.#instants || this.#store.state.playing) return;
+          this.#machineSeconds = seconds;
+          this.#renderMachineTime();
+        },
+        // The program was replaced or its worker lost: nothing to show for it.
+        () => undefined,
+      );
+    }
     const seconds = this.#machineSeconds;
-    out.value = seconds === undefined ? `machine time: the program takes ${formatSeconds(instants.durationSeconds)}` : `machine time ${formatSeconds(seconds)} of ${formatSeconds(instants.durationSeconds)}`;
+    // At the start the readout says what is ahead: how long the program takes.
+    out.value = !seconds ? `machine time: the program takes ${formatSeconds(instants.durationSeconds)}` : `machine time ${formatSeconds(seconds)} of ${formatSeconds(instants.durationSeconds)}`;
     if (seconds === undefined) delete out.dataset.seconds;
     else out.dataset.seconds = String(seconds);
   }
