@@ -501,6 +501,15 @@ describe('G-code mode', () => {
     await page.getByTestId('sample').selectOption('helix.gcode');
     await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
     await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    expect(await page.getByTestId('sample').inputValue()).toBe('helix.gcode');
+    // The sample replaced the program as an edit: Undo in the editor brings
+    // the user's own program back (it was lost, and Undo gave a mix of both).
+    await page.getByTestId('gcode-text').focus();
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toBe('G21 G90\nG1 X1 Y0.5 F100\n');
+    await steps(page, 80);
+    await page.keyboard.press('Control+Shift+z');
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
     // Edited, the program is no longer the sample; picking the sample again brings it back.
     await page.getByTestId('gcode-text').fill('G1 X1 F100\n');
     expect(await page.getByTestId('sample').inputValue()).toBe('');

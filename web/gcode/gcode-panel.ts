@@ -98,6 +98,8 @@ export class GcodePanel {
   #starts = [0, 1];
   /** True while the program is listed read-only rather than in the text box. */
   #listed = false;
+  /** True while a sample is inserted into the box as an edit (its input event is not the user's). */
+  #sampleInserted = false;
   /** The gutter's numbers: only the lines in view (a program can have 100,000). */
   readonly #gutterLines: HTMLElement;
   /** The listing's lines in view, placed over a spacer as tall as the whole program. */
@@ -187,8 +189,33 @@ export class GcodePanel {
     const response = await fetch(`samples/${encodeURIComponent(file)}`);
     if (!response.ok) throw new Error(`the sample ${file} could not be loaded (HTTP ${response.status})`);
     const text = await response.text();
-    this.#setText(text);
+    if (!this.#replaceInBox(text)) this.#setText(text);
     this.#store.update({ gcode: text, pointIndex: 0, camera: null });
+  }
+
+  /**
+   * Puts a sample in the text box as an edit the box can undo, so that
+   * Ctrl+Z brings back the program it replaced (written as the box's value,
+   * the user's own program was gone, and Undo gave a mix of both). Only
+   * where both fit the box (a listing has no undo) and the browser still
+   * records an inserted text (execCommand). Focus goes back where it was.
+   * False when the sample is to be shown the plain way.
+   */
+  #replaceInBox(text: string): boolean {
+    const box = this.#e.text;
+    if (this.#listed || lineStarts(text).length - 1 > EDITABLE_LINES) return false;
+    const focused = document.activeElement;
+    box.focus();
+    box.select();
+    this.#sampleInserted = true;
+    const inserted = document.execCommand('insertText', false, text) && box.value === text;
+    this.#sampleInserted = false;
+    if (focused instanceof HTMLElement) focused.focus();
+    if (!inserted) return false;
+    box.setSelectionRange(0, 0);
+    box.scrollTop = 0;
+    this.#setText(text, { fromBox: true });
+    return true;
   }
 
   /** The line (from 1) holding character `offset` of the program: by bisection of the line starts, not a scan of the text. */
@@ -209,6 +236,8 @@ export class GcodePanel {
 
   /** The user changed the program to `text`: in the box (`fromBox`: typed, dropped) or by a paste the box did not take. */
   #edited(text: string, fromBox = false): void {
+    // The sample's own insertion (#replaceInBox) is shown by #loadSample.
+    if (this.#sampleInserted) return;
     // No longer the sample as loaded; and picking that sample again must fire a change to load it afresh.
     this.#e.sample.value = '';
     this.#setText(text, { fromBox });
