@@ -49,6 +49,35 @@ describe('view and form controls', () => {
     await p.close();
   });
 
+  it('frames the path again when the window changes shape, unless the user placed the camera', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    // Both handles well inside the canvas, as a framed path leaves them.
+    const inside = async () => {
+      const canvas = (await page.getByTestId('scene-canvas').boundingBox())!;
+      const handles = await Promise.all(['handle-from', 'handle-to'].map(async (id) => (await page.getByTestId(id).boundingBox())!));
+      const margin = 20;
+      return handles.every((h) => h.x >= canvas.x + margin && h.x + h.width <= canvas.x + canvas.width - margin && h.y >= canvas.y + margin && h.y + h.height <= canvas.y + canvas.height - margin);
+    };
+    await expect.poll(inside).toBe(true);
+    // Narrower and taller: framed for 1280 x 800, the handles ended 11 px
+    // from the canvas's sides, the end cell's cube cut by its edge.
+    await page.setViewportSize({ width: 800, height: 900 });
+    await expect.poll(inside).toBe(true);
+    expect(new URL(page.url()).searchParams.get('camera')).toBeNull();
+    // A camera the user placed stays where it is.
+    await page.getByTestId('scene-canvas').focus();
+    await page.keyboard.press('+');
+    const placed = await linkedCamera(page);
+    await page.setViewportSize({ width: 1000, height: 700 });
+    await page.waitForTimeout(300);
+    expect(new URL(page.url()).searchParams.get('camera')).toBe(placed.text);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('traces with the gcd reduction when its box is checked, and keeps it over a new visit', async () => {
     const p = await openPage('?algorithm=regions&from=0,0,0&to=10,8,6&step=1');
     const { page } = p;

@@ -109,14 +109,14 @@ describe('steps per mm per axis', () => {
     const gcode = encodeURIComponent('G21 G90\nG1 X1 Y1 Z1 F600\n');
     const p = await openPage(`?mode=gcode&gcode=${gcode}&stepsPerMm=80,80,400`);
     const { page } = p;
-    await status(page, '1 moves, 400 steps at 80 / 80 / 400 steps/mm');
+    await status(page, '1 move, 400 steps at 80 / 80 / 400 steps/mm');
     const field = page.getByTestId('input-machine-stepsPerMm');
     expect(await field.inputValue()).toBe('80,80,400');
     // The field's hint gives the syntax the field takes, the CLI's.
     expect(await page.locator('#machine-stepsPerMm-hint').innerText()).toContain('80,80,400');
 
     await field.fill('80,80,200');
-    await status(page, '1 moves, 200 steps at 80 / 80 / 200 steps/mm');
+    await status(page, '1 move, 200 steps at 80 / 80 / 200 steps/mm');
     await expect.poll(() => new URL(page.url()).searchParams.get('stepsPerMm')).toBe('80,80,200');
     expect(await text(page, 'form-error')).toBe('');
 

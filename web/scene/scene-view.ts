@@ -207,6 +207,8 @@ export class SceneView {
   #pointIndex = 0;
   /** The camera moves with the current cell (setFollow). */
   #follow = false;
+  /** The camera is where resetView put it, not where the user or a link did: a resize frames the path again. */
+  #framedByDefault = false;
   /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
   #drawnOnce = false;
   /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
@@ -269,6 +271,10 @@ export class SceneView {
       this.#labels.setSize(width, height);
       cellUniforms.halfHeightPx.value = (height * this.#renderer.getPixelRatio()) / 2;
       this.#updateProjections();
+      // A view framed by default is framed again for its new shape (a
+      // window made narrower left the path's end outside it); a camera
+      // the user placed stays where they put it.
+      if (this.#framedByDefault) this.resetView();
       this.requestRender();
     }).observe(container);
   }
@@ -441,6 +447,7 @@ export class SceneView {
 
   /** Puts the camera where `state` says (no report: the state already holds it). */
   setCamera(state: CameraState): void {
+    this.#framedByDefault = false;
     const camera = this.#activeCamera();
     camera.position.fromArray(state.position);
     this.#controls.target.fromArray(state.target);
@@ -568,6 +575,7 @@ export class SceneView {
     } else {
       this.#fit(VIEW_DIRECTION, drawn);
     }
+    this.#framedByDefault = true;
   }
 
   /**
