@@ -400,6 +400,14 @@ describe('compare mode', () => {
     const tools = (await page.locator('#viewport .view-tools').boundingBox())!;
     const overlap = legend.x < tools.x + tools.width && tools.x < legend.x + legend.width && legend.y < tools.y + tools.height && tools.y < legend.y + legend.height;
     expect(overlap).toBe(false);
+    // The legend says where the second view is: to the right, or below once
+    // a window taller than wide stacks the views (it said "right view" there).
+    const second = page.locator('#legend-second-name');
+    expect(await second.innerText()).toBe('greedy (right view)');
+    await page.setViewportSize({ width: 800, height: 900 });
+    await expect.poll(() => second.innerText()).toBe('greedy (lower view)');
+    const [upper, lower] = await Promise.all(['#viewport', '#viewport-b'].map(async (v) => (await page.locator(v).boundingBox())!));
+    expect(lower!.y).toBeGreaterThan(upper!.y + upper!.height - 1);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

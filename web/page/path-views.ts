@@ -19,6 +19,10 @@ import type { Store } from '../state/store.js';
 import type { LearnerCheck } from '../worker/protocol.js';
 import { mainTrace, type Shown } from './shown.js';
 
+
+/** Where style.css stacks two views one above the other (its @media (orientation: portrait)). */
+const PORTRAIT = window.matchMedia('(orientation: portrait)');
+
 export interface PathViewElements {
   /** Where the second view goes (side by side). */
   secondViewport: HTMLDivElement;
@@ -50,6 +54,18 @@ export class PathViews {
   }
   /** The shown point's detail, whose decision the overlay draws. */
   #detail: StepDetail | undefined;
+  /** The second path's algorithm, as the legend names it. */
+  #secondName = 'second';
+
+  /**
+   * Names the second path in the legend, and side by side where its view
+   * is: to the right, or below in a window taller than wide, where the
+   * stylesheet stacks the views (it said "right view" of the lower one).
+   */
+  #nameSecond(side: boolean): void {
+    const where = PORTRAIT.matches ? 'lower view' : 'right view';
+    this.#e.legendSecondName.textContent = side ? `${this.#secondName} (${where})` : this.#secondName;
+  }
 
   /** `main` is made early, so that its shaders compile while the core loads (SceneView's warm-up). */
   constructor(main: SceneView, elements: PathViewElements, store: Store<AppState>) {
@@ -64,6 +80,7 @@ export class PathViews {
     view2d.addEventListener('change', () => store.update({ projection: view2d.checked ? '2d' : '3d', camera: null }));
     reset.addEventListener('click', () => store.update({ camera: null }));
     decision3d.addEventListener('change', () => store.update({ decision3d: decision3d.checked }));
+    PORTRAIT.addEventListener('change', () => this.#nameSecond(store.state.mode === 'compare' && store.state.layout === 'side'));
   }
 
   /**
@@ -106,7 +123,8 @@ export class PathViews {
     const e = this.#e;
     const compared = state.mode === 'compare';
     e.legendVisited.textContent = compared ? `visited by ${a?.algorithm ?? 'the first'}` : 'visited';
-    e.legendSecondName.textContent = `${b?.algorithm ?? 'second'}${side ? ' (right view)' : ''}`;
+    this.#secondName = `${b?.algorithm ?? 'second'}`;
+    this.#nameSecond(side);
     e.legendOnlyFirst.textContent = `only ${a?.algorithm ?? 'first'} visits`;
     e.legendOnlySecond.textContent = `only ${b?.algorithm ?? 'second'} visits`;
     this.setLearner(shown.learner);
