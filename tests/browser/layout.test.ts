@@ -116,6 +116,36 @@ describe('the decision cards', () => {
     expect(await cards()).toEqual(before);
     await p.close();
   });
+
+  it('hold a long value on one line and break a long name between its words', async () => {
+    // arc-segments' fourth chord step: faceU = 1/6, written 0.166667 (it wrapped as 0.16666/7).
+    const p = await openPage('?algorithm=arc-segments&from=20,0,0&to=-20,0,0&center=0,0,0&step=3');
+    const { page } = p;
+    await page.setViewportSize({ width: 1280, height: 800 });
+    const faceU = page.getByTestId('inspector-value-faceU');
+    await faceU.filter({ hasText: '0.166667' }).waitFor();
+    const lines = (selector: string) =>
+      page.locator(selector).evaluate((e) => Math.round(e.getBoundingClientRect().height / parseFloat(getComputedStyle(e).lineHeight)));
+    expect(await lines('[data-testid=inspector-value-faceU]')).toBe(1);
+    // circle's otherCandidate: "other" and "Candidate" on two lines (it broke as otherCandid/ate).
+    await page.goto(page.url().replace(/\?.*/, '?algorithm=circle&from=5,0,0&to=0,5,0&center=0,0,0&step=2'));
+    const title = page.locator('[data-testid=inspector-decisions] dt').filter({ hasText: 'otherCandidate' });
+    await title.waitFor();
+    expect(await title.evaluate((dt) => dt.querySelectorAll('wbr').length)).toBe(1);
+    expect(await title.evaluate((dt) => (dt.lastChild as Text).data)).toBe('Candidate');
+    // Each word whole: laid out in one box each.
+    const boxes = await title.evaluate((dt) =>
+      Array.from(dt.childNodes)
+        .filter((n) => n.nodeType === Node.TEXT_NODE)
+        .map((n) => {
+          const range = document.createRange();
+          range.selectNodeContents(n);
+          return range.getClientRects().length;
+        }),
+    );
+    expect(boxes).toEqual([1, 1]);
+    await p.close();
+  });
 });
 
 describe('the algorithm picker', () => {

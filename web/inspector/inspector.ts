@@ -43,6 +43,16 @@ function formatCell(cell: DecisionCell): string {
   return String(reading);
 }
 
+/** A column's name as a card's title, breakable between its camelCase words (otherCandidate wrapped as otherCandid/ate). */
+function breakableName(name: string): HTMLElement {
+  const title = document.createElement('dt');
+  name.split(/(?<=[a-z0-9])(?=[A-Z])/).forEach((word, i) => {
+    if (i > 0) title.append(document.createElement('wbr'));
+    title.append(word);
+  });
+  return title;
+}
+
 export class Inspector {
   readonly #e: InspectorElements;
   #trace: InspectedTrace | undefined;
@@ -65,7 +75,7 @@ export class Inspector {
       this.#cells.set(column.name, value);
       // A <div> per name/value pair (allowed in a <dl>) lets each pair be laid out as one tile.
       const row = document.createElement('div');
-      row.append(Object.assign(document.createElement('dt'), { textContent: column.name }), value);
+      row.append(breakableName(column.name), value);
       rows.push(row);
       docs.push(Object.assign(document.createElement('dt'), { textContent: column.name }), Object.assign(document.createElement('dd'), { textContent: column.doc }));
     }
@@ -99,7 +109,12 @@ export class Inspector {
     e.deviation.textContent = detail.deviation === null ? NO_VALUE_TEXT : `${detail.deviation.toFixed(6)} grid units`;
     for (const cell of detail.decision) {
       const value = this.#cells.get(cell.name);
-      if (value) value.textContent = formatCell(cell);
+      if (!value) continue;
+      const text = formatCell(cell);
+      value.textContent = text;
+      // A value longer than a card holds at full size (-0.166667) is set
+      // smaller, not broken across lines: cards never move as values change.
+      value.dataset.size = text.length > 9 ? 'smaller' : text.length > 7 ? 'small' : '';
     }
     const figure = decisionFigure(detail.figure);
     e.figure.replaceChildren(...(figure ? [figure] : []));
