@@ -71,6 +71,14 @@ describe('Check points (trace mode)', () => {
     // Both cells at point 5 outlined, the learner's path drawn in its colour, with its legend entry.
     expect(await page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('2');
     expect(await page.getByTestId('legend-learner').isVisible()).toBe(true);
+    // The legend grew by the learner's two entries: the path is framed below it again (the z axis's name stood under it).
+    await expect
+      .poll(async () => {
+        const legend = (await page.locator('#legend').boundingBox())!;
+        const z = (await page.locator('#viewport .axis-name').filter({ hasText: /^z$/ }).boundingBox())!;
+        return z.y >= legend.y + legend.height;
+      })
+      .toBe(true);
     await page.getByTestId('last').click();
     const stats = await screenshot(page, 'check-points', '[data-testid=scene-canvas]');
     expect(stats.differingFraction).toBeGreaterThan(0.02);

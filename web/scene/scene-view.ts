@@ -277,6 +277,17 @@ export class SceneView {
       if (this.#framedByDefault) this.resetView();
       this.requestRender();
     }).observe(container);
+    // The legend and the tools over the view's top take their room from the
+    // framed picture (#topInset): when they grow (a learner's points add two
+    // legend entries) a path framed by default is framed below them again,
+    // not left with its z axis under the legend.
+    const overlays = new ResizeObserver(() => {
+      if (this.#framedByDefault) {
+        this.resetView();
+        this.requestRender();
+      }
+    });
+    for (const child of container.children) if (child !== this.canvas && child !== this.#labels.domElement) overlays.observe(child);
   }
 
   /**
