@@ -130,10 +130,11 @@ describe('the page', () => {
     expect(await text(page, 'step-counter')).toBe('Step 1 of 10');
     await expect.poll(() => decision(page, 'M')).toBe('4');
 
-    // A move longer than the page draws: the limit is the page's own, with no field, and the message says so.
+    // A move longer than the page draws: the limit is the page's own, with no field: the message says so, beside the end point.
     await page.getByTestId('input-to-x').fill('2000000');
-    const formError = page.getByTestId('form-error');
+    const formError = page.getByTestId('error-to');
     await formError.filter({ hasText: 'maxSteps' }).waitFor();
+    expect(await text(page, 'form-error')).toBe('');
     expect(await formError.innerText()).toMatch(/^This path needs at least 2,000,000 steps; the page draws at most 1,500,000 \(its maxSteps, fixed\)\./);
 
     await page.getByTestId('input-to-x').fill('12');

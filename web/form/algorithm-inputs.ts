@@ -128,10 +128,12 @@ export class AlgorithmInputs {
   /**
    * Shows the core's verdict on the last request: beside the option it
    * names, or under the form. A cap the page sets itself (maxSteps) has no
-   * field to fix, so the page says what can be done here instead.
+   * field of its own, so the page says what can be done here instead, beside
+   * the end point, where a move is shortened (under the form it was below
+   * the fold, away from the field just typed).
    */
   showCoreError(error: InputError | undefined): void {
-    const shown = error?.limit ? { message: pathLimitAdvice(error.limit) } : error;
+    const shown = error?.limit ? { field: 'to', message: pathLimitAdvice(error.limit) } : error;
     if (this.#form) this.#form.showCoreError(shown);
     else this.#e.formError.textContent = shown ? shown.message : '';
   }
