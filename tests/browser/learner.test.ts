@@ -298,6 +298,15 @@ describe('results of a rejected input', () => {
     await expect.poll(() => note.isVisible()).toBe(false);
     expect(await opacity('#viewport')).toBe('1');
 
+    // Refused by the page before the core sees it (an empty coordinate): marked the same way, and unmarked once it is typed again.
+    await page.getByTestId('input-to-x').fill('');
+    await page.getByTestId('error-to').filter({ hasText: 'x needs a number' }).waitFor();
+    await note.filter({ hasText: 'Out of date' }).waitFor();
+    expect(await opacity('#viewport')).toBe('0.5');
+    await page.getByTestId('input-to-x').fill('12');
+    await expect.poll(() => note.isVisible()).toBe(false);
+    expect(await opacity('#viewport')).toBe('1');
+
     // The experiment's table, after a count it cannot take.
     await page.getByTestId('mode-experiment').click();
     await page.getByTestId('lines-table').waitFor();

@@ -45,8 +45,19 @@ export function readPerAxis(text: string): number | number[] | undefined | null 
   return values.length === 1 ? values[0]! : (values as number[]);
 }
 
+/**
+ * The event a form's container sends (bubbling) when its fields' own checks
+ * change: `invalid` while any field holds a value the page refused before
+ * the core saw it (an empty coordinate, "80,abc").
+ */
+export const INPUTS_VALIDITY = 'inputs-validity';
+export interface InputsValidity {
+  invalid: boolean;
+}
+
 export class OptionsForm {
   readonly #fields = new Map<string, Field>();
+  readonly #container: HTMLElement;
   /** Where errors naming no field of this form go (say the algorithm, or maxSteps, which the page sets). */
   readonly #formError: HTMLElement;
   readonly #onChange: (name: string, value: OptionValue | undefined) => void;
@@ -69,6 +80,7 @@ export class OptionsForm {
     idPrefix = 'option',
   ) {
     this.#formError = formError;
+    this.#container = container;
     this.#onChange = onChange;
     this.#idPrefix = idPrefix;
     container.replaceChildren(...specs.map((spec) => this.#field(spec, axes, values[spec.name])));
@@ -155,6 +167,10 @@ export class OptionsForm {
   #setLocalError(name: string, field: Field, message: string | undefined): void {
     field.localError = message;
     this.#render(field);
+    // The page's own check stopped a value short of the core: what is on
+    // screen is no longer of the inputs shown, as when the core refuses one.
+    const invalid = [...this.#fields.values()].some((f) => f.localError !== undefined);
+    this.#container.dispatchEvent(new CustomEvent<InputsValidity>(INPUTS_VALIDITY, { bubbles: true, detail: { invalid } }));
   }
 
   #render(field: Field): void {

@@ -23,7 +23,7 @@ import type { ComparePanel } from '../compare/compare-panel.js';
 import type { StepDetail, TraceOptions } from '../core/types.js';
 import type { ExperimentPanel } from '../experiment/experiment-panel.js';
 import type { AlgorithmInputs } from '../form/algorithm-inputs.js';
-import type { OptionsForm } from '../form/options-form.js';
+import { INPUTS_VALIDITY, type InputsValidity, type OptionsForm } from '../form/options-form.js';
 import type { GcodePanel } from '../gcode/gcode-panel.js';
 import type { TimingDiagram } from '../gcode/timing-diagram.js';
 import type { Inspector } from '../inspector/inspector.js';
@@ -96,8 +96,25 @@ export class Orchestrator {
   #latestCheck = 0;
   #checkTimer: ReturnType<typeof setTimeout> | undefined;
 
+  /** The core refused the last request (its message is by the inputs). */
+  #rejected = false;
+  /** Forms with a field holding a value the page refused itself (INPUTS_VALIDITY). */
+  readonly #invalidForms = new Set<EventTarget>();
+
   constructor(parts: PageParts) {
     this.#p = parts;
+    // A value the page refuses never reaches the core, so no run says the
+    // view is out of date: the fields' own checks do (as a refusal by the
+    // core does), and a field made right again takes it back unless the
+    // core's refusal stands.
+    document.addEventListener(INPUTS_VALIDITY, (event) => {
+      const { invalid } = (event as CustomEvent<InputsValidity>).detail;
+      if (invalid) this.#invalidForms.add(event.target!);
+      else this.#invalidForms.delete(event.target!);
+      const shown = Object.keys(this.#shown).length > 0;
+      if (this.#invalidForms.size > 0 && shown) markStale(parts.staleNote, 'rejected');
+      else if (this.#invalidForms.size === 0 && !this.#rejected && document.body.dataset.stale === 'rejected') markStale(parts.staleNote, undefined);
+    });
     this.#details = new PointDetails(
       (detail: StepDetail) => {
         parts.inspector.showDetail(detail);
@@ -219,7 +236,10 @@ export class Orchestrator {
       p.inputs.showCoreError(undefined);
       p.gcodePanel.showCoreError(undefined);
       p.experimentForm.showCoreError(undefined);
-      markStale(p.staleNote, undefined);
+      // Traced, unless a field still holds a value the page refused: then
+      // what is shown is not of what the fields show.
+      markStale(p.staleNote, this.#invalidForms.size > 0 ? 'rejected' : undefined);
+      this.#rejected = false;
       this.#freeShown();
       this.#shown = next;
       this.#ruleOptions = ruleOptions;
@@ -233,6 +253,7 @@ export class Orchestrator {
         p.status.cancelled();
         if (this.#shown.program) markStale(p.staleNote, 'cancelled');
       } else if (error instanceof InputRejected) {
+        this.#rejected = true;
         if (Object.keys(this.#shown).length > 0) markStale(p.staleNote, 'rejected');
         if (state.mode === 'gcode') p.gcodePanel.showCoreError(error);
         else if (state.mode === 'experiment') p.experimentForm.showCoreError(error);
