@@ -245,16 +245,24 @@ export async function screenshot(
 }
 
 /**
- * The view's canvas alone (no HTML labels or legend over it), as the page's
- * PNG export writes it: drawn and encoded in one task, since the canvas
- * keeps no drawing buffer to read later. In an embedded page, which has no
- * export button, the export is asked for through the same click.
+ * The page's PNG export of the (first) view: drawn and encoded in one task,
+ * since the canvas keeps no drawing buffer to read later. In an embedded
+ * page, which has no export button, the export is asked for through the
+ * same click. The export draws the labels shown over the view (axis names,
+ * ticks, handles); unless `labels`, they are hidden while it is made, so
+ * that colours counted in it are the drawing's (label text is as dark as
+ * the ideal path, and the exit face's letters stand on its crossing dot).
  */
-export async function canvasPng(page: Page): Promise<PNG> {
-  const downloading = page.waitForEvent('download');
-  await page.evaluate(() => document.querySelector<HTMLButtonElement>('[data-testid="export-png"]')!.click());
-  const download = await downloading;
-  const chunks: Buffer[] = [];
-  for await (const chunk of await download.createReadStream()) chunks.push(chunk as Buffer);
-  return PNG.sync.read(Buffer.concat(chunks));
+export async function canvasPng(page: Page, { labels = false } = {}): Promise<PNG> {
+  const hidden = labels ? undefined : await page.addStyleTag({ content: '.scene-labels { display: none !important; }' });
+  try {
+    const downloading = page.waitForEvent('download');
+    await page.evaluate(() => document.querySelector<HTMLButtonElement>('[data-testid="export-png"]')!.click());
+    const download = await downloading;
+    const chunks: Buffer[] = [];
+    for await (const chunk of await download.createReadStream()) chunks.push(chunk as Buffer);
+    return PNG.sync.read(Buffer.concat(chunks));
+  } finally {
+    await hidden?.evaluate((style) => (style as Element).remove());
+  }
 }

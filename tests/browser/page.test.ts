@@ -13,7 +13,7 @@
 //   cp tests/browser/__screenshots__/actual/readme-embed.png docs/embed.png
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
-import { closeAll, openPage, screenshot, siteUrl } from './harness.js';
+import { canvasPng, closeAll, openPage, screenshot, siteUrl } from './harness.js';
 
 afterAll(closeAll);
 
@@ -142,6 +142,32 @@ describe('the page', () => {
     expect(await text(page, 'form-error')).toBe('');
     expect(await text(page, 'error-to')).toBe('');
     expect(await page.getByTestId('input-to-x').getAttribute('aria-invalid')).toBe('false');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('exports the view as a PNG with its labels: axis names, ticks and handles (the canvas alone had none)', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    const png = await canvasPng(page, { labels: true });
+    const canvas = (await page.getByTestId('scene-canvas').boundingBox())!;
+    const scale = png.width / canvas.width;
+    /** Pixels darker than the page's grid lines inside the page box `box` (CSS pixels), in the PNG. */
+    const inkIn = (box: { x: number; y: number; width: number; height: number }) => {
+      let ink = 0;
+      for (let y = Math.floor((box.y - canvas.y) * scale); y < Math.ceil((box.y - canvas.y + box.height) * scale); y++) {
+        for (let x = Math.floor((box.x - canvas.x) * scale); x < Math.ceil((box.x - canvas.x + box.width) * scale); x++) {
+          const i = (png.width * y + x) * 4;
+          if (png.data[i]! + png.data[i + 1]! + png.data[i + 2]! < 3 * 90) ink++;
+        }
+      }
+      return ink;
+    };
+    for (const label of [page.locator('#viewport .axis-name').filter({ hasText: /^x$/ }), page.getByTestId('handle-to')]) {
+      expect(inkIn((await label.boundingBox())!)).toBeGreaterThan(3);
+    }
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -681,10 +681,51 @@ export class SceneView {
     return Math.min(bottom / height, MAX_TOP_INSET);
   }
 
-  /** The view as a PNG (the canvas; labels are HTML and not in it). */
+  /**
+   * The view as a PNG: the drawing, with the labels drawn over it as they
+   * stand (axis names, tick values in grid units or mm and steps, the
+   * endpoint handles). The labels are HTML over the canvas, so the canvas
+   * alone gave a picture without a coordinate to read.
+   */
   toPng(): Promise<Blob> {
     this.#render();
-    return new Promise((resolve, reject) => this.canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the view could not be encoded as PNG'))), 'image/png'));
+    const picture = document.createElement('canvas');
+    [picture.width, picture.height] = [this.canvas.width, this.canvas.height];
+    const context = picture.getContext('2d')!;
+    context.drawImage(this.canvas, 0, 0);
+    const view = this.canvas.getBoundingClientRect();
+    context.scale(picture.width / Math.max(1, view.width), picture.height / Math.max(1, view.height));
+    const labels = this.#labels.domElement;
+    // The handles' discs first, then every piece of label text on top, each
+    // in its own font and colour, where the page shows it.
+    for (const handle of labels.querySelectorAll<HTMLElement>('.handle')) {
+      const box = handle.getBoundingClientRect();
+      const style = getComputedStyle(handle);
+      if (box.width === 0 || style.visibility !== 'visible') continue;
+      context.beginPath();
+      context.arc(box.left - view.left + box.width / 2, box.top - view.top + box.height / 2, box.width / 2 - 1, 0, 2 * Math.PI);
+      context.fillStyle = style.backgroundColor;
+      context.fill();
+      context.lineWidth = parseFloat(style.borderTopWidth) || 2;
+      context.strokeStyle = style.borderTopColor;
+      context.stroke();
+    }
+    const texts = document.createTreeWalker(labels, NodeFilter.SHOW_TEXT);
+    const range = document.createRange();
+    for (let node = texts.nextNode(); node; node = texts.nextNode()) {
+      const text = node.textContent?.trim();
+      if (!text) continue;
+      range.selectNodeContents(node);
+      const box = range.getBoundingClientRect();
+      const style = getComputedStyle(node.parentElement!);
+      if (box.width === 0 || style.visibility !== 'visible') continue;
+      context.font = `${style.fontStyle} ${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+      context.fillStyle = style.color;
+      context.textAlign = 'center';
+      context.textBaseline = 'middle';
+      context.fillText(text, box.left - view.left + box.width / 2, box.top - view.top + box.height / 2);
+    }
+    return new Promise((resolve, reject) => picture.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the view could not be encoded as PNG'))), 'image/png'));
   }
 
   #render(): void {
