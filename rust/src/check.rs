@@ -72,6 +72,11 @@ impl Points {
     /// checks text; errors name the field `points` and the point index.
     pub fn from_flat(values: &[f64], dims: usize, move_dims: usize) -> Result<Points, Error> {
         let wrong = |message: String| Error::field("points", message);
+        // An empty list has no coordinates to count ("the points have 0
+        // coordinates each" said it as a mismatch).
+        if values.is_empty() {
+            return Err(wrong("there are no points".into()));
+        }
         if dims != move_dims {
             return Err(wrong(format!(
                 "the points have {dims} coordinates each; the move has {move_dims}"
@@ -1572,6 +1577,10 @@ mod tests {
         assert_eq!(
             f(&[0.0, 0.0], 2),
             "points: the points have 2 coordinates each; the move has 3"
+        );
+        assert_eq!(
+            Points::from_flat(&[], 0, 3).unwrap_err().to_string(),
+            "points: there are no points"
         );
         assert_eq!(
             f(&[0.0, 0.0, 0.0, 1.0, f64::NAN, 0.0], 3),

@@ -144,6 +144,17 @@ describe('the decision cards', () => {
         }),
     );
     expect(boxes).toEqual([1, 1]);
+
+    // A bar's value and note whole inside its figure: the helix's step 3 keeps its
+    // longest candidate, "9 (taken)", which ran past the figure's right edge.
+    await page.goto(page.url().replace(/\?.*/, '?algorithm=helix&from=10,0,0&to=10,0,24&center=0,0,0&step=3'));
+    const figure = page.getByTestId('decision-figure');
+    await expect.poll(() => figure.locator('.bar-value').allTextContents()).toEqual(['9 (taken)', '-10']);
+    const svgBox = (await figure.locator('svg.bars-figure').boundingBox())!;
+    for (const value of await figure.locator('.bar-value').all()) {
+      const box = (await value.boundingBox())!;
+      expect(box.x + box.width).toBeLessThanOrEqual(svgBox.x + svgBox.width);
+    }
     await p.close();
   });
 });

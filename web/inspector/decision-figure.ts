@@ -100,6 +100,9 @@ function exitFaceFigure(face: ExitFace): SVGSVGElement {
   return root;
 }
 
+/** Width of a character of a bar's value (12 px system-ui, style.css .bar-value), at most: digits, signs, letters of a note. */
+const BAR_VALUE_CHAR_PX = 7;
+
 /** Bars of `values` (label, value, chosen) on one scale, with an optional threshold line. */
 function bars(title: string, values: { label: string; value: number; note?: string }[], threshold?: { label: string; value: number }): SVGSVGElement {
   const width = 260;
@@ -109,7 +112,10 @@ function bars(title: string, values: { label: string; value: number; note?: stri
   const largest = Math.max(1, ...values.map((v) => Math.abs(v.value)), Math.abs(threshold?.value ?? 0));
   const min = Math.min(0, ...values.map((v) => v.value));
   const span = largest - min;
-  const x = (v: number) => labelWidth + ((v - min) / span) * (width - labelWidth - 40);
+  const valueText = (v: { value: number; note?: string }) => `${v.value}${v.note ? ` ${v.note}` : ''}`;
+  // Room right of the longest bar for its value and note ("9 (taken)" ran past the edge in a fixed 40).
+  const valueRoom = 8 + BAR_VALUE_CHAR_PX * Math.max(4, ...values.map((v) => valueText(v).length));
+  const x = (v: number) => labelWidth + ((v - min) / span) * (width - labelWidth - valueRoom);
   const root = svg('svg', { viewBox: `0 0 ${width} ${height}`, role: 'img', class: 'bars-figure' });
   root.append(svg('title', {}, title));
   values.forEach((v, i) => {
@@ -118,7 +124,7 @@ function bars(title: string, values: { label: string; value: number; note?: stri
     const x0 = x(Math.min(0, v.value));
     const x1 = x(Math.max(0, v.value));
     root.append(svg('rect', { x: x0, y, width: Math.max(1, x1 - x0), height: rowHeight - 6, class: v.note ? 'bar chosen' : 'bar' }));
-    root.append(svg('text', { x: x1 + 4, y: y + 13, class: 'bar-value' }, `${v.value}${v.note ? ` ${v.note}` : ''}`));
+    root.append(svg('text', { x: x1 + 4, y: y + 13, class: 'bar-value' }, valueText(v)));
   });
   root.append(svg('line', { x1: x(0), y1: 2, x2: x(0), y2: height - 20, class: 'bar-axis' }));
   if (threshold) {
