@@ -477,7 +477,6 @@ describe('G-code mode', () => {
     await page.getByTestId('jump-input').press('Enter');
     await expect.poll(() => figure.locator('.bar-label').allTextContents()).toEqual(['stay', 'move']);
     expect(await figure.locator('.bar-value').allTextContents()).toEqual(['4', '1 (taken)']);
-
     expect(await figure.locator('.face-region').count()).toBe(0);
     expect(p.problems()).toEqual([]);
     await p.close();
