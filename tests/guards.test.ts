@@ -61,6 +61,18 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       const e = await rejection(trace({ ...LINE, algorithm: 'bresenham3d', tie: any(tie) }));
       expect([e.field, e.message]).toEqual(['tie', `tie: is a ${typeof tie}; give a number, text, true or false, or a list`]);
     }
+    // A getter that throws is named, not the option before it (it was 'to').
+    const failing = await rejection(
+      trace(
+        any({
+          ...LINE,
+          get gcd(): boolean {
+            throw new Error('boom');
+          },
+        }),
+      ),
+    );
+    expect([failing.field, failing.message]).toEqual(['gcd', 'gcd: cannot be sent to the core as JSON: boom']);
     const circular: Record<string, unknown> = { ...LINE };
     circular.self = circular;
     expect((await rejection(trace(any(circular)))).field).toBe('self');
