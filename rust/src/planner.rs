@@ -63,7 +63,7 @@ pub const DEFAULT_JUNCTION_DEVIATION_MM: f64 = 0.01;
 /// from the arc (`mc_arc`, motion_control.c).
 pub const ARC_TOLERANCE_MM: f64 = 0.002;
 /// Grbl's MINIMUM_FEED_RATE (config.h), mm/min.
-const MINIMUM_FEED_RATE_MM_PER_MIN: f64 = 1.0;
+pub(crate) const MINIMUM_FEED_RATE_MM_PER_MIN: f64 = 1.0;
 /// Grbl's thresholds on cos θ for a reversal and for straight on.
 const JUNCTION_COS_LIMIT: f64 = 0.999999;
 /// mc_arc counts its segments in a uint16_t.

@@ -102,6 +102,32 @@ fn a_feed_above_the_max_rate_is_capped_with_a_warning_once_per_feed() {
     );
     assert_eq!(warned[1].0, 4);
     assert!(warned[1].1.starts_with("F7000 mm/min"));
+    // An arc's chords are capped only where their direction's top rate is
+    // below F (the warning said the arc "runs at 500 mm/min"; its diagonal
+    // chords ran at 600), and a top below Grbl's MINIMUM_FEED_RATE runs at 1
+    // mm/min (it said 0).
+    let at_max_rate = |max_rate: &str| {
+        Settings::from_json(&format!(
+            r#"{{"stepsPerMm": 80, "acceleration": 100, "maxRate": {max_rate}}}"#
+        ))
+        .unwrap()
+    };
+    let arc = run("G1 F600\nG2 X20 Y0 I10 J0\n", at_max_rate("500"));
+    assert!(
+        arc.info.warnings[0].message.starts_with(
+            "F600 mm/min is above the max rate along parts of this arc (down to 500 mm/min"
+        ),
+        "{:?}",
+        arc.info.warnings
+    );
+    let slow = run("G1 X1 F100\n", at_max_rate("1e-300"));
+    assert!(
+        slow.info.warnings[0]
+            .message
+            .contains("it runs at 1 mm/min"),
+        "{:?}",
+        slow.info.warnings
+    );
     // At maxRate 6000 the same line runs at its F, silently.
     assert!(
         run("G1 X200 F6000\n", settings(""))

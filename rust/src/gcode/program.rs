@@ -1215,7 +1215,7 @@ impl Runner {
                 self.warn(Diagnostic {
                     line: record.line,
                     column: record.column,
-                    message: timing::feed_capped_message(feed, top),
+                    message: timing::feed_capped_message(feed, top, m.arc.is_some()),
                     limit: None,
                 });
             }

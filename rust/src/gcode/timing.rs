@@ -117,10 +117,21 @@ pub fn push_move(
 /// The warning for a feed above what maxRate allows along a move: Grbl
 /// runs it at the top rate and says nothing, so a learner who times
 /// `G1 X200 F6000` against the default 500 mm/min would be puzzled.
-pub fn feed_capped_message(feed_mm_per_min: f64, top_mm_per_min: f64) -> String {
-    format!(
-        "F{feed_mm_per_min} mm/min is above the max rate along this move ({top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): it runs at {top_mm_per_min:.0} mm/min, as Grbl caps it; raise maxRate to run at F{feed_mm_per_min}"
-    )
+/// An arc's chords point every way, so only those whose direction's top
+/// rate is below F are capped (an axis-aligned chord to maxRate, a
+/// diagonal one less), and the message says so; a top rate below Grbl's
+/// MINIMUM_FEED_RATE runs at that minimum, as the planner does.
+pub fn feed_capped_message(feed_mm_per_min: f64, top_mm_per_min: f64, arc: bool) -> String {
+    let runs = top_mm_per_min.max(planner::MINIMUM_FEED_RATE_MM_PER_MIN);
+    if arc {
+        format!(
+            "F{feed_mm_per_min} mm/min is above the max rate along parts of this arc (down to {top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): its chords there run at their max rate, down to {runs:.0} mm/min, as Grbl caps them; raise maxRate to run at F{feed_mm_per_min} throughout"
+        )
+    } else {
+        format!(
+            "F{feed_mm_per_min} mm/min is above the max rate along this move ({top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): it runs at {runs:.0} mm/min, as Grbl caps it; raise maxRate to run at F{feed_mm_per_min}"
+        )
+    }
 }
 
 /// Where each move of a program starts in its steps and in its planner's
