@@ -52,7 +52,7 @@ describe('voxpath trace', () => {
     [[...TRACE, '--tie'], /^voxpath: --tie needs a value/],
     [['frobnicate'], /^voxpath: unknown command 'frobnicate'/],
     [['algorithms', '--format', 'json'], /^voxpath: algorithms takes no arguments, got '--format' 'json'/],
-    [['experiment', 'random-lines', '--from', '1,1,1'], /^voxpath: /],
+    [['experiment', 'random-lines', '--from', '1,1,1'], /^voxpath: unknown flag --from for random-lines with regions/],
   ])('rejects %j with a one-line error and usage, exit 2', (args, message) => {
     const r = voxpath(args);
     expect(r.code).toBe(2);

@@ -73,6 +73,8 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       ),
     );
     expect([failing.field, failing.message]).toEqual(['gcd', 'gcd: cannot be sent to the core as JSON: boom']);
+    const failingToJson = await rejection(trace(any({ ...LINE, gcd: { toJSON: () => { throw new Error('bang'); } } })));
+    expect([failingToJson.field, failingToJson.message]).toEqual(['gcd', 'gcd: cannot be sent to the core as JSON: bang']);
     const circular: Record<string, unknown> = { ...LINE };
     circular.self = circular;
     expect((await rejection(trace(any(circular)))).field).toBe('self');

@@ -482,7 +482,7 @@ impl TextReader {
             split_cells(line, &mut cells);
             if first {
                 first = false;
-                if cells.iter().all(|(_, c)| c.parse::<f64>().is_err()) {
+                if !cells.iter().any(|(_, c)| is_number(c)) {
                     pick = Some(
                         header_columns(&cells, self.dims)
                             .map_err(|m| Error::at(line_number, 1, m))?,
@@ -545,10 +545,18 @@ fn split_cells<'a>(text: &'a str, out: &mut Vec<(usize, &'a str)>) {
     }
 }
 
+/// A cell that reads as a number: a digit in it, so that a header cell
+/// "nan" or "inf" (which Rust's float reader takes) is not one.
+fn is_number(cell: &str) -> bool {
+    cell.bytes().any(|b| b.is_ascii_digit()) && cell.parse::<f64>().is_ok()
+}
+
 /// Which header cells hold the coordinates: those named x, y, z, ...
-/// (any case), or the first `dims` when it names none. A header naming some
-/// axes but not all (`k,x,y` for a 3-axis move) is refused: its first
-/// columns would read k as x.
+/// (any case), or the first `dims` when it names none, or names some only
+/// where they stand in that order (`x,y,z,w` for 4 axes, whose fourth is
+/// not called `a`). A header naming an axis elsewhere but not every axis
+/// (`k,x,y` for a 3-axis move) is refused: its first columns would read k
+/// as x.
 fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, String> {
     let axes = &AXIS_NAMES[..dims];
     let named: Vec<Option<usize>> = axes
@@ -562,7 +570,11 @@ fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, S
     if named.iter().all(Option::is_some) {
         return Ok(named.into_iter().flatten().collect());
     }
-    if named.iter().any(Option::is_some) {
+    let in_place = named
+        .iter()
+        .enumerate()
+        .all(|(axis, at)| at.is_none_or(|c| c == axis));
+    if named.iter().any(Option::is_some) && !in_place {
         let missing: Vec<&str> = axes
             .iter()
             .zip(&named)
@@ -1534,6 +1546,17 @@ mod tests {
         assert_eq!(
             e("k,x,y\n0,5,5\n"),
             "line 1, column 1: the header has no z column; the move has 3 axes (x, y, z)"
+        );
+        // Names in their own columns are read in place: x, y, z, w for 4 axes
+        // (the fourth axis is called a) was refused for its missing a.
+        assert_eq!(
+            Points::from_text("x,y,z,w\n1,2,3,4\n", 4).unwrap().coords,
+            vec![1, 2, 3, 4]
+        );
+        // A header cell that Rust's float reader takes (nan, inf) is still text.
+        assert_eq!(
+            Points::from_text("nan,x,y,z\n9,1,2,3\n", 3).unwrap().coords,
+            vec![1, 2, 3]
         );
         // A header of no axis names is its first columns, as before.
         assert_eq!(

@@ -385,7 +385,8 @@ pub fn gcode_vcd(trace: &TraceHandle, result: &GcodeResult) -> Result<Vec<u8>, J
     }
     let mut out = Vec::new();
     // Writing to memory does not fail: an error is the program's own (it
-    // lasts longer than the VCD's ticks reach).
+    // lasts longer than the VCD's ticks reach, or two of its steps come too
+    // close for a pulse between them); what was written of it is dropped.
     crate::gcode::vcd::write_vcd(&trace.0, &result.timeline, &mut out)
         .map_err(|e| to_js_error(&Error::field("program", e.to_string())))?;
     Ok(out)

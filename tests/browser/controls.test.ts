@@ -67,12 +67,22 @@ describe('view and form controls', () => {
     await page.setViewportSize({ width: 800, height: 900 });
     await expect.poll(inside).toBe(true);
     expect(new URL(page.url()).searchParams.get('camera')).toBeNull();
-    // A camera the user placed stays where it is.
+    // A camera the user placed stays where it is: with its vertical field of
+    // view fixed, the picture only scales with the canvas's height (framed
+    // again, it would be fitted to the new shape, margins and all).
     await page.getByTestId('scene-canvas').focus();
     await page.keyboard.press('+');
     const placed = await linkedCamera(page);
-    await page.setViewportSize({ width: 1000, height: 700 });
+    const apart = async () => {
+      const [from, to] = await Promise.all(['handle-from', 'handle-to'].map(async (id) => (await page.getByTestId(id).boundingBox())!));
+      return Math.hypot(to!.x - from!.x, to!.y - from!.y);
+    };
+    const [before, heightBefore] = [await apart(), (await page.getByTestId('scene-canvas').boundingBox())!.height];
+    await page.setViewportSize({ width: 1100, height: 700 });
     await page.waitForTimeout(300);
+    const heightAfter = (await page.getByTestId('scene-canvas').boundingBox())!.height;
+    expect(heightAfter).toBeLessThan(heightBefore - 50);
+    expect((await apart()) / before).toBeCloseTo(heightAfter / heightBefore, 1);
     expect(new URL(page.url()).searchParams.get('camera')).toBe(placed.text);
     expect(p.problems()).toEqual([]);
     await p.close();

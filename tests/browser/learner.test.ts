@@ -306,6 +306,14 @@ describe('results of a rejected input', () => {
     await page.getByTestId('input-to-x').fill('12');
     await expect.poll(() => note.isVisible()).toBe(false);
     expect(await opacity('#viewport')).toBe('1');
+    // Left refused, then another algorithm picked: its form is built anew and
+    // its trace shown, no longer out of date (the old form's refusal stayed).
+    await page.getByTestId('input-to-x').fill('');
+    await note.filter({ hasText: 'Out of date' }).waitFor();
+    await page.getByTestId('algorithm').selectOption('bresenham3d');
+    await page.getByTestId('trace-status').filter({ hasText: 'bresenham3d' }).waitFor();
+    await expect.poll(() => note.isVisible()).toBe(false);
+    expect(await opacity('#viewport')).toBe('1');
 
     // The experiment's table, after a count it cannot take.
     await page.getByTestId('mode-experiment').click();

@@ -12,6 +12,7 @@
 //   cp tests/browser/__screenshots__/actual/readme-gcode.png docs/gcode.png
 //   cp tests/browser/__screenshots__/actual/readme-embed.png docs/embed.png
 import type { Page } from 'playwright-core';
+import type { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { canvasPng, closeAll, openPage, screenshot, siteUrl } from './harness.js';
 
@@ -151,11 +152,11 @@ describe('the page', () => {
     const { page } = p;
     await page.setViewportSize({ width: 1280, height: 800 });
     await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
-    const png = await canvasPng(page, { labels: true });
+    const [png, drawing] = [await canvasPng(page, { labels: true }), await canvasPng(page)];
     const canvas = (await page.getByTestId('scene-canvas').boundingBox())!;
     const scale = png.width / canvas.width;
-    /** Pixels darker than the page's grid lines inside the page box `box` (CSS pixels), in the PNG. */
-    const inkIn = (box: { x: number; y: number; width: number; height: number }) => {
+    /** Pixels darker than the page's grid lines inside the page box `box` (CSS pixels), in `png`. */
+    const inkIn = (png: PNG, box: { x: number; y: number; width: number; height: number }) => {
       let ink = 0;
       for (let y = Math.floor((box.y - canvas.y) * scale); y < Math.ceil((box.y - canvas.y + box.height) * scale); y++) {
         for (let x = Math.floor((box.x - canvas.x) * scale); x < Math.ceil((box.x - canvas.x + box.width) * scale); x++) {
@@ -165,8 +166,10 @@ describe('the page', () => {
       }
       return ink;
     };
+    // Ink where each label stands that the drawing alone has not there.
     for (const label of [page.locator('#viewport .axis-name').filter({ hasText: /^x$/ }), page.getByTestId('handle-to')]) {
-      expect(inkIn((await label.boundingBox())!)).toBeGreaterThan(3);
+      const box = (await label.boundingBox())!;
+      expect(inkIn(png, box)).toBeGreaterThan(inkIn(drawing, box) + 3);
     }
     expect(p.problems()).toEqual([]);
     await p.close();

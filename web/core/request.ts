@@ -27,19 +27,19 @@ export function encodeRequest(options: unknown, field = 'request'): string {
     });
   } catch (error) {
     if (error instanceof Error && error.name === 'VoxpathError') throw error;
-    // A circular structure, or a getter or toJSON that throws. A getter
-    // throws before the replacer sees its key, so `option` would still name
-    // the option before it: the one that throws is looked for.
-    if (named) option = Object.keys(options).find((key) => throwsOnRead(options, key)) ?? option;
+    // A circular structure, or a getter or toJSON that throws. Either throws
+    // before the replacer sees its key, so `option` would still name the
+    // option before it: the one that fails is looked for.
+    if (named) option = Object.keys(options).find((key) => failsToEncode(options, key)) ?? option;
     throw argumentError(option, `cannot be sent to the core as JSON: ${error instanceof Error ? error.message.split('\n')[0] : String(error)}`);
   }
   return json ?? 'null';
 }
 
-/** Whether reading `key` of `holder` throws (a getter that fails). */
-function throwsOnRead(holder: object, key: string): boolean {
+/** Whether reading `key` of `holder` or writing its value as JSON throws (a getter or a toJSON that fails, a cycle). */
+function failsToEncode(holder: object, key: string): boolean {
   try {
-    void (holder as Record<string, unknown>)[key];
+    JSON.stringify((holder as Record<string, unknown>)[key]);
     return false;
   } catch {
     return true;

@@ -84,6 +84,16 @@ export class OptionsForm {
     this.#onChange = onChange;
     this.#idPrefix = idPrefix;
     container.replaceChildren(...specs.map((spec) => this.#field(spec, axes, values[spec.name])));
+    // The fields of a form built anew (another algorithm, axis count or
+    // mode) hold values of the state, all valid: a refusal of the form
+    // they replace is over.
+    this.#reportValidity();
+  }
+
+  /** Sends INPUTS_VALIDITY from the container: whether a field holds a value the page refused. */
+  #reportValidity(): void {
+    const invalid = [...this.#fields.values()].some((f) => f.localError !== undefined);
+    this.#container.dispatchEvent(new CustomEvent<InputsValidity>(INPUTS_VALIDITY, { bubbles: true, detail: { invalid } }));
   }
 
   #field(spec: OptionSpec, axes: number, value: OptionValue | undefined): HTMLElement {
@@ -169,8 +179,7 @@ export class OptionsForm {
     this.#render(field);
     // The page's own check stopped a value short of the core: what is on
     // screen is no longer of the inputs shown, as when the core refuses one.
-    const invalid = [...this.#fields.values()].some((f) => f.localError !== undefined);
-    this.#container.dispatchEvent(new CustomEvent<InputsValidity>(INPUTS_VALIDITY, { bubbles: true, detail: { invalid } }));
+    this.#reportValidity();
   }
 
   #render(field: Field): void {

@@ -205,12 +205,15 @@ export class GcodePanel {
     const box = this.#e.text;
     if (this.#listed || lineStarts(text).length - 1 > EDITABLE_LINES) return false;
     const focused = document.activeElement;
-    box.focus();
+    box.focus({ preventScroll: true });
+    // A box that cannot take focus (hidden: the mode changed while the
+    // sample loaded) would let the insertion land in whatever has it.
+    if (document.activeElement !== box) return false;
     box.select();
     this.#sampleInserted = true;
     const inserted = document.execCommand('insertText', false, text) && box.value === text;
     this.#sampleInserted = false;
-    if (focused instanceof HTMLElement) focused.focus();
+    if (focused instanceof HTMLElement) focused.focus({ preventScroll: true });
     if (!inserted) return false;
     box.setSelectionRange(0, 0);
     box.scrollTop = 0;

@@ -99,7 +99,12 @@ export class Orchestrator {
   /** The core refused the last request (its message is by the inputs). */
   #rejected = false;
   /** Forms with a field holding a value the page refused itself (INPUTS_VALIDITY). */
-  readonly #invalidForms = new Set<EventTarget>();
+  readonly #invalidForms = new Set<Element>();
+
+  /** A form of the mode shown holds a value the page refused (another mode's form is hidden, and says nothing of this one's results). */
+  #refusedHere(): boolean {
+    return [...this.#invalidForms].some((form) => form.checkVisibility());
+  }
 
   constructor(parts: PageParts) {
     this.#p = parts;
@@ -109,11 +114,11 @@ export class Orchestrator {
     // core's refusal stands.
     document.addEventListener(INPUTS_VALIDITY, (event) => {
       const { invalid } = (event as CustomEvent<InputsValidity>).detail;
-      if (invalid) this.#invalidForms.add(event.target!);
-      else this.#invalidForms.delete(event.target!);
+      if (invalid) this.#invalidForms.add(event.target as Element);
+      else this.#invalidForms.delete(event.target as Element);
       const shown = Object.keys(this.#shown).length > 0;
-      if (this.#invalidForms.size > 0 && shown) markStale(parts.staleNote, 'rejected');
-      else if (this.#invalidForms.size === 0 && !this.#rejected && document.body.dataset.stale === 'rejected') markStale(parts.staleNote, undefined);
+      if (this.#refusedHere() && shown) markStale(parts.staleNote, 'rejected');
+      else if (!this.#refusedHere() && !this.#rejected && document.body.dataset.stale === 'rejected') markStale(parts.staleNote, undefined);
     });
     this.#details = new PointDetails(
       (detail: StepDetail) => {
@@ -238,7 +243,7 @@ export class Orchestrator {
       p.experimentForm.showCoreError(undefined);
       // Traced, unless a field still holds a value the page refused: then
       // what is shown is not of what the fields show.
-      markStale(p.staleNote, this.#invalidForms.size > 0 ? 'rejected' : undefined);
+      markStale(p.staleNote, this.#refusedHere() ? 'rejected' : undefined);
       this.#rejected = false;
       this.#freeShown();
       this.#shown = next;

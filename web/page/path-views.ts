@@ -19,7 +19,6 @@ import type { Store } from '../state/store.js';
 import type { LearnerCheck } from '../worker/protocol.js';
 import { mainTrace, type Shown } from './shown.js';
 
-
 /** Where style.css stacks two views one above the other (its @media (orientation: portrait)). */
 const PORTRAIT = window.matchMedia('(orientation: portrait)');
 

@@ -247,7 +247,13 @@ export class SceneView {
     this.#controls.keyPanSpeed = 20;
     this.#controls.listenToKeyEvents(canvas);
     this.#controls.addEventListener('change', () => this.requestRender());
-    this.#controls.addEventListener('end', () => this.#reportCamera());
+    // A press that did not move the camera (a click to focus the view) is
+    // not a camera the user placed: the view stays framed by default.
+    let atStart = '';
+    this.#controls.addEventListener('start', () => (atStart = JSON.stringify(roundCamera(this.cameraState()))));
+    this.#controls.addEventListener('end', () => {
+      if (JSON.stringify(roundCamera(this.cameraState())) !== atStart) this.#reportCamera();
+    });
     canvas.addEventListener('keydown', (event) => {
       // OrbitControls scales the camera's distance by the factor given to
       // dollyIn (and divides by it in dollyOut): under 1 comes closer.

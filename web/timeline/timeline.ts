@@ -263,8 +263,11 @@ export class Timeline {
           this.#machineSeconds = seconds;
           this.#renderMachineTime();
         },
-        // The program was replaced or its worker lost: nothing to show for it.
-        () => undefined,
+        // The program was replaced or its worker lost: nothing to show for
+        // it, and the point is asked again when next shown.
+        () => {
+          if (asked === this.#instantAsked) this.#machinePoint = undefined;
+        },
       );
     }
     const seconds = this.#machineSeconds;

@@ -1344,7 +1344,7 @@ impl Runner {
             Error::at(
                 m.line,
                 column,
-                format!("{letter}: at {} steps/mm, {}", spm[u], e.message),
+                format!("{letter}: at {} steps/mm, {}", spm[[u, v][past]], e.message),
             )
         };
         let spec = ArcSpec::new(from, to, center, arc.plane, arc.turn, 0, true).map_err(place)?;

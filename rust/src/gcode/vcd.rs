@@ -40,7 +40,7 @@ fn nanoseconds(seconds: f64) -> u64 {
 /// `InvalidInput` error, before anything is written, when the program lasts
 /// longer than a VCD's ticks reach, and where it is found, with part of the
 /// file written, when two steps come too close for a pulse between them
-/// (under 2 ns apart: the callers write to memory and drop it).
+/// (on ticks under 2 ns apart: the callers write to memory and drop it).
 pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Result<()> {
     // Past the last tick every edge would be pressed onto that one tick
     // (acceleration 1e-300 made a VCD of two timestamps): refused instead.
@@ -77,9 +77,9 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Res
     w.end()?;
     let steps = trace.steps();
     let mut written_ns = 0u64;
-    // Moves the file's time to `seconds` (never back), and says to which tick.
-    let mut at = |w: &mut vcd::Writer<_>, seconds: f64| -> io::Result<u64> {
-        let ns = nanoseconds(seconds).max(written_ns);
+    // Moves the file's time to tick `ns` (never back), and says to which tick.
+    let mut at = |w: &mut vcd::Writer<_>, ns: u64| -> io::Result<u64> {
+        let ns = ns.max(written_ns);
         if ns != written_ns {
             w.timestamp(ns)?;
             written_ns = ns;
@@ -104,7 +104,10 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Res
             let (t, moving) = (times[i], codes[i].moving_axes());
             let changed = (levels[i] ^ level) & moving;
             if changed != 0 {
-                at(&mut w, previous_seconds + (t - previous_seconds) / 2.0)?;
+                at(
+                    &mut w,
+                    nanoseconds(previous_seconds + (t - previous_seconds) / 2.0),
+                )?;
                 for (axis, &(_, dir)) in wires.iter().enumerate() {
                     if changed >> axis & 1 == 1 {
                         w.change_scalar(dir, Value::from(levels[i] >> axis & 1 == 1))?;
@@ -112,30 +115,39 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Res
                 }
                 level ^= changed;
             }
-            let rise_ns = at(&mut w, t)?;
+            let rise_ns = at(&mut w, nanoseconds(t))?;
             for (axis, &(step, _)) in wires.iter().enumerate() {
                 if moving >> axis & 1 == 1 {
                     w.change_scalar(step, Value::V1)?;
                 }
             }
             let following = times.get(i + 1).copied().unwrap_or(next);
-            let fall = t + STEP_PULSE_SECONDS.min((following - t) / 2.0);
-            // A pulse whose fall rounds onto its rise's tick would be
-            // written as 1 and 0 at one instant: the step would be in the
-            // file but no logic analyser would see it.
-            if nanoseconds(fall) <= rise_ns {
-                return Err(io::Error::new(
-                    io::ErrorKind::InvalidInput,
-                    format!(
-                        "steps {} and {} come {:.3e} s apart at {t:.9} s on the planned profile ({:.3e} steps/s), too close for a pulse between them in a VCD of 1 ns ticks; lower maxRate or the feed",
-                        from + i as u64,
-                        from + i as u64 + 1,
-                        following - t,
-                        1.0 / (following - t)
-                    ),
-                ));
-            }
-            at(&mut w, fall)?;
+            // In whole ticks: the pulse falls halfway to the next step's
+            // tick, or STEP_PULSE_SECONDS after it rises if that is sooner.
+            // Two steps less than 2 ticks apart leave no tick between them
+            // for the fall: written as 1 and 0 at one instant, or merged with
+            // the next rise, a step would be in the file that no logic
+            // analyser would see.
+            let pulse_ns = nanoseconds(STEP_PULSE_SECONDS);
+            let fall_ns = if following.is_finite() {
+                let next_ns = nanoseconds(following);
+                if next_ns < rise_ns + 2 {
+                    return Err(io::Error::new(
+                        io::ErrorKind::InvalidInput,
+                        format!(
+                            "steps {} and {} come {:.3e} s apart at {t:.9} s on the planned profile ({:.3e} steps/s), too close for a pulse between them in a VCD of 1 ns ticks; lower maxRate or the feed",
+                            from + i as u64,
+                            from + i as u64 + 1,
+                            following - t,
+                            1.0 / (following - t)
+                        ),
+                    ));
+                }
+                rise_ns + pulse_ns.min((next_ns - rise_ns) / 2)
+            } else {
+                rise_ns + pulse_ns
+            };
+            at(&mut w, fall_ns)?;
             for (axis, &(step, _)) in wires.iter().enumerate() {
                 if moving >> axis & 1 == 1 {
                     w.change_scalar(step, Value::V0)?;
@@ -221,6 +233,23 @@ mod tests {
                 .contains("too close for a pulse between them in a VCD of 1 ns ticks"),
             "{error}"
         );
+        // A nanosecond apart: each fall would land on the next step's rise
+        // (a 0.5 ns pulse rounded onto the next tick merged the two pulses).
+        let at_rate = |max_rate: &str| {
+            Settings::from_json(&format!(
+                r#"{{"stepsPerMm": 80, "acceleration": 1e30, "maxRate": {max_rate}}}"#
+            ))
+            .unwrap()
+        };
+        let nanosecond = run("G0 X10\n", at_rate("7.5e8"));
+        assert!(write_vcd(&nanosecond.trace, &nanosecond.timeline, &mut Vec::new()).is_err());
+        // Four nanoseconds apart: every pulse, on ticks of its own.
+        let four = run("G0 X10\n", at_rate("1.875e8"));
+        let mut out = Vec::new();
+        write_vcd(&four.trace, &four.timeline, &mut out).unwrap();
+        let x = &read_back(&out)["x_step"];
+        assert_eq!(x.iter().filter(|c| c.1).count(), 800);
+        assert!(x.windows(2).all(|w| w[0].0 < w[1].0));
         // 80 million steps a second, 12.5 ns apart: every pulse is there,
         // about 6 ns wide.
         let settings =
