@@ -390,6 +390,9 @@ pub struct Planner {
     length_and_acceleration: Vec<(f64, f64)>,
     previous_unit: Option<[f64; MACHINE_AXES]>,
     previous_nominal: f64,
+    /// Waits at rest ([`Planner::stop`]): before block index, seconds; one
+    /// entry per index, in order.
+    dwells: Vec<(usize, f64)>,
 }
 
 impl Planner {
@@ -400,6 +403,25 @@ impl Planner {
             length_and_acceleration: Vec::new(),
             previous_unit: None,
             previous_nominal: 0.0,
+            dwells: Vec::new(),
+        }
+    }
+
+    /// The machine comes to rest after the blocks pushed so far and waits
+    /// `dwell_seconds` before the next: Grbl's `protocol_buffer_synchronize`,
+    /// which a dwell (G4, `mc_dwell`), a spindle or coolant change
+    /// (`spindle_sync`, `coolant_sync`) and a program's pause or end run
+    /// before going on. The buffer is then empty, so the next block starts
+    /// from rest (`plan_buffer_line`: an empty buffer gives a junction of
+    /// 0), and the block before ends at rest.
+    pub fn stop(&mut self, dwell_seconds: f64) {
+        self.previous_unit = None;
+        if dwell_seconds > 0.0 {
+            let at = self.blocks.len();
+            match self.dwells.last_mut() {
+                Some((index, seconds)) if *index == at => *seconds += dwell_seconds,
+                _ => self.dwells.push((at, dwell_seconds)),
+            }
         }
     }
 
@@ -474,6 +496,7 @@ impl Planner {
             limits,
             mut blocks,
             length_and_acceleration,
+            dwells,
             ..
         } = self;
         let two_al = |i: usize| {
@@ -500,17 +523,20 @@ impl Planner {
             blocks,
             acceleration_mm_per_s2: limits.acceleration_mm_per_s2,
             starts: Vec::with_capacity(n.div_ceil(START_INTERVAL)),
+            dwells,
             duration_seconds: 0.0,
         };
         let mut seconds = 0.0;
         for i in 0..n {
+            seconds += plan.dwell_before(i);
             if i % START_INTERVAL == 0 {
                 plan.starts.push(seconds);
             }
             let (l, a) = length_and_acceleration[i];
             seconds += plan.profile_of(i, seconds, l, a).duration_seconds();
         }
-        plan.duration_seconds = seconds;
+        // A wait after the last block (a dwell at the program's end).
+        plan.duration_seconds = seconds + plan.dwell_before(n);
         plan
     }
 }
@@ -522,6 +548,8 @@ pub struct Plan {
     acceleration_mm_per_s2: [f64; MACHINE_AXES],
     /// The start of block j · [`START_INTERVAL`], seconds (2 bytes a block).
     starts: Vec<f64>,
+    /// Waits at rest before a block, as [`Planner::stop`] kept them.
+    dwells: Vec<(usize, f64)>,
     pub duration_seconds: f64,
 }
 
@@ -586,12 +614,20 @@ impl Plan {
         }
     }
 
+    /// Seconds the machine waits at rest before block `i` (0 mostly).
+    fn dwell_before(&self, i: usize) -> f64 {
+        match self.dwells.binary_search_by_key(&i, |&(index, _)| index) {
+            Ok(at) => self.dwells[at].1,
+            Err(_) => 0.0,
+        }
+    }
+
     /// Block `i` as planned: its start from the nearest kept one before it.
     pub fn block(&self, i: usize) -> Block {
         let first = i - i % START_INTERVAL;
         let mut start = self.starts[i / START_INTERVAL];
         for j in first..i {
-            start += self.profile(j, start).duration_seconds();
+            start += self.profile(j, start).duration_seconds() + self.dwell_before(j + 1);
         }
         self.profile(i, start)
     }
@@ -605,7 +641,7 @@ impl Plan {
         };
         range.map(move |i| {
             let block = self.profile(i, start);
-            start += block.duration_seconds();
+            start += block.duration_seconds() + self.dwell_before(i + 1);
             block
         })
     }

@@ -137,6 +137,83 @@ fn a_feed_above_the_max_rate_is_capped_with_a_warning_once_per_feed() {
     );
 }
 
+/// Grbl synchronises its buffer (`protocol_buffer_synchronize`) before a
+/// dwell (`mc_dwell`), a spindle change (`spindle_sync`) and a coolant
+/// change (`coolant_sync`): the machine comes to rest, waits out the
+/// dwell, and starts again from rest. At Grbl's defaults (10 mm/s², 500
+/// mm/min) a 10 mm move at F500 from rest to rest takes 2v/a + (L - v²/a)/v
+/// = 1.6667 + 0.3667 = 2.0333 s (v = 25/3 mm/s); three of them in a line
+/// joined at full speed, one 30 mm trapezoid, 4.4333 s (which voxpath gave
+/// with M3 and M5 between them, taking them for nothing).
+#[test]
+fn a_dwell_a_spindle_or_a_coolant_change_stops_the_machine_as_grbl_does() {
+    let defaults = Settings::from_json(r#"{"stepsPerMm": 80}"#).unwrap();
+    let rest_to_rest =
+        2.0 * (25.0 / 3.0) / 10.0 + (10.0 - (25.0f64 / 3.0).powi(2) / 10.0) / (25.0 / 3.0);
+    let joined = run("G1 X10 F500\nX20\nX30\n", defaults.clone());
+    assert!(close(
+        joined.info.duration_seconds,
+        2.0 * (25.0 / 3.0) / 10.0 + (30.0 - (25.0f64 / 3.0).powi(2) / 10.0) / (25.0 / 3.0)
+    ));
+    for stops in ["M3 S1000", "M5", "M8", "M9", "G4 P0"] {
+        let program = run(
+            &format!("G1 X10 F500\n{stops}\nX20\n{stops}\nX30\n"),
+            defaults.clone(),
+        );
+        assert!(
+            close(program.info.duration_seconds, 3.0 * rest_to_rest),
+            "{stops}: {}",
+            program.info.duration_seconds
+        );
+        for m in program.moves() {
+            assert_eq!(
+                (m.timing.entry_speed, m.timing.exit_speed),
+                (0.0, 0.0),
+                "{stops}"
+            );
+        }
+    }
+    // G4 P1: a second at rest between the moves, its steps after it.
+    let dwell = run("G1 X10 F500\nG4 P1\nX20\n", defaults.clone());
+    assert!(close(dwell.info.duration_seconds, 2.0 * rest_to_rest + 1.0));
+    let moves = dwell.moves();
+    assert!(close(
+        moves[1].timing.start_seconds,
+        moves[0].timing.end_seconds + 1.0
+    ));
+    let steps = dwell.timeline.step_seconds(0, dwell.info.steps);
+    // Step 799 ends the first move; step 800, the first of the next, comes
+    // after the wait and 1/80 mm from rest: √(2s/a) = √(2 · 0.0125 / 10) = 0.05 s.
+    assert!(close(steps[800] - steps[799], 1.0 + 0.05));
+    assert!(steps.windows(2).all(|w| w[0] <= w[1]));
+    // At the end too, and on the line of a move, before it (gcode.c runs the dwell first).
+    assert!(close(
+        run("G1 X10 F500\nG4 P2\n", defaults.clone())
+            .info
+            .duration_seconds,
+        rest_to_rest + 2.0
+    ));
+    assert!(close(
+        run("G1 X10 F500\nG4 P1.5 X20\n", defaults.clone())
+            .info
+            .duration_seconds,
+        2.0 * rest_to_rest + 1.5
+    ));
+    // Grbl refuses G4 without P (error 28) and a negative P.
+    let missing = run("G4\n", defaults.clone());
+    assert_eq!(
+        (missing.info.errors[0].line, missing.info.errors[0].column),
+        (1, 1)
+    );
+    assert!(
+        missing.info.errors[0]
+            .message
+            .starts_with("G4 (dwell) needs P")
+    );
+    let negative = run("G4 P-1\n", defaults);
+    assert_eq!(negative.info.errors[0].column, 4);
+}
+
 #[test]
 fn limits_are_read_by_name() {
     let e = Settings::from_json(r#"{"stepsPerMm": 80, "maxRate": [1, 2]}"#).unwrap_err();

@@ -164,6 +164,12 @@ pub struct MoveMm {
 pub struct Effects {
     pub motion: Option<MoveMm>,
     pub warnings: Vec<Problem>,
+    /// The machine comes to rest before this line's motion and waits this
+    /// many seconds: Grbl synchronises its buffer before a dwell (G4 P), a
+    /// spindle or coolant change (M3-M5, M7-M9) and a pause or the
+    /// program's end (M0, M2, M30), all of which it runs before the line's
+    /// motion (gcode.c's order of execution).
+    pub stop: Option<f64>,
 }
 
 /// The modal state and the position, from line to line.
@@ -177,6 +183,8 @@ pub struct Interpreter {
     incremental: bool,
     absolute_centers: bool,
     feed_mm_per_min: Option<f64>,
+    /// G93 (inverse time) was programmed and not yet left by G94.
+    inverse_time: bool,
     /// Programmed position, machine mm (before rounding to steps).
     position_mm: [f64; MACHINE_AXES],
     /// G92: machine = program + offset.
@@ -193,6 +201,7 @@ impl Default for Interpreter {
             incremental: false,
             absolute_centers: false,
             feed_mm_per_min: None,
+            inverse_time: false,
             position_mm: [0.0; MACHINE_AXES],
             offset_mm: [0.0; MACHINE_AXES],
         }
@@ -280,6 +289,7 @@ impl Interpreter {
     /// so a half-applied line is never continued from.
     pub fn run(&mut self, line: u32, block: &Block, effects: &mut Effects) -> Result<(), Error> {
         effects.motion = None;
+        effects.stop = None;
         effects.warnings.clone_from(&block.ignored);
         let mut motion: Option<(MotionCode, Code)> = None;
         let mut plane: Option<(Plane, Code)> = None;
@@ -288,7 +298,7 @@ impl Interpreter {
         let mut absolute_centers: Option<(bool, Code)> = None;
         let mut g92: Option<Code> = None;
         let mut axis_code: Option<Code> = None;
-        let mut dwell = false;
+        let mut dwell: Option<Code> = None;
         for code in &block.codes {
             if let Some(m) = (code.letter == 'G')
                 .then(|| motion_code(code.number, code.minor))
@@ -312,16 +322,42 @@ impl Interpreter {
                     set_once(&mut absolute_centers, false, code, line, "arc center mode")?
                 }
                 ('G', 92, 0) => g92 = Some(*code),
-                // Units per minute: the feed mode voxpath runs in.
-                ('G', 94, 0) => {}
-                ('G', 93, 0) => effects.warnings.push(Problem {
-                    column: code.column,
-                    message: "G93 (inverse time) ignored: voxpath reads F as units per minute (G94), so the moves after it are timed at that feed".to_string(),
-                }),
+                // Units per minute: the feed mode voxpath runs in. Leaving
+                // G93 for it leaves F undefined, as in Grbl (gcode.c: a
+                // feed move then needs a new F, error 22).
+                ('G', 94, 0) => {
+                    if std::mem::take(&mut self.inverse_time) {
+                        self.feed_mm_per_min = None;
+                    }
+                }
+                ('G', 93, 0) => {
+                    self.inverse_time = true;
+                    effects.warnings.push(Problem {
+                        column: code.column,
+                        message: "G93 (inverse time) ignored: voxpath reads F as units per minute (G94), so the moves after it are timed at that feed".to_string(),
+                    })
+                }
                 ('G', n, 0) if AXIS_WORD_CODES.contains(&n) => axis_code = Some(*code),
-                (letter, n, _) => {
-                    // G4 (dwell) takes P: its P is then not an unused word.
-                    dwell |= (letter, n) == ('G', 4);
+                // G4 (dwell) takes P, its seconds: its P is then not an unused word.
+                ('G', 4, 0) => dwell = Some(*code),
+                ('M', n @ (0 | 2 | 3 | 4 | 5 | 7 | 8 | 9 | 30), 0) => {
+                    effects.stop.get_or_insert(0.0);
+                    let why = match n {
+                        3..=5 => {
+                            "voxpath does not model the spindle, but the motion comes to rest here first, as Grbl's does before a spindle change (spindle_sync)"
+                        }
+                        7..=9 => {
+                            "voxpath does not model coolant, but the motion comes to rest here first, as Grbl's does before a coolant change (coolant_sync)"
+                        }
+                        0 => "the program pauses until it is resumed: timed as a stop with no wait",
+                        _ => "the program ends: the motion comes to rest, as Grbl's does",
+                    };
+                    effects.warnings.push(Problem {
+                        column: code.column,
+                        message: format!("{}: {why}", code.name()),
+                    });
+                }
+                (letter, _, _) => {
                     let what = match letter {
                         'G' => "voxpath does not model it",
                         _ => {
@@ -336,6 +372,24 @@ impl Interpreter {
             }
         }
         let words = Words::new(&block.words);
+        if let Some(code) = dwell {
+            // mc_dwell: P seconds at rest, after the motion before has ended.
+            let Some(p) = words.get('P') else {
+                return Err(Error::at(
+                    line,
+                    code.column,
+                    "G4 (dwell) needs P, the seconds to wait (Grbl refuses it without: error 28, a value word is missing)",
+                ));
+            };
+            if !(p.value >= 0.0) {
+                return Err(Error::at(
+                    line,
+                    p.column,
+                    format!("P{}: a dwell's seconds must be 0 or more", p.value),
+                ));
+            }
+            *effects.stop.get_or_insert(0.0) += p.value;
+        }
         if let Some((v, _)) = plane {
             self.plane = v;
         }
@@ -466,7 +520,7 @@ impl Interpreter {
         }
         if first_axis.is_none() && arc_word.is_none() {
             // A motion code alone sets the mode; nothing moves.
-            self.warn_unused_p(&words, dwell, effects);
+            self.warn_unused_p(&words, dwell.is_some(), effects);
             return Ok(());
         }
         let Some(mode) = self.motion else {
@@ -514,7 +568,7 @@ impl Interpreter {
                         ),
                     ));
                 }
-                self.warn_unused_p(&words, dwell, effects);
+                self.warn_unused_p(&words, dwell.is_some(), effects);
                 None
             }
             Motion::Arc(turn) => {
@@ -932,11 +986,29 @@ mod tests {
         assert_eq!(
             messages,
             [
-                (1, "M3 ignored: voxpath models motion only, not spindle, coolant, tools or program flow".to_string()),
-                (10, "G4 ignored: voxpath does not model it".to_string()),
+                (1, "M3: voxpath does not model the spindle, but the motion comes to rest here first, as Grbl's does before a spindle change (spindle_sync)".to_string()),
                 (4, "S1000 ignored: voxpath models X, Y and Z motion only".to_string()),
             ]
         );
+        // The line stops the machine and dwells 2 s; a tool change or M1 is not a stop.
+        assert_eq!(e.stop, Some(2.0));
+        assert_eq!(run(&["M6 T1"]).unwrap().1.stop, None);
+        assert_eq!(
+            run(&["M1"]).unwrap().1.warnings[0].message,
+            "M1 ignored: voxpath models motion only, not spindle, coolant, tools or program flow"
+        );
+        // Leaving G93 for G94 leaves F undefined, as in Grbl: the next feed
+        // move is the no-feed warning (it ran at the F of the G93 lines).
+        let (_, e) = run(&["G93 G1 X10 F2", "G94", "X30"]).unwrap();
+        assert!(
+            e.warnings[0]
+                .message
+                .starts_with("G1 with no feed rate set (F)"),
+            "{:?}",
+            e.warnings
+        );
+        let (_, e) = run(&["G93 G1 X10 F2", "G94 F600", "X30"]).unwrap();
+        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
         let (_, e) = run(&["G1 X1"]).unwrap();
         assert_eq!(
             e.warnings[0].message,

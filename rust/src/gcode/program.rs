@@ -1101,6 +1101,9 @@ impl Runner {
         for w in &effects.warnings {
             self.warn(Diagnostic::at(line, w));
         }
+        if let Some(dwell_seconds) = effects.stop {
+            self.planner.stop(dwell_seconds);
+        }
         if let Some(m) = &effects.motion {
             if let Err(e) = self.step_move(m) {
                 self.stop(Diagnostic::from_error(e));
