@@ -197,6 +197,29 @@ describe('the page', () => {
     await traced(page, 3);
     expect(await page.getByTestId('input-to-y').inputValue()).toBe('2');
     expect(await page.getByTestId('input-from-x').inputValue()).toBe('1');
+
+    // What the page itself refused survives a reload as typed, with its
+    // message (the field showed the last valid value again): a coordinate
+    // left empty, and a machine's steps per mm that are not numbers.
+    await page.getByTestId('input-to-y').fill('');
+    await page.getByTestId('error-to').filter({ hasText: 'y needs a number' }).waitFor();
+    await page.reload();
+    await traced(page, 3);
+    expect(await page.getByTestId('input-to-y').inputValue()).toBe('');
+    await page.getByTestId('error-to').filter({ hasText: 'y needs a number' }).waitFor();
+    await page.getByTestId('input-to-y').fill('2');
+    await expect.poll(() => text(page, 'error-to')).toBe('');
+    await page.reload();
+    await traced(page, 3);
+    expect(await page.getByTestId('input-to-y').inputValue()).toBe('2');
+    await page.getByTestId('mode-gcode').click();
+    await page.waitForURL(/mode=gcode/);
+    const stepsPerMm = page.getByTestId('input-machine-stepsPerMm');
+    await stepsPerMm.fill('80,abc');
+    await page.getByTestId('error-machine-stepsPerMm').filter({ hasText: 'give one number' }).waitFor();
+    await page.reload();
+    await expect.poll(() => stepsPerMm.inputValue()).toBe('80,abc');
+    await page.getByTestId('error-machine-stepsPerMm').filter({ hasText: 'give one number' }).waitFor();
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -14,6 +14,7 @@ import { readDecimal } from '../core/guard.js';
 import type { OptionSpec } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import type { OptionValue } from '../state/app-state.js';
+import { dropDraft, keepDraft, restoredDraft } from '../state/drafts.js';
 import type { InputError } from '../worker/protocol.js';
 
 interface Field {
@@ -25,6 +26,8 @@ interface Field {
   localError?: string;
   /** What the core said about this option in the last trace request. */
   coreError?: string;
+  /** Where a refused text is kept over a reload (drafts.ts), for fields whose text can be put back (points, per-axis text); else undefined. */
+  draftId?: string;
 }
 
 export function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<HTMLElementTagNameMap[K]> = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
@@ -58,6 +61,8 @@ export interface InputsValidity {
 export class OptionsForm {
   readonly #fields = new Map<string, Field>();
   readonly #container: HTMLElement;
+  /** The state's values the fields last showed: a refused draft is kept over its field's value. */
+  #values: Readonly<Record<string, OptionValue>>;
   /** Where errors naming no field of this form go (say the algorithm, or maxSteps, which the page sets). */
   readonly #formError: HTMLElement;
   readonly #onChange: (name: string, value: OptionValue | undefined) => void;
@@ -83,10 +88,20 @@ export class OptionsForm {
     this.#container = container;
     this.#onChange = onChange;
     this.#idPrefix = idPrefix;
+    this.#values = values;
     container.replaceChildren(...specs.map((spec) => this.#field(spec, axes, values[spec.name])));
+    // A text typed and refused before a reload is put back, with its
+    // message, where the state still holds the value it was typed over
+    // (restoredDraft: only as the page loads).
+    for (const [name, field] of this.#fields) {
+      const texts = field.draftId === undefined ? undefined : restoredDraft(field.draftId, values[name]);
+      if (!texts || texts.length !== field.controls.length) continue;
+      field.controls.forEach((c, i) => (c.value = texts[i]!));
+      field.controls[0]!.dispatchEvent(new Event('input'));
+    }
     // The fields of a form built anew (another algorithm, axis count or
-    // mode) hold values of the state, all valid: a refusal of the form
-    // they replace is over.
+    // mode) hold values of the state, or a refused draft: the validity of
+    // the form they replace is over.
     this.#reportValidity();
   }
 
@@ -115,6 +130,10 @@ export class OptionsForm {
       return c;
     };
 
+    // A point's number inputs can be put back empty, a per-axis text as typed; a
+    // number input holding no number reads as '' and would be put back as "use
+    // the default", so it keeps no draft.
+    if (spec.kind.type === 'point' || spec.kind.type === 'perAxis') field.draftId = id;
     switch (spec.kind.type) {
       case 'point': {
         const coords = Array.isArray(value) ? value : [];
@@ -177,6 +196,10 @@ export class OptionsForm {
   #setLocalError(name: string, field: Field, message: string | undefined): void {
     field.localError = message;
     this.#render(field);
+    if (field.draftId !== undefined) {
+      if (message === undefined) dropDraft(field.draftId);
+      else keepDraft(field.draftId, field.controls.map((c) => c.value), this.#values[name]);
+    }
     // The page's own check stopped a value short of the core: what is on
     // screen is no longer of the inputs shown, as when the core refuses one.
     this.#reportValidity();
@@ -193,7 +216,11 @@ export class OptionsForm {
    * for values that changed elsewhere (a handle dragged in the view).
    */
   setValues(values: Readonly<Record<string, OptionValue>>): void {
+    this.#values = values;
     for (const [name, field] of this.#fields) {
+      // A refused text stays as typed until it is typed right: the value
+      // the state holds for it is the last valid one, not what is meant.
+      if (field.localError !== undefined) continue;
       const value = values[name];
       field.controls.forEach((c, i) => {
         if (c === document.activeElement) return;

@@ -17,7 +17,7 @@ const STORAGE_KEY = 'voxpath.state';
 const WRITE_DELAY_MS = 400;
 
 /** localStorage, or undefined where it is blocked (some privacy settings throw on access). */
-function storage(): Storage | undefined {
+export function storage(): Storage | undefined {
   try {
     return window.localStorage;
   } catch {
