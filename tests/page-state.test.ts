@@ -160,6 +160,20 @@ describe('axes and options of one or two algorithms', () => {
     ]);
   });
 
+  it("offers each algorithm's own default where the two differ (the field showed regions' tie while bresenham3d ran with hold)", () => {
+    const tie = (infos: string[]) => sharedOptionSpecs(infos.map(info)).find((s) => s.name === 'tie')!;
+    expect(info('regions').options.find((s) => s.name === 'tie')!.default).toBe('advance');
+    expect(info('bresenham3d').options.find((s) => s.name === 'tie')!.default).toBe('hold');
+    for (const pair of [['regions', 'bresenham3d'], ['bresenham3d', 'regions']]) {
+      const merged = tie(pair);
+      expect(merged.default).toBeNull();
+      expect(merged.doc).toContain(`each algorithm runs with its own (${pair[0]}: ${pair[0] === 'regions' ? 'advance' : 'hold'}, ${pair[1]}: ${pair[1] === 'regions' ? 'advance' : 'hold'})`);
+    }
+    // Where they agree, or for one algorithm, the field keeps its default.
+    expect(tie(['regions', 'regions']).default).toBe('advance');
+    expect(tie(['regions']).default).toBe('advance');
+  });
+
   it('carries the typed move to a newly compared algorithm, fitted to the axes both take', () => {
     const options = carriedOptions([info('regions'), info('greedy')], { from: [1, 2, 3], to: [9, 8, 7], tie: 'hold' }, true);
     expect(options).toEqual({ from: [1, 2, 3], to: [9, 8, 7], tie: 'hold' });

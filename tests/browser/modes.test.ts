@@ -412,6 +412,23 @@ describe('compare mode', () => {
     await p.close();
   });
 
+  it("shows each algorithm's own tie where their defaults differ, and runs both with the tie chosen", async () => {
+    // regions' tie default is advance, bresenham3d's hold: on (0,0,0)->(10,7,6)
+    // they part at point 5 (SEED-NOTES), the same path once both advance.
+    const p = await openPage('?mode=compare&algorithm=regions&other=bresenham3d&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    const tie = page.getByTestId('input-tie');
+    await page.getByTestId('first-difference').filter({ hasText: 'The paths part at point 5' }).waitFor();
+    // It said "advance (default)" while bresenham3d held.
+    expect(await tie.inputValue()).toBe('');
+    expect(await tie.locator('option:checked').innerText()).toBe("the algorithm's default");
+    expect(await page.locator('#option-tie-hint').innerText()).toContain('(regions: advance, bresenham3d: hold)');
+    await tie.selectOption('advance');
+    await page.locator('.first-difference').filter({ hasText: 'The two paths are the same, point for point.' }).waitFor();
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('compares direct arc stepping with chords: steps and largest radial error', async () => {
     const p = await openPage('?mode=compare&algorithm=circle&other=arc-segments&from=20,0,0&to=-20,0,0&center=0,0,0&segmentLength=8');
     const { page } = p;

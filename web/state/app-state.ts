@@ -154,9 +154,22 @@ export function axisCount(infos: readonly AlgorithmInfo[], options: Readonly<Rec
 
 /** Every option the algorithms of `infos` declare, each name once (the first declaration), less PAGE_OPTIONS. */
 export function sharedOptionSpecs(infos: readonly AlgorithmInfo[]): OptionSpec[] {
-  const seen = new Map<string, OptionSpec>();
-  for (const info of infos) for (const spec of info.options) if (!(spec.name in PAGE_OPTIONS) && !seen.has(spec.name)) seen.set(spec.name, spec);
-  return [...seen.values()];
+  const seen = new Map<string, { spec: OptionSpec; from: AlgorithmInfo }>();
+  for (const info of infos) {
+    for (const spec of info.options) {
+      if (spec.name in PAGE_OPTIONS) continue;
+      const first = seen.get(spec.name);
+      if (!first) seen.set(spec.name, { spec, from: info });
+      else if (first.spec.default !== spec.default && first.spec.default !== null) {
+        // Two defaults (regions' tie advance, bresenham3d's hold): the field
+        // offers "the algorithm's default" and says each one's, rather than
+        // show the first one's while the second ran with its own.
+        const own = `${first.from.id}: ${first.spec.default ?? 'none'}, ${info.id}: ${spec.default ?? 'none'}`;
+        seen.set(spec.name, { spec: { ...first.spec, default: null, doc: `${first.spec.doc} Left at "the algorithm's default", each algorithm runs with its own (${own}).` }, from: first.from });
+      }
+    }
+  }
+  return [...seen.values()].map((s) => s.spec);
 }
 
 /** A point cut or padded with zeros to `axes` coordinates. */
