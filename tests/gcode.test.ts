@@ -110,6 +110,11 @@ describe('runGcode', () => {
     const controller = new AbortController();
     const cancelled = runGcode(source, { stepsPerMm: 4 }, { signal: controller.signal, sliceMs: 0.01, onProgress: () => controller.abort() });
     await expect(cancelled).rejects.toMatchObject({ name: 'AbortError' });
+    // Cancelled once the last line is read: the program is planned, but
+    // not handed over (the page's Cancel did nothing there).
+    const late = new AbortController();
+    const planned = runGcode(source, { stepsPerMm: 4 }, { signal: late.signal, onProgress: (q) => q.done && late.abort() });
+    await expect(planned).rejects.toMatchObject({ name: 'AbortError' });
   });
 
   it('gives step and direction trains that agree with the points', async () => {

@@ -127,6 +127,7 @@ function run(catalogue: Catalogue): void {
       legendOnlyFirst: byId('legend-only-first', HTMLSpanElement),
       legendOnlySecond: byId('legend-only-second', HTMLSpanElement),
       legendLearner: byId('legend-learner', HTMLLIElement),
+      legendPickedLine: byId('legend-picked-line', HTMLLIElement),
       legendDifference: byId('legend-difference', HTMLLIElement),
     },
     store,

@@ -462,6 +462,8 @@ describe('G-code mode', () => {
     expect(mostRunsInARow(await shot(page, timing), AXIS_COLOURS[1])).toBeGreaterThanOrEqual(2 * 12);
 
     // Put the cursor on line 6 (X0): its 1600 steps light up and the step goes to their end.
+    // The legend names the picked line's steps once there are some (it did with none picked).
+    expect(await page.getByTestId('legend-picked-line').isHidden()).toBe(true);
     const editor = page.getByTestId('gcode-text');
     await editor.focus();
     await editor.evaluate((e: HTMLTextAreaElement) => {
@@ -472,6 +474,7 @@ describe('G-code mode', () => {
     await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('1600');
     await expect.poll(() => text(page, 'step-counter')).toBe('Step 4800 of 6400');
     expect(await page.getByTestId('gcode-picked-line').getAttribute('data-line')).toBe('6');
+    expect(await page.getByTestId('legend-picked-line').isVisible()).toBe(true);
     const stats = await screenshot(page, 'gcode-square', '[data-testid=scene-canvas]');
     expect(stats.differingFraction).toBeGreaterThan(0.05);
     expect(p.problems()).toEqual([]);

@@ -66,6 +66,9 @@ describe('G-code mode: time', () => {
     // A window of 1 s with the step a third of the way in: inside the first side's trapezoid.
     await page.getByTestId('motion-window').selectOption({ label: '1 s around the current step' });
     await expect.poll(() => motion.locator('.u-title').first().innerText()).toContain(`${(at800 - 1 / 3).toFixed(3)} s to ${(at800 + 2 / 3).toFixed(3)} s (each block its trapezoid`);
+    // 100 ms: in seconds too, as the time axis reads (the title said ms over an axis in s).
+    await page.getByTestId('motion-window').selectOption({ label: '100 ms around the current step' });
+    await expect.poll(() => motion.locator('.u-title').first().innerText()).toContain(`${(at800 - 0.1 / 3).toFixed(3)} s to ${(at800 + 0.2 / 3).toFixed(3)} s`);
 
     const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('export-vcd').click()]);
     const vcd = readFileSync((await download.path())!, 'utf8');

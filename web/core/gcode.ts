@@ -200,7 +200,7 @@ export class GcodeProgram {
 export interface RunGcodeOptions {
   /** Called after every slice, and once at the end with done = true. */
   onProgress?: (progress: GcodeProgress) => void;
-  /** Stops the run between slices; runGcode then rejects with the signal's reason. */
+  /** Stops the run between slices, or once its last slice is planned, before the result is made; runGcode then rejects with the signal's reason. */
   signal?: AbortSignal;
   /** Time one slice aims at, ms (default 20): the core adapts the lines per slice to it. */
   sliceMs?: number;
@@ -265,6 +265,14 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
     }
     finished = true;
     const result = run.finish();
+    // Every line is read and the motion planned: a cancel sent meanwhile
+    // (the page's Cancel reaches its worker only between tasks, and the
+    // finish is one) is still honoured, before the result is handed over.
+    await yieldToEventLoop();
+    if (options.signal?.aborted) {
+      result.free();
+      options.signal.throwIfAborted();
+    }
     try {
       const info = result.program();
       const handle = callCore(() => result.takeTrace());

@@ -25,6 +25,11 @@ import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
 import type { InputError, LineSteps } from '../worker/protocol.js';
 
+/** `text` ending as a sentence ends: the core's messages have no full stop of their own ("Y has no number after it The run stopped there."). */
+function sentence(text: string): string {
+  return /[.!?]$/.test(text) ? text : `${text}.`;
+}
+
 /** Moves listed at a time around the current one. */
 const MOVES_SHOWN = 12;
 
@@ -264,7 +269,10 @@ export class GcodePanel {
     if (this.#listed) {
       // An empty box lays out at once; the listing lays out only what is in view.
       box.value = '';
-      longNote.querySelector('.long-lines')!.textContent = this.#lineCount.toLocaleString('en');
+      // Counted as the core counts them (and the status line says): a final
+      // line break ends the last line rather than starting an empty one.
+      const lines = this.#lineCount - (/[\n\r]$/.test(text) ? 1 : 0);
+      longNote.querySelector('.long-lines')!.textContent = lines.toLocaleString('en');
     } else if (!fromBox) {
       box.value = text;
     }
@@ -357,7 +365,7 @@ export class GcodePanel {
     };
     const error = record?.errors[0];
     if (error) {
-      const p = element('p', { className: 'gcode-error' }, go(error.line, `Line ${error.line}:${error.column}`), `: ${diagnosticText(error)} The run stopped there.`);
+      const p = element('p', { className: 'gcode-error' }, go(error.line, `Line ${error.line}:${error.column}`), `: ${sentence(diagnosticText(error))} The run stopped there.`);
       p.dataset.testid = 'gcode-error';
       parts.push(p);
     }

@@ -194,7 +194,9 @@ export class MotionCharts {
     };
     const rows = chart.seconds.length;
     const bucketNote = chart.exact ? 'each block its trapezoid' : `${rows} buckets of ${formatSeconds((chart.toSeconds - chart.fromSeconds) / rows)}: the band from the least to the greatest in each`;
-    const window = `${formatSeconds(chart.fromSeconds)} to ${formatSeconds(chart.toSeconds)}`;
+    // In seconds, as the charts' time axis reads (formatSeconds wrote a 100 ms
+    // window in ms over an axis in seconds).
+    const window = `${chart.fromSeconds.toFixed(3)} s to ${chart.toSeconds.toFixed(3)} s`;
     const junctions: uPlot.Series = { label: 'junction speed', stroke: PALETTE.onlySecond, paths: () => null, points: { show: true, size: 7, fill: PALETTE.onlySecond } };
     // Corners: one line. Buckets: the greatest and least in each, a band between.
     const speedSeries: uPlot.Series[] = chart.exact

@@ -11,8 +11,9 @@
  * its middle, so that steps on every tick still read as separate pulses. A
  * G-code program: each step at its planned instant (the core's stepTimes,
  * Grbl's planner), the axis in ms or µs; a STEP pulse rises at its step's
- * instant and is drawn falling half-way to the next step (a driver's pulse
- * is some µs, too thin to see at this scale). The cursor is the instant the
+ * instant and is drawn falling half-way to the nearer of the steps beside
+ * it (a driver's pulse is some µs, too thin to see at this scale; across a
+ * stop or a dwell it stays as narrow as its neighbours'). The cursor is the instant the
  * current point is reached.
  */
 import uPlot from 'uplot';
@@ -20,6 +21,7 @@ import { StepChart } from '../charts/chart.js';
 import { AXIS_NAMES } from '../format.js';
 import { AXIS_COLOURS } from '../scene/palette.js';
 import type { PulseWindow } from '../worker/protocol.js';
+import { pulseEdges } from './pulse-edges.js';
 import { timeUnit } from './time-format.js';
 
 /**
@@ -128,21 +130,11 @@ export class TimingDiagram {
   /**
    * The rows' x: two a step, where its STEP pulse rises and where it falls,
    * and the right edge of the last step. Ticks: a step's start and middle;
-   * a program: its instant and half-way to the next step's (for the last,
-   * as far as the one before it was from it).
+   * a program: pulseEdges of its instants.
    */
   #rowsX(ticks: number, times: Float64Array | null): Float64Array {
     if (!times) return Float64Array.from({ length: 2 * ticks + 1 }, (_, i) => this.#fromStep + i / 2);
-    const x = new Float64Array(2 * ticks + 1);
-    // A single step, or two at one instant (a move of no length between): 1 ms wide.
-    const lastGap = (ticks > 1 ? times[ticks - 1]! - times[ticks - 2]! : 0) || 1e-3;
-    for (let i = 0; i < ticks; i++) {
-      const next = i + 1 < ticks ? times[i + 1]! : times[i]! + lastGap;
-      x[2 * i] = times[i]! * this.#perSecond;
-      x[2 * i + 1] = ((times[i]! + next) / 2) * this.#perSecond;
-    }
-    x[2 * ticks] = (times[ticks - 1]! + lastGap) * this.#perSecond;
-    return x;
+    return pulseEdges(times.subarray(0, ticks)).map((t) => t * this.#perSecond);
   }
 
   #draw({ trains, stepSeconds }: PulseWindow): void {
@@ -194,7 +186,7 @@ export class TimingDiagram {
       this.#container,
       {
         title: stepSeconds
-          ? `STEP and DIR per axis at each step's planned instant, ${unit} (a STEP pulse per step, drawn half-way to the next; DIR high for -)`
+          ? `STEP and DIR per axis at each step's planned instant, ${unit} (a STEP pulse per step, drawn half-way to the nearer step; DIR high for -)`
           : 'STEP and DIR per axis (one tick per step: a STEP pulse per step taken, DIR high for -)',
         xLabel,
         // No pick while a new trace's first window is fetched: the chart

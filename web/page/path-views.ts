@@ -36,6 +36,8 @@ export interface PathViewElements {
   legendOnlySecond: HTMLElement;
   /** The legend's entries for a learner's checked points and their first difference, shown while there are some. */
   legendLearner: HTMLElement;
+  /** The legend's entry for a picked G-code line's steps, shown while some are outlined. */
+  legendPickedLine: HTMLElement;
   legendDifference: HTMLElement;
 }
 
@@ -89,6 +91,8 @@ export class PathViews {
    */
   show(shown: Shown, pointIndex: number): void {
     const state = this.#store.state;
+    // New paths are drawn with no line picked (SceneView.setTrace clears its highlights).
+    this.#e.legendPickedLine.hidden = true;
     const { a, b, difference } = shown;
     const main = mainTrace(shown);
     const side = state.mode === 'compare' && state.layout === 'side';
@@ -183,9 +187,10 @@ export class PathViews {
     this.#second?.showPoint(Math.min(pointIndex, shown.b?.steps ?? 0));
   }
 
-  /** Outlines cells of the main view (the steps of a picked G-code line). */
+  /** Outlines cells of the main view (the steps of a picked G-code line), with their legend entry. */
   setHighlights(highlights: readonly Highlight[]): void {
     this.#main.setHighlights(highlights);
+    this.#e.legendPickedLine.hidden = highlights.length === 0;
   }
 
   setHandles(handles: readonly Handle[]): void {
