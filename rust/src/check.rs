@@ -1445,6 +1445,30 @@ mod tests {
         /// the same text with every cell in quotes (which only the general
         /// reading takes) gives the same points, or fails at the same line
         /// with the same message.
+        /// Any text, made of the pieces a points file is made of and of
+        /// characters it should not hold (a byte order mark, wide and
+        /// invisible characters), is read or refused with a line and a
+        /// column, never a panic.
+        #[test]
+        fn any_text_is_read_or_refused_never_a_panic(
+            dims in 2usize..7,
+            pieces in proptest::collection::vec(
+                prop_oneof![
+                    "[0-9]{1,20}", "[-+]", Just(",".to_string()), Just(" ".to_string()),
+                    Just("\n".to_string()), Just("\r".to_string()), Just("\t".to_string()),
+                    Just("\u{feff}".to_string()), Just("\u{a0}".to_string()), Just("é".to_string()),
+                    "[xyzabcXYZk#\\[\\]()\".;]{1,3}", Just("nan".to_string()), Just("1e400".to_string()),
+                ],
+                0..40,
+            ),
+        ) {
+            let text: String = pieces.concat();
+            match Points::from_text(&text, dims) {
+                Ok(points) => prop_assert_eq!(points.coords.len() % dims, 0),
+                Err(e) => prop_assert!(!e.to_string().is_empty()),
+            }
+        }
+
         #[test]
         fn plain_rows_read_as_quoted_rows_do(
             dims in 2usize..4,
