@@ -61,7 +61,7 @@ const scene = new SceneView(byId('viewport', HTMLDivElement), {
 
 function run(catalogue: Catalogue): void {
   const store = new Store<AppState>(loadState(catalogue));
-  persistState(store);
+  persistState(store, catalogue);
   document.body.classList.toggle('embed', store.state.embed);
   embedding(store, catalogue, {
     open: byId('open-full', HTMLAnchorElement),

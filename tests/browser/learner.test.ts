@@ -358,6 +358,14 @@ describe('the experiment', () => {
     expect(await page.getByTestId('algorithm').inputValue()).toBe('bresenham3d');
     expect([await page.getByTestId('input-to-x').inputValue(), await page.getByTestId('input-to-y').inputValue(), await page.getByTestId('input-to-z').inputValue()]).toEqual([x, y, z]);
     expect(await page.getByTestId('input-from-x').inputValue()).toBe('0');
+    // Back returns to the table it was opened from (it left the site), and Forward to the line.
+    await page.waitForURL(/mode=trace/);
+    await page.goBack();
+    await expect.poll(() => page.getByTestId('mode-experiment').getAttribute('aria-pressed')).toBe('true');
+    await view.filter({ hasText: 'traced with bresenham3d' }).waitFor();
+    await page.goForward();
+    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step 0 of ${steps}$`) }).waitFor();
+    expect(await page.getByTestId('mode-trace').getAttribute('aria-pressed')).toBe('true');
 
     // And from the keyboard: the row's button.
     await page.getByTestId('mode-experiment').click();

@@ -12,6 +12,7 @@ import type { ErrorStats, LineResult, MeasureSummary, RandomLinesResult } from '
 import { element } from '../form/options-form.js';
 import { AXIS_NAMES } from '../format.js';
 import { type AppState, type Catalogue, axisChoices, defaultProjection } from '../state/app-state.js';
+import { newHistoryEntry } from '../state/persist.js';
 import type { Store } from '../state/store.js';
 
 /** Rows of the per-line table drawn at most; the CSV export has them all. */
@@ -66,6 +67,8 @@ export class ExperimentPanel {
 
   /** Opens line `line` of `result` in Trace mode: the same algorithm, from the origin to its point. */
   #open(result: RandomLinesResult, line: LineResult): void {
+    // Back returns to the table.
+    newHistoryEntry(this.#store.state);
     this.#store.update({
       mode: 'trace',
       algorithm: result.algorithm,

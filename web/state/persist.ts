@@ -39,9 +39,13 @@ export function loadState(catalogue: Catalogue): AppState {
   return linked ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
 }
 
+/** The page's address for `state`: the permalink. */
+function urlOf(state: AppState): string {
+  return `${window.location.pathname}?${stateToQuery(state, { gcodeLimit: GCODE_URL_LIMIT })}${window.location.hash}`;
+}
+
 function write(state: AppState): void {
-  const url = `${window.location.pathname}?${stateToQuery(state, { gcodeLimit: GCODE_URL_LIMIT })}${window.location.hash}`;
-  window.history.replaceState(window.history.state, '', url);
+  window.history.replaceState(window.history.state, '', urlOf(state));
   // An embedded view (say in a course page) must not replace the reader's own last visit.
   if (state.embed) return;
   try {
@@ -51,14 +55,43 @@ function write(state: AppState): void {
   }
 }
 
-/** Persists every change of `store`, throttled, and any pending change when the page is hidden or closed. */
-export function persistState(store: Store<AppState>): void {
+/**
+ * Makes what is shown now an entry of the browser's history, so that Back
+ * comes back to it after the change that follows (an experiment's line
+ * opened in Trace mode: Back left the site). Every other change replaces
+ * the entry it is in. Not in an embedded view, whose entries would be the
+ * host page's history too.
+ */
+export function newHistoryEntry(state: AppState): void {
+  if (state.embed) return;
+  const url = urlOf(state);
+  window.history.replaceState(window.history.state, '', url);
+  window.history.pushState(null, '', url);
+}
+
+/**
+ * Persists every change of `store`, throttled, and any pending change when
+ * the page is hidden or closed; Back and Forward between the entries
+ * newHistoryEntry made bring back their states.
+ */
+export function persistState(store: Store<AppState>, catalogue: Catalogue): void {
   let timer: ReturnType<typeof setTimeout> | undefined;
   const flush = () => {
     clearTimeout(timer);
     timer = undefined;
     write(store.state);
   };
+  window.addEventListener('popstate', () => {
+    clearTimeout(timer);
+    timer = undefined;
+    const state = stateFromQuery(window.location.search, catalogue);
+    if (!state) return;
+    // A program or points too long for the address are the ones typed (as loadState keeps them).
+    const params = new URLSearchParams(window.location.search);
+    if (!params.has('gcode')) state.gcode = store.state.gcode;
+    if (!params.has('points')) state.learnerPoints = store.state.learnerPoints;
+    store.update(state);
+  });
   store.subscribe(() => {
     timer ??= setTimeout(flush, WRITE_DELAY_MS);
   });
