@@ -1441,10 +1441,6 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(512))]
-        /// The plain rows' quick path reads what the general reading reads:
-        /// the same text with every cell in quotes (which only the general
-        /// reading takes) gives the same points, or fails at the same line
-        /// with the same message.
         /// Any text, made of the pieces a points file is made of and of
         /// characters it should not hold (a byte order mark, wide and
         /// invisible characters), is read or refused with a line and a
@@ -1469,6 +1465,10 @@ mod tests {
             }
         }
 
+        /// The plain rows' quick path reads what the general reading reads:
+        /// the same text with every cell in quotes (which only the general
+        /// reading takes) gives the same points, or fails at the same line
+        /// with the same message.
         #[test]
         fn plain_rows_read_as_quoted_rows_do(
             dims in 2usize..4,

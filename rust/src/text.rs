@@ -69,7 +69,7 @@ pub fn without_byte_order_mark(text: &str) -> &str {
 }
 
 /// U+FEFF, the byte order mark (bytes EF BB BF in UTF-8).
-pub const BYTE_ORDER_MARK: char = '\u{feff}';
+const BYTE_ORDER_MARK: char = '\u{feff}';
 
 /// Format characters that draw nothing: the soft hyphen, the zero-width
 /// spaces and joiners, the direction marks, the word joiner and invisible

@@ -19,7 +19,7 @@
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
-import { formatPoint } from '../format.js';
+import { countOf, formatPoint } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
@@ -372,7 +372,7 @@ export class GcodePanel {
     const warnings = record ? record.warnings.length + record.warningsOmitted : 0;
     if (record && warnings > 0) {
       const first = record.warnings[0]!;
-      parts.push(element('p', { className: 'gcode-warning' }, `${warnings} ${warnings === 1 ? 'warning' : 'warnings'}, listed under Moves; the first: `, go(first.line, `line ${first.line}:${first.column}`), `: ${first.message}`));
+      parts.push(element('p', { className: 'gcode-warning' }, `${countOf(warnings, 'warning')}, listed under Moves; the first: `, go(first.line, `line ${first.line}:${first.column}`), `: ${first.message}`));
     }
     problems.replaceChildren(...parts);
     problems.hidden = parts.length === 0;

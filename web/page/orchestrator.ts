@@ -116,9 +116,9 @@ export class Orchestrator {
       const { invalid } = (event as CustomEvent<InputsValidity>).detail;
       if (invalid) this.#invalidForms.add(event.target as Element);
       else this.#invalidForms.delete(event.target as Element);
-      const shown = Object.keys(this.#shown).length > 0;
-      if (this.#refusedHere() && shown) markStale(parts.staleNote, 'rejected');
-      else if (!this.#refusedHere() && !this.#rejected && document.body.dataset.stale === 'rejected') markStale(parts.staleNote, undefined);
+      const [refused, shown] = [this.#refusedHere(), Object.keys(this.#shown).length > 0];
+      if (refused && shown) markStale(parts.staleNote, 'rejected');
+      else if (!refused && !this.#rejected && document.body.dataset.stale === 'rejected') markStale(parts.staleNote, undefined);
     });
     this.#details = new PointDetails(
       (detail: StepDetail) => {

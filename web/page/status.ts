@@ -19,7 +19,7 @@ export function traceStatus(trace: MeasuredTrace): string {
     `${trace.algorithm}: ${trace.steps} steps from ${formatPoint(trace.start)} to ${formatPoint(trace.end)}; ` +
     `largest distance from the ideal path ${m.maxDeviation.toFixed(3)}` +
     (bound ? ` (the rule keeps it within ${bound.value.toFixed(3)}: ${bound.why})` : '') +
-    `; ${m.ties} ${m.ties === 1 ? 'tie' : 'ties'}.`
+    `; ${countOf(m.ties, 'tie')}.`
   );
 }
 

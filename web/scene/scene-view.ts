@@ -277,22 +277,13 @@ export class SceneView {
       this.#labels.setSize(width, height);
       cellUniforms.halfHeightPx.value = (height * this.#renderer.getPixelRatio()) / 2;
       this.#updateProjections();
-      // A view framed by default is framed again for its new shape (a
-      // window made narrower left the path's end outside it); a camera
-      // the user placed stays where they put it.
-      if (this.#framedByDefault) this.resetView();
-      this.requestRender();
+      // A window made narrower left the path's end outside the view.
+      this.#frameAgain();
     }).observe(container);
     // The legend and the tools over the view's top take their room from the
     // framed picture (#topInset): when they grow (a learner's points add two
-    // legend entries) a path framed by default is framed below them again,
-    // not left with its z axis under the legend.
-    const overlays = new ResizeObserver(() => {
-      if (this.#framedByDefault) {
-        this.resetView();
-        this.requestRender();
-      }
-    });
+    // legend entries) the path stood with its z axis under the legend.
+    const overlays = new ResizeObserver(() => this.#frameAgain());
     for (const child of container.children) if (child !== this.canvas && child !== this.#labels.domElement) overlays.observe(child);
   }
 
@@ -564,6 +555,12 @@ export class SceneView {
   /** Endpoint handles to show (none: an empty list). */
   setHandles(handles: readonly Handle[]): void {
     this.#handles.set(handles);
+    this.requestRender();
+  }
+
+  /** After a change of the view's shape: a path framed by default is framed for it again; a camera the user placed stays where they put it. */
+  #frameAgain(): void {
+    if (this.#framedByDefault) this.resetView();
     this.requestRender();
   }
 

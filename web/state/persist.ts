@@ -32,11 +32,20 @@ export function storage(): Storage | undefined {
  */
 export function loadState(catalogue: Catalogue): AppState {
   const stored = stateFromQuery(storage()?.getItem(STORAGE_KEY) ?? '', catalogue);
+  return linkedState(catalogue, stored) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
+}
+
+/**
+ * The address's state, if it describes one, with the program and the
+ * learner's points it leaves out (too long for a URL) taken from `typed`:
+ * the texts as typed, kept whole elsewhere.
+ */
+function linkedState(catalogue: Catalogue, typed: AppState | undefined): AppState | undefined {
   const linked = stateFromQuery(window.location.search, catalogue);
   const params = new URLSearchParams(window.location.search);
-  if (linked && stored && !params.has('gcode')) linked.gcode = stored.gcode;
-  if (linked && stored && !params.has('points')) linked.learnerPoints = stored.learnerPoints;
-  return linked ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
+  if (linked && typed && !params.has('gcode')) linked.gcode = typed.gcode;
+  if (linked && typed && !params.has('points')) linked.learnerPoints = typed.learnerPoints;
+  return linked;
 }
 
 /** The page's address for `state`: the permalink. */
@@ -64,9 +73,8 @@ function write(state: AppState): void {
  */
 export function newHistoryEntry(state: AppState): void {
   if (state.embed) return;
-  const url = urlOf(state);
-  window.history.replaceState(window.history.state, '', url);
-  window.history.pushState(null, '', url);
+  write(state);
+  window.history.pushState(null, '', urlOf(state));
 }
 
 /**
@@ -84,13 +92,8 @@ export function persistState(store: Store<AppState>, catalogue: Catalogue): void
   window.addEventListener('popstate', () => {
     clearTimeout(timer);
     timer = undefined;
-    const state = stateFromQuery(window.location.search, catalogue);
-    if (!state) return;
-    // A program or points too long for the address are the ones typed (as loadState keeps them).
-    const params = new URLSearchParams(window.location.search);
-    if (!params.has('gcode')) state.gcode = store.state.gcode;
-    if (!params.has('points')) state.learnerPoints = store.state.learnerPoints;
-    store.update(state);
+    const state = linkedState(catalogue, store.state);
+    if (state) store.update(state);
   });
   store.subscribe(() => {
     timer ??= setTimeout(flush, WRITE_DELAY_MS);

@@ -605,6 +605,7 @@ mod tests {
             }
         }
     }
+
     /// A tie given for chords whose line algorithm has no tie rule was
     /// dropped: greedy's chords with tie hold were its chords without it.
     #[test]

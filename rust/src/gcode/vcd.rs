@@ -243,26 +243,18 @@ mod tests {
         };
         let nanosecond = run("G0 X10\n", at_rate("7.5e8"));
         assert!(write_vcd(&nanosecond.trace, &nanosecond.timeline, &mut Vec::new()).is_err());
-        // Four nanoseconds apart: every pulse, on ticks of its own.
-        let four = run("G0 X10\n", at_rate("1.875e8"));
-        let mut out = Vec::new();
-        write_vcd(&four.trace, &four.timeline, &mut out).unwrap();
-        let x = &read_back(&out)["x_step"];
-        assert_eq!(x.iter().filter(|c| c.1).count(), 800);
-        assert!(x.windows(2).all(|w| w[0].0 < w[1].0));
-        // 80 million steps a second, 12.5 ns apart: every pulse is there,
-        // about 6 ns wide.
-        let settings =
-            Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 1e30, "maxRate": 6e7}"#)
-                .unwrap();
-        let program = run("G1 X10 F60000000\n", settings);
-        let mut out = Vec::new();
-        write_vcd(&program.trace, &program.timeline, &mut out).unwrap();
-        assert_eq!(program.info.errors, []);
-        assert_eq!(program.info.steps, 800);
-        let x = &read_back(&out)["x_step"];
-        assert_eq!(x.iter().filter(|c| c.1).count(), 800);
-        assert!(x.windows(2).all(|w| w[0].0 < w[1].0));
+        // Four nanoseconds apart, and 80 million steps a second (12.5 ns
+        // apart, about 6 ns wide): every pulse, on ticks of its own.
+        for (source, max_rate) in [("G0 X10\n", "1.875e8"), ("G1 X10 F60000000\n", "6e7")] {
+            let program = run(source, at_rate(max_rate));
+            assert_eq!(program.info.errors, []);
+            assert_eq!(program.info.steps, 800);
+            let mut out = Vec::new();
+            write_vcd(&program.trace, &program.timeline, &mut out).unwrap();
+            let x = &read_back(&out)["x_step"];
+            assert_eq!(x.iter().filter(|c| c.1).count(), 800, "{source}");
+            assert!(x.windows(2).all(|w| w[0].0 < w[1].0), "{source}");
+        }
     }
 
     #[test]
