@@ -62,6 +62,36 @@ describe('points', () => {
     t.free();
   });
 
+  it.each(CASES)('of %s, every n-th only, are those rows of all the points', async (_, options) => {
+    const t = await trace(options);
+    const n = t.steps + 1;
+    const all = t.points;
+    const rowsOf = (from: number, to: number, every: number) => {
+      const out = new Int32Array(Math.ceil((to - from) / every) * t.dims);
+      for (let k = from, r = 0; k < to; k += every, r++) out.set(all.subarray(k * t.dims, (k + 1) * t.dims), r * t.dims);
+      return out;
+    };
+    // Every spacing against the chunk's 32768 values: below a chunk's rows, a
+    // chunk's rows and more, ranges starting inside a chunk and on its edge.
+    for (const every of [1, 2, 3, 277, 10_922, 16_384, 40_000, n, n + 5]) {
+      for (const [a, b] of [
+        [0, n],
+        [1, n],
+        [Math.floor(n / 3), Math.floor((2 * n) / 3)],
+        [10_921, n],
+        [n - 1, n],
+        [n, n],
+      ] as const) {
+        if (a > b) continue;
+        // Compared value by value here: vitest's deep equality of arrays this long takes seconds.
+        const [got, want] = [t.pointsInRange(a, b, every), rowsOf(a, b, every)];
+        expect(got.length, `every ${every} of ${a}..${b}`).toBe(want.length);
+        expect(got.findIndex((v, i) => v !== want[i]), `every ${every} of ${a}..${b}: first wrong value`).toBe(-1);
+      }
+    }
+    t.free();
+  });
+
   it('past a megabyte, and the deviations and axis errors beside them, are what smaller reads give', async () => {
     // 150,001 points: 1.8 MB of points, 1.2 MB of deviations, 3.6 MB of axis
     // errors, each array made without zeroing in Node; the reads of a few
@@ -89,6 +119,8 @@ describe('points', () => {
   it('are refused outside the path, naming the range', async () => {
     const t = await trace(CASES[0]![1]);
     expect(() => t.pointsInRange(0, t.steps + 2)).toThrow(/^to: point index \d+ is outside 0\.\.\d+$/);
+    expect(() => t.pointsInRange(0, 2, 0)).toThrow(/^every: every \(points apart\) 0 is outside 1\.\.4294967295$/);
+    expect(() => t.pointsInRange(0, 2, 1.5)).toThrow(/^every: every \(points apart\) must be a whole number, got 1\.5$/);
     t.free();
   });
 

@@ -4,6 +4,7 @@
 // browser tests.
 import { describe, expect, it } from 'vitest';
 import { CoreCrash, InputRejected, TraceClient, type WorkerPort } from '../web/worker/client.js';
+import { pointsEvery } from '../web/worker/protocol.js';
 import type { ReplyMessage, RequestMessage, TracedPath } from '../web/worker/protocol.js';
 
 class FakeWorker implements WorkerPort {
@@ -25,6 +26,9 @@ class FakeWorker implements WorkerPort {
   }
 }
 
+/** Which points the tests' client asks to be sent with a path: all of fewer than 100, else at most 10. */
+const POINTS_SENT = { allBelow: 100, sampled: 10 };
+
 function setUp() {
   const workers: FakeWorker[] = [];
   const crashes: string[] = [];
@@ -35,6 +39,7 @@ function setUp() {
       return worker;
     },
     (message) => crashes.push(message),
+    POINTS_SENT,
   );
   return { client, workers, crashes };
 }
@@ -51,7 +56,8 @@ const PATH: TracedPath = {
     metrics: { steps: 1, stepsMovingAxes: [0, 1, 0], pulsesByAxis: [1, 1, 0], maxDeviation: 0, meanDeviation: 0, stdDeviation: 0, maxAxisError: [0, 0, 0], ties: 0 },
     deviationBound: null,
   },
-  points: new Int32Array([0, 0, 0, 1, 1, 0]),
+  sampledPoints: new Int32Array([0, 0, 0, 1, 1, 0]),
+  pointsEvery: 1,
   idealPolyline: new Float64Array([0, 0, 0, 1, 1, 0]),
   bounds: { min: [0, 0, 0], max: [1, 1, 0] },
 };
@@ -88,7 +94,7 @@ describe('TraceClient', () => {
     workers[0]!.reply({ id: workers[0]!.received[0]!.id, ok: true, value: PATH });
     const trace = await traced;
     expect(trace.alive).toBe(true);
-    expect(Array.from(trace.point(1))).toEqual([1, 1, 0]);
+    expect(Array.from(trace.point(1)!)).toEqual([1, 1, 0]);
 
     const start = trace.stepDetail(0);
     const end = trace.stepDetail(1);
@@ -132,5 +138,32 @@ describe('TraceClient', () => {
     expect(error).toMatchObject({ message: 'Error: this worker holds no trace 9' });
     expect(workers[0]!.terminated).toBe(false);
     expect(crashes).toEqual([]);
+  });
+
+  it('asks for the points a path is sent with, and for the others by range when it holds a sample', async () => {
+    const { client, workers } = setUp();
+    // A path of 1000 steps, 1001 points: past allBelow, so every 101st point (at most 10 asked: ceil(1001 / 10) apart, so 10 of them).
+    expect(pointsEvery(1001, POINTS_SENT)).toBe(101);
+    expect(pointsEvery(99, POINTS_SENT)).toBe(1);
+    expect(pointsEvery(100, POINTS_SENT)).toBe(10);
+    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1000, 0, 0] });
+    const request = workers[0]!.received[0]!;
+    expect(request).toMatchObject({ request: { kind: 'trace', pointsSent: POINTS_SENT } });
+    const sampledPoints = Int32Array.from({ length: 10 * 3 }, (_, i) => (i % 3 === 0 ? (i / 3) * 101 : 0));
+    workers[0]!.reply({ id: request.id, ok: true, value: { ...PATH, summary: { ...PATH.summary, steps: 1000, end: [1000, 0, 0] }, sampledPoints, pointsEvery: 101 } });
+    const trace = await traced;
+    expect(Array.from(trace.point(202)!)).toEqual([202, 0, 0]);
+    expect(trace.point(203)).toBeUndefined();
+    const range = trace.pointsInRange(200, 203);
+    const asked = workers[0]!.received[1]!;
+    expect(asked).toMatchObject({ request: { kind: 'points', traceId: trace.traceId, fromPoint: 200, toPoint: 203 } });
+    workers[0]!.reply({ id: asked.id, ok: true, value: new Int32Array([200, 0, 0, 201, 0, 0, 202, 0, 0]) });
+    expect(Array.from(await range)).toEqual([200, 0, 0, 201, 0, 0, 202, 0, 0]);
+
+    // A short path is held whole: its ranges are read without asking.
+    const short = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] });
+    workers[0]!.reply({ id: workers[0]!.received[2]!.id, ok: true, value: PATH });
+    expect(Array.from(await (await short).pointsInRange(1, 2))).toEqual([1, 1, 0]);
+    expect(workers[0]!.received).toHaveLength(3);
   });
 });

@@ -24,9 +24,11 @@ import { ModeTabs } from './page/mode-tabs.js';
 import { Orchestrator } from './page/orchestrator.js';
 import { PathViews } from './page/path-views.js';
 import { Status } from './page/status.js';
+import { LIGHT_DRAWING_CELLS } from './scene/cells.js';
 import { followControl } from './scene/follow.js';
 import { PALETTE } from './scene/palette.js';
 import { SceneView } from './scene/scene-view.js';
+import { SAMPLED_POINTS } from './scene/voxel-path.js';
 import { type AppState, type Catalogue, randomLinesExperiment } from './state/app-state.js';
 import { loadState, persistState } from './state/persist.js';
 import { Store } from './state/store.js';
@@ -46,6 +48,8 @@ let views: PathViews | undefined;
 const client = new TraceClient(
   () => new Worker(new URL('./worker/trace-worker.ts', import.meta.url), { type: 'module' }),
   (message) => orchestrator?.coreCrashed(message),
+  // The points the 3D view draws of a path: a short one's every cell, a long one's sample.
+  { allBelow: LIGHT_DRAWING_CELLS, sampled: SAMPLED_POINTS },
 );
 // Asked first, so the worker starts loading the core at once.
 const catalogueLoaded = client.catalogue();
@@ -183,7 +187,7 @@ function run(catalogue: Catalogue): void {
     catalogue,
     store,
     {
-      onPick: (_line, steps) => page.pickLine(steps),
+      onPick: (_line, steps) => void page.pickLine(steps),
       onColumns: (names) => inspector.showColumns(names),
       onRun: () => void page.retrace(),
       onCancel: () => page.cancel(),

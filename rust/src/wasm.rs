@@ -253,31 +253,63 @@ impl TraceHandle {
         to_js(&self.0.bounds())
     }
 
-    /// Writes the points with point indices `from..to` into `out`, an
-    /// Int32Array of exactly (to - from) · dims values (stride dims), made
-    /// on the JS side (where it need not be zeroed first: every value is
-    /// written) and filled a chunk at a time, each chunk decoded
-    /// ([`Trace::points_by_chunk`]) into one buffer of
-    /// [`POINTS_CHUNK_VALUES`] in wasm memory and copied out of it. So the
-    /// points cross with one copy, and reading them all grows wasm memory
-    /// by that buffer, whatever the trace's length.
-    pub fn points(&self, from: u32, to: u32, out: &js_sys::Int32Array) -> Result<(), JsValue> {
+    /// Writes every `every`-th point of point indices `from..to` (point
+    /// indices from, from + every, ... below to; every point when `every`
+    /// is 1) into `out`, an Int32Array of exactly ceil((to - from) / every)
+    /// · dims values (stride dims), made on the JS side (where it need not
+    /// be zeroed first: every value is written). The points are decoded a
+    /// chunk at a time ([`Trace::points_by_chunk`]) into one buffer of
+    /// [`POINTS_CHUNK_VALUES`] in wasm memory, and the chosen ones copied
+    /// out of it. So the points cross with one copy, and reading them grows
+    /// wasm memory by that buffer, whatever the trace's length. A page
+    /// drawing a long path as every n-th cell asks for those alone: the
+    /// decode walks every step, but only the drawn points are copied.
+    pub fn points(
+        &self,
+        from: u32,
+        to: u32,
+        every: u32,
+        out: &js_sys::Int32Array,
+    ) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
+        if every == 0 {
+            return Err(to_js_error(&Error::field(
+                "every",
+                "a whole number of at least 1 (1: every point)",
+            )));
+        }
+        let every = every as u64;
         let dims = self.0.dims();
-        let values = (to - from) as usize * dims;
+        let count = (to - from).div_ceil(every);
+        let values = count as usize * dims;
         if out.length() as usize != values {
             let message = format!(
-                "an Int32Array of {values} values ({} points of {dims}); got {}",
-                to - from,
+                "an Int32Array of {values} values ({count} points of {dims}); got {}",
                 out.length()
             );
             return Err(to_js_error(&Error::field("out", message)));
         }
         let rows = (POINTS_CHUNK_VALUES / dims) as u64;
         let mut buffer = vec![0i32; rows.min(to - from).max(1) as usize * dims];
+        if every == 1 {
+            self.0.points_by_chunk(from, to, &mut buffer, |k, chunk| {
+                let at = ((k - from) as usize * dims) as u32;
+                out.subarray(at, at + chunk.len() as u32).copy_from(chunk);
+            });
+            return Ok(());
+        }
+        // The chosen points of each chunk, gathered to cross in one copy.
+        let mut chosen = Vec::with_capacity(buffer.len());
         self.0.points_by_chunk(from, to, &mut buffer, |k, chunk| {
-            let at = ((k - from) as usize * dims) as u32;
-            out.subarray(at, at + chunk.len() as u32).copy_from(chunk);
+            // The chunk's first chosen point: the first index from k on that is `from` plus a multiple of `every`.
+            let first = ((k - from).div_ceil(every) * every + from - k) as usize;
+            chosen.clear();
+            for row in chunk.chunks_exact(dims).skip(first).step_by(every as usize) {
+                chosen.extend_from_slice(row);
+            }
+            let at = ((k - from).div_ceil(every) as usize * dims) as u32;
+            out.subarray(at, at + chosen.len() as u32)
+                .copy_from(&chosen);
         });
         Ok(())
     }

@@ -105,6 +105,9 @@ describe('a 1,000,000-step line', () => {
     // Scrubbing: a typed step, End, arrows, Home and the scrubber.
     await jumpTo(page, 500_000);
     await page.getByTestId('inspector-point').filter({ hasText: /^\(500000, / }).waitFor();
+    // The page holds every 51st point of the million (20,000 drawn as points): point 500,000 is not one of
+    // them, and is drawn once the cells near it come from the worker (regions' point k is (k, 0.7k, 0.6k) rounded).
+    await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-current-cell')).toBe('500000,350000,300000');
     await page.locator('body').click({ position: { x: 5, y: 5 } });
     await page.keyboard.press('End');
     await page.getByTestId('inspector-point').filter({ hasText: '(1000000, 700000, 600000)' }).waitFor();
@@ -210,6 +213,9 @@ describe('a 100,000-line G-code program', () => {
     await page.keyboard.press('ArrowLeft');
     await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('203');
     await page.getByTestId('moves-table').locator('tr.current button[aria-label="Pick line 203"]').waitFor();
+    // Picked, its 10 steps are outlined: cells the worker sends, as the page holds a sample of this program's 1,990,991 points.
+    await page.getByTestId('moves-table').locator('button[aria-label="Pick line 203"]').click();
+    await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('10');
 
     const observed = await takeObserved(page);
     const { longestTask, slowestInput } = worst(observed);

@@ -164,13 +164,17 @@ export class Trace {
   /**
    * Points with point indices from..to, flat with stride dims: decoded by
    * the core a chunk at a time straight into the array returned (its wasm
-   * memory grows by one chunk's buffer, not by the points).
+   * memory grows by one chunk's buffer, not by the points). With `every`
+   * above 1, every every-th of them only (point indices from, from + every,
+   * ... below to): a view drawing a long path by a sample of its cells reads
+   * those alone.
    */
-  pointsInRange(from: number, to: number): Int32Array {
+  pointsInRange(from: number, to: number, every = 1): Int32Array {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
-    const out = forOverwrite(Int32Array, (to - from) * this.dims);
-    callCore(() => core.points(from, to, out));
+    wholeNumber('every', every, 1, 2 ** 32 - 1, 'every (points apart)');
+    const out = forOverwrite(Int32Array, Math.ceil((to - from) / every) * this.dims);
+    callCore(() => core.points(from, to, every, out));
     return out;
   }
 

@@ -31,7 +31,8 @@ export interface InspectorElements {
 /** What the inspector reads of a trace itself: its columns and its points. */
 export interface InspectedTrace {
   readonly columns: readonly ColumnSpec[];
-  point(pointIndex: number): ArrayLike<number>;
+  /** The point when the page holds it (a long path's comes with its detail). */
+  point(pointIndex: number): ArrayLike<number> | undefined;
 }
 
 /** How a learner reads one decision value (a dash where the column does not apply to this step). */
@@ -89,7 +90,7 @@ export class Inspector {
     for (const [name, cell] of this.#cells) cell.parentElement!.hidden = names !== undefined && !names.has(name);
   }
 
-  /** Shows point index `pointIndex` at once from the trace's points; its detail follows (showDetail). */
+  /** Shows point index `pointIndex` at once from the trace's points the page holds; its detail follows (showDetail). */
   showPoint(pointIndex: number): void {
     const trace = this.#trace;
     const e = this.#e;
@@ -99,13 +100,16 @@ export class Inspector {
       e.decisionHeading.textContent = 'Decision';
       return;
     }
-    e.point.textContent = formatPoint(trace.point(pointIndex));
+    // A long path's point the page does not hold comes with its detail (showDetail).
+    const point = trace.point(pointIndex);
+    e.point.textContent = point ? formatPoint(point) : '';
     e.decisionHeading.textContent = pointIndex === 0 ? 'Decision: none yet' : `Decision of step ${pointIndex}`;
   }
 
   /** Shows the core's detail of a point of the current trace. */
   showDetail(detail: StepDetail): void {
     const e = this.#e;
+    e.point.textContent = formatPoint(detail.point);
     e.deviation.textContent = detail.deviation === null ? NO_VALUE_TEXT : `${detail.deviation.toFixed(6)} grid units`;
     for (const cell of detail.decision) {
       const value = this.#cells.get(cell.name);

@@ -89,6 +89,8 @@ export class Orchestrator {
   /** Counts runs of the core, so only the latest one's answer is shown. */
   #latestRun = 0;
   #running: Running<RemoteProgram> | undefined;
+  /** The G-code line last picked (pickLine), whose cells are on their way. */
+  #pickedLine: LineSteps | undefined;
   #retraceTimer: ReturnType<typeof setTimeout> | undefined;
   /** The request the shown trace-mode trace was made from: a learner's points are checked against its rule. */
   #ruleOptions: TraceOptions | undefined;
@@ -145,13 +147,24 @@ export class Orchestrator {
     this.#p.store.update({ pointIndex, playing: false });
   }
 
-  /** Highlights the steps of a picked G-code line and goes to its last point. */
-  pickLine(steps: LineSteps): void {
+  /** Goes to the last point of a picked G-code line and highlights its steps. */
+  async pickLine(steps: LineSteps): Promise<void> {
     const program = this.#shown.program;
     if (!program) return;
-    const cells = program.points.subarray((steps.firstStep + 1) * program.dims, (steps.firstStep + steps.steps + 1) * program.dims);
-    this.#p.views.setHighlights([{ cells, dims: program.dims, colour: PALETTE.onlyFirst }]);
+    this.#pickedLine = steps;
     this.goTo(steps.steps > 0 ? steps.firstStep + steps.steps : steps.pointBefore);
+    // The line's cells are asked of the worker, which holds a long program's points.
+    let cells: Int32Array;
+    try {
+      cells = await program.pointsInRange(steps.firstStep + 1, steps.firstStep + steps.steps + 1);
+    } catch (error) {
+      // A crash is reported as it happens (coreCrashed).
+      if (error instanceof CoreCrash) return;
+      throw error;
+    }
+    // Another line, or another program, was picked meanwhile.
+    if (this.#shown.program !== program || this.#pickedLine !== steps) return;
+    this.#p.views.setHighlights([{ cells, dims: program.dims, colour: PALETTE.onlyFirst }]);
   }
 
   /** Handles on the move's points: the point options the traced algorithms take (from, to, center). */

@@ -14,6 +14,7 @@ import { decisionOverlay, decisionOverlayKinds } from '../scene/decision-overlay
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
 import { type Highlight, pointBounds, type SceneCallbacks, SceneView } from '../scene/scene-view.js';
+import { heldPoints } from '../scene/voxel-path.js';
 import type { AppState, CameraState, Projection } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 import type { LearnerCheck } from '../worker/protocol.js';
@@ -150,7 +151,7 @@ export class PathViews {
     // Other modes' second path and highlights are their own.
     if (!traced) return;
     const dims = learner?.dims ?? 0;
-    this.#main.setSecond(points ? { points, dims, bounds: pointBounds(points, dims) } : undefined, PALETTE.learner, true);
+    this.#main.setSecond(points ? { ...heldPoints(points, dims), bounds: pointBounds(points, dims) } : undefined, PALETTE.learner, true);
     this.#main.setHighlights(cells.length > 0 ? [{ cells: Int32Array.from(cells.flat()), dims: learner!.dims, colour: PALETTE.onlyFirst }] : []);
   }
 

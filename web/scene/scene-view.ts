@@ -27,7 +27,7 @@ import { EndpointHandles, type Handle } from './endpoint-handles.js';
 import { GridAxes } from './grid-axes.js';
 import { FAT_LINE_POINTS, IdealPath } from './ideal-path.js';
 import { PALETTE } from './palette.js';
-import { VoxelPath } from './voxel-path.js';
+import { heldPoints, type PathPoints, VoxelPath } from './voxel-path.js';
 
 /** Vertical field of view, degrees. */
 const FOV_DEG = 35;
@@ -95,13 +95,10 @@ function softwareRenderer(): boolean {
   return software;
 }
 
-/** What one trace gives the view: the summary parts it draws. */
-export interface DrawnTrace {
-  dims: number;
-  steps: number;
+/** What one trace gives the view: the summary parts it draws, and its points as the page holds them. */
+export interface DrawnTrace extends PathPoints {
   start: number[];
   end: number[];
-  points: Int32Array;
   idealPolyline: Float64Array;
   /** The box every point lies in, as the core found it. */
   bounds: PointBounds;
@@ -131,14 +128,16 @@ interface Drawn {
 /** Cells of a path the 3D framing looks at (#fit): enough to follow a helix's turns, few enough to project four times at once. */
 const FRAMED_CELLS = 128;
 
-/** Up to `count` cells of `points` evenly along the path, the last one included. */
-function sampleCells(points: Int32Array, dims: number, count: number): THREE.Vector3[] {
+/** Up to `count` cells of `trace` evenly along the path (of the points the page holds), the last one included. */
+function sampleCells(trace: DrawnTrace, count: number): THREE.Vector3[] {
+  const { sampledPoints: points, dims } = trace;
   const cells = points.length / dims;
   const every = Math.max(1, Math.ceil((cells - 1) / (count - 1)));
   const out: THREE.Vector3[] = [];
-  for (let k = 0; k < cells; k = k === cells - 1 ? cells : Math.min(k + every, cells - 1)) {
-    out.push(new THREE.Vector3(points[k * dims]!, points[k * dims + 1]!, dims > 2 ? points[k * dims + 2]! : 0));
-  }
+  const cell = (p: ArrayLike<number>) => new THREE.Vector3(p[0]!, p[1]!, dims > 2 ? p[2]! : 0);
+  for (let k = 0; k < cells; k = k === cells - 1 ? cells : Math.min(k + every, cells - 1)) out.push(cell(points.subarray(k * dims, (k + 1) * dims)));
+  // A path sent as a sample may not hold its last point; its summary does.
+  if (trace.pointsEvery > 1 && trace.steps % trace.pointsEvery !== 0) out.push(cell(trace.end));
   return out;
 }
 
@@ -207,6 +206,8 @@ export class SceneView {
   #pointIndex = 0;
   /** The camera moves with the current cell (setFollow). */
   #follow = false;
+  /** A move of the camera closer to the current cell, held while that cell's point is on its way. */
+  #followCloser = false;
   /** The camera is where resetView put it, not where the user or a link did: a resize frames the path again. */
   #framedByDefault = false;
   /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
@@ -308,14 +309,14 @@ export class SceneView {
     const wide = new Int32Array([0, 0, 0, LIGHT_DRAWING_SPAN, 0, 0]);
     const longLine = new Float64Array((FAT_LINE_POINTS + 1) * 3);
     this.#warm.add(
-      new VoxelPath(short, 3, box),
-      new VoxelPath(wide, 3, box),
+      new VoxelPath(heldPoints(short, 3), box),
+      new VoxelPath(heldPoints(wide, 3), box),
       new IdealPath(new Float64Array([0, 0, 0, 1, 0, 0]), 3),
       new IdealPath(longLine, 3),
       new GridAxes(new THREE.Vector3(0, 0, 0), new THREE.Vector3(1, 1, 1), 3),
       new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: HIGHLIGHT_FILL_OPACITY, outline: true }, false, box),
       new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: HIGHLIGHT_POINT_OPACITY }, true, box),
-      new VoxelPath(short, 3, box, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE, onTop: true }),
+      new VoxelPath(heldPoints(short, 3), box, { visited: PALETTE.second, cellSize: SECOND_PATH_SIZE, onTop: true }),
     );
     // The real scene's lights, so the lit materials get the programs the real frames use.
     this.#renderer.compile(this.#warm, this.#perspective, this.#scene);
@@ -373,12 +374,12 @@ export class SceneView {
     const planeNormal = trace.dims === 2 ? 2 : flat.length > 0 ? flat[flat.length - 1] : undefined;
     const bounds = new THREE.Box3(min.clone().subScalar(0.5), max.clone().addScalar(0.5));
     const drawn: Drawn = {
-      voxels: new VoxelPath(trace.points, trace.dims, bounds, { visited: this.#visitedColour }),
+      voxels: new VoxelPath(trace, bounds, { visited: this.#visitedColour }, () => this.#settled()),
       ideal: new IdealPath(trace.idealPolyline, trace.dims),
       axes: new GridAxes(min, max, trace.dims === 2 ? 2 : 3, trace.stepsPerMm),
       bounds,
       planeNormal,
-      framedCells: sampleCells(trace.points, trace.dims, FRAMED_CELLS),
+      framedCells: sampleCells(trace, FRAMED_CELLS),
     };
     this.#scene.add(drawn.voxels, drawn.ideal, drawn.axes);
     this.#drawn = drawn;
@@ -412,6 +413,13 @@ export class SceneView {
     const drawn = this.#drawn;
     if (!drawn) return;
     const cell = drawn.voxels.currentCell;
+    if (!cell) {
+      // Its point is on its way from the worker: followed when it arrives (#settled).
+      this.#followCloser ||= closer;
+      return;
+    }
+    closer ||= this.#followCloser;
+    this.#followCloser = false;
     const camera = this.#activeCamera();
     const offset = camera.position.clone().sub(this.#controls.target);
     let zoom = this.#projection === '2d' ? this.#orthographic.zoom : 1;
@@ -421,6 +429,13 @@ export class SceneView {
       offset.setLength(Math.min(offset.length(), FOLLOW_SPAN_CELLS / 2 / Math.tan(THREE.MathUtils.degToRad(FOV_DEG / 2))));
     }
     this.setCamera({ position: cell.clone().add(offset).toArray(), target: cell.toArray(), zoom });
+  }
+
+  /** The path's cells asked of the worker have arrived and are drawn: the view draws again, and follows the current cell. */
+  #settled(): void {
+    this.#markCurrentCell();
+    if (this.#follow) this.#followCell(false);
+    this.requestRender();
   }
 
   /** True when the path on screen lies in one plane, so the 2D view applies. */
@@ -480,8 +495,14 @@ export class SceneView {
     this.#pointIndex = pointIndex;
     this.#drawn?.voxels.show(pointIndex);
     this.#second?.show(Math.min(pointIndex, this.#second.steps));
+    this.#markCurrentCell();
     if (this.#follow) this.#followCell(false);
     this.requestRender();
+  }
+
+  /** The canvas says where the current cell is drawn (x,y,z), empty while its point is on its way: for tests and tools. */
+  #markCurrentCell(): void {
+    this.canvas.dataset.currentCell = this.#drawn?.voxels.currentCell?.toArray().join(',') ?? '';
   }
 
   /**
@@ -491,7 +512,7 @@ export class SceneView {
    * colour: a learner's path mostly runs inside the rule's cells, and the
    * line shows where it goes there.
    */
-  setSecond(trace: Pick<DrawnTrace, 'points' | 'dims' | 'bounds'> | undefined, colour: string = PALETTE.second, throughCenters = false): void {
+  setSecond(trace: (PathPoints & Pick<DrawnTrace, 'bounds'>) | undefined, colour: string = PALETTE.second, throughCenters = false): void {
     if (this.#second) {
       this.#scene.remove(this.#second);
       this.#second.dispose();
@@ -503,13 +524,14 @@ export class SceneView {
       this.#secondLine = undefined;
     }
     if (trace && throughCenters) {
-      this.#secondLine = new IdealPath(Float64Array.from(trace.points), trace.dims, colour);
+      // Only a path held whole (a learner's) is drawn through its centers.
+      this.#secondLine = new IdealPath(Float64Array.from(trace.sampledPoints), trace.dims, colour);
       this.#scene.add(this.#secondLine);
     }
     if (trace) {
       const { min, max } = sceneCorners(trace.bounds);
       const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
-      this.#second = new VoxelPath(trace.points, trace.dims, bounds, { visited: colour, cellSize: SECOND_PATH_SIZE, onTop: true });
+      this.#second = new VoxelPath(trace, bounds, { visited: colour, cellSize: SECOND_PATH_SIZE, onTop: true }, () => this.requestRender());
       this.#scene.add(this.#second);
       this.#second.show(Math.min(this.#pointIndex, this.#second.steps));
     }

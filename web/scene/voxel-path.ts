@@ -16,7 +16,10 @@
  * that long is far finer than the screen when framed whole), plus every
  * cell as a cube within NEAR_CELLS steps of the current one, where a learner
  * zooms in. The near window is rebuilt (a few kilobytes) when the current
- * point nears its edge.
+ * point nears its edge. A path that long comes to the page as that sample
+ * alone (PointsSent in the worker's protocol): the near window's points are
+ * asked of the worker, and the current cell, when it is not a sampled one,
+ * is drawn once they arrive.
  */
 import * as THREE from 'three';
 import { Cells, LIGHT_DRAWING_CELLS, LIGHT_DRAWING_SPAN } from './cells.js';
@@ -53,6 +56,32 @@ function sampled(points: Int32Array, dims: number, every: number): Int32Array {
   return out;
 }
 
+/**
+ * A path's points as the view holds them (the page's RemoteTrace is one):
+ * all of them, or every n-th with the others asked for by range.
+ */
+export interface PathPoints {
+  readonly dims: number;
+  /** The path's last point index. */
+  readonly steps: number;
+  /** Point indices 0, pointsEvery, 2 · pointsEvery, ..., flat with stride dims (every point when pointsEvery is 1). */
+  readonly sampledPoints: Int32Array;
+  readonly pointsEvery: number;
+  /** Points fromPoint..toPoint, flat with stride dims. */
+  pointsInRange(fromPoint: number, toPoint: number): Promise<Int32Array>;
+}
+
+/** PathPoints over points the page holds whole (a learner's). */
+export function heldPoints(points: Int32Array, dims: number): PathPoints {
+  return {
+    dims,
+    steps: points.length / dims - 1,
+    sampledPoints: points,
+    pointsEvery: 1,
+    pointsInRange: (fromPoint, toPoint) => Promise.resolve(points.slice(fromPoint * dims, toPoint * dims)),
+  };
+}
+
 export interface PathStyle {
   /** Colour of visited cells. */
   visited: string;
@@ -62,21 +91,30 @@ export interface PathStyle {
   onTop?: boolean;
 }
 
-/** Cubes for cells first..first + count - 1 of a path: visited from the start, ahead reversed. */
+/** Cubes for cells first..first + count - 1 of a path (`run`, their points): visited from the start, ahead reversed. */
 class CubeRun {
   readonly first: number;
   readonly count: number;
+  readonly #run: Int32Array;
+  readonly #dims: number;
   readonly visited: Cells;
   readonly ahead: Cells;
 
-  constructor(points: Int32Array, dims: number, first: number, count: number, bounds: THREE.Box3, style: PathStyle) {
+  constructor(run: Int32Array, dims: number, first: number, bounds: THREE.Box3, style: PathStyle) {
     this.first = first;
-    this.count = count;
-    const run = points.subarray(first * dims, (first + count) * dims);
+    this.count = run.length / dims;
+    this.#run = run;
+    this.#dims = dims;
     const cellSize = style.cellSize ?? CELL_SIZE;
     const onTop = style.onTop;
     this.visited = new Cells(run, dims, { colour: style.visited, cellSize, opacity: 1, onTop }, false, bounds);
     this.ahead = new Cells(reversed(run, dims), dims, { colour: PALETTE.ahead, cellSize, opacity: 0.22, onTop }, false, bounds);
+  }
+
+  /** Point index k's coordinates, when the run holds it. */
+  point(pointIndex: number): Int32Array | undefined {
+    const r = pointIndex - this.first;
+    return r >= 0 && r < this.count ? this.#run.subarray(r * this.#dims, (r + 1) * this.#dims) : undefined;
   }
 
   /** Shows the run's cells before point `pointIndex` as visited and those after it as ahead. */
@@ -92,33 +130,46 @@ class CubeRun {
   }
 }
 
+/** A window of point indices first..first + count - 1. */
+interface Window {
+  first: number;
+  count: number;
+}
+
 export class VoxelPath extends THREE.Group {
-  readonly #points: Int32Array;
-  readonly #dims: number;
+  readonly #path: PathPoints;
   readonly #count: number;
   readonly #bounds: THREE.Box3;
   readonly #style: PathStyle;
+  /** Called when cells asked of the worker have arrived and are drawn (the view draws again). */
+  readonly #onSettled: () => void;
   /** All cells as cubes (full drawing), or the cubes near the current point (lighter drawing). */
   #cubes: CubeRun | undefined;
+  /** The near window asked of the worker and not yet arrived (lighter drawing of a path sent as a sample). */
+  #asked: Window | undefined;
+  #pointIndex = 0;
+  #disposed = false;
   /** Lighter drawing: every #every-th cell as a point, visited and ahead sharing one buffer. */
   readonly #sampled: { visited: Cells; ahead: Cells; every: number } | undefined;
   readonly #current: THREE.Group;
   /** True when the path is drawn the lighter way (see the file's comment). */
   readonly light: boolean;
 
-  /** `points`: flat, stride `dims`, one row per point index (the trace's points); `bounds`: the cells' box. */
-  constructor(points: Int32Array, dims: number, bounds: THREE.Box3, style: PathStyle = { visited: PALETTE.visited }) {
+  /** `path`: the path's points as the page holds them; `bounds`: the cells' box. */
+  constructor(path: PathPoints, bounds: THREE.Box3, style: PathStyle = { visited: PALETTE.visited }, onSettled: () => void = () => undefined) {
     super();
-    this.#points = points;
-    this.#dims = dims;
-    this.#count = points.length / dims;
+    const { dims, sampledPoints, pointsEvery } = path;
+    this.#path = path;
+    this.#count = path.steps + 1;
     this.#bounds = bounds;
     this.#style = style;
+    this.#onSettled = onSettled;
     const size = bounds.getSize(new THREE.Vector3());
     this.light = this.#count >= LIGHT_DRAWING_CELLS || Math.max(size.x, size.y, size.z) >= LIGHT_DRAWING_SPAN;
     if (this.light) {
-      const every = Math.max(1, Math.ceil(this.#count / SAMPLED_POINTS));
-      const rows = sampled(points, dims, every);
+      // A path held whole is sampled here; one sent as a sample is drawn as sent.
+      const every = pointsEvery > 1 ? pointsEvery : Math.max(1, Math.ceil(this.#count / SAMPLED_POINTS));
+      const rows = pointsEvery > 1 ? sampledPoints : sampled(sampledPoints, dims, every);
       const cellSize = style.cellSize ?? CELL_SIZE;
       const onTop = style.onTop;
       const visited = new Cells(rows, dims, { colour: style.visited, cellSize, opacity: 1, onTop }, true, bounds);
@@ -126,8 +177,7 @@ export class VoxelPath extends THREE.Group {
       this.#sampled = { visited, ahead, every };
       this.add(visited, ahead);
     } else {
-      this.#cubes = new CubeRun(points, dims, 0, this.#count, bounds, style);
-      this.add(this.#cubes.visited, this.#cubes.ahead);
+      this.#setCubes(new CubeRun(this.#held({ first: 0, count: this.#count })!, dims, 0, bounds, style));
     }
 
     const currentBox = new THREE.BoxGeometry(CURRENT_SIZE, CURRENT_SIZE, CURRENT_SIZE);
@@ -147,9 +197,9 @@ export class VoxelPath extends THREE.Group {
     this.add(this.#current);
   }
 
-  /** Where the current cell is, grid units. */
-  get currentCell(): THREE.Vector3 {
-    return this.#current.position.clone();
+  /** Where the current cell is, grid units; undefined while its point is on its way from the worker. */
+  get currentCell(): THREE.Vector3 | undefined {
+    return this.#current.visible ? this.#current.position.clone() : undefined;
   }
 
   /** Steps of the path (its last point index). */
@@ -159,6 +209,7 @@ export class VoxelPath extends THREE.Group {
 
   /** Shows the path after `pointIndex` steps. */
   show(pointIndex: number): void {
+    this.#pointIndex = pointIndex;
     if (this.#sampled) {
       const { visited, ahead, every } = this.#sampled;
       // Sampled row r is point r * every.
@@ -169,28 +220,76 @@ export class VoxelPath extends THREE.Group {
       this.#nearWindow(pointIndex);
     }
     this.#cubes?.show(pointIndex);
-    const p = this.#points.subarray(pointIndex * this.#dims, (pointIndex + 1) * this.#dims);
-    this.#current.position.set(p[0]!, p[1]!, this.#dims > 2 ? p[2]! : 0);
+    const p = this.#cubes?.point(pointIndex) ?? this.#sampledPoint(pointIndex);
+    // A point neither drawn as a cube nor sampled is on its way (#nearWindow): the current cell shows when it arrives.
+    this.#current.visible = p !== undefined;
+    if (p) this.#current.position.set(p[0]!, p[1]!, this.#path.dims > 2 ? p[2]! : 0);
+  }
+
+  /** Point index k from the points sent with the path, when it is one of them. */
+  #sampledPoint(pointIndex: number): Int32Array | undefined {
+    const { sampledPoints, pointsEvery, dims } = this.#path;
+    if (pointIndex % pointsEvery !== 0) return undefined;
+    const row = pointIndex / pointsEvery;
+    return sampledPoints.subarray(row * dims, (row + 1) * dims);
+  }
+
+  /** The points of `window` when the page holds every point of the path, else undefined (they are asked for). */
+  #held(window: Window): Int32Array | undefined {
+    const { sampledPoints, pointsEvery, dims } = this.#path;
+    return pointsEvery === 1 ? sampledPoints.subarray(window.first * dims, (window.first + window.count) * dims) : undefined;
+  }
+
+  /** True when `window` reaches far enough either side of `pointIndex` that its cubes need not be rebuilt yet. */
+  #covers(window: Window | undefined, pointIndex: number): boolean {
+    const margin = NEAR_CELLS / 2;
+    return (
+      window !== undefined &&
+      pointIndex - window.first >= Math.min(margin, window.first) &&
+      window.first + window.count - pointIndex >= Math.min(margin, this.#count - window.first - window.count)
+    );
   }
 
   /** Lighter drawing: cubes for the cells near `pointIndex`, rebuilt when it nears the window's edge. */
   #nearWindow(pointIndex: number): void {
-    const cubes = this.#cubes;
-    const margin = NEAR_CELLS / 2;
-    const inside = cubes && pointIndex - cubes.first >= Math.min(margin, cubes.first) && cubes.first + cubes.count - pointIndex >= Math.min(margin, this.#count - cubes.first - cubes.count);
-    if (inside) return;
-    if (cubes) {
-      this.remove(cubes.visited, cubes.ahead);
-      cubes.dispose();
-    }
+    if (this.#covers(this.#cubes, pointIndex) || this.#covers(this.#asked, pointIndex)) return;
     const first = Math.max(0, pointIndex - NEAR_CELLS);
-    const count = Math.min(this.#count, pointIndex + NEAR_CELLS + 1) - first;
-    this.#cubes = new CubeRun(this.#points, this.#dims, first, count, this.#bounds, this.#style);
-    this.add(this.#cubes.visited, this.#cubes.ahead);
+    const window = { first, count: Math.min(this.#count, pointIndex + NEAR_CELLS + 1) - first };
+    const held = this.#held(window);
+    if (held) {
+      this.#setCubes(new CubeRun(held, this.#path.dims, first, this.#bounds, this.#style));
+      return;
+    }
+    this.#asked = window;
+    this.#path.pointsInRange(window.first, window.first + window.count).then(
+      (points) => {
+        // A newer window was asked for meanwhile, or the path is no longer drawn.
+        if (this.#asked !== window || this.#disposed) return;
+        this.#asked = undefined;
+        this.#setCubes(new CubeRun(points, this.#path.dims, window.first, this.#bounds, this.#style));
+        this.show(this.#pointIndex);
+        this.#onSettled();
+      },
+      () => {
+        // The trace went with its worker (a crash, which the page reports): the sample stays drawn.
+        if (this.#asked === window) this.#asked = undefined;
+      },
+    );
+  }
+
+  /** Draws `cubes` in place of the cubes drawn before. */
+  #setCubes(cubes: CubeRun): void {
+    if (this.#cubes) {
+      this.remove(this.#cubes.visited, this.#cubes.ahead);
+      this.#cubes.dispose();
+    }
+    this.#cubes = cubes;
+    this.add(cubes.visited, cubes.ahead);
   }
 
   /** Releases the GPU buffers of this path. */
   dispose(): void {
+    this.#disposed = true;
     this.#cubes?.dispose();
     this.#sampled?.visited.dispose();
     this.#sampled?.ahead.dispose();

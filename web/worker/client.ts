@@ -14,6 +14,7 @@ import type {
   LearnerCheck,
   LineSteps,
   PathSummary,
+  PointsSent,
   ProgramRecord,
   PulseWindow,
   ReplyMessage,
@@ -73,6 +74,7 @@ export interface Running<T> {
 export class TraceClient {
   readonly #createWorker: () => WorkerPort;
   readonly #onCrash: (message: string) => void;
+  readonly #pointsSent: PointsSent;
   #worker?: WorkerPort;
   /** Counts workers started, so a RemoteTrace can tell that its worker is gone. */
   #generation = 0;
@@ -80,7 +82,9 @@ export class TraceClient {
   #nextTraceId = 1;
   readonly #pending = new Map<number, Pending>();
 
-  constructor(createWorker: () => WorkerPort, onCrash: (message: string) => void) {
+  /** `pointsSent`: which of a path's points come with it (the rest are asked for by range). */
+  constructor(createWorker: () => WorkerPort, onCrash: (message: string) => void, pointsSent: PointsSent) {
+    this.#pointsSent = pointsSent;
     this.#createWorker = createWorker;
     this.#onCrash = onCrash;
   }
@@ -167,7 +171,7 @@ export class TraceClient {
   async trace(options: TraceOptions): Promise<MeasuredTrace> {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
-    const path = await this.request({ kind: 'trace', traceId, options });
+    const path = await this.request({ kind: 'trace', traceId, options, pointsSent: this.#pointsSent });
     return new MeasuredTrace(this, traceId, generation, path);
   }
 
@@ -175,7 +179,7 @@ export class TraceClient {
   runGcode(source: string, settings: GcodeSettings, onProgress: (progress: GcodeProgress) => void): Running<RemoteProgram> {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
-    const running = this.start({ kind: 'gcode', traceId, source, settings }, onProgress);
+    const running = this.start({ kind: 'gcode', traceId, source, settings, pointsSent: this.#pointsSent }, onProgress);
     return { result: running.result.then((run) => new RemoteProgram(this, traceId, generation, run)), cancel: running.cancel };
   }
 
@@ -205,8 +209,13 @@ export class TraceClient {
  */
 export interface RemoteTrace extends Readonly<TraceSummary> {}
 export class RemoteTrace {
-  /** All points, flat with stride dims: point k is at [k * dims, (k + 1) * dims). */
-  readonly points: Int32Array;
+  /**
+   * Point indices 0, pointsEvery, 2 · pointsEvery, ... flat with stride
+   * dims: every point of a short path (pointsEvery 1), every n-th of a long
+   * one (PointsSent), whose other points are asked for by range.
+   */
+  readonly sampledPoints: Int32Array;
+  readonly pointsEvery: number;
   /** The ideal path as the core draws it, flat with stride dims, grid units. */
   readonly idealPolyline: Float64Array;
   /** The box every point lies in (min and max per axis, grid units), as the core found it. */
@@ -221,14 +230,23 @@ export class RemoteTrace {
     this.traceId = traceId;
     this.#generation = generation;
     Object.assign(this, path.summary);
-    this.points = path.points;
+    this.sampledPoints = path.sampledPoints;
+    this.pointsEvery = path.pointsEvery;
     this.idealPolyline = path.idealPolyline;
     this.bounds = path.bounds;
   }
 
-  /** Point index k as its coordinates (a view into `points`). */
-  point(pointIndex: number): Int32Array {
-    return this.points.subarray(pointIndex * this.dims, (pointIndex + 1) * this.dims);
+  /** Point index k as its coordinates (a view into `sampledPoints`) when the page holds it, else undefined (ask pointsInRange). */
+  point(pointIndex: number): Int32Array | undefined {
+    if (pointIndex % this.pointsEvery !== 0) return undefined;
+    const row = pointIndex / this.pointsEvery;
+    return this.sampledPoints.subarray(row * this.dims, (row + 1) * this.dims);
+  }
+
+  /** Points fromPoint..toPoint, flat with stride dims: from those held when every point is, else asked of the worker. */
+  pointsInRange(fromPoint: number, toPoint: number): Promise<Int32Array> {
+    if (this.pointsEvery === 1) return Promise.resolve(this.sampledPoints.slice(fromPoint * this.dims, toPoint * this.dims));
+    return this.ask({ kind: 'points', traceId: this.traceId, fromPoint, toPoint });
   }
 
   /** False once the worker holding this trace has crashed: replayed data is then out of reach. */

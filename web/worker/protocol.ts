@@ -8,7 +8,9 @@
  * messages with that id before it. A `cancel` message stops the request it
  * names at its next slice. Bulk arrays cross as transferred buffers, not
  * copies:
- * - points: Int32Array, stride dims, one row per point index 0..=steps;
+ * - points: Int32Array, stride dims: a path's whole, or every n-th point of
+ *   a long one, which is all the page draws of it (PointsSent), the points
+ *   near the one it shows asked for by range ('points');
  * - idealPolyline: Float64Array, stride dims, grid units;
  * - bounds: the core's PointBounds of the points (min and max per axis);
  * - series: see ChartSeries; cells: Int32Array, stride dims;
@@ -25,8 +27,9 @@ import type { Catalogue, ChartSeries, Limit, Metrics, PointBounds, StepClocks, S
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
   | { kind: 'catalogue' }
-  | { kind: 'trace'; traceId: number; options: TraceOptions }
-  | { kind: 'gcode'; traceId: number; source: string; settings: GcodeSettings }
+  | { kind: 'trace'; traceId: number; options: TraceOptions; pointsSent: PointsSent }
+  | { kind: 'gcode'; traceId: number; source: string; settings: GcodeSettings; pointsSent: PointsSent }
+  | { kind: 'points'; traceId: number; fromPoint: number; toPoint: number }
   | { kind: 'stepDetail'; traceId: number; pointIndex: number }
   | { kind: 'series'; traceId: number; maxPoints: number }
   | { kind: 'difference'; traceIdA: number; traceIdB: number }
@@ -55,12 +58,33 @@ export type RequestKind = WorkerRequest['kind'];
 export type PathSummary = TraceSummary & { metrics: Metrics };
 
 /**
+ * Which of a path's points come with it. A path of fewer than `allBelow`
+ * points comes whole: the view draws every cell. A longer one comes as
+ * every n-th point, n = ceil(points / sampled), at most `sampled` of them:
+ * the view draws those as points, framed far out, and asks for the cells it
+ * draws as cubes (those near the point shown) by range. At 80 steps/mm the
+ * G-code bench's program has 5.5 million points, 66 MB the page would
+ * receive, each byte of it in fresh memory, to draw 20,000 of them.
+ */
+export interface PointsSent {
+  allBelow: number;
+  sampled: number;
+}
+
+/** Points apart of the points sent of a path of `points` points (1: all of them). */
+export function pointsEvery(points: number, sent: PointsSent): number {
+  return points < sent.allBelow ? 1 : Math.max(1, Math.ceil(points / sent.sampled));
+}
+
+/**
  * A finished trace as the page receives it: the summary (a trace's with its
  * metrics, by default) and the arrays every view needs at once.
  */
 export interface TracedPath<Summary extends TraceSummary = PathSummary> {
   summary: Summary;
-  points: Int32Array;
+  /** Point indices 0, pointsEvery, 2 · pointsEvery, ... (every point when pointsEvery is 1), flat with stride dims. */
+  sampledPoints: Int32Array;
+  pointsEvery: number;
   idealPolyline: Float64Array;
   /** The box every point lies in, as the core found it (the view frames the path with it). */
   bounds: PointBounds;
@@ -126,6 +150,8 @@ export interface ReplyValue {
   trace: TracedPath;
   gcode: RunProgram;
   stepDetail: StepDetail;
+  /** Points fromPoint..toPoint, flat with stride dims. */
+  points: Int32Array;
   series: ChartSeries;
   difference: TraceDifference;
   pulses: PulseWindow;

@@ -18,7 +18,8 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { Trace, TraceSummary } from '../core/index.js';
-import type { ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
+import { pointsEvery } from './protocol.js';
+import type { PointsSent, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
 const programs = new Map<number, GcodeProgram>();
@@ -43,19 +44,20 @@ interface Answer {
   transfer: Transferable[];
 }
 
-/** The arrays every view needs at once, freshly copied so they can be transferred. */
-function pathOf(t: Trace): TracedPath<TraceSummary> {
+/** The arrays every view needs at once, freshly copied so they can be transferred; of the points, those `sent` asks for. */
+function pathOf(t: Trace, sent: PointsSent): TracedPath<TraceSummary> {
   // pointsInRange, not the cached `points` getter: a transferred buffer is
   // detached here, and the cache would then hand out an empty array.
-  const points = t.pointsInRange(0, t.steps + 1);
+  const every = pointsEvery(t.steps + 1, sent);
+  const sampledPoints = t.pointsInRange(0, t.steps + 1, every);
   const idealPolyline = t.idealPolyline();
   // The summary's own fields, as the core declared them.
-  return { summary: { ...t }, points, idealPolyline, bounds: t.bounds };
+  return { summary: { ...t }, sampledPoints, pointsEvery: every, idealPolyline, bounds: t.bounds };
 }
 
 /** pathOf, with the metrics, which the page shows at once for a trace (its status line), asked of the core here. */
-function tracedPath(t: Trace): TracedPath {
-  const path = pathOf(t);
+function tracedPath(t: Trace, sent: PointsSent): TracedPath {
+  const path = pathOf(t, sent);
   return { ...path, summary: { ...path.summary, metrics: t.metrics } };
 }
 
@@ -66,8 +68,8 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
     case 'trace': {
       const t = await trace(request.options);
       traces.set(request.traceId, t);
-      const path = tracedPath(t);
-      return { value: path, transfer: [path.points.buffer, path.idealPolyline.buffer] };
+      const path = tracedPath(t, request.pointsSent);
+      return { value: path, transfer: [path.sampledPoints.buffer, path.idealPolyline.buffer] };
     }
     case 'gcode': {
       const controller = new AbortController();
@@ -79,12 +81,12 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         });
         traces.set(request.traceId, program.trace);
         programs.set(request.traceId, program);
-        const path = pathOf(program.trace);
+        const path = pathOf(program.trace, request.pointsSent);
         // The record's own fields, as the core declared them (the moves are asked for by range).
         const { trace: _trace, ...record } = program;
         return {
           value: { ...path, program: record },
-          transfer: [path.points.buffer, path.idealPolyline.buffer],
+          transfer: [path.sampledPoints.buffer, path.idealPolyline.buffer],
         };
       } finally {
         running.delete(id);
@@ -92,6 +94,10 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
     }
     case 'stepDetail':
       return { value: held(request.traceId).stepDetail(request.pointIndex), transfer: [] };
+    case 'points': {
+      const points = held(request.traceId).pointsInRange(request.fromPoint, request.toPoint);
+      return { value: points, transfer: [points.buffer] };
+    }
     case 'series': {
       const series = held(request.traceId).chartSeries(request.maxPoints);
       const arrays = [series.pointIndex, ...series.position, ...series.ideal, series.deviationMax, series.deviationMin];
