@@ -1634,7 +1634,9 @@ impl Trace {
     /// skipped when equal.
     pub fn ideal_polyline(&self) -> Vec<f64> {
         let dims = self.dims();
-        let mut out: Vec<f64> = Vec::new();
+        // A vertex a segment past the first, as a line that starts where the
+        // one before ended adds: an arc's others are added as they come.
+        let mut out: Vec<f64> = Vec::with_capacity((self.segments.len() + 1) * dims);
         for index in 0..self.segments.len() {
             let at = out.len();
             self.ideal_of(index).polyline_into(&mut out);
