@@ -101,6 +101,31 @@ describe('the page', () => {
     await p.close();
   });
 
+  it("plays with the inspector's point always the counter's, however late each point's detail arrives", async () => {
+    // Along x, point k is (k, 0, 0). The inspector writes the point at once
+    // and its detail (asked of the worker) follows: a detail of a point the
+    // playback has already left must not write that older point.
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=400,0,0');
+    const { page } = p;
+    await traced(page, 400);
+    await page.evaluate(() => {
+      const seen: string[] = [];
+      (window as unknown as { seenPoints: string[] }).seenPoints = seen;
+      const point = document.querySelector('[data-testid=inspector-point]')!;
+      const counter = document.querySelector('[data-testid=step-counter]')!;
+      new MutationObserver(() => seen.push(`${counter.textContent} shows ${point.textContent}`)).observe(point, { childList: true, characterData: true, subtree: true });
+    });
+    await page.getByTestId('speed').selectOption('256');
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('Space');
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 400 of 400' }).waitFor();
+    const seen = await page.evaluate(() => (window as unknown as { seenPoints: string[] }).seenPoints);
+    expect(seen.length).toBeGreaterThan(20);
+    expect(seen.filter((s) => !/^Step (\d+) of 400 shows \(\1, 0, 0\)$/.test(s))).toEqual([]);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('shows a dash, not a number, where a decision column does not apply', async () => {
     // Wang's type ② line (section 2.2): all three axes active, so no
     // discriminant, region or corner decides step 1 (the core's NO_VALUE

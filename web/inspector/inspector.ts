@@ -54,9 +54,14 @@ function breakableName(name: string): HTMLElement {
   return title;
 }
 
+/** The point's text while its coordinates are on their way from the worker (a long path's point the page does not hold). */
+const POINT_ON_ITS_WAY = '…';
+
 export class Inspector {
   readonly #e: InspectorElements;
   #trace: InspectedTrace | undefined;
+  /** The point index shown (showPoint): a detail of another point, arriving late, does not write its coordinates. */
+  #pointIndex = 0;
   /** The value cell of each column, by column name. */
   #cells = new Map<string, HTMLElement>();
 
@@ -100,16 +105,17 @@ export class Inspector {
       e.decisionHeading.textContent = 'Decision';
       return;
     }
+    this.#pointIndex = pointIndex;
     // A long path's point the page does not hold comes with its detail (showDetail).
     const point = trace.point(pointIndex);
-    e.point.textContent = point ? formatPoint(point) : '';
+    e.point.textContent = point ? formatPoint(point) : POINT_ON_ITS_WAY;
     e.decisionHeading.textContent = pointIndex === 0 ? 'Decision: none yet' : `Decision of step ${pointIndex}`;
   }
 
   /** Shows the core's detail of a point of the current trace. */
   showDetail(detail: StepDetail): void {
     const e = this.#e;
-    e.point.textContent = formatPoint(detail.point);
+    if (detail.pointIndex === this.#pointIndex) e.point.textContent = formatPoint(detail.point);
     e.deviation.textContent = detail.deviation === null ? NO_VALUE_TEXT : `${detail.deviation.toFixed(6)} grid units`;
     for (const cell of detail.decision) {
       const value = this.#cells.get(cell.name);

@@ -152,15 +152,20 @@ export class Orchestrator {
     const program = this.#shown.program;
     if (!program) return;
     this.#pickedLine = steps;
+    // The line picked before is no longer outlined while this one's cells are on their way.
+    this.#p.views.setHighlights([]);
     this.goTo(steps.steps > 0 ? steps.firstStep + steps.steps : steps.pointBefore);
     // The line's cells are asked of the worker, which holds a long program's points.
     let cells: Int32Array;
     try {
       cells = await program.pointsInRange(steps.firstStep + 1, steps.firstStep + steps.steps + 1);
     } catch (error) {
-      // A crash is reported as it happens (coreCrashed).
-      if (error instanceof CoreCrash) return;
-      throw error;
+      // A crash is reported as it happens (coreCrashed); anything else is a bug, said on the status line.
+      if (!(error instanceof CoreCrash)) {
+        console.error(error);
+        this.#p.status.bug(error);
+      }
+      return;
     }
     // Another line, or another program, was picked meanwhile.
     if (this.#shown.program !== program || this.#pickedLine !== steps) return;

@@ -250,9 +250,16 @@ export class VoxelPath extends THREE.Group {
     );
   }
 
-  /** Lighter drawing: cubes for the cells near `pointIndex`, rebuilt when it nears the window's edge. */
+  /**
+   * Lighter drawing: cubes for the cells near `pointIndex`, rebuilt when it
+   * nears the window's edge. Asked of the worker, one window at a time: its
+   * answer is drawn if it holds the current point and the cubes drawn do not
+   * reach far enough around it (a late answer never replaces better cubes),
+   * and asks again if the point has moved on meanwhile, so fast playback
+   * beside a busy worker never queues requests up.
+   */
   #nearWindow(pointIndex: number): void {
-    if (this.#covers(this.#cubes, pointIndex) || this.#covers(this.#asked, pointIndex)) return;
+    if (this.#covers(this.#cubes, pointIndex)) return;
     const first = Math.max(0, pointIndex - NEAR_CELLS);
     const window = { first, count: Math.min(this.#count, pointIndex + NEAR_CELLS + 1) - first };
     const held = this.#held(window);
@@ -260,19 +267,22 @@ export class VoxelPath extends THREE.Group {
       this.#setCubes(new CubeRun(held, this.#path.dims, first, this.#bounds, this.#style));
       return;
     }
+    if (this.#asked) return;
     this.#asked = window;
     this.#path.pointsInRange(window.first, window.first + window.count).then(
       (points) => {
-        // A newer window was asked for meanwhile, or the path is no longer drawn.
-        if (this.#asked !== window || this.#disposed) return;
         this.#asked = undefined;
-        this.#setCubes(new CubeRun(points, this.#path.dims, window.first, this.#bounds, this.#style));
-        this.show(this.#pointIndex);
+        if (this.#disposed) return;
+        const at = this.#pointIndex;
+        if (at >= window.first && at < window.first + window.count && !this.#covers(this.#cubes, at)) {
+          this.#setCubes(new CubeRun(points, this.#path.dims, window.first, this.#bounds, this.#style));
+        }
+        this.show(at);
         this.#onSettled();
       },
       () => {
         // The trace went with its worker (a crash, which the page reports): the sample stays drawn.
-        if (this.#asked === window) this.#asked = undefined;
+        this.#asked = undefined;
       },
     );
   }
