@@ -39,7 +39,7 @@ function setUp() {
       return worker;
     },
     (message) => crashes.push(message),
-    POINTS_SENT,
+    () => POINTS_SENT,
   );
   return { client, workers, crashes };
 }

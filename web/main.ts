@@ -24,7 +24,7 @@ import { ModeTabs } from './page/mode-tabs.js';
 import { Orchestrator } from './page/orchestrator.js';
 import { PathViews } from './page/path-views.js';
 import { Status } from './page/status.js';
-import { LIGHT_DRAWING_CELLS } from './scene/cells.js';
+import { lightDrawingCells } from './scene/cells.js';
 import { followControl } from './scene/follow.js';
 import { PALETTE } from './scene/palette.js';
 import { SceneView } from './scene/scene-view.js';
@@ -49,7 +49,7 @@ const client = new TraceClient(
   () => new Worker(new URL('./worker/trace-worker.ts', import.meta.url), { type: 'module' }),
   (message) => orchestrator?.coreCrashed(message),
   // The points the 3D view draws of a path: a short one's every cell, a long one's sample.
-  { allBelow: LIGHT_DRAWING_CELLS, sampled: SAMPLED_POINTS },
+  () => ({ allBelow: lightDrawingCells(), sampled: SAMPLED_POINTS }),
 );
 // Asked first, so the worker starts loading the core at once.
 const catalogueLoaded = client.catalogue();

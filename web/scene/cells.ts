@@ -14,8 +14,44 @@
  */
 import * as THREE from 'three';
 
-/** Cells from this many on are drawn as points rather than cubes (see README, "The page"). */
-export const LIGHT_DRAWING_CELLS = 100_000;
+/** Cells from this many on are drawn as points rather than cubes (see README, "The page"), where a GPU draws. */
+const LIGHT_DRAWING_CELLS = 100_000;
+
+/**
+ * The same where WebGL draws on the CPU. There a frame of the G-code
+ * bench's program at 1 step/mm, 71,493 cells as cubes, took 1.5 s (SwiftShader,
+ * the project's 2-core test machine), and the main thread waits for every
+ * frame, so each step froze the page; drawn as points with the cubes near
+ * the current cell, 0.19 s.
+ */
+const SOFTWARE_LIGHT_DRAWING_CELLS = 10_000;
+
+/** Cells from this many on are drawn as points on this page's WebGL. */
+export function lightDrawingCells(): number {
+  return softwareRenderer() ? SOFTWARE_LIGHT_DRAWING_CELLS : LIGHT_DRAWING_CELLS;
+}
+
+/** Whether WebGL draws on the CPU, found once per page by softwareRenderer(). */
+let software: boolean | undefined;
+
+/**
+ * True when WebGL draws on the CPU (SwiftShader, llvmpipe), as in headless
+ * Chromium or on a machine without a usable GPU. There multisampling roughly
+ * doubles the time of every frame (a long G-code program's frame: about
+ * 220 ms with it, 120 ms without, on the project's 2-core test machine),
+ * and the main thread waits for each frame, so the view is drawn without
+ * antialiasing: jagged edges, but a page that answers in half the time.
+ */
+export function softwareRenderer(): boolean {
+  if (software === undefined) {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const info = gl?.getExtension('WEBGL_debug_renderer_info');
+    const name = gl ? String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)) : '';
+    gl?.getExtension('WEBGL_lose_context')?.loseContext();
+    software = /swiftshader|llvmpipe|software/i.test(name);
+  }
+  return software;
+}
 
 /**
  * A path this many grid units wide (on its widest axis) or more is drawn as

@@ -22,7 +22,7 @@ import type { PointBounds } from '../core/types.js';
 import { formatPoint } from '../format.js';
 import type { CameraState, Projection } from '../state/app-state.js';
 import { roundCamera } from '../state/query.js';
-import { Cells, LIGHT_DRAWING_SPAN, cellUniforms } from './cells.js';
+import { Cells, LIGHT_DRAWING_SPAN, cellUniforms, softwareRenderer } from './cells.js';
 import { EndpointHandles, type Handle } from './endpoint-handles.js';
 import { GridAxes } from './grid-axes.js';
 import { FAT_LINE_POINTS, IdealPath } from './ideal-path.js';
@@ -72,28 +72,6 @@ const HIGHLIGHT_FILL_OPACITY = 0.1;
 const HIGHLIGHT_POINT_OPACITY = 0.9;
 /** Edge of the second path's cells in an overlaid comparison: smaller, so the first shows around it (they are drawn over it). */
 const SECOND_PATH_SIZE = 0.5;
-
-/** Whether WebGL draws on the CPU, found once per page by softwareRenderer(). */
-let software: boolean | undefined;
-
-/**
- * True when WebGL draws on the CPU (SwiftShader, llvmpipe), as in headless
- * Chromium or on a machine without a usable GPU. There multisampling roughly
- * doubles the time of every frame (a long G-code program's frame: about
- * 220 ms with it, 120 ms without, on the project's 2-core test machine),
- * and the main thread waits for each frame, so the view is drawn without
- * antialiasing: jagged edges, but a page that answers in half the time.
- */
-function softwareRenderer(): boolean {
-  if (software === undefined) {
-    const gl = document.createElement('canvas').getContext('webgl2');
-    const info = gl?.getExtension('WEBGL_debug_renderer_info');
-    const name = gl ? String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)) : '';
-    gl?.getExtension('WEBGL_lose_context')?.loseContext();
-    software = /swiftshader|llvmpipe|software/i.test(name);
-  }
-  return software;
-}
 
 /** What one trace gives the view: the summary parts it draws, and its points as the page holds them. */
 export interface DrawnTrace extends PathPoints {

@@ -6,7 +6,7 @@
  *   going while the solid cells show what the algorithm has decided so far;
  * - the current cell k, larger, with its edges outlined.
  *
- * Full drawing (below LIGHT_DRAWING_CELLS cells and LIGHT_DRAWING_SPAN grid
+ * Full drawing (below lightDrawingCells() cells and LIGHT_DRAWING_SPAN grid
  * units): every cell is a cube, drawn straight from the trace's points;
  * `ahead` holds the points in reverse order, as cubes are drawn from the
  * start of their buffer.
@@ -22,7 +22,7 @@
  * is drawn once they arrive.
  */
 import * as THREE from 'three';
-import { Cells, LIGHT_DRAWING_CELLS, LIGHT_DRAWING_SPAN } from './cells.js';
+import { Cells, LIGHT_DRAWING_SPAN, lightDrawingCells } from './cells.js';
 import { PALETTE } from './palette.js';
 
 /** Drawn edge of a path's cell, grid units: a little under 1 so neighbouring cells stay apart. */
@@ -165,7 +165,7 @@ export class VoxelPath extends THREE.Group {
     this.#style = style;
     this.#onSettled = onSettled;
     const size = bounds.getSize(new THREE.Vector3());
-    this.light = this.#count >= LIGHT_DRAWING_CELLS || Math.max(size.x, size.y, size.z) >= LIGHT_DRAWING_SPAN;
+    this.light = this.#count >= lightDrawingCells() || Math.max(size.x, size.y, size.z) >= LIGHT_DRAWING_SPAN;
     if (this.light) {
       // A path held whole is sampled here; one sent as a sample is drawn as sent.
       const every = pointsEvery > 1 ? pointsEvery : Math.max(1, Math.ceil(this.#count / SAMPLED_POINTS));

@@ -74,7 +74,7 @@ export interface Running<T> {
 export class TraceClient {
   readonly #createWorker: () => WorkerPort;
   readonly #onCrash: (message: string) => void;
-  readonly #pointsSent: PointsSent;
+  readonly #pointsSent: () => PointsSent;
   #worker?: WorkerPort;
   /** Counts workers started, so a RemoteTrace can tell that its worker is gone. */
   #generation = 0;
@@ -82,8 +82,8 @@ export class TraceClient {
   #nextTraceId = 1;
   readonly #pending = new Map<number, Pending>();
 
-  /** `pointsSent`: which of a path's points come with it (the rest are asked for by range). */
-  constructor(createWorker: () => WorkerPort, onCrash: (message: string) => void, pointsSent: PointsSent) {
+  /** `pointsSent`: which of a path's points come with it (the rest are asked for by range), asked when a path is: it depends on the page's WebGL, found once the view is made. */
+  constructor(createWorker: () => WorkerPort, onCrash: (message: string) => void, pointsSent: () => PointsSent) {
     this.#pointsSent = pointsSent;
     this.#createWorker = createWorker;
     this.#onCrash = onCrash;
@@ -171,7 +171,7 @@ export class TraceClient {
   async trace(options: TraceOptions): Promise<MeasuredTrace> {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
-    const path = await this.request({ kind: 'trace', traceId, options, pointsSent: this.#pointsSent });
+    const path = await this.request({ kind: 'trace', traceId, options, pointsSent: this.#pointsSent() });
     return new MeasuredTrace(this, traceId, generation, path);
   }
 
@@ -179,7 +179,7 @@ export class TraceClient {
   runGcode(source: string, settings: GcodeSettings, onProgress: (progress: GcodeProgress) => void): Running<RemoteProgram> {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
-    const running = this.start({ kind: 'gcode', traceId, source, settings, pointsSent: this.#pointsSent }, onProgress);
+    const running = this.start({ kind: 'gcode', traceId, source, settings, pointsSent: this.#pointsSent() }, onProgress);
     return { result: running.result.then((run) => new RemoteProgram(this, traceId, generation, run)), cancel: running.cancel };
   }
 
