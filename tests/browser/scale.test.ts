@@ -220,8 +220,21 @@ describe('a 100,000-line G-code program', () => {
     // The view still shows the square.
     expect(await counter(page)).toMatch(/of 6400$/);
 
+    // The progress shown as the program runs again: at once, then at most four times a second (each update repaints the page).
+    await page.evaluate(() => {
+      const bar = document.querySelector<HTMLProgressElement>('[data-testid=gcode-progress]')!;
+      const shown = { updates: 0, started: performance.now(), ended: 0 };
+      (window as unknown as { progressShown: typeof shown }).progressShown = shown;
+      new MutationObserver(() => {
+        if (!bar.hidden) shown.updates += 1;
+        else shown.ended ||= performance.now();
+      }).observe(bar, { attributeFilter: ['aria-valuetext', 'hidden'] });
+    });
     await page.getByTestId('gcode-run').click();
     await page.getByTestId('trace-status').filter({ hasText: `${program.moves} moves, ${program.steps} steps` }).waitFor({ timeout: 120_000 });
+    const shown = await page.evaluate(() => (window as unknown as { progressShown: { updates: number; started: number; ended: number } }).progressShown);
+    expect(shown.updates).toBeGreaterThan(0);
+    expect(shown.updates).toBeLessThanOrEqual(1 + Math.ceil((shown.ended - shown.started) / 250));
     await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${program.steps}$`) }).waitFor();
     // Its time charts are in the measure: the whole program's speed and step rates, in buckets of time.
     await page.getByTestId('motion').locator('.u-title').filter({ hasText: /buckets of/ }).first().waitFor();
