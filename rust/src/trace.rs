@@ -1635,8 +1635,9 @@ impl Trace {
     pub fn ideal_polyline(&self) -> Vec<f64> {
         let dims = self.dims();
         // A vertex a segment past the first, as a line that starts where the
-        // one before ended adds: an arc's others are added as they come.
-        let mut out: Vec<f64> = Vec::with_capacity((self.segments.len() + 1) * dims);
+        // one before ended adds, and one more for the last line's joint,
+        // written before it is removed: an arc's others are added as they come.
+        let mut out: Vec<f64> = Vec::with_capacity((self.segments.len() + 2) * dims);
         for index in 0..self.segments.len() {
             let at = out.len();
             self.ideal_of(index).polyline_into(&mut out);

@@ -45,7 +45,8 @@ import { mainTrace, type Shown } from './shown.js';
 import type { Status } from './status.js';
 
 /**
- * A G-code run's progress is shown at once and then at most this often, ms.
+ * A G-code run's progress is shown at once, then at most this often, ms,
+ * and at its end.
  * The worker reports it after every slice of lines (about 20 ms), and each
  * update repaints the page: where the compositor draws on the CPU, that
  * took the run's time in the worker from 50 to 55 ms to 58 to 71 ms at
@@ -253,7 +254,8 @@ export class Orchestrator {
         let shownAt = -Infinity;
         const started = p.client.runGcode(state.gcode, state.machine, (progress) => {
           const now = performance.now();
-          if (run !== this.#latestRun || now - shownAt < PROGRESS_EVERY_MS) return;
+          // The last report is shown too, so the bar does not end at its first.
+          if (run !== this.#latestRun || (now - shownAt < PROGRESS_EVERY_MS && !progress.done)) return;
           shownAt = now;
           p.gcodePanel.setProgress(progress);
           p.status.running(progress);
