@@ -134,10 +134,24 @@ describe('G-code mode: time', () => {
     const p = await openPage('?mode=gcode&stepsPerMm=80');
     const { page } = p;
     await loaded(page, 6400);
+    // The status line still names the program before until the sample, once
+    // fetched, is run: its text is read once it has changed since the pick.
+    await page.evaluate(() => {
+      const line = document.querySelector('[data-testid=trace-status]')!;
+      new MutationObserver(() => ((window as unknown as { statusChanged: boolean }).statusChanged = true)).observe(line, { childList: true, characterData: true, subtree: true });
+    });
     for (const { file } of samples) {
+      const text = readFileSync(new URL(`../../public/samples/${file}`, import.meta.url), 'utf8');
+      // A sample that is the program shown already (the first, the default square) is not run again.
+      const runs = (await page.getByTestId('gcode-text').inputValue()) !== text;
+      await page.evaluate(() => ((window as unknown as { statusChanged: boolean }).statusChanged = false));
       await page.getByTestId('sample').selectOption(file);
-      const status = page.getByTestId('trace-status').filter({ hasText: /moves, \d+ steps/ });
-      await status.waitFor();
+      await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toBe(text);
+      await page.waitForFunction((runs) => {
+        const status = document.querySelector('[data-testid=trace-status]')!.textContent ?? '';
+        return (!runs || (window as unknown as { statusChanged: boolean }).statusChanged) && /moves, \d+ steps/.test(status);
+      }, runs);
+      const status = page.getByTestId('trace-status');
       const steps = Number(/moves, (\d+) steps/.exec(await status.innerText())![1]);
       expect(steps, file).toBeGreaterThan(0);
       await loaded(page, steps);
