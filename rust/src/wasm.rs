@@ -301,13 +301,15 @@ impl TraceHandle {
         // The chosen points of each chunk, gathered to cross in one copy.
         let mut chosen = Vec::with_capacity(buffer.len());
         self.0.points_by_chunk(from, to, &mut buffer, |k, chunk| {
-            // The chunk's first chosen point: the first index from k on that is `from` plus a multiple of `every`.
-            let first = ((k - from).div_ceil(every) * every + from - k) as usize;
+            // The chunk's first chosen point, the n-th of all chosen: the
+            // first index from k on that is `from` plus a multiple of `every`.
+            let n = (k - from).div_ceil(every);
+            let first = (from + n * every - k) as usize;
             chosen.clear();
             for row in chunk.chunks_exact(dims).skip(first).step_by(every as usize) {
                 chosen.extend_from_slice(row);
             }
-            let at = ((k - from).div_ceil(every) as usize * dims) as u32;
+            let at = (n as usize * dims) as u32;
             out.subarray(at, at + chosen.len() as u32)
                 .copy_from(&chosen);
         });

@@ -67,6 +67,8 @@ export interface PathPoints {
   /** Point indices 0, pointsEvery, 2 · pointsEvery, ..., flat with stride dims (every point when pointsEvery is 1). */
   readonly sampledPoints: Int32Array;
   readonly pointsEvery: number;
+  /** Point index k's coordinates when they are among sampledPoints, else undefined. */
+  point(pointIndex: number): ArrayLike<number> | undefined;
   /** Points fromPoint..toPoint, flat with stride dims. */
   pointsInRange(fromPoint: number, toPoint: number): Promise<Int32Array>;
 }
@@ -78,6 +80,7 @@ export function heldPoints(points: Int32Array, dims: number): PathPoints {
     steps: points.length / dims - 1,
     sampledPoints: points,
     pointsEvery: 1,
+    point: (pointIndex) => points.subarray(pointIndex * dims, (pointIndex + 1) * dims),
     pointsInRange: (fromPoint, toPoint) => Promise.resolve(points.slice(fromPoint * dims, toPoint * dims)),
   };
 }
@@ -220,18 +223,10 @@ export class VoxelPath extends THREE.Group {
       this.#nearWindow(pointIndex);
     }
     this.#cubes?.show(pointIndex);
-    const p = this.#cubes?.point(pointIndex) ?? this.#sampledPoint(pointIndex);
+    const p = this.#cubes?.point(pointIndex) ?? this.#path.point(pointIndex);
     // A point neither drawn as a cube nor sampled is on its way (#nearWindow): the current cell shows when it arrives.
     this.#current.visible = p !== undefined;
     if (p) this.#current.position.set(p[0]!, p[1]!, this.#path.dims > 2 ? p[2]! : 0);
-  }
-
-  /** Point index k from the points sent with the path, when it is one of them. */
-  #sampledPoint(pointIndex: number): Int32Array | undefined {
-    const { sampledPoints, pointsEvery, dims } = this.#path;
-    if (pointIndex % pointsEvery !== 0) return undefined;
-    const row = pointIndex / pointsEvery;
-    return sampledPoints.subarray(row * dims, (row + 1) * dims);
   }
 
   /** The points of `window` when the page holds every point of the path, else undefined (they are asked for). */
