@@ -13,6 +13,7 @@ import * as THREE from 'three';
 import { Line2 } from 'three/examples/jsm/lines/Line2.js';
 import { LineGeometry } from 'three/examples/jsm/lines/LineGeometry.js';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
+import type { IdealLine } from '../ideal-line.js';
 import { PALETTE } from './palette.js';
 
 /** Line width, CSS pixels. */
@@ -24,10 +25,11 @@ export class IdealPath extends THREE.Group {
   readonly #geometry: THREE.BufferGeometry;
   readonly #materials: THREE.Material[];
 
-  /** `polyline`: flat, stride `dims`, grid units (Trace.idealPolyline(), or a path's cell centers), drawn in `colour`. */
-  constructor(polyline: Float64Array, dims: number, colour: string = PALETTE.ideal) {
+  /** `ideal` (idealLineOf a Trace.idealPolyline(), or of a path's cell centers), drawn in `colour`. */
+  constructor(ideal: IdealLine, colour: string = PALETTE.ideal) {
     super();
-    const count = polyline.length / dims;
+    const { xyz } = ideal;
+    const count = xyz.length / 3;
     // A program that made no move (empty, or stopped at its first line) has
     // no ideal path; a line needs two points (and LineGeometry throws on none).
     if (count < 2) {
@@ -35,20 +37,12 @@ export class IdealPath extends THREE.Group {
       this.#materials = [];
       return;
     }
-    const xyz = new Float32Array(count * 3);
-    const axes = Math.min(dims, 3);
-    const plain = count > FAT_LINE_POINTS;
-    // A long line's box, found as its vertices are copied: three.js would
-    // otherwise make two more passes over them to cull it in the first frame
-    // (13 ms for a 100,000-line program's 250,000 vertices). A wide line's
-    // geometry finds its own.
-    const box = new THREE.Box3();
-    const vertex = new THREE.Vector3();
-    for (let k = 0; k < count; k++) {
-      for (let a = 0; a < axes; a++) xyz[k * 3 + a] = polyline[k * dims + a]!;
-      if (plain) box.expandByPoint(vertex.fromArray(xyz, k * 3));
-    }
-    if (plain) {
+    if (count > FAT_LINE_POINTS) {
+      // The line's box as it came: three.js would otherwise make two more
+      // passes over the vertices to cull it in the first frame (13 ms for a
+      // 100,000-line program's 250,000 vertices). A wide line's geometry
+      // finds its own.
+      const box = new THREE.Box3(new THREE.Vector3(...ideal.min), new THREE.Vector3(...ideal.max));
       this.#geometry = new THREE.BufferGeometry();
       this.#geometry.setAttribute('position', new THREE.BufferAttribute(xyz, 3));
       this.#geometry.boundingBox = box;

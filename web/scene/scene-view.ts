@@ -20,6 +20,7 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import type { PointBounds } from '../core/types.js';
 import { formatPoint } from '../format.js';
+import { type IdealLine, idealLineOf } from '../ideal-line.js';
 import type { CameraState, Projection } from '../state/app-state.js';
 import { roundCamera } from '../state/query.js';
 import { Cells, LIGHT_DRAWING_SPAN, cellUniforms, softwareRenderer } from './cells.js';
@@ -77,7 +78,8 @@ const SECOND_PATH_SIZE = 0.5;
 export interface DrawnTrace extends PathPoints {
   start: number[];
   end: number[];
-  idealPolyline: Float64Array;
+  /** The core's ideal polyline as the view draws it. */
+  idealLine: IdealLine;
   /** The box every point lies in, as the core found it. */
   bounds: PointBounds;
   /** Per axis, when the grid is a machine's (a G-code program): its axes are labelled in mm. */
@@ -285,12 +287,12 @@ export class SceneView {
     // cell, both kinds of ideal line (fat and plain), the frame and a highlight.
     const short = new Int32Array([0, 0, 0, 1, 0, 0]);
     const wide = new Int32Array([0, 0, 0, LIGHT_DRAWING_SPAN, 0, 0]);
-    const longLine = new Float64Array((FAT_LINE_POINTS + 1) * 3);
+    const longLine = idealLineOf(new Float64Array((FAT_LINE_POINTS + 1) * 3), 3);
     this.#warm.add(
       new VoxelPath(heldPoints(short, 3), box),
       new VoxelPath(heldPoints(wide, 3), box),
-      new IdealPath(new Float64Array([0, 0, 0, 1, 0, 0]), 3),
-      new IdealPath(longLine, 3),
+      new IdealPath(idealLineOf(new Float64Array([0, 0, 0, 1, 0, 0]), 3)),
+      new IdealPath(longLine),
       new GridAxes(new THREE.Vector3(0, 0, 0), new THREE.Vector3(1, 1, 1), 3),
       new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: HIGHLIGHT_FILL_OPACITY, outline: true }, false, box),
       new Cells(short, 3, { colour: PALETTE.onlyFirst, cellSize: HIGHLIGHT_SIZE, opacity: HIGHLIGHT_POINT_OPACITY }, true, box),
@@ -353,7 +355,7 @@ export class SceneView {
     const bounds = new THREE.Box3(min.clone().subScalar(0.5), max.clone().addScalar(0.5));
     const drawn: Drawn = {
       voxels: new VoxelPath(trace, bounds, { visited: this.#visitedColour }, () => this.#settled()),
-      ideal: new IdealPath(trace.idealPolyline, trace.dims),
+      ideal: new IdealPath(trace.idealLine),
       axes: new GridAxes(min, max, trace.dims === 2 ? 2 : 3, trace.stepsPerMm),
       bounds,
       planeNormal,
@@ -503,7 +505,7 @@ export class SceneView {
     }
     if (trace && throughCenters) {
       // Only a path held whole (a learner's) is drawn through its centers.
-      this.#secondLine = new IdealPath(Float64Array.from(trace.sampledPoints), trace.dims, colour);
+      this.#secondLine = new IdealPath(idealLineOf(trace.sampledPoints, trace.dims), colour);
       this.#scene.add(this.#secondLine);
     }
     if (trace) {

@@ -9,6 +9,7 @@
  */
 import type { GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { ChartSeries, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { IdealLine } from '../ideal-line.js';
 import type {
   InputError,
   LearnerCheck,
@@ -216,8 +217,8 @@ export class RemoteTrace {
    */
   readonly sampledPoints: Int32Array;
   readonly pointsEvery: number;
-  /** The ideal path as the core draws it, flat with stride dims, grid units. */
-  readonly idealPolyline: Float64Array;
+  /** The ideal path as the core draws it, in the form the scene takes. */
+  readonly idealLine: IdealLine;
   /** The box every point lies in (min and max per axis, grid units), as the core found it. */
   readonly bounds: PointBounds;
   readonly #client: TraceClient;
@@ -232,7 +233,7 @@ export class RemoteTrace {
     Object.assign(this, path.summary);
     this.sampledPoints = path.sampledPoints;
     this.pointsEvery = path.pointsEvery;
-    this.idealPolyline = path.idealPolyline;
+    this.idealLine = path.idealLine;
     this.bounds = path.bounds;
   }
 

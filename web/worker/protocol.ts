@@ -11,7 +11,8 @@
  * - points: Int32Array, stride dims: a path's whole, or every n-th point of
  *   a long one, which is all the page draws of it (PointsSent), the points
  *   near the one it shows asked for by range ('points');
- * - idealPolyline: Float64Array, stride dims, grid units;
+ * - idealLine: the core's ideal polyline as the scene draws it (IdealLine:
+ *   x, y, z as 32-bit floats, and its box), made in the worker;
  * - bounds: the core's PointBounds of the points (min and max per axis);
  * - series: see ChartSeries; cells: Int32Array, stride dims;
  * - step instants: Float64Array, seconds, one per step index of the range;
@@ -22,6 +23,7 @@
  * StepDetail.
  */
 import type { Check, FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { IdealLine } from '../ideal-line.js';
 import type { Catalogue, ChartSeries, Limit, Metrics, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
@@ -85,7 +87,7 @@ export interface TracedPath<Summary extends TraceSummary = PathSummary> {
   /** Point indices 0, pointsEvery, 2 · pointsEvery, ... (every point when pointsEvery is 1), flat with stride dims. */
   sampledPoints: Int32Array;
   pointsEvery: number;
-  idealPolyline: Float64Array;
+  idealLine: IdealLine;
   /** The box every point lies in, as the core found it (the view frames the path with it). */
   bounds: PointBounds;
 }

@@ -18,6 +18,7 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { Trace, TraceSummary } from '../core/index.js';
+import { idealLineOf } from '../ideal-line.js';
 import { pointsEvery } from './protocol.js';
 import type { PointsSent, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
@@ -50,9 +51,9 @@ function pathOf(t: Trace, sent: PointsSent): TracedPath<TraceSummary> {
   // detached here, and the cache would then hand out an empty array.
   const every = pointsEvery(t.steps + 1, sent);
   const sampledPoints = t.pointsInRange(0, t.steps + 1, every);
-  const idealPolyline = t.idealPolyline();
+  const idealLine = idealLineOf(t.idealPolyline(), t.dims);
   // The summary's own fields, as the core declared them.
-  return { summary: { ...t }, sampledPoints, pointsEvery: every, idealPolyline, bounds: t.bounds };
+  return { summary: { ...t }, sampledPoints, pointsEvery: every, idealLine, bounds: t.bounds };
 }
 
 /** pathOf, with the metrics, which the page shows at once for a trace (its status line), asked of the core here. */
@@ -69,7 +70,7 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       const t = await trace(request.options);
       traces.set(request.traceId, t);
       const path = tracedPath(t, request.pointsSent);
-      return { value: path, transfer: [path.sampledPoints.buffer, path.idealPolyline.buffer] };
+      return { value: path, transfer: [path.sampledPoints.buffer, path.idealLine.xyz.buffer] };
     }
     case 'gcode': {
       const controller = new AbortController();
@@ -86,7 +87,7 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         const { trace: _trace, ...record } = program;
         return {
           value: { ...path, program: record },
-          transfer: [path.sampledPoints.buffer, path.idealPolyline.buffer],
+          transfer: [path.sampledPoints.buffer, path.idealLine.xyz.buffer],
         };
       } finally {
         running.delete(id);
