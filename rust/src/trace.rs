@@ -1630,21 +1630,16 @@ impl Trace {
     }
 
     /// The ideal path of all segments joined, for drawing (stride dims).
-    /// A segment's first vertex repeats the previous segment's last, so it is
-    /// skipped when equal.
+    /// A segment's first vertex is left out where it repeats the previous
+    /// segment's last ([`IdealPath::polyline_into`]).
     pub fn ideal_polyline(&self) -> Vec<f64> {
         let dims = self.dims();
         // A vertex a segment past the first, as a line that starts where the
-        // one before ended adds, and one more for the last line's joint,
-        // written before it is removed: an arc's others are added as they come.
-        let mut out: Vec<f64> = Vec::with_capacity((self.segments.len() + 2) * dims);
+        // one before ended adds, and one for the first segment's start: an
+        // arc's others are reserved as they come.
+        let mut out: Vec<f64> = Vec::with_capacity((self.segments.len() + 1) * dims);
         for index in 0..self.segments.len() {
-            let at = out.len();
             self.ideal_of(index).polyline_into(&mut out);
-            if at >= dims && out.len() >= at + dims && out[at - dims..at] == out[at..at + dims] {
-                out.copy_within(at + dims.., at);
-                out.truncate(out.len() - dims);
-            }
         }
         out
     }

@@ -1659,6 +1659,32 @@ mod tests {
             prop_assert_eq!(seen(&fast), seen(&slow));
         }
 
+        /// A program's ideal polyline is its segments' own, one after the
+        /// other, each one's first vertex left out only where it repeats
+        /// the vertex before (a line from where the last move ended, a
+        /// chord of an arc): lines, arcs in chords or by the circle, and
+        /// helices.
+        #[test]
+        fn the_ideal_polyline_joins_the_segments_own(
+            lines in prop::collection::vec(program_line(), 1..12),
+            arc in prop::sample::select(ARC_ALGORITHMS),
+            steps_per_mm in prop::sample::select(vec![1.0, 10.0, 80.0]),
+        ) {
+            let settings = format!(r#"{{"stepsPerMm": {steps_per_mm}, "arcAlgorithm": "{arc}"}}"#);
+            let p = run_with(&lines.join("\n"), &settings, false);
+            let t = &p.trace;
+            let dims = t.dims();
+            let mut joined: Vec<f64> = Vec::new();
+            for segment in t.segments() {
+                let mut own = Vec::new();
+                segment.ideal.polyline_into(&mut own);
+                let first = own.len().min(dims);
+                let repeats = joined.len() >= dims && joined[joined.len() - dims..] == own[..first];
+                joined.extend_from_slice(&own[if repeats { first } else { 0 }..]);
+            }
+            prop_assert_eq!(t.ideal_polyline(), joined);
+        }
+
         /// The move of a segment, looked up in any order (so the move found
         /// last is sometimes the right one, sometimes the one before, and
         /// sometimes far off), is the one a search of the records finds:

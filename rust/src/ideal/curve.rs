@@ -130,7 +130,9 @@ impl ArcPath {
     }
 
     /// Vertices for drawing, appended to `out`: `height(t)` gives the
-    /// height at fraction t.
+    /// height at fraction t. The first is left out where `out` already ends
+    /// on it (where the path before ended): leaving it in and taking it out
+    /// again moved every vertex after it.
     ///
     /// Each vertex's angle is the one before's turned by the same step, a
     /// complex multiplication, rather than a sine and a cosine of its own:
@@ -156,11 +158,15 @@ impl ArcPath {
                     cos * step_cos - sin * step_sin,
                 )
             };
-            out.extend_from_slice(&self.point_of(sin, cos, r, height(t)));
+            let vertex = self.point_of(sin, cos, r, height(t));
+            if i > 0 || !out.ends_with(&vertex) {
+                out.extend_from_slice(&vertex);
+            }
         }
     }
 
-    /// Vertices for drawing (stride 3), appended to `out`.
+    /// Vertices for drawing (stride 3), appended to `out`, the first left
+    /// out where `out` already ends on it.
     pub fn polyline_into(&self, out: &mut Vec<f64>) {
         self.polyline_with(out, |_| 0.0)
     }
@@ -356,7 +362,8 @@ impl HelixPath {
         phi
     }
 
-    /// Vertices for drawing (stride 3), appended to `out`.
+    /// Vertices for drawing (stride 3), appended to `out`, the first left
+    /// out where `out` already ends on it.
     pub fn polyline_into(&self, out: &mut Vec<f64>) {
         self.arc
             .polyline_with(out, |t| self.start_height + self.rise * t)

@@ -60,11 +60,17 @@ impl IdealPath {
     }
 
     /// Points along the ideal path for drawing, flat with stride `dims`,
-    /// appended to `out` (a whole path's polyline is one array).
+    /// appended to `out` (a whole path's polyline is one array), the first
+    /// left out where `out` already ends on it (where the path before ended).
     pub fn polyline_into(&self, out: &mut Vec<f64>) {
         match self {
             IdealPath::Line { from, to } => {
-                out.extend(from.coords().iter().chain(to.coords()).map(|&c| c as f64))
+                let from_f64 = from.coords().iter().map(|&c| c as f64);
+                let last = &out[out.len().saturating_sub(from.dims())..];
+                if !from_f64.clone().eq(last.iter().copied()) {
+                    out.extend(from_f64);
+                }
+                out.extend(to.coords().iter().map(|&c| c as f64));
             }
             IdealPath::Arc(arc) => arc.polyline_into(out),
             IdealPath::Helix(helix) => helix.polyline_into(out),
