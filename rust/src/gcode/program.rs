@@ -577,6 +577,12 @@ impl MoveRecords {
         }
     }
 
+    /// Where segment `segment` starts, as [`Self::made_segment`] makes it:
+    /// its move's start.
+    fn made_start(&self, segment: usize) -> Point {
+        grid_point(self.start_steps(self.move_of_segment(segment)))
+    }
+
     /// The ideal path of segment `segment`, as [`Self::made_segment`] makes
     /// it, without its stepper.
     fn made_ideal(&self, segment: usize) -> IdealPath {
@@ -1481,7 +1487,8 @@ impl Runner {
         moves.records.shrink_to_fit();
         moves.arcs.shrink_to_fit();
         let records = Rc::new(moves);
-        let (notes, segments, ideals) = (
+        let (notes, segments, ideals, starts) = (
+            Rc::clone(&records),
             Rc::clone(&records),
             Rc::clone(&records),
             Rc::clone(&records),
@@ -1496,6 +1503,7 @@ impl Runner {
             .with_segment_maker(
                 Rc::new(move |segment| segments.made_segment(segment)),
                 Rc::new(move |segment| ideals.made_ideal(segment)),
+                Rc::new(move |segment| starts.made_start(segment)),
             );
         let info = ProgramInfo {
             lines: self.lines,
@@ -1683,6 +1691,30 @@ mod tests {
                 joined.extend_from_slice(&own[if repeats { first } else { 0 }..]);
             }
             prop_assert_eq!(t.ideal_polyline(), joined);
+        }
+
+        /// A program's bounds are its points' extremes on each axis,
+        /// however its stretches end: at a stored position, at a move's
+        /// start read from its record (a stretch of START_READ_STEPS or
+        /// more), or summed (a shorter one), and where a move turns back
+        /// (an arc by the circle, walked).
+        #[test]
+        fn a_program_s_bounds_are_its_points_extremes(
+            lines in prop::collection::vec(program_line(), 1..12),
+            arc in prop::sample::select(ARC_ALGORITHMS),
+            steps_per_mm in prop::sample::select(vec![1.0, 10.0, 80.0, 400.0]),
+        ) {
+            let settings = format!(r#"{{"stepsPerMm": {steps_per_mm}, "arcAlgorithm": "{arc}"}}"#);
+            let p = run_with(&lines.join("\n"), &settings, false);
+            let t = &p.trace;
+            let dims = t.dims();
+            let points = t.points_flat(0, t.steps() + 1);
+            let axis = |a: usize| points.iter().skip(a).step_by(dims).copied();
+            let bounds = t.bounds();
+            for a in 0..dims {
+                prop_assert_eq!(bounds.min[a], axis(a).min().unwrap(), "axis {} min", a);
+                prop_assert_eq!(bounds.max[a], axis(a).max().unwrap(), "axis {} max", a);
+            }
         }
 
         /// The move of a segment, looked up in any order (so the move found
