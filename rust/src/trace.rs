@@ -471,6 +471,14 @@ pub type StartMaker = Rc<dyn Fn(usize) -> Point>;
 /// summing a few dozen steps does.
 const START_READ_STEPS: u64 = 32;
 
+/// What a trace asks its owner for about a segment made when read
+/// ([`Trace::with_segment_maker`]).
+struct SegmentMakers {
+    segment: SegmentMaker,
+    ideal: IdealMaker,
+    start: StartMaker,
+}
+
 /// Sentinel of [`Segments::kept_index`]: the segment is made when read.
 const MADE: u32 = u32::MAX;
 
@@ -536,8 +544,8 @@ pub struct Trace {
     positions: Vec<Point>,
     segments: Segments,
     /// Makes the segments that are made when read, and their ideal paths
-    /// alone.
-    segment_maker: Option<(SegmentMaker, IdealMaker, StartMaker)>,
+    /// and starts alone.
+    segment_maker: Option<SegmentMakers>,
     columns: Vec<Column>,
     /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
     figures: Vec<FigureKind>,
@@ -1001,11 +1009,7 @@ impl Trace {
         if slot != MADE {
             return SegmentRef::Kept(&self.segments.kept[slot as usize]);
         }
-        let (maker, _, _) = self
-            .segment_maker
-            .as_ref()
-            .expect("a trace with segments made when read has their maker");
-        let made = maker(index);
+        let made = (self.makers().segment)(index);
         let column_index = made
             .columns
             .iter()
@@ -1045,8 +1049,19 @@ impl Trace {
         ideal: IdealMaker,
         start: StartMaker,
     ) -> Trace {
-        self.segment_maker = Some((maker, ideal, start));
+        self.segment_maker = Some(SegmentMakers {
+            segment: maker,
+            ideal,
+            start,
+        });
         self
+    }
+
+    /// What makes the segments made when read: only such a segment asks.
+    fn makers(&self) -> &SegmentMakers {
+        self.segment_maker
+            .as_ref()
+            .expect("a trace with segments made when read has their maker")
     }
 
     /// The point segment `index` starts at, without making it.
@@ -1055,11 +1070,7 @@ impl Trace {
         if slot != MADE {
             return self.segments.kept[slot as usize].start;
         }
-        let (_, _, start) = self
-            .segment_maker
-            .as_ref()
-            .expect("a trace with segments made when read has their maker");
-        start(index)
+        (self.makers().start)(index)
     }
 
     /// The ideal path of segment `index`, without making its stepper.
@@ -1068,11 +1079,7 @@ impl Trace {
         if slot != MADE {
             return self.segments.kept[slot as usize].ideal.clone();
         }
-        let (_, ideal, _) = self
-            .segment_maker
-            .as_ref()
-            .expect("a trace with segments made when read has their maker");
-        ideal(index)
+        (self.makers().ideal)(index)
     }
 
     /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
