@@ -1,23 +1,11 @@
 /**
- * The ideal path in the form the scene hands to WebGL: x, y, z of each
- * vertex as 32-bit floats (a 2-axis path at z = 0; axes past the third are
- * not drawn), with the box the vertices lie in.
- *
- * The worker makes it beside the polyline, so the page's main thread gets a
- * buffer WebGL takes as it is: converting and boxing a 100,000-line
- * program's 250,000 vertices there took 5.7 ms, and the 6 MB of doubles it
- * received brought on a major garbage collection. The box saves three.js two
- * more passes over the vertices to cull the line in its first frame.
+ * A path's cell centers (or any flat polyline) as the scene draws an ideal
+ * line: the form the core's Trace.idealLine() gives (IdealLine), for lines
+ * the page makes itself, such as a second path's.
  */
-export interface IdealLine {
-  /** Stride 3, grid units. */
-  xyz: Float32Array;
-  /** Smallest and largest x, y, z over the vertices (zeros when there are none). */
-  min: [number, number, number];
-  max: [number, number, number];
-}
+import type { IdealLine } from './core/types.js';
 
-/** `polyline`: flat, stride `dims`, grid units (Trace.idealPolyline(), or a path's cell centers). */
+/** `polyline`: flat, stride `dims`, grid units. */
 export function idealLineOf(polyline: Float64Array | Int32Array, dims: number): IdealLine {
   const count = polyline.length / dims;
   let xyz: Float32Array;

@@ -405,6 +405,13 @@ impl TraceHandle {
     pub fn ideal_polyline(&self) -> Vec<f64> {
         self.0.ideal_polyline()
     }
+
+    /// The ideal polyline as WebGL draws it (Float32Array): min x, y, z,
+    /// max x, y, z, then x, y, z per vertex (see `Trace::ideal_line_f32`).
+    #[wasm_bindgen(js_name = idealLine)]
+    pub fn ideal_line(&self) -> Vec<f32> {
+        self.0.ideal_line_f32()
+    }
 }
 
 /// The STEP and DIR wires of a G-code run as an IEEE 1364 VCD file

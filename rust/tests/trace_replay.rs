@@ -289,3 +289,54 @@ fn a_program_s_line_steps_have_no_circle_values_and_its_arc_steps_no_regions_val
     }
     assert!(column("M")[4..].iter().all(|v| v.is_nan()));
 }
+
+/// `Trace::ideal_line_f32` as a plain per-vertex loop over the f64
+/// polyline gives it: x, y, z of each vertex rounded to f32 (z = 0 on 2
+/// axes, axes past the third left out), after the box of those values.
+fn ideal_line_by_vertex(t: &voxpath::trace::Trace) -> Vec<f32> {
+    let dims = t.dims();
+    let polyline = t.ideal_polyline();
+    let xyz: Vec<f32> = polyline
+        .chunks_exact(dims)
+        .flat_map(|v| (0..3).map(move |a| v.get(a).map_or(0.0, |&c| c as f32)))
+        .collect();
+    let mut line = vec![0.0f32; voxpath::trace::IDEAL_LINE_BOX_VALUES];
+    if !xyz.is_empty() {
+        for a in 0..3 {
+            let axis = xyz.iter().skip(a).step_by(3).copied();
+            line[a] = axis.clone().fold(f32::INFINITY, f32::min);
+            line[3 + a] = axis.fold(f32::NEG_INFINITY, f32::max);
+        }
+    }
+    line.extend(xyz);
+    line
+}
+
+#[test]
+fn the_ideal_line_for_drawing_is_the_polyline_as_f32_after_its_box() {
+    let settings = |json: &str| voxpath::gcode::Settings::from_json(json).unwrap();
+    // Arcs both ways and a helix: vertices off the grid, on three axes.
+    let program = voxpath::gcode::run(
+        "G21 G90\nG1 X10 Y-4 F500\nG2 X-2 Y-4 I-6 J0 Z3\nG3 X1 Y1 R7\n",
+        settings(r#"{"stepsPerMm": 80}"#),
+    );
+    let empty = voxpath::gcode::run("G21 G90\n", settings(r#"{"stepsPerMm": 80}"#));
+    let traces = [
+        &program.trace,
+        &empty.trace,
+        &voxpath::algorithms::trace_json(
+            r#"{"algorithm": "bresenham2d", "from": [-3, 5], "to": [40, -17]}"#,
+        )
+        .unwrap(),
+        &voxpath::algorithms::trace_json(
+            r#"{"algorithm": "nd", "from": [1, -2, 3, -4], "to": [9, 7, -5, 6]}"#,
+        )
+        .unwrap(),
+    ];
+    for t in traces {
+        let line = t.ideal_line_f32();
+        assert_eq!(line, ideal_line_by_vertex(t), "{} axes", t.dims());
+    }
+    assert_eq!(empty.trace.ideal_line_f32(), [0.0; 6]);
+    assert!(program.trace.ideal_polyline().len() / 3 > 20);
+}

@@ -12,7 +12,7 @@ import { argumentError, describeValue, indexRange, wholeNumber } from './guard.j
 import type { StepClocks, TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
-import type { AlgorithmInfo, ChartSeries, DecisionColumns, Metrics, PointBounds, SegmentInfo, StepDetail, TraceOptions, TraceSummary } from './types.js';
+import type { AlgorithmInfo, ChartSeries, DecisionColumns, IdealLine, Metrics, PointBounds, SegmentInfo, StepDetail, TraceOptions, TraceSummary } from './types.js';
 import { loadCore } from './wasm.js';
 
 /**
@@ -346,6 +346,18 @@ export class Trace {
   /** The ideal path as a polyline for drawing, flat with stride dims. */
   idealPolyline(): Float64Array {
     return this.#core.idealPolyline();
+  }
+
+  /**
+   * The ideal polyline as WebGL draws it: each vertex's x, y, z rounded to
+   * a 32-bit float, with the box they lie in. Converted and boxed by the
+   * core in the pass that copies the vertices out.
+   */
+  idealLine(): IdealLine {
+    const flat = this.#core.idealLine();
+    // The core's layout (Trace::ideal_line_f32): min x, y, z, max x, y, z, then the vertices.
+    const box = (at: number): [number, number, number] => [flat[at]!, flat[at + 1]!, flat[at + 2]!];
+    return { xyz: flat.subarray(6), min: box(0), max: box(3) };
   }
 
   /**

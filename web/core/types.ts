@@ -87,3 +87,16 @@ export interface ChartSeries {
   /** True when rows are buckets of several points. */
   bucketed: boolean;
 }
+
+/**
+ * The ideal path in the form WebGL draws it (Trace.idealLine()): x, y, z of
+ * each vertex as 32-bit floats (a 2-axis path at z = 0; axes past the third
+ * are not drawn), with the box the vertices lie in.
+ */
+export interface IdealLine {
+  /** Stride 3, grid units. */
+  xyz: Float32Array;
+  /** Smallest and largest x, y, z over the vertices (zeros when there are none). */
+  min: [number, number, number];
+  max: [number, number, number];
+}

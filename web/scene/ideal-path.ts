@@ -13,7 +13,7 @@ import * as THREE from 'three';
 import { Line2 } from 'three/examples/jsm/lines/Line2.js';
 import { LineGeometry } from 'three/examples/jsm/lines/LineGeometry.js';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
-import type { IdealLine } from '../ideal-line.js';
+import type { IdealLine } from '../core/types.js';
 import { PALETTE } from './palette.js';
 
 /** Line width, CSS pixels. */
@@ -25,7 +25,7 @@ export class IdealPath extends THREE.Group {
   readonly #geometry: THREE.BufferGeometry;
   readonly #materials: THREE.Material[];
 
-  /** `ideal` (idealLineOf a Trace.idealPolyline(), or of a path's cell centers), drawn in `colour`. */
+  /** `ideal` (a Trace's idealLine(), or idealLineOf a path's cell centers), drawn in `colour`. */
   constructor(ideal: IdealLine, colour: string = PALETTE.ideal) {
     super();
     const { xyz } = ideal;

@@ -18,9 +18,9 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
-import type { PointBounds } from '../core/types.js';
+import type { IdealLine, PointBounds } from '../core/types.js';
 import { formatPoint } from '../format.js';
-import { type IdealLine, idealLineOf } from '../ideal-line.js';
+import { idealLineOf } from '../ideal-line.js';
 import type { CameraState, Projection } from '../state/app-state.js';
 import { roundCamera } from '../state/query.js';
 import { Cells, LIGHT_DRAWING_SPAN, cellUniforms, softwareRenderer } from './cells.js';

@@ -8,8 +8,7 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ChartSeries, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
-import type { IdealLine } from '../ideal-line.js';
+import type { ChartSeries, IdealLine, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 import type {
   InputError,
   LearnerCheck,

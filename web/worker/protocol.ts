@@ -12,7 +12,7 @@
  *   a long one, which is all the page draws of it (PointsSent), the points
  *   near the one it shows asked for by range ('points');
  * - idealLine: the core's ideal polyline as the scene draws it (IdealLine:
- *   x, y, z as 32-bit floats, and its box), made in the worker;
+ *   x, y, z as 32-bit floats, and its box; Trace.idealLine());
  * - bounds: the core's PointBounds of the points (min and max per axis);
  * - series: see ChartSeries; cells: Int32Array, stride dims;
  * - step instants: Float64Array, seconds, one per step index of the range;
@@ -23,8 +23,7 @@
  * StepDetail.
  */
 import type { Check, FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { IdealLine } from '../ideal-line.js';
-import type { Catalogue, ChartSeries, Limit, Metrics, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, ChartSeries, IdealLine, Limit, Metrics, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =

@@ -18,7 +18,6 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { Trace, TraceSummary } from '../core/index.js';
-import { idealLineOf } from '../ideal-line.js';
 import { pointsEvery } from './protocol.js';
 import type { PointsSent, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
@@ -51,7 +50,7 @@ function pathOf(t: Trace, sent: PointsSent): TracedPath<TraceSummary> {
   // detached here, and the cache would then hand out an empty array.
   const every = pointsEvery(t.steps + 1, sent);
   const sampledPoints = t.pointsInRange(0, t.steps + 1, every);
-  const idealLine = idealLineOf(t.idealPolyline(), t.dims);
+  const idealLine = t.idealLine();
   // The summary's own fields, as the core declared them.
   return { summary: { ...t }, sampledPoints, pointsEvery: every, idealLine, bounds: t.bounds };
 }

@@ -1671,7 +1671,7 @@ mod tests {
         /// other, each one's first vertex left out only where it repeats
         /// the vertex before (a line from where the last move ended, a
         /// chord of an arc): lines, arcs in chords or by the circle, and
-        /// helices.
+        /// helices. The line for drawing holds the same vertices.
         #[test]
         fn the_ideal_polyline_joins_the_segments_own(
             lines in prop::collection::vec(program_line(), 1..12),
@@ -1689,6 +1689,18 @@ mod tests {
                 let first = own.len().min(dims);
                 let repeats = joined.len() >= dims && joined[joined.len() - dims..] == own[..first];
                 joined.extend_from_slice(&own[if repeats { first } else { 0 }..]);
+            }
+            // The line for drawing is the same vertices as f32, after their box.
+            let line = t.ideal_line_f32();
+            let xyz: Vec<f32> = joined.iter().map(|&v| v as f32).collect();
+            prop_assert_eq!(&line[crate::trace::IDEAL_LINE_BOX_VALUES..], &xyz[..]);
+            for axis in 0..3 {
+                let values = || xyz.iter().skip(axis).step_by(3).copied();
+                let (min, max) = match values().next() {
+                    None => (0.0, 0.0),
+                    Some(_) => (values().fold(f32::INFINITY, f32::min), values().fold(f32::NEG_INFINITY, f32::max)),
+                };
+                prop_assert_eq!((line[axis], line[3 + axis]), (min, max), "axis {}", axis);
             }
             prop_assert_eq!(t.ideal_polyline(), joined);
         }
