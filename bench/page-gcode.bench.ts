@@ -76,20 +76,6 @@ async function nodeRun(source: string, stepsPerMm: number): Promise<{ seconds: n
   return { seconds, steps, status };
 }
 
-/**
- * Seconds from a key that pans the camera of the page's scene (OrbitControls,
- * keyboard `key`) to two animation frames later: one frame drawn, measured
- * as the rounds' `drawn` mark is. Runs in the page.
- */
-async function redrawSeconds(key: string): Promise<number> {
-  const canvas = document.querySelector<HTMLCanvasElement>('[data-testid=scene-canvas]')!;
-  canvas.focus();
-  const started = performance.now();
-  canvas.dispatchEvent(new KeyboardEvent('keydown', { key, code: key, bubbles: true }));
-  await new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
-  return (performance.now() - started) / 1000;
-}
-
 export default async function benchPageGcode(): Promise<BenchGroup> {
   const executablePath = findChromium();
   if (!executablePath) throw new Error(CHROMIUM_HINT);
@@ -158,17 +144,7 @@ export default async function benchPageGcode(): Promise<BenchGroup> {
         if (!node) await settle(page);
         nodeSeconds.push((node ?? (await nodeRun(source, stepsPerMm))).seconds);
       }
-      // One frame of the scene as drawn: the camera panned by the
-      // keyboard, away and back in turn (OrbitControls' arrow keys), timed
-      // as `drawn` is, from the key to two animation frames later. What the
-      // issue calls drawing; the page's time is set against Node's plus it.
-      const frameSeconds: number[] = [];
-      for (let round = 0; round < ROUNDS; round++) {
-        await settle(page);
-        frameSeconds.push(await page.evaluate(redrawSeconds, round % 2 === 0 ? 'ArrowLeft' : 'ArrowRight'));
-      }
       await context.close();
-      const drawingSeconds = median(frameSeconds);
       rows.push({
         name: `${GCODE_BENCH_LINES.toLocaleString('en-US')} lines at ${stepsPerMm} step${stepsPerMm === 1 ? '' : 's'}/mm: the page (worker, result, frame drawn) vs runGcode in Node`,
         steps,
@@ -176,12 +152,10 @@ export default async function benchPageGcode(): Promise<BenchGroup> {
           'page lines/s': GCODE_BENCH_LINES / median(pageSeconds),
           'page lines/s to its status': GCODE_BENCH_LINES / median(reportedSeconds),
           'Node lines/s': GCODE_BENCH_LINES / median(nodeSeconds),
-          'Node + a frame lines/s': GCODE_BENCH_LINES / (median(nodeSeconds) + drawingSeconds),
         },
         ratios: {
           'page / Node time': median(pageSeconds) / median(nodeSeconds),
           'to its status / Node': median(reportedSeconds) / median(nodeSeconds),
-          'page / (Node + a frame)': median(pageSeconds) / (median(nodeSeconds) + drawingSeconds),
         },
       });
     }
@@ -196,7 +170,6 @@ export default async function benchPageGcode(): Promise<BenchGroup> {
       `The G-code bench's ${GCODE_BENCH_LINES.toLocaleString('en-US')}-line program pasted into the built page's G-code mode (headless Chromium, WebGL on SwiftShader, software), then run again by its Run button ${ROUNDS} times, each time with runGcode in Node in turn, each side's run ${SETTLE_MS / 1000} s after the page's last one and once its main thread is idle (the page goes on reading what its views show after the status line); medians.`,
       "page lines/s: from the click to two animation frames after the status line reports the finished program (the worker's run, the result sent to the page, the frame that draws it); 'to its status': to the report alone.",
       'Node lines/s: runGcode of the same text in this process (wall time, as the G-code table times it); the status line must name its lines, moves and steps.',
-      `Node + a frame: Node's time plus one frame of the page's scene as drawn, timed as the page's own frame is (from an arrow key that pans the camera to two animation frames later; the median of ${ROUNDS}, after the rounds). The issue asks for the page in about the time Node takes plus drawing: 'page / (Node + a frame)' is that, 1x when the page adds nothing but a frame.`,
     ],
     rows,
   };
