@@ -1,4 +1,4 @@
-(Spiral of arcs: half circles about alternating centres, radius +2.5 mm per half turn)
+(Spiral of arcs: half circles about alternating centers, radius +2.5 mm per half turn)
 G21 G90 G17
 G0 X0 Y0
 G3 X10 Y0 I5 J0 F500

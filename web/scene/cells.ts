@@ -90,7 +90,7 @@ uniform float cellSize;
 uniform float halfHeightPx;
 out float shade;`;
 
-/** Where a vertex of the unit cube `position` lies in the cell `cell`: the cube drawn cellSize wide about the cell's centre. */
+/** Where a vertex of the unit cube `position` lies in the cell `cell`: the cube drawn cellSize wide about the cell's center. */
 const CELL_CORNER = /* glsl */ `
 in vec3 position;
 in ivec3 cell;
