@@ -111,15 +111,19 @@ describe('page state in the URL query', () => {
     // A link (or an old visit) pairing a circle with a line algorithm gets the circle's partner.
     expect(stateFromQuery('mode=compare&algorithm=circle&other=greedy', catalogue)!.other).toBe('arc-segments');
     expect(stateFromQuery('mode=compare&algorithm=regions&other=walk6', catalogue)!.other).toBe('walk6');
+    // One naming the first algorithm again gets its partner too, as the picker gives.
+    expect(stateFromQuery('mode=compare&algorithm=regions&other=regions', catalogue)!.other).toBe('greedy');
+    expect(stateFromQuery('mode=compare&algorithm=circle&other=circle', catalogue)!.other).toBe('arc-segments');
     // random-lines traces lines: an arc algorithm in its link gives way to the default one.
     expect(stateFromQuery('mode=experiment&algorithm=circle', catalogue)!.algorithm).toBe('regions');
     expect(stateFromQuery('mode=experiment&algorithm=dda', catalogue)!.algorithm).toBe('dda');
     expect(offeredAlgorithms('experiment', catalogue).map((a) => a.family)).not.toContain('arc');
     expect(offeredAlgorithms('trace', catalogue)).toEqual(catalogue.algorithms);
-    // Every algorithm's default partner is one it can be compared with, and another algorithm.
+    // Every algorithm's default partner is one it can be compared with, and another algorithm; none is comparable with itself.
     for (const a of catalogue.algorithms) {
       const other = defaultOther(a, catalogue.algorithms);
       expect(comparableWith(a, catalogue.algorithms), a.id).toContain(other);
+      expect(comparableWith(a, catalogue.algorithms), a.id).not.toContain(a);
       expect(other.id, a.id).not.toBe(a.id);
     }
   });

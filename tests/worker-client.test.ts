@@ -80,10 +80,10 @@ describe('TraceClient', () => {
     const { client, workers, crashes } = setUp();
     const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [2e9, 0, 0] });
     const { id } = workers[0]!.received[0]!;
-    workers[0]!.reply({ id, ok: false, failure: 'input', error: { field: 'to', message: 'x = 2000000000 is outside +-2^30' } });
+    workers[0]!.reply({ id, ok: false, failure: 'input', error: { field: 'to', message: 'x = 2000000000 is outside ±2^30' } });
     const error = await traced.catch((e: unknown) => e);
     expect(error).toBeInstanceOf(InputRejected);
-    expect(error).toMatchObject({ field: 'to', message: 'x = 2000000000 is outside +-2^30' });
+    expect(error).toMatchObject({ field: 'to', message: 'x = 2000000000 is outside ±2^30' });
     expect(crashes).toEqual([]);
     expect(workers[0]!.terminated).toBe(false);
   });

@@ -116,7 +116,7 @@ impl Point {
             if v.abs() > COORD_LIMIT as f64 {
                 return Err(Error::field(
                     field,
-                    format!("{name} = {v} is outside +-2^30 ({COORD_LIMIT})"),
+                    format!("{name} = {v} is outside ±2^30 ({COORD_LIMIT})"),
                 )
                 .on_axis(axis));
             }

@@ -148,7 +148,7 @@ describe('the page', () => {
     await page.getByTestId('input-to-x').fill('2000000000');
     const error = page.getByTestId('error-to');
     await error.filter({ hasText: 'outside' }).waitFor();
-    expect(await error.innerText()).toMatch(/x = 2000000000 is outside \+-2\^30/);
+    expect(await error.innerText()).toMatch(/x = 2000000000 is outside ±2\^30/);
     expect(await page.getByTestId('input-to-x').getAttribute('aria-invalid')).toBe('true');
     expect(await text(page, 'error-from')).toBe('');
     // The last valid path stays on screen and keeps responding.

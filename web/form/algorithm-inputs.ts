@@ -100,7 +100,7 @@ export class AlgorithmInputs {
     const state = { ...this.#store.state, mode };
     const { algorithms } = this.#catalogue;
     const info = algorithms.find((a) => a.id === id) ?? defaultAlgorithm(algorithms);
-    const keep = state.other !== info.id && comparableWith(info, algorithms).some((a) => a.id === state.other);
+    const keep = comparableWith(info, algorithms).some((a) => a.id === state.other);
     const other = keep ? state.other : defaultOther(info, algorithms).id;
     const next = tracedAlgorithms({ ...state, algorithm: info.id, other }, algorithms);
     const options = carriedOptions(next, state.options, false);

@@ -125,9 +125,13 @@ export function offeredAlgorithms(mode: Mode, catalogue: Catalogue): AlgorithmIn
   return family ? catalogue.algorithms.filter((a) => a.family === family) : catalogue.algorithms;
 }
 
-/** Algorithms that can be compared with `info`: the same family, and an axis count of the page that both take. */
+/**
+ * Algorithms that can be compared with `info`: the others of its family that
+ * take an axis count of the page it takes (an algorithm against itself draws
+ * one path twice).
+ */
 export function comparableWith(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AlgorithmInfo[] {
-  return catalogue.filter((a) => a.family === info.family && axisChoices([info, a]).length > 0);
+  return catalogue.filter((a) => a !== info && a.family === info.family && axisChoices([info, a]).length > 0);
 }
 
 /** Axes the page shows: 2 or 3 (a 3D view), within what the algorithm takes. */
