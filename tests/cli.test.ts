@@ -40,6 +40,10 @@ describe('voxpath trace', () => {
   it('passes algorithm options through generated flags', () => {
     const r = voxpath([...TRACE, '--tie', 'hold', '--max-steps', '100']);
     expect(JSON.parse(r.stdout).points[5]).toEqual([5, 3, 3]);
+    // The cap reaches the core too: the 10-step line under 5 is refused, the flag named.
+    const capped = voxpath([...TRACE, '--max-steps', '5']);
+    expect(capped.code).toBe(2);
+    expect(capped.stderr).toMatch(/^voxpath: --max-steps: the path needs more than 5 steps \(at least 10\)/);
   });
 
   it.each([

@@ -31,8 +31,22 @@ describe('randomLines', () => {
   });
 
   it('passes algorithm options to every line and names bad ones', async () => {
-    const hold = await randomLines({ algorithm: 'regions', count: 30, seed: 2, tie: 'hold' });
-    expect(hold.lines).toHaveLength(30);
+    // Each line is measured as a trace of it with the same option measures
+    // it, and the option changes the lines (liu-float rounds its float error
+    // term to `decimals` places; a tie option would not show, a tie's two
+    // cells being equally far off the line).
+    const coarse = await randomLines({ algorithm: 'liu-float', count: 30, seed: 2, decimals: 0 });
+    const fine = await randomLines({ algorithm: 'liu-float', count: 30, seed: 2, decimals: 6 });
+    for (const [result, decimals] of [[coarse, 0], [fine, 6]] as const) {
+      expect(result.lines).toHaveLength(30);
+      for (const line of result.lines) {
+        const t = await trace({ algorithm: 'liu-float', from: [0, 0, 0], to: line.to, decimals });
+        expect(line.perpendicular.max, `${line.to} at ${decimals}`).toBe(t.metrics.maxDeviation);
+        t.free();
+      }
+    }
+    const changed = coarse.lines.filter((line, i) => line.perpendicular.max !== fine.lines[i]!.perpendicular.max);
+    expect(changed.length).toBeGreaterThan(10);
     await expect(randomLines({ algorithm: 'regions', count: -1 })).rejects.toMatchObject({ field: 'count' });
     await expect(randomLines({ algorithm: 'regions', tie: 'never' })).rejects.toBeInstanceOf(VoxpathError);
     // The experiment draws each line's ends: a from given was overwritten, line after line.

@@ -455,11 +455,41 @@ mod tests {
                 .field_name(),
             Some("center")
         );
-        let hold = run(r#"{"algorithm":"regions","count":30,"seed":2,"tie":"hold"}"#).unwrap();
-        let advance = run(r#"{"algorithm":"regions","count":30,"seed":2}"#).unwrap();
+        // Options reach every line: each is measured as a trace of it with
+        // the same option measures it, and the option changes them (liu-float
+        // rounds its float error term to `decimals` places; a tie option
+        // would not show: a tie's two cells are equally far off the line).
+        let options = |decimals: u32| {
+            format!(r#"{{"algorithm":"liu-float","count":100,"seed":1,"decimals":{decimals}}}"#)
+        };
+        let coarse = run(&options(0)).unwrap();
+        let fine = run(&options(6)).unwrap();
         assert_eq!(
-            hold.lines.iter().map(|l| &l.to).collect::<Vec<_>>(),
-            advance.lines.iter().map(|l| &l.to).collect::<Vec<_>>()
+            coarse.lines.iter().map(|l| &l.to).collect::<Vec<_>>(),
+            fine.lines.iter().map(|l| &l.to).collect::<Vec<_>>()
         );
+        for (result, decimals) in [(&coarse, 0), (&fine, 6)] {
+            for line in &result.lines {
+                let t = crate::algorithms::trace_json(&format!(
+                    r#"{{"algorithm":"liu-float","from":[0,0,0],"to":{:?},"decimals":{decimals}}}"#,
+                    line.to
+                ))
+                .unwrap();
+                let metrics = t.metrics();
+                let case = format!("{:?} at {decimals} decimals", line.to);
+                assert_eq!(line.steps, t.steps(), "{case}");
+                assert_eq!(line.perpendicular.max, metrics.max_deviation, "{case}");
+                // Summed in another order: equal to the last bits or so.
+                let mean_gap = (line.perpendicular.mean - metrics.mean_deviation).abs();
+                assert!(mean_gap < 1e-12, "{case}");
+            }
+        }
+        let changed = coarse
+            .lines
+            .iter()
+            .zip(&fine.lines)
+            .filter(|(c, f)| (c.perpendicular.mean - f.perpendicular.mean).abs() > 1e-9)
+            .count();
+        assert!(changed > 50, "decimals changed {changed} of 100 lines");
     }
 }

@@ -122,6 +122,30 @@ mod tests {
         let m = &trace.metrics().steps_moving_axes;
         let c = step_clocks(&trace, 3).unwrap();
         assert_eq!(c.row_edges, vec![0, 4, 8, 10]);
+        // Each row's least and greatest speed, from the axes each of its
+        // steps moves as the points show them: √m for m axes moved.
+        let points = trace.points_flat(0, 11);
+        let speed = |k: usize| {
+            let moved = (0..3).filter(|&a| points[3 * k + a] != points[3 * (k + 1) + a]);
+            (moved.count() as f64).sqrt()
+        };
+        for (row, steps) in [0..4, 4..8, 8..10].into_iter().enumerate() {
+            let speeds: Vec<f64> = steps.map(speed).collect();
+            let least = speeds.iter().copied().fold(f64::INFINITY, f64::min);
+            let greatest = speeds.iter().copied().fold(0.0, f64::max);
+            assert_eq!(
+                (c.equal_tick_min[row], c.equal_tick_max[row]),
+                (least, greatest),
+                "row {row}: {speeds:?}"
+            );
+        }
+        // Rows that differ, so that rows mixed up would show.
+        assert!(
+            c.equal_tick_min
+                .iter()
+                .zip(&c.equal_tick_max)
+                .any(|(a, b)| a != b)
+        );
         let all = step_clocks(&trace, 1).unwrap();
         // The fastest and slowest steps are those of the most and fewest
         // axes moved, as the metrics count them.

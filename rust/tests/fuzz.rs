@@ -250,12 +250,24 @@ fn check_trace(trace: &Trace, request: &Map<String, Value>) {
     assert_finite("chart rows", &rows[..count * measured]);
 }
 
+/// Of `tried` cases, at least a tenth must have been `checked`: the
+/// invariants hold only of what runs, and a change that refused every
+/// request would otherwise pass.
+fn assert_enough_checked(what: &str, checked: u32, tried: u32) {
+    assert!(
+        checked * 10 >= tried,
+        "only {checked} of {tried} {what} ran far enough to be checked"
+    );
+}
+
 #[test]
 fn trace_requests_never_panic_and_keep_their_invariants() {
+    let traced = std::cell::Cell::new(0u32);
     runner(1)
         .run(&algorithm_request(), |request| {
             let text = Value::Object(request.clone()).to_string();
             if let Ok(trace) = voxpath::trace_json(&text) {
+                traced.set(traced.get() + 1);
                 check_trace(&trace, &request);
                 // Lines end exactly on `to` (an arc ends there too, a full circle included).
                 if let Some(to) = request.get("to").and_then(Value::as_array) {
@@ -266,6 +278,7 @@ fn trace_requests_never_panic_and_keep_their_invariants() {
             Ok(())
         })
         .unwrap();
+    assert_enough_checked("trace requests", traced.get(), cases());
 }
 
 #[test]
@@ -275,8 +288,15 @@ fn comparisons_and_experiments_never_panic() {
         0..ALGORITHMS.len(),
         prop::option::of(junk()),
     );
+    let (compared, experimented) = (std::cell::Cell::new(0u32), std::cell::Cell::new(0u32));
     runner(2)
         .run(&pair, |(mut request, other, junk)| {
+            // The experiment takes the request as a trace does, algorithm
+            // included, less the ends (it draws every line's own) and with
+            // options of its own.
+            let mut experiment_request = request.clone();
+            experiment_request.remove("from");
+            experiment_request.remove("to");
             let first = request.remove("algorithm").unwrap();
             request.insert(
                 "algorithms".into(),
@@ -285,22 +305,27 @@ fn comparisons_and_experiments_never_panic() {
             let text = Value::Object(request.clone()).to_string();
             if let Ok(comparison) = voxpath::compare::compare_request(&text) {
                 serde_json::to_string(&comparison).expect("the comparison serializes");
+                compared.set(compared.get() + 1);
             }
-            // The experiment takes the same options, and its own.
             let experiment = &EXPERIMENTS[0];
             for option in experiment.options {
                 if matches!(option.kind, OptionKind::Integer { .. }) {
-                    request.insert(option.name.into(), Value::from(request.len() as u64 % 50));
+                    let value = experiment_request.len() as u64 % 50;
+                    experiment_request.insert(option.name.into(), Value::from(value));
                 }
             }
-            if let Ok(request) = Request::from_json(&Value::Object(request).to_string()) {
+            let text = Value::Object(experiment_request).to_string();
+            if let Ok(request) = Request::from_json(&text) {
                 if let Ok(result) = voxpath::experiment::random_lines(&request) {
                     serde_json::to_string(&result).expect("the experiment serializes");
+                    experimented.set(experimented.get() + 1);
                 }
             }
             Ok(())
         })
         .unwrap();
+    assert_enough_checked("comparisons", compared.get(), cases());
+    assert_enough_checked("experiments", experimented.get(), cases());
 }
 
 /// A number as a careless or hostile program might write it.

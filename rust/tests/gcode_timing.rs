@@ -66,9 +66,14 @@ fn no_feed_and_step_rate_are_warnings_on_their_line() {
         .collect();
     assert!(messages[0].1.contains("error 22"), "{messages:?}");
     // Timed at the top rate, 100 mm/s, but 10 mm at 100 mm/s² peak at
-    // √(100·10) = 31.6 mm/s (a triangle): 2530 steps/s on X.
+    // √(100·10) = 31.6 mm/s (a triangle: v² = 2a·5 mm from rest): at
+    // 80 steps/mm, 2530 steps/s on X, where the nominal 100 mm/s would be 8000.
+    let peak_steps_per_s = 80.0 * (100.0f64 * 10.0).sqrt();
+    assert_eq!(format!("{peak_steps_per_s:.0}"), "2530");
     assert!(
-        messages[1].1.starts_with("X would step at "),
+        messages[1].1.starts_with(
+            "X would step at 2530 steps/s at the planned speed, more than maxStepRate = 2000 steps/s"
+        ),
         "{messages:?}"
     );
     assert_eq!(messages[1].0, 1);

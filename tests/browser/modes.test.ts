@@ -11,6 +11,7 @@
 import type { Page } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
+import { randomLines, trace } from '../../web/core/index.js';
 import { AXIS_COLOURS } from '../../web/scene/palette.js';
 import { closeAll, openPage, screenshot } from './harness.js';
 
@@ -435,7 +436,17 @@ describe('compare mode', () => {
     await page.getByTestId('metrics-table').waitFor();
     const rows = await page.getByTestId('metrics-table').innerText();
     expect(rows).toMatch(/circle\s+arc-segments/);
-    expect(rows).toMatch(/largest deviation/);
+    // Each side's steps and largest radial error, as the core measures the same two traces.
+    const move = { from: [20, 0, 0], to: [-20, 0, 0], center: [0, 0, 0] };
+    const [circle, chords] = [await trace({ algorithm: 'circle', ...move }), await trace({ algorithm: 'arc-segments', ...move, segmentLength: 8 })];
+    const cells = await page.getByTestId('metrics-table').locator('tbody tr').evaluateAll((trs) => trs.map((r) => [...r.querySelectorAll('td, th')].map((c) => c.textContent ?? '')));
+    const row = (name: string) => cells.find((r) => r[0] === name)?.slice(1);
+    expect(row('steps')).toEqual([String(circle.steps), String(chords.steps)]);
+    expect(row('largest deviation')).toEqual([circle.metrics.maxDeviation.toFixed(4), chords.metrics.maxDeviation.toFixed(4)]);
+    // Chords of 8 cells stray further from the circle than the circle's own cells (0.3961 and 1.2117).
+    expect(chords.metrics.maxDeviation).toBeGreaterThan(circle.metrics.maxDeviation);
+    circle.free();
+    chords.free();
     expect(Number(await page.getByTestId('scene-canvas').getAttribute('data-highlighted'))).toBeGreaterThan(0);
     expect(p.problems()).toEqual([]);
     await p.close();
@@ -557,7 +568,21 @@ describe('experiment mode', () => {
     // Figure 9 as printed: delta_(Mean-Max) 0.4119, delta_(Max-Mean) 0.6472.
     expect(await spread.innerText()).toMatch(/0\.4119/);
     expect(await spread.innerText()).toMatch(/0\.6472/);
-    expect(await page.getByTestId('lines-table').locator('tbody tr').count()).toBe(100);
+    // Beside it, the spread the core measures on the same lines (rows mean,
+    // max, std per line; columns perpendicular then eq. 11, each max, min,
+    // mean over the lines), and each line's own statistics.
+    const measured = await randomLines({ algorithm: 'regions', count: 100, seed: 1 });
+    const spreadRows = await spread.locator('tbody tr').evaluateAll((rows) => rows.map((r) => [...r.querySelectorAll('td, th')].map((c) => c.textContent ?? '')));
+    (['mean', 'max', 'std'] as const).forEach((key, row) => {
+      const want = [measured.perpendicular, measured.axisError].flatMap((m) => [m[key].max, m[key].min, m[key].mean].map((v) => v.toFixed(4)));
+      expect(spreadRows[row]!.slice(1, 7), key).toEqual(want);
+    });
+    const lineRows = await page.getByTestId('lines-table').locator('tbody tr').evaluateAll((rows) => rows.map((r) => [...r.querySelectorAll('td, th')].map((c) => c.textContent ?? '')));
+    expect(lineRows).toHaveLength(100);
+    measured.lines.forEach((line, i) => {
+      const want = [line.perpendicular, line.axisError].flatMap((s) => [s.max, s.mean, s.std].map((v) => v.toFixed(4)));
+      expect(lineRows[i]!.slice(3, 9), `line ${i + 1}`).toEqual(want);
+    });
     expect(await text(page, 'experiment-view')).toMatch(/Erratum: Figure 9 gives 0\.7071/);
     expect(p.problems()).toEqual([]);
     await p.close();

@@ -273,8 +273,9 @@ mod tests {
             .collect();
         // 16,000 steps out, 8,000 back.
         assert_eq!(rising.len(), 24_000);
-        // The 400th at √(2·5/100) s (s = ½at²), to the nanosecond.
-        assert_eq!(rising[399], nanoseconds(0.1f64.sqrt()));
+        // The 400th at √(2·5/100) s = 0.316227766... s (s = ½at²: 5 mm at
+        // 100 mm/s²), to the nanosecond.
+        assert_eq!(rising[399], 316_227_766);
         assert_eq!(rising[15_999], 3_000_000_000);
         // Falls 10 µs after it rises (125 µs apart at 100 mm/s).
         let x = &changes["x_step"];
