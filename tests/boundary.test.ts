@@ -5,8 +5,9 @@
 // example, a G-code program with arcs, warnings and an error, a comparison and
 // an experiment, are checked field by field against the generated types
 // (read with the TypeScript compiler). A field the core sends that the .d.ts
-// does not declare (say a hand-written Serialize that drifted), or a
-// required field it declares and the core leaves out, fails here.
+// does not declare (say a hand-written Serialize that drifted), a required
+// field it declares and the core leaves out, a value of another kind than
+// declared (a string for a number, null where null is not allowed) fails here.
 import { fileURLToPath } from 'node:url';
 import ts from 'typescript';
 import { beforeAll, describe, expect, it } from 'vitest';
@@ -49,15 +50,22 @@ function elementOf(type: ts.Type): ts.Type {
 
 /** Where `value` does not fit `type` (empty when it does): a path and what is wrong there. */
 function misfits(value: unknown, type: ts.Type, path: string): string[] {
-  if (value === null || value === undefined) return [];
+  if (value === undefined) return [];
+  const all = type.isUnion() ? type.types : [type];
+  if (all.some((t) => t.flags & (ts.TypeFlags.Unknown | ts.TypeFlags.Any))) return [];
+  // null only where the .d.ts allows it (serde_json also writes a NaN as null).
+  if (value === null) return all.some((t) => t.flags & (ts.TypeFlags.Null | ts.TypeFlags.Undefined)) ? [] : [`${path}: null where the .d.ts has ${checker.typeToString(type)}`];
   const candidates = members(type);
-  if (candidates.some((t) => t.flags & (ts.TypeFlags.Unknown | ts.TypeFlags.Any))) return [];
   if (Array.isArray(value)) {
     const arrays = candidates.filter(isArrayLike);
     if (arrays.length === 0) return [`${path}: an array where the .d.ts has ${checker.typeToString(type)}`];
     return value.flatMap((item, i) => misfits(item, elementOf(arrays[0]!), `${path}[${i}]`));
   }
-  if (typeof value !== 'object') return [];
+  if (typeof value !== 'object') {
+    const kinds: Record<string, ts.TypeFlags> = { number: ts.TypeFlags.NumberLike, string: ts.TypeFlags.StringLike, boolean: ts.TypeFlags.BooleanLike, bigint: ts.TypeFlags.BigIntLike };
+    const kind = kinds[typeof value] ?? 0;
+    return candidates.some((t) => t.flags & kind) ? [] : [`${path}: a ${typeof value} where the .d.ts has ${checker.typeToString(type)}`];
+  }
   const objects = candidates.filter((t) => t.flags & ts.TypeFlags.Object || t.isIntersection());
   if (objects.length === 0) return [`${path}: an object where the .d.ts has ${checker.typeToString(type)}`];
   // A tagged union: the member whose literal tags match the value's.

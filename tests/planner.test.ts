@@ -101,7 +101,10 @@ describe('chart rows and the step reached at an instant, for the page', () => {
     expect(b.speedMin.every((v) => v === 0)).toBe(true);
     // 1 mm from rest to rest at 10 mm/s²: a triangle peaking at √(a·L) = √10 mm/s, under the 8.33 mm/s cap.
     expect(Math.max(...b.speedMax.map((v) => v!))).toBeCloseTo(Math.sqrt(10), 9);
-    expect(b.junctionSpeed.filter((v) => v !== null).every((v) => v === 0)).toBe(true);
+    // Every reversal is a stop, and the buckets mark them: with four moves a bucket, nearly every bucket has a move start in it.
+    const marked = b.junctionSpeed.filter((v) => v !== null);
+    expect(marked.length).toBeGreaterThan(400);
+    expect(marked.every((v) => v === 0)).toBe(true);
     long.free();
   });
 

@@ -1461,7 +1461,16 @@ mod tests {
             let text: String = pieces.concat();
             match Points::from_text(&text, dims) {
                 Ok(points) => prop_assert_eq!(points.coords.len() % dims, 0),
-                Err(e) => prop_assert!(!e.to_string().is_empty()),
+                Err(e) => {
+                    // "line L, column C: what is wrong", L and C from 1.
+                    let message = e.to_string();
+                    let place = message.strip_prefix("line ").and_then(|rest| rest.split_once(": "));
+                    let located = place.and_then(|(at, what)| {
+                        let (line, column) = at.split_once(", column ")?;
+                        Some(line.parse::<u32>().ok()? >= 1 && column.parse::<u32>().ok()? >= 1 && !what.is_empty())
+                    });
+                    prop_assert_eq!(located, Some(true), "{}", message);
+                }
             }
         }
 

@@ -417,6 +417,29 @@ mod tests {
             .collect();
         assert!(only_b.chunks(3).all(|cell| !of_a.contains(cell)));
         assert!(only_a.chunks(3).all(|cell| of_a.contains(cell)));
+        let of_b: HashSet<Vec<i32>> = (0..=b.steps())
+            .map(|k| b.point(k).coords().iter().map(|&v| v as i32).collect())
+            .collect();
+        assert!(only_a.chunks(3).all(|cell| !of_b.contains(cell)));
+    }
+
+    #[test]
+    fn a_cell_visited_again_is_listed_once() {
+        // Two turns of r = 5 visit each of the circle's 28 cells twice (one
+        // turn is 28 steps, ending where it starts); a line far off shares
+        // none of them.
+        let twice = trace(
+            r#"{"algorithm":"circle","from":[5,0,0],"to":[5,0,0],"center":[0,0,0],"turns":1}"#,
+        );
+        let elsewhere = trace(r#"{"algorithm":"regions","from":[100,0,0],"to":[110,7,6]}"#);
+        assert_eq!(twice.steps(), 56);
+        let flat = cells_only_in(&twice, &elsewhere).unwrap();
+        let cells: Vec<&[i32]> = flat.chunks(3).collect();
+        let distinct: HashSet<&[i32]> = cells.iter().copied().collect();
+        assert_eq!((cells.len(), distinct.len()), (28, 28));
+        assert_eq!(cells[0], [5, 0, 0]);
+        let c = compare(&twice, &elsewhere).unwrap();
+        assert_eq!(c.only_in_a.count, 28);
     }
 
     #[test]

@@ -91,9 +91,21 @@ mod tests {
             (before, 1000),
             "room enough: untouched"
         );
-        reserve_moving(&mut v, 5000);
+        // A little more than there is room for: Vec::reserve would double
+        // the capacity to 2000 (max(2 x 1000, 3 + 1500)); the room asked
+        // for is 1503.
+        reserve_moving(&mut v, 1500);
         assert_eq!(v, [7, 8, 9]);
-        // Exactly the room asked for, not the old capacity doubled.
-        assert!(v.capacity() >= 5003 && v.capacity() < 2000 + 5003);
+        assert!((1503..2000).contains(&v.capacity()), "{}", v.capacity());
+        // And a full vector, 10 more: 1013, not 2 x 1503.
+        v.resize(v.capacity(), 1);
+        let len = v.len();
+        reserve_moving(&mut v, 10);
+        assert_eq!(&v[..3], [7, 8, 9]);
+        assert!(
+            (len + 10..2 * len).contains(&v.capacity()),
+            "{}",
+            v.capacity()
+        );
     }
 }

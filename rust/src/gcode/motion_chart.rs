@@ -304,6 +304,51 @@ mod tests {
         assert!(c.speed_max.iter().any(|v| close(v.unwrap(), top)));
         assert_eq!(c.junction_speed.iter().flatten().count(), 3);
         assert!(close(c.seconds[0], d / 16.0));
+        // Each bucket's least and greatest speed, from the exact chart's
+        // corners: the profile is linear between them, so its extremes over
+        // a bucket are at the corners within it or at its edges.
+        let exact = t.motion_chart(&[80.0; 3], 0.0, d, 2000).unwrap();
+        assert!(exact.exact);
+        let corners: Vec<(f64, f64)> = exact
+            .seconds
+            .iter()
+            .zip(&exact.speed_max)
+            .map(|(&t, v)| (t, v.unwrap()))
+            .collect();
+        let speed_at = |at: f64| {
+            let i = corners
+                .partition_point(|&(t, _)| t <= at)
+                .clamp(1, corners.len() - 1);
+            let ((t0, v0), (t1, v1)) = (corners[i - 1], corners[i]);
+            if t1 <= t0 {
+                v1
+            } else {
+                v0 + (v1 - v0) * (at - t0) / (t1 - t0)
+            }
+        };
+        for bucket in 0..8 {
+            let (lo, hi) = (d * bucket as f64 / 8.0, d * (bucket + 1) as f64 / 8.0);
+            let inside = corners
+                .iter()
+                .filter(|&&(t, _)| lo <= t && t <= hi)
+                .map(|&(_, v)| v);
+            let speeds: Vec<f64> = inside.chain([speed_at(lo), speed_at(hi)]).collect();
+            let least = speeds.iter().copied().fold(f64::INFINITY, f64::min);
+            let greatest = speeds.iter().copied().fold(0.0, f64::max);
+            let (min, max) = (c.speed_min[bucket].unwrap(), c.speed_max[bucket].unwrap());
+            assert!(
+                close(min, least) && close(max, greatest),
+                "bucket {bucket}: {min}..{max} against {least}..{greatest}"
+            );
+        }
+        // The corners slow the tool without stopping it (Grbl's 90° junction
+        // at a = 10 mm/s², δ = 0.01 mm: about 0.49 mm/s), so the buckets
+        // between the two stops have least speeds above 0.
+        assert!(
+            c.speed_min[1..7].iter().all(|v| v.unwrap() > 0.4),
+            "{:?}",
+            c.speed_min
+        );
     }
 
     #[test]
