@@ -7,7 +7,7 @@
 //   expect(p.problems()).toEqual([]);
 //   const stats = await screenshot(p.page, 'regions-canvas', 'canvas');
 //   expect(stats.differingFraction).toBeGreaterThan(0.01);
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { type Browser, type BrowserContext, chromium, type Page } from 'playwright-core';
@@ -221,6 +221,21 @@ export function imageStats(png: Buffer, options: StatsOptions = {}): ImageStats 
     differingFraction: pixelCount ? differing / pixelCount : 0,
     distinctColors: counts.size,
   };
+}
+
+/**
+ * Pixels of the PNG file `file` within `tolerance` of `colour` ('#rrggbb') on
+ * every channel: how much a chart drew of a series stroked in that colour
+ * (its legend swatch alone is a few dozen pixels).
+ */
+export function pixelsOf(file: string, colour: string, tolerance = 24): number {
+  const { data } = PNG.sync.read(readFileSync(file));
+  const rgb = [1, 3, 5].map((i) => parseInt(colour.slice(i, i + 2), 16));
+  let count = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    if (rgb.every((value, channel) => Math.abs(data[i + channel]! - value) <= tolerance)) count += 1;
+  }
+  return count;
 }
 
 /**

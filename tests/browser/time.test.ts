@@ -9,7 +9,8 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
-import { closeAll, openPage, screenshot } from './harness.js';
+import { AXIS_COLOURS, PALETTE } from '../../web/scene/palette.js';
+import { closeAll, openPage, pixelsOf, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -62,6 +63,9 @@ describe('G-code mode: time', () => {
     await expect.poll(async () => Number(await page.getByTestId('step-instant').getAttribute('data-seconds'))).toBeCloseTo(at800, 9);
     const charts = await screenshot(page, 'gcode-time-charts', '[data-testid=motion]');
     expect(charts.differingFraction).toBeGreaterThan(0.05);
+    // The planned speed's curve and the y step rate's are drawn, not only the axes and legends.
+    expect(pixelsOf(charts.file, PALETTE.visited)).toBeGreaterThan(300);
+    expect(pixelsOf(charts.file, AXIS_COLOURS[1])).toBeGreaterThan(300);
 
     // A window of 1 s with the step a third of the way in: inside the first side's trapezoid.
     await page.getByTestId('motion-window').selectOption({ label: '1 s around the current step' });
@@ -176,6 +180,8 @@ describe('G-code mode: time', () => {
         });
       }
       expect(speed.differingFraction, file).toBeGreaterThan(0.03);
+      // The planned speed's curve, not only the axes and the legend.
+      expect(pixelsOf(speed.file, PALETTE.visited), file).toBeGreaterThan(300);
       const timing = await screenshot(page, `time-${name}-timing`, '[data-testid=timing]');
       expect(timing.differingFraction, file).toBeGreaterThan(0.02);
     }
@@ -197,6 +203,9 @@ describe('trace mode: the speed per step under two clocks', () => {
     expect(await chart.locator('.u-title').innerText()).toContain(`takes 8 ticks) or a constant feed (${(5 + 3 * Math.SQRT2).toFixed(2)} ticks)`);
     const shot = await screenshot(page, 'trace-step-clocks', '[data-testid=step-clocks]');
     expect(shot.differingFraction).toBeGreaterThan(0.05);
+    // Both clocks' curves, not only the axes and the legend.
+    expect(pixelsOf(shot.file, PALETTE.current)).toBeGreaterThan(250);
+    expect(pixelsOf(shot.file, PALETTE.second)).toBeGreaterThan(150);
     await page.getByTestId('algorithm').selectOption('circle');
     await page.getByTestId('trace-status').filter({ hasText: 'circle' }).waitFor();
     await expect.poll(() => chart.isHidden()).toBe(true);
