@@ -263,3 +263,15 @@ fn a_line_of_repeats_stops_at_the_first_one_too_many() {
         (7, "X appears twice on this line")
     );
 }
+
+#[test]
+fn a_dwell_without_seconds_or_below_zero_names_p() {
+    let (line, column, message) = first_error("G1 X1 F100\nG4 P-0.5\n", 80.0);
+    assert_eq!((line, column), (2, 4));
+    assert_eq!(message, "P-0.5: a dwell's seconds must be 0 or more");
+    let (line, column, message) = first_error("G4\n", 80.0);
+    assert_eq!((line, column), (1, 1));
+    assert!(message.starts_with("G4 (dwell) needs P"), "{message}");
+    // Zero is a dwell of no time, not an error.
+    assert!(program("G4 P0\n", 80.0).info.errors.is_empty());
+}

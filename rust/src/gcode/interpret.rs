@@ -381,7 +381,8 @@ impl Interpreter {
                     "G4 (dwell) needs P, the seconds to wait (Grbl refuses it without: error 28, a value word is missing)",
                 ));
             };
-            if !(p.value >= 0.0) {
+            // NaN is refused too (a comparison with it is false).
+            if p.value.is_nan() || p.value < 0.0 {
                 return Err(Error::at(
                     line,
                     p.column,
