@@ -168,9 +168,11 @@ impl Machine {
     }
 
     /// The position in steps nearest `mm` on `axis`: round(mm × steps/mm),
-    /// halves away from zero. None beyond ±2^30 steps (the grid's limit).
+    /// halves away from zero, a half meant by the decimals counted as one
+    /// ([`round_decimal_half_away`]). None beyond ±2^30 steps (the grid's
+    /// limit).
     pub fn to_steps(&self, axis: usize, mm: f64) -> Option<i64> {
-        let steps = round_half_away(mm * self.steps_per_mm[axis]);
+        let steps = round_decimal_half_away(mm * self.steps_per_mm[axis]);
         (steps.abs() <= COORD_LIMIT as f64).then_some(steps as i64)
     }
 
@@ -180,15 +182,40 @@ impl Machine {
     }
 }
 
-/// `x.round()`: the nearest whole number, halves away from zero. Wasm has
-/// only round-half-to-even, so f64::round is a libm call there, once per
-/// axis of every G-code move; trunc and copysign are wasm instructions.
-/// x - trunc(x) is exact (Sterbenz: for |x| >= 1, trunc(x) is within a
-/// factor 2 of x; below 1 it is 0), so comparing it with 1/2 decides as
-/// round does; NaN and the infinities come out as they go in.
-fn round_half_away(x: f64) -> f64 {
+/// How far below a half, in units in the last place of the product, a
+/// product of decimals still counts as that half. A program's decimal (X1.005)
+/// is read as the nearest double (1.00499999999999989…), steps/mm as well,
+/// and inches are multiplied by 25.4: each of these roundings is within half
+/// a unit in the last place, so a product the decimals make exactly a half
+/// lands at most a few units below it (1.005 mm at 100 steps/mm is
+/// 100.49999999999999) and would be rounded down. 8 units covers them with
+/// room; a product this close to a half without being one needs about 16
+/// significant digits, which no program writes. Grbl gets most such halves
+/// right by luck: it multiplies in 32-bit floats, whose rounding often
+/// lands on the half.
+const DECIMAL_HALF_ULPS: f64 = 8.0;
+
+/// Below this magnitude a product may count as a half it is near (2^40).
+const DECIMAL_HALVES_BELOW: f64 = (1u64 << 40) as f64;
+
+/// `x.round()` (the nearest whole number, halves away from zero) for a
+/// product of decimals: within [`DECIMAL_HALF_ULPS`] units in the last place
+/// below a half, x is taken as that half. Wasm has only round-half-to-even,
+/// so f64::round is a libm call there, once per axis of every G-code move;
+/// trunc and copysign are wasm instructions. x - trunc(x) is exact
+/// (Sterbenz: for |x| >= 1, trunc(x) is within a factor 2 of x; below 1 it
+/// is 0); NaN and the infinities come out as they go in.
+fn round_decimal_half_away(x: f64) -> f64 {
     let whole = x.trunc();
-    if (x - whole).abs() >= 0.5 {
+    // A unit in the last place of x is at most |x| ε. Past 2^40 (far past
+    // the grid's 2^30, which to_steps refuses) 8 units would be a good part
+    // of a step: plain rounding there.
+    let slack = if x.abs() < DECIMAL_HALVES_BELOW {
+        x.abs() * (DECIMAL_HALF_ULPS * f64::EPSILON)
+    } else {
+        0.0
+    };
+    if (x - whole).abs() >= 0.5 - slack {
         whole + x.signum()
     } else {
         whole
@@ -358,15 +385,7 @@ mod tests {
 
     #[test]
     fn rounding_takes_halves_away_from_zero_as_f64_round() {
-        let halves = [
-            0.5,
-            1.5,
-            2.5,
-            -0.5,
-            -2.5,
-            0.49999999999999994,
-            4503599627370495.5,
-        ];
+        let halves = [0.5, 1.5, 2.5, -0.5, -2.5, 4503599627370495.5];
         let special = [
             0.0,
             -0.0,
@@ -377,23 +396,56 @@ mod tests {
             -1e-300,
         ];
         for x in halves.into_iter().chain(special) {
-            assert_eq!(round_half_away(x).to_bits(), x.round().to_bits(), "{x}");
+            assert_eq!(
+                round_decimal_half_away(x).to_bits(),
+                x.round().to_bits(),
+                "{x}"
+            );
         }
-        assert!(round_half_away(f64::NAN).is_nan());
+        assert!(round_decimal_half_away(f64::NAN).is_nan());
+    }
+
+    #[test]
+    fn a_half_the_decimals_mean_is_a_half() {
+        // Each product is a few units in the last place below the half its
+        // decimals make: f64::round takes them down.
+        let m = |spm: f64| Machine::new([spm; 3]).unwrap();
+        for (mm, spm, steps) in [
+            (1.005, 100.0, 101),
+            (-1.005, 100.0, -101),
+            (0.145, 100.0, 15),
+            (1.015, 100.0, 102),
+            (0.49999999999999994, 1.0, 1),
+        ] {
+            assert!(
+                ((mm * spm) as f64).round().abs() < (steps as f64).abs(),
+                "{mm}"
+            );
+            assert_eq!(m(spm).to_steps(0, mm), Some(steps), "{mm} mm at {spm}");
+        }
+        // 16 significant digits short of a half is not one.
+        assert_eq!(m(1.0).to_steps(0, 100.4999999999997), Some(100));
     }
 
     proptest! {
         #[test]
-        fn rounding_is_f64_round_on_every_value(bits in any::<u64>(), whole in -(1i64 << 31)..(1i64 << 31)) {
-            // Any bit pattern, and values right at and beside a half.
+        fn rounding_is_f64_round_away_from_halves(bits in any::<u64>(), whole in 0..(1i64 << 31), negative: bool) {
+            // Any bit pattern not within a thousandth of a half (or past
+            // 2^40): what f64::round gives.
             let x = f64::from_bits(bits);
-            if !x.is_nan() {
-                prop_assert_eq!(round_half_away(x).to_bits(), x.round().to_bits());
+            let off_half = ((x - x.trunc()).abs() - 0.5).abs() > 1e-3;
+            if !x.is_nan() && (off_half || x.abs() >= DECIMAL_HALVES_BELOW) {
+                prop_assert_eq!(round_decimal_half_away(x).to_bits(), x.round().to_bits());
             }
-            let half = whole as f64 + 0.5;
-            for y in [half, f64::from_bits(half.to_bits() - 1), f64::from_bits(half.to_bits() + 1)] {
-                prop_assert_eq!(round_half_away(y).to_bits(), y.round().to_bits(), "{}", y);
+            // Up to 8 units in the last place either side of a half: away
+            // from zero; 17 nearer zero (more than 8 |x| ε): toward zero.
+            let sign = if negative { -1.0 } else { 1.0 };
+            let half = sign * (whole as f64 + 0.5);
+            let ulps = |k: i64| f64::from_bits((half.to_bits() as i64 + k) as u64);
+            for k in -8..=8 {
+                prop_assert_eq!(round_decimal_half_away(ulps(k)), sign * (whole as f64 + 1.0), "{}", ulps(k));
             }
+            prop_assert_eq!(round_decimal_half_away(ulps(-17)), sign * whole as f64, "{}", ulps(-17));
         }
     }
 }

@@ -6,6 +6,14 @@ use proptest::prelude::*;
 use voxpath::Point;
 use voxpath::gcode::{Settings, run};
 
+/// numerator / denominator (denominator > 0) rounded to a whole number,
+/// halves away from zero, in integers: the steps a decimal target means.
+fn exact_steps(numerator: i128, denominator: i128) -> i64 {
+    let (quotient, remainder) = (numerator / denominator, numerator % denominator);
+    let away = i128::from(2 * remainder.abs() >= denominator) * numerator.signum();
+    i64::try_from(quotient + away).unwrap()
+}
+
 /// Thousandths of a mm, within ±500 mm.
 fn micro() -> impl Strategy<Value = i64> {
     -500_000i64..=500_000
@@ -26,8 +34,9 @@ proptest! {
         for &(x, y, z) in &targets {
             let text = [x, y, z].map(|v| format!("{:.3}", v as f64 / 1000.0));
             source.push_str(&format!("G1 X{} Y{} Z{} F500\n", text[0], text[1], text[2]));
-            // The value as written, times steps per mm, halves away from 0.
-            expected.push(text.map(|t| (t.parse::<f64>().unwrap() * steps_per_mm).round() as i64));
+            // The value as written, times steps per mm, halves away from 0,
+            // in exact decimals: thousandths times tenths, in ten-thousandths.
+            expected.push([x, y, z].map(|v| exact_steps(v as i128 * tenths_per_mm as i128, 10_000)));
         }
         let settings = Settings::from_json(&format!(
             r#"{{"stepsPerMm": {steps_per_mm}, "lineAlgorithm": "{line}"}}"#
@@ -40,6 +49,64 @@ proptest! {
             // Where the trace really is after the move's last step.
             prop_assert_eq!(p.trace.point(m.first_step + m.steps), Point::new(want));
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// A target whose decimals make an exact half of a step (1.005 mm at
+    /// 100 steps/mm, 100.5 steps) goes away from zero, in mm and in inches
+    /// (25.4 mm each), though the double nearest the decimals may make it
+    /// a hair less: the rounding is that of the decimals themselves.
+    #[test]
+    fn decimal_targets_round_as_their_decimals_do(
+        value in -99_999_999i64..=99_999_999,
+        decimals in 0u32..=4,
+        steps_per_mm in prop::sample::select(vec!["80", "100", "12.5", "400", "3", "78.74", "1000", "6.4"]),
+        inches: bool,
+    ) {
+        let scale = 10i128.pow(decimals);
+        let text = format!("{}{}.{:0width$}", if value < 0 { "-" } else { "" }, value.abs() as i128 / scale, value.abs() as i128 % scale, width = decimals as usize);
+        // steps/mm as an integer over a power of ten.
+        let spm_decimals = steps_per_mm.split_once('.').map_or(0, |(_, f)| f.len() as u32);
+        let spm_whole: i128 = steps_per_mm.replace('.', "").parse().unwrap();
+        let (inch_numerator, inch_denominator) = if inches { (254, 10) } else { (1, 1) };
+        let want = exact_steps(
+            value as i128 * spm_whole * inch_numerator,
+            scale * 10i128.pow(spm_decimals) * inch_denominator,
+        );
+        // A move within maxSteps' default, stepped in a moment (halves near
+        // 2^30 are the rounding's own unit property, in machine.rs).
+        prop_assume!(want.abs() <= 4_000_000);
+        let source = format!("{} G1 X{text} F500\n", if inches { "G20" } else { "G21" });
+        let p = run(&source, Settings::from_json(&format!(r#"{{"stepsPerMm": {steps_per_mm}}}"#)).unwrap());
+        prop_assert_eq!(&p.info.errors, &vec![], "{}", source);
+        prop_assert_eq!(p.moves()[0].to_steps[0], want, "{}", source);
+    }
+
+    /// Targets that are exactly k + 1/2 steps, written as the decimals
+    /// that say so (k + 1/2 over steps/mm, where that ends): k + 1 steps,
+    /// away from zero, whichever side of the half the doubles land.
+    #[test]
+    fn decimal_halves_go_away_from_zero(
+        k in 0i64..4_000_000,
+        negative: bool,
+        (spm_whole, spm_decimals) in prop::sample::select(vec![(100i128, 0u32), (1000, 0), (80, 0), (125, 1), (400, 0), (64, 1), (25, 0), (200, 0)]),
+    ) {
+        // mm = (2k + 1) / 2 / (spm_whole / 10^spm_decimals), in the fewest
+        // decimals that hold it exactly (each steps/mm here is 2^a 5^b).
+        let (numerator, denominator) = ((2 * k as i128 + 1) * 10i128.pow(spm_decimals), 2 * spm_whole);
+        let digits = (0..12).find(|&d| numerator * 10i128.pow(d) % denominator == 0).unwrap();
+        let scaled = numerator * 10i128.pow(digits) / denominator;
+        let scale = 10i128.pow(digits);
+        let text = format!("{}{}.{:0width$}", if negative { "-" } else { "" }, scaled / scale, scaled % scale, width = digits as usize);
+        let steps_per_mm = spm_whole as f64 / 10f64.powi(spm_decimals as i32);
+        let source = format!("G1 X{text} F500\n");
+        let p = run(&source, Settings::from_json(&format!(r#"{{"stepsPerMm": {steps_per_mm}}}"#)).unwrap());
+        prop_assert_eq!(&p.info.errors, &vec![], "{}", source);
+        let want = if negative { -(k + 1) } else { k + 1 };
+        prop_assert_eq!(p.moves()[0].to_steps[0], want, "{}", source);
     }
 }
 
