@@ -653,3 +653,41 @@ fn the_recording_loops_stay_exact_on_the_largest_circles() {
         }
     }
 }
+
+#[test]
+fn circles_that_touch_the_limit_run_within_it() {
+    // Every cell of a circle, and every rounded chord vertex, is within
+    // ceil(r) of its center on each axis: a circle whose ceil(r) reaches
+    // exactly ±2^30 runs, in every arc algorithm, and stays within it.
+    for (start, sign) in [
+        ([4, 0], 1),
+        ([3, 4], 1),
+        ([5, 5], -1),
+        ([1, 0], -1),
+        ([7, 1], 1),
+    ] {
+        let r_sq = start[0] * start[0] + start[1] * start[1];
+        let reach = (1..).find(|&k: &i64| k * k >= r_sq).unwrap();
+        let c = sign * (COORD_LIMIT - reach);
+        let from = [c + start[0], c + start[1]];
+        for (algorithm, rise) in [("circle", 0), ("arc-segments", 0), ("helix", 9)] {
+            let json = format!(
+                r#"{{"algorithm":"{algorithm}","from":[{},{},0],"to":[{},{},{rise}],"center":[{c},{c},0]}}"#,
+                from[0], from[1], from[0], from[1]
+            );
+            let t = voxpath::trace_json(&json).unwrap_or_else(|e| panic!("{json}: {e}"));
+            let p = points(&t);
+            let extreme = p
+                .iter()
+                .flat_map(|q| [q[0], q[1]])
+                .map(i64::abs)
+                .max()
+                .unwrap();
+            // The cells at the axis crossings, round(r) out.
+            let round_r = ((r_sq as f64).sqrt()).round() as i64;
+            assert_eq!(extreme, c.abs() + round_r, "{json}");
+            assert!(extreme <= COORD_LIMIT, "{json}");
+            assert_eq!(p.last().unwrap(), &[from[0], from[1], rise], "{json}");
+        }
+    }
+}

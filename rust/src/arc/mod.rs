@@ -164,8 +164,12 @@ impl ArcSpec {
         }
         // Every point of the circle must be a valid input point, so that the
         // chords of arc-segments are valid lines and every coordinate fits
-        // in i32 at the wasm boundary.
-        let reach = ceil_sqrt(start_sq) + RADIUS_TOLERANCE as i128;
+        // in i32 at the wasm boundary. The circle is stepped at the start's
+        // radius r, and every cell of it, and every rounded chord vertex, is
+        // within round(r) <= ceil(r) of the center on each axis (the
+        // correction steps run between a circle point and `to`, both
+        // valid): a circle that touches ±2^30 is allowed.
+        let reach = ceil_sqrt(start_sq);
         for (axis, name) in [(u, un), (v, vn)] {
             let c = center.get(axis) as i128;
             if c.abs() + reach > COORD_LIMIT as i128 {
@@ -358,9 +362,17 @@ mod tests {
             "turns: must be 0 to 1000000, got -1"
         );
         assert!(
-            e(r#"{"algorithm":"circle","from":[1073741824,0,0],"to":[1073741824,0,0],"center":[1073741820,0,0]}"#)
-                .starts_with("center: the circle of radius 4.000 around x = 1073741820 reaches past ±2^30")
+            e(r#"{"algorithm":"circle","from":[1073741816,0,0],"to":[1073741816,0,0],"center":[1073741821,0,0]}"#)
+                .starts_with("center: the circle of radius 5.000 around x = 1073741821 reaches past ±2^30")
         );
+        // A circle that touches the limit is within it: r = 4 about
+        // 2^30 - 4, and r = 2^30 about the origin (the largest there is).
+        for (from, center) in [("1073741824,0", "1073741820,0"), ("0,-1073741824", "0,0")] {
+            let request = format!(
+                r#"{{"algorithm":"circle","from":[{from},0],"to":[{from},0],"center":[{center},0]}}"#
+            );
+            assert!(spec(&request).is_ok(), "{request}");
+        }
     }
 
     #[test]
