@@ -107,6 +107,13 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       [{ sliceMs: Number.POSITIVE_INFINITY }, 'sliceMs'],
     ];
     for (const [options, field] of cases) expect((await rejection(runGcode('G1 X1 F100', MACHINE, any(options)))).field).toBe(field);
+    // A key it does not know, as the core's options (a misspelt onprogress ran without a report).
+    expect((await rejection(runGcode('G1 X1 F100', MACHINE, any({ onprogress: () => {} })))).message).toBe(
+      'onprogress: runGcode does not take this option (did you mean onProgress?)',
+    );
+    expect((await rejection(runGcode('G1 X1 F100', MACHINE, any({ slices: 5 })))).message).toBe(
+      'slices: runGcode does not take this option (it takes onProgress, signal, sliceMs)',
+    );
   });
 
   it('takes step indices only as whole numbers inside the trace ("step index 3..31 is outside 0..10" before)', async () => {

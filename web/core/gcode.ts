@@ -206,9 +206,22 @@ export interface RunGcodeOptions {
   sliceMs?: number;
 }
 
-/** The options of runGcode checked (each named when it is wrong); returns sliceMs. */
+/** The keys RunGcodeOptions has. */
+const RUN_OPTION_KEYS: readonly (keyof RunGcodeOptions)[] = ['onProgress', 'signal', 'sliceMs'];
+
+/**
+ * The options of runGcode checked (each named when it is wrong); returns
+ * sliceMs. A key runGcode does not know is refused, as the core refuses a
+ * trace's: a misspelt `onprogress` would otherwise run without a report.
+ */
 function checkRunOptions(options: unknown): number {
   if (typeof options !== 'object' || options === null) throw argumentError('options', `expected an object, got ${describeValue(options)}`);
+  for (const key of Object.keys(options)) {
+    if ((RUN_OPTION_KEYS as readonly string[]).includes(key)) continue;
+    const meant = RUN_OPTION_KEYS.find((known) => known.toLowerCase() === key.toLowerCase());
+    const hint = meant === undefined ? `it takes ${RUN_OPTION_KEYS.join(', ')}` : `did you mean ${meant}?`;
+    throw argumentError(key, `runGcode does not take this option (${hint})`);
+  }
   const { onProgress, signal, sliceMs = 20 } = options as Record<string, unknown>;
   optionalFunction('onProgress', onProgress);
   if (signal !== undefined && !(signal instanceof AbortSignal)) throw argumentError('signal', `expected an AbortSignal, got ${describeValue(signal)}`);
