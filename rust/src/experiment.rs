@@ -178,7 +178,7 @@ pub const OPTIONS: &[OptionSpec] = &[
         },
         required: false,
         default: Some("100"),
-        doc: "End coordinates are drawn uniformly from 0 to this (Wang: 100).",
+        doc: "End coordinates are drawn uniformly from 0 to this (Wang: 100), at most 10000.",
     },
     OptionSpec {
         name: "dims",
@@ -427,6 +427,19 @@ mod tests {
                 .to_string(),
             "count: must be 1 to 100000, got 0"
         );
+        // maxCoordinate's range, as its doc and the README state it.
+        for (max, ok) in [(0, false), (1, true), (10_000, true), (10_001, false)] {
+            let result = run(&format!(
+                r#"{{"algorithm":"regions","count":2,"maxCoordinate":{max}}}"#
+            ));
+            assert_eq!(result.is_ok(), ok, "{max}");
+            if let Err(e) = result {
+                assert_eq!(
+                    e.to_string(),
+                    format!("maxCoordinate: must be 1 to 10000, got {max}")
+                );
+            }
+        }
         assert_eq!(
             run(r#"{"algorithm":"regions","dims":2}"#)
                 .unwrap_err()
