@@ -706,7 +706,17 @@ impl Interpreter {
                 }
                 let radius = r.value * unit;
                 if radius.abs() < radius_tolerance_mm {
-                    return Err(Error::at(line, r.column, "zero-radius arc: R is 0"));
+                    let message = if radius == 0.0 {
+                        "zero-radius arc: R is 0".to_string()
+                    } else {
+                        // Not 0, but below the smallest radius an arc may have.
+                        format!(
+                            "zero-radius arc: |R| = {} is below the smallest radius, {} (LinuxCNC's, {RADIUS_TOLERANCE_INCH} in)",
+                            shown(radius.abs()),
+                            shown(radius_tolerance_mm)
+                        )
+                    };
+                    return Err(Error::at(line, r.column, message));
                 }
                 let (du, dv) = (to_mm[u] - from_mm[u], to_mm[v] - from_mm[v]);
                 let chord = du.hypot(dv);
@@ -891,6 +901,14 @@ mod tests {
         assert_eq!(
             e(&["G2 X10 Y0 I3 J0"]),
             "line 1, column 11: the arc's end is 7.0000 mm from its center but its start is 3.0000 mm: the radii differ by 4.0000 mm, more than the tolerance (0.0283 mm and 0.1% of the radius)"
+        );
+        assert_eq!(
+            e(&["G2 X10 Y0 R0"]),
+            "line 1, column 11: zero-radius arc: R is 0"
+        );
+        assert_eq!(
+            e(&["G2 X10 Y0 R-0.001"]),
+            "line 1, column 11: zero-radius arc: |R| = 0.0010 mm is below the smallest radius, 0.0013 mm (LinuxCNC's, 0.00005 in)"
         );
         assert_eq!(
             e(&["G2 X10 I0 J0"]),
