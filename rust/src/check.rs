@@ -552,28 +552,41 @@ fn is_number(cell: &str) -> bool {
 }
 
 /// Which header cells hold the coordinates: those named x, y, z, ...
-/// (any case), or the first `dims` when it names none, or names some only
-/// where they stand in that order (`x,y,z,w` for 4 axes, whose fourth is
-/// not called `a`). A header naming an axis elsewhere but not every axis
-/// (`k,x,y` for a 3-axis move) is refused: its first columns would read k
-/// as x.
+/// (any case), or the first `dims` when it names none. Past z an axis has
+/// no common name (a fourth is w, a or u), so one not named there is read
+/// in its own column when the axes before it are named in theirs
+/// (`x,y,z,w` for 4 axes, whose fourth is called `a`). Refused: a header
+/// that names some of x, y, z but not all (`k,x,y` or `x,y,w` for a 3-axis
+/// move: its columns would read k as x, or w as z), and one naming an axis
+/// twice (which of the two holds it?).
 fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, String> {
     let axes = &AXIS_NAMES[..dims];
-    let named: Vec<Option<usize>> = axes
-        .iter()
-        .map(|axis| {
-            header
-                .iter()
-                .position(|(_, c)| c.eq_ignore_ascii_case(axis))
-        })
-        .collect();
+    let columns_of = |axis: &str| -> Vec<usize> {
+        (0..header.len())
+            .filter(|&c| header[c].1.eq_ignore_ascii_case(axis))
+            .collect()
+    };
+    let mut named = Vec::with_capacity(dims);
+    for axis in axes {
+        match columns_of(axis)[..] {
+            [] => named.push(None),
+            [column] => named.push(Some(column)),
+            [first, second, ..] => {
+                return Err(format!(
+                    "the header names {axis} twice, in columns {} and {}",
+                    first + 1,
+                    second + 1
+                ));
+            }
+        }
+    }
     if named.iter().all(Option::is_some) {
         return Ok(named.into_iter().flatten().collect());
     }
-    let in_place = named
-        .iter()
-        .enumerate()
-        .all(|(axis, at)| at.is_none_or(|c| c == axis));
+    let in_place = named.iter().enumerate().all(|(axis, at)| match at {
+        Some(column) => *column == axis,
+        None => axis >= 3,
+    });
     if named.iter().any(Option::is_some) && !in_place {
         let missing: Vec<&str> = axes
             .iter()
@@ -592,8 +605,9 @@ fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, S
         return Ok((0..dims).collect());
     }
     Err(format!(
-        "the header names neither {} nor {} columns",
+        "the header names none of {} and has {} columns, fewer than the move's {} axes",
         axes.join(", "),
+        header.len(),
         dims
     ))
 }
@@ -1580,8 +1594,26 @@ mod tests {
             e("k,x,y\n0,5,5\n"),
             "line 1, column 1: the header has no z column; the move has 3 axes (x, y, z)"
         );
-        // Names in their own columns are read in place: x, y, z, w for 4 axes
-        // (the fourth axis is called a) was refused for its missing a.
+        // x, y and a third column for 3 axes: w is not z.
+        assert_eq!(
+            e("x,y,w\n0,0,9\n"),
+            "line 1, column 1: the header has no z column; the move has 3 axes (x, y, z)"
+        );
+        assert_eq!(
+            e("x,y\n0,0\n"),
+            "line 1, column 1: the header has no z column; the move has 3 axes (x, y, z)"
+        );
+        assert_eq!(
+            e("x,x,y,z\n0,1,0,0\n"),
+            "line 1, column 1: the header names x twice, in columns 1 and 2"
+        );
+        assert_eq!(
+            e("a,b\n0,0\n"),
+            "line 1, column 1: the header names none of x, y, z and has 2 columns, fewer than the move's 3 axes"
+        );
+        // Names in their own columns are read in place past z: x, y, z, w
+        // for 4 axes (the fourth axis is called a) was refused for its
+        // missing a.
         assert_eq!(
             Points::from_text("x,y,z,w\n1,2,3,4\n", 4).unwrap().coords,
             vec![1, 2, 3, 4]
