@@ -12,6 +12,7 @@ import {
   defaultAlgorithm,
   defaultOther,
   defaultState,
+  experimentAlgorithm,
   offeredAlgorithms,
   sharedOptionSpecs,
   traceOptions,
@@ -114,9 +115,11 @@ describe('page state in the URL query', () => {
     // One naming the first algorithm again gets its partner too, as the picker gives.
     expect(stateFromQuery('mode=compare&algorithm=regions&other=regions', catalogue)!.other).toBe('greedy');
     expect(stateFromQuery('mode=compare&algorithm=circle&other=circle', catalogue)!.other).toBe('arc-segments');
-    // random-lines traces lines: an arc algorithm in its link gives way to the default one.
-    expect(stateFromQuery('mode=experiment&algorithm=circle', catalogue)!.algorithm).toBe('regions');
-    expect(stateFromQuery('mode=experiment&algorithm=dda', catalogue)!.algorithm).toBe('dda');
+    // random-lines traces lines: with an arc algorithm the experiment runs
+    // the default one, and the arc stays the state's, for Trace to come back to.
+    const arcLink = stateFromQuery('mode=experiment&algorithm=circle', catalogue)!;
+    expect([arcLink.algorithm, experimentAlgorithm(arcLink, catalogue).id]).toEqual(['circle', 'regions']);
+    expect(experimentAlgorithm(stateFromQuery('mode=experiment&algorithm=dda', catalogue)!, catalogue).id).toBe('dda');
     expect(offeredAlgorithms('experiment', catalogue).map((a) => a.family)).not.toContain('arc');
     expect(offeredAlgorithms('trace', catalogue)).toEqual(catalogue.algorithms);
     // Every algorithm's default partner is one it can be compared with, and another algorithm; none is comparable with itself.

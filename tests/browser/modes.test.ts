@@ -588,19 +588,22 @@ describe('experiment mode', () => {
     await p.close();
   });
 
-  it('offers only the line algorithms it can trace, and enters with the default one from an arc', async () => {
-    const p = await openPage('?algorithm=circle');
+  it('offers only the line algorithms it can trace, and enters with the default one from an arc, which is there on the way back', async () => {
+    const p = await openPage('?algorithm=circle&from=9,0,0&to=0,9,0&center=0,0,0');
     const { page } = p;
-    await steps(page, 7);
+    await page.getByTestId('trace-status').filter({ hasText: 'to (0, 9, 0)' }).waitFor();
     await page.getByTestId('mode-experiment').click();
     await page.getByTestId('trace-status').filter({ hasText: '100 lines traced with regions.' }).waitFor();
     const offered = await page.getByTestId('algorithm').locator('option').evaluateAll((options) => options.map((o) => (o as HTMLOptionElement).value));
     expect(offered).toContain('greedy');
     expect(offered).not.toContain('circle');
     expect(await text(page, 'form-error')).toBe('');
-    // Back in trace mode every algorithm is offered again.
+    // Back in trace mode every algorithm is offered again, and the circle
+    // and its move are back (they were regions' (0,0,0)->(10,7,6)).
     await page.getByTestId('mode-trace').click();
     await expect.poll(() => page.getByTestId('algorithm').locator('option[value=circle]').count()).toBe(1);
+    expect(await page.getByTestId('algorithm').inputValue()).toBe('circle');
+    await page.getByTestId('trace-status').filter({ hasText: 'to (0, 9, 0)' }).waitFor();
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -249,6 +249,43 @@ describe('the page', () => {
     await p.close();
   });
 
+  it("keeps each mode's input over a reload in another mode (a permalink holds only its own mode's)", async () => {
+    const p = await openPage(EXAMPLE);
+    const { page } = p;
+    await traced(page, 10);
+    await page.getByTestId('input-to-y').fill('9');
+    await page.getByTestId('trace-status').filter({ hasText: 'to (10, 9, 6)' }).waitFor();
+    await page.getByTestId('mode-gcode').click();
+    const program = 'G21 G90\nG1 X3 Y4 F600\nG1 X7\n';
+    await page.getByTestId('gcode-text').fill(program);
+    await page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    // Reloaded in Trace mode, the program is still the one typed...
+    await page.getByTestId('mode-trace').click();
+    await page.waitForURL(/mode=trace/);
+    await page.reload();
+    await traced(page, 10);
+    expect(await page.getByTestId('input-to-y').inputValue()).toBe('9');
+    await page.getByTestId('mode-gcode').click();
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toBe(program);
+    await page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    // ...and reloaded in G-code mode (and on a new visit), the move is.
+    await page.waitForURL(/mode=gcode/);
+    await page.reload();
+    await page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    await page.goto(siteUrl());
+    await page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    await page.getByTestId('mode-trace').click();
+    await traced(page, 10);
+    expect(await page.getByTestId('input-to-y').inputValue()).toBe('9');
+    // A link describes its own mode; the reader's program stays theirs.
+    await page.goto(`${siteUrl()}?mode=trace&from=1,1,1&to=4,2,3`);
+    await traced(page, 3);
+    await page.getByTestId('mode-gcode').click();
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toBe(program);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("saves the README screenshot of the G-code mode: the square sample at step 2000, line 5's", async () => {
     // 1600 steps a side (20 mm at 80 steps/mm): steps 1601..3200 are line 5's (Y20).
     const p = await openPage('?mode=gcode&stepsPerMm=80&step=2000');

@@ -7,7 +7,7 @@
  *   on screen, at the address the page is served from, ready to copy.
  * Both links are the permalink (state/query.ts) of the state as it is.
  */
-import { type AppState, tracedAlgorithms, type Catalogue } from '../state/app-state.js';
+import { type AppState, tracedAlgorithms, type Catalogue, experimentAlgorithm } from '../state/app-state.js';
 import { GCODE_URL_LIMIT, stateToQuery } from '../state/query.js';
 import type { Store } from '../state/store.js';
 import { formatPoint } from '../format.js';
@@ -57,7 +57,7 @@ function frameTitle(state: AppState, catalogue: Catalogue): string {
     case 'gcode':
       return 'A G-code program stepped on a grid (voxpath)';
     case 'experiment':
-      return `Random lines traced by ${names[0]} (voxpath)`;
+      return `Random lines traced by ${experimentAlgorithm(state, catalogue).title} (voxpath)`;
   }
 }
 

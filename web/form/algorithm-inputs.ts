@@ -18,6 +18,7 @@ import {
   defaultOptions,
   defaultOther,
   defaultProjection,
+  experimentAlgorithm,
   offeredAlgorithms,
   sharedOptionSpecs,
   tracedAlgorithms,
@@ -96,26 +97,25 @@ export class AlgorithmInputs {
    * one; else it becomes the default partner of `id`, so that no mode is left
    * comparing a circle with a line, or an algorithm with itself.
    */
-  #pickAlgorithm(id: string, mode: Mode = this.#store.state.mode): void {
-    const state = { ...this.#store.state, mode };
+  #pickAlgorithm(id: string): void {
+    const state = this.#store.state;
     const { algorithms } = this.#catalogue;
     const info = algorithms.find((a) => a.id === id) ?? defaultAlgorithm(algorithms);
     const keep = comparableWith(info, algorithms).some((a) => a.id === state.other);
     const other = keep ? state.other : defaultOther(info, algorithms).id;
     const next = tracedAlgorithms({ ...state, algorithm: info.id, other }, algorithms);
     const options = carriedOptions(next, state.options, false);
-    this.#store.update({ mode, algorithm: info.id, other, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(next, options)) });
+    this.#store.update({ algorithm: info.id, other, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(next, options)) });
   }
 
   /**
-   * Switches to `mode`. The experiment traces lines only: entering it with an
-   * arc algorithm picks the default line algorithm, rather than offer one
-   * that cannot run.
+   * Switches to `mode`, the algorithm and its move kept as they are. The
+   * experiment traces lines only: entered with an arc algorithm it runs its
+   * default line algorithm (experimentAlgorithm), and the arc is still there
+   * on the way back.
    */
   switchMode(mode: Mode): void {
-    const offered = offeredAlgorithms(mode, this.#catalogue);
-    if (offered.some((a) => a.id === this.#store.state.algorithm)) this.#store.update({ mode, pointIndex: 0, camera: null });
-    else this.#pickAlgorithm(defaultAlgorithm(offered).id, mode);
+    this.#store.update({ mode, pointIndex: 0, camera: null });
   }
 
   #pickOther(id: string): void {
@@ -141,7 +141,7 @@ export class AlgorithmInputs {
   render(): void {
     const state = this.#store.state;
     const e = this.#e;
-    const infos = tracedAlgorithms(state, this.#catalogue.algorithms);
+    const infos = state.mode === 'experiment' ? [experimentAlgorithm(state, this.#catalogue)] : tracedAlgorithms(state, this.#catalogue.algorithms);
     const info = infos[0]!;
     const offered = offeredAlgorithms(state.mode, this.#catalogue);
     if (e.algorithm.options.length !== offered.length) {

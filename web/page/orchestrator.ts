@@ -30,7 +30,7 @@ import type { Inspector } from '../inspector/inspector.js';
 import { PointDetails } from '../inspector/point-details.js';
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
-import { type AppState, type Catalogue, type Mode, tracedAlgorithms, traceOptions } from '../state/app-state.js';
+import { type AppState, type Catalogue, type Mode, experimentAlgorithm, tracedAlgorithms, traceOptions } from '../state/app-state.js';
 import { markStale } from '../state/stale.js';
 import type { Store } from '../state/store.js';
 import type { StepReason } from '../timeline/step-reason.js';
@@ -263,7 +263,7 @@ export class Orchestrator {
         this.#running = started;
         next = { program: await started.result };
       } else {
-        next = { experiment: await p.client.randomLines({ algorithm: state.algorithm, ...state.experiment }) };
+        next = { experiment: await p.client.randomLines({ algorithm: experimentAlgorithm(state, p.catalogue).id, ...state.experiment }) };
       }
       if (run !== this.#latestRun) {
         for (const t of [next.a, next.b, next.program]) t?.free();

@@ -126,6 +126,17 @@ export function offeredAlgorithms(mode: Mode, catalogue: Catalogue): AlgorithmIn
 }
 
 /**
+ * The algorithm experiment mode runs: the state's, when the experiment
+ * traces its family, else the experiment's default. An arc left in the
+ * state stays there for Trace and Compare to come back to (entering the
+ * experiment replaced it, and the move typed for it, with regions').
+ */
+export function experimentAlgorithm(state: AppState, catalogue: Catalogue): AlgorithmInfo {
+  const offered = offeredAlgorithms('experiment', catalogue);
+  return offered.find((a) => a.id === state.algorithm) ?? defaultAlgorithm(offered);
+}
+
+/**
  * Algorithms that can be compared with `info`: the others of its family that
  * take an axis count of the page it takes (an algorithm against itself draws
  * one path twice).

@@ -3,7 +3,7 @@
  * query format of state/query.ts, so nothing a user typed is lost on reload.
  * On load a URL describing a state wins over localStorage.
  */
-import { type AppState, type Catalogue, defaultAlgorithm, defaultState } from './app-state.js';
+import { type AppState, type Catalogue, comparableWith, defaultAlgorithm, defaultState } from './app-state.js';
 import { GCODE_URL_LIMIT, stateFromQuery, stateToQuery } from './query.js';
 import type { Store } from './store.js';
 
@@ -27,25 +27,102 @@ export function storage(): Storage | undefined {
 
 /**
  * The state to start from: the URL's, else the last visit's, else the
- * defaults. A program or a learner's points too long for the URL come from
- * localStorage, which keeps them whole, so the text typed survives a reload.
+ * defaults. The parts of the page the URL does not describe (another mode's
+ * move, program, machine or experiment; a program or a learner's points too
+ * long for a link) come from the last visit, kept whole in localStorage, so
+ * what was typed anywhere survives a reload.
  */
 export function loadState(catalogue: Catalogue): AppState {
-  const stored = stateFromQuery(storage()?.getItem(STORAGE_KEY) ?? '', catalogue);
+  const stored = storedState(catalogue);
   return linkedState(catalogue, stored) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
 }
 
 /**
- * The address's state, if it describes one, with the program and the
- * learner's points it leaves out (too long for a URL) taken from `typed`:
- * the texts as typed, kept whole elsewhere.
+ * What localStorage keeps: the permalink of what is shown (the mode, the
+ * view, the step), and one of each mode for the part of the page it holds:
+ * trace (the algorithm, its move, the learner's points), compare (the
+ * second algorithm and the layout), gcode (the program and the machine),
+ * experiment (its options). A permalink holds only its own mode's keys, so
+ * one alone lost every other mode's input on a reload. The program and the
+ * points are written once, in their parts, never in `shown`.
  */
+interface StoredParts {
+  shown: string;
+  trace: string;
+  compare: string;
+  gcode: string;
+  experiment: string;
+}
+
+function storedText(state: AppState): string {
+  const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: Infinity });
+  const parts: StoredParts = {
+    shown: stateToQuery(state, { gcodeLimit: 0 }),
+    trace: part('trace'),
+    compare: part('compare'),
+    gcode: part('gcode'),
+    experiment: part('experiment'),
+  };
+  return JSON.stringify(parts);
+}
+
+/**
+ * The last visit's state, or undefined when there is none (or it cannot be
+ * read). A visit from before the parts were kept stored one permalink.
+ */
+function storedState(catalogue: Catalogue): AppState | undefined {
+  const text = storage()?.getItem(STORAGE_KEY) ?? '';
+  let parts: Partial<StoredParts>;
+  try {
+    parts = JSON.parse(text) as Partial<StoredParts>;
+  } catch {
+    return stateFromQuery(text, catalogue);
+  }
+  const read = (query: unknown) => (typeof query === 'string' ? stateFromQuery(query, catalogue) : undefined);
+  const shown = read(parts.shown);
+  const [trace, compare, gcode, experiment] = [read(parts.trace), read(parts.compare), read(parts.gcode), read(parts.experiment)];
+  if (!shown || !trace || !compare || !gcode || !experiment) return shown;
+  const typed: AppState = {
+    ...trace,
+    other: compare.other,
+    layout: compare.layout,
+    gcode: gcode.gcode,
+    machine: gcode.machine,
+    slowdown: gcode.slowdown,
+    experiment: experiment.experiment,
+  };
+  return withOtherModes(catalogue, shown, new URLSearchParams(parts.shown), typed);
+}
+
+/**
+ * `described`, the state a query describes, with what it leaves out taken
+ * from `typed`: the parts of the page that belong to other modes than its
+ * own, and a program or points it does not carry. The algorithm and its move
+ * are the query's in Trace, Compare and Experiment mode (an experiment's
+ * `algorithm` is its own); a G-code link names none, so they are typed's.
+ */
+function withOtherModes(catalogue: Catalogue, described: AppState, params: URLSearchParams, typed: AppState): AppState {
+  const state = { ...described };
+  if (!params.has('gcode')) state.gcode = typed.gcode;
+  if (!params.has('points')) state.learnerPoints = typed.learnerPoints;
+  if (state.mode !== 'gcode') Object.assign(state, { machine: typed.machine, slowdown: typed.slowdown });
+  if (state.mode !== 'experiment') state.experiment = typed.experiment;
+  if (state.mode === 'gcode' || (state.mode === 'experiment' && typed.algorithm === state.algorithm)) {
+    Object.assign(state, { algorithm: typed.algorithm, options: typed.options });
+  }
+  if (state.mode !== 'compare') {
+    const info = catalogue.algorithms.find((a) => a.id === state.algorithm);
+    if (info && comparableWith(info, catalogue.algorithms).some((a) => a.id === typed.other)) state.other = typed.other;
+    state.layout = typed.layout;
+  }
+  return state;
+}
+
+/** The address's state, if it describes one, with what it leaves out taken from `typed` (withOtherModes). */
 function linkedState(catalogue: Catalogue, typed: AppState | undefined): AppState | undefined {
   const linked = stateFromQuery(window.location.search, catalogue);
-  const params = new URLSearchParams(window.location.search);
-  if (linked && typed && !params.has('gcode')) linked.gcode = typed.gcode;
-  if (linked && typed && !params.has('points')) linked.learnerPoints = typed.learnerPoints;
-  return linked;
+  if (!linked || !typed) return linked;
+  return withOtherModes(catalogue, linked, new URLSearchParams(window.location.search), typed);
 }
 
 /** The page's address for `state`: the permalink. */
@@ -58,7 +135,7 @@ function write(state: AppState): void {
   // An embedded view (say in a course page) must not replace the reader's own last visit.
   if (state.embed) return;
   try {
-    storage()?.setItem(STORAGE_KEY, stateToQuery(state, { gcodeLimit: Infinity }));
+    storage()?.setItem(STORAGE_KEY, storedText(state));
   } catch {
     // Storage full or blocked: the URL still holds the state.
   }

@@ -40,7 +40,6 @@ import {
   defaultState,
   axisCount,
   machineSpecs,
-  offeredAlgorithms,
   randomLinesExperiment,
   sharedOptionSpecs,
   tracedAlgorithms,
@@ -157,10 +156,10 @@ export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowd
 /**
  * The state a query describes, or undefined when it has none of the state's
  * keys. Keys it lacks, or whose text is unusable, take their defaults: a link
- * shows what its sender saw, not a mix with the reader's last visit. Without
- * `algorithm` (or with an id the mode does not offer) it is the default
- * algorithm; an `other` that cannot be compared with it gives way to its
- * default partner.
+ * shows what its sender saw, not a mix with the reader's last visit (the
+ * parts of other modes aside: see persist.ts). Without `algorithm` (or with
+ * an id the catalogue does not have) it is the default algorithm; an
+ * `other` that cannot be compared with it gives way to its default partner.
  */
 export function stateFromQuery(query: string, catalogue: Catalogue): AppState | undefined {
   const params = new URLSearchParams(query);
@@ -168,8 +167,9 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   const optionNames = algorithms.flatMap((a) => a.options.map((o) => o.name));
   if (![...STATE_KEYS, ...optionNames].some((k) => params.has(k))) return undefined;
   const mode = MODES.find((m) => m === params.get('mode')) ?? 'trace';
-  const offered = offeredAlgorithms(mode, catalogue);
-  const info = offered.find((a) => a.id === params.get('algorithm')) ?? defaultAlgorithm(offered);
+  // Any algorithm in any mode: experiment mode runs a line algorithm of its
+  // own choosing (experimentAlgorithm) when this one is an arc.
+  const info = algorithms.find((a) => a.id === params.get('algorithm')) ?? defaultAlgorithm(algorithms);
   const state = defaultState(info, algorithms);
   state.mode = mode;
   // Only an algorithm that can be compared with the first one (else the default partner).
