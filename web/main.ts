@@ -214,6 +214,7 @@ function run(catalogue: Catalogue): void {
     experimentPanel: new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue),
     stepReason: new StepReason(byId('step-reason', HTMLParagraphElement)),
     staleNote: byId('stale-note', HTMLParagraphElement),
+    embedProblem: byId('embed-problem', HTMLParagraphElement),
     inspectorHeading: byId('inspector-heading', HTMLHeadingElement),
   });
   orchestrator = page;

@@ -610,6 +610,30 @@ describe('experiment mode', () => {
 });
 
 describe('embedded', () => {
+  it("says over the view why a link's input was not traced, as the hidden inputs would (a blank or white frame before)", async () => {
+    const cases: [string, string][] = [
+      ['?mode=trace&algorithm=regions&from=0,0,0&to=1073741825,0,0&embed=1', 'Not traced: to: x = 1073741825 is outside ±2^30'],
+      ['?mode=experiment&count=0&embed=1', 'Not traced: count: must be 1 to 100000, got 0'],
+      ['?mode=gcode&gcode=G21%0AG1%20X5%20Y%0A&embed=1', 'The program stopped at line 2, column 7: '],
+    ];
+    for (const [query, said] of cases) {
+      const p = await openPage(query);
+      const { page } = p;
+      await page.setViewportSize({ width: 600, height: 400 });
+      const problem = page.getByTestId('embed-problem');
+      await problem.filter({ hasText: said }).waitFor();
+      expect(await problem.isVisible()).toBe(true);
+      expect(await page.getByTestId('stale-note').isVisible()).toBe(false);
+      await p.close();
+    }
+    // A link that traces says nothing there.
+    const p = await openPage('?embed=1&from=0,0,0&to=10,7,6');
+    await steps(p.page, 10);
+    expect(await p.page.getByTestId('embed-problem').isVisible()).toBe(false);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('shows only the view and the playback, filling its frame, and plays', async () => {
     const p = await openPage('?embed=1&from=0,0,0&to=10,7,6');
     const { page } = p;

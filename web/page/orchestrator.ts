@@ -24,6 +24,7 @@ import type { StepDetail, TraceOptions } from '../core/types.js';
 import type { ExperimentPanel } from '../experiment/experiment-panel.js';
 import type { AlgorithmInputs } from '../form/algorithm-inputs.js';
 import { INPUTS_VALIDITY, type InputsValidity, type OptionsForm } from '../form/options-form.js';
+import { diagnosticText, pathLimitAdvice } from '../form/page-advice.js';
 import type { GcodePanel } from '../gcode/gcode-panel.js';
 import type { TimingDiagram } from '../gcode/timing-diagram.js';
 import type { Inspector } from '../inspector/inspector.js';
@@ -89,6 +90,8 @@ export interface PageParts {
   stepReason: StepReason;
   /** Says when the results on screen are not of the inputs shown. */
   staleNote: HTMLElement;
+  /** Embedded (the inputs hidden): what the core refused, or where a program stopped. */
+  embedProblem: HTMLElement;
   inspectorHeading: HTMLElement;
 }
 
@@ -283,6 +286,8 @@ export class Orchestrator {
       if (next.experiment) p.experimentPanel.show(next.experiment);
       else this.#present();
       p.status.shown(next);
+      const stop = next.program?.program.errors[0];
+      p.embedProblem.textContent = stop ? `The program stopped at line ${stop.line}, column ${stop.column}: ${diagnosticText(stop)}` : '';
       void this.#check();
     } catch (error) {
       if (run !== this.#latestRun || error instanceof CoreCrash) return;
@@ -296,9 +301,12 @@ export class Orchestrator {
         else if (state.mode === 'experiment') p.experimentForm.showCoreError(error);
         else p.inputs.showCoreError(error);
         p.status.rejected(this.#shown.a !== undefined || this.#shown.program !== undefined);
+        const pathLimit = error.limit && (state.mode === 'trace' || state.mode === 'compare');
+        p.embedProblem.textContent = `Not traced: ${error.field ? `${error.field}: ` : ''}${pathLimit ? pathLimitAdvice(error.limit!) : error.message}`;
       } else {
         console.error(error);
         p.status.bug(error);
+        p.embedProblem.textContent = `Not traced, because of a bug in voxpath: ${String(error)}`;
       }
     } finally {
       if (run === this.#latestRun) {
