@@ -194,6 +194,12 @@ function run(catalogue: Catalogue): void {
     },
   );
 
+  const exports = wireExports(
+    { csv: byId('export-csv', HTMLButtonElement), json: byId('export-json', HTMLButtonElement), png: byId('export-png', HTMLButtonElement) },
+    () => page.shown,
+    pathViews,
+    () => (store.state.mode === 'gcode' ? 'program' : store.state.algorithm),
+  );
   const page = new Orchestrator({
     client,
     catalogue,
@@ -215,16 +221,12 @@ function run(catalogue: Catalogue): void {
     stepReason: new StepReason(byId('step-reason', HTMLParagraphElement)),
     staleNote: byId('stale-note', HTMLParagraphElement),
     embedProblem: byId('embed-problem', HTMLParagraphElement),
+    exports,
     inspectorHeading: byId('inspector-heading', HTMLHeadingElement),
   });
   orchestrator = page;
+  exports.refresh();
 
-  wireExports(
-    { csv: byId('export-csv', HTMLButtonElement), json: byId('export-json', HTMLButtonElement), png: byId('export-png', HTMLButtonElement) },
-    () => page.shown,
-    pathViews,
-    () => (store.state.mode === 'gcode' ? 'program' : store.state.algorithm),
-  );
   wireHelp(byId('help', HTMLDialogElement), byId('help-open', HTMLButtonElement));
   store.subscribe((state, previous) => page.stateChanged(state, previous));
   void page.retrace();

@@ -295,6 +295,32 @@ describe('trace mode', () => {
     await p.close();
   });
 
+  it('exports only what was traced from the inputs shown, and says why not in the buttons (a click did nothing, or saved the last path)', async () => {
+    const p = await openPage('?from=0,0,0&to=1073741825,0,0');
+    const { page } = p;
+    const buttons = ['export-csv', 'export-json', 'export-png'].map((id) => page.getByTestId(id));
+    await page.getByTestId('error-to').filter({ hasText: 'outside ±2^30' }).waitFor();
+    for (const button of buttons) {
+      await expect.poll(() => button.isDisabled()).toBe(true);
+      expect(await button.getAttribute('title')).toMatch(/^Nothing to export: nothing was traced/);
+    }
+    await page.getByTestId('input-to-x').fill('10');
+    await steps(page, 10);
+    for (const button of buttons) {
+      await expect.poll(() => button.isDisabled()).toBe(false);
+      expect(await button.getAttribute('title')).toBeNull();
+    }
+    // Refused by the core over a traced path: the path stays, dimmed, and is not exported as the inputs'.
+    await page.getByTestId('input-to-x').fill('12.5');
+    await page.getByTestId('stale-note').filter({ hasText: 'Out of date' }).waitFor();
+    for (const button of buttons) {
+      await expect.poll(() => button.isDisabled()).toBe(true);
+      expect(await button.getAttribute('title')).toMatch(/^Not exported: what is shown is out of date/);
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('restores a permalink exactly: algorithm, move, step, camera and view', async () => {
     const p = await openPage('?algorithm=bresenham3d&from=0,0,0&to=10,7,6');
     const { page } = p;

@@ -32,11 +32,30 @@ function exported(shown: Shown): [RemoteTrace, string][] {
   return [shown.a, shown.b].filter((t) => t !== undefined).map((t) => [t, t.algorithm]);
 }
 
+/** The export buttons' state, kept by the page as what it shows changes. */
+export interface Exports {
+  /**
+   * Enables the exports when what is on screen was traced from the inputs
+   * shown; else disables them and says why in their tooltips. A button that
+   * did nothing when nothing was traced, or saved the last path traced when
+   * the inputs had been refused since (dimmed and marked out of date on
+   * screen, but not in the file), said nothing of either.
+   */
+  refresh(): void;
+}
+
+/** Why nothing can be exported now, or undefined when what is shown can. */
+function notExportable(shown: Shown): string | undefined {
+  if (!shown.a && !shown.program && !shown.experiment) return 'Nothing to export: nothing was traced (see the message by the inputs).';
+  if (document.body.dataset.stale !== undefined) return 'Not exported: what is shown is out of date with the inputs (see the message by them).';
+  return undefined;
+}
+
 /**
  * Wires the export buttons: `shown` says what is on screen when one is
  * pressed, `view` draws the PNG, `viewName` names it.
  */
-export function wireExports(buttons: ExportButtons, shown: () => Shown, view: { toPng(): Promise<Blob> }, viewName: () => string): void {
+export function wireExports(buttons: ExportButtons, shown: () => Shown, view: { toPng(): Promise<Blob> }, viewName: () => string): Exports {
   buttons.csv.addEventListener('click', async () => {
     const { experiment } = shown();
     if (experiment) return download(`random-lines-${experiment.algorithm}.csv`, new Blob([randomLinesToCsv(experiment)], { type: 'text/csv' }));
@@ -48,4 +67,14 @@ export function wireExports(buttons: ExportButtons, shown: () => Shown, view: { 
   buttons.png.addEventListener('click', async () => {
     download(`${viewName()}-view.png`, await view.toPng());
   });
+  return {
+    refresh() {
+      const why = notExportable(shown());
+      for (const button of [buttons.csv, buttons.json, buttons.png]) {
+        button.disabled = why !== undefined;
+        if (why === undefined) button.removeAttribute('title');
+        else button.title = why;
+      }
+    },
+  };
 }

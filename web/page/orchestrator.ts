@@ -40,6 +40,7 @@ import type { Timeline } from '../timeline/timeline.js';
 import { Cancelled, CoreCrash, InputRejected, type RemoteProgram, type Running, type TraceClient } from '../worker/client.js';
 import type { LearnerCheck, LineSteps } from '../worker/protocol.js';
 import { hideAlert, showAlert } from './alert.js';
+import type { Exports } from './export.js';
 import type { ModeTabs } from './mode-tabs.js';
 import type { PathViews } from './path-views.js';
 import { mainTrace, type Shown } from './shown.js';
@@ -92,6 +93,8 @@ export interface PageParts {
   staleNote: HTMLElement;
   /** Embedded (the inputs hidden): what the core refused, or where a program stopped. */
   embedProblem: HTMLElement;
+  /** The export buttons, enabled only for what was traced from the inputs shown. */
+  exports: Exports;
   inspectorHeading: HTMLElement;
 }
 
@@ -135,6 +138,7 @@ export class Orchestrator {
       const [refused, shown] = [this.#refusedHere(), Object.keys(this.#shown).length > 0];
       if (refused && shown) markStale(parts.staleNote, 'rejected');
       else if (!refused && !this.#rejected && document.body.dataset.stale === 'rejected') markStale(parts.staleNote, undefined);
+      parts.exports.refresh();
     });
     this.#details = new PointDetails(
       (detail: StepDetail) => {
@@ -312,6 +316,7 @@ export class Orchestrator {
       if (run === this.#latestRun) {
         this.#running = undefined;
         p.gcodePanel.setProgress(undefined);
+        p.exports.refresh();
       }
     }
   }
