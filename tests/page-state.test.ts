@@ -131,6 +131,14 @@ describe('page state in the URL query', () => {
     }
   });
 
+  it("fits a link's points to the axes the page shows (nd in 4D was traced in 4D behind 3 fields)", () => {
+    expect(stateFromQuery('mode=trace&algorithm=nd&from=0,0,0,0&to=10,7,6,3', catalogue)!.options).toMatchObject({ from: [0, 0, 0], to: [10, 7, 6] });
+    // Points of two counts: the count of from, where the page shows it.
+    expect(stateFromQuery('algorithm=nd&from=1,2&to=10,7,6,3', catalogue)!.options).toMatchObject({ from: [1, 2], to: [10, 7] });
+    // Points the page shows are left alone.
+    expect(stateFromQuery('algorithm=greedy&from=1,2&to=8,3', catalogue)!.options).toMatchObject({ from: [1, 2], to: [8, 3] });
+  });
+
   it('leaves the options the page sets itself to the page', () => {
     const state = stateFromQuery('from=0,0,0&to=1,1,1&maxSteps=5', catalogue)!;
     expect(state.options).not.toHaveProperty('maxSteps');

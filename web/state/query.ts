@@ -43,6 +43,7 @@ import {
   randomLinesExperiment,
   sharedOptionSpecs,
   tracedAlgorithms,
+  withAxes,
 } from './app-state.js';
 
 /**
@@ -179,6 +180,12 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
 
   const infos = tracedAlgorithms(state, algorithms);
   state.options = readOptions(params, sharedOptionSpecs(infos), defaultOptions(infos));
+  // The page shows 2 or 3 axes (axisCount): points of another count (nd's
+  // from=0,0,0,0) are fitted to the axes its form shows, as the axis control
+  // fits them, rather than traced in 4D behind 3 fields (the axes' hint
+  // says the CLI and the API take them all).
+  const axes = axisCount(infos, state.options);
+  if (Object.values(state.options).some((v) => Array.isArray(v) && v.length !== axes)) state.options = withAxes(state.options, axes);
   // A link that names any drive setting names all it uses: a cleared steps/mm (to use the motor's) stays cleared.
   if (DRIVE_KEYS.some((k) => params.has(k))) delete state.machine.stepsPerMm;
   state.machine = readOptions(params, machineSpecs(catalogue), state.machine);
