@@ -57,6 +57,9 @@ describe('voxpath trace', () => {
     [['frobnicate'], /^voxpath: unknown command 'frobnicate'/],
     [['algorithms', '--format', 'json'], /^voxpath: algorithms takes no arguments, got '--format' 'json'/],
     [['experiment', 'random-lines', '--from', '1,1,1'], /^voxpath: unknown flag --from for random-lines with regions/],
+    // What the user typed is quoted by its start when long (a 100 KB flag was said back whole).
+    [[...TRACE, `--${'x'.repeat(100_000)}`, '1'], /^voxpath: unknown flag --xxxxxxxxxxxxxx\.\.\. \(100002 characters\) for regions \(it takes/],
+    [['trace', '--algorithm', 'y'.repeat(100_000), '--from', '0,0,0', '--to', '1,1,1'], /^voxpath: --algorithm: unknown algorithm 'y{16}\.\.\. \(100000 characters\)' \(known: /],
   ])('rejects %j with a one-line error and usage, exit 2', (args, message) => {
     const r = voxpath(args);
     expect(r.code).toBe(2);

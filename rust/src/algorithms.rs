@@ -33,7 +33,11 @@ pub fn find(id: &str) -> Result<&'static AlgorithmInfo, Error> {
             let ids: Vec<&str> = ALGORITHMS.iter().map(|a| a.id).collect();
             Error::field(
                 "algorithm",
-                format!("unknown algorithm '{id}' (known: {})", ids.join(", ")),
+                format!(
+                    "unknown algorithm '{}' (known: {})",
+                    crate::text::echo(id),
+                    ids.join(", ")
+                ),
             )
         })
 }

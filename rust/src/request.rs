@@ -4,6 +4,7 @@
 
 use crate::error::Error;
 use crate::grid::{Point, Step};
+use crate::text::echo;
 use serde::Serialize;
 use serde_json::{Map, Value};
 use std::sync::Arc;
@@ -52,7 +53,7 @@ impl TiePolicy {
             "hold" => Ok(TiePolicy::Hold),
             other => Err(Error::field(
                 "tie",
-                format!("expected 'advance' or 'hold', got '{other}'"),
+                format!("expected 'advance' or 'hold', got '{}'", echo(other)),
             )),
         }
     }
@@ -207,7 +208,7 @@ impl Request {
             Some(other) => {
                 return Err(Error::field(
                     "algorithm",
-                    format!("expected a name, got {other}"),
+                    format!("expected a name, got {}", shown(&other)),
                 ));
             }
             None => return Err(Error::field("algorithm", "missing (for example 'regions')")),
@@ -224,8 +225,10 @@ impl Request {
         for name in self.options.keys() {
             if !accepted.iter().any(|o| o.name == name) {
                 let names: Vec<&str> = accepted.iter().map(|o| o.name).collect();
+                // The name as a message quotes it: a megabyte-long key is
+                // named by its start.
                 return Err(Error::field(
-                    name,
+                    &echo(name),
                     format!(
                         "{} does not take this option (it takes {})",
                         self.algorithm,
@@ -292,7 +295,7 @@ impl Request {
         let Value::Array(items) = value else {
             return Err(Error::field(
                 name,
-                format!("expected a list of coordinates, got {value}"),
+                format!("expected a list of coordinates, got {}", shown(value)),
             ));
         };
         let mut coords = Vec::with_capacity(items.len());
@@ -303,7 +306,7 @@ impl Request {
                     let axis_name = crate::grid::AXIS_NAMES.get(axis).unwrap_or(&"coordinate");
                     return Err(Error::field(
                         name,
-                        format!("{axis_name} must be a number, got {item}"),
+                        format!("{axis_name} must be a number, got {}", shown(item)),
                     )
                     .on_axis(axis));
                 }
@@ -317,7 +320,10 @@ impl Request {
             None => Ok(None),
             Some(v) => match v.as_f64() {
                 Some(x) if x.is_finite() => Ok(Some(x)),
-                _ => Err(Error::field(name, format!("expected a number, got {v}"))),
+                _ => Err(Error::field(
+                    name,
+                    format!("expected a number, got {}", shown(v)),
+                )),
             },
         }
     }
@@ -366,7 +372,7 @@ impl Request {
             Some(Value::Bool(b)) => Ok(Some(*b)),
             Some(v) => Err(Error::field(
                 name,
-                format!("expected true or false, got {v}"),
+                format!("expected true or false, got {}", shown(v)),
             )),
         }
     }
@@ -380,7 +386,7 @@ impl Request {
             Some(Value::String(s)) if values.contains(&s.as_str()) => Ok(Some(s)),
             Some(v) => Err(Error::field(
                 spec.name,
-                format!("expected one of {}, got {v}", values.join(", ")),
+                format!("expected one of {}, got {}", values.join(", "), shown(v)),
             )),
         }
     }
@@ -392,7 +398,7 @@ impl Request {
             Some(Value::String(s)) => TiePolicy::parse(s),
             Some(v) => Err(Error::field(
                 "tie",
-                format!("expected 'advance' or 'hold', got {v}"),
+                format!("expected 'advance' or 'hold', got {}", shown(v)),
             )),
         }
     }
@@ -430,9 +436,51 @@ impl Request {
     }
 }
 
+/// A JSON value as a message quotes it: its JSON text, a long one by its
+/// start and length ([`echo`]), so that a 10 MB string is not said back whole.
+fn shown(value: &Value) -> String {
+    echo(&value.to_string())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_values_are_quoted_by_their_start() {
+        // A 10 MB name was said back whole in a 10 MB message.
+        let long = "x".repeat(100);
+        let short = format!("{}... (100 characters)", "x".repeat(16));
+        let e = |json: String| match crate::trace_json(&json) {
+            Ok(_) => panic!("{json}: traced"),
+            Err(e) => e.to_string(),
+        };
+        let line = r#""from":[0,0,0],"to":[1,1,1]"#;
+        assert!(
+            e(format!(r#"{{"algorithm":"{long}",{line}}}"#))
+                .starts_with(&format!("algorithm: unknown algorithm '{short}' (known: "))
+        );
+        assert_eq!(
+            e(format!(
+                r#"{{"algorithm":"regions",{line},"tie":"{long}"}}"#
+            )),
+            format!("tie: expected 'advance' or 'hold', got '{short}'")
+        );
+        // JSON text: the quotes count among its characters.
+        assert_eq!(
+            e(format!(
+                r#"{{"algorithm":"circle","from":[5,0,0],"to":[5,0,0],"center":[0,0,0],"dir":"{long}"}}"#
+            )),
+            format!(
+                "dir: expected one of cw, ccw, got \"{}... (102 characters)",
+                "x".repeat(15)
+            )
+        );
+        assert!(
+            e(format!(r#"{{"algorithm":"regions",{line},"{long}":1}}"#))
+                .starts_with(&format!("{short}: regions does not take this option"))
+        );
+    }
 
     #[test]
     fn errors_name_the_option() {

@@ -6,7 +6,7 @@
  * its help line, without code in the CLI.
  */
 import { parseArgs } from 'node:util';
-import { readDecimal } from '../core/guard.js';
+import { quoted, readDecimal } from '../core/guard.js';
 import type { OptionSpec } from '../core/index.js';
 
 /** A command-line mistake: reported in one line plus usage, exit code 2. */
@@ -38,10 +38,10 @@ export function parseFlags(args: readonly string[], switches: readonly string[] 
   const joined: string[] = [];
   for (let i = 0; i < args.length; i++) {
     const arg = args[i]!;
-    if (!arg.startsWith('--') || arg === '--') throw new UsageError(`unexpected argument '${arg}'`);
+    if (!arg.startsWith('--') || arg === '--') throw new UsageError(`unexpected argument '${quoted(arg)}'`);
     if (arg.includes('=') || allSwitches.includes(arg)) joined.push(arg);
     else if (isValue(args[i + 1])) joined.push(`${arg}=${args[++i]}`);
-    else throw new UsageError(`${arg} needs a value`);
+    else throw new UsageError(`${quoted(arg)} needs a value`);
   }
   const options = Object.fromEntries(allSwitches.map((flag) => [flag.slice(2), { type: 'boolean' as const }]));
   const { tokens } = parseArgs({ args: joined, options, strict: false, tokens: true });
@@ -49,9 +49,9 @@ export function parseFlags(args: readonly string[], switches: readonly string[] 
   for (const token of tokens) {
     if (token.kind !== 'option') continue;
     const flag = token.rawName.split('=')[0]!;
-    if (flags.has(flag)) throw new UsageError(`${flag} is given twice`);
+    if (flags.has(flag)) throw new UsageError(`${quoted(flag)} is given twice`);
     const isSwitch = allSwitches.includes(flag);
-    if (isSwitch && token.value !== undefined) throw new UsageError(`${flag} takes no value`);
+    if (isSwitch && token.value !== undefined) throw new UsageError(`${quoted(flag)} takes no value`);
     flags.set(flag, token.value ?? '');
   }
   return flags;
@@ -59,7 +59,7 @@ export function parseFlags(args: readonly string[], switches: readonly string[] 
 
 function numberOf(flag: string, part: string): number {
   const v = readDecimal(part);
-  if (v === undefined) throw new UsageError(`${flag}: '${part}' is not a finite decimal number (such as 12, -3.5 or 1e6)`);
+  if (v === undefined) throw new UsageError(`${quoted(flag)}: '${quoted(part)}' is not a finite decimal number (such as 12, -3.5 or 1e6)`);
   return v;
 }
 
@@ -74,17 +74,17 @@ export function optionValue(spec: OptionSpec, flag: string, text: string): unkno
     case 'perAxis': {
       const values = text.split(',').map((part) => numberOf(flag, part));
       if (values.length !== 1 && values.length !== 3) {
-        throw new UsageError(`${flag}: expected one number or three (x,y,z), got ${values.length}`);
+        throw new UsageError(`${quoted(flag)}: expected one number or three (x,y,z), got ${values.length}`);
       }
       return values.length === 1 ? values[0] : values;
     }
     case 'choice':
       if (!spec.kind.values.includes(text)) {
-        throw new UsageError(`${flag}: expected one of ${spec.kind.values.join(', ')}, got '${text}'`);
+        throw new UsageError(`${quoted(flag)}: expected one of ${spec.kind.values.join(', ')}, got '${quoted(text)}'`);
       }
       return text;
     case 'boolean':
-      if (text !== 'true' && text !== 'false') throw new UsageError(`${flag}: expected true or false, got '${text}'`);
+      if (text !== 'true' && text !== 'false') throw new UsageError(`${quoted(flag)}: expected true or false, got '${quoted(text)}'`);
       return text === 'true';
   }
 }
@@ -120,7 +120,7 @@ export function pickFormat<F extends string>(flags: Map<string, string>, formats
   const format = formats.find((f) => f === text);
   if (format === undefined) {
     const listed = `${formats.slice(0, -1).join(', ')} or ${formats.at(-1)}`;
-    throw new UsageError(`--format: expected ${listed}, got '${text}'`);
+    throw new UsageError(`--format: expected ${listed}, got '${quoted(text)}'`);
   }
   return format;
 }
@@ -136,7 +136,7 @@ export function optionsFromFlags(
   for (const [flag, text] of flags) {
     if (own.includes(flag)) continue;
     const spec = specs.find((o) => flagOf(o.name) === flag);
-    if (!spec) throw new UsageError(`unknown flag ${flag} for ${what} (it takes ${specs.map((o) => flagOf(o.name)).join(', ')})`);
+    if (!spec) throw new UsageError(`unknown flag ${quoted(flag)} for ${what} (it takes ${specs.map((o) => flagOf(o.name)).join(', ')})`);
     options[spec.name] = optionValue(spec, flag, text);
   }
   return options;

@@ -25,6 +25,7 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { AlgorithmInfo, Catalogue, Trace } from '../core/index.js';
+import { quoted } from '../core/guard.js';
 import { FORMATS, UsageError, describeOption, flagOf, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
 import { GCODE_USAGE, gcodeCommand, gcodeHelp, readSource } from './gcode.js';
 
@@ -90,7 +91,7 @@ function pickAlgorithm(flags: Map<string, string>, catalogue: AlgorithmInfo[], f
   const id = flags.get('--algorithm') ?? fallback;
   if (id === undefined) throw new UsageError('--algorithm is required');
   const info = catalogue.find((a) => a.id === id);
-  if (!info) throw new UsageError(`--algorithm: unknown algorithm '${id}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
+  if (!info) throw new UsageError(`--algorithm: unknown algorithm '${quoted(id)}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
   return info;
 }
 
@@ -118,10 +119,10 @@ function pickPair(flags: Map<string, string>, catalogue: AlgorithmInfo[]): [Algo
   const text = flags.get('--algorithms');
   if (text === undefined) throw new UsageError('--algorithms is required (two ids, for example --algorithms regions,greedy)');
   const ids = text.split(',');
-  if (ids.length !== 2) throw new UsageError(`--algorithms: expected two ids separated by a comma, got '${text}'`);
+  if (ids.length !== 2) throw new UsageError(`--algorithms: expected two ids separated by a comma, got '${quoted(text)}'`);
   const find = (id: string) => {
     const info = catalogue.find((a) => a.id === id);
-    if (!info) throw new UsageError(`--algorithms: unknown algorithm '${id}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
+    if (!info) throw new UsageError(`--algorithms: unknown algorithm '${quoted(id)}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
     return info;
   };
   return [find(ids[0]!), find(ids[1]!)];
@@ -143,7 +144,7 @@ async function runExperiment(args: string[], catalogues: Catalogue): Promise<str
   const [id, ...rest] = args;
   const experiment = catalogues.experiments.find((e) => e.id === id);
   if (!experiment) {
-    throw new UsageError(`experiment: expected one of ${catalogues.experiments.map((e) => e.id).join(', ')}, got '${id ?? ''}'`);
+    throw new UsageError(`experiment: expected one of ${catalogues.experiments.map((e) => e.id).join(', ')}, got '${quoted(id ?? '')}'`);
   }
   const flags = parseFlags(rest);
   const info = pickAlgorithm(flags, catalogues.algorithms, 'regions');
@@ -167,7 +168,7 @@ async function runCheck(args: string[], catalogues: Catalogue): Promise<{ stdout
   const flags = parseFlags(args.slice(0, -1));
   const info = pickAlgorithm(flags, catalogues.algorithms);
   const format = flags.get('--format') ?? 'table';
-  if (format !== 'table' && format !== 'json') throw new UsageError(`--format: expected table or json, got '${format}'`);
+  if (format !== 'table' && format !== 'json') throw new UsageError(`--format: expected table or json, got '${quoted(format)}'`);
   const options = optionsFromFlags(flags, info.options, info.id);
   const result = await checkPoints({ ...options, algorithm: info.id } as Parameters<typeof checkPoints>[0], await readSource(file));
   const stdout = format === 'json' ? JSON.stringify(result) + '\n' : checkToTable(result);
@@ -209,7 +210,7 @@ export async function main(args: string[]): Promise<number> {
     }
     if (command === 'algorithms') {
       // Nothing to read after it: `algorithms --format json` printed the table and exited 0.
-      if (rest.length > 0) throw new UsageError(`algorithms takes no arguments, got ${rest.map((a) => `'${a}'`).join(' ')}`);
+      if (rest.length > 0) throw new UsageError(`algorithms takes no arguments, got ${rest.map((a) => `'${quoted(a)}'`).join(' ')}`);
       await write(catalogues.algorithms.map((a) => `${a.id.padEnd(14)} ${a.title}\n${' '.repeat(15)}${a.citation}\n`).join(''));
       return 0;
     }
@@ -229,7 +230,7 @@ export async function main(args: string[]): Promise<number> {
       process.stderr.write(result.stderr);
       return result.code;
     } else {
-      throw new UsageError(`unknown command '${command}'`);
+      throw new UsageError(`unknown command '${quoted(command)}'`);
     }
     return 0;
   } catch (error) {

@@ -18,7 +18,7 @@
  * progress and take a cancel (an AbortSignal) while a long program runs.
  */
 import { callCore } from './errors.js';
-import { aNumber, argumentError, describeValue, indexRange, optionalFunction, text, wholeNumber } from './guard.js';
+import { aNumber, argumentError, describeValue, indexRange, optionalFunction, quoted, text, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import { Trace, requireTrace } from './trace.js';
 import { loadCore, withTextBytes } from './wasm.js';
@@ -220,7 +220,7 @@ function checkRunOptions(options: unknown): number {
     if ((RUN_OPTION_KEYS as readonly string[]).includes(key)) continue;
     const meant = RUN_OPTION_KEYS.find((known) => known.toLowerCase() === key.toLowerCase());
     const hint = meant === undefined ? `it takes ${RUN_OPTION_KEYS.join(', ')}` : `did you mean ${meant}?`;
-    throw argumentError(key, `runGcode does not take this option (${hint})`);
+    throw argumentError(quoted(key), `runGcode does not take this option (${hint})`);
   }
   const { onProgress, signal, sliceMs = 20 } = options as Record<string, unknown>;
   optionalFunction('onProgress', onProgress);

@@ -14,6 +14,16 @@ export function argumentError(field: string, detail: string): VoxpathError {
   return new VoxpathError(`${field}: ${detail}`, { field, detail });
 }
 
+/**
+ * Text a user gave, as a message quotes it: a long one by its start and its
+ * length, as the core's messages quote it (rust/src/text.rs), so that a
+ * 100 KB flag is not said back whole.
+ */
+export function quoted(text: string): string {
+  const chars = [...text];
+  return chars.length <= 24 ? text : `${chars.slice(0, 16).join('')}... (${chars.length} characters)`;
+}
+
 /** A value as a message shows it: a number as itself, anything else with its kind. */
 export function describeValue(value: unknown): string {
   if (value === undefined) return 'nothing';
