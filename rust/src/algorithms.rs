@@ -90,6 +90,12 @@ mod tests {
             e.starts_with("algorithm: unknown algorithm 'bresenham9d' (known: regions"),
             "{e}"
         );
+        // A long name is quoted by its start (a 10 MB one was said back whole).
+        let long = find(&"x".repeat(100)).err().unwrap().to_string();
+        assert!(long.starts_with(&format!(
+            "algorithm: unknown algorithm '{}... (100 characters)' (known: ",
+            "x".repeat(16)
+        )));
     }
 
     #[test]

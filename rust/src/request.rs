@@ -448,37 +448,45 @@ mod tests {
 
     #[test]
     fn long_values_are_quoted_by_their_start() {
-        // A 10 MB name was said back whole in a 10 MB message.
+        // A 10 MB value was said back whole in a 10 MB message.
         let long = "x".repeat(100);
         let short = format!("{}... (100 characters)", "x".repeat(16));
-        let e = |json: String| match crate::trace_json(&json) {
-            Ok(_) => panic!("{json}: traced"),
-            Err(e) => e.to_string(),
+        let request = |extra: String| {
+            Request::from_json(&format!(r#"{{"algorithm":"regions",{extra}}}"#)).unwrap()
         };
-        let line = r#""from":[0,0,0],"to":[1,1,1]"#;
-        assert!(
-            e(format!(r#"{{"algorithm":"{long}",{line}}}"#))
-                .starts_with(&format!("algorithm: unknown algorithm '{short}' (known: "))
-        );
         assert_eq!(
-            e(format!(
-                r#"{{"algorithm":"regions",{line},"tie":"{long}"}}"#
-            )),
+            request(format!(r#""tie":"{long}""#))
+                .tie(TiePolicy::Hold)
+                .unwrap_err()
+                .to_string(),
             format!("tie: expected 'advance' or 'hold', got '{short}'")
         );
         // JSON text: the quotes count among its characters.
+        let dir = OptionSpec {
+            name: "dir",
+            kind: OptionKind::Choice {
+                values: &["cw", "ccw"],
+            },
+            required: false,
+            default: None,
+            doc: "",
+        };
         assert_eq!(
-            e(format!(
-                r#"{{"algorithm":"circle","from":[5,0,0],"to":[5,0,0],"center":[0,0,0],"dir":"{long}"}}"#
-            )),
+            request(format!(r#""dir":"{long}""#))
+                .choice(&dir)
+                .unwrap_err()
+                .to_string(),
             format!(
                 "dir: expected one of cw, ccw, got \"{}... (102 characters)",
                 "x".repeat(15)
             )
         );
-        assert!(
-            e(format!(r#"{{"algorithm":"regions",{line},"{long}":1}}"#))
-                .starts_with(&format!("{short}: regions does not take this option"))
+        assert_eq!(
+            request(format!(r#""{long}":1"#))
+                .check_options(&[dir])
+                .unwrap_err()
+                .to_string(),
+            format!("{short}: regions does not take this option (it takes dir)")
         );
     }
 
