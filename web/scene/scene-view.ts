@@ -618,8 +618,11 @@ export class SceneView {
     const ticks = FIT_TICK_SHARE * largest;
     const box = bounds.clone().expandByScalar(ticks);
     const corners: THREE.Vector3[] = [];
-    // The floor with its ticks, and the z axis's tip above its corner.
+    // The floor with its ticks, the z axis's ticks up to the top of the
+    // path (beside the axis, as far out as the floor's), and its tip above
+    // its corner.
     for (let c = 0; c < 4; c++) corners.push(new THREE.Vector3(c & 1 ? box.max.x : box.min.x, c & 2 ? box.max.y : box.min.y, bounds.min.z));
+    corners.push(new THREE.Vector3(box.min.x, box.min.y, bounds.max.z));
     corners.push(new THREE.Vector3(bounds.min.x, bounds.min.y, bounds.max.z + Math.max(1.5, FIT_Z_TIP_SHARE * largest)));
     // Each framed cell, whole.
     for (const cell of drawn.framedCells) {
@@ -639,16 +642,29 @@ export class SceneView {
     const middleX = (edgeLeft - edgeRight) / Math.max(width, 1);
     const freeY = 1 - inset - (2 * edge) / Math.max(height, 1);
     const middle = -inset;
+    // The free part's edges, from the screen's middle where the camera looks
+    // (-1..1): the room each way. The legend and the tools take the top, so
+    // there is less room above the middle than below it.
+    const [roomRight, roomLeft] = [freeX + middleX, freeX - middleX];
+    const [roomUp, roomDown] = [freeY + middle, freeY - middle];
     const center = box.getCenter(new THREE.Vector3());
     let distance = 0;
     for (let round = 0; round < FIT_ROUNDS; round++) {
-      // The distance at which every corner is inside the view (within the free height), looking at `center`.
+      // The distance at which every corner is inside the free part, looking
+      // at `center`: each corner against the room on its own side. (Against
+      // the room either side of the free part's middle, as if the camera
+      // looked there, the shift below that centers the picture grew the
+      // distance every round: under a legend a third of the view tall, a
+      // picture 2.7 times too small.)
       distance = 0;
       for (const corner of corners) {
         const p = corner.clone().sub(center);
         // A corner nearer the camera (p . direction > 0) needs the camera farther back.
         const towardCamera = p.dot(direction);
-        distance = Math.max(distance, towardCamera + Math.abs(p.dot(right)) / (tanH * freeX), towardCamera + Math.abs(p.dot(up)) / (tanV * freeY));
+        const [across, upward] = [p.dot(right), p.dot(up)];
+        const needX = Math.abs(across) / (tanH * (across >= 0 ? roomRight : roomLeft));
+        const needY = Math.abs(upward) / (tanV * (upward >= 0 ? roomUp : roomDown));
+        distance = Math.max(distance, towardCamera + needX, towardCamera + needY);
       }
       // Where the corners land on screen from there (-1..1 each way), and the middle of their spread.
       const spread = { left: Infinity, right: -Infinity, bottom: Infinity, top: -Infinity };
