@@ -76,6 +76,11 @@ describe('page state in the URL query', () => {
     expect(camera).toEqual({ position: [1.2346, 2, 3], target: [0, 0, 0], zoom: 1 });
     expect(stateFromQuery('camera=1,2,3', catalogue)!.camera).toBeNull();
     expect(stateFromQuery('camera=1,2,3,4,5,6,0', catalogue)!.camera).toBeNull();
+    // Out of reach (a view drawn blank), or looking at itself: framed by the page instead.
+    for (const camera of ['1e308,1e308,1e308,0,0,0,1', '1,2,3,0,0,0,1e7', '1,2,3,1,2,3,1']) {
+      expect(stateFromQuery(`camera=${camera}`, catalogue)!.camera, camera).toBeNull();
+    }
+    expect(stateFromQuery('camera=1e9,2,3,0,0,0,1e6', catalogue)!.camera).toEqual({ position: [1e9, 2, 3], target: [0, 0, 0], zoom: 1e6 });
   });
 
   it('keeps out-of-range and fractional coordinates for the core to judge', () => {

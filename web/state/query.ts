@@ -107,11 +107,25 @@ export function roundCamera(camera: CameraState): CameraState {
   };
 }
 
+/**
+ * Farthest a camera may stand from the origin, grid units, and its largest
+ * zoom: past any path (coordinates are within ±2^30) by far, and short of
+ * where 32-bit floats, which WebGL draws with, lose the picture (a link's
+ * camera at 1e308 drew a blank view).
+ */
+const CAMERA_REACH = 2 ** 40;
+const MAX_ZOOM = 1e6;
+
+/** A link's camera, or null (framed by the page) when it is malformed or out of reach. */
 function parseCamera(text: string | null): CameraState | null {
   const v = (text ?? '').split(',').map(readDecimal);
-  if (v.length !== 7 || v.some((c) => c === undefined) || v[6]! <= 0) return null;
+  if (v.length !== 7 || v.some((c) => c === undefined)) return null;
   const n = v as number[];
-  return { position: [n[0]!, n[1]!, n[2]!], target: [n[3]!, n[4]!, n[5]!], zoom: n[6]! };
+  const [position, target, zoom] = [n.slice(0, 3), n.slice(3, 6), n[6]!];
+  const reachable = n.slice(0, 6).every((c) => Math.abs(c) <= CAMERA_REACH) && zoom > 0 && zoom <= MAX_ZOOM;
+  // The camera looks from its position at its target: one point is no direction.
+  if (!reachable || position.every((c, i) => c === target[i])) return null;
+  return { position: position as CameraState['position'], target: target as CameraState['target'], zoom };
 }
 
 export interface QueryOptions {
