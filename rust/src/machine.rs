@@ -411,16 +411,13 @@ mod tests {
         // decimals make: f64::round takes them down.
         let m = |spm: f64| Machine::new([spm; 3]).unwrap();
         for (mm, spm, steps) in [
-            (1.005, 100.0, 101),
+            (1.005f64, 100.0f64, 101i64),
             (-1.005, 100.0, -101),
             (0.145, 100.0, 15),
             (1.015, 100.0, 102),
             (0.49999999999999994, 1.0, 1),
         ] {
-            assert!(
-                ((mm * spm) as f64).round().abs() < (steps as f64).abs(),
-                "{mm}"
-            );
+            assert!((mm * spm).round().abs() < (steps as f64).abs(), "{mm}");
             assert_eq!(m(spm).to_steps(0, mm), Some(steps), "{mm} mm at {spm}");
         }
         // 16 significant digits short of a half is not one.

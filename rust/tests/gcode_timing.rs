@@ -143,41 +143,98 @@ fn a_feed_above_the_max_rate_is_capped_with_a_warning_once_per_feed() {
 }
 
 /// Grbl synchronises its buffer (`protocol_buffer_synchronize`) before a
-/// dwell (`mc_dwell`), a spindle change (`spindle_sync`) and a coolant
-/// change (`coolant_sync`): the machine comes to rest, waits out the
-/// dwell, and starts again from rest. At Grbl's defaults (10 mm/s², 500
-/// mm/min) a 10 mm move at F500 from rest to rest takes 2v/a + (L - v²/a)/v
-/// = 1.6667 + 0.3667 = 2.0333 s (v = 25/3 mm/s); three of them in a line
-/// joined at full speed, one 30 mm trapezoid, 4.4333 s (which voxpath gave
-/// with M3 and M5 between them, taking them for nothing).
+/// dwell (`mc_dwell`), a spindle change (`spindle_sync`), a new spindle
+/// speed while it turns (`spindle_sync` again), and a coolant change
+/// (`coolant_sync`): the machine comes to rest, waits out the dwell, and
+/// starts again from rest. Only a change stops it: gc_execute_line's steps
+/// 4, 7 and 8 compare the block's spindle, speed and coolant with the
+/// state's. At Grbl's defaults (10 mm/s², 500 mm/min) a 10 mm move at F500
+/// from rest to rest takes 2v/a + (L - v²/a)/v = 1.6667 + 0.3667 = 2.0333 s
+/// (v = 25/3 mm/s); three of them in a line joined at full speed, one 30 mm
+/// trapezoid, 4.4333 s (which voxpath gave with M3 and M5 between them,
+/// taking them for nothing).
 #[test]
 fn a_dwell_a_spindle_or_a_coolant_change_stops_the_machine_as_grbl_does() {
     let defaults = Settings::from_json(r#"{"stepsPerMm": 80}"#).unwrap();
     let rest_to_rest =
         2.0 * (25.0 / 3.0) / 10.0 + (10.0 - (25.0f64 / 3.0).powi(2) / 10.0) / (25.0 / 3.0);
+    let joined_seconds =
+        2.0 * (25.0 / 3.0) / 10.0 + (30.0 - (25.0f64 / 3.0).powi(2) / 10.0) / (25.0 / 3.0);
     let joined = run("G1 X10 F500\nX20\nX30\n", defaults.clone());
-    assert!(close(
-        joined.info.duration_seconds,
-        2.0 * (25.0 / 3.0) / 10.0 + (30.0 - (25.0f64 / 3.0).powi(2) / 10.0) / (25.0 / 3.0)
-    ));
-    for stops in ["M3 S1000", "M5", "M8", "M9", "G4 P0"] {
+    assert!(close(joined.info.duration_seconds, joined_seconds));
+    // Two changes between the three moves: two stops.
+    for (first, second) in [
+        ("M3 S1000", "M5"),
+        ("M4", "M3"),
+        ("M8", "M9"),
+        ("M7", "M8"),
+        ("G4 P0", "G4 P0"),
+        ("M3 S1000", "S2000"),
+    ] {
         let program = run(
-            &format!("G1 X10 F500\n{stops}\nX20\n{stops}\nX30\n"),
+            &format!("G1 X10 F500\n{first}\nX20\n{second}\nX30\n"),
             defaults.clone(),
         );
         assert!(
             close(program.info.duration_seconds, 3.0 * rest_to_rest),
-            "{stops}: {}",
+            "{first}, {second}: {}",
             program.info.duration_seconds
         );
         for m in program.moves() {
             assert_eq!(
                 (m.timing.entry_speed, m.timing.exit_speed),
                 (0.0, 0.0),
-                "{stops}"
+                "{first}, {second}"
             );
         }
     }
+    // What changes nothing stops nothing: the spindle or coolant as it
+    // is, the same speed again, a speed while the spindle is off (it was
+    // two stops, for M5 or M9 with nothing on).
+    for (first, second) in [
+        ("M5", "M9"),
+        ("S1000", "S2000"),
+        ("M3 S1000\nM3", "S1000"),
+        ("M8\nM8", "M8"),
+    ] {
+        let lead = first.rsplit_once('\n').map_or("", |(lead, _)| lead);
+        let line = first.rsplit_once('\n').map_or(first, |(_, line)| line);
+        let program = run(
+            &format!("{lead}\nG1 X10 F500\n{line}\nX20\n{second}\nX30\n"),
+            defaults.clone(),
+        );
+        assert!(
+            close(program.info.duration_seconds, joined_seconds),
+            "{first}, {second}: {}",
+            program.info.duration_seconds
+        );
+    }
+    // A pause or the program's end comes to rest after its line's motion
+    // (gc_execute_line's step 21, after step 20's): on the move's line as on
+    // the line after it. The move before joins it at full speed (it came
+    // to rest before the move, at X10, then passed X30 at 14.14 mm/s).
+    for flow in ["M0", "M2", "M30"] {
+        let on_the_line = run(&format!("G1 X10 F500\nX30 {flow}\nX31\n"), defaults.clone());
+        let after = run(
+            &format!("G1 X10 F500\nX30\n{flow}\nX31\n"),
+            defaults.clone(),
+        );
+        let speeds = |p: &voxpath::gcode::Program| -> Vec<(f64, f64)> {
+            p.moves()
+                .iter()
+                .map(|m| (m.timing.entry_speed, m.timing.exit_speed))
+                .collect()
+        };
+        assert_eq!(speeds(&on_the_line), speeds(&after), "{flow}");
+        assert_eq!(speeds(&on_the_line)[0], (0.0, 25.0 / 3.0), "{flow}");
+        assert_eq!(speeds(&on_the_line)[1].1, 0.0, "{flow}");
+    }
+    // The end turns the spindle off: M3 after it is a change again.
+    let restarted = run(
+        "M3 S1000\nG1 X10 F500\nM2\nX20\nM3\nX30\n",
+        defaults.clone(),
+    );
+    assert!(close(restarted.info.duration_seconds, 3.0 * rest_to_rest));
     // G4 P1: a second at rest between the moves, its steps after it.
     let dwell = run("G1 X10 F500\nG4 P1\nX20\n", defaults.clone());
     assert!(close(dwell.info.duration_seconds, 2.0 * rest_to_rest + 1.0));

@@ -166,11 +166,37 @@ pub struct Effects {
     pub warnings: Vec<Problem>,
     /// The machine comes to rest before this line's motion and waits this
     /// many seconds: Grbl synchronises its buffer before a dwell (G4 P), a
-    /// spindle or coolant change (M3-M5, M7-M9) and a pause or the
-    /// program's end (M0, M2, M30), all of which it runs before the line's
-    /// motion (gcode.c's order of execution).
+    /// change of the spindle or its speed while it turns (M3-M5, S:
+    /// spindle_sync) and a change of coolant (M7-M9: coolant_sync), all of
+    /// which gc_execute_line runs before the line's motion (its steps 4, 7,
+    /// 8 and 10; the motion is step 20).
     pub stop: Option<f64>,
+    /// The machine comes to rest after this line's motion: a pause or the
+    /// program's end (M0, M2, M30), gc_execute_line's step 21, after the
+    /// motion.
+    pub stop_after: bool,
 }
+
+/// The spindle, as M3, M4 and M5 set it (Grbl's modal group M7).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Spindle {
+    Off,
+    Clockwise,
+    CounterClockwise,
+}
+
+/// Coolant, as M7, M8 and M9 set it (Grbl's modal group M8): mist and
+/// flood may both be on; M9 turns both off.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Coolant {
+    mist: bool,
+    flood: bool,
+}
+
+const COOLANT_OFF: Coolant = Coolant {
+    mist: false,
+    flood: false,
+};
 
 /// The modal state and the position, from line to line.
 #[derive(Clone, Debug)]
@@ -189,6 +215,11 @@ pub struct Interpreter {
     position_mm: [f64; MACHINE_AXES],
     /// G92: machine = program + offset.
     offset_mm: [f64; MACHINE_AXES],
+    /// The spindle, its speed (S, modal) and the coolant: voxpath models
+    /// none of them, but Grbl brings the motion to rest when they change.
+    spindle: Spindle,
+    spindle_speed: f64,
+    coolant: Coolant,
 }
 
 impl Default for Interpreter {
@@ -204,6 +235,9 @@ impl Default for Interpreter {
             inverse_time: false,
             position_mm: [0.0; MACHINE_AXES],
             offset_mm: [0.0; MACHINE_AXES],
+            spindle: Spindle::Off,
+            spindle_speed: 0.0,
+            coolant: COOLANT_OFF,
         }
     }
 }
@@ -290,6 +324,7 @@ impl Interpreter {
     pub fn run(&mut self, line: u32, block: &Block, effects: &mut Effects) -> Result<(), Error> {
         effects.motion = None;
         effects.stop = None;
+        effects.stop_after = false;
         effects.warnings.clone_from(&block.ignored);
         let mut motion: Option<(MotionCode, Code)> = None;
         let mut plane: Option<(Plane, Code)> = None;
@@ -299,6 +334,10 @@ impl Interpreter {
         let mut g92: Option<Code> = None;
         let mut axis_code: Option<Code> = None;
         let mut dwell: Option<Code> = None;
+        let mut inverse_time: Option<(bool, Code)> = None;
+        let mut spindle: Option<(Spindle, Code)> = None;
+        let mut coolant: Option<(u32, Code)> = None;
+        let mut flow: Option<(u32, Code)> = None;
         for code in &block.codes {
             if let Some(m) = (code.letter == 'G')
                 .then(|| motion_code(code.number, code.minor))
@@ -322,40 +361,23 @@ impl Interpreter {
                     set_once(&mut absolute_centers, false, code, line, "arc center mode")?
                 }
                 ('G', 92, 0) => g92 = Some(*code),
-                // Units per minute: the feed mode voxpath runs in. Leaving
-                // G93 for it leaves F undefined, as in Grbl (gcode.c: a
-                // feed move then needs a new F, error 22).
-                ('G', 94, 0) => {
-                    if std::mem::take(&mut self.inverse_time) {
-                        self.feed_mm_per_min = None;
-                    }
-                }
-                ('G', 93, 0) => {
-                    self.inverse_time = true;
-                    effects.warnings.push(Problem {
-                        column: code.column,
-                        message: "G93 (inverse time) ignored: voxpath reads F as units per minute (G94), so the moves after it are timed at that feed".to_string(),
-                    })
-                }
+                ('G', 93, 0) => set_once(&mut inverse_time, true, code, line, "feed rate mode")?,
+                ('G', 94, 0) => set_once(&mut inverse_time, false, code, line, "feed rate mode")?,
                 ('G', n, 0) if AXIS_WORD_CODES.contains(&n) => axis_code = Some(*code),
                 // G4 (dwell) takes P, its seconds: its P is then not an unused word.
                 ('G', 4, 0) => dwell = Some(*code),
-                ('M', n @ (0 | 2 | 3 | 4 | 5 | 7 | 8 | 9 | 30), 0) => {
-                    effects.stop.get_or_insert(0.0);
-                    let why = match n {
-                        3..=5 => {
-                            "voxpath does not model the spindle, but the motion comes to rest here first, as Grbl's does before a spindle change (spindle_sync)"
-                        }
-                        7..=9 => {
-                            "voxpath does not model coolant, but the motion comes to rest here first, as Grbl's does before a coolant change (coolant_sync)"
-                        }
-                        0 => "the program pauses until it is resumed: timed as a stop with no wait",
-                        _ => "the program ends: the motion comes to rest, as Grbl's does",
-                    };
-                    effects.warnings.push(Problem {
-                        column: code.column,
-                        message: format!("{}: {why}", code.name()),
-                    });
+                ('M', 3, 0) => set_once(&mut spindle, Spindle::Clockwise, code, line, "spindle")?,
+                ('M', 4, 0) => set_once(
+                    &mut spindle,
+                    Spindle::CounterClockwise,
+                    code,
+                    line,
+                    "spindle",
+                )?,
+                ('M', 5, 0) => set_once(&mut spindle, Spindle::Off, code, line, "spindle")?,
+                ('M', n @ 7..=9, 0) => set_once(&mut coolant, n, code, line, "coolant")?,
+                ('M', n @ (0 | 1 | 2 | 30), 0) => {
+                    set_once(&mut flow, n, code, line, "program flow")?
                 }
                 (letter, _, _) => {
                     let what = match letter {
@@ -372,6 +394,7 @@ impl Interpreter {
             }
         }
         let words = Words::new(&block.words);
+        self.run_machine_codes(&words, inverse_time, spindle, coolant, flow, effects);
         if let Some(code) = dwell {
             // mc_dwell: P seconds at rest, after the motion before has ended.
             let Some(p) = words.get('P') else {
@@ -427,7 +450,7 @@ impl Interpreter {
         for w in &block.words {
             if !matches!(
                 w.letter,
-                'X' | 'Y' | 'Z' | 'I' | 'J' | 'K' | 'R' | 'P' | 'F'
+                'X' | 'Y' | 'Z' | 'I' | 'J' | 'K' | 'R' | 'P' | 'F' | 'S'
             ) {
                 effects.warnings.push(Problem {
                     column: w.column,
@@ -601,6 +624,114 @@ impl Interpreter {
             arc,
         });
         Ok(())
+    }
+
+    /// The feed rate mode (G93, G94), and what voxpath does not model but
+    /// times as Grbl does: the spindle and its speed (M3, M4, M5, S), the
+    /// coolant (M7, M8, M9) and the program's flow (M0, M1, M2, M30). A
+    /// change of the spindle, of its speed while it turns, or of the
+    /// coolant brings the motion to rest before the line's motion; the
+    /// same code again changes nothing and does not (gcode.c steps 4, 7
+    /// and 8). A pause or the program's end brings it to rest after the
+    /// line's motion (step 21), and the end turns the spindle and coolant
+    /// off.
+    fn run_machine_codes(
+        &mut self,
+        words: &Words<'_>,
+        inverse_time: Option<(bool, Code)>,
+        spindle: Option<(Spindle, Code)>,
+        coolant: Option<(u32, Code)>,
+        flow: Option<(u32, Code)>,
+        effects: &mut Effects,
+    ) {
+        // Said in the order of the line's words, though S is judged first
+        // (by the spindle before this line's M3, M4 or M5, as in Grbl).
+        let mut said: Vec<Problem> = Vec::new();
+        let mut say = |column: u32, message: String| said.push(Problem { column, message });
+        match inverse_time {
+            // Units per minute: the feed mode voxpath runs in. Leaving G93
+            // for it leaves F undefined, as in Grbl (gcode.c: a feed move
+            // then needs a new F, error 22).
+            Some((false, _)) if std::mem::take(&mut self.inverse_time) => {
+                self.feed_mm_per_min = None;
+            }
+            Some((false, _)) => {}
+            Some((true, code)) => {
+                self.inverse_time = true;
+                say(code.column, "G93 (inverse time) ignored: voxpath reads F as units per minute (G94), so the moves after it are timed at that feed".to_string());
+            }
+            None => {}
+        }
+        let mut stops = false;
+        if let Some(s) = words.get('S') {
+            let turning = self.spindle != Spindle::Off;
+            let changed = s.value != self.spindle_speed;
+            self.spindle_speed = s.value;
+            let why = if changed && turning {
+                stops = true;
+                "voxpath does not model the spindle, but a new speed while it turns brings the motion to rest here first, as Grbl's does (spindle_sync)"
+            } else if changed {
+                "voxpath does not model the spindle: kept for when it turns (the motion does not stop while it is off)"
+            } else {
+                "the spindle's speed already: no change, so the motion does not stop"
+            };
+            say(s.column, format!("S{}: {why}", s.value));
+        }
+        if let Some((state, code)) = spindle {
+            let why = if state != self.spindle {
+                stops = true;
+                "voxpath does not model the spindle, but the motion comes to rest here first, as Grbl's does before a spindle change (spindle_sync)"
+            } else {
+                "the spindle is so already: no change, so the motion does not stop"
+            };
+            self.spindle = state;
+            say(code.column, format!("{}: {why}", code.name()));
+        }
+        if let Some((n, code)) = coolant {
+            let state = match n {
+                7 => Coolant {
+                    mist: true,
+                    ..self.coolant
+                },
+                8 => Coolant {
+                    flood: true,
+                    ..self.coolant
+                },
+                _ => COOLANT_OFF,
+            };
+            let why = if state != self.coolant {
+                stops = true;
+                "voxpath does not model coolant, but the motion comes to rest here first, as Grbl's does before a coolant change (coolant_sync)"
+            } else {
+                "the coolant is so already: no change, so the motion does not stop"
+            };
+            self.coolant = state;
+            say(code.column, format!("{}: {why}", code.name()));
+        }
+        if stops {
+            effects.stop.get_or_insert(0.0);
+        }
+        if let Some((n, code)) = flow {
+            let why = match n {
+                1 => "ignored: an optional stop, which Grbl does not support",
+                0 => {
+                    ": the program pauses until it is resumed: after this line's motion, timed as a stop with no wait"
+                }
+                _ => {
+                    ": the program ends: after this line's motion the machine comes to rest and the spindle and coolant are off, as in Grbl"
+                }
+            };
+            if n != 1 {
+                effects.stop_after = true;
+            }
+            if n == 2 || n == 30 {
+                (self.spindle, self.coolant) = (Spindle::Off, COOLANT_OFF);
+            }
+            let space = if n == 1 { " " } else { "" };
+            say(code.column, format!("{}{space}{why}", code.name()));
+        }
+        said.sort_by_key(|p| p.column);
+        effects.warnings.append(&mut said);
     }
 
     fn warn_unused_p(&self, words: &Words<'_>, dwell: bool, effects: &mut Effects) {
@@ -902,6 +1033,29 @@ mod tests {
             e(&["G2 X10 Y0 I3 J0"]),
             "line 1, column 11: the arc's end is 7.0000 mm from its center but its start is 3.0000 mm: the radii differ by 4.0000 mm, more than the tolerance (0.0283 mm and 0.1% of the radius)"
         );
+        // One code of each modal group a line, as Grbl refuses more
+        // (error 21): the feed rate mode, the spindle, the coolant and the
+        // program's flow too (G93 G94 ran at a feed that hung on their order).
+        for (line, message) in [
+            (
+                "G93 G94 G1 X1",
+                "line 1, column 5: G93 and G94 are both feed rate mode codes: give one per line",
+            ),
+            (
+                "M3 M5",
+                "line 1, column 4: M3 and M5 are both spindle codes: give one per line",
+            ),
+            (
+                "M7 M8",
+                "line 1, column 4: M7 and M8 are both coolant codes: give one per line",
+            ),
+            (
+                "M0 M30",
+                "line 1, column 4: M0 and M30 are both program flow codes: give one per line",
+            ),
+        ] {
+            assert_eq!(e(&[line]), message);
+        }
         assert_eq!(
             e(&["G2 X10 Y0 R0"]),
             "line 1, column 11: zero-radius arc: R is 0"
@@ -1006,7 +1160,7 @@ mod tests {
             messages,
             [
                 (1, "M3: voxpath does not model the spindle, but the motion comes to rest here first, as Grbl's does before a spindle change (spindle_sync)".to_string()),
-                (4, "S1000 ignored: voxpath models X, Y and Z motion only".to_string()),
+                (4, "S1000: voxpath does not model the spindle: kept for when it turns (the motion does not stop while it is off)".to_string()),
             ]
         );
         // The line stops the machine and dwells 2 s; a tool change or M1 is not a stop.
@@ -1014,7 +1168,7 @@ mod tests {
         assert_eq!(run(&["M6 T1"]).unwrap().1.stop, None);
         assert_eq!(
             run(&["M1"]).unwrap().1.warnings[0].message,
-            "M1 ignored: voxpath models motion only, not spindle, coolant, tools or program flow"
+            "M1 ignored: an optional stop, which Grbl does not support"
         );
         // Leaving G93 for G94 leaves F undefined, as in Grbl: the next feed
         // move is the no-feed warning (it ran at the F of the G93 lines).

@@ -1112,8 +1112,11 @@ impl Runner {
         }
         if let Some(m) = &effects.motion {
             if let Err(e) = self.step_move(m) {
-                self.stop(Diagnostic::from_error(e));
+                return self.stop(Diagnostic::from_error(e));
             }
+        }
+        if effects.stop_after {
+            self.planner.stop(0.0);
         }
     }
 
