@@ -318,6 +318,14 @@ impl TextReader {
     fn push_row(&mut self, line: u32, column: u32, cells: &[(usize, &str)]) -> Result<(), Error> {
         let index = self.points;
         let at = |offset: usize, message: String| Error::at(line, column + offset as u32, message);
+        if let Some(&(offset, _)) = cells.iter().find(|(_, cell)| cell.is_empty()) {
+            return Err(at(
+                offset,
+                format!(
+                    "point {index}: an empty cell, between two commas or semicolons or before the first"
+                ),
+            ));
+        }
         if cells.len() != self.dims {
             return Err(at(
                 0,
@@ -375,11 +383,18 @@ impl TextReader {
         let mut count = 0;
         let mut i = start;
         loop {
+            let mut delimiters = 0usize;
             while i < bytes.len() && is_separator(bytes[i]) {
+                delimiters += usize::from(is_delimiter(bytes[i]));
                 i += 1;
             }
             if i == bytes.len() || is_line_break(bytes[i]) {
                 break;
+            }
+            // An empty cell (a comma before the first value, or two between
+            // two values) holds a column's place: the general reading's.
+            if delimiters > usize::from(count > 0) {
+                return None;
             }
             let negative = bytes[i] == b'-';
             if negative || bytes[i] == b'+' {
@@ -516,33 +531,57 @@ impl TextReader {
     }
 }
 
-/// The cells of `text` into `out` (cleared first), split at commas,
-/// semicolons, spaces and tabs, each with its byte offset (quotes around a cell
-/// removed, as CSV writes them).
+/// The cells of `text` into `out` (cleared first), each with its byte
+/// offset (quotes around a cell removed, as CSV writes them). A comma or a
+/// semicolon ends a field, as in CSV, so nothing between two of them (or
+/// before the first) is an empty cell that keeps its column's place;
+/// blanks around a field are not part of it, and blanks alone (no comma or
+/// semicolon on the line) separate cells too ("0 0 0"). Empty cells after
+/// the last value (a spreadsheet's trailing commas) are left out. (A run of
+/// commas counted as one, so `label,x,y,z` over `,1,1,1` read 1, 1, 1 as
+/// label, x, y, and `0,,0,0` as (0, 0, 0).)
 fn split_cells<'a>(text: &'a str, out: &mut Vec<(usize, &'a str)>) {
     out.clear();
     // Bytes, not chars: every separator is ASCII, so a cut between two
     // ASCII bytes is always on a char boundary.
-    let mut start = None;
-    for (i, &b) in text.as_bytes().iter().enumerate() {
-        let separator = is_separator(b) || b == b'\r';
-        match (separator, start) {
-            (true, Some(s)) => {
-                out.push((s, &text[s..i]));
-                start = None;
+    let bytes = text.as_bytes();
+    let delimited = bytes.iter().any(|&b| is_delimiter(b));
+    let mut field_start = 0;
+    for end in (0..=bytes.len()).filter(|&i| i == bytes.len() || is_delimiter(bytes[i])) {
+        let before = out.len();
+        let mut start = None;
+        for i in field_start..end {
+            let blank = matches!(bytes[i], b' ' | b'\t' | b'\r');
+            match (blank, start) {
+                (true, Some(s)) => {
+                    out.push((s, &text[s..i]));
+                    start = None;
+                }
+                (false, None) => start = Some(i),
+                _ => {}
             }
-            (false, None) => start = Some(i),
-            _ => {}
         }
+        if let Some(s) = start {
+            out.push((s, &text[s..end]));
+        }
+        if delimited && out.len() == before {
+            out.push((field_start, ""));
+        }
+        field_start = end + 1;
     }
-    if let Some(s) = start {
-        out.push((s, &text[s..]));
+    while out.last().is_some_and(|(_, cell)| cell.is_empty()) {
+        out.pop();
     }
     for cell in out.iter_mut() {
         if cell.1.len() >= 2 && cell.1.starts_with('"') && cell.1.ends_with('"') {
             *cell = (cell.0 + 1, &cell.1[1..cell.1.len() - 1]);
         }
     }
+}
+
+/// A comma or a semicolon: what ends a CSV field.
+fn is_delimiter(byte: u8) -> bool {
+    matches!(byte, b',' | b';')
 }
 
 /// A cell that reads as a number: a digit in it, so that a header cell
@@ -1532,6 +1571,44 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn an_empty_csv_cell_keeps_its_column_s_place() {
+        // A run of commas counted as one separator: the label column's
+        // empty cells shifted every coordinate one column left, silently.
+        let labelled = "label,x,y,z,k\nstart,0,0,0,0\n,1,1,1,1\n,2,1,1,2\n";
+        assert_eq!(
+            Points::from_text(labelled, 3).unwrap().coords,
+            vec![0, 0, 0, 1, 1, 1, 2, 1, 1]
+        );
+        assert_eq!(
+            Points::from_text("note,x,y,z\n,1,1,1\n", 3).unwrap().coords,
+            vec![1, 1, 1]
+        );
+        // An empty coordinate is an error at its column, not a 0 or a shift.
+        for (text, column) in [
+            ("x,y,z\n0,,0,0\n", 3),
+            ("0,0,0\n1,;1,1\n", 3),
+            (",0,0,0\n", 1),
+        ] {
+            let e = Points::from_text(text, 3).unwrap_err();
+            assert!(
+                e.message.contains(
+                    "an empty cell, between two commas or semicolons or before the first"
+                ),
+                "{text}: {e}"
+            );
+            let crate::error::Location::Source { column: at, .. } = e.location else {
+                panic!("{text}: {e} has no column");
+            };
+            assert_eq!(at, column, "{text}");
+        }
+        // Trailing commas (a spreadsheet's empty columns) and blanks around cells are not cells.
+        assert_eq!(
+            Points::from_text("0, 0 ,0,,\n1 ,1,1,\n", 3).unwrap().coords,
+            vec![0, 0, 0, 1, 1, 1]
+        );
     }
 
     #[test]
