@@ -144,6 +144,15 @@ describe('page state in the URL query', () => {
     expect(stateFromQuery('algorithm=greedy&from=1,2&to=8,3', catalogue)!.options).toMatchObject({ from: [1, 2], to: [8, 3] });
   });
 
+  it("traces a link's tolerance by tolerance, without the example's segmentLength (the two were refused together)", () => {
+    const query = 'algorithm=arc-segments&from=20,0,0&to=0,20,0&center=0,0,0';
+    expect(stateFromQuery(query, catalogue)!.options).toMatchObject({ segmentLength: 8 });
+    const byTolerance = stateFromQuery(`${query}&tolerance=0.25`, catalogue)!.options;
+    expect(byTolerance).toMatchObject({ tolerance: 0.25 });
+    expect(byTolerance).not.toHaveProperty('segmentLength');
+    expect(stateFromQuery(`${query}&segmentLength=4`, catalogue)!.options).not.toHaveProperty('tolerance');
+  });
+
   it('leaves the options the page sets itself to the page', () => {
     const state = stateFromQuery('from=0,0,0&to=1,1,1&maxSteps=5', catalogue)!;
     expect(state.options).not.toHaveProperty('maxSteps');

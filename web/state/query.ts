@@ -162,6 +162,9 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
   return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v).replaceAll('%2C', ',')}`).join('&');
 }
 
+/** Options an algorithm takes one of at most (arc-segments' and a segmented helix's chord rule). */
+const EXCLUSIVE_OPTIONS = [['segmentLength', 'tolerance']] as const;
+
 /** The machine settings that give steps per mm, directly or from the motor. */
 const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
@@ -194,6 +197,14 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
 
   const infos = tracedAlgorithms(state, algorithms);
   state.options = readOptions(params, sharedOptionSpecs(infos), defaultOptions(infos));
+  // A link naming one of two options the core takes only apart leaves out
+  // the other's default (the example's segmentLength beside a link's
+  // tolerance was refused: "give segmentLength or tolerance, not both").
+  for (const pair of EXCLUSIVE_OPTIONS) {
+    for (const [named, other] of [pair, [pair[1], pair[0]]] as const) {
+      if (params.has(named) && !params.has(other)) delete state.options[other];
+    }
+  }
   // The page shows 2 or 3 axes (axisCount): points of another count (nd's
   // from=0,0,0,0) are fitted to the axes its form shows, as the axis control
   // fits them, rather than traced in 4D behind 3 fields (the axes' hint
