@@ -95,6 +95,24 @@ describe('Check points (trace mode)', () => {
     await p.close();
   });
 
+  it('goes to a difference past the end of the path at its last point', async () => {
+    // Points that go on after the rule's path ends: the difference is at
+    // point 11 of a 10-step path, and "Go to point 11" showed step 11 of 10.
+    const regions = await trace({ algorithm: 'regions', ...MOVE });
+    const csv = [...pointsOf(regions), [11, 7, 6], [12, 8, 7]].map((r) => r.join(',')).join('\n') + '\n';
+    regions.free();
+    const p = await openPage('?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    await page.getByTestId('check-points').locator('summary').click();
+    await page.getByTestId('learner-points').fill(csv);
+    await page.getByRole('button', { name: 'Go to point 11' }).click();
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 10 of 10' }).waitFor();
+    await page.waitForURL(/step=10&/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("names the line of a malformed point with the core's message, and keeps long points in storage", async () => {
     const p = await openPage('?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6');
     const { page } = p;

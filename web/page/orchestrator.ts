@@ -160,9 +160,18 @@ export class Orchestrator {
     this.#running?.cancel();
   }
 
-  /** Goes to point index `pointIndex` (a chart or a panel was clicked), stopping playback. */
+  /**
+   * Goes to point index `pointIndex` (a chart or a panel was clicked),
+   * stopping playback; within the paths shown (a learner's points past the
+   * end offered "Go to point 11" on a 10-step path, which showed step 11 of 10).
+   */
   goTo(pointIndex: number): void {
-    this.#p.store.update({ pointIndex, playing: false });
+    this.#p.store.update({ pointIndex: Math.min(Math.max(0, pointIndex), this.#lastPoint()), playing: false });
+  }
+
+  /** The last point index of the paths shown: the longer one's. */
+  #lastPoint(): number {
+    return Math.max(mainTrace(this.#shown)?.steps ?? 0, this.#shown.b?.steps ?? 0);
   }
 
   /** Goes to the last point of a picked G-code line and highlights its steps. */
@@ -208,8 +217,7 @@ export class Orchestrator {
     const state = p.store.state;
     const { a, b, program, difference } = this.#shown;
     const main = mainTrace(this.#shown);
-    const steps = Math.max(main?.steps ?? 0, b?.steps ?? 0);
-    const pointIndex = Math.min(state.pointIndex, steps);
+    const pointIndex = Math.min(state.pointIndex, this.#lastPoint());
     const mainPoint = Math.min(pointIndex, main?.steps ?? 0);
     p.views.setDetail(undefined);
     p.views.show(this.#shown, pointIndex);
@@ -224,7 +232,7 @@ export class Orchestrator {
     p.timeViews.show(state.mode, program, a, pointIndex);
     if (program) void p.gcodePanel.showPoint(pointIndex);
     // Last: it may clamp the step to a shorter path, and every view must hold the new traces by then.
-    p.timeline.setSteps(main || b ? steps : undefined);
+    p.timeline.setSteps(main || b ? this.#lastPoint() : undefined);
     this.#markDifference();
     // Compared, the inspector follows the first path only: say which.
     p.inspectorHeading.textContent = state.mode === 'compare' ? `Current point of ${a?.algorithm ?? 'the first'}` : 'Current point';
