@@ -225,7 +225,7 @@ function run(catalogue: Catalogue): void {
     inspectorHeading: byId('inspector-heading', HTMLHeadingElement),
   });
   orchestrator = page;
-  exports.refresh();
+  exports.refresh(false);
 
   wireHelp(byId('help', HTMLDialogElement), byId('help-open', HTMLButtonElement));
   store.subscribe((state, previous) => page.stateChanged(state, previous));

@@ -310,6 +310,12 @@ describe('trace mode', () => {
       await expect.poll(() => button.isDisabled()).toBe(false);
       expect(await button.getAttribute('title')).toBeNull();
     }
+    // Changed, until the new inputs are traced (a CSV clicked at once saved the old path).
+    await page.getByTestId('input-to-x').fill('12');
+    expect(await buttons[0]!.isDisabled()).toBe(true);
+    expect(await buttons[0]!.getAttribute('title')).toMatch(/^Not exported yet: the inputs as they are now are being traced/);
+    await steps(page, 12);
+    await expect.poll(() => buttons[0]!.isDisabled()).toBe(false);
     // Refused by the core over a traced path: the path stays, dimmed, and is not exported as the inputs'.
     await page.getByTestId('input-to-x').fill('12.5');
     await page.getByTestId('stale-note').filter({ hasText: 'Out of date' }).waitFor();

@@ -36,16 +36,20 @@ function exported(shown: Shown): [RemoteTrace, string][] {
 export interface Exports {
   /**
    * Enables the exports when what is on screen was traced from the inputs
-   * shown; else disables them and says why in their tooltips. A button that
-   * did nothing when nothing was traced, or saved the last path traced when
-   * the inputs had been refused since (dimmed and marked out of date on
-   * screen, but not in the file), said nothing of either.
+   * shown; else disables them and says why in their tooltips: while
+   * `tracing` (the inputs changed and their trace is not on screen yet),
+   * when nothing was traced, or when the inputs were refused since. A
+   * button that did nothing, or saved the last path traced under the new
+   * inputs' name (in the quarter second before a retrace, or after a
+   * refusal, when the view is dimmed and marked out of date but the file
+   * is not), said nothing of it.
    */
-  refresh(): void;
+  refresh(tracing: boolean): void;
 }
 
 /** Why nothing can be exported now, or undefined when what is shown can. */
-function notExportable(shown: Shown): string | undefined {
+function notExportable(shown: Shown, tracing: boolean): string | undefined {
+  if (tracing) return 'Not exported yet: the inputs as they are now are being traced.';
   if (!shown.a && !shown.program && !shown.experiment) return 'Nothing to export: nothing was traced (see the message by the inputs).';
   if (document.body.dataset.stale !== undefined) return 'Not exported: what is shown is out of date with the inputs (see the message by them).';
   return undefined;
@@ -68,8 +72,8 @@ export function wireExports(buttons: ExportButtons, shown: () => Shown, view: { 
     download(`${viewName()}-view.png`, await view.toPng());
   });
   return {
-    refresh() {
-      const why = notExportable(shown());
+    refresh(tracing) {
+      const why = notExportable(shown(), tracing);
       for (const button of [buttons.csv, buttons.json, buttons.png]) {
         button.disabled = why !== undefined;
         if (why === undefined) button.removeAttribute('title');

@@ -117,6 +117,8 @@ export class Orchestrator {
 
   /** The core refused the last request (its message is by the inputs). */
   #rejected = false;
+  /** The inputs changed and their trace is not on screen yet (a retrace waits or runs). */
+  #inputsPending = false;
   /** Forms with a field holding a value the page refused itself (INPUTS_VALIDITY). */
   readonly #invalidForms = new Set<Element>();
 
@@ -138,7 +140,7 @@ export class Orchestrator {
       const [refused, shown] = [this.#refusedHere(), Object.keys(this.#shown).length > 0];
       if (refused && shown) markStale(parts.staleNote, 'rejected');
       else if (!refused && !this.#rejected && document.body.dataset.stale === 'rejected') markStale(parts.staleNote, undefined);
-      parts.exports.refresh();
+      parts.exports.refresh(this.#inputsPending);
     });
     this.#details = new PointDetails(
       (detail: StepDetail) => {
@@ -324,7 +326,8 @@ export class Orchestrator {
       if (run === this.#latestRun) {
         this.#running = undefined;
         p.gcodePanel.setProgress(undefined);
-        p.exports.refresh();
+        this.#inputsPending = false;
+        p.exports.refresh(false);
       }
     }
   }
@@ -395,6 +398,8 @@ export class Orchestrator {
     if (inputsChanged) {
       clearTimeout(this.#retraceTimer);
       this.#retraceTimer = setTimeout(() => void this.retrace(), RETRACE_DELAY_MS);
+      this.#inputsPending = true;
+      p.exports.refresh(true);
       if (state.options !== previous.options) p.views.setHandles(this.#handles());
     } else if (state.learnerPoints !== previous.learnerPoints) {
       // The same rule: only the check runs again.
