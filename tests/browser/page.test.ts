@@ -286,6 +286,23 @@ describe('the page', () => {
     await p.close();
   });
 
+  it('keeps what was typed just before a reload (the address written after the request went)', async () => {
+    const p = await openPage(EXAMPLE);
+    const { page } = p;
+    await traced(page, 10);
+    // No wait for the throttled address: the reload requests the one before.
+    await page.getByTestId('input-to-x').fill('13');
+    await page.reload();
+    await traced(page, 13);
+    expect(await page.getByTestId('input-to-x').inputValue()).toBe('13');
+    await page.waitForURL(/to=13,7,6/);
+    // Once: a later visit to the old address is that address's state.
+    await page.goto(`${siteUrl()}${EXAMPLE}`);
+    await traced(page, 10);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("saves the README screenshot of the G-code mode: the square sample at step 2000, line 5's", async () => {
     // 1600 steps a side (20 mm at 80 steps/mm): steps 1601..3200 are line 5's (Y20).
     const p = await openPage('?mode=gcode&stepsPerMm=80&step=2000');

@@ -34,7 +34,41 @@ export function storage(): Storage | undefined {
  */
 export function loadState(catalogue: Catalogue): AppState {
   const stored = storedState(catalogue);
-  return linkedState(catalogue, stored) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
+  return linkedState(catalogue, stored, addressAfterReload()) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
+}
+
+/** Where the last page of this tab said a reload should have gone (sessionStorage: this tab's only). */
+const RELOAD_KEY = 'voxpath.reload';
+
+/** This tab's sessionStorage, or undefined where it is blocked. */
+function tabStorage(): Storage | undefined {
+  try {
+    return window.sessionStorage;
+  } catch {
+    return undefined;
+  }
+}
+
+/**
+ * The address's query, as the page last wrote it before a reload. A reload
+ * asked for within WRITE_DELAY_MS of a change requests the address as it
+ * was before the change (the throttled write comes at pagehide, too late
+ * for the request), and a link's keys win over storage: what was just typed
+ * was lost. The page leaving notes the address it had and the one it wrote
+ * (persistState); arriving at the former, the latter is taken, once.
+ */
+function addressAfterReload(): string {
+  const search = window.location.search;
+  const note = tabStorage()?.getItem(RELOAD_KEY);
+  tabStorage()?.removeItem(RELOAD_KEY);
+  try {
+    const { from, to } = JSON.parse(note ?? 'null') as { from?: unknown; to?: unknown };
+    if (from !== search || typeof to !== 'string') return search;
+    window.history.replaceState(window.history.state, '', `${window.location.pathname}${to}${window.location.hash}`);
+    return to;
+  } catch {
+    return search;
+  }
 }
 
 /**
@@ -118,11 +152,11 @@ function withOtherModes(catalogue: Catalogue, described: AppState, params: URLSe
   return state;
 }
 
-/** The address's state, if it describes one, with what it leaves out taken from `typed` (withOtherModes). */
-function linkedState(catalogue: Catalogue, typed: AppState | undefined): AppState | undefined {
-  const linked = stateFromQuery(window.location.search, catalogue);
+/** The state `query` (the address's) describes, if any, with what it leaves out taken from `typed` (withOtherModes). */
+function linkedState(catalogue: Catalogue, typed: AppState | undefined, query = window.location.search): AppState | undefined {
+  const linked = stateFromQuery(query, catalogue);
   if (!linked || !typed) return linked;
-  return withOtherModes(catalogue, linked, new URLSearchParams(window.location.search), typed);
+  return withOtherModes(catalogue, linked, new URLSearchParams(query), typed);
 }
 
 /** The page's address for `state`: the permalink. */
@@ -176,7 +210,15 @@ export function persistState(store: Store<AppState>, catalogue: Catalogue): void
     timer ??= setTimeout(flush, WRITE_DELAY_MS);
   });
   window.addEventListener('pagehide', () => {
-    if (timer !== undefined) flush();
+    if (timer === undefined) return;
+    const before = window.location.search;
+    flush();
+    if (store.state.embed) return;
+    try {
+      tabStorage()?.setItem(RELOAD_KEY, JSON.stringify({ from: before, to: window.location.search }));
+    } catch {
+      // Storage full or blocked: a reload comes back to the address as it was.
+    }
   });
   write(store.state);
 }
