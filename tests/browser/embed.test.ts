@@ -122,4 +122,19 @@ describe('the Embed button', () => {
     expect(p.problems()).toEqual([]);
     await p.close();
   });
+
+  it("says when a learner's points are too long for the link it gives (they were left out silently)", async () => {
+    const p = await openPage('?from=0,0,0&to=1000,0,0');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 1000$/ }).waitFor();
+    await page.getByTestId('check-points').locator('summary').click();
+    const points = Array.from({ length: 1001 }, (_, x) => `${x},0,0`).join('\n');
+    await page.getByTestId('learner-points').fill(points);
+    await page.getByTestId('check-verdict').waitFor();
+    await page.getByTestId('embed-open').click();
+    await page.getByTestId('embed-note').filter({ hasText: 'Your points are longer than a link holds (2,000 characters)' }).waitFor();
+    expect(await page.getByTestId('embed-snippet').inputValue()).not.toContain('points=');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
 });

@@ -77,11 +77,15 @@ export function embedding(store: Store<AppState>, catalogue: Catalogue, e: Embed
     if (state.embed) e.open.href = stateLink(state, false);
     if (e.dialog.open) {
       e.snippet.value = iframeSnippet(state, catalogue);
-      const long = state.mode === 'gcode' && state.gcode.length > GCODE_URL_LIMIT;
-      e.note.hidden = !long;
-      e.note.textContent = long
-        ? `This program is longer than a link holds (${GCODE_URL_LIMIT.toLocaleString('en')} characters), so the frame would open on the sample program: shorten it to embed it.`
-        : '';
+      const limit = GCODE_URL_LIMIT.toLocaleString('en');
+      const note =
+        state.mode === 'gcode' && state.gcode.length > GCODE_URL_LIMIT
+          ? `This program is longer than a link holds (${limit} characters), so the frame would open on the sample program: shorten it to embed it.`
+          : state.mode === 'trace' && state.learnerPoints.length > GCODE_URL_LIMIT
+            ? `Your points are longer than a link holds (${limit} characters), so the frame shows the path without them: fewer points (or a shorter move) embed with them.`
+            : '';
+      e.note.hidden = note === '';
+      e.note.textContent = note;
     }
   };
   e.button.addEventListener('click', () => {
