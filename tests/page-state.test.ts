@@ -96,6 +96,9 @@ describe('page state in the URL query', () => {
   it('replaces unusable values with defaults', () => {
     const state = stateFromQuery('from=a,b,c&to=1,,2&tie=sometimes&step=-1&speed=3&slowdown=7&mode=dance&view=4d&decision3d=yes', catalogue)!;
     expect(state).toEqual(first());
+    // An unreadable steps/mm keeps the default machine (it left none: "stepsPerMm: missing").
+    expect(stateFromQuery('mode=gcode&stepsPerMm=80,abc', catalogue)!.machine).toEqual(first().machine);
+    expect(stateFromQuery('mode=gcode&stepAngle=1.8&microsteps=8&pitch=2', catalogue)!.machine).not.toHaveProperty('stepsPerMm');
   });
 
   it('reads decimal numbers only: 0x10, 0b11, 0o7, Infinity and blanks are unusable, not 16, 3, 7', () => {

@@ -211,9 +211,13 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   // says the CLI and the API take them all).
   const axes = axisCount(infos, state.options);
   if (Object.values(state.options).some((v) => Array.isArray(v) && v.length !== axes)) state.options = withAxes(state.options, axes);
-  // A link that names any drive setting names all it uses: a cleared steps/mm (to use the motor's) stays cleared.
-  if (DRIVE_KEYS.some((k) => params.has(k))) delete state.machine.stepsPerMm;
-  state.machine = readOptions(params, machineSpecs(catalogue), state.machine);
+  // A link that names any drive setting names all it uses: a cleared
+  // steps/mm (to use the motor's) stays cleared. Named with a value the page
+  // cannot read (stepsPerMm=80,abc), it is as if not named: the default
+  // stays, not a machine the core calls "stepsPerMm: missing".
+  const linkedMachine = readOptions(params, machineSpecs(catalogue), {});
+  if (DRIVE_KEYS.some((k) => k in linkedMachine)) delete state.machine.stepsPerMm;
+  state.machine = { ...state.machine, ...linkedMachine };
   const experiment = randomLinesExperiment(catalogue);
   if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment);
   state.gcode = params.get('gcode') ?? state.gcode;
