@@ -286,6 +286,21 @@ describe('the page', () => {
     await p.close();
   });
 
+  it("keeps a refused text over a visit to another mode, with its message (the last valid value came back)", async () => {
+    const p = await openPage(EXAMPLE);
+    const { page } = p;
+    await traced(page, 10);
+    await page.getByTestId('input-to-y').fill('');
+    await page.getByTestId('error-to').filter({ hasText: 'y needs a number' }).waitFor();
+    await page.getByTestId('mode-gcode').click();
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    await page.getByTestId('mode-trace').click();
+    await page.getByTestId('error-to').filter({ hasText: 'y needs a number' }).waitFor();
+    expect(await page.getByTestId('input-to-y').inputValue()).toBe('');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps what was typed just before a reload (the address written after the request went)', async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;

@@ -90,9 +90,9 @@ export class OptionsForm {
     this.#idPrefix = idPrefix;
     this.#values = values;
     container.replaceChildren(...specs.map((spec) => this.#field(spec, axes, values[spec.name])));
-    // A text typed and refused before a reload is put back, with its
-    // message, where the state still holds the value it was typed over
-    // (restoredDraft: only as the page loads).
+    // A text typed and refused before a reload, or before this form was
+    // made again (another mode and back), is put back, with its message,
+    // where the state still holds the value it was typed over (restoredDraft).
     for (const [name, field] of this.#fields) {
       const texts = field.draftId === undefined ? undefined : restoredDraft(field.draftId, values[name]);
       if (!texts || texts.length !== field.controls.length) continue;

@@ -49,21 +49,18 @@ export function dropDraft(id: string): void {
   write(drafts);
 }
 
-/** Fields whose draft was looked for since the page loaded. */
-const looked = new Set<string>();
-
 /**
- * The texts last typed into field `id` and refused, to put back as the page
- * loads: the first time the field is made after a load, when the state still
- * holds `value` for it. Else the draft is dropped: a field made anew later
- * (another algorithm, whose example move replaces the inputs) shows the
- * state's value, and so does a field whose value a link changed.
+ * The texts last typed into field `id` and refused, to put back when the
+ * field is made while the state still holds `value` for it: as the page
+ * loads, and when a mode's form is made again (Trace after G-code mode,
+ * which dropped an empty coordinate for the last valid value). Else the
+ * draft is dropped: a field made for another algorithm, whose example move
+ * replaces the inputs, shows the state's value, and so does a field whose
+ * value a link changed.
  */
 export function restoredDraft(id: string, value: unknown): string[] | undefined {
-  const first = !looked.has(id);
-  looked.add(id);
   const draft = read()[id];
-  if (first && draft && draft.value === JSON.stringify(value ?? null) && Array.isArray(draft.texts)) return draft.texts;
+  if (draft && draft.value === JSON.stringify(value ?? null) && Array.isArray(draft.texts)) return draft.texts;
   dropDraft(id);
   return undefined;
 }
