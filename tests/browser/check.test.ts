@@ -66,6 +66,11 @@ describe('Check points (trace mode)', () => {
     const marker = page.getByTestId('check-marker');
     await marker.waitFor();
     expect(await marker.getAttribute('data-point-index')).toBe('5');
+    // A small diamond above the scrubber's track: as a button it took the
+    // buttons' least height and stood as a bar across half the scrubber.
+    const markerBox = (await marker.boundingBox())!;
+    expect(Math.abs(markerBox.width - markerBox.height)).toBeLessThan(2);
+    expect(markerBox.height).toBeLessThan(20);
     await marker.click();
     expect(await page.getByTestId('step-counter').innerText()).toBe('Step 5 of 10');
     // Both cells at point 5 outlined, the learner's path drawn in its colour, with its legend entry.
