@@ -14,3 +14,13 @@ export function formatPoint(coords: ArrayLike<number>): string {
 export function countOf(count: number, noun: string, plural = `${noun}s`): string {
   return `${count} ${count === 1 ? noun : plural}`;
 }
+
+/** `text` ending as a sentence ends: the core's messages have no full stop of their own ("Y has no number after it The run stopped there."), but some do. */
+export function sentence(text: string): string {
+  return /[.!?]$/.test(text) ? text : `${text}.`;
+}
+
+/** `text` without the full stop it may end with, to go on within a sentence ("--max-steps 60000000.." in the status line). */
+export function clause(text: string): string {
+  return text.replace(/\.$/, '');
+}

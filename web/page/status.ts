@@ -5,7 +5,7 @@
  */
 import type { GcodeProgress } from '../core/index.js';
 import { diagnosticText } from '../form/page-advice.js';
-import { countOf, formatPoint } from '../format.js';
+import { clause, countOf, formatPoint } from '../format.js';
 import type { Mode } from '../state/app-state.js';
 import type { MeasuredTrace } from '../worker/client.js';
 import type { ProgramRecord } from '../worker/protocol.js';
@@ -27,7 +27,7 @@ export function traceStatus(trace: MeasuredTrace): string {
 export function programStatus(p: ProgramRecord): string {
   return (
     `${countOf(p.lines, 'line')}, ${countOf(p.moveCount, 'move')}, ${countOf(p.steps, 'step')} at ${p.stepsPerMm.join(' / ')} steps/mm` +
-    `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${diagnosticText(p.errors[0]!)}` : ''}` +
+    `${p.errors.length ? `; stopped at line ${p.stoppedAtLine}: ${clause(diagnosticText(p.errors[0]!))}` : ''}` +
     `${p.warnings.length ? `; ${countOf(p.warnings.length + p.warningsOmitted, 'warning')}` : ''}.`
   );
 }
