@@ -65,7 +65,13 @@ const scene = new SceneView(byId('viewport', HTMLDivElement), {
 
 function run(catalogue: Catalogue): void {
   const store = new Store<AppState>(loadState(catalogue));
-  persistState(store, catalogue);
+  const storageNote = byId('storage-note', HTMLParagraphElement);
+  persistState(store, catalogue, (kept) => {
+    storageNote.hidden = kept;
+    storageNote.textContent = kept
+      ? ''
+      : "Too large for the browser's storage (a few MB): the program, or your points, will not come back after a reload or on a new visit, which open on the sample program (or without the points). Save the text as a file to keep it.";
+  });
   document.body.classList.toggle('embed', store.state.embed);
   embedding(store, catalogue, {
     open: byId('open-full', HTMLAnchorElement),

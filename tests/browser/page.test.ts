@@ -301,6 +301,30 @@ describe('the page', () => {
     await p.close();
   });
 
+  it("says when a program is too large for the browser's storage, and keeps the rest (it was lost silently)", async () => {
+    const p = await openPage('?mode=gcode');
+    const { page } = p;
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const note = page.getByTestId('storage-note');
+    // A comment of 12 million characters: past any browser's few MB, quick to run.
+    await page.evaluate(() => {
+      const text = document.querySelector<HTMLTextAreaElement>('[data-testid=gcode-text]')!;
+      text.value = `G21 G90\nG1 X3 Y4 F600\n(${'x'.repeat(12_000_000)})\n`;
+      text.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    await note.filter({ hasText: "Too large for the browser's storage" }).waitFor();
+    // The rest of the state is kept: steps/mm typed after it come back.
+    await page.getByTestId('input-machine-stepsPerMm').fill('40');
+    await page.waitForURL(/stepsPerMm=40/);
+    await page.reload();
+    await expect.poll(() => page.getByTestId('input-machine-stepsPerMm').inputValue()).toBe('40');
+    // A program that fits: kept, and the note goes.
+    await page.getByTestId('gcode-text').fill('G21 G90\nG1 X3 F600\n');
+    await expect.poll(() => note.isHidden()).toBe(true);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps what was typed just before a reload (the address written after the request went)', async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;

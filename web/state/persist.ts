@@ -88,8 +88,8 @@ interface StoredParts {
   experiment: string;
 }
 
-function storedText(state: AppState): string {
-  const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: Infinity });
+function storedText(state: AppState, gcodeLimit: number): string {
+  const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit });
   const parts: StoredParts = {
     shown: stateToQuery(state, { gcodeLimit: 0 }),
     trace: part('trace'),
@@ -164,15 +164,40 @@ function urlOf(state: AppState): string {
   return `${window.location.pathname}?${stateToQuery(state, { gcodeLimit: GCODE_URL_LIMIT })}${window.location.hash}`;
 }
 
+/**
+ * The program and the learner's points the browser's storage last refused
+ * (it holds a few MB): they are not tried again, whole, until one changes,
+ * since each try writes them out anew (a 1,000,000-line program took 200 to
+ * 800 ms of the main thread a write, and failed every time).
+ */
+let refused: { gcode: string; points: string } | undefined;
+
+/** Told whether the program and the points as they are now are kept in storage (persistState's `onKept`). */
+let reportKept: (kept: boolean) => void = () => {};
+
 function write(state: AppState): void {
   window.history.replaceState(window.history.state, '', urlOf(state));
   // An embedded view (say in a course page) must not replace the reader's own last visit.
   if (state.embed) return;
-  try {
-    storage()?.setItem(STORAGE_KEY, storedText(state));
-  } catch {
-    // Storage full or blocked: the URL still holds the state.
+  const store = storage();
+  if (!store) return;
+  if (refused?.gcode !== state.gcode || refused.points !== state.learnerPoints) {
+    try {
+      store.setItem(STORAGE_KEY, storedText(state, Infinity));
+      refused = undefined;
+      return reportKept(true);
+    } catch {
+      refused = { gcode: state.gcode, points: state.learnerPoints };
+    }
   }
+  // Too large: the rest of the state is kept, the texts as a link keeps them
+  // (up to GCODE_URL_LIMIT characters), and the page says what a reload loses.
+  try {
+    store.setItem(STORAGE_KEY, storedText(state, GCODE_URL_LIMIT));
+  } catch {
+    // Storage blocked or full even so: the URL still holds the state.
+  }
+  reportKept(false);
 }
 
 /**
@@ -191,9 +216,11 @@ export function newHistoryEntry(state: AppState): void {
 /**
  * Persists every change of `store`, throttled, and any pending change when
  * the page is hidden or closed; Back and Forward between the entries
- * newHistoryEntry made bring back their states.
+ * newHistoryEntry made bring back their states. `onKept` is told, at every
+ * write, whether the program and the learner's points fitted in storage.
  */
-export function persistState(store: Store<AppState>, catalogue: Catalogue): void {
+export function persistState(store: Store<AppState>, catalogue: Catalogue, onKept: (kept: boolean) => void): void {
+  reportKept = onKept;
   let timer: ReturnType<typeof setTimeout> | undefined;
   const flush = () => {
     clearTimeout(timer);
