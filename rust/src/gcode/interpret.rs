@@ -712,8 +712,9 @@ impl Interpreter {
             effects.stop.get_or_insert(0.0);
         }
         if let Some((n, code)) = flow {
+            // Each follows the code's name ("M1 ignored: ...", "M0: ...").
             let why = match n {
-                1 => "ignored: an optional stop, which Grbl does not support",
+                1 => " ignored: an optional stop, which Grbl does not support",
                 0 => {
                     ": the program pauses until it is resumed: after this line's motion, timed as a stop with no wait"
                 }
@@ -727,8 +728,7 @@ impl Interpreter {
             if n == 2 || n == 30 {
                 (self.spindle, self.coolant) = (Spindle::Off, COOLANT_OFF);
             }
-            let space = if n == 1 { " " } else { "" };
-            say(code.column, format!("{}{space}{why}", code.name()));
+            say(code.column, format!("{}{why}", code.name()));
         }
         said.sort_by_key(|p| p.column);
         effects.warnings.append(&mut said);
