@@ -3,7 +3,7 @@
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { randomLines, trace, VoxpathError } from '../web/core/index.js';
+import { type ExperimentProgress, heapBytes, randomLines, trace, VoxpathError } from '../web/core/index.js';
 
 const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
 
@@ -51,6 +51,48 @@ describe('randomLines', () => {
     await expect(randomLines({ algorithm: 'regions', tie: 'never' })).rejects.toBeInstanceOf(VoxpathError);
     // The experiment draws each line's ends: a from given was overwritten, line after line.
     await expect(randomLines({ algorithm: 'regions', from: [5, 5, 5] } as never)).rejects.toMatchObject({ field: 'from' });
+  });
+});
+
+describe('randomLines in slices', () => {
+  const OPTIONS = { algorithm: 'bresenham3d', count: 300, seed: 4, maxCoordinate: 500 };
+
+  it("reports its progress after every slice and gives the whole run's result", async () => {
+    const whole = await randomLines(OPTIONS);
+    const seen: ExperimentProgress[] = [];
+    const sliced = await randomLines(OPTIONS, { onProgress: (q) => seen.push(q), sliceMs: 0.01 });
+    expect(sliced).toEqual(whole);
+    expect(seen.length).toBeGreaterThan(2);
+    const done = seen.map((q) => q.linesDone);
+    expect(done).toEqual([...done].sort((a, b) => a - b));
+    for (const q of seen) {
+      const steps = whole.lines.slice(0, q.linesDone).reduce((sum, l) => sum + l.steps, 0);
+      expect(q).toEqual({ linesDone: q.linesDone, lines: 300, steps, done: q.linesDone === 300 });
+    }
+    expect(seen.at(-1)!.done).toBe(true);
+    expect(seen.filter((q) => q.done)).toHaveLength(1);
+  });
+
+  it('stops when its signal is aborted, between slices or once its last slice has run, and frees the run', async () => {
+    const heap = heapBytes();
+    const early = new AbortController();
+    const cancelled = randomLines(OPTIONS, { signal: early.signal, sliceMs: 0.01, onProgress: () => early.abort() });
+    await expect(cancelled).rejects.toMatchObject({ name: 'AbortError' });
+    const late = new AbortController();
+    const finished = randomLines(OPTIONS, { signal: late.signal, onProgress: (q) => q.done && late.abort() });
+    await expect(finished).rejects.toMatchObject({ name: 'AbortError' });
+    expect(heapBytes()).toBe(heap);
+    // Aborted before it starts: no line is traced.
+    const seen: ExperimentProgress[] = [];
+    await expect(randomLines(OPTIONS, { signal: AbortSignal.abort(), onProgress: (q) => seen.push(q) })).rejects.toMatchObject({ name: 'AbortError' });
+    expect(seen).toEqual([]);
+  });
+
+  it('refuses an option of its own it does not know, naming it', async () => {
+    await expect(randomLines(OPTIONS, { onprogress: () => {} } as never)).rejects.toMatchObject({
+      message: 'onprogress: randomLines does not take this option (did you mean onProgress?)',
+    });
+    await expect(randomLines(OPTIONS, { sliceMs: 0 })).rejects.toMatchObject({ field: 'sliceMs' });
   });
 });
 

@@ -11,6 +11,7 @@ import { embedding } from './embed/embed.js';
 import { ExperimentPanel } from './experiment/experiment-panel.js';
 import { AlgorithmInputs } from './form/algorithm-inputs.js';
 import { OptionsForm } from './form/options-form.js';
+import { RunProgress } from './form/run-progress.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
 import { TimeViews } from './page/time-views.js';
@@ -215,6 +216,15 @@ function run(catalogue: Catalogue): void {
     views: pathViews,
     inputs,
     experimentForm,
+    experimentProgress: new RunProgress(
+      {
+        bar: byId('experiment-progress', HTMLProgressElement),
+        cancel: byId('experiment-cancel', HTMLButtonElement),
+        box: byId('experiment-run', HTMLDivElement),
+        text: byId('experiment-run-text', HTMLSpanElement),
+      },
+      () => page.cancel(),
+    ),
     gcodePanel,
     timeline,
     inspector,

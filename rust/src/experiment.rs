@@ -238,82 +238,149 @@ pub const PAPER_FIGURE_9: MeasureSummary = MeasureSummary {
 /// What is wrong with Figure 9 as printed.
 pub const PAPER_FIGURE_9_ERRATUM: &str = "Figure 9 gives 0.7071 as both the largest and the smallest per-line maximum, yet 0.6472 as their mean, which cannot be: a mean lies between the smallest and the largest value. The method of the paper (regions), run on 100 lines with seed 1, gives a smallest per-line maximum of 0.4472 and matches the other eight values to within 0.02, which also shows that Figure 9 measures the error of eq. (11), not the perpendicular distance.";
 
-/// Runs `random-lines`: `count` lines from the origin to points with
-/// coordinates drawn uniformly from 0..=maxCoordinate (Wang: 100 lines,
-/// 0..=100, 3 axes), traced with `algorithm`.
-pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
-    let info = crate::algorithms::find(&request.algorithm)?;
-    let family = RANDOM_LINES.family;
-    if info.family != family {
-        return Err(Error::field(
-            "algorithm",
-            format!(
-                "random-lines traces {}s; {} traces {}s",
-                family.label(),
-                info.id,
-                info.family.label()
-            ),
-        ));
-    }
-    // Each line's ends are the experiment's to draw: a from or to given
-    // would be replaced, line after line, without a word.
-    for own_end in ["from", "to"] {
-        if request.has(own_end) {
+/// How far a [`RandomLinesRun`] has got.
+#[derive(Serialize, Tsify, Debug, Clone, Copy, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct ExperimentProgress {
+    /// Lines traced so far, of `lines`.
+    pub lines_done: u32,
+    pub lines: u32,
+    /// Steps of the lines traced so far.
+    pub steps: u64,
+    pub done: bool,
+}
+
+/// `random-lines` being run a slice of lines at a time, as a G-code program
+/// runs (`gcode::Runner`): 100,000 lines of up to 10,000 steps take tens of
+/// seconds, and a worker must be able to report progress and stop between
+/// slices. The lines are drawn from the generator in order, so the result
+/// does not depend on how the run was sliced.
+pub struct RandomLinesRun {
+    info: &'static crate::algorithm_info::AlgorithmInfo,
+    /// The request every line is traced with: the algorithm's options,
+    /// without the experiment's own; each line sets its from and to.
+    line_request: Request,
+    dims: usize,
+    count: u32,
+    seed: u64,
+    max_coordinate: i64,
+    rng: SplitMix64,
+    steps: u64,
+    lines: Vec<LineResult>,
+}
+
+impl RandomLinesRun {
+    /// Checks the request (each fault names its field) and starts the run:
+    /// `count` lines from the origin to points with coordinates drawn
+    /// uniformly from 0..=maxCoordinate (Wang: 100 lines, 0..=100, 3 axes),
+    /// traced with `algorithm`.
+    pub fn new(request: &Request) -> Result<RandomLinesRun, Error> {
+        let info = crate::algorithms::find(&request.algorithm)?;
+        let family = RANDOM_LINES.family;
+        if info.family != family {
             return Err(Error::field(
-                own_end,
-                "random-lines draws every line's ends itself (from the origin to a random point); give count, seed, maxCoordinate or dims instead",
+                "algorithm",
+                format!(
+                    "random-lines traces {}s; {} traces {}s",
+                    family.label(),
+                    info.id,
+                    info.family.label()
+                ),
             ));
         }
-    }
-    let count = request.integer("count")?.unwrap_or(100);
-    if !(1..=MAX_LINES as i64).contains(&count) {
-        return Err(Error::field(
-            "count",
-            format!("must be 1 to {MAX_LINES}, got {count}"),
-        ));
-    }
-    let seed = request.integer("seed")?.unwrap_or(1);
-    if seed < 0 {
-        return Err(Error::field(
-            "seed",
-            format!("must be 0 or more, got {seed}"),
-        ));
-    }
-    let max_coordinate = request.integer("maxCoordinate")?.unwrap_or(100);
-    if !(1..=10_000).contains(&max_coordinate) {
-        return Err(Error::field(
-            "maxCoordinate",
-            format!("must be 1 to 10000, got {max_coordinate}"),
-        ));
-    }
-    let dims = request
-        .integer("dims")?
-        .unwrap_or(info.min_dims.max(3).min(info.max_dims) as i64);
-    if !(info.min_dims as i64..=info.max_dims as i64).contains(&dims) {
-        return Err(Error::field(
-            "dims",
-            if info.min_dims == info.max_dims {
-                format!("{} takes {} axes, got {dims}", info.id, info.min_dims)
-            } else {
-                format!(
-                    "{} takes {} to {} axes, got {dims}",
-                    info.id, info.min_dims, info.max_dims
-                )
-            },
-        ));
-    }
-    let dims = dims as usize;
-    let mut rng = SplitMix64(seed as u64);
-    let mut lines = Vec::with_capacity(count as usize);
-    for _ in 0..count {
-        let to: Vec<i64> = (0..dims)
-            .map(|_| rng.up_to(max_coordinate as u64) as i64)
-            .collect();
+        // Each line's ends are the experiment's to draw: a from or to given
+        // would be replaced, line after line, without a word.
+        for own_end in ["from", "to"] {
+            if request.has(own_end) {
+                return Err(Error::field(
+                    own_end,
+                    "random-lines draws every line's ends itself (from the origin to a random point); give count, seed, maxCoordinate or dims instead",
+                ));
+            }
+        }
+        let count = request.integer("count")?.unwrap_or(100);
+        if !(1..=MAX_LINES as i64).contains(&count) {
+            return Err(Error::field(
+                "count",
+                format!("must be 1 to {MAX_LINES}, got {count}"),
+            ));
+        }
+        let seed = request.integer("seed")?.unwrap_or(1);
+        if seed < 0 {
+            return Err(Error::field(
+                "seed",
+                format!("must be 0 or more, got {seed}"),
+            ));
+        }
+        let max_coordinate = request.integer("maxCoordinate")?.unwrap_or(100);
+        if !(1..=10_000).contains(&max_coordinate) {
+            return Err(Error::field(
+                "maxCoordinate",
+                format!("must be 1 to 10000, got {max_coordinate}"),
+            ));
+        }
+        let dims = request
+            .integer("dims")?
+            .unwrap_or(info.min_dims.max(3).min(info.max_dims) as i64);
+        if !(info.min_dims as i64..=info.max_dims as i64).contains(&dims) {
+            return Err(Error::field(
+                "dims",
+                if info.min_dims == info.max_dims {
+                    format!("{} takes {} axes, got {dims}", info.id, info.min_dims)
+                } else {
+                    format!(
+                        "{} takes {} to {} axes, got {dims}",
+                        info.id, info.min_dims, info.max_dims
+                    )
+                },
+            ));
+        }
+        debug_assert!(dims as usize <= MAX_AXES);
         let own: Vec<&str> = OPTIONS.iter().map(|o| o.name).collect();
-        let mut line = request.without(&own);
+        Ok(RandomLinesRun {
+            info,
+            line_request: request.without(&own),
+            dims: dims as usize,
+            count: count as u32,
+            seed: seed as u64,
+            max_coordinate,
+            rng: SplitMix64(seed as u64),
+            steps: 0,
+            lines: Vec::with_capacity(count as usize),
+        })
+    }
+
+    /// Traces up to `max_lines` more lines. An option the algorithm refuses
+    /// is refused at the first line, naming the option.
+    pub fn advance(&mut self, max_lines: u32) -> Result<ExperimentProgress, Error> {
+        let end = (self.lines.len() as u64 + max_lines as u64).min(self.count as u64) as usize;
+        while self.lines.len() < end {
+            let line = self.next_line()?;
+            self.steps += line.steps;
+            self.lines.push(line);
+        }
+        Ok(self.progress())
+    }
+
+    pub fn progress(&self) -> ExperimentProgress {
+        ExperimentProgress {
+            lines_done: self.lines.len() as u32,
+            lines: self.count,
+            steps: self.steps,
+            done: self.lines.len() == self.count as usize,
+        }
+    }
+
+    /// The next line drawn and traced, with its errors.
+    fn next_line(&mut self) -> Result<LineResult, Error> {
+        let dims = self.dims;
+        let to: Vec<i64> = (0..dims)
+            .map(|_| self.rng.up_to(self.max_coordinate as u64) as i64)
+            .collect();
+        let mut line = self.line_request.clone();
         line.set("from", Value::from(vec![0; dims]));
         line.set("to", Value::from(to.clone()));
-        let trace = (info.trace)(&line, crate::algorithms::find)?;
+        let trace = (self.info.trace)(&line, crate::algorithms::find)?;
         let n = trace.steps();
         let perpendicular = ErrorStats::of(&trace.deviation_range(0, n + 1));
         let phi = trace.axis_error_range(0, n + 1);
@@ -321,25 +388,36 @@ pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
             .chunks(dims)
             .map(|p| p.iter().map(|v| v * v).sum::<f64>().sqrt())
             .collect();
-        debug_assert!(dims <= MAX_AXES);
-        lines.push(LineResult {
+        Ok(LineResult {
             to,
             steps: n,
             perpendicular,
             axis_error: ErrorStats::of(&norms),
-        });
+        })
     }
-    Ok(RandomLines {
-        experiment: "random-lines",
-        algorithm: info.id.to_string(),
-        seed: seed as u64,
-        max_coordinate,
-        perpendicular: MeasureSummary::of(&lines, |l| l.perpendicular),
-        axis_error: MeasureSummary::of(&lines, |l| l.axis_error),
-        paper_figure_9: PAPER_FIGURE_9,
-        paper_figure_9_erratum: PAPER_FIGURE_9_ERRATUM,
-        lines,
-    })
+
+    /// The result of the lines traced so far (all of them once `done`).
+    pub fn finish(self) -> RandomLines {
+        let lines = self.lines;
+        RandomLines {
+            experiment: "random-lines",
+            algorithm: self.info.id.to_string(),
+            seed: self.seed,
+            max_coordinate: self.max_coordinate,
+            perpendicular: MeasureSummary::of(&lines, |l| l.perpendicular),
+            axis_error: MeasureSummary::of(&lines, |l| l.axis_error),
+            paper_figure_9: PAPER_FIGURE_9,
+            paper_figure_9_erratum: PAPER_FIGURE_9_ERRATUM,
+            lines,
+        }
+    }
+}
+
+/// Runs `random-lines` whole (see [`RandomLinesRun::new`]).
+pub fn random_lines(request: &Request) -> Result<RandomLines, Error> {
+    let mut run = RandomLinesRun::new(request)?;
+    run.advance(u32::MAX)?;
+    Ok(run.finish())
 }
 
 #[cfg(test)]
@@ -402,6 +480,47 @@ mod tests {
         assert!((ours.max.min - 0.4472).abs() < 1e-4);
         // The perpendicular distance is smaller: Figure 9 is not about it.
         assert!(r.perpendicular.mean.mean < paper.mean.mean - 0.04);
+    }
+
+    #[test]
+    fn a_run_in_slices_gives_the_whole_run_s_result() {
+        let json = r#"{"algorithm":"bresenham3d","count":37,"seed":5,"maxCoordinate":50}"#;
+        let whole = run(json).unwrap();
+        for slice in [1, 2, 7, 36, 37, 100] {
+            let mut sliced = RandomLinesRun::new(&Request::from_json(json).unwrap()).unwrap();
+            assert_eq!(sliced.advance(0).unwrap().lines_done, 0);
+            let mut reports = 0;
+            loop {
+                let progress = sliced.advance(slice).unwrap();
+                reports += 1;
+                assert_eq!(progress.lines, 37);
+                assert_eq!(progress.lines_done, (reports * slice).min(37));
+                let steps: u64 = whole.lines[..progress.lines_done as usize]
+                    .iter()
+                    .map(|l| l.steps)
+                    .sum();
+                assert_eq!(progress.steps, steps);
+                if progress.done {
+                    break;
+                }
+            }
+            assert_eq!(reports, 37_u32.div_ceil(slice));
+            assert_eq!(sliced.finish(), whole, "slices of {slice} lines");
+        }
+    }
+
+    #[test]
+    fn an_option_the_algorithm_refuses_is_refused_at_the_first_line() {
+        let mut run = RandomLinesRun::new(
+            &Request::from_json(r#"{"algorithm":"regions","count":5,"tie":"sideways"}"#).unwrap(),
+        )
+        .unwrap();
+        let error = run.advance(1).unwrap_err();
+        assert_eq!(
+            error.location,
+            crate::error::Location::Field("tie".into()),
+            "{error:?}"
+        );
     }
 
     #[test]

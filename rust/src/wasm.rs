@@ -80,13 +80,35 @@ pub fn catalogue() -> JsValue {
     to_js(&crate::catalogue::CATALOGUE)
 }
 
-/// Runs the `random-lines` experiment.
-#[wasm_bindgen(js_name = randomLines, unchecked_return_type = "RandomLines")]
-pub fn random_lines(request_json: &str) -> Result<JsValue, JsValue> {
-    let result = crate::request::Request::from_json(request_json)
-        .and_then(|r| crate::experiment::random_lines(&r))
-        .map_err(|e| to_js_error(&e))?;
-    Ok(to_js(&result))
+/// The `random-lines` experiment being run a slice of lines at a time, so
+/// that a worker can report progress and stop between slices.
+#[wasm_bindgen]
+pub struct RandomLinesRun(crate::experiment::RandomLinesRun);
+
+#[wasm_bindgen]
+impl RandomLinesRun {
+    /// `request_json`: a `RandomLinesOptions` object as JSON text. A bad
+    /// option throws, naming it.
+    #[wasm_bindgen(constructor)]
+    pub fn new(request_json: &str) -> Result<RandomLinesRun, JsValue> {
+        crate::request::Request::from_json(request_json)
+            .and_then(|r| crate::experiment::RandomLinesRun::new(&r))
+            .map(RandomLinesRun)
+            .map_err(|e| to_js_error(&e))
+    }
+
+    /// Traces up to `max_lines` more lines; returns how far the run has got.
+    #[wasm_bindgen(unchecked_return_type = "ExperimentProgress")]
+    pub fn advance(&mut self, max_lines: u32) -> Result<JsValue, JsValue> {
+        let progress = self.0.advance(max_lines).map_err(|e| to_js_error(&e))?;
+        Ok(to_js(&progress))
+    }
+
+    /// The result of the lines traced so far (all of them once `done`).
+    #[wasm_bindgen(unchecked_return_type = "RandomLines")]
+    pub fn finish(self) -> JsValue {
+        to_js(&self.0.finish())
+    }
 }
 
 /// Runs `{"algorithms": [a, b], ...shared options}` (see

@@ -662,6 +662,56 @@ describe('experiment mode', () => {
   });
 });
 
+describe('experiment mode, long runs', () => {
+  it("shows a long run's progress, cancels it, and stops a run a change has superseded", async () => {
+    const p = await openPage('?mode=experiment&algorithm=bresenham3d&count=20&seed=1');
+    const { page } = p;
+    const status = page.getByTestId('trace-status');
+    await status.filter({ hasText: '20 lines traced with bresenham3d.' }).waitFor();
+    const bar = page.getByTestId('experiment-progress');
+    const cancel = page.getByTestId('experiment-cancel');
+    expect(await bar.isHidden()).toBe(true);
+    expect(await cancel.isHidden()).toBe(true);
+    // 100,000 lines of up to 10,000 steps: about 25 s in the worker on the
+    // project's 2-core machine. Progress shows; Cancel stops it.
+    await page.getByTestId('input-experiment-maxCoordinate').fill('10000');
+    await status.filter({ hasText: '20 lines traced' }).waitFor();
+    await page.getByTestId('input-experiment-count').fill('100000');
+    await status.filter({ hasText: /^Tracing: line [1-9][\d,]* of 100000, \d+ steps so far…$/ }).waitFor();
+    expect(await bar.isVisible()).toBe(true);
+    // Said beside the bar, above the tables, as the bar's value says it to a screen reader.
+    const said = await page.evaluate(() => [document.getElementById('experiment-progress')!.getAttribute('aria-valuetext'), document.getElementById('experiment-run-text')!.textContent]);
+    expect(said[0]).toMatch(/^Tracing: [1-9]\d* of 100000 lines, \d+ steps$/);
+    expect(said[1]).toBe(said[0]);
+    expect(Number(await bar.getAttribute('max'))).toBe(100000);
+    // Drawn: a bar across the view, its words and Cancel, not a collapsed or blank box.
+    const drawn = await screenshot(page, 'experiment-progress', '[data-testid=experiment-run]');
+    expect(drawn.width).toBeGreaterThan(400);
+    expect(drawn.differingFraction).toBeGreaterThan(0.05);
+    await cancel.click();
+    await status.filter({ hasText: 'Cancelled. The tables still show the last experiment that ran.' }).waitFor();
+    expect(await bar.isHidden()).toBe(true);
+    expect(await cancel.isHidden()).toBe(true);
+    expect(await text(page, 'stale-note')).toMatch(/the run was cancelled/);
+    // The 20 lines are still there, marked out of date.
+    expect(await page.getByTestId('lines-table').locator('tbody tr').count()).toBe(20);
+
+    // A change while the long run goes on replaces it: the worker stops the
+    // run under way (before, both ran to their end, and the answer to the
+    // change waited the 25 s of the first).
+    await page.getByTestId('input-experiment-seed').fill('2');
+    await status.filter({ hasText: /^Tracing: line [1-9]/ }).waitFor();
+    const changed = performance.now();
+    await page.getByTestId('input-experiment-count').fill('30');
+    await status.filter({ hasText: '30 lines traced with bresenham3d.' }).waitFor({ timeout: 10_000 });
+    expect(performance.now() - changed).toBeLessThan(10_000);
+    expect(await page.getByTestId('lines-table').locator('tbody tr').count()).toBe(30);
+    expect(await text(page, 'stale-note')).toBe('');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
 describe('embedded', () => {
   it("says over the view why a link's input was not traced, as the hidden inputs would (a blank or white frame before)", async () => {
     const cases: [string, string][] = [

@@ -5,18 +5,42 @@
 import { catalogue } from './catalogue.js';
 import { callCore } from './errors.js';
 import { encodeRequest } from './request.js';
-import type { ExperimentInfo, RandomLines, RandomLinesOptions } from './pkg/voxpath.js';
+import { advanceInSlices, checkSliceOptions, type SliceOptions, yieldToEventLoop } from './slices.js';
+import type { ExperimentInfo, ExperimentProgress, RandomLines, RandomLinesOptions } from './pkg/voxpath.js';
 import { loadCore } from './wasm.js';
 
-export type { ErrorStats, ExperimentInfo, LineResult, MeasureSummary, RandomLinesOptions, Spread } from './pkg/voxpath.js';
+export type { ErrorStats, ExperimentInfo, ExperimentProgress, LineResult, MeasureSummary, RandomLinesOptions, Spread } from './pkg/voxpath.js';
 /** The result of random-lines (the core's `experiment::RandomLines`). */
 export type RandomLinesResult = RandomLines;
 
-/** Traces `count` seeded random lines from the origin and summarises their errors. */
-export async function randomLines(options: RandomLinesOptions): Promise<RandomLinesResult> {
-  const core = await loadCore();
+/** Options of randomLines: onProgress gets each slice's ExperimentProgress (lines traced, of count). */
+export type RandomLinesRunOptions = SliceOptions<ExperimentProgress>;
+
+/**
+ * Traces `count` seeded random lines from the origin and summarises their
+ * errors. The core traces them a slice of lines at a time (100,000 lines of
+ * up to 10,000 steps take tens of seconds): `onProgress` hears after each
+ * slice, and `signal` stops the run between slices.
+ */
+export async function randomLines(options: RandomLinesOptions, runOptions: RandomLinesRunOptions = {}): Promise<RandomLinesResult> {
   const request = encodeRequest(options);
-  return callCore(() => core.randomLines(request));
+  const sliceMs = checkSliceOptions('randomLines', runOptions);
+  const core = await loadCore();
+  const run = callCore(() => new core.RandomLinesRun(request));
+  try {
+    await advanceInSlices((lines) => callCore(() => run.advance(lines)), runOptions, sliceMs, { first: 16, least: 1 });
+    // A cancel sent while the last slice ran is still honoured.
+    await yieldToEventLoop();
+    runOptions.signal?.throwIfAborted();
+  } catch (error) {
+    try {
+      run.free();
+    } catch {
+      // A run the core trapped in stays borrowed and cannot be freed; the error thrown says why.
+    }
+    throw error;
+  }
+  return run.finish();
 }
 
 /** The experiments voxpath runs, with their options. */

@@ -13,13 +13,14 @@
  *   program.motionChart(0, 10, 800); // speed and step rates over 0..10 s, chart rows
  *
  * Machine positions are in steps (integers); moves also report mm. The core
- * runs the program a slice of lines at a time and this module yields to the
- * event loop between slices, so a worker stays responsive: it can post
- * progress and take a cancel (an AbortSignal) while a long program runs.
+ * runs the program a slice of lines at a time (./slices.ts), so a worker
+ * stays responsive: it can post progress and take a cancel (an AbortSignal)
+ * while a long program runs.
  */
 import { callCore } from './errors.js';
-import { aNumber, argumentError, describeValue, indexRange, optionalFunction, quoted, text, wholeNumber } from './guard.js';
+import { aNumber, argumentError, indexRange, text, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
+import { advanceInSlices, checkSliceOptions, type SliceOptions, yieldToEventLoop } from './slices.js';
 import { Trace, requireTrace } from './trace.js';
 import { loadCore, withTextBytes } from './wasm.js';
 import type { GcodeResult, GcodeSettings, MotionChart, Move, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
@@ -196,58 +197,8 @@ export class GcodeProgram {
   }
 }
 
-/** Options of runGcode. */
-export interface RunGcodeOptions {
-  /** Called after every slice, and once at the end with done = true. */
-  onProgress?: (progress: GcodeProgress) => void;
-  /** Stops the run between slices, or once its last slice is planned, before the result is made; runGcode then rejects with the signal's reason. */
-  signal?: AbortSignal;
-  /** Time one slice aims at, ms (default 20): the core adapts the lines per slice to it. */
-  sliceMs?: number;
-}
-
-/** The keys RunGcodeOptions has. */
-const RUN_OPTION_KEYS: readonly (keyof RunGcodeOptions)[] = ['onProgress', 'signal', 'sliceMs'];
-
-/**
- * The options of runGcode checked (each named when it is wrong); returns
- * sliceMs. A key runGcode does not know is refused, as the core refuses a
- * trace's: a misspelt `onprogress` would otherwise run without a report.
- */
-function checkRunOptions(options: unknown): number {
-  if (typeof options !== 'object' || options === null) throw argumentError('options', `expected an object, got ${describeValue(options)}`);
-  for (const key of Object.keys(options)) {
-    if ((RUN_OPTION_KEYS as readonly string[]).includes(key)) continue;
-    const meant = RUN_OPTION_KEYS.find((known) => known.toLowerCase() === key.toLowerCase());
-    const hint = meant === undefined ? `it takes ${RUN_OPTION_KEYS.join(', ')}` : `did you mean ${meant}?`;
-    throw argumentError(quoted(key), `runGcode does not take this option (${hint})`);
-  }
-  const { onProgress, signal, sliceMs = 20 } = options as Record<string, unknown>;
-  optionalFunction('onProgress', onProgress);
-  if (signal !== undefined && !(signal instanceof AbortSignal)) throw argumentError('signal', `expected an AbortSignal, got ${describeValue(signal)}`);
-  if (typeof sliceMs !== 'number' || !(sliceMs > 0) || !Number.isFinite(sliceMs)) {
-    throw argumentError('sliceMs', `expected a number of milliseconds above 0, got ${describeValue(sliceMs)}`);
-  }
-  return sliceMs;
-}
-
-/**
- * Lets the event loop run the tasks waiting (a cancel, a progress report)
- * before the next slice: a message posted to a channel of its own, which
- * comes back as a task with no delay, where a timer would wait its clamp
- * (a nested setTimeout(0) waits 4 ms in a browser, 1 ms in Node, which a
- * run of 20 ms slices would spend idle a fifth or a twentieth of its time).
- */
-function yieldToEventLoop(): Promise<void> {
-  return new Promise((resolve) => {
-    const { port1, port2 } = new MessageChannel();
-    port1.onmessage = () => {
-      port1.close();
-      resolve();
-    };
-    port2.postMessage(null);
-  });
-}
+/** Options of runGcode: onProgress gets each slice's Progress (lines of the program). */
+export type RunGcodeOptions = SliceOptions<GcodeProgress>;
 
 /**
  * Parses and runs a G-code program. Bad settings reject with a VoxpathError
@@ -257,25 +208,18 @@ function yieldToEventLoop(): Promise<void> {
 export async function runGcode(source: string, settings: GcodeSettings, options: RunGcodeOptions = {}): Promise<GcodeProgram> {
   text('source', source, 'the program');
   const settingsJson = encodeRequest(settings, 'settings');
-  const sliceMs = checkRunOptions(options);
+  const sliceMs = checkSliceOptions('runGcode', options);
   const core = await loadCore();
   const run = callCore(() => trapsAsErrors(() => withTextBytes(core, source, (bytes) => new core.GcodeRun(bytes, settingsJson)), 0));
   let finished = false;
   let linesDone = 0;
   try {
-    let lines = 256;
-    for (;;) {
-      options.signal?.throwIfAborted();
-      const started = performance.now();
+    const advance = (lines: number) => {
       const progress = callCore(() => trapsAsErrors(() => run.advance(lines), linesDone));
       linesDone = progress.linesDone;
-      const elapsed = performance.now() - started;
-      options.onProgress?.(progress);
-      if (progress.done) break;
-      // Aim the next slice at sliceMs, growing at most 4 times per slice.
-      lines = Math.max(16, Math.min(lines * 4, Math.round((lines * sliceMs) / Math.max(elapsed, 0.5))));
-      await yieldToEventLoop();
-    }
+      return progress;
+    };
+    await advanceInSlices(advance, options, sliceMs, { first: 256, least: 16 });
     finished = true;
     const result = run.finish();
     // Every line is read and the motion planned: a cancel sent meanwhile

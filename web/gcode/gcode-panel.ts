@@ -19,6 +19,7 @@
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
+import { RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, sentence } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
@@ -105,6 +106,8 @@ export class GcodePanel {
   /** The listing's lines in view, placed over a spacer as tall as the whole program. */
   readonly #listingLines: HTMLElement;
   readonly #listingSpacer: HTMLElement;
+  /** The run's progress bar and Cancel. */
+  readonly #progress: RunProgress;
 
   constructor(
     elements: GcodePanelElements,
@@ -164,7 +167,7 @@ export class GcodePanel {
     }
     for (const type of ['click', 'keyup']) elements.text.addEventListener(type, () => this.#pick(this.#lineAt(elements.text.selectionStart)));
     elements.run.addEventListener('click', events.onRun);
-    elements.cancel.addEventListener('click', events.onCancel);
+    this.#progress = new RunProgress({ bar: elements.progress, cancel: elements.cancel }, events.onCancel);
 
     this.#machineForm = new OptionsForm(elements.machine, elements.formError, machineSpecs(catalogue), 3, store.state.machine, (name, value) => {
       const machine = { ...store.state.machine };
@@ -451,14 +454,8 @@ export class GcodePanel {
 
   /** A run's progress (undefined: no run under way). */
   setProgress(progress: GcodeProgress | undefined): void {
-    const { progress: bar, cancel, run } = this.#e;
-    bar.hidden = cancel.hidden = progress === undefined;
-    run.disabled = progress !== undefined;
-    if (progress) {
-      bar.max = Math.max(1, progress.lines);
-      bar.value = progress.linesDone;
-      bar.setAttribute('aria-valuetext', `${progress.linesDone} of ${progress.lines} lines, ${progress.steps} steps`);
-    }
+    this.#e.run.disabled = progress !== undefined;
+    this.#progress.set(progress && { done: progress.linesDone, total: progress.lines, text: `${progress.linesDone} of ${progress.lines} lines, ${progress.steps} steps` });
   }
 
   /** Shows the core's verdict on the machine settings. */

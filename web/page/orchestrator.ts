@@ -25,6 +25,7 @@ import type { ExperimentPanel } from '../experiment/experiment-panel.js';
 import type { AlgorithmInputs } from '../form/algorithm-inputs.js';
 import { INPUTS_VALIDITY, type InputsValidity, type OptionsForm } from '../form/options-form.js';
 import { diagnosticText, pathLimitAdvice } from '../form/page-advice.js';
+import type { RunProgress } from '../form/run-progress.js';
 import type { GcodePanel } from '../gcode/gcode-panel.js';
 import type { TimingDiagram } from '../gcode/timing-diagram.js';
 import type { Inspector } from '../inspector/inspector.js';
@@ -47,8 +48,8 @@ import { mainTrace, type Shown } from './shown.js';
 import type { Status } from './status.js';
 
 /**
- * A G-code run's progress is shown at once, then at most this often, ms,
- * and at its end.
+ * A long run's progress (a G-code program's, the experiment's) is shown at
+ * once, then at most this often, ms, and at its end.
  * The worker reports it after every slice of lines (about 20 ms), and each
  * update repaints the page: where the compositor draws on the CPU, that
  * took the run's time in the worker from 50 to 55 ms to 58 to 71 ms at
@@ -78,6 +79,8 @@ export interface PageParts {
   views: PathViews;
   inputs: AlgorithmInputs;
   experimentForm: OptionsForm;
+  /** The experiment's progress bar and Cancel. */
+  experimentProgress: RunProgress;
   gcodePanel: GcodePanel;
   timeline: Timeline;
   inspector: Inspector;
@@ -105,7 +108,8 @@ export class Orchestrator {
   #shown: Shown = {};
   /** Counts runs of the core, so only the latest one's answer is shown. */
   #latestRun = 0;
-  #running: Running<RemoteProgram> | undefined;
+  /** The long run under way (a program, an experiment), to cancel. */
+  #running: Running<unknown> | undefined;
   /** The G-code line last picked (pickLine), whose cells are on their way. */
   #pickedLine: LineSteps | undefined;
   #retraceTimer: ReturnType<typeof setTimeout> | undefined;
@@ -157,7 +161,7 @@ export class Orchestrator {
     return this.#shown;
   }
 
-  /** Stops the G-code run under way. */
+  /** Stops the long run under way (a G-code program, the experiment). */
   cancel(): void {
     this.#running?.cancel();
   }
@@ -247,6 +251,21 @@ export class Orchestrator {
     this.#shown = {};
   }
 
+  /**
+   * `show`, called for run `run`'s progress at once, then at most every
+   * PROGRESS_EVERY_MS, and at its end; not once a later run has started.
+   */
+  #throttled<Progress extends { done: boolean }>(run: number, show: (progress: Progress) => void): (progress: Progress) => void {
+    let shownAt = -Infinity;
+    return (progress) => {
+      const now = performance.now();
+      // The last report is shown too, so the bar does not end at its first.
+      if (run !== this.#latestRun || (now - shownAt < PROGRESS_EVERY_MS && !progress.done)) return;
+      shownAt = now;
+      show(progress);
+    };
+  }
+
   /** Runs the core on the current inputs and shows what it returns (unless a later run has started). */
   async retrace(): Promise<void> {
     const p = this.#p;
@@ -255,6 +274,7 @@ export class Orchestrator {
     this.#running?.cancel();
     this.#running = undefined;
     p.gcodePanel.setProgress(undefined);
+    p.experimentProgress.set(undefined);
     p.status.tracing(state.mode);
     try {
       let next: Shown;
@@ -268,19 +288,27 @@ export class Orchestrator {
         const [a, b] = await Promise.all([p.client.trace(traceOptions(state, infoA!)), p.client.trace(traceOptions(state, infoB!))]);
         next = { a, b, difference: await p.client.difference(a, b) };
       } else if (state.mode === 'gcode') {
-        let shownAt = -Infinity;
-        const started = p.client.runGcode(state.gcode, state.machine, (progress) => {
-          const now = performance.now();
-          // The last report is shown too, so the bar does not end at its first.
-          if (run !== this.#latestRun || (now - shownAt < PROGRESS_EVERY_MS && !progress.done)) return;
-          shownAt = now;
-          p.gcodePanel.setProgress(progress);
-          p.status.running(progress);
-        });
+        const started = p.client.runGcode(
+          state.gcode,
+          state.machine,
+          this.#throttled(run, (progress) => {
+            p.gcodePanel.setProgress(progress);
+            p.status.running(progress);
+          }),
+        );
         this.#running = started;
         next = { program: await started.result };
       } else {
-        next = { experiment: await p.client.randomLines({ algorithm: experimentAlgorithm(state, p.catalogue).id, ...state.experiment }) };
+        const options = { algorithm: experimentAlgorithm(state, p.catalogue).id, ...state.experiment };
+        const started = p.client.randomLines(
+          options,
+          this.#throttled(run, (progress) => {
+            p.experimentProgress.set({ done: progress.linesDone, total: progress.lines, text: `Tracing: ${progress.linesDone} of ${progress.lines} lines, ${progress.steps} steps` });
+            p.status.tracingLines(progress);
+          }),
+        );
+        this.#running = started;
+        next = { experiment: await started.result };
       }
       if (run !== this.#latestRun) {
         for (const t of [next.a, next.b, next.program]) t?.free();
@@ -306,8 +334,9 @@ export class Orchestrator {
     } catch (error) {
       if (run !== this.#latestRun || error instanceof CoreCrash) return;
       if (error instanceof Cancelled) {
-        p.status.cancelled();
-        if (this.#shown.program) markStale(p.staleNote, 'cancelled');
+        const kept = this.#shown.program ?? this.#shown.experiment;
+        p.status.cancelled(kept === undefined ? undefined : this.#shown.program ? 'program' : 'experiment');
+        if (kept) markStale(p.staleNote, 'cancelled');
       } else if (error instanceof InputRejected) {
         this.#rejected = true;
         if (Object.keys(this.#shown).length > 0) markStale(p.staleNote, 'rejected');
@@ -326,6 +355,7 @@ export class Orchestrator {
       if (run === this.#latestRun) {
         this.#running = undefined;
         p.gcodePanel.setProgress(undefined);
+        p.experimentProgress.set(undefined);
         this.#inputsPending = false;
         p.exports.refresh(false);
       }

@@ -3,7 +3,7 @@
  * (steps, ends, the largest deviation and the bound the rule promises, ties;
  * a program's lines, moves and stop), and why nothing was traced.
  */
-import type { GcodeProgress } from '../core/index.js';
+import type { ExperimentProgress, GcodeProgress } from '../core/index.js';
 import { diagnosticText } from '../form/page-advice.js';
 import { clause, countOf, formatPoint } from '../format.js';
 import type { Mode } from '../state/app-state.js';
@@ -64,8 +64,16 @@ export class Status {
     else this.#say([shown.a, shown.b].filter((t) => t !== undefined).map(traceStatus).join(' '));
   }
 
-  cancelled(): void {
-    this.#say('Cancelled. The view still shows the last program that ran.');
+  /** How far the experiment has got. */
+  tracingLines(progress: ExperimentProgress): void {
+    this.#say(`Tracing: line ${progress.linesDone} of ${progress.lines}, ${progress.steps} steps so far…`);
+  }
+
+  /** The run was cancelled; `kept`: what is still on screen from the last run that went to its end. */
+  cancelled(kept: 'program' | 'experiment' | undefined): void {
+    if (kept === 'program') this.#say('Cancelled. The view still shows the last program that ran.');
+    else if (kept === 'experiment') this.#say('Cancelled. The tables still show the last experiment that ran.');
+    else this.#say('Cancelled.');
   }
 
   /** The core rejected the input (the form shows why); `keptPrevious`: an earlier path is still on screen. */

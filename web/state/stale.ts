@@ -12,7 +12,7 @@ export type Staleness = 'rejected' | 'cancelled';
 
 const NOTES: Record<Staleness, string> = {
   rejected: 'Out of date: the inputs were not traced (see the message by them). Shown: the last ones that were.',
-  cancelled: 'Out of date: the run was cancelled. Shown: the last program that ran to its end.',
+  cancelled: 'Out of date: the run was cancelled. Shown: the last run that went to its end.',
 };
 
 /** Marks the results on screen as out of date (why), or as those of the inputs again (undefined). */

@@ -7,15 +7,17 @@
  * every pending request is rejected with CoreCrash, the listener is told, and
  * the next request starts a fresh worker: the page stays usable.
  */
-import type { GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { ExperimentProgress, GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { ChartSeries, IdealLine, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 import type {
   InputError,
   LearnerCheck,
   LineSteps,
+  LongRequestKind,
   PathSummary,
   PointsSent,
   ProgramRecord,
+  ProgressValue,
   PulseWindow,
   ReplyMessage,
   ReplyValue,
@@ -61,7 +63,7 @@ export interface WorkerPort {
 interface Pending {
   resolve(value: ReplyValue[RequestKind]): void;
   reject(error: Error): void;
-  onProgress?: (progress: GcodeProgress) => void;
+  onProgress?: (progress: ProgressValue[LongRequestKind]) => void;
 }
 
 /** A request under way that can be stopped. */
@@ -146,12 +148,15 @@ export class TraceClient {
     return this.start(request).result;
   }
 
-  /** Sends `request`; progress messages go to `onProgress`. */
-  start<K extends RequestKind>(request: Extract<WorkerRequest, { kind: K }>, onProgress?: (progress: GcodeProgress) => void): Running<ReplyValue[K]> {
+  /** Sends `request`; progress messages (of a long request) go to `onProgress`. */
+  start<K extends RequestKind>(
+    request: Extract<WorkerRequest, { kind: K }>,
+    onProgress?: (progress: K extends LongRequestKind ? ProgressValue[K] : never) => void,
+  ): Running<ReplyValue[K]> {
     const id = this.#nextId++;
     const worker = this.#port();
     const result = new Promise<ReplyValue[K]>((resolve, reject) => {
-      this.#pending.set(id, { resolve: resolve as Pending['resolve'], reject, onProgress });
+      this.#pending.set(id, { resolve: resolve as Pending['resolve'], reject, onProgress: onProgress as Pending['onProgress'] });
       worker.postMessage({ id, request });
     });
     return {
@@ -195,9 +200,9 @@ export class TraceClient {
     return this.request({ kind: 'check', traceId: rule.traceId, options, text });
   }
 
-  /** Wang's random-lines experiment (section 3.2, Figure 9). */
-  randomLines(options: RandomLinesOptions): Promise<RandomLinesResult> {
-    return this.request({ kind: 'randomLines', options });
+  /** Wang's random-lines experiment (section 3.2, Figure 9), reporting progress after every slice of lines; cancellable. */
+  randomLines(options: RandomLinesOptions, onProgress: (progress: ExperimentProgress) => void): Running<RandomLinesResult> {
+    return this.start({ kind: 'randomLines', options }, onProgress);
   }
 }
 

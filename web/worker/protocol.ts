@@ -4,8 +4,8 @@
  * core.
  *
  * Each request carries an id; the worker answers each with exactly one reply
- * carrying the same id, and a long request (a G-code run) may send progress
- * messages with that id before it. A `cancel` message stops the request it
+ * carrying the same id, and a long request (a G-code run, the random-lines
+ * experiment) may send progress messages with that id before it. A `cancel` message stops the request it
  * names at its next slice. Bulk arrays cross as transferred buffers, not
  * copies:
  * - points: Int32Array, stride dims: a path's whole, or every n-th point of
@@ -22,7 +22,7 @@
  * and its 3D overlay) is one request, stepDetail, answered with the core's
  * StepDetail.
  */
-import type { Check, FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { Check, ExperimentProgress, FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { Catalogue, ChartSeries, IdealLine, Limit, Metrics, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
@@ -194,4 +194,13 @@ export type ReplyMessage =
   | { id: number; ok: true; value: ReplyValue[RequestKind] }
   | { id: number; ok: false; failure: 'input'; error: InputError }
   | { id: number; ok: false; failure: 'crash' | 'error' | 'cancelled'; message: string }
-  | { id: number; progress: GcodeProgress };
+  | { id: number; progress: ProgressValue[LongRequestKind] };
+
+/** What a long request reports after each slice of its work, by request kind. */
+export interface ProgressValue {
+  gcode: GcodeProgress;
+  randomLines: ExperimentProgress;
+}
+
+/** The requests that run in slices, report progress and can be cancelled. */
+export type LongRequestKind = keyof ProgressValue;

@@ -19,7 +19,7 @@ import {
 } from '../core/index.js';
 import type { Trace, TraceSummary } from '../core/index.js';
 import { pointsEvery } from './protocol.js';
-import type { PointsSent, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
+import type { LongRequestKind, PointsSent, ProgressValue, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
 const programs = new Map<number, GcodeProgram>();
@@ -61,6 +61,22 @@ function tracedPath(t: Trace, sent: PointsSent): TracedPath {
   return { ...path, summary: { ...path.summary, metrics: t.metrics } };
 }
 
+/** Posts the progress of the long request `id`. */
+function report(id: number, progress: ProgressValue[LongRequestKind]): void {
+  self.postMessage({ id, progress } satisfies ReplyMessage);
+}
+
+/** Runs the long request `id`, which a cancel message naming it aborts through `signal`. */
+async function cancellable(id: number, work: (signal: AbortSignal) => Promise<Answer>): Promise<Answer> {
+  const controller = new AbortController();
+  running.set(id, controller);
+  try {
+    return await work(controller.signal);
+  } finally {
+    running.delete(id);
+  }
+}
+
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {
   switch (request.kind) {
     case 'catalogue':
@@ -71,14 +87,9 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       const path = tracedPath(t, request.pointsSent);
       return { value: path, transfer: [path.sampledPoints.buffer, path.idealLine.xyz.buffer] };
     }
-    case 'gcode': {
-      const controller = new AbortController();
-      running.set(id, controller);
-      try {
-        const program = await runGcode(request.source, request.settings, {
-          signal: controller.signal,
-          onProgress: (progress) => self.postMessage({ id, progress } satisfies ReplyMessage),
-        });
+    case 'gcode':
+      return cancellable(id, async (signal) => {
+        const program = await runGcode(request.source, request.settings, { signal, onProgress: (progress) => report(id, progress) });
         traces.set(request.traceId, program.trace);
         programs.set(request.traceId, program);
         const path = pathOf(program.trace, request.pointsSent);
@@ -88,10 +99,7 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
           value: { ...path, program: record },
           transfer: [path.sampledPoints.buffer, path.idealLine.xyz.buffer],
         };
-      } finally {
-        running.delete(id);
-      }
-    }
+      });
     case 'stepDetail':
       return { value: held(request.traceId).stepDetail(request.pointIndex), transfer: [] };
     case 'points': {
@@ -151,7 +159,10 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       return { value: [...(request.format === 'csv' ? traceCsvChunks(t) : traceJsonChunks(t))].join(''), transfer: [] };
     }
     case 'randomLines':
-      return { value: await randomLines(request.options), transfer: [] };
+      return cancellable(id, async (signal) => ({
+        value: await randomLines(request.options, { signal, onProgress: (progress) => report(id, progress) }),
+        transfer: [],
+      }));
     case 'check': {
       // The text is read once, giving its line and column to any error, and checked as the flat points read.
       const dims = held(request.traceId).dims;
