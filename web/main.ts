@@ -233,7 +233,7 @@ function run(catalogue: Catalogue): void {
     checkPanel: new CheckPanel({ box: byId('check-points', HTMLDetailsElement), text: byId('learner-points', HTMLTextAreaElement), result: byId('check-result', HTMLDivElement) }, store, goTo),
     timing: new TimingDiagram(byId('timing', HTMLDivElement), goTo),
     timeViews: new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), vcd: byId('export-vcd', HTMLButtonElement) }, catalogue, timeline, goTo),
-    experimentPanel: new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue),
+    experimentPanel: new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue, byId('viewport', HTMLDivElement)),
     stepReason: new StepReason(byId('step-reason', HTMLParagraphElement)),
     staleNote: byId('stale-note', HTMLParagraphElement),
     embedProblem: byId('embed-problem', HTMLParagraphElement),

@@ -33,9 +33,14 @@ export class PathCharts {
     this.#onPick = onPick;
   }
 
-  /** Charts `trace` (undefined: none) once the worker sends its rows. */
-  async setTrace(trace: ChartedTrace | undefined): Promise<void> {
+  /**
+   * Charts `trace` (undefined: none) once the worker sends its rows, its
+   * cursor at point index `pointIndex` (a link's step: the cursor stayed at
+   * 0 until the step changed).
+   */
+  async setTrace(trace: ChartedTrace | undefined, pointIndex: number): Promise<void> {
     const request = ++this.#request;
+    this.#pointIndex = pointIndex;
     // The new path is drawn first: the worker builds the series after that frame.
     await afterNextFrame();
     if (request !== this.#request) return;

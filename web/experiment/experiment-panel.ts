@@ -58,15 +58,25 @@ export class ExperimentPanel {
   readonly #catalogue: Catalogue;
   /** The result shown before this one, to say when two algorithms gave the same statistics. */
   #previous: RandomLinesResult | undefined;
+  /** What takes the keyboard's focus once a line is open in Trace mode: the view (the skip link's target), where the arrows step the path. */
+  readonly #focusInTrace: HTMLElement;
+  /** The line last opened, by its 1-based number, whose button takes the focus back when its table shows again (Back). */
+  #openedLine: number | undefined;
 
-  constructor(container: HTMLElement, store: Store<AppState>, catalogue: Catalogue) {
+  constructor(container: HTMLElement, store: Store<AppState>, catalogue: Catalogue, focusInTrace: HTMLElement) {
     this.#container = container;
     this.#store = store;
     this.#catalogue = catalogue;
+    this.#focusInTrace = focusInTrace;
   }
 
-  /** Opens line `line` of `result` in Trace mode: the same algorithm, from the origin to its point. */
+  /**
+   * Opens line `line` of `result` in Trace mode: the same algorithm, from
+   * the origin to its point. The focus goes with it: the button pressed
+   * vanished with the table, and left it on the page's body.
+   */
   #open(result: RandomLinesResult, line: LineResult): void {
+    this.#openedLine = result.lines.indexOf(line) + 1;
     // Back returns to the table.
     newHistoryEntry(this.#store.state);
     this.#store.update({
@@ -78,6 +88,7 @@ export class ExperimentPanel {
       camera: null,
       projection: defaultProjection(line.to.length),
     });
+    this.#focusInTrace.focus();
   }
 
   show(result: RandomLinesResult): void {
@@ -147,5 +158,11 @@ export class ExperimentPanel {
       element('p', { className: 'erratum', textContent: `Erratum: ${result.paperFigure9Erratum}` }),
       element('div', { className: 'table-scroll lines-scroll' }, lines),
     );
+    // Back from the line opened: its button takes the focus again, unless the focus is somewhere already.
+    const opened = this.#openedLine;
+    this.#openedLine = undefined;
+    if (opened !== undefined && (document.activeElement === null || document.activeElement === document.body)) {
+      this.#container.querySelector<HTMLButtonElement>(`[data-testid=open-line-${opened}]`)?.focus();
+    }
   }
 }

@@ -231,7 +231,7 @@ export class Orchestrator {
     p.inspector.setTrace(main, mainPoint);
     p.stepReason.setTraces(main, state.mode === 'compare' ? b : undefined, pointIndex);
     this.#details.setTrace(main, mainPoint);
-    void p.charts.setTrace(main);
+    void p.charts.setTrace(main, mainPoint);
     p.comparePanel.show(a, b, difference);
     p.gcodePanel.setProgram(program);
     p.timing.setTrace(program, pointIndex);

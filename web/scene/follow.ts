@@ -18,7 +18,7 @@ export function followControl(store: Store<AppState>, checkbox: HTMLInputElement
   checkbox.addEventListener('change', () => store.update({ follow: checkbox.checked }));
   document.addEventListener('keydown', (event) => {
     if (event.key.toLowerCase() !== 'f' || event.altKey || event.ctrlKey || event.metaKey || event.defaultPrevented) return;
-    if (handlesItsOwnKeys(event.target, event.key) && !(event.target instanceof HTMLCanvasElement)) return;
+    if (handlesItsOwnKeys(event.target, event.key)) return;
     event.preventDefault();
     store.update({ follow: !store.state.follow });
   });

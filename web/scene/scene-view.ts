@@ -213,7 +213,7 @@ export class SceneView {
     // Focusable, so the keyboard can move the camera: arrows pan, Shift+arrows orbit, + and - zoom.
     canvas.tabIndex = 0;
     canvas.dataset.ownKeys = 'true';
-    canvas.setAttribute('aria-keyshortcuts', 'ArrowLeft ArrowRight ArrowUp ArrowDown Shift+ArrowLeft Shift+ArrowRight + -');
+    canvas.setAttribute('aria-keyshortcuts', 'ArrowLeft ArrowRight ArrowUp ArrowDown Shift+ArrowLeft Shift+ArrowRight Shift+ArrowUp Shift+ArrowDown + = -');
     this.#labels = new CSS2DRenderer();
     this.#labels.domElement.className = 'scene-labels';
     container.append(canvas, this.#labels.domElement);

@@ -36,12 +36,29 @@ export interface TimelineElements {
   jumpInput: HTMLInputElement;
 }
 
+/**
+ * The keys an element with `data-own-keys` uses itself, as its
+ * aria-keyshortcuts declares them (one list, for assistive technology and
+ * for the page): "Shift+ArrowLeft" uses ArrowLeft, "+" is the plus key.
+ */
+function ownKeys(owner: Element): string[] {
+  return (owner.getAttribute('aria-keyshortcuts') ?? '').split(' ').map((shortcut) => (shortcut === '+' ? '+' : shortcut.split('+').at(-1)!));
+}
+
 /** Targets whose own keyboard handling must win over the page's keys. */
 export function handlesItsOwnKeys(target: EventTarget | null, key: string): boolean {
+  // A modal dialog (the keyboard help, the Embed dialog) takes every key:
+  // the page behind it is inert, and End or F there moved the path unseen.
+  if (document.querySelector('dialog:modal')) return true;
   if (!(target instanceof HTMLElement)) return false;
-  // The view and its handles use the arrows themselves (data-own-keys).
-  if (target.closest('[data-own-keys]')) return true;
-  if (target.isContentEditable || target instanceof HTMLTextAreaElement || target instanceof HTMLSelectElement) return true;
+  // The view and its handles use the keys they declare (the arrows, Page Up
+  // and Down, + and -), and only those: Space, Home, End and ? still play,
+  // go and open the help there.
+  const owner = target.closest('[data-own-keys]');
+  if (owner && ownKeys(owner).includes(key)) return true;
+  // A select, and the options of one open as a styled list (appearance:
+  // base-select focuses the option), take arrows, Home/End and Space.
+  if (target.isContentEditable || target instanceof HTMLTextAreaElement || target.closest('select')) return true;
   // A range, checkbox or radio button takes arrows, Home/End and Space, but
   // no printable key (so '?' still opens the help there); other inputs edit text.
   if (target instanceof HTMLInputElement) return !['range', 'checkbox', 'radio'].includes(target.type) || key.length !== 1 || key === ' ';
