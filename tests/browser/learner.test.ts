@@ -453,3 +453,32 @@ describe("a G-code step's decision", () => {
     await p.close();
   });
 });
+
+describe('switching modes', () => {
+  it('comes back to a mode at the step it was left at, unless its inputs changed meanwhile', async () => {
+    const p = await openPage('?from=0,0,0&to=10,7,6&step=5');
+    const { page } = p;
+    const counter = page.getByTestId('step-counter');
+    await counter.filter({ hasText: 'Step 5 of 10' }).waitFor();
+    await page.getByTestId('mode-gcode').click();
+    await counter.filter({ hasText: /^Step 0 of [1-9]/ }).waitFor();
+    await page.getByTestId('scrubber').focus();
+    await page.keyboard.press('End');
+    await page.getByTestId('mode-trace').click();
+    await status(page, 'to (10, 7, 6)');
+    await counter.filter({ hasText: 'Step 5 of 10' }).waitFor();
+    // G-code again: its program has not changed, so it comes back at its last step.
+    await page.getByTestId('mode-gcode').click();
+    await counter.filter({ hasText: /^Step (\d+) of \1$/ }).waitFor();
+    // Compare changes the algorithm: Trace's move is traced by another rule, from step 0.
+    await page.getByTestId('mode-compare').click();
+    await counter.filter({ hasText: /^Step 0 of / }).waitFor();
+    await page.getByTestId('algorithm').selectOption('bresenham3d');
+    await status(page, 'bresenham3d');
+    await page.getByTestId('mode-trace').click();
+    await status(page, 'to (10, 7, 6)');
+    await counter.filter({ hasText: 'Step 0 of 10' }).waitFor();
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -10,6 +10,7 @@ import {
   type Catalogue,
   COMPARE_LAYOUTS,
   type Mode,
+  MODE_INPUT_KEYS,
   type OptionValue,
   axisChoices,
   axisCount,
@@ -70,6 +71,8 @@ export class AlgorithmInputs {
   #form: OptionsForm | undefined;
   /** What the form was built for: mode, algorithm ids and axis count. */
   #formKey = '';
+  /** Where each mode was left: its step, its camera, and its inputs then (MODE_INPUT_KEYS' values). */
+  readonly #left = new Map<Mode, { pointIndex: number; camera: AppState['camera']; inputs: unknown[] }>();
 
   constructor(elements: AlgorithmInputElements, catalogue: Catalogue, store: Store<AppState>) {
     this.#e = elements;
@@ -112,10 +115,16 @@ export class AlgorithmInputs {
    * Switches to `mode`, the algorithm and its move kept as they are. The
    * experiment traces lines only: entered with an arc algorithm it runs its
    * default line algorithm (experimentAlgorithm), and the arc is still there
-   * on the way back.
+   * on the way back. A mode whose inputs have not changed since it was left
+   * comes back at the step and camera it was left at (it came back at step
+   * 0, framed anew); else at step 0, framed.
    */
   switchMode(mode: Mode): void {
-    this.#store.update({ mode, pointIndex: 0, camera: null });
+    const state = this.#store.state;
+    this.#left.set(state.mode, { pointIndex: state.pointIndex, camera: state.camera, inputs: MODE_INPUT_KEYS[state.mode].map((k) => state[k]) });
+    const left = this.#left.get(mode);
+    const unchanged = left !== undefined && MODE_INPUT_KEYS[mode].every((k, i) => state[k] === left.inputs[i]);
+    this.#store.update({ mode, pointIndex: unchanged ? left.pointIndex : 0, camera: unchanged ? left.camera : null });
   }
 
   #pickOther(id: string): void {

@@ -32,7 +32,7 @@ import type { Inspector } from '../inspector/inspector.js';
 import { PointDetails } from '../inspector/point-details.js';
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
-import { type AppState, type Catalogue, type Mode, experimentAlgorithm, tracedAlgorithms, traceOptions } from '../state/app-state.js';
+import { type AppState, type Catalogue, type Mode, MODE_INPUT_KEYS, experimentAlgorithm, tracedAlgorithms, traceOptions } from '../state/app-state.js';
 import { markStale } from '../state/stale.js';
 import type { Store } from '../state/store.js';
 import type { StepReason } from '../timeline/step-reason.js';
@@ -60,14 +60,6 @@ const PROGRESS_EVERY_MS = 250;
 
 /** Quiet time after the last keystroke before re-tracing, ms. */
 const RETRACE_DELAY_MS = 250;
-
-/** The state's keys whose change means the core must run again, by mode. */
-const INPUT_KEYS: Record<Mode, (keyof AppState)[]> = {
-  trace: ['algorithm', 'options'],
-  compare: ['algorithm', 'other', 'options'],
-  gcode: ['gcode', 'machine'],
-  experiment: ['algorithm', 'experiment'],
-};
 
 /** Everything the orchestrator drives. */
 export interface PageParts {
@@ -424,7 +416,7 @@ export class Orchestrator {
   stateChanged(state: AppState, previous: AppState): void {
     const p = this.#p;
     if (state.mode !== previous.mode || state.layout !== previous.layout) p.modeTabs.render();
-    const inputsChanged = state.mode !== previous.mode || INPUT_KEYS[state.mode].some((k) => state[k] !== previous[k]);
+    const inputsChanged = state.mode !== previous.mode || MODE_INPUT_KEYS[state.mode].some((k) => state[k] !== previous[k]);
     if (inputsChanged) {
       clearTimeout(this.#retraceTimer);
       this.#retraceTimer = setTimeout(() => void this.retrace(), RETRACE_DELAY_MS);

@@ -78,6 +78,14 @@ export interface AppState {
   explain: boolean;
 }
 
+/** The state's keys whose change means the core must run again, by mode: a mode's inputs. */
+export const MODE_INPUT_KEYS: Record<Mode, readonly (keyof AppState)[]> = {
+  trace: ['algorithm', 'options'],
+  compare: ['algorithm', 'other', 'options'],
+  gcode: ['gcode', 'machine'],
+  experiment: ['algorithm', 'experiment'],
+};
+
 export const SPEEDS_STEPS_PER_SECOND = [0.5, 1, 2, 4, 8, 16, 32, 64, 256, 1024, 8192] as const;
 
 export const DEFAULT_SPEED = 2;
