@@ -149,48 +149,51 @@ pub struct RandomLinesOptions {
 
 /// The options `random-lines` takes itself; any other option is passed to
 /// the algorithm of every line (and checked by it).
-pub const OPTIONS: &[OptionSpec] = &[
-    OptionSpec {
-        name: "count",
-        kind: OptionKind::Integer {
-            min: None,
-            max: None,
-        },
-        required: false,
-        default: Some("100"),
-        doc: "How many random lines (Wang: 100), at most 100000.",
+pub const OPTIONS: &[OptionSpec] = &[COUNT, SEED, MAX_COORDINATE, DIMS];
+
+const COUNT: OptionSpec = OptionSpec {
+    name: "count",
+    kind: OptionKind::Integer {
+        min: Some(1),
+        max: Some(MAX_LINES as i64),
     },
-    OptionSpec {
-        name: "seed",
-        kind: OptionKind::Integer {
-            min: None,
-            max: None,
-        },
-        required: false,
-        default: Some("1"),
-        doc: "Seed of the SplitMix64 generator: the same seed gives the same lines everywhere.",
+    required: false,
+    default: Some("100"),
+    doc: "How many random lines (Wang: 100), at most 100000.",
+};
+
+const SEED: OptionSpec = OptionSpec {
+    name: "seed",
+    kind: OptionKind::Integer {
+        min: Some(0),
+        max: None,
     },
-    OptionSpec {
-        name: "maxCoordinate",
-        kind: OptionKind::Integer {
-            min: None,
-            max: None,
-        },
-        required: false,
-        default: Some("100"),
-        doc: "End coordinates are drawn uniformly from 0 to this (Wang: 100), at most 10000.",
+    required: false,
+    default: Some("1"),
+    doc: "Seed of the SplitMix64 generator: the same seed gives the same lines everywhere.",
+};
+
+const MAX_COORDINATE: OptionSpec = OptionSpec {
+    name: "maxCoordinate",
+    kind: OptionKind::Integer {
+        min: Some(1),
+        max: Some(10_000),
     },
-    OptionSpec {
-        name: "dims",
-        kind: OptionKind::Integer {
-            min: None,
-            max: None,
-        },
-        required: false,
-        default: None,
-        doc: "Axes per line (default 3, within what the algorithm takes).",
+    required: false,
+    default: Some("100"),
+    doc: "End coordinates are drawn uniformly from 0 to this (Wang: 100), at most 10000.",
+};
+
+const DIMS: OptionSpec = OptionSpec {
+    name: "dims",
+    kind: OptionKind::Integer {
+        min: None,
+        max: None,
     },
-];
+    required: false,
+    default: None,
+    doc: "Axes per line (default 3, within what the algorithm takes).",
+};
 
 /// One experiment of the catalogue.
 #[derive(Serialize, Tsify)]
@@ -298,27 +301,9 @@ impl RandomLinesRun {
                 ));
             }
         }
-        let count = request.integer("count")?.unwrap_or(100);
-        if !(1..=MAX_LINES as i64).contains(&count) {
-            return Err(Error::field(
-                "count",
-                format!("must be 1 to {MAX_LINES}, got {count}"),
-            ));
-        }
-        let seed = request.integer("seed")?.unwrap_or(1);
-        if seed < 0 {
-            return Err(Error::field(
-                "seed",
-                format!("must be 0 or more, got {seed}"),
-            ));
-        }
-        let max_coordinate = request.integer("maxCoordinate")?.unwrap_or(100);
-        if !(1..=10_000).contains(&max_coordinate) {
-            return Err(Error::field(
-                "maxCoordinate",
-                format!("must be 1 to 10000, got {max_coordinate}"),
-            ));
-        }
+        let count = request.declared_integer(&COUNT)?.unwrap_or(100);
+        let seed = request.declared_integer(&SEED)?.unwrap_or(1);
+        let max_coordinate = request.declared_integer(&MAX_COORDINATE)?.unwrap_or(100);
         let dims = request
             .integer("dims")?
             .unwrap_or(info.min_dims.max(3).min(info.max_dims) as i64);

@@ -366,6 +366,28 @@ impl Request {
         }
     }
 
+    /// The whole number of option `spec`, within the range its kind
+    /// declares (the one statement of that range: the catalogue gives it to
+    /// the page's form, which checks every field as it is typed).
+    pub fn declared_integer(&self, spec: &OptionSpec) -> Result<Option<i64>, Error> {
+        let OptionKind::Integer { min, max } = spec.kind else {
+            unreachable!("{} is declared as an integer option", spec.name)
+        };
+        let Some(value) = self.integer(spec.name)? else {
+            return Ok(None);
+        };
+        let expected = match (min, max) {
+            (Some(low), Some(high)) if !(low..=high).contains(&value) => format!("{low} to {high}"),
+            (Some(low), None) if value < low => format!("{low} or more"),
+            (None, Some(high)) if value > high => format!("{high} or less"),
+            _ => return Ok(Some(value)),
+        };
+        Err(Error::field(
+            spec.name,
+            format!("must be {expected}, got {value}"),
+        ))
+    }
+
     pub fn boolean(&self, name: &str) -> Result<Option<bool>, Error> {
         match self.get(name) {
             None => Ok(None),
@@ -445,6 +467,55 @@ fn shown(value: &Value) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_declared_integer_is_held_to_its_declared_range_in_words_for_each_bound() {
+        let spec = |min, max| OptionSpec {
+            name: "n",
+            kind: OptionKind::Integer { min, max },
+            required: false,
+            default: None,
+            doc: "",
+        };
+        let read = |json: &str, min, max| {
+            Request::from_json(json)
+                .unwrap()
+                .declared_integer(&spec(min, max))
+                .map_err(|e| e.message)
+        };
+        let n = |v: i64| format!(r#"{{"algorithm":"regions","n":{v}}}"#);
+        assert_eq!(read(&n(5), Some(1), Some(5)), Ok(Some(5)));
+        assert_eq!(read(&n(1), Some(1), Some(5)), Ok(Some(1)));
+        assert_eq!(
+            read(&n(6), Some(1), Some(5)),
+            Err("must be 1 to 5, got 6".into())
+        );
+        assert_eq!(
+            read(&n(0), Some(1), Some(5)),
+            Err("must be 1 to 5, got 0".into())
+        );
+        assert_eq!(
+            read(&n(-1), Some(0), None),
+            Err("must be 0 or more, got -1".into())
+        );
+        assert_eq!(
+            read(&n(i64::MAX / 4096), Some(0), None),
+            Ok(Some(i64::MAX / 4096))
+        );
+        assert_eq!(
+            read(&n(8), None, Some(7)),
+            Err("must be 7 or less, got 8".into())
+        );
+        assert_eq!(read(&n(-3), None, None), Ok(Some(-3)));
+        assert_eq!(
+            read(r#"{"algorithm":"regions"}"#, Some(1), Some(5)),
+            Ok(None)
+        );
+        assert_eq!(
+            read(&n(0).replace('0', "0.5"), Some(0), Some(5)),
+            Err("expected a whole number, got 0.5".into())
+        );
+    }
 
     #[test]
     fn long_values_are_quoted_by_their_start() {

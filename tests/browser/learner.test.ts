@@ -377,6 +377,34 @@ describe('the experiment', () => {
   });
 });
 
+describe("the experiment's form", () => {
+  it('says of every field out of its declared range that it is, at once, as it is typed', async () => {
+    const p = await openPage('?mode=experiment&algorithm=regions&count=20&seed=1');
+    const { page } = p;
+    await page.getByTestId('experiment-view').filter({ hasText: '20 random lines traced with regions' }).waitFor();
+    await page.getByTestId('input-experiment-count').fill('0');
+    await page.getByTestId('input-experiment-maxCoordinate').fill('10001');
+    await page.getByTestId('input-experiment-seed').fill('-1');
+    // The core's words for each (experiment.rs declares the ranges; its tests check the same messages).
+    expect(await text(page, 'error-experiment-count')).toBe('must be 1 to 100000, got 0');
+    expect(await text(page, 'error-experiment-maxCoordinate')).toBe('must be 1 to 10000, got 10001');
+    expect(await text(page, 'error-experiment-seed')).toBe('must be 0 or more, got -1');
+    expect(await page.getByTestId('input-experiment-count').getAttribute('aria-invalid')).toBe('true');
+    // Nothing refused reaches the core: the tables shown are marked out of date.
+    await expect.poll(() => text(page, 'stale-note')).toMatch(/^Out of date: the inputs were not traced/);
+    // Put right, one at a time: the others still say so; all right, it traces.
+    await page.getByTestId('input-experiment-count').fill('30');
+    expect(await text(page, 'error-experiment-count')).toBe('');
+    expect(await text(page, 'error-experiment-seed')).toBe('must be 0 or more, got -1');
+    await page.getByTestId('input-experiment-maxCoordinate').fill('50');
+    await page.getByTestId('input-experiment-seed').fill('2');
+    await page.getByTestId('experiment-view').filter({ hasText: '30 random lines traced with regions' }).waitFor();
+    expect(await text(page, 'stale-note')).toBe('');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
 /** Pixels of the colour `hex` as the view shades it (pixelsShadedAs), and their mean position as a share of the image's width and height. */
 function colourSpot(png: PNG, hex: string): { count: number; x: number; y: number } {
   const rgb = [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));

@@ -58,6 +58,14 @@ export interface InputsValidity {
   invalid: boolean;
 }
 
+/** Why `value` is outside the declared range `min..max` (the core's words for it, `Request::declared_integer`), or undefined when it is inside. */
+function outsideRange({ min, max }: { min?: number; max?: number }, value: number): string | undefined {
+  if (min !== undefined && max !== undefined) return value < min || value > max ? `must be ${min} to ${max}, got ${value}` : undefined;
+  if (min !== undefined) return value < min ? `must be ${min} or more, got ${value}` : undefined;
+  if (max !== undefined) return value > max ? `must be ${max} or less, got ${value}` : undefined;
+  return undefined;
+}
+
 export class OptionsForm {
   readonly #fields = new Map<string, Field>();
   readonly #container: HTMLElement;
@@ -158,11 +166,19 @@ export class OptionsForm {
       case 'number':
       case 'integer': {
         const input = control(element('input', { type: 'number', step: spec.kind.type === 'integer' ? '1' : 'any' }), id);
+        const range: { min?: number; max?: number } = spec.kind.type === 'integer' ? spec.kind : {};
+        if (range.min !== undefined) input.min = String(range.min);
+        if (range.max !== undefined) input.max = String(range.max);
         input.value = typeof value === 'number' ? String(value) : '';
         input.placeholder = spec.default ?? '';
         input.addEventListener('input', () => {
-          this.#setLocalError(spec.name, field, input.validity.badInput ? 'not a number' : undefined);
-          if (!input.validity.badInput) this.#onChange(spec.name, input.value === '' ? undefined : input.valueAsNumber);
+          const given = input.value === '' ? undefined : input.valueAsNumber;
+          // Each field checked as it is typed, against the range its spec
+          // declares (the core checks the same declaration): every field out
+          // of range says so at once, where the core names only the first.
+          const refused = input.validity.badInput ? 'not a number' : given === undefined ? undefined : outsideRange(range, given);
+          this.#setLocalError(spec.name, field, refused);
+          if (refused === undefined) this.#onChange(spec.name, given);
         });
         return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
       }

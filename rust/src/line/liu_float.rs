@@ -69,14 +69,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 };
 
 fn decimals_option(req: &Request) -> Result<u32, Error> {
-    match req.integer(DECIMALS.name)? {
-        None => Ok(1),
-        Some(d) if (0..=MAX_DECIMALS).contains(&d) => Ok(d as u32),
-        Some(d) => Err(Error::field(
-            DECIMALS.name,
-            format!("must be 0 to {MAX_DECIMALS}, got {d}"),
-        )),
-    }
+    Ok(req.declared_integer(&DECIMALS)?.unwrap_or(1) as u32)
 }
 
 /// `v` kept to `decimals` places: v·10^d rounded half away from zero (f64
