@@ -7,7 +7,7 @@
  * every pending request is rejected with CoreCrash, the listener is told, and
  * the next request starts a fresh worker: the page stays usable.
  */
-import type { ExperimentProgress, GcodeMove, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
+import type { ExperimentProgress, GcodeMove, GcodeProgress, GcodeSettings, MotionChart, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { ChartSeries, IdealLine, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 import type {
   InputError,
