@@ -22,6 +22,8 @@ export interface ChartSpec {
   bands?: uPlot.Band[];
   /** Horizontal reference lines, drawn dashed, each labelled at the left (or at the right, so that two close values stay legible). */
   references?: { value: number; label: string; colour: string; labelAtRight?: boolean }[];
+  /** Fixed x range (a window of time the title names); default: fitted to the data. */
+  xRange?: [number, number];
   /** Fixed y range; default: fitted to the data. */
   yRange?: [number, number];
   /** Axis values formatter for y. */
@@ -61,7 +63,7 @@ export class StepChart {
       height: spec.heightPx ?? HEIGHT_PX,
       series: [{ label: spec.xLabel }, ...spec.series],
       bands: spec.bands,
-      scales: { x: { time: false }, y: spec.yRange ? { range: spec.yRange } : {} },
+      scales: { x: spec.xRange ? { time: false, range: spec.xRange } : { time: false }, y: spec.yRange ? { range: spec.yRange } : {} },
       axes: [
         { label: spec.xLabel, size: 36 },
         { label: spec.yLabel, size: 56, values: spec.yValues, splits: spec.ySplits && (() => spec.ySplits!) },

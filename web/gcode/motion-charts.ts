@@ -208,6 +208,7 @@ export class MotionCharts {
         {
           title: `Tool speed along the path, mm/s, ${window} (${bucketNote}; dots: junction speeds, the planned speed where a move starts after another)`,
           xLabel: 'time (s)',
+          xRange: [chart.fromSeconds, chart.toSeconds],
           yLabel: 'mm/s',
           series: speedSeries,
           bands: chart.exact ? undefined : [{ series: [1, 2], fill: 'rgba(86, 180, 233, 0.25)' }],
@@ -235,6 +236,7 @@ export class MotionCharts {
         {
           title: `Step rate per axis, Hz (steps/s), ${window}: the speed times the axis's share of the move times its steps/mm`,
           xLabel: 'time (s)',
+          xRange: [chart.fromSeconds, chart.toSeconds],
           yLabel: 'Hz',
           series: rateSeries,
           bands: chart.exact ? undefined : axes.map(({ axis }, i) => ({ series: [perAxis * i + 1, perAxis * i + 2] as [number, number], fill: `${AXIS_COLOURS[axis]}33` })),

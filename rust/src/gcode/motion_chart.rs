@@ -18,6 +18,12 @@
 //! - Otherwise: equal buckets of time, each with the least and the greatest
 //!   value within it (a linear piece's extremes over an interval are at its
 //!   ends), so no slow-down into a corner is lost at any zoom.
+//!
+//! Time the machine spends at rest (a dwell: before the first move, between
+//! two, after the last) is charted at speed 0: a row where the rest starts
+//! and one at the window's end after the last move, or the buckets it
+//! touches widened to 0. Without them a window inside a dwell had no rows
+//! at all, and a dwell between moves was a gap in the chart.
 
 use super::timing::Timeline;
 use crate::error::Error;
@@ -90,6 +96,29 @@ impl MotionChart {
         self.junction_speed.push(None);
     }
 
+    /// At rest from `seconds`: speed and every step rate 0.
+    fn push_rest_row(&mut self, seconds: f64) {
+        if self.seconds.last() != Some(&seconds) {
+            self.push_row(seconds, 0.0, &[0.0; MACHINE_AXES]);
+        }
+    }
+
+    /// Bucket `bucket` takes in the machine at rest.
+    fn widen_at_rest(&mut self, bucket: usize) {
+        widen(
+            &mut self.speed_min[bucket],
+            &mut self.speed_max[bucket],
+            0.0,
+        );
+        for axis in 0..MACHINE_AXES {
+            widen(
+                &mut self.step_rate_min[axis][bucket],
+                &mut self.step_rate_max[axis][bucket],
+                0.0,
+            );
+        }
+    }
+
     fn empty_rows(&mut self, rows: usize) {
         self.speed_min = vec![None; rows];
         self.speed_max = vec![None; rows];
@@ -145,8 +174,27 @@ impl Timeline {
             chart.empty_rows(buckets as usize);
         }
         let width = (to - from) / f64::from(buckets);
+        let bucket_of = |t: f64| (((t - from) / width) as usize).min(buckets as usize - 1);
+        // The machine at rest from `a` to `z`, within the window.
+        let rest = |chart: &mut MotionChart, a: f64, z: f64| {
+            if chart.exact {
+                chart.push_rest_row(a);
+            } else {
+                for bucket in bucket_of(a)..=bucket_of(z) {
+                    chart.widen_at_rest(bucket);
+                }
+            }
+        };
+        // Where the motion charted so far ends: the machine rests from there
+        // until the next block starts (a block follows the one before it at
+        // once, to the bit, unless a dwell comes between them).
+        let mut moving_until = from;
         let mut junctions = starts_move.into_iter().peekable();
         for (i, b) in (first..last).zip(plan.blocks(first..last)) {
+            if b.start_seconds > moving_until {
+                rest(&mut chart, moving_until, b.start_seconds.min(to));
+            }
+            moving_until = moving_until.max(b.start_seconds + b.duration_seconds());
             let p = b.phases();
             let rate_per_speed: [f64; MACHINE_AXES] = std::array::from_fn(|axis| {
                 (b.delta_mm[axis] / b.length_mm).abs() * steps_per_mm[axis]
@@ -197,7 +245,6 @@ impl Timeline {
                 }
                 continue;
             }
-            let bucket_of = |t: f64| (((t - from) / width) as usize).min(buckets as usize - 1);
             for piece in shown {
                 let (a, z) = (piece.t0.max(from), piece.t1.min(to));
                 for bucket in bucket_of(a)..=bucket_of(z) {
@@ -224,6 +271,12 @@ impl Timeline {
             if let Some(v) = junction.filter(|_| b.start_seconds >= from) {
                 let slot = &mut chart.junction_speed[bucket_of(b.start_seconds)];
                 *slot = Some(slot.map_or(v, |w| w.min(v)));
+            }
+        }
+        if moving_until < to {
+            rest(&mut chart, moving_until, to);
+            if chart.exact {
+                chart.push_rest_row(to);
             }
         }
         if !chart.exact {
@@ -349,6 +402,57 @@ mod tests {
             "{:?}",
             c.speed_min
         );
+    }
+
+    #[test]
+    fn a_dwell_is_charted_at_rest_before_between_and_after_the_moves() {
+        let program = |source: &str| {
+            run(
+                source,
+                Settings::from_json(r#"{"stepsPerMm": 80}"#).unwrap(),
+            )
+        };
+        // G4 P5 first: 5 s at rest, then 1 mm at 300 mm/min (5 mm/s, a =
+        // 10 mm/s²: a triangle of 2·√(1/10) s, peak √10 mm/s).
+        let p = program("G4 P5\nG1 X1 F300\n");
+        let t = &p.timeline;
+        let d = t.duration_seconds();
+        assert!(close(d, 5.0 + 2.0 * 0.1f64.sqrt()));
+        let c = t.motion_chart(&[80.0; 3], 0.0, d, 200).unwrap();
+        assert!(c.exact);
+        assert_eq!((c.seconds[0], c.speed_max[0]), (0.0, Some(0.0)));
+        assert_eq!(c.step_rate_max[0][0], Some(0.0));
+        assert_eq!((c.seconds[1], c.speed_max[1]), (5.0, Some(0.0)));
+        assert!(close(c.speed_max[2].unwrap(), 10f64.sqrt()));
+        // A window inside the dwell: at rest from end to end (it had no rows).
+        let c = t.motion_chart(&[80.0; 3], 1.0, 2.0, 200).unwrap();
+        assert_eq!(c.seconds, vec![1.0, 2.0]);
+        assert_eq!(c.speed_max, vec![Some(0.0), Some(0.0)]);
+        let c = t.motion_chart(&[80.0; 3], 1.0, 2.0, 3).unwrap();
+        assert!(c.speed_max.iter().all(|&v| v == Some(0.0)));
+
+        // A dwell after the last move: the chart runs on at rest to the end.
+        let p = program("G1 X1 F300\nG4 P5\n");
+        let t = &p.timeline;
+        let d = t.duration_seconds();
+        let c = t.motion_chart(&[80.0; 3], 0.0, d, 200).unwrap();
+        assert_eq!(c.seconds.last(), Some(&d));
+        assert_eq!(c.speed_max.last(), Some(&Some(0.0)));
+
+        // 10 mm, 10 s at rest, 10 mm back, in six buckets (each trapezoid is
+        // 2.5 s: 0.5 s each way at 10 mm/s², 1.5 s at 5 mm/s; 15 s in all):
+        // the dwell's buckets are at rest, none is empty (a gap before).
+        let p = program("G1 X10 F300\nG4 P10\nX0\n");
+        let t = &p.timeline;
+        let d = t.duration_seconds();
+        assert!(close(d, 15.0));
+        let c = t.motion_chart(&[80.0; 3], 0.0, d, 6).unwrap();
+        assert!(!c.exact);
+        assert!(c.speed_max.iter().all(Option::is_some), "{:?}", c.speed_max);
+        assert_eq!(c.speed_max[1..5], [Some(0.0); 4]);
+        assert!(close(c.speed_max[0].unwrap(), 5.0) && close(c.speed_max[5].unwrap(), 5.0));
+        // The buckets that hold both a move and the rest after it go down to 0.
+        assert_eq!((c.speed_min[0], c.speed_min[5]), (Some(0.0), Some(0.0)));
     }
 
     #[test]
