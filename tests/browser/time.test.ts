@@ -133,6 +133,32 @@ describe('G-code mode: time', () => {
     await p.close();
   });
 
+  it('resumes machine time where it was paused, in a dwell too, not at the instant of the step shown', async () => {
+    // 1 mm at 300 mm/min: a triangle of 2·√0.1 = 0.63 s (a = 10 mm/s²), then 3 s at rest.
+    const program = encodeURIComponent('G1 X1 F300\nG4 P3\nY1\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=80&slowdown=1&gcode=${program}`);
+    const { page } = p;
+    await loaded(page, 160);
+    const clock = () => page.evaluate(() => Number(document.querySelector<HTMLOutputElement>('[data-testid=machine-time]')!.dataset.seconds ?? 0));
+    await page.getByTestId('play').click();
+    // Into the dwell: the first move's 80 steps done, the clock past them.
+    await expect.poll(clock, { timeout: 10_000 }).toBeGreaterThan(1.2);
+    await page.getByTestId('play').click();
+    const paused = await clock();
+    expect(await page.getByTestId('step-counter').innerText()).toBe('Step 80 of 160');
+    await page.getByTestId('play').click();
+    // The clock goes on from the pause: it went back to the step's instant, 0.63 s.
+    const seen: number[] = [];
+    for (let i = 0; i < 6; i++) {
+      seen.push(await clock());
+      await page.waitForTimeout(50);
+    }
+    await page.getByTestId('play').click();
+    expect(Math.min(...seen), `paused at ${paused}, then ${seen}`).toBeGreaterThanOrEqual(paused);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('shows the speed profile and the timed STEP/DIR diagram for every sample program', { timeout: 180_000 }, async () => {
     const samples = JSON.parse(readFileSync(new URL('../../public/samples/index.json', import.meta.url), 'utf8')) as { file: string }[];
     const p = await openPage('?mode=gcode&stepsPerMm=80');

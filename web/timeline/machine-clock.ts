@@ -27,11 +27,15 @@ export class MachineClock {
   #asking = false;
   #stopped = false;
 
-  /** A clock starting at the instant `fromPoint` is reached; `onReached` gets each point reached and its clock time. */
-  constructor(instants: PlannedInstants, fromPoint: number, onReached: (pointIndex: number, seconds: number) => void) {
+  /**
+   * A clock starting at `startSeconds` of machine time (the instant a point
+   * is reached, or where a paused clock stopped); `onReached` gets each
+   * point reached and its clock time.
+   */
+  constructor(instants: PlannedInstants, startSeconds: Promise<number>, onReached: (pointIndex: number, seconds: number) => void) {
     this.#instants = instants;
     this.#onReached = onReached;
-    void instants.secondsAtPoint(fromPoint).then(
+    void startSeconds.then(
       (seconds) => {
         this.#seconds ??= seconds;
       },

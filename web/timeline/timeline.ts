@@ -149,9 +149,17 @@ export class Timeline {
     this.#machine = undefined;
   }
 
-  /** Machine time from the current point on, once its instant is known. */
+  /**
+   * Machine time from the current point on: from where the clock stopped
+   * when it was paused there (in a dwell, or between two slow steps), else
+   * from the point's instant, once known. Resumed from the point's instant,
+   * the clock went back (4.0 s paused in a dwell, 2.8 s a moment after Play).
+   */
   #startMachine(instants: PlannedInstants): MachineClock {
-    return new MachineClock(instants, this.#store.state.pointIndex, (pointIndex, seconds) => {
+    const { pointIndex } = this.#store.state;
+    const paused = this.#machinePoint === pointIndex ? this.#machineSeconds : undefined;
+    const startSeconds = paused === undefined ? instants.secondsAtPoint(pointIndex) : Promise.resolve(paused);
+    return new MachineClock(instants, startSeconds, (pointIndex, seconds) => {
       const steps = this.#steps ?? 0;
       const next = Math.min(pointIndex, steps);
       this.#machineSeconds = seconds;
