@@ -121,6 +121,12 @@ describe('voxpath writing into a pipe', () => {
     const r = voxpathPipedInto(['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '200000,7,6', '--format', 'csv'], 'head -n 2');
     expect(r).toEqual({ code: 0, stderr: '' });
   });
+
+  it('says in one line that the output could not be written, with status 3, when the disk is full', () => {
+    // The stream's 'error' event was rethrown outside main: a stack trace, status 1.
+    const r = spawnSync('bash', ['-c', `'${process.execPath}' '${BIN}' ${TRACE.join(' ')} > /dev/full`], { encoding: 'utf8' });
+    expect({ code: r.status, stderr: r.stderr }).toEqual({ code: 3, stderr: 'voxpath: cannot write the output: ENOSPC: no space left on device\n' });
+  });
 });
 
 describe('voxpath trace: decision values that do not apply', () => {

@@ -6,7 +6,8 @@
  * catalogue: an option `maxSteps` is the flag `--max-steps`.
  *
  * Exit codes: 0 success, 1 failure while running, 2 bad command line or
- * rejected input (with a one-line error naming the flag, then usage).
+ * rejected input (with a one-line error naming the flag, then usage), 3 the
+ * output could not be written (a full disk: one line saying so).
  */
 import {
   catalogue as coreCatalogue,
@@ -28,6 +29,7 @@ import type { AlgorithmInfo, Catalogue, Trace } from '../core/index.js';
 import { quoted } from '../core/guard.js';
 import { FORMATS, UsageError, describeOption, flagOf, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
 import { GCODE_USAGE, gcodeCommand, gcodeHelp, readSource } from './gcode.js';
+import { OUTPUT_FAILED, OutputError, listenForWriteErrors, write, writeAll } from './output.js';
 
 function shortUsage(): string {
   return [
@@ -47,6 +49,10 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList, gcodeSe
     '',
     'voxpath computes the single-axis steps a CNC controller (or a line renderer) takes,',
     'and why it takes each one. Coordinates are integer grid units (one unit = one step).',
+    '',
+    'Exit status: 0 done; 1 check: the points differ, gcode: the program has errors;',
+    '2 a bad command line or input (one line naming the flag, then usage); 3 the output',
+    'could not be written (a full disk).',
     '',
     'trace prints, for --format json, one object:',
     '  { algorithm, dims, steps, points: [[x,y,z], ...] (steps + 1 of them),',
@@ -175,32 +181,9 @@ async function runCheck(args: string[], catalogues: Catalogue): Promise<{ stdout
   return { stdout, code: result.matches ? 0 : 1 };
 }
 
-/**
- * Writes to stdout. A reader that stops early (`voxpath ... | head`) closes
- * the pipe: EPIPE then means it has all it wanted, not that voxpath failed.
- */
-async function write(text: string): Promise<boolean> {
-  return new Promise<boolean>((resolve, reject) =>
-    process.stdout.write(text, (e?: NodeJS.ErrnoException | null) => (e && e.code !== 'EPIPE' ? reject(e) : resolve(!e))),
-  );
-}
-
-/**
- * Writes pieces one after another, each once the last has been handed to the
- * system, so memory holds one piece at a time; stops when the reader is gone.
- */
-async function writeAll(pieces: Iterable<string>): Promise<void> {
-  for (const piece of pieces) if (!(await write(piece))) return;
-}
-
-/** The stream also reports a write's error as an event, after the callback; unheard, it would end the process. */
-function ignoreClosedPipe(e: NodeJS.ErrnoException): void {
-  if (e.code !== 'EPIPE') throw e;
-}
-
 /** Runs the CLI with `args` (without node and script); resolves to the exit code. */
 export async function main(args: string[]): Promise<number> {
-  if (!process.stdout.listeners('error').includes(ignoreClosedPipe)) process.stdout.on('error', ignoreClosedPipe);
+  listenForWriteErrors();
   const [command, ...rest] = args;
   try {
     const catalogues = await coreCatalogue();
@@ -234,6 +217,10 @@ export async function main(args: string[]): Promise<number> {
     }
     return 0;
   } catch (error) {
+    if (error instanceof OutputError) {
+      process.stderr.write(`voxpath: ${error.message}\n`);
+      return OUTPUT_FAILED;
+    }
     if (error instanceof UsageError) {
       process.stderr.write(`voxpath: ${error.message}\n${shortUsage()}\n`);
       return 2;
