@@ -96,6 +96,24 @@ describe('voxpath check', () => {
     expect(bad.code).toBe(2);
     expect(bad.stderr).toContain('line 2, column 1: point 1 (2, 0, 0) is more than one cell from point 0');
   });
+
+  it('reads --flag=value as --flag value, and FILE before, between or after the flags', async () => {
+    const t = await trace(REGIONS);
+    const csv = pointsOf(t).map((p) => p.join(',')).join('\n');
+    t.free();
+    // An odd count of '=' flags was read as a missing FILE (the arguments were counted in pairs).
+    for (const args of [
+      ['--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6', '--format=json', '-'],
+      ['--algorithm=regions', '--from=0,0,0', '--to', '10,7,6', '-', '--format', 'json'],
+      ['-', '--algorithm', 'regions', '--from', '0,0,0', '--to=10,7,6', '--format=json'],
+    ]) {
+      const r = voxpath(['check', ...args], csv);
+      expect({ code: r.code, stderr: r.stderr }).toEqual({ code: 0, stderr: '' });
+      expect(JSON.parse(r.stdout).matches).toBe(true);
+    }
+    expect(voxpath(['check', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6']).stderr).toMatch(/^voxpath: check needs a FILE \(or - for standard input\)\n/);
+    expect(voxpath(['check', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6', 'a.csv', 'b.csv']).stderr).toMatch(/^voxpath: check reads one FILE, got 'a.csv' and 'b.csv'\n/);
+  });
 });
 
 describe('the voxpath/vitest matcher', () => {

@@ -32,14 +32,26 @@ function isValue(arg: string | undefined): arg is string {
  * names are checked afterwards, against the specs (`optionsFromFlags`).
  */
 export function parseFlags(args: readonly string[], switches: readonly string[] = []): Map<string, string> {
+  const { flags, operands } = parseCommandLine(args, switches);
+  if (operands.length > 0) throw new UsageError(`unexpected argument '${quoted(operands[0]!)}'`);
+  return flags;
+}
+
+/**
+ * The flags of parseFlags and, in `operands`, the arguments that are not
+ * flags nor their values (a FILE, or - for standard input), in order.
+ */
+export function parseCommandLine(args: readonly string[], switches: readonly string[] = []): { flags: Map<string, string>; operands: string[] } {
   const allSwitches = ['--help', ...switches];
   // Each value joined to its flag (--name=value), so that parseArgs reads
   // negative numbers as values and every flag unambiguously.
   const joined: string[] = [];
+  const operands: string[] = [];
   for (let i = 0; i < args.length; i++) {
     const arg = args[i]!;
-    if (!arg.startsWith('--') || arg === '--') throw new UsageError(`unexpected argument '${quoted(arg)}'`);
-    if (arg.includes('=') || allSwitches.includes(arg)) joined.push(arg);
+    if (arg === '--') throw new UsageError(`unexpected argument '--'`);
+    if (!arg.startsWith('--')) operands.push(arg);
+    else if (arg.includes('=') || allSwitches.includes(arg)) joined.push(arg);
     else if (isValue(args[i + 1])) joined.push(`${arg}=${args[++i]}`);
     else throw new UsageError(`${quoted(arg)} needs a value`);
   }
@@ -54,7 +66,7 @@ export function parseFlags(args: readonly string[], switches: readonly string[] 
     if (isSwitch && token.value !== undefined) throw new UsageError(`${quoted(flag)} takes no value`);
     flags.set(flag, token.value ?? '');
   }
-  return flags;
+  return { flags, operands };
 }
 
 function numberOf(flag: string, part: string): number {

@@ -27,7 +27,7 @@ import {
 } from '../core/index.js';
 import type { AlgorithmInfo, Catalogue, Trace } from '../core/index.js';
 import { quoted } from '../core/guard.js';
-import { FORMATS, UsageError, describeOption, flagOf, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
+import { FORMATS, UsageError, describeOption, flagOf, optionsFromFlags, parseCommandLine, parseFlags, pickFormat } from './flags.js';
 import { GCODE_USAGE, gcodeCommand, gcodeHelp, readSource } from './gcode.js';
 import { OUTPUT_FAILED, OutputError, listenForWriteErrors, write, writeAll } from './output.js';
 
@@ -167,11 +167,10 @@ const CHECK_USAGE = 'voxpath check --algorithm ID --from X,Y,Z --to X,Y,Z [optio
 
 /** `check`: exit 0 when the points follow the rule, 1 with the difference, 2 for bad input. */
 async function runCheck(args: string[], catalogues: Catalogue): Promise<{ stdout: string; code: number }> {
-  const file = args.at(-1);
-  if (file === undefined || (file.startsWith('--') && file !== '-') || args.length % 2 === 0) {
-    throw new UsageError('check needs a FILE (or - for standard input) after its flags');
-  }
-  const flags = parseFlags(args.slice(0, -1));
+  const { flags, operands } = parseCommandLine(args);
+  const [file, ...extra] = operands;
+  if (file === undefined) throw new UsageError('check needs a FILE (or - for standard input)');
+  if (extra.length > 0) throw new UsageError(`check reads one FILE, got '${quoted(file)}' and '${quoted(extra[0]!)}'`);
   const info = pickAlgorithm(flags, catalogues.algorithms);
   const format = flags.get('--format') ?? 'table';
   if (format !== 'table' && format !== 'json') throw new UsageError(`--format: expected table or json, got '${quoted(format)}'`);
