@@ -61,6 +61,30 @@ describe('checkPoints', () => {
     expect((await rejection(checkPoints(REGIONS, [[0, 0, 0], [1, 1]]))).field).toBe('points');
   });
 
+  it('names a hole in a sparse array, row or coordinate, where it read 0', async () => {
+    // Rows (0, _, 0), (1, _, 1), (2, _, 2), y missing, matched (0,0,0) -> (2,0,2).
+    const row = (x: number, z: number) => {
+      const p = new Array<number>(3);
+      p[0] = x;
+      p[2] = z;
+      return p;
+    };
+    const request = { algorithm: 'regions', from: [0, 0, 0], to: [2, 0, 2] };
+    expect((await rejection(checkPoints(request, [row(0, 0), row(1, 1), row(2, 2)]))).message).toBe(
+      'points: point 0: y must be a number, got an empty slot (a hole in a sparse array)',
+    );
+    // eslint-disable-next-line no-sparse-arrays
+    const holed = [[0, 0, 0], [1, 1, 1], , [3, 3, 3]] as number[][];
+    expect((await rejection(checkPoints({ algorithm: 'regions', from: [0, 0, 0], to: [3, 3, 3] }, holed))).message).toBe(
+      'points: point 2 is an empty slot (a hole in a sparse array); expected an array of coordinates',
+    );
+  });
+
+  it('says to await points handed over as a Promise', async () => {
+    const error = await rejection(checkPoints(REGIONS, Promise.resolve([[0, 0, 0]]) as unknown as number[][]));
+    expect(error.message).toBe('points: got a Promise, not the points: await it first (checkPoints(request, await points))');
+  });
+
   it('reads text beyond ASCII as it reads ASCII (more UTF-8 bytes than characters)', async () => {
     const { rows, csv } = await holdPath();
     // A comment of 2-, 3- and 4-byte characters (the last two UTF-16 units) first.

@@ -14,7 +14,7 @@
  */
 import { AXIS_NAMES } from './axes.js';
 import { callCore } from './errors.js';
-import { argumentError, describeValue, text as guardText, wholeNumber } from './guard.js';
+import { argumentError, describeValue, isPromiseLike, text as guardText, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import type { Check } from './pkg/voxpath.js';
 import type { TraceOptions } from './types.js';
@@ -32,22 +32,33 @@ export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Arra
 /** The result and its parts are the core's Rust types (rust/src/check.rs). */
 export type { AlsoMatch, AroundRow, Check, DifferenceKind, Difference as CheckDifference } from './pkg/voxpath.js';
 
-/** Rows of numbers as one flat array, for the core; a row that is not one, or of another length, is named by index. */
+/** A slot of a sparse array as a message shows it: `[1, , 3]` has no y, which indexing reads as undefined and a typed array as 0. */
+function slotValue(array: readonly unknown[], index: number): string {
+  return index in array ? describeValue(array[index]) : 'an empty slot (a hole in a sparse array)';
+}
+
+/**
+ * Rows of numbers as one flat array, for the core; a row that is not one, or
+ * of another length, is named by index. Every index is read, holes
+ * included: forEach skipped them, so a hole became 0.
+ */
 function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number } {
   const first = rows[0];
   const dims = Array.isArray(first) ? first.length : 0;
   const values = new Float64Array(rows.length * dims);
-  rows.forEach((row, index) => {
-    if (!Array.isArray(row)) throw argumentError('points', `point ${index} is ${describeValue(row)}; expected an array of coordinates`);
+  for (let index = 0; index < rows.length; index++) {
+    const row = rows[index];
+    if (!Array.isArray(row)) throw argumentError('points', `point ${index} is ${slotValue(rows, index)}; expected an array of coordinates`);
     if (row.length !== dims) throw argumentError('points', `point ${index} has ${row.length} coordinates; point 0 has ${dims}`);
-    row.forEach((value: unknown, axis) => {
+    for (let axis = 0; axis < dims; axis++) {
+      const value: unknown = row[axis];
       // Float64Array.set would read '0x10' as 16 and throw a TypeError on a BigInt.
       if (typeof value !== 'number') {
-        throw argumentError('points', `point ${index}: ${AXIS_NAMES[axis] ?? `coordinate ${axis}`} must be a number, got ${describeValue(value)}`);
+        throw argumentError('points', `point ${index}: ${AXIS_NAMES[axis] ?? `coordinate ${axis}`} must be a number, got ${slotValue(row, axis)}`);
       }
       values[index * dims + axis] = value;
-    });
-  });
+    }
+  }
   return { values, dims };
 }
 
@@ -64,6 +75,7 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints):
   }
   let given: { values: Int32Array | Float64Array; dims: number };
   if (Array.isArray(points)) given = flatten(points);
+  else if (isPromiseLike(points)) throw argumentError('points', 'got a Promise, not the points: await it first (checkPoints(request, await points))');
   else if (typeof points === 'object' && points !== null && !ArrayBuffer.isView(points)) {
     const flat = points as { points: unknown; dims: unknown };
     if (!(flat.points instanceof Int32Array || flat.points instanceof Float64Array)) {

@@ -37,6 +37,11 @@ export function describeValue(value: unknown): string {
   return `${/^[AEIOU]/i.test(kind) ? 'an' : 'a'} ${kind === 'Object' ? 'object' : kind}${length}`;
 }
 
+/** A Promise, or any thenable: what a caller forgot to await. */
+export function isPromiseLike(value: unknown): value is PromiseLike<unknown> {
+  return (typeof value === 'object' || typeof value === 'function') && value !== null && typeof (value as { then?: unknown }).then === 'function';
+}
+
 /**
  * `value` as a whole number in min..max (both included), else a
  * VoxpathError naming `field`; `what` names the number ("step index").
