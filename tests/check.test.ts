@@ -149,6 +149,23 @@ describe('the voxpath/vitest matcher', () => {
     await expect((jestExpect(points) as unknown as VoxpathMatchers).toFollowRule(REGIONS)).rejects.toThrow(/your points follow: .*bresenham3d with tie = hold/);
   });
 
+  it('fails points that are not a path, saying why, so that .not passes them; a bad request or a Promise still throws', async () => {
+    const skipping = [[0, 0, 0], [2, 2, 2], [10, 7, 6]];
+    // It threw the VoxpathError, so .not threw too.
+    await expect(expect(skipping).toFollowRule(REGIONS)).rejects.toThrow(
+      'regions: your points are not a path, so they cannot follow the rule: points: point 1 (2, 2, 2) is more than one cell from point 0 (0, 0, 0)',
+    );
+    await expect(skipping).not.toFollowRule(REGIONS);
+    await expect('0,0,0\n1,x,1\n').not.toFollowRule(REGIONS);
+    const badRequest = expect(skipping).toFollowRule({ ...REGIONS, from: [0, 0] });
+    await expect(badRequest).rejects.toThrow('from: regions takes 3 coordinates, got 2');
+    await expect(expect(skipping).not.toFollowRule({ ...REGIONS, from: [0, 0] })).rejects.toThrow('from: regions takes 3 coordinates, got 2');
+    await expect(expect(Promise.resolve(skipping)).toFollowRule(REGIONS)).rejects.toThrow(
+      'points: got a Promise, not the points: await it first (expect(await points).toFollowRule(request))',
+    );
+    await expect(expect(Promise.resolve(skipping)).not.toFollowRule(REGIONS)).rejects.toThrow('got a Promise');
+  });
+
   it('passes a fixed line', async () => {
     const t = await trace(REGIONS);
     const rows = pointsOf(t);

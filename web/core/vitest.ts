@@ -17,8 +17,10 @@
  * the rules the points do follow.
  */
 import { checkPoints } from './check.js';
-import type { LearnerPoints } from './check.js';
+import type { Check, LearnerPoints } from './check.js';
+import { VoxpathError } from './errors.js';
 import { checkToTable } from './export.js';
+import { argumentError, isPromiseLike } from './guard.js';
 import type { TraceOptions } from './types.js';
 
 /** What vitest and Jest pass a matcher as `this` (the part used here). */
@@ -26,10 +28,33 @@ interface MatcherContext {
   isNot?: boolean;
 }
 
+/**
+ * An error about the learner's points rather than the request: points that
+ * are not a path (a skipped cell, a wrong number of coordinates, a row of
+ * text that is not a point). The core names them `points`, or the line and
+ * column of text.
+ */
+function isAboutThePoints(error: unknown): error is VoxpathError {
+  return error instanceof VoxpathError && (error.field === 'points' || error.line !== undefined);
+}
+
 export const voxpathMatchers = {
-  /** Passes when `received` is the path of `request`, point for point. */
+  /**
+   * Passes when `received` is the path of `request`, point for point. Points
+   * that are not a path at all fail it (and pass `.not`), saying why; a bad
+   * request, or points not awaited, throw.
+   */
   async toFollowRule(this: MatcherContext, received: LearnerPoints, request: TraceOptions) {
-    const result = await checkPoints(request, received);
+    if (isPromiseLike(received)) {
+      throw argumentError('points', 'got a Promise, not the points: await it first (expect(await points).toFollowRule(request))');
+    }
+    let result: Check;
+    try {
+      result = await checkPoints(request, received);
+    } catch (error) {
+      if (!isAboutThePoints(error)) throw error;
+      return { pass: false, message: () => `${request.algorithm}: your points are not a path, so they cannot follow the rule: ${error.message}` };
+    }
     const table = checkToTable(result);
     return {
       pass: result.matches,
