@@ -1,14 +1,15 @@
 // G-code through the headless API (web/core, real wasm) and the CLI
 // (bin/voxpath.js). Expected numbers are worked by hand in the comments.
+import { spawnSync } from 'node:child_process';
 import { readFileSync, readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
+import { EXPORT_CHUNK_ROWS, pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
 import type { GcodeProgress } from '../web/core/index.js';
 import { callCore } from '../web/core/errors.js';
 import { encodeRequest } from '../web/core/request.js';
 import { loadCore, withTextBytes } from '../web/core/wasm.js';
-import { rejection, voxpath } from './helpers.js';
+import { BIN, pointsOf, rejection, voxpath } from './helpers.js';
 
 const SAMPLES = fileURLToPath(new URL('../public/samples/', import.meta.url));
 
@@ -201,6 +202,57 @@ describe('voxpath gcode', () => {
     expect(csv).toEqual(['k,x,y,z,line,move', '0,0,0,0,,', '1,1,0,0,1,0', '2,2,0,0,1,0']);
     const table = voxpath(['gcode', file, '--steps-per-mm', '80', '--format', 'table']).stdout;
     expect(table).toContain('pulses per axis (x, y, z): 3200, 3200, 0');
+  });
+
+  it('streams json, csv, table and vcd across chunks as the API gives them whole', async () => {
+    // 2.5 chunks of points and steps over three moves, one of them back.
+    const source = 'G1 X200 F6000\nG1 Y100\nG1 X100\n';
+    const p = await runGcode(source, { stepsPerMm: 100 });
+    const steps = p.steps;
+    expect(steps).toBeGreaterThan(2 * EXPORT_CHUNK_ROWS);
+    const points = pointsOf(p.trace);
+    const lineByStep = Array.from(p.lineByStepInRange(0, steps));
+    const whole = {
+      ...Object.fromEntries(Object.entries(p).filter(([key]) => key !== 'trace')),
+      moves: p.moves,
+      points,
+      lineByStep,
+      stepTimes: Array.from(p.stepTimes(0, steps)),
+    };
+    const moveOf = Array.from({ length: steps }, (_, k) => p.moveOfStep(k));
+    const vcd = p.vcd();
+    p.free();
+    const run = (format: string, more: string[] = []) => {
+      const r = voxpath(['gcode', '-', '--steps-per-mm', '100', '--format', format, ...more], source);
+      expect({ code: r.code, stderr: r.stderr }).toEqual({ code: 0, stderr: '' });
+      return r.stdout;
+    };
+    expect(run('json', ['--step-times'])).toBe(JSON.stringify(whole) + '\n');
+    expect(run('csv')).toBe(['k,x,y,z,line,move', ...points.map((q, k) => [k, ...q, k === 0 ? '' : lineByStep[k - 1], k === 0 ? '' : moveOf[k - 1]].join(','))].join('\n') + '\n');
+    expect(run('table')).toMatch(/^ *move +line +code/m);
+    expect(run('vcd')).toBe(new TextDecoder().decode(vcd));
+  });
+
+  /**
+   * The CLI on a V8 heap of 48 MB, its output counted by `wc`, as trace's
+   * test does: 2,000,000 steps are 46 MB of CSV, 31 MB of JSON and 66 MB of
+   * VCD, so only output written as it is read fits (built whole, a
+   * 20,000,000-step VCD was a string longer than V8 allows, and a
+   * 40,000,000-step CSV ran out of heap after 2 minutes).
+   */
+  function streamed(format: string): { code: number; lines: number; stderr: string } {
+    const quoted = [process.execPath, '--max-old-space-size=48', BIN, 'gcode', '-', '--steps-per-mm', '1000', '--format', format].map((a) => `'${a}'`).join(' ');
+    const count = format === 'vcd' ? "grep -c '^1!$'" : 'wc -l';
+    const r = spawnSync('bash', ['-c', `printf 'G1 X2000 F500\\n' | ${quoted} | ${count}; echo "\${PIPESTATUS[1]}"`], { encoding: 'utf8' });
+    const [lines, code] = r.stdout.trim().split('\n').map(Number);
+    return { code: code!, lines: lines!, stderr: r.stderr };
+  }
+
+  it('streams a 2,000,000-step program as csv, json and vcd in a heap smaller than any of them', { timeout: 60_000 }, () => {
+    expect(streamed('csv')).toEqual({ code: 0, lines: 2_000_002, stderr: '' });
+    expect(streamed('json')).toEqual({ code: 0, lines: 1, stderr: '' });
+    // One rising edge of x_step (the VCD's wire '!') per step.
+    expect(streamed('vcd')).toEqual({ code: 0, lines: 2_000_000, stderr: '' });
   });
 
   it.each([

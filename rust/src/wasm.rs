@@ -437,22 +437,56 @@ impl TraceHandle {
 }
 
 /// The STEP and DIR wires of a G-code run as an IEEE 1364 VCD file
-/// (`gcode::vcd`): `trace` is the one taken from `result`.
-#[wasm_bindgen(js_name = gcodeVcd)]
-pub fn gcode_vcd(trace: &TraceHandle, result: &GcodeResult) -> Result<Vec<u8>, JsValue> {
+/// (`gcode::vcd`), a part at a time: `next` hands out the header, then the
+/// file's lines for `CHUNK_STEPS` steps per call, so that neither the core
+/// nor JS holds the whole file (1.6 GB for 50,000,000 steps).
+#[wasm_bindgen]
+pub struct GcodeVcd(crate::gcode::vcd::VcdChunks);
+
+/// An error of the VCD's own (the program lasts longer than the VCD's ticks
+/// reach, or two of its steps come too close for a pulse between them),
+/// named as the program's: writing to memory does not fail otherwise.
+fn vcd_error(e: std::io::Error) -> JsValue {
+    to_js_error(&Error::field("program", e.to_string()))
+}
+
+/// `trace` must be the one taken from `result`.
+fn check_vcd_trace(trace: &TraceHandle, result: &GcodeResult) -> Result<(), JsValue> {
     if trace.0.steps() != result.steps {
         return Err(to_js_error(&Error::field(
             "trace",
             "is not the trace of this G-code result",
         )));
     }
-    let mut out = Vec::new();
-    // Writing to memory does not fail: an error is the program's own (it
-    // lasts longer than the VCD's ticks reach, or two of its steps come too
-    // close for a pulse between them); what was written of it is dropped.
-    crate::gcode::vcd::write_vcd(&trace.0, &result.timeline, &mut out)
-        .map_err(|e| to_js_error(&Error::field("program", e.to_string())))?;
-    Ok(out)
+    Ok(())
+}
+
+#[wasm_bindgen]
+impl GcodeVcd {
+    /// The VCD of the run `result` with its trace `trace`; an error before
+    /// anything is written when the program lasts past the VCD's ticks.
+    #[wasm_bindgen(constructor)]
+    pub fn new(trace: &TraceHandle, result: &GcodeResult) -> Result<GcodeVcd, JsValue> {
+        check_vcd_trace(trace, result)?;
+        crate::gcode::vcd::VcdChunks::new(&result.timeline)
+            .map(GcodeVcd)
+            .map_err(vcd_error)
+    }
+
+    /// The next part of the file, or undefined once it is all written.
+    pub fn next(
+        &mut self,
+        trace: &TraceHandle,
+        result: &GcodeResult,
+    ) -> Result<Option<Vec<u8>>, JsValue> {
+        check_vcd_trace(trace, result)?;
+        let mut out = Vec::new();
+        let more = self
+            .0
+            .write_next(&trace.0, &result.timeline, &mut out)
+            .map_err(vcd_error)?;
+        Ok(more.then_some(out))
+    }
 }
 
 /// A G-code program being run a slice of lines at a time, so that a worker

@@ -12,7 +12,9 @@
 import { readFile } from 'node:fs/promises';
 import { runGcode } from '../core/index.js';
 import type { GcodeProgram, GcodeProgramInfo, GcodeSettings, OptionSpec } from '../core/index.js';
+import { alignedTable, indexChunks, pointsJsonChunks } from '../core/export.js';
 import { FORMATS, UsageError, describeOption, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
+import { writeAll } from './output.js';
 
 /** A flag without a value: adds stepTimes to the JSON. */
 const STEP_TIMES_FLAG = '--step-times';
@@ -54,68 +56,82 @@ export async function readSource(file: string): Promise<string> {
   }
 }
 
-function pointRows(program: GcodeProgram): number[][] {
-  const flat = program.trace.points;
-  const rows: number[][] = [];
-  for (let k = 0; k <= program.steps; k++) rows.push(Array.from(flat.subarray(3 * k, 3 * k + 3)));
-  return rows;
-}
-
 /** The program's own record (the core's ProgramInfo), without its trace. */
 function record(program: GcodeProgram): GcodeProgramInfo {
   const { trace: _trace, ...info } = program;
   return info;
 }
 
-function toJson(program: GcodeProgram, stepTimes: boolean): string {
-  return (
-    JSON.stringify({
-      // The program's record as the core declares it, then the per-step arrays.
-      ...record(program),
-      moves: program.moves,
-      points: pointRows(program),
-      lineByStep: Array.from(program.lineByStepInRange(0, program.steps)),
-      ...(stepTimes ? { stepTimes: Array.from(program.stepTimes(0, program.steps)) } : {}),
-    }) + '\n'
-  );
+/** Values of `count` indices as JSON list items, read `read(from, to)` a chunk at a time. */
+function* jsonListChunks(count: number, read: (from: number, to: number) => ArrayLike<unknown>): Generator<string> {
+  for (const [from, to] of indexChunks(count)) yield (from > 0 ? ',' : '') + Array.from(read(from, to), (v) => JSON.stringify(v)).join(',');
 }
 
-/** Row k: point k and the line and move of the step that reached it (empty on row 0). */
-function toCsv(program: GcodeProgram): string {
-  const lines = program.lineByStepInRange(0, program.steps);
-  const out = ['k,x,y,z,line,move'];
-  pointRows(program).forEach((p, k) => {
-    const source = k === 0 ? ['', ''] : [String(lines[k - 1]), String(program.moveOfStep(k - 1))];
-    out.push([k, ...p, ...source].join(','));
-  });
-  return out.join('\n') + '\n';
+/**
+ * The JSON object, in pieces of at most EXPORT_CHUNK_ROWS moves, points or
+ * steps: the program's record as the core declares it, then the moves, then
+ * the per-step arrays (JSON.stringify of them whole took 5 GB at 25,000,000
+ * steps).
+ */
+function* jsonChunks(program: GcodeProgram, stepTimes: boolean): Generator<string> {
+  yield JSON.stringify(record(program)).slice(0, -1) + ',"moves":[';
+  yield* jsonListChunks(program.moveCount, (from, to) => program.movesInRange(from, to));
+  yield '],"points":[';
+  yield* pointsJsonChunks(program.trace);
+  yield '],"lineByStep":[';
+  yield* jsonListChunks(program.steps, (from, to) => program.lineByStepInRange(from, to));
+  if (stepTimes) {
+    yield '],"stepTimes":[';
+    yield* jsonListChunks(program.steps, (from, to) => program.stepTimes(from, to));
+  }
+  yield ']}\n';
 }
 
-function toTable(program: GcodeProgram): string {
+/** Row k: point k and the line and move of the step that reached it (empty on row 0), EXPORT_CHUNK_ROWS rows at a time. */
+function* csvChunks(program: GcodeProgram): Generator<string> {
+  yield 'k,x,y,z,line,move\n';
+  const points = program.trace;
+  for (const [from, to] of indexChunks(program.steps + 1)) {
+    const flat = points.pointsInRange(from, to);
+    // Row k's step is k - 1: steps max(from - 1, 0) .. to - 2.
+    const firstStep = Math.max(from - 1, 0);
+    const lines = program.lineByStepInRange(firstStep, Math.max(to - 1, firstStep));
+    const rows: string[] = [];
+    for (let k = from; k < to; k++) {
+      const source = k === 0 ? ',' : `${lines[k - 1 - firstStep]},${program.moveOfStep(k - 1)}`;
+      rows.push(`${k},${flat.subarray(3 * (k - from), 3 * (k - from) + 3).join(',')},${source}`);
+    }
+    yield rows.join('\n') + '\n';
+  }
+}
+
+/**
+ * The moves and totals, in pieces: each block of EXPORT_CHUNK_ROWS moves is
+ * aligned on its own under its own header, as trace's table is.
+ */
+function* tableChunks(program: GcodeProgram): Generator<string> {
   const header = ['move', 'line', 'code', 'kind', 'to (mm)', 'to (steps)', 'first step', 'steps', 'algorithm', 'start (s)', 'end (s)', 'mm/s in, top, out'];
-  const body = program.moves.map((m, i) => [
-    String(i),
-    String(m.line),
-    m.code,
-    m.kind,
-    m.toMm.map((v) => String(Math.round(v * 1e6) / 1e6)).join(' '),
-    m.toSteps.join(' '),
-    String(m.firstStep),
-    String(m.steps),
-    m.algorithm,
-    m.timing.startSeconds.toFixed(4),
-    m.timing.endSeconds.toFixed(4),
-    [m.timing.entrySpeed, m.timing.cruiseSpeed, m.timing.exitSpeed].map((v) => v.toFixed(2)).join(' '),
-  ]);
-  const widths = header.map((h, c) => Math.max(h.length, ...body.map((r) => r[c]!.length)));
-  const row = (r: string[]) => r.map((cell, c) => cell.padStart(widths[c]!)).join('  ');
+  yield `gcode: ${program.lines} lines, ${program.moveCount} moves, ${program.steps} steps; ${program.stepsPerMm.join(', ')} steps/mm (x, y, z); lines: ${program.lineAlgorithm}, arcs: ${program.arcAlgorithm}\n\n`;
+  for (const [from, to] of indexChunks(program.moveCount)) {
+    const body = program.movesInRange(from, to).map((m, i) => [
+      String(from + i),
+      String(m.line),
+      m.code,
+      m.kind,
+      m.toMm.map((v) => String(Math.round(v * 1e6) / 1e6)).join(' '),
+      m.toSteps.join(' '),
+      String(m.firstStep),
+      String(m.steps),
+      m.algorithm,
+      m.timing.startSeconds.toFixed(4),
+      m.timing.endSeconds.toFixed(4),
+      [m.timing.entrySpeed, m.timing.cruiseSpeed, m.timing.exitSpeed].map((v) => v.toFixed(2)).join(' '),
+    ]);
+    yield (from > 0 ? '\n' : '') + alignedTable(header, body).join('\n') + '\n';
+  }
   const diagnostics = (title: string, list: { line: number; column: number; message: string }[]) =>
     list.length === 0 ? [] : ['', `${title}:`, ...list.map((d) => `  line ${d.line}, column ${d.column}: ${d.message}`)];
-  return [
-    `gcode: ${program.lines} lines, ${program.moveCount} moves, ${program.steps} steps; ${program.stepsPerMm.join(', ')} steps/mm (x, y, z); lines: ${program.lineAlgorithm}, arcs: ${program.arcAlgorithm}`,
-    '',
-    row(header),
-    ...body.map(row),
+  yield [
     '',
     `pulses per axis (x, y, z): ${program.pulses.join(', ')}`,
     `duration on the planned profile: ${program.durationSeconds} s`,
@@ -126,8 +142,12 @@ function toTable(program: GcodeProgram): string {
   ].join('\n');
 }
 
-/** Runs `gcode` with its arguments (after the command); resolves to what to print and the exit code. */
-export async function gcodeCommand(args: string[], settingSpecs: readonly OptionSpec[]): Promise<{ stdout: string; stderr: string; code: number }> {
+/**
+ * Runs `gcode` with its arguments (after the command) and writes its output
+ * as it is read, a chunk at a time (whatever the length of the program, as
+ * trace's), then the program's errors to stderr; resolves to the exit code.
+ */
+export async function gcodeCommand(args: string[], settingSpecs: readonly OptionSpec[]): Promise<number> {
   const [file, ...rest] = args;
   if (file === undefined || (file.startsWith('--') && file !== '-')) {
     throw new UsageError('gcode needs a FILE (or - for standard input) before its flags');
@@ -139,16 +159,17 @@ export async function gcodeCommand(args: string[], settingSpecs: readonly Option
   const settings: GcodeSettings = optionsFromFlags(flags, settingSpecs, 'gcode', ['--format', STEP_TIMES_FLAG]);
   const program = await runGcode(await readSource(file), settings);
   try {
-    const stdout =
+    await writeAll(
       format === 'vcd'
-      ? new TextDecoder().decode(program.vcd())
-      : format === 'csv'
-        ? toCsv(program)
-        : format === 'table'
-          ? toTable(program)
-          : toJson(program, stepTimes);
-    const stderr = program.errors.map((e) => `voxpath: ${file}:${e.line}:${e.column}: ${e.message}\n`).join('');
-    return { stdout, stderr, code: program.errors.length > 0 ? 1 : 0 };
+        ? program.vcdChunks()
+        : format === 'csv'
+          ? csvChunks(program)
+          : format === 'table'
+            ? tableChunks(program)
+            : jsonChunks(program, stepTimes),
+    );
+    process.stderr.write(program.errors.map((e) => `voxpath: ${file}:${e.line}:${e.column}: ${e.message}\n`).join(''));
+    return program.errors.length > 0 ? 1 : 0;
   } finally {
     program.free();
   }

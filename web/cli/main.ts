@@ -207,10 +207,7 @@ export async function main(args: string[]): Promise<number> {
       await write(result.stdout);
       return result.code;
     } else if (command === 'gcode') {
-      const result = await gcodeCommand(rest, catalogues.gcodeSettings);
-      await write(result.stdout);
-      process.stderr.write(result.stderr);
-      return result.code;
+      return await gcodeCommand(rest, catalogues.gcodeSettings);
     } else {
       throw new UsageError(`unknown command '${quoted(command)}'`);
     }

@@ -69,8 +69,8 @@ export function traceToJson(trace: Trace): TraceJson {
  */
 export const EXPORT_CHUNK_ROWS = 16_384;
 
-/** Point indices [from, to) in chunks of at most EXPORT_CHUNK_ROWS. */
-function* chunks(count: number): Generator<[number, number]> {
+/** Indices [from, to) of 0..count in chunks of at most EXPORT_CHUNK_ROWS (rows of points, steps or moves). */
+export function* indexChunks(count: number): Generator<[number, number]> {
   for (let from = 0; from < count; from += EXPORT_CHUNK_ROWS) yield [from, Math.min(count, from + EXPORT_CHUNK_ROWS)];
 }
 
@@ -83,30 +83,38 @@ function* chunks(count: number): Generator<[number, number]> {
 export function* traceJsonChunks(trace: Trace): Generator<string> {
   requireTrace('trace', trace);
   yield `{"algorithm":${JSON.stringify(trace.algorithm)},"dims":${trace.dims},"steps":${trace.steps},"points":[`;
-  for (const [from, to] of chunks(trace.steps + 1)) {
-    const flat = trace.pointsInRange(from, to);
-    const rows: string[] = [];
-    for (let k = 0; k < to - from; k++) rows.push(`[${flat.subarray(k * trace.dims, (k + 1) * trace.dims).join(',')}]`);
-    yield (from > 0 ? ',' : '') + rows.join(',');
-  }
+  yield* pointsJsonChunks(trace);
   yield '],"decisions":{';
   for (const [i, column] of trace.columns.entries()) {
     yield `${i > 0 ? ',' : ''}${JSON.stringify(column.name)}:[`;
-    for (const [from, to] of chunks(trace.steps)) {
+    for (const [from, to] of indexChunks(trace.steps)) {
       const values = trace.decisionsInRange(from, to)[column.name]!;
       yield (from > 0 ? ',' : '') + Array.from(values, (v) => JSON.stringify(decisionValue(column, v))).join(',');
     }
     yield ']';
   }
   yield '},"deviation":[';
-  for (const [from, to] of chunks(trace.steps + 1)) {
+  for (const [from, to] of indexChunks(trace.steps + 1)) {
     yield (from > 0 ? ',' : '') + Array.from(trace.deviationInRange(from, to), (d) => JSON.stringify(d)).join(',');
   }
   yield `],"metrics":${JSON.stringify(trace.metrics)},"notes":${JSON.stringify(trace.segments.map((s) => s.note))}}`;
 }
 
+/**
+ * Every point of a trace as JSON rows (`[0,0,0],[1,1,1],...`, without the
+ * list's brackets), EXPORT_CHUNK_ROWS rows at a time.
+ */
+export function* pointsJsonChunks(trace: Trace): Generator<string> {
+  for (const [from, to] of indexChunks(trace.steps + 1)) {
+    const flat = trace.pointsInRange(from, to);
+    const rows: string[] = [];
+    for (let k = 0; k < to - from; k++) rows.push(`[${flat.subarray(k * trace.dims, (k + 1) * trace.dims).join(',')}]`);
+    yield (from > 0 ? ',' : '') + rows.join(',');
+  }
+}
+
 /** Columns separated by two spaces: numbers right-aligned, a label column (the first, if asked) left-aligned. */
-function alignedTable(header: string[], body: string[][], labelFirst = false): string[] {
+export function alignedTable(header: string[], body: string[][], labelFirst = false): string[] {
   const widths = header.map((h, i) => body.reduce((width, r) => Math.max(width, r[i]!.length), h.length));
   const pad = (cell: string, i: number) => (labelFirst && i === 0 ? cell.padEnd(widths[i]!) : cell.padStart(widths[i]!));
   const line = (r: string[]) => r.map(pad).join('  ');
@@ -170,7 +178,7 @@ export function* traceCsvChunks(trace: Trace): Generator<string> {
   requireTrace('trace', trace);
   yield rowHeader(trace).map(csvCell).join(',') + '\n';
   const line = (cells: string[]) => cells.join(',');
-  for (const [from, to] of chunks(trace.steps + 1)) yield rows(trace, from, to, '', csvCell, line).join('\n') + '\n';
+  for (const [from, to] of indexChunks(trace.steps + 1)) yield rows(trace, from, to, '', csvCell, line).join('\n') + '\n';
 }
 
 /** One CSV row per point, with a header row. For long traces prefer traceCsvChunks. */
@@ -187,7 +195,7 @@ export function traceToCsv(trace: Trace): string {
 export function* traceTableChunks(trace: Trace): Generator<string> {
   requireTrace('trace', trace);
   yield [`${trace.algorithm}: ${trace.steps} steps from (${trace.start.join(', ')}) to (${trace.end.join(', ')})`, ...trace.segments.map((s) => s.note), ''].join('\n') + '\n';
-  for (const [from, to] of chunks(trace.steps + 1)) {
+  for (const [from, to] of indexChunks(trace.steps + 1)) {
     yield (from > 0 ? '\n' : '') + alignedTable(rowHeader(trace), rows(trace, from, to, TABLE_NO_VALUE, plain, (cells) => [...cells])).join('\n') + '\n';
   }
   const m = trace.metrics;

@@ -23,7 +23,7 @@ import { encodeRequest } from './request.js';
 import { advanceInSlices, checkSliceOptions, type SliceOptions, yieldToEventLoop } from './slices.js';
 import { Trace, requireTrace } from './trace.js';
 import { loadCore, withTextBytes } from './wasm.js';
-import type { GcodeResult, GcodeSettings, MotionChart, Move, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
+import type { GcodeResult, GcodeSettings, GcodeVcd, MotionChart, Move, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
 
 /**
  * The settings (GcodeSettings: one field per setting of the catalogue's
@@ -49,12 +49,17 @@ export class GcodeProgram {
   readonly trace: Trace;
   /** The core's record of the run; undefined once freed. */
   #result?: GcodeResult;
-  readonly #vcd: () => Uint8Array;
+  readonly #openVcd: () => GcodeVcd;
+  readonly #nextVcdPart: (writer: GcodeVcd) => Uint8Array | undefined;
 
-  /** `result` is the core's record of the run (its plan); `vcd` writes the run's VCD. */
-  constructor(info: ProgramInfo, trace: Trace, result: GcodeResult, vcd: () => Uint8Array) {
+  /**
+   * `result` is the core's record of the run (its plan); `openVcd` starts the
+   * run's VCD and `nextVcdPart` writes its next part (undefined at its end).
+   */
+  constructor(info: ProgramInfo, trace: Trace, result: GcodeResult, openVcd: () => GcodeVcd, nextVcdPart: (writer: GcodeVcd) => Uint8Array | undefined) {
     this.#result = result;
-    this.#vcd = vcd;
+    this.#openVcd = openVcd;
+    this.#nextVcdPart = nextVcdPart;
     Object.assign(this, info);
     this.trace = trace;
   }
@@ -177,13 +182,46 @@ export class GcodeProgram {
    * The STEP and DIR wires of every axis as an IEEE 1364 Value Change Dump
    * (ASCII; timescale 1 ns): STEP rises at each step's instant and falls 10 µs
    * later (Grbl's default pulse), DIR is 1 while the axis runs negative. Opens
-   * in PulseView, GTKWave or sigrok as a logic-analyser capture.
+   * in PulseView, GTKWave or sigrok as a logic-analyser capture. The whole
+   * file at once: for a long program (33 bytes a step on one axis: 1.6 GB
+   * for 50,000,000 steps) prefer vcdChunks.
    */
   vcd(): Uint8Array {
-    // It reads both the plan and the trace: neither may have been freed.
-    void this.#core;
-    requireTrace('trace', this.trace);
-    return callCore(this.#vcd);
+    const parts = [...this.vcdChunks()];
+    const whole = new Uint8Array(parts.reduce((length, part) => length + part.length, 0));
+    let at = 0;
+    for (const part of parts) {
+      whole.set(part, at);
+      at += part.length;
+    }
+    return whole;
+  }
+
+  /**
+   * The VCD of vcd(), in parts: the header, then the lines of 65,536 steps
+   * at a time, each written by the core when asked, so that only one part
+   * is in memory (the CLI's --format vcd writes each as it comes). An error
+   * of the program's (two steps too close for a pulse between them) comes
+   * with the part that holds them, after the parts before it.
+   */
+  *vcdChunks(): Generator<Uint8Array> {
+    // It reads both the plan and the trace: neither may have been freed, before any part or between two.
+    const alive = () => {
+      void this.#core;
+      requireTrace('trace', this.trace);
+    };
+    alive();
+    const writer = callCore(this.#openVcd);
+    try {
+      for (;;) {
+        alive();
+        const part = callCore(() => this.#nextVcdPart(writer));
+        if (part === undefined) return;
+        yield part;
+      }
+    } finally {
+      writer.free();
+    }
   }
 
   /**
@@ -233,7 +271,13 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
     try {
       const info = result.program();
       const handle = callCore(() => result.takeTrace());
-      return new GcodeProgram(info, new Trace(handle), result, () => core.gcodeVcd(handle, result));
+      return new GcodeProgram(
+        info,
+        new Trace(handle),
+        result,
+        () => new core.GcodeVcd(handle, result),
+        (writer) => writer.next(handle, result),
+      );
     } catch (error) {
       result.free();
       throw error;

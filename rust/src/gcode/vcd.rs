@@ -36,60 +36,88 @@ fn nanoseconds(seconds: f64) -> u64 {
     (seconds * 1e9).round().max(0.0) as u64
 }
 
-/// Writes the VCD of `trace`'s steps at the instants of `timeline`; an
-/// `InvalidInput` error, before anything is written, when the program lasts
-/// longer than a VCD's ticks reach, and where it is found, with part of the
-/// file written, when two steps come too close for a pulse between them
-/// (on ticks under 2 ns apart: the callers write to memory and drop it).
-pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Result<()> {
-    // Past the last tick every edge would be pressed onto that one tick
-    // (acceleration 1e-300 made a VCD of two timestamps): refused instead.
-    let duration = timeline.duration_seconds();
-    if duration.is_nan() || duration + STEP_PULSE_SECONDS > LAST_SECONDS {
-        return Err(io::Error::new(
-            io::ErrorKind::InvalidInput,
-            format!(
-                "the program lasts {duration:.3e} s on its planned profile, past the {LAST_SECONDS:.3e} s (584 years) that a VCD of 1 ns ticks reaches"
-            ),
-        ));
-    }
-    let dims = trace.dims();
-    let mut w = vcd::Writer::new(out);
-    w.comment("voxpath: STEP and DIR per axis on the planned motion profile (Grbl 1.1's planner); DIR 1 = negative")?;
-    w.timescale(1, TimescaleUnit::NS)?;
-    w.add_module("voxpath")?;
-    let mut wires: Vec<(IdCode, IdCode)> = Vec::with_capacity(dims);
-    for axis in 0..dims {
-        let name = AXIS_NAMES[axis];
-        wires.push((
-            w.add_wire(1, &format!("{name}_step"))?,
-            w.add_wire(1, &format!("{name}_dir"))?,
-        ));
-    }
-    w.upscope()?;
-    w.enddefinitions()?;
-    w.timestamp(0)?;
-    w.begin(vcd::SimulationCommand::Dumpvars)?;
-    for &(step, dir) in &wires {
-        w.change_scalar(step, Value::V0)?;
-        w.change_scalar(dir, Value::V0)?;
-    }
-    w.end()?;
-    let steps = trace.steps();
-    let mut written_ns = 0u64;
-    // Moves the file's time to tick `ns` (never back), and says to which tick.
-    let mut at = |w: &mut vcd::Writer<_>, ns: u64| -> io::Result<u64> {
-        let ns = ns.max(written_ns);
-        if ns != written_ns {
-            w.timestamp(ns)?;
-            written_ns = ns;
+/// Writes the VCD of `trace`'s steps at the instants of `timeline`, whole
+/// (see `VcdChunks` for the errors, and to write it a part at a time).
+pub fn write_vcd(trace: &Trace, timeline: &Timeline, mut out: impl Write) -> io::Result<()> {
+    let mut chunks = VcdChunks::new(timeline)?;
+    while chunks.write_next(trace, timeline, &mut out)? {}
+    out.flush()
+}
+
+/// A program's VCD written a part at a time: the header, then
+/// `CHUNK_STEPS` steps per call, so that a caller can hand each part on
+/// (the CLI to its output) and hold only one: a 50,000,000-step program's
+/// VCD is about 1.6 GB, which a wasm memory of 4 GiB holding the trace and
+/// a doubling buffer could not take whole. Where the last part ended (the
+/// tick, the DIR levels, the last step's instant) is kept between calls.
+pub struct VcdChunks {
+    /// The STEP and DIR wires of each axis, once the header is written.
+    wires: Option<Vec<(IdCode, IdCode)>>,
+    /// The first step not yet written.
+    next_step: u64,
+    /// The tick of the last timestamp written.
+    written_ns: u64,
+    /// DIR of each axis, bit per axis (1 = negative).
+    level: u8,
+    /// The instant of the last step written, seconds.
+    previous_seconds: f64,
+}
+
+impl VcdChunks {
+    /// An `InvalidInput` error, before anything is written, when the program
+    /// lasts longer than a VCD's ticks reach.
+    pub fn new(timeline: &Timeline) -> io::Result<Self> {
+        // Past the last tick every edge would be pressed onto that one tick
+        // (acceleration 1e-300 made a VCD of two timestamps): refused instead.
+        let duration = timeline.duration_seconds();
+        if duration.is_nan() || duration + STEP_PULSE_SECONDS > LAST_SECONDS {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidInput,
+                format!(
+                    "the program lasts {duration:.3e} s on its planned profile, past the {LAST_SECONDS:.3e} s (584 years) that a VCD of 1 ns ticks reaches"
+                ),
+            ));
         }
-        Ok(ns)
-    };
-    let mut level = 0u8;
-    let mut previous_seconds = 0.0;
-    let mut from = 0;
-    while from < steps {
+        Ok(Self {
+            wires: None,
+            next_step: 0,
+            written_ns: 0,
+            level: 0,
+            previous_seconds: 0.0,
+        })
+    }
+
+    /// Writes the next part (the header first, then up to `CHUNK_STEPS`
+    /// steps) to `out`; false, writing nothing, once every step is written.
+    /// An `InvalidInput` error where two steps come too close for a pulse
+    /// between them (on ticks under 2 ns apart), with the parts before it
+    /// written.
+    pub fn write_next(
+        &mut self,
+        trace: &Trace,
+        timeline: &Timeline,
+        out: impl Write,
+    ) -> io::Result<bool> {
+        let mut w = vcd::Writer::new(out);
+        let Some(wires) = &self.wires else {
+            self.wires = Some(write_header(&mut w, trace.dims())?);
+            return Ok(true);
+        };
+        let steps = trace.steps();
+        let from = self.next_step;
+        if from >= steps {
+            return Ok(false);
+        }
+        // Moves the file's time to tick `ns` (never back), and says to which tick.
+        let written_ns = &mut self.written_ns;
+        let mut at = |w: &mut vcd::Writer<_>, ns: u64| -> io::Result<u64> {
+            let ns = ns.max(*written_ns);
+            if ns != *written_ns {
+                w.timestamp(ns)?;
+                *written_ns = ns;
+            }
+            Ok(ns)
+        };
         let to = (from + CHUNK_STEPS).min(steps);
         let times = timeline.step_seconds(from, to);
         // One more instant, for the last pulse's fall.
@@ -102,18 +130,18 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Res
         let levels = direction_levels(trace, from, to);
         for i in 0..(to - from) as usize {
             let (t, moving) = (times[i], codes[i].moving_axes());
-            let changed = (levels[i] ^ level) & moving;
+            let changed = (levels[i] ^ self.level) & moving;
             if changed != 0 {
                 at(
                     &mut w,
-                    nanoseconds(previous_seconds + (t - previous_seconds) / 2.0),
+                    nanoseconds(self.previous_seconds + (t - self.previous_seconds) / 2.0),
                 )?;
                 for (axis, &(_, dir)) in wires.iter().enumerate() {
                     if changed >> axis & 1 == 1 {
                         w.change_scalar(dir, Value::from(levels[i] >> axis & 1 == 1))?;
                     }
                 }
-                level ^= changed;
+                self.level ^= changed;
             }
             let rise_ns = at(&mut w, nanoseconds(t))?;
             for (axis, &(step, _)) in wires.iter().enumerate() {
@@ -153,11 +181,36 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, out: impl Write) -> io::Res
                     w.change_scalar(step, Value::V0)?;
                 }
             }
-            previous_seconds = t;
+            self.previous_seconds = t;
         }
-        from = to;
+        self.next_step = to;
+        Ok(true)
     }
-    w.flush()
+}
+
+/// The definitions and the initial values (every wire 0); returns the
+/// STEP and DIR wires of each of `dims` axes.
+fn write_header(w: &mut vcd::Writer<impl Write>, dims: usize) -> io::Result<Vec<(IdCode, IdCode)>> {
+    w.comment("voxpath: STEP and DIR per axis on the planned motion profile (Grbl 1.1's planner); DIR 1 = negative")?;
+    w.timescale(1, TimescaleUnit::NS)?;
+    w.add_module("voxpath")?;
+    let mut wires: Vec<(IdCode, IdCode)> = Vec::with_capacity(dims);
+    for name in &AXIS_NAMES[..dims] {
+        wires.push((
+            w.add_wire(1, &format!("{name}_step"))?,
+            w.add_wire(1, &format!("{name}_dir"))?,
+        ));
+    }
+    w.upscope()?;
+    w.enddefinitions()?;
+    w.timestamp(0)?;
+    w.begin(vcd::SimulationCommand::Dumpvars)?;
+    for &(step, dir) in &wires {
+        w.change_scalar(step, Value::V0)?;
+        w.change_scalar(dir, Value::V0)?;
+    }
+    w.end()?;
+    Ok(wires)
 }
 
 #[cfg(test)]
@@ -255,6 +308,54 @@ mod tests {
             assert_eq!(x.iter().filter(|c| c.1).count(), 800, "{source}");
             assert!(x.windows(2).all(|w| w[0].0 < w[1].0), "{source}");
         }
+    }
+
+    #[test]
+    fn parts_of_chunk_steps_each_carry_the_time_and_dir_across_their_ends() {
+        // 65,536 steps out, so that the reversal is the first step of the
+        // second part, then as many back.
+        let settings =
+            Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 100, "maxRate": 6000}"#)
+                .unwrap();
+        let program = run("G1 X819.2 F6000\nG1 X0\n", settings);
+        assert_eq!(program.info.steps, 2 * CHUNK_STEPS);
+        let mut chunks = VcdChunks::new(&program.timeline).unwrap();
+        let mut parts: Vec<Vec<u8>> = Vec::new();
+        loop {
+            let mut part = Vec::new();
+            if !chunks
+                .write_next(&program.trace, &program.timeline, &mut part)
+                .unwrap()
+            {
+                assert!(part.is_empty());
+                break;
+            }
+            parts.push(part);
+        }
+        // The header, then two parts of steps.
+        assert_eq!(parts.len(), 3);
+        let whole = parts.concat();
+        let changes = read_back(&whole);
+        let rising: Vec<u64> = changes["x_step"]
+            .iter()
+            .filter(|c| c.1)
+            .map(|c| c.0)
+            .collect();
+        assert_eq!(rising.len(), 2 * CHUNK_STEPS as usize);
+        let x = &changes["x_step"];
+        assert!(x.windows(2).all(|w| w[0].0 < w[1].0 && w[0].1 != w[1].1));
+        // DIR turns once, between the last step out and the first back.
+        let dir = &changes["x_dir"];
+        assert_eq!(dir.len(), 2);
+        let turn = CHUNK_STEPS as usize;
+        assert!(dir[1].1 && dir[1].0 > rising[turn - 1] && dir[1].0 < rising[turn]);
+        // No timestamp is written twice, or back in time, across a part's end.
+        let text = String::from_utf8(whole).unwrap();
+        let stamps: Vec<u64> = text
+            .lines()
+            .filter_map(|l| l.strip_prefix('#')?.parse().ok())
+            .collect();
+        assert!(stamps.windows(2).all(|w| w[0] < w[1]));
     }
 
     #[test]
