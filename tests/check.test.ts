@@ -121,6 +121,18 @@ describe('voxpath check', () => {
     expect(bad.stderr).toContain('line 2, column 1: point 1 (2, 0, 0) is more than one cell from point 0');
   });
 
+  it('aligns the markers of the points around the difference on their arrows', async () => {
+    // The hold path parts at point 5 and rejoins at 6: moved off the rule at 6 too.
+    const { rows } = await holdPath();
+    const c = await checkPoints(REGIONS, rows);
+    const around = c.firstDifference!.around.map((r) => (r.pointIndex === 6 ? { ...r, got: [6, 5, 4] } : r));
+    const table = checkToTable({ ...c, firstDifference: { ...c.firstDifference!, around } }).split('\n');
+    const marked = table.filter((l) => l.includes('<- '));
+    expect(marked.length).toBeGreaterThan(1);
+    // '<- differs' sat right-aligned under '<- first difference', its arrow 9 columns further right.
+    expect(new Set(marked.map((l) => l.indexOf('<- '))).size).toBe(1);
+  });
+
   it('reads --flag=value as --flag value, and FILE before, between or after the flags', async () => {
     const t = await trace(REGIONS);
     const csv = pointsOf(t).map((p) => p.join(',')).join('\n');

@@ -113,10 +113,10 @@ export function* pointsJsonChunks(trace: Trace): Generator<string> {
   }
 }
 
-/** Columns separated by two spaces: numbers right-aligned, a label column (the first, if asked) left-aligned. */
-export function alignedTable(header: string[], body: string[][], labelFirst = false): string[] {
+/** Columns separated by two spaces: numbers right-aligned, the label columns of indices `labels` left-aligned. */
+export function alignedTable(header: string[], body: string[][], labels: readonly number[] = []): string[] {
   const widths = header.map((h, i) => body.reduce((width, r) => Math.max(width, r[i]!.length), h.length));
-  const pad = (cell: string, i: number) => (labelFirst && i === 0 ? cell.padEnd(widths[i]!) : cell.padStart(widths[i]!));
+  const pad = (cell: string, i: number) => (labels.includes(i) ? cell.padEnd(widths[i]!) : cell.padStart(widths[i]!));
   const line = (r: string[]) => r.map(pad).join('  ');
   return [line(header), ...body.map(line)];
 }
@@ -263,7 +263,7 @@ export function randomLinesToTable(result: RandomLinesResult): string {
     ...alignedTable(header, body),
     '',
     'Spread over the lines of each per-line statistic (perp = perpendicular distance, eq11 = Wang eq. (11) error, Fig9 = Wang Figure 9 as printed):',
-    ...alignedTable(summaryHeader, summary, true),
+    ...alignedTable(summaryHeader, summary, [0]),
     '',
     `Note: ${result.paperFigure9Erratum}`,
     '',
@@ -330,7 +330,7 @@ export function comparisonToTable(comparison: Comparison): string {
   const lines = [
     `compare ${c.a.algorithm} (a) with ${c.b.algorithm} (b), from ${pointText(c.a.start)}`,
     '',
-    ...alignedTable(['', ...labels], comparisonRows(c).slice(0, 9), true),
+    ...alignedTable(['', ...labels], comparisonRows(c).slice(0, 9), [0]),
     '',
   ];
   if (d === null) {
@@ -385,7 +385,8 @@ export function checkToTable(check: Check): string {
       pointText(r.got),
       r.pointIndex === d.pointIndex ? '<- first difference' : r.expected !== null && r.got !== null && r.expected.join() !== r.got.join() ? '<- differs' : '',
     ]);
-    lines.push(...alignedTable(['k', c.algorithm, 'yours', ''], body).map((l) => l.trimEnd()));
+    // The markers read as words, from their arrow: left-aligned.
+    lines.push(...alignedTable(['k', c.algorithm, 'yours', ''], body, [3]).map((l) => l.trimEnd()));
   }
   lines.push('');
   lines.push(
