@@ -1,5 +1,6 @@
 // The CLI as users run it: `node bin/voxpath.js ...` (the compiled lib/, built by setup).
 import { spawnSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { EXPORT_CHUNK_ROWS } from '../web/core/index.js';
 import { BIN, voxpath, voxpathPipedInto } from './helpers.js';
@@ -67,6 +68,16 @@ describe('voxpath trace', () => {
     const [first, second] = r.stderr.split('\n');
     expect(first).toMatch(message);
     expect(second).toMatch(/^usage: voxpath trace/);
+  });
+
+  it('prints the usage on stderr, status 2, without a command, and the version for --version and -V', () => {
+    // It printed the whole --help text on stdout, with status 2.
+    const none = voxpath([]);
+    expect({ code: none.code, stdout: none.stdout }).toEqual({ code: 2, stdout: '' });
+    expect(none.stderr).toMatch(/^voxpath: a command is needed \(voxpath --help describes each\)\nusage: voxpath trace/);
+    const { version } = JSON.parse(readFileSync(new URL('../package.json', import.meta.url), 'utf8')) as { version: string };
+    for (const flag of ['--version', '-V']) expect(voxpath([flag])).toEqual({ code: 0, stdout: `voxpath ${version}\n`, stderr: '' });
+    expect(voxpath(['--help']).stdout).toContain('voxpath --help | --version');
   });
 
   it('documents every algorithm and option in --help', () => {

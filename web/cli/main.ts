@@ -9,6 +9,7 @@
  * rejected input (with a one-line error naming the flag, then usage), 3 the
  * output could not be written (a full disk: one line saying so).
  */
+import { readFile } from 'node:fs/promises';
 import {
   catalogue as coreCatalogue,
   checkPoints,
@@ -39,7 +40,7 @@ function shortUsage(): string {
     `       ${GCODE_USAGE}`,
     `       ${CHECK_USAGE}`,
     '       voxpath algorithms',
-    '       voxpath --help',
+    '       voxpath --help | --version',
   ].join('\n');
 }
 
@@ -90,6 +91,12 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList, gcodeSe
     for (const o of e.options) lines.push(describeOption(o));
   }
   return lines.join('\n') + '\n';
+}
+
+/** The version of package.json, beside web/ and lib/ (this file runs as lib/cli/main.js). */
+async function packageVersion(): Promise<string> {
+  const text = await readFile(new URL('../../package.json', import.meta.url), 'utf8');
+  return (JSON.parse(text) as { version: string }).version;
 }
 
 /** The algorithm a command names with --algorithm (or `fallback`). */
@@ -185,10 +192,16 @@ export async function main(args: string[]): Promise<number> {
   listenForWriteErrors();
   const [command, ...rest] = args;
   try {
+    // As git and cargo do: no command is a usage error, on stderr; the full text is --help's.
+    if (command === undefined) throw new UsageError('a command is needed (voxpath --help describes each)');
+    if (command === '--version' || command === '-V') {
+      await write(`voxpath ${await packageVersion()}\n`);
+      return 0;
+    }
     const catalogues = await coreCatalogue();
-    if (command === undefined || command === '--help' || command === 'help' || rest.includes('--help')) {
+    if (command === '--help' || command === 'help' || rest.includes('--help')) {
       await write(fullUsage(catalogues));
-      return command === undefined ? 2 : 0;
+      return 0;
     }
     if (command === 'algorithms') {
       // Nothing to read after it: `algorithms --format json` printed the table and exited 0.
