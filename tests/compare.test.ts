@@ -4,7 +4,7 @@
 // (5,4,3)); the circle r = 5 quarter of Saleem eq. 7-11 against its single
 // chord, as worked in rust/src/compare.rs.
 import { describe, expect, it } from 'vitest';
-import { compare, trace, VoxpathError } from '../web/core/index.js';
+import { compare, comparisonToCsv, trace, VoxpathError } from '../web/core/index.js';
 import { rejection, voxpath } from './helpers.js';
 
 const LINE = { from: [0, 0, 0], to: [10, 7, 6] };
@@ -167,5 +167,13 @@ describe('voxpath compare', () => {
     const [first, second] = r.stderr.split('\n');
     expect(first).toMatch(message);
     expect(second).toMatch(/^usage: voxpath trace/);
+  });
+});
+
+describe('comparisonToCsv', () => {
+  it('quotes a cell holding a lone CR, as it quotes one holding LF', async () => {
+    const c = await compare({ algorithms: ['regions', 'bresenham3d'], from: [0, 0, 0], to: [10, 7, 6] });
+    const header = comparisonToCsv({ ...c, a: { ...c.a, algorithm: 'a\rb' } }).split('\n')[0];
+    expect(header).toBe('quantity,"a\rb",bresenham3d');
   });
 });

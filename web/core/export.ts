@@ -166,8 +166,9 @@ function rows<R>(trace: Trace, from: number, to: number, absent: string, cell: (
   return out;
 }
 
+/** A cell as RFC 4180 writes it: quoted when it holds a quote, a comma or a line end (a lone CR ends a line for many readers). */
 function csvCell(cell: string): string {
-  return /[",\n]/.test(cell) ? `"${cell.replaceAll('"', '""')}"` : cell;
+  return /[",\r\n]/.test(cell) ? `"${cell.replaceAll('"', '""')}"` : cell;
 }
 
 /** Numbers need no quoting in CSV; a label or a name might. */
