@@ -188,3 +188,27 @@ describe('voxpath trace: decision values that do not apply', () => {
     expect(table).toContainEqual(expect.stringMatching(/^0 +0 +0 +0 +0\.000000$/));
   });
 });
+
+describe("voxpath's messages in the command line's words", () => {
+  it('names the options a message names by their flags, and writes an example point as a flag takes it', () => {
+    const first = (args: string[], input?: string) => {
+      const r = spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8', input, timeout: 20_000 });
+      expect(r.status, r.stderr).toBe(2);
+      return r.stderr.split('\n')[0];
+    };
+    // The core's words are the API's: "give segmentLength or tolerance", "raise maxSteps", "e.g. [0, 0, 0]".
+    expect(first(['trace', '--algorithm', 'arc-segments', '--from', '20,0,0', '--to', '-20,0,0', '--center', '0,0,0', '--dir', 'ccw', '--segment-length', '8', '--tolerance', '0.1'])).toBe(
+      'voxpath: --tolerance: give --segment-length or --tolerance, not both',
+    );
+    expect(first(['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '100000000,0,0', '--max-steps', '10'])).toBe(
+      'voxpath: --max-steps: the path needs more than 10 steps (at least 100000000); raise --max-steps (up to 1000000000) or shorten the move',
+    );
+    expect(first(['trace', '--algorithm', 'regions', '--to', '5,5,5'])).toBe('voxpath: --from: missing: give one integer per axis, e.g. 0,0,0');
+    // A list of names, camelCase and one-word, all flags (this one looped for ever on its first try).
+    expect(first(['gcode', '-', '--steps-per-mm', '80', '--step-angle', '1.8'], 'G1 X1\n')).toBe(
+      'voxpath: --step-angle: give --steps-per-mm or --step-angle, --microsteps and --pitch, not both',
+    );
+    // A message that names no other option is as the core says it.
+    expect(first(['experiment', 'random-lines', '--count', '0'])).toBe('voxpath: --count: must be 1 to 100000, got 0');
+  });
+});

@@ -7,7 +7,7 @@
  */
 import { parseArgs } from 'node:util';
 import { quoted, readDecimal } from '../core/guard.js';
-import type { OptionSpec } from '../core/index.js';
+import type { Catalogue, OptionSpec } from '../core/index.js';
 
 /** A command-line mistake: reported in one line plus usage, exit code 2. */
 export class UsageError extends Error {}
@@ -18,6 +18,33 @@ export type Format = (typeof FORMATS)[number];
 /** The flag of an option: maxSteps -> --max-steps. */
 export function flagOf(option: string): string {
   return '--' + option.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase());
+}
+
+/**
+ * The core's message in the command line's words: an option it names by
+ * its API name in camelCase (segmentLength, maxSteps) is named by its flag
+ * (--segment-length, --max-steps), and so is a one-word option listed with
+ * one ("give segmentLength or tolerance" is "give --segment-length or
+ * --tolerance"); elsewhere a one-word name (from, to, count) is a word of
+ * the sentence, and stays. A point given as an example in JSON (e.g.
+ * [0, 0, 0]) is written as a flag takes it (e.g. 0,0,0).
+ */
+export function inFlagWords(message: string, catalogue: Catalogue): string {
+  const specs = [...catalogue.algorithms.flatMap((a) => a.options), ...catalogue.experiments.flatMap((e) => e.options), ...catalogue.gcodeSettings];
+  const names = [...new Set(specs.map((o) => o.name))];
+  // A name standing alone: not a part of a flag already written (--microsteps).
+  const alternatives = (list: string[]) => `(?<![\\w-])(${list.join('|')})\\b`;
+  const camel = names.filter((name) => /[A-Z]/.test(name));
+  let text = camel.length === 0 ? message : message.replace(new RegExp(alternatives(camel), 'g'), (name) => flagOf(name));
+  // Beside a flag in a list (", ", " or ", " and "): a flag too, until none is left.
+  const word = alternatives(names.filter((name) => !camel.includes(name)));
+  const besideFlag = [new RegExp(`(--[a-z-]+(?:, | or | and ))${word}`, 'g'), new RegExp(`${word}((?:, | or | and )--[a-z-]+)`, 'g')];
+  // Each pass turns at least one name into a flag, and a flag is never a name again: it ends.
+  for (let before = ''; before !== text; ) {
+    before = text;
+    text = text.replace(besideFlag[0]!, (_, list: string, name: string) => `${list}${flagOf(name)}`).replace(besideFlag[1]!, (_, name: string, list: string) => `${flagOf(name)}${list}`);
+  }
+  return text.replace(/e\.g\. \[([-\d, ]+)\]/g, (_, point: string) => `e.g. ${point.replace(/ /g, '')}`);
 }
 
 /** A value after its flag, even a negative number (`--from -3,0,0`), which parseArgs alone would take for a flag. */

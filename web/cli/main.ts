@@ -28,7 +28,7 @@ import {
 } from '../core/index.js';
 import type { AlgorithmInfo, Catalogue, Trace } from '../core/index.js';
 import { quoted } from '../core/guard.js';
-import { FORMATS, UsageError, describeOption, flagOf, optionsFromFlags, parseCommandLine, parseFlags, pickFormat } from './flags.js';
+import { FORMATS, UsageError, describeOption, flagOf, inFlagWords, optionsFromFlags, parseCommandLine, parseFlags, pickFormat } from './flags.js';
 import { GCODE_USAGE, gcodeCommand, gcodeHelp, readSource } from './gcode.js';
 import { OUTPUT_FAILED, OutputError, listenForWriteErrors, write, writeAll } from './output.js';
 
@@ -245,7 +245,7 @@ export async function main(args: string[]): Promise<number> {
             : error.field !== undefined
               ? `${flagOf(error.field)}: `
               : '';
-      process.stderr.write(`voxpath: ${where}${error.detail}\n${shortUsage()}\n`);
+      process.stderr.write(`voxpath: ${where}${inFlagWords(error.detail, await coreCatalogue())}\n${shortUsage()}\n`);
       return 2;
     }
     process.stderr.write(`voxpath: ${error instanceof Error ? (error.stack ?? error.message) : String(error)}\n`);
