@@ -1,12 +1,19 @@
 //! One line of G-code -> a block of codes and words with their columns.
 //!
 //! The grammar is RS274/NGC's word level, as LinuxCNC and Grbl read it:
-//! - a line is words (an address letter, an optional sign, a number; spaces
-//!   may stand between them, `G1X10Y5` needs none), G, M and T codes (a
-//!   letter and a whole number with at most one digit after its point:
-//!   G90.1), comments `( ... )` (nested, closed on their line) and `;` to
-//!   the end of the line, a line number N and a program number O before the
-//!   codes, and `%` (a program delimiter, ignored);
+//! - a line is words (an address letter, an optional sign, a number;
+//!   `G1X10Y5` needs no spaces), G, M and T codes (a letter and a whole
+//!   number with at most one digit after its point: G90.1), comments
+//!   `( ... )` (to the first `)`, on their line: they do not nest) and `;`
+//!   to the end of the line, a line number N and a program number O before
+//!   the codes;
+//! - blanks and `/` are dropped wherever they stand,
+//!   even inside a number, as Grbl drops them before reading a line
+//!   (protocol.c): `X1 0` is X10, `/G1 X10` is G1 X10 (block delete is not
+//!   supported, its `/` ignored);
+//! - `%` stands on a line of its own (blanks and comments aside): it marks
+//!   the program's start or end (see `program`), and anywhere else is an
+//!   error;
 //! - letters are read in either case and kept in upper case;
 //! - values are f64, read from the word's own text (so X123.4567 is exactly
 //!   what the program says), and must be finite;
@@ -33,6 +40,18 @@
 //! twice, once to guard it and once to parse it.
 
 use crate::text::echo;
+use std::borrow::Cow;
+
+/// What Grbl drops from a line before reading it (protocol.c) that
+/// voxpath drops too: blanks (space, tab, CR, vertical tab, form feed) and
+/// '/' (block delete, which Grbl does not support: the character is
+/// ignored, the block runs). So blanks may stand anywhere, even inside a
+/// number. Grbl drops every other control character as well; voxpath
+/// quotes one in an error instead, as a NUL or an escape sequence in a
+/// program is a damaged file, not spacing.
+fn dropped(byte: u8) -> bool {
+    matches!(byte, b' ' | b'\t' | b'\r' | 0x0B | 0x0C | b'/')
+}
 
 /// An address letter with its value, e.g. X-1.5 or F600.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,6 +101,9 @@ pub struct Block {
     pub words: Vec<Word>,
     /// Things the line says that voxpath ignores (program numbers).
     pub ignored: Vec<Problem>,
+    /// The line is a `%` alone (with blanks and comments at most): the
+    /// program's start or end, as LinuxCNC reads it (see `program`).
+    pub percent: bool,
     /// The line's syntax error, the first one from the left: reading stops
     /// there, and a line with an error is not run.
     pub error: Option<Problem>,
@@ -100,6 +122,7 @@ pub fn parse_line_into(text: &str, block: &mut Block) {
     block.codes.clear();
     block.words.clear();
     block.ignored.clear();
+    block.percent = false;
     block.error = Reader {
         text,
         at: 0,
@@ -197,12 +220,13 @@ impl<'t> Reader<'t> {
     }
 
     fn skip_blanks(&mut self) {
-        self.take_while(|b| matches!(b, b' ' | b'\t' | b'\r'));
+        self.take_while(dropped);
     }
 
     /// A number's text: digits, with at most one point among or before
-    /// them ("12", "1.5", ".5", "1."). Empty when none is here.
-    fn number(&mut self) -> &'t str {
+    /// them ("12", "1.5", ".5", "1."), without the blanks that may stand
+    /// among them ("1 0" is "10"). Empty when none is here.
+    fn number(&mut self) -> Cow<'t, str> {
         self.decimal().0
     }
 
@@ -212,7 +236,11 @@ impl<'t> Reader<'t> {
     /// rounded value, as `str::parse` does, without its general machinery
     /// (most G-code numbers look like 25.655). None otherwise, for
     /// `str::parse` to read. One pass over the bytes, on locals.
-    fn decimal(&mut self) -> (&'t str, Option<f64>) {
+    ///
+    /// Blanks inside a number are dropped, as Grbl drops them before it
+    /// reads a line (protocol.c), so `X1 0` is X10 and `G9 0.1` is G90.1;
+    /// blanks after the last digit are left for the caller.
+    fn decimal(&mut self) -> (Cow<'t, str>, Option<f64>) {
         const POWERS_OF_TEN: [f64; 16] = [
             1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
         ];
@@ -220,6 +248,7 @@ impl<'t> Reader<'t> {
         let mut at = start;
         let (mut mantissa, mut digits, mut fraction_digits) = (0u64, 0usize, 0usize);
         let mut point = false;
+        let mut blanks_inside = false;
         loop {
             match bytes.get(at) {
                 Some(&b) if b.is_ascii_digit() => {
@@ -230,11 +259,26 @@ impl<'t> Reader<'t> {
                     digits += 1;
                 }
                 Some(b'.') if !point => point = true,
+                Some(&b) if at > start && dropped(b) => {
+                    // Blanks, then more of the number: part of it.
+                    let mut after = at + 1;
+                    while bytes.get(after).is_some_and(|&b| dropped(b)) {
+                        after += 1;
+                    }
+                    match bytes.get(after) {
+                        Some(&b) if b.is_ascii_digit() || (b == b'.' && !point) => {
+                            blanks_inside = true;
+                            at = after;
+                            continue;
+                        }
+                        _ => break,
+                    }
+                }
                 _ => break,
             }
             at += 1;
         }
-        // Digits and points are ASCII: a column each.
+        // Digits, points and blanks are ASCII: a column each.
         self.column += (at - start) as u32;
         self.at = at;
         let value = (1..=15)
@@ -242,7 +286,18 @@ impl<'t> Reader<'t> {
             // Through i64 (below 10^15, so exact): wasm converts a signed
             // integer to f64 in one instruction, an unsigned one in several.
             .then(|| mantissa as i64 as f64 / POWERS_OF_TEN[fraction_digits]);
-        (&self.text[start..at], value)
+        let text = &self.text[start..at];
+        let text = if blanks_inside {
+            Cow::Owned(
+                text.bytes()
+                    .filter(|&b| !dropped(b))
+                    .map(char::from)
+                    .collect(),
+            )
+        } else {
+            Cow::Borrowed(text)
+        };
+        (text, value)
     }
 
     /// An exponent right after a number: e or E, then a digit, a sign or
@@ -281,24 +336,47 @@ impl<'t> Reader<'t> {
             match byte {
                 b';' => return Ok(()),
                 b'(' => self.comment()?,
-                b'%' => self.bump(),
+                b'%' if !block.percent && letters_seen == 0 && block.codes.is_empty() => {
+                    // A line of its own: the program's start or end, which
+                    // the runner keeps (see `Block::percent`).
+                    self.bump();
+                    block.percent = true;
+                }
+                _ if block.percent => {
+                    return Err(problem(
+                        column,
+                        "'%' marks a program's start or end on a line of its own: nothing but blanks and comments may follow it".to_string(),
+                    ));
+                }
+                b'%' => {
+                    return Err(problem(
+                        column,
+                        "'%' marks a program's start or end on a line of its own: it cannot stand among words".to_string(),
+                    ));
+                }
                 b'0'..=b'9' | b'.' => {
                     let text = self.number();
                     return Err(problem(
                         column,
                         format!(
                             "malformed number: '{}' belongs to no letter (a second decimal point, or a missing address letter?)",
-                            echo(text)
+                            echo(&text)
                         ),
                     ));
                 }
-                b'-' | b'+' | b'/' => {
+                b'-' | b'+' => {
                     return Err(problem(
                         column,
                         format!(
-                            "unexpected '{}': a sign belongs right after an address letter (X-1), and block delete (/) is not supported",
+                            "unexpected '{}': a sign belongs right after an address letter (X-1)",
                             byte as char
                         ),
+                    ));
+                }
+                b')' => {
+                    return Err(problem(
+                        column,
+                        "')' closes no comment: a comment ends at its first ')', as in Grbl, so comments do not nest".to_string(),
                     ));
                 }
                 letter if letter.is_ascii_alphabetic() => {
@@ -348,27 +426,21 @@ impl<'t> Reader<'t> {
         }
     }
 
-    /// A comment from its `(` to the `)` that closes it (comments nest).
+    /// A comment from its `(` to the first `)` after it: comments do not
+    /// nest, as in Grbl (protocol.c ends a comment at the first ')'), so
+    /// `(a (b) c)` is the comment `(a (b)` and then ` c)`, read as G-code.
     fn comment(&mut self) -> Read<()> {
         let column = self.column;
-        let mut depth = 0u32;
-        while let Some(byte) = self.peek() {
-            self.bump();
-            match byte {
-                b'(' => depth += 1,
-                b')' => {
-                    depth -= 1;
-                    if depth == 0 {
-                        return Ok(());
-                    }
-                }
-                _ => {}
-            }
+        self.bump();
+        self.take_while(|b| b != b')');
+        if self.peek().is_none() {
+            return Err(problem(
+                column,
+                "comment not closed: '(' needs its ')' on the same line".to_string(),
+            ));
         }
-        Err(problem(
-            column,
-            "comment not closed: '(' needs its ')' on the same line".to_string(),
-        ))
+        self.bump();
+        Ok(())
     }
 
     /// The number after a code letter at `column`: whole, or with one digit
@@ -391,7 +463,8 @@ impl<'t> Reader<'t> {
             });
         }
         let number_column = self.column;
-        let text = self.number();
+        let number = self.number();
+        let text = number.as_ref();
         // By position, not split_once: a search for the point is a memchr
         // call, and every G1 of a program has a code.
         let (major, minor) = match text.bytes().position(|b| b == b'.') {
@@ -433,7 +506,11 @@ impl<'t> Reader<'t> {
     /// the column it starts at, its text and its short value
     /// ([`Self::decimal`]); an error at the letter's `column` when no number
     /// follows.
-    fn number_after(&mut self, letter: char, column: u32) -> Read<(u32, &'t str, Option<f64>)> {
+    fn number_after(
+        &mut self,
+        letter: char,
+        column: u32,
+    ) -> Read<(u32, Cow<'t, str>, Option<f64>)> {
         if !self.at_number() {
             return Err(problem(
                 column,
@@ -448,7 +525,8 @@ impl<'t> Reader<'t> {
     /// The whole number after N or O (its part before any point).
     fn whole_number(&mut self, letter: char, column: u32) -> Read<u32> {
         self.skip_blanks();
-        let (number_column, text, _) = self.number_after(letter, column)?;
+        let (number_column, number, _) = self.number_after(letter, column)?;
+        let text = number.as_ref();
         let whole = text.split_once('.').map_or(text, |(w, _)| w);
         whole.parse::<u32>().map_err(|_| {
             problem(
@@ -469,7 +547,8 @@ impl<'t> Reader<'t> {
             self.bump();
             self.skip_blanks();
         }
-        let (number_column, text, short) = self.number_after(letter, column)?;
+        let (number_column, number, short) = self.number_after(letter, column)?;
+        let text = number.as_ref();
         let sign = if negative { "-" } else { "" };
         if self.at_exponent() {
             // F1e300 read as F1 and a word E300 would be neither what the
@@ -818,6 +897,64 @@ mod tests {
             errors("G1 X.")[0],
             (5, "malformed number: '.' is not a number".to_string())
         );
+    }
+
+    #[test]
+    fn blanks_and_slashes_are_dropped_even_inside_numbers_as_grbl_drops_them() {
+        // Grbl's protocol.c throws away every byte up to ' ' and '/' (block
+        // delete, "NOT SUPPORTED. Ignore character.") before gc_execute_line
+        // reads the line: `X1 0` is X10. It was an error ("'0' belongs to
+        // no letter"), and `/G1 X10` one too.
+        let b = parse_line("G1 X1 0 F100");
+        assert_eq!((codes(&b), &b.error), (vec![("G1".to_string(), 1)], &None));
+        assert_eq!(words(&b), [('X', 10.0, 4), ('F', 100.0, 9)]);
+        let b = parse_line("/G1 X10");
+        assert_eq!((codes(&b), &b.error), (vec![("G1".to_string(), 2)], &None));
+        assert_eq!(words(&b), [('X', 10.0, 5)]);
+        let b = parse_line("G9 0.1 G 1 X - 1 .5\tY1/0");
+        assert_eq!(codes(&b), [("G90.1".to_string(), 1), ("G1".to_string(), 8)]);
+        assert_eq!(words(&b), [('X', -1.5, 12), ('Y', 10.0, 21)]);
+        // A number past 15 digits is read by str::parse, without its blanks.
+        let b = parse_line("X1 2345678901234567 8");
+        assert_eq!(words(&b), [('X', 123456789012345678.0, 1)]);
+        // A second point still ends a number: X1. .5 is X1. and then .5.
+        assert_eq!(errors("X1. .5")[0].0, 5);
+    }
+
+    #[test]
+    fn a_comment_ends_at_its_first_closing_parenthesis_as_in_grbl() {
+        // protocol.c ends a comment at the first ')'. Comments nested, so
+        // the Y5 below was silently part of the comment, and the second
+        // line an unclosed comment.
+        assert_eq!(
+            errors("G0 X10 (first (second) Y5)"),
+            [(
+                26,
+                "')' closes no comment: a comment ends at its first ')', as in Grbl, so comments do not nest".to_string()
+            )]
+        );
+        let b = parse_line("G1 X1 F100 (see (note 3)");
+        assert_eq!(b.error, None);
+        assert_eq!(words(&b), [('X', 1.0, 4), ('F', 100.0, 7)]);
+        let b = parse_line("G0 (a (b) X2");
+        assert_eq!((words(&b), b.error), (vec![('X', 2.0, 11)], None));
+    }
+
+    #[test]
+    fn percent_stands_on_a_line_of_its_own() {
+        for line in ["%", " % (start) ", "%;end"] {
+            let b = parse_line(line);
+            assert!(b.percent && b.error.is_none(), "{line}");
+        }
+        assert!(!parse_line("G1 X1").percent);
+        for (line, column) in [("%G1 X1", 2), ("% %", 3), ("G1 X1 %", 7), ("N1 %", 4)] {
+            let e = errors(line);
+            assert_eq!(e[0].0, column, "{line}");
+            assert!(
+                e[0].1
+                    .starts_with("'%' marks a program's start or end on a line of its own")
+            );
+        }
     }
 
     #[test]
