@@ -385,3 +385,39 @@ fn lines_are_counted_as_an_editor_counts_them() {
         );
     }
 }
+
+#[test]
+fn a_percent_line_opens_the_program_and_the_next_one_ends_it() {
+    // `%` was skipped wherever it stood, so the lines after a closing `%`
+    // ran. Grbl has no `%` (protocol.c: "TODO: Install '%' feature";
+    // gc_execute_line fails on it, error 1); voxpath reads LinuxCNC's
+    // rule: a `%` line before the program opens it, the next one ends it.
+    let p = at10("%\nG1 X1 F100\n%\nG1 X5\n(more)\nG1 X9\n");
+    assert_eq!(p.moves().len(), 1);
+    assert_eq!(end(&p), Point::new(&[10, 0, 0]));
+    let warned: Vec<(u32, u32, &str)> = p
+        .info
+        .warnings
+        .iter()
+        .map(|w| (w.line, w.column, w.message.as_str()))
+        .collect();
+    assert_eq!(
+        warned,
+        [(
+            3,
+            1,
+            "% ends the program: the 3 lines after it are not read (a program stands between two % lines, as in LinuxCNC)"
+        )]
+    );
+    // Not even for their syntax; and a `%` after the program's first
+    // codes ends it too. Blank lines after the end are no warning.
+    let p = at10("(header)\nG1 X1 F100\n %\nG1 X1..5\n");
+    assert_eq!(p.moves().len(), 1);
+    assert_eq!(
+        p.info.warnings[0].message.split(':').next(),
+        Some("% ends the program")
+    );
+    assert_eq!((p.info.warnings[0].line, p.info.warnings[0].column), (3, 2));
+    let p = at10("%\nG1 X1 F100\n%\n\n");
+    assert_eq!((p.moves().len(), p.info.warnings.len()), (1, 0));
+}

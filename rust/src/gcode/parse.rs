@@ -101,9 +101,10 @@ pub struct Block {
     pub words: Vec<Word>,
     /// Things the line says that voxpath ignores (program numbers).
     pub ignored: Vec<Problem>,
-    /// The line is a `%` alone (with blanks and comments at most): the
-    /// program's start or end, as LinuxCNC reads it (see `program`).
-    pub percent: bool,
+    /// The column of the line's `%` when the line is a `%` alone (with
+    /// blanks and comments at most): the program's start or end, as
+    /// LinuxCNC reads it (see `program`).
+    pub percent: Option<u32>,
     /// The line's syntax error, the first one from the left: reading stops
     /// there, and a line with an error is not run.
     pub error: Option<Problem>,
@@ -122,7 +123,7 @@ pub fn parse_line_into(text: &str, block: &mut Block) {
     block.codes.clear();
     block.words.clear();
     block.ignored.clear();
-    block.percent = false;
+    block.percent = None;
     block.error = Reader {
         text,
         at: 0,
@@ -336,13 +337,13 @@ impl<'t> Reader<'t> {
             match byte {
                 b';' => return Ok(()),
                 b'(' => self.comment()?,
-                b'%' if !block.percent && letters_seen == 0 && block.codes.is_empty() => {
+                b'%' if block.percent.is_none() && letters_seen == 0 && block.codes.is_empty() => {
                     // A line of its own: the program's start or end, which
                     // the runner keeps (see `Block::percent`).
                     self.bump();
-                    block.percent = true;
+                    block.percent = Some(column);
                 }
-                _ if block.percent => {
+                _ if block.percent.is_some() => {
                     return Err(problem(
                         column,
                         "'%' marks a program's start or end on a line of its own: nothing but blanks and comments may follow it".to_string(),
@@ -942,11 +943,11 @@ mod tests {
 
     #[test]
     fn percent_stands_on_a_line_of_its_own() {
-        for line in ["%", " % (start) ", "%;end"] {
+        for (line, column) in [("%", 1), (" % (start) ", 2), ("%;end", 1)] {
             let b = parse_line(line);
-            assert!(b.percent && b.error.is_none(), "{line}");
+            assert_eq!((b.percent, b.error), (Some(column), None), "{line}");
         }
-        assert!(!parse_line("G1 X1").percent);
+        assert_eq!(parse_line("G1 X1").percent, None);
         for (line, column) in [("%G1 X1", 2), ("% %", 3), ("G1 X1 %", 7), ("N1 %", 4)] {
             let e = errors(line);
             assert_eq!(e[0].0, column, "{line}");

@@ -871,6 +871,9 @@ pub struct Runner {
     capped_feed_warned: Option<f64>,
     errors: Vec<Diagnostic>,
     stopped_at_line: Option<u32>,
+    /// A `%` line or a line with codes or words has been read: a `%` line
+    /// now ends the program (see [`Runner::end_at_percent`]).
+    program_begun: bool,
     /// Heap the core may hold (all of it, this run's and others') before
     /// the run stops; see [`crate::memory`].
     heap_budget_bytes: usize,
@@ -949,6 +952,7 @@ impl Runner {
             capped_feed_warned: None,
             errors: Vec::new(),
             stopped_at_line: None,
+            program_begun: false,
             heap_budget_bytes: HEAP_BUDGET_BYTES,
             out_of_memory: None,
         }
@@ -996,6 +1000,14 @@ impl Runner {
             parse_line_into(text, &mut block);
             self.offset += next;
             self.lines_done += 1;
+            if let Some(column) = block.percent {
+                if self.program_begun {
+                    self.end_at_percent(self.lines_done, column);
+                    break;
+                }
+            }
+            self.program_begun |=
+                block.percent.is_some() || !block.codes.is_empty() || !block.words.is_empty();
             self.run_block(self.lines_done, &block, &mut effects);
         }
         self.block = block;
@@ -1070,6 +1082,35 @@ impl Runner {
                 self.lines_done
             ),
         ))
+    }
+
+    /// A `%` line after the program has begun (after an opening `%` line,
+    /// or after a line with codes or words) ends it, as LinuxCNC reads a
+    /// program between two `%` lines: the lines after it are not read, and
+    /// a warning says how many hold anything. Grbl has no `%` (its
+    /// protocol.c leaves it as a TODO, and gc_execute_line refuses it:
+    /// error 1, expected command letter).
+    fn end_at_percent(&mut self, line: u32, column: u32) {
+        let rest = &self.source[self.offset..];
+        if !rest.trim().is_empty() {
+            let unread = count_lines(rest);
+            let (lines, are) = if unread == 1 {
+                ("line", "is")
+            } else {
+                ("lines", "are")
+            };
+            self.warn(Diagnostic::at(
+                line,
+                &Problem {
+                    column,
+                    message: format!(
+                        "% ends the program: the {unread} {lines} after it {are} not read (a program stands between two % lines, as in LinuxCNC)"
+                    ),
+                },
+            ));
+        }
+        self.offset = self.source.len();
+        self.lines_done = self.lines;
     }
 
     /// Runs every line left.
