@@ -255,6 +255,31 @@ describe('voxpath gcode', () => {
     expect(streamed('vcd')).toEqual({ code: 0, lines: 2_000_000, stderr: '' });
   });
 
+  it("reads the tester's lines as Grbl reads them (gcode.c, protocol.c), or refuses them at their column", () => {
+    // At 100 steps/mm. Each was wrong before: a move, a lost word, an error
+    // Grbl does not make, or a P read twice.
+    const run = (source: string) => {
+      const out = JSON.parse(voxpath(['gcode', '-', '--steps-per-mm', '100'], source).stdout);
+      return { pulses: out.pulses, errors: out.errors.map((e: { line: number; column: number }) => [e.line, e.column]) };
+    };
+    // G43.1's Z is a tool length offset (gcode.c: AXIS_COMMAND_TOOL_LENGTH_OFFSET), not a move.
+    expect(run('G43.1 Z-2.5\nG49 Z5\n')).toEqual({ pulses: [0, 0, 0], errors: [] });
+    // One P cannot be 2 s of dwell and 2 turns: the G0 move runs, line 2 is refused at its G4.
+    expect(run('G0 X10\nG4 P2 G2 I-10 F100\n')).toEqual({ pulses: [1000, 0, 0], errors: [[2, 1]] });
+    // Blanks and '/' are dropped (protocol.c): X1 0 is X10.
+    expect(run('G1 X1 0 F100\n/G1 X0\n')).toEqual({ pulses: [2000, 0, 0], errors: [] });
+    // A comment ends at its first ')': the second ')' is an error at its column.
+    expect(run('G0 X10 (first (second) Y5)\n')).toEqual({ pulses: [0, 0, 0], errors: [[1, 26]] });
+    // Grbl starts in G0; after M2 it is in G1 and runs on (X0 at F100).
+    expect(run('X10\nM2\nX0 F100\n')).toEqual({ pulses: [2000, 0, 0], errors: [] });
+    // G92.1 clears the offset: X5 is machine 5, not 15.
+    expect(run('G0 X10\nG92 X0\nG92.1\nG0 X5\n')).toEqual({ pulses: [1500, 0, 0], errors: [] });
+    // The lines after a closing '%' are not read.
+    expect(run('%\nG0 X1\n%\nG0 X9\n')).toEqual({ pulses: [100, 0, 0], errors: [] });
+    // F0 on a G0 line is Grbl's; a negative S is not (error 4).
+    expect(run('G0 X1 F0\nM3 S-100\n')).toEqual({ pulses: [100, 0, 0], errors: [[2, 4]] });
+  });
+
   it.each([
     [['gcode'], /^voxpath: gcode needs a FILE/],
     [['gcode', '/no/such/file.gcode', '--steps-per-mm', '80'], /^voxpath: cannot read \/no\/such\/file.gcode/],

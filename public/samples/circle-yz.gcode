@@ -2,4 +2,4 @@
 (Arcs need the same steps per mm on Y and Z.)
 G21 G90 G19
 G0 X0 Y10 Z0
-G3 J-10 K0 F400
+G3 Y10 Z0 J-10 K0 F400

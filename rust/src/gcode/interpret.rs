@@ -1,10 +1,12 @@
 //! Blocks -> moves in machine millimetres, through the modal state.
 //!
 //! Modal state (kept from line to line until changed): motion mode G0 G1 G2
-//! G3, plane G17 G18 G19 (XY, ZX, YZ), units G20 (inch) G21 (mm, the start),
+//! G3 (G0 at the start, as in Grbl), plane G17 G18 G19 (XY, ZX, YZ), units G20 (inch) G21 (mm, the start),
 //! distance mode G90 (absolute, the start) G91 (incremental), arc center
 //! mode G90.1 (I J K absolute) G91.1 (incremental, relative to the arc's
-//! start: the start), the G92 offset and the feed F.
+//! start: the start), the G92 offset (G92.1 clears it) and the feed F. The
+//! program's end (M2, M30) resets some of them, as Grbl does (see
+//! [`Interpreter::end_program`]), and the lines after it run.
 //!
 //! Within a line, whatever the order of its words, the modes are set first,
 //! then G92 or the move runs (RS274/NGC's order of execution). Positions are
@@ -60,9 +62,23 @@ pub const MAX_FEED_MM_PER_MIN: f64 = 1e9;
 /// Grbl's ARC_ANGULAR_TRAVEL_EPSILON, radians.
 const FULL_CIRCLE_EPSILON_RAD: f64 = 5e-7;
 
-/// G codes voxpath does not model that take axis words: their X Y Z are
-/// not a move, so a line with one of them moves nothing.
-const AXIS_WORD_CODES: &[u32] = &[10, 28, 30, 52, 53];
+/// Whether G`number`.`minor`, a G code voxpath does not model, leaves the
+/// X Y Z of its line to the motion mode, as Grbl leaves them to it (its
+/// implicit axis command, gcode.c "Assign implicit motion-mode"): modal
+/// settings of other groups, which take no axis words (cutter compensation
+/// off, work coordinate systems, path control, spindle speed and canned
+/// cycle return modes, lathe diameter modes), and G28.1 and G30.1 (gcode.c:
+/// "If axis words are passed here, they are interpreted as an implicit
+/// motion mode"). Any other code might take them as something else than a
+/// move, as G10, G28, G30, G43.1, G49 (gcode.c: axis_command =
+/// AXIS_COMMAND_TOOL_LENGTH_OFFSET, the Z is the offset), G52 and G53 do:
+/// its line's axis words are then not a move, never a surprise one.
+fn leaves_axis_words_to_motion(number: u32, minor: u32) -> bool {
+    matches!(
+        (number, minor),
+        (7 | 8 | 40 | 64 | 96..=99, 0) | (28 | 30, 1) | (54..=59, 0) | (59, 1..=3) | (61, 0..=1)
+    )
+}
 
 /// The motion code (modal group 1) G`number`.`minor` is, if any. The ones
 /// voxpath does not model: splines (G5, G5.1, G5.2), threading (G33,
@@ -175,6 +191,13 @@ pub struct Effects {
     /// program's end (M0, M2, M30), gc_execute_line's step 21, after the
     /// motion.
     pub stop_after: bool,
+    /// G92.1: the G92 offset is cleared after this line's motion, whose
+    /// target was taken through it (Grbl computes the target while it
+    /// checks the line, then clears the offset in its step 19).
+    clears_offset: bool,
+    /// M2 or M30: the modal state is reset after this line's motion
+    /// (see [`Interpreter::end_program`]).
+    ends_program: bool,
 }
 
 /// The spindle, as M3, M4 and M5 set it (Grbl's modal group M7).
@@ -225,7 +248,9 @@ pub struct Interpreter {
 impl Default for Interpreter {
     fn default() -> Self {
         Interpreter {
-            motion: None,
+            // Grbl starts in G0 (gcode.h: MOTION_MODE_SEEK is 0, and
+            // gc_init memsets the parser state to 0).
+            motion: Some(Motion::Rapid),
             unmodelled_motion: None,
             plane: Plane::Xy,
             inches: false,
@@ -322,16 +347,71 @@ impl Interpreter {
     /// it was copied out for every line). On an error the program stops,
     /// so a half-applied line is never continued from.
     pub fn run(&mut self, line: u32, block: &Block, effects: &mut Effects) -> Result<(), Error> {
+        self.run_line(line, block, effects)?;
+        if effects.clears_offset {
+            self.offset_mm = [0.0; MACHINE_AXES];
+        }
+        if effects.ends_program {
+            self.end_program();
+        }
+        Ok(())
+    }
+
+    /// The program's end (M2, M30) as Grbl 1.1 runs it (gcode.c, step 21,
+    /// PROGRAM_FLOW_COMPLETED): the motion mode, plane, distance mode and
+    /// feed rate mode go back to G1, G17, G90 and G94, and the spindle and
+    /// coolant are off (M5, M9; G40 and G54 are not modelled). The units
+    /// (G20, G21), the arc center mode (G90.1, G91.1), F, S and the G92
+    /// offset stay: Grbl resets none of them ("The remaining modal groups
+    /// [G-code 4,6,8,10,13,14,15] and [M-code 4,5,6] and the modal words
+    /// [F,S,T,H] do not reset"; its coord_offset is left as it is). The
+    /// lines after it run, in that state, as Grbl reads them.
+    fn end_program(&mut self) {
+        self.motion = Some(Motion::Linear);
+        self.unmodelled_motion = None;
+        self.plane = Plane::Xy;
+        self.incremental = false;
+        self.leave_inverse_time();
+        (self.spindle, self.coolant) = (Spindle::Off, COOLANT_OFF);
+    }
+
+    /// G94 after G93 leaves F undefined, as in Grbl (gcode.c: a feed move
+    /// then needs a new F, error 22).
+    fn leave_inverse_time(&mut self) {
+        if std::mem::take(&mut self.inverse_time) {
+            self.feed_mm_per_min = None;
+        }
+    }
+
+    fn run_line(&mut self, line: u32, block: &Block, effects: &mut Effects) -> Result<(), Error> {
         effects.motion = None;
         effects.stop = None;
         effects.stop_after = false;
+        effects.clears_offset = false;
+        effects.ends_program = false;
         effects.warnings.clone_from(&block.ignored);
+        // gcode.c, step 2: "Check for invalid negative values for words F,
+        // N, P, T, and S" (error 4). N and T take no sign in the reader.
+        if let Some(w) = block
+            .words
+            .iter()
+            .find(|w| matches!(w.letter, 'F' | 'P' | 'S') && w.value < 0.0)
+        {
+            return Err(Error::at(
+                line,
+                w.column,
+                format!(
+                    "{}{}: {} cannot be negative (Grbl refuses it: error 4, negative value)",
+                    w.letter, w.value, w.letter
+                ),
+            ));
+        }
         let mut motion: Option<(MotionCode, Code)> = None;
         let mut plane: Option<(Plane, Code)> = None;
         let mut inches: Option<(bool, Code)> = None;
         let mut incremental: Option<(bool, Code)> = None;
         let mut absolute_centers: Option<(bool, Code)> = None;
-        let mut g92: Option<Code> = None;
+        let mut g92: Option<(bool, Code)> = None;
         let mut axis_code: Option<Code> = None;
         let mut dwell: Option<Code> = None;
         let mut inverse_time: Option<(bool, Code)> = None;
@@ -360,10 +440,20 @@ impl Interpreter {
                 ('G', 91, 1) => {
                     set_once(&mut absolute_centers, false, code, line, "arc center mode")?
                 }
-                ('G', 92, 0) => g92 = Some(*code),
+                ('G', 92, 0) => set_once(&mut g92, true, code, line, "G92 offset")?,
+                ('G', 92, 1) => set_once(&mut g92, false, code, line, "G92 offset")?,
+                ('G', 92, 2 | 3) => {
+                    return Err(Error::at(
+                        line,
+                        code.column,
+                        format!(
+                            "{} is not supported, as in Grbl (error 20, unsupported command): the positions of the lines after it would be unknown; use G92.1 to clear the G92 offset, G92 to set one",
+                            code.name()
+                        ),
+                    ));
+                }
                 ('G', 93, 0) => set_once(&mut inverse_time, true, code, line, "feed rate mode")?,
                 ('G', 94, 0) => set_once(&mut inverse_time, false, code, line, "feed rate mode")?,
-                ('G', n, 0) if AXIS_WORD_CODES.contains(&n) => axis_code = Some(*code),
                 // G4 (dwell) takes P, its seconds: its P is then not an unused word.
                 ('G', 4, 0) => dwell = Some(*code),
                 ('M', 3, 0) => set_once(&mut spindle, Spindle::Clockwise, code, line, "spindle")?,
@@ -378,6 +468,10 @@ impl Interpreter {
                 ('M', n @ 7..=9, 0) => set_once(&mut coolant, n, code, line, "coolant")?,
                 ('M', n @ (0 | 1 | 2 | 30), 0) => {
                     set_once(&mut flow, n, code, line, "program flow")?
+                }
+                ('G', n, m) if axis_code.is_none() && !leaves_axis_words_to_motion(n, m) => {
+                    // Said below, once the line's axis words are known.
+                    axis_code = Some(*code);
                 }
                 (letter, _, _) => {
                     let what = match letter {
@@ -404,14 +498,6 @@ impl Interpreter {
                     "G4 (dwell) needs P, the seconds to wait (Grbl refuses it without: error 28, a value word is missing)",
                 ));
             };
-            // NaN is refused too (a comparison with it is false).
-            if p.value.is_nan() || p.value < 0.0 {
-                return Err(Error::at(
-                    line,
-                    p.column,
-                    format!("P{}: a dwell's seconds must be 0 or more", p.value),
-                ));
-            }
             *effects.stop.get_or_insert(0.0) += p.value;
         }
         if let Some((v, _)) = plane {
@@ -428,12 +514,12 @@ impl Interpreter {
         }
         if let Some(f) = words.get('F') {
             let feed = f.value * self.unit_mm();
-            if !(feed > 0.0 && feed <= MAX_FEED_MM_PER_MIN) {
+            if feed > MAX_FEED_MM_PER_MIN {
                 return Err(Error::at(
                     line,
                     f.column,
                     format!(
-                        "F (feed) must be more than 0 and at most {MAX_FEED_MM_PER_MIN:e} mm/min, got {}{}",
+                        "F (feed) must be at most {MAX_FEED_MM_PER_MIN:e} mm/min, got {}{}",
                         f.value,
                         // In G20 the word is in inches: its value in mm too,
                         // the unit of the limit.
@@ -445,7 +531,9 @@ impl Interpreter {
                     ),
                 ));
             }
-            self.feed_mm_per_min = Some(feed);
+            // F0 is Grbl's undefined feed (gcode.c refuses a feed move with
+            // it, error 22, and nothing else: a G0 line may carry it).
+            self.feed_mm_per_min = (feed > 0.0).then_some(feed);
         }
         for w in &block.words {
             if !matches!(
@@ -464,7 +552,13 @@ impl Interpreter {
         let axes = words.axes();
         let first_axis = words.first_of(&['X', 'Y', 'Z']);
         let arc_word = words.first_of(&['I', 'J', 'K', 'R']);
-        if let Some(code) = g92 {
+        if let Some((false, _)) = g92 {
+            // G92.1; its line's axis words, if any, are a move in the
+            // motion mode, as in Grbl (gcode.c: "If axis words are passed
+            // here, they are interpreted as an implicit motion mode").
+            effects.clears_offset = true;
+        }
+        if let Some((true, code)) = g92 {
             if let Some((_, c)) = motion {
                 return Err(Error::at(
                     line,
@@ -596,6 +690,19 @@ impl Interpreter {
                 None
             }
             Motion::Arc(turn) => {
+                if let Some(code) = dwell {
+                    // One P cannot be both: LinuxCNC refuses the line
+                    // (interp_check.cc: "G4 not allowed with G2 or G3
+                    // because they both use P"). Grbl has no P on an arc.
+                    return Err(Error::at(
+                        line,
+                        code.column,
+                        format!(
+                            "G4 (dwell) and {} (an arc) both take this line's P (seconds, turns): put the dwell on a line of its own",
+                            mode.code()
+                        ),
+                    ));
+                }
                 Some(self.arc(line, column, turn, from_mm, to_mm, &words, effects)?)
             }
         };
@@ -605,7 +712,7 @@ impl Interpreter {
             effects.warnings.push(Problem {
                 column,
                 message: format!(
-                    "{} with no feed rate set (F): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate",
+                    "{} with no feed rate set (F, or F0): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate",
                     mode.code()
                 ),
             });
@@ -649,13 +756,8 @@ impl Interpreter {
         let mut said: Vec<Problem> = Vec::new();
         let mut say = |column: u32, message: String| said.push(Problem { column, message });
         match inverse_time {
-            // Units per minute: the feed mode voxpath runs in. Leaving G93
-            // for it leaves F undefined, as in Grbl (gcode.c: a feed move
-            // then needs a new F, error 22).
-            Some((false, _)) if std::mem::take(&mut self.inverse_time) => {
-                self.feed_mm_per_min = None;
-            }
-            Some((false, _)) => {}
+            // Units per minute: the feed mode voxpath runs in.
+            Some((false, _)) => self.leave_inverse_time(),
             Some((true, code)) => {
                 self.inverse_time = true;
                 say(code.column, "G93 (inverse time) ignored: voxpath reads F as units per minute (G94), so the moves after it are timed at that feed".to_string());
@@ -719,15 +821,13 @@ impl Interpreter {
                     ": the program pauses until it is resumed: after this line's motion, timed as a stop with no wait"
                 }
                 _ => {
-                    ": the program ends: after this line's motion the machine comes to rest and the spindle and coolant are off, as in Grbl"
+                    ": the program ends: after this line's motion the machine comes to rest, the spindle and coolant are off and the modes go back to G1 G17 G90 G94, as in Grbl; the lines after it run as a new program"
                 }
             };
             if n != 1 {
                 effects.stop_after = true;
             }
-            if n == 2 || n == 30 {
-                (self.spindle, self.coolant) = (Spindle::Off, COOLANT_OFF);
-            }
+            effects.ends_program = n == 2 || n == 30;
             say(code.column, format!("{}{why}", code.name()));
         }
         said.sort_by_key(|p| p.column);
@@ -880,6 +980,22 @@ impl Interpreter {
                 )
             }
             (None, Some(first)) => {
+                let axes = words.axes();
+                if axes[u].is_none() && axes[v].is_none() {
+                    // Kept, as LinuxCNC's convert_arc has no such check and
+                    // full circles are written so there; but Grbl fails
+                    // the line (gcode.c: "[No axis words]", "[No axis words
+                    // in plane]").
+                    effects.warnings.push(Problem {
+                        column,
+                        message: format!(
+                            "{} with no {} or {} word: a full circle back to its start, as LinuxCNC runs it; Grbl refuses an arc with no axis word in its plane (error 26, or 32 when the line has another axis word): write the end, the start for a full circle",
+                            Motion::Arc(turn).code(),
+                            AXIS_NAMES[u].to_uppercase(),
+                            AXIS_NAMES[v].to_uppercase(),
+                        ),
+                    });
+                }
                 let offset = |axis: usize| center_words[axis].map_or(0.0, |w| w.value * unit);
                 let center = if self.absolute_centers {
                     // G90.1: I J K are program coordinates; an absent one is 0.
@@ -1077,10 +1193,6 @@ mod tests {
             "line 1, column 4: missing axis word: an R arc needs an end point other than its start on X or Y (a full circle needs I/J/K)"
         );
         assert_eq!(
-            e(&["X1"]),
-            "line 1, column 1: X without a motion mode: put G0, G1, G2 or G3 on this line or an earlier one"
-        );
-        assert_eq!(
             e(&["G0 G1 X1"]),
             "line 1, column 4: G0 and G1 are both motion codes: give one per line"
         );
@@ -1176,7 +1288,7 @@ mod tests {
         assert!(
             e.warnings[0]
                 .message
-                .starts_with("G1 with no feed rate set (F)"),
+                .starts_with("G1 with no feed rate set (F, or F0)"),
             "{:?}",
             e.warnings
         );
@@ -1185,16 +1297,187 @@ mod tests {
         let (_, e) = run(&["G1 X1"]).unwrap();
         assert_eq!(
             e.warnings[0].message,
-            "G1 with no feed rate set (F): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate"
+            "G1 with no feed rate set (F, or F0): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate"
         );
         // Each feed move before any F, on its line; none once F is set.
         let (_, e) = run(&["G1 X1", "G2 X3 Y0 R1"]).unwrap();
         assert!(
             e.warnings[0]
                 .message
-                .starts_with("G2 with no feed rate set (F)")
+                .starts_with("G2 with no feed rate set (F, or F0)")
         );
         let (_, e) = run(&["G1 X1", "G1 X4 F100", "G1 X5"]).unwrap();
+        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
+    }
+
+    fn messages(e: &Effects) -> Vec<(u32, String)> {
+        e.warnings
+            .iter()
+            .map(|w| (w.column, w.message.clone()))
+            .collect()
+    }
+
+    #[test]
+    fn axis_words_of_a_code_that_takes_them_otherwise_are_not_a_move() {
+        // G43.1 and G49 are axis commands in Grbl (gcode.c: axis_command =
+        // AXIS_COMMAND_TOOL_LENGTH_OFFSET): the Z is the tool length offset.
+        // Only codes with no minor were matched, so G43.1 Z-2.5 moved Z.
+        for line in [
+            "G43.1 Z-2.5",
+            "G49 Z5",
+            "G43 Z1",
+            "G10 L20 P1 X0",
+            "G53 G0 X4",
+        ] {
+            let (it, e) = run(&["G0 X1", line]).unwrap();
+            assert!(e.motion.is_none(), "{line} moved");
+            assert_eq!(it.position_mm(), [1.0, 0.0, 0.0], "{line}");
+            let code = line.split(' ').next().unwrap();
+            assert_eq!(
+                messages(&e).last().unwrap().1,
+                format!(
+                    "{code} ignored: voxpath does not model it, so this line's axis words are not a move either"
+                ),
+                "{line}"
+            );
+        }
+        // A code voxpath does not know might take them too.
+        assert!(run(&["G2147483649 X10"]).unwrap().1.motion.is_none());
+        // Modal settings that take no axis words leave them to the motion
+        // mode, as Grbl does (its implicit axis command), and so do G28.1
+        // and G30.1 (gcode.c: "interpreted as an implicit motion mode").
+        for line in ["G54 X5", "G40 G0 X5", "G61 X5", "G28.1 X5", "G64 X5"] {
+            let (it, e) = run(&["G0 X1", line]).unwrap();
+            assert!(e.motion.is_some(), "{line} did not move");
+            assert_eq!(it.position_mm(), [5.0, 0.0, 0.0], "{line}");
+        }
+    }
+
+    #[test]
+    fn the_first_axis_words_run_in_g0_as_grbl_starts_in_it() {
+        // gcode.h: MOTION_MODE_SEEK 0, and gc_init memsets gc_state to 0.
+        // `X10` alone was "X without a motion mode".
+        let (it, e) = run(&["X10"]).unwrap();
+        assert_eq!(e.motion.unwrap().motion, Motion::Rapid);
+        assert_eq!(it.position_mm(), [10.0, 0.0, 0.0]);
+        // After G80 there is no motion mode: an error, as Grbl's error 31.
+        assert_eq!(
+            run(&["G80", "X3"]).unwrap_err().to_string(),
+            "line 2, column 1: X without a motion mode: put G0, G1, G2 or G3 on this line or an earlier one"
+        );
+    }
+
+    #[test]
+    fn a_dwell_and_an_arc_cannot_share_a_line_s_p() {
+        // One P served as 2 s of dwell and as 2 turns (720°). LinuxCNC's
+        // interp_check.cc: "G4 not allowed with G2 or G3 because they both
+        // use P".
+        let message = "G4 (dwell) and G2 (an arc) both take this line's P (seconds, turns): put the dwell on a line of its own";
+        assert_eq!(
+            run(&["G0 X10", "G4 P2 G2 I-10 F100"])
+                .unwrap_err()
+                .to_string(),
+            format!("line 2, column 1: {message}")
+        );
+        // The arc's mode from an earlier line is the same P.
+        assert_eq!(
+            run(&["G2 X0 Y10 I0 J5 F100", "X0 Y0 I0 J-5 G4 P1"])
+                .unwrap_err()
+                .to_string(),
+            format!("line 2, column 14: {message}")
+        );
+        // A dwell on a line with a straight move or no move is fine.
+        assert_eq!(run(&["G4 P2 G1 X1 F100"]).unwrap().1.stop, Some(2.0));
+    }
+
+    #[test]
+    fn program_end_resets_the_modes_grbl_resets_and_the_lines_after_it_run() {
+        // gcode.c, PROGRAM_FLOW_COMPLETED: motion G1, plane G17, G90, G94,
+        // spindle and coolant off; units, F, S and coord_offset (G92) stay.
+        // M2 and M30 changed none of the modes.
+        let (it, e) = run(&[
+            "G20 G91 G19 G0 X1",
+            "G92 X0",
+            "G1 X0 F10 M3 M8",
+            "M30",
+            "X2 Y0",
+        ])
+        .unwrap();
+        let m = e.motion.unwrap();
+        // G1 at F10 in/min, G90 through the G92 offset (1 in), in inches.
+        assert_eq!(m.motion, Motion::Linear);
+        assert!(close(m.feed_mm_per_min.unwrap(), 254.0));
+        assert!(close(it.position_mm()[0], 3.0 * 25.4));
+        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
+        assert_eq!(it.plane, Plane::Xy);
+        assert_eq!((it.spindle, it.coolant), (Spindle::Off, COOLANT_OFF));
+        // An arc after M2 is in G17 again.
+        let a = arc(&["G18", "M2", "G2 X10 Y0 I5"]);
+        assert_eq!(a.plane, Plane::Xy);
+        // G93 ends with it: F is undefined after, as on G94 after G93.
+        let (_, e) = run(&["G93 G1 X1 F2", "M2", "X2"]).unwrap();
+        assert!(messages(&e)[0].1.starts_with("G1 with no feed rate set"));
+    }
+
+    #[test]
+    fn g92_1_clears_the_g92_offset_and_g92_2_and_g92_3_are_refused() {
+        // Grbl 1.1 clears coord_offset on G92.1 (gcode.c,
+        // NON_MODAL_RESET_COORDINATE_OFFSET: clear_vector); it was ignored
+        // with a warning, so X5 below went to machine 15.
+        let (it, _) = run(&["G0 X10", "G92 X0", "G92.1", "G0 X5"]).unwrap();
+        assert_eq!(it.position_mm(), [5.0, 0.0, 0.0]);
+        // Its axis words are a move, through the offset before the line
+        // (Grbl computes the target first, then clears the offset).
+        let (it, e) = run(&["G0 X10", "G92 X0", "G92.1 X5"]).unwrap();
+        assert_eq!(e.motion.unwrap().to_mm, [15.0, 0.0, 0.0]);
+        assert_eq!(it.offset_mm, [0.0; MACHINE_AXES]);
+        // Grbl fails G92.2 and G92.3 (error 20: only mantissa 0 or 10).
+        assert_eq!(
+            run(&["G0 X1", "G92.2"]).unwrap_err().to_string(),
+            "line 2, column 1: G92.2 is not supported, as in Grbl (error 20, unsupported command): the positions of the lines after it would be unknown; use G92.1 to clear the G92 offset, G92 to set one"
+        );
+        assert!(run(&["G92.3"]).is_err());
+        assert_eq!(
+            run(&["G92 X0 G92.1"]).unwrap_err().to_string(),
+            "line 1, column 8: G92 and G92.1 are both G92 offset codes: give one per line"
+        );
+    }
+
+    #[test]
+    fn value_words_as_grbl_checks_them() {
+        // gcode.c step 2: F, N, P, T and S cannot be negative (error 4).
+        // S-100 was kept as a spindle speed.
+        for (line, column, word) in [
+            ("M3 S-100", 4, "S-100: S"),
+            ("G1 X1 F-5", 7, "F-5: F"),
+            ("G4 P-1", 4, "P-1: P"),
+        ] {
+            assert_eq!(
+                run(&[line]).unwrap_err().to_string(),
+                format!(
+                    "line 1, column {column}: {word} cannot be negative (Grbl refuses it: error 4, negative value)"
+                )
+            );
+        }
+        // F0 is Grbl's undefined feed: a G0 line takes it (it was an error
+        // at F), and a feed move after it has no feed (error 22 in Grbl,
+        // gcode.c "[Feed rate undefined]").
+        let (_, e) = run(&["G0 X1 F0"]).unwrap();
+        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
+        let (_, e) = run(&["G1 X1 F100", "G0 X2 F0", "G1 X3"]).unwrap();
+        assert!(messages(&e)[0].1.starts_with("G1 with no feed rate set"));
+        // An arc with no axis word in its plane: kept as LinuxCNC's full
+        // circle, with a warning that Grbl refuses it (gcode.c: "[No axis
+        // words]", error 26; "[No axis words in plane]", error 32).
+        let (_, e) = run(&["G0 X10", "G2 I-10 F100"]).unwrap();
+        assert_eq!(
+            messages(&e),
+            [(
+                1,
+                "G2 with no X or Y word: a full circle back to its start, as LinuxCNC runs it; Grbl refuses an arc with no axis word in its plane (error 26, or 32 when the line has another axis word): write the end, the start for a full circle".to_string()
+            )]
+        );
+        let (_, e) = run(&["G0 X10", "G2 X10 I-10 F100"]).unwrap();
         assert!(e.warnings.is_empty(), "{:?}", e.warnings);
     }
 }
