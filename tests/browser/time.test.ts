@@ -133,6 +133,17 @@ describe('G-code mode: time', () => {
     await p.close();
   });
 
+  it("reads the STEP/DIR diagram's time in the unit of the window it draws", async () => {
+    // One step, 1/80 mm at 300 mm/min: the window runs from its instant to 1 ms after (pulseEdges),
+    // so the axis is in ms; by the one step's spread of 0 it was µs, labelled 50,000 and up.
+    const p = await openPage(`?mode=gcode&stepsPerMm=80&step=1&gcode=${encodeURIComponent('G1 X0.0125 F300\n')}`);
+    const { page } = p;
+    await loaded(page, 1);
+    await page.getByTestId('timing').getByText(/planned instant, ms/).waitFor();
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('resumes machine time where it was paused, in a dwell too, not at the instant of the step shown', async () => {
     // 1 mm at 300 mm/min: a triangle of 2·√0.1 = 0.63 s (a = 10 mm/s²), then 3 s at rest.
     const program = encodeURIComponent('G1 X1 F300\nG4 P3\nY1\n');

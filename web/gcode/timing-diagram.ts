@@ -130,20 +130,24 @@ export class TimingDiagram {
   /**
    * The rows' x: two a step, where its STEP pulse rises and where it falls,
    * and the right edge of the last step. Ticks: a step's start and middle;
-   * a program: pulseEdges of its instants.
+   * a program: pulseEdges of its instants, in the axis's unit, which is
+   * chosen by the time the axis spans, right edge included (chosen by the
+   * steps' spread alone, one step read in µs over a millisecond: 50,000 to
+   * 51,000 µs).
    */
-  #rowsX(ticks: number, times: Float64Array | null): Float64Array {
-    if (!times) return Float64Array.from({ length: 2 * ticks + 1 }, (_, i) => this.#fromStep + i / 2);
-    return pulseEdges(times.subarray(0, ticks)).map((t) => t * this.#perSecond);
+  #rowsX(ticks: number, times: Float64Array | null): { x: Float64Array; unit: string } {
+    if (!times) return { x: Float64Array.from({ length: 2 * ticks + 1 }, (_, i) => this.#fromStep + i / 2), unit: 'tick' };
+    const edges = pulseEdges(times.subarray(0, ticks));
+    const { unit, perSecond } = timeUnit(edges[edges.length - 1]! - edges[0]!);
+    this.#perSecond = perSecond;
+    return { x: edges.map((t) => t * perSecond), unit };
   }
 
   #draw({ trains, stepSeconds }: PulseWindow): void {
     const ticks = trains[0]!.step.length;
     this.#stepSeconds = stepSeconds;
-    const span = stepSeconds && ticks > 1 ? stepSeconds[ticks - 1]! - stepSeconds[0]! : 0;
-    const { unit, perSecond } = timeUnit(span);
-    this.#perSecond = stepSeconds ? perSecond : 1;
-    const x = this.#rowsX(ticks, stepSeconds);
+    this.#perSecond = 1;
+    const { x, unit } = this.#rowsX(ticks, stepSeconds);
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
