@@ -425,6 +425,16 @@ impl Planner {
         }
     }
 
+    /// Seconds of dwell since the last block pushed: where a move with no
+    /// block (one that does not move) happens after a dwell, it happens
+    /// that long after the block before it ended.
+    pub fn dwell_since_last_block(&self) -> f64 {
+        match self.dwells.last() {
+            Some(&(index, seconds)) if index == self.blocks.len() => seconds,
+            _ => 0.0,
+        }
+    }
+
     /// Bytes a block takes while the planner holds it.
     pub const BYTES_PER_BLOCK: usize =
         std::mem::size_of::<StoredBlock>() + std::mem::size_of::<(f64, f64)>();
@@ -665,14 +675,21 @@ impl Plan {
     /// The timing of blocks `range`; an empty range is an instant at
     /// `at_seconds` at rest or passing through.
     pub fn timing(&self, range: Range<usize>, at_seconds: f64) -> Timing {
-        let blocks: Vec<Block> = self.blocks(range).collect();
+        let blocks: Vec<Block> = self.blocks(range.clone()).collect();
         let (Some(first), Some(last)) = (blocks.first(), blocks.last()) else {
+            // No block: the machine passes the move's point at the speed it
+            // leaves the block before with (0 when it stopped there, as it
+            // does before a dwell).
+            let passing = range
+                .start
+                .checked_sub(1)
+                .map_or(0.0, |before| self.block(before).exit_speed_mm_per_s);
             return Timing {
                 start_seconds: at_seconds,
                 end_seconds: at_seconds,
-                entry_speed: 0.0,
-                cruise_speed: 0.0,
-                exit_speed: 0.0,
+                entry_speed: passing,
+                cruise_speed: passing,
+                exit_speed: passing,
             };
         };
         Timing {

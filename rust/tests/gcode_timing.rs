@@ -324,3 +324,47 @@ fn a_programs_pulses_are_counted_from_its_steps_as_the_metrics_count_them() {
     assert_eq!(program.trace.pulses_by_axis(), pulses);
     assert!(pulses.iter().all(|&p| p > 0), "{pulses:?}");
 }
+
+#[test]
+fn a_move_that_does_not_move_is_an_instant_after_the_dwells_before_it_at_the_speed_it_passes() {
+    // Grbl's defaults (10 mm/s²): 10 mm at 300 mm/min (5 mm/s) is 0.5 s up,
+    // 1.5 s at 5 mm/s and 0.5 s down from rest to rest: 2.5 s.
+    let defaults = Settings::from_json(r#"{"stepsPerMm": 80}"#).unwrap();
+    let timing_of_line = |source: &str, line: u32| {
+        let program = run(source, defaults.clone());
+        let moves = program.moves();
+        let standing = moves.iter().find(|m| m.line == line).unwrap();
+        assert_eq!(standing.steps, 0, "{source}");
+        (standing.timing, program.moves()[0].timing.end_seconds)
+    };
+    // After a G4 P2, line 3 is reached when the dwell is over (Grbl runs the
+    // lines in order): 4.5 s, not 2.5 s where the move before ended.
+    let (t, first_end) = timing_of_line("G1 X10 F300\nG4 P2\nX10\nY10\n", 3);
+    assert!(close(first_end, 2.5));
+    assert!(close(t.start_seconds, 4.5) && t.end_seconds == t.start_seconds);
+    assert_eq!(
+        (t.entry_speed, t.cruise_speed, t.exit_speed),
+        (0.0, 0.0, 0.0)
+    );
+    // A dwell after it: it is reached where the move before ended.
+    let (t, _) = timing_of_line("G1 X10 F300\nX10\nG4 P2\nY10\n", 2);
+    assert!(close(t.start_seconds, 2.5));
+    // Between two moves with no stop, the machine passes it at the corner's
+    // junction speed (Grbl's 90°: √(a·√2·δ·s/(1−s)), s = sin 45°, δ = 0.01
+    // mm), as the move before leaves and the move after enters.
+    let program = run("G1 X10 F300\nX10\nY10\n", defaults.clone());
+    let moves = program.moves();
+    let s = 0.5f64.sqrt();
+    let corner = (10.0 * 2f64.sqrt() * 0.01 * s / (1.0 - s)).sqrt();
+    let t = moves[1].timing;
+    assert!(
+        close(t.entry_speed, corner)
+            && close(t.exit_speed, corner)
+            && close(t.cruise_speed, corner),
+        "{t:?}"
+    );
+    assert!(
+        close(moves[0].timing.exit_speed, corner) && close(moves[2].timing.entry_speed, corner)
+    );
+    assert!(close(t.start_seconds, moves[0].timing.end_seconds));
+}

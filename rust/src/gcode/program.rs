@@ -1260,7 +1260,12 @@ impl Runner {
             }
         }
         let pushed = timing::push_move(&mut self.planner, &self.settings.machine, m, &from, &to);
-        self.spans.push(first_step, pushed.blocks.start);
+        let dwell_before = match pushed.blocks.is_empty() {
+            true => self.planner.dwell_since_last_block(),
+            false => 0.0,
+        };
+        self.spans
+            .push(first_step, pushed.blocks.start, dwell_before);
         // Once per feed value: every later move at the same F is capped alike.
         if let (Some(top), Some(feed)) = (pushed.feed_capped_to_mm_per_min, m.feed_mm_per_min) {
             if self.capped_feed_warned != Some(feed) {

@@ -141,12 +141,22 @@ pub fn feed_capped_message(feed_mm_per_min: f64, top_mm_per_min: f64, arc: bool)
 pub struct MoveSpans {
     steps: Starts<u64>,
     blocks: Starts<u32>,
+    /// The moves with no block (that do not move) which come after a dwell,
+    /// by index, with the seconds of dwell between the block before them
+    /// and them: few, so kept apart.
+    dwell_before_instant: Vec<(u32, f64)>,
 }
 
 impl MoveSpans {
     /// Adds a move starting at `first_step` and `first_block`, where the
-    /// one before it ends.
-    pub fn push(&mut self, first_step: u64, first_block: usize) {
+    /// one before it ends; `dwell_seconds_before`: for a move with no block,
+    /// the dwell since the block before it (its instant is that much later).
+    pub fn push(&mut self, first_step: u64, first_block: usize, dwell_seconds_before: f64) {
+        if dwell_seconds_before > 0.0 {
+            let index = u32::try_from(self.len()).expect("fewer than 2^32 moves");
+            self.dwell_before_instant
+                .push((index, dwell_seconds_before));
+        }
         self.steps.push(first_step);
         self.blocks
             .push(u32::try_from(first_block).expect("fewer than 2^32 planner blocks"));
@@ -155,6 +165,7 @@ impl MoveSpans {
     /// Ends the last move at `steps` steps and `blocks` blocks in all, and
     /// gives back the memory the tables grew past their length.
     pub fn finish(&mut self, steps: u64, blocks: usize) {
+        self.dwell_before_instant.shrink_to_fit();
         self.steps.finish(steps);
         self.blocks
             .finish(u32::try_from(blocks).expect("fewer than 2^32 planner blocks"));
@@ -183,6 +194,15 @@ impl MoveSpans {
     pub fn steps_of(&self, index: usize) -> (u64, u64) {
         let (first, end) = self.steps.span(index);
         (first, end - first)
+    }
+
+    /// Seconds of dwell between the block before move `index` and it, when
+    /// it has no block (0 for any other move).
+    fn dwell_before_instant(&self, index: usize) -> f64 {
+        let found = self
+            .dwell_before_instant
+            .binary_search_by_key(&index, |&(move_index, _)| move_index as usize);
+        found.map_or(0.0, |at| self.dwell_before_instant[at].1)
     }
 
     /// The planner blocks of move `index`.
@@ -233,11 +253,12 @@ impl Timeline {
     pub fn move_timing(&self, index: usize) -> Timing {
         let blocks = self.moves.blocks_of(index);
         // A move with no blocks is an instant, where the last move before
-        // it ended.
+        // it ended, and after any dwell between them (a G4 before it: Grbl
+        // reaches the line once the dwell is over).
         let at = blocks.start.checked_sub(1).map_or(0.0, |before| {
             let b = self.plan.block(before);
             b.start_seconds + b.duration_seconds()
-        });
+        }) + self.moves.dwell_before_instant(index);
         self.plan.timing(blocks, at)
     }
 
