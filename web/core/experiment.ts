@@ -9,7 +9,7 @@ import { advanceInSlices, checkSliceOptions, type SliceOptions, yieldToEventLoop
 import type { ExperimentInfo, ExperimentProgress, RandomLines, RandomLinesOptions } from './pkg/voxpath.js';
 import { loadCore } from './wasm.js';
 
-export type { ErrorStats, ExperimentInfo, ExperimentProgress, LineResult, MeasureSummary, RandomLinesOptions, Spread } from './pkg/voxpath.js';
+export type { ErrorStats, ExperimentInfo, ExperimentProgress, LineResult, MeasureSummary, RandomLines, RandomLinesOptions, Spread } from './pkg/voxpath.js';
 /** The result of random-lines (the core's `experiment::RandomLines`). */
 export type RandomLinesResult = RandomLines;
 

@@ -34,7 +34,7 @@ export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgr
 export { pulseTrains } from './pulses.js';
 export type { PulseTrain } from './pulses.js';
 export { experiments, randomLines } from './experiment.js';
-export type { ErrorStats, ExperimentInfo, ExperimentProgress, LineResult, MeasureSummary, RandomLinesOptions, RandomLinesResult, RandomLinesRunOptions, Spread } from './experiment.js';
+export type { ErrorStats, ExperimentInfo, ExperimentProgress, LineResult, MeasureSummary, RandomLines, RandomLinesOptions, RandomLinesResult, RandomLinesRunOptions, Spread } from './experiment.js';
 export {
   checkToTable,
   comparisonToCsv,

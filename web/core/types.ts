@@ -57,6 +57,10 @@ export type {
 } from './pkg/voxpath.js';
 import type { Column, IdealPathInfo, SegmentSummary } from './pkg/voxpath.js';
 
+// Under their own names too: a declaration file that infers them (a
+// consumer's emitted .d.ts) names them so, and could not before.
+export type { Column, SegmentSummary };
+
 /** How to read one decision column (the core's `trace::Column`). */
 export type ColumnSpec = Column;
 

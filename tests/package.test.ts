@@ -1,0 +1,35 @@
+// The package as `npm pack` makes it (its prepack builds lib/ first: a clean
+// checkout packed only LICENSE, the README, package.json and the bin): the
+// library with its .wasm and the CLI, every module they import, and no
+// runtime dependency (three.js and uPlot are the page's, not the library's).
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+
+const ROOT = fileURLToPath(new URL('..', import.meta.url));
+
+describe('the npm package', () => {
+  it('holds the library, its .wasm and the CLI, every module they import, and nothing else', { timeout: 120_000 }, () => {
+    const [packed] = JSON.parse(execFileSync('npm', ['pack', '--dry-run', '--json'], { cwd: ROOT, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] })) as [{ files: { path: string }[] }];
+    const files = new Set(packed.files.map((f) => f.path));
+    for (const needed of ['bin/voxpath.js', 'lib/core/index.js', 'lib/core/index.d.ts', 'lib/core/vitest.js', 'lib/core/pkg/voxpath_bg.wasm', 'lib/core/pkg/voxpath.js', 'lib/cli/main.js']) {
+      expect(files, needed).toContain(needed);
+    }
+    expect([...files].filter((f) => !/^(bin|lib)\//.test(f)).sort()).toEqual(['LICENSE', 'README.md', 'package.json']);
+    // Every relative import of every packed module is packed too.
+    let imports = 0;
+    for (const file of [...files].filter((f) => f.endsWith('.js'))) {
+      const text = readFileSync(new URL(file, `file://${ROOT}/`), 'utf8');
+      for (const [, target] of text.matchAll(/(?:from|import\()\s*'(\.{1,2}\/[^']+)'/g)) {
+        const resolved = new URL(target!, new URL(file, 'file:///')).pathname.slice(1);
+        expect(files, `${file} imports ${target}`).toContain(resolved);
+        imports++;
+      }
+    }
+    expect(imports).toBeGreaterThan(40);
+    const manifest = JSON.parse(readFileSync(new URL('package.json', `file://${ROOT}/`), 'utf8')) as { dependencies?: object; scripts: Record<string, string> };
+    expect(manifest.dependencies ?? {}).toEqual({});
+    expect(manifest.scripts.prepack).toBe('node scripts/setup.mjs lib');
+  });
+});
