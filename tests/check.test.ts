@@ -176,6 +176,13 @@ describe('the voxpath/vitest matcher', () => {
       'points: got a Promise, not the points: await it first (expect(await points).toFollowRule(request))',
     );
     await expect(expect(Promise.resolve(skipping)).not.toFollowRule(REGIONS)).rejects.toThrow('got a Promise');
+    // Nothing that could be points at all is a misuse, which throws: .not passed undefined, 5 or a bare
+    // Int32Array without testing anything.
+    for (const misuse of [undefined, null, 5, new Int32Array([0, 0, 0]), { points: [1] }]) {
+      await expect(expect(misuse).not.toFollowRule(REGIONS), String(misuse)).rejects.toThrow(/^points: expected rows of coordinates, text, or \{ points/);
+    }
+    // A request carrying an option named points is a bad request, not the learner's points.
+    await expect(expect(skipping).not.toFollowRule({ ...REGIONS, points: 1 } as never)).rejects.toThrow(/^points: regions does not take this option/);
   });
 
   it('passes a fixed line', async () => {

@@ -197,6 +197,12 @@ describe('voxpath gcode', () => {
     expect(r.stderr).toMatch(/^voxpath: -:2:7: malformed number/);
   });
 
+  it('prints the table of moves with its header when no move ran', () => {
+    const r = voxpath(['gcode', '-', '--steps-per-mm', '10', '--format', 'table'], '(unclosed\n');
+    expect(r.code).toBe(1);
+    expect(r.stdout).toMatch(/^move {2}line {2}code {2}kind/m);
+  });
+
   it('prints CSV rows per point and a table of moves', () => {
     const csv = voxpath(['gcode', '-', '--steps-per-mm', '2', '--format', 'csv'], 'G1 X1 F1\n').stdout.trim().split('\n');
     expect(csv).toEqual(['k,x,y,z,line,move', '0,0,0,0,,', '1,1,0,0,1,0', '2,2,0,0,1,0']);

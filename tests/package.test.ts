@@ -1,7 +1,8 @@
 // The package as `npm pack` makes it (its prepack builds lib/ first: a clean
 // checkout packed only LICENSE, the README, package.json and the bin): the
-// library with its .wasm and the CLI, every module they import, and no
-// runtime dependency (three.js and uPlot are the page's, not the library's).
+// library with its .wasm and the CLI, every module they import (no package
+// but Node's own), and no runtime dependency (three.js and uPlot are the
+// page's, not the library's).
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -21,8 +22,17 @@ describe('the npm package', () => {
     let imports = 0;
     for (const file of [...files].filter((f) => f.endsWith('.js'))) {
       const text = readFileSync(new URL(file, `file://${ROOT}/`), 'utf8');
-      for (const [, target] of text.matchAll(/(?:from|import\()\s*'(\.{1,2}\/[^']+)'/g)) {
-        const resolved = new URL(target!, new URL(file, 'file:///')).pathname.slice(1);
+      // Statements, not the examples in comments (which import 'voxpath' as a user does).
+      const statement = /^(?:import|export)\s+(?:\{[^}]*\}|\*(?:\s+as\s+\w+)?|\w+(?:\s*,\s*\{[^}]*\})?)\s+from\s*'([^']+)'|^import\s*'([^']+)'|\bimport\(\s*'([^']+)'\s*\)/gm;
+      for (const match of text.matchAll(statement)) {
+        const target = match[1] ?? match[2] ?? match[3];
+        if (target === undefined) continue;
+        if (!target.startsWith('.')) {
+          // No package but Node's own: a runtime dependency would be one the package does not declare.
+          expect(target, `${file} imports ${target}`).toMatch(/^node:/);
+          continue;
+        }
+        const resolved = new URL(target, new URL(file, 'file:///')).pathname.slice(1);
         expect(files, `${file} imports ${target}`).toContain(resolved);
         imports++;
       }

@@ -420,4 +420,23 @@ fn a_percent_line_opens_the_program_and_the_next_one_ends_it() {
     assert_eq!((p.info.warnings[0].line, p.info.warnings[0].column), (3, 2));
     let p = at10("%\nG1 X1 F100\n%\n\n");
     assert_eq!((p.moves().len(), p.info.warnings.len()), (1, 0));
+    // Only the lines that hold anything are counted as not read.
+    let p = at10("%\nG1 X1 F100\n%\n\nG1 X2\n\n\nG1 X3\n");
+    assert_eq!(
+        p.info.warnings[0].message,
+        "% ends the program: the 2 lines after it are not read (a program stands between two % lines, as in LinuxCNC)"
+    );
+    // A closing `%` with more on its line is that line's error, which stops
+    // the program there (it ended the program without a word).
+    let p = program("G1 X1 F100\n% G0 X5\nG1 X2\n", r#"{"stepsPerMm": 10}"#);
+    assert_eq!(p.moves().len(), 1);
+    assert!(p.info.warnings.is_empty(), "{:?}", p.info.warnings);
+    assert_eq!((p.info.errors[0].line, p.info.errors[0].column), (2, 3));
+    assert!(
+        p.info.errors[0]
+            .message
+            .contains("nothing but blanks and comments may follow it"),
+        "{}",
+        p.info.errors[0].message
+    );
 }

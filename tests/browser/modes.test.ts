@@ -672,6 +672,11 @@ describe('experiment mode, long runs', () => {
     const cancel = page.getByTestId('experiment-cancel');
     expect(await bar.isHidden()).toBe(true);
     expect(await cancel.isHidden()).toBe(true);
+    // Back in the mode, the last run's bar does not come back with it (it did, with its words
+    // and a Cancel that cancelled nothing, until the run the mode starts hid it).
+    await page.getByTestId('mode-trace').click();
+    await page.getByTestId('mode-experiment').click();
+    expect(await page.evaluate(() => document.getElementById('experiment-run')!.checkVisibility())).toBe(false);
     // 100,000 lines of up to 10,000 steps: about 25 s in the worker on the
     // project's 2-core machine. Progress shows; Cancel stops it.
     await page.getByTestId('input-experiment-maxCoordinate').fill('10000');

@@ -30,6 +30,15 @@ export function flagOf(option: string): string {
  * [0, 0, 0]) is written as a flag takes it (e.g. 0,0,0).
  */
 export function inFlagWords(message: string, catalogue: Catalogue): string {
+  // What a message quotes ('maxRate' read from a file) is the user's, kept as it is.
+  return message
+    .split(/('[^']*')/)
+    .map((part, i) => (i % 2 === 1 ? part : partInFlagWords(part, catalogue)))
+    .join('');
+}
+
+/** inFlagWords for a part of a message that quotes nothing. */
+function partInFlagWords(message: string, catalogue: Catalogue): string {
   const specs = [...catalogue.algorithms.flatMap((a) => a.options), ...catalogue.experiments.flatMap((e) => e.options), ...catalogue.gcodeSettings];
   const names = [...new Set(specs.map((o) => o.name))];
   // A name standing alone: not a part of a flag already written (--microsteps).

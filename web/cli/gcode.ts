@@ -129,6 +129,8 @@ function* tableChunks(program: GcodeProgram): Generator<string> {
     ]);
     yield (from > 0 ? '\n' : '') + alignedTable(header, body).join('\n') + '\n';
   }
+  // No move (an empty program, or one that stops at its first line): the header, over no rows.
+  if (program.moveCount === 0) yield alignedTable(header, []).join('\n') + '\n';
   const diagnostics = (title: string, list: { line: number; column: number; message: string }[]) =>
     list.length === 0 ? [] : ['', `${title}:`, ...list.map((d) => `  line ${d.line}, column ${d.column}: ${d.message}`)];
   yield [

@@ -245,7 +245,15 @@ export async function main(args: string[]): Promise<number> {
             : error.field !== undefined
               ? `${flagOf(error.field)}: `
               : '';
-      process.stderr.write(`voxpath: ${where}${inFlagWords(error.detail, await coreCatalogue())}\n${shortUsage()}\n`);
+      // A text's error (a line and a column) is about the text, not the flags: as the core says it.
+      const detail = error.line === undefined ? inFlagWords(error.detail, await coreCatalogue()) : error.detail;
+      // What the program asks of the machine (steps too close for its VCD) is the program's
+      // fault, as its errors are (status 1), not the command line's: no usage.
+      if (error.field === 'program') {
+        process.stderr.write(`voxpath: ${where}${detail}\n`);
+        return 1;
+      }
+      process.stderr.write(`voxpath: ${where}${detail}\n${shortUsage()}\n`);
       return 2;
     }
     process.stderr.write(`voxpath: ${error instanceof Error ? (error.stack ?? error.message) : String(error)}\n`);

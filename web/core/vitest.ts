@@ -20,7 +20,7 @@ import { checkPoints } from './check.js';
 import type { Check, LearnerPoints } from './check.js';
 import { VoxpathError } from './errors.js';
 import { checkToTable } from './export.js';
-import { argumentError, isPromiseLike } from './guard.js';
+import { argumentError, describeValue, isPromiseLike } from './guard.js';
 import type { TraceOptions } from './types.js';
 
 /** What vitest and Jest pass a matcher as `this` (the part used here). */
@@ -34,8 +34,17 @@ interface MatcherContext {
  * text that is not a point). The core names them `points`, or the line and
  * column of text.
  */
-function isAboutThePoints(error: unknown): error is VoxpathError {
-  return error instanceof VoxpathError && (error.field === 'points' || error.line !== undefined);
+function isAboutThePoints(error: unknown, request: TraceOptions): error is VoxpathError {
+  // A request that itself carries an option named points is wrong as a request.
+  return error instanceof VoxpathError && (error.field === 'points' || error.line !== undefined) && !Object.hasOwn(request, 'points');
+}
+
+/** Whether `received` has the shape of a learner's points (what it holds is checkPoints' to judge). */
+function isLearnerPointsShape(received: unknown): boolean {
+  if (typeof received === 'string' || Array.isArray(received)) return true;
+  if (typeof received !== 'object' || received === null) return false;
+  const { points, dims } = received as { points?: unknown; dims?: unknown };
+  return (points instanceof Int32Array || points instanceof Float64Array) && typeof dims === 'number';
 }
 
 export const voxpathMatchers = {
@@ -48,11 +57,16 @@ export const voxpathMatchers = {
     if (isPromiseLike(received)) {
       throw argumentError('points', 'got a Promise, not the points: await it first (expect(await points).toFollowRule(request))');
     }
+    // Points in none of the shapes a learner's points come in are a misuse of the matcher, which
+    // throws: failed as "not a path", undefined passed .not.toFollowRule without testing anything.
+    if (!isLearnerPointsShape(received)) {
+      throw argumentError('points', `expected rows of coordinates, text, or { points: Int32Array or Float64Array, dims }, got ${describeValue(received)}`);
+    }
     let result: Check;
     try {
       result = await checkPoints(request, received);
     } catch (error) {
-      if (!isAboutThePoints(error)) throw error;
+      if (!isAboutThePoints(error, request)) throw error;
       return { pass: false, message: () => `${request.algorithm}: your points are not a path, so they cannot follow the rule: ${error.message}` };
     }
     const table = checkToTable(result);

@@ -49,7 +49,9 @@ function ownKeys(owner: Element): string[] {
 export function handlesItsOwnKeys(target: EventTarget | null, key: string): boolean {
   // A modal dialog (the keyboard help, the Embed dialog) takes every key:
   // the page behind it is inert, and End or F there moved the path unseen.
-  if (document.querySelector('dialog:modal')) return true;
+  // The page opens every dialog with showModal, so an open one is modal
+  // (and [open] is read by every browser, where ':modal' throws in some).
+  if (document.querySelector('dialog[open]')) return true;
   if (!(target instanceof HTMLElement)) return false;
   // The view and its handles use the keys they declare (the arrows, Page Up
   // and Down, + and -), and only those: Space, Home, End and ? still play,

@@ -71,8 +71,10 @@ const FULL_CIRCLE_EPSILON_RAD: f64 = 5e-7;
 /// "If axis words are passed here, they are interpreted as an implicit
 /// motion mode"). Any other code might take them as something else than a
 /// move, as G10, G28, G30, G43.1, G49 (gcode.c: axis_command =
-/// AXIS_COMMAND_TOOL_LENGTH_OFFSET, the Z is the offset), G52 and G53 do:
-/// its line's axis words are then not a move, never a surprise one.
+/// AXIS_COMMAND_TOOL_LENGTH_OFFSET, the Z is the offset) and G52 do: its
+/// line's axis words are then not a move, never a surprise one. G53 is one
+/// too here, unlike Grbl, where it is a move in machine coordinates, which
+/// voxpath does not model (the README says so).
 fn leaves_axis_words_to_motion(number: u32, minor: u32) -> bool {
     matches!(
         (number, minor),
@@ -371,7 +373,10 @@ impl Interpreter {
         self.unmodelled_motion = None;
         self.plane = Plane::Xy;
         self.incremental = false;
-        self.leave_inverse_time();
+        // G94 again, F kept: gc_execute_line carries the last F forward
+        // whenever the state before the line is G94, as it is after the
+        // reset (switching from G93 by a G94 word is what leaves F unset).
+        self.inverse_time = false;
         (self.spindle, self.coolant) = (Spindle::Off, COOLANT_OFF);
     }
 
@@ -1327,6 +1332,7 @@ mod tests {
             "G49 Z5",
             "G43 Z1",
             "G10 L20 P1 X0",
+            // Not Grbl's: there a move in machine coordinates, not modelled here.
             "G53 G0 X4",
         ] {
             let (it, e) = run(&["G0 X1", line]).unwrap();
@@ -1414,8 +1420,14 @@ mod tests {
         // An arc after M2 is in G17 again.
         let a = arc(&["G18", "M2", "G2 X10 Y0 I5"]);
         assert_eq!(a.plane, Plane::Xy);
-        // G93 ends with it: F is undefined after, as on G94 after G93.
+        // G93 ends with it, and F stays: Grbl carries the last F into a
+        // G94 line when the state before it is G94, as the reset leaves it
+        // (gcode.c: "Last state is also G94"), so X2 runs at F2 mm/min.
         let (_, e) = run(&["G93 G1 X1 F2", "M2", "X2"]).unwrap();
+        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
+        assert!(close(e.motion.unwrap().feed_mm_per_min.unwrap(), 2.0));
+        // A G94 word after G93 is what leaves F unset.
+        let (_, e) = run(&["G93 G1 X1 F2", "G94 X2"]).unwrap();
         assert!(messages(&e)[0].1.starts_with("G1 with no feed rate set"));
     }
 

@@ -1001,7 +1001,10 @@ impl Runner {
             self.offset += next;
             self.lines_done += 1;
             if let Some(column) = block.percent {
-                if self.program_begun {
+                // A `%` line with more on it is an error of its line, which
+                // runs as any other to say so (it ended the program
+                // silently, its error never said).
+                if self.program_begun && block.error.is_none() {
                     self.end_at_percent(self.lines_done, column);
                     break;
                 }
@@ -1092,8 +1095,9 @@ impl Runner {
     /// error 1, expected command letter).
     fn end_at_percent(&mut self, line: u32, column: u32) {
         let rest = &self.source[self.offset..];
-        if !rest.trim().is_empty() {
-            let unread = count_lines(rest);
+        // The lines that hold anything: blank lines are not counted.
+        let unread = rest.lines().filter(|l| !l.trim().is_empty()).count();
+        if unread > 0 {
             let (lines, are) = if unread == 1 {
                 ("line", "is")
             } else {

@@ -249,6 +249,11 @@ impl Timeline {
         self.plan.duration_seconds
     }
 
+    /// Steps of all the moves.
+    pub fn steps(&self) -> u64 {
+        self.moves.steps()
+    }
+
     /// The timing of move `index`.
     pub fn move_timing(&self, index: usize) -> Timing {
         let blocks = self.moves.blocks_of(index);

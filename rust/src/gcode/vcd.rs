@@ -44,6 +44,39 @@ pub fn write_vcd(trace: &Trace, timeline: &Timeline, mut out: impl Write) -> io:
     out.flush()
 }
 
+/// The first two steps whose ticks come under 2 ns apart, as an error: a
+/// pulse rises on the first step's tick and must fall on a tick before the
+/// next step's rises. (A pulse rises on its step's own tick: every edge
+/// written before it, a DIR change halfway from the step before or that
+/// step's fall, is on an earlier tick, so the file's time never runs ahead.)
+fn too_close_steps(timeline: &Timeline) -> io::Result<()> {
+    let steps = timeline.steps();
+    let mut previous: Option<f64> = None;
+    let mut from = 0;
+    while from < steps {
+        let to = (from + CHUNK_STEPS).min(steps);
+        for (i, t) in timeline.step_seconds(from, to).into_iter().enumerate() {
+            if let Some(before) = previous {
+                if nanoseconds(t) < nanoseconds(before) + 2 {
+                    let k = from + i as u64;
+                    return Err(io::Error::new(
+                        io::ErrorKind::InvalidInput,
+                        format!(
+                            "steps {} and {k} come {:.3e} s apart at {before:.9} s on the planned profile ({:.3e} steps/s), too close for a pulse between them in a VCD of 1 ns ticks; lower maxRate or the feed",
+                            k - 1,
+                            t - before,
+                            1.0 / (t - before)
+                        ),
+                    ));
+                }
+            }
+            previous = Some(t);
+        }
+        from = to;
+    }
+    Ok(())
+}
+
 /// A program's VCD written a part at a time: the header, then
 /// `CHUNK_STEPS` steps per call, so that a caller can hand each part on
 /// (the CLI to its output) and hold only one: a 50,000,000-step program's
@@ -65,7 +98,12 @@ pub struct VcdChunks {
 
 impl VcdChunks {
     /// An `InvalidInput` error, before anything is written, when the program
-    /// lasts longer than a VCD's ticks reach.
+    /// lasts longer than a VCD's ticks reach, or when two of its steps come
+    /// too close for a pulse between them (on ticks under 2 ns apart). Both
+    /// are found here, in one pass over the steps' instants, so that a
+    /// caller writing the parts as they come never writes part of a file
+    /// that then fails: the CLI had written a 1.4 MB VCD when the steps
+    /// came too close, and its status said the command line was wrong.
     pub fn new(timeline: &Timeline) -> io::Result<Self> {
         // Past the last tick every edge would be pressed onto that one tick
         // (acceleration 1e-300 made a VCD of two timestamps): refused instead.
@@ -78,6 +116,7 @@ impl VcdChunks {
                 ),
             ));
         }
+        too_close_steps(timeline)?;
         Ok(Self {
             wires: None,
             next_step: 0,
@@ -89,9 +128,6 @@ impl VcdChunks {
 
     /// Writes the next part (the header first, then up to `CHUNK_STEPS`
     /// steps) to `out`; false, writing nothing, once every step is written.
-    /// An `InvalidInput` error where two steps come too close for a pulse
-    /// between them (on ticks under 2 ns apart), with the parts before it
-    /// written.
     pub fn write_next(
         &mut self,
         trace: &Trace,
@@ -158,19 +194,8 @@ impl VcdChunks {
             // analyser would see.
             let pulse_ns = nanoseconds(STEP_PULSE_SECONDS);
             let fall_ns = if following.is_finite() {
+                // At least 2 ticks after the rise (too_close_steps).
                 let next_ns = nanoseconds(following);
-                if next_ns < rise_ns + 2 {
-                    return Err(io::Error::new(
-                        io::ErrorKind::InvalidInput,
-                        format!(
-                            "steps {} and {} come {:.3e} s apart at {t:.9} s on the planned profile ({:.3e} steps/s), too close for a pulse between them in a VCD of 1 ns ticks; lower maxRate or the feed",
-                            from + i as u64,
-                            from + i as u64 + 1,
-                            following - t,
-                            1.0 / (following - t)
-                        ),
-                    ));
-                }
                 rise_ns + pulse_ns.min((next_ns - rise_ns) / 2)
             } else {
                 rise_ns + pulse_ns
@@ -274,8 +299,12 @@ mod tests {
             Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 1e300, "maxRate": 1e300}"#)
                 .unwrap();
         let program = run("G0 X10\n", settings);
-        let error = write_vcd(&program.trace, &program.timeline, &mut Vec::new()).unwrap_err();
+        let mut out = Vec::new();
+        let error = write_vcd(&program.trace, &program.timeline, &mut out).unwrap_err();
         assert_eq!(error.kind(), io::ErrorKind::InvalidInput);
+        // Found before the first part: nothing is written (the CLI wrote
+        // the parts before such steps, then failed).
+        assert!(out.is_empty());
         assert!(
             error.to_string().starts_with("steps 0 and 1 come "),
             "{error}"
@@ -286,6 +315,20 @@ mod tests {
                 .contains("too close for a pulse between them in a VCD of 1 ns ticks"),
             "{error}"
         );
+        // Far into a program too: past two parts of slow steps, two 2 ns apart.
+        let settings =
+            Settings::from_json(r#"{"stepsPerMm": 100000, "maxRate": 1e9, "acceleration": 1.4e7}"#)
+                .unwrap();
+        let program = run("G1 X0.5 F60\nG1 X2.5 F1000000000\n", settings);
+        assert!(
+            program.info.steps > 2 * CHUNK_STEPS,
+            "{}",
+            program.info.steps
+        );
+        let mut out = Vec::new();
+        let far = write_vcd(&program.trace, &program.timeline, &mut out).unwrap_err();
+        assert!(far.to_string().contains("too close for a pulse"), "{far}");
+        assert!(out.is_empty());
         // A nanosecond apart: each fall would land on the next step's rise
         // (a 0.5 ns pulse rounded onto the next tick merged the two pulses).
         let at_rate = |max_rate: &str| {
