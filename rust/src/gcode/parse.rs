@@ -278,38 +278,33 @@ impl<'t> Reader<'t> {
         let mut point = false;
         let mut blanks_inside = false;
         loop {
-            // The digits and the point: a loop of its own, which the blanks'
-            // test below slowed by a sixth when it stood among its arms.
-            loop {
-                match bytes.get(at) {
-                    Some(&b) if b.is_ascii_digit() => {
-                        if digits < 15 {
-                            mantissa = mantissa * 10 + u64::from(b - b'0');
-                            fraction_digits += usize::from(point);
-                        }
-                        digits += 1;
+            match bytes.get(at) {
+                Some(&b) if b.is_ascii_digit() => {
+                    if digits < 15 {
+                        mantissa = mantissa * 10 + u64::from(b - b'0');
+                        fraction_digits += usize::from(point);
                     }
-                    Some(b'.') if !point => point = true,
-                    _ => break,
+                    digits += 1;
                 }
-                at += 1;
+                Some(b'.') if !point => point = true,
+                Some(&b) if at > start && dropped(b) => {
+                    // Blanks, then more of the number: part of it.
+                    let mut after = at + 1;
+                    while bytes.get(after).is_some_and(|&b| dropped(b)) {
+                        after += 1;
+                    }
+                    match bytes.get(after) {
+                        Some(&b) if b.is_ascii_digit() || (b == b'.' && !point) => {
+                            blanks_inside = true;
+                            at = after;
+                            continue;
+                        }
+                        _ => break,
+                    }
+                }
+                _ => break,
             }
-            // Blanks, then more of the number: part of it.
-            if at > start && bytes.get(at).is_some_and(|&b| dropped(b)) {
-                let mut after = at + 1;
-                while bytes.get(after).is_some_and(|&b| dropped(b)) {
-                    after += 1;
-                }
-                if bytes
-                    .get(after)
-                    .is_some_and(|&b| b.is_ascii_digit() || (b == b'.' && !point))
-                {
-                    blanks_inside = true;
-                    at = after;
-                    continue;
-                }
-            }
-            break;
+            at += 1;
         }
         // Digits, points and blanks are ASCII: a column each.
         self.column += (at - start) as u32;
