@@ -51,7 +51,7 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList, gcodeSe
     'voxpath computes the single-axis steps a CNC controller (or a line renderer) takes,',
     'and why it takes each one. Coordinates are integer grid units (one unit = one step).',
     '',
-    'Exit status: 0 done; 1 check: the points differ, gcode: the program has errors;',
+    'Exit status: 0 done; 1 check: the points differ, gcode: the program has errors (or its VCD cannot be made);',
     '2 a bad command line or input (one line naming the flag, then usage); 3 the output',
     'could not be written (a full disk).',
     '',
