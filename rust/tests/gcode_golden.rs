@@ -426,6 +426,15 @@ fn a_percent_line_opens_the_program_and_the_next_one_ends_it() {
         p.info.warnings[0].message,
         "% ends the program: the 2 lines after it are not read (a program stands between two % lines, as in LinuxCNC)"
     );
+    // Lines ended by a lone CR are counted as the program's lines are.
+    let p = at10("%\rG1 X1 F100\r%\rG1 X2\r\rG1 X3\r");
+    assert!(
+        p.info.warnings[0]
+            .message
+            .starts_with("% ends the program: the 2 lines after it"),
+        "{}",
+        p.info.warnings[0].message
+    );
     // A closing `%` with more on its line is that line's error, which stops
     // the program there (it ended the program without a word).
     let p = program("G1 X1 F100\n% G0 X5\nG1 X2\n", r#"{"stepsPerMm": 10}"#);

@@ -1095,8 +1095,11 @@ impl Runner {
     /// error 1, expected command letter).
     fn end_at_percent(&mut self, line: u32, column: u32) {
         let rest = &self.source[self.offset..];
-        // The lines that hold anything: blank lines are not counted.
-        let unread = rest.lines().filter(|l| !l.trim().is_empty()).count();
+        // The lines that hold anything, ended as the program's lines are
+        // (a lone CR too: str::lines knows only LF): blank lines are not counted.
+        let unread = crate::text::lines(rest)
+            .filter(|l| !l.trim().is_empty())
+            .count();
         if unread > 0 {
             let (lines, are) = if unread == 1 {
                 ("line", "is")
