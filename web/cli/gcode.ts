@@ -12,7 +12,7 @@
 import { readFile } from 'node:fs/promises';
 import { runGcode } from '../core/index.js';
 import type { GcodeProgram, GcodeProgramInfo, GcodeSettings, OptionSpec } from '../core/index.js';
-import { alignedTable, indexChunks, pointsJsonChunks } from '../core/export.js';
+import { alignedTable, indexChunks, jsonListChunks, pointsJsonChunks } from '../core/export.js';
 import { FORMATS, UsageError, describeOption, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
 import { writeAll } from './output.js';
 
@@ -60,11 +60,6 @@ export async function readSource(file: string): Promise<string> {
 function record(program: GcodeProgram): GcodeProgramInfo {
   const { trace: _trace, ...info } = program;
   return info;
-}
-
-/** Values of `count` indices as JSON list items, read `read(from, to)` a chunk at a time. */
-function* jsonListChunks(count: number, read: (from: number, to: number) => ArrayLike<unknown>): Generator<string> {
-  for (const [from, to] of indexChunks(count)) yield (from > 0 ? ',' : '') + Array.from(read(from, to), (v) => JSON.stringify(v)).join(',');
 }
 
 /**

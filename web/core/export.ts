@@ -87,17 +87,24 @@ export function* traceJsonChunks(trace: Trace): Generator<string> {
   yield '],"decisions":{';
   for (const [i, column] of trace.columns.entries()) {
     yield `${i > 0 ? ',' : ''}${JSON.stringify(column.name)}:[`;
-    for (const [from, to] of indexChunks(trace.steps)) {
-      const values = trace.decisionsInRange(from, to)[column.name]!;
-      yield (from > 0 ? ',' : '') + Array.from(values, (v) => JSON.stringify(decisionValue(column, v))).join(',');
-    }
+    yield* jsonListChunks(
+      trace.steps,
+      (from, to) => trace.decisionsInRange(from, to)[column.name]!,
+      (v) => decisionValue(column, v),
+    );
     yield ']';
   }
   yield '},"deviation":[';
-  for (const [from, to] of indexChunks(trace.steps + 1)) {
-    yield (from > 0 ? ',' : '') + Array.from(trace.deviationInRange(from, to), (d) => JSON.stringify(d)).join(',');
-  }
+  yield* jsonListChunks(trace.steps + 1, (from, to) => trace.deviationInRange(from, to));
   yield `],"metrics":${JSON.stringify(trace.metrics)},"notes":${JSON.stringify(trace.segments.map((s) => s.note))}}`;
+}
+
+/**
+ * Values 0..count as JSON list items (without the list's brackets), read
+ * `read(from, to)` EXPORT_CHUNK_ROWS at a time, each written as `value` gives it.
+ */
+export function* jsonListChunks<T>(count: number, read: (from: number, to: number) => ArrayLike<T>, value: (v: T) => unknown = (v) => v): Generator<string> {
+  for (const [from, to] of indexChunks(count)) yield (from > 0 ? ',' : '') + Array.from(read(from, to), (v) => JSON.stringify(value(v))).join(',');
 }
 
 /**
