@@ -222,6 +222,7 @@ function run(catalogue: Catalogue): void {
         cancel: byId('experiment-cancel', HTMLButtonElement),
         box: byId('experiment-run', HTMLDivElement),
         text: byId('experiment-run-text', HTMLSpanElement),
+        verb: 'Tracing',
       },
       () => page.cancel(),
     ),

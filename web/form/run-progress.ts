@@ -3,11 +3,11 @@
  * the random-lines experiment's. Hidden while nothing runs.
  */
 
-/** How far a run has got, in units of `total` (lines), and the same in words. */
-export interface RunShare {
-  done: number;
-  total: number;
-  text: string;
+/** How far a run has got: the lines run (of a program, or of the experiment) and the steps they took. */
+export interface LinesProgress {
+  linesDone: number;
+  lines: number;
+  steps: number;
 }
 
 export interface RunProgressElements {
@@ -17,6 +17,8 @@ export interface RunProgressElements {
   box?: HTMLElement;
   /** Where the progress is said in words beside the bar (a screen reader hears it as the bar's value). */
   text?: HTMLElement;
+  /** What the run does, said before its progress ("Tracing: 10 of 100 lines, ..."). */
+  verb?: string;
 }
 
 export class RunProgress {
@@ -28,13 +30,14 @@ export class RunProgress {
   }
 
   /** Shows how far the run has got (undefined: no run under way). */
-  set(share: RunShare | undefined): void {
-    const { bar, cancel, box, text } = this.#e;
-    for (const shown of box ? [box] : [bar, cancel]) shown.hidden = share === undefined;
-    if (!share) return;
-    bar.max = Math.max(1, share.total);
-    bar.value = share.done;
-    bar.setAttribute('aria-valuetext', share.text);
-    if (text) text.textContent = share.text;
+  set(progress: LinesProgress | undefined): void {
+    const { bar, cancel, box, text, verb } = this.#e;
+    for (const shown of box ? [box] : [bar, cancel]) shown.hidden = progress === undefined;
+    if (!progress) return;
+    bar.max = Math.max(1, progress.lines);
+    bar.value = progress.linesDone;
+    const said = `${verb ? `${verb}: ` : ''}${progress.linesDone} of ${progress.lines} lines, ${progress.steps} steps`;
+    bar.setAttribute('aria-valuetext', said);
+    if (text) text.textContent = said;
   }
 }

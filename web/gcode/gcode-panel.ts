@@ -455,7 +455,7 @@ export class GcodePanel {
   /** A run's progress (undefined: no run under way). */
   setProgress(progress: GcodeProgress | undefined): void {
     this.#e.run.disabled = progress !== undefined;
-    this.#progress.set(progress && { done: progress.linesDone, total: progress.lines, text: `${progress.linesDone} of ${progress.lines} lines, ${progress.steps} steps` });
+    this.#progress.set(progress);
   }
 
   /** Shows the core's verdict on the machine settings. */

@@ -285,7 +285,7 @@ export class Orchestrator {
           state.machine,
           this.#throttled(run, (progress) => {
             p.gcodePanel.setProgress(progress);
-            p.status.running(progress);
+            p.status.running('Running', progress);
           }),
         );
         this.#running = started;
@@ -295,8 +295,8 @@ export class Orchestrator {
         const started = p.client.randomLines(
           options,
           this.#throttled(run, (progress) => {
-            p.experimentProgress.set({ done: progress.linesDone, total: progress.lines, text: `Tracing: ${progress.linesDone} of ${progress.lines} lines, ${progress.steps} steps` });
-            p.status.tracingLines(progress);
+            p.experimentProgress.set(progress);
+            p.status.running('Tracing', progress);
           }),
         );
         this.#running = started;

@@ -3,8 +3,8 @@
  * (steps, ends, the largest deviation and the bound the rule promises, ties;
  * a program's lines, moves and stop), and why nothing was traced.
  */
-import type { ExperimentProgress, GcodeProgress } from '../core/index.js';
 import { diagnosticText } from '../form/page-advice.js';
+import type { LinesProgress } from '../form/run-progress.js';
 import { clause, countOf, formatPoint } from '../format.js';
 import type { Mode } from '../state/app-state.js';
 import type { MeasuredTrace } from '../worker/client.js';
@@ -52,9 +52,9 @@ export class Status {
     this.#say(mode === 'experiment' ? 'Tracing the lines…' : 'Tracing…');
   }
 
-  /** How far a program's run has got. */
-  running(progress: GcodeProgress): void {
-    this.#say(`Running: line ${progress.linesDone} of ${progress.lines}, ${progress.steps} steps so far…`);
+  /** How far a long run has got: a program's ('Running') or the experiment's ('Tracing'). */
+  running(verb: string, progress: LinesProgress): void {
+    this.#say(`${verb}: line ${progress.linesDone} of ${progress.lines}, ${progress.steps} steps so far…`);
   }
 
   /** What is now on screen. */
@@ -62,11 +62,6 @@ export class Status {
     if (shown.experiment) this.#say(`${shown.experiment.lines.length} lines traced with ${shown.experiment.algorithm}.`);
     else if (shown.program) this.#say(programStatus(shown.program.program));
     else this.#say([shown.a, shown.b].filter((t) => t !== undefined).map(traceStatus).join(' '));
-  }
-
-  /** How far the experiment has got. */
-  tracingLines(progress: ExperimentProgress): void {
-    this.#say(`Tracing: line ${progress.linesDone} of ${progress.lines}, ${progress.steps} steps so far…`);
   }
 
   /** The run was cancelled; `kept`: what is still on screen from the last run that went to its end. */
