@@ -5,7 +5,7 @@
 import { catalogue } from './catalogue.js';
 import { callCore } from './errors.js';
 import { encodeRequest } from './request.js';
-import { advanceInSlices, checkSliceOptions, type SliceOptions, yieldToEventLoop } from './slices.js';
+import { advanceInSlices, checkSliceOptions, freeStopped, type SliceOptions, yieldToEventLoop } from './slices.js';
 import type { ExperimentInfo, ExperimentProgress, RandomLines, RandomLinesOptions } from './pkg/voxpath.js';
 import { loadCore } from './wasm.js';
 
@@ -33,11 +33,7 @@ export async function randomLines(options: RandomLinesOptions, runOptions: Rando
     await yieldToEventLoop();
     runOptions.signal?.throwIfAborted();
   } catch (error) {
-    try {
-      run.free();
-    } catch {
-      // A run the core trapped in stays borrowed and cannot be freed; the error thrown says why.
-    }
+    freeStopped(run);
     throw error;
   }
   return run.finish();

@@ -20,7 +20,7 @@
 import { callCore } from './errors.js';
 import { aNumber, argumentError, indexRange, text, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
-import { advanceInSlices, checkSliceOptions, type SliceOptions, yieldToEventLoop } from './slices.js';
+import { advanceInSlices, checkSliceOptions, freeStopped, type SliceOptions, yieldToEventLoop } from './slices.js';
 import { Trace, requireTrace } from './trace.js';
 import { loadCore, withTextBytes } from './wasm.js';
 import type { GcodeResult, GcodeSettings, GcodeVcd, MotionChart, Move, Progress as GcodeProgress, ProgramInfo } from './pkg/voxpath.js';
@@ -283,16 +283,8 @@ export async function runGcode(source: string, settings: GcodeSettings, options:
       throw error;
     }
   } finally {
-    // finish() consumes the run; free it only when it was not reached. A
-    // run that trapped stays borrowed and cannot be freed: that must not
-    // hide the error that stopped it.
-    if (!finished) {
-      try {
-        run.free();
-      } catch {
-        // The instance's memory is lost with the trap; the error already thrown says so.
-      }
-    }
+    // finish() consumes the run; free it only when it was not reached.
+    if (!finished) freeStopped(run);
   }
 }
 

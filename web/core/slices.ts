@@ -89,3 +89,17 @@ export async function advanceInSlices<Progress extends { done: boolean }>(
     await yieldToEventLoop();
   }
 }
+
+/**
+ * Frees the core's object of work that stopped before its end (a cancel, an
+ * error). One the core trapped in stays borrowed and cannot be freed: that
+ * must not hide the error that stopped it (the instance's memory is lost
+ * with the trap, and that error says so).
+ */
+export function freeStopped(run: { free(): void }): void {
+  try {
+    run.free();
+  } catch {
+    // See above: the error already thrown is the one to report.
+  }
+}
