@@ -26,11 +26,15 @@
 //!   holds a few dozen entries whatever its length, and a 50 MB line of
 //!   repeated words stops at its second word.
 //!
-//! Each line is read once, left to right, in time linear in its length:
-//! the column of every word is counted as the reader passes it, and the
-//! first syntax error ends the line (a line with an error is not run, so
-//! nothing after it is needed). Errors and words carry the 1-based column,
-//! in characters, of their first character.
+//! Each line is read left to right, in time linear in its length: the
+//! column of every word is counted as the reader passes it, and the first
+//! syntax error ends the line (a line with an error is not run, so nothing
+//! after it is needed). Errors and words carry the 1-based column, in
+//! characters, of their first character. A plain line (ASCII, each number
+//! right after its letter, no `(` comment: what CAM programs are made of)
+//! is read by a loop of its own, `read_plain`; any other line, or one it
+//! finds anything wrong with, is read again from its start by the reader
+//! that knows every rule and words every error.
 //!
 //! This reader replaced the `gcode` crate (0.7.0): its parser builds code
 //! numbers as `major * 10 + minor` in u32, so G2147483649 wrapped to G1;
@@ -147,10 +151,13 @@ pub fn parse_line(text: &str) -> Block {
 /// Parses one line into `block`, reusing its vectors (a program reads
 /// every line into the same block, so a line allocates nothing).
 pub fn parse_line_into(text: &str, block: &mut Block) {
-    block.codes.clear();
-    block.words.clear();
-    block.ignored.clear();
-    block.percent = None;
+    clear(block);
+    if read_plain(text, block) {
+        return;
+    }
+    // Not a plain line: read again by the reader that knows every rule
+    // and says what is wrong, from a clean block.
+    clear(block);
     block.error = Reader {
         text,
         at: 0,
@@ -158,6 +165,162 @@ pub fn parse_line_into(text: &str, block: &mut Block) {
     }
     .read(block)
     .err();
+}
+
+fn clear(block: &mut Block) {
+    block.codes.clear();
+    block.words.clear();
+    block.ignored.clear();
+    block.percent = None;
+    block.error = None;
+}
+
+/// Reads a plain line into a cleared `block`, as [`Reader::read`] would
+/// read it, or returns false (the block then holds part of the line) for
+/// any line that is not plain. Plain: ASCII; words and G, M and T codes
+/// with their sign and number right after their letter (`X-1.5`, `G90.1`,
+/// at most 15 digits, no exponent), a line number N before the codes,
+/// spaces, tabs or CRs between them, and a `;` comment at the end; no
+/// letter twice, and within the G and M codes a line may hold. That is
+/// every line a CAM program is made of, most of them; anything else (a
+/// blank inside a number, a `(` comment, `/`, `%`, an O, an error of any
+/// kind) goes to the reader, which takes the line from its start.
+///
+/// Why a second reader: the reader moves a byte offset and a character
+/// column together through methods that each allow what Grbl allows (a
+/// blank after a letter, inside a number, ...), and that generality cost
+/// the benchmark's program about a tenth of its time in wasm. Here every
+/// byte is ASCII, so a column is its offset plus one, and one loop reads
+/// the line. The property test `plain_lines_are_read_as_the_reader_reads_them`
+/// holds the two to the same block on random lines.
+fn read_plain(text: &str, block: &mut Block) -> bool {
+    let bytes = text.as_bytes();
+    let mut at = 0;
+    // Bit i: letter 'A' + i has stood on this line (G and M are counted).
+    let mut letters_seen = 0u32;
+    let (mut g_codes, mut m_codes) = (0, 0);
+    let mut seen_code = false;
+    loop {
+        let Some(&byte) = bytes.get(at) else {
+            return true;
+        };
+        if matches!(byte, b' ' | b'\t' | b'\r') {
+            at += 1;
+            continue;
+        }
+        if byte == b';' {
+            // The rest is a comment, read as the reader reads it: any bytes.
+            return true;
+        }
+        if !byte.is_ascii_alphabetic() {
+            return false;
+        }
+        let letter = byte.to_ascii_uppercase();
+        let column = at as u32 + 1;
+        at += 1;
+        let full = match letter {
+            b'G' => {
+                g_codes += 1;
+                g_codes > MAX_G_CODES_PER_LINE
+            }
+            b'M' => {
+                m_codes += 1;
+                m_codes > MAX_M_CODES_PER_LINE
+            }
+            _ => {
+                let bit = 1 << (letter - b'A');
+                let again = letters_seen & bit != 0;
+                letters_seen |= bit;
+                again
+            }
+        };
+        if full || letter == b'O' || (letter == b'N' && seen_code) {
+            return false;
+        }
+        let negative = bytes.get(at) == Some(&b'-');
+        let signed = matches!(bytes.get(at), Some(b'-' | b'+'));
+        if signed && matches!(letter, b'G' | b'M' | b'T' | b'N') {
+            return false;
+        }
+        at += usize::from(signed);
+        // Digits with at most one point among them, as Reader::decimal.
+        let start = at;
+        let (mut mantissa, mut digits, mut fraction_digits) = (0u64, 0usize, 0usize);
+        let mut point = None;
+        loop {
+            match bytes.get(at) {
+                Some(&b) if b.is_ascii_digit() => {
+                    mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
+                    digits += 1;
+                    fraction_digits += usize::from(point.is_some());
+                }
+                Some(b'.') if point.is_none() => point = Some(at),
+                _ => break,
+            }
+            at += 1;
+        }
+        // What may follow a number: its line's end, a blank, a letter that
+        // cannot start an exponent, or a `;`. Anything else (a second
+        // point, an exponent, a `(`) is for the reader.
+        let ends = match bytes.get(at) {
+            None => true,
+            Some(&b) => {
+                matches!(b, b' ' | b'\t' | b'\r' | b';')
+                    || (b.is_ascii_alphabetic() && !matches!(b, b'e' | b'E'))
+            }
+        };
+        if !ends || !(1..=15).contains(&digits) {
+            return false;
+        }
+        match letter {
+            b'G' | b'M' | b'T' => {
+                // A whole number, or one digit after its point, within u32.
+                let (number, minor) = match point {
+                    None => (mantissa, 0),
+                    Some(p) if p > start && fraction_digits == 1 => (mantissa / 10, mantissa % 10),
+                    Some(_) => return false,
+                };
+                let Ok(number) = u32::try_from(number) else {
+                    return false;
+                };
+                seen_code = true;
+                block.codes.push(Code {
+                    letter: letter as char,
+                    number,
+                    minor: minor as u32,
+                    column,
+                });
+            }
+            // A line number, read and dropped: whole, within u32.
+            b'N' => {
+                if point.is_some() || u32::try_from(mantissa).is_err() {
+                    return false;
+                }
+            }
+            _ => {
+                let magnitude = short_value(mantissa, fraction_digits);
+                block.words.push(Word {
+                    letter: letter as char,
+                    value: if negative { -magnitude } else { magnitude },
+                    column,
+                });
+            }
+        }
+    }
+}
+
+/// The value of a number of 1 to 15 digits, `mantissa` with
+/// `fraction_digits` of them after its point: the digits as an integer over
+/// a power of ten, both exact in f64, so the one rounding of the division
+/// gives the correctly rounded value, as `str::parse` does, without its
+/// general machinery (most G-code numbers look like 25.655).
+fn short_value(mantissa: u64, fraction_digits: usize) -> f64 {
+    const POWERS_OF_TEN: [f64; 16] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+    ];
+    // Through i64 (below 10^15, so exact): wasm converts a signed integer
+    // to f64 in one instruction, an unsigned one in several.
+    mantissa as i64 as f64 / POWERS_OF_TEN[fraction_digits]
 }
 
 /// Most G codes one line may hold: one from each modal group, and
@@ -259,19 +422,13 @@ impl<'t> Reader<'t> {
     }
 
     /// [`Self::number`], and its value when it has 1 to 15 digits, read on
-    /// the way: the digits as an integer over a power of ten, both exact
-    /// in f64, so the one rounding of the division gives the correctly
-    /// rounded value, as `str::parse` does, without its general machinery
-    /// (most G-code numbers look like 25.655). None otherwise, for
-    /// `str::parse` to read. One pass over the bytes, on locals.
+    /// the way ([`short_value`]). None otherwise, for `str::parse` to read.
+    /// One pass over the bytes, on locals.
     ///
     /// Blanks inside a number are dropped, as Grbl drops them before it
     /// reads a line (protocol.c), so `X1 0` is X10 and `G9 0.1` is G90.1;
     /// blanks after the last digit are left for the caller.
     fn decimal(&mut self) -> (NumberText<'t>, Option<f64>) {
-        const POWERS_OF_TEN: [f64; 16] = [
-            1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-        ];
         let (start, bytes) = (self.at, self.text.as_bytes());
         let mut at = start;
         let (mut mantissa, mut digits, mut fraction_digits) = (0u64, 0usize, 0usize);
@@ -311,9 +468,7 @@ impl<'t> Reader<'t> {
         self.at = at;
         let value = (1..=15)
             .contains(&digits)
-            // Through i64 (below 10^15, so exact): wasm converts a signed
-            // integer to f64 in one instruction, an unsigned one in several.
-            .then(|| mantissa as i64 as f64 / POWERS_OF_TEN[fraction_digits]);
+            .then(|| short_value(mantissa, fraction_digits));
         let text = NumberText {
             raw: &self.text[start..at],
             blanks_inside,
@@ -662,6 +817,62 @@ mod tests {
                 Some(v) => proptest::prop_assert_eq!(Some(v.to_bits()), parsed),
                 None => proptest::prop_assert!(digits == 0 || digits > 15),
             }
+        }
+    }
+
+    /// A line of G-code's characters, the plain ones most often, and of
+    /// each other kind the reader treats apart: blanks of each kind, signs,
+    /// points, comments, `%`, `/`, exponents, an O, non-ASCII, NUL.
+    fn gcode_line() -> impl proptest::strategy::Strategy<Value = String> {
+        use proptest::prelude::*;
+        let piece = prop_oneof![
+            8 => "[GMTNXYZFIJKRPSEO][-+]?[0-9]{0,3}(\\.[0-9]{0,3})?",
+            3 => "[ \t\r]{1,2}",
+            2 => "[0-9.eE+-]{1,3}",
+            1 => "[gxmn][0-9]{1,17}",
+            1 => prop::sample::select(vec![";", "; note é", "(", ")", "(c)", "%", "/", "\u{b}", "\u{c}", "é", "\0", "G90.1", "G1.10", "G4294967296", "N1.5"])
+                .prop_map(str::to_string),
+        ];
+        proptest::collection::vec(piece, 0..8).prop_map(|pieces| pieces.concat())
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(20_000))]
+        /// The plain reader reads a line to the block the reader makes of
+        /// it, or leaves it to the reader: never another block.
+        #[test]
+        fn plain_lines_are_read_as_the_reader_reads_them(line in gcode_line()) {
+            let mut plain = Block::default();
+            if read_plain(&line, &mut plain) {
+                let mut full = Block::default();
+                full.error = Reader { text: &line, at: 0, column: 1 }.read(&mut full).err();
+                proptest::prop_assert_eq!(plain, full, "{:?}", line);
+            }
+        }
+    }
+
+    #[test]
+    fn lines_as_cam_programs_write_them_are_plain() {
+        // The fast path must stay the one such lines take (the property
+        // test above cannot see a plain reader that refuses every line).
+        for line in [
+            "G1 X25.655 Y25.305 Z0.000",
+            "G2 X24.655 Y24.305 I-1 J0",
+            "N120 G01 X-1.5 Y+2. F1200 ; cut",
+            "g0x1y2z.5",
+            "G21 G90 G17 F1200",
+            "M3 S10000 T1",
+            "",
+            "   \t",
+        ] {
+            let mut block = Block::default();
+            assert!(read_plain(line, &mut block), "{line}");
+            assert_eq!(block, parse_line(line), "{line}");
+        }
+        for line in [
+            "G1 X1 0", "(setup)", "%", "/G1 X1", "O100", "G1 X1e3", "X1 X2", "G 1",
+        ] {
+            assert!(!read_plain(line, &mut Block::default()), "{line}");
         }
     }
 
