@@ -118,7 +118,7 @@ impl Points {
         // if no bracket follows: the text is read once, not searched first.
         let listed = match reader.line_rows(text) {
             Ok(rows) => rows == Rows::Listed,
-            Err(_) if text.contains(BRACKETS) => true,
+            Err(_) if has_bracket(text) => true,
             Err(e) => return Err(e),
         };
         if listed {
@@ -216,9 +216,6 @@ struct TextReader {
     steps: Option<Vec<Step>>,
 }
 
-/// The brackets that make text a printed list of points.
-const BRACKETS: [char; 2] = ['[', '('];
-
 /// What reading text as one point per line found.
 #[derive(PartialEq)]
 enum Rows {
@@ -313,11 +310,21 @@ impl TextReader {
         }
     }
 
-    /// Appends one point from the cells of a row written at `line` from
-    /// `column` (each cell's offset counts from there).
-    fn push_row(&mut self, line: u32, column: u32, cells: &[(usize, &str)]) -> Result<(), Error> {
+    /// Appends one point from the cells of a row: `text`, written at `line`
+    /// from `column`, which each cell's offset indexes (a row may span lines
+    /// inside a quoted cell: see [`place`]).
+    fn push_row(
+        &mut self,
+        line: u32,
+        column: u32,
+        text: &str,
+        cells: &[(usize, &str)],
+    ) -> Result<(), Error> {
         let index = self.points;
-        let at = |offset: usize, message: String| Error::at(line, column + offset as u32, message);
+        let at = |offset: usize, message: String| {
+            let (line, column) = place(text, line, column, offset);
+            Error::at(line, column, message)
+        };
         if let Some(&(offset, _)) = cells.iter().find(|(_, cell)| cell.is_empty()) {
             return Err(at(
                 offset,
@@ -456,8 +463,12 @@ impl TextReader {
                 '[' | '(' => open = Some((i + 1, line, (i + 1 - line_start + 1) as u32)),
                 ']' | ')' => {
                     if let Some((start, row_line, column)) = open.take() {
-                        split_cells(&text[start..i], &mut cells);
-                        self.push_row(row_line, column, &cells)?;
+                        let row = &text[start..i];
+                        split_cells(row, &mut cells).map_err(|(offset, message)| {
+                            let (line, column) = place(row, row_line, column, offset);
+                            Error::at(line, column, message)
+                        })?;
+                        self.push_row(row_line, column, row, &cells)?;
                     }
                 }
                 _ => {}
@@ -485,34 +496,41 @@ impl TextReader {
                 first = false;
                 continue;
             }
-            let (line, next) = split_line(&text[at..]);
-            at += next;
-            if line.contains(BRACKETS) {
+            let record = Record::at(&text[at..]);
+            at += record.next;
+            if record.bracket {
                 return Ok(Rows::Listed);
             }
+            // A row that spans lines (a line break inside a quoted cell)
+            // moves the next row's line number past them.
+            let line = record.text;
+            let row_line = line_number;
+            line_number += breaks(line);
             let trimmed = line.trim_start();
             if trimmed.is_empty() || trimmed.starts_with('#') {
                 continue;
             }
-            split_cells(line, &mut cells);
+            split_cells(line, &mut cells).map_err(|(offset, message)| {
+                let (line, column) = place(line, row_line, 1, offset);
+                Error::at(line, column, message)
+            })?;
             if first {
                 first = false;
                 if !cells.iter().any(|(_, c)| is_number(c)) {
                     pick = Some(
-                        header_columns(&cells, self.dims)
-                            .map_err(|m| Error::at(line_number, 1, m))?,
+                        header_columns(&cells, self.dims).map_err(|m| Error::at(row_line, 1, m))?,
                     );
                     continue;
                 }
             }
             match &pick {
-                None => self.push_row(line_number, 1, &cells)?,
+                None => self.push_row(row_line, 1, line, &cells)?,
                 Some(columns) => {
                     picked.clear();
                     for &c in columns {
                         let cell = cells.get(c).copied().ok_or_else(|| {
                             Error::at(
-                                line_number,
+                                row_line,
                                 1,
                                 format!(
                                     "point {} has {} cells; the header has more columns",
@@ -523,7 +541,7 @@ impl TextReader {
                         })?;
                         picked.push(cell);
                     }
-                    self.push_row(line_number, 1, &picked)?;
+                    self.push_row(row_line, 1, line, &picked)?;
                 }
             }
         }
@@ -532,50 +550,240 @@ impl TextReader {
 }
 
 /// The cells of `text` into `out` (cleared first), each with its byte
-/// offset (quotes around a cell removed, as CSV writes them). A comma or a
-/// semicolon ends a field, as in CSV, so nothing between two of them (or
-/// before the first) is an empty cell that keeps its column's place;
-/// blanks around a field are not part of it, and blanks alone (no comma or
-/// semicolon on the line) separate cells too ("0 0 0"). Empty cells after
-/// the last value (a spreadsheet's trailing commas) are left out. (A run of
-/// commas counted as one, so `label,x,y,z` over `,1,1,1` read 1, 1, 1 as
-/// label, x, y, and `0,,0,0` as (0, 0, 0).)
-fn split_cells<'a>(text: &'a str, out: &mut Vec<(usize, &'a str)>) {
+/// offset. A comma or a semicolon ends a field, as in CSV, so nothing
+/// between two of them (or before the first) is an empty cell that keeps
+/// its column's place; blanks around a field are not part of it, and
+/// blanks alone (no comma or semicolon on the line) separate cells too
+/// ("0 0 0"). Empty cells after the last value (a spreadsheet's trailing
+/// commas) are left out. (A run of commas counted as one, so `label,x,y,z`
+/// over `,1,1,1` read 1, 1, 1 as label, x, y, and `0,,0,0` as (0, 0, 0).)
+///
+/// A cell may be quoted, as RFC 4180 writes it: from a `"` at its start
+/// to the next lone `"` (a doubled `""` inside is a quote), with commas,
+/// semicolons, blanks and line breaks inside it (a spreadsheet's label
+/// column: `"left, then up"`). The cell is what stands between the quotes
+/// (a doubled quote stays doubled: no cell voxpath reads holds one). An
+/// error is the byte offset it is at and what is wrong: a quote not
+/// closed, or text after a closing quote.
+fn split_cells<'a>(text: &'a str, out: &mut Vec<(usize, &'a str)>) -> Result<(), (usize, String)> {
     out.clear();
-    // Bytes, not chars: every separator is ASCII, so a cut between two
-    // ASCII bytes is always on a char boundary.
+    // Bytes, not chars: every separator and the quote are ASCII, so a cut
+    // beside one of them is always on a char boundary.
     let bytes = text.as_bytes();
-    let delimited = bytes.iter().any(|&b| is_delimiter(b));
+    let delimited = fields(bytes).any(|token| matches!(token, Token::Delimiter(_)));
     let mut field_start = 0;
-    for end in (0..=bytes.len()).filter(|&i| i == bytes.len() || is_delimiter(bytes[i])) {
-        let before = out.len();
-        let mut start = None;
-        for i in field_start..end {
-            let blank = matches!(bytes[i], b' ' | b'\t' | b'\r');
-            match (blank, start) {
-                (true, Some(s)) => {
-                    out.push((s, &text[s..i]));
-                    start = None;
+    let mut field_cells = 0;
+    for token in fields(bytes) {
+        match token {
+            Token::Delimiter(at) => {
+                if delimited && field_cells == 0 {
+                    out.push((field_start, ""));
                 }
-                (false, None) => start = Some(i),
-                _ => {}
+                (field_start, field_cells) = (at + 1, 0);
+            }
+            Token::Cell(start, end) => {
+                out.push((start, &text[start..end]));
+                field_cells += 1;
+            }
+            Token::Quoted(start, end) => {
+                let after = end + 1;
+                if let Some(&b) = bytes.get(after) {
+                    if !is_separator(b) && !matches!(b, b'\r' | b'\n') {
+                        return Err((
+                            after,
+                            format!(
+                                "'{}' after a quoted cell's closing quote: a comma, a semicolon or a blank comes next",
+                                echo(
+                                    &text[after..]
+                                        .chars()
+                                        .next()
+                                        .map_or(String::new(), String::from)
+                                )
+                            ),
+                        ));
+                    }
+                }
+                out.push((start + 1, &text[start + 1..end]));
+                field_cells += 1;
+            }
+            Token::Unclosed(start) => {
+                return Err((
+                    start,
+                    "a quote that is not closed: a quoted cell ends at its closing quote, which may stand on a later line".to_string(),
+                ));
             }
         }
-        if let Some(s) = start {
-            out.push((s, &text[s..end]));
-        }
-        if delimited && out.len() == before {
-            out.push((field_start, ""));
-        }
-        field_start = end + 1;
+    }
+    if delimited && field_cells == 0 {
+        out.push((field_start, ""));
     }
     while out.last().is_some_and(|(_, cell)| cell.is_empty()) {
         out.pop();
     }
-    for cell in out.iter_mut() {
-        if cell.1.len() >= 2 && cell.1.starts_with('"') && cell.1.ends_with('"') {
-            *cell = (cell.0 + 1, &cell.1[1..cell.1.len() - 1]);
+    Ok(())
+}
+
+/// A piece of a row, by byte offsets ([`fields`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Token {
+    /// A comma or a semicolon.
+    Delimiter(usize),
+    /// An unquoted cell: start and end.
+    Cell(usize, usize),
+    /// A quoted cell: its opening and its closing quote.
+    Quoted(usize, usize),
+    /// A quote at a cell's start that nothing closes.
+    Unclosed(usize),
+}
+
+/// The delimiters and cells of a row, left to right; blanks (and line
+/// breaks, which stand outside quotes only in a bracketed row) between
+/// them. A `"` opens a quoted cell only where a cell starts: inside one
+/// (`5"`) it is the cell's own character.
+fn fields(bytes: &[u8]) -> impl Iterator<Item = Token> + '_ {
+    let mut at = 0;
+    std::iter::from_fn(move || {
+        while at < bytes.len() && matches!(bytes[at], b' ' | b'\t' | b'\r' | b'\n') {
+            at += 1;
         }
+        let start = at;
+        match bytes.get(at)? {
+            &b if is_delimiter(b) => {
+                at += 1;
+                Some(Token::Delimiter(start))
+            }
+            b'"' => match closing_quote(bytes, start) {
+                Some(end) => {
+                    at = end + 1;
+                    Some(Token::Quoted(start, end))
+                }
+                None => {
+                    at = bytes.len();
+                    Some(Token::Unclosed(start))
+                }
+            },
+            _ => {
+                while at < bytes.len() && !is_separator(bytes[at]) && !is_line_break(bytes[at]) {
+                    at += 1;
+                }
+                Some(Token::Cell(start, at))
+            }
+        }
+    })
+}
+
+/// The quote that closes the quoted cell opening at `open`: the next `"`
+/// that is not doubled.
+fn closing_quote(bytes: &[u8], open: usize) -> Option<usize> {
+    let mut at = open + 1;
+    loop {
+        at += memchr::memchr(b'"', &bytes[at..])?;
+        if bytes.get(at + 1) != Some(&b'"') {
+            return Some(at);
+        }
+        at += 2;
+    }
+}
+
+/// One row of text read a line at a time: up to the first line break that
+/// stands outside a quoted cell.
+struct Record<'t> {
+    /// The row, without the break that ends it.
+    text: &'t str,
+    /// Where the next row starts.
+    next: usize,
+    /// Whether a bracket stands in it outside quotes: then the text is a
+    /// printed list.
+    bracket: bool,
+}
+
+impl<'t> Record<'t> {
+    fn at(text: &'t str) -> Record<'t> {
+        let (line, next) = split_line(text);
+        if memchr::memchr(b'"', line.as_bytes()).is_none() {
+            // No quote, so no quoted cell: the row is its line (found a
+            // word at a time, as nearly every row is).
+            let bracket = memchr::memchr2(b'[', b'(', line.as_bytes()).is_some();
+            return Record {
+                text: line,
+                next,
+                bracket,
+            };
+        }
+        let bytes = text.as_bytes();
+        let mut bracket = false;
+        let mut at = 0;
+        // Where a cell may start: the line's start, or after a blank or a
+        // delimiter (as [`fields`] reads it).
+        let mut cell_start = true;
+        while at < bytes.len() {
+            let b = bytes[at];
+            if is_line_break(b) {
+                let next = if bytes[at..].starts_with(b"\r\n") {
+                    at + 2
+                } else {
+                    at + 1
+                };
+                return Record {
+                    text: &text[..at],
+                    next,
+                    bracket,
+                };
+            }
+            if b == b'"' && cell_start {
+                match closing_quote(bytes, at) {
+                    // A quote not closed: the rest of the text is the row,
+                    // whose reading says so at the quote.
+                    None => break,
+                    Some(end) => {
+                        at = end + 1;
+                        cell_start = false;
+                        continue;
+                    }
+                }
+            }
+            // The brackets that make text a printed list of points.
+            bracket |= matches!(b, b'[' | b'(');
+            cell_start = is_separator(b);
+            at += 1;
+        }
+        Record {
+            text,
+            next: text.len(),
+            bracket,
+        }
+    }
+}
+
+/// Whether the text is a printed list: a bracket outside quotes.
+fn has_bracket(text: &str) -> bool {
+    let mut at = 0;
+    while at < text.len() {
+        let record = Record::at(&text[at..]);
+        if record.bracket {
+            return true;
+        }
+        at += record.next;
+    }
+    false
+}
+
+/// Line breaks in `text`: LF, CR LF or a lone CR, each one break.
+fn breaks(text: &str) -> u32 {
+    let bytes = text.as_bytes();
+    memchr::memchr2_iter(b'\n', b'\r', bytes)
+        .filter(|&i| !(bytes[i] == b'\r' && bytes.get(i + 1) == Some(&b'\n')))
+        .count() as u32
+}
+
+/// The line and column of byte `offset` of `text`, which starts at `line`
+/// and `column`: past a line break inside the text (a quoted cell's, or a
+/// bracketed row's), on a later line.
+fn place(text: &str, line: u32, column: u32, offset: usize) -> (u32, u32) {
+    let before = &text[..offset];
+    match before.rfind(['\n', '\r']) {
+        None => (line, column + offset as u32),
+        Some(last) => (line + breaks(before), (offset - last) as u32),
     }
 }
 
@@ -1571,6 +1779,56 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn quoted_cells_hold_separators_quotes_and_line_breaks_as_rfc_4180_writes_them() {
+        // A spreadsheet's label column: commas, a semicolon, a doubled
+        // quote, a bracket and line breaks (LF, CR LF) inside quotes.
+        for text in [
+            "note,x,y,z\n\"start, (left)\",0,0,0\n\"then\nup; \"\"fast\"\"\",1,1,1\n2,2,2,2\n",
+            "x;y;z;note\r\n0;0;0;\"a\r\nb\"\r\n1;1;1;\"\"\r\n",
+            "\"x\" \"y\" \"z\"\n\"0\" \"0\" \"0\"\n1 1 1\n",
+        ] {
+            let points = Points::from_text(text, 3).unwrap_or_else(|e| panic!("{text:?}: {e}"));
+            assert_eq!(
+                points.len(),
+                2 + u64::from(text.contains("2,2")),
+                "{text:?}"
+            );
+            assert_eq!(points.get(1), [1, 1, 1], "{text:?}");
+        }
+        // After a row that spans lines, errors name the lines as they are
+        // in the file, and a cell after a break inside the row its own
+        // line and column.
+        let message = |text: &str| Points::from_text(text, 3).unwrap_err().to_string();
+        assert_eq!(
+            message("note,x,y,z\n\"a\nb\nc\",0,0,0\nd,1,1,x\n"),
+            "line 5, column 7: point 1: z = 'x' is not a number"
+        );
+        assert_eq!(
+            message("x,y,z,note\n0,0,0,\"a\nb\"\n1,1,\"\nq\",\"c\"\n"),
+            "line 4, column 6: point 1: z = '\\u{a}q' is not a number"
+        );
+        assert_eq!(
+            message("x,y,z\n0,0,\"0\n1,1,1\n"),
+            "line 2, column 5: a quote that is not closed: a quoted cell ends at its closing quote, which may stand on a later line"
+        );
+        assert_eq!(
+            message("x,y,z\n0,0,\"0\"1\n"),
+            "line 2, column 8: '1' after a quoted cell's closing quote: a comma, a semicolon or a blank comes next"
+        );
+        // A quote inside a cell is the cell's own (an inch mark).
+        assert_eq!(
+            message("x,y,z\n0,0,5\"\n"),
+            "line 2, column 5: point 0: z = '5\"' is not a number"
+        );
+        // A bracket inside quotes does not make the text a printed list.
+        let labelled = "x,y,z,note\n0,0,0,\"(start)\"\n1,0,0,\"[1]\"\n";
+        assert_eq!(
+            Points::from_text(labelled, 3).unwrap().coords,
+            [0, 0, 0, 1, 0, 0]
+        );
     }
 
     #[test]
