@@ -54,6 +54,16 @@ describe('checkPoints', () => {
     expect(short.firstDifference?.message).toBe(`your path stops at step 7 of ${rows.length - 1}`);
   });
 
+  it('reads a spreadsheet\'s quoted label column, line breaks inside it included, and counts in words', async () => {
+    const one = { algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1] };
+    const c = await checkPoints(one, 'x,y,z,note\n0,0,0,"start,\nthen ""up"""\n1,1,1,end\n');
+    expect(c.matches).toBe(true);
+    expect(checkToTable(c)).toMatch(/^regions: your 2 points follow the rule \(1 step\)\.\n/);
+    expect((await rejection(checkPoints(one, 'x,y,z,note\n0,0,0,"start\n1,1,1,end\n'))).message).toBe(
+      'line 2, column 7: a quote that is not closed: a quoted cell ends at its closing quote, which may stand on a later line',
+    );
+  });
+
   it('names the row of malformed input', async () => {
     expect((await rejection(checkPoints(REGIONS, '0,0,0\n1,1.5,1\n'))).message).toBe(
       'line 2, column 3: point 1: y = 1.5 is not a whole number',

@@ -1,6 +1,7 @@
 /** How the page writes grid quantities, the same way in every view. */
 
 export { AXIS_NAMES } from './core/axes.js';
+export { countOf } from './core/export.js';
 
 /** What the page shows for a decision value where its column does not apply to the step. */
 export const NO_VALUE_TEXT = '—';
@@ -10,10 +11,6 @@ export function formatPoint(coords: ArrayLike<number>): string {
   return `(${Array.from(coords).join(', ')})`;
 }
 
-/** "1 move", "12 moves": a count with its noun, singular for one. */
-export function countOf(count: number, noun: string, plural = `${noun}s`): string {
-  return `${count} ${count === 1 ? noun : plural}`;
-}
 
 /** `text` ending as a sentence ends: the core's messages have no full stop of their own ("Y has no number after it The run stopped there."), but some do. */
 export function sentence(text: string): string {

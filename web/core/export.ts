@@ -370,6 +370,11 @@ export function comparisonToTable(comparison: Comparison): string {
   return lines.join('\n') + '\n';
 }
 
+/** "1 move", "12 moves": a count with its noun, singular for one. */
+export function countOf(count: number, noun: string, plural = `${noun}s`): string {
+  return `${count} ${count === 1 ? noun : plural}`;
+}
+
 /**
  * A check for people (the CLI's check --format table, and the vitest
  * matcher's failure message): the verdict, the first difference with the
@@ -381,7 +386,7 @@ export function checkToTable(check: Check): string {
   const d = c.firstDifference;
   const lines: string[] = [];
   if (d === null) {
-    lines.push(`${c.algorithm}: your ${c.yourSteps + 1} points follow the rule (${c.steps} steps).`);
+    lines.push(`${c.algorithm}: your ${countOf(c.yourSteps + 1, 'point')} follow the rule (${countOf(c.steps, 'step')}).`);
   } else {
     lines.push(`${c.algorithm}: your path parts from the rule at point ${d.pointIndex}: ${d.message}.`);
     lines.push(`why ${c.algorithm} goes there: ${d.why}`);
