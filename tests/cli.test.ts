@@ -214,11 +214,12 @@ describe("voxpath's messages in the command line's words", () => {
 });
 
 describe("voxpath's messages about a program or a file", () => {
-  it('keeps what a message quotes of the input, and says a program error without the usage, status 1', () => {
+  it('keeps what a message quotes of the input, says a points file error without the usage (status 2) and a program error without it (status 1)', () => {
     // The learner's file says maxRate: it is quoted as written, not as a flag.
     const check = voxpath(['check', '--algorithm', 'regions', '--from', '0,0,0', '--to', '3,1,0', '-'], 'x,y,z\n0,0,maxRate\n');
     expect(check.code).toBe(2);
-    expect(check.stderr.split('\n')[0]).toBe("voxpath: line 2, column 5: point 0: z = 'maxRate' is not a number");
+    // The file's error alone: the command line was right, so no usage after it.
+    expect(check.stderr).toBe("voxpath: line 2, column 5: point 0: z = 'maxRate' is not a number\n");
     // Steps too close for a VCD's pulses, past two of its parts: refused before any of it is written.
     const vcd = voxpath(['gcode', '-', '--steps-per-mm', '100000', '--max-rate', '1000000000', '--acceleration', '14000000', '--format', 'vcd'], 'G1 X0.5 F60\nG1 X2.5 F1000000000\n');
     expect(vcd.code).toBe(1);

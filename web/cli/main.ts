@@ -6,8 +6,9 @@
  * catalogue: an option `maxSteps` is the flag `--max-steps`.
  *
  * Exit codes: 0 success, 1 failure while running, 2 bad command line or
- * rejected input (with a one-line error naming the flag, then usage), 3 the
- * output could not be written (a full disk: one line saying so).
+ * rejected input (a one-line error naming the flag, then usage; a file's
+ * error names its line and column, without the usage), 3 the output could
+ * not be written (a full disk: one line saying so).
  */
 import { readFile } from 'node:fs/promises';
 import {
@@ -52,8 +53,8 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList, gcodeSe
     'and why it takes each one. Coordinates are integer grid units (one unit = one step).',
     '',
     'Exit status: 0 done; 1 check: the points differ, gcode: the program has errors (or its VCD cannot be made);',
-    '2 a bad command line or input (one line naming the flag, then usage); 3 the output',
-    'could not be written (a full disk).',
+    '2 a bad command line (one line naming the flag, then usage) or a bad points file (one line',
+    'naming its line and column); 3 the output could not be written (a full disk).',
     '',
     'trace prints, for --format json, one object:',
     '  { algorithm, dims, steps, points: [[x,y,z], ...] (steps + 1 of them),',
@@ -252,6 +253,12 @@ export async function main(args: string[]): Promise<number> {
       if (error.field === 'program') {
         process.stderr.write(`voxpath: ${where}${detail}\n`);
         return 1;
+      }
+      // A learner's file is bad input (status 2), but the command line was right: the usage
+      // would bury the line and column that say what to mend.
+      if (error.line !== undefined || error.field === 'points') {
+        process.stderr.write(`voxpath: ${where}${detail}\n`);
+        return 2;
       }
       process.stderr.write(`voxpath: ${where}${detail}\n${shortUsage()}\n`);
       return 2;
