@@ -210,6 +210,20 @@ describe('voxpath gcode', () => {
     expect(table).toContain('pulses per axis (x, y, z): 3200, 3200, 0');
   });
 
+  it('says the warnings on stderr for csv and vcd, which have no place for them (they were dropped)', () => {
+    const source = 'G1 X0.05\nM100\nG1 X1 F60\n';
+    for (const format of ['csv', 'vcd']) {
+      const r = voxpath(['gcode', '-', '--steps-per-mm', '80', '--format', format], source);
+      expect(r.code).toBe(0);
+      const lines = r.stderr.trim().split('\n');
+      expect(lines).toHaveLength(2);
+      expect(lines[0]).toMatch(/^voxpath: -:1:1: warning: G1 with no feed rate set/);
+      expect(lines[1]).toMatch(/^voxpath: -:2:1: warning: M100 ignored/);
+    }
+    // The JSON and the table hold them; stderr stays empty.
+    for (const format of ['json', 'table']) expect(voxpath(['gcode', '-', '--steps-per-mm', '80', '--format', format], source).stderr).toBe('');
+  });
+
   it('streams json, csv, table and vcd across chunks as the API gives them whole', async () => {
     // 2.5 chunks of points and steps over three moves, one of them back.
     const source = 'G1 X200 F6000\nG1 Y100\nG1 X100\n';

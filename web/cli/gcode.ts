@@ -7,7 +7,8 @@
  *
  * Exit codes: 0 the program ran; 1 it has errors (printed to stderr, after
  * the output of the moves before the first one); 2 a bad command line or
- * setting (main.ts prints those).
+ * setting (main.ts prints those). Warnings are in the JSON and the table,
+ * and on stderr for CSV and VCD.
  */
 import { readFile } from 'node:fs/promises';
 import { runGcode } from '../core/index.js';
@@ -165,7 +166,17 @@ export async function gcodeCommand(args: string[], settingSpecs: readonly Option
             ? tableChunks(program)
             : jsonChunks(program, stepTimes),
     );
-    process.stderr.write(program.errors.map((e) => `voxpath: ${file}:${e.line}:${e.column}: ${e.message}\n`).join(''));
+    // CSV and VCD have no place for them: the warnings go to stderr, before the errors, as
+    // compilers print theirs (the JSON and the table hold them; none is dropped silently).
+    const warnings =
+      format === 'csv' || format === 'vcd'
+        ? [
+            ...program.warnings.map((w) => `voxpath: ${file}:${w.line}:${w.column}: warning: ${w.message}\n`),
+            ...(program.warningsOmitted > 0 ? [`voxpath: ${file}: ... and ${program.warningsOmitted} more warnings\n`] : []),
+          ]
+        : [];
+    const errors = program.errors.map((e) => `voxpath: ${file}:${e.line}:${e.column}: ${e.message}\n`);
+    process.stderr.write([...warnings, ...errors].join(''));
     return program.errors.length > 0 ? 1 : 0;
   } finally {
     program.free();
