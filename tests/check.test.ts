@@ -65,10 +65,12 @@ describe('checkPoints', () => {
   });
 
   it('names the row of malformed input', async () => {
-    expect((await rejection(checkPoints(REGIONS, '0,0,0\n1,1.5,1\n'))).message).toBe(
-      'line 2, column 3: point 1: y = 1.5 is not a whole number',
-    );
+    const text = await rejection(checkPoints(REGIONS, '0,0,0\n1,1.5,1\n'));
+    expect(text.message).toBe('line 2, column 3: point 1: y = 1.5 is not a whole number');
+    // The argument is named whichever way the points came (a text's error had no field).
+    expect([text.field, text.line, text.column]).toEqual(['points', 2, 3]);
     expect((await rejection(checkPoints(REGIONS, [[0, 0, 0], [1, 1]]))).field).toBe('points');
+    expect((await rejection(readPoints('0,0,0\n1,1\n', 3))).field).toBe('text');
   });
 
   it('names a hole in a sparse array, row or coordinate, where it read 0', async () => {

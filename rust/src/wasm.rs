@@ -58,6 +58,17 @@ fn to_js_error(error: &Error) -> JsValue {
     js.into()
 }
 
+/// [`to_js_error`] for an error in the text argument `field` (a learner's
+/// points): one at a line and column names the argument too, so that a
+/// caller finds which argument is wrong by `field` whatever the error.
+fn to_js_text_error(error: &Error, field: &str) -> JsValue {
+    let js = to_js_error(error);
+    if let Location::Source { .. } = error.location {
+        let _ = js_sys::Reflect::set(&js, &JsValue::from_str("field"), &JsValue::from_str(field));
+    }
+    js
+}
+
 /// Runs one trace. `request_json` is `{"algorithm": id, ...options}`.
 #[wasm_bindgen]
 pub fn trace(request_json: &str) -> Result<TraceHandle, JsValue> {
@@ -167,7 +178,7 @@ impl TextBytes {
 #[wasm_bindgen(js_name = checkText, unchecked_return_type = "Check")]
 pub fn check_text(request_json: &str, text: &TextBytes) -> Result<JsValue, JsValue> {
     let check = crate::check::check_text(request_json, utf8("points", &text.0)?)
-        .map_err(|e| to_js_error(&e))?;
+        .map_err(|e| to_js_text_error(&e, "points"))?;
     Ok(to_js(&check))
 }
 
@@ -218,7 +229,7 @@ pub fn read_points(text: &TextBytes, dims: u32) -> Result<Vec<f64>, JsValue> {
         return Err(to_js_error(&Error::field("dims", message)));
     }
     let points = crate::check::Points::from_text(utf8("text", &text.0)?, dims as usize)
-        .map_err(|e| to_js_error(&e))?;
+        .map_err(|e| to_js_text_error(&e, "text"))?;
     // Exact: the reader refuses coordinates past 2^53.
     Ok(points.coords.iter().map(|&c| c as f64).collect())
 }
