@@ -252,13 +252,21 @@ impl ArcSpec {
     /// One sentence about the arc for setup notes.
     pub fn describe(&self) -> String {
         let [u, v, _] = self.plane.axes();
+        // (-20)², not -20², which reads as -400.
+        let squared = |n: i64| {
+            if n < 0 {
+                format!("({n})²")
+            } else {
+                format!("{n}²")
+            }
+        };
         format!(
-            "{} in the {}; center {}, r² = {}² + {}² = {} (r = {:.3}); sweep {:.1}°",
+            "{} in the {}; center {}, r² = {} + {} = {} (r = {:.3}); sweep {:.1}°",
             self.turn.describe(),
             self.plane.describe(),
             self.frame.center,
-            self.from.get(u) - self.frame.center.get(u),
-            self.from.get(v) - self.frame.center.get(v),
+            squared(self.from.get(u) - self.frame.center.get(u)),
+            squared(self.from.get(v) - self.frame.center.get(v)),
             self.radius_sq,
             self.radius(),
             degrees(self.sweep_rad()),
@@ -322,6 +330,21 @@ mod tests {
         let r = 1i64 << 20;
         let almost = s(&format!("[{r},0,0]"), &format!("[{r},-1,0]"), "ccw");
         assert!(almost > 2.0 * PI - 2.0 / r as f64 && almost < 2.0 * PI);
+    }
+
+    #[test]
+    fn the_note_squares_a_negative_offset_in_parentheses() {
+        let note = spec(r#"{"algorithm":"circle","from":[0,3,0],"to":[0,3,0],"center":[20,7,0]}"#)
+            .unwrap()
+            .describe();
+        assert!(
+            note.contains("r² = (-20)² + (-4)² = 416 (r = 20.396)"),
+            "{note}"
+        );
+        let note = spec(r#"{"algorithm":"circle","from":[5,0,0],"to":[5,0,0],"center":[0,0,0]}"#)
+            .unwrap()
+            .describe();
+        assert!(note.contains("r² = 5² + 0² = 25 (r = 5.000)"), "{note}");
     }
 
     #[test]
