@@ -3,7 +3,9 @@
 //! an arc's full turns, a helix's rise, an arc's chords), not after
 //! allocating or dry-running up to the limit. The "at least N" of each
 //! message is the count that was known up front, which a refusal found by
-//! stepping could not give (it would say maxSteps + 1, or less).
+//! stepping could not give (it would say maxSteps + 1, or less); an arc
+//! the dry run finds too long is counted on to the largest maxSteps, so
+//! its message says what it takes, or that no maxSteps allows it.
 
 mod common;
 
@@ -106,6 +108,24 @@ fn a_circle_is_refused_from_its_full_turns() {
         r#"{"algorithm":"circle","from":[1000,0,0],"to":[1000,0,0],"center":[0,0,0],"turns":1000000}"#,
     );
     assert_eq!(at_least(&e), 3_996_000_000);
+}
+
+#[test]
+fn an_arc_past_every_max_steps_is_told_so() {
+    // A half circle of r = 2^30 takes about 3 * 10^9 steps: the advice to
+    // raise maxSteps (to "at least 50000001") was refused again at 10^9.
+    let r = 1 << 30;
+    for max in ["", r#","maxSteps":1000000000"#] {
+        let e = refusal(&format!(
+            r#"{{"algorithm":"circle","from":[{r},0,0],"to":[-{r},0,0],"center":[0,0,0]{max}}}"#
+        ));
+        assert!(at_least(&e) > 1_000_000_000, "{e}");
+        assert!(
+            e.message
+                .ends_with("that is more than any maxSteps allows (1000000000): shorten the move"),
+            "{e}"
+        );
+    }
 }
 
 #[test]

@@ -32,7 +32,7 @@ use crate::grid::{
 };
 use crate::ideal::IdealPath;
 use crate::line::step_target;
-use crate::request::{FROM, MAX_STEPS, Request, TO};
+use crate::request::{FROM, MAX_STEPS, MAX_STEPS_LIMIT, Request, TO};
 use crate::trace::{
     Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, fill_by_next_step,
     path_too_long,
@@ -512,13 +512,29 @@ impl SaleemCircle {
     /// error when it would take more than `max_steps`
     /// (at once when its full turns alone need more).
     pub fn counted(mut self, max_steps: u64) -> Result<SaleemCircle, Error> {
+        // The steps it does take, counted on up to the largest maxSteps (the
+        // count leaps along the closed form: a few isqrts an octant), so
+        // that the error's advice holds: "at least max_steps + 1" had a half
+        // circle of radius 2^30 (about 3 billion steps) refused again at
+        // the largest maxSteps the advice offered.
+        let too_long = |at_least: u64| {
+            let needed = match at_least > MAX_STEPS_LIMIT {
+                true => at_least,
+                false => self
+                    .plan(MAX_STEPS_LIMIT)
+                    .map_or(MAX_STEPS_LIMIT + 1, |plan| {
+                        plan.circle_steps + plan.correction_steps
+                    }),
+            };
+            path_too_long(max_steps, needed.max(at_least))
+        };
         let at_least = self.steps_at_least();
         if at_least > max_steps {
-            return Err(path_too_long(max_steps, at_least));
+            return Err(too_long(at_least));
         }
         let plan = self
             .plan(max_steps)
-            .ok_or_else(|| path_too_long(max_steps, max_steps + 1))?;
+            .ok_or_else(|| too_long(max_steps + 1))?;
         self.remaining = Some(plan.circle_steps + plan.correction_steps);
         self.plan = Some(plan);
         Ok(self)
@@ -1208,20 +1224,31 @@ mod tests {
     }
 
     #[test]
-    fn the_dry_run_stops_at_max_steps() {
+    fn the_dry_run_stops_at_max_steps_and_counts_what_the_arc_needs() {
         // r = 2^20: a full circle is about 5.9 million steps; with maxSteps
-        // 1000 the dry run stops after 1001 and nothing is recorded.
+        // 1000 nothing is recorded, and the error says how many it takes
+        // (counted on by the dry run's leaps), which is the maxSteps that
+        // traces it.
         let r = 1 << 20;
-        let e = INFO
-            .trace_json(
-                &format!(
-                    r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0],"maxSteps":1000}}"#
-                ),
-                find_none,
+        let json = |max: &str| {
+            format!(
+                r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0]{max}}}"#
             )
+        };
+        let e = INFO
+            .trace_json(&json(r#","maxSteps":1000"#), find_none)
             .err()
-        .unwrap();
+            .unwrap();
         assert_eq!(e.field_name(), Some("maxSteps"));
-        assert!(e.to_string().contains("at least 1001"), "{e}");
+        let steps = trace(&json("")).steps();
+        assert!(steps > 5_000_000);
+        assert_eq!(e.limit.as_ref().map(|l| l.at_least), Some(steps), "{e}");
+        assert!(
+            e.to_string()
+                .contains(&format!("(at least {steps}); raise maxSteps")),
+            "{e}"
+        );
+        let exactly = json(&format!(r#","maxSteps":{steps}"#));
+        assert_eq!(INFO.trace_json(&exactly, find_none).unwrap().steps(), steps);
     }
 }
