@@ -248,7 +248,7 @@ describe('bad input', () => {
     expect((await rejected({ algorithm: 'nope', from: [0, 0, 0], to: [1, 1, 1] })).field).toBe('algorithm');
     expect((await rejected({ ...LINE, tie: 'maybe' })).field).toBe('tie');
     expect((await rejected({ ...LINE, center: [1, 1, 1] })).field).toBe('center');
-    expect((await rejected({ ...LINE, from: [0, Number.NaN, 0] })).message).toBe('from: y must be a number, got "NaN"');
+    expect((await rejected({ ...LINE, from: [0, Number.NaN, 0] })).message).toBe('from: y must be a number, got NaN');
     const long = await rejected({ ...LINE, to: [100000, 0, 0], maxSteps: 1000 });
     expect(long.field).toBe('maxSteps');
   });

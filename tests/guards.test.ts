@@ -49,6 +49,20 @@ function thrown(call: () => unknown): VoxpathError {
 const any = (value: unknown) => value as never;
 
 describe('the JS API refuses what the core would misread, naming the argument', () => {
+  it('says a hole, an undefined item and a number JSON cannot carry as what they are', async () => {
+    // JSON makes a hole or undefined null, which the core called "got null".
+    // eslint-disable-next-line no-sparse-arrays
+    const hole = await rejection(trace({ ...LINE, from: any([0, , 0]) }));
+    expect([hole.field, hole.message]).toEqual(['from', 'from: item 1 is a hole in a sparse array; give every item']);
+    const undefinedItem = await rejection(trace({ ...LINE, to: any([1, undefined, 1]) }));
+    expect(undefinedItem.message).toBe('to: item 1 is undefined; give a number');
+    // NaN and Infinity are said as numbers, not as the text they travel as ("NaN").
+    for (const [value, shown] of [[NaN, 'NaN'], [-Infinity, '-Infinity']] as const) {
+      const e = await rejection(trace({ ...LINE, from: [0, 0, value] }));
+      expect([e.field, e.axis, e.message]).toEqual(['from', 2, `from: z must be a number, got ${shown}`]);
+    }
+  });
+
   it('refuses BigInt and circular options by the option they are in', async () => {
     const bigFrom = await rejection(trace({ ...LINE, from: any([0n, 0, 0]) }));
     expect([bigFrom.field, bigFrom.message]).toEqual(['from', 'from: 0n is a BigInt; give a number (Number(0n))']);

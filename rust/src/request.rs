@@ -461,7 +461,12 @@ impl Request {
 /// A JSON value as a message quotes it: its JSON text, a long one by its
 /// start and length ([`echo`]), so that a 10 MB string is not said back whole.
 fn shown(value: &Value) -> String {
-    echo(&value.to_string())
+    match value.as_str() {
+        // How the JS API sends a number JSON cannot carry (JSON would make
+        // it null): said as the number it was, not as text.
+        Some(text @ ("NaN" | "Infinity" | "-Infinity")) => text.to_string(),
+        _ => echo(&value.to_string()),
+    }
 }
 
 #[cfg(test)]

@@ -19,6 +19,10 @@ export function encodeRequest(options: unknown, field = 'request'): string {
       if (named && this === options) option = key;
       if (typeof value === 'bigint') throw argumentError(option, `${value}n is a BigInt; give a number (Number(${value}n))`);
       if (typeof value === 'function' || typeof value === 'symbol') throw argumentError(option, `is a ${typeof value}; give a number, text, true or false, or a list`);
+      // JSON writes a list's missing item as null, which the core would call null.
+      if (value === undefined && Array.isArray(this)) {
+        throw argumentError(option, Object.hasOwn(this, key) ? `item ${key} is undefined; give a number` : `item ${key} is a hole in a sparse array; give every item`);
+      }
       // Typed arrays travel as plain lists; NaN and Infinity as text, so the
       // core reports them by name instead of JSON turning them into null.
       if (ArrayBuffer.isView(value)) return Array.from(value as unknown as ArrayLike<number>);
