@@ -82,6 +82,28 @@ fn leaves_axis_words_to_motion(number: u32, minor: u32) -> bool {
     )
 }
 
+/// The modal group of a G code outside the groups voxpath models, as
+/// RS274/NGC (LinuxCNC) and Grbl group them, by the name an error gives it:
+/// a line holds one code of each group (Grbl refuses two: error 21, modal
+/// group violation). The non-modal group holds G4 and G92, which voxpath
+/// runs, beside codes it ignores.
+fn other_modal_group(number: u32, minor: u32) -> Option<(usize, &'static str)> {
+    Some(match (number, minor) {
+        (4 | 10 | 28 | 30 | 53 | 92, 0) | (28 | 30, 1) | (92, 1..=3) => (0, "non-modal"),
+        (40, 0) | (41 | 42, 0..=1) => (1, "cutter compensation"),
+        (43, 0..=2) | (49, 0) => (2, "tool length offset"),
+        (54..=59, 0) | (59, 1..=3) => (3, "coordinate system"),
+        (61, 0..=1) | (64, 0) => (4, "path control"),
+        (98 | 99, 0) => (5, "canned cycle return"),
+        (96 | 97, 0) => (6, "spindle speed mode"),
+        (7 | 8, 0) => (7, "lathe diameter mode"),
+        _ => return None,
+    })
+}
+
+/// How many groups [`other_modal_group`] knows.
+const OTHER_MODAL_GROUPS: usize = 8;
+
 /// The motion code (modal group 1) G`number`.`minor` is, if any. The ones
 /// voxpath does not model: splines (G5, G5.1, G5.2), threading (G33,
 /// G33.1, G76), probing (G38.2-G38.5) and canned cycles (G73, G81-G89).
@@ -423,7 +445,14 @@ impl Interpreter {
         let mut spindle: Option<(Spindle, Code)> = None;
         let mut coolant: Option<(u32, Code)> = None;
         let mut flow: Option<(u32, Code)> = None;
+        let mut other_groups: [Option<((), Code)>; OTHER_MODAL_GROUPS] = [None; OTHER_MODAL_GROUPS];
         for code in &block.codes {
+            if let Some((group, name)) = (code.letter == 'G')
+                .then(|| other_modal_group(code.number, code.minor))
+                .flatten()
+            {
+                set_once(&mut other_groups[group], (), code, line, name)?;
+            }
             if let Some(m) = (code.letter == 'G')
                 .then(|| motion_code(code.number, code.minor))
                 .flatten()
@@ -445,8 +474,9 @@ impl Interpreter {
                 ('G', 91, 1) => {
                     set_once(&mut absolute_centers, false, code, line, "arc center mode")?
                 }
-                ('G', 92, 0) => set_once(&mut g92, true, code, line, "G92 offset")?,
-                ('G', 92, 1) => set_once(&mut g92, false, code, line, "G92 offset")?,
+                // One of them a line, as the non-modal group above has it.
+                ('G', 92, 0) => g92 = Some((true, *code)),
+                ('G', 92, 1) => g92 = Some((false, *code)),
                 ('G', 92, 2 | 3) => {
                     return Err(Error::at(
                         line,
@@ -1174,6 +1204,24 @@ mod tests {
                 "M0 M30",
                 "line 1, column 4: M0 and M30 are both program flow codes: give one per line",
             ),
+            // The groups voxpath ignores are groups all the same (G54 G55
+            // gave two warnings), and G4 and G92 share the non-modal one.
+            (
+                "G54 G55 G1 X1",
+                "line 1, column 5: G54 and G55 are both coordinate system codes: give one per line",
+            ),
+            (
+                "G43.1 Z1 G49",
+                "line 1, column 10: G43.1 and G49 are both tool length offset codes: give one per line",
+            ),
+            (
+                "G4 P1 G92 X0",
+                "line 1, column 7: G4 and G92 are both non-modal codes: give one per line",
+            ),
+            (
+                "G61 G64",
+                "line 1, column 5: G61 and G64 are both path control codes: give one per line",
+            ),
         ] {
             assert_eq!(e(&[line]), message);
         }
@@ -1451,7 +1499,7 @@ mod tests {
         assert!(run(&["G92.3"]).is_err());
         assert_eq!(
             run(&["G92 X0 G92.1"]).unwrap_err().to_string(),
-            "line 1, column 8: G92 and G92.1 are both G92 offset codes: give one per line"
+            "line 1, column 8: G92 and G92.1 are both non-modal codes: give one per line"
         );
     }
 
