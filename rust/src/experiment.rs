@@ -12,8 +12,8 @@
 
 use crate::algorithm_info::Family;
 use crate::error::Error;
-use crate::grid::MAX_AXES;
-use crate::request::{OptionKind, OptionSpec, Request};
+use crate::grid::{MAX_AXES, Point};
+use crate::request::{MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
 use serde::Serialize;
 use serde_json::Value;
 use tsify::Tsify;
@@ -365,7 +365,24 @@ impl RandomLinesRun {
         let mut line = self.line_request.clone();
         line.set("from", Value::from(vec![0; dims]));
         line.set("to", Value::from(to.clone()));
-        let trace = (self.info.trace)(&line, crate::algorithms::find)?;
+        let trace = (self.info.trace)(&line, crate::algorithms::find).map_err(|e| {
+            // "Shorten the move" is no advice where the experiment draws the
+            // moves: the line is named, and the options that bound it.
+            match (e.field_name(), &e.limit) {
+                (Some("maxSteps"), Some(limit)) => Error::field(
+                    "maxSteps",
+                    format!(
+                        "random line {} (from the origin to {}) needs more than {} steps (at least {}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or lower maxCoordinate",
+                        self.lines.len(),
+                        Point::new(&to),
+                        limit.value,
+                        limit.at_least
+                    ),
+                )
+                .with_limit(limit.clone()),
+                _ => e,
+            }
+        })?;
         let n = trace.steps();
         let perpendicular = ErrorStats::of(&trace.deviation_range(0, n + 1));
         let phi = trace.axis_error_range(0, n + 1);
@@ -411,6 +428,25 @@ mod tests {
 
     fn run(json: &str) -> Result<RandomLines, Error> {
         random_lines(&Request::from_json(json).unwrap())
+    }
+
+    #[test]
+    fn a_line_past_max_steps_is_named_with_the_options_that_bound_it() {
+        let e = run(r#"{"algorithm":"regions","count":10,"seed":3,"maxSteps":10}"#).unwrap_err();
+        assert_eq!(e.field_name(), Some("maxSteps"));
+        let limit = e.limit.clone().expect("the cap");
+        assert_eq!(limit.value, 10);
+        let expected = format!(
+            "random line 0 (from the origin to {}) needs more than 10 steps (at least {}); raise maxSteps (up to 1000000000) or lower maxCoordinate",
+            Point::new(
+                &run(r#"{"algorithm":"regions","count":1,"seed":3}"#)
+                    .unwrap()
+                    .lines[0]
+                    .to
+            ),
+            limit.at_least
+        );
+        assert_eq!(e.message, expected);
     }
 
     #[test]
