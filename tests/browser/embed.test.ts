@@ -75,6 +75,40 @@ describe('embedded', () => {
     await p.close();
   });
 
+  it("shows its link's move and the sample program, none of the reader's own saved points or program", async () => {
+    // The reader's own visit: points checked in trace mode, a program of their own.
+    const p = await openPage('?from=0,0,0&to=10,7,6');
+    const { page, context } = p;
+    await page.getByTestId('check-points').locator('summary').click();
+    await page.getByTestId('learner-points').fill('0,0,0\n1,1,1\n');
+    await page.getByTestId('check-verdict').waitFor();
+    await page.goto(`${siteUrl()}?mode=gcode`);
+    await page.getByTestId('step-counter').filter({ hasText: /of 6400$/ }).waitFor();
+    await page.getByTestId('gcode-text').fill('G21 G90\nG1 X1 Y0.5 F100\n');
+    await page.getByTestId('step-counter').filter({ hasText: /of 80$/ }).waitFor();
+    await page.waitForURL(/gcode=G21/);
+    await page.waitForTimeout(600);
+
+    // A course page's frames, in the same browser: the circle alone, and the sample program.
+    const frame = await context.newPage();
+    await frame.goto(`${siteUrl()}?embed=1&algorithm=circle&from=5,0,0&to=0,5,0&center=0,0,0&dir=ccw&plane=xy&step=3`);
+    await frame.getByTestId('step-counter').filter({ hasText: /^Step 3 of / }).waitFor();
+    await frame.waitForTimeout(600);
+    expect(await frame.getByTestId('check-verdict').count()).toBe(0);
+    expect(new URL(frame.url()).searchParams.has('points')).toBe(false);
+    expect(new URL((await frame.getByTestId('open-full').getAttribute('href'))!).searchParams.has('points')).toBe(false);
+    await frame.goto(`${siteUrl()}?embed=1&mode=gcode`);
+    await frame.getByTestId('step-counter').filter({ hasText: /of 6400$/ }).waitFor();
+    expect(new URL(frame.url()).searchParams.get('gcode') ?? '').not.toContain('G1 X1 Y0.5');
+
+    // And the reader's own visit is still theirs.
+    await page.reload();
+    await page.getByTestId('step-counter').filter({ hasText: /of 80$/ }).waitFor();
+    await frame.close();
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('leaves the reason out with explain=0', async () => {
     const p = await openPage(`?embed=1&explain=0&${EXAMPLE}`);
     const { page } = p;

@@ -33,8 +33,14 @@ export function storage(): Storage | undefined {
  * what was typed anywhere survives a reload.
  */
 export function loadState(catalogue: Catalogue): AppState {
+  const address = addressAfterReload();
+  // An embedded view (in a course page) shows what its link says and nothing
+  // of the reader's own last visit: it drew the reader's saved points beside
+  // its move and ran the reader's program instead of the sample.
+  const embedded = stateFromQuery(address, catalogue);
+  if (embedded?.embed) return embedded;
   const stored = storedState(catalogue);
-  return linkedState(catalogue, stored, addressAfterReload()) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
+  return linkedState(catalogue, stored, address) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
 }
 
 /** Where the last page of this tab said a reload should have gone (sessionStorage: this tab's only). */
