@@ -76,6 +76,7 @@ function run(catalogue: Catalogue): void {
   document.body.classList.toggle('embed', store.state.embed);
   embedding(store, catalogue, {
     open: byId('open-full', HTMLAnchorElement),
+    stage: byId('stage', HTMLElement),
     button: byId('embed-open', HTMLButtonElement),
     dialog: byId('embed', HTMLDialogElement),
     snippet: byId('embed-snippet', HTMLTextAreaElement),

@@ -109,6 +109,31 @@ describe('embedded', () => {
     await p.close();
   });
 
+  it('an experiment shows its link to the full page, and opens a line there, in a new tab, staying the experiment', async () => {
+    const p = await openPage('?embed=1&mode=experiment&algorithm=regions&count=20&seed=1');
+    const { page, context } = p;
+    await page.setViewportSize({ width: 640, height: 480 });
+    await page.getByTestId('experiment-view').filter({ hasText: '20 random lines traced with regions' }).waitFor();
+    // It stood in the hidden views: no size, not visible.
+    const open = page.getByTestId('open-full');
+    expect(await open.isVisible()).toBe(true);
+    const box = (await open.boundingBox())!;
+    expect(box.width * box.height).toBeGreaterThan(100);
+    expect(box.y + box.height).toBeLessThanOrEqual(480);
+    const full = new URL((await open.getAttribute('href'))!);
+    expect([full.searchParams.get('mode'), full.searchParams.has('embed')]).toEqual(['experiment', false]);
+    // A line opens in the full page; the frame stays on its table (it turned into Trace mode, no way back).
+    const [tab] = await Promise.all([context.waitForEvent('page'), page.getByTestId('open-line-1').click()]);
+    await tab.waitForLoadState();
+    const line = new URL(tab.url());
+    expect([line.searchParams.get('mode') ?? 'trace', line.searchParams.get('algorithm'), line.searchParams.has('embed')]).toEqual(['trace', 'regions', false]);
+    expect(await page.evaluate(() => document.body.dataset.mode)).toBe('experiment');
+    await screenshot(page, 'embed-experiment');
+    await tab.close();
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('leaves the reason out with explain=0', async () => {
     const p = await openPage(`?embed=1&explain=0&${EXAMPLE}`);
     const { page } = p;

@@ -13,8 +13,10 @@ import type { Store } from '../state/store.js';
 import { formatPoint } from '../format.js';
 
 export interface EmbedElements {
-  /** Embedded: the link to the same state in the full page. */
+  /** Embedded: the link to the same state in the full page, in the views' corner. */
   open: HTMLAnchorElement;
+  /** Where the link stands in experiment mode, which has no view: the stage, above the tables. */
+  stage: HTMLElement;
   /** Full page: the button that shows the snippet, and its dialog. */
   button: HTMLButtonElement;
   dialog: HTMLDialogElement;
@@ -71,10 +73,19 @@ export function iframeSnippet(state: AppState, catalogue: Catalogue): string {
 }
 
 export function embedding(store: Store<AppState>, catalogue: Catalogue, e: EmbedElements): void {
+  const views = e.open.parentElement!;
   const render = () => {
     const state = store.state;
     document.body.classList.toggle('no-explain', !state.explain);
-    if (state.embed) e.open.href = stateLink(state, false);
+    if (state.embed) {
+      e.open.href = stateLink(state, false);
+      // The views are hidden in experiment mode, and the link with them (it had no size there).
+      const home = state.mode === 'experiment' ? e.stage : views;
+      if (e.open.parentElement !== home) {
+        if (home === e.stage) home.prepend(e.open);
+        else home.append(e.open);
+      }
+    }
     if (e.dialog.open) {
       e.snippet.value = iframeSnippet(state, catalogue);
       const limit = GCODE_URL_LIMIT.toLocaleString('en');

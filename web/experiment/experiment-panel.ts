@@ -10,6 +10,7 @@
  */
 import type { ErrorStats, LineResult, MeasureSummary, RandomLinesResult } from '../core/index.js';
 import { element } from '../form/options-form.js';
+import { stateLink } from '../embed/embed.js';
 import { AXIS_NAMES } from '../format.js';
 import { type AppState, type Catalogue, axisChoices, defaultProjection } from '../state/app-state.js';
 import { newHistoryEntry } from '../state/persist.js';
@@ -76,10 +77,7 @@ export class ExperimentPanel {
    * vanished with the table, and left it on the page's body.
    */
   #open(result: RandomLinesResult, line: LineResult): void {
-    this.#openedLine = result.lines.indexOf(line) + 1;
-    // Back returns to the table.
-    newHistoryEntry(this.#store.state);
-    this.#store.update({
+    const traced: Partial<AppState> = {
       mode: 'trace',
       algorithm: result.algorithm,
       options: { from: line.to.map(() => 0), to: [...line.to] },
@@ -87,7 +85,18 @@ export class ExperimentPanel {
       playing: false,
       camera: null,
       projection: defaultProjection(line.to.length),
-    });
+    };
+    if (this.#store.state.embed) {
+      // An embedded experiment stays the experiment its page shows (the
+      // frame turned into Trace mode, and a reader had no way back to the
+      // table): the line opens in the full page, in a tab of its own.
+      window.open(stateLink({ ...this.#store.state, ...traced }, false), '_blank', 'noopener');
+      return;
+    }
+    this.#openedLine = result.lines.indexOf(line) + 1;
+    // Back returns to the table.
+    newHistoryEntry(this.#store.state);
+    this.#store.update(traced);
     this.#focusInTrace.focus();
   }
 
@@ -108,7 +117,7 @@ export class ExperimentPanel {
     ]);
     const shown = result.lines.length > LINE_ROWS_SHOWN ? ` (the first ${LINE_ROWS_SHOWN}; CSV has all ${result.lines.length})` : '';
     const lines = table(
-      `Each line${shown}${openable ? '; pick one to step through it in Trace mode' : ''}`,
+      `Each line${shown}${openable ? (this.#store.state.embed ? '; pick one to step through it in voxpath, in a new tab' : '; pick one to step through it in Trace mode') : ''}`,
       ['line', 'to', 'steps', 'perp max', 'perp mean', 'perp std', 'eq. 11 max', 'eq. 11 mean', 'eq. 11 std'],
       result.lines.slice(0, LINE_ROWS_SHOWN).map((l, i) => [String(i + 1), `(${l.to.join(', ')})`, String(l.steps), ...stats(l.perpendicular), ...stats(l.axisError)]),
       'lines-table',
