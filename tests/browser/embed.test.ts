@@ -182,6 +182,21 @@ describe('the Embed button', () => {
     await p.close();
   });
 
+  it('says when the inputs were not traced as they are (it gave their snippet without a word)', async () => {
+    const p = await openPage(`?${EXAMPLE}`);
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 10' }).waitFor();
+    await page.getByTestId('embed-open').click();
+    expect(await page.getByTestId('embed-note').isVisible()).toBe(false);
+    await page.keyboard.press('Escape');
+    await page.getByTestId('input-to-z').fill('1.5');
+    await expect.poll(() => page.evaluate(() => document.body.dataset.stale)).toBe('rejected');
+    await page.getByTestId('embed-open').click();
+    await page.getByTestId('embed-note').filter({ hasText: 'The inputs were not traced as they are' }).waitFor();
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("says when a learner's points are too long for the link it gives (they were left out silently)", async () => {
     const p = await openPage('?from=0,0,0&to=1000,0,0');
     const { page } = p;

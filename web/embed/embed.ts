@@ -90,7 +90,9 @@ export function embedding(store: Store<AppState>, catalogue: Catalogue, e: Embed
       e.snippet.value = iframeSnippet(state, catalogue);
       const limit = GCODE_URL_LIMIT.toLocaleString('en');
       const note =
-        state.mode === 'gcode' && state.gcode.length > GCODE_URL_LIMIT
+        document.body.dataset.stale !== undefined
+          ? 'The inputs were not traced as they are (see the message by them), so the frame may not show what is on screen: mend them first (or run a cancelled run to its end).'
+          : state.mode === 'gcode' && state.gcode.length > GCODE_URL_LIMIT
           ? `This program is longer than a link holds (${limit} characters), so the frame would open on the sample program: shorten it to embed it.`
           : state.mode === 'trace' && state.learnerPoints.length > GCODE_URL_LIMIT
             ? `Your points are longer than a link holds (${limit} characters), so the frame shows the path without them: fewer points (or a shorter move) embed with them.`
