@@ -134,6 +134,16 @@ describe('embedded', () => {
     await p.close();
   });
 
+  it('that could not trace says so, with no step counted and no empty reason box', async () => {
+    const p = await openPage('?embed=1&algorithm=regions&from=0,0,0&to=10,7,1.5&step=3');
+    const { page } = p;
+    await page.getByTestId('embed-problem').filter({ hasText: /^Not traced: to: / }).waitFor();
+    // It read "Step 3 of 0", over an empty box.
+    expect(await page.getByTestId('step-counter').innerText()).toBe('No path');
+    expect((await page.getByTestId('step-reason').boundingBox())?.height ?? 0).toBe(0);
+    await p.close();
+  });
+
   it('leaves the reason out with explain=0', async () => {
     const p = await openPage(`?embed=1&explain=0&${EXAMPLE}`);
     const { page } = p;

@@ -242,7 +242,8 @@ export class Timeline {
     e.jumpInput.max = e.scrubber.max = String(steps);
     e.jumpInput.disabled = none;
     e.scrubber.value = String(pointIndex);
-    const text = `Step ${pointIndex} of ${steps}`;
+    // No path (its input refused): the step a link asked for waits for one; "Step 3 of 0" read as a bug.
+    const text = none ? 'No path' : `Step ${pointIndex} of ${steps}`;
     e.scrubber.setAttribute('aria-valuetext', text);
     e.counter.value = text;
     // Announcing every step of playback would drown a screen reader.
