@@ -36,6 +36,19 @@ describe('page state in the URL query', () => {
     expect(stateToQuery(first(), url)).toBe('mode=trace&algorithm=regions&from=0,0,0&to=10,7,6&step=0&speed=2&view=3d&decision3d=0');
   });
 
+  it('names what a link says that it cannot read, each left at its default (they were taken without a word)', () => {
+    const unread: string[] = [];
+    const state = stateFromQuery(`mode=tracee&algorithm=regionz&from=5,abc,2&to=${'9'.repeat(3000)},1,1&tie=sideways&view=4d&step=-1&camera=1,2`, catalogue, unread)!;
+    expect(unread).toEqual(['mode=tracee', 'algorithm=regionz', 'from=5,abc,2', 'to=9999999999999999... (3004 characters)', 'tie=sideways', 'step=-1', 'view=4d', 'camera=1,2']);
+    expect([state.mode, state.algorithm, state.options.from, state.options.tie]).toEqual(['trace', 'regions', [0, 0, 0], first().options.tie]);
+    // Every link the page writes is read whole.
+    for (const written of [first(), { ...first(), mode: 'compare' as const, other: 'bresenham3d', layout: 'side' as const }, { ...first(), mode: 'gcode' as const }, { ...first(), mode: 'experiment' as const }]) {
+      const none: string[] = [];
+      stateFromQuery(stateToQuery(written, url), catalogue, none);
+      expect(none).toEqual([]);
+    }
+  });
+
   it('reads back every persisted key of each mode, and starts paused', () => {
     const camera = { position: [12.5, -30, 20] as [number, number, number], target: [5, 3.5, 3] as [number, number, number], zoom: 1.25 };
     const states: AppState[] = [

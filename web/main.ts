@@ -65,7 +65,12 @@ const scene = new SceneView(byId('viewport', HTMLDivElement), {
 });
 
 function run(catalogue: Catalogue): void {
-  const store = new Store<AppState>(loadState(catalogue));
+  const unread: string[] = [];
+  const store = new Store<AppState>(loadState(catalogue, unread));
+  // A link's values the page cannot read were taken as their defaults without a word.
+  const linkNote = byId('link-note', HTMLParagraphElement);
+  linkNote.hidden = unread.length === 0;
+  linkNote.textContent = `Not understood in this link, so left at their defaults: ${unread.join(', ')}.`;
   const storageNote = byId('storage-note', HTMLParagraphElement);
   persistState(store, catalogue, (kept) => {
     storageNote.hidden = kept;

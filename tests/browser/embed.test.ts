@@ -144,6 +144,23 @@ describe('embedded', () => {
     await p.close();
   });
 
+  it("says what its link says that it cannot read, each left at its default (a frame showed another line without a word)", async () => {
+    const p = await openPage('?embed=1&algorithm=regionz&from=5,abc,2&to=20,10,5&tie=sideways');
+    const { page } = p;
+    const note = page.getByTestId('link-note');
+    await note.filter({ hasText: 'Not understood in this link' }).waitFor();
+    expect(await note.innerText()).toBe('Not understood in this link, so left at their defaults: algorithm=regionz, from=5,abc,2, tie=sideways.');
+    const box = (await note.boundingBox())!;
+    expect(box.height).toBeGreaterThan(0);
+    await screenshot(page, 'embed-link-note');
+    await p.close();
+    // A link the page wrote says nothing.
+    const fine = await openPage(`?embed=1&${EXAMPLE}`);
+    await fine.page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 10' }).waitFor();
+    expect(await fine.page.getByTestId('link-note').isVisible()).toBe(false);
+    await fine.close();
+  });
+
   it('leaves the reason out with explain=0', async () => {
     const p = await openPage(`?embed=1&explain=0&${EXAMPLE}`);
     const { page } = p;

@@ -32,13 +32,15 @@ export function storage(): Storage | undefined {
  * long for a link) come from the last visit, kept whole in localStorage, so
  * what was typed anywhere survives a reload.
  */
-export function loadState(catalogue: Catalogue): AppState {
+export function loadState(catalogue: Catalogue, unread?: string[]): AppState {
   const address = addressAfterReload();
+  // What the address says that the page cannot read (an unknown algorithm, a
+  // point with a letter in it), each at its default: said by the page.
+  const linked = stateFromQuery(address, catalogue, unread);
   // An embedded view (in a course page) shows what its link says and nothing
   // of the reader's own last visit: it drew the reader's saved points beside
   // its move and ran the reader's program instead of the sample.
-  const embedded = stateFromQuery(address, catalogue);
-  if (embedded?.embed) return embedded;
+  if (linked?.embed) return linked;
   const stored = storedState(catalogue);
   return linkedState(catalogue, stored, address) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
 }

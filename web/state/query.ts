@@ -20,7 +20,7 @@
  * `playing` is left out on purpose: a page opened from a link starts
  * paused, as moving content should not start by itself.
  */
-import { readDecimal } from '../core/guard.js';
+import { quoted, readDecimal } from '../core/guard.js';
 import type { OptionSpec } from '../core/types.js';
 import {
   type AppState,
@@ -84,14 +84,20 @@ function formatOption(value: OptionValue): string {
 }
 
 /** Values of `specs` read from `params` over `into` (which holds the defaults). */
-function readOptions(params: URLSearchParams, specs: readonly OptionSpec[], into: Record<string, OptionValue>): Record<string, OptionValue> {
+function readOptions(params: URLSearchParams, specs: readonly OptionSpec[], into: Record<string, OptionValue>, unread?: string[]): Record<string, OptionValue> {
   for (const spec of specs) {
     const text = params.get(spec.name);
     if (text === null || spec.name in PAGE_OPTIONS) continue;
     const value = parseOption(spec, text);
     if (value !== undefined) into[spec.name] = value;
+    else unread?.push(unreadKey(spec.name, text));
   }
   return into;
+}
+
+/** A key of a link the page could not read, as the page says it: "tie=sideways". */
+function unreadKey(key: string, text: string): string {
+  return `${key}=${quoted(text)}`;
 }
 
 /** Camera numbers are written to this many decimals: far below a pixel, and a link stays short. */
@@ -189,24 +195,33 @@ export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowd
  * an id the catalogue does not have) it is the default algorithm; an
  * `other` that cannot be compared with it gives way to its default partner.
  */
-export function stateFromQuery(query: string, catalogue: Catalogue): AppState | undefined {
+export function stateFromQuery(query: string, catalogue: Catalogue, unread?: string[]): AppState | undefined {
   const params = new URLSearchParams(query);
+  // What the link says that the page cannot read, each left at its default (into `unread`).
+  const taken = (key: string, read: boolean) => {
+    const text = params.get(key);
+    if (text !== null && !read) unread?.push(unreadKey(key, text));
+  };
   const { algorithms } = catalogue;
   const optionNames = algorithms.flatMap((a) => a.options.map((o) => o.name));
   if (![...STATE_KEYS, ...optionNames].some((k) => params.has(k))) return undefined;
   const mode = MODES.find((m) => m === params.get('mode')) ?? 'trace';
+  taken('mode', mode === params.get('mode'));
   // Any algorithm in any mode: experiment mode runs a line algorithm of its
   // own choosing (experimentAlgorithm) when this one is an arc.
   const info = algorithms.find((a) => a.id === params.get('algorithm')) ?? defaultAlgorithm(algorithms);
+  taken('algorithm', info.id === params.get('algorithm'));
   const state = defaultState(info, algorithms);
   state.mode = mode;
   // Only an algorithm that can be compared with the first one (else the default partner).
   const other = comparableWith(info, algorithms).find((a) => a.id === params.get('other'));
   if (other) state.other = other.id;
+  taken('other', other !== undefined);
   state.layout = COMPARE_LAYOUTS.find((l) => l === params.get('layout')) ?? state.layout;
+  taken('layout', state.layout === params.get('layout'));
 
   const infos = tracedAlgorithms(state, algorithms);
-  state.options = readOptions(params, sharedOptionSpecs(infos), defaultOptions(infos));
+  state.options = readOptions(params, sharedOptionSpecs(infos), defaultOptions(infos), unread);
   // A link naming one of two options the core takes only apart leaves out
   // the other's default (the example's segmentLength beside a link's
   // tolerance was refused: "give segmentLength or tolerance, not both").
@@ -225,24 +240,29 @@ export function stateFromQuery(query: string, catalogue: Catalogue): AppState | 
   // steps/mm (to use the motor's) stays cleared. Named with a value the page
   // cannot read (stepsPerMm=80,abc), it is as if not named: the default
   // stays, not a machine the core calls "stepsPerMm: missing".
-  const linkedMachine = readOptions(params, machineSpecs(catalogue), {});
+  const linkedMachine = readOptions(params, machineSpecs(catalogue), {}, unread);
   if (DRIVE_KEYS.some((k) => k in linkedMachine)) delete state.machine.stepsPerMm;
   state.machine = { ...state.machine, ...linkedMachine };
   const experiment = randomLinesExperiment(catalogue);
-  if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment);
+  if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment, unread);
   state.gcode = params.get('gcode') ?? state.gcode;
   state.learnerPoints = params.get('points') ?? state.learnerPoints;
 
   const step = readDecimal(params.get('step') ?? '');
   if (step !== undefined && Number.isSafeInteger(step) && step >= 0) state.pointIndex = step;
+  taken('step', state.pointIndex === step);
   const speed = readDecimal(params.get('speed') ?? '');
   if (SPEEDS_STEPS_PER_SECOND.some((s) => s === speed)) state.speed = speed!;
+  taken('speed', state.speed === speed);
   const slowdown = readDecimal(params.get('slowdown') ?? '');
   if (SLOWDOWNS.some((s) => s === slowdown)) state.slowdown = slowdown!;
+  taken('slowdown', state.slowdown === slowdown);
   state.projection = PROJECTIONS.find((p) => p === params.get('view')) ?? defaultProjection(axisCount(infos, state.options));
+  taken('view', state.projection === params.get('view'));
   state.decision3d = params.get('decision3d') === '1';
   state.follow = params.get('follow') === '1';
   state.camera = parseCamera(params.get('camera'));
+  taken('camera', state.camera !== null);
   state.embed = params.get('embed') === '1';
   state.explain = params.get('explain') !== '0';
   return state;
