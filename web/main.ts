@@ -237,7 +237,11 @@ function run(catalogue: Catalogue): void {
     inspector,
     charts: new PathCharts(byId('charts', HTMLDivElement), goTo),
     comparePanel: new ComparePanel(byId('comparison', HTMLDivElement), goTo),
-    checkPanel: new CheckPanel({ box: byId('check-points', HTMLDetailsElement), text: byId('learner-points', HTMLTextAreaElement), result: byId('check-result', HTMLDivElement) }, store, goTo),
+    // Its "Go to point" also brings the difference close: on a long path it was too small to see.
+    checkPanel: new CheckPanel({ box: byId('check-points', HTMLDetailsElement), text: byId('learner-points', HTMLTextAreaElement), result: byId('check-result', HTMLDivElement) }, store, (pointIndex) => {
+      goTo(pointIndex);
+      scene.lookAtCurrentCell();
+    }),
     timing: new TimingDiagram(byId('timing', HTMLDivElement), goTo),
     timeViews: new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), vcd: byId('export-vcd', HTMLButtonElement) }, catalogue, timeline, goTo),
     experimentPanel: new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue, byId('viewport', HTMLDivElement)),

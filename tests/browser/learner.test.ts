@@ -7,7 +7,7 @@
 import type { Page } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
-import { catalogue } from '../../web/core/index.js';
+import { catalogue, trace } from '../../web/core/index.js';
 import { PALETTE } from '../../web/scene/palette.js';
 import { canvasPng, closeAll, openPage, screenshot } from './harness.js';
 
@@ -456,6 +456,37 @@ describe('following the current cell', () => {
     await page.keyboard.press('f');
     await expect.poll(() => page.getByTestId('scene-canvas').first().getAttribute('data-follow')).toBe('false');
     await screenshot(page, 'follow-off');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+describe("a check's first difference", () => {
+  it('is brought close by "Go to point" (outlined too small to see in the whole path\'s framing)', async () => {
+    // The rule's 300-step path with point 150 moved one cell: the first difference.
+    const t = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [300, 170, 90] });
+    const flat = t.points;
+    t.free();
+    const rows = Array.from({ length: flat.length / 3 }, (_, k) => [flat[3 * k]!, flat[3 * k + 1]!, flat[3 * k + 2]!]);
+    rows[150]![2]! += rows[150]![2]! === rows[149]![2]! ? 1 : -1;
+    const p = await openPage('?from=0,0,0&to=300,170,90');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'of 300' }).waitFor();
+    await page.getByTestId('check-points').locator('summary').click();
+    await page.getByTestId('learner-points').fill(rows.map((r) => r.join(',')).join('\n'));
+    await page.getByTestId('go-check-difference').filter({ hasText: 'Go to point 150' }).waitFor();
+    await page.waitForTimeout(300);
+    const framed = colourSpot(await canvasPng(page), PALETTE.current);
+    await page.getByTestId('go-check-difference').click();
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 150 of 300' }).waitFor();
+    await page.waitForTimeout(300);
+    // As Follow comes close: the current cell some 40 pixels across, in the middle.
+    const near = colourSpot(await canvasPng(page), PALETTE.current);
+    expect(near.count).toBeGreaterThan(Math.max(600, 5 * framed.count));
+    expect(Math.abs(near.x - 0.5)).toBeLessThan(0.1);
+    expect(Math.abs(near.y - 0.5)).toBeLessThan(0.1);
+    // Once: Follow stays off, and the camera stays where it is as the path steps on.
+    expect(await page.getByTestId('follow').isChecked()).toBe(false);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

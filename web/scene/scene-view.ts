@@ -188,6 +188,8 @@ export class SceneView {
   #follow = false;
   /** A move of the camera closer to the current cell, held while that cell's point is on its way. */
   #followCloser = false;
+  /** A close look at the current cell is asked for once (lookAtCurrentCell), taken when the cell is drawn. */
+  #lookOnce = false;
   /** The camera is where resetView put it, not where the user or a link did: a resize frames the path again. */
   #framedByDefault = false;
   /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
@@ -388,6 +390,16 @@ export class SceneView {
     if (follow) this.#followCell(true);
   }
 
+  /**
+   * Once (a check's "Go to point"): centres the view on the current cell, as
+   * close as Follow comes, when it is drawn. A difference half-way along a
+   * long path was outlined too small to see in the whole path's framing.
+   */
+  lookAtCurrentCell(): void {
+    this.#lookOnce = true;
+    this.#followCell(true);
+  }
+
   /** Centres the view on the current cell; `closer`: also comes in to the following distance, if farther. */
   #followCell(closer: boolean): void {
     const drawn = this.#drawn;
@@ -400,6 +412,7 @@ export class SceneView {
     }
     closer ||= this.#followCloser;
     this.#followCloser = false;
+    this.#lookOnce = false;
     const camera = this.#activeCamera();
     const offset = camera.position.clone().sub(this.#controls.target);
     let zoom = this.#projection === '2d' ? this.#orthographic.zoom : 1;
@@ -414,7 +427,7 @@ export class SceneView {
   /** The path's cells asked of the worker have arrived and are drawn: the view draws again, and follows the current cell. */
   #settled(): void {
     this.#markCurrentCell();
-    if (this.#follow) this.#followCell(false);
+    if (this.#follow || this.#lookOnce) this.#followCell(false);
     this.requestRender();
   }
 
