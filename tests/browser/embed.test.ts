@@ -79,15 +79,16 @@ describe('embedded', () => {
     // The reader's own visit: points checked in trace mode, a program of their own.
     const p = await openPage('?from=0,0,0&to=10,7,6');
     const { page, context } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
     await page.getByTestId('check-points').locator('summary').click();
     await page.getByTestId('learner-points').fill('0,0,0\n1,1,1\n');
     await page.getByTestId('check-verdict').waitFor();
-    await page.goto(`${siteUrl()}?mode=gcode`);
-    await page.getByTestId('step-counter').filter({ hasText: /of 6400$/ }).waitFor();
-    await page.getByTestId('gcode-text').fill('G21 G90\nG1 X1 Y0.5 F100\n');
+    // The program of their own by a link of theirs, which the page keeps in storage as it runs it.
+    await page.goto(`${siteUrl()}?mode=gcode&gcode=${encodeURIComponent('G21 G90\nG1 X1 Y0.5 F100\n')}`);
     await page.getByTestId('step-counter').filter({ hasText: /of 80$/ }).waitFor();
-    await page.waitForURL(/gcode=G21/);
     await page.waitForTimeout(600);
+    const saved = (await page.evaluate(() => localStorage.getItem('voxpath.state'))) ?? '';
+    expect([saved.includes('X1%20Y0.5'), saved.includes('points=0,0,0%0A1,1,1')]).toEqual([true, true]);
 
     // A course page's frames, in the same browser: the circle alone, and the sample program.
     const frame = await context.newPage();

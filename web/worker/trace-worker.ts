@@ -183,7 +183,9 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
 
 function failure(id: number, error: unknown): ReplyMessage {
   if (error instanceof VoxpathError) {
-    // The detail, without the "field: " prefix: the page shows it beside that field.
+    // The detail, without the "field: " prefix: the page shows it beside that field. An error
+    // in a text (a learner's points) is said with its line and column, in the text's own panel.
+    if (error.line !== undefined) return { id, ok: false, failure: 'input', error: { message: error.message, limit: error.limit } };
     return { id, ok: false, failure: 'input', error: { field: error.field, message: error.field ? error.detail : error.message, limit: error.limit } };
   }
   const message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
