@@ -74,7 +74,7 @@ export class PathCharts {
     // them is the path's largest deviation: a program's metrics, which make
     // each of its segments again, are not asked for to draw it.
     const largest = series.deviationMax.reduce((a, b) => Math.max(a, b), 0);
-    // The algorithm's promise, as Wang's Fig. 6b draws √2/2: the core states it.
+    // The algorithm's promise, as Wang's maximum theoretical error (√2/2, his Figure 8): the core states it.
     const bound = trace.deviationBound;
     this.#charts.push(
       new StepChart(

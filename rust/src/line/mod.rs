@@ -42,7 +42,8 @@ pub fn trace_line<S: Stepper>(
 /// The bound of the rules that keep every passive coordinate within half a
 /// cell of the ideal line's at the same active position (Wang section 3.2;
 /// Bresenham's, in 2D): with P passive axes a point is then within √P / 2 of
-/// the line, √2 / 2 for Wang's 3D lines (his Fig. 6b).
+/// the line, √2 / 2 for Wang's 3D lines (his maximum theoretical error,
+/// section 3.2 and Figure 8).
 pub fn half_cell_per_passive_axis(mirror: &Mirror) -> DeviationBound {
     let passive = (0..mirror.dims()).filter(|&a| !mirror.is_active(a)).count();
     DeviationBound {
