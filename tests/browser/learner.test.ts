@@ -237,6 +237,24 @@ describe('compare mode', () => {
     expect(p.problems()).toEqual([]);
     await p.close();
   });
+
+  it('overlaid, steps the longer second path on past the end of the first', async () => {
+    // regions takes 10 steps, greedy 23: overlaid, greedy stood at its point 10 from step 10 on.
+    const p = await openPage('?mode=compare&algorithm=regions&other=greedy&layout=overlay&from=0,0,0&to=10,7,6&step=10');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 10 of 23' }).waitFor();
+    await page.waitForTimeout(300);
+    const second = await swatchColour(page, '.swatch-second', 'middle');
+    const atTen = pixelsShadedAs(await canvasPng(page), second);
+    await page.getByTestId('last').click();
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 23 of 23' }).waitFor();
+    await page.waitForTimeout(300);
+    const atEnd = pixelsShadedAs(await canvasPng(page), second);
+    // Thirteen more of greedy's cells visited, in its colour.
+    expect(atEnd).toBeGreaterThan(atTen * 1.3);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
 });
 
 describe("a G-code program's errors", () => {

@@ -447,7 +447,7 @@ export class Orchestrator {
   #showPoint(pointIndex: number): void {
     const p = this.#p;
     const main = mainTrace(this.#shown);
-    p.views.showPoint(pointIndex, this.#shown);
+    p.views.showPoint(pointIndex);
     if (main) {
       p.inspector.showPoint(Math.min(pointIndex, main.steps));
       this.#details.show(Math.min(pointIndex, main.steps));

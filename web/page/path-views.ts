@@ -182,10 +182,15 @@ export class PathViews {
     this.#second?.setCamera(camera);
   }
 
-  /** Shows each path after `pointIndex` steps (at most its own). */
-  showPoint(pointIndex: number, shown: Shown): void {
-    this.#main.showPoint(Math.min(pointIndex, mainTrace(shown)?.steps ?? 0));
-    this.#second?.showPoint(Math.min(pointIndex, shown.b?.steps ?? 0));
+  /**
+   * Shows each path after `pointIndex` steps (each view caps each of its
+   * paths at its own: overlaid, the second path is the main view's, and
+   * capping the view at the first path's length stopped a longer second
+   * path there).
+   */
+  showPoint(pointIndex: number): void {
+    this.#main.showPoint(pointIndex);
+    this.#second?.showPoint(pointIndex);
   }
 
   /** Outlines cells of the main view (the steps of a picked G-code line), with their legend entry. */

@@ -483,10 +483,10 @@ export class SceneView {
     this.#callbacks.onCamera(state);
   }
 
-  /** Shows the path (and the second one) after `pointIndex` steps. */
+  /** Shows the path (and the second one) after `pointIndex` steps, each at most its own. */
   showPoint(pointIndex: number): void {
     this.#pointIndex = pointIndex;
-    this.#drawn?.voxels.show(pointIndex);
+    if (this.#drawn) this.#drawn.voxels.show(Math.min(pointIndex, this.#drawn.voxels.steps));
     this.#second?.show(Math.min(pointIndex, this.#second.steps));
     this.#markCurrentCell();
     if (this.#follow) this.#followCell(false);
