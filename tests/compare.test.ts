@@ -136,7 +136,7 @@ describe('voxpath compare', () => {
   it('prints a table for people and CSV rows per quantity', () => {
     const table = voxpathCompare(...ARGS, '--format', 'table').stdout;
     expect(table).toMatch(/^steps +10 +10$/m);
-    expect(table).toContain('First difference: point 5 (after step 4): regions (5, 4, 3), bresenham3d (5, 3, 3).');
+    expect(table).toContain('First difference: point 5 (after 5 steps): regions (5, 4, 3), bresenham3d (5, 3, 3).');
     expect(table).toContain("the tie policy 'advance' decides");
     expect(table).toContain('M = 0, N = 10, region = g, corner = D, tie = true');
     expect(table).toContain("the tie policy 'hold' says y holds");

@@ -344,7 +344,8 @@ export function comparisonToTable(comparison: Comparison): string {
   if (d === null) {
     lines.push('The paths are identical.');
   } else {
-    const where = d.pointIndex === 0 ? 'at the start' : `after step ${d.pointIndex - 1}`;
+    // In steps taken, not a step index: 'after step 4' read as one short of the page's 'Step 5'.
+    const where = d.pointIndex === 0 ? 'at the start' : `after ${countOf(d.pointIndex, 'step')}`;
     lines.push(`First difference: point ${d.pointIndex} (${where}): ${labels[0]} ${pointText(d.a)}, ${labels[1]} ${pointText(d.b)}.`);
     const width = Math.max(...labels.map((l) => l.length)) + 2;
     for (const [label, why] of [

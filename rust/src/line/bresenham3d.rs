@@ -24,7 +24,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
         why: "Wang's line: Saleem's strict rule holds at step 5 where Wang steps.",
     },
     family: Family::Line,
-    title: "Bresenham's line in 3D (Saleem; Liu with tie = advance)",
+    title: "Bresenham's line in 3D (Saleem; with tie = advance, Liu's rule)",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 3; Liu & Cheng (2002), as reproduced in Wang et al. (2020), Table 1",
     teaching: "Find the axis that moves farthest (the major axis): it steps every time. The 3D line is then two plane lines sharing that axis, and each other axis runs the 2D rule on its own: its error starts at 0, grows by 2|Δminor| per step, and when it exceeds |Δmajor| the axis steps and the error drops by 2|Δmajor|. Saleem steps only when the error is strictly greater (tie = hold): on (0,0,0)->(10,7,6) step 5 goes to (5,3,3). Liu (2002) steps on equality too (tie = advance), which gives Wang's (5,4,3) and equals the method of discriminate regions point for point: Saleem's error minus |Δmajor| is Wang's discriminant.",
     errata: &[
