@@ -312,7 +312,7 @@ impl TextReader {
 
     /// Appends one point from the cells of a row: `text`, written at `line`
     /// from `column`, which each cell's offset indexes (a row may span lines
-    /// inside a quoted cell: see [`place`]).
+    /// inside a quoted cell: see [`error_in`]).
     fn push_row(
         &mut self,
         line: u32,
@@ -321,10 +321,7 @@ impl TextReader {
         cells: &[(usize, &str)],
     ) -> Result<(), Error> {
         let index = self.points;
-        let at = |offset: usize, message: String| {
-            let (line, column) = place(text, line, column, offset);
-            Error::at(line, column, message)
-        };
+        let at = |offset: usize, message: String| error_in(text, line, column, offset, message);
         if let Some(&(offset, _)) = cells.iter().find(|(_, cell)| cell.is_empty()) {
             return Err(at(
                 offset,
@@ -465,8 +462,7 @@ impl TextReader {
                     if let Some((start, row_line, column)) = open.take() {
                         let row = &text[start..i];
                         split_cells(row, &mut cells).map_err(|(offset, message)| {
-                            let (line, column) = place(row, row_line, column, offset);
-                            Error::at(line, column, message)
+                            error_in(row, row_line, column, offset, message)
                         })?;
                         self.push_row(row_line, column, row, &cells)?;
                     }
@@ -510,10 +506,8 @@ impl TextReader {
             if trimmed.is_empty() || trimmed.starts_with('#') {
                 continue;
             }
-            split_cells(line, &mut cells).map_err(|(offset, message)| {
-                let (line, column) = place(line, row_line, 1, offset);
-                Error::at(line, column, message)
-            })?;
+            split_cells(line, &mut cells)
+                .map_err(|(offset, message)| error_in(line, row_line, 1, offset, message))?;
             if first {
                 first = false;
                 if !cells.iter().any(|(_, c)| is_number(c)) {
@@ -776,14 +770,14 @@ fn breaks(text: &str) -> u32 {
         .count() as u32
 }
 
-/// The line and column of byte `offset` of `text`, which starts at `line`
+/// The error `message` at byte `offset` of `text`, which starts at `line`
 /// and `column`: past a line break inside the text (a quoted cell's, or a
 /// bracketed row's), on a later line.
-fn place(text: &str, line: u32, column: u32, offset: usize) -> (u32, u32) {
+fn error_in(text: &str, line: u32, column: u32, offset: usize, message: String) -> Error {
     let before = &text[..offset];
     match before.rfind(['\n', '\r']) {
-        None => (line, column + offset as u32),
-        Some(last) => (line + breaks(before), (offset - last) as u32),
+        None => Error::at(line, column + offset as u32, message),
+        Some(last) => Error::at(line + breaks(before), (offset - last) as u32, message),
     }
 }
 
