@@ -10,6 +10,7 @@
 import { type AppState, tracedAlgorithms, type Catalogue, experimentAlgorithm } from '../state/app-state.js';
 import { GCODE_URL_LIMIT, stateToQuery } from '../state/query.js';
 import type { Store } from '../state/store.js';
+import { staleness } from '../state/stale.js';
 import { formatPoint } from '../format.js';
 
 export interface EmbedElements {
@@ -90,7 +91,7 @@ export function embedding(store: Store<AppState>, catalogue: Catalogue, e: Embed
       e.snippet.value = iframeSnippet(state, catalogue);
       const limit = GCODE_URL_LIMIT.toLocaleString('en');
       const note =
-        document.body.dataset.stale !== undefined
+        staleness() !== undefined
           ? 'The inputs were not traced as they are (see the message by them), so the frame may not show what is on screen: mend them first (or run a cancelled run to its end).'
           : state.mode === 'gcode' && state.gcode.length > GCODE_URL_LIMIT
           ? `This program is longer than a link holds (${limit} characters), so the frame would open on the sample program: shorten it to embed it.`

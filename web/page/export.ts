@@ -5,6 +5,7 @@
  */
 import { randomLinesToCsv } from '../core/export.js';
 import type { RemoteTrace } from '../worker/client.js';
+import { staleness } from '../state/stale.js';
 import type { Shown } from './shown.js';
 
 export interface ExportButtons {
@@ -51,7 +52,7 @@ export interface Exports {
 function notExportable(shown: Shown, tracing: boolean): string | undefined {
   if (tracing) return 'Not exported yet: the inputs as they are now are being traced.';
   if (!shown.a && !shown.program && !shown.experiment) return 'Nothing to export: nothing was traced (see the message by the inputs).';
-  if (document.body.dataset.stale !== undefined) return 'Not exported: what is shown is out of date with the inputs (see the message by them).';
+  if (staleness() !== undefined) return 'Not exported: what is shown is out of date with the inputs (see the message by them).';
   return undefined;
 }
 

@@ -33,7 +33,7 @@ import { PointDetails } from '../inspector/point-details.js';
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
 import { type AppState, type Catalogue, MODE_INPUT_KEYS, experimentAlgorithm, tracedAlgorithms, traceOptions } from '../state/app-state.js';
-import { markStale } from '../state/stale.js';
+import { markStale, staleness } from '../state/stale.js';
 import type { Store } from '../state/store.js';
 import type { StepReason } from '../timeline/step-reason.js';
 import type { TimeViews } from './time-views.js';
@@ -135,7 +135,7 @@ export class Orchestrator {
       else this.#invalidForms.delete(event.target as Element);
       const [refused, shown] = [this.#refusedHere(), Object.keys(this.#shown).length > 0];
       if (refused && shown) markStale(parts.staleNote, 'rejected');
-      else if (!refused && !this.#rejected && document.body.dataset.stale === 'rejected') markStale(parts.staleNote, undefined);
+      else if (!refused && !this.#rejected && staleness() === 'rejected') markStale(parts.staleNote, undefined);
       parts.exports.refresh(this.#inputsPending);
     });
     this.#details = new PointDetails(

@@ -15,6 +15,11 @@ const NOTES: Record<Staleness, string> = {
   cancelled: 'Out of date: the run was cancelled. Shown: the last run that went to its end.',
 };
 
+/** Why what is on screen is out of date, if it is (as markStale last said). */
+export function staleness(): Staleness | undefined {
+  return document.body.dataset.stale as Staleness | undefined;
+}
+
 /** Marks the results on screen as out of date (why), or as those of the inputs again (undefined). */
 export function markStale(note: HTMLElement, why: Staleness | undefined): void {
   if (why) document.body.dataset.stale = why;
