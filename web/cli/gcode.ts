@@ -168,15 +168,15 @@ export async function gcodeCommand(args: string[], settingSpecs: readonly Option
     );
     // CSV and VCD have no place for them: the warnings go to stderr, before the errors, as
     // compilers print theirs (the JSON and the table hold them; none is dropped silently).
+    const said = (d: { line: number; column: number; message: string }, kind = '') => `voxpath: ${file}:${d.line}:${d.column}: ${kind}${d.message}\n`;
     const warnings =
       format === 'csv' || format === 'vcd'
         ? [
-            ...program.warnings.map((w) => `voxpath: ${file}:${w.line}:${w.column}: warning: ${w.message}\n`),
+            ...program.warnings.map((w) => said(w, 'warning: ')),
             ...(program.warningsOmitted > 0 ? [`voxpath: ${file}: ... and ${program.warningsOmitted} more warnings\n`] : []),
           ]
         : [];
-    const errors = program.errors.map((e) => `voxpath: ${file}:${e.line}:${e.column}: ${e.message}\n`);
-    process.stderr.write([...warnings, ...errors].join(''));
+    process.stderr.write([...warnings, ...program.errors.map((e) => said(e))].join(''));
     return program.errors.length > 0 ? 1 : 0;
   } finally {
     program.free();
