@@ -42,7 +42,7 @@ export function loadState(catalogue: Catalogue, unread?: string[]): AppState {
   // its move and ran the reader's program instead of the sample.
   if (linked?.embed) return linked;
   const stored = storedState(catalogue);
-  return linkedState(catalogue, stored, address) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
+  return linkedState(catalogue, stored, address, linked) ?? stored ?? defaultState(defaultAlgorithm(catalogue.algorithms), catalogue.algorithms);
 }
 
 /** Where the last page of this tab said a reload should have gone (sessionStorage: this tab's only). */
@@ -160,9 +160,13 @@ function withOtherModes(catalogue: Catalogue, described: AppState, params: URLSe
   return state;
 }
 
-/** The state `query` (the address's) describes, if any, with what it leaves out taken from `typed` (withOtherModes). */
-function linkedState(catalogue: Catalogue, typed: AppState | undefined, query = window.location.search): AppState | undefined {
-  const linked = stateFromQuery(query, catalogue);
+/** The state `query` (the address's) describes (`linked`, when already read), if any, with what it leaves out taken from `typed` (withOtherModes). */
+function linkedState(
+  catalogue: Catalogue,
+  typed: AppState | undefined,
+  query = window.location.search,
+  linked = stateFromQuery(query, catalogue),
+): AppState | undefined {
   if (!linked || !typed) return linked;
   return withOtherModes(catalogue, linked, new URLSearchParams(query), typed);
 }
