@@ -271,6 +271,13 @@ pub trait Stepper: Clone + 'static {
     /// Steps this stepper will still take, when known without running it.
     fn remaining_steps(&self) -> Option<u64>;
 
+    /// The columns its decisions fill ([`Decision::write`]), in order: its
+    /// decision type's, unless they depend on the move (nd's, on how many
+    /// axes it has), so that a trace carries no column its steps never fill.
+    fn columns(&self) -> &'static [Column] {
+        Self::Why::COLUMNS
+    }
+
     /// The largest distance from the ideal path any of this stepper's points
     /// can have, where its rule guarantees one; None where it makes no such
     /// promise (a float rule that can drift, greedy's).
@@ -444,8 +451,8 @@ impl MadeSegment {
         MadeSegment {
             start,
             ideal,
+            columns: stepper.columns(),
             first_state: Box::new(stepper),
-            columns: S::Why::COLUMNS,
         }
     }
 }
@@ -706,7 +713,7 @@ impl TraceBuilder {
                 crate::huge_pages::advise(self.steps.spare_capacity_mut());
             }
         }
-        let column_index = self.column_slots(S::Why::COLUMNS);
+        let column_index = self.column_slots(stepper.columns());
         self.add_figure(S::Why::FIGURE);
         // A copy on the stack: boxed only if the segment is kept.
         let first_state = stepper.clone();

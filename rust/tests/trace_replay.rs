@@ -33,9 +33,10 @@ fn direct<S: Stepper>(mut stepper: S, from: Point) -> DirectRun {
         explanations: Vec::new(),
         ties: 0,
     };
+    let columns = stepper.columns().len();
     while let Some((step, why)) = stepper.next_step() {
         out.ties += why.is_tie() as u64;
-        let mut row = vec![f64::NAN; S::Why::COLUMNS.len()];
+        let mut row = vec![f64::NAN; columns];
         why.write(&mut row);
         out.rows.push(row);
         out.explanations.push(why.explain(&p, step));
@@ -48,6 +49,7 @@ fn direct<S: Stepper>(mut stepper: S, from: Point) -> DirectRun {
 /// Traces `options` with `algorithm` and checks ranges that start before,
 /// on and after checkpoints against a direct run of `stepper`.
 fn check_replay<S: Stepper>(algorithm: &str, options: &str, from: Point, to: Point, stepper: S) {
+    let columns = stepper.columns();
     let run = direct(stepper, from);
     let trace = common::trace(&format!(
         r#"{{"algorithm":"{algorithm}","from":{:?},"to":{:?}{options}}}"#,
@@ -60,7 +62,7 @@ fn check_replay<S: Stepper>(algorithm: &str, options: &str, from: Point, to: Poi
         steps > 2 * CHECKPOINT_INTERVAL,
         "{algorithm}: the line must cross checkpoints"
     );
-    assert_eq!(trace.columns(), S::Why::COLUMNS, "{algorithm}");
+    assert_eq!(trace.columns(), columns, "{algorithm}");
     let ideal = IdealPath::Line { from, to };
     for (a, b) in [
         (0, 10),
@@ -179,6 +181,15 @@ fn ranges_across_checkpoints_equal_a_direct_run() {
         to6,
         Nd::new(from6, to6, TiePolicy::Hold, false),
     );
+    let from4 = Point::new(&from6.coords()[..4]);
+    let to4 = Point::new(&to6.coords()[..4]);
+    check_replay(
+        "nd",
+        "",
+        from4,
+        to4,
+        Nd::new(from4, to4, TiePolicy::Advance, false),
+    );
     check_replay("dda", "", from6, to6, Dda::new(from6, to6));
     let higher = r#","tieAxis":"higher""#;
     check_replay(
@@ -188,6 +199,31 @@ fn ranges_across_checkpoints_equal_a_direct_run() {
         to3,
         Walk6::new(from3, to3, TieAxis::Higher),
     );
+}
+
+/// An nd trace has a discriminant column per axis it has, then the tie:
+/// none for axes it does not have, which no step would fill.
+#[test]
+fn nd_columns_are_its_axes() {
+    for dims in 2..=6 {
+        let from = vec![0; dims];
+        let to: Vec<i64> = (0..dims as i64).map(|a| 9 - 2 * a).collect();
+        let t = common::trace(&format!(
+            r#"{{"algorithm":"nd","from":{from:?},"to":{to:?}}}"#
+        ));
+        let names: Vec<&str> = t.columns().iter().map(|c| c.name).collect();
+        let mut expected: Vec<String> = ["X", "Y", "Z", "A", "B", "C"][..dims]
+            .iter()
+            .map(|axis| format!("discriminant{axis}"))
+            .collect();
+        expected.push("tie".into());
+        assert_eq!(names, expected, "{dims} axes");
+        // Every passive axis's column holds a number at the first step.
+        let first = t.decisions(0, 1);
+        for (axis, column) in first.columns[1..dims].iter().enumerate() {
+            assert!(!column[0].is_nan(), "{dims} axes: axis {}", axis + 1);
+        }
+    }
 }
 
 #[test]

@@ -47,12 +47,13 @@ pub struct NdWhy {
     pub tie_policy: TiePolicy,
 }
 
-impl Decision for NdWhy {
-    const COLUMNS: &'static [Column] = &[
+impl NdWhy {
+    /// Each axis's discriminant, x to c.
+    const DISCRIMINANTS: [Column; MAX_AXES] = [
         Column::new(
             "discriminantX",
             ColumnKind::Int,
-            "Discriminant of x before the step (Wang eq. 6/16; Dx in the explanation); empty when x is active or absent.",
+            "Discriminant of x before the step (Wang eq. 6/16; Dx in the explanation); empty when x is active.",
         )
         .formerly("Dx"),
         Column::new(
@@ -85,18 +86,49 @@ impl Decision for NdWhy {
             "Discriminant of c before the step.",
         )
         .formerly("Dc"),
-        Column::new(
-            "tie",
-            ColumnKind::Flag,
-            "1 when a discriminant was exactly 0 and the tie policy decided.",
-        ),
     ];
 
+    const TIE: Column = Column::new(
+        "tie",
+        ColumnKind::Flag,
+        "1 when a discriminant was exactly 0 and the tie policy decided.",
+    );
+
+    /// The columns of a move of `dims` axes: its axes' discriminants, then
+    /// the tie flag. [`Decision::COLUMNS`], the catalogue's, is the
+    /// six-axis list.
+    const fn columns_for(dims: usize) -> &'static [Column] {
+        /// The first `N - 1` discriminants and the tie.
+        const fn first<const N: usize>() -> [Column; N] {
+            let mut out = [NdWhy::TIE; N];
+            let mut axis = 0;
+            while axis < N - 1 {
+                out[axis] = NdWhy::DISCRIMINANTS[axis];
+                axis += 1;
+            }
+            out
+        }
+        const BY_DIMS: [&[Column]; MAX_AXES] = [
+            &first::<2>(),
+            &first::<3>(),
+            &first::<4>(),
+            &first::<5>(),
+            &first::<6>(),
+            &first::<7>(),
+        ];
+        BY_DIMS[dims - 1]
+    }
+}
+
+impl Decision for NdWhy {
+    const COLUMNS: &'static [Column] = NdWhy::columns_for(MAX_AXES);
+
+    /// In the layout of [`NdWhy::columns_for`] of its axes.
     fn write(&self, row: &mut [f64]) {
-        for axis in 0..MAX_AXES {
+        for axis in 0..self.dims {
             row[axis] = self.discriminants[axis].map_or(f64::NAN, |v| v as f64);
         }
-        row[MAX_AXES] = self.tie as u8 as f64;
+        row[self.dims] = self.tie as u8 as f64;
     }
 
     fn is_tie(&self) -> bool {
@@ -296,6 +328,10 @@ impl Stepper for Nd {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    fn columns(&self) -> &'static [Column] {
+        NdWhy::columns_for(self.mirror.dims())
     }
 
     fn deviation_bound(&self) -> Option<DeviationBound> {
