@@ -3,8 +3,10 @@
 // library with its .wasm and the CLI, every module they import (no package
 // but Node's own), and no runtime dependency (three.js and uPlot are the
 // page's, not the library's).
-import { execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { mkdtempSync, mkdirSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 
@@ -41,5 +43,45 @@ describe('the npm package', () => {
     const manifest = JSON.parse(readFileSync(new URL('package.json', `file://${ROOT}/`), 'utf8')) as { dependencies?: object; scripts: Record<string, string> };
     expect(manifest.dependencies ?? {}).toEqual({});
     expect(manifest.scripts.prepack).toBe('node scripts/setup.mjs lib');
+  });
+
+  // The declarations a TypeScript user's project checks when it does not
+  // skip its libraries' (skipLibCheck off): a Node project loads no DOM
+  // library, and wasm-bindgen's loader was typed with its names
+  // (RequestInfo, BufferSource, WebAssembly.Module).
+  it('type-checks in a Node project without the DOM library and without skipLibCheck', { timeout: 120_000 }, () => {
+    const project = mkdtempSync(join(tmpdir(), 'voxpath-types-'));
+    try {
+      writeFileSync(join(project, 'package.json'), JSON.stringify({ type: 'module' }));
+      mkdirSync(join(project, 'node_modules'));
+      symlinkSync(ROOT, join(project, 'node_modules', 'voxpath'), 'dir');
+      const compilerOptions = {
+        target: 'es2022',
+        module: 'nodenext',
+        lib: ['es2022'],
+        types: ['node'],
+        typeRoots: [join(ROOT, 'node_modules', '@types')],
+        strict: true,
+        noEmit: true,
+        skipLibCheck: false,
+      };
+      writeFileSync(join(project, 'tsconfig.json'), JSON.stringify({ compilerOptions, files: ['use.ts'] }));
+      writeFileSync(
+        join(project, 'use.ts'),
+        [
+          "import { runGcode, trace } from 'voxpath';",
+          "import type { Trace, TraceOptions } from 'voxpath';",
+          "const options: TraceOptions = { algorithm: 'regions', from: [0, 0, 0], to: [5, 3, 1] };",
+          'const t: Trace = await trace(options);',
+          "const program = await runGcode('G1 X1 F100', { stepsPerMm: 1 });",
+          'console.log(t.points.length, program.steps);',
+        ].join('\n'),
+      );
+      const tsc = spawnSync(process.execPath, [join(ROOT, 'node_modules', 'typescript', 'bin', 'tsc'), '-p', project], { encoding: 'utf8' });
+      expect(tsc.stdout + tsc.stderr).toBe('');
+      expect(tsc.status).toBe(0);
+    } finally {
+      rmSync(project, { recursive: true, force: true });
+    }
   });
 });
