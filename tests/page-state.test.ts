@@ -18,7 +18,7 @@ import {
   traceOptions,
   withAxes,
 } from '../web/state/app-state.js';
-import { GCODE_URL_LIMIT, STATE_KEYS, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
+import { GCODE_URL_LIMIT, type LinkNotes, STATE_KEYS, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
 import { carriedOptions } from '../web/form/algorithm-inputs.js';
 import { readPerAxis } from '../web/form/options-form.js';
 
@@ -37,15 +37,16 @@ describe('page state in the URL query', () => {
   });
 
   it('names what a link says that it cannot read, each left at its default (they were taken without a word)', () => {
-    const unread: string[] = [];
-    const state = stateFromQuery(`mode=tracee&algorithm=regionz&from=5,abc,2&to=${'9'.repeat(3000)},1,1&tie=sideways&view=4d&step=-1&camera=1,2`, catalogue, unread)!;
-    expect(unread).toEqual(['mode=tracee', 'algorithm=regionz', 'from=5,abc,2', 'to=9999999999999999... (3004 characters)', 'tie=sideways', 'step=-1', 'view=4d', 'camera=1,2']);
+    const notes: LinkNotes = { unread: [], fitted: [] };
+    const state = stateFromQuery(`mode=tracee&algorithm=regionz&from=5,abc,2&to=${'9'.repeat(3000)},1,1&tie=sideways&view=4d&step=-1&camera=1,2`, catalogue, notes)!;
+    expect(notes.fitted).toEqual([]);
+    expect(notes.unread).toEqual(['mode=tracee', 'algorithm=regionz', 'from=5,abc,2', 'to=9999999999999999... (3004 characters)', 'tie=sideways', 'step=-1', 'view=4d', 'camera=1,2']);
     expect([state.mode, state.algorithm, state.options.from, state.options.tie]).toEqual(['trace', 'regions', [0, 0, 0], first().options.tie]);
     // Every link the page writes is read whole.
     for (const written of [first(), { ...first(), mode: 'compare' as const, other: 'bresenham3d', layout: 'side' as const }, { ...first(), mode: 'gcode' as const }, { ...first(), mode: 'experiment' as const }]) {
-      const none: string[] = [];
+      const none: LinkNotes = { unread: [], fitted: [] };
       stateFromQuery(stateToQuery(written, url), catalogue, none);
-      expect(none).toEqual([]);
+      expect(none).toEqual({ unread: [], fitted: [] });
     }
   });
 
@@ -158,6 +159,29 @@ describe('page state in the URL query', () => {
     expect(stateFromQuery('algorithm=nd&from=1,2&to=10,7,6,3', catalogue)!.options).toMatchObject({ from: [1, 2], to: [10, 7] });
     // Points the page shows are left alone.
     expect(stateFromQuery('algorithm=greedy&from=1,2&to=8,3', catalogue)!.options).toMatchObject({ from: [1, 2], to: [8, 3] });
+  });
+
+  it("says how it fitted a link's points to the axes the page shows (regions' from=0,0 was traced with z = 0 without a word)", () => {
+    const fitted = (query: string) => {
+      const notes: LinkNotes = { unread: [], fitted: [] };
+      const options = stateFromQuery(query, catalogue, notes)!.options;
+      return { options, notes };
+    };
+    expect(fitted('algorithm=regions&from=0,0&to=7,-3')).toEqual({
+      options: { from: [0, 0, 0], to: [7, -3, 0] },
+      notes: { unread: [], fitted: ['from and to had 2 coordinates; regions takes 3: z = 0 added'] },
+    });
+    expect(fitted('algorithm=circle&from=5&to=0,5,0&center=0,0,0,9').notes.fitted).toEqual([
+      'from had 1 coordinate; circle takes 3: y = 0 and z = 0 added',
+      'center had 4 coordinates; circle takes 3: a dropped',
+    ]);
+    expect(fitted('mode=compare&algorithm=regions&other=greedy&from=0,0&to=7,-3,1').notes.fitted).toEqual(['from had 2 coordinates; regions and greedy take 3: z = 0 added']);
+    // Where the algorithm takes more than one count: from's, else the page's.
+    expect(fitted('algorithm=nd&from=1,2&to=10,7,6,3').notes.fitted).toEqual(['to had 4 coordinates; from has 2: z and a dropped']);
+    expect(fitted('algorithm=nd&from=0,0,0,0,0,0,0&to=10,7,6').notes.fitted).toEqual(['from had 7 coordinates; the page shows 3: a, b, c and coordinate 7 dropped']);
+    // A point left at its default (unreadable) is not fitted, only unread; points the page shows say nothing.
+    expect(fitted('algorithm=regions&from=0,x&to=10,7,6').notes).toEqual({ unread: ['from=0,x'], fitted: [] });
+    expect(fitted('algorithm=greedy&from=1,2&to=8,3').notes).toEqual({ unread: [], fitted: [] });
   });
 
   it("traces a link's tolerance by tolerance, without the example's segmentLength (the two were refused together)", () => {

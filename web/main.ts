@@ -12,6 +12,7 @@ import { ExperimentPanel } from './experiment/experiment-panel.js';
 import { AlgorithmInputs } from './form/algorithm-inputs.js';
 import { OptionsForm } from './form/options-form.js';
 import { RunProgress } from './form/run-progress.js';
+import { sentence } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
 import { TimeViews } from './page/time-views.js';
@@ -32,6 +33,7 @@ import { SceneView } from './scene/scene-view.js';
 import { SAMPLED_POINTS } from './scene/voxel-path.js';
 import { type AppState, type Catalogue, randomLinesExperiment } from './state/app-state.js';
 import { loadState, persistState } from './state/persist.js';
+import type { LinkNotes } from './state/query.js';
 import { Store } from './state/store.js';
 import { StepReason } from './timeline/step-reason.js';
 import { Timeline } from './timeline/timeline.js';
@@ -65,12 +67,13 @@ const scene = new SceneView(byId('viewport', HTMLDivElement), {
 });
 
 function run(catalogue: Catalogue): void {
-  const unread: string[] = [];
-  const store = new Store<AppState>(loadState(catalogue, unread));
-  // A link's values the page cannot read were taken as their defaults without a word.
+  const notes: LinkNotes = { unread: [], fitted: [] };
+  const store = new Store<AppState>(loadState(catalogue, notes));
+  // A link's values the page cannot read were taken as their defaults, and its points fitted to the axes shown, without a word.
   const linkNote = byId('link-note', HTMLParagraphElement);
-  linkNote.hidden = unread.length === 0;
-  linkNote.textContent = `Not understood in this link, so left at their defaults: ${unread.join(', ')}.`;
+  const unread = notes.unread.length > 0 ? [`Not understood in this link, so left at their defaults: ${notes.unread.join(', ')}.`] : [];
+  linkNote.textContent = [...unread, ...notes.fitted.map(sentence)].join(' ');
+  linkNote.hidden = linkNote.textContent === '';
   const storageNote = byId('storage-note', HTMLParagraphElement);
   persistState(store, catalogue, (kept) => {
     storageNote.hidden = kept;

@@ -162,6 +162,23 @@ describe('embedded', () => {
     await fine.close();
   });
 
+  it('says how it fitted a 2D link to a 3D algorithm, in the full page too (traced with z = 0 without a word)', async () => {
+    const link = 'algorithm=regions&from=0,0&to=7,-3';
+    const said = 'from and to had 2 coordinates; regions takes 3: z = 0 added.';
+    for (const query of [link, `embed=1&${link}`]) {
+      const p = await openPage(query);
+      const { page } = p;
+      await page.setViewportSize({ width: 640, height: 480 });
+      await page.getByTestId('step-counter').filter({ hasText: /of 7$/ }).waitFor();
+      const note = page.getByTestId('link-note');
+      expect(await note.innerText(), query).toBe(said);
+      const box = (await note.boundingBox())!;
+      expect([box.height > 0, box.y >= 0, box.y + box.height <= 480], query).toEqual([true, true, true]);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+  });
+
   it('leaves the reason out with explain=0', async () => {
     const p = await openPage(`?embed=1&explain=0&${EXAMPLE}`);
     const { page } = p;

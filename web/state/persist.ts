@@ -4,7 +4,7 @@
  * On load a URL describing a state wins over localStorage.
  */
 import { type AppState, type Catalogue, comparableWith, defaultAlgorithm, defaultState } from './app-state.js';
-import { GCODE_URL_LIMIT, stateFromQuery, stateToQuery } from './query.js';
+import { GCODE_URL_LIMIT, type LinkNotes, stateFromQuery, stateToQuery } from './query.js';
 import type { Store } from './store.js';
 
 const STORAGE_KEY = 'voxpath.state';
@@ -32,11 +32,12 @@ export function storage(): Storage | undefined {
  * long for a link) come from the last visit, kept whole in localStorage, so
  * what was typed anywhere survives a reload.
  */
-export function loadState(catalogue: Catalogue, unread?: string[]): AppState {
+export function loadState(catalogue: Catalogue, notes?: LinkNotes): AppState {
   const address = addressAfterReload();
   // What the address says that the page cannot read (an unknown algorithm, a
-  // point with a letter in it), each at its default: said by the page.
-  const linked = stateFromQuery(address, catalogue, unread);
+  // point with a letter in it), each at its default, and its points fitted
+  // to the axes shown: said by the page.
+  const linked = stateFromQuery(address, catalogue, notes);
   // An embedded view (in a course page) shows what its link says and nothing
   // of the reader's own last visit: it drew the reader's saved points beside
   // its move and ran the reader's program instead of the sample.

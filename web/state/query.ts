@@ -21,7 +21,8 @@
  * paused, as moving content should not start by itself.
  */
 import { quoted, readDecimal } from '../core/guard.js';
-import type { OptionSpec } from '../core/types.js';
+import type { AlgorithmInfo, OptionSpec } from '../core/types.js';
+import { AXIS_NAMES, countOf } from '../format.js';
 import {
   type AppState,
   type CameraState,
@@ -38,6 +39,7 @@ import {
   defaultOptions,
   defaultProjection,
   defaultState,
+  axisChoices,
   axisCount,
   machineSpecs,
   randomLinesExperiment,
@@ -93,6 +95,14 @@ function readOptions(params: URLSearchParams, specs: readonly OptionSpec[], into
     else unread?.push(unreadKey(spec.name, text));
   }
   return into;
+}
+
+/** What a link says that the page does not take as it is, said in a note over the view. */
+export interface LinkNotes {
+  /** Keys it cannot read, each left at its default, as "tie=sideways". */
+  unread: string[];
+  /** Its points of another coordinate count than the page's axes, as fitted: "from and to had 2 coordinates; regions takes 3: z = 0 added". */
+  fitted: string[];
 }
 
 /** A key of a link the page could not read, as the page says it: "tie=sideways". */
@@ -178,6 +188,40 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
   return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodedValue(v)}`).join('&');
 }
 
+/**
+ * Why a link's points get `axes` coordinates: the only count the algorithms
+ * take ("regions takes 3"), else the count of from, which the page shows
+ * ("from has 2"), else the page's choice (nd's from=0,0,0,0: "the page shows 3").
+ */
+function axesReason(infos: readonly AlgorithmInfo[], from: OptionValue | undefined, axes: number): string {
+  if (axisChoices(infos).length === 1) return `${infos.map((a) => a.id).join(' and ')} ${infos.length === 1 ? 'takes' : 'take'} ${axes}`;
+  if (Array.isArray(from) && from.length === axes) return `from has ${axes}`;
+  return `the page shows ${axes}`;
+}
+
+/**
+ * What fitting the points of `options` to `axes` coordinates (withAxes)
+ * changes, one note per change with the points it is made to: "from and to
+ * had 2 coordinates; regions takes 3: z = 0 added", "to had 4 coordinates;
+ * from has 2: z and a dropped".
+ */
+function fittingNotes(options: Readonly<Record<string, OptionValue>>, axes: number, reason: string): string[] {
+  const axisName = (axis: number) => AXIS_NAMES[axis] ?? `coordinate ${axis + 1}`;
+  const listed = (items: string[]) => (items.length < 2 ? items.join('') : `${items.slice(0, -1).join(', ')} and ${items.at(-1)}`);
+  const pointsByChange = new Map<string, string[]>();
+  for (const [name, value] of Object.entries(options)) {
+    if (!Array.isArray(value) || value.length === axes) continue;
+    const count = value.length;
+    const change =
+      count < axes
+        ? `${listed(Array.from({ length: axes - count }, (_, i) => `${axisName(count + i)} = 0`))} added`
+        : `${listed(Array.from({ length: count - axes }, (_, i) => axisName(axes + i)))} dropped`;
+    const note = `had ${countOf(count, 'coordinate')}; ${reason}: ${change}`;
+    pointsByChange.set(note, [...(pointsByChange.get(note) ?? []), name]);
+  }
+  return [...pointsByChange].map(([note, names]) => `${listed(names)} ${note}`);
+}
+
 /** Options an algorithm takes one of at most (arc-segments' and a segmented helix's chord rule). */
 const EXCLUSIVE_OPTIONS = [['segmentLength', 'tolerance']] as const;
 
@@ -194,9 +238,11 @@ export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowd
  * parts of other modes aside: see persist.ts). Without `algorithm` (or with
  * an id the catalogue does not have) it is the default algorithm; an
  * `other` that cannot be compared with it gives way to its default partner.
+ * What the page does not take as the link says it is told in `notes`.
  */
-export function stateFromQuery(query: string, catalogue: Catalogue, unread?: string[]): AppState | undefined {
+export function stateFromQuery(query: string, catalogue: Catalogue, notes?: LinkNotes): AppState | undefined {
   const params = new URLSearchParams(query);
+  const unread = notes?.unread;
   // What the link says that the page cannot read, each left at its default (into `unread`).
   const taken = (key: string, read: boolean) => {
     const text = params.get(key);
@@ -233,9 +279,13 @@ export function stateFromQuery(query: string, catalogue: Catalogue, unread?: str
   // The page shows 2 or 3 axes (axisCount): points of another count (nd's
   // from=0,0,0,0) are fitted to the axes its form shows, as the axis control
   // fits them, rather than traced in 4D behind 3 fields (the axes' hint
-  // says the CLI and the API take them all).
+  // says the CLI and the API take them all); and said in the link's note
+  // (regions' from=0,0 was traced with z = 0 without a word).
   const axes = axisCount(infos, state.options);
-  if (Object.values(state.options).some((v) => Array.isArray(v) && v.length !== axes)) state.options = withAxes(state.options, axes);
+  if (Object.values(state.options).some((v) => Array.isArray(v) && v.length !== axes)) {
+    notes?.fitted.push(...fittingNotes(state.options, axes, axesReason(infos, state.options.from, axes)));
+    state.options = withAxes(state.options, axes);
+  }
   // A link that names any drive setting names all it uses: a cleared
   // steps/mm (to use the motor's) stays cleared. Named with a value the page
   // cannot read (stepsPerMm=80,abc), it is as if not named: the default
