@@ -177,3 +177,60 @@ describe('the algorithm picker', () => {
     await p.close();
   });
 });
+
+describe('an embedded view in a small frame', () => {
+  it('shows every playback control whole at 320x240, the buttons and the speed in one row under the scrubber', async () => {
+    // The clock's longest choice (1000× slower) and the machine-time readout too.
+    for (const query of ['algorithm=regions&from=0,0,0&to=10,7,6&step=5', 'mode=gcode', 'mode=gcode&slowdown=1000']) {
+      const p = await openPage(`?embed=1&${query}`);
+      const { page } = p;
+      await page.setViewportSize({ width: 320, height: 240 });
+      await page.getByTestId('step-counter').filter({ hasText: /of [1-9]/ }).waitFor();
+      if (query.includes('slowdown')) await page.getByTestId('machine-time').filter({ hasText: 'the program takes' }).waitFor();
+      const controls = await page.evaluate(() => {
+        // A select shows its choice cut without a scrollbar (scrollWidth is its width): it
+        // must be as wide as a select of the same type holding that choice alone
+        // (to a pixel: that one's width is rounded up to whole pixels).
+        const wholeWidth = (select: HTMLSelectElement) => {
+          const probe = document.createElement('select');
+          probe.append(new Option(select.selectedOptions[0]!.text));
+          const style = getComputedStyle(select);
+          for (const property of ['font', 'padding', 'border', 'letter-spacing', 'appearance', 'box-sizing']) probe.style.setProperty(property, style.getPropertyValue(property));
+          probe.style.position = 'absolute';
+          document.body.append(probe);
+          const width = probe.getBoundingClientRect().width;
+          probe.remove();
+          return width;
+        };
+        return [...document.querySelectorAll<HTMLElement>('.timeline input, .timeline button, .timeline select, .timeline output')]
+          .filter((e) => e.checkVisibility())
+          .map((e) => {
+            const box = e.getBoundingClientRect();
+            return {
+              name: e.id || e.dataset.testid || e.tagName,
+              box: { x: box.x, y: box.y, width: box.width, height: box.height },
+              cut: e.scrollWidth > e.clientWidth || (e instanceof HTMLSelectElement && box.width < wholeWidth(e) - 1),
+            };
+          });
+      });
+      expect(controls.map((c) => c.name), query).toEqual(expect.arrayContaining(['scrubber', 'step-counter', 'first', 'previous', 'play', 'next', 'last', 'speed']));
+      for (const { name, box, cut } of controls) {
+        const at = `${query}: ${name}`;
+        expect(cut, `${at} cut`).toBe(false);
+        expect([box.x >= 0, box.y >= 0, box.x + box.width <= 320.5, box.y + box.height <= 240.5], `${at} inside the frame`).toEqual([true, true, true, true]);
+      }
+      // Two rows: the scrubber's, then the buttons with the speed; G-code's clock
+      // has a row of its own, and the machine-time readout one under it.
+      const middles = controls.map(({ box }) => box.y + box.height / 2).sort((a, b) => a - b);
+      const rows = middles.filter((y, i) => i === 0 || y - middles[i - 1]! > 8).length;
+      expect(rows, `${query}: rows`).toBe(query.includes('slowdown') ? 4 : query.includes('gcode') ? 3 : 2);
+      const middleOf = (name: string) => controls.filter((c) => c.name === name).map(({ box }) => box.y + box.height / 2)[0]!;
+      expect(Math.abs(middleOf('speed') - middleOf('play')), `${query}: the speed beside the buttons`).toBeLessThan(4);
+      // The view still a usable part of the frame, as keyboard.test.ts asks of it (52 px were left beside the machine-time readout).
+      expect((await page.getByTestId('scene-canvas').boundingBox())!.height, `${query}: the view`).toBeGreaterThanOrEqual(70);
+      await screenshot(page, `embed-320x240-${query.includes('slowdown') ? 'machine-time' : query.includes('gcode') ? 'gcode' : 'trace'}`);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+  });
+});
