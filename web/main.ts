@@ -138,6 +138,7 @@ function run(catalogue: Catalogue): void {
     scene,
     {
       secondViewport: byId('viewport-b', HTMLDivElement),
+      legend: byId('legend', HTMLUListElement),
       view2d: byId('view-2d', HTMLInputElement),
       reset: byId('reset-view', HTMLButtonElement),
       decision3d: byId('decision-3d', HTMLInputElement),

@@ -178,6 +178,13 @@ describe('the algorithm picker', () => {
   });
 });
 
+/** Overlap of two boxes, as 'x y width height' of the shared part, or '' when they do not meet. */
+function overlapOf(a: { x: number; y: number; width: number; height: number }, b: { x: number; y: number; width: number; height: number }): string {
+  const [left, top] = [Math.max(a.x, b.x), Math.max(a.y, b.y)];
+  const [right, bottom] = [Math.min(a.x + a.width, b.x + b.width), Math.min(a.y + a.height, b.y + b.height)];
+  return right > left && bottom > top ? [left, top, right - left, bottom - top].map(Math.round).join(' ') : '';
+}
+
 describe('an embedded view in a small frame', () => {
   it('shows every playback control whole at 320x240, the buttons and the speed in one row under the scrubber', async () => {
     // The clock's longest choice (1000× slower) and the machine-time readout too.
@@ -229,6 +236,35 @@ describe('an embedded view in a small frame', () => {
       // The view still a usable part of the frame, as keyboard.test.ts asks of it (52 px were left beside the machine-time readout).
       expect((await page.getByTestId('scene-canvas').boundingBox())!.height, `${query}: the view`).toBeGreaterThanOrEqual(70);
       await screenshot(page, `embed-320x240-${query.includes('slowdown') ? 'machine-time' : query.includes('gcode') ? 'gcode' : 'trace'}`);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+  });
+
+  it('keeps the compare legend off the first view side by side at 640x480, embedded and in the page', async () => {
+    for (const query of ['?embed=1&', '?']) {
+      const p = await openPage(`${query}mode=compare&layout=side&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6&step=5`);
+      const { page } = p;
+      await page.setViewportSize({ width: 640, height: 480 });
+      await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 23' }).waitFor();
+      await expect.poll(() => page.getByTestId('scene-canvas').count()).toBe(2);
+      const legend = page.locator('#legend');
+      await legend.getByText('only greedy visits').waitFor();
+      const [legendBox, left, right] = [(await legend.boundingBox())!, ...(await Promise.all((await page.getByTestId('scene-canvas').all()).map(async (c) => (await c.boundingBox())!)))];
+      expect(overlapOf(legendBox, left!), `${query}: the legend over the first view`).toBe('');
+      expect(overlapOf(legendBox, right!), `${query}: the legend over the second view`).toBe('');
+      // Whole, inside the frame, and each of its entries in sight.
+      expect([legendBox.x >= 0, legendBox.y >= 0, legendBox.x + legendBox.width <= 640.5, legendBox.y + legendBox.height <= 480.5], `${query}: legend inside`).toEqual([true, true, true, true]);
+      for (const entry of await legend.locator('li:visible').all()) {
+        const box = (await entry.boundingBox())!;
+        expect(overlapOf(box, legendBox), `${query}: ${await entry.innerText()}`).toBe([box.x, box.y, box.width, box.height].map(Math.round).join(' '));
+      }
+      await screenshot(page, `compare-side-640x480${query.includes('embed') ? '-embed' : ''}`);
+      if (!query.includes('embed')) {
+        // Overlaid, one view has both paths: the legend is over it again.
+        await page.getByTestId('layout-overlay').check();
+        await expect.poll(() => page.evaluate(() => document.querySelector('#legend')!.parentElement!.id)).toBe('viewport');
+      }
       expect(p.problems()).toEqual([]);
       await p.close();
     }

@@ -26,6 +26,8 @@ const PORTRAIT = window.matchMedia('(orientation: portrait)');
 export interface PathViewElements {
   /** Where the second view goes (side by side). */
   secondViewport: HTMLDivElement;
+  /** The legend, over the main view; side by side, above both views. */
+  legend: HTMLElement;
   view2d: HTMLInputElement;
   reset: HTMLButtonElement;
   decision3d: HTMLInputElement;
@@ -58,6 +60,8 @@ export class PathViews {
   #detail: StepDetail | undefined;
   /** The second path's algorithm, as the legend names it. */
   #secondName = 'second';
+  /** The main view, where the legend stands but side by side. */
+  readonly #legendView: HTMLElement;
 
   /**
    * Names the second path in the legend, and side by side where its view
@@ -74,6 +78,7 @@ export class PathViews {
     this.#main = main;
     this.#e = elements;
     this.#store = store;
+    this.#legendView = elements.legend.parentElement!;
     this.events = {
       onCamera: (camera) => store.update({ camera }),
       onHandle: (name, point) => store.update({ options: { ...store.state.options, [name]: point } }),
@@ -97,6 +102,11 @@ export class PathViews {
     const { a, b, difference } = shown;
     const main = mainTrace(shown);
     const side = state.mode === 'compare' && state.layout === 'side';
+    // Side by side, the legend tells of both views and stands above them: over
+    // the first one it covered its path (in a 640 x 480 frame). Placed before
+    // the views frame their paths below what lies over them.
+    const legendPlace = side ? this.#e.secondViewport.parentElement! : this.#legendView;
+    if (this.#e.legend.parentElement !== legendPlace) legendPlace.prepend(this.#e.legend);
     this.#main.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
     if (state.mode === 'compare' && !side) this.#main.setSecond(b);
     if (side) {
