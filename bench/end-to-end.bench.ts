@@ -204,10 +204,28 @@ function native(request: TraceOptions): NativeResult {
 
 const line3d = (algorithm: string): TraceOptions => ({ algorithm, from: FROM_3D, to: TO_3D });
 
+/**
+ * Untimed rounds of the first row's two sides before any row: the code
+ * every row shares (trace(), the points' decode and copy, the boundary)
+ * goes on being optimised past the first row's WARMUP_ROUNDS, so the first
+ * row alone was timed beside V8's compilers. In one process, 12 timed
+ * rounds of bresenham3d's trace and points after 3 untimed ones took a
+ * median 6.6 to 8.0 ms the first time and 6.2 to 6.8 ms in the blocks of
+ * rounds after (rounds of 12.6 and 12.8 ms among the first); the first row
+ * read 1.77x and 1.90x in two runs of the table where the rows of the same
+ * points after it read 2.15x to 2.85x.
+ */
+const PROCESS_WARMUP_ROUNDS = 15;
+
 export default async function endToEnd(): Promise<BenchGroup> {
   const rows: BenchRow[] = [];
   const plain = pointsSide(3, () => plainBresenham3d(FROM_3D, TO_3D));
   const plainName = 'plain JS Bresenham into an Int32Array';
+  const first = await voxpathSide(line3d('bresenham3d'));
+  for (let round = 0; round < PROCESS_WARMUP_ROUNDS; round++) {
+    await first.run();
+    await plain.run();
+  }
   for (const [algorithm, goal] of [
     ['bresenham3d', 2],
     ['regions', 2],
