@@ -78,7 +78,7 @@ describe('page state in the URL query', () => {
     expect(names.filter((name) => STATE_KEYS.includes(name))).toEqual([]);
   });
 
-  it('keeps a long program out of the URL but not out of localStorage', () => {
+  it('keeps a long program out of the URL, and reads it from a query that holds it (as stored states did before long texts had keys of their own)', () => {
     const gcode = 'G1 X1\n'.repeat(GCODE_URL_LIMIT);
     const state = { ...first(), mode: 'gcode' as const, gcode };
     expect(stateToQuery(state, url)).not.toContain('gcode=');

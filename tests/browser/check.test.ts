@@ -141,4 +141,26 @@ describe('Check points (trace mode)', () => {
     expect(p.problems()).toEqual([]);
     await p.close();
   });
+
+  it('keeps long points whole over a reload right after each edit: longer, shorter, changed in the middle, short again', async () => {
+    // 20,000 points, 240,000 characters: storage keeps them in several pieces, each rewritten only when it changes.
+    const long = Array.from({ length: 20_000 }, (_, k) => `${k},${k + 1},${k + 2}`).join('\n') + '\n';
+    const p = await openPage('?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    await page.getByTestId('check-points').locator('summary').click();
+    for (const text of [long, long.slice(0, 100_000), `${long.slice(0, 50_000)}# a note\n${long.slice(50_000, 100_000)}`, '0,0,0\n1,1,1\n']) {
+      // As typed (Playwright's fill types a line break at a time, for minutes at this length).
+      await page.getByTestId('learner-points').evaluate((box: HTMLTextAreaElement, value) => {
+        box.value = value;
+        box.dispatchEvent(new Event('input', { bubbles: true }));
+      }, text);
+      // No wait: the page writes what changed as it leaves.
+      await page.reload();
+      await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+      expect(await page.getByTestId('learner-points').inputValue()).toBe(text);
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
 });

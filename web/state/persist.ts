@@ -10,6 +10,27 @@ import type { Store } from './store.js';
 const STORAGE_KEY = 'voxpath.state';
 
 /**
+ * The texts longer than a link holds (GCODE_URL_LIMIT), a program and a
+ * learner's points, are kept as typed, under keys of their own: KEY holds
+ * how many pieces of LONG_TEXT_PIECE characters the text is cut into, and
+ * KEY.0, KEY.1, ... the pieces. They are written once the text has changed
+ * and the typing has paused (WRITE_DELAY_MS), each piece only when it
+ * changed: inside the state's parts they were URL-encoded, quoted and
+ * written out again at every write, 0.1 to 0.6 s of the main thread after
+ * pasting 200,000 points (3.7 MB) and after each keystroke in them; written
+ * whole under one key, 15 to 55 ms.
+ */
+const LONG_TEXT_KEYS = { gcode: 'voxpath.gcode', learnerPoints: 'voxpath.points' } as const;
+
+/** Characters per stored piece of a long text: a keystroke rewrites one piece. */
+const LONG_TEXT_PIECE = 65_536;
+
+type LongText = keyof typeof LONG_TEXT_KEYS;
+
+/** The query key that holds each long text's field when it is short enough. */
+const LONG_TEXT_PARAMS: Record<LongText, string> = { gcode: 'gcode', learnerPoints: 'points' };
+
+/**
  * Writes are throttled to one per WRITE_DELAY_MS: playback changes the step
  * many times a second, and browsers throttle (and warn about) rapid
  * history.replaceState calls.
@@ -87,7 +108,9 @@ function addressAfterReload(): string {
  * second algorithm and the layout), gcode (the program and the machine),
  * experiment (its options). A permalink holds only its own mode's keys, so
  * one alone lost every other mode's input on a reload. The program and the
- * points are written once, in their parts, never in `shown`.
+ * points are written once, in their parts as a link holds them, never in
+ * `shown`; longer ones under LONG_TEXT_KEYS (a visit from before those keys
+ * kept them whole in their parts, which are read as before).
  */
 interface StoredParts {
   shown: string;
@@ -97,8 +120,8 @@ interface StoredParts {
   experiment: string;
 }
 
-function storedText(state: AppState, gcodeLimit: number): string {
-  const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit });
+function storedText(state: AppState): string {
+  const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: GCODE_URL_LIMIT });
   const parts: StoredParts = {
     shown: stateToQuery(state, { gcodeLimit: 0 }),
     trace: part('trace'),
@@ -129,12 +152,35 @@ function storedState(catalogue: Catalogue): AppState | undefined {
     ...trace,
     other: compare.other,
     layout: compare.layout,
-    gcode: gcode.gcode,
+    gcode: storedLongText('gcode', parts.gcode!) ?? gcode.gcode,
     machine: gcode.machine,
     slowdown: gcode.slowdown,
     experiment: experiment.experiment,
+    learnerPoints: storedLongText('learnerPoints', parts.trace!) ?? trace.learnerPoints,
   };
   return withOtherModes(catalogue, shown, new URLSearchParams(parts.shown), typed);
+}
+
+/**
+ * The long text kept under its own keys for `field`, when its stored part
+ * `query` does not hold the field (a part holds it when it is short, and
+ * held it at any length before those keys); undefined when a piece of it
+ * is missing.
+ */
+function storedLongText(field: LongText, query: string): string | undefined {
+  const store = storage();
+  if (!store || new URLSearchParams(query).has(LONG_TEXT_PARAMS[field])) return undefined;
+  const key = LONG_TEXT_KEYS[field];
+  const pieces = Array.from({ length: Number(store.getItem(key)) }, (_, i) => store.getItem(`${key}.${i}`));
+  if (pieces.length === 0 || pieces.some((piece) => piece === null)) return undefined;
+  longTextsWritten.set(field, { pieces: pieces as string[], kept: true });
+  return pieces.join('');
+}
+
+/** `text` cut into the pieces storage keeps of it (none when it is short enough for its part). */
+function longTextPieces(text: string): string[] {
+  if (text.length <= GCODE_URL_LIMIT) return [];
+  return Array.from({ length: Math.ceil(text.length / LONG_TEXT_PIECE) }, (_, i) => text.slice(i * LONG_TEXT_PIECE, (i + 1) * LONG_TEXT_PIECE));
 }
 
 /**
@@ -178,12 +224,13 @@ function urlOf(state: AppState): string {
 }
 
 /**
- * The program and the learner's points the browser's storage last refused
- * (it holds a few MB): they are not tried again, whole, until one changes,
- * since each try writes them out anew (a 1,000,000-line program took 200 to
- * 800 ms of the main thread a write, and failed every time).
+ * Each long text's field: the pieces last written under its keys (none: the
+ * field is short, kept in its part) or read from them, and whether the
+ * browser's storage took them (it holds a few MB). A refused text is not
+ * tried again until it changes: it failed at every try (a 1,000,000-line
+ * program took 200 to 800 ms of the main thread a write).
  */
-let refused: { gcode: string; points: string } | undefined;
+const longTextsWritten = new Map<LongText, { pieces: string[]; kept: boolean }>();
 
 /** Told whether the program and the points as they are now are kept in storage (persistState's `onKept`). */
 let reportKept: (kept: boolean) => void = () => {};
@@ -192,25 +239,44 @@ function write(state: AppState): void {
   window.history.replaceState(window.history.state, '', urlOf(state));
   // An embedded view (say in a course page) must not replace the reader's own last visit.
   if (state.embed) return;
-  const store = storage();
-  if (!store) return;
-  if (refused?.gcode !== state.gcode || refused.points !== state.learnerPoints) {
-    try {
-      store.setItem(STORAGE_KEY, storedText(state, Infinity));
-      refused = undefined;
-      return reportKept(true);
-    } catch {
-      refused = { gcode: state.gcode, points: state.learnerPoints };
-    }
-  }
-  // Too large: the rest of the state is kept, the texts as a link keeps them
-  // (up to GCODE_URL_LIMIT characters), and the page says what a reload loses.
   try {
-    store.setItem(STORAGE_KEY, storedText(state, GCODE_URL_LIMIT));
+    storage()?.setItem(STORAGE_KEY, storedText(state));
   } catch {
-    // Storage blocked or full even so: the URL still holds the state.
+    // Storage blocked or full: the URL still holds the state.
   }
-  reportKept(false);
+}
+
+/** Writes the program and the learner's points that are too long for their parts under their own keys, and says whether storage kept them. */
+function writeLongTexts(state: AppState): void {
+  const store = storage();
+  if (state.embed || !store) return;
+  const keptEach = (Object.keys(LONG_TEXT_KEYS) as LongText[]).map((field) => writeLongText(store, field, longTextPieces(state[field])));
+  reportKept(keptEach.every(Boolean));
+}
+
+/** Writes the pieces of `field`'s text that changed (all of them after a refusal, which left none); says whether storage kept them. */
+function writeLongText(store: Storage, field: LongText, pieces: string[]): boolean {
+  const written = longTextsWritten.get(field);
+  if (written && written.pieces.length === pieces.length && written.pieces.every((piece, i) => piece === pieces[i])) return written.kept;
+  const key = LONG_TEXT_KEYS[field];
+  const before = written?.kept ? written.pieces : [];
+  try {
+    pieces.forEach((piece, i) => {
+      if (piece !== before[i]) store.setItem(`${key}.${i}`, piece);
+    });
+    for (let i = pieces.length; i < before.length; i++) store.removeItem(`${key}.${i}`);
+    if (pieces.length > 0) store.setItem(key, String(pieces.length));
+    else store.removeItem(key);
+    longTextsWritten.set(field, { pieces, kept: true });
+    return true;
+  } catch {
+    // Too large: nothing is kept rather than part of the text, and the page
+    // says what a reload loses (the rest of the state is kept).
+    for (let i = 0; i < Math.max(pieces.length, before.length); i++) store.removeItem(`${key}.${i}`);
+    store.removeItem(key);
+    longTextsWritten.set(field, { pieces, kept: false });
+    return false;
+  }
 }
 
 /**
@@ -227,18 +293,26 @@ export function newHistoryEntry(state: AppState): void {
 }
 
 /**
- * Persists every change of `store`, throttled, and any pending change when
- * the page is hidden or closed; Back and Forward between the entries
- * newHistoryEntry made bring back their states. `onKept` is told, at every
- * write, whether the program and the learner's points fitted in storage.
+ * Persists every change of `store`, throttled (a long program or points
+ * once typing in them pauses), and any pending change when the page is
+ * hidden or closed; Back and Forward between the entries newHistoryEntry
+ * made bring back their states. `onKept` is told, at the start and whenever
+ * the program or the learner's points are written, whether they fitted in
+ * storage.
  */
 export function persistState(store: Store<AppState>, catalogue: Catalogue, onKept: (kept: boolean) => void): void {
   reportKept = onKept;
   let timer: ReturnType<typeof setTimeout> | undefined;
+  let longTextsTimer: ReturnType<typeof setTimeout> | undefined;
   const flush = () => {
     clearTimeout(timer);
     timer = undefined;
     write(store.state);
+  };
+  const flushLongTexts = () => {
+    clearTimeout(longTextsTimer);
+    longTextsTimer = undefined;
+    writeLongTexts(store.state);
   };
   window.addEventListener('popstate', () => {
     clearTimeout(timer);
@@ -246,10 +320,14 @@ export function persistState(store: Store<AppState>, catalogue: Catalogue, onKep
     const state = linkedState(catalogue, store.state);
     if (state) store.update(state);
   });
-  store.subscribe(() => {
+  store.subscribe((state, previous) => {
     timer ??= setTimeout(flush, WRITE_DELAY_MS);
+    if (state.gcode === previous.gcode && state.learnerPoints === previous.learnerPoints) return;
+    clearTimeout(longTextsTimer);
+    longTextsTimer = setTimeout(flushLongTexts, WRITE_DELAY_MS);
   });
   window.addEventListener('pagehide', () => {
+    if (longTextsTimer !== undefined) flushLongTexts();
     if (timer === undefined) return;
     const before = window.location.search;
     flush();
@@ -261,4 +339,5 @@ export function persistState(store: Store<AppState>, catalogue: Catalogue, onKep
     }
   });
   write(store.state);
+  writeLongTexts(store.state);
 }

@@ -145,18 +145,8 @@ function parseCamera(text: string | null): CameraState | null {
 }
 
 export interface QueryOptions {
-  /** Programs and learner's points longer than this many characters are left out (the URL); Infinity keeps any (localStorage). */
+  /** Programs and learner's points longer than this many characters are left out (the URL, and storage's parts: persist.ts keeps longer ones apart); Infinity keeps any. */
   gcodeLimit: number;
-}
-
-/** The last long value encoded, and its encoding: a program is encoded once, not at every write while it plays. */
-let lastLong: { value: string; encoded: string } | undefined;
-
-/** `value` as a query writes it, commas left readable; a long one (a program, a learner's points) encoded once while it stays the same. */
-function encodedValue(value: string): string {
-  if (value.length < GCODE_URL_LIMIT) return encodeURIComponent(value).replaceAll('%2C', ',');
-  if (lastLong?.value !== value) lastLong = { value, encoded: encodeURIComponent(value).replaceAll('%2C', ',') };
-  return lastLong.encoded;
 }
 
 /** Query text (without '?') for a state; commas are left readable. */
@@ -185,7 +175,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
   }
   if (state.embed) pairs.push(['embed', '1']);
   if (!state.explain) pairs.push(['explain', '0']);
-  return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodedValue(v)}`).join('&');
+  return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v).replaceAll('%2C', ',')}`).join('&');
 }
 
 /**
