@@ -1,7 +1,7 @@
 /**
  * A path's cell centers (or any flat polyline) as the scene draws an ideal
  * line: the form the core's Trace.idealLine() gives (IdealLine), for lines
- * the page makes itself, such as a second path's.
+ * voxpath makes itself, such as through a learner's points (in the worker).
  */
 import type { IdealLine } from './core/types.js';
 

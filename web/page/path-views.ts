@@ -13,7 +13,7 @@ import type { StepDetail } from '../core/types.js';
 import { decisionOverlay, decisionOverlayKinds } from '../scene/decision-overlay.js';
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
-import { type Highlight, pointBounds, type SceneCallbacks, SceneView } from '../scene/scene-view.js';
+import { type Highlight, type SceneCallbacks, SceneView } from '../scene/scene-view.js';
 import { heldPoints } from '../scene/voxel-path.js';
 import type { AppState, CameraState, Projection } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
@@ -160,8 +160,9 @@ export class PathViews {
     this.#e.legendDifference.hidden = cells.length === 0;
     // Other modes' second path and highlights are their own.
     if (!traced) return;
-    const dims = learner?.dims ?? 0;
-    this.#main.setSecond(points ? { ...heldPoints(points, dims), bounds: pointBounds(points, dims) } : undefined, PALETTE.learner, true);
+    const centers = learner?.centers;
+    // The points' box is their line's: the worker found it with the line.
+    this.#main.setSecond(points && centers ? { ...heldPoints(points, learner.dims), bounds: { min: centers.min, max: centers.max } } : undefined, PALETTE.learner, centers ?? undefined);
     this.#main.setHighlights(cells.length > 0 ? [{ cells: Int32Array.from(cells.flat()), dims: learner!.dims, colour: PALETTE.onlyFirst }] : []);
   }
 

@@ -501,11 +501,11 @@ export class SceneView {
   /**
    * A second path drawn over the first with smaller cells, in `colour` (an
    * overlaid comparison, a learner's checked points); undefined removes it.
-   * With `throughCenters`, also a line through its cells' centers in that
+   * With `centers`, also that line through its cells' centers in that
    * colour: a learner's path mostly runs inside the rule's cells, and the
    * line shows where it goes there.
    */
-  setSecond(trace: (PathPoints & Pick<DrawnTrace, 'bounds'>) | undefined, colour: string = PALETTE.second, throughCenters = false): void {
+  setSecond(trace: (PathPoints & Pick<DrawnTrace, 'bounds'>) | undefined, colour: string = PALETTE.second, centers?: IdealLine): void {
     if (this.#second) {
       this.#scene.remove(this.#second);
       this.#second.dispose();
@@ -516,9 +516,8 @@ export class SceneView {
       this.#secondLine.dispose();
       this.#secondLine = undefined;
     }
-    if (trace && throughCenters) {
-      // Only a path held whole (a learner's) is drawn through its centers.
-      this.#secondLine = new IdealPath(idealLineOf(trace.sampledPoints, trace.dims), colour);
+    if (trace && centers) {
+      this.#secondLine = new IdealPath(centers, colour);
       this.#scene.add(this.#secondLine);
     }
     if (trace) {

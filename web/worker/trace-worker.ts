@@ -18,6 +18,7 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { Trace, TraceSummary } from '../core/index.js';
+import { idealLineOf } from '../ideal-line.js';
 import { pointsEvery } from './protocol.js';
 import type { LongRequestKind, PointsSent, ProgressValue, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
@@ -170,7 +171,8 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       const check = await checkPoints(request.options, { points: read, dims });
       const drawable = read.every((c) => c === (c | 0));
       const points = drawable ? Int32Array.from(read) : null;
-      return { value: { check, points, dims }, transfer: points ? [points.buffer] : [] };
+      const centers = points ? idealLineOf(points, dims) : null;
+      return { value: { check, points, centers, dims }, transfer: points && centers ? [points.buffer, centers.xyz.buffer] : [] };
     }
     case 'free':
       // A program owns its trace: freeing the program frees both.
