@@ -163,4 +163,50 @@ describe('Check points (trace mode)', () => {
     expect(p.problems()).toEqual([]);
     await p.close();
   });
+
+  it('keeps the last-written tab\'s long points whole when two tabs edit them', async () => {
+    const query = '?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6';
+    const long = (label: string) => Array.from({ length: 20_000 }, (_, k) => `${k},${k + 1},${k + 2} # ${label}`).join('\n') + '\n';
+    const a = await openPage(query);
+    const open = async () => {
+      const page = await a.context.newPage();
+      await page.goto(a.url);
+      await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+      return page;
+    };
+    const type = async (page: Page, text: string) => {
+      await page.getByTestId('learner-points').evaluate((box: HTMLTextAreaElement, value) => {
+        box.value = value;
+        box.dispatchEvent(new Event('input', { bubbles: true }));
+      }, text);
+      // Past the page's write delay (400 ms): written, and told to the other tab.
+      await page.waitForTimeout(1_000);
+    };
+    const stored = async () => {
+      const page = await open();
+      const text = await page.getByTestId('learner-points').inputValue();
+      await page.close();
+      return text;
+    };
+    await a.page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    const first = long('a');
+    await type(a.page, first);
+    const b = await open();
+    expect(await b.getByTestId('learner-points').inputValue()).toBe(first);
+    // B shortens the points (its part holds them, their keys go); then A
+    // steps, and writes its part, which says its points are in the keys.
+    await type(b, '0,0,0\n1,1,1\n');
+    await a.page.getByTestId('next').click();
+    await a.page.waitForTimeout(1_000);
+    expect(await stored()).toBe(first);
+    // B changes the start of its points, A the end of its own: each rewrote
+    // only the pieces it changed, and the keys held B's first piece with
+    // A's others.
+    await type(b, `# B's\n${first}`);
+    await type(a.page, `${first}# A's\n`);
+    expect(await stored()).toBe(`${first}# A's\n`);
+    await b.close();
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
 });

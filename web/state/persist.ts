@@ -13,12 +13,12 @@ const STORAGE_KEY = 'voxpath.state';
  * The texts longer than a link holds (GCODE_URL_LIMIT), a program and a
  * learner's points, are kept as typed, under keys of their own: KEY holds
  * how many pieces of LONG_TEXT_PIECE characters the text is cut into, and
- * KEY.0, KEY.1, ... the pieces. They are written once the text has changed
- * and the typing has paused (WRITE_DELAY_MS), each piece only when it
- * changed: inside the state's parts they were URL-encoded, quoted and
- * written out again at every write, 0.1 to 0.6 s of the main thread after
- * pasting 200,000 points (3.7 MB) and after each keystroke in them; written
- * whole under one key, 15 to 55 ms.
+ * KEY.0, KEY.1, ... the pieces. They are written with the rest of the state
+ * (throttled, WRITE_DELAY_MS), each piece only when it changed: inside the
+ * state's parts they were URL-encoded, quoted and written out again at
+ * every write, 0.1 to 0.6 s of the main thread after pasting 200,000 points
+ * (3.7 MB) and after each keystroke in them; written whole under one key,
+ * 15 to 55 ms.
  */
 const LONG_TEXT_KEYS = { gcode: 'voxpath.gcode', learnerPoints: 'voxpath.points' } as const;
 
@@ -173,8 +173,9 @@ function storedLongText(field: LongText, query: string): string | undefined {
   const key = LONG_TEXT_KEYS[field];
   const pieces = Array.from({ length: Number(store.getItem(key)) }, (_, i) => store.getItem(`${key}.${i}`));
   if (pieces.length === 0 || pieces.some((piece) => piece === null)) return undefined;
-  longTextsWritten.set(field, { pieces: pieces as string[], kept: true });
-  return pieces.join('');
+  const text = pieces.join('');
+  longTextsWritten.set(field, { text, pieces: pieces as string[], kept: true });
+  return text;
 }
 
 /** `text` cut into the pieces storage keeps of it (none when it is short enough for its part). */
@@ -224,13 +225,17 @@ function urlOf(state: AppState): string {
 }
 
 /**
- * Each long text's field: the pieces last written under its keys (none: the
- * field is short, kept in its part) or read from them, and whether the
- * browser's storage took them (it holds a few MB). A refused text is not
- * tried again until it changes: it failed at every try (a 1,000,000-line
- * program took 200 to 800 ms of the main thread a write).
+ * Each long text's field: the text last written under its keys, its pieces
+ * (none: the field is short, kept in its part) or read from them, and
+ * whether the browser's storage took them (it holds a few MB). A refused
+ * text is not tried again until it changes: it failed at every try (a
+ * 1,000,000-line program took 200 to 800 ms of the main thread a write).
+ * Forgotten when another tab writes the field's keys (persistState's
+ * storage listener): this tab's next write then rewrites every piece, so
+ * the keys never hold pieces of two tabs' texts, nor a part that points at
+ * pieces another tab removed.
  */
-const longTextsWritten = new Map<LongText, { pieces: string[]; kept: boolean }>();
+const longTextsWritten = new Map<LongText, { text: string; pieces: string[]; kept: boolean }>();
 
 /** Told whether the program and the points as they are now are kept in storage (persistState's `onKept`). */
 let reportKept: (kept: boolean) => void = () => {};
@@ -244,43 +249,52 @@ function write(state: AppState): void {
   const url = urlOf(state);
   if (url !== `${window.location.pathname}${window.location.search}${window.location.hash}`) window.history.replaceState(window.history.state, '', url);
   // An embedded view (say in a course page) must not replace the reader's own last visit.
-  if (state.embed) return;
-  try {
-    storage()?.setItem(STORAGE_KEY, storedText(state));
-  } catch {
-    // Storage blocked or full: the URL still holds the state.
-  }
-}
-
-/** Writes the program and the learner's points that are too long for their parts under their own keys, and says whether storage kept them. */
-function writeLongTexts(state: AppState): void {
   const store = storage();
   if (state.embed || !store) return;
-  const keptEach = (Object.keys(LONG_TEXT_KEYS) as LongText[]).map((field) => writeLongText(store, field, longTextPieces(state[field])));
-  reportKept(keptEach.every(Boolean));
+  // The long texts before the part that says where they are: a page closed
+  // between the two writes leaves the text before, not a part pointing at
+  // pieces not yet written.
+  let kept = (Object.keys(LONG_TEXT_KEYS) as LongText[]).map((field) => writeLongText(store, field, state[field])).every(Boolean);
+  try {
+    store.setItem(STORAGE_KEY, storedText(state));
+  } catch {
+    // Storage blocked or full: the URL still holds the state, and the page
+    // says what a reload loses.
+    kept = false;
+  }
+  reportKept(kept);
 }
 
-/** Writes the pieces of `field`'s text that changed (all of them after a refusal, which left none); says whether storage kept them. */
-function writeLongText(store: Storage, field: LongText, pieces: string[]): boolean {
+/**
+ * Writes the pieces of `field`'s text that changed since this tab wrote or
+ * read them (all of them after a refusal, which left none, or after
+ * another tab wrote them); says whether storage kept them. Unchanged text
+ * costs nothing: the state keeps the same string until it is typed in.
+ */
+function writeLongText(store: Storage, field: LongText, text: string): boolean {
   const written = longTextsWritten.get(field);
-  if (written && written.pieces.length === pieces.length && written.pieces.every((piece, i) => piece === pieces[i])) return written.kept;
+  if (written?.text === text) return written.kept;
+  const pieces = longTextPieces(text);
   const key = LONG_TEXT_KEYS[field];
   const before = written?.kept ? written.pieces : [];
+  // Pieces past the new end: those this tab knows of, and those the keys
+  // count (another tab's, or a visit's whose part now holds a short text).
+  const stale = Math.max(before.length, Number(store.getItem(key)) || 0);
   try {
     pieces.forEach((piece, i) => {
       if (piece !== before[i]) store.setItem(`${key}.${i}`, piece);
     });
-    for (let i = pieces.length; i < before.length; i++) store.removeItem(`${key}.${i}`);
+    for (let i = pieces.length; i < stale; i++) store.removeItem(`${key}.${i}`);
     if (pieces.length > 0) store.setItem(key, String(pieces.length));
     else store.removeItem(key);
-    longTextsWritten.set(field, { pieces, kept: true });
+    longTextsWritten.set(field, { text, pieces, kept: true });
     return true;
   } catch {
     // Too large: nothing is kept rather than part of the text, and the page
     // says what a reload loses (the rest of the state is kept).
-    for (let i = 0; i < Math.max(pieces.length, before.length); i++) store.removeItem(`${key}.${i}`);
+    for (let i = 0; i < Math.max(pieces.length, stale); i++) store.removeItem(`${key}.${i}`);
     store.removeItem(key);
-    longTextsWritten.set(field, { pieces, kept: false });
+    longTextsWritten.set(field, { text, pieces, kept: false });
     return false;
   }
 }
@@ -299,41 +313,40 @@ export function newHistoryEntry(state: AppState): void {
 }
 
 /**
- * Persists every change of `store`, throttled (a long program or points
- * once typing in them pauses), and any pending change when the page is
- * hidden or closed; Back and Forward between the entries newHistoryEntry
- * made bring back their states. `onKept` is told, at the start and whenever
- * the program or the learner's points are written, whether they fitted in
- * storage.
+ * Persists every change of `store`, throttled, and any pending change when
+ * the page is hidden or closed; Back and Forward between the entries
+ * newHistoryEntry made bring back their states. `onKept` is told at every
+ * write whether the program and the learner's points fitted in storage.
  */
 export function persistState(store: Store<AppState>, catalogue: Catalogue, onKept: (kept: boolean) => void): void {
   reportKept = onKept;
   let timer: ReturnType<typeof setTimeout> | undefined;
-  let longTextsTimer: ReturnType<typeof setTimeout> | undefined;
   const flush = () => {
     clearTimeout(timer);
     timer = undefined;
     write(store.state);
   };
-  const flushLongTexts = () => {
-    clearTimeout(longTextsTimer);
-    longTextsTimer = undefined;
-    writeLongTexts(store.state);
-  };
+  // Another tab wrote a long text's keys (key null: the storage was cleared).
+  window.addEventListener('storage', ({ key, storageArea }) => {
+    if (storageArea !== storage()) return;
+    for (const [field, fieldKey] of Object.entries(LONG_TEXT_KEYS) as [LongText, string][]) {
+      if (key === null || key === fieldKey || key.startsWith(`${fieldKey}.`)) longTextsWritten.delete(field);
+    }
+  });
+  // A page hidden may be discarded without a pagehide (mobile browsers).
+  document.addEventListener('visibilitychange', () => {
+    if (document.visibilityState === 'hidden' && timer !== undefined) flush();
+  });
   window.addEventListener('popstate', () => {
     clearTimeout(timer);
     timer = undefined;
     const state = linkedState(catalogue, store.state);
     if (state) store.update(state);
   });
-  store.subscribe((state, previous) => {
+  store.subscribe(() => {
     timer ??= setTimeout(flush, WRITE_DELAY_MS);
-    if (state.gcode === previous.gcode && state.learnerPoints === previous.learnerPoints) return;
-    clearTimeout(longTextsTimer);
-    longTextsTimer = setTimeout(flushLongTexts, WRITE_DELAY_MS);
   });
   window.addEventListener('pagehide', () => {
-    if (longTextsTimer !== undefined) flushLongTexts();
     if (timer === undefined) return;
     const before = window.location.search;
     flush();
@@ -345,5 +358,4 @@ export function persistState(store: Store<AppState>, catalogue: Catalogue, onKep
     }
   });
   write(store.state);
-  writeLongTexts(store.state);
 }
