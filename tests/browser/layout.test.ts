@@ -261,6 +261,17 @@ describe('an embedded view in a small frame', () => {
       }
       await screenshot(page, `compare-side-640x480${query.includes('embed') ? '-embed' : ''}`);
       if (!query.includes('embed')) {
+        // Leaving side by side, the one view takes the whole stage at once,
+        // before the new mode's paths are drawn (the legend moves back over
+        // it only then): it stood at half the stage until then.
+        const widths = await page.evaluate(() => {
+          document.querySelector<HTMLButtonElement>('[data-testid=mode-trace]')!.click();
+          const width = (selector: string) => Math.round(document.querySelector(selector)!.getBoundingClientRect().width);
+          return { view: width('#viewport'), views: width('#views') };
+        });
+        expect(widths.view, 'the one view, leaving side by side').toBe(widths.views);
+        await page.getByTestId('mode-compare').click();
+        await expect.poll(() => page.getByTestId('scene-canvas').count()).toBe(2);
         // Overlaid, one view has both paths: the legend is over it again.
         await page.getByTestId('layout-overlay').check();
         await expect.poll(() => page.evaluate(() => document.querySelector('#legend')!.parentElement!.id)).toBe('viewport');
