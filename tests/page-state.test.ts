@@ -182,6 +182,10 @@ describe('page state in the URL query', () => {
     // A point left at its default (unreadable) is not fitted, only unread; points the page shows say nothing.
     expect(fitted('algorithm=regions&from=0,x&to=10,7,6').notes).toEqual({ unread: ['from=0,x'], fitted: [] });
     expect(fitted('algorithm=greedy&from=1,2&to=8,3').notes).toEqual({ unread: [], fitted: [] });
+    // Points the link does not give are fitted without a word: nd's default
+    // to beside from=1,2, greedy's 2D defaults beside a 3D from.
+    expect(fitted('algorithm=nd&from=1,2')).toMatchObject({ options: { from: [1, 2] }, notes: { unread: [], fitted: [] } });
+    expect(fitted('algorithm=greedy&from=0,0,0').notes.fitted).toEqual([]);
   });
 
   it("traces a link's tolerance by tolerance, without the example's segmentLength (the two were refused together)", () => {

@@ -178,13 +178,18 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
   return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v).replaceAll('%2C', ',')}`).join('&');
 }
 
+/** Items as a sentence lists them: "a", "a and b", "a, b and c". */
+function listed(items: readonly string[]): string {
+  return items.length < 2 ? items.join('') : `${items.slice(0, -1).join(', ')} and ${items.at(-1)}`;
+}
+
 /**
  * Why a link's points get `axes` coordinates: the only count the algorithms
  * take ("regions takes 3"), else the count of from, which the page shows
  * ("from has 2"), else the page's choice (nd's from=0,0,0,0: "the page shows 3").
  */
 function axesReason(infos: readonly AlgorithmInfo[], from: OptionValue | undefined, axes: number): string {
-  if (axisChoices(infos).length === 1) return `${infos.map((a) => a.id).join(' and ')} ${infos.length === 1 ? 'takes' : 'take'} ${axes}`;
+  if (axisChoices(infos).length === 1) return `${listed(infos.map((a) => a.id))} ${infos.length === 1 ? 'takes' : 'take'} ${axes}`;
   if (Array.isArray(from) && from.length === axes) return `from has ${axes}`;
   return `the page shows ${axes}`;
 }
@@ -197,7 +202,6 @@ function axesReason(infos: readonly AlgorithmInfo[], from: OptionValue | undefin
  */
 function fittingNotes(options: Readonly<Record<string, OptionValue>>, axes: number, reason: string): string[] {
   const axisName = (axis: number) => AXIS_NAMES[axis] ?? `coordinate ${axis + 1}`;
-  const listed = (items: string[]) => (items.length < 2 ? items.join('') : `${items.slice(0, -1).join(', ')} and ${items.at(-1)}`);
   const pointsByChange = new Map<string, string[]>();
   for (const [name, value] of Object.entries(options)) {
     if (!Array.isArray(value) || value.length === axes) continue;
@@ -273,7 +277,10 @@ export function stateFromQuery(query: string, catalogue: Catalogue, notes?: Link
   // (regions' from=0,0 was traced with z = 0 without a word).
   const axes = axisCount(infos, state.options);
   if (Object.values(state.options).some((v) => Array.isArray(v) && v.length !== axes)) {
-    notes?.fitted.push(...fittingNotes(state.options, axes, axesReason(infos, state.options.from, axes)));
+    // Of the points the link gives: a default point fitted too (nd's to
+    // beside a link's from=1,2) is no news of the link's.
+    const linked = Object.fromEntries(Object.entries(state.options).filter(([name]) => params.has(name)));
+    notes?.fitted.push(...fittingNotes(linked, axes, axesReason(infos, state.options.from, axes)));
     state.options = withAxes(state.options, axes);
   }
   // A link that names any drive setting names all it uses: a cleared
