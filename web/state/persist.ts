@@ -27,7 +27,7 @@ const LONG_TEXT_PIECE = 65_536;
 
 type LongText = keyof typeof LONG_TEXT_KEYS;
 
-/** The query key that holds each long text's field when it is short enough. */
+/** The query key that holds each long text's field when it is short enough, and a link's program or points. */
 const LONG_TEXT_PARAMS: Record<LongText, string> = { gcode: 'gcode', learnerPoints: 'points' };
 
 /**
@@ -193,8 +193,9 @@ function longTextPieces(text: string): string[] {
  */
 function withOtherModes(catalogue: Catalogue, described: AppState, params: URLSearchParams, typed: AppState): AppState {
   const state = { ...described };
-  if (!params.has('gcode')) state.gcode = typed.gcode;
-  if (!params.has('points')) state.learnerPoints = typed.learnerPoints;
+  for (const [field, param] of Object.entries(LONG_TEXT_PARAMS) as [LongText, string][]) {
+    if (!params.has(param)) state[field] = typed[field];
+  }
   if (state.mode !== 'gcode') Object.assign(state, { machine: typed.machine, slowdown: typed.slowdown });
   if (state.mode !== 'experiment') state.experiment = typed.experiment;
   if (state.mode === 'gcode' || (state.mode === 'experiment' && typed.algorithm === state.algorithm)) {
