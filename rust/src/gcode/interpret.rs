@@ -72,9 +72,8 @@ const FULL_CIRCLE_EPSILON_RAD: f64 = 5e-7;
 /// motion mode"). Any other code might take them as something else than a
 /// move, as G10, G28, G30, G43.1, G49 (gcode.c: axis_command =
 /// AXIS_COMMAND_TOOL_LENGTH_OFFSET, the Z is the offset) and G52 do: its
-/// line's axis words are then not a move, never a surprise one. G53 is one
-/// too here, unlike Grbl, where it is a move in machine coordinates, which
-/// voxpath does not model (the README says so).
+/// line's axis words are then not a move, never a surprise one. G53 takes
+/// them too, as a move in machine coordinates (see [`Interpreter::run_line`]).
 fn leaves_axis_words_to_motion(number: u32, minor: u32) -> bool {
     matches!(
         (number, minor),
@@ -440,6 +439,8 @@ impl Interpreter {
         let mut absolute_centers: Option<(bool, Code)> = None;
         let mut g92: Option<(bool, Code)> = None;
         let mut axis_code: Option<Code> = None;
+        // G53: this line's axis words are machine coordinates.
+        let mut machine_coordinates: Option<Code> = None;
         let mut dwell: Option<Code> = None;
         let mut inverse_time: Option<(bool, Code)> = None;
         let mut spindle: Option<(Spindle, Code)> = None;
@@ -504,6 +505,8 @@ impl Interpreter {
                 ('M', n @ (0 | 1 | 2 | 30), 0) => {
                     set_once(&mut flow, n, code, line, "program flow")?
                 }
+                // Its group (non-modal) is checked above, as G4's and G92's.
+                ('G', 53, 0) => machine_coordinates = Some(*code),
                 ('G', n, m) if axis_code.is_none() && !leaves_axis_words_to_motion(n, m) => {
                     // Said below, once the line's axis words are known.
                     axis_code = Some(*code);
@@ -656,6 +659,28 @@ impl Interpreter {
                 message: format!("{} ignored: voxpath does not model it", code.name()),
             });
         }
+        // G53, as Grbl runs it (gcode.c, NON_MODAL_ABSOLUTE_OVERRIDE): a G0
+        // or G1 move to the axis words taken as machine coordinates, past
+        // the G92 offset and the distance mode; with no axis word, nothing.
+        // voxpath has no work coordinate systems (G54 is the only one, at
+        // the machine's origin), so only the G92 offset is passed by.
+        if let Some(code) = machine_coordinates {
+            if !matches!(self.motion, Some(Motion::Rapid | Motion::Linear)) {
+                let mode = match (self.motion, self.unmodelled_motion) {
+                    (Some(m), _) => m.code().to_string(),
+                    (None, Some((c, _))) => c.name(),
+                    // G80 cancelled it.
+                    (None, None) => "none (G80)".to_string(),
+                };
+                return Err(Error::at(
+                    line,
+                    code.column,
+                    format!(
+                        "G53 moves in machine coordinates by G0 or G1 only, as in Grbl (error 30), and the motion mode is {mode}: put G0 or G1 on this line"
+                    ),
+                ));
+            }
+        }
         if let Some((code, since)) = self.unmodelled_motion {
             if let Some(w) = first_axis.or(arc_word) {
                 if motion.is_none() {
@@ -701,7 +726,9 @@ impl Interpreter {
         for (axis, w) in axes.iter().enumerate() {
             if let Some(w) = w {
                 let v = w.value * self.unit_mm();
-                to_mm[axis] = if self.incremental {
+                to_mm[axis] = if machine_coordinates.is_some() {
+                    v
+                } else if self.incremental {
                     from_mm[axis] + v
                 } else {
                     v + self.offset_mm[axis]
@@ -1128,6 +1155,55 @@ mod tests {
         (a - b).abs() < 1e-9
     }
 
+    /// G53 as Grbl 1.1 runs it (gcode.c, NON_MODAL_ABSOLUTE_OVERRIDE): a
+    /// G0 or G1 move to machine coordinates, past the G92 offset and G91;
+    /// in any other motion mode, error 30.
+    #[test]
+    fn g53_moves_in_machine_coordinates() {
+        // The G92 offset makes program X0 machine X1: G53 X4 goes to
+        // machine 4, where G0 X4 goes to 5.
+        let (it, e) = run(&["G0 X1", "G92 X0", "G53 G0 X4 Y2"]).unwrap();
+        assert!(e.motion.is_some() && e.warnings.is_empty());
+        assert_eq!(it.position_mm(), [4.0, 2.0, 0.0]);
+        let (it, _) = run(&["G0 X1", "G92 X0", "G0 X4"]).unwrap();
+        assert_eq!(it.position_mm(), [5.0, 0.0, 0.0]);
+        // Absolute in G91 too, in inches, in the modal G1, with axes not
+        // named left where they are; the line's own mode comes back after.
+        let (it, _) = run(&["G20 G91 G1 X1 Z1 F10", "G53 X2"]).unwrap();
+        assert_eq!(it.position_mm(), [50.8, 0.0, 25.4]);
+        let (it, _) = run(&["G91 G1 X1 F10", "G53 X2", "X1"]).unwrap();
+        assert_eq!(it.position_mm(), [3.0, 0.0, 0.0]);
+        // The motion mode a program starts in is G0, as in Grbl.
+        assert_eq!(run(&["G53 X5"]).unwrap().0.position_mm(), [5.0, 0.0, 0.0]);
+        // No axis word: nothing moves.
+        let (it, e) = run(&["G0 X1", "G53"]).unwrap();
+        assert!(e.motion.is_none() && e.warnings.is_empty());
+        assert_eq!(it.position_mm(), [1.0, 0.0, 0.0]);
+        // Error 30 outside G0 and G1, at G53; with G92 on its line, error 21.
+        for (lines, column, mode) in [
+            (&["G2 X1 Y1 I1", "G53 X5"][..], 1, "G2"),
+            (&["G0 X0", "G81 X1 R1 Z0", "G53 X5"][..], 1, "G81"),
+            (&["G0 X1", "G53 G3 X0 Y1 R1"][..], 1, "G3"),
+            (&["G0 X1", "G80", "G53 X5"][..], 1, "none (G80)"),
+        ] {
+            let error = run(lines).unwrap_err();
+            assert_eq!(
+                error.to_string(),
+                format!(
+                    "line {}, column {column}: G53 moves in machine coordinates by G0 or G1 only, as in Grbl (error 30), and the motion mode is {mode}: put G0 or G1 on this line",
+                    lines.len()
+                ),
+                "{lines:?}"
+            );
+        }
+        assert!(
+            run(&["G53 G92 X1"])
+                .unwrap_err()
+                .to_string()
+                .contains("non-modal")
+        );
+    }
+
     #[test]
     fn absolute_incremental_inches_and_g92() {
         let (it, _) = run(&["G0 X10 Y5", "G91 G1 X1 Y1 F100", "X1"]).unwrap();
@@ -1375,14 +1451,7 @@ mod tests {
         // G43.1 and G49 are axis commands in Grbl (gcode.c: axis_command =
         // AXIS_COMMAND_TOOL_LENGTH_OFFSET): the Z is the tool length offset.
         // Only codes with no minor were matched, so G43.1 Z-2.5 moved Z.
-        for line in [
-            "G43.1 Z-2.5",
-            "G49 Z5",
-            "G43 Z1",
-            "G10 L20 P1 X0",
-            // Not Grbl's: there a move in machine coordinates, not modelled here.
-            "G53 G0 X4",
-        ] {
+        for line in ["G43.1 Z-2.5", "G49 Z5", "G43 Z1", "G10 L20 P1 X0"] {
             let (it, e) = run(&["G0 X1", line]).unwrap();
             assert!(e.motion.is_none(), "{line} moved");
             assert_eq!(it.position_mm(), [1.0, 0.0, 0.0], "{line}");
