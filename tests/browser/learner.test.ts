@@ -439,6 +439,18 @@ function colourSpot(png: PNG, hex: string): { count: number; x: number; y: numbe
   return { count, x: sx / count / png.width, y: sy / count / png.height };
 }
 
+/**
+ * The current cell as a view that follows it shows it: some 40 pixels
+ * across (600 pixels, and 5 times its size `framedCount` in the whole
+ * path's framing), in the middle of the view.
+ */
+async function expectCurrentCellClose(page: Page, framedCount: number): Promise<void> {
+  const spot = colourSpot(await canvasPng(page), PALETTE.current);
+  expect(spot.count).toBeGreaterThan(Math.max(600, 5 * framedCount));
+  expect(Math.abs(spot.x - 0.5)).toBeLessThan(0.1);
+  expect(Math.abs(spot.y - 0.5)).toBeLessThan(0.1);
+}
+
 describe('following the current cell', () => {
   it('keeps it in the middle of the view at a readable size as it steps, toggled with F', async () => {
     // 300 steps: framed whole, a cell is a few pixels and the exit face a speck.
@@ -455,10 +467,7 @@ describe('following the current cell', () => {
     expect(await page.getByTestId('follow').isChecked()).toBe(true);
     await expect.poll(() => new URL(page.url()).searchParams.get('follow')).toBe('1');
     // Framed, a marker of a few pixels; followed, the cell itself, some 40 pixels across.
-    const near = colourSpot(await canvasPng(page), PALETTE.current);
-    expect(near.count).toBeGreaterThan(Math.max(600, 5 * framed.count));
-    expect(Math.abs(near.x - 0.5)).toBeLessThan(0.1);
-    expect(Math.abs(near.y - 0.5)).toBeLessThan(0.1);
+    await expectCurrentCellClose(page, framed.count);
     // The exit face's crossing dot grows with it.
     expect(colourSpot(await canvasPng(page), PALETTE.crossing).count).toBeGreaterThan(3 * Math.max(1, colourSpot(framedPng, PALETTE.crossing).count));
 
@@ -466,10 +475,7 @@ describe('following the current cell', () => {
     for (let i = 0; i < 20; i++) await page.keyboard.press('ArrowRight');
     await page.getByTestId('step-counter').filter({ hasText: 'Step 170 of 300' }).waitFor();
     await page.waitForTimeout(300);
-    const later = colourSpot(await canvasPng(page), PALETTE.current);
-    expect(later.count).toBeGreaterThan(Math.max(600, 5 * framed.count));
-    expect(Math.abs(later.x - 0.5)).toBeLessThan(0.1);
-    expect(Math.abs(later.y - 0.5)).toBeLessThan(0.1);
+    await expectCurrentCellClose(page, framed.count);
 
     await page.keyboard.press('f');
     await expect.poll(() => page.getByTestId('scene-canvas').first().getAttribute('data-follow')).toBe('false');
@@ -499,10 +505,7 @@ describe("a check's first difference", () => {
     await page.getByTestId('step-counter').filter({ hasText: 'Step 150 of 300' }).waitFor();
     await page.waitForTimeout(300);
     // As Follow comes close: the current cell some 40 pixels across, in the middle.
-    const near = colourSpot(await canvasPng(page), PALETTE.current);
-    expect(near.count).toBeGreaterThan(Math.max(600, 5 * framed.count));
-    expect(Math.abs(near.x - 0.5)).toBeLessThan(0.1);
-    expect(Math.abs(near.y - 0.5)).toBeLessThan(0.1);
+    await expectCurrentCellClose(page, framed.count);
     // Once: Follow stays off, and the camera stays where it is as the path steps on.
     expect(await page.getByTestId('follow').isChecked()).toBe(false);
     expect(p.problems()).toEqual([]);
