@@ -10,6 +10,14 @@ import { pointsOf } from '../helpers.js';
 
 afterAll(closeAll);
 
+/** `text` in the learner's points box as typed (Playwright's fill types a line break at a time, for minutes at the lengths here). */
+async function typeInto(page: Page, text: string): Promise<void> {
+  await page.getByTestId('learner-points').evaluate((box: HTMLTextAreaElement, value) => {
+    box.value = value;
+    box.dispatchEvent(new Event('input', { bubbles: true }));
+  }, text);
+}
+
 const MOVE = { from: [0, 0, 0], to: [10, 7, 6] };
 
 /**
@@ -150,11 +158,7 @@ describe('Check points (trace mode)', () => {
     await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
     await page.getByTestId('check-points').locator('summary').click();
     for (const text of [long, long.slice(0, 100_000), `${long.slice(0, 50_000)}# a note\n${long.slice(50_000, 100_000)}`, '0,0,0\n1,1,1\n']) {
-      // As typed (Playwright's fill types a line break at a time, for minutes at this length).
-      await page.getByTestId('learner-points').evaluate((box: HTMLTextAreaElement, value) => {
-        box.value = value;
-        box.dispatchEvent(new Event('input', { bubbles: true }));
-      }, text);
+      await typeInto(page, text);
       // No wait: the page writes what changed as it leaves.
       await page.reload();
       await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
@@ -175,10 +179,7 @@ describe('Check points (trace mode)', () => {
       return page;
     };
     const type = async (page: Page, text: string) => {
-      await page.getByTestId('learner-points').evaluate((box: HTMLTextAreaElement, value) => {
-        box.value = value;
-        box.dispatchEvent(new Event('input', { bubbles: true }));
-      }, text);
+      await typeInto(page, text);
       // Past the page's write delay (400 ms): written, and told to the other tab.
       await page.waitForTimeout(1_000);
     };
