@@ -28,6 +28,7 @@ use crate::starts::Starts;
 use serde::Serialize;
 use std::borrow::Cow;
 use std::cell::OnceCell;
+use std::mem::MaybeUninit;
 use std::rc::Rc;
 use std::sync::Arc;
 use tsify::Tsify;
@@ -1192,21 +1193,26 @@ impl Trace {
         self.points_vec(from, to)
     }
 
-    /// Points `from..to` in a new vector, its memory advised for huge pages
-    /// before the points are written ([`crate::huge_pages`]): a zeroed
-    /// allocation this large comes untouched from the kernel.
+    /// Points `from..to` in a new vector, written once, straight into its
+    /// memory (not zeroed first), which is advised for huge pages before
+    /// ([`crate::huge_pages`]): an allocation this large comes untouched
+    /// from the kernel, or reused from the allocator's own.
     fn points_vec<C: Coordinate>(&self, from: u64, to: u64) -> Vec<C> {
-        let mut out = vec![C::default(); (to - from) as usize * self.dims()];
-        crate::huge_pages::advise(&mut out);
-        self.write_points(from, &mut out);
+        let values = (to - from) as usize * self.dims();
+        let mut out = Vec::with_capacity(values);
+        let memory = &mut out.spare_capacity_mut()[..values];
+        crate::huge_pages::advise(memory);
+        self.write_points(from, memory);
+        // SAFETY: write_points has written all `values` values.
+        unsafe { out.set_len(values) };
         out
     }
 
     /// Writes the points with point indices `from..` into `out`, stride
-    /// `dims`, as many as it holds: the first from its checkpoint, the
-    /// others by the decode specialised for this trace's number of axes
-    /// ([`crate::points::decode`]), straight into `out`.
-    pub fn write_points<C: Coordinate>(&self, from: u64, out: &mut [C]) {
+    /// `dims`, as many as it holds, every value of it: the first from its
+    /// checkpoint, the others by the decode specialised for this trace's
+    /// number of axes ([`crate::points::decode`]), straight into `out`.
+    fn write_points<C: Coordinate>(&self, from: u64, out: &mut [MaybeUninit<C>]) {
         let dims = self.dims();
         assert_eq!(out.len() % dims, 0, "whole points");
         let count = (out.len() / dims) as u64;
@@ -1216,7 +1222,7 @@ impl Trace {
         let first = self.point(from);
         let (head, rest) = out.split_at_mut(dims);
         for (c, &v) in head.iter_mut().zip(first.coords()) {
-            *c = C::from_i64(v);
+            c.write(C::from_i64(v));
         }
         crate::points::decode(&first, self.step_range(from, from + count - 1), rest);
     }
@@ -1251,7 +1257,7 @@ impl Trace {
             let end = to.min(k + rows);
             let steps = self.step_range(k + head - 1, end - 1);
             let chunk = &mut buffer[..(end - k) as usize * dims];
-            p = crate::points::decode(&p, steps, &mut chunk[head as usize * dims..]);
+            p = crate::points::decode_into(&p, steps, &mut chunk[head as usize * dims..]);
             f(k, chunk);
             k = end;
             head = 0;
