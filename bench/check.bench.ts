@@ -15,10 +15,11 @@
  * after one untimed round.
  */
 import { checkPoints, readPoints, trace } from '../web/core/index.js';
+import type { TraceOptions } from '../web/core/index.js';
 import type { BenchGroup } from './types.js';
 
 const N = 1_000_000;
-const REQUEST = { algorithm: 'regions', from: [0, 0, 0], to: [N, (7 * N) / 10 + 1, (6 * N) / 10 + 3] };
+const REQUEST = { algorithm: 'regions', from: [0, 0, 0], to: [N, (7 * N) / 10 + 1, (6 * N) / 10 + 3] } satisfies TraceOptions;
 const ROUNDS = 7;
 
 /** The CSV's numbers in plain JavaScript: the first line (the header) skipped, then each run of digits, with its minus sign, one value. */

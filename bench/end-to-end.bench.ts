@@ -22,7 +22,7 @@
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { trace } from '../web/core/index.js';
-import type { TraceOptions } from '../web/core/index.js';
+import type { AlgorithmId, TraceOptions } from '../web/core/index.js';
 import { collectGarbage } from './measure.js';
 import { npmBresenham, zinglCircle } from './peers/npm.js';
 import { plainBresenham3d } from './peers/plain-bresenham3d.js';
@@ -202,7 +202,7 @@ function native(request: TraceOptions): NativeResult {
   return JSON.parse(run.stdout) as NativeResult;
 }
 
-const line3d = (algorithm: string): TraceOptions => ({ algorithm, from: FROM_3D, to: TO_3D });
+const line3d = (algorithm: AlgorithmId): TraceOptions => ({ algorithm, from: FROM_3D, to: TO_3D });
 
 /**
  * Untimed rounds of the first row's two sides before any row: the code
@@ -237,7 +237,7 @@ export default async function endToEnd(): Promise<BenchGroup> {
   ] as const) {
     rows.push(await row(`${algorithm}, 3D line, vs ${plainName}`, await voxpathSide(line3d(algorithm)), plain, goal));
   }
-  const line2d = { algorithm: 'bresenham2d', from: [0, 0], to: TO_2D };
+  const line2d = { algorithm: 'bresenham2d', from: [0, 0], to: TO_2D } satisfies TraceOptions;
   rows.push(
     await row('bresenham2d, 2D line, vs npm bresenham', await voxpathSide(line2d), pointsSide(2, () => npmBresenham([0, 0], TO_2D)), 2),
   );
@@ -252,7 +252,7 @@ export default async function endToEnd(): Promise<BenchGroup> {
     line3d('walk6'),
     { algorithm: 'arc-segments', ...CIRCLE },
     { algorithm: 'helix', method: 'segments', ...HELIX },
-  ]) {
+  ] satisfies TraceOptions[]) {
     const label = `${request.algorithm}${'method' in request ? ` (${request.method})` : ''}`;
     rows.push(await row(`${label} vs its TypeScript reference with its points`, await voxpathSide(request), await referenceSide(request), 1));
   }

@@ -70,6 +70,7 @@ const wrong = (/** @type {unknown} */ value) => /** @type {never} */ (value);
 
 const MB = 1_000_000;
 const words = (/** @type {number} */ count) => `G1${' X1'.repeat(count)}`;
+/** @type {import('../web/core/index.js').TraceOptions} */
 const line = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
 
 /** @type {[item: string, name: string, run: () => Promise<string> | string][]} */

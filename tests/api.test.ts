@@ -3,9 +3,10 @@
 // as worked out in SEED-NOTES.md (they equal Liu's Table 1 point for point).
 import { describe, expect, it } from 'vitest';
 import { algorithms, NO_VALUE, readDecision, runGcode, trace, traceToCsv, traceToJson, traceToTable, VoxpathError } from '../web/core/index.js';
+import type { TraceOptions } from '../web/core/index.js';
 import { distanceToLine, labelsOf, rejection } from './helpers.js';
 
-const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
+const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] } satisfies TraceOptions;
 
 describe('trace (regions)', () => {
   it('reproduces the discriminants and points of eq. (6)-(10)', async () => {

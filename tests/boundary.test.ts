@@ -174,6 +174,11 @@ describe('the generated boundary types', () => {
     expectFits(await randomLines({ algorithm: 'regions', count: 3 }), 'RandomLines');
   });
 
+  it('declare AlgorithmId as the union of the catalogue\'s ids, spelled from its list', () => {
+    const ids = members(declared('AlgorithmId')).map((t) => (t.isStringLiteral() ? t.value : checker.typeToString(t)));
+    expect(ids).toEqual(offered.algorithms.map((a) => a.id));
+  });
+
   it('declare one GcodeSettings field per setting of the catalogue, and no other', () => {
     const fields = checker.getPropertiesOfType(declared('GcodeSettings')).map((p) => p.name);
     expect(fields.sort()).toEqual(offered.gcodeSettings.map((s) => s.name).sort());

@@ -4,6 +4,7 @@
 import { expect as jestExpect } from 'expect';
 import { describe, expect, it } from 'vitest';
 import { checkPoints, checkToTable, readPoints, trace } from '../web/core/index.js';
+import type { TraceOptions } from '../web/core/index.js';
 import { voxpathMatchers } from '../web/core/vitest.js';
 import type { VoxpathMatchers } from '../web/core/vitest.js';
 import { bresenham3d } from '../examples/exercise-bresenham3d/bresenham3d.js';
@@ -18,7 +19,7 @@ expect.extend(voxpathMatchers);
 jestExpect.extend(voxpathMatchers);
 
 const MOVE = { from: [0, 0, 0], to: [10, 7, 6] };
-const REGIONS = { algorithm: 'regions', ...MOVE };
+const REGIONS = { algorithm: 'regions', ...MOVE } satisfies TraceOptions;
 
 /** The bresenham3d (tie = hold) path as the core traces it, as CSV text. */
 async function holdPath(): Promise<{ rows: number[][]; csv: string }> {
@@ -55,7 +56,7 @@ describe('checkPoints', () => {
   });
 
   it('reads a spreadsheet\'s quoted label column, line breaks inside it included, and counts in words', async () => {
-    const one = { algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1] };
+    const one = { algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1] } satisfies TraceOptions;
     const c = await checkPoints(one, 'x,y,z,note\n0,0,0,"start,\nthen ""up"""\n1,1,1,end\n');
     expect(c.matches).toBe(true);
     expect(checkToTable(c)).toMatch(/^regions: your 2 points follow the rule \(1 step\)\.\n/);
@@ -81,7 +82,7 @@ describe('checkPoints', () => {
       p[2] = z;
       return p;
     };
-    const request = { algorithm: 'regions', from: [0, 0, 0], to: [2, 0, 2] };
+    const request = { algorithm: 'regions', from: [0, 0, 0], to: [2, 0, 2] } satisfies TraceOptions;
     expect((await rejection(checkPoints(request, [row(0, 0), row(1, 1), row(2, 2)]))).message).toBe(
       'points: point 0: y must be a number, got an empty slot (a hole in a sparse array)',
     );

@@ -5,6 +5,7 @@
 // chord, as worked in rust/src/compare.rs.
 import { describe, expect, it } from 'vitest';
 import { compare, comparisonToCsv, trace, VoxpathError } from '../web/core/index.js';
+import type { AlgorithmId } from '../web/core/index.js';
 import { rejection, voxpath } from './helpers.js';
 
 const LINE = { from: [0, 0, 0], to: [10, 7, 6] };
@@ -173,7 +174,7 @@ describe('voxpath compare', () => {
 describe('comparisonToCsv', () => {
   it('quotes a cell holding a lone CR, as it quotes one holding LF', async () => {
     const c = await compare({ algorithms: ['regions', 'bresenham3d'], from: [0, 0, 0], to: [10, 7, 6] });
-    const header = comparisonToCsv({ ...c, a: { ...c.a, algorithm: 'a\rb' } }).split('\n')[0];
+    const header = comparisonToCsv({ ...c, a: { ...c.a, algorithm: 'a\rb' as AlgorithmId } }).split('\n')[0];
     expect(header).toBe('quantity,"a\rb",bresenham3d');
   });
 });

@@ -3,7 +3,7 @@
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { type ExperimentProgress, heapBytes, randomLines, trace, VoxpathError } from '../web/core/index.js';
+import { type ExperimentProgress, heapBytes, randomLines, type RandomLinesOptions, trace, VoxpathError } from '../web/core/index.js';
 
 const BIN = fileURLToPath(new URL('../bin/voxpath.js', import.meta.url));
 
@@ -55,7 +55,7 @@ describe('randomLines', () => {
 });
 
 describe('randomLines in slices', () => {
-  const OPTIONS = { algorithm: 'bresenham3d', count: 300, seed: 4, maxCoordinate: 500 };
+  const OPTIONS = { algorithm: 'bresenham3d', count: 300, seed: 4, maxCoordinate: 500 } satisfies RandomLinesOptions;
 
   it("reports its progress after every slice and gives the whole run's result", async () => {
     const whole = await randomLines(OPTIONS);

@@ -27,10 +27,10 @@ import {
   traceToTable,
   VoxpathError,
 } from '../web/core/index.js';
-import type { Trace } from '../web/core/index.js';
+import type { Trace, TraceOptions } from '../web/core/index.js';
 import { rejection, voxpath } from './helpers.js';
 
-const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] };
+const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] } satisfies TraceOptions;
 const MACHINE = { stepsPerMm: 80 };
 
 /** The VoxpathError `call` throws (failing the test if it returns or throws anything else). */
@@ -241,7 +241,7 @@ describe('the JS API refuses what the core would misread, naming the argument', 
   });
 
   it("checks a learner's points before the core reads them ('0x10' would be 16, dims -1 was 4294967295)", async () => {
-    const request = { algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1] };
+    const request = { algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1] } satisfies TraceOptions;
     const cases: [unknown, string, string][] = [
       [[[0n, 0n, 0n]], 'points', 'point 0: x must be a number, got 0n (a BigInt)'],
       [[['0', '0', '0x10']], 'points', 'point 0: x must be a number, got "0" (text)'],

@@ -6,6 +6,7 @@ import { describe, expect, it } from 'vitest';
 import { REFERENCES } from '../bench/reference/index.js';
 import type { ReferenceOptions } from '../bench/reference/index.js';
 import { algorithms, trace } from '../web/core/index.js';
+import type { AlgorithmId } from '../web/core/index.js';
 import { everyDirection, inPlane, PLANES } from './helpers.js';
 
 /** Every sign pattern of `magnitudes`, as moves from `from`. */
@@ -99,7 +100,7 @@ const HELICES: ReferenceOptions[] = [
   ...everyPlane([50, 0, 10], [0, -50, -40], [0, 0, 10]),
 ];
 
-const CASES: [string, ReferenceOptions[]][] = [
+const CASES: [AlgorithmId, ReferenceOptions[]][] = [
   ['regions', [...LINES_3D, ...RANDOM_3D]],
   ['bresenham3d', [...LINES_3D, ...RANDOM_3D]],
   ['nd', [...LINES_3D, ...LINES_2D, ...LINES_ND, ...RANDOM_3D, ...RANDOM_2D, ...RANDOM_ND]],

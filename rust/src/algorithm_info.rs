@@ -57,6 +57,7 @@ fn json_text<S: Serializer>(text: &&'static str, s: S) -> Result<S::Ok, S::Error
 #[serde(rename_all = "camelCase")]
 pub struct AlgorithmInfo {
     /// The id a request names (for example "regions").
+    #[tsify(type = "AlgorithmId")]
     pub id: &'static str,
     pub family: Family,
     pub example: Example,

@@ -22,6 +22,60 @@ pub const ALGORITHMS: &[&AlgorithmInfo] = &[
     &crate::arc::helix::INFO,
 ];
 
+/// The TypeScript type of an algorithm id, for the package's .d.ts
+/// (`wasm::ALGORITHM_ID_TYPE`): the union of every id of [`ALGORITHMS`],
+/// spelled from the list at compile time, so that a request's, a
+/// summary's or a catalogue entry's `algorithm` is checked by the
+/// TypeScript compiler against the ids the core runs, with no second list.
+pub const ALGORITHM_ID_TS: &str = match std::str::from_utf8(&ALGORITHM_ID_TS_BYTES) {
+    Ok(text) => text,
+    Err(_) => panic!("algorithm ids are UTF-8"),
+};
+
+const ALGORITHM_ID_TS_HEAD: &str = "/** The id of an algorithm of the catalogue, as a request names it. */\nexport type AlgorithmId = ";
+const ALGORITHM_ID_TS_TAIL: &str = ";\n";
+const ALGORITHM_ID_TS_BETWEEN: &str = " | ";
+
+/// [`ALGORITHM_ID_TS`]'s bytes: the head, each id in double quotes with
+/// [`ALGORITHM_ID_TS_BETWEEN`] between them, the tail.
+const ALGORITHM_ID_TS_BYTES: [u8; algorithm_id_ts(&mut [])] = {
+    let mut bytes = [0; algorithm_id_ts(&mut [])];
+    algorithm_id_ts(&mut bytes);
+    bytes
+};
+
+/// Writes [`ALGORITHM_ID_TS`] into `out` when it is long enough (else
+/// only counts), and returns its length: one const function for both, so
+/// the length and the text cannot disagree.
+const fn algorithm_id_ts(out: &mut [u8]) -> usize {
+    let mut len = append(out, 0, ALGORITHM_ID_TS_HEAD);
+    let mut i = 0;
+    while i < ALGORITHMS.len() {
+        if i > 0 {
+            len = append(out, len, ALGORITHM_ID_TS_BETWEEN);
+        }
+        len = append(out, len, "\"");
+        len = append(out, len, ALGORITHMS[i].id);
+        len = append(out, len, "\"");
+        i += 1;
+    }
+    append(out, len, ALGORITHM_ID_TS_TAIL)
+}
+
+/// Copies `text` into `out` at `at` when it fits (counting only, for an
+/// `out` too short), and returns where it ends.
+const fn append(out: &mut [u8], at: usize, text: &str) -> usize {
+    let bytes = text.as_bytes();
+    if at + bytes.len() <= out.len() {
+        let mut i = 0;
+        while i < bytes.len() {
+            out[at + i] = bytes[i];
+            i += 1;
+        }
+    }
+    at + bytes.len()
+}
+
 /// The algorithm with this id, or an error listing the known ids. It is the
 /// [`crate::algorithm_info::Find`] handed to every algorithm's `trace`.
 pub fn find(id: &str) -> Result<&'static AlgorithmInfo, Error> {

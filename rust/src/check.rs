@@ -908,6 +908,7 @@ pub struct AroundRow {
 #[derive(Serialize, Tsify, Clone, Debug, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct AlsoMatch {
+    #[tsify(type = "AlgorithmId")]
     pub algorithm: String,
     /// The options that choose this rule among the algorithm's variants
     /// (those with a fixed set of values); an option whose every value
@@ -929,6 +930,7 @@ pub struct AlsoMatch {
 pub struct Check {
     /// The learner's points are the rule's path, point for point.
     pub matches: bool,
+    #[tsify(type = "AlgorithmId")]
     pub algorithm: String,
     /// Steps of the rule's path.
     pub steps: u64,

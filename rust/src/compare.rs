@@ -45,6 +45,7 @@ pub struct Comparison {
 #[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct TraceDigest {
+    #[tsify(type = "AlgorithmId")]
     pub algorithm: String,
     pub steps: u64,
     pub start: Vec<i64>,
@@ -281,7 +282,7 @@ fn pick_algorithms(value: Option<Value>) -> Result<[&'static AlgorithmInfo; 2], 
 #[derive(Serialize, Tsify)]
 pub struct CompareOptions {
     /// The two catalogue ids (for example ["circle", "arc-segments"]).
-    #[tsify(type = "readonly [string, string]")]
+    #[tsify(type = "readonly [AlgorithmId, AlgorithmId]")]
     pub algorithms: [String; 2],
     #[serde(flatten)]
     #[tsify(type = "Record<string, unknown>")]

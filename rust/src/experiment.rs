@@ -124,6 +124,7 @@ impl MeasureSummary {
 #[serde(rename_all = "camelCase")]
 pub struct RandomLines {
     pub experiment: &'static str,
+    #[tsify(type = "AlgorithmId")]
     pub algorithm: String,
     pub seed: u64,
     pub max_coordinate: i64,
@@ -141,6 +142,7 @@ pub struct RandomLines {
 #[derive(Serialize, Tsify)]
 pub struct RandomLinesOptions {
     /// Catalogue id of the algorithm that traces every line (for example "regions").
+    #[tsify(type = "AlgorithmId")]
     pub algorithm: String,
     #[serde(flatten)]
     #[tsify(type = "Record<string, unknown>")]

@@ -145,6 +145,7 @@ pub const fn tie_option(default: &'static str) -> OptionSpec {
 #[serde(rename_all = "camelCase")]
 pub struct TraceOptions {
     /// Algorithm id, as the catalogue lists it (for example "regions").
+    #[tsify(type = "AlgorithmId")]
     pub algorithm: String,
     /// Start point, grid units (2 to 6 axes, |coordinate| <= 2^30).
     #[tsify(type = "ArrayLike<number>")]

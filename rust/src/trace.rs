@@ -1571,6 +1571,7 @@ impl Trace {
 #[serde(rename_all = "camelCase")]
 pub struct TraceSummary<'a> {
     /// The catalogue id of the algorithm that traced it.
+    #[tsify(type = "AlgorithmId")]
     pub algorithm: &'a str,
     /// Axes per point: the stride of the points array.
     pub dims: usize,

@@ -70,6 +70,11 @@ fn to_js_text_error(error: &Error, field: &str) -> JsValue {
 }
 
 /// Runs one trace. `request_json` is `{"algorithm": id, ...options}`.
+/// The union type of every algorithm id, which the tsify types name as
+/// `AlgorithmId` (see [`crate::algorithms::ALGORITHM_ID_TS`]).
+#[wasm_bindgen(typescript_custom_section)]
+const ALGORITHM_ID_TYPE: &str = crate::algorithms::ALGORITHM_ID_TS;
+
 #[wasm_bindgen]
 pub fn trace(request_json: &str) -> Result<TraceHandle, JsValue> {
     crate::algorithms::trace_json(request_json)

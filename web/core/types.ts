@@ -24,6 +24,7 @@ export type GridPoint = ArrayLike<number>;
  * API's names.
  */
 export type {
+  AlgorithmId,
   AlgorithmInfo,
   ArcCandidate,
   ArcCandidates,

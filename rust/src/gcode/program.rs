@@ -141,6 +141,10 @@ const fn same_name(a: &str, b: &str) -> bool {
 /// (the catalogue's `gcodeSettings`, from which the CLI's flags, the page's
 /// machine form, its URL keys and their docs are made). The field is named
 /// as the spec, which the compiler checks.
+/// An algorithm id as a setting holds it: a String, which tsify writes as
+/// the generated union of ids (`algorithms::ALGORITHM_ID_TS`) by this name.
+type AlgorithmId = String;
+
 macro_rules! settings {
     ($($name:ident: $ty:ty = $spec:expr;)*) => {
         /// How a G-code program is run, as the JS API takes it. Every field is
@@ -171,8 +175,8 @@ settings! {
     stepAngle: PerAxis = STEP_ANGLE;
     microsteps: PerAxis = MICROSTEPS;
     pitch: PerAxis = PITCH;
-    lineAlgorithm: String = PROGRAM_LINE_ALGORITHM;
-    arcAlgorithm: String = ARC_ALGORITHM;
+    lineAlgorithm: AlgorithmId = PROGRAM_LINE_ALGORITHM;
+    arcAlgorithm: AlgorithmId = ARC_ALGORITHM;
     maxSteps: u64 = MAX_STEPS;
     acceleration: PerAxis = planner::ACCELERATION;
     maxRate: PerAxis = planner::MAX_RATE;
@@ -347,6 +351,7 @@ pub struct Move {
     pub first_segment: usize,
     pub segments: usize,
     /// The catalogue algorithm that stepped it.
+    #[tsify(type = "AlgorithmId")]
     pub algorithm: &'static str,
     pub arc: Option<ArcInfo>,
     /// What the move is, in a sentence (it also starts its segments' notes).
@@ -373,7 +378,9 @@ pub struct ProgramInfo {
     pub lines: u32,
     pub steps: u64,
     pub steps_per_mm: [f64; MACHINE_AXES],
+    #[tsify(type = "AlgorithmId")]
     pub line_algorithm: &'static str,
+    #[tsify(type = "AlgorithmId")]
     pub arc_algorithm: &'static str,
     /// How many moves ran; each is read on demand ([`Program::moves`], and
     /// in the JS API `move(i)` and `movesInRange(from, to)`), so a long
