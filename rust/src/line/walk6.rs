@@ -428,6 +428,10 @@ impl Walk6 {
                 (true, true) => [first, second, step_m, step_m],
             }
         });
+        // What a round adds to gap_pM and gap_qM: M's face is crossed
+        // every round (- 2|Δp|), p's when p steps (+ 2|ΔM|); likewise q.
+        let (pm_moved, pm_stayed) = (2 * m - 2 * mp, -2 * mp);
+        let (qm_moved, qm_stayed) = (2 * m - 2 * mq, -2 * mq);
         let base = out.as_mut_ptr();
         while round < rounds && written + 4 <= out.len() {
             let steps_p = gap_pm < bias_pm;
@@ -439,12 +443,16 @@ impl Walk6 {
             // `out`, which this call borrows mutably.
             unsafe { base.add(written).cast::<[Step; 4]>().write_unaligned(codes) };
             written += 1 + usize::from(steps_p) + usize::from(steps_q);
-            let (dp, dq) = (i64::from(steps_p), i64::from(steps_q));
-            gap_pm += dp * 2 * m - 2 * mp;
-            gap_qm += dq * 2 * m - 2 * mq;
-            gap_pq += dp * 2 * mq - dq * 2 * mp;
-            moved_p += dp;
-            moved_q += dq;
+            // Each gap's next value by a select of two constants: the
+            // gaps are the loop's chains of dependent instructions, and a
+            // select is one instruction where a multiply by the 0-or-1
+            // decision took three cycles.
+            gap_pm += if steps_p { pm_moved } else { pm_stayed };
+            gap_qm += if steps_q { qm_moved } else { qm_stayed };
+            gap_pq += if steps_p { 2 * mq } else { 0 };
+            gap_pq -= if steps_q { 2 * mp } else { 0 };
+            moved_p += i64::from(steps_p);
+            moved_q += i64::from(steps_q);
             round += 1;
         }
         self.crossed[major] += round as i64;
