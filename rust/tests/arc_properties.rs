@@ -552,6 +552,48 @@ fn the_dry_run_counts_every_small_circle_and_arc_exactly() {
 }
 
 #[test]
+fn the_recording_loops_of_every_small_circle_and_arc_take_the_rule_s_steps() {
+    // The loops watch for the ray through the end only in the octants a
+    // step can cross it from, which for radii below 5 is every octant
+    // (r = 1 steps a quarter turn at a time): every start within 8 of the
+    // center, as a full circle and a turn more, and as arcs ending near
+    // each 22.5° ray, both ways round, circle and helix.
+    for u in -8i64..=8 {
+        for v in -8i64..=8 {
+            if [u, v] == [0, 0] {
+                continue;
+            }
+            let r = ((u * u + v * v) as f64).sqrt();
+            let mut ends = vec![[u, v], [u, v]];
+            for k in 0..16 {
+                let angle = k as f64 * PI / 8.0 + 0.01;
+                ends.push([
+                    (r * angle.cos()).round() as i64,
+                    (r * angle.sin()).round() as i64,
+                ]);
+            }
+            for (i, end) in ends.into_iter().enumerate() {
+                if end == [0, 0] {
+                    continue;
+                }
+                for ccw in [true, false] {
+                    let arc = Arc {
+                        plane: 0,
+                        ccw,
+                        center: [0, 0, 0],
+                        start: [u, v],
+                        end,
+                        turns: u64::from(i == 1),
+                    };
+                    check_fills(&arc.request("circle", 0, ""), TiePolicy::Advance, 7).unwrap();
+                    check_fills(&arc.request("helix", 5, ""), TiePolicy::Advance, 7).unwrap();
+                }
+            }
+        }
+    }
+}
+
+#[test]
 fn a_full_circle_of_radius_two_to_the_twenty_near_the_limit() {
     // r = 2^20 around a center whose circle touches x = 2^30 - 1 and
     // y = -(2^30 - 1): about 4 sqrt(2) r = 5.9 million steps.

@@ -643,15 +643,44 @@ impl SaleemCircle {
     #[inline(always)]
     fn octant_fill(&mut self, out: &mut [Step], weave: &mut impl FnMut() -> (bool, u16)) -> usize {
         match octant_ahead(self.pos) {
-            Some(1) => self.octant_run::<1>(out, weave),
-            Some(2) => self.octant_run::<2>(out, weave),
-            Some(3) => self.octant_run::<3>(out, weave),
-            Some(4) => self.octant_run::<4>(out, weave),
-            Some(5) => self.octant_run::<5>(out, weave),
-            Some(6) => self.octant_run::<6>(out, weave),
-            Some(7) => self.octant_run::<7>(out, weave),
-            Some(8) => self.octant_run::<8>(out, weave),
+            Some(1) => self.octant_run_watching::<1>(out, weave),
+            Some(2) => self.octant_run_watching::<2>(out, weave),
+            Some(3) => self.octant_run_watching::<3>(out, weave),
+            Some(4) => self.octant_run_watching::<4>(out, weave),
+            Some(5) => self.octant_run_watching::<5>(out, weave),
+            Some(6) => self.octant_run_watching::<6>(out, weave),
+            Some(7) => self.octant_run_watching::<7>(out, weave),
+            Some(8) => self.octant_run_watching::<8>(out, weave),
             _ => unreachable!("the circle never passes through its center"),
+        }
+    }
+
+    /// [`Self::octant_run`] in octant `K`, watching for the ray through the
+    /// end only where a step of this octant can reach it: elsewhere the
+    /// loop carries no side at all (its update and test took the circle's
+    /// native trace from 2.65 to 3.46 ms, r = 300,000).
+    ///
+    /// Every point of the loop is within a cell of the circle, |p|² >=
+    /// r² - r, so |p| >= r - 1, and a step moves at most one unit per axis
+    /// (√2). From radius 5 on, a step therefore turns the point by less
+    /// than asin(√2 / 4) < 21°: from octant K (angles [45°(K-1), 45°K)) it
+    /// reaches octant K or the next, and can cross the ray only if the
+    /// end's direction is in one of them. Smaller circles (r = 1 steps a
+    /// quarter turn at a time) always watch.
+    #[inline(always)]
+    fn octant_run_watching<const K: u8>(
+        &mut self,
+        out: &mut [Step],
+        weave: &mut impl FnMut() -> (bool, u16),
+    ) -> usize {
+        const SMALLEST_UNWATCHED_RADIUS_SQ: i64 = 5 * 5;
+        if self.radius_sq < SMALLEST_UNWATCHED_RADIUS_SQ
+            || in_octant(K, self.end)
+            || in_octant(K % 8 + 1, self.end)
+        {
+            self.octant_run::<K, true>(out, weave)
+        } else {
+            self.octant_run::<K, false>(out, weave)
         }
     }
 
@@ -759,7 +788,7 @@ impl SaleemCircle {
     /// residuals, a dot product or a cross product of such points (debug
     /// builds check each decision against [`candidates`] from scratch).
     #[inline(always)]
-    fn octant_run<const K: u8>(
+    fn octant_run<const K: u8, const WATCH_RAY: bool>(
         &mut self,
         out: &mut [Step],
         weave: &mut impl FnMut() -> (bool, u16),
@@ -796,7 +825,7 @@ impl SaleemCircle {
             ];
             let next_side = side + side_fast + if moves { side_slow } else { 0 };
             let (arc, bits) = weave();
-            if arc && side < 0 && next_side >= 0 {
+            if WATCH_RAY && arc && side < 0 && next_side >= 0 {
                 at_ray = Some(bits);
                 break;
             }
