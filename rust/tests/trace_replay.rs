@@ -226,6 +226,42 @@ fn nd_columns_are_its_axes() {
     }
 }
 
+/// greedy, walk6 and dda too have a column per axis the move has, between
+/// their other columns: a 3-axis greedy line had distSqA to distSqC, which
+/// no step fills. At the first step of a move on every axis each column
+/// holds a value, so each lands in its own column.
+#[test]
+fn per_axis_columns_are_the_moves_axes() {
+    for (algorithm, per_axis, before, after) in [
+        ("greedy", "distSq", &[][..], &["axis", "tie"][..]),
+        ("walk6", "t", &["crosses"][..], &["tie"][..]),
+        ("dda", "acc", &[][..], &["guard"][..]),
+    ] {
+        for dims in 2..=6 {
+            let from = vec![0; dims];
+            let to: Vec<i64> = (0..dims as i64).map(|a| 9 - 2 * a).collect();
+            let t = common::trace(&format!(
+                r#"{{"algorithm":"{algorithm}","from":{from:?},"to":{to:?}}}"#
+            ));
+            let names: Vec<&str> = t.columns().iter().map(|c| c.name).collect();
+            let axes = ["X", "Y", "Z", "A", "B", "C"][..dims]
+                .iter()
+                .map(|axis| format!("{per_axis}{axis}"));
+            let expected: Vec<String> = before
+                .iter()
+                .map(|name| name.to_string())
+                .chain(axes)
+                .chain(after.iter().map(|name| name.to_string()))
+                .collect();
+            assert_eq!(names, expected, "{algorithm}, {dims} axes");
+            let first = t.decisions(0, 1);
+            for (name, column) in names.iter().zip(&first.columns) {
+                assert!(!column[0].is_nan(), "{algorithm}, {dims} axes: {name}");
+            }
+        }
+    }
+}
+
 #[test]
 fn a_zero_length_line_is_an_empty_trace() {
     let trace =

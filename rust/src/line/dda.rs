@@ -84,15 +84,10 @@ impl Decision for DdaWhy {
     /// Rounding has no tie rule to apply: floor(acc + 0.5) takes halves up.
     const NEVER_TIES: bool = true;
 
+    /// In the layout of its move's columns (`columns_of_axes!`): its axes only.
     fn write(&self, row: &mut [f64]) {
-        for axis in 0..MAX_AXES {
-            row[axis] = if axis < self.dims {
-                self.acc[axis]
-            } else {
-                f64::NAN
-            };
-        }
-        row[MAX_AXES] = Guard::of_step(&self.guards[..self.dims]) as u8 as f64;
+        row[..self.dims].copy_from_slice(&self.acc[..self.dims]);
+        row[self.dims] = Guard::of_step(&self.guards[..self.dims]) as u8 as f64;
     }
 
     fn explain(&self, _from: &Point, step: Step) -> String {
@@ -198,6 +193,10 @@ impl Stepper for Dda {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    fn columns(&self) -> &'static [Column] {
+        columns_of_axes!(DdaWhy, 0, self.mirror.dims())
     }
 
     fn setup_note(&self) -> String {

@@ -105,12 +105,13 @@ impl Decision for GreedyWhy {
         ),
     ];
 
+    /// In the layout of its move's columns (`columns_of_axes!`): its axes only.
     fn write(&self, row: &mut [f64]) {
-        for axis in 0..MAX_AXES {
+        for axis in 0..self.dims {
             row[axis] = self.candidates[axis].map_or(f64::NAN, |v| v as f64);
         }
-        row[MAX_AXES] = self.chosen as f64;
-        row[MAX_AXES + 1] = self.tie as u8 as f64;
+        row[self.dims] = self.chosen as f64;
+        row[self.dims + 1] = self.tie as u8 as f64;
     }
 
     fn is_tie(&self) -> bool {
@@ -220,6 +221,10 @@ impl Stepper for Greedy {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    fn columns(&self) -> &'static [Column] {
+        columns_of_axes!(GreedyWhy, 0, self.mirror.dims())
     }
 
     fn setup_note(&self) -> String {

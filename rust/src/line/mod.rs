@@ -3,6 +3,30 @@
 //! mirroring of negative directions, Wang's GCD reduction, the order in which
 //! tied axes go, and the finish rule of the algorithms that can drift.
 
+/// The columns of a move of `$dims` axes, for a decision type `$why` whose
+/// [`Decision::COLUMNS`](crate::trace::Decision::COLUMNS) (the catalogue's
+/// six-axis list) holds one column per axis from index `$first`: those of
+/// the axes the move has, with the columns before and after them, so that a
+/// trace carries no column its steps never fill (a 3-axis greedy line had
+/// distSqA to distSqC, empty at every step). One list per axis count, made
+/// at compile time; defined before the modules so that they can use it.
+macro_rules! columns_of_axes {
+    ($why:ty, $first:expr, $dims:expr) => {{
+        use crate::line::without_axes_past;
+        use crate::trace::{Column, Decision};
+        const ALL: &[Column] = <$why as Decision>::COLUMNS;
+        const BY_DIMS: [&[Column]; crate::grid::MAX_AXES] = [
+            &without_axes_past::<{ ALL.len() - 5 }>(ALL, $first),
+            &without_axes_past::<{ ALL.len() - 4 }>(ALL, $first),
+            &without_axes_past::<{ ALL.len() - 3 }>(ALL, $first),
+            &without_axes_past::<{ ALL.len() - 2 }>(ALL, $first),
+            &without_axes_past::<{ ALL.len() - 1 }>(ALL, $first),
+            &without_axes_past::<{ ALL.len() }>(ALL, $first),
+        ];
+        BY_DIMS[$dims - 1]
+    }};
+}
+
 pub mod bresenham2d;
 pub mod bresenham3d;
 pub mod dda;
@@ -19,7 +43,7 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, gcd};
 use crate::ideal::IdealPath;
 use crate::request::{OptionKind, OptionSpec, Request, TiePolicy};
-use crate::trace::{DeviationBound, Stepper, Trace, TraceBuilder};
+use crate::trace::{Column, DeviationBound, Stepper, Trace, TraceBuilder};
 use std::cmp::Ordering;
 
 /// Traces one straight move with the stepper `make` builds from the request's
@@ -37,6 +61,21 @@ pub fn trace_line<S: Stepper>(
     let bound = stepper.deviation_bound();
     builder.run(stepper, IdealPath::Line { from, to })?;
     Ok(builder.finish(info.id).with_deviation_bound(bound))
+}
+
+/// The first `N` columns of `all` once the per-axis columns
+/// `all[first..first + MAX_AXES]` of the axes past the move's are left out
+/// (`all.len() - N` of them): see `columns_of_axes!`.
+pub const fn without_axes_past<const N: usize>(all: &[Column], first: usize) -> [Column; N] {
+    let absent = all.len() - N;
+    let after_axes = first + MAX_AXES - absent;
+    let mut out = [all[0]; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = all[if i < after_axes { i } else { i + absent }];
+        i += 1;
+    }
+    out
 }
 
 /// The bound of the rules that keep every passive coordinate within half a

@@ -120,12 +120,13 @@ impl Decision for Walk6Why {
         ),
     ];
 
+    /// In the layout of its move's columns (`columns_of_axes!`): its axes only.
     fn write(&self, row: &mut [f64]) {
         row[0] = self.crossed as f64;
-        for axis in 0..MAX_AXES {
+        for axis in 0..self.dims {
             row[1 + axis] = self.crossings[axis].map_or(f64::NAN, Crossing::value);
         }
-        row[1 + MAX_AXES] = self.tie as u8 as f64;
+        row[1 + self.dims] = self.tie as u8 as f64;
     }
 
     fn is_tie(&self) -> bool {
@@ -256,6 +257,10 @@ impl Stepper for Walk6 {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    fn columns(&self) -> &'static [Column] {
+        columns_of_axes!(Walk6Why, 1, self.mirror.dims())
     }
 
     /// Every cell the walk visits contains a point of the segment, so its
