@@ -721,6 +721,17 @@ impl<'t> Reader<'t> {
     /// The whole number after N or O (its part before any point).
     fn whole_number(&mut self, letter: char, column: u32) -> Read<u32> {
         self.skip_blanks();
+        // Said at the sign: `N-1` has a number after its letter, and
+        // "N has no number after it" sent the reader looking for none.
+        if let Some(sign @ (b'-' | b'+')) = self.peek() {
+            return Err(problem(
+                self.column,
+                format!(
+                    "malformed number: {letter} takes a whole number without a sign (a line or program number), found '{}'",
+                    sign as char
+                ),
+            ));
+        }
         let (number_column, number, _) = self.number_after(letter, column)?;
         let number = number.text();
         let text = number.as_ref();
@@ -993,6 +1004,21 @@ mod tests {
                 "N (a line or program number) must come before the codes of its line".to_string()
             )]
         );
+        // A signed line or program number is named at its sign, not as a
+        // letter with no number after it.
+        for (line, column, sign) in [("N-1 G1 X1", 2, '-'), ("O +7", 3, '+')] {
+            let letter = &line[..1];
+            assert_eq!(
+                errors(line),
+                [(
+                    column,
+                    format!(
+                        "malformed number: {letter} takes a whole number without a sign (a line or program number), found '{sign}'"
+                    )
+                )],
+                "{line}"
+            );
+        }
     }
 
     #[test]
