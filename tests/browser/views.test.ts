@@ -8,6 +8,8 @@
 //   figure and the 3D overlay all draw from, and so does the step's reason
 //   under the timeline where it shows (a narrow window); compared, the
 //   second path's reason is the one request more.
+// - A trace the worker answers is held there until the page frees it: a
+//   comparison whose other side the core refused frees the side it traced.
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
 import { closeAll, openPage } from './harness.js';
@@ -18,6 +20,8 @@ declare global {
   interface Window {
     /** The kind of each request the page posted to a worker ('cancel' for a cancellation), in order. */
     workerRequests: string[];
+    /** The ids of the traces a worker holds for the page: traced, and not yet freed. */
+    tracesHeld: Set<number>;
   }
 }
 
@@ -30,6 +34,33 @@ function recordWorkerRequests(): void {
     window.workerRequests.push(request?.kind ?? 'cancel');
     return post.call(this, message, ...rest);
   } as Worker['postMessage'];
+}
+
+/**
+ * Installed before the page's scripts: keeps window.tracesHeld, the traces a
+ * worker answered (it holds those until the page frees them) less those the
+ * page freed. A refused trace is held by no one.
+ */
+function recordTracesHeld(): void {
+  window.tracesHeld = new Set();
+  const traceIdOf = new Map<number, number>();
+  const post = Worker.prototype.postMessage;
+  Worker.prototype.postMessage = function (this: Worker, message: unknown, ...rest: [StructuredSerializeOptions?]) {
+    const { id, request } = message as { id: number; request?: { kind: string; traceId?: number } };
+    if (request?.kind === 'trace') traceIdOf.set(id, request.traceId!);
+    if (request?.kind === 'free') window.tracesHeld.delete(request.traceId!);
+    return post.call(this, message, ...rest);
+  } as Worker['postMessage'];
+  const PageWorker = window.Worker;
+  window.Worker = class extends PageWorker {
+    constructor(...args: ConstructorParameters<typeof Worker>) {
+      super(...args);
+      this.addEventListener('message', (event: MessageEvent<{ id: number; ok?: boolean }>) => {
+        const traceId = traceIdOf.get(event.data.id);
+        if (traceId !== undefined && event.data.ok) window.tracesHeld.add(traceId);
+      });
+    }
+  };
 }
 
 /** The requests posted since the last call. */
@@ -126,6 +157,23 @@ describe('the page and its worker', () => {
     await expect.poll(() => reason.innerText()).toMatch(/^regions, step 4: .*\ngreedy, step 4: /s);
     await settled(page);
     expect((await takeRequests(page)).sort()).toEqual(['stepDetail', 'stepDetail']);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('frees the traced side of a comparison whose other side the core refused', async () => {
+    // helix against circle on the helix's own move, which travels along z:
+    // the circle refuses it. The helix's trace was kept in the worker for
+    // good, one more at every change the circle refused.
+    const p = await openPage('?mode=compare&algorithm=helix&other=circle&from=10,0,0&to=10,0,24&center=0,0,0', { initScript: recordTracesHeld });
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'No path' }).waitFor();
+    await page.getByTestId('trace-status').filter({ hasText: /^Not traced/ }).waitFor();
+    // A planar move both trace: the comparison shown is all the worker holds.
+    await page.getByTestId('input-to-z').fill('0');
+    await page.getByTestId('metrics-table').waitFor();
+    await settled(page);
+    expect(await page.evaluate(() => window.tracesHeld.size)).toBe(2);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -38,7 +38,7 @@ import type { Store } from '../state/store.js';
 import type { StepReason } from '../timeline/step-reason.js';
 import type { TimeViews } from './time-views.js';
 import type { Timeline } from '../timeline/timeline.js';
-import { Cancelled, CoreCrash, InputRejected, type Running, type TraceClient } from '../worker/client.js';
+import { Cancelled, CoreCrash, InputRejected, type MeasuredTrace, type Running, type TraceClient } from '../worker/client.js';
 import type { LearnerCheck, LineSteps } from '../worker/protocol.js';
 import { hideAlert, showAlert } from './alert.js';
 import type { Exports } from './export.js';
@@ -60,6 +60,25 @@ const PROGRESS_EVERY_MS = 250;
 
 /** Quiet time after the last keystroke before re-tracing, ms. */
 const RETRACE_DELAY_MS = 250;
+
+/**
+ * Both sides of a comparison. The worker holds each trace it answers until
+ * the page frees it, so when the core refuses one side (a helix's move,
+ * which no circle takes) the other side, traced all the same, is freed here:
+ * nothing else held it, and each refused change kept one more in the worker.
+ */
+async function traceBoth(client: TraceClient, [first, second]: readonly [TraceOptions, TraceOptions]): Promise<[MeasuredTrace, MeasuredTrace]> {
+  const [a, b] = await Promise.allSettled([client.trace(first), client.trace(second)]);
+  if (a.status === 'rejected') {
+    if (b.status === 'fulfilled') b.value.free();
+    throw a.reason;
+  }
+  if (b.status === 'rejected') {
+    a.value.free();
+    throw b.reason;
+  }
+  return [a.value, b.value];
+}
 
 /** Everything the orchestrator drives. */
 export interface PageParts {
@@ -277,7 +296,7 @@ export class Orchestrator {
         next = { a: await p.client.trace(ruleOptions) };
       } else if (state.mode === 'compare') {
         const [infoA, infoB] = tracedAlgorithms(state, p.catalogue.algorithms);
-        const [a, b] = await Promise.all([p.client.trace(traceOptions(state, infoA!)), p.client.trace(traceOptions(state, infoB!))]);
+        const [a, b] = await traceBoth(p.client, [traceOptions(state, infoA!), traceOptions(state, infoB!)]);
         next = { a, b, difference: await p.client.difference(a, b) };
       } else if (state.mode === 'gcode') {
         const started = p.client.runGcode(
