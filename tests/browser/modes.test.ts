@@ -483,6 +483,18 @@ describe('compare mode', () => {
     await p.close();
   });
 
+  it('says which of the two refused the move', async () => {
+    // The helix's own move travels along z, which no circle does: the
+    // circle's message, unnamed, read as the helix's ("use the helix
+    // algorithm for a move that also travels along z", with helix picked).
+    const p = await openPage('?mode=compare&algorithm=helix&other=circle&from=10,0,0&to=10,0,24&center=0,0,0');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'No path' }).waitFor();
+    await expect.poll(() => page.getByTestId('error-to').innerText()).toMatch(/^circle: z = 24 differs from from's z = 0/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('compares direct arc stepping with chords: steps and largest radial error', async () => {
     const p = await openPage('?mode=compare&algorithm=circle&other=arc-segments&from=20,0,0&to=-20,0,0&center=0,0,0&segmentLength=8');
     const { page } = p;

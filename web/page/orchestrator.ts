@@ -71,13 +71,23 @@ async function traceBoth(client: TraceClient, [first, second]: readonly [TraceOp
   const [a, b] = await Promise.allSettled([client.trace(first), client.trace(second)]);
   if (a.status === 'rejected') {
     if (b.status === 'fulfilled') b.value.free();
-    throw a.reason;
+    throw refusedBy(first.algorithm, a.reason);
   }
   if (b.status === 'rejected') {
     a.value.free();
-    throw b.reason;
+    throw refusedBy(second.algorithm, b.reason);
   }
   return [a.value, b.value];
+}
+
+/**
+ * A compared algorithm's refusal, named as the core's own comparison names
+ * it ("circle: z = 24 differs ..."): beside the one move's fields, the
+ * circle's words for a helix's move ("use the helix algorithm") read as the
+ * helix's, which was picked.
+ */
+function refusedBy(algorithm: string, error: unknown): unknown {
+  return error instanceof InputRejected ? new InputRejected({ field: error.field, limit: error.limit, message: `${algorithm}: ${error.message}` }) : error;
 }
 
 /** Everything the orchestrator drives. */
