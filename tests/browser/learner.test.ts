@@ -101,6 +101,28 @@ describe('the view of a long path', () => {
     expect(p.problems()).toEqual([]);
     await p.close();
   });
+
+  it('labels an axis far shorter than the longest no closer than its labels fit', async () => {
+    // z runs to 8 beside x's 300: labelled every 2 as its own length asks,
+    // its four labels stood within some 10 px, one blot over the x axis's 0.
+    const p = await openPage('?from=0,0,0&to=300,40,8');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'of 300' }).waitFor();
+    const ticks = page.locator('#viewport .scene-label.tick').filter({ visible: true });
+    await expect.poll(() => ticks.allInnerTexts()).toContain('300');
+    expect(await overlappingLabels(page)).toEqual([]);
+    // The end of each short axis is still read.
+    expect(await ticks.allInnerTexts()).toEqual(expect.arrayContaining(['40', '8']));
+    // A program 5 mm wide and 120 mm long: its x axis in mm is as short.
+    const lines = Array.from({ length: 24 }, (_, i) => `X${(i % 2) * 5} Y${(i + 1) * 5}`);
+    const gcode = encodeURIComponent(`G21 G90\nG1 F600\n${lines.join('\n')}\n`);
+    await page.goto(`${p.url.replace(/\?.*$/, '')}?mode=gcode&gcode=${gcode}&stepsPerMm=80`);
+    await page.getByTestId('step-counter').filter({ hasText: /of \d+$/ }).waitFor();
+    await expect.poll(() => ticks.allInnerTexts()).toContain('100 mm8000');
+    expect(await overlappingLabels(page)).toEqual([]);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
 });
 
 describe('steps per mm per axis', () => {

@@ -63,6 +63,15 @@ const FAR_SIDE: Record<number, 'min' | 'max'> = { 0: 'min', 1: 'max', 2: 'min' }
 /** Rough widths of a tick's characters, CSS pixels (12 px digits, 10 px for the steps beside mm): enough to keep a label inside the view when framing. */
 const TICK_CHAR_PX = 7;
 const STEPS_CHAR_PX = 6;
+/** A tick label's height (style.css .scene-label: 12 px, line-height 1), and the least room between two on screen, CSS pixels. */
+const TICK_HEIGHT_PX = 12;
+const TICK_SPACE_PX = 4;
+
+/** A tick label and its rough width, CSS pixels. */
+interface Tick {
+  label: CSS2DObject;
+  widthPx: number;
+}
 
 export class GridAxes extends THREE.Group {
   #grid: THREE.LineSegments | undefined;
@@ -72,6 +81,8 @@ export class GridAxes extends THREE.Group {
    * view's framing keeps that much room at its sides.
    */
   readonly labelRoomPx = { left: 0, right: 0 };
+  /** Per axis, its tick labels, lowest coordinate first, which showLegibleTicks thins out where they would overlap. */
+  readonly #ticks: Tick[][] = [];
 
   /**
    * `min` and `max`: the smallest and largest grid coordinate of the path on
@@ -91,6 +102,8 @@ export class GridAxes extends THREE.Group {
 
     const directions = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)].slice(0, axes);
     directions.forEach((direction, axis) => {
+      const ticks: Tick[] = [];
+      this.#ticks.push(ticks);
       const length = size.getComponent(axis) + reach;
       this.add(new THREE.ArrowHelper(direction, corner, length, PALETTE.axis, 0.375 * reach, 0.21 * reach));
       const tip = corner.clone().addScaledVector(direction, length + 0.375 * reach);
@@ -119,8 +132,7 @@ export class GridAxes extends THREE.Group {
           steps.className = 'tick-steps';
           steps.textContent = String(Math.round(mm * perMm));
           label.element.append(steps);
-          this.add(label);
-          this.#reach(axis, text.length * TICK_CHAR_PX + (steps.textContent.length + 1) * STEPS_CHAR_PX);
+          this.#addTick(axis, ticks, label, text.length * TICK_CHAR_PX + (steps.textContent.length + 1) * STEPS_CHAR_PX);
         }
       } else {
         const step = Math.max(1, niceStep(size.getComponent(axis), MAX_TICKS));
@@ -128,11 +140,17 @@ export class GridAxes extends THREE.Group {
           if (!shown(c)) continue;
           const label = sceneLabel(String(c), 'scene-label tick', base.clone().setComponent(axis, c));
           label.center.copy(TICK_ANCHORS[axis]!);
-          this.add(label);
-          this.#reach(axis, String(c).length * TICK_CHAR_PX);
+          this.#addTick(axis, ticks, label, String(c).length * TICK_CHAR_PX);
         }
       }
     });
+  }
+
+  /** Adds a tick label of `axis`, about `widthPx` wide, to the scene and to the axis's `ticks`. */
+  #addTick(axis: number, ticks: Tick[], label: CSS2DObject, widthPx: number): void {
+    this.add(label);
+    this.#reach(axis, widthPx);
+    ticks.push({ label, widthPx });
   }
 
   /** Notes a tick label `widthPx` wide on `axis`: y's reach right, z's left, x's hang below. */
@@ -181,6 +199,37 @@ export class GridAxes extends THREE.Group {
     this.#grid = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: PALETTE.grid, depthWrite: false }));
     this.#grid.renderOrder = -1;
     this.add(this.#grid);
+  }
+
+  /**
+   * Shows each axis's tick labels as closely as they fit on screen as
+   * `camera` sees them in a view `widthPx` by `heightPx`: every one, or every
+   * 2nd, 5th, 10th... counted down from the axis's last, which always shows.
+   * Each axis's spacing follows its own length, so one far shorter than the
+   * longest (z to 8 beside x to 300, a program 5 mm wide and 120 mm long)
+   * had its labels piled into a blot. Called before every render of the
+   * labels, as the camera moves.
+   */
+  showLegibleTicks(camera: THREE.Camera, widthPx: number, heightPx: number): void {
+    for (const ticks of this.#ticks) {
+      // Each label's point on screen, CSS pixels.
+      const points = ticks.map(({ label }) => {
+        const p = label.getWorldPosition(new THREE.Vector3()).project(camera);
+        return { x: (p.x * widthPx) / 2, y: (p.y * heightPx) / 2 };
+      });
+      // Two labels clear each other side by side, or one above the other.
+      const apart = (i: number, j: number) =>
+        Math.abs(points[i]!.x - points[j]!.x) >= (ticks[i]!.widthPx + ticks[j]!.widthPx) / 2 + TICK_SPACE_PX ||
+        Math.abs(points[i]!.y - points[j]!.y) >= TICK_HEIGHT_PX + TICK_SPACE_PX;
+      const fits = (every: number) => {
+        for (let i = ticks.length - 1 - every; i >= 0; i -= every) if (!apart(i, i + every)) return false;
+        return true;
+      };
+      // 1, 2, 5, 10, 20, 50...: the first that fits, else every label but the last is left out.
+      let every = 1;
+      for (let n = 1; every < ticks.length && !fits(every); n++) every = [1, 2, 5][n % 3]! * 10 ** Math.floor(n / 3);
+      ticks.forEach(({ label }, i) => (label.visible = (ticks.length - 1 - i) % every === 0));
+    }
   }
 
   dispose(): void {

@@ -767,6 +767,7 @@ export class SceneView {
     const camera = this.#activeCamera();
     camera.updateMatrixWorld();
     this.#handles.pinToView(camera, this.#controls.target);
+    this.#drawn?.axes.showLegibleTicks(camera, this.#container.clientWidth, this.#container.clientHeight);
     this.#renderer.render(this.#scene, camera);
     this.#labels.render(this.#scene, camera);
   }
