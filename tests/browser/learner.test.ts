@@ -58,6 +58,19 @@ async function overlappingLabels(page: Page): Promise<string[]> {
   });
 }
 
+/** The view's tick and axis labels that reach past its edges, with how far, by their text. */
+async function labelsPastTheView(page: Page): Promise<string[]> {
+  return page.evaluate(() => {
+    const view = document.querySelector('#viewport')!.getBoundingClientRect();
+    return [...document.querySelectorAll<HTMLElement>('#viewport .scene-label.tick, #viewport .scene-label.axis-name')]
+      .filter((e) => e.offsetParent !== null)
+      .map((e) => ({ text: e.textContent ?? '', box: e.getBoundingClientRect() }))
+      .map(({ text, box }) => ({ text, past: Math.max(view.left - box.left, box.right - view.right, view.top - box.top, box.bottom - view.bottom) }))
+      .filter(({ past }) => past > 0)
+      .map(({ text, past }) => `${text}: ${past.toFixed(1)} px`);
+  });
+}
+
 describe('G-code mode', () => {
   it('opens on a visible path: over a grid that reaches past it, framed, its axes in mm with steps beside', async () => {
     // The square sample: 20 mm sides at 80 steps/mm, 1600 steps each.
@@ -69,6 +82,14 @@ describe('G-code mode', () => {
     expect(ticks).toContain('20 mm1600');
     expect(ticks).toContain('10 mm800');
     expect(await overlappingLabels(page)).toEqual([]);
+
+    // Whole inside the view: '20 mm1600' at the right reached 1 to 2 px past
+    // its edge, at 1280 px and on a phone alike, its last digit cut.
+    for (const size of [{ width: 390, height: 844 }, { width: 1280, height: 720 }]) {
+      await page.setViewportSize(size);
+      await expect.poll(() => labelsPastTheView(page), { message: `${size.width} px` }).toEqual([]);
+    }
+    await page.setViewportSize({ width: 1280, height: 720 });
 
     const png = await canvasPng(page);
     // The ideal path is the square; the grid must show around it on every side, not end on it.

@@ -60,9 +60,16 @@ export function sceneLabel(text: string, className: string, position: THREE.Vect
 /** Which side of the cells the 2D grid lies on, per plane normal: away from the 2D camera (scene-view's PLANE_VIEWS). */
 const FAR_SIDE: Record<number, 'min' | 'max'> = { 0: 'min', 1: 'max', 2: 'min' };
 
-/** Rough widths of a tick's characters, CSS pixels (12 px digits, 10 px for the steps beside mm): enough to keep a label inside the view when framing. */
-const TICK_CHAR_PX = 7;
-const STEPS_CHAR_PX = 6;
+/**
+ * Rough widths of a tick's characters, CSS pixels (12 px digits, the unit
+ * " mm" after them, 10 px for the steps beside mm), each a little over what
+ * Chromium lays out (7.6, 27.2 and 6.4): enough to keep a label inside the
+ * view when framing. Counted as digits at 7 px, '20 mm1600' took 71 px
+ * where 65 were kept for it, and its last digit was cut at the view's edge.
+ */
+const TICK_CHAR_PX = 8;
+const MM_UNIT_PX = 28;
+const STEPS_CHAR_PX = 6.5;
 /** A tick label's height (style.css .scene-label: 12 px, line-height 1), and the least room between two on screen, CSS pixels. */
 const TICK_HEIGHT_PX = 12;
 const TICK_SPACE_PX = 4;
@@ -125,14 +132,15 @@ export class GridAxes extends THREE.Group {
         for (let k = Math.ceil(low / perMm / step); k * step * perMm <= high + 1e-9; k++) {
           const mm = k * step;
           if (!shown(mm * perMm)) continue;
-          const text = `${tickText(mm, step)} mm`;
+          const number = tickText(mm, step);
+          const text = `${number} mm`;
           const label = sceneLabel(text, 'scene-label tick', base.clone().setComponent(axis, mm * perMm));
           label.center.copy(TICK_ANCHORS[axis]!);
           const steps = document.createElement('span');
           steps.className = 'tick-steps';
           steps.textContent = String(Math.round(mm * perMm));
           label.element.append(steps);
-          this.#addTick(axis, ticks, label, text.length * TICK_CHAR_PX + (steps.textContent.length + 1) * STEPS_CHAR_PX);
+          this.#addTick(axis, ticks, label, number.length * TICK_CHAR_PX + MM_UNIT_PX + (steps.textContent.length + 1) * STEPS_CHAR_PX);
         }
       } else {
         const step = Math.max(1, niceStep(size.getComponent(axis), MAX_TICKS));
