@@ -1,5 +1,6 @@
 // The page's state <-> URL query (the permalink and localStorage format),
 // against the real algorithm catalogue of the built wasm package.
+import { readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { catalogue as coreCatalogue } from '../web/core/index.js';
 import {
@@ -13,6 +14,7 @@ import {
   defaultOther,
   defaultState,
   experimentAlgorithm,
+  machineSpecs,
   offeredAlgorithms,
   sharedOptionSpecs,
   traceOptions,
@@ -71,6 +73,23 @@ describe('page state in the URL query', () => {
       expect(back.embed).toBe(state.embed);
       expect(back.playing).toBe(false);
     }
+  });
+
+  it("names every parameter a link can hold in the README's table of them", () => {
+    // The rows' first cells: `mode`, `from`, `to`, `center`, ...
+    const readme = readFileSync(new URL('../README.md', import.meta.url), 'utf8');
+    const table = readme.slice(readme.indexOf('The parameters the page reads:'), readme.indexOf('A link starts paused'));
+    const documented = new Set(table.split('\n').flatMap((row) => [...(row.match(/^\| ([^|]*)\|/)?.[1] ?? '').matchAll(/`(\w+)`/g)].map((m) => m[1]!)));
+    const states: AppState[] = [
+      { ...first(), options: { from: [0, 0, 0], to: [10, 7, 6], tie: 'hold', gcd: true }, learnerPoints: '0,0,0', follow: true, camera: { position: [1, 2, 3], target: [0, 0, 0], zoom: 1 }, embed: true, explain: false },
+      { ...first(), mode: 'compare', other: 'bresenham3d', layout: 'side' },
+      { ...first(), mode: 'gcode', gcode: 'G1 X1 F600', machine: { stepsPerMm: 80, acceleration: 50, maxRate: 3000, junctionDeviation: 0.02, maxStepRate: 30000 }, slowdown: 10 },
+      { ...first(), mode: 'gcode', machine: { stepAngle: 1.8, microsteps: 8, pitch: 2, lineAlgorithm: 'bresenham3d', arcAlgorithm: 'arc-segments' } },
+      { ...first(), mode: 'experiment', experiment: { count: 20, seed: 7, maxCoordinate: 50, dims: 3 } },
+    ];
+    const written = new Set(states.flatMap((state) => [...new URLSearchParams(stateToQuery(state, url)).keys()]));
+    const settings = [...catalogue.algorithms.flatMap((a) => a.options), ...machineSpecs(catalogue)].map((o) => o.name).filter((name) => !(name in PAGE_OPTIONS));
+    expect([...new Set([...written, ...settings])].filter((name) => !documented.has(name))).toEqual([]);
   });
 
   it("never names an algorithm's option as one of the page's own keys, which would shadow it", () => {
