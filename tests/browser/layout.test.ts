@@ -241,6 +241,24 @@ describe('an embedded view in a small frame', () => {
     }
   });
 
+  it('shows both views side by side at 320x240 and in a short portrait frame, where the legend is left out', async () => {
+    // The side-by-side grid kept a row for the legend above the views; with
+    // the legend hidden (a frame under 300 px tall) the views took that row,
+    // sized to their content, and stood 2 px tall: the frame showed no path.
+    for (const size of [{ width: 320, height: 240 }, { width: 240, height: 290 }]) {
+      const p = await openPage('?embed=1&mode=compare&layout=side&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6&step=5');
+      const { page } = p;
+      await page.setViewportSize(size);
+      await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 23' }).waitFor();
+      await expect.poll(() => page.getByTestId('scene-canvas').count()).toBe(2);
+      const views = await Promise.all(['#viewport', '#viewport-b'].map(async (v) => (await page.locator(v).boundingBox())!));
+      for (const [i, view] of views.entries()) expect(view.height, `${size.width}x${size.height}: view ${i + 1}'s height`).toBeGreaterThan(40);
+      await screenshot(page, `compare-side-embed-${size.width}x${size.height}`);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+  });
+
   it('keeps the compare legend off the first view side by side at 640x480, embedded and in the page', async () => {
     for (const query of ['?embed=1&', '?']) {
       const p = await openPage(`${query}mode=compare&layout=side&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6&step=5`);
