@@ -202,6 +202,28 @@ describe('trace mode', () => {
     await q.close();
   });
 
+  it('leaves the exit face out of the 2D view, where it is seen edge on, and draws it again in 3D', async () => {
+    // A path in the xy plane seen down z: the exit face (x = 4, spanning y
+    // and z) was a line, its corners and regions two by two on one another,
+    // a column of overlapping letters.
+    const p = await openPage('?from=0,0,0&to=10,7,0&step=3&view=2d&decision3d=1');
+    const { page } = p;
+    await steps(page, 10);
+    await inspected(page);
+    const checkbox = page.getByLabel('Decision in 3D');
+    const faceLabels = page.locator('#viewport .face-region-label, #viewport .face-corner-label').filter({ visible: true });
+    await expect.poll(() => checkbox.isDisabled()).toBe(true);
+    expect(await page.locator('#decision-3d-label').getAttribute('title')).toMatch(/^In 2D the exit face is seen edge on/);
+    expect(await faceLabels.count()).toBe(0);
+    // Still on (the link keeps it): in 3D the face is drawn with its letters.
+    await page.getByTestId('view-2d').uncheck();
+    await expect.poll(() => faceLabels.count()).toBeGreaterThan(4);
+    expect(await checkbox.isEnabled()).toBe(true);
+    expect(await checkbox.isChecked()).toBe(true);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("draws the circle's two candidates with their residuals when \"Decision in 3D\" is on", async () => {
     // Saleem section 4, eq. 6-7, r = 5 counter-clockwise from (5, 0): step 3
     // from (5, 2) compares (5, 3), 25 + 9 - 25 = 9, with (4, 3), 16 + 9 - 25

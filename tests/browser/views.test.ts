@@ -99,12 +99,13 @@ describe('the page and its worker', () => {
     await mark(page);
 
     const canvas = page.getByTestId('scene-canvas');
+    // Decision in 3D first: in 2D the exit face, seen edge on, is not drawn, and its toggle waits.
+    await page.getByTestId('decision-3d').check();
+    await page.waitForURL(/decision3d=1/);
     await page.getByTestId('view-2d').check();
     await expect.poll(() => canvas.getAttribute('data-projection')).toBe('2d');
     await settled(page);
     await page.getByTestId('reset-view').click();
-    await page.getByTestId('decision-3d').check();
-    await page.waitForURL(/decision3d=1/);
     await canvas.focus();
     await page.keyboard.press('ArrowLeft');
     await page.keyboard.press('+');

@@ -9,7 +9,7 @@
  * overlay) and is done on the views alone: nothing is rebuilt and the
  * worker is not asked (tests/browser/views.test.ts checks it).
  */
-import type { StepDetail } from '../core/types.js';
+import type { FigureKind, StepDetail } from '../core/types.js';
 import { decisionOverlay, decisionOverlayKinds } from '../scene/decision-overlay.js';
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
@@ -58,6 +58,8 @@ export class PathViews {
   }
   /** The shown point's detail, whose decision the overlay draws. */
   #detail: StepDetail | undefined;
+  /** The pictures the main path's decisions have (its summary's): what Decision in 3D can draw. */
+  #figures: readonly FigureKind[] = [];
   /** The second path's algorithm, as the legend names it. */
   #secondName = 'second';
   /** The main view, where the legend stands but side by side. */
@@ -125,15 +127,9 @@ export class PathViews {
         this.#main.setHighlights([onlyA, onlyB]);
       }
     }
+    this.#figures = main?.figures ?? [];
     this.#showProjection();
-    const { decision3d, decision3dLabel } = this.#e;
-    const overlays = decisionOverlayKinds(main?.figures ?? []);
-    decision3d.checked = state.decision3d;
-    decision3d.disabled = overlays.length === 0;
-    decision3dLabel.title =
-      overlays.length > 0
-        ? `The current step's decision in the view: ${overlays.join('; or ')}.`
-        : "This algorithm's decisions have no 3D picture: only the discriminate regions' exit face and the circle's candidates do";
+    this.#e.decision3d.checked = state.decision3d;
     const e = this.#e;
     const compared = state.mode === 'compare';
     e.legendVisited.textContent = compared ? `visited by ${a?.algorithm ?? 'the first'}` : 'visited';
@@ -166,13 +162,21 @@ export class PathViews {
     this.#main.setHighlights(cells.length > 0 ? [{ cells: Int32Array.from(cells.flat()), dims: learner!.dims, colour: PALETTE.onlyFirst }] : []);
   }
 
-  /** The 2D toggle as the main view is: on in 2D, off where the path is not planar. */
+  /** The 2D toggle as the main view is: on in 2D, off where the path is not planar; and Decision in 3D as it can be drawn there. */
   #showProjection(): void {
-    const { view2d } = this.#e;
+    const { view2d, decision3d, decision3dLabel } = this.#e;
     const planar = this.#main.planar;
     view2d.checked = this.#store.state.projection === '2d' && planar;
     view2d.disabled = !planar;
     view2d.parentElement!.title = planar ? "Orthographic view of the path's plane, with the pixel grid" : 'The path is not in one plane';
+    const overlays = decisionOverlayKinds(this.#figures, view2d.checked);
+    decision3d.disabled = overlays.length === 0;
+    decision3dLabel.title =
+      overlays.length > 0
+        ? `The current step's decision in the view: ${overlays.join('; or ')}.`
+        : decisionOverlayKinds(this.#figures, false).length > 0
+          ? "In 2D the exit face is seen edge on, its letters on one another: the inspector's figure shows it, and so does the view in 3D"
+          : "This algorithm's decisions have no 3D picture: only the discriminate regions' exit face and the circle's candidates do";
   }
 
   /** Switches every view to `projection`, framing its path. */
@@ -180,6 +184,7 @@ export class PathViews {
     this.#main.setProjection(projection);
     this.#second?.setProjection(projection);
     this.#showProjection();
+    this.#drawDecision();
   }
 
   /** Frames every view's path. */
@@ -228,7 +233,7 @@ export class PathViews {
 
   #drawDecision(): void {
     const detail = this.#detail;
-    this.#main.setOverlay(this.#store.state.decision3d && detail ? decisionOverlay(detail) : undefined);
+    this.#main.setOverlay(this.#store.state.decision3d && detail ? decisionOverlay(detail, this.#e.view2d.checked) : undefined);
   }
 
   /** The main view as a PNG. */

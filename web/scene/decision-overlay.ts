@@ -18,14 +18,27 @@ const DESCRIBED: Partial<Record<FigureKind, string>> = {
   arcCandidates: "Saleem's two candidate cells, each with its residual x² + y² − r², the one taken solid",
 };
 
-/** What the toggle would draw for a trace whose steps have the pictures `figures` (its summary's), one phrase each; empty when none has a 3D form. */
-export function decisionOverlayKinds(figures: readonly FigureKind[]): string[] {
-  return figures.flatMap((kind) => DESCRIBED[kind] ?? []);
+/**
+ * Pictures with no form in the 2D view: the exit face holds both passive
+ * axes, and a path in one plane has the plane's normal among them, so seen
+ * down that normal the face is a line, its corners and regions two by two
+ * on one another (A on D, a on d: a column of overlapping letters).
+ */
+const EDGE_ON_IN_2D: readonly FigureKind[] = ['exitFace'];
+
+/**
+ * What the toggle would draw for a trace whose steps have the pictures
+ * `figures` (its summary's), one phrase each, in the 2D view (`flat`) or
+ * in 3D; empty when none has a form there.
+ */
+export function decisionOverlayKinds(figures: readonly FigureKind[], flat: boolean): string[] {
+  return figures.filter((kind) => !(flat && EDGE_ON_IN_2D.includes(kind))).flatMap((kind) => DESCRIBED[kind] ?? []);
 }
 
-/** The overlay of the step a detail describes, or undefined when its decision has no 3D picture (the start point has no decision). */
-export function decisionOverlay(detail: StepDetail): Overlay | undefined {
+/** The overlay of the step a detail describes in the 2D view (`flat`) or in 3D, or undefined when its decision has no picture there (the start point has no decision). */
+export function decisionOverlay(detail: StepDetail, flat: boolean): Overlay | undefined {
   const figure = detail.figure;
+  if (figure && flat && EDGE_ON_IN_2D.includes(figure.kind)) return undefined;
   switch (figure?.kind) {
     case 'exitFace':
       return new RegionFace(figure, detail.point);
