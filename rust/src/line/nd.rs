@@ -93,37 +93,22 @@ impl NdWhy {
         ColumnKind::Flag,
         "1 when a discriminant was exactly 0 and the tie policy decided.",
     );
-
-    /// The columns of a move of `dims` axes: its axes' discriminants, then
-    /// the tie flag. [`Decision::COLUMNS`], the catalogue's, is the
-    /// six-axis list.
-    const fn columns_for(dims: usize) -> &'static [Column] {
-        /// The first `N - 1` discriminants and the tie.
-        const fn first<const N: usize>() -> [Column; N] {
-            let mut out = [NdWhy::TIE; N];
-            let mut axis = 0;
-            while axis < N - 1 {
-                out[axis] = NdWhy::DISCRIMINANTS[axis];
-                axis += 1;
-            }
-            out
-        }
-        const BY_DIMS: [&[Column]; MAX_AXES] = [
-            &first::<2>(),
-            &first::<3>(),
-            &first::<4>(),
-            &first::<5>(),
-            &first::<6>(),
-            &first::<7>(),
-        ];
-        BY_DIMS[dims - 1]
-    }
 }
 
 impl Decision for NdWhy {
-    const COLUMNS: &'static [Column] = NdWhy::columns_for(MAX_AXES);
+    /// Every axis's discriminant, then the tie flag; a move carries those of
+    /// its own axes (`columns_of_axes!`).
+    const COLUMNS: &'static [Column] = &{
+        let mut columns = [NdWhy::TIE; MAX_AXES + 1];
+        let mut axis = 0;
+        while axis < MAX_AXES {
+            columns[axis] = NdWhy::DISCRIMINANTS[axis];
+            axis += 1;
+        }
+        columns
+    };
 
-    /// In the layout of [`NdWhy::columns_for`] of its axes.
+    /// In the layout of its move's columns (`columns_of_axes!`): its axes' discriminants, then the tie.
     fn write(&self, row: &mut [f64]) {
         for axis in 0..self.dims {
             row[axis] = self.discriminants[axis].map_or(f64::NAN, |v| v as f64);
@@ -331,7 +316,7 @@ impl Stepper for Nd {
     }
 
     fn columns(&self) -> &'static [Column] {
-        NdWhy::columns_for(self.mirror.dims())
+        columns_of_axes!(NdWhy, 0, self.mirror.dims())
     }
 
     fn deviation_bound(&self) -> Option<DeviationBound> {
