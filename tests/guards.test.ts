@@ -49,6 +49,16 @@ function thrown(call: () => unknown): VoxpathError {
 const any = (value: unknown) => value as never;
 
 describe('the JS API refuses what the core would misread, naming the argument', () => {
+  it('names a typed array with its article by sound: a Uint8Array, an Int32Array', async () => {
+    const request = { algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 1] } satisfies TraceOptions;
+    expect((await rejection(checkPoints(request, { points: any(new Uint8Array(6)), dims: 3 }))).message).toBe(
+      'points: expected { points: Int32Array or Float64Array, dims }, got points = a Uint8Array of length 6',
+    );
+    expect((await rejection(checkPoints(request, any(new Int32Array(6))))).message).toBe(
+      'points: expected rows of coordinates, { points, dims } or text, got an Int32Array of length 6',
+    );
+  });
+
   it('says a hole, an undefined item and a number JSON cannot carry as what they are', async () => {
     // JSON makes a hole or undefined null, which the core called "got null".
     // eslint-disable-next-line no-sparse-arrays

@@ -79,7 +79,8 @@ impl Points {
         }
         if dims != move_dims {
             return Err(wrong(format!(
-                "the points have {dims} coordinates each; the move has {move_dims}"
+                "the points have {} each; the move has {move_dims}",
+                coordinates(dims)
             )));
         }
         if values.len() % dims != 0 {
@@ -334,8 +335,8 @@ impl TextReader {
             return Err(at(
                 0,
                 format!(
-                    "point {index} has {} coordinates; the move has {}",
-                    cells.len(),
+                    "point {index} has {}; the move has {}",
+                    coordinates(cells.len()),
                     self.dims
                 ),
             ));
@@ -1335,6 +1336,11 @@ fn plain(value: &Value) -> String {
     }
 }
 
+/// "1 coordinate", "3 coordinates".
+fn coordinates(n: usize) -> String {
+    format!("{n} coordinate{}", if n == 1 { "" } else { "s" })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1996,6 +2002,14 @@ mod tests {
         assert_eq!(
             f(&[0.0, 0.0], 2),
             "points: the points have 2 coordinates each; the move has 3"
+        );
+        assert_eq!(
+            f(&[0.0], 1),
+            "points: the points have 1 coordinate each; the move has 3"
+        );
+        assert_eq!(
+            e("5\n6\n"),
+            "line 1, column 1: point 0 has 1 coordinate; the move has 3"
         );
         assert_eq!(
             Points::from_flat(&[], 0, 3).unwrap_err().to_string(),

@@ -34,7 +34,8 @@ export function describeValue(value: unknown): string {
   if (typeof value === 'function') return 'a function';
   const kind = typeof value === 'object' ? (value.constructor?.name ?? 'Object') : typeof value;
   const length = Array.isArray(value) || ArrayBuffer.isView(value) ? ` of length ${(value as ArrayLike<unknown>).length}` : '';
-  return `${/^[AEIOU]/i.test(kind) ? 'an' : 'a'} ${kind === 'Object' ? 'object' : kind}${length}`;
+  // By sound: an Int32Array, an object, a Uint8Array.
+  return `${/^[AEIO]/i.test(kind) ? 'an' : 'a'} ${kind === 'Object' ? 'object' : kind}${length}`;
 }
 
 /** A Promise, or any thenable: what a caller forgot to await. */
