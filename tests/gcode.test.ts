@@ -1,7 +1,9 @@
 // G-code through the headless API (web/core, real wasm) and the CLI
 // (bin/voxpath.js). Expected numbers are worked by hand in the comments.
 import { spawnSync } from 'node:child_process';
-import { readFileSync, readdirSync } from 'node:fs';
+import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { EXPORT_CHUNK_ROWS, pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
@@ -186,6 +188,29 @@ describe('voxpath gcode', () => {
     const r = voxpath(['gcode', '-', '--step-angle', '1.8', '--microsteps', '16', '--pitch', '8'], 'G1 X0.5 F1\n');
     expect(r.code).toBe(0);
     expect(JSON.parse(r.stdout).points.at(-1)).toEqual([200, 0, 0]);
+  });
+
+  it('reads a file saved as UTF-16 with its byte order mark (Notepad\'s "Unicode") as the same program', () => {
+    const dir = mkdtempSync(join(tmpdir(), 'voxpath-utf16-'));
+    try {
+      const source = readFileSync(file, 'utf8').replaceAll('\n', '\r\n');
+      const littleEndian = Buffer.concat([Buffer.from([0xff, 0xfe]), Buffer.from(source, 'utf16le')]);
+      const bigEndian = Buffer.concat([Buffer.from([0xfe, 0xff]), Buffer.from(source, 'utf16le').swap16()]);
+      const asUtf8 = voxpath(['gcode', file, '--steps-per-mm', '1', '--format', 'csv']);
+      expect(asUtf8.code).toBe(0);
+      for (const [name, bytes] of [['le.gcode', littleEndian], ['be.gcode', bigEndian]] as const) {
+        writeFileSync(join(dir, name), bytes);
+        const r = voxpath(['gcode', join(dir, name), '--steps-per-mm', '1', '--format', 'csv']);
+        expect([r.code, r.stderr]).toEqual([0, '']);
+        expect(r.stdout).toBe(asUtf8.stdout);
+      }
+      // Points to check, through standard input.
+      const points = Buffer.concat([Buffer.from([0xff, 0xfe]), Buffer.from('0,0,0\r\n1,1,1\r\n', 'utf16le')]);
+      const check = spawnSync(process.execPath, [BIN, 'check', '-', '--algorithm', 'regions', '--from', '0,0,0', '--to', '1,1,1'], { input: points, encoding: 'utf8' });
+      expect([check.status, check.stderr]).toEqual([0, '']);
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
   });
 
   it('prints what ran, then the errors, and exits 1', () => {

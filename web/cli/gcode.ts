@@ -43,18 +43,29 @@ export function gcodeHelp(settings: readonly OptionSpec[]): string {
   ].join('\n');
 }
 
-/** The text of FILE, or of standard input for '-'. */
+/**
+ * The text of FILE, or of standard input for '-': UTF-8, or UTF-16 where the
+ * bytes start with its byte order mark, as a browser reads a file (the
+ * Encoding Standard's BOM sniffing). A program or points file saved as
+ * "Unicode" by Windows Notepad is UTF-16 with a mark; read as UTF-8 its
+ * first line was "'��' is not G-code" and every character a NUL beside it.
+ */
 export async function readSource(file: string): Promise<string> {
+  let bytes: Buffer;
   if (file === '-') {
     const chunks: Buffer[] = [];
     for await (const chunk of process.stdin) chunks.push(chunk as Buffer);
-    return Buffer.concat(chunks).toString('utf8');
+    bytes = Buffer.concat(chunks);
+  } else {
+    try {
+      bytes = await readFile(file);
+    } catch (error) {
+      throw new UsageError(`cannot read ${file}: ${error instanceof Error ? error.message : String(error)}`);
+    }
   }
-  try {
-    return await readFile(file, 'utf8');
-  } catch (error) {
-    throw new UsageError(`cannot read ${file}: ${error instanceof Error ? error.message : String(error)}`);
-  }
+  const encoding = bytes[0] === 0xff && bytes[1] === 0xfe ? 'utf-16le' : bytes[0] === 0xfe && bytes[1] === 0xff ? 'utf-16be' : 'utf-8';
+  // TextDecoder drops the mark of its own encoding, and puts U+FFFD where bytes are not text in it.
+  return new TextDecoder(encoding).decode(bytes);
 }
 
 /** The program's own record (the core's ProgramInfo), without its trace. */
