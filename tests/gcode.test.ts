@@ -213,6 +213,15 @@ describe('voxpath gcode', () => {
     }
   });
 
+  it('names a setting by its flag where people read it (the table, stderr), and by its API name in the JSON', () => {
+    const args = ['gcode', '-', '--steps-per-mm', '80', '--max-steps', '10'];
+    const csv = voxpath([...args, '--format', 'csv'], 'G1 X10 F100\n');
+    expect(csv.code).toBe(1);
+    expect(csv.stderr).toBe('voxpath: -:1:1: the program needs more than --max-steps = 10 steps by this move (at least 800); raise --max-steps (up to 1000000000) or shorten the program or lower its steps per mm\n');
+    expect(voxpath([...args, '--format', 'table'], 'G1 X10 F100\n').stdout).toContain('line 1, column 1: the program needs more than --max-steps = 10 steps');
+    expect(JSON.parse(voxpath([...args, '--format', 'json'], 'G1 X10 F100\n').stdout).errors[0].message).toMatch(/^the program needs more than maxSteps = 10 steps/);
+  });
+
   it('prints what ran, then the errors, and exits 1', () => {
     const r = voxpath(['gcode', '-', '--steps-per-mm', '2'], 'G1 X1 F1\nG1 X1..5\n');
     expect(r.code).toBe(1);

@@ -12,9 +12,9 @@
  */
 import { readFile } from 'node:fs/promises';
 import { runGcode } from '../core/index.js';
-import type { GcodeProgram, GcodeProgramInfo, GcodeSettings, OptionSpec } from '../core/index.js';
+import type { Catalogue, GcodeProgram, GcodeProgramInfo, GcodeSettings, OptionSpec } from '../core/index.js';
 import { alignedTable, indexChunks, jsonListChunks, pointsJsonChunks } from '../core/export.js';
-import { FORMATS, UsageError, describeOption, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
+import { FORMATS, UsageError, describeOption, inFlagWords, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
 import { writeAll } from './output.js';
 
 /** A flag without a value: adds stepTimes to the JSON. */
@@ -116,7 +116,7 @@ function* csvChunks(program: GcodeProgram): Generator<string> {
  * The moves and totals, in pieces: each block of EXPORT_CHUNK_ROWS moves is
  * aligned on its own under its own header, as trace's table is.
  */
-function* tableChunks(program: GcodeProgram): Generator<string> {
+function* tableChunks(program: GcodeProgram, said: (message: string) => string): Generator<string> {
   const header = ['move', 'line', 'code', 'kind', 'to (mm)', 'to (steps)', 'first step', 'steps', 'algorithm', 'start (s)', 'end (s)', 'mm/s in, top, out'];
   yield `gcode: ${program.lines} lines, ${program.moveCount} moves, ${program.steps} steps; ${program.stepsPerMm.join(', ')} steps/mm (x, y, z); lines: ${program.lineAlgorithm}, arcs: ${program.arcAlgorithm}\n\n`;
   for (const [from, to] of indexChunks(program.moveCount)) {
@@ -139,7 +139,7 @@ function* tableChunks(program: GcodeProgram): Generator<string> {
   // No move (an empty program, or one that stops at its first line): the header, over no rows.
   if (program.moveCount === 0) yield alignedTable(header, []).join('\n') + '\n';
   const diagnostics = (title: string, list: { line: number; column: number; message: string }[]) =>
-    list.length === 0 ? [] : ['', `${title}:`, ...list.map((d) => `  line ${d.line}, column ${d.column}: ${d.message}`)];
+    list.length === 0 ? [] : ['', `${title}:`, ...list.map((d) => `  line ${d.line}, column ${d.column}: ${said(d.message)}`)];
   yield [
     '',
     `pulses per axis (x, y, z): ${program.pulses.join(', ')}`,
@@ -156,7 +156,7 @@ function* tableChunks(program: GcodeProgram): Generator<string> {
  * as it is read, a chunk at a time (whatever the length of the program, as
  * trace's), then the program's errors to stderr; resolves to the exit code.
  */
-export async function gcodeCommand(args: string[], settingSpecs: readonly OptionSpec[]): Promise<number> {
+export async function gcodeCommand(args: string[], catalogue: Catalogue): Promise<number> {
   const [file, ...rest] = args;
   if (file === undefined || (file.startsWith('--') && file !== '-')) {
     throw new UsageError('gcode needs a FILE (or - for standard input) before its flags');
@@ -165,7 +165,10 @@ export async function gcodeCommand(args: string[], settingSpecs: readonly Option
   const stepTimes = flags.has(STEP_TIMES_FLAG);
   const format = pickFormat(flags, GCODE_FORMATS);
   if (stepTimes && format !== 'json') throw new UsageError(`${STEP_TIMES_FLAG} adds stepTimes to the json format`);
-  const settings: GcodeSettings = optionsFromFlags(flags, settingSpecs, 'gcode', ['--format', STEP_TIMES_FLAG]);
+  const settings: GcodeSettings = optionsFromFlags(flags, catalogue.gcodeSettings, 'gcode', ['--format', STEP_TIMES_FLAG]);
+  // What people read (the table, stderr) names a setting by its flag ("raise --max-rate");
+  // the JSON and CSV keep the core's words, as the API gives them.
+  const said = (message: string) => inFlagWords(message, catalogue);
   const program = await runGcode(await readSource(file), settings);
   try {
     await writeAll(
@@ -174,20 +177,20 @@ export async function gcodeCommand(args: string[], settingSpecs: readonly Option
         : format === 'csv'
           ? csvChunks(program)
           : format === 'table'
-            ? tableChunks(program)
+            ? tableChunks(program, said)
             : jsonChunks(program, stepTimes),
     );
     // CSV and VCD have no place for them: the warnings go to stderr, before the errors, as
     // compilers print theirs (the JSON and the table hold them; none is dropped silently).
-    const said = (d: { line: number; column: number; message: string }, kind = '') => `voxpath: ${file}:${d.line}:${d.column}: ${kind}${d.message}\n`;
+    const placed = (d: { line: number; column: number; message: string }, kind = '') => `voxpath: ${file}:${d.line}:${d.column}: ${kind}${said(d.message)}\n`;
     const warnings =
       format === 'csv' || format === 'vcd'
         ? [
-            ...program.warnings.map((w) => said(w, 'warning: ')),
+            ...program.warnings.map((w) => placed(w, 'warning: ')),
             ...(program.warningsOmitted > 0 ? [`voxpath: ${file}: ... and ${program.warningsOmitted} more warnings\n`] : []),
           ]
         : [];
-    process.stderr.write([...warnings, ...program.errors.map((e) => said(e))].join(''));
+    process.stderr.write([...warnings, ...program.errors.map((e) => placed(e))].join(''));
     return program.errors.length > 0 ? 1 : 0;
   } finally {
     program.free();

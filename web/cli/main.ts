@@ -221,7 +221,7 @@ export async function main(args: string[]): Promise<number> {
       await write(result.stdout);
       return result.code;
     } else if (command === 'gcode') {
-      return await gcodeCommand(rest, catalogues.gcodeSettings);
+      return await gcodeCommand(rest, catalogues);
     } else {
       throw new UsageError(`unknown command '${quoted(command)}'`);
     }
@@ -246,8 +246,9 @@ export async function main(args: string[]): Promise<number> {
             : error.field !== undefined
               ? `${flagOf(error.field)}: `
               : '';
-      // A text's error (a line and a column) is about the text, not the flags: as the core says it.
-      const detail = error.line === undefined ? inFlagWords(error.detail, await coreCatalogue()) : error.detail;
+      // Options named by their flags, a text's errors too ("raise --max-steps"); what a
+      // message quotes of the text is kept as it is (inFlagWords).
+      const detail = inFlagWords(error.detail, await coreCatalogue());
       // What the program asks of the machine (steps too close for its VCD) is the program's
       // fault, as its errors are (status 1), not the command line's: no usage.
       if (error.field === 'program') {
