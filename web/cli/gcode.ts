@@ -167,7 +167,7 @@ export async function gcodeCommand(args: string[], catalogue: Catalogue): Promis
   if (stepTimes && format !== 'json') throw new UsageError(`${STEP_TIMES_FLAG} adds stepTimes to the json format`);
   const settings: GcodeSettings = optionsFromFlags(flags, catalogue.gcodeSettings, 'gcode', ['--format', STEP_TIMES_FLAG]);
   // What people read (the table, stderr) names a setting by its flag ("raise --max-rate");
-  // the JSON and CSV keep the core's words, as the API gives them.
+  // the JSON keeps the core's words, as the API gives them.
   const said = (message: string) => inFlagWords(message, catalogue);
   const program = await runGcode(await readSource(file), settings);
   try {
