@@ -4,7 +4,7 @@
 //! Inputs are limited to |coordinate| <= 2^30 so that every difference fits in
 //! 32 bits and every product of two differences fits in i64 (2^31 * 2^31 = 2^62).
 
-use crate::error::Error;
+use crate::error::{Error, number_text};
 use std::fmt;
 
 /// Most axes a path may have: X Y Z A B C.
@@ -109,14 +109,20 @@ impl Point {
             if !v.is_finite() || v.fract() != 0.0 {
                 return Err(Error::field(
                     field,
-                    format!("{name} must be an integer number of grid units, got {v}"),
+                    format!(
+                        "{name} must be an integer number of grid units, got {}",
+                        number_text(v)
+                    ),
                 )
                 .on_axis(axis));
             }
             if v.abs() > COORD_LIMIT as f64 {
                 return Err(Error::field(
                     field,
-                    format!("{name} = {v} is outside ±2^30 ({COORD_LIMIT})"),
+                    format!(
+                        "{name} = {} is outside ±2^30 ({COORD_LIMIT})",
+                        number_text(v)
+                    ),
                 )
                 .on_axis(axis));
             }
@@ -413,6 +419,17 @@ mod tests {
         assert!(e.to_string().starts_with("from: y = 2147483648 is outside"));
         let e = Point::parse("from", &[1.0]).unwrap_err();
         assert_eq!(e.to_string(), "from: expected 2 to 6 coordinates, got 1");
+        // A huge number is said in e-notation, not as its 301 digits.
+        let huge = Point::parse("to", &[1e300, 0.0]).unwrap_err();
+        assert_eq!(
+            huge.to_string(),
+            "to: x = 1e300 is outside ±2^30 (1073741824)"
+        );
+        let tiny = Point::parse("to", &[0.0, 1e-300]).unwrap_err();
+        assert_eq!(
+            tiny.to_string(),
+            "to: y must be an integer number of grid units, got 1e-300"
+        );
         assert_eq!(
             Point::parse("from", &[-3.0, 4.0]).unwrap(),
             Point::new(&[-3, 4])
