@@ -93,9 +93,13 @@ impl std::error::Error for Error {}
 
 /// A number as a message prints it: as Rust writes it, or in e-notation
 /// where that would run to hundreds of digits (1e-300 is "1e-300", not 300
-/// zeros and a 1).
+/// zeros and a 1), and an infinity as JavaScript spells it, "Infinity" (the
+/// caller typed that, not Rust's "inf").
 pub fn number_text(value: f64) -> String {
-    if value == 0.0 || !value.is_finite() || (1e-6..1e15).contains(&value.abs()) {
+    if value.is_infinite() {
+        return if value > 0.0 { "Infinity" } else { "-Infinity" }.to_string();
+    }
+    if value == 0.0 || value.is_nan() || (1e-6..1e15).contains(&value.abs()) {
         value.to_string()
     } else {
         format!("{value:e}")

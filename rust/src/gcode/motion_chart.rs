@@ -26,7 +26,7 @@
 //! at all, and a dwell between moves was a gap in the chart.
 
 use super::timing::Timeline;
-use crate::error::Error;
+use crate::error::{Error, number_text};
 use crate::machine::MACHINE_AXES;
 use serde::Serialize;
 use tsify::Tsify;
@@ -149,7 +149,9 @@ impl Timeline {
             return Err(Error::field(
                 "window",
                 format!(
-                    "fromSeconds must be less than toSeconds, both finite numbers; got {from_seconds}..{to_seconds}"
+                    "fromSeconds must be less than toSeconds, both finite numbers; got {}..{}",
+                    number_text(from_seconds),
+                    number_text(to_seconds)
                 ),
             ));
         }
@@ -463,6 +465,14 @@ mod tests {
         assert!(e.to_string().starts_with("window: "), "{e}");
         let e = t.motion_chart(&[80.0; 3], 0.0, f64::NAN, 10).unwrap_err();
         assert!(e.to_string().starts_with("window: "), "{e}");
+        // An infinity as JavaScript, which passed it, spells it.
+        let e = t
+            .motion_chart(&[80.0; 3], 0.0, f64::INFINITY, 10)
+            .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "window: fromSeconds must be less than toSeconds, both finite numbers; got 0..Infinity"
+        );
         let e = t.motion_chart(&[80.0; 3], 0.0, 1.0, 0).unwrap_err();
         assert_eq!(e.to_string(), "buckets: must be 1 to 100000, got 0");
         // Past the program's end: an empty window, no rows.
