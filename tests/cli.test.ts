@@ -133,6 +133,13 @@ describe('voxpath writing into a pipe', () => {
     expect(r).toEqual({ code: 0, stderr: '' });
   });
 
+  it('keeps its exit status when stderr cannot be written (2 for a usage error, 1 for a program error)', () => {
+    const run = (args: string, input = '') =>
+      spawnSync('bash', ['-c', `'${process.execPath}' '${BIN}' ${args} 2> /dev/full`], { encoding: 'utf8', input }).status;
+    expect(run('trace --bogus')).toBe(2);
+    expect(run('gcode - --steps-per-mm 1 --format csv', 'G1 X1..5\n')).toBe(1);
+  });
+
   it('says in one line that the output could not be written, with status 3, when the disk is full', () => {
     // The stream's 'error' event was rethrown outside main: a stack trace, status 1.
     const r = spawnSync('bash', ['-c', `'${process.execPath}' '${BIN}' ${TRACE.join(' ')} > /dev/full`], { encoding: 'utf8' });

@@ -43,7 +43,16 @@ export async function writeAll(pieces: Iterable<string | Uint8Array>): Promise<v
  */
 function writeErrorReportedByCallback(): void {}
 
-/** Installs the listener above once, however often main runs in one process. */
+/**
+ * A message that cannot be written to stderr (`2>/dev/full`) has nowhere
+ * else to go: unheard, its 'error' event ended the process with status 1,
+ * where the exit status is the one thing left to say what happened (a usage
+ * error's 2).
+ */
+function stderrUnwritable(): void {}
+
+/** Installs the listeners above once, however often main runs in one process. */
 export function listenForWriteErrors(): void {
   if (!process.stdout.listeners('error').includes(writeErrorReportedByCallback)) process.stdout.on('error', writeErrorReportedByCallback);
+  if (!process.stderr.listeners('error').includes(stderrUnwritable)) process.stderr.on('error', stderrUnwritable);
 }
