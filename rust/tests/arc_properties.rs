@@ -514,40 +514,47 @@ proptest! {
     }
 }
 
-#[test]
-fn the_dry_run_counts_every_small_circle_and_arc_exactly() {
-    // Every start within 40 of the center, as a full circle and a turn
-    // more, and as arcs ending near each 45° ray (on and beside the
-    // diagonals, where the closed form hands over to the rule's steps).
-    for u in -40i64..=40 {
-        for v in -40i64..=40 {
-            if [u, v] == [0, 0] {
-                continue;
-            }
+/// Every start within `reach` of the center (on both axes), each with the
+/// ends the exhaustive tests below run it to: first the start itself (a
+/// full circle, `full`), then a point near each of the 16 rays 22.5° apart,
+/// just past it, at the start's radius, rounded (on and beside the
+/// diagonals, where the closed form hands over to the rule's steps); the
+/// center is neither.
+fn small_arcs(reach: i64) -> impl Iterator<Item = (i64, i64, [i64; 2], bool)> {
+    (-reach..=reach)
+        .flat_map(move |u| (-reach..=reach).map(move |v| (u, v)))
+        .filter(|&uv| uv != (0, 0))
+        .flat_map(|(u, v)| {
             let r = ((u * u + v * v) as f64).sqrt();
-            let mut ends = vec![[u, v]];
-            for k in 0..16 {
+            let rays = (0..16).map(move |k| {
                 let angle = k as f64 * PI / 8.0 + 0.01;
-                ends.push([
+                [
                     (r * angle.cos()).round() as i64,
                     (r * angle.sin()).round() as i64,
-                ]);
-            }
-            for (i, end) in ends.into_iter().enumerate() {
-                if end == [0, 0] {
-                    continue;
-                }
-                let arc = Arc {
-                    plane: 0,
-                    ccw: true,
-                    center: [0, 0, 0],
-                    start: [u, v],
-                    end,
-                    turns: (i == 0 && (u + v) % 2 == 0) as u64,
-                };
-                check_plan(&arc.request("circle", 0, "")).unwrap();
-            }
-        }
+                ]
+            });
+            std::iter::once([u, v])
+                .chain(rays)
+                .enumerate()
+                .filter(|&(_, end)| end != [0, 0])
+                .map(move |(i, end)| (u, v, end, i == 0))
+        })
+}
+
+#[test]
+fn the_dry_run_counts_every_small_circle_and_arc_exactly() {
+    // Every start within 40 of the center, as a full circle (a turn more
+    // from every other start) and as arcs ending near each ray.
+    for (u, v, end, full) in small_arcs(40) {
+        let arc = Arc {
+            plane: 0,
+            ccw: true,
+            center: [0, 0, 0],
+            start: [u, v],
+            end,
+            turns: (full && (u + v) % 2 == 0) as u64,
+        };
+        check_plan(&arc.request("circle", 0, "")).unwrap();
     }
 }
 
@@ -557,37 +564,20 @@ fn the_recording_loops_of_every_small_circle_and_arc_take_the_rule_s_steps() {
     // step can cross it from, which for radii below 5 is every octant
     // (r = 1 steps a quarter turn at a time): every start within 8 of the
     // center, as a full circle and a turn more, and as arcs ending near
-    // each 22.5° ray, both ways round, circle and helix.
-    for u in -8i64..=8 {
-        for v in -8i64..=8 {
-            if [u, v] == [0, 0] {
-                continue;
-            }
-            let r = ((u * u + v * v) as f64).sqrt();
-            let mut ends = vec![[u, v], [u, v]];
-            for k in 0..16 {
-                let angle = k as f64 * PI / 8.0 + 0.01;
-                ends.push([
-                    (r * angle.cos()).round() as i64,
-                    (r * angle.sin()).round() as i64,
-                ]);
-            }
-            for (i, end) in ends.into_iter().enumerate() {
-                if end == [0, 0] {
-                    continue;
-                }
-                for ccw in [true, false] {
-                    let arc = Arc {
-                        plane: 0,
-                        ccw,
-                        center: [0, 0, 0],
-                        start: [u, v],
-                        end,
-                        turns: u64::from(i == 1),
-                    };
-                    check_fills(&arc.request("circle", 0, ""), TiePolicy::Advance, 7).unwrap();
-                    check_fills(&arc.request("helix", 5, ""), TiePolicy::Advance, 7).unwrap();
-                }
+    // each ray, both ways round, circle and helix.
+    for (u, v, end, full) in small_arcs(8) {
+        for turns in 0..=u64::from(full) {
+            for ccw in [true, false] {
+                let arc = Arc {
+                    plane: 0,
+                    ccw,
+                    center: [0, 0, 0],
+                    start: [u, v],
+                    end,
+                    turns,
+                };
+                check_fills(&arc.request("circle", 0, ""), TiePolicy::Advance, 7).unwrap();
+                check_fills(&arc.request("helix", 5, ""), TiePolicy::Advance, 7).unwrap();
             }
         }
     }
