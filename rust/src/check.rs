@@ -17,7 +17,7 @@
 
 use crate::algorithms::{self, AlgorithmInfo, Family};
 use crate::compare::{StepWhy, as_object, why_at_point};
-use crate::error::Error;
+use crate::error::{Error, counted};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::line::GCD;
 use crate::line::bresenham3d;
@@ -80,7 +80,7 @@ impl Points {
         if dims != move_dims {
             return Err(wrong(format!(
                 "the points have {} each; the move has {move_dims}",
-                coordinates(dims)
+                counted(dims as u64, "coordinate")
             )));
         }
         if values.len() % dims != 0 {
@@ -336,7 +336,7 @@ impl TextReader {
                 0,
                 format!(
                     "point {index} has {}; the move has {}",
-                    coordinates(cells.len()),
+                    counted(cells.len() as u64, "coordinate"),
                     self.dims
                 ),
             ));
@@ -1334,11 +1334,6 @@ fn plain(value: &Value) -> String {
         Value::String(s) => s.clone(),
         other => other.to_string(),
     }
-}
-
-/// "1 coordinate", "3 coordinates".
-fn coordinates(n: usize) -> String {
-    format!("{n} coordinate{}", if n == 1 { "" } else { "s" })
 }
 
 #[cfg(test)]

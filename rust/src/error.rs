@@ -91,6 +91,11 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+/// A count and its noun as a message says them: "1 chord", "3 chords".
+pub fn counted(n: u64, noun: &str) -> String {
+    format!("{n} {noun}{}", if n == 1 { "" } else { "s" })
+}
+
 /// A number as a message prints it: as Rust writes it, or in e-notation
 /// where that would run to hundreds of digits (1e-300 is "1e-300", not 300
 /// zeros and a 1), and an infinity as JavaScript spells it, "Infinity" (the

@@ -25,7 +25,7 @@
 use super::angle::{degrees, sin_cos_turns};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
-use crate::error::Error;
+use crate::error::{Error, counted};
 use crate::grid::Point;
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
@@ -215,12 +215,12 @@ impl Chording {
     fn describe(self, n: u64) -> String {
         match self {
             Chording::Length(l) => format!(
-                "floor(arc length / segmentLength {l}) gives {n} chord{}",
-                if n == 1 { "" } else { "s" }
+                "floor(arc length / segmentLength {l}) gives {}",
+                counted(n, "chord")
             ),
             Chording::Tolerance(t) => format!(
-                "Grbl's rule with tolerance {t} gives {n} chord{}",
-                if n == 1 { "" } else { "s" }
+                "Grbl's rule with tolerance {t} gives {}",
+                counted(n, "chord")
             ),
         }
     }

@@ -36,7 +36,7 @@ use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, CENTER, MAX_TURNS, radii_within_tolerance};
-use crate::error::{Error, Limit, Location};
+use crate::error::{Error, Limit, Location, counted};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step};
 use crate::ideal::IdealPath;
 use crate::line::line_stepper::{LineStepper, StepperVisitor};
@@ -729,11 +729,7 @@ impl MoveRecords {
         match a.arc.extra_turns {
             0 => {}
             t => {
-                let _ = write!(
-                    note,
-                    " (P adds {t} full turn{})",
-                    if t == 1 { "" } else { "s" }
-                );
+                let _ = write!(note, " (P adds {})", counted(t.into(), "full turn"));
             }
         }
         if let Some(center) = a.center_steps {

@@ -13,7 +13,7 @@ use super::{
     wang_discriminant,
 };
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
-use crate::error::Error;
+use crate::error::{Error, counted};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, fill_by_next_step};
@@ -535,9 +535,8 @@ impl Stepper for LiuFloat {
             ));
         }
         let mut s = format!(
-            "{} decimal{} kept (eq. 14-15): ",
-            self.decimals,
-            if self.decimals == 1 { "" } else { "s" }
+            "{} kept (eq. 14-15): ",
+            counted(self.decimals.into(), "decimal")
         );
         s.push_str(&if parts.is_empty() {
             "every moving axis is active.".to_string()
