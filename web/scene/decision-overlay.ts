@@ -26,19 +26,24 @@ const DESCRIBED: Partial<Record<FigureKind, string>> = {
  */
 const EDGE_ON_IN_2D: readonly FigureKind[] = ['exitFace'];
 
+/** Whether a picture of this kind has a form in the 2D view (`flat`) or in 3D. */
+function drawnIn(kind: FigureKind, flat: boolean): boolean {
+  return !(flat && EDGE_ON_IN_2D.includes(kind));
+}
+
 /**
  * What the toggle would draw for a trace whose steps have the pictures
  * `figures` (its summary's), one phrase each, in the 2D view (`flat`) or
  * in 3D; empty when none has a form there.
  */
 export function decisionOverlayKinds(figures: readonly FigureKind[], flat: boolean): string[] {
-  return figures.filter((kind) => !(flat && EDGE_ON_IN_2D.includes(kind))).flatMap((kind) => DESCRIBED[kind] ?? []);
+  return figures.filter((kind) => drawnIn(kind, flat)).flatMap((kind) => DESCRIBED[kind] ?? []);
 }
 
 /** The overlay of the step a detail describes in the 2D view (`flat`) or in 3D, or undefined when its decision has no picture there (the start point has no decision). */
 export function decisionOverlay(detail: StepDetail, flat: boolean): Overlay | undefined {
   const figure = detail.figure;
-  if (figure && flat && EDGE_ON_IN_2D.includes(figure.kind)) return undefined;
+  if (figure && !drawnIn(figure.kind, flat)) return undefined;
   switch (figure?.kind) {
     case 'exitFace':
       return new RegionFace(figure, detail.point);
