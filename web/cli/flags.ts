@@ -37,21 +37,44 @@ export function inFlagWords(message: string, catalogue: Catalogue): string {
     .join('');
 }
 
-/** inFlagWords for a part of a message that quotes nothing. */
-function partInFlagWords(message: string, catalogue: Catalogue): string {
+/** The patterns inFlagWords finds a catalogue's option names by. */
+interface OptionNamePatterns {
+  /** A camelCase name standing alone, or undefined when the catalogue has none. */
+  camel: RegExp | undefined;
+  /** A one-word name after a flag in a list, and before one. */
+  besideFlag: [RegExp, RegExp];
+}
+
+/** Each catalogue's patterns, made once: a G-code run says up to 1,000 warnings, each through inFlagWords. */
+const patternsByCatalogue = new WeakMap<Catalogue, OptionNamePatterns>();
+
+function optionNamePatterns(catalogue: Catalogue): OptionNamePatterns {
+  const known = patternsByCatalogue.get(catalogue);
+  if (known) return known;
   const specs = [...catalogue.algorithms.flatMap((a) => a.options), ...catalogue.experiments.flatMap((e) => e.options), ...catalogue.gcodeSettings];
   const names = [...new Set(specs.map((o) => o.name))];
   // A name standing alone: not a part of a flag already written (--microsteps).
   const alternatives = (list: string[]) => `(?<![\\w-])(${list.join('|')})\\b`;
   const camel = names.filter((name) => /[A-Z]/.test(name));
-  let text = camel.length === 0 ? message : message.replace(new RegExp(alternatives(camel), 'g'), (name) => flagOf(name));
-  // Beside a flag in a list (", ", " or ", " and "): a flag too, until none is left.
+  // Beside a flag in a list (", ", " or ", " and ").
   const word = alternatives(names.filter((name) => !camel.includes(name)));
-  const besideFlag = [new RegExp(`(--[a-z-]+(?:, | or | and ))${word}`, 'g'), new RegExp(`${word}((?:, | or | and )--[a-z-]+)`, 'g')];
+  const patterns: OptionNamePatterns = {
+    camel: camel.length === 0 ? undefined : new RegExp(alternatives(camel), 'g'),
+    besideFlag: [new RegExp(`(--[a-z-]+(?:, | or | and ))${word}`, 'g'), new RegExp(`${word}((?:, | or | and )--[a-z-]+)`, 'g')],
+  };
+  patternsByCatalogue.set(catalogue, patterns);
+  return patterns;
+}
+
+/** inFlagWords for a part of a message that quotes nothing. */
+function partInFlagWords(message: string, catalogue: Catalogue): string {
+  const { camel, besideFlag } = optionNamePatterns(catalogue);
+  let text = camel === undefined ? message : message.replace(camel, (name) => flagOf(name));
+  // A one-word name beside a flag is a flag too, until none is left.
   // Each pass turns at least one name into a flag, and a flag is never a name again: it ends.
   for (let before = ''; before !== text; ) {
     before = text;
-    text = text.replace(besideFlag[0]!, (_, list: string, name: string) => `${list}${flagOf(name)}`).replace(besideFlag[1]!, (_, name: string, list: string) => `${flagOf(name)}${list}`);
+    text = text.replace(besideFlag[0], (_, list: string, name: string) => `${list}${flagOf(name)}`).replace(besideFlag[1], (_, name: string, list: string) => `${flagOf(name)}${list}`);
   }
   return text.replace(/e\.g\. \[([-\d, ]+)\]/g, (_, point: string) => `e.g. ${point.replace(/ /g, '')}`);
 }
