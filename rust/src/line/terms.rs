@@ -41,6 +41,21 @@ impl Term {
         }
     }
 
+    /// Whether this term, its values starting at each of `starts`, can be
+    /// stepped in 32-bit lanes: its constants and starts are below
+    /// [`NARROW_BOUND`] (2^28) in size. Every value then stays in the
+    /// window (steps_above - decrement + increment, steps_above +
+    /// increment] (see [`Term::jumped`]), so below 3·2^28, a value plus its
+    /// increment below 2^30, and that less the decrement above -2^30: no
+    /// 32-bit sum or comparison of the loop can overflow.
+    fn fits_i32(&self, starts: impl IntoIterator<Item = i64>) -> bool {
+        let small = |v: i64| v.unsigned_abs() < NARROW_BOUND as u64;
+        small(self.steps_above)
+            && small(self.increment)
+            && small(self.decrement)
+            && starts.into_iter().all(small)
+    }
+
     /// One step: the step bits it adds (this axis's or none), and `value`
     /// moved on to the next step. The value is passed apart from the term's
     /// constants so that several chains of values can share one set of
@@ -187,14 +202,28 @@ pub struct Terms<const N: usize> {
     pub terms: [Term; N],
 }
 
-/// How many stretches [`Terms::fill`] steps at once. Two: the chains
-/// share the terms' constants, but with four their values and the constants
-/// no longer fit the registers a wasm engine gives the loop (measured: 660
-/// million steps per second with four, 810 with two, 570 with four chains
-/// each holding its own constants); natively two are as fast as four. With
-/// the wasm vector path, four chains (two vectors per term) took the
-/// bench's 3D line's trace from 3.0 to 3.7 ms.
+/// How many stretches [`Terms::fill`] steps at once when a term's values
+/// need 64 bits. Two: the chains share the terms' constants, but with four
+/// their values and the constants no longer fit the registers a wasm engine
+/// gives the loop (measured: 660 million steps per second with four, 810
+/// with two, 570 with four chains each holding its own constants); natively
+/// two are as fast as four. With the wasm vector path, four chains (two
+/// vectors per term) took the bench's 3D line's trace from 3.0 to 3.7 ms.
 const LANES: usize = 2;
+
+/// How many stretches [`Terms::fill`] steps at once when every term fits
+/// 32 bits ([`Term::fits_i32`]): four, one 128-bit vector per term as with
+/// [`LANES`] 64-bit chains, so twice the steps for the same instructions.
+const NARROW_LANES: usize = 4;
+
+/// Up to this many passive terms take the 32-bit chains: with more, their
+/// constants and values no longer fit the vector registers (nd's lines of
+/// 5 and 6 axes keep the 64-bit chains).
+const MAX_NARROW_TERMS: usize = 3;
+
+/// A term whose constants and values are all smaller than this in size
+/// runs in 32 bits ([`Term::fits_i32`]).
+const NARROW_BOUND: i64 = 1 << 28;
 
 /// Below this many steps per lane, one stretch: the jumps (an i64 division
 /// each) would cost more than they save. Measured on the G-code bench at
@@ -220,47 +249,75 @@ impl<const N: usize> Terms<N> {
         Step(bits)
     }
 
-    /// The two chains side by side: chain 0 records `first` from the values
-    /// `lanes[0]`, chain 1 `second` from `lanes[1]`, a step of each in turn.
+    /// `L` chains side by side: chain j records the j-th of `L` equal
+    /// stretches of `body` from the values `lanes[j]`, a step of each in
+    /// turn.
     ///
-    /// Each term's two values are one [`Pair`] (lane 0 chain 0's, lane 1
-    /// chain 1's), a 128-bit vector where the target has one: a step of
-    /// both chains is, per term, one mask ([`Term::advance_mask`]'s, all
-    /// ones where the value exceeds steps_above), an add, two ands, a
-    /// subtraction and an or, where scalar code takes each of them twice;
-    /// the two codes are then the low 16 bits of each lane. In wasm this
-    /// made the bench's 3D line's trace 2.7 times faster.
+    /// Each term's `L` values are one vector `V` (lane j chain j's), 128
+    /// bits where the target has them: a step of every chain is, per term,
+    /// one mask ([`Term::advance_mask`]'s, all ones where the value exceeds
+    /// steps_above), an add, two ands, a subtraction and an or, where scalar
+    /// code takes each of them `L` times; the codes are then the low 16
+    /// bits of each lane. In wasm two 64-bit chains made the bench's 3D
+    /// line's trace 2.7 times faster than one.
     #[inline(always)]
-    fn fill_chains(
+    fn fill_chains<V: Chains<L>, const L: usize>(
         always: u16,
         terms: &[Term; N],
-        lanes: &mut [[i64; N]; LANES],
-        first: &mut [Step],
-        second: &mut [Step],
+        lanes: &mut [[i64; N]; L],
+        body: &mut [Step],
     ) {
-        let splat = |f: fn(&Term) -> i64| -> [Pair; N] {
-            std::array::from_fn(|i| Pair::splat(f(&terms[i])))
-        };
+        let lane_steps = body.len() / L;
+        assert_eq!(lane_steps * L, body.len(), "L stretches of equal length");
+        let splat =
+            |f: fn(&Term) -> i64| -> [V; N] { std::array::from_fn(|i| V::splat(f(&terms[i]))) };
         let above = splat(|t| t.steps_above);
         let increment = splat(|t| t.increment);
         let decrement = splat(|t| t.decrement);
         let bits = splat(|t| t.step.0 as i64);
-        let always = Pair::splat(always as i64);
-        let mut values: [Pair; N] = std::array::from_fn(|i| Pair::new(lanes[0][i], lanes[1][i]));
-        for (s0, s1) in first.iter_mut().zip(second) {
+        let always = V::splat(always as i64);
+        let mut values: [V; N] =
+            std::array::from_fn(|i| V::new(std::array::from_fn(|lane| lanes[lane][i])));
+        let base = body.as_mut_ptr();
+        for k in 0..lane_steps {
             let mut code = always;
             for i in 0..N {
                 let mask = values[i].above(above[i]);
                 code = code.or(mask.and(bits[i]));
                 values[i] = values[i].add(increment[i]).sub(mask.and(decrement[i]));
             }
-            let [c0, c1] = code.low_u16s();
-            *s0 = Step(c0);
-            *s1 = Step(c1);
+            for (lane, c) in code.low_u16s().into_iter().enumerate() {
+                // SAFETY: lane·lane_steps + k < L·lane_steps = body.len(),
+                // and `body` is borrowed mutably and not otherwise touched.
+                unsafe { base.add(lane * lane_steps + k).write(Step(c)) };
+            }
         }
         for (i, value) in values.iter().enumerate() {
-            [lanes[0][i], lanes[1][i]] = value.lanes();
+            for (lane, v) in value.lanes().into_iter().enumerate() {
+                lanes[lane][i] = v;
+            }
         }
+    }
+
+    /// Each term's value at the start of each of `L` stretches of
+    /// `steps / L` steps.
+    fn lane_starts<const L: usize>(terms: &[Term; N], steps: usize) -> [[i64; N]; L] {
+        let lane_steps = (steps / L) as u64;
+        std::array::from_fn(|lane| terms.map(|t| t.jumped(lane as u64 * lane_steps).value))
+    }
+
+    /// Steps `body` (`L` stretches of equal length) as `L` chains
+    /// ([`Self::fill_chains`]) from the values `lanes` (each stretch's
+    /// start, [`Self::lane_starts`]), and returns the values after them.
+    #[inline(always)]
+    fn fill_lanes<V: Chains<L>, const L: usize>(
+        always: u16,
+        terms: &[Term; N],
+        mut lanes: [[i64; N]; L],
+        body: &mut [Step],
+    ) -> [i64; N] {
+        Self::fill_chains::<V, L>(always, terms, &mut lanes, body);
+        lanes[L - 1]
     }
 
     /// One step, for a stepper that builds its decision around it.
@@ -282,8 +339,10 @@ impl<const N: usize> Terms<N> {
     ///
     /// Each step's value depends on the one before, so stepping is a chain
     /// of dependent instructions and the processor waits on it. Split into
-    /// [`LANES`] stretches, each started where [`Term::jumped`] says the
-    /// rule will be, the chains are independent and run side by side; what
+    /// stretches, each started where [`Term::jumped`] says the rule will
+    /// be, the chains are independent and run side by side: [`NARROW_LANES`]
+    /// of them in 32-bit lanes when the terms fit ([`Term::fits_i32`]: any
+    /// line shorter than 2^27 steps), else [`LANES`] in 64-bit lanes. What
     /// is left over steps on from the last stretch's end.
     ///
     /// The displacement needs no pass over the steps: the active axes moved
@@ -294,21 +353,26 @@ impl<const N: usize> Terms<N> {
     pub fn fill(&mut self, out: &mut [Step]) -> [i64; MAX_AXES] {
         let terms = self.terms;
         let always = self.always.0;
-        let lane_steps = out.len() / LANES;
-        let (body, tail) = out.split_at_mut(if lane_steps >= MIN_LANE_STEPS {
-            lane_steps * LANES
-        } else {
-            0
-        });
         let mut values = terms.map(|t| t.value);
-        if !body.is_empty() {
-            let mut lanes: [[i64; N]; LANES] = std::array::from_fn(|lane| {
-                terms.map(|t| t.jumped((lane * lane_steps) as u64).value)
-            });
-            let (first, second) = body.split_at_mut(lane_steps);
-            Self::fill_chains(always, &terms, &mut lanes, first, second);
-            values = lanes[LANES - 1];
+        let mut filled = 0;
+        if N <= MAX_NARROW_TERMS && out.len() >= NARROW_LANES * MIN_LANE_STEPS {
+            let starts = Self::lane_starts::<NARROW_LANES>(&terms, out.len());
+            if (0..N).all(|i| terms[i].fits_i32(starts.iter().map(|lane| lane[i]))) {
+                filled = out.len() / NARROW_LANES * NARROW_LANES;
+                values = Self::fill_lanes::<Quad, NARROW_LANES>(
+                    always,
+                    &terms,
+                    starts,
+                    &mut out[..filled],
+                );
+            }
         }
+        if filled == 0 && out.len() >= LANES * MIN_LANE_STEPS {
+            let starts = Self::lane_starts::<LANES>(&terms, out.len());
+            filled = out.len() / LANES * LANES;
+            values = Self::fill_lanes::<Pair, LANES>(always, &terms, starts, &mut out[..filled]);
+        }
+        let tail = &mut out[filled..];
         for slot in tail {
             *slot = Self::advance(always, &terms, &mut values);
         }
@@ -329,15 +393,30 @@ impl<const N: usize> Terms<N> {
     }
 }
 
-/// Two i64 lanes, one per chain of [`Terms::fill_chains`], in one 128-bit
-/// vector where the target has one: wasm with SIMD, where the engine turns
-/// the 64-bit compare into one instruction on x86-64 (SSE4.2) and Arm64
-/// alike, and x86-64, whose every processor has SSE2 (the mask is then a
-/// subtraction, as [`Term::advance_mask`] builds it, and a shuffle and a
-/// shift to spread each lane's sign). Elsewhere, two scalars.
-///
-/// Every value and steps_above the callers keep is below 2^62 in size, so
-/// a difference of two cannot overflow.
+/// One term's values of `L` chains of [`Terms::fill_chains`], in one
+/// 128-bit vector where the target has one, and the operations a step of
+/// the rule takes on them. Every value and constant is within the lanes'
+/// range (64 bits: below 2^62 in size, as the callers keep them; 32 bits:
+/// [`Term::fits_i32`]), so a sum or difference of two cannot overflow.
+trait Chains<const L: usize>: Copy {
+    fn new(values: [i64; L]) -> Self;
+    fn splat(x: i64) -> Self;
+    /// All ones in each lane whose value is above `limit`'s, else 0.
+    fn above(self, limit: Self) -> Self;
+    fn add(self, other: Self) -> Self;
+    fn sub(self, other: Self) -> Self;
+    fn and(self, other: Self) -> Self;
+    fn or(self, other: Self) -> Self;
+    /// The low 16 bits of each lane: the step codes.
+    fn low_u16s(self) -> [u16; L];
+    fn lanes(self) -> [i64; L];
+}
+
+/// Two i64 lanes: wasm with SIMD, where the engine turns the 64-bit compare
+/// into one instruction on x86-64 (SSE4.2) and Arm64 alike, and x86-64,
+/// whose every processor has SSE2 (the mask is then a subtraction, as
+/// [`Term::advance_mask`] builds it, and a shuffle and a shift to spread
+/// each lane's sign). Elsewhere, two scalars.
 #[derive(Clone, Copy)]
 struct Pair(
     #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))] core::arch::wasm32::v128,
@@ -349,154 +428,292 @@ struct Pair(
     [i64; 2],
 );
 
+/// Four i32 lanes, for terms that fit them: one compare instruction each
+/// in wasm SIMD and in x86-64's SSE2. Elsewhere, four scalars.
+#[derive(Clone, Copy)]
+struct Quad(
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))] core::arch::wasm32::v128,
+    #[cfg(target_arch = "x86_64")] core::arch::x86_64::__m128i,
+    #[cfg(not(any(
+        all(target_arch = "wasm32", target_feature = "simd128"),
+        target_arch = "x86_64"
+    )))]
+    [i32; 4],
+);
+
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-impl Pair {
-    #[inline(always)]
-    fn new(a: i64, b: i64) -> Pair {
-        Pair(core::arch::wasm32::i64x2(a, b))
+mod wasm_vectors {
+    use super::{Chains, Pair, Quad};
+    use core::arch::wasm32::*;
+
+    impl Chains<2> for Pair {
+        #[inline(always)]
+        fn new([a, b]: [i64; 2]) -> Pair {
+            Pair(i64x2(a, b))
+        }
+        #[inline(always)]
+        fn splat(x: i64) -> Pair {
+            Pair(i64x2_splat(x))
+        }
+        #[inline(always)]
+        fn above(self, limit: Pair) -> Pair {
+            Pair(i64x2_gt(self.0, limit.0))
+        }
+        #[inline(always)]
+        fn add(self, other: Pair) -> Pair {
+            Pair(i64x2_add(self.0, other.0))
+        }
+        #[inline(always)]
+        fn sub(self, other: Pair) -> Pair {
+            Pair(i64x2_sub(self.0, other.0))
+        }
+        #[inline(always)]
+        fn and(self, other: Pair) -> Pair {
+            Pair(v128_and(self.0, other.0))
+        }
+        #[inline(always)]
+        fn or(self, other: Pair) -> Pair {
+            Pair(v128_or(self.0, other.0))
+        }
+        #[inline(always)]
+        fn low_u16s(self) -> [u16; 2] {
+            [
+                u16x8_extract_lane::<0>(self.0),
+                u16x8_extract_lane::<4>(self.0),
+            ]
+        }
+        #[inline(always)]
+        fn lanes(self) -> [i64; 2] {
+            [
+                i64x2_extract_lane::<0>(self.0),
+                i64x2_extract_lane::<1>(self.0),
+            ]
+        }
     }
-    #[inline(always)]
-    fn splat(x: i64) -> Pair {
-        Pair(core::arch::wasm32::i64x2_splat(x))
-    }
-    /// All ones in each lane whose value is above `limit`'s, else 0.
-    #[inline(always)]
-    fn above(self, limit: Pair) -> Pair {
-        Pair(core::arch::wasm32::i64x2_gt(self.0, limit.0))
-    }
-    #[inline(always)]
-    fn add(self, other: Pair) -> Pair {
-        Pair(core::arch::wasm32::i64x2_add(self.0, other.0))
-    }
-    #[inline(always)]
-    fn sub(self, other: Pair) -> Pair {
-        Pair(core::arch::wasm32::i64x2_sub(self.0, other.0))
-    }
-    #[inline(always)]
-    fn and(self, other: Pair) -> Pair {
-        Pair(core::arch::wasm32::v128_and(self.0, other.0))
-    }
-    #[inline(always)]
-    fn or(self, other: Pair) -> Pair {
-        Pair(core::arch::wasm32::v128_or(self.0, other.0))
-    }
-    #[inline(always)]
-    fn low_u16s(self) -> [u16; 2] {
-        use core::arch::wasm32::u16x8_extract_lane;
-        [
-            u16x8_extract_lane::<0>(self.0),
-            u16x8_extract_lane::<4>(self.0),
-        ]
-    }
-    #[inline(always)]
-    fn lanes(self) -> [i64; 2] {
-        use core::arch::wasm32::i64x2_extract_lane;
-        [
-            i64x2_extract_lane::<0>(self.0),
-            i64x2_extract_lane::<1>(self.0),
-        ]
+
+    impl Chains<4> for Quad {
+        #[inline(always)]
+        fn new([a, b, c, d]: [i64; 4]) -> Quad {
+            Quad(i32x4(a as i32, b as i32, c as i32, d as i32))
+        }
+        #[inline(always)]
+        fn splat(x: i64) -> Quad {
+            Quad(i32x4_splat(x as i32))
+        }
+        #[inline(always)]
+        fn above(self, limit: Quad) -> Quad {
+            Quad(i32x4_gt(self.0, limit.0))
+        }
+        #[inline(always)]
+        fn add(self, other: Quad) -> Quad {
+            Quad(i32x4_add(self.0, other.0))
+        }
+        #[inline(always)]
+        fn sub(self, other: Quad) -> Quad {
+            Quad(i32x4_sub(self.0, other.0))
+        }
+        #[inline(always)]
+        fn and(self, other: Quad) -> Quad {
+            Quad(v128_and(self.0, other.0))
+        }
+        #[inline(always)]
+        fn or(self, other: Quad) -> Quad {
+            Quad(v128_or(self.0, other.0))
+        }
+        #[inline(always)]
+        fn low_u16s(self) -> [u16; 4] {
+            [
+                u16x8_extract_lane::<0>(self.0),
+                u16x8_extract_lane::<2>(self.0),
+                u16x8_extract_lane::<4>(self.0),
+                u16x8_extract_lane::<6>(self.0),
+            ]
+        }
+        #[inline(always)]
+        fn lanes(self) -> [i64; 4] {
+            [
+                i32x4_extract_lane::<0>(self.0) as i64,
+                i32x4_extract_lane::<1>(self.0) as i64,
+                i32x4_extract_lane::<2>(self.0) as i64,
+                i32x4_extract_lane::<3>(self.0) as i64,
+            ]
+        }
     }
 }
 
 // SAFETY (every intrinsic below): SSE2 is part of x86-64 itself, so these
 // instructions exist on every processor the target runs on.
 #[cfg(target_arch = "x86_64")]
-impl Pair {
-    #[inline(always)]
-    fn new(a: i64, b: i64) -> Pair {
-        Pair(unsafe { core::arch::x86_64::_mm_set_epi64x(b, a) })
-    }
-    #[inline(always)]
-    fn splat(x: i64) -> Pair {
-        Pair(unsafe { core::arch::x86_64::_mm_set1_epi64x(x) })
-    }
-    /// All ones in each lane whose value is above `limit`'s, else 0: the
-    /// sign of limit - value (SSE2 has no 64-bit compare), its high half
-    /// copied to both halves of the lane and shifted arithmetically.
-    #[inline(always)]
-    fn above(self, limit: Pair) -> Pair {
-        use core::arch::x86_64::{_mm_shuffle_epi32, _mm_srai_epi32, _mm_sub_epi64};
-        Pair(unsafe {
-            _mm_srai_epi32::<31>(_mm_shuffle_epi32::<0b11_11_01_01>(_mm_sub_epi64(
-                limit.0, self.0,
-            )))
-        })
-    }
-    #[inline(always)]
-    fn add(self, other: Pair) -> Pair {
-        Pair(unsafe { core::arch::x86_64::_mm_add_epi64(self.0, other.0) })
-    }
-    #[inline(always)]
-    fn sub(self, other: Pair) -> Pair {
-        Pair(unsafe { core::arch::x86_64::_mm_sub_epi64(self.0, other.0) })
-    }
-    #[inline(always)]
-    fn and(self, other: Pair) -> Pair {
-        Pair(unsafe { core::arch::x86_64::_mm_and_si128(self.0, other.0) })
-    }
-    #[inline(always)]
-    fn or(self, other: Pair) -> Pair {
-        Pair(unsafe { core::arch::x86_64::_mm_or_si128(self.0, other.0) })
-    }
-    #[inline(always)]
-    fn low_u16s(self) -> [u16; 2] {
-        use core::arch::x86_64::_mm_extract_epi16;
-        unsafe {
-            [
-                _mm_extract_epi16::<0>(self.0) as u16,
-                _mm_extract_epi16::<4>(self.0) as u16,
-            ]
+mod x86_vectors {
+    use super::{Chains, Pair, Quad};
+    use core::arch::x86_64::*;
+
+    impl Chains<2> for Pair {
+        #[inline(always)]
+        fn new([a, b]: [i64; 2]) -> Pair {
+            Pair(unsafe { _mm_set_epi64x(b, a) })
+        }
+        #[inline(always)]
+        fn splat(x: i64) -> Pair {
+            Pair(unsafe { _mm_set1_epi64x(x) })
+        }
+        /// The sign of limit - value (SSE2 has no 64-bit compare), its high
+        /// half copied to both halves of the lane and shifted arithmetically.
+        #[inline(always)]
+        fn above(self, limit: Pair) -> Pair {
+            Pair(unsafe {
+                _mm_srai_epi32::<31>(_mm_shuffle_epi32::<0b11_11_01_01>(_mm_sub_epi64(
+                    limit.0, self.0,
+                )))
+            })
+        }
+        #[inline(always)]
+        fn add(self, other: Pair) -> Pair {
+            Pair(unsafe { _mm_add_epi64(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn sub(self, other: Pair) -> Pair {
+            Pair(unsafe { _mm_sub_epi64(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn and(self, other: Pair) -> Pair {
+            Pair(unsafe { _mm_and_si128(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn or(self, other: Pair) -> Pair {
+            Pair(unsafe { _mm_or_si128(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn low_u16s(self) -> [u16; 2] {
+            unsafe {
+                [
+                    _mm_extract_epi16::<0>(self.0) as u16,
+                    _mm_extract_epi16::<4>(self.0) as u16,
+                ]
+            }
+        }
+        #[inline(always)]
+        fn lanes(self) -> [i64; 2] {
+            // SAFETY: __m128i and [i64; 2] are both 16 plain bytes.
+            unsafe { std::mem::transmute::<__m128i, [i64; 2]>(self.0) }
         }
     }
-    #[inline(always)]
-    fn lanes(self) -> [i64; 2] {
-        // SAFETY: __m128i and [i64; 2] are both 16 plain bytes.
-        unsafe { std::mem::transmute::<core::arch::x86_64::__m128i, [i64; 2]>(self.0) }
+
+    impl Chains<4> for Quad {
+        #[inline(always)]
+        fn new([a, b, c, d]: [i64; 4]) -> Quad {
+            Quad(unsafe { _mm_set_epi32(d as i32, c as i32, b as i32, a as i32) })
+        }
+        #[inline(always)]
+        fn splat(x: i64) -> Quad {
+            Quad(unsafe { _mm_set1_epi32(x as i32) })
+        }
+        #[inline(always)]
+        fn above(self, limit: Quad) -> Quad {
+            Quad(unsafe { _mm_cmpgt_epi32(self.0, limit.0) })
+        }
+        #[inline(always)]
+        fn add(self, other: Quad) -> Quad {
+            Quad(unsafe { _mm_add_epi32(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn sub(self, other: Quad) -> Quad {
+            Quad(unsafe { _mm_sub_epi32(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn and(self, other: Quad) -> Quad {
+            Quad(unsafe { _mm_and_si128(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn or(self, other: Quad) -> Quad {
+            Quad(unsafe { _mm_or_si128(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn low_u16s(self) -> [u16; 4] {
+            unsafe {
+                [
+                    _mm_extract_epi16::<0>(self.0) as u16,
+                    _mm_extract_epi16::<2>(self.0) as u16,
+                    _mm_extract_epi16::<4>(self.0) as u16,
+                    _mm_extract_epi16::<6>(self.0) as u16,
+                ]
+            }
+        }
+        #[inline(always)]
+        fn lanes(self) -> [i64; 4] {
+            // SAFETY: __m128i and [i32; 4] are both 16 plain bytes.
+            unsafe { std::mem::transmute::<__m128i, [i32; 4]>(self.0) }.map(i64::from)
+        }
     }
 }
 
+/// Elsewhere, plain lanes; the mask is [`Term::advance_mask`]'s
+/// subtraction and shift.
 #[cfg(not(any(
     all(target_arch = "wasm32", target_feature = "simd128"),
     target_arch = "x86_64"
 )))]
-impl Pair {
-    #[inline(always)]
-    fn new(a: i64, b: i64) -> Pair {
-        Pair([a, b])
+mod scalar_vectors {
+    use super::{Chains, Pair, Quad};
+
+    impl Chains<2> for Pair {
+        fn new(values: [i64; 2]) -> Pair {
+            Pair(values)
+        }
+        fn splat(x: i64) -> Pair {
+            Pair([x; 2])
+        }
+        fn above(self, limit: Pair) -> Pair {
+            Pair([0, 1].map(|i| (limit.0[i] - self.0[i]) >> 63))
+        }
+        fn add(self, other: Pair) -> Pair {
+            Pair([0, 1].map(|i| self.0[i] + other.0[i]))
+        }
+        fn sub(self, other: Pair) -> Pair {
+            Pair([0, 1].map(|i| self.0[i] - other.0[i]))
+        }
+        fn and(self, other: Pair) -> Pair {
+            Pair([0, 1].map(|i| self.0[i] & other.0[i]))
+        }
+        fn or(self, other: Pair) -> Pair {
+            Pair([0, 1].map(|i| self.0[i] | other.0[i]))
+        }
+        fn low_u16s(self) -> [u16; 2] {
+            self.0.map(|x| x as u16)
+        }
+        fn lanes(self) -> [i64; 2] {
+            self.0
+        }
     }
-    #[inline(always)]
-    fn splat(x: i64) -> Pair {
-        Pair([x, x])
-    }
-    /// All ones in each lane whose value is above `limit`'s, else 0
-    /// ([`Term::advance_mask`]'s subtraction and shift).
-    #[inline(always)]
-    fn above(self, limit: Pair) -> Pair {
-        Pair([0, 1].map(|i| (limit.0[i] - self.0[i]) >> 63))
-    }
-    #[inline(always)]
-    fn add(self, other: Pair) -> Pair {
-        Pair([0, 1].map(|i| self.0[i] + other.0[i]))
-    }
-    #[inline(always)]
-    fn sub(self, other: Pair) -> Pair {
-        Pair([0, 1].map(|i| self.0[i] - other.0[i]))
-    }
-    #[inline(always)]
-    fn and(self, other: Pair) -> Pair {
-        Pair([0, 1].map(|i| self.0[i] & other.0[i]))
-    }
-    #[inline(always)]
-    fn or(self, other: Pair) -> Pair {
-        Pair([0, 1].map(|i| self.0[i] | other.0[i]))
-    }
-    #[inline(always)]
-    fn low_u16s(self) -> [u16; 2] {
-        self.0.map(|x| x as u16)
-    }
-    #[inline(always)]
-    fn lanes(self) -> [i64; 2] {
-        self.0
+
+    impl Chains<4> for Quad {
+        fn new(values: [i64; 4]) -> Quad {
+            Quad(values.map(|v| v as i32))
+        }
+        fn splat(x: i64) -> Quad {
+            Quad([x as i32; 4])
+        }
+        fn above(self, limit: Quad) -> Quad {
+            Quad([0, 1, 2, 3].map(|i| (limit.0[i] - self.0[i]) >> 31))
+        }
+        fn add(self, other: Quad) -> Quad {
+            Quad([0, 1, 2, 3].map(|i| self.0[i] + other.0[i]))
+        }
+        fn sub(self, other: Quad) -> Quad {
+            Quad([0, 1, 2, 3].map(|i| self.0[i] - other.0[i]))
+        }
+        fn and(self, other: Quad) -> Quad {
+            Quad([0, 1, 2, 3].map(|i| self.0[i] & other.0[i]))
+        }
+        fn or(self, other: Quad) -> Quad {
+            Quad([0, 1, 2, 3].map(|i| self.0[i] | other.0[i]))
+        }
+        fn low_u16s(self) -> [u16; 4] {
+            self.0.map(|x| x as u16)
+        }
+        fn lanes(self) -> [i64; 4] {
+            self.0.map(i64::from)
+        }
     }
 }
 
@@ -618,11 +835,25 @@ mod tests {
         }
     }
 
+    /// `start` filled `len` steps at once, against the same terms stepped
+    /// one step at a time: the same steps, displacement and state after.
+    fn fills_as_one_chain<const N: usize>(start: Terms<N>, len: usize) {
+        let mut lanes = start;
+        let mut out = vec![Step::NONE; len];
+        let moved = lanes.fill(&mut out);
+        assert_eq!(moved, displacement(&out), "{len} steps");
+        let mut chain = start;
+        let expected: Vec<Step> = (0..len).map(|_| chain.step()).collect();
+        assert_eq!(out, expected, "{len} steps");
+        assert_eq!(lanes.terms, chain.terms, "the state after {len} steps");
+    }
+
     #[test]
     fn lanes_take_the_steps_of_one_chain() {
-        // Either side of the summed displacement's bound and of the
-        // lanes' threshold, and long enough for odd and even lanes.
+        // Either side of the summed displacement's bound and of each lane
+        // count's threshold, and long enough for odd and even lanes.
         let lanes_from = LANES * MIN_LANE_STEPS;
+        let narrow_from = NARROW_LANES * MIN_LANE_STEPS;
         for len in [
             0,
             1,
@@ -631,24 +862,58 @@ mod tests {
             lanes_from - 1,
             lanes_from,
             lanes_from + 1,
+            narrow_from - 1,
+            narrow_from,
+            narrow_from + 3,
             4096,
             4099,
         ] {
-            let start = Terms {
-                always: Step(1),
-                terms: [
-                    wang(7, 10, TiePolicy::Hold),
-                    wang(3, 10, TiePolicy::Advance),
-                ],
+            fills_as_one_chain(
+                Terms {
+                    always: Step(1),
+                    terms: [
+                        wang(7, 10, TiePolicy::Hold),
+                        wang(3, 10, TiePolicy::Advance),
+                    ],
+                },
+                len,
+            );
+        }
+    }
+
+    #[test]
+    fn terms_past_32_bits_take_the_64_bit_lanes() {
+        // Lines whose terms reach 2^28 and beyond, up to |Δ| = 2^30 (its
+        // terms' 2^31 would wrap in 32-bit lanes: the 64-bit ones take
+        // them), with one, two and three passive axes, and on each side
+        // of the bound.
+        let bound = NARROW_BOUND / 2;
+        for active in [bound - 1, bound, bound + 1, 1 << 29, (1 << 30) - 1, 1 << 30] {
+            // Each term on an axis of its own (1 to 3), so that every lane's steps show.
+            let term = |axis: usize, passive: i64, tie| Term {
+                step: Step(1 << axis),
+                ..wang(passive, active, tie)
             };
-            let mut lanes = start;
-            let mut out = vec![Step::NONE; len];
-            let moved = lanes.fill(&mut out);
-            assert_eq!(moved, displacement(&out), "{len} steps");
-            let mut chain = start;
-            let expected: Vec<Step> = (0..len).map(|_| chain.step()).collect();
-            assert_eq!(out, expected, "{len} steps");
-            assert_eq!(lanes.terms, chain.terms, "the state after {len} steps");
+            let (hold, advance) = (TiePolicy::Hold, TiePolicy::Advance);
+            for len in [NARROW_LANES * MIN_LANE_STEPS, 4099] {
+                let always = Step(1);
+                let one = [term(1, active - 3, hold)];
+                fills_as_one_chain(Terms { always, terms: one }, len);
+                let two = [term(1, active / 3, hold), term(2, active - 1, advance)];
+                fills_as_one_chain(Terms { always, terms: two }, len);
+                let three = [
+                    term(1, active / 7, advance),
+                    term(2, active / 2, hold),
+                    term(3, active - 2, advance),
+                ];
+                fills_as_one_chain(
+                    Terms {
+                        always,
+                        terms: three,
+                    },
+                    len,
+                );
+            }
         }
     }
 }
