@@ -41,19 +41,17 @@ impl Term {
         }
     }
 
-    /// Whether this term, its values starting at each of `starts`, can be
-    /// stepped in 32-bit lanes: its constants and starts are below
-    /// [`NARROW_BOUND`] (2^28) in size. Every value then stays in the
-    /// window (steps_above - decrement + increment, steps_above +
-    /// increment] (see [`Term::jumped`]), so below 3·2^28, a value plus its
-    /// increment below 2^30, and that less the decrement above -2^30: no
+    /// Whether this term, its value starting at `start`, can be stepped in
+    /// 32-bit lanes: its constants and start are below [`NARROW_BOUND`]
+    /// (2^28) in size. Every value then stays in the window (steps_above -
+    /// decrement + increment, steps_above + increment] (see
+    /// [`Term::jumped`]), so below 3·2^28 in size; a value plus up to a
+    /// decrement, and each bound the loop compares with, below 2^30: no
     /// 32-bit sum or comparison of the loop can overflow.
-    fn fits_i32(&self, starts: impl IntoIterator<Item = i64>) -> bool {
-        let small = |v: i64| v.unsigned_abs() < NARROW_BOUND as u64;
-        small(self.steps_above)
-            && small(self.increment)
-            && small(self.decrement)
-            && starts.into_iter().all(small)
+    fn fits_i32(&self, start: i64) -> bool {
+        [self.steps_above, self.increment, self.decrement, start]
+            .iter()
+            .all(|v| v.unsigned_abs() < NARROW_BOUND as u64)
     }
 
     /// One step: the step bits it adds (this axis's or none), and `value`
@@ -211,10 +209,15 @@ pub struct Terms<const N: usize> {
 /// vectors per term) took the bench's 3D line's trace from 3.0 to 3.7 ms.
 const LANES: usize = 2;
 
-/// How many stretches [`Terms::fill`] steps at once when every term fits
-/// 32 bits ([`Term::fits_i32`]): four, one 128-bit vector per term as with
-/// [`LANES`] 64-bit chains, so twice the steps for the same instructions.
+/// How many consecutive steps [`Terms::fill_interleaved`] takes at once
+/// when every term fits 32 bits ([`Term::fits_i32`]): four chains, one
+/// 128-bit vector per term, step k in lane k mod 4.
 const NARROW_LANES: usize = 4;
+
+/// From this many steps on, [`Terms::fill`] takes them four at a time
+/// ([`Terms::fill_interleaved`]), when the terms fit 32 bits: it needs no
+/// jump, so only the splat of its constants is paid per call.
+const MIN_INTERLEAVED_STEPS: usize = 32;
 
 /// Up to this many passive terms take the 32-bit chains: with more, their
 /// constants and values no longer fit the vector registers (nd's lines of
@@ -249,75 +252,116 @@ impl<const N: usize> Terms<N> {
         Step(bits)
     }
 
-    /// `L` chains side by side: chain j records the j-th of `L` equal
-    /// stretches of `body` from the values `lanes[j]`, a step of each in
-    /// turn.
+    /// The [`LANES`] chains side by side: chain j records the j-th of
+    /// [`LANES`] equal stretches of `body` from the values `lanes[j]`, a
+    /// step of each in turn.
     ///
-    /// Each term's `L` values are one vector `V` (lane j chain j's), 128
-    /// bits where the target has them: a step of every chain is, per term,
-    /// one mask ([`Term::advance_mask`]'s, all ones where the value exceeds
-    /// steps_above), an add, two ands, a subtraction and an or, where scalar
-    /// code takes each of them `L` times; the codes are then the low 16
-    /// bits of each lane. In wasm two 64-bit chains made the bench's 3D
-    /// line's trace 2.7 times faster than one.
+    /// Each term's values are one [`Pair`] (lane j chain j's), a 128-bit
+    /// vector where the target has one: a step of both chains is, per
+    /// term, one mask ([`Term::advance_mask`]'s, all ones where the value
+    /// exceeds steps_above), an add, two ands, a subtraction and an or,
+    /// where scalar code takes each of them twice; the codes are then the
+    /// low 16 bits of each lane. In wasm this made the bench's 3D line's
+    /// trace 2.7 times faster.
     #[inline(always)]
-    fn fill_chains<V: Chains<L>, const L: usize>(
+    fn fill_chains(
         always: u16,
         terms: &[Term; N],
-        lanes: &mut [[i64; N]; L],
+        lanes: &mut [[i64; N]; LANES],
         body: &mut [Step],
     ) {
-        let lane_steps = body.len() / L;
-        assert_eq!(lane_steps * L, body.len(), "L stretches of equal length");
-        let splat =
-            |f: fn(&Term) -> i64| -> [V; N] { std::array::from_fn(|i| V::splat(f(&terms[i]))) };
+        let splat = |f: fn(&Term) -> i64| -> [Pair; N] {
+            std::array::from_fn(|i| Pair::splat(f(&terms[i])))
+        };
         let above = splat(|t| t.steps_above);
         let increment = splat(|t| t.increment);
         let decrement = splat(|t| t.decrement);
         let bits = splat(|t| t.step.0 as i64);
-        let always = V::splat(always as i64);
-        let mut values: [V; N] =
-            std::array::from_fn(|i| V::new(std::array::from_fn(|lane| lanes[lane][i])));
-        let base = body.as_mut_ptr();
-        for k in 0..lane_steps {
+        let always = Pair::splat(always as i64);
+        let mut values: [Pair; N] = std::array::from_fn(|i| Pair::new([lanes[0][i], lanes[1][i]]));
+        let (first, second) = body.split_at_mut(body.len() / LANES);
+        assert_eq!(first.len(), second.len(), "two stretches of equal length");
+        for (s0, s1) in first.iter_mut().zip(second) {
             let mut code = always;
             for i in 0..N {
                 let mask = values[i].above(above[i]);
                 code = code.or(mask.and(bits[i]));
                 values[i] = values[i].add(increment[i]).sub(mask.and(decrement[i]));
             }
-            for (lane, c) in code.low_u16s().into_iter().enumerate() {
-                // SAFETY: lane·lane_steps + k < L·lane_steps = body.len(),
-                // and `body` is borrowed mutably and not otherwise touched.
-                unsafe { base.add(lane * lane_steps + k).write(Step(c)) };
-            }
+            let [c0, c1] = code.low_u16s();
+            *s0 = Step(c0);
+            *s1 = Step(c1);
         }
         for (i, value) in values.iter().enumerate() {
-            for (lane, v) in value.lanes().into_iter().enumerate() {
-                lanes[lane][i] = v;
-            }
+            [lanes[0][i], lanes[1][i]] = value.lanes();
         }
     }
 
-    /// Each term's value at the start of each of `L` stretches of
-    /// `steps / L` steps.
-    fn lane_starts<const L: usize>(terms: &[Term; N], steps: usize) -> [[i64; N]; L] {
-        let lane_steps = (steps / L) as u64;
-        std::array::from_fn(|lane| terms.map(|t| t.jumped(lane as u64 * lane_steps).value))
-    }
-
-    /// Steps `body` (`L` stretches of equal length) as `L` chains
-    /// ([`Self::fill_chains`]) from the values `lanes` (each stretch's
-    /// start, [`Self::lane_starts`]), and returns the values after them.
+    /// Records `out` (a multiple of [`NARROW_LANES`] steps) four steps at
+    /// a time, the terms' values starting at `values` and moved on past
+    /// them, every term fitting 32 bits ([`Term::fits_i32`]).
+    ///
+    /// Lane k of a term's vector holds its value at step i + k, so one
+    /// vector step decides four consecutive steps, and their four codes
+    /// leave in one 8-byte store (the low halves of the lanes, packed: a
+    /// code is below 2^14). Chains each recording their own stretch, as
+    /// [`Self::fill_chains`] runs them, store each code apart, and those
+    /// stores were the loop's limit.
+    ///
+    /// A lane then moves four steps on at once. A value lives in the window
+    /// (steps_above - decrement + increment, steps_above + increment], one
+    /// decrement wide, and a step adds the increment and takes the
+    /// decrement off when it leaves the window ([`Term::jumped`]), so four
+    /// steps on, the value is the one in the window that is congruent to
+    /// value + 4·increment modulo the decrement: value + r, less the
+    /// decrement when that passes the window's top, with r = 4·increment
+    /// mod decrement. The mask of that comparison is found from the value
+    /// itself (value > top - r), beside the step's own, so the chain from
+    /// one vector step to the next is a comparison, an and and a
+    /// subtraction, as in [`Term::advance_mask`].
     #[inline(always)]
-    fn fill_lanes<V: Chains<L>, const L: usize>(
-        always: u16,
-        terms: &[Term; N],
-        mut lanes: [[i64; N]; L],
-        body: &mut [Step],
-    ) -> [i64; N] {
-        Self::fill_chains::<V, L>(always, terms, &mut lanes, body);
-        lanes[L - 1]
+    fn fill_interleaved(always: u16, terms: &[Term; N], values: &mut [i64; N], out: &mut [Step]) {
+        const L: usize = NARROW_LANES;
+        assert_eq!(out.len() % L, 0, "whole groups of {L} steps");
+        let splat = |f: &dyn Fn(&Term) -> i64| -> [Quad; N] {
+            std::array::from_fn(|i| Quad::splat(f(&terms[i])))
+        };
+        // r = 4·increment mod decrement (0 for a line of no steps, whose
+        // decrement is 0).
+        let skip = |t: &Term| {
+            (L as i64 * t.increment)
+                .checked_rem(t.decrement)
+                .unwrap_or(0)
+        };
+        let above = splat(&|t| t.steps_above);
+        let bits = splat(&|t| t.step.0 as i64);
+        let skips = splat(&skip);
+        let wraps_above = splat(&|t| t.steps_above + t.increment - skip(t));
+        let decrement = splat(&|t| t.decrement);
+        let always = Quad::splat(always as i64);
+        // Each term's values at the first four steps.
+        let mut lanes: [Quad; N] = std::array::from_fn(|i| {
+            let mut value = values[i];
+            Quad::new(std::array::from_fn(|_| {
+                let at = value;
+                terms[i].advance_mask(&mut value);
+                at
+            }))
+        });
+        for group in out.chunks_exact_mut(L) {
+            let mut code = always;
+            for i in 0..N {
+                let steps = lanes[i].above(above[i]);
+                code = code.or(steps.and(bits[i]));
+                let wraps = lanes[i].above(wraps_above[i]);
+                lanes[i] = lanes[i].add(skips[i]).sub(wraps.and(decrement[i]));
+            }
+            code.store_codes(group);
+        }
+        // Lane 0 now holds the value at step out.len().
+        for (value, lane) in values.iter_mut().zip(&lanes) {
+            *value = lane.lanes()[0];
+        }
     }
 
     /// One step, for a stepper that builds its decision around it.
@@ -339,11 +383,12 @@ impl<const N: usize> Terms<N> {
     ///
     /// Each step's value depends on the one before, so stepping is a chain
     /// of dependent instructions and the processor waits on it. Split into
-    /// stretches, each started where [`Term::jumped`] says the rule will
-    /// be, the chains are independent and run side by side: [`NARROW_LANES`]
-    /// of them in 32-bit lanes when the terms fit ([`Term::fits_i32`]: any
-    /// line shorter than 2^27 steps), else [`LANES`] in 64-bit lanes. What
-    /// is left over steps on from the last stretch's end.
+    /// chains that run side by side: when the terms fit 32 bits
+    /// ([`Term::fits_i32`]: any line of fewer than 2^27 steps), four
+    /// consecutive steps at a time ([`Self::fill_interleaved`]); else
+    /// [`LANES`] stretches in 64-bit lanes, each started where
+    /// [`Term::jumped`] says the rule will be ([`Self::fill_chains`]). What
+    /// is left over steps on from where they ended.
     ///
     /// The displacement needs no pass over the steps: the active axes moved
     /// every step, and a term's value says how often its axis did (value_end
@@ -355,22 +400,21 @@ impl<const N: usize> Terms<N> {
         let always = self.always.0;
         let mut values = terms.map(|t| t.value);
         let mut filled = 0;
-        if N <= MAX_NARROW_TERMS && out.len() >= NARROW_LANES * MIN_LANE_STEPS {
-            let starts = Self::lane_starts::<NARROW_LANES>(&terms, out.len());
-            if (0..N).all(|i| terms[i].fits_i32(starts.iter().map(|lane| lane[i]))) {
-                filled = out.len() / NARROW_LANES * NARROW_LANES;
-                values = Self::fill_lanes::<Quad, NARROW_LANES>(
-                    always,
-                    &terms,
-                    starts,
-                    &mut out[..filled],
-                );
-            }
+        if N <= MAX_NARROW_TERMS
+            && out.len() >= MIN_INTERLEAVED_STEPS
+            && (0..N).all(|i| terms[i].fits_i32(values[i]))
+        {
+            filled = out.len() / NARROW_LANES * NARROW_LANES;
+            Self::fill_interleaved(always, &terms, &mut values, &mut out[..filled]);
         }
         if filled == 0 && out.len() >= LANES * MIN_LANE_STEPS {
-            let starts = Self::lane_starts::<LANES>(&terms, out.len());
-            filled = out.len() / LANES * LANES;
-            values = Self::fill_lanes::<Pair, LANES>(always, &terms, starts, &mut out[..filled]);
+            let lane_steps = out.len() / LANES;
+            filled = lane_steps * LANES;
+            let mut lanes: [[i64; N]; LANES] = std::array::from_fn(|lane| {
+                terms.map(|t| t.jumped((lane * lane_steps) as u64).value)
+            });
+            Self::fill_chains(always, &terms, &mut lanes, &mut out[..filled]);
+            values = lanes[LANES - 1];
         }
         let tail = &mut out[filled..];
         for slot in tail {
@@ -393,30 +437,15 @@ impl<const N: usize> Terms<N> {
     }
 }
 
-/// One term's values of `L` chains of [`Terms::fill_chains`], in one
-/// 128-bit vector where the target has one, and the operations a step of
-/// the rule takes on them. Every value and constant is within the lanes'
-/// range (64 bits: below 2^62 in size, as the callers keep them; 32 bits:
-/// [`Term::fits_i32`]), so a sum or difference of two cannot overflow.
-trait Chains<const L: usize>: Copy {
-    fn new(values: [i64; L]) -> Self;
-    fn splat(x: i64) -> Self;
-    /// All ones in each lane whose value is above `limit`'s, else 0.
-    fn above(self, limit: Self) -> Self;
-    fn add(self, other: Self) -> Self;
-    fn sub(self, other: Self) -> Self;
-    fn and(self, other: Self) -> Self;
-    fn or(self, other: Self) -> Self;
-    /// The low 16 bits of each lane: the step codes.
-    fn low_u16s(self) -> [u16; L];
-    fn lanes(self) -> [i64; L];
-}
-
-/// Two i64 lanes: wasm with SIMD, where the engine turns the 64-bit compare
-/// into one instruction on x86-64 (SSE4.2) and Arm64 alike, and x86-64,
-/// whose every processor has SSE2 (the mask is then a subtraction, as
-/// [`Term::advance_mask`] builds it, and a shuffle and a shift to spread
-/// each lane's sign). Elsewhere, two scalars.
+/// One term's values of the two chains of [`Terms::fill_chains`], in one
+/// 128-bit vector where the target has one: wasm with SIMD, where the
+/// engine turns the 64-bit compare into one instruction on x86-64 (SSE4.2)
+/// and Arm64 alike, and x86-64, whose every processor has SSE2 (the mask is
+/// then a subtraction, as [`Term::advance_mask`] builds it, and a shuffle
+/// and a shift to spread each lane's sign). Elsewhere, two scalars.
+///
+/// Every value and steps_above the callers keep is below 2^62 in size, so
+/// a difference of two cannot overflow.
 #[derive(Clone, Copy)]
 struct Pair(
     #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))] core::arch::wasm32::v128,
@@ -428,8 +457,10 @@ struct Pair(
     [i64; 2],
 );
 
-/// Four i32 lanes, for terms that fit them: one compare instruction each
-/// in wasm SIMD and in x86-64's SSE2. Elsewhere, four scalars.
+/// One term's values at four consecutive steps ([`Terms::fill_interleaved`]),
+/// as i32 lanes of one 128-bit vector where the target has one (a compare is
+/// one instruction in wasm SIMD and in x86-64's SSE2), else four scalars.
+/// Every value and constant is below 2^30 in size ([`Term::fits_i32`]).
 #[derive(Clone, Copy)]
 struct Quad(
     #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))] core::arch::wasm32::v128,
@@ -442,278 +473,298 @@ struct Quad(
 );
 
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-mod wasm_vectors {
-    use super::{Chains, Pair, Quad};
-    use core::arch::wasm32::*;
+impl Pair {
+    #[inline(always)]
+    fn new([a, b]: [i64; 2]) -> Pair {
+        Pair(core::arch::wasm32::i64x2(a, b))
+    }
+    #[inline(always)]
+    fn splat(x: i64) -> Pair {
+        Pair(core::arch::wasm32::i64x2_splat(x))
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0.
+    #[inline(always)]
+    fn above(self, limit: Pair) -> Pair {
+        Pair(core::arch::wasm32::i64x2_gt(self.0, limit.0))
+    }
+    #[inline(always)]
+    fn add(self, other: Pair) -> Pair {
+        Pair(core::arch::wasm32::i64x2_add(self.0, other.0))
+    }
+    #[inline(always)]
+    fn sub(self, other: Pair) -> Pair {
+        Pair(core::arch::wasm32::i64x2_sub(self.0, other.0))
+    }
+    #[inline(always)]
+    fn and(self, other: Pair) -> Pair {
+        Pair(core::arch::wasm32::v128_and(self.0, other.0))
+    }
+    #[inline(always)]
+    fn or(self, other: Pair) -> Pair {
+        Pair(core::arch::wasm32::v128_or(self.0, other.0))
+    }
+    #[inline(always)]
+    fn low_u16s(self) -> [u16; 2] {
+        use core::arch::wasm32::u16x8_extract_lane;
+        [
+            u16x8_extract_lane::<0>(self.0),
+            u16x8_extract_lane::<4>(self.0),
+        ]
+    }
+    #[inline(always)]
+    fn lanes(self) -> [i64; 2] {
+        use core::arch::wasm32::i64x2_extract_lane;
+        [
+            i64x2_extract_lane::<0>(self.0),
+            i64x2_extract_lane::<1>(self.0),
+        ]
+    }
+}
 
-    impl Chains<2> for Pair {
-        #[inline(always)]
-        fn new([a, b]: [i64; 2]) -> Pair {
-            Pair(i64x2(a, b))
-        }
-        #[inline(always)]
-        fn splat(x: i64) -> Pair {
-            Pair(i64x2_splat(x))
-        }
-        #[inline(always)]
-        fn above(self, limit: Pair) -> Pair {
-            Pair(i64x2_gt(self.0, limit.0))
-        }
-        #[inline(always)]
-        fn add(self, other: Pair) -> Pair {
-            Pair(i64x2_add(self.0, other.0))
-        }
-        #[inline(always)]
-        fn sub(self, other: Pair) -> Pair {
-            Pair(i64x2_sub(self.0, other.0))
-        }
-        #[inline(always)]
-        fn and(self, other: Pair) -> Pair {
-            Pair(v128_and(self.0, other.0))
-        }
-        #[inline(always)]
-        fn or(self, other: Pair) -> Pair {
-            Pair(v128_or(self.0, other.0))
-        }
-        #[inline(always)]
-        fn low_u16s(self) -> [u16; 2] {
-            [
-                u16x8_extract_lane::<0>(self.0),
-                u16x8_extract_lane::<4>(self.0),
-            ]
-        }
-        #[inline(always)]
-        fn lanes(self) -> [i64; 2] {
-            [
-                i64x2_extract_lane::<0>(self.0),
-                i64x2_extract_lane::<1>(self.0),
-            ]
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+impl Quad {
+    #[inline(always)]
+    fn new([a, b, c, d]: [i64; 4]) -> Quad {
+        Quad(core::arch::wasm32::i32x4(
+            a as i32, b as i32, c as i32, d as i32,
+        ))
+    }
+    #[inline(always)]
+    fn splat(x: i64) -> Quad {
+        Quad(core::arch::wasm32::i32x4_splat(x as i32))
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0.
+    #[inline(always)]
+    fn above(self, limit: Quad) -> Quad {
+        Quad(core::arch::wasm32::i32x4_gt(self.0, limit.0))
+    }
+    #[inline(always)]
+    fn add(self, other: Quad) -> Quad {
+        Quad(core::arch::wasm32::i32x4_add(self.0, other.0))
+    }
+    #[inline(always)]
+    fn sub(self, other: Quad) -> Quad {
+        Quad(core::arch::wasm32::i32x4_sub(self.0, other.0))
+    }
+    #[inline(always)]
+    fn and(self, other: Quad) -> Quad {
+        Quad(core::arch::wasm32::v128_and(self.0, other.0))
+    }
+    #[inline(always)]
+    fn or(self, other: Quad) -> Quad {
+        Quad(core::arch::wasm32::v128_or(self.0, other.0))
+    }
+    /// Writes the low 16 bits of each lane, in lane order, to `group`'s
+    /// four steps: packed to 16 bits (a code is below 2^14, so the signed
+    /// saturation keeps it) and stored as 8 bytes.
+    #[inline(always)]
+    fn store_codes(self, group: &mut [Step]) {
+        use core::arch::wasm32::{i16x8_narrow_i32x4, v128_store64_lane};
+        assert_eq!(group.len(), 4, "four steps");
+        // SAFETY: `group` is 4 Steps, 8 bytes (Step is a u16), borrowed
+        // mutably; a wasm store needs no alignment.
+        unsafe {
+            v128_store64_lane::<0>(
+                i16x8_narrow_i32x4(self.0, self.0),
+                group.as_mut_ptr().cast::<u64>(),
+            )
         }
     }
-
-    impl Chains<4> for Quad {
-        #[inline(always)]
-        fn new([a, b, c, d]: [i64; 4]) -> Quad {
-            Quad(i32x4(a as i32, b as i32, c as i32, d as i32))
-        }
-        #[inline(always)]
-        fn splat(x: i64) -> Quad {
-            Quad(i32x4_splat(x as i32))
-        }
-        #[inline(always)]
-        fn above(self, limit: Quad) -> Quad {
-            Quad(i32x4_gt(self.0, limit.0))
-        }
-        #[inline(always)]
-        fn add(self, other: Quad) -> Quad {
-            Quad(i32x4_add(self.0, other.0))
-        }
-        #[inline(always)]
-        fn sub(self, other: Quad) -> Quad {
-            Quad(i32x4_sub(self.0, other.0))
-        }
-        #[inline(always)]
-        fn and(self, other: Quad) -> Quad {
-            Quad(v128_and(self.0, other.0))
-        }
-        #[inline(always)]
-        fn or(self, other: Quad) -> Quad {
-            Quad(v128_or(self.0, other.0))
-        }
-        #[inline(always)]
-        fn low_u16s(self) -> [u16; 4] {
-            [
-                u16x8_extract_lane::<0>(self.0),
-                u16x8_extract_lane::<2>(self.0),
-                u16x8_extract_lane::<4>(self.0),
-                u16x8_extract_lane::<6>(self.0),
-            ]
-        }
-        #[inline(always)]
-        fn lanes(self) -> [i64; 4] {
-            [
-                i32x4_extract_lane::<0>(self.0) as i64,
-                i32x4_extract_lane::<1>(self.0) as i64,
-                i32x4_extract_lane::<2>(self.0) as i64,
-                i32x4_extract_lane::<3>(self.0) as i64,
-            ]
-        }
+    #[inline(always)]
+    fn lanes(self) -> [i64; 4] {
+        use core::arch::wasm32::i32x4_extract_lane;
+        [
+            i32x4_extract_lane::<0>(self.0) as i64,
+            i32x4_extract_lane::<1>(self.0) as i64,
+            i32x4_extract_lane::<2>(self.0) as i64,
+            i32x4_extract_lane::<3>(self.0) as i64,
+        ]
     }
 }
 
 // SAFETY (every intrinsic below): SSE2 is part of x86-64 itself, so these
 // instructions exist on every processor the target runs on.
 #[cfg(target_arch = "x86_64")]
-mod x86_vectors {
-    use super::{Chains, Pair, Quad};
-    use core::arch::x86_64::*;
-
-    impl Chains<2> for Pair {
-        #[inline(always)]
-        fn new([a, b]: [i64; 2]) -> Pair {
-            Pair(unsafe { _mm_set_epi64x(b, a) })
-        }
-        #[inline(always)]
-        fn splat(x: i64) -> Pair {
-            Pair(unsafe { _mm_set1_epi64x(x) })
-        }
-        /// The sign of limit - value (SSE2 has no 64-bit compare), its high
-        /// half copied to both halves of the lane and shifted arithmetically.
-        #[inline(always)]
-        fn above(self, limit: Pair) -> Pair {
-            Pair(unsafe {
-                _mm_srai_epi32::<31>(_mm_shuffle_epi32::<0b11_11_01_01>(_mm_sub_epi64(
-                    limit.0, self.0,
-                )))
-            })
-        }
-        #[inline(always)]
-        fn add(self, other: Pair) -> Pair {
-            Pair(unsafe { _mm_add_epi64(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn sub(self, other: Pair) -> Pair {
-            Pair(unsafe { _mm_sub_epi64(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn and(self, other: Pair) -> Pair {
-            Pair(unsafe { _mm_and_si128(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn or(self, other: Pair) -> Pair {
-            Pair(unsafe { _mm_or_si128(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn low_u16s(self) -> [u16; 2] {
-            unsafe {
-                [
-                    _mm_extract_epi16::<0>(self.0) as u16,
-                    _mm_extract_epi16::<4>(self.0) as u16,
-                ]
-            }
-        }
-        #[inline(always)]
-        fn lanes(self) -> [i64; 2] {
-            // SAFETY: __m128i and [i64; 2] are both 16 plain bytes.
-            unsafe { std::mem::transmute::<__m128i, [i64; 2]>(self.0) }
+impl Pair {
+    #[inline(always)]
+    fn new([a, b]: [i64; 2]) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_set_epi64x(b, a) })
+    }
+    #[inline(always)]
+    fn splat(x: i64) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_set1_epi64x(x) })
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0: the
+    /// sign of limit - value (SSE2 has no 64-bit compare), its high half
+    /// copied to both halves of the lane and shifted arithmetically.
+    #[inline(always)]
+    fn above(self, limit: Pair) -> Pair {
+        use core::arch::x86_64::{_mm_shuffle_epi32, _mm_srai_epi32, _mm_sub_epi64};
+        Pair(unsafe {
+            _mm_srai_epi32::<31>(_mm_shuffle_epi32::<0b11_11_01_01>(_mm_sub_epi64(
+                limit.0, self.0,
+            )))
+        })
+    }
+    #[inline(always)]
+    fn add(self, other: Pair) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_add_epi64(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn sub(self, other: Pair) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_sub_epi64(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn and(self, other: Pair) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_and_si128(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn or(self, other: Pair) -> Pair {
+        Pair(unsafe { core::arch::x86_64::_mm_or_si128(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn low_u16s(self) -> [u16; 2] {
+        use core::arch::x86_64::_mm_extract_epi16;
+        unsafe {
+            [
+                _mm_extract_epi16::<0>(self.0) as u16,
+                _mm_extract_epi16::<4>(self.0) as u16,
+            ]
         }
     }
-
-    impl Chains<4> for Quad {
-        #[inline(always)]
-        fn new([a, b, c, d]: [i64; 4]) -> Quad {
-            Quad(unsafe { _mm_set_epi32(d as i32, c as i32, b as i32, a as i32) })
-        }
-        #[inline(always)]
-        fn splat(x: i64) -> Quad {
-            Quad(unsafe { _mm_set1_epi32(x as i32) })
-        }
-        #[inline(always)]
-        fn above(self, limit: Quad) -> Quad {
-            Quad(unsafe { _mm_cmpgt_epi32(self.0, limit.0) })
-        }
-        #[inline(always)]
-        fn add(self, other: Quad) -> Quad {
-            Quad(unsafe { _mm_add_epi32(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn sub(self, other: Quad) -> Quad {
-            Quad(unsafe { _mm_sub_epi32(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn and(self, other: Quad) -> Quad {
-            Quad(unsafe { _mm_and_si128(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn or(self, other: Quad) -> Quad {
-            Quad(unsafe { _mm_or_si128(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn low_u16s(self) -> [u16; 4] {
-            unsafe {
-                [
-                    _mm_extract_epi16::<0>(self.0) as u16,
-                    _mm_extract_epi16::<2>(self.0) as u16,
-                    _mm_extract_epi16::<4>(self.0) as u16,
-                    _mm_extract_epi16::<6>(self.0) as u16,
-                ]
-            }
-        }
-        #[inline(always)]
-        fn lanes(self) -> [i64; 4] {
-            // SAFETY: __m128i and [i32; 4] are both 16 plain bytes.
-            unsafe { std::mem::transmute::<__m128i, [i32; 4]>(self.0) }.map(i64::from)
-        }
+    #[inline(always)]
+    fn lanes(self) -> [i64; 2] {
+        // SAFETY: __m128i and [i64; 2] are both 16 plain bytes.
+        unsafe { std::mem::transmute::<core::arch::x86_64::__m128i, [i64; 2]>(self.0) }
     }
 }
 
-/// Elsewhere, plain lanes; the mask is [`Term::advance_mask`]'s
-/// subtraction and shift.
+#[cfg(target_arch = "x86_64")]
+impl Quad {
+    #[inline(always)]
+    fn new([a, b, c, d]: [i64; 4]) -> Quad {
+        Quad(unsafe { core::arch::x86_64::_mm_set_epi32(d as i32, c as i32, b as i32, a as i32) })
+    }
+    #[inline(always)]
+    fn splat(x: i64) -> Quad {
+        Quad(unsafe { core::arch::x86_64::_mm_set1_epi32(x as i32) })
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0.
+    #[inline(always)]
+    fn above(self, limit: Quad) -> Quad {
+        Quad(unsafe { core::arch::x86_64::_mm_cmpgt_epi32(self.0, limit.0) })
+    }
+    #[inline(always)]
+    fn add(self, other: Quad) -> Quad {
+        Quad(unsafe { core::arch::x86_64::_mm_add_epi32(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn sub(self, other: Quad) -> Quad {
+        Quad(unsafe { core::arch::x86_64::_mm_sub_epi32(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn and(self, other: Quad) -> Quad {
+        Quad(unsafe { core::arch::x86_64::_mm_and_si128(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn or(self, other: Quad) -> Quad {
+        Quad(unsafe { core::arch::x86_64::_mm_or_si128(self.0, other.0) })
+    }
+    /// Writes the low 16 bits of each lane, in lane order, to `group`'s
+    /// four steps: packed to 16 bits (a code is below 2^14, so the signed
+    /// saturation keeps it) and stored as 8 bytes.
+    #[inline(always)]
+    fn store_codes(self, group: &mut [Step]) {
+        use core::arch::x86_64::{__m128i, _mm_packs_epi32, _mm_storel_epi64};
+        assert_eq!(group.len(), 4, "four steps");
+        // SAFETY: `group` is 4 Steps, 8 bytes (Step is a u16), borrowed
+        // mutably; the store needs no alignment.
+        unsafe {
+            _mm_storel_epi64(
+                group.as_mut_ptr().cast::<__m128i>(),
+                _mm_packs_epi32(self.0, self.0),
+            )
+        }
+    }
+    #[inline(always)]
+    fn lanes(self) -> [i64; 4] {
+        // SAFETY: __m128i and [i32; 4] are both 16 plain bytes.
+        unsafe { std::mem::transmute::<core::arch::x86_64::__m128i, [i32; 4]>(self.0) }
+            .map(i64::from)
+    }
+}
+
 #[cfg(not(any(
     all(target_arch = "wasm32", target_feature = "simd128"),
     target_arch = "x86_64"
 )))]
-mod scalar_vectors {
-    use super::{Chains, Pair, Quad};
+impl Pair {
+    fn new(values: [i64; 2]) -> Pair {
+        Pair(values)
+    }
+    fn splat(x: i64) -> Pair {
+        Pair([x; 2])
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0
+    /// ([`Term::advance_mask`]'s subtraction and shift).
+    fn above(self, limit: Pair) -> Pair {
+        Pair([0, 1].map(|i| (limit.0[i] - self.0[i]) >> 63))
+    }
+    fn add(self, other: Pair) -> Pair {
+        Pair([0, 1].map(|i| self.0[i] + other.0[i]))
+    }
+    fn sub(self, other: Pair) -> Pair {
+        Pair([0, 1].map(|i| self.0[i] - other.0[i]))
+    }
+    fn and(self, other: Pair) -> Pair {
+        Pair([0, 1].map(|i| self.0[i] & other.0[i]))
+    }
+    fn or(self, other: Pair) -> Pair {
+        Pair([0, 1].map(|i| self.0[i] | other.0[i]))
+    }
+    fn low_u16s(self) -> [u16; 2] {
+        self.0.map(|x| x as u16)
+    }
+    fn lanes(self) -> [i64; 2] {
+        self.0
+    }
+}
 
-    impl Chains<2> for Pair {
-        fn new(values: [i64; 2]) -> Pair {
-            Pair(values)
-        }
-        fn splat(x: i64) -> Pair {
-            Pair([x; 2])
-        }
-        fn above(self, limit: Pair) -> Pair {
-            Pair([0, 1].map(|i| (limit.0[i] - self.0[i]) >> 63))
-        }
-        fn add(self, other: Pair) -> Pair {
-            Pair([0, 1].map(|i| self.0[i] + other.0[i]))
-        }
-        fn sub(self, other: Pair) -> Pair {
-            Pair([0, 1].map(|i| self.0[i] - other.0[i]))
-        }
-        fn and(self, other: Pair) -> Pair {
-            Pair([0, 1].map(|i| self.0[i] & other.0[i]))
-        }
-        fn or(self, other: Pair) -> Pair {
-            Pair([0, 1].map(|i| self.0[i] | other.0[i]))
-        }
-        fn low_u16s(self) -> [u16; 2] {
-            self.0.map(|x| x as u16)
-        }
-        fn lanes(self) -> [i64; 2] {
-            self.0
+#[cfg(not(any(
+    all(target_arch = "wasm32", target_feature = "simd128"),
+    target_arch = "x86_64"
+)))]
+impl Quad {
+    fn new(values: [i64; 4]) -> Quad {
+        Quad(values.map(|v| v as i32))
+    }
+    fn splat(x: i64) -> Quad {
+        Quad([x as i32; 4])
+    }
+    /// All ones in each lane whose value is above `limit`'s, else 0.
+    fn above(self, limit: Quad) -> Quad {
+        Quad([0, 1, 2, 3].map(|i| (limit.0[i] - self.0[i]) >> 31))
+    }
+    fn add(self, other: Quad) -> Quad {
+        Quad([0, 1, 2, 3].map(|i| self.0[i] + other.0[i]))
+    }
+    fn sub(self, other: Quad) -> Quad {
+        Quad([0, 1, 2, 3].map(|i| self.0[i] - other.0[i]))
+    }
+    fn and(self, other: Quad) -> Quad {
+        Quad([0, 1, 2, 3].map(|i| self.0[i] & other.0[i]))
+    }
+    fn or(self, other: Quad) -> Quad {
+        Quad([0, 1, 2, 3].map(|i| self.0[i] | other.0[i]))
+    }
+    /// Writes the low 16 bits of each lane, in lane order, to `group`.
+    fn store_codes(self, group: &mut [Step]) {
+        for (step, lane) in group.iter_mut().zip(self.0) {
+            *step = Step(lane as u16);
         }
     }
-
-    impl Chains<4> for Quad {
-        fn new(values: [i64; 4]) -> Quad {
-            Quad(values.map(|v| v as i32))
-        }
-        fn splat(x: i64) -> Quad {
-            Quad([x as i32; 4])
-        }
-        fn above(self, limit: Quad) -> Quad {
-            Quad([0, 1, 2, 3].map(|i| (limit.0[i] - self.0[i]) >> 31))
-        }
-        fn add(self, other: Quad) -> Quad {
-            Quad([0, 1, 2, 3].map(|i| self.0[i] + other.0[i]))
-        }
-        fn sub(self, other: Quad) -> Quad {
-            Quad([0, 1, 2, 3].map(|i| self.0[i] - other.0[i]))
-        }
-        fn and(self, other: Quad) -> Quad {
-            Quad([0, 1, 2, 3].map(|i| self.0[i] & other.0[i]))
-        }
-        fn or(self, other: Quad) -> Quad {
-            Quad([0, 1, 2, 3].map(|i| self.0[i] | other.0[i]))
-        }
-        fn low_u16s(self) -> [u16; 4] {
-            self.0.map(|x| x as u16)
-        }
-        fn lanes(self) -> [i64; 4] {
-            self.0.map(i64::from)
-        }
+    fn lanes(self) -> [i64; 4] {
+        self.0.map(i64::from)
     }
 }
 
@@ -853,7 +904,7 @@ mod tests {
         // Either side of the summed displacement's bound and of each lane
         // count's threshold, and long enough for odd and even lanes.
         let lanes_from = LANES * MIN_LANE_STEPS;
-        let narrow_from = NARROW_LANES * MIN_LANE_STEPS;
+        let interleaved_from = MIN_INTERLEAVED_STEPS;
         for len in [
             0,
             1,
@@ -862,9 +913,10 @@ mod tests {
             lanes_from - 1,
             lanes_from,
             lanes_from + 1,
-            narrow_from - 1,
-            narrow_from,
-            narrow_from + 3,
+            interleaved_from - 1,
+            interleaved_from,
+            interleaved_from + 1,
+            interleaved_from + 3,
             4096,
             4099,
         ] {
@@ -873,7 +925,10 @@ mod tests {
                     always: Step(1),
                     terms: [
                         wang(7, 10, TiePolicy::Hold),
-                        wang(3, 10, TiePolicy::Advance),
+                        Term {
+                            step: Step(0b1000),
+                            ..wang(3, 10, TiePolicy::Advance)
+                        },
                     ],
                 },
                 len,
@@ -895,7 +950,7 @@ mod tests {
                 ..wang(passive, active, tie)
             };
             let (hold, advance) = (TiePolicy::Hold, TiePolicy::Advance);
-            for len in [NARROW_LANES * MIN_LANE_STEPS, 4099] {
+            for len in [MIN_INTERLEAVED_STEPS, LANES * MIN_LANE_STEPS, 4099] {
                 let always = Step(1);
                 let one = [term(1, active - 3, hold)];
                 fills_as_one_chain(Terms { always, terms: one }, len);
