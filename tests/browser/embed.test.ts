@@ -179,6 +179,26 @@ describe('embedded', () => {
     }
   });
 
+  it("keeps a 320 x 240 G-code frame's labels inside its view (x's hung 2 px below it)", async () => {
+    const p = await openPage('?embed=1&mode=gcode');
+    const { page } = p;
+    await page.setViewportSize({ width: 320, height: 240 });
+    await page.getByTestId('step-counter').filter({ hasText: /of 6400$/ }).waitFor();
+    await page.waitForTimeout(600);
+    await screenshot(page, 'embed-gcode-320x240');
+    // Each label shown, with its bottom against the view's: x's ticks hang below their points, at the picture's front edge.
+    const { bottom, labels } = await page.evaluate(() => ({
+      bottom: document.querySelector('#viewport')!.getBoundingClientRect().bottom,
+      labels: [...document.querySelectorAll<HTMLElement>('#viewport .scene-label')]
+        .filter((label) => label.checkVisibility())
+        .map((label) => ({ text: label.textContent, bottom: label.getBoundingClientRect().bottom })),
+    }));
+    expect(labels.map((label) => label.text)).toContain('20 mm1600');
+    expect(labels.filter((label) => label.bottom > bottom).map((label) => `${label.text}: ${(label.bottom - bottom).toFixed(1)} px below`)).toEqual([]);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('leaves the reason out with explain=0', async () => {
     const p = await openPage(`?embed=1&explain=0&${EXAMPLE}`);
     const { page } = p;

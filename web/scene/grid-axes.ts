@@ -83,11 +83,12 @@ interface Tick {
 export class GridAxes extends THREE.Group {
   #grid: THREE.LineSegments | undefined;
   /**
-   * How far the tick labels reach out sideways from their points, CSS
-   * pixels: y's to the right of the floor, z's to the left of its axis. The
-   * view's framing keeps that much room at its sides.
+   * How far the tick labels reach out of the picture from their points, CSS
+   * pixels: y's to the right of the floor, z's to the left of its axis, x's
+   * below its front edge. The view's framing keeps that much room at those
+   * edges.
    */
-  readonly labelRoomPx = { left: 0, right: 0 };
+  readonly labelRoomPx = { left: 0, right: 0, below: 0 };
   /** Per axis, its tick labels, lowest coordinate first, which showLegibleTicks thins out where they would overlap. */
   readonly #ticks: Tick[][] = [];
 
@@ -161,8 +162,9 @@ export class GridAxes extends THREE.Group {
     ticks.push({ label, widthPx });
   }
 
-  /** Notes a tick label `widthPx` wide on `axis`: y's reach right, z's left, x's hang below. */
+  /** Notes a tick label `widthPx` wide on `axis`: y's reach right by their width, z's left, x's hang below by their height. */
   #reach(axis: number, widthPx: number): void {
+    if (axis === 0) this.labelRoomPx.below = TICK_HEIGHT_PX;
     if (axis === 1) this.labelRoomPx.right = Math.max(this.labelRoomPx.right, widthPx);
     if (axis === 2) this.labelRoomPx.left = Math.max(this.labelRoomPx.left, widthPx);
   }

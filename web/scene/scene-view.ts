@@ -647,13 +647,16 @@ export class SceneView {
     const inset = this.#topInset();
     // A small view (an embedded one) spares less of itself for the edges.
     const edge = Math.min(FIT_EDGE_PX, FIT_EDGE_SHARE * Math.min(width, height));
-    // Sideways, the tick labels that reach out of the picture need their width.
-    const { left, right: rightRoom } = drawn.axes.labelRoomPx;
-    const [edgeLeft, edgeRight] = [Math.max(edge, left), Math.max(edge, rightRoom)];
+    // The tick labels that reach out of the picture need their width at the
+    // sides and, under it, x's their height: they hang below their points at
+    // the front edge, which a small view's edge (6 px in a 320 x 240 embed)
+    // left 2 px short of.
+    const { left, right: rightRoom, below } = drawn.axes.labelRoomPx;
+    const [edgeLeft, edgeRight, edgeBottom] = [Math.max(edge, left), Math.max(edge, rightRoom), Math.max(edge, below)];
     const freeX = 1 - (edgeLeft + edgeRight) / Math.max(width, 1);
     const middleX = (edgeLeft - edgeRight) / Math.max(width, 1);
-    const freeY = 1 - inset - (2 * edge) / Math.max(height, 1);
-    const middle = -inset;
+    const freeY = 1 - inset - (edge + edgeBottom) / Math.max(height, 1);
+    const middle = -inset + (edgeBottom - edge) / Math.max(height, 1);
     // The free part's edges, from the screen's middle where the camera looks
     // (-1..1): the room each way. The legend and the tools take the top, so
     // there is less room above the middle than below it.
