@@ -10,6 +10,8 @@ import {
   axisChoices,
   axisCount,
   comparableWith,
+  comparedRequests,
+  comparedValues,
   defaultAlgorithm,
   defaultOther,
   defaultState,
@@ -163,13 +165,38 @@ describe('page state in the URL query', () => {
     expect(experimentAlgorithm(stateFromQuery('mode=experiment&algorithm=dda', catalogue)!, catalogue).id).toBe('dda');
     expect(offeredAlgorithms('experiment', catalogue).map((a) => a.family)).not.toContain('arc');
     expect(offeredAlgorithms('trace', catalogue)).toEqual(catalogue.algorithms);
-    // Every algorithm's default partner is one it can be compared with, and another algorithm; none is comparable with itself.
+    // Every algorithm's default partner is one it can be compared with, and
+    // another algorithm; none is comparable with itself but the helix, by its
+    // method, whose partner it is (no other algorithm takes a move that rises).
     for (const a of catalogue.algorithms) {
       const other = defaultOther(a, catalogue.algorithms);
       expect(comparableWith(a, catalogue.algorithms), a.id).toContain(other);
+      if (a.id === 'helix') {
+        expect(other, a.id).toBe(a);
+        continue;
+      }
       expect(comparableWith(a, catalogue.algorithms), a.id).not.toContain(a);
       expect(other.id, a.id).not.toBe(a.id);
     }
+  });
+
+  it('runs the helix against itself by the method the first side does not run', () => {
+    const state = stateFromQuery('mode=compare&algorithm=helix&other=helix&method=segments&segmentLength=2', catalogue)!;
+    expect(state.other).toBe('helix');
+    const compared = comparedValues(state, catalogue.algorithms)!;
+    expect(compared).toEqual({ option: 'method', values: ['segments', 'saleem'] });
+    const sides = comparedRequests(state, catalogue.algorithms);
+    expect(sides.map((side) => [side.options.method, side.distinction])).toEqual([
+      ['segments', 'segments'],
+      ['saleem', 'saleem'],
+    ]);
+    // The options typed go to both sides, as the core's compare() gives them: the core says which a method refuses.
+    expect(sides.map((side) => side.options.segmentLength)).toEqual([2, 2]);
+    // Left at its default, the first runs saleem and the second segments.
+    expect(comparedValues(stateFromQuery('mode=compare&algorithm=helix', catalogue)!, catalogue.algorithms)?.values).toEqual(['saleem', 'segments']);
+    // Out of compare mode, or against another algorithm, nothing tells the sides apart.
+    expect(comparedValues({ ...state, mode: 'trace' }, catalogue.algorithms)).toBeUndefined();
+    expect(comparedValues({ ...state, other: 'circle' }, catalogue.algorithms)).toBeUndefined();
   });
 
   it("fits a link's points to the axes the page shows (nd in 4D was traced in 4D behind 3 fields)", () => {

@@ -517,6 +517,50 @@ describe('compare mode', () => {
     await p.close();
   });
 
+  it('compares the helix with itself by its other method on a move that rises, which no other algorithm takes, and keeps it over a reload', async () => {
+    // Picked in compare mode from circle against arc-segments: circle stayed
+    // the second, and refused the helix's rising example move.
+    const p = await openPage('?mode=compare&algorithm=circle&other=arc-segments&from=20,0,0&to=-20,0,0&center=0,0,0');
+    const { page } = p;
+    await page.getByTestId('metrics-table').waitFor();
+    await page.getByTestId('algorithm').selectOption('helix');
+    await page.getByTestId('trace-status').filter({ hasText: /^helix \(saleem\): .* helix \(segments\): / }).waitFor();
+    const other = page.getByTestId('other');
+    expect([await other.inputValue(), await other.locator('option:checked').innerText()]).toEqual(['helix', 'Helix (arc plus linear axis), method segments (helix)']);
+    expect(await page.getByTestId('metrics-table').locator('thead').innerText()).toMatch(/helix \(saleem\)\s+helix \(segments\)/);
+    // Each side as the core traces the helix's example move by that method.
+    const move = { from: [10, 0, 0], to: [10, 0, 24], center: [0, 0, 0], dir: 'ccw', plane: 'xy' } as const;
+    const [saleem, segments] = [await trace({ algorithm: 'helix', ...move }), await trace({ algorithm: 'helix', ...move, method: 'segments' })];
+    const stepsRow = async () => (await page.getByTestId('metrics-table').locator('tbody tr').first().innerText()).split('\t').slice(1);
+    expect(await stepsRow()).toEqual([String(saleem.steps), String(segments.steps)]);
+    expect(await page.locator('#legend-only-second').innerText()).toBe('only helix (segments) visits');
+    await screenshot(page, 'compare-helix-methods');
+    // One file per side, each named by its method (both were helix-steps.csv).
+    const downloads: string[] = [];
+    page.on('download', (d) => downloads.push(d.suggestedFilename()));
+    await page.getByTestId('export-csv').click();
+    await expect.poll(() => [...downloads].sort()).toEqual(['helix-saleem-steps.csv', 'helix-segments-steps.csv']);
+
+    // The first side's method chosen in the form: the second runs the other one.
+    await page.getByTestId('input-method').selectOption('segments');
+    await page.getByTestId('trace-status').filter({ hasText: /^helix \(segments\): .* helix \(saleem\): / }).waitFor();
+    expect(await other.locator('option:checked').innerText()).toBe('Helix (arc plus linear axis), method saleem (helix)');
+    expect(await stepsRow()).toEqual([String(segments.steps), String(saleem.steps)]);
+    saleem.free();
+    segments.free();
+    await page.waitForTimeout(600);
+    const link = new URL(page.url()).searchParams;
+    expect([link.get('algorithm'), link.get('other'), link.get('method')]).toEqual(['helix', 'helix', 'segments']);
+    // Nothing chosen is lost on a reload (the URL), nor on a visit without the link (storage).
+    for (const visit of [() => page.reload(), () => page.goto(new URL(page.url()).origin + new URL(page.url()).pathname)]) {
+      await visit();
+      await page.getByTestId('trace-status').filter({ hasText: /^helix \(segments\): .* helix \(saleem\): / }).waitFor();
+      expect([await other.inputValue(), await page.getByTestId('input-method').inputValue()]).toEqual(['helix', 'segments']);
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('compares direct arc stepping with chords: steps and largest radial error', async () => {
     const p = await openPage('?mode=compare&algorithm=circle&other=arc-segments&from=20,0,0&to=-20,0,0&center=0,0,0&segmentLength=8');
     const { page } = p;

@@ -8,10 +8,11 @@
 import { element } from '../form/options-form.js';
 import { formatPoint, NO_VALUE_TEXT } from '../format.js';
 import type { StepWhy } from '../core/index.js';
-import type { PathSummary, TraceDifference } from '../worker/protocol.js';
+import type { MeasuredTrace } from '../worker/client.js';
+import type { TraceDifference } from '../worker/protocol.js';
 
 /** The parts of a trace the table reads. */
-export type ComparedTrace = Pick<PathSummary, 'algorithm' | 'dims' | 'steps' | 'end' | 'metrics'>;
+export type ComparedTrace = Pick<MeasuredTrace, 'name' | 'dims' | 'steps' | 'end' | 'metrics'>;
 
 /** A step's decision values as one line, "M = 2, N = —, region = a", with a dash where a column does not apply. */
 function decisionList(why: StepWhy): HTMLElement {
@@ -34,7 +35,7 @@ export class ComparePanel {
       this.#container.replaceChildren();
       return;
     }
-    const [la, lb] = a.algorithm === b.algorithm ? [`${a.algorithm} (a)`, `${b.algorithm} (b)`] : [a.algorithm, b.algorithm];
+    const [la, lb] = [a.name, b.name];
     const cellCount = (cells: Int32Array, dims: number) => String(cells.length / dims);
     const rows: [string, string, string][] = [
       ['steps', String(a.steps), String(b.steps)],

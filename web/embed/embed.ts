@@ -7,7 +7,7 @@
  *   on screen, at the address the page is served from, ready to copy.
  * Both links are the permalink (state/query.ts) of the state as it is.
  */
-import { type AppState, tracedAlgorithms, type Catalogue, experimentAlgorithm } from '../state/app-state.js';
+import { type AppState, tracedAlgorithms, type Catalogue, comparedValues, experimentAlgorithm } from '../state/app-state.js';
 import { GCODE_URL_LIMIT, stateToQuery } from '../state/query.js';
 import type { Store } from '../state/store.js';
 import { staleness } from '../state/stale.js';
@@ -55,8 +55,10 @@ function frameTitle(state: AppState, catalogue: Catalogue): string {
   switch (state.mode) {
     case 'trace':
       return `${names[0]}${move}, step by step (voxpath)`;
-    case 'compare':
-      return `${names.join(' and ')} compared${move} (voxpath)`;
+    case 'compare': {
+      const itself = comparedValues(state, catalogue.algorithms);
+      return itself ? `${names[0]}, ${itself.option} ${itself.values.join(' and ')} compared${move} (voxpath)` : `${names.join(' and ')} compared${move} (voxpath)`;
+    }
     case 'gcode':
       return 'A G-code program stepped on a grid (voxpath)';
     case 'experiment':

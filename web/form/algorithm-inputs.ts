@@ -14,7 +14,9 @@ import {
   type OptionValue,
   axisChoices,
   axisCount,
+  type ComparedValues,
   comparableWith,
+  comparedValues,
   defaultAlgorithm,
   defaultOptions,
   defaultOther,
@@ -60,8 +62,10 @@ export function carriedOptions(infos: readonly AlgorithmInfo[], current: Readonl
   return withAxes({ ...defaults, ...kept }, axisCount(infos, kept));
 }
 
-function option(info: AlgorithmInfo): HTMLOptionElement {
-  return element('option', { value: info.id, textContent: `${info.title} (${info.id})` });
+/** A picker's entry for `info`; `runs`: the value of its compared option it runs, when compared with itself. */
+function option(info: AlgorithmInfo, runs?: ComparedValues): HTMLOptionElement {
+  const title = runs ? `${info.title}, ${runs.option} ${runs.values[1]}` : info.title;
+  return element('option', { value: info.id, textContent: `${title} (${info.id})` });
 }
 
 export class AlgorithmInputs {
@@ -96,16 +100,19 @@ export class AlgorithmInputs {
 
   /**
    * Traces `id` from its example move (in `mode`). The second algorithm of a
-   * comparison stays when it can still be compared with `id` and is another
-   * one; else it becomes the default partner of `id`, so that no mode is left
-   * comparing a circle with a line, or an algorithm with itself.
+   * comparison stays when it can still be compared with `id`; else it
+   * becomes the default partner of `id`, so that no mode is left comparing a
+   * circle with a line, or an algorithm with itself by nothing. The helix
+   * takes its partner, itself by its other method, always: its example move
+   * rises, which neither circle nor arc-segments takes.
    */
   #pickAlgorithm(id: string): void {
     const state = this.#store.state;
     const { algorithms } = this.#catalogue;
     const info = algorithms.find((a) => a.id === id) ?? defaultAlgorithm(algorithms);
-    const keep = comparableWith(info, algorithms).some((a) => a.id === state.other);
-    const other = keep ? state.other : defaultOther(info, algorithms).id;
+    const partner = defaultOther(info, algorithms);
+    const keep = partner !== info && comparableWith(info, algorithms).some((a) => a.id === state.other);
+    const other = keep ? state.other : partner.id;
     const next = tracedAlgorithms({ ...state, algorithm: info.id, other }, algorithms);
     const options = carriedOptions(next, state.options, false);
     this.#store.update({ algorithm: info.id, other, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(next, options)) });
@@ -158,7 +165,7 @@ export class AlgorithmInputs {
       e.algorithm.replaceChildren(
         ...(['line', 'arc'] as const).flatMap((family) => {
           const members = offered.filter((a) => a.family === family);
-          return members.length ? [element('optgroup', { label: family === 'line' ? 'Lines' : 'Arcs and helices' }, ...members.map(option))] : [];
+          return members.length ? [element('optgroup', { label: family === 'line' ? 'Lines' : 'Arcs and helices' }, ...members.map((a) => option(a)))] : [];
         }),
       );
     }
@@ -169,9 +176,12 @@ export class AlgorithmInputs {
     e.errata.replaceChildren(...info.errata.map((text) => element('li', { textContent: text })));
     e.errataBox.hidden = info.errata.length === 0;
 
+    // The first algorithm itself is offered by the other value of its compared option (the helix by its other method), which follows the first's.
     const compatible = comparableWith(info, this.#catalogue.algorithms);
-    if (e.other.options.length !== compatible.length || [...e.other.options].some((o, i) => o.value !== compatible[i]!.id)) {
-      e.other.replaceChildren(...compatible.map(option));
+    const itself = comparedValues({ ...state, mode: 'compare', other: info.id }, this.#catalogue.algorithms);
+    const entries = compatible.map((a) => option(a, a === info ? itself : undefined));
+    if (e.other.options.length !== entries.length || [...e.other.options].some((o, i) => o.value !== entries[i]!.value || o.text !== entries[i]!.text)) {
+      e.other.replaceChildren(...entries);
     }
     e.other.value = state.other;
     e.otherCitation.textContent = infos[1]?.citation ?? '';

@@ -27,10 +27,14 @@ export function download(name: string, blob: Blob): void {
   setTimeout(() => URL.revokeObjectURL(url), 0);
 }
 
-/** The traces on screen and their file names: the program, or the trace, or both compared ones, each under its algorithm's id. */
+/**
+ * The traces on screen and their file names: the program, or the trace, or
+ * both compared ones, each under its algorithm's id, and an algorithm
+ * compared with itself with each side's value after it (helix-saleem, helix-segments).
+ */
 function exported(shown: Shown): [RemoteTrace, string][] {
   if (shown.program) return [[shown.program, 'program']];
-  return [shown.a, shown.b].filter((t) => t !== undefined).map((t) => [t, t.algorithm]);
+  return [shown.a, shown.b].filter((t) => t !== undefined).map((t) => [t, t.distinction === undefined ? t.algorithm : `${t.algorithm}-${t.distinction}`]);
 }
 
 /** The export buttons' state, kept by the page as what it shows changes. */

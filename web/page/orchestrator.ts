@@ -32,13 +32,13 @@ import type { Inspector } from '../inspector/inspector.js';
 import { PointDetails } from '../inspector/point-details.js';
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
-import { type AppState, type Catalogue, MODE_INPUT_KEYS, experimentAlgorithm, tracedAlgorithms, traceOptions } from '../state/app-state.js';
+import { type AppState, type Catalogue, type ComparedSide, MODE_INPUT_KEYS, comparedRequests, experimentAlgorithm, tracedAlgorithms, traceOptions } from '../state/app-state.js';
 import { markStale, staleness } from '../state/stale.js';
 import type { Store } from '../state/store.js';
 import type { StepReason } from '../timeline/step-reason.js';
 import type { TimeViews } from './time-views.js';
 import type { Timeline } from '../timeline/timeline.js';
-import { Cancelled, CoreCrash, InputRejected, type MeasuredTrace, type Running, type TraceClient } from '../worker/client.js';
+import { Cancelled, CoreCrash, InputRejected, type MeasuredTrace, type Running, type TraceClient, traceName } from '../worker/client.js';
 import type { LearnerCheck, LineSteps } from '../worker/protocol.js';
 import { hideAlert, showAlert } from './alert.js';
 import type { Exports } from './export.js';
@@ -67,15 +67,15 @@ const RETRACE_DELAY_MS = 250;
  * which no circle takes) the other side, traced all the same, is freed here:
  * nothing else held it, and each refused change kept one more in the worker.
  */
-async function traceBoth(client: TraceClient, [first, second]: readonly [TraceOptions, TraceOptions]): Promise<[MeasuredTrace, MeasuredTrace]> {
-  const [a, b] = await Promise.allSettled([client.trace(first), client.trace(second)]);
+async function traceBoth(client: TraceClient, [first, second]: readonly [ComparedSide, ComparedSide]): Promise<[MeasuredTrace, MeasuredTrace]> {
+  const [a, b] = await Promise.allSettled([client.trace(first.options, first.distinction), client.trace(second.options, second.distinction)]);
   if (a.status === 'rejected') {
     if (b.status === 'fulfilled') b.value.free();
-    throw refusedBy(first.algorithm, a.reason);
+    throw refusedBy(traceName(first.options.algorithm, first.distinction), a.reason);
   }
   if (b.status === 'rejected') {
     a.value.free();
-    throw refusedBy(second.algorithm, b.reason);
+    throw refusedBy(traceName(second.options.algorithm, second.distinction), b.reason);
   }
   return [a.value, b.value];
 }
@@ -262,7 +262,7 @@ export class Orchestrator {
     p.timeline.setSteps(main || b ? this.#lastPoint() : undefined);
     this.#markDifference();
     // Compared, the inspector follows the first path only: say which.
-    p.inspectorHeading.textContent = state.mode === 'compare' ? `Current point of ${a?.algorithm ?? 'the first'}` : 'Current point';
+    p.inspectorHeading.textContent = state.mode === 'compare' ? `Current point of ${a?.name ?? 'the first'}` : 'Current point';
   }
 
   #freeShown(): void {
@@ -305,8 +305,7 @@ export class Orchestrator {
         ruleOptions = traceOptions(state, info!);
         next = { a: await p.client.trace(ruleOptions) };
       } else if (state.mode === 'compare') {
-        const [infoA, infoB] = tracedAlgorithms(state, p.catalogue.algorithms);
-        const [a, b] = await traceBoth(p.client, [traceOptions(state, infoA!), traceOptions(state, infoB!)]);
+        const [a, b] = await traceBoth(p.client, comparedRequests(state, p.catalogue.algorithms));
         next = { a, b, difference: await p.client.difference(a, b) };
       } else if (state.mode === 'gcode') {
         const started = p.client.runGcode(

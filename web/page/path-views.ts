@@ -132,11 +132,11 @@ export class PathViews {
     this.#e.decision3d.checked = state.decision3d;
     const e = this.#e;
     const compared = state.mode === 'compare';
-    e.legendVisited.textContent = compared ? `visited by ${a?.algorithm ?? 'the first'}` : 'visited';
-    this.#secondName = `${b?.algorithm ?? 'second'}`;
+    e.legendVisited.textContent = compared ? `visited by ${a?.name ?? 'the first'}` : 'visited';
+    this.#secondName = b?.name ?? 'second';
     this.#nameSecond(side);
-    e.legendOnlyFirst.textContent = `only ${a?.algorithm ?? 'first'} visits`;
-    e.legendOnlySecond.textContent = `only ${b?.algorithm ?? 'second'} visits`;
+    e.legendOnlyFirst.textContent = `only ${a?.name ?? 'first'} visits`;
+    e.legendOnlySecond.textContent = `only ${b?.name ?? 'second'} visits`;
     this.setLearner(shown.learner);
     // The shown point's decision, on the views built anew.
     this.#drawDecision();

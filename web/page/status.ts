@@ -16,7 +16,7 @@ export function traceStatus(trace: MeasuredTrace): string {
   const m = trace.metrics;
   const bound = trace.deviationBound;
   return (
-    `${trace.algorithm}: ${trace.steps} steps from ${formatPoint(trace.start)} to ${formatPoint(trace.end)}; ` +
+    `${trace.name}: ${trace.steps} steps from ${formatPoint(trace.start)} to ${formatPoint(trace.end)}; ` +
     `largest distance from the ideal path ${m.maxDeviation.toFixed(3)}` +
     (bound ? ` (the rule keeps it within ${bound.value.toFixed(3)}: ${bound.why})` : '') +
     `; ${countOf(m.ties, 'tie')}.`

@@ -41,7 +41,11 @@ export interface AppState {
   mode: Mode;
   /** Algorithm id from the catalogue (compare mode: the first, a). */
   algorithm: string;
-  /** Compare mode: the second algorithm, b. It takes the options it declares from `options`. */
+  /**
+   * Compare mode: the second algorithm, b. It takes the options it declares
+   * from `options`; the first algorithm again when it is compared with
+   * itself by an option (COMPARED_BY), whose other value it runs.
+   */
   other: string;
   layout: CompareLayout;
   /** The algorithm's options, by OptionSpec name (from, to, tie...); absent ones take the core's default. */
@@ -106,13 +110,51 @@ const DEFAULT_ALGORITHM = 'regions';
  * The second algorithm compare mode starts with for `info`: greedy against
  * a line algorithm (the lesson of the 2009 blog: greedy strays from the
  * line), arc-segments against circle (direct arc stepping against chords),
- * and for those two their natural partners.
+ * for those two their natural partners, and the helix against itself by its
+ * other method (COMPARED_BY: no other algorithm takes a move that rises).
  */
 export function defaultOther(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AlgorithmInfo {
   const partner: Record<string, string> = { greedy: 'walk6', circle: 'arc-segments', 'arc-segments': 'circle', helix: 'helix' };
   const wanted = partner[info.id] ?? (info.family === 'arc' ? 'arc-segments' : 'greedy');
-  const found = catalogue.find((a) => a.id === wanted && a !== info) ?? catalogue.find((a) => a.family === info.family && a !== info);
+  const found = catalogue.find((a) => a.id === wanted && (a !== info || comparedBy(a))) ?? catalogue.find((a) => a.family === info.family && a !== info);
   return found ?? info;
+}
+
+/**
+ * Algorithms compared with themselves, by the option named: the second side
+ * runs another of its values. The helix by its method, saleem against
+ * segments: on a move that rises it is the only algorithm there is (circle
+ * and arc-segments refuse any rise), and its method is "exactly the
+ * comparison a learner wants" (rust/src/arc/helix.rs).
+ */
+const COMPARED_BY: Readonly<Record<string, string>> = { helix: 'method' };
+
+/** The choice option `info` is compared with itself by (COMPARED_BY), if any. */
+function comparedBy(info: AlgorithmInfo): (OptionSpec & { kind: { type: 'choice' } }) | undefined {
+  const spec = info.options.find((o) => o.name === COMPARED_BY[info.id]);
+  return spec?.kind.type === 'choice' ? (spec as OptionSpec & { kind: { type: 'choice' } }) : undefined;
+}
+
+/** What tells the two sides of an algorithm compared with itself apart: the option, and the value each side runs. */
+export interface ComparedValues {
+  option: string;
+  values: [string, string];
+}
+
+/**
+ * In compare mode with an algorithm against itself: the value of its
+ * compared option (COMPARED_BY) each side runs, the first's as chosen (else
+ * its default) and the second's the first other one; else undefined.
+ */
+export function comparedValues(state: AppState, catalogue: readonly AlgorithmInfo[]): ComparedValues | undefined {
+  if (state.mode !== 'compare' || state.other !== state.algorithm) return undefined;
+  const info = catalogue.find((a) => a.id === state.algorithm);
+  const spec = info && comparedBy(info);
+  if (!spec) return undefined;
+  const chosen = state.options[spec.name];
+  const first = typeof chosen === 'string' ? chosen : (spec.default ?? spec.kind.values[0]!);
+  const second = spec.kind.values.find((v) => v !== first) ?? first;
+  return { option: spec.name, values: [first, second] };
 }
 
 /**
@@ -146,11 +188,12 @@ export function experimentAlgorithm(state: AppState, catalogue: Catalogue): Algo
 
 /**
  * Algorithms that can be compared with `info`: the others of its family that
- * take an axis count of the page it takes (an algorithm against itself draws
- * one path twice).
+ * take an axis count of the page it takes, and `info` itself when it is
+ * compared by an option (COMPARED_BY; else an algorithm against itself
+ * draws one path twice).
  */
 export function comparableWith(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AlgorithmInfo[] {
-  return catalogue.filter((a) => a !== info && a.family === info.family && axisChoices([info, a]).length > 0);
+  return catalogue.filter((a) => (a !== info || comparedBy(a)) && a.family === info.family && axisChoices([info, a]).length > 0);
 }
 
 /** Axes the page shows: 2 or 3 (a 3D view), within what the algorithm takes. */
@@ -189,6 +232,9 @@ export function sharedOptionSpecs(infos: readonly AlgorithmInfo[]): OptionSpec[]
         // show the first one's while the second ran with its own.
         const own = `${first.from.id}: ${first.spec.default ?? 'none'}, ${info.id}: ${spec.default ?? 'none'}`;
         seen.set(spec.name, { spec: { ...first.spec, default: null, doc: `${first.spec.doc} Left at "the algorithm's default", each algorithm runs with its own (${own}).` }, from: first.from });
+      } else if (first.from === info && comparedBy(info) === spec) {
+        // Compared with itself, the field is the first side's: say where the second's value comes from.
+        seen.set(spec.name, { spec: { ...spec, doc: `${spec.doc} Compared with itself, ${info.id} runs the ${spec.name} chosen here first and the other one second.` }, from: info });
       }
     }
   }
@@ -285,10 +331,32 @@ export function tracedAlgorithms(state: AppState, catalogue: readonly AlgorithmI
  * The request the core receives for `info` in this state: the options it
  * declares, as typed and unchecked (the core validates each and names the
  * one at fault), plus the page's own. In compare mode each algorithm takes
- * the shared options it declares, as the core's compare() does.
+ * the shared options it declares, as the core's compare() does (see
+ * comparedRequests).
  */
 export function traceOptions(state: AppState, info: AlgorithmInfo): TraceOptions {
   const options: Record<string, unknown> = { algorithm: info.id };
   for (const spec of info.options) if (spec.name in state.options) options[spec.name] = state.options[spec.name];
   return { ...options, ...PAGE_OPTIONS } as TraceOptions;
+}
+
+/** One side of a comparison: its request, and the value that tells it from the other side of an algorithm compared with itself. */
+export interface ComparedSide {
+  options: TraceOptions;
+  distinction: string | undefined;
+}
+
+/**
+ * Compare mode's two requests (traceOptions), a then b; an algorithm
+ * compared with itself runs its compared option's value on each side
+ * (comparedValues): the helix's method as chosen, then the other one.
+ */
+export function comparedRequests(state: AppState, catalogue: readonly AlgorithmInfo[]): [ComparedSide, ComparedSide] {
+  const compared = comparedValues(state, catalogue);
+  const [a, b] = tracedAlgorithms(state, catalogue).map((info, i): ComparedSide => {
+    const distinction = compared?.values[i];
+    const options = traceOptions(state, info);
+    return { options: compared ? { ...options, [compared.option]: distinction } : options, distinction };
+  });
+  return [a!, b!];
 }

@@ -89,7 +89,7 @@ export class StepReason {
     // The main path's detail has not come yet: it will, and call back.
     if (sentences.some((s) => s === undefined)) return;
     const lines = explained.map((t, i) => {
-      const label = traces.length > 1 ? `${t.algorithm}, step ${pointIndex}: ` : `Step ${pointIndex}: `;
+      const label = traces.length > 1 ? `${t.name}, step ${pointIndex}: ` : `Step ${pointIndex}: `;
       return element('span', { className: 'reason' }, element('strong', { textContent: label }), sentences[i]!);
     });
     if (pointIndex === 0) lines.push(element('span', { className: 'reason', textContent: 'The start point: no step has been decided yet.' }));

@@ -172,12 +172,16 @@ export class TraceClient {
     return this.request({ kind: 'catalogue' });
   }
 
-  /** Runs a trace in the worker; rejects with InputRejected naming the option at fault. */
-  async trace(options: TraceOptions): Promise<MeasuredTrace> {
+  /**
+   * Runs a trace in the worker; rejects with InputRejected naming the option
+   * at fault. `distinction`: the value it is told apart by from the other
+   * side of an algorithm compared with itself (its `name` says it).
+   */
+  async trace(options: TraceOptions, distinction?: string): Promise<MeasuredTrace> {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
     const path = await this.request({ kind: 'trace', traceId, options, pointsSent: this.#pointsSent() });
-    return new MeasuredTrace(this, traceId, generation, path);
+    return new MeasuredTrace(this, traceId, generation, path, distinction);
   }
 
   /** Runs a G-code program in the worker, reporting progress after every slice of lines; cancellable. */
@@ -225,20 +229,28 @@ export class RemoteTrace {
   readonly idealLine: IdealLine;
   /** The box every point lies in (min and max per axis, grid units), as the core found it. */
   readonly bounds: PointBounds;
+  /** Compared with its own algorithm: the value of the compared option it ran ('segments'), else undefined. */
+  readonly distinction: string | undefined;
   readonly #client: TraceClient;
   /** The id the worker holds this trace by. */
   readonly traceId: number;
   readonly #generation: number;
 
-  constructor(client: TraceClient, traceId: number, generation: number, path: TracedPath<TraceSummary>) {
+  constructor(client: TraceClient, traceId: number, generation: number, path: TracedPath<TraceSummary>, distinction?: string) {
     this.#client = client;
     this.traceId = traceId;
     this.#generation = generation;
+    this.distinction = distinction;
     Object.assign(this, path.summary);
     this.sampledPoints = path.sampledPoints;
     this.pointsEvery = path.pointsEvery;
     this.idealLine = path.idealLine;
     this.bounds = path.bounds;
+  }
+
+  /** What the page calls it: its algorithm, told apart from the other side (traceName). */
+  get name(): string {
+    return traceName(this.algorithm, this.distinction);
   }
 
   /** Point index k as its coordinates (a view into `sampledPoints`) when the page holds it, else undefined (ask pointsInRange). */
@@ -300,11 +312,20 @@ export class RemoteTrace {
   }
 }
 
+/**
+ * What the page calls a trace of `algorithm`: its id, with the value that
+ * tells it apart from the other side of an algorithm compared with itself
+ * ("helix (segments)").
+ */
+export function traceName(algorithm: string, distinction: string | undefined): string {
+  return distinction === undefined ? algorithm : `${algorithm} (${distinction})`;
+}
+
 /** A trace the worker ran for the page (trace and compare modes), with its metrics, which the status line shows at once. */
 export interface MeasuredTrace extends Readonly<PathSummary> {}
 export class MeasuredTrace extends RemoteTrace {
-  constructor(client: TraceClient, traceId: number, generation: number, path: TracedPath) {
-    super(client, traceId, generation, path);
+  constructor(client: TraceClient, traceId: number, generation: number, path: TracedPath, distinction?: string) {
+    super(client, traceId, generation, path, distinction);
   }
 }
 
