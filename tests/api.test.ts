@@ -2,7 +2,7 @@
 // Golden values: Wang et al. 2020 eq. (6), (8), (10) for (0,0,0)->(10,7,6),
 // as worked out in SEED-NOTES.md (they equal Liu's Table 1 point for point).
 import { describe, expect, it } from 'vitest';
-import { algorithms, NO_VALUE, readDecision, runGcode, trace, traceToCsv, traceToJson, traceToTable, VoxpathError } from '../web/core/index.js';
+import { algorithms, catalogue, NO_VALUE, randomLines, readDecision, runGcode, trace, traceToCsv, traceToJson, traceToTable, VoxpathError } from '../web/core/index.js';
 import type { TraceOptions } from '../web/core/index.js';
 import { distanceToLine, labelsOf, rejection } from './helpers.js';
 
@@ -252,6 +252,32 @@ describe('bad input', () => {
     expect((await rejected({ ...LINE, from: [0, Number.NaN, 0] })).message).toBe('from: y must be a number, got NaN');
     const long = await rejected({ ...LINE, to: [100000, 0, 0], maxSteps: 1000 });
     expect(long.field).toBe('maxSteps');
+  });
+
+  it("says a whole number outside its declared range in the words the catalogue gives the page's form", async () => {
+    // The form checks each field as it is typed and says mustBe: one statement of the words, the core's.
+    const { algorithms, experiments } = await catalogue();
+    const cases = [
+      ...algorithms.flatMap((a) => a.options.map((spec) => ({ spec, run: (v: number) => trace({ ...a.example.options, algorithm: a.id, [spec.name]: v } as TraceOptions) }))),
+      ...experiments.flatMap((e) => e.options.map((spec) => ({ spec, run: (v: number) => randomLines({ algorithm: 'regions', [spec.name]: v }) }))),
+    ];
+    const said: string[] = [];
+    for (const { spec, run } of cases) {
+      if (spec.kind.type !== 'integer') continue;
+      const { min, max, mustBe } = spec.kind;
+      if (min === undefined && max === undefined) {
+        expect(mustBe, spec.name).toBeUndefined();
+        continue;
+      }
+      for (const outside of [min === undefined ? undefined : min - 1, max === undefined ? undefined : max + 1]) {
+        if (outside === undefined) continue;
+        const error = await rejection(run(outside));
+        expect([error.field, error.message]).toEqual([spec.name, `${spec.name}: ${mustBe}, got ${outside}`]);
+        said.push(error.message);
+      }
+    }
+    // Both bounds, and a lower bound alone (liu-float's decimals; random-lines' count, maxCoordinate and seed).
+    expect(said).toEqual(expect.arrayContaining(['decimals: must be 0 to 10, got 11', 'count: must be 1 to 100000, got 0', 'seed: must be 0 or more, got -1']));
   });
 
   it('keeps working after an error', async () => {

@@ -23,7 +23,7 @@ use crate::line::GCD;
 use crate::line::bresenham3d;
 use crate::line::liu_float::{self, DECIMALS};
 use crate::request::tie_option;
-use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
+use crate::request::{FROM, IntegerRange, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
 use crate::text::{echo, split_line};
 use crate::trace::Trace;
 use serde::Serialize;
@@ -1081,10 +1081,10 @@ fn tried_values(spec: &OptionSpec) -> Option<Vec<Value>> {
     match spec.kind {
         OptionKind::Choice { values } => Some(values.iter().map(|&v| Value::from(v)).collect()),
         OptionKind::Boolean => Some(vec![Value::from(false), Value::from(true)]),
-        OptionKind::Integer {
+        OptionKind::Integer(IntegerRange {
             min: Some(lo),
             max: Some(hi),
-        } if hi - lo < SMALL_RANGE => Some((lo..=hi).map(Value::from).collect()),
+        }) if hi - lo < SMALL_RANGE => Some((lo..=hi).map(Value::from).collect()),
         _ => None,
     }
 }

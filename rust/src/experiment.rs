@@ -13,7 +13,7 @@
 use crate::algorithm_info::Family;
 use crate::error::Error;
 use crate::grid::{MAX_AXES, Point};
-use crate::request::{MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
+use crate::request::{IntegerRange, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
 use serde::Serialize;
 use serde_json::Value;
 use tsify::Tsify;
@@ -155,10 +155,10 @@ pub const OPTIONS: &[OptionSpec] = &[COUNT, SEED, MAX_COORDINATE, DIMS];
 
 const COUNT: OptionSpec = OptionSpec {
     name: "count",
-    kind: OptionKind::Integer {
+    kind: OptionKind::Integer(IntegerRange {
         min: Some(1),
         max: Some(MAX_LINES as i64),
-    },
+    }),
     required: false,
     default: Some("100"),
     doc: "How many random lines (Wang: 100), at most 100000.",
@@ -166,10 +166,10 @@ const COUNT: OptionSpec = OptionSpec {
 
 const SEED: OptionSpec = OptionSpec {
     name: "seed",
-    kind: OptionKind::Integer {
+    kind: OptionKind::Integer(IntegerRange {
         min: Some(0),
         max: None,
-    },
+    }),
     required: false,
     default: Some("1"),
     doc: "Seed of the SplitMix64 generator: the same seed gives the same lines everywhere.",
@@ -177,10 +177,10 @@ const SEED: OptionSpec = OptionSpec {
 
 const MAX_COORDINATE: OptionSpec = OptionSpec {
     name: "maxCoordinate",
-    kind: OptionKind::Integer {
+    kind: OptionKind::Integer(IntegerRange {
         min: Some(1),
         max: Some(10_000),
-    },
+    }),
     required: false,
     default: Some("100"),
     doc: "End coordinates are drawn uniformly from 0 to this (Wang: 100), at most 10000.",
@@ -188,10 +188,10 @@ const MAX_COORDINATE: OptionSpec = OptionSpec {
 
 const DIMS: OptionSpec = OptionSpec {
     name: "dims",
-    kind: OptionKind::Integer {
+    kind: OptionKind::Integer(IntegerRange {
         min: None,
         max: None,
-    },
+    }),
     required: false,
     default: None,
     doc: "Axes per line (default 3, within what the algorithm takes).",

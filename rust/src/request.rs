@@ -67,14 +67,11 @@ pub enum OptionKind {
     Point,
     /// A real number.
     Number,
-    /// A whole number, within `min..=max` where they are given (a small
-    /// declared range is what a check tries every value of, see `check`).
-    Integer {
-        #[serde(skip_serializing_if = "Option::is_none")]
-        min: Option<i64>,
-        #[serde(skip_serializing_if = "Option::is_none")]
-        max: Option<i64>,
-    },
+    /// A whole number, within its range where it has one (a small declared
+    /// range is what a check tries every value of, see `check`).
+    // Crosses as IntegerRangeInfo: the bounds with their words, which no
+    // stored field holds.
+    Integer(#[tsify(type = "IntegerRangeInfo")] IntegerRange),
     /// One of a fixed set of words.
     Choice { values: &'static [&'static str] },
     /// true or false.
@@ -82,6 +79,69 @@ pub enum OptionKind {
     /// A number for every axis, or one per axis ([x, y, z]); whole numbers
     /// when `integer` (a machine setting such as stepsPerMm or maxRate).
     PerAxis { integer: bool },
+}
+
+/// The bounds of a whole-number option, `min..=max`, either absent.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IntegerRange {
+    pub min: Option<i64>,
+    pub max: Option<i64>,
+}
+
+impl IntegerRange {
+    /// What a value outside the range is told, before ", got" and the
+    /// value: "must be 1 to 5", "must be 0 or more", "must be 7 or less";
+    /// None when neither bound is given. The one statement of these words:
+    /// the core's errors and the page's form (from the catalogue) say them.
+    pub fn must_be(&self) -> Option<String> {
+        let expected = match (self.min, self.max) {
+            (Some(low), Some(high)) => format!("{low} to {high}"),
+            (Some(low), None) => format!("{low} or more"),
+            (None, Some(high)) => format!("{high} or less"),
+            (None, None) => return None,
+        };
+        Some(format!("must be {expected}"))
+    }
+
+    /// What `value` is told when it is outside the range ("must be 1 to 5,
+    /// got 6"), None when it is inside.
+    pub fn refusal(&self, value: i64) -> Option<String> {
+        let below = self.min.is_some_and(|low| value < low);
+        let above = self.max.is_some_and(|high| value > high);
+        if below || above {
+            self.must_be().map(|words| format!("{words}, got {value}"))
+        } else {
+            None
+        }
+    }
+}
+
+/// An integer option's range as the catalogue gives it: its bounds and the
+/// words for a value outside them.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct IntegerRangeInfo {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min: Option<i64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max: Option<i64>,
+    /// What the core tells a value outside `min..=max`, before ", got" and
+    /// the value ("must be 1 to 100000", "must be 0 or more"), so that the
+    /// page's form, checking each field as it is typed, says what the core
+    /// would; absent when neither bound is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub must_be: Option<String>,
+}
+
+impl Serialize for IntegerRange {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        IntegerRangeInfo {
+            min: self.min,
+            max: self.max,
+            must_be: self.must_be(),
+        }
+        .serialize(s)
+    }
 }
 
 /// One option an algorithm takes.
@@ -115,10 +175,10 @@ pub const TO: OptionSpec = OptionSpec {
 
 pub const MAX_STEPS: OptionSpec = OptionSpec {
     name: "maxSteps",
-    kind: OptionKind::Integer {
+    kind: OptionKind::Integer(IntegerRange {
         min: None,
         max: None,
-    },
+    }),
     required: false,
     default: Some("50000000"),
     doc: "Refuse paths longer than this many steps (at most 1000000000).",
@@ -368,25 +428,18 @@ impl Request {
     }
 
     /// The whole number of option `spec`, within the range its kind
-    /// declares (the one statement of that range: the catalogue gives it to
-    /// the page's form, which checks every field as it is typed).
+    /// declares (the one statement of that range and its words: the
+    /// catalogue gives both to the page's form, which checks every field as
+    /// it is typed).
     pub fn declared_integer(&self, spec: &OptionSpec) -> Result<Option<i64>, Error> {
-        let OptionKind::Integer { min, max } = spec.kind else {
+        let OptionKind::Integer(range) = spec.kind else {
             unreachable!("{} is declared as an integer option", spec.name)
         };
-        let Some(value) = self.integer(spec.name)? else {
-            return Ok(None);
-        };
-        let expected = match (min, max) {
-            (Some(low), Some(high)) if !(low..=high).contains(&value) => format!("{low} to {high}"),
-            (Some(low), None) if value < low => format!("{low} or more"),
-            (None, Some(high)) if value > high => format!("{high} or less"),
-            _ => return Ok(Some(value)),
-        };
-        Err(Error::field(
-            spec.name,
-            format!("must be {expected}, got {value}"),
-        ))
+        let value = self.integer(spec.name)?;
+        match value.and_then(|v| range.refusal(v)) {
+            Some(words) => Err(Error::field(spec.name, words)),
+            None => Ok(value),
+        }
     }
 
     pub fn boolean(&self, name: &str) -> Result<Option<bool>, Error> {
@@ -478,7 +531,7 @@ mod tests {
     fn a_declared_integer_is_held_to_its_declared_range_in_words_for_each_bound() {
         let spec = |min, max| OptionSpec {
             name: "n",
-            kind: OptionKind::Integer { min, max },
+            kind: OptionKind::Integer(IntegerRange { min, max }),
             required: false,
             default: None,
             doc: "",

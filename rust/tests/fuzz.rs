@@ -96,7 +96,7 @@ fn option_value(option: &'static OptionSpec, dims: usize, base: i64) -> BoxedStr
             1 => prop_oneof![Just(0.0), Just(1e-300), Just(1e300), Just(-0.0)].prop_map(Value::from),
         ]
         .boxed(),
-        OptionKind::Integer { .. } => prop_oneof![
+        OptionKind::Integer(_) => prop_oneof![
             4 => (0i64..(CASE_MAX_STEPS as i64 * 2)).prop_map(Value::from),
             1 => any::<i64>().prop_map(Value::from),
         ]
@@ -310,7 +310,7 @@ fn comparisons_and_experiments_never_panic() {
             }
             let experiment = &EXPERIMENTS[0];
             for option in experiment.options {
-                if matches!(option.kind, OptionKind::Integer { .. }) {
+                if matches!(option.kind, OptionKind::Integer(_)) {
                     let value = experiment_request.len() as u64 % 50;
                     experiment_request.insert(option.name.into(), Value::from(value));
                 }

@@ -446,7 +446,7 @@ describe("the experiment's form", () => {
     await page.getByTestId('input-experiment-count').fill('0');
     await page.getByTestId('input-experiment-maxCoordinate').fill('10001');
     await page.getByTestId('input-experiment-seed').fill('-1');
-    // The core's words for each (experiment.rs declares the ranges; its tests check the same messages).
+    // The core's words for each, from the catalogue (its mustBe for the ranges experiment.rs declares).
     expect(await text(page, 'error-experiment-count')).toBe('must be 1 to 100000, got 0');
     expect(await text(page, 'error-experiment-maxCoordinate')).toBe('must be 1 to 10000, got 10001');
     expect(await text(page, 'error-experiment-seed')).toBe('must be 0 or more, got -1');

@@ -42,6 +42,7 @@ export type {
   FaceSegment,
   Family,
   FigureKind,
+  IntegerRangeInfo,
   Limit,
   Metrics,
   OptionKind,

@@ -7,11 +7,12 @@
  *
  * The form only reads what was typed. Whether a value is acceptable is the
  * core's call: its errors come back naming the option and are shown beside
- * that field. The one check made here is that a field holds a number at all,
- * because an empty field has no value to send.
+ * that field. The checks made here are that a field holds a number at all,
+ * because an empty field has no value to send, and that a whole number is
+ * within the range its spec declares, said in the core's words for it.
  */
 import { readDecimal } from '../core/guard.js';
-import type { OptionSpec } from '../core/types.js';
+import type { IntegerRangeInfo, OptionSpec } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import type { OptionValue } from '../state/app-state.js';
 import { dropDraft, keepDraft, restoredDraft } from '../state/drafts.js';
@@ -58,12 +59,10 @@ export interface InputsValidity {
   invalid: boolean;
 }
 
-/** Why `value` is outside the declared range `min..max` (the core's words for it, `Request::declared_integer`), or undefined when it is inside. */
-function outsideRange({ min, max }: { min?: number; max?: number }, value: number): string | undefined {
-  if (min !== undefined && max !== undefined) return value < min || value > max ? `must be ${min} to ${max}, got ${value}` : undefined;
-  if (min !== undefined) return value < min ? `must be ${min} or more, got ${value}` : undefined;
-  if (max !== undefined) return value > max ? `must be ${max} or less, got ${value}` : undefined;
-  return undefined;
+/** Why `value` is outside the declared range, in the words the core says it with (`mustBe`), or undefined when it is inside. */
+function outsideRange({ min, max, mustBe }: IntegerRangeInfo, value: number): string | undefined {
+  const outside = (min !== undefined && value < min) || (max !== undefined && value > max);
+  return outside ? `${mustBe}, got ${value}` : undefined;
 }
 
 export class OptionsForm {
@@ -166,7 +165,7 @@ export class OptionsForm {
       case 'number':
       case 'integer': {
         const input = control(element('input', { type: 'number', step: spec.kind.type === 'integer' ? '1' : 'any' }), id);
-        const range: { min?: number; max?: number } = spec.kind.type === 'integer' ? spec.kind : {};
+        const range: IntegerRangeInfo = spec.kind.type === 'integer' ? spec.kind : {};
         if (range.min !== undefined) input.min = String(range.min);
         if (range.max !== undefined) input.max = String(range.max);
         input.value = typeof value === 'number' ? String(value) : '';

@@ -17,7 +17,7 @@ pub mod planes;
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
 use crate::ideal::curve::ArcPath;
-use crate::request::{OptionKind, OptionSpec, Request};
+use crate::request::{IntegerRange, OptionKind, OptionSpec, Request};
 use angle::{atan3, degrees};
 use planes::{DIR_VALUES, Frame, PLANE_VALUES, Plane, Turn, same_height};
 use std::f64::consts::TAU;
@@ -58,10 +58,10 @@ pub const PLANE: OptionSpec = OptionSpec {
 
 pub const TURNS: OptionSpec = OptionSpec {
     name: "turns",
-    kind: OptionKind::Integer {
+    kind: OptionKind::Integer(IntegerRange {
         min: None,
         max: None,
-    },
+    }),
     required: false,
     default: Some("0"),
     doc: "Extra full turns before stopping at the end (G-code P minus 1); from = to is already one full circle.",

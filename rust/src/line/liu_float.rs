@@ -15,7 +15,9 @@ use super::{
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::{Error, counted};
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
+use crate::request::{
+    FROM, IntegerRange, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option,
+};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, fill_by_next_step};
 
 pub const ID: &str = "liu-float";
@@ -26,10 +28,10 @@ pub const MAX_DECIMALS: i64 = 10;
 
 pub const DECIMALS: OptionSpec = OptionSpec {
     name: "decimals",
-    kind: OptionKind::Integer {
+    kind: OptionKind::Integer(IntegerRange {
         min: Some(0),
         max: Some(MAX_DECIMALS),
-    },
+    }),
     required: false,
     default: Some("1"),
     doc: "Decimal places kept of the slope k and of each decision parameter, 0 to 10 (1 drifts as Wang's Fig. 10 shows; 4 reproduces Liu's Table 1).",
