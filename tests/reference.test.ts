@@ -45,8 +45,10 @@ const LINES_ND = [
  * `count` lines of `dims` axes drawn from a fixed seed (mulberry32): each
  * axis's delta up to `longest` either way, from a start anywhere within
  * +-2^30 that keeps the end within it. Long enough for the core's recording
- * loops to run their two chains (from 256 steps a line) and its wasm build's
- * vector path, with the large coordinates a machine's field can have.
+ * loops to run their eight-step passes in 32-bit lanes (from 32 steps a
+ * line) and their two 64-bit chains (nd's 5 and 6 axes, from 256 steps) in
+ * the wasm build's vector code, with the large coordinates a machine's field
+ * can have.
  */
 function randomLines(seed: number, count: number, dims: number, longest: number): ReferenceOptions[] {
   let state = seed >>> 0;

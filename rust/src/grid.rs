@@ -198,7 +198,10 @@ impl fmt::Display for Point {
 /// Packed in 16 bits so that a 10,000,000-step path costs 20 MB:
 /// bit `axis` is set when the axis moves, bit `8 + axis` when it moves in the
 /// negative direction. This is also a step/direction pulse pair per axis.
+/// Transparent: a run of steps is a run of u16, which the line loop stores
+/// eight at a time (`line::terms`).
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[repr(transparent)]
 pub struct Step(pub u16);
 
 impl Step {

@@ -41,15 +41,21 @@ impl Term {
         }
     }
 
-    /// Whether this term, its value starting at `start`, can be stepped in
-    /// 32-bit lanes: its constants and start are below [`NARROW_BOUND`]
-    /// (2^28) in size. Every value then stays in the window (steps_above -
-    /// decrement + increment, steps_above + increment] (see
-    /// [`Term::jumped`]), so below 3·2^28 in size; a value plus up to a
-    /// decrement, and each bound the loop compares with, below 2^30: no
-    /// 32-bit sum or comparison of the loop can overflow.
+    /// Whether this term can be stepped in 32-bit lanes: its constants are
+    /// below [`NARROW_BOUND`] (2^28) in size. Every value lies in the
+    /// window (steps_above - decrement + increment, steps_above +
+    /// increment] (see [`Term::jumped`]), so below 2^29 in size; a value
+    /// plus up to a decrement, and each bound the loop compares with, below
+    /// 2^30: no 32-bit sum or comparison of the loop can overflow. `start`,
+    /// the value the fill starts from, is checked to be in the window in
+    /// debug builds.
     fn fits_i32(&self, start: i64) -> bool {
-        [self.steps_above, self.increment, self.decrement, start]
+        debug_assert!(
+            start > self.steps_above - self.decrement + self.increment
+                && start <= self.steps_above + self.increment,
+            "a value {start} outside its window: {self:?}"
+        );
+        [self.steps_above, self.increment, self.decrement]
             .iter()
             .all(|v| v.unsigned_abs() < NARROW_BOUND as u64)
     }
@@ -464,6 +470,11 @@ struct Pair(
     )))]
     [i64; 2],
 );
+
+// The interleaved loop packs codes to signed 16 bits and stores eight as 16
+// bytes: a code's bits (moving 0..MAX_AXES, negative 8..8 + MAX_AXES) stay
+// below 2^14, and a Step is a u16.
+const _: () = assert!(MAX_AXES <= 6 && std::mem::size_of::<Step>() == 2);
 
 /// One term's values at four consecutive steps ([`Terms::fill_interleaved`]),
 /// as i32 lanes of one 128-bit vector where the target has one (a compare is
@@ -942,6 +953,61 @@ mod tests {
                 },
                 len,
             );
+        }
+    }
+
+    #[test]
+    fn saleem_terms_near_the_bound_take_the_32_bit_lanes_exactly() {
+        // Saleem's terms (bresenham2d and 3d) compare with |Δmajor| rather
+        // than 0: their values reach |Δmajor| + 2|Δminor|, one and a half
+        // decrements, where Wang's stay within one. The largest major whose
+        // terms still take the 32-bit lanes, minors across its range, both
+        // ties, starts along the line, one and three terms. (With the
+        // bound raised to 2^31 these lines wrap; Wang's do not.)
+        let major = NARROW_BOUND / 2 - 1;
+        let minors = [
+            major,
+            major - 1,
+            major * 7 / 8,
+            major / 2 + 1,
+            major / 3,
+            1,
+            0,
+        ];
+        for tie in [TiePolicy::Hold, TiePolicy::Advance] {
+            let term = |minor: i64, axis: usize| Term {
+                value: 2 * minor,
+                increment: 2 * minor,
+                decrement: 2 * major,
+                steps_above: Term::steps_above(major, tie),
+                step: Step(1 << axis),
+            };
+            for minor in minors {
+                for start in [0, 1, 2, 3, 7, 1000, major as u64 / 3] {
+                    let t = term(minor, 1).jumped(start);
+                    assert!(t.fits_i32(t.value), "minor {minor} at step {start}");
+                    for len in [MIN_INTERLEAVED_STEPS, 4099] {
+                        fills_as_one_chain(
+                            Terms {
+                                always: Step(1),
+                                terms: [t],
+                            },
+                            len,
+                        );
+                    }
+                }
+            }
+            for three in [[0, 1, 2], [3, 4, 5], [0, 2, 4]] {
+                let terms: [Term; 3] = std::array::from_fn(|i| term(minors[three[i]], i + 1));
+                assert!(terms.iter().all(|t| t.fits_i32(t.value)));
+                fills_as_one_chain(
+                    Terms {
+                        always: Step(1),
+                        terms,
+                    },
+                    4099,
+                );
+            }
         }
     }
 
