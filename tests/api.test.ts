@@ -276,8 +276,17 @@ describe('bad input', () => {
         said.push(error.message);
       }
     }
-    // Both bounds, and a lower bound alone (liu-float's decimals; random-lines' count, maxCoordinate and seed).
-    expect(said).toEqual(expect.arrayContaining(['decimals: must be 0 to 10, got 11', 'count: must be 1 to 100000, got 0', 'seed: must be 0 or more, got -1']));
+    // Both bounds, and a lower bound alone (liu-float's decimals; random-lines' count, maxCoordinate and seed);
+    // maxSteps and an arc's turns, which the core held to ranges their specs did not declare.
+    expect(said).toEqual(
+      expect.arrayContaining([
+        'decimals: must be 0 to 10, got 11',
+        'count: must be 1 to 100000, got 0',
+        'seed: must be 0 or more, got -1',
+        'maxSteps: must be 0 to 1000000000, got 1000000001',
+        'turns: must be 0 to 1000000, got -1',
+      ]),
+    );
   });
 
   it('keeps working after an error', async () => {

@@ -176,8 +176,8 @@ pub const TO: OptionSpec = OptionSpec {
 pub const MAX_STEPS: OptionSpec = OptionSpec {
     name: "maxSteps",
     kind: OptionKind::Integer(IntegerRange {
-        min: None,
-        max: None,
+        min: Some(0),
+        max: Some(MAX_STEPS_LIMIT as i64),
     }),
     required: false,
     default: Some("50000000"),
@@ -408,38 +408,26 @@ impl Request {
         }
     }
 
-    /// A whole number within `range`. Checked as a number first, so that a
-    /// value out of range (1e20 for maxSteps) is told its range, not that it
-    /// is not a whole number.
-    pub fn integer_in(
-        &self,
-        name: &str,
-        range: std::ops::RangeInclusive<i64>,
-    ) -> Result<Option<i64>, Error> {
-        let (low, high) = (*range.start(), *range.end());
-        match self.number(name)? {
-            None => Ok(None),
-            Some(x) if x < low as f64 || x > high as f64 => Err(Error::field(
-                name,
-                format!("must be {low} to {high}, got {x}"),
-            )),
-            Some(_) => self.integer(name),
-        }
-    }
-
     /// The whole number of option `spec`, within the range its kind
     /// declares (the one statement of that range and its words: the
     /// catalogue gives both to the page's form, which checks every field as
-    /// it is typed).
+    /// it is typed). Checked against the range as a number first, so that a
+    /// value out of range (1e20 for maxSteps) is told its range, not that
+    /// it is not a whole number.
     pub fn declared_integer(&self, spec: &OptionSpec) -> Result<Option<i64>, Error> {
         let OptionKind::Integer(range) = spec.kind else {
             unreachable!("{} is declared as an integer option", spec.name)
         };
-        let value = self.integer(spec.name)?;
-        match value.and_then(|v| range.refusal(v)) {
-            Some(words) => Err(Error::field(spec.name, words)),
-            None => Ok(value),
+        let Some(x) = self.number(spec.name)? else {
+            return Ok(None);
+        };
+        let below = range.min.is_some_and(|low| x < low as f64);
+        let above = range.max.is_some_and(|high| x > high as f64);
+        if below || above {
+            let words = range.must_be().expect("a bound was passed");
+            return Err(Error::field(spec.name, format!("{words}, got {x}")));
         }
+        self.integer(spec.name)
     }
 
     pub fn boolean(&self, name: &str) -> Result<Option<bool>, Error> {
@@ -481,7 +469,7 @@ impl Request {
 
     pub fn max_steps(&self) -> Result<u64, Error> {
         Ok(self
-            .integer_in("maxSteps", 0..=MAX_STEPS_LIMIT as i64)?
+            .declared_integer(&MAX_STEPS)?
             .map_or(DEFAULT_MAX_STEPS, |n| n as u64))
     }
 

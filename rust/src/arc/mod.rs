@@ -56,12 +56,15 @@ pub const PLANE: OptionSpec = OptionSpec {
     doc: "xy = G17, zx = G18 (z is the first axis, so the plane is right-handed), yz = G19.",
 };
 
+/// The extra full turns an arc may take.
+const TURNS_RANGE: IntegerRange = IntegerRange {
+    min: Some(0),
+    max: Some(MAX_TURNS),
+};
+
 pub const TURNS: OptionSpec = OptionSpec {
     name: "turns",
-    kind: OptionKind::Integer(IntegerRange {
-        min: None,
-        max: None,
-    }),
+    kind: OptionKind::Integer(TURNS_RANGE),
     required: false,
     default: Some("0"),
     doc: "Extra full turns before stopping at the end (G-code P minus 1); from = to is already one full circle.",
@@ -100,16 +103,7 @@ impl ArcSpec {
         }
         let plane = Plane::parse(req.choice(&PLANE)?);
         let turn = Turn::parse(req.choice(&DIR)?);
-        let turns = match req.integer(TURNS.name)? {
-            None => 0,
-            Some(n) if (0..=MAX_TURNS).contains(&n) => n as u64,
-            Some(n) => {
-                return Err(Error::field(
-                    "turns",
-                    format!("must be 0 to {MAX_TURNS}, got {n}"),
-                ));
-            }
-        };
+        let turns = req.declared_integer(&TURNS)?.unwrap_or(0) as u64;
         ArcSpec::new(from, to, center, plane, turn, turns, allow_rise)
     }
 
@@ -126,11 +120,14 @@ impl ArcSpec {
         turns: u64,
         allow_rise: bool,
     ) -> Result<ArcSpec, Error> {
-        if turns > MAX_TURNS as u64 {
-            return Err(Error::field(
-                "turns",
-                format!("must be 0 to {MAX_TURNS}, got {turns}"),
-            ));
+        let refused = match i64::try_from(turns) {
+            Ok(turns) => TURNS_RANGE.refusal(turns),
+            Err(_) => TURNS_RANGE
+                .must_be()
+                .map(|words| format!("{words}, got {turns}")),
+        };
+        if let Some(words) = refused {
+            return Err(Error::field(TURNS.name, words));
         }
         if !allow_rise {
             same_height(plane, &from, &to)?;
