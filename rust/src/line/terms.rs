@@ -374,7 +374,7 @@ impl<const N: usize> Terms<N> {
         }
         // Lane 0 now holds the value at step out.len().
         for (value, lane) in values.iter_mut().zip(&lanes) {
-            *value = lane[0].lanes()[0];
+            *value = lane[0].first_lane();
         }
     }
 
@@ -590,14 +590,8 @@ impl Quad {
         }
     }
     #[inline(always)]
-    fn lanes(self) -> [i64; 4] {
-        use core::arch::wasm32::i32x4_extract_lane;
-        [
-            i32x4_extract_lane::<0>(self.0) as i64,
-            i32x4_extract_lane::<1>(self.0) as i64,
-            i32x4_extract_lane::<2>(self.0) as i64,
-            i32x4_extract_lane::<3>(self.0) as i64,
-        ]
+    fn first_lane(self) -> i64 {
+        core::arch::wasm32::i32x4_extract_lane::<0>(self.0) as i64
     }
 }
 
@@ -706,10 +700,8 @@ impl Quad {
         }
     }
     #[inline(always)]
-    fn lanes(self) -> [i64; 4] {
-        // SAFETY: __m128i and [i32; 4] are both 16 plain bytes.
-        unsafe { std::mem::transmute::<core::arch::x86_64::__m128i, [i32; 4]>(self.0) }
-            .map(i64::from)
+    fn first_lane(self) -> i64 {
+        unsafe { core::arch::x86_64::_mm_cvtsi128_si32(self.0) as i64 }
     }
 }
 
@@ -782,8 +774,8 @@ impl Quad {
             *step = Step(lane as u16);
         }
     }
-    fn lanes(self) -> [i64; 4] {
-        self.0.map(i64::from)
+    fn first_lane(self) -> i64 {
+        self.0[0] as i64
     }
 }
 
