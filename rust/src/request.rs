@@ -105,9 +105,10 @@ impl IntegerRange {
 
     /// What `value` is told when it is outside the range ("must be 1 to 5,
     /// got 6"), None when it is inside.
-    pub fn refusal(&self, value: i64) -> Option<String> {
-        let below = self.min.is_some_and(|low| value < low);
-        let above = self.max.is_some_and(|high| value > high);
+    /// Taken as i128, so that any i64 or u64 is compared exactly.
+    pub fn refusal(&self, value: i128) -> Option<String> {
+        let below = self.min.is_some_and(|low| value < low as i128);
+        let above = self.max.is_some_and(|high| value > high as i128);
         if below || above {
             self.must_be().map(|words| format!("{words}, got {value}"))
         } else {

@@ -120,13 +120,7 @@ impl ArcSpec {
         turns: u64,
         allow_rise: bool,
     ) -> Result<ArcSpec, Error> {
-        let refused = match i64::try_from(turns) {
-            Ok(turns) => TURNS_RANGE.refusal(turns),
-            Err(_) => TURNS_RANGE
-                .must_be()
-                .map(|words| format!("{words}, got {turns}")),
-        };
-        if let Some(words) = refused {
+        if let Some(words) = TURNS_RANGE.refusal(turns.into()) {
             return Err(Error::field(TURNS.name, words));
         }
         if !allow_rise {
