@@ -1714,22 +1714,30 @@ impl Trace {
         let mut out = Vec::with_capacity(IDEAL_LINE_BOX_VALUES + 3 * (self.segments.len() + 1));
         out.resize(IDEAL_LINE_BOX_VALUES, 0.0);
         let (mut min, mut max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-        // One segment's vertices at a time, after the last vertex before
-        // them (already converted), which polyline_into compares its first
-        // with: what ideal_polyline gives, without its megabytes of f64.
-        let mut segment: Vec<f64> = Vec::new();
+        // Each vertex goes straight into the f32 array, with no vector of
+        // f64 between (what ideal_polyline gives, without its megabytes),
+        // after the last one drawn, which a segment's first is compared
+        // with: a segment is most often a G-code program's line, made when
+        // read, two vertices of which one is drawn.
+        let mut last: Option<[f64; MAX_AXES]> = None;
         for index in 0..self.segments.len() {
-            let converted = segment.len();
-            self.ideal_of(index).polyline_into(&mut segment);
-            for vertex in segment[converted..].chunks_exact(dims) {
+            let after = last;
+            let after = after.as_ref().map(|l| &l[..dims]);
+            self.ideal_of(index).for_each_vertex(after, |vertex| {
+                // Made whole, not lane by lane: the box's vector reads
+                // would wait on three separate stores (a failed store
+                // forward, which had made this loop a third slower).
+                let drawn: [f32; 3] =
+                    std::array::from_fn(|axis| vertex.get(axis).map_or(0.0, |&v| v as f32));
                 for axis in 0..3 {
-                    let value = vertex.get(axis).map_or(0.0, |&v| v as f32);
-                    min[axis] = min[axis].min(value);
-                    max[axis] = max[axis].max(value);
-                    out.push(value);
+                    min[axis] = min[axis].min(drawn[axis]);
+                    max[axis] = max[axis].max(drawn[axis]);
                 }
-            }
-            segment.drain(..segment.len().saturating_sub(dims));
+                out.extend_from_slice(&drawn);
+                last = Some(std::array::from_fn(|axis| {
+                    vertex.get(axis).copied().unwrap_or(0.0)
+                }));
+            });
         }
         if out.len() > IDEAL_LINE_BOX_VALUES {
             out[..3].copy_from_slice(&min);

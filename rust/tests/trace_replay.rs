@@ -387,9 +387,11 @@ fn ideal_line_by_vertex(t: &voxpath::trace::Trace) -> Vec<f32> {
 #[test]
 fn the_ideal_line_for_drawing_is_the_polyline_as_f32_after_its_box() {
     let settings = |json: &str| voxpath::gcode::Settings::from_json(json).unwrap();
-    // Arcs both ways and a helix: vertices off the grid, on three axes.
+    // Arcs both ways and a helix (vertices off the grid, on three axes),
+    // then a line, whose start repeats the last arc vertex only where it
+    // lies on the grid.
     let program = voxpath::gcode::run(
-        "G21 G90\nG1 X10 Y-4 F500\nG2 X-2 Y-4 I-6 J0 Z3\nG3 X1 Y1 R7\n",
+        "G21 G90\nG1 X10 Y-4 F500\nG2 X-2 Y-4 I-6 J0 Z3\nG3 X1 Y1 R7\nG1 X5 Y2\n",
         settings(r#"{"stepsPerMm": 80}"#),
     );
     let empty = voxpath::gcode::run("G21 G90\n", settings(r#"{"stepsPerMm": 80}"#));

@@ -25,7 +25,7 @@ const MIN_VERTICES_PER_TURN: f64 = 64.0;
 pub const MAX_POLYLINE_SEGMENTS: f64 = 16384.0;
 
 /// A drawn arc's vertices computed from their own angle, one in this many
-/// (the others turned from the one before: [`ArcPath::polyline_with`]).
+/// (the others turned from the one before: [`ArcPath::vertices_with`]).
 const ANCHOR_EVERY: usize = 64;
 
 /// A circular arc around an axis parallel to the plane's normal.
@@ -129,10 +129,10 @@ impl ArcPath {
         c
     }
 
-    /// Vertices for drawing, appended to `out`: `height(t)` gives the
-    /// height at fraction t. The first is left out where `out` already ends
-    /// on it (where the path before ended): leaving it in and taking it out
-    /// again moved every vertex after it.
+    /// Vertices for drawing, each handed to `f` in order: `height(t)`
+    /// gives the height at fraction t. The first is left out where it
+    /// equals `after` (where the path before ended): leaving it in and
+    /// taking it out again moved every vertex after it.
     ///
     /// Each vertex's angle is the one before's turned by the same step, a
     /// complex multiplication, rather than a sine and a cosine of its own:
@@ -142,9 +142,13 @@ impl ArcPath {
     /// and the last are computed from their angle, so the rounding of the
     /// turns cannot gather (under 1e-14 of the radius between anchors), and
     /// an arc ends exactly where its next piece starts.
-    fn polyline_with(&self, out: &mut Vec<f64>, height: impl Fn(f64) -> f64) {
+    fn vertices_with(
+        &self,
+        after: Option<&[f64]>,
+        height: impl Fn(f64) -> f64,
+        mut f: impl FnMut(&[f64]),
+    ) {
         let segments = (self.sweep_rad.abs() / self.draw_step_rad).ceil().max(1.0) as usize;
-        out.reserve((segments + 1) * 3);
         let r = self.radius();
         let (step_sin, step_cos) = sin_cos_turns(self.sweep_rad / segments as f64);
         let (mut sin, mut cos) = (0.0, 1.0);
@@ -159,22 +163,22 @@ impl ArcPath {
                 )
             };
             let vertex = self.point_of(sin, cos, r, height(t));
-            if i > 0 || !out.ends_with(&vertex) {
-                out.extend_from_slice(&vertex);
+            if i > 0 || after != Some(&vertex[..]) {
+                f(&vertex);
             }
         }
     }
 
-    /// Vertices for drawing (stride 3), appended to `out`, the first left
-    /// out where `out` already ends on it.
-    pub fn polyline_into(&self, out: &mut Vec<f64>) {
-        self.polyline_with(out, |_| 0.0)
+    /// Vertices for drawing (stride 3), each handed to `f`, the first left
+    /// out where it equals `after`.
+    pub fn for_each_vertex(&self, after: Option<&[f64]>, f: impl FnMut(&[f64])) {
+        self.vertices_with(after, |_| 0.0, f)
     }
 
     #[cfg(test)]
     fn polyline(&self) -> Vec<f64> {
         let mut out = Vec::new();
-        self.polyline_into(&mut out);
+        self.for_each_vertex(None, |v| out.extend_from_slice(v));
         out
     }
 
@@ -362,11 +366,11 @@ impl HelixPath {
         phi
     }
 
-    /// Vertices for drawing (stride 3), appended to `out`, the first left
-    /// out where `out` already ends on it.
-    pub fn polyline_into(&self, out: &mut Vec<f64>) {
+    /// Vertices for drawing (stride 3), each handed to `f`, the first left
+    /// out where it equals `after`.
+    pub fn for_each_vertex(&self, after: Option<&[f64]>, f: impl FnMut(&[f64])) {
         self.arc
-            .polyline_with(out, |t| self.start_height + self.rise * t)
+            .vertices_with(after, |t| self.start_height + self.rise * t, f)
     }
 
     pub fn info(&self) -> IdealPathInfo {

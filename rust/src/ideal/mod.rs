@@ -59,23 +59,50 @@ impl IdealPath {
         self.meter().axis_error(p, step, steps)
     }
 
-    /// Points along the ideal path for drawing, flat with stride `dims`,
-    /// appended to `out` (a whole path's polyline is one array), the first
-    /// left out where `out` already ends on it (where the path before ended).
-    pub fn polyline_into(&self, out: &mut Vec<f64>) {
+    /// Points along the ideal path for drawing (`dims` values each: 3 for
+    /// an arc or a helix), each handed to `f` in order, the first left out
+    /// where it equals `after` (where the path before ended).
+    pub fn for_each_vertex(&self, after: Option<&[f64]>, mut f: impl FnMut(&[f64])) {
         match self {
             IdealPath::Line { from, to } => {
-                let from_f64 = from.coords().iter().map(|&c| c as f64);
-                let last = &out[out.len().saturating_sub(from.dims())..];
-                if !from_f64.clone().eq(last.iter().copied()) {
-                    out.extend(from_f64);
+                let dims = from.dims();
+                let from = as_f64(from);
+                if after != Some(&from[..dims]) {
+                    f(&from[..dims]);
                 }
-                out.extend(to.coords().iter().map(|&c| c as f64));
+                f(&as_f64(to)[..dims]);
             }
-            IdealPath::Arc(arc) => arc.polyline_into(out),
-            IdealPath::Helix(helix) => helix.polyline_into(out),
+            IdealPath::Arc(arc) => arc.for_each_vertex(after, f),
+            IdealPath::Helix(helix) => helix.for_each_vertex(after, f),
         }
     }
+
+    /// [`Self::for_each_vertex`] appended to `out`, flat (a whole path's
+    /// polyline is one array), the first left out where `out` already ends
+    /// on it.
+    pub fn polyline_into(&self, out: &mut Vec<f64>) {
+        let dims = match self {
+            IdealPath::Line { from, .. } => from.dims(),
+            IdealPath::Arc(_) | IdealPath::Helix(_) => 3,
+        };
+        let after: Option<[f64; MAX_AXES]> = out
+            .len()
+            .checked_sub(dims)
+            .map(|start| std::array::from_fn(|axis| out.get(start + axis).copied().unwrap_or(0.0)));
+        self.for_each_vertex(after.as_ref().map(|a| &a[..dims]), |vertex| {
+            out.extend_from_slice(vertex)
+        });
+    }
+}
+
+/// A point's coordinates as f64, in an array as long as any point's (the
+/// first `dims` of them its own): a value, not a vector per vertex.
+fn as_f64(p: &Point) -> [f64; MAX_AXES] {
+    let mut vertex = [0.0; MAX_AXES];
+    for (v, &c) in vertex.iter_mut().zip(p.coords()) {
+        *v = c as f64;
+    }
+    vertex
 }
 
 /// An ideal path with its per-path constants computed, measuring points.
