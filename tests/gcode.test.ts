@@ -85,6 +85,21 @@ describe('runGcode', () => {
     p.free();
   });
 
+  it('runs the UTF-8 bytes of a program (a file read into a Buffer) as its text, and refuses bytes that are not UTF-8 at their line and column', async () => {
+    const text = `${SQUARE}(é, a comment of two-byte characters)\nG1 X2\n`;
+    const [fromText, fromBytes] = [await runGcode(text, { stepsPerMm: 2 }), await runGcode(Buffer.from(text, 'utf8'), { stepsPerMm: 2 })];
+    const seen = (p: typeof fromText) => [p.lines, p.moves, Array.from(p.trace.points), Array.from(p.lineByStepInRange(0, p.steps))];
+    expect(seen(fromBytes)).toEqual(seen(fromText));
+    expect(fromBytes.lines).toBe(8);
+    fromText.free();
+    fromBytes.free();
+    // A Latin-1 "é" (0xE9) on line 2, after "G1 X1 (": not a UTF-8 character.
+    const latin1 = Uint8Array.from([...Buffer.from('G21\nG1 X1 ('), 0xe9, ...Buffer.from(')\n')]);
+    const e = await rejection(runGcode(latin1, { stepsPerMm: 2 }));
+    expect([e.field, e.line, e.column]).toEqual(['source', 2, 8]);
+    expect(e.detail).toMatch(/^not UTF-8 text \(.*\): save it as UTF-8, or decode it to a string first$/);
+  });
+
   it('reports errors with line and column and keeps the moves before them', async () => {
     const p = await runGcode('G1 X1 F1\nG2 X9 Y0 R1\nG1 X0\n', { stepsPerMm: 2 });
     expect(p.errors).toEqual([

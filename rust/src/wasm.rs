@@ -140,12 +140,19 @@ pub fn compare(request_json: &str) -> Result<JsValue, JsValue> {
 /// re-encoded a character at a time (a 20 MB CSV took longer to arrive
 /// than to read).
 fn utf8<'a>(field: &'static str, bytes: &'a [u8]) -> Result<&'a str, JsValue> {
-    std::str::from_utf8(bytes).map_err(|e| not_utf8(field, e))
+    std::str::from_utf8(bytes).map_err(|e| not_utf8(field, bytes, e))
 }
 
-/// The error for text in `field` that is not UTF-8.
-fn not_utf8(field: &'static str, e: std::str::Utf8Error) -> JsValue {
-    to_js_error(&Error::field(field, format!("is not UTF-8 text: {e}")))
+/// The error for text in `field` that is not UTF-8, at the line and column
+/// of its first byte that is not (a caller may hand over a file's bytes).
+fn not_utf8(field: &'static str, bytes: &[u8], e: std::str::Utf8Error) -> JsValue {
+    let before = std::str::from_utf8(&bytes[..e.valid_up_to()]).expect("valid up to there");
+    let line_start = before.rfind('\n').map_or(0, |at| at + 1);
+    let line = before.matches('\n').count() + 1;
+    let column = before[line_start..].chars().count() + 1;
+    let message = format!("not UTF-8 text ({e}): save it as UTF-8, or decode it to a string first");
+    let at = |n: usize| u32::try_from(n).unwrap_or(u32::MAX);
+    to_js_text_error(&Error::at(at(line), at(column), message), field)
 }
 
 /// Text for the core as UTF-8 bytes in wasm memory, written there by the
@@ -524,7 +531,8 @@ impl GcodeRun {
         // text of other than ASCII was given room for 3 bytes a character.
         let mut bytes = std::mem::take(&mut source.0);
         bytes.shrink_to_fit();
-        let source = String::from_utf8(bytes).map_err(|e| not_utf8("source", e.utf8_error()))?;
+        let source = String::from_utf8(bytes)
+            .map_err(|e| not_utf8("source", e.as_bytes(), e.utf8_error()))?;
         Ok(GcodeRun(crate::gcode::Runner::new(source, settings)))
     }
 

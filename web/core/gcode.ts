@@ -18,7 +18,7 @@
  * while a long program runs.
  */
 import { callCore } from './errors.js';
-import { aNumber, argumentError, indexRange, text, wholeNumber } from './guard.js';
+import { aNumber, argumentError, indexRange, textOrUtf8, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import { advanceInSlices, checkSliceOptions, freeStopped, type SliceOptions, yieldToEventLoop } from './slices.js';
 import { Trace, requireTrace } from './trace.js';
@@ -239,12 +239,15 @@ export class GcodeProgram {
 export type RunGcodeOptions = SliceOptions<GcodeProgress>;
 
 /**
- * Parses and runs a G-code program. Bad settings reject with a VoxpathError
- * naming the setting; errors in the program do not reject: they are in
- * `errors`, and the trace holds the moves before the first of them.
+ * Parses and runs a G-code program: `source` is its text, as a string or as
+ * UTF-8 bytes (a file read into a Buffer; bytes that are not UTF-8 reject
+ * with a VoxpathError naming `source`). Bad settings reject with a
+ * VoxpathError naming the setting; errors in the program do not reject:
+ * they are in `errors`, and the trace holds the moves before the first of
+ * them.
  */
-export async function runGcode(source: string, settings: GcodeSettings, options: RunGcodeOptions = {}): Promise<GcodeProgram> {
-  text('source', source, 'the program');
+export async function runGcode(source: string | Uint8Array, settings: GcodeSettings, options: RunGcodeOptions = {}): Promise<GcodeProgram> {
+  textOrUtf8('source', source, 'the program');
   const settingsJson = encodeRequest(settings, 'settings');
   const sliceMs = checkSliceOptions('runGcode', options);
   const core = await loadCore();

@@ -90,6 +90,18 @@ export function text(field: string, value: unknown, what: string): string {
 }
 
 /**
+ * `value` when it is text: a string, or UTF-8 bytes in a Uint8Array (a Node
+ * Buffer is one), which the core reads as they are and refuses if they are
+ * not UTF-8. Else a VoxpathError naming `field` (`what` says what text is
+ * expected).
+ */
+export function textOrUtf8(field: string, value: unknown, what: string): string | Uint8Array {
+  if (typeof value === 'string' || value instanceof Uint8Array) return value;
+  const hint = ArrayBuffer.isView(value) ? ' (text of another encoding: decode it first, with new TextDecoder(encoding).decode(bytes))' : '';
+  throw argumentError(field, `expected ${what} as a string or as UTF-8 bytes in a Uint8Array, got ${describeValue(value)}${hint}`);
+}
+
+/**
  * `value` when it is an object (not an array) with each of `keys` defined: plain
  * data that an API function returned, handed back to be written out (a
  * Comparison to comparisonToCsv). Else a VoxpathError naming `field`, where
