@@ -396,10 +396,12 @@ impl Stepper for SaleemHelix {
     }
 
     /// The same iterations as [`Stepper::next_step`], without decisions:
-    /// the circle's recording loop ([`SaleemCircle::weave_fill`]), with the
-    /// line's term woven in when the linear axis leads, or its steps put in
-    /// after ([`Term::or_steps_into`]) when the arc does; the circle's few
-    /// correction steps by its `next_step`. The displacement: where the
+    /// the circle's recording loop ([`SaleemCircle::weave_fill`]) with the
+    /// line's term woven in when the linear axis leads; when the arc does,
+    /// the circle's own fill (its stretches known in closed form stepped
+    /// in pieces side by side) and the line's steps put in after
+    /// ([`Term::or_steps_into`]); the circle's few correction steps by its
+    /// `next_step`. The displacement: where the
     /// arc's point moved, and on the linear axis every iteration (linear
     /// major) or as often as the term says its minor axis stepped.
     fn fill(&mut self, out: &mut [Step]) -> Filled {
@@ -410,11 +412,12 @@ impl Stepper for SaleemHelix {
         let line = self.line;
         let mut value = line.value;
         match self.major {
-            // The arc steps every iteration: the circle's own loop, then
+            // The arc steps every iteration: the circle's own fill, then
             // the linear axis's few steps put in by jumps (in wasm, its
-            // term woven into that loop slowed it by a fifth).
+            // term woven into the circle's loop slowed it by a fifth).
             Major::Arc => {
-                weave(&mut self.circle, out, || (true, 0));
+                let arc = self.circle.fill(out);
+                debug_assert_eq!(arc.steps, taken, "the arc steps every iteration");
                 line.or_steps_into(&mut value, out, linear);
             }
             Major::Linear => weave(&mut self.circle, out, || {
