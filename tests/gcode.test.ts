@@ -93,11 +93,23 @@ describe('runGcode', () => {
     expect(fromBytes.lines).toBe(8);
     fromText.free();
     fromBytes.free();
-    // A Latin-1 "é" (0xE9) on line 2, after "G1 X1 (": not a UTF-8 character.
-    const latin1 = Uint8Array.from([...Buffer.from('G21\nG1 X1 ('), 0xe9, ...Buffer.from(')\n')]);
-    const e = await rejection(runGcode(latin1, { stepsPerMm: 2 }));
-    expect([e.field, e.line, e.column]).toEqual(['source', 2, 8]);
-    expect(e.detail).toMatch(/^not UTF-8 text \(.*\): save it as UTF-8, or decode it to a string first$/);
+    // A Latin-1 "é" (0xE9) on line 2, after "G1 X1 (": not a UTF-8 character,
+    // placed as the program's own errors are, whatever ends its lines (LF,
+    // a lone CR) and after a byte order mark, which is no column.
+    for (const [before, line] of [
+      ['G21\nG1 X1 (', 2],
+      ['G21\rG1 X1 (', 2],
+      ['\u{feff}G21\r\n\rG1 X1 (', 3],
+    ] as const) {
+      const latin1 = Uint8Array.from([...Buffer.from(before), 0xe9, ...Buffer.from(')\n')]);
+      const e = await rejection(runGcode(latin1, { stepsPerMm: 2 }));
+      expect([e.field, e.line, e.column]).toEqual(['source', line, 8]);
+      expect(e.detail).toMatch(/^not UTF-8 text \(.*\): save it as UTF-8, or decode it to a string first$/);
+      // Lines counted as the reader counts them for its own errors.
+      const program = await runGcode(`${before})\nG1 X1 Y`, { stepsPerMm: 2 });
+      expect(program.errors[0]?.line).toBe(line + 1);
+      program.free();
+    }
   });
 
   it('reports errors with line and column and keeps the moves before them', async () => {

@@ -5,6 +5,7 @@
 // TypeError, a RangeError with a garbled message ("step index 3..31"), a
 // wasm "memory access out of bounds" or "null pointer passed to rust", or a
 // silent misreading (stepTimes() returned nothing, dims '3' was read as 3).
+import { runInNewContext } from 'node:vm';
 import { describe, expect, it } from 'vitest';
 import {
   checkPoints,
@@ -117,6 +118,12 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       expect(e.detail).toMatch(/^expected the program as a string or as UTF-8 bytes in a Uint8Array, got /);
     }
     expect((await rejection(runGcode(any(new Uint16Array(3)), MACHINE))).detail).toMatch(/Uint16Array of length 3 \(text of another encoding: decode it first/);
+    // UTF-8 bytes made in another realm are bytes too (instanceof fails across realms).
+    const foreign = runInNewContext('new Uint8Array([71, 49, 32, 88, 49, 32, 70, 49, 48, 48])') as Uint8Array;
+    expect(foreign instanceof Uint8Array).toBe(false);
+    const program = await runGcode(foreign, MACHINE);
+    expect([program.errors, program.moveCount]).toEqual([[], 1]);
+    program.free();
   });
 
   it("refuses runGcode's options by name (a NaN sliceMs ran 0 lines a slice, forever)", async () => {

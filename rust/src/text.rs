@@ -27,6 +27,23 @@ pub fn lines(text: &str) -> impl Iterator<Item = &str> {
     })
 }
 
+/// The 1-based line and column (in characters) of the place right after
+/// `before`, the text up to it, read as every text input is: after its
+/// byte order mark, its lines ending as [`split_line`] ends them (a CR at
+/// the end of `before` ends a line: what comes after it is not an LF).
+pub fn line_and_column(before: &str) -> (usize, usize) {
+    let mut rest = without_byte_order_mark(before);
+    let mut line = 1;
+    loop {
+        let (text, next) = split_line(rest);
+        if next == text.len() {
+            return (line, text.chars().count() + 1);
+        }
+        line += 1;
+        rest = &rest[next..];
+    }
+}
+
 /// Longest number echoed whole in a message: a 1 MB number is named by its
 /// first digits and its length.
 const ECHO_CHARS: usize = 24;
@@ -89,6 +106,19 @@ mod tests {
         assert_eq!(all, ["a", "b", "c", "d", "", "e"]);
         assert_eq!(lines("a\n").count(), 1);
         assert_eq!(lines("").count(), 0);
+    }
+
+    #[test]
+    fn a_place_is_counted_in_lines_as_they_are_read_and_in_characters() {
+        assert_eq!(line_and_column(""), (1, 1));
+        assert_eq!(line_and_column("G1 X1 ("), (1, 8));
+        // LF, CR LF and a lone CR each end a line; a CR last ends one too.
+        assert_eq!(line_and_column("a\nb\r\nc\rd"), (4, 2));
+        assert_eq!(line_and_column("G21\rG1 X1 ("), (2, 8));
+        assert_eq!(line_and_column("G21\r"), (2, 1));
+        // The byte order mark is not a column; a two-byte character is one.
+        assert_eq!(line_and_column("\u{feff}G1 X1 ("), (1, 8));
+        assert_eq!(line_and_column("(é"), (1, 3));
     }
 
     #[test]

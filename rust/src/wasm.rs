@@ -144,12 +144,11 @@ fn utf8<'a>(field: &'static str, bytes: &'a [u8]) -> Result<&'a str, JsValue> {
 }
 
 /// The error for text in `field` that is not UTF-8, at the line and column
-/// of its first byte that is not (a caller may hand over a file's bytes).
+/// of its first byte that is not (a caller may hand over a file's bytes),
+/// counted as the readers of the text count them.
 fn not_utf8(field: &'static str, bytes: &[u8], e: std::str::Utf8Error) -> JsValue {
     let before = std::str::from_utf8(&bytes[..e.valid_up_to()]).expect("valid up to there");
-    let line_start = before.rfind('\n').map_or(0, |at| at + 1);
-    let line = before.matches('\n').count() + 1;
-    let column = before[line_start..].chars().count() + 1;
+    let (line, column) = crate::text::line_and_column(before);
     let message = format!("not UTF-8 text ({e}): save it as UTF-8, or decode it to a string first");
     let at = |n: usize| u32::try_from(n).unwrap_or(u32::MAX);
     to_js_text_error(&Error::at(at(line), at(column), message), field)

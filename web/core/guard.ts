@@ -96,7 +96,9 @@ export function text(field: string, value: unknown, what: string): string {
  * expected).
  */
 export function textOrUtf8(field: string, value: unknown, what: string): string | Uint8Array {
-  if (typeof value === 'string' || value instanceof Uint8Array) return value;
+  // By its tag as well: a Uint8Array made in another realm (a vm context, a
+  // frame) is not an instance of this one's.
+  if (typeof value === 'string' || value instanceof Uint8Array || Object.prototype.toString.call(value) === '[object Uint8Array]') return value as string | Uint8Array;
   const hint = ArrayBuffer.isView(value) ? ' (text of another encoding: decode it first, with new TextDecoder(encoding).decode(bytes))' : '';
   throw argumentError(field, `expected ${what} as a string or as UTF-8 bytes in a Uint8Array, got ${describeValue(value)}${hint}`);
 }

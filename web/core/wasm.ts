@@ -74,23 +74,22 @@ const utf8 = new TextEncoder();
  * they are, with no string made of them (a file read into a Buffer).
  */
 export function withTextBytes<T>(core: CoreBindings, text: string | Uint8Array, use: (bytes: bindings.TextBytes) => T): T {
-  let bytes: bindings.TextBytes;
-  if (typeof text !== 'string') {
-    bytes = new core.TextBytes(text.length);
-    bytes.view().set(text);
-  } else {
-    // Room for one byte a character, enough for ASCII text; else for three,
-    // the most UTF-8 takes for one UTF-16 unit.
-    bytes = new core.TextBytes(text.length);
-    let written = utf8.encodeInto(text, bytes.view());
-    if (written.read < text.length) {
-      bytes.free();
-      bytes = new core.TextBytes(3 * text.length);
-      written = utf8.encodeInto(text, bytes.view());
-    }
-    bytes.truncate(written.written);
-  }
+  // Room for the bytes as they are, or for one byte a character, enough for
+  // ASCII text; else for three, the most UTF-8 takes for one UTF-16 unit.
+  let bytes = new core.TextBytes(text.length);
   try {
+    if (typeof text !== 'string') {
+      bytes.view().set(text);
+    } else {
+      let written = utf8.encodeInto(text, bytes.view());
+      if (written.read < text.length) {
+        const wider = new core.TextBytes(3 * text.length);
+        bytes.free();
+        bytes = wider;
+        written = utf8.encodeInto(text, bytes.view());
+      }
+      bytes.truncate(written.written);
+    }
     return use(bytes);
   } finally {
     bytes.free();

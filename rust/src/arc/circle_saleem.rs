@@ -684,8 +684,9 @@ impl SaleemCircle {
     }
 
     /// [`Self::octant_run`] in the octant the point is in: at least one
-    /// iteration, ending where the point leaves that octant (or the circle
-    /// part ends, or `out` is full).
+    /// iteration unless `out` is empty (after [`Self::laned_fill`] filled
+    /// it), ending where the point leaves that octant (or the circle part
+    /// ends, or `out` is full).
     #[inline(always)]
     fn octant_fill(&mut self, out: &mut [Step], weave: &mut impl FnMut() -> (bool, u16)) -> usize {
         match octant_ahead(self.pos) {
