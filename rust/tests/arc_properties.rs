@@ -294,6 +294,20 @@ proptest! {
     }
 
     #[test]
+    fn wide_circles_record_the_rule_s_steps_in_the_trace_s_chunks(
+        arc in arc_strategy(5000),
+        rise in prop_oneof![Just(0i64), -3000i64..3000],
+        chunk in prop_oneof![Just(4096usize), 64usize..5000],
+    ) {
+        // Radii to 5,000 in the trace builder's chunks of 4,096 steps: each
+        // octant's stretch in long pieces (SaleemCircle::laned_fill), cut
+        // by chunk ends, by the ray through the end on every lap, and by
+        // the octant's last steps near the diagonal.
+        check_fills(&arc.request("circle", 0, ""), TiePolicy::Advance, chunk)?;
+        check_fills(&arc.request("helix", rise, ""), TiePolicy::Hold, chunk)?;
+    }
+
+    #[test]
     fn a_circle_takes_no_more_steps_than_its_bound(
         arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(300)],
     ) {
