@@ -882,18 +882,10 @@ impl SaleemCircle {
         if lane_steps < LEAST_LANE_STEPS {
             return 0;
         }
-        let rule = &OCTANTS[K as usize - 1];
-        let (fast, slow) = (rule.fast_move(), rule.slow_move());
-        let [a, b] = self.unit_steps;
-        let code = |d: [i64; 2]| a[(d[0] + 1) as usize].0 | b[(d[1] + 1) as usize].0;
-        let stay_code = code(fast);
-        let move_code = code([fast[0] + slow[0], fast[1] + slow[1]]);
-        // Each piece's decision sum, fast term and slow term at its start
-        // (see octant_run).
+        let (fast, slow, stay_code, move_code) = self.octant_moves(K);
+        // Each piece's decision sum, fast term and slow term at its start.
         let mut lanes: [[i64; 3]; LANES] = std::array::from_fn(|lane| {
-            let p = run.point_at((lane * lane_steps) as i64);
-            let (stay, moved) = candidates(p, self.residual(p), fast, slow);
-            [stay + moved, 2 * dot(p, fast) + 1, 2 * dot(p, slow) + 1]
+            self.carried_at(run.point_at((lane * lane_steps) as i64), fast, slow)
         });
         let taken = LANES * lane_steps;
         let mut pieces = out[..taken].chunks_exact_mut(lane_steps);
@@ -911,15 +903,7 @@ impl SaleemCircle {
         }
         self.pos = run.point_at(taken as i64);
         // The last piece ends where the closed form says the stretch does.
-        debug_assert!({
-            let (stay, moved) = candidates(self.pos, self.residual(self.pos), fast, slow);
-            lanes[LANES - 1]
-                == [
-                    stay + moved,
-                    2 * dot(self.pos, fast) + 1,
-                    2 * dot(self.pos, slow) + 1,
-                ]
-        });
+        debug_assert_eq!(lanes[LANES - 1], self.carried_at(self.pos, fast, slow));
         if let Some(n) = self.remaining.as_mut() {
             *n -= taken as u64;
         }
@@ -933,6 +917,29 @@ impl SaleemCircle {
         self.radius_sq < SMALLEST_UNWATCHED_RADIUS_SQ
             || in_octant(k, self.end)
             || in_octant(k % 8 + 1, self.end)
+    }
+
+    /// Octant `k`'s fast and slow unit moves (local vectors), and the codes
+    /// of its two candidate steps: the fast axis alone, and with the slow.
+    #[inline(always)]
+    fn octant_moves(&self, k: u8) -> ([i64; 2], [i64; 2], u16, u16) {
+        let rule = &OCTANTS[k as usize - 1];
+        let (fast, slow) = (rule.fast_move(), rule.slow_move());
+        let [a, b] = self.unit_steps;
+        let code = |d: [i64; 2]| a[(d[0] + 1) as usize].0 | b[(d[1] + 1) as usize].0;
+        let move_code = code([fast[0] + slow[0], fast[1] + slow[1]]);
+        (fast, slow, code(fast), move_code)
+    }
+
+    /// What the recording loops ([`Self::octant_run`], [`Self::laned_fill`])
+    /// carry from step to step at local point `p` of an octant with unit
+    /// moves `fast` and `slow`: the decision sum (the two candidates'
+    /// residuals added), and the terms 2 p·fast + 1 and 2 p·slow + 1 that
+    /// move it (see octant_run).
+    #[inline(always)]
+    fn carried_at(&self, p: [i64; 2], fast: [i64; 2], slow: [i64; 2]) -> [i64; 3] {
+        let (stay, moved) = candidates(p, self.residual(p), fast, slow);
+        [stay + moved, 2 * dot(p, fast) + 1, 2 * dot(p, slow) + 1]
     }
 
     /// Iterations of [`Self::weave_fill`] while the point stays in octant
@@ -962,18 +969,10 @@ impl SaleemCircle {
         out: &mut [Step],
         weave: &mut impl FnMut() -> (bool, u16),
     ) -> usize {
-        let rule = &OCTANTS[K as usize - 1];
-        let (fast, slow) = (rule.fast_move(), rule.slow_move());
-        let [a, b] = self.unit_steps;
-        let code = |d: [i64; 2]| a[(d[0] + 1) as usize].0 | b[(d[1] + 1) as usize].0;
-        let stay_code = code(fast);
-        let move_code = code([fast[0] + slow[0], fast[1] + slow[1]]);
+        let (fast, slow, stay_code, move_code) = self.octant_moves(K);
         let (side_fast, side_slow) = (cross(self.end, fast), cross(self.end, slow));
         let mut pos = self.pos;
-        let (residual_stay, residual_move) = candidates(pos, self.residual(pos), fast, slow);
-        let mut sum = residual_stay + residual_move;
-        let mut fast_term = 2 * dot(pos, fast) + 1;
-        let mut slow_term = 2 * dot(pos, slow) + 1;
+        let [mut sum, mut fast_term, mut slow_term] = self.carried_at(pos, fast, slow);
         let mut side = cross(self.end, pos);
         let mut taken = 0;
         let mut arc_steps = 0;
