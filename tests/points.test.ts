@@ -21,42 +21,63 @@ function replayed(t: Trace, from: number, to: number): Int32Array {
   for (let k = 0; k < codes.length; k++) {
     for (let a = 0; a < t.dims; a++) {
       if ((codes[k]! >> a) & 1) p[a] += (codes[k]! >> (8 + a)) & 1 ? -1 : 1;
+      out[(k + 1) * t.dims + a] = p[a]!;
     }
-    out.set(p, (k + 1) * t.dims);
   }
   return out;
 }
 
-/** A 3D line crosses the core's 32768-value buffer every 10922 points, a 2D one every 16384. */
+/**
+ * Values the core decodes into its buffer at a time (rust/src/wasm.rs,
+ * POINTS_CHUNK_VALUES): a path of `dims` axes crosses from one chunk to the
+ * next every chunkRows(dims) points.
+ */
+const CHUNK_VALUES = 3 << 17;
+const chunkRows = (dims: number) => Math.floor(CHUNK_VALUES / dims);
+
+/** Every case but the grid's edge and the helix crosses at least one chunk's end. */
 const CASES: [string, TraceOptions][] = [
-  ['a 3D line over several chunks', { algorithm: 'regions', from: [0, 0, 0], to: [40_000, -28_001, 24_003] }],
-  ['a 2D line', { algorithm: 'bresenham2d', from: [5, -5], to: [-37_000, 12_345] }],
-  ['a 6D line', { algorithm: 'nd', from: [0, 0, 0, 0, 0, 0], to: [9000, -8000, 7000, -6000, 5000, 1] }],
-  ['a 4D line by one axis a step', { algorithm: 'greedy', from: [0, 0, 0, 0], to: [3000, -2000, 1000, 7] }],
+  ['a 3D line over several chunks', { algorithm: 'regions', from: [0, 0, 0], to: [300_000, -210_001, 180_003] }],
+  ['a 2D line', { algorithm: 'bresenham2d', from: [5, -5], to: [-437_000, 12_345] }],
+  ['a 6D line', { algorithm: 'nd', from: [0, 0, 0, 0, 0, 0], to: [150_000, -8000, 7000, -6000, 5000, 1] }],
+  ['a 4D line by one axis a step', { algorithm: 'greedy', from: [0, 0, 0, 0], to: [60_000, -40_000, 20_000, 7] }],
   ['a line at the edge of the grid', { algorithm: 'bresenham3d', from: [2 ** 30, -(2 ** 30), 2 ** 30 - 5], to: [2 ** 30 - 20_000, -(2 ** 30) + 13_001, 2 ** 30] }],
   // Over 1 MiB of points: in Node its array comes from Buffer.allocUnsafeSlow,
   // not zeroed, so every value in it is one the core wrote.
   ['a 3D line past a megabyte of points', { algorithm: 'bresenham3d', from: [7, -3, 0], to: [-150_000, 98_765, -43_210] }],
-  ['a circle', { algorithm: 'circle', from: [3000, 0, 0], to: [3000, 0, 0], center: [0, 0, 0] }],
+  ['a circle', { algorithm: 'circle', from: [30_000, 0, 0], to: [30_000, 0, 0], center: [0, 0, 0] }],
   ['a helix in chords', { algorithm: 'helix', method: 'segments', from: [-2000, 0, 50], to: [-2000, 0, 1050], center: [0, 0, 0], turns: 2 }],
 ];
+
+/**
+ * `got` has `want`'s values, compared one by one: vitest's deep equality
+ * of arrays of hundreds of thousands of values takes seconds.
+ */
+function expectValues(got: Int32Array, want: Int32Array, label: string): void {
+  expect(got.length, label).toBe(want.length);
+  expect(
+    got.findIndex((v, i) => v !== want[i]),
+    `${label}: first wrong value`,
+  ).toBe(-1);
+}
 
 describe('points', () => {
   it.each(CASES)('of %s are the step codes replayed, for the whole path and any range', async (_, options) => {
     const t = await trace(options);
     const n = t.steps + 1;
-    expect(t.points).toEqual(replayed(t, 0, n));
+    const rows = chunkRows(t.dims);
+    expectValues(t.points, replayed(t, 0, n), 'all points');
     expect(Array.from(t.points.subarray(0, t.dims))).toEqual(Array.from(options.from));
     for (const [a, b] of [
       [0, 1],
       [n - 1, n],
-      [1, Math.min(n, 10_923)],
+      [1, Math.min(n, rows + 1)],
       [Math.floor(n / 3), Math.floor((2 * n) / 3)],
-      [10_921, Math.min(n, 32_768 + 5)],
+      [rows - 1, Math.min(n, 3 * rows + 5)],
     ] as const) {
       if (a > b || b > n) continue;
-      expect(t.pointsInRange(a, b)).toEqual(replayed(t, a, b));
-      expect(t.pointsInRange(a, b)).toEqual(t.points.subarray(a * t.dims, b * t.dims));
+      expectValues(t.pointsInRange(a, b), replayed(t, a, b), `points ${a}..${b}`);
+      expectValues(t.pointsInRange(a, b), t.points.subarray(a * t.dims, b * t.dims), `points ${a}..${b} of all`);
     }
     expect(t.pointsInRange(n, n)).toHaveLength(0);
     t.free();
@@ -65,28 +86,27 @@ describe('points', () => {
   it.each(CASES)('of %s, every n-th only, are those rows of all the points', async (_, options) => {
     const t = await trace(options);
     const n = t.steps + 1;
+    const rows = chunkRows(t.dims);
     const all = t.points;
     const rowsOf = (from: number, to: number, every: number) => {
       const out = new Int32Array(Math.ceil((to - from) / every) * t.dims);
       for (let k = from, r = 0; k < to; k += every, r++) out.set(all.subarray(k * t.dims, (k + 1) * t.dims), r * t.dims);
       return out;
     };
-    // Every spacing against the chunk's 32768 values: below a chunk's rows, a
-    // chunk's rows and more, ranges starting inside a chunk and on its edge.
-    for (const every of [1, 2, 3, 277, 10_922, 16_384, 40_000, n, n + 5]) {
+    // Every spacing against the chunk's rows: below them, a chunk's rows and
+    // more, ranges starting inside a chunk and on its edge.
+    for (const every of [1, 2, 3, 277, rows - 1, rows, rows + 1, 3 * rows + 7, n, n + 5]) {
       for (const [a, b] of [
         [0, n],
         [1, n],
         [Math.floor(n / 3), Math.floor((2 * n) / 3)],
-        [10_921, n],
+        [rows - 1, n],
+        [rows, n],
         [n - 1, n],
         [n, n],
       ] as const) {
         if (a > b) continue;
-        // Compared value by value here: vitest's deep equality of arrays this long takes seconds.
-        const [got, want] = [t.pointsInRange(a, b, every), rowsOf(a, b, every)];
-        expect(got.length, `every ${every} of ${a}..${b}`).toBe(want.length);
-        expect(got.findIndex((v, i) => v !== want[i]), `every ${every} of ${a}..${b}: first wrong value`).toBe(-1);
+        expectValues(t.pointsInRange(a, b, every), rowsOf(a, b, every), `every ${every} of ${a}..${b}`);
       }
     }
     t.free();
@@ -130,8 +150,12 @@ describe('points', () => {
     const before = memoryBytes();
     const points = t.points;
     expect(points.length).toBe(3 * (t.steps + 1));
-    // 36 MB of points read; the core's buffer is 128 KiB.
-    expect(memoryBytes() - before).toBeLessThanOrEqual(1 << 18);
+    // 36 MB of points read; the core's buffer is 1.5 MiB.
+    const bound = CHUNK_VALUES * Int32Array.BYTES_PER_ELEMENT + (1 << 16);
+    expect(memoryBytes() - before).toBeLessThanOrEqual(bound);
+    // Every 7th point: the buffer, and the chosen points of one chunk beside it.
+    expect(t.pointsInRange(0, t.steps + 1, 7).length).toBe(3 * Math.ceil((t.steps + 1) / 7));
+    expect(memoryBytes() - before).toBeLessThanOrEqual(bound + Math.ceil(bound / 7));
     t.free();
   });
 });

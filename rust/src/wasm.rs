@@ -223,10 +223,20 @@ pub fn check(
 }
 
 /// Coordinates decoded into wasm memory at a time when points are read
-/// (128 KiB): large enough that the calls across the boundary per chunk
-/// cost nothing measurable, small enough to stay in the processor's cache
-/// between the decode and the copy.
-const POINTS_CHUNK_VALUES: usize = 1 << 15;
+/// (1.5 MiB), each chunk then copied out in one call. Larger than one
+/// core's L2 cache (1 MiB on the AMD EPYC this was measured on) on
+/// purpose: glibc's memmove, which V8 copies typed arrays with, uses
+/// `rep movsb` on AMD processors for copies up to that size, and that ran
+/// a third slower whenever source and destination were not aligned alike
+/// modulo 32 bytes, which a JS array's address (malloc's choice) often is
+/// not. Past it, the vector loop copies at the rate of a fill whatever the
+/// alignment: 20 MB of points left wasm memory in 1.45 ms in 1.5 MiB
+/// chunks, against 1.45 to 2.0 ms (by alignment) in 128 KiB ones, and the
+/// 3D line's trace() and points took 4.4 ms against 5.1. The decode's
+/// writes then go to the shared L3 cache rather than L2, which costs less
+/// than that. Still a bounded buffer: reading points grows wasm memory by
+/// this much, whatever the trace's length.
+const POINTS_CHUNK_VALUES: usize = 3 << 17;
 
 /// A learner's points read from text as `checkText` reads it (CSV,
 /// blank-separated rows or a printed list), `dims` coordinates each, flat:
@@ -343,7 +353,7 @@ impl TraceHandle {
             return Ok(());
         }
         // The chosen points of each chunk, gathered to cross in one copy.
-        let mut chosen = Vec::with_capacity(buffer.len());
+        let mut chosen = Vec::with_capacity((buffer.len() / dims).div_ceil(every as usize) * dims);
         self.0.points_by_chunk(from, to, &mut buffer, |k, chunk| {
             // The chunk's first chosen point, the n-th of all chosen: the
             // first index from k on that is `from` plus a multiple of `every`.
