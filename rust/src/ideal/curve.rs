@@ -201,43 +201,56 @@ pub struct ArcMeter<'a> {
 }
 
 impl ArcMeter<'_> {
-    /// ρ² = u² + v² of in-plane offsets `u`, `v`, exact: in i64 when both
-    /// are below [`I64_PRODUCT_BOUND`](crate::grid::I64_PRODUCT_BOUND) (each square below 2^62, the sum below
-    /// 2^63; every point of a validated circle is), else in i128.
-    fn rho_sq(u: i64, v: i64) -> i128 {
+    /// ρ² - r² and ρ² = u² + v² of in-plane offsets `u`, `v`, each formed
+    /// exactly and rounded once to f64: in i64 when both are below
+    /// [`I64_PRODUCT_BOUND`](crate::grid::I64_PRODUCT_BOUND) (each square
+    /// below 2^62, the sum below 2^63; every point of a validated circle
+    /// is), else in i128. The i64 path forms no i128 at all: an i128's
+    /// conversion to f64 is a library call, in wasm as natively, and took
+    /// half of a circle's deviation (a conversion through i64 of the same
+    /// i128 value, LLVM folded back into it).
+    fn excess_and_rho_sq(&self, u: i64, v: i64) -> (f64, f64) {
         if within_i64_product_bound(&[u, v]) {
-            (u * u + v * v) as i128
+            let rho_sq = u * u + v * v;
+            ((rho_sq - self.arc.radius_sq) as f64, rho_sq as f64)
         } else {
-            u as i128 * u as i128 + v as i128 * v as i128
+            let rho_sq = u as i128 * u as i128 + v as i128 * v as i128;
+            ((rho_sq - self.arc.radius_sq as i128) as f64, rho_sq as f64)
         }
     }
 
-    /// ρ - r from ρ²: ρ² - r² is formed exactly and divided by ρ + r only
-    /// then, so the result keeps full f64 precision where sqrt(u² + v²) - r
-    /// would cancel away every digit at r = 2^20 far from the origin.
-    fn radial_error_of(&self, rho_sq: i128) -> f64 {
-        let excess = rho_sq - self.arc.radius_sq as i128;
-        excess as f64 / ((rho_sq as f64).sqrt() + self.radius)
+    /// ρ - r from ρ² - r² and ρ²: divided by ρ + r only at the end, so the
+    /// result keeps full f64 precision where sqrt(u² + v²) - r would cancel
+    /// away every digit at r = 2^20 far from the origin.
+    fn radial_error_of(&self, (excess, rho_sq): (f64, f64)) -> f64 {
+        excess / (rho_sq.sqrt() + self.radius)
     }
 
     /// Signed radial error ρ - r of `p` (> 0 outside), ρ = distance from the
     /// center axis.
     pub fn radial_error(&self, p: &Point) -> f64 {
         let [u, v, _] = self.arc.relative(p);
-        self.radial_error_of(Self::rho_sq(u, v))
+        self.radial_error_of(self.excess_and_rho_sq(u, v))
     }
 
     /// Distance from `p` to the circle: radial error and height off the plane.
     pub fn deviation(&self, p: &Point) -> f64 {
-        let n = self.arc.relative(p)[2] as f64;
-        self.radial_error(p).hypot(n)
+        let [u, v, n] = self.arc.relative(p);
+        let radial = self.radial_error_of(self.excess_and_rho_sq(u, v));
+        // hypot(x, 0) is |x| exactly; hypot itself is a library call, and
+        // every point of an arc in its plane has n = 0.
+        if n == 0 {
+            radial.abs()
+        } else {
+            radial.hypot(n as f64)
+        }
     }
 
     /// `p` minus the arc's point at the same angle (the radial projection).
     pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
         let [u, v, n] = self.arc.relative(p);
-        let rho_sq = Self::rho_sq(u, v);
-        let rho = (rho_sq as f64).sqrt();
+        let squares = self.excess_and_rho_sq(u, v);
+        let rho = squares.1.sqrt();
         let [au, av, an] = self.arc.plane.axes();
         let mut phi = [0.0; MAX_AXES];
         if rho == 0.0 {
@@ -245,7 +258,7 @@ impl ArcMeter<'_> {
             phi[au] = -self.radius * self.arc.start_rad.cos();
             phi[av] = -self.radius * self.arc.start_rad.sin();
         } else {
-            let scale = self.radial_error_of(rho_sq) / rho;
+            let scale = self.radial_error_of(squares) / rho;
             phi[au] = u as f64 * scale;
             phi[av] = v as f64 * scale;
         }
@@ -422,7 +435,11 @@ mod tests {
     }
 
     #[test]
-    fn fast_rho_sq_equals_i128_at_the_bound() {
+    fn fast_squares_equal_i128_at_the_bound() {
+        // r² near the largest squares the i64 path forms, so that ρ² - r²
+        // needs every bit of it.
+        let path = arc([0, 0, 0], (1 << 62) - 12_345, 0.0, TAU);
+        let meter = path.meter();
         let edge = [
             0,
             1,
@@ -436,7 +453,8 @@ mod tests {
         for u in edge {
             for v in edge {
                 let exact = u as i128 * u as i128 + v as i128 * v as i128;
-                assert_eq!(ArcMeter::rho_sq(u, v), exact, "({u}, {v})");
+                let want = ((exact - meter.arc.radius_sq as i128) as f64, exact as f64);
+                assert_eq!(meter.excess_and_rho_sq(u, v), want, "({u}, {v})");
             }
         }
     }
