@@ -32,7 +32,7 @@ function replayed(t: Trace, from: number, to: number): Int32Array {
  * POINTS_CHUNK_VALUES): a path of `dims` axes crosses from one chunk to the
  * next every chunkRows(dims) points.
  */
-const CHUNK_VALUES = 3 << 17;
+const CHUNK_VALUES = (1 << 18) + (1 << 13);
 const chunkRows = (dims: number) => Math.floor(CHUNK_VALUES / dims);
 
 /** Every case but the grid's edge and the helix crosses at least one chunk's end. */
@@ -150,7 +150,7 @@ describe('points', () => {
     const before = memoryBytes();
     const points = t.points;
     expect(points.length).toBe(3 * (t.steps + 1));
-    // 36 MB of points read; the core's buffer is 1.5 MiB.
+    // 36 MB of points read; the core's buffer is 1 MiB and 32 KiB.
     const bound = CHUNK_VALUES * Int32Array.BYTES_PER_ELEMENT + (1 << 16);
     expect(memoryBytes() - before).toBeLessThanOrEqual(bound);
     // Every 7th point: the buffer, and the chosen points of one chunk beside it.

@@ -1324,30 +1324,47 @@ impl Trace {
     /// Perpendicular deviation of points `from..to` from the ideal path.
     pub fn deviation_range(&self, from: u64, to: u64) -> Vec<f64> {
         let mut out = Vec::with_capacity((to - from) as usize);
+        self.for_each_deviation(from, to, |deviation| out.push(deviation));
+        out
+    }
+
+    /// [`Trace::deviation_range`] handed to `f` one point at a time, in
+    /// point order: for a caller that copies them elsewhere a buffer at a
+    /// time (wasm's `deviation`, into a JS array), not all at once.
+    pub fn for_each_deviation(&self, from: u64, to: u64, mut f: impl FnMut(f64)) {
         self.for_each_piece(from, to, |piece| {
-            if !piece.walk_line(|deviation, _| out.push(deviation)) {
-                piece.for_each_point(|_, p, meter, _, _| out.push(meter.deviation(p)));
+            if !piece.walk_line(|deviation, _| f(deviation)) {
+                piece.for_each_point(|_, p, meter, _, _| f(meter.deviation(p)));
             }
         });
-        out
     }
 
     /// Per-axis error (Wang eq. 11) of points `from..to`, flat with stride `dims`.
     pub fn axis_error_range(&self, from: u64, to: u64) -> Vec<f64> {
+        let mut out = Vec::with_capacity((to - from) as usize * self.dims());
+        self.for_each_axis_error(from, to, |error| out.push(error));
+        out
+    }
+
+    /// [`Trace::axis_error_range`] handed to `f` one value at a time, in
+    /// the order of that array (point by point, axis by axis).
+    pub fn for_each_axis_error(&self, from: u64, to: u64, mut f: impl FnMut(f64)) {
         let dims = self.dims();
-        let mut out = Vec::with_capacity((to - from) as usize * dims);
         self.for_each_piece(from, to, |piece| {
             let n = piece.segment.steps as f64;
             let walked = piece.walk_line(|_, numerator| {
-                out.extend(numerator[..dims].iter().map(|&v| v as f64 / n));
+                for &v in &numerator[..dims] {
+                    f(v as f64 / n);
+                }
             });
             if !walked {
                 piece.for_each_point(|_, p, meter, local, steps| {
-                    out.extend_from_slice(&meter.axis_error(p, local, steps)[..dims]);
+                    for &error in &meter.axis_error(p, local, steps)[..dims] {
+                        f(error);
+                    }
                 });
             }
         });
-        out
     }
 
     /// The rows a chart of points `from..to` draws, at most `max_rows` of

@@ -222,21 +222,73 @@ pub fn check(
     Ok(to_js(&check))
 }
 
-/// Coordinates decoded into wasm memory at a time when points are read
-/// (1.5 MiB), each chunk then copied out in one call. Larger than one
-/// core's L2 cache (1 MiB on the AMD EPYC this was measured on) on
+/// Bytes of values made in wasm memory at a time when points, deviations
+/// or axis errors are read into a JS array (1 MiB and 32 KiB), each chunk
+/// then copied out in one call. At least one core's L2 cache (1 MiB on the
+/// AMD EPYC this was measured on), whatever the point's axis count, on
 /// purpose: glibc's memmove, which V8 copies typed arrays with, uses
-/// `rep movsb` on AMD processors for copies up to that size, and that ran
+/// `rep movsb` on AMD processors for copies below that size, and that ran
 /// a third slower whenever source and destination were not aligned alike
 /// modulo 32 bytes, which a JS array's address (malloc's choice) often is
-/// not. Past it, the vector loop copies at the rate of a fill whatever the
-/// alignment: 20 MB of points left wasm memory in 1.45 ms in 1.5 MiB
-/// chunks, against 1.45 to 2.0 ms (by alignment) in 128 KiB ones, and the
-/// 3D line's trace() and points took 4.4 ms against 5.1. The decode's
-/// writes then go to the shared L3 cache rather than L2, which costs less
-/// than that. Still a bounded buffer: reading points grows wasm memory by
-/// this much, whatever the trace's length.
-const POINTS_CHUNK_VALUES: usize = 3 << 17;
+/// not. From it on, the vector loop copies at the rate of a fill whatever
+/// the alignment: 20 MB of points left wasm memory in 1.45 ms in chunks of
+/// 1 MiB or more, against 1.45 to 2.0 ms (by alignment) in 128 KiB ones,
+/// and the 3D line's trace() and points took 4.4 ms against 5.1. The
+/// values' writes then go to the shared L3 cache rather than L2, which
+/// costs less than that. No larger than that: reading grows wasm memory by
+/// this buffer, and a million-step helix's points would then pass the
+/// 16 bytes a step that tests/scale.test.ts holds it to.
+const COPY_CHUNK_BYTES: usize = (1 << 20) + (1 << 15);
+
+/// Coordinates decoded at a time when points are read ([`COPY_CHUNK_BYTES`]).
+const POINTS_CHUNK_VALUES: usize = COPY_CHUNK_BYTES / std::mem::size_of::<i32>();
+
+/// Refuses `out` unless it holds exactly `values` values (`what` says what
+/// they are, for the message).
+fn expect_length(length: u32, values: usize, what: impl FnOnce() -> String) -> Result<(), JsValue> {
+    if length as usize != values {
+        let message = format!("{}; got {length}", what());
+        return Err(to_js_error(&Error::field("out", message)));
+    }
+    Ok(())
+}
+
+/// Values handed over one at a time, gathered in wasm memory and copied
+/// into `out`, a JS array of exactly their number, [`COPY_CHUNK_BYTES`] at
+/// a time: one copy each, and wasm memory grows by that buffer only.
+struct Float64Out<'a> {
+    out: &'a js_sys::Float64Array,
+    buffer: Vec<f64>,
+    chunk: usize,
+    at: u32,
+}
+
+impl<'a> Float64Out<'a> {
+    fn new(out: &'a js_sys::Float64Array) -> Self {
+        let chunk = (out.length() as usize).clamp(1, COPY_CHUNK_BYTES / std::mem::size_of::<f64>());
+        Float64Out {
+            out,
+            buffer: Vec::with_capacity(chunk),
+            chunk,
+            at: 0,
+        }
+    }
+
+    #[inline]
+    fn push(&mut self, value: f64) {
+        self.buffer.push(value);
+        if self.buffer.len() == self.chunk {
+            self.flush();
+        }
+    }
+
+    fn flush(&mut self) {
+        let end = self.at + self.buffer.len() as u32;
+        self.out.subarray(self.at, end).copy_from(&self.buffer);
+        self.at = end;
+        self.buffer.clear();
+    }
+}
 
 /// A learner's points read from text as `checkText` reads it (CSV,
 /// blank-separated rows or a printed list), `dims` coordinates each, flat:
@@ -336,13 +388,9 @@ impl TraceHandle {
         let dims = self.0.dims();
         let count = (to - from).div_ceil(every);
         let values = count as usize * dims;
-        if out.length() as usize != values {
-            let message = format!(
-                "an Int32Array of {values} values ({count} points of {dims}); got {}",
-                out.length()
-            );
-            return Err(to_js_error(&Error::field("out", message)));
-        }
+        expect_length(out.length(), values, || {
+            format!("an Int32Array of {values} values ({count} points of {dims})")
+        })?;
         let rows = (POINTS_CHUNK_VALUES / dims) as u64;
         let mut buffer = vec![0i32; rows.min(to - from).max(1) as usize * dims];
         if every == 1 {
@@ -376,17 +424,46 @@ impl TraceHandle {
         Ok(self.0.decisions_flat(from, to))
     }
 
-    /// Deviation from the ideal path of points `from..to`.
-    pub fn deviation(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
+    /// Writes the deviation from the ideal path of points `from..to` into
+    /// `out`, a Float64Array of exactly to - from values made on the JS
+    /// side: one pass over the range, copied out a chunk at a time.
+    pub fn deviation(&self, from: u32, to: u32, out: &js_sys::Float64Array) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
-        Ok(self.0.deviation_range(from, to))
+        let values = (to - from) as usize;
+        expect_length(out.length(), values, || {
+            format!("a Float64Array of {values} values (one a point)")
+        })?;
+        let mut sink = Float64Out::new(out);
+        self.0
+            .for_each_deviation(from, to, |deviation| sink.push(deviation));
+        sink.flush();
+        Ok(())
     }
 
-    /// Per-axis error (Wang eq. 11) of points `from..to`, stride dims.
+    /// Writes the per-axis error (Wang eq. 11) of points `from..to` into
+    /// `out`, a Float64Array of exactly (to - from) · dims values (stride
+    /// dims) made on the JS side, as `deviation` does.
     #[wasm_bindgen(js_name = axisError)]
-    pub fn axis_error(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
+    pub fn axis_error(
+        &self,
+        from: u32,
+        to: u32,
+        out: &js_sys::Float64Array,
+    ) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
-        Ok(self.0.axis_error_range(from, to))
+        let dims = self.0.dims();
+        let values = (to - from) as usize * dims;
+        expect_length(out.length(), values, || {
+            format!(
+                "a Float64Array of {values} values ({} points of {dims})",
+                to - from
+            )
+        })?;
+        let mut sink = Float64Out::new(out);
+        self.0
+            .for_each_axis_error(from, to, |error| sink.push(error));
+        sink.flush();
+        Ok(())
     }
 
     /// Packed steps (see `grid::Step`) of step indices `from..to`.

@@ -1,8 +1,9 @@
 /**
  * The headless API: `await trace(options)` runs an algorithm in the wasm core
  * and returns a Trace: the steps recorded, nothing else computed until it is
- * read. Points are filled by the core into the array returned; the other
- * bulk arrays are copied out of wasm memory in chunks of about CHUNK_BYTES.
+ * read. Points, deviations and axis errors are filled by the core into the
+ * array returned; decision columns are copied out of wasm memory in chunks
+ * of about CHUNK_BYTES.
  * Either way a long path never needs a second full-size copy inside wasm
  * (whose memory, once grown, is never given back).
  */
@@ -16,13 +17,14 @@ import type { AlgorithmInfo, ChartSeries, DecisionColumns, IdealLine, Metrics, P
 import { loadCore } from './wasm.js';
 
 /**
- * Bytes copied out of wasm per call. Each call's array is built in wasm
- * memory before JS copies it, so this bounds what reading adds to the core's
- * memory: 256 KiB, against 2 bytes per step for the trace itself.
+ * Bytes of decision columns copied out of wasm per call. Each call's array
+ * is built in wasm memory before JS copies it, so this bounds what reading
+ * adds to the core's memory: 256 KiB, against 2 bytes per step for the
+ * trace itself.
  */
 const CHUNK_BYTES = 1 << 18;
 
-/** Rows (points or steps) per call for rows of `bytesPerRow` bytes. */
+/** Steps per call for rows of `bytesPerRow` bytes. */
 function chunkRows(bytesPerRow: number): number {
   return Math.max(1, Math.floor(CHUNK_BYTES / bytesPerRow));
 }
@@ -51,22 +53,6 @@ function forOverwrite<T extends Int32Array | Float64Array>(Kind: TypedArrayOf<T>
   if (nodeBuffer === undefined || bytes < SMALLEST_UNZEROED_BYTES) return new Kind(length);
   const memory = nodeBuffer.allocUnsafeSlow(bytes);
   return new Kind(memory.buffer as ArrayBuffer, memory.byteOffset, length);
-}
-
-/** Copies rows `from..to` (stride values each) by chunks into one array. */
-function copyRows<T extends Int32Array | Float64Array>(
-  Kind: TypedArrayOf<T>,
-  from: number,
-  to: number,
-  stride: number,
-  read: (from: number, to: number) => ArrayLike<number>,
-): T {
-  const out = forOverwrite(Kind, (to - from) * stride);
-  const rows = chunkRows(stride * Kind.BYTES_PER_ELEMENT);
-  for (let k = from; k < to; k += rows) {
-    (out as Int32Array | Float64Array).set(read(k, Math.min(to, k + rows)), (k - from) * stride);
-  }
-  return out;
 }
 
 /**
@@ -228,10 +214,16 @@ export class Trace {
     return this.#deviation;
   }
 
+  /**
+   * The deviation of points from..to, written by the core straight into
+   * the array returned (a buffer of wasm memory at a time, one copy).
+   */
   deviationInRange(from: number, to: number): Float64Array {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
-    return copyRows(Float64Array, from, to, 1, (a, b) => core.deviation(a, b));
+    const out = forOverwrite(Float64Array, to - from);
+    callCore(() => core.deviation(from, to, out));
+    return out;
   }
 
   /** Per-axis error of every point (Wang eq. 11), flat with stride dims. */
@@ -240,10 +232,13 @@ export class Trace {
     return this.#axisError;
   }
 
+  /** The axis errors of points from..to, stride dims, made as deviationInRange makes its values. */
   axisErrorInRange(from: number, to: number): Float64Array {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
-    return copyRows(Float64Array, from, to, this.dims, (a, b) => core.axisError(a, b));
+    const out = forOverwrite(Float64Array, (to - from) * this.dims);
+    callCore(() => core.axisError(from, to, out));
+    return out;
   }
 
   /**
