@@ -2,7 +2,7 @@
 // against the real algorithm catalogue of the built wasm package.
 import { readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { catalogue as coreCatalogue } from '../web/core/index.js';
+import { catalogue as coreCatalogue, trace } from '../web/core/index.js';
 import {
   type AppState,
   type Catalogue,
@@ -180,8 +180,9 @@ describe('page state in the URL query', () => {
     }
   });
 
-  it('runs the helix against itself by the method the first side does not run', () => {
+  it('runs the helix against itself by the method the first side does not run', async () => {
     const state = stateFromQuery('mode=compare&algorithm=helix&other=helix&method=segments&segmentLength=2', catalogue)!;
+    const helix = catalogue.algorithms.find((a) => a.id === 'helix')!;
     expect(state.other).toBe('helix');
     const compared = comparedValues(state, catalogue.algorithms)!;
     expect(compared).toEqual({ option: 'method', values: ['segments', 'saleem'] });
@@ -190,8 +191,19 @@ describe('page state in the URL query', () => {
       ['segments', 'segments'],
       ['saleem', 'saleem'],
     ]);
-    // The options typed go to both sides, as the core's compare() gives them: the core says which a method refuses.
-    expect(sides.map((side) => side.options.segmentLength)).toEqual([2, 2]);
+    // The chord options typed go to the side that runs chords only: the core
+    // declares them as applying with method segments (OptionSpec.appliesWith)
+    // and refuses them with saleem, so the page leaves them out of that side.
+    expect(sides.map((side) => side.options.segmentLength)).toEqual([2, undefined]);
+    const [chords, saleem] = await Promise.all(sides.map((side) => trace(side.options)));
+    // Both sides trace (the Saleem side had refused segmentLength): chords, against the one segment of Saleem's rule.
+    expect(chords!.segments.length).toBeGreaterThan(1);
+    expect(saleem!.segments.length).toBe(1);
+    chords!.free();
+    saleem!.free();
+    // Out of compare mode, the chord options left over from method segments are left out with saleem too.
+    expect(traceOptions({ ...state, mode: 'trace', options: { ...state.options, method: 'saleem' } }, helix).segmentLength).toBeUndefined();
+    expect(traceOptions({ ...state, mode: 'trace' }, helix).segmentLength).toBe(2);
     // Left at its default, the first runs saleem and the second segments.
     expect(comparedValues(stateFromQuery('mode=compare&algorithm=helix', catalogue)!, catalogue.algorithms)?.values).toEqual(['saleem', 'segments']);
     // Out of compare mode, or against another algorithm, nothing tells the sides apart.

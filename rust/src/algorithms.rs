@@ -138,6 +138,30 @@ mod tests {
     }
 
     #[test]
+    fn every_option_s_condition_names_a_value_of_a_choice_of_its_algorithm() {
+        let mut conditions = 0;
+        for a in ALGORITHMS {
+            for spec in a.options {
+                let Some(condition) = spec.applies_with else {
+                    continue;
+                };
+                conditions += 1;
+                let governing = a.options.iter().find(|o| o.name == condition.option);
+                let values = match governing.map(|o| o.kind) {
+                    Some(crate::request::OptionKind::Choice { values }) => values,
+                    _ => panic!(
+                        "{}: {} applies with {}, not a choice of its own",
+                        a.id, spec.name, condition.option
+                    ),
+                };
+                assert!(values.contains(&condition.value), "{}: {}", a.id, spec.name);
+            }
+        }
+        // The helix's three chord options.
+        assert_eq!(conditions, 3);
+    }
+
+    #[test]
     fn unknown_algorithm_lists_the_known_ones() {
         let e = find("bresenham9d").err().unwrap().to_string();
         assert!(

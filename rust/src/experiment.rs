@@ -161,6 +161,7 @@ const COUNT: OptionSpec = OptionSpec {
     }),
     required: false,
     default: Some("100"),
+    applies_with: None,
     doc: "How many random lines (Wang: 100), at most 100000.",
 };
 
@@ -172,6 +173,7 @@ const SEED: OptionSpec = OptionSpec {
     }),
     required: false,
     default: Some("1"),
+    applies_with: None,
     doc: "Seed of the SplitMix64 generator: the same seed gives the same lines everywhere.",
 };
 
@@ -183,6 +185,7 @@ const MAX_COORDINATE: OptionSpec = OptionSpec {
     }),
     required: false,
     default: Some("100"),
+    applies_with: None,
     doc: "End coordinates are drawn uniformly from 0 to this (Wang: 100), at most 10000.",
 };
 
@@ -194,6 +197,7 @@ const DIMS: OptionSpec = OptionSpec {
     }),
     required: false,
     default: None,
+    applies_with: None,
     doc: "Axes per line (default 3, within what the algorithm takes).",
 };
 

@@ -74,6 +74,7 @@ pub const ACCELERATION: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: Some("10"),
+    applies_with: None,
     doc: "Acceleration, mm/s²: one number for every axis, or x,y,z (Grbl $120-$122; the default is Grbl's).",
 };
 
@@ -82,6 +83,7 @@ pub const MAX_RATE: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: Some("500"),
+    applies_with: None,
     doc: "Top rate, mm/min: one number, or x,y,z; also the rate of G0 (Grbl $110-$112; the default is Grbl's).",
 };
 
@@ -90,6 +92,7 @@ pub const JUNCTION_DEVIATION: OptionSpec = OptionSpec {
     kind: OptionKind::Number,
     required: false,
     default: Some("0.01"),
+    applies_with: None,
     doc: "Junction deviation δ, mm: how fast corners are taken, v² = a·δ·s/(1−s) (Grbl $11; the default is Grbl's).",
 };
 
@@ -98,6 +101,7 @@ pub const MAX_STEP_RATE: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
+    applies_with: None,
     doc: "Fastest step rate the drivers take, steps/s: one number, or x,y,z; a move that needs more is a warning.",
 };
 

@@ -155,7 +155,20 @@ pub struct OptionSpec {
     pub required: bool,
     /// Default shown to users (None when required or when it depends on input).
     pub default: Option<&'static str>,
+    /// The value another of the algorithm's choice options must have for
+    /// this one to apply (the helix's chord options, with method segments):
+    /// given with any other, it is refused, naming this option. None where
+    /// it always applies.
+    pub applies_with: Option<AppliesWith>,
     pub doc: &'static str,
+}
+
+/// An option's condition ([`OptionSpec::applies_with`]): the choice option
+/// named, at this value (given, or by its default).
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
+pub struct AppliesWith {
+    pub option: &'static str,
+    pub value: &'static str,
 }
 
 pub const FROM: OptionSpec = OptionSpec {
@@ -163,6 +176,7 @@ pub const FROM: OptionSpec = OptionSpec {
     kind: OptionKind::Point,
     required: true,
     default: None,
+    applies_with: None,
     doc: "Start point, integer grid units, |coordinate| <= 2^30.",
 };
 
@@ -171,6 +185,7 @@ pub const TO: OptionSpec = OptionSpec {
     kind: OptionKind::Point,
     required: true,
     default: None,
+    applies_with: None,
     doc: "End point, grid units, as many axes as from.",
 };
 
@@ -182,6 +197,7 @@ pub const MAX_STEPS: OptionSpec = OptionSpec {
     }),
     required: false,
     default: Some("50000000"),
+    applies_with: None,
     doc: "Refuse paths longer than this many steps (at most 1000000000).",
 };
 
@@ -194,6 +210,7 @@ pub const fn tie_option(default: &'static str) -> OptionSpec {
         },
         required: false,
         default: Some(default),
+        applies_with: None,
         doc: "What a discriminant of exactly 0 does: advance steps the axis, hold does not.",
     }
 }
@@ -282,7 +299,8 @@ impl Request {
         })
     }
 
-    /// Rejects options that are not among `accepted`, naming the first one.
+    /// Rejects options that are not among `accepted`, naming the first one,
+    /// then any given where it does not apply ([`OptionSpec::applies_with`]).
     pub fn check_options(&self, accepted: &[OptionSpec]) -> Result<(), Error> {
         for name in self.options.keys() {
             if !accepted.iter().any(|o| o.name == name) {
@@ -296,6 +314,24 @@ impl Request {
                         self.algorithm,
                         names.join(", ")
                     ),
+                ));
+            }
+        }
+        for spec in accepted {
+            let Some(AppliesWith { option, value }) = spec.applies_with else {
+                continue;
+            };
+            if self.get(spec.name).is_none() {
+                continue;
+            }
+            let governing = accepted
+                .iter()
+                .find(|o| o.name == option)
+                .expect("an option applies with another option of the same algorithm");
+            if self.choice(governing)?.or(governing.default) != Some(value) {
+                return Err(Error::field(
+                    spec.name,
+                    format!("applies to {option} {value} only"),
                 ));
             }
         }
@@ -523,6 +559,7 @@ mod tests {
             kind: OptionKind::Integer(IntegerRange { min, max }),
             required: false,
             default: None,
+            applies_with: None,
             doc: "",
         };
         let read = |json: &str, min, max| {
@@ -588,6 +625,7 @@ mod tests {
             },
             required: false,
             default: None,
+            applies_with: None,
             doc: "",
         };
         assert_eq!(

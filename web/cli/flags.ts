@@ -182,7 +182,8 @@ export function valueHint(spec: OptionSpec): string {
 export function describeOption(spec: OptionSpec): string {
   const flag = `${flagOf(spec.name)} ${valueHint(spec)}`;
   const extra = spec.required ? ' (required)' : spec.default !== null ? ` (default ${spec.default})` : '';
-  return `    ${flag.padEnd(30)} ${spec.doc}${extra}`;
+  const condition = spec.appliesWith ? ` (with ${flagOf(spec.appliesWith.option)} ${spec.appliesWith.value} only)` : '';
+  return `    ${flag.padEnd(30)} ${spec.doc}${extra}${condition}`;
 }
 
 /** The --format of a command, one of `formats` (json when absent). */

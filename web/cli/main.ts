@@ -88,7 +88,7 @@ function fullUsage({ algorithms: catalogue, experiments: experimentList, gcodeSe
   lines.push('', 'experiments (any option of --algorithm, except --from and --to, applies to every line):');
   for (const e of experimentList) {
     lines.push('', `  ${e.id}: ${e.title}`, `    ${e.citation}`);
-    lines.push(describeOption({ name: 'algorithm', kind: { type: 'choice', values: catalogue.filter((a) => a.family === e.family).map((a) => a.id) }, required: false, default: 'regions', doc: 'Algorithm that traces every line.' }));
+    lines.push(describeOption({ name: 'algorithm', kind: { type: 'choice', values: catalogue.filter((a) => a.family === e.family).map((a) => a.id) }, required: false, default: 'regions', appliesWith: null, doc: 'Algorithm that traces every line.' }));
     for (const o of e.options) lines.push(describeOption(o));
   }
   return lines.join('\n') + '\n';

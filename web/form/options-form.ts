@@ -120,7 +120,10 @@ export class OptionsForm {
 
   #field(spec: OptionSpec, axes: number, value: OptionValue | undefined): HTMLElement {
     const id = `${this.#idPrefix}-${spec.name}`;
-    const hint = element('p', { className: 'hint', id: `${id}-hint`, textContent: spec.doc });
+    // An option that applies only with another's value says so: the page
+    // leaves it out of a request where that option has another (traceOptions).
+    const condition = spec.appliesWith ? ` With ${spec.appliesWith.option} ${spec.appliesWith.value} only.` : '';
+    const hint = element('p', { className: 'hint', id: `${id}-hint`, textContent: spec.doc + condition });
     const error = element('p', { className: 'field-error', id: `${id}-error` });
     error.dataset.testid = `error-${id.replace(/^option-/, '')}`;
     error.setAttribute('aria-live', 'polite');

@@ -330,14 +330,28 @@ export function tracedAlgorithms(state: AppState, catalogue: readonly AlgorithmI
 /**
  * The request the core receives for `info` in this state: the options it
  * declares, as typed and unchecked (the core validates each and names the
- * one at fault), plus the page's own. In compare mode each algorithm takes
- * the shared options it declares, as the core's compare() does (see
- * comparedRequests).
+ * one at fault), with `fixed` over them, plus the page's own. In compare
+ * mode each algorithm takes the shared options it declares, as the core's
+ * compare() does (see comparedRequests). An option the core declares as
+ * applying only with another's value (OptionSpec.appliesWith: the helix's
+ * chord options, with method segments) is left out where that option has
+ * another, so that one set of fields serves both sides of the helix against
+ * itself: its chords take the chord options typed, its Saleem side none.
  */
-export function traceOptions(state: AppState, info: AlgorithmInfo): TraceOptions {
+export function traceOptions(state: AppState, info: AlgorithmInfo, fixed: Record<string, OptionValue> = {}): TraceOptions {
+  const given: Record<string, OptionValue | undefined> = { ...state.options, ...fixed };
   const options: Record<string, unknown> = { algorithm: info.id };
-  for (const spec of info.options) if (spec.name in state.options) options[spec.name] = state.options[spec.name];
+  for (const spec of info.options) {
+    if (spec.name in given && applies(spec, info, given)) options[spec.name] = given[spec.name];
+  }
   return { ...options, ...PAGE_OPTIONS } as TraceOptions;
+}
+
+/** Whether `spec` applies with the options `given`: its appliesWith option at that value, given or by its default. */
+function applies(spec: OptionSpec, info: AlgorithmInfo, given: Record<string, OptionValue | undefined>): boolean {
+  if (spec.appliesWith === null) return true;
+  const { option, value } = spec.appliesWith;
+  return (given[option] ?? info.options.find((o) => o.name === option)?.default) === value;
 }
 
 /** One side of a comparison: its request, and the value that tells it from the other side of an algorithm compared with itself. */
@@ -355,8 +369,8 @@ export function comparedRequests(state: AppState, catalogue: readonly AlgorithmI
   const compared = comparedValues(state, catalogue);
   const [a, b] = tracedAlgorithms(state, catalogue).map((info, i): ComparedSide => {
     const distinction = compared?.values[i];
-    const options = traceOptions(state, info);
-    return { options: compared ? { ...options, [compared.option]: distinction } : options, distinction };
+    const options = traceOptions(state, info, compared && distinction !== undefined ? { [compared.option]: distinction } : {});
+    return { options, distinction };
   });
   return [a!, b!];
 }

@@ -64,6 +64,7 @@ pub const SEGMENT_LENGTH: OptionSpec = OptionSpec {
     kind: OptionKind::Number,
     required: false,
     default: None,
+    applies_with: None,
     doc: "Chord length, grid units: chords = floor(arc length / segmentLength), the blog's CM_PER_SEGMENT rule. Give this or tolerance.",
 };
 
@@ -72,6 +73,7 @@ pub const TOLERANCE: OptionSpec = OptionSpec {
     kind: OptionKind::Number,
     required: false,
     default: Some("0.5"),
+    applies_with: None,
     doc: "Chord sagitta aimed at, grid units (Grbl's arc_tolerance): chords = floor(|sweep| r / (2 sqrt(tolerance (2r - tolerance)))). Used when segmentLength is not given.",
 };
 
@@ -82,6 +84,7 @@ pub const LINE_ALGORITHM: OptionSpec = OptionSpec {
     },
     required: false,
     default: Some("regions"),
+    applies_with: None,
     doc: "The line algorithm that steps each chord (a catalogue id).",
 };
 
@@ -92,6 +95,7 @@ pub const LINE_TIE: OptionSpec = OptionSpec {
     },
     required: false,
     default: None,
+    applies_with: None,
     doc: "Tie rule passed to the line algorithm of the chords; by default that algorithm's own.",
 };
 

@@ -36,7 +36,9 @@ use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
 use crate::line::step_target;
 use crate::line::terms::Term;
-use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy};
+use crate::request::{
+    AppliesWith, FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy,
+};
 use crate::trace::{
     Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, concat_columns,
 };
@@ -51,7 +53,29 @@ pub const METHOD: OptionSpec = OptionSpec {
     },
     required: false,
     default: Some("saleem"),
+    applies_with: None,
     doc: "saleem: the arc's steps against the linear axis as a 2D Bresenham line (Saleem section 5); segments: chords with the height interpolated by angle, each stepped by lineAlgorithm.",
+};
+
+/// Where arc-segments' chord options apply to the helix: with its method
+/// segments (Saleem's method has no chords; given with it, each is refused).
+const WITH_CHORDS: Option<AppliesWith> = Some(AppliesWith {
+    option: METHOD.name,
+    value: "segments",
+});
+
+/// arc-segments' chord options, as the helix takes them (WITH_CHORDS).
+const CHORD_SEGMENT_LENGTH: OptionSpec = OptionSpec {
+    applies_with: WITH_CHORDS,
+    ..SEGMENT_LENGTH
+};
+const CHORD_TOLERANCE: OptionSpec = OptionSpec {
+    applies_with: WITH_CHORDS,
+    ..TOLERANCE
+};
+const CHORD_LINE_ALGORITHM: OptionSpec = OptionSpec {
+    applies_with: WITH_CHORDS,
+    ..LINE_ALGORITHM
 };
 
 pub const HELIX_TIE: OptionSpec = OptionSpec {
@@ -61,6 +85,7 @@ pub const HELIX_TIE: OptionSpec = OptionSpec {
     },
     required: false,
     default: None,
+    applies_with: None,
     doc: "method saleem: what an error exactly at its threshold does (default hold, Saleem's strict >); method segments: passed to the line algorithm.",
 };
 
@@ -89,9 +114,9 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
         TURNS,
         METHOD,
         HELIX_TIE,
-        SEGMENT_LENGTH,
-        TOLERANCE,
-        LINE_ALGORITHM,
+        CHORD_SEGMENT_LENGTH,
+        CHORD_TOLERANCE,
+        CHORD_LINE_ALGORITHM,
         MAX_STEPS,
     ],
     min_dims: 3,
@@ -103,19 +128,10 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
     let spec = ArcSpec::parse(req, true)?;
+    // The chord options given with method saleem were refused by
+    // check_options (WITH_CHORDS).
     if req.choice(&METHOD)? == Some("segments") {
         return trace_chords(ID, req, &spec, true, find);
-    }
-    for option in [SEGMENT_LENGTH.name, TOLERANCE.name] {
-        if req.number(option)?.is_some() {
-            return Err(Error::field(option, "applies to method segments only"));
-        }
-    }
-    if req.choice(&LINE_ALGORITHM)?.is_some() {
-        return Err(Error::field(
-            LINE_ALGORITHM.name,
-            "applies to method segments only",
-        ));
     }
     let tie = req.tie(TiePolicy::Hold)?;
     let mut builder = TraceBuilder::for_request(spec.from, req)?;
@@ -572,14 +588,27 @@ mod tests {
 
     #[test]
     fn segment_options_need_segments_mode() {
-        let e = INFO
-            .trace_json(
-                r#"{"algorithm":"helix","from":[3,0,0],"to":[0,3,2],"center":[0,0,0],"tolerance":0.1}"#,
-                find_regions,
-            )
-            .err()
-            .unwrap();
-        assert_eq!(e.to_string(), "tolerance: applies to method segments only");
+        // Each chord option, with the method left to its default (saleem)
+        // and named: refused, naming the option.
+        for (option, value, method) in [
+            ("tolerance", "0.1", ""),
+            ("segmentLength", "2", r#","method":"saleem""#),
+            ("lineAlgorithm", r#""dda""#, ""),
+        ] {
+            let e = INFO
+                .trace_json(
+                    &format!(
+                        r#"{{"algorithm":"helix","from":[3,0,0],"to":[0,3,2],"center":[0,0,0],"{option}":{value}{method}}}"#
+                    ),
+                    find_regions,
+                )
+                .err()
+                .unwrap();
+            assert_eq!(
+                e.to_string(),
+                format!("{option}: applies to method segments only")
+            );
+        }
         let t = INFO
             .trace_json(
                 r#"{"algorithm":"helix","from":[30,0,0],"to":[0,30,20],"center":[0,0,0],"method":"segments","segmentLength":10}"#,

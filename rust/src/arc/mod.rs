@@ -35,6 +35,7 @@ pub const CENTER: OptionSpec = OptionSpec {
     kind: OptionKind::Point,
     required: true,
     default: None,
+    applies_with: None,
     doc: "Center of the circle, absolute grid units; its coordinate on the plane's normal axis is ignored.",
 };
 
@@ -43,6 +44,7 @@ pub const DIR: OptionSpec = OptionSpec {
     kind: OptionKind::Choice { values: DIR_VALUES },
     required: false,
     default: Some("ccw"),
+    applies_with: None,
     doc: "cw = G02 (clockwise), ccw = G03 (counter-clockwise), seen from the positive end of the plane's normal axis.",
 };
 
@@ -53,6 +55,7 @@ pub const PLANE: OptionSpec = OptionSpec {
     },
     required: false,
     default: Some("xy"),
+    applies_with: None,
     doc: "xy = G17, zx = G18 (z is the first axis, so the plane is right-handed), yz = G19.",
 };
 
@@ -67,6 +70,7 @@ pub const TURNS: OptionSpec = OptionSpec {
     kind: OptionKind::Integer(TURNS_RANGE),
     required: false,
     default: Some("0"),
+    applies_with: None,
     doc: "Extra full turns before stopping at the end (G-code P minus 1); from = to is already one full circle.",
 };
 

@@ -66,6 +66,7 @@ pub const STEPS_PER_MM: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
+    applies_with: None,
     doc: "Steps per mm: one number for every axis, or one per axis as x,y,z (80,80,400). Or give stepAngle, microsteps and pitch.",
 };
 
@@ -74,6 +75,7 @@ pub const STEP_ANGLE: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
+    applies_with: None,
     doc: "Motor step angle θ, degrees (one, or x,y,z): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
 };
 
@@ -82,6 +84,7 @@ pub const MICROSTEPS: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: true },
     required: false,
     default: None,
+    applies_with: None,
     doc: "Microsteps s per full step (one, or x,y,z).",
 };
 
@@ -90,10 +93,12 @@ pub const PITCH: OptionSpec = OptionSpec {
     kind: OptionKind::PerAxis { integer: false },
     required: false,
     default: None,
+    applies_with: None,
     doc: "Lead-screw pitch P, mm per turn (one, or x,y,z): one step is L = P / p_m mm.",
 };
 
 pub const PROGRAM_LINE_ALGORITHM: OptionSpec = OptionSpec {
+    applies_with: None,
     doc: "The line algorithm that steps G0 and G1 moves, and the chords of arc-segments (a catalogue id).",
     ..LINE_ALGORITHM
 };
@@ -105,6 +110,7 @@ pub const ARC_ALGORITHM: OptionSpec = OptionSpec {
     },
     required: false,
     default: Some("circle"),
+    applies_with: None,
     doc: "How arcs are stepped: circle (Saleem's integer circle) or arc-segments (chords by the line algorithm). Helical arcs run helix by the matching method.",
 };
 

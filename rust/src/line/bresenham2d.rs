@@ -29,6 +29,7 @@ pub const VARIANT: OptionSpec = OptionSpec {
     },
     required: false,
     default: Some("corrected"),
+    applies_with: None,
     doc: "corrected: after a minor step the error drops by 2·Δmajor (eq. 4-5); printed: by Δmajor, as Saleem's pseudo-code prints it (the minor axis then runs ahead; the finish rule holds it at its end coordinate).",
 };
 

@@ -34,6 +34,7 @@ pub const DECIMALS: OptionSpec = OptionSpec {
     }),
     required: false,
     default: Some("1"),
+    applies_with: None,
     doc: "Decimal places kept of the slope k and of each decision parameter, 0 to 10 (1 drifts as Wang's Fig. 10 shows; 4 reproduces Liu's Table 1).",
 };
 

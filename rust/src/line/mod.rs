@@ -244,6 +244,7 @@ pub const GCD: OptionSpec = OptionSpec {
     kind: OptionKind::Boolean,
     required: false,
     default: Some("false"),
+    applies_with: None,
     doc: "Wang section 4: divide the deltas by their greatest common divisor; the discriminants shrink by that factor and repeat their pattern GCD times (the path is the same).",
 };
 
@@ -269,6 +270,7 @@ pub const TIE_AXIS: OptionSpec = OptionSpec {
     },
     required: false,
     default: Some("lower"),
+    applies_with: None,
     doc: "Which axis steps first when two or more are exactly tied: the lower (x before y before z) or the higher.",
 };
 
