@@ -148,6 +148,27 @@ describe('voxpath compare', () => {
     expect(csv).toContain('point there,"(5, 4, 3)","(5, 3, 3)"');
   });
 
+  it('runs the helix against itself by its other method, the chord flags on the chords only', async () => {
+    const helix = ['--from', '30,0,0', '--to', '0,30,20', '--center', '0,0,0'];
+    const r = voxpathCompare('--algorithms', 'helix,helix', ...helix, '--method', 'segments', '--segment-length', '10', '--format', 'json');
+    expect(r.code).toBe(0);
+    const c = JSON.parse(r.stdout) as Awaited<ReturnType<typeof compare>>;
+    expect([c.a.comparedValue, c.b.comparedValue]).toEqual(['segments', 'saleem']);
+    // Each side as the API traces it alone: chords of length 10 on a (which
+    // Saleem's method would refuse), Saleem's rule on b.
+    const move = { from: [30, 0, 0], to: [0, 30, 20], center: [0, 0, 0] };
+    const [chords, saleem] = await Promise.all([trace({ algorithm: 'helix', ...move, method: 'segments', segmentLength: 10 }), trace({ algorithm: 'helix', ...move })]);
+    expect([c.a.steps, c.b.steps]).toEqual([chords.steps, saleem.steps]);
+    expect(chords.segments).toHaveLength(4);
+    chords.free();
+    saleem.free();
+    const table = voxpathCompare('--algorithms', 'helix,helix', ...helix, '--format', 'table').stdout;
+    expect(table).toMatch(/^compare helix \(saleem\) \(a\) with helix \(segments\) \(b\)/);
+    expect(table).toMatch(/^ +helix \(saleem\) +helix \(segments\)$/m);
+    // Two algorithms: no value tells the sides apart.
+    expect((await compare({ algorithms: ['regions', 'bresenham3d'], ...LINE })).a.comparedValue).toBeNull();
+  });
+
   it('takes the flags of both algorithms', () => {
     const r = voxpathCompare('--algorithms', 'circle,arc-segments', '--from', '5,0,0', '--to', '0,5,0', '--center', '0,0,0', '--segment-length', '100');
     expect(r.code).toBe(0);

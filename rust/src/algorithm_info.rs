@@ -78,6 +78,13 @@ pub struct AlgorithmInfo {
     /// Default tie policy; null when it takes no `tie` option (it has no
     /// ties, or, like greedy and walk6, orders tied axes with `tieAxis`).
     pub default_tie: Option<TiePolicy>,
+    /// The choice option by which it is compared with itself, null when it
+    /// is not: compared with itself, one side runs that option's value as
+    /// given (else its default), the other the first other value (the
+    /// helix by its method, Saleem's rule against chords: on a move that
+    /// rises no other algorithm takes, and it is the comparison a learner
+    /// wants).
+    pub compared_by: Option<&'static str>,
     /// Runs the algorithm on a request whose `algorithm` is this id.
     #[serde(skip)]
     pub trace: fn(&Request, Find) -> Result<Trace, Error>,

@@ -162,6 +162,25 @@ mod tests {
     }
 
     #[test]
+    fn every_algorithm_compared_with_itself_is_by_a_choice_of_two_values_or_more() {
+        for a in ALGORITHMS {
+            let Some(name) = a.compared_by else { continue };
+            let spec = a.options.iter().find(|o| o.name == name);
+            assert!(
+                matches!(spec.map(|o| o.kind), Some(crate::request::OptionKind::Choice { values }) if values.len() >= 2),
+                "{}: compared by {name}",
+                a.id
+            );
+        }
+        let compared: Vec<&str> = ALGORITHMS
+            .iter()
+            .filter(|a| a.compared_by.is_some())
+            .map(|a| a.id)
+            .collect();
+        assert_eq!(compared, ["helix"]);
+    }
+
+    #[test]
     fn unknown_algorithm_lists_the_known_ones() {
         let e = find("bresenham9d").err().unwrap().to_string();
         assert!(

@@ -15,7 +15,7 @@ use crate::algorithms::{self, AlgorithmInfo};
 use crate::error::Error;
 use crate::grid::MAX_AXES;
 use crate::metrics::Metrics;
-use crate::request::Request;
+use crate::request::{OptionKind, OptionSpec, Request};
 use crate::trace::Trace;
 use serde::Serialize;
 use serde_json::Value;
@@ -52,6 +52,10 @@ pub struct TraceDigest {
     pub end: Vec<i64>,
     /// maxDeviation is the largest radial error for an arc.
     pub metrics: Metrics,
+    /// Where an algorithm is compared with itself by an option
+    /// ([`AlgorithmInfo::compared_by`]: the helix by its method), the value
+    /// of it this side ran; else None.
+    pub compared_value: Option<String>,
 }
 
 #[derive(Serialize, Tsify, Debug, Clone, PartialEq)]
@@ -184,6 +188,7 @@ fn digest(t: &Trace) -> TraceDigest {
         start: t.start().coords().to_vec(),
         end: t.end().coords().to_vec(),
         metrics: t.metrics().clone(),
+        compared_value: None,
     }
 }
 
@@ -317,18 +322,76 @@ pub fn compare_request(text: &str) -> Result<Comparison, Error> {
             ),
         ));
     }
-    let run = |info: &AlgorithmInfo| {
-        let own = options
+    let tagged = |info: &AlgorithmInfo, e: Error| Error {
+        message: format!("{}: {}", info.id, e.message),
+        ..e
+    };
+    let compared = compared_values(pair, &options).map_err(|e| tagged(pair[0], e))?;
+    let run = |info: &AlgorithmInfo, side: usize| {
+        let mut own: serde_json::Map<String, Value> = options
             .iter()
             .filter(|(name, _)| takes(info, name))
             .map(|(name, value)| (name.clone(), value.clone()))
             .collect();
-        (info.trace)(&Request::new(info.id, own), algorithms::find).map_err(|e| Error {
-            message: format!("{}: {}", info.id, e.message),
-            ..e
-        })
+        if let Some((spec, values)) = compared {
+            own.insert(spec.name.to_string(), Value::from(values[side]));
+        }
+        let mut request = Request::new(info.id, own);
+        if compared.is_some() {
+            // One set of options serves both sides: one that applies only
+            // with another value of the compared option (the chord options
+            // beside Saleem's method) is the other side's alone.
+            let others: Vec<&str> = request
+                .inapplicable(info.options)
+                .map_err(|e| tagged(info, e))?
+                .iter()
+                .map(|o| o.name)
+                .collect();
+            request = request.without(&others);
+        }
+        (info.trace)(&request, algorithms::find).map_err(|e| tagged(info, e))
     };
-    compare(&run(pair[0])?, &run(pair[1])?)
+    let mut comparison = compare(&run(pair[0], 0)?, &run(pair[1], 1)?)?;
+    if let Some((_, [a, b])) = compared {
+        comparison.a.compared_value = Some(a.to_string());
+        comparison.b.compared_value = Some(b.to_string());
+    }
+    Ok(comparison)
+}
+
+/// For an algorithm compared with itself by an option
+/// ([`AlgorithmInfo::compared_by`]): that option, and the value each side
+/// runs, a's as given (else its default) and b's the first other one. None
+/// for two algorithms, or one not compared by an option.
+fn compared_values(
+    pair: [&AlgorithmInfo; 2],
+    options: &serde_json::Map<String, Value>,
+) -> Result<Option<(&'static OptionSpec, [&'static str; 2])>, Error> {
+    let [a, b] = pair;
+    let Some(name) = a.compared_by.filter(|_| a.id == b.id) else {
+        return Ok(None);
+    };
+    let spec = a
+        .options
+        .iter()
+        .find(|o| o.name == name)
+        .expect("compared_by names an option of the algorithm's own");
+    let OptionKind::Choice { values } = spec.kind else {
+        unreachable!("compared_by names a choice option");
+    };
+    let request = Request::new(a.id, options.clone());
+    let given = request.choice(spec)?.or(spec.default);
+    let first = values
+        .iter()
+        .copied()
+        .find(|v| Some(*v) == given)
+        .unwrap_or(values[0]);
+    let second = values
+        .iter()
+        .copied()
+        .find(|v| *v != first)
+        .unwrap_or(first);
+    Ok(Some((spec, [first, second])))
 }
 
 #[cfg(test)]
@@ -495,6 +558,49 @@ mod request_tests {
             .cloned()
             .collect::<serde_json::Map<_, _>>();
         Value::Object(map)
+    }
+
+    #[test]
+    fn the_helix_compared_with_itself_runs_its_other_method_on_b() {
+        let helix = r#""from":[30,0,0],"to":[0,30,20],"center":[0,0,0]"#;
+        // Chords as given on a, at the segment length given, which Saleem's
+        // side b is not given (it refuses it): floor(15π / 10) = 4 chords
+        // (the helix's own test), against Saleem's one segment.
+        let c = run(&format!(
+            r#"{{"algorithms":["helix","helix"],{helix},"method":"segments","segmentLength":10}}"#
+        ));
+        assert_eq!(
+            (c.a.compared_value.as_deref(), c.b.compared_value.as_deref()),
+            (Some("segments"), Some("saleem"))
+        );
+        let alone = |options: &str| {
+            crate::algorithms::trace_json(&format!(r#"{{"algorithm":"helix",{helix}{options}}}"#))
+                .unwrap()
+        };
+        assert_eq!(
+            c.a.steps,
+            alone(r#","method":"segments","segmentLength":10"#).steps()
+        );
+        assert_eq!(c.b.steps, alone("").steps());
+        assert!(c.first_difference.is_some());
+        // The method left to its default: Saleem's on a, chords (at their
+        // default tolerance) on b.
+        let c = run(&format!(r#"{{"algorithms":["helix","helix"],{helix}}}"#));
+        assert_eq!(
+            (c.a.compared_value.as_deref(), c.b.compared_value.as_deref()),
+            (Some("saleem"), Some("segments"))
+        );
+        assert_eq!(c.b.steps, alone(r#","method":"segments""#).steps());
+        // Two algorithms, or one not compared by an option: no value.
+        let c = run(r#"{"algorithms":["regions","regions"],"from":[0,0,0],"to":[10,7,6]}"#);
+        assert_eq!((c.a.compared_value, c.b.compared_value), (None, None));
+        assert!(c.first_difference.is_none());
+        // A method that is not one names the field and the algorithm.
+        let e = error(&format!(
+            r#"{{"algorithms":["helix","helix"],{helix},"method":"chords"}}"#
+        ));
+        assert_eq!(e.field_name(), Some("method"));
+        assert!(e.to_string().contains("helix: "), "{e}");
     }
 
     #[test]

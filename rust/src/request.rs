@@ -317,6 +317,27 @@ impl Request {
                 ));
             }
         }
+        if let Some(spec) = self.inapplicable(accepted)?.first() {
+            let AppliesWith { option, value } = spec
+                .applies_with
+                .expect("an inapplicable option has a condition");
+            return Err(Error::field(
+                spec.name,
+                format!("applies to {option} {value} only"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The options of `accepted` given here where they do not apply: with
+    /// the option their [`OptionSpec::applies_with`] names at another value
+    /// (given, or by its default). An error where that option's own value
+    /// is not one of its choices.
+    pub fn inapplicable<'a>(
+        &self,
+        accepted: &'a [OptionSpec],
+    ) -> Result<Vec<&'a OptionSpec>, Error> {
+        let mut out = Vec::new();
         for spec in accepted {
             let Some(AppliesWith { option, value }) = spec.applies_with else {
                 continue;
@@ -329,13 +350,10 @@ impl Request {
                 .find(|o| o.name == option)
                 .expect("an option applies with another option of the same algorithm");
             if self.choice(governing)?.or(governing.default) != Some(value) {
-                return Err(Error::field(
-                    spec.name,
-                    format!("applies to {option} {value} only"),
-                ));
+                out.push(spec);
             }
         }
-        Ok(())
+        Ok(out)
     }
 
     /// This request without the named options (for a request that drives

@@ -283,9 +283,14 @@ function pointText(point: number[] | null): string {
   return point === null ? '-' : `(${point.join(', ')})`;
 }
 
-/** Column labels of a comparison: the ids, told apart when they are the same. */
+/** A side's name: its algorithm, with the value it ran where an algorithm is compared with itself by an option ("helix (saleem)"). */
+function sideName(side: Comparison['a']): string {
+  return side.comparedValue ? `${side.algorithm} (${side.comparedValue})` : side.algorithm;
+}
+
+/** Column labels of a comparison: the sides' names, told apart when they are the same. */
 function sideLabels(c: Comparison): [string, string] {
-  const [a, b] = [c.a.algorithm, c.b.algorithm];
+  const [a, b] = [sideName(c.a), sideName(c.b)];
   return a === b ? [`${a} (a)`, `${b} (b)`] : [a, b];
 }
 
@@ -336,7 +341,7 @@ export function comparisonToTable(comparison: Comparison): string {
   const labels = sideLabels(c);
   const d = c.firstDifference;
   const lines = [
-    `compare ${c.a.algorithm} (a) with ${c.b.algorithm} (b), from ${pointText(c.a.start)}`,
+    `compare ${sideName(c.a)} (a) with ${sideName(c.b)} (b), from ${pointText(c.a.start)}`,
     '',
     ...alignedTable(['', ...labels], comparisonRows(c).slice(0, 9), [0]),
     '',

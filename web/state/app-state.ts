@@ -44,7 +44,7 @@ export interface AppState {
   /**
    * Compare mode: the second algorithm, b. It takes the options it declares
    * from `options`; the first algorithm again when it is compared with
-   * itself by an option (COMPARED_BY), whose other value it runs.
+   * itself by an option (the catalogue's comparedBy), whose other value it runs.
    */
   other: string;
   layout: CompareLayout;
@@ -111,7 +111,7 @@ const DEFAULT_ALGORITHM = 'regions';
  * a line algorithm (the lesson of the 2009 blog: greedy strays from the
  * line), arc-segments against circle (direct arc stepping against chords),
  * for those two their natural partners, and the helix against itself by its
- * other method (COMPARED_BY: no other algorithm takes a move that rises).
+ * other method (its comparedBy: no other algorithm takes a move that rises).
  */
 export function defaultOther(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AlgorithmInfo {
   const partner: Record<string, string> = { greedy: 'walk6', circle: 'arc-segments', 'arc-segments': 'circle', helix: 'helix' };
@@ -120,18 +120,9 @@ export function defaultOther(info: AlgorithmInfo, catalogue: readonly AlgorithmI
   return found ?? info;
 }
 
-/**
- * Algorithms compared with themselves, by the option named: the second side
- * runs another of its values. The helix by its method, saleem against
- * segments: on a move that rises it is the only algorithm there is (circle
- * and arc-segments refuse any rise), and its method is "exactly the
- * comparison a learner wants" (rust/src/arc/helix.rs).
- */
-const COMPARED_BY: Readonly<Record<string, string>> = { helix: 'method' };
-
-/** The choice option `info` is compared with itself by (COMPARED_BY), if any. */
+/** The choice option `info` is compared with itself by (the catalogue's comparedBy: the helix's method), if any. */
 function comparedBy(info: AlgorithmInfo): (OptionSpec & { kind: { type: 'choice' } }) | undefined {
-  const spec = info.options.find((o) => o.name === COMPARED_BY[info.id]);
+  const spec = info.options.find((o) => o.name === info.comparedBy);
   return spec?.kind.type === 'choice' ? (spec as OptionSpec & { kind: { type: 'choice' } }) : undefined;
 }
 
@@ -143,7 +134,7 @@ export interface ComparedValues {
 
 /**
  * In compare mode with an algorithm against itself: the value of its
- * compared option (COMPARED_BY) each side runs, the first's as chosen (else
+ * compared option (comparedBy) each side runs, the first's as chosen (else
  * its default) and the second's the first other one; else undefined.
  */
 export function comparedValues(state: AppState, catalogue: readonly AlgorithmInfo[]): ComparedValues | undefined {
@@ -189,7 +180,7 @@ export function experimentAlgorithm(state: AppState, catalogue: Catalogue): Algo
 /**
  * Algorithms that can be compared with `info`: the others of its family that
  * take an axis count of the page it takes, and `info` itself when it is
- * compared by an option (COMPARED_BY; else an algorithm against itself
+ * compared by an option (comparedBy; else an algorithm against itself
  * draws one path twice).
  */
 export function comparableWith(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AlgorithmInfo[] {

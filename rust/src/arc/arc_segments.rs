@@ -134,6 +134,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: None,
+    compared_by: None,
     trace: |req, find| {
         req.check_options(INFO.options)?;
         let spec = ArcSpec::parse(req, false)?;

@@ -63,6 +63,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: None,
+    compared_by: None,
     trace: trace_circle,
 };
 

@@ -122,6 +122,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: Some(TiePolicy::Hold),
+    compared_by: Some(METHOD.name),
     trace: trace_helix,
 };
 

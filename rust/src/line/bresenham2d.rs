@@ -52,6 +52,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: 2,
     default_tie: Some(TiePolicy::Hold),
+    compared_by: None,
     trace: |req, _| {
         let variant = Variant::from_request(req)?;
         super::trace_line(&INFO, req, |from, to, tie| {

@@ -37,6 +37,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: Some(TiePolicy::Hold),
+    compared_by: None,
     trace: |req, _| {
         let gcd = super::gcd_option(req)?;
         super::trace_line(&INFO, req, |from, to, tie| {

@@ -26,6 +26,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: MAX_AXES,
     default_tie: None,
+    compared_by: None,
     trace: |req, _| super::trace_line(&INFO, req, |from, to, _| Dda::new(from, to)),
 };
 

@@ -36,6 +36,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: MAX_AXES,
     default_tie: None,
+    compared_by: None,
     trace: |req, _| {
         let order = TieAxis::from_request(req)?;
         super::trace_line(&INFO, req, |from, to, _| Greedy::new(from, to, order))

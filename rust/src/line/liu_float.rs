@@ -63,6 +63,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 3,
     max_dims: 3,
     default_tie: Some(TiePolicy::Advance),
+    compared_by: None,
     trace: |req, _| {
         let decimals = decimals_option(req)?;
         super::trace_line(&INFO, req, |from, to, tie| {

@@ -31,6 +31,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     min_dims: 2,
     max_dims: MAX_AXES,
     default_tie: Some(TiePolicy::Advance),
+    compared_by: None,
     trace: |req, _| {
         let gcd = super::gcd_option(req)?;
         super::trace_line(&INFO, req, |from, to, tie| Nd::new(from, to, tie, gcd))
