@@ -18,6 +18,7 @@
 use crate::error::{Error, Limit};
 use crate::figure::{DecisionFigure, FigureKind};
 use crate::grid::{MAX_AXES, Point, Step, displacement};
+use crate::ideal::curve::ArcMeter;
 use crate::ideal::info::IdealPathInfo;
 use crate::ideal::line::LineMeter;
 use crate::ideal::{IdealPath, Meter};
@@ -953,9 +954,21 @@ impl Piece<'_> {
         LineMeter::new(from, to).walk(&self.start, self.local(), self.segment.steps, self.steps, f)
     }
 
+    /// Walks the points along an arc segment ([`ArcMeter::walk`]), calling
+    /// `f(meter, offsets of the point from the center)` for each: false,
+    /// calling nothing, where the segment is no arc.
+    fn walk_arc(&self, mut f: impl FnMut(&ArcMeter, [i64; 3])) -> bool {
+        let IdealPath::Arc(arc) = &self.segment.ideal else {
+            return false;
+        };
+        let meter = arc.meter();
+        meter.walk(&self.start, self.steps, |offsets| f(&meter, offsets));
+        true
+    }
+
     /// Calls `f(k, point k, meter, step of the segment, its steps)` for
-    /// each point, each measured on its own: the reference the line walk
-    /// is held to, and the way arcs and helices are measured.
+    /// each point, each measured on its own: the reference the line and arc
+    /// walks are held to, and the way helices are measured.
     fn for_each_point(&self, mut f: impl FnMut(u64, &Point, &Meter, u64, u64)) {
         let meter = self.segment.ideal.meter();
         let n = self.segment.steps;
@@ -1333,7 +1346,9 @@ impl Trace {
     /// time (wasm's `deviation`, into a JS array), not all at once.
     pub fn for_each_deviation(&self, from: u64, to: u64, mut f: impl FnMut(f64)) {
         self.for_each_piece(from, to, |piece| {
-            if !piece.walk_line(|deviation, _| f(deviation)) {
+            if !piece.walk_line(|deviation, _| f(deviation))
+                && !piece.walk_arc(|meter, offsets| f(meter.deviation_at(offsets)))
+            {
                 piece.for_each_point(|_, p, meter, _, _| f(meter.deviation(p)));
             }
         });
@@ -1355,6 +1370,10 @@ impl Trace {
             let walked = piece.walk_line(|_, numerator| {
                 for &v in &numerator[..dims] {
                     f(v as f64 / n);
+                }
+            }) || piece.walk_arc(|meter, offsets| {
+                for &error in &meter.axis_error_at(offsets)[..dims] {
+                    f(error);
                 }
             });
             if !walked {

@@ -14,7 +14,7 @@
 use super::info::IdealPathInfo;
 use crate::arc::angle::sin_cos_turns;
 use crate::arc::planes::Plane;
-use crate::grid::{MAX_AXES, Point, within_i64_product_bound};
+use crate::grid::{MAX_AXES, Point, Step, within_i64_product_bound};
 use std::f64::consts::TAU;
 
 /// Sagitta, in grid units, of the polyline's chords on small circles.
@@ -235,7 +235,12 @@ impl ArcMeter<'_> {
 
     /// Distance from `p` to the circle: radial error and height off the plane.
     pub fn deviation(&self, p: &Point) -> f64 {
-        let [u, v, n] = self.arc.relative(p);
+        self.deviation_at(self.arc.relative(p))
+    }
+
+    /// [`Self::deviation`] of the point at offsets (u, v, n) from the center.
+    #[inline]
+    pub fn deviation_at(&self, [u, v, n]: [i64; 3]) -> f64 {
         let radial = self.radial_error_of(self.excess_and_rho_sq(u, v));
         // hypot(x, 0) is |x| exactly; hypot itself is a library call, and
         // every point of an arc in its plane has n = 0.
@@ -246,9 +251,32 @@ impl ArcMeter<'_> {
         }
     }
 
+    /// The offsets (u, v, n) from the center, in the plane's frame, of
+    /// `start` and of the point after each of `moves` after it, handed to
+    /// `f` in order: carried from step to step (a step moves each by -1, 0
+    /// or 1), where measuring point by point rebuilt each point and took
+    /// its offsets from it. For [`Self::deviation_at`] and
+    /// [`Self::axis_error_at`], which then give the same values to the bit.
+    pub fn walk(&self, start: &Point, moves: &[Step], mut f: impl FnMut([i64; 3])) {
+        let [au, av, an] = self.arc.plane.axes();
+        let mut offsets = self.arc.relative(start);
+        f(offsets);
+        for &step in moves {
+            offsets[0] += step.delta(au);
+            offsets[1] += step.delta(av);
+            offsets[2] += step.delta(an);
+            f(offsets);
+        }
+    }
+
     /// `p` minus the arc's point at the same angle (the radial projection).
     pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
-        let [u, v, n] = self.arc.relative(p);
+        self.axis_error_at(self.arc.relative(p))
+    }
+
+    /// [`Self::axis_error`] of the point at offsets (u, v, n) from the center.
+    #[inline]
+    pub fn axis_error_at(&self, [u, v, n]: [i64; 3]) -> [f64; MAX_AXES] {
         let squares = self.excess_and_rho_sq(u, v);
         let rho = squares.1.sqrt();
         let [au, av, an] = self.arc.plane.axes();
