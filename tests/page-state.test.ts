@@ -2,7 +2,8 @@
 // against the real algorithm catalogue of the built wasm package.
 import { readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { catalogue as coreCatalogue, trace } from '../web/core/index.js';
+import { catalogue as coreCatalogue, compare, trace } from '../web/core/index.js';
+import { rejection } from './helpers.js';
 import {
   type AppState,
   type Catalogue,
@@ -180,6 +181,32 @@ describe('page state in the URL query', () => {
     }
   });
 
+  it.each([
+    ['helix against itself, chords first', 'helix', 'method=segments&segmentLength=6'],
+    ['helix against itself, saleem first, a chord option typed', 'helix', 'tolerance=0.2'],
+    ['helix (saleem) against arc-segments, a chord option typed', 'arc-segments', 'segmentLength=6'],
+    ['helix (saleem) against the circle, tie typed', 'circle', 'tie=advance'],
+  ])('sends the two sides what the core\'s compare() gives them: %s', async (_, other, typed) => {
+    const query = `mode=compare&algorithm=helix&other=${other}&from=20,0,0&to=0,20,0&center=0,0,0&${typed}`;
+    const state = stateFromQuery(query, catalogue)!;
+    const sides = comparedRequests(state, catalogue.algorithms);
+    const traces = await Promise.all(sides.map((side) => trace(side.options)));
+    const shared: Record<string, unknown> = { ...state.options };
+    const c = await compare({ ...shared, algorithms: ['helix', other as 'helix'] });
+    expect(traces.map((t) => t.steps)).toEqual([c.a.steps, c.b.steps]);
+    expect(sides.map((side) => side.distinction ?? null)).toEqual([c.a.comparedValue, c.b.comparedValue]);
+    for (const t of traces) t.free();
+  });
+
+  it('leaves a chord option neither side takes to the core, which refuses it by name, as compare() does', async () => {
+    const state = stateFromQuery('mode=compare&algorithm=helix&other=circle&from=20,0,0&to=0,20,0&center=0,0,0&segmentLength=6', catalogue)!;
+    const [helixSide] = comparedRequests(state, catalogue.algorithms);
+    expect(helixSide.options.segmentLength).toBe(6);
+    expect((await rejection(trace(helixSide.options))).message).toBe('segmentLength: applies to method segments only');
+    const shared: Record<string, unknown> = { ...state.options };
+    expect((await rejection(compare({ ...shared, algorithms: ['helix', 'circle'] }))).message).toBe('segmentLength: helix: applies to method segments only');
+  });
+
   it('runs the helix against itself by the method the first side does not run', async () => {
     const state = stateFromQuery('mode=compare&algorithm=helix&other=helix&method=segments&segmentLength=2', catalogue)!;
     const helix = catalogue.algorithms.find((a) => a.id === 'helix')!;
@@ -201,9 +228,11 @@ describe('page state in the URL query', () => {
     expect(saleem!.segments.length).toBe(1);
     chords!.free();
     saleem!.free();
-    // Out of compare mode, the chord options left over from method segments are left out with saleem too.
-    expect(traceOptions({ ...state, mode: 'trace', options: { ...state.options, method: 'saleem' } }, helix).segmentLength).toBeUndefined();
-    expect(traceOptions({ ...state, mode: 'trace' }, helix).segmentLength).toBe(2);
+    // Out of compare mode a chord option typed beside method saleem is sent
+    // as typed, and the core's refusal names it (shown on its field).
+    const alone = traceOptions({ ...state, mode: 'trace', options: { ...state.options, method: 'saleem' } }, helix);
+    expect(alone.segmentLength).toBe(2);
+    expect((await rejection(trace(alone))).message).toBe('segmentLength: applies to method segments only');
     // Left at its default, the first runs saleem and the second segments.
     expect(comparedValues(stateFromQuery('mode=compare&algorithm=helix', catalogue)!, catalogue.algorithms)?.values).toEqual(['saleem', 'segments']);
     // Out of compare mode, or against another algorithm, nothing tells the sides apart.

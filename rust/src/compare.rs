@@ -283,7 +283,11 @@ fn pick_algorithms(value: Option<Value>) -> Result<[&'static AlgorithmInfo; 2], 
 
 /// A comparison as the JS API asks for it: the two algorithms, a then b,
 /// and the shared options by name. Each option goes to every one of the two
-/// that declares it; one neither declares is rejected, naming it.
+/// that declares it, but for one that applies only with another option's
+/// value (the helix's chord options, with method segments), which goes to
+/// the other side alone where the other side takes it; one neither
+/// declares is rejected, naming it. The helix against itself runs the
+/// method given (else saleem) on a and the other on b.
 #[derive(Serialize, Tsify)]
 pub struct CompareOptions {
     /// The two catalogue ids (for example ["circle", "arc-segments"]).
@@ -297,7 +301,12 @@ pub struct CompareOptions {
 /// Runs `{"algorithms": [a, b], ...options}`: each option goes to each of
 /// the two algorithms that declares it (`segmentLength` only to
 /// arc-segments when compared with circle, `from` and `to` to both), and
-/// an option neither declares is an error naming it. An algorithm's own
+/// an option neither declares is an error naming it. An algorithm compared
+/// with itself by an option ([`AlgorithmInfo::compared_by`]) runs it as
+/// given on a and another value on b ([`compared_values`]); an option a side
+/// declares but where it does not apply there
+/// ([`OptionSpec::applies_with`]) is left to the other side where that one
+/// takes it (the page's compare mode does the same). An algorithm's own
 /// error keeps its field and says which algorithm it came from.
 pub fn compare_request(text: &str) -> Result<Comparison, Error> {
     let mut options = Request::options_from_json(text)?;
@@ -327,7 +336,10 @@ pub fn compare_request(text: &str) -> Result<Comparison, Error> {
         ..e
     };
     let compared = compared_values(pair, &options).map_err(|e| tagged(pair[0], e))?;
-    let run = |info: &AlgorithmInfo, side: usize| {
+    // Each side's request: the options it declares, with its value of the
+    // compared option where the algorithm is compared with itself.
+    let mut requests = [0, 1].map(|side| {
+        let info = pair[side];
         let mut own: serde_json::Map<String, Value> = options
             .iter()
             .filter(|(name, _)| takes(info, name))
@@ -336,22 +348,38 @@ pub fn compare_request(text: &str) -> Result<Comparison, Error> {
         if let Some((spec, values)) = compared {
             own.insert(spec.name.to_string(), Value::from(values[side]));
         }
-        let mut request = Request::new(info.id, own);
-        if compared.is_some() {
-            // One set of options serves both sides: one that applies only
-            // with another value of the compared option (the chord options
-            // beside Saleem's method) is the other side's alone.
-            let others: Vec<&str> = request
-                .inapplicable(info.options)
-                .map_err(|e| tagged(info, e))?
-                .iter()
-                .map(|o| o.name)
-                .collect();
-            request = request.without(&others);
-        }
-        (info.trace)(&request, algorithms::find).map_err(|e| tagged(info, e))
+        Request::new(info.id, own)
+    });
+    // One set of options serves both sides: one a side declares but where
+    // it does not apply (the chord options beside the helix's method
+    // saleem, OptionSpec::applies_with) is the other side's alone when the
+    // other side takes it, and is left to be refused, naming it, when
+    // neither does.
+    let mut off: [Vec<&'static str>; 2] = [Vec::new(), Vec::new()];
+    for side in 0..2 {
+        off[side] = requests[side]
+            .inapplicable(pair[side].options)
+            .map_err(|e| tagged(pair[side], e))?
+            .iter()
+            .map(|o| o.name)
+            .collect();
+    }
+    let takes_it = |side: usize, name: &str| {
+        requests[side].options().contains_key(name) && !off[side].contains(&name)
     };
-    let mut comparison = compare(&run(pair[0], 0)?, &run(pair[1], 1)?)?;
+    let dropped = [0, 1].map(|side| {
+        off[side]
+            .iter()
+            .copied()
+            .filter(|name| takes_it(1 - side, name))
+            .collect::<Vec<_>>()
+    });
+    requests = [0, 1].map(|side| requests[side].without(&dropped[side]));
+    let run = |side: usize| {
+        let info = pair[side];
+        (info.trace)(&requests[side], algorithms::find).map_err(|e| tagged(info, e))
+    };
+    let mut comparison = compare(&run(0)?, &run(1)?)?;
     if let Some((_, [a, b])) = compared {
         comparison.a.compared_value = Some(a.to_string());
         comparison.b.compared_value = Some(b.to_string());
@@ -560,6 +588,13 @@ mod request_tests {
         Value::Object(map)
     }
 
+    /// Steps of arc-segments traced alone with `options` (JSON members).
+    fn arc_segments_steps(options: &str) -> u64 {
+        crate::algorithms::trace_json(&format!(r#"{{"algorithm":"arc-segments",{options}}}"#))
+            .unwrap()
+            .steps()
+    }
+
     #[test]
     fn the_helix_compared_with_itself_runs_its_other_method_on_b() {
         let helix = r#""from":[30,0,0],"to":[0,30,20],"center":[0,0,0]"#;
@@ -591,6 +626,19 @@ mod request_tests {
             (Some("saleem"), Some("segments"))
         );
         assert_eq!(c.b.steps, alone(r#","method":"segments""#).steps());
+        // The helix against another arc algorithm: the chord option given
+        // goes to the side it applies to, arc-segments; with the circle,
+        // which does not take it, the helix refuses it, naming it.
+        let quarter = r#""from":[20,0,0],"to":[0,20,0],"center":[0,0,0],"segmentLength":8"#;
+        let c = run(&format!(
+            r#"{{"algorithms":["helix","arc-segments"],{quarter}}}"#
+        ));
+        assert_eq!(c.b.steps, arc_segments_steps(quarter));
+        let e = error(&format!(r#"{{"algorithms":["helix","circle"],{quarter}}}"#));
+        assert_eq!(
+            e.to_string(),
+            "segmentLength: helix: applies to method segments only"
+        );
         // Two algorithms, or one not compared by an option: no value.
         let c = run(r#"{"algorithms":["regions","regions"],"from":[0,0,0],"to":[10,7,6]}"#);
         assert_eq!((c.a.compared_value, c.b.compared_value), (None, None));

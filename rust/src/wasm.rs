@@ -245,8 +245,10 @@ const POINTS_CHUNK_VALUES: usize = COPY_CHUNK_BYTES / std::mem::size_of::<i32>()
 
 /// Refuses `out` unless it holds exactly `values` values (`what` says what
 /// they are, for the message).
-fn expect_length(length: u32, values: usize, what: impl FnOnce() -> String) -> Result<(), JsValue> {
-    if length as usize != values {
+/// Counted in u64: in wasm a usize is 32 bits, and points times axes of a
+/// trace near the longest can pass 2^32.
+fn expect_length(length: u32, values: u64, what: impl FnOnce() -> String) -> Result<(), JsValue> {
+    if u64::from(length) != values {
         let message = format!("{}; got {length}", what());
         return Err(to_js_error(&Error::field("out", message)));
     }
@@ -387,7 +389,7 @@ impl TraceHandle {
         let every = every as u64;
         let dims = self.0.dims();
         let count = (to - from).div_ceil(every);
-        let values = count as usize * dims;
+        let values = count * dims as u64;
         expect_length(out.length(), values, || {
             format!("an Int32Array of {values} values ({count} points of {dims})")
         })?;
@@ -429,7 +431,7 @@ impl TraceHandle {
     /// side: one pass over the range, copied out a chunk at a time.
     pub fn deviation(&self, from: u32, to: u32, out: &js_sys::Float64Array) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
-        let values = (to - from) as usize;
+        let values = to - from;
         expect_length(out.length(), values, || {
             format!("a Float64Array of {values} values (one a point)")
         })?;
@@ -452,7 +454,7 @@ impl TraceHandle {
     ) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
         let dims = self.0.dims();
-        let values = (to - from) as usize * dims;
+        let values = (to - from) * dims as u64;
         expect_length(out.length(), values, || {
             format!(
                 "a Float64Array of {values} values ({} points of {dims})",

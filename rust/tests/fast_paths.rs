@@ -2,7 +2,8 @@
 //! to the bit: points decoded per number of axes (`points::decode`, as
 //! i64, as i32 and a chunk at a time) against applying every step to a
 //! point; deviations, per-axis errors and metrics measured incrementally
-//! along line segments (`LineMeter::walk`) against measuring every point on
+//! along line segments (`LineMeter::walk`), and deviations and per-axis
+//! errors along arcs (`ArcMeter::walk`), against measuring every point on
 //! its own; the bounds (`points::bounds`) against the replayed points'
 //! extremes. On random lines of every line algorithm (near +-2^30 too),
 //! paths of several line segments, arcs, chorded arcs and helices.

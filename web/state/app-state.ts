@@ -321,28 +321,29 @@ export function tracedAlgorithms(state: AppState, catalogue: readonly AlgorithmI
 /**
  * The request the core receives for `info` in this state: the options it
  * declares, as typed and unchecked (the core validates each and names the
- * one at fault), with `fixed` over them, plus the page's own. In compare
- * mode each algorithm takes the shared options it declares, as the core's
- * compare() does (see comparedRequests). An option the core declares as
- * applying only with another's value (OptionSpec.appliesWith: the helix's
- * chord options, with method segments) is left out where that option has
- * another, so that one set of fields serves both sides of the helix against
- * itself: its chords take the chord options typed, its Saleem side none.
+ * one at fault), with `fixed` over them, plus the page's own. An option
+ * typed where it does not apply (a chord option beside the helix's method
+ * saleem) is sent, and the core's refusal names it on its field. In compare
+ * mode see comparedRequests.
  */
 export function traceOptions(state: AppState, info: AlgorithmInfo, fixed: Record<string, OptionValue> = {}): TraceOptions {
   const given: Record<string, OptionValue | undefined> = { ...state.options, ...fixed };
   const options: Record<string, unknown> = { algorithm: info.id };
-  for (const spec of info.options) {
-    if (spec.name in given && applies(spec, info, given)) options[spec.name] = given[spec.name];
-  }
+  for (const spec of info.options) if (spec.name in given) options[spec.name] = given[spec.name];
   return { ...options, ...PAGE_OPTIONS } as TraceOptions;
 }
 
-/** Whether `spec` applies with the options `given`: its appliesWith option at that value, given or by its default. */
-function applies(spec: OptionSpec, info: AlgorithmInfo, given: Record<string, OptionValue | undefined>): boolean {
-  if (spec.appliesWith === null) return true;
-  const { option, value } = spec.appliesWith;
-  return (given[option] ?? info.options.find((o) => o.name === option)?.default) === value;
+/**
+ * The options of `info` in `options` given where they do not apply: with
+ * the option their appliesWith names at another value, given or by its
+ * default (as the core's Request::inapplicable reads them).
+ */
+function inapplicable(info: AlgorithmInfo, options: TraceOptions): string[] {
+  const given = options as Record<string, unknown>;
+  const valueOf = (name: string) => given[name] ?? info.options.find((o) => o.name === name)?.default;
+  return info.options
+    .filter(({ name, appliesWith }) => appliesWith !== null && given[name] !== undefined && valueOf(appliesWith.option) !== appliesWith.value)
+    .map((spec) => spec.name);
 }
 
 /** One side of a comparison: its request, and the value that tells it from the other side of an algorithm compared with itself. */
@@ -358,10 +359,20 @@ export interface ComparedSide {
  */
 export function comparedRequests(state: AppState, catalogue: readonly AlgorithmInfo[]): [ComparedSide, ComparedSide] {
   const compared = comparedValues(state, catalogue);
-  const [a, b] = tracedAlgorithms(state, catalogue).map((info, i): ComparedSide => {
+  const infos = tracedAlgorithms(state, catalogue);
+  const sides = infos.map((info, i): ComparedSide => {
     const distinction = compared?.values[i];
-    const options = traceOptions(state, info, compared && distinction !== undefined ? { [compared.option]: distinction } : {});
-    return { options, distinction };
+    return { options: traceOptions(state, info, compared ? { [compared.option]: distinction! } : {}), distinction };
   });
-  return [a!, b!];
+  // One set of fields serves both sides: an option a side declares but
+  // where it does not apply (the chord options beside the helix's method
+  // saleem) goes to the other side alone where that one takes it, and is
+  // left to the core's refusal, which names it, where neither does, as the
+  // core's compare() gives options.
+  const off = sides.map((side, i) => inapplicable(infos[i]!, side.options));
+  const takes = (i: number, name: string) => name in sides[i]!.options && !off[i]!.includes(name);
+  off.forEach((names, i) => {
+    for (const name of names) if (takes(1 - i, name)) delete (sides[i]!.options as Record<string, unknown>)[name];
+  });
+  return [sides[0]!, sides[1]!];
 }
