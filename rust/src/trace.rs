@@ -1146,7 +1146,9 @@ impl Trace {
                     // and the rounding keep the order.
                     let n = piece.segment.steps as f64;
                     acc.add_axis_error(&largest.map(|l| l as f64 / n));
-                } else {
+                } else if !piece.walk_arc(|meter, offsets| {
+                    acc.add_point(meter.deviation_at(offsets), &meter.axis_error_at(offsets));
+                }) {
                     piece.for_each_point(|_, p, meter, local, n| {
                         acc.add_point(meter.deviation(p), &meter.axis_error(p, local, n));
                     });
