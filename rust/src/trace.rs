@@ -1428,20 +1428,40 @@ impl Trace {
         // One row's share of point k: its coordinates and ideal position
         // when it starts a bucket (the error is computed only then), its
         // deviation always.
-        let mut record =
-            |k: u64, p: &Point, deviation: f64, error: &dyn Fn() -> [f64; MAX_AXES]| {
-                let r = ((k - from) / bucket) as usize;
-                if (k - from) % bucket == 0 {
-                    head[r] = k as f64;
-                    let error = error();
-                    for a in 0..dims {
-                        head[(1 + a) * rows + r] = p.get(a) as f64;
-                        head[(1 + dims + a) * rows + r] = p.get(a) as f64 - error[a];
-                    }
+        // The points come in order, one after another: the row and the
+        // points left in its bucket are counted, not divided out of k, and
+        // the bucket's extremes are kept in locals and stored when it ends,
+        // where a store and a load of largest[r] and smallest[r] a point
+        // chained every point to the one before.
+        let (mut r, mut left) = (0usize, 0u64);
+        let (mut high, mut low) = (f64::NEG_INFINITY, f64::INFINITY);
+        let mut measured = false;
+        // Point k and its axis error are asked for only where it starts a
+        // bucket.
+        let mut record = |k: u64,
+                          point: &dyn Fn() -> Point,
+                          deviation: f64,
+                          error: &dyn Fn() -> [f64; MAX_AXES]| {
+            if left == 0 {
+                if k > from {
+                    (largest[r], smallest[r]) = (high, low);
                 }
-                largest[r] = largest[r].max(deviation);
-                smallest[r] = smallest[r].min(deviation);
-            };
+                (high, low) = (f64::NEG_INFINITY, f64::INFINITY);
+                r = ((k - from) / bucket) as usize;
+                left = bucket;
+                debug_assert_eq!((k - from) % bucket, 0, "point {k} starts a bucket");
+                head[r] = k as f64;
+                let (p, error) = (point(), error());
+                for a in 0..dims {
+                    head[(1 + a) * rows + r] = p.get(a) as f64;
+                    head[(1 + dims + a) * rows + r] = p.get(a) as f64 - error[a];
+                }
+            }
+            left -= 1;
+            measured = true;
+            high = high.max(deviation);
+            low = low.min(deviation);
+        };
         self.for_each_piece(from, to, |piece| {
             // A line is walked incrementally, as the metrics are; its points
             // decoded alongside, since the walk hands out numerators alone.
@@ -1452,19 +1472,35 @@ impl Trace {
                 if i > 0 {
                     p.apply(piece.steps[i - 1]);
                 }
-                record(piece.first + i as u64, &p, deviation, &|| {
+                record(piece.first + i as u64, &|| p, deviation, &|| {
                     numerator.map(|v| v as f64 / n)
                 });
                 i += 1;
             });
+            // An arc is walked too, a bucket's first point put together from
+            // its offsets from the center.
+            let walked = walked
+                || piece.walk_arc(|meter, offsets| {
+                    record(
+                        piece.first + i as u64,
+                        &|| meter.point_at(offsets),
+                        meter.deviation_at(offsets),
+                        &|| meter.axis_error_at(offsets),
+                    );
+                    i += 1;
+                });
             if !walked {
                 piece.for_each_point(|k, p, meter, local, steps| {
-                    record(k, p, meter.deviation(p), &|| {
+                    record(k, &|| *p, meter.deviation(p), &|| {
                         meter.axis_error(p, local, steps)
                     });
                 });
             }
         });
+        if measured {
+            // The last bucket, which no later point ends.
+            (largest[r], smallest[r]) = (high, low);
+        }
         out
     }
 

@@ -232,16 +232,37 @@ fn a_program_lists_both_pictures_and_each_step_has_its_own_algorithm_s() {
 
 #[test]
 fn chart_rows_are_the_points_deviation_and_axis_error_of_their_buckets() {
-    // Chords of a circle: many segments, each measured against the arc
-    // point by point; and a line, walked incrementally.
+    // Chords of a circle: many segments, each measured against the arc,
+    // which is walked; a line, walked incrementally; a whole circle.
     let chords = trace(
         r#"{"algorithm":"arc-segments","from":[40,0,0],"to":[-40,0,0],"center":[0,0,0],"segmentLength":7}"#,
     );
     assert!(chords.segment_count() > 10);
     let line = trace(r#"{"algorithm":"bresenham3d","from":[-3,5,0],"to":[40,-17,29]}"#);
-    for t in [&chords, &line] {
+    // A circle, walked along its arc (ArcMeter::walk), in the zx plane.
+    let circle = trace(
+        r#"{"algorithm":"circle","from":[30,2,-5],"to":[30,2,-5],"center":[-7,2,-5],"plane":"zx"}"#,
+    );
+    for t in [&chords, &line, &circle] {
         chart_rows_hold(t);
     }
+}
+
+#[test]
+fn chart_rows_of_a_program_without_a_move_have_no_deviation() {
+    // Nothing to measure against: the point, and NaN where the deviations
+    // and the ideal position would be.
+    let program = voxpath::gcode::program::run(
+        "G21 G90\nG4 P0.5\n",
+        voxpath::gcode::program::Settings::from_json(r#"{"stepsPerMm":80}"#).unwrap(),
+    );
+    let t = &program.trace;
+    assert_eq!((t.steps(), t.segment_count()), (0, 0));
+    let rows = t.chart_rows(0, 1, 7);
+    let dims = t.dims();
+    assert_eq!(rows.len(), 3 + 2 * dims);
+    assert_eq!(rows[0], 0.0);
+    assert!(rows[1 + dims..].iter().all(|v| v.is_nan()), "{rows:?}");
 }
 
 fn chart_rows_hold(t: &Trace) {

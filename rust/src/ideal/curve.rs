@@ -274,6 +274,16 @@ impl ArcMeter<'_> {
         self.axis_error_at(self.arc.relative(p))
     }
 
+    /// The point at offsets (u, v, n) from the center: what
+    /// [`ArcPath::relative`] takes apart, put together again.
+    pub fn point_at(&self, offsets: [i64; 3]) -> Point {
+        let mut p = self.arc.center;
+        for (axis, offset) in self.arc.plane.axes().into_iter().zip(offsets) {
+            p.coords_mut()[axis] += offset;
+        }
+        p
+    }
+
     /// [`Self::axis_error`] of the point at offsets (u, v, n) from the center.
     #[inline]
     pub fn axis_error_at(&self, [u, v, n]: [i64; 3]) -> [f64; MAX_AXES] {
