@@ -245,6 +245,7 @@ const POINTS_CHUNK_VALUES: usize = COPY_CHUNK_BYTES / std::mem::size_of::<i32>()
 
 /// Refuses `out` unless it holds exactly `values` values (`what` says what
 /// they are, for the message).
+///
 /// Counted in u64: in wasm a usize is 32 bits, and points times axes of a
 /// trace near the longest can pass 2^32.
 fn expect_length(length: u32, values: u64, what: impl FnOnce() -> String) -> Result<(), JsValue> {
@@ -266,6 +267,22 @@ struct Float64Out<'a> {
 }
 
 impl<'a> Float64Out<'a> {
+    /// Writes into `out`, which must hold exactly `values` values (`what`
+    /// words them for the message), the values `produce` pushes, the last
+    /// chunk copied out after it.
+    fn write(
+        out: &'a js_sys::Float64Array,
+        values: u64,
+        what: impl FnOnce() -> String,
+        produce: impl FnOnce(&mut Self),
+    ) -> Result<(), JsValue> {
+        expect_length(out.length(), values, what)?;
+        let mut sink = Self::new(out);
+        produce(&mut sink);
+        sink.flush();
+        Ok(())
+    }
+
     fn new(out: &'a js_sys::Float64Array) -> Self {
         let chunk = (out.length() as usize).clamp(1, COPY_CHUNK_BYTES / std::mem::size_of::<f64>());
         Float64Out {
@@ -432,14 +449,15 @@ impl TraceHandle {
     pub fn deviation(&self, from: u32, to: u32, out: &js_sys::Float64Array) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
         let values = to - from;
-        expect_length(out.length(), values, || {
-            format!("a Float64Array of {values} values (one a point)")
-        })?;
-        let mut sink = Float64Out::new(out);
-        self.0
-            .for_each_deviation(from, to, |deviation| sink.push(deviation));
-        sink.flush();
-        Ok(())
+        Float64Out::write(
+            out,
+            values,
+            || format!("a Float64Array of {values} values (one a point)"),
+            |sink| {
+                self.0
+                    .for_each_deviation(from, to, |deviation| sink.push(deviation))
+            },
+        )
     }
 
     /// Writes the per-axis error (Wang eq. 11) of points `from..to` into
@@ -455,17 +473,20 @@ impl TraceHandle {
         let (from, to) = self.point_range(from, to)?;
         let dims = self.0.dims();
         let values = (to - from) * dims as u64;
-        expect_length(out.length(), values, || {
-            format!(
-                "a Float64Array of {values} values ({} points of {dims})",
-                to - from
-            )
-        })?;
-        let mut sink = Float64Out::new(out);
-        self.0
-            .for_each_axis_error(from, to, |error| sink.push(error));
-        sink.flush();
-        Ok(())
+        Float64Out::write(
+            out,
+            values,
+            || {
+                format!(
+                    "a Float64Array of {values} values ({} points of {dims})",
+                    to - from
+                )
+            },
+            |sink| {
+                self.0
+                    .for_each_axis_error(from, to, |error| sink.push(error))
+            },
+        )
     }
 
     /// Packed steps (see `grid::Step`) of step indices `from..to`.
