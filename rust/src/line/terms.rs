@@ -31,43 +31,37 @@ pub struct Term {
     pub step: Step,
 }
 
-/// A jump over k steps of a term's axis at once ([`Term::or_steps_into`]):
-/// from the state after one of its steps (`at`, the index past it, and the
-/// term's value), the state after the k-th step on.
+/// A jump to the next step of a term's axis ([`Term::or_steps_into`]): from
+/// the state after one of its steps (`at`, the index past it, and the
+/// term's value), the state after the next.
 #[derive(Clone, Copy, Debug)]
 struct Jump {
     /// The value at or below which the jump takes short_count + 1 steps.
     long_below: i64,
-    /// Q_k = k·decrement / increment: the fewer steps a jump may take.
+    /// Q = decrement / increment: the fewer steps a jump may take.
     short_count: i64,
-    /// What the value moves by in a jump of Q_k steps (Q_k·increment -
-    /// k·decrement) and in one of Q_k + 1.
+    /// What the value moves by in a jump of Q steps (Q·increment -
+    /// decrement) and in one of Q + 1.
     short_move: i64,
     long_move: i64,
 }
 
 impl Jump {
-    /// The jump over k steps of the axis for a term's increment, decrement
-    /// and steps_above, None where one of its constants would not fit i64.
-    fn of(k: i64, increment: i64, decrement: i64, steps_above: i64) -> Option<Self> {
-        let span = k.checked_mul(decrement)?;
-        let short_count = span / increment;
-        // Q_k·increment <= k·decrement, so this cannot overflow.
-        let short_move = short_count * increment - span;
-        // low - Q_k·increment + k·decrement, low = steps_above + increment - decrement.
-        let long_below = steps_above
-            .checked_add(increment)?
-            .checked_sub(short_move)?
-            .checked_sub(decrement)?;
-        Some(Jump {
-            long_below,
+    /// The jump for a term's increment, decrement and steps_above (each
+    /// below 2^62 in magnitude, as [`Term::advance_mask`] asks).
+    fn new(increment: i64, decrement: i64, steps_above: i64) -> Self {
+        let short_count = decrement / increment;
+        let short_move = short_count * increment - decrement;
+        Jump {
+            // low - Q·increment + decrement, low = steps_above + increment - decrement.
+            long_below: steps_above - (short_count - 1) * increment,
             short_count,
             short_move,
             long_move: short_move + increment,
-        })
+        }
     }
 
-    /// The state k steps of the axis on from (`at`, `value`).
+    /// The state one step of the axis on from (`at`, `value`).
     #[inline(always)]
     fn from(&self, at: i64, value: i64) -> (i64, i64) {
         let long = value <= self.long_below;
@@ -175,42 +169,18 @@ impl Term {
         // The state after a step of the axis: `at`, the index past it, and
         // v. After every step v lies in the window (low, low + increment],
         // low = steps_above + increment - decrement (it stepped at most an
-        // increment above steps_above). k steps of the axis on, it is
-        // v + J·increment - k·decrement, J the steps taken: the one J that
-        // puts it back in the window, Q_k = k·decrement / increment or
-        // Q_k + 1, the latter exactly when v <= low - Q_k·increment +
-        // k·decrement. So `at` moves by one of two counts and v by one of two
-        // constants: a compare and two selects a jump, with no
-        // multiplication on the value's chain (in wasm the helix's linear
-        // axis took 3 ns a step when it had one).
+        // increment above steps_above). A step of the axis on, it is
+        // v + J·increment - decrement, J the steps taken: the one J that
+        // puts it back in the window, Q = decrement / increment or Q + 1,
+        // the latter exactly when v <= low - Q·increment + decrement. So
+        // `at` moves by one of two counts and v by one of two constants: a
+        // compare and two selects a jump, with no multiplication on the
+        // value's chain (in wasm the helix's linear axis took 3 ns a step
+        // when it had one). Tried and not kept: two chains, each jumping two
+        // steps of the axis, one step apart (0.115 -> 0.10 ms natively for
+        // the helix's 100,000 linear steps, nothing measurable in wasm).
         let mut at = first + 1;
-        let one = Jump::of(1, increment, decrement, above).expect("one step's jump fits i64");
-        // Two chains, each jumping two steps of the axis, the second one
-        // step behind the first, so that neither waits on the other's
-        // compare, select and add. Little gained: the helix's linear axis,
-        // 100,000 steps beside a 1,697,057-step arc, went from 0.115 to
-        // 0.10 ms natively and its trace 2.05-2.13 -> 2.00-2.11 ms in wasm;
-        // the OR into each step's code is what is left.
-        if let Some(two) = Jump::of(2, increment, decrement, above) {
-            let (at_b, v_b) = one.from(at, v);
-            if at_b <= steps {
-                out[(at_b - 1) as usize].0 |= bits;
-                let (mut at_a, mut v_a, mut at_b, mut v_b) = (at, v, at_b, v_b);
-                loop {
-                    let (next_a, after_a) = two.from(at_a, v_a);
-                    let (next_b, after_b) = two.from(at_b, v_b);
-                    debug_assert_eq!((next_a, after_a), one.from(at_b, v_b));
-                    if next_b > steps {
-                        break;
-                    }
-                    out[(next_a - 1) as usize].0 |= bits;
-                    out[(next_b - 1) as usize].0 |= bits;
-                    (at_a, v_a, at_b, v_b) = (next_a, after_a, next_b, after_b);
-                }
-                // The later chain's state; the steps left go one at a time.
-                (at, v) = (at_b, v_b);
-            }
-        }
+        let one = Jump::new(increment, decrement, above);
         loop {
             let (next, after) = one.from(at, v);
             debug_assert!(
