@@ -1433,9 +1433,10 @@ impl Trace {
         // the bucket's extremes are kept in locals and stored when it ends,
         // where a store and a load of largest[r] and smallest[r] a point
         // chained every point to the one before.
-        let (mut r, mut left) = (0usize, 0u64);
+        // The bucket being filled (None before the first point) and the
+        // points left in it.
+        let (mut row, mut left) = (None::<usize>, 0u64);
         let (mut high, mut low) = (f64::NEG_INFINITY, f64::INFINITY);
-        let mut measured = false;
         // Point k and its axis error are asked for only where it starts a
         // bucket.
         let mut record = |k: u64,
@@ -1443,11 +1444,12 @@ impl Trace {
                           deviation: f64,
                           error: &dyn Fn() -> [f64; MAX_AXES]| {
             if left == 0 {
-                if k > from {
+                if let Some(r) = row {
                     (largest[r], smallest[r]) = (high, low);
                 }
                 (high, low) = (f64::NEG_INFINITY, f64::INFINITY);
-                r = ((k - from) / bucket) as usize;
+                let r = ((k - from) / bucket) as usize;
+                row = Some(r);
                 left = bucket;
                 debug_assert_eq!((k - from) % bucket, 0, "point {k} starts a bucket");
                 head[r] = k as f64;
@@ -1458,7 +1460,6 @@ impl Trace {
                 }
             }
             left -= 1;
-            measured = true;
             high = high.max(deviation);
             low = low.min(deviation);
         };
@@ -1497,7 +1498,7 @@ impl Trace {
                 });
             }
         });
-        if measured {
+        if let Some(r) = row {
             // The last bucket, which no later point ends.
             (largest[r], smallest[r]) = (high, low);
         }
