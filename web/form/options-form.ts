@@ -120,8 +120,8 @@ export class OptionsForm {
 
   #field(spec: OptionSpec, axes: number, value: OptionValue | undefined): HTMLElement {
     const id = `${this.#idPrefix}-${spec.name}`;
-    // An option that applies only with another's value says so: the page
-    // leaves it out of a request where that option has another (traceOptions).
+    // An option that applies only with another's value says so (the core
+    // refuses it with another; compare mode gives it to the side it applies to).
     const condition = spec.appliesWith ? ` With ${spec.appliesWith.option} ${spec.appliesWith.value} only.` : '';
     const hint = element('p', { className: 'hint', id: `${id}-hint`, textContent: spec.doc + condition });
     const error = element('p', { className: 'field-error', id: `${id}-error` });

@@ -321,15 +321,14 @@ export function tracedAlgorithms(state: AppState, catalogue: readonly AlgorithmI
 /**
  * The request the core receives for `info` in this state: the options it
  * declares, as typed and unchecked (the core validates each and names the
- * one at fault), with `fixed` over them, plus the page's own. An option
+ * one at fault), plus the page's own. An option
  * typed where it does not apply (a chord option beside the helix's method
  * saleem) is sent, and the core's refusal names it on its field. In compare
  * mode see comparedRequests.
  */
-export function traceOptions(state: AppState, info: AlgorithmInfo, fixed: Record<string, OptionValue> = {}): TraceOptions {
-  const given: Record<string, OptionValue | undefined> = { ...state.options, ...fixed };
+export function traceOptions(state: AppState, info: AlgorithmInfo): TraceOptions {
   const options: Record<string, unknown> = { algorithm: info.id };
-  for (const spec of info.options) if (spec.name in given) options[spec.name] = given[spec.name];
+  for (const spec of info.options) if (spec.name in state.options) options[spec.name] = state.options[spec.name];
   return { ...options, ...PAGE_OPTIONS } as TraceOptions;
 }
 
@@ -360,19 +359,21 @@ export interface ComparedSide {
 export function comparedRequests(state: AppState, catalogue: readonly AlgorithmInfo[]): [ComparedSide, ComparedSide] {
   const compared = comparedValues(state, catalogue);
   const infos = tracedAlgorithms(state, catalogue);
-  const sides = infos.map((info, i): ComparedSide => {
-    const distinction = compared?.values[i];
-    return { options: traceOptions(state, info, compared ? { [compared.option]: distinction! } : {}), distinction };
+  const requests = infos.map((info, i) => {
+    const options = traceOptions(state, info);
+    return compared ? { ...options, [compared.option]: compared.values[i] } : options;
   });
   // One set of fields serves both sides: an option a side declares but
   // where it does not apply (the chord options beside the helix's method
   // saleem) goes to the other side alone where that one takes it, and is
   // left to the core's refusal, which names it, where neither does, as the
   // core's compare() gives options.
-  const off = sides.map((side, i) => inapplicable(infos[i]!, side.options));
-  const takes = (i: number, name: string) => name in sides[i]!.options && !off[i]!.includes(name);
-  off.forEach((names, i) => {
-    for (const name of names) if (takes(1 - i, name)) delete (sides[i]!.options as Record<string, unknown>)[name];
+  const off = requests.map((options, i) => inapplicable(infos[i]!, options));
+  const takes = (i: number, name: string) => name in requests[i]! && !off[i]!.includes(name);
+  const [a, b] = requests.map((options, i): ComparedSide => {
+    const dropped = off[i]!.filter((name) => takes(1 - i, name));
+    const kept = Object.entries(options).filter(([name]) => !dropped.includes(name));
+    return { options: Object.fromEntries(kept) as TraceOptions, distinction: compared?.values[i] };
   });
-  return [sides[0]!, sides[1]!];
+  return [a!, b!];
 }
