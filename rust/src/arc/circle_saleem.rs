@@ -765,10 +765,9 @@ impl SaleemCircle {
             return 0;
         };
         let mut steps = run.known;
-        let past_ray = |steps: i64| cross(self.end, run.point_at(steps)) >= 0;
-        if steps > 0 && cross(self.end, self.pos) < 0 && past_ray(steps) {
+        if let Some(before_ray) = self.steps_before_ray(&run, steps) {
             if self.crossings_left == 1 {
-                steps = first_true(1, steps, past_ray) - 1;
+                steps = before_ray;
             } else {
                 self.crossings_left -= 1;
             }
@@ -873,11 +872,8 @@ impl SaleemCircle {
         };
         debug_assert_eq!(k, K);
         let mut steps = run.known.min(out.len() as i64);
-        // As in leap: the stretch passes the ray at most once, exactly when
-        // end × point goes from negative to >= 0 over it.
-        let past_ray = |steps: i64| cross(self.end, run.point_at(steps)) >= 0;
-        if cross(self.end, self.pos) < 0 && past_ray(steps) {
-            steps = first_true(1, steps, past_ray) - 1;
+        if let Some(before_ray) = self.steps_before_ray(&run, steps) {
+            steps = before_ray;
         }
         let lane_steps = steps as usize / LANES;
         if lane_steps < LEAST_LANE_STEPS {
@@ -909,6 +905,17 @@ impl SaleemCircle {
             *n -= taken as u64;
         }
         taken
+    }
+
+    /// Where the first `steps` steps of `run` from the point reach the ray
+    /// through the end: the steps before the first that does, or None where
+    /// none does. The stretch stays in one octant, so it passes the ray at
+    /// most once, exactly when end × point goes from negative to >= 0 over
+    /// it.
+    fn steps_before_ray(&self, run: &NearestRun, steps: i64) -> Option<i64> {
+        let past_ray = |steps: i64| cross(self.end, run.point_at(steps)) >= 0;
+        (steps > 0 && cross(self.end, self.pos) < 0 && past_ray(steps))
+            .then(|| first_true(1, steps, past_ray) - 1)
     }
 
     /// Whether a step of octant `k` may reach the ray through the end (see
