@@ -1147,7 +1147,8 @@ impl Trace {
                     let n = piece.segment.steps as f64;
                     acc.add_axis_error(&largest.map(|l| l as f64 / n));
                 } else if !piece.walk_arc(|meter, offsets| {
-                    acc.add_point(meter.deviation_at(offsets), &meter.axis_error_at(offsets));
+                    let (deviation, error) = meter.measure_at(offsets);
+                    acc.add_point(deviation, &error);
                 }) {
                     piece.for_each_point(|_, p, meter, local, n| {
                         acc.add_point(meter.deviation(p), &meter.axis_error(p, local, n));

@@ -219,18 +219,22 @@ impl ArcMeter<'_> {
         }
     }
 
-    /// ρ - r from ρ² - r² and ρ²: divided by ρ + r only at the end, so the
-    /// result keeps full f64 precision where sqrt(u² + v²) - r would cancel
-    /// away every digit at r = 2^20 far from the origin.
-    fn radial_error_of(&self, (excess, rho_sq): (f64, f64)) -> f64 {
-        excess / (rho_sq.sqrt() + self.radius)
+    /// ρ, and ρ - r from ρ² - r² and ρ², of the point at in-plane offsets
+    /// `u`, `v`: divided by ρ + r only at the end, so ρ - r keeps full f64
+    /// precision where sqrt(u² + v²) - r would cancel away every digit at
+    /// r = 2^20 far from the origin.
+    #[inline]
+    fn rho_and_radial_error(&self, u: i64, v: i64) -> (f64, f64) {
+        let (excess, rho_sq) = self.excess_and_rho_sq(u, v);
+        let rho = rho_sq.sqrt();
+        (rho, excess / (rho + self.radius))
     }
 
     /// Signed radial error ρ - r of `p` (> 0 outside), ρ = distance from the
     /// center axis.
     pub fn radial_error(&self, p: &Point) -> f64 {
         let [u, v, _] = self.arc.relative(p);
-        self.radial_error_of(self.excess_and_rho_sq(u, v))
+        self.rho_and_radial_error(u, v).1
     }
 
     /// Distance from `p` to the circle: radial error and height off the plane.
@@ -241,7 +245,13 @@ impl ArcMeter<'_> {
     /// [`Self::deviation`] of the point at offsets (u, v, n) from the center.
     #[inline]
     pub fn deviation_at(&self, [u, v, n]: [i64; 3]) -> f64 {
-        let radial = self.radial_error_of(self.excess_and_rho_sq(u, v));
+        Self::deviation_of(self.rho_and_radial_error(u, v).1, n)
+    }
+
+    /// The distance of a point ρ - r off the circle radially and n off its
+    /// plane.
+    #[inline]
+    fn deviation_of(radial: f64, n: i64) -> f64 {
         // hypot(x, 0) is |x| exactly; hypot itself is a library call, and
         // every point of an arc in its plane has n = 0.
         if n == 0 {
@@ -249,6 +259,18 @@ impl ArcMeter<'_> {
         } else {
             radial.hypot(n as f64)
         }
+    }
+
+    /// [`Self::deviation_at`] and [`Self::axis_error_at`] at once, ρ and
+    /// ρ - r found once for both (the metrics want both of every point).
+    #[inline]
+    pub fn measure_at(&self, offsets: [i64; 3]) -> (f64, [f64; MAX_AXES]) {
+        let [u, v, n] = offsets;
+        let (rho, radial) = self.rho_and_radial_error(u, v);
+        (
+            Self::deviation_of(radial, n),
+            self.axis_error_of(offsets, rho, radial),
+        )
     }
 
     /// The offsets (u, v, n) from the center, in the plane's frame, of
@@ -286,9 +308,14 @@ impl ArcMeter<'_> {
 
     /// [`Self::axis_error`] of the point at offsets (u, v, n) from the center.
     #[inline]
-    pub fn axis_error_at(&self, [u, v, n]: [i64; 3]) -> [f64; MAX_AXES] {
-        let squares = self.excess_and_rho_sq(u, v);
-        let rho = squares.1.sqrt();
+    pub fn axis_error_at(&self, offsets: [i64; 3]) -> [f64; MAX_AXES] {
+        let (rho, radial) = self.rho_and_radial_error(offsets[0], offsets[1]);
+        self.axis_error_of(offsets, rho, radial)
+    }
+
+    /// [`Self::axis_error_at`] given the point's ρ and ρ - r.
+    #[inline]
+    fn axis_error_of(&self, [u, v, n]: [i64; 3], rho: f64, radial: f64) -> [f64; MAX_AXES] {
         let [au, av, an] = self.arc.plane.axes();
         let mut phi = [0.0; MAX_AXES];
         if rho == 0.0 {
@@ -296,7 +323,7 @@ impl ArcMeter<'_> {
             phi[au] = -self.radius * self.arc.start_rad.cos();
             phi[av] = -self.radius * self.arc.start_rad.sin();
         } else {
-            let scale = self.radial_error_of(squares) / rho;
+            let scale = radial / rho;
             phi[au] = u as f64 * scale;
             phi[av] = v as f64 * scale;
         }
