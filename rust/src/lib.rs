@@ -24,6 +24,7 @@ pub mod gcode;
 pub mod grid;
 pub mod huge_pages;
 pub mod ideal;
+mod lanes;
 pub mod line;
 pub mod machine;
 pub mod memory;

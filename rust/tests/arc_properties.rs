@@ -659,9 +659,14 @@ fn the_recording_loops_stay_exact_on_the_largest_circles() {
     // r about 2^30 - 3 around the origin, the largest radius ArcSpec takes
     // there: a short arc (about 3000 steps) from each of 16 angles, so every
     // octant's loop runs with coordinates near 2^30, in each plane and
-    // direction. The debug build checks every addition for overflow.
-    let r = (COORD_LIMIT - 3) as f64;
-    for k in 0..16 {
+    // direction. The debug build checks every addition for overflow. Then
+    // the same about r = 2^25, the largest radius whose pieces are stepped
+    // in i32 lanes (SaleemCircle::vector_fill), on either side of it.
+    let radii = [COORD_LIMIT - 3, (1 << 25) - 2, 1 << 25, (1 << 25) + 2];
+    for (r, k) in radii
+        .iter()
+        .flat_map(|&r| (0..16).map(move |k| (r as f64, k)))
+    {
         let start = 0.1 + k as f64 * TAU / 16.0;
         let sweep = 3000.0 / r;
         let at = |t: f64| [(r * t.cos()).round() as i64, (r * t.sin()).round() as i64];

@@ -31,6 +31,7 @@ use crate::grid::{
     within_i64_product_bound,
 };
 use crate::ideal::IdealPath;
+use crate::lanes::{Codes8, Quad};
 use crate::line::step_target;
 use crate::request::{FROM, MAX_STEPS, MAX_STEPS_LIMIT, Request, TO};
 use crate::trace::{
@@ -375,11 +376,21 @@ enum Phase {
 }
 
 /// Pieces of an octant's known stretch that [`SaleemCircle::laned_fill`]
-/// steps side by side. Two: the circle of r = 300,000 took 1.8 ms natively
-/// with two, 2.4 ms with four (LLVM put four in 128-bit vectors, whose
-/// 64-bit compares x86-64's baseline lacks), and in wasm 2.0 to 2.2 ms with
-/// two, four or eight.
+/// steps side by side in i64, for circles past [`LARGEST_VECTOR_RADIUS_SQ`].
+/// Two: scalar pieces, the circle of r = 300,000 took 1.8 ms natively with
+/// two, 2.4 ms with four (LLVM put four in 128-bit vectors, whose 64-bit
+/// compares x86-64's baseline lacks), and in wasm 2.0 to 2.2 ms with two,
+/// four or eight.
 const LANES: usize = 2;
+/// Pieces of an octant's known stretch that [`SaleemCircle::vector_fill`]
+/// steps side by side, in two vectors of four i32 lanes, for circles of
+/// r <= 2^25 ([`LARGEST_VECTOR_RADIUS_SQ`]). The circle of r = 300,000
+/// then took 0.57 to 0.66 ms natively to trace (1.70 to 1.79 with [`LANES`]
+/// scalar pieces), and in Node 1.04 ms (2.05).
+const VECTOR_PIECES: usize = 8;
+/// The largest r² whose recording loop's values fit i32 lanes (see
+/// [`SaleemCircle::vector_fill`]).
+const LARGEST_VECTOR_RADIUS_SQ: i64 = 1 << 50;
 /// Fewest steps a piece takes: shorter stretches go step by step, where
 /// finding the pieces' starts (a square root each) would cost more.
 const LEAST_LANE_STEPS: usize = 16;
@@ -516,7 +527,7 @@ impl SaleemCircle {
     /// a lap around the center is at least 2π (r - 1) long, and one step
     /// moves at most sqrt(2): more than 4 (r - 1) steps per full turn.
     pub fn steps_at_least(&self) -> u64 {
-        let whole_radius = (self.radius_sq as u64).isqrt();
+        let whole_radius = floor_sqrt(self.radius_sq as u64);
         let full_turns = self.crossings_left - 1;
         full_turns.saturating_mul(4 * whole_radius.saturating_sub(1))
     }
@@ -530,7 +541,7 @@ impl SaleemCircle {
     /// correction steps are at most the Chebyshev distance from a circle
     /// point to the end.
     pub fn steps_at_most(&self) -> u64 {
-        let box_half = (self.radius_sq as u64).isqrt() + 2;
+        let box_half = floor_sqrt(self.radius_sq as u64) + 2;
         let turns = self.crossings_left.saturating_add(1);
         let correction = box_half + self.end[0].unsigned_abs().max(self.end[1].unsigned_abs());
         turns
@@ -802,7 +813,7 @@ impl SaleemCircle {
                 return None;
             }
             // nearest_y(x) - x falls as x grows; past r it is -x.
-            let beyond = (self.radius_sq as u64).isqrt() as i64 + 2;
+            let beyond = floor_sqrt(self.radius_sq as u64) as i64 + 2;
             first_true(x0 + 1, beyond, near_diagonal) - x0
         } else {
             x0
@@ -847,12 +858,13 @@ impl SaleemCircle {
     }
 
     /// The steps of octant `K` that the closed form knows, as many as fit
-    /// in `out` (a multiple of [`LANES`]) and end before the step that
+    /// in `out` (a multiple of the pieces) and end before the step that
     /// reaches the ray through the end (that step, once a lap, is left to
     /// [`Self::octant_run`], which counts the laps), or none where the path
     /// is not known there or the stretch is short.
     ///
-    /// The stretch is cut in LANES pieces of equal length, each started
+    /// The stretch is cut in pieces of equal length ([`VECTOR_PIECES`] in
+    /// i32 lanes: [`Self::vector_fill`]; else [`LANES`]), each started
     /// from its first point (a nearest point: [`NearestRun::point_at`])
     /// with the decision sum and terms [`Self::octant_run`] carries, and
     /// the pieces are stepped side by side, one step of each an iteration.
@@ -874,6 +886,12 @@ impl SaleemCircle {
         let mut steps = run.known.min(out.len() as i64);
         if let Some(before_ray) = self.steps_before_ray(&run, steps) {
             steps = before_ray;
+        }
+        if self.radius_sq <= LARGEST_VECTOR_RADIUS_SQ {
+            let piece_steps = steps as usize / VECTOR_PIECES / 8 * 8;
+            if piece_steps >= LEAST_LANE_STEPS {
+                return self.vector_fill::<K>(&run, piece_steps, out);
+            }
         }
         let lane_steps = steps as usize / LANES;
         if lane_steps < LEAST_LANE_STEPS {
@@ -901,6 +919,90 @@ impl SaleemCircle {
         self.pos = run.point_at(taken as i64);
         // The last piece ends where the closed form says the stretch does.
         debug_assert_eq!(lanes[LANES - 1], self.carried_at(self.pos, fast, slow));
+        if let Some(n) = self.remaining.as_mut() {
+            *n -= taken as u64;
+        }
+        taken
+    }
+
+    /// [`Self::laned_fill`]'s steps in [`VECTOR_PIECES`] pieces of
+    /// `piece_steps` steps (a multiple of 8), their carried values in i32
+    /// lanes of two [`Quad`]s: a step of all eight pieces is, per vector,
+    /// one compare, three adds and two ands, where each piece's scalar step
+    /// took a compare, two selects, three adds and a store of its own code.
+    /// Every eighth step the pieces' eight decisions of each of the last
+    /// eight steps (one column a step, narrowed to 16 bits) are turned into
+    /// each piece's eight in order ([`Codes8::transpose`]), each becoming
+    /// its stay or move code by its mask, and stored as 16 bytes.
+    ///
+    /// What a lane carries: the decision sum, F = 2·(2 p·fast + 1) and
+    /// G = 2·(2 p·slow + 1) + 2, so that a step adds 4 to F, F and (when
+    /// the slow axis moves) G to the sum, and then 4 to G when it moved:
+    /// [`Self::octant_run`]'s sum, fast term and slow term, doubled where
+    /// they enter the sum. Exact in i32 for r <= 2^25
+    /// ([`LARGEST_VECTOR_RADIUS_SQ`]): each candidate is within two units
+    /// of the circle, so its residual is at most 2·(2r + 2) in size and
+    /// the sum 8r + 8 < 2^29; F and G are at most 4r + 8, and a sum plus
+    /// both stays below 2^30.
+    #[inline(always)]
+    fn vector_fill<const K: u8>(
+        &mut self,
+        run: &NearestRun,
+        piece_steps: usize,
+        out: &mut [Step],
+    ) -> usize {
+        let (fast, slow, stay_code, move_code) = self.octant_moves(K);
+        let carried = |piece: usize| {
+            let [sum, fast_term, slow_term] =
+                self.carried_at(run.point_at((piece * piece_steps) as i64), fast, slow);
+            [sum, 2 * fast_term, 2 * slow_term + 2]
+        };
+        let starts: [[i64; 3]; VECTOR_PIECES] = std::array::from_fn(carried);
+        let lanes = |half: usize, value: usize| {
+            Quad::new(std::array::from_fn(|j| starts[4 * half + j][value]))
+        };
+        let mut sum = [lanes(0, 0), lanes(1, 0)];
+        let mut fast_twice = [lanes(0, 1), lanes(1, 1)];
+        let mut slow_twice = [lanes(0, 2), lanes(1, 2)];
+        let (zero, four) = (Quad::splat(0), Quad::splat(4));
+        let (stay, moved) = (Codes8::splat(stay_code), Codes8::splat(move_code));
+        for block in (0..piece_steps).step_by(8) {
+            let mut columns = [Codes8::splat(0); 8];
+            for column in &mut columns {
+                let mut masks = [zero; 2];
+                for h in 0..2 {
+                    // slow_steps_in_octant, four pieces at once.
+                    let moves = if K % 2 == 1 {
+                        sum[h].above(zero)
+                    } else {
+                        zero.above(sum[h])
+                    };
+                    fast_twice[h] = fast_twice[h].add(four);
+                    sum[h] = sum[h].add(fast_twice[h]).add(moves.and(slow_twice[h]));
+                    slow_twice[h] = slow_twice[h].add(moves.and(four));
+                    masks[h] = moves;
+                }
+                *column = Codes8::narrow(masks);
+            }
+            for (piece, row) in Codes8::transpose(columns).into_iter().enumerate() {
+                let at = piece * piece_steps + block;
+                row.choose(stay, moved).store(&mut out[at..at + 8]);
+            }
+        }
+        let taken = VECTOR_PIECES * piece_steps;
+        self.pos = run.point_at(taken as i64);
+        // The last piece ends where the closed form says the stretch does.
+        debug_assert_eq!(
+            [
+                sum[1].lanes()[3],
+                fast_twice[1].lanes()[3],
+                slow_twice[1].lanes()[3]
+            ],
+            {
+                let [s, f, e] = self.carried_at(self.pos, fast, slow);
+                [s, 2 * f, 2 * e + 2]
+            }
+        );
         if let Some(n) = self.remaining.as_mut() {
             *n -= taken as u64;
         }
@@ -1127,8 +1229,26 @@ fn nearest_root(t: i64) -> i64 {
     if t <= 0 {
         return 0;
     }
-    let y = (t as u64).isqrt() as i64;
+    let y = floor_sqrt(t as u64) as i64;
     if t > y * y + y { y + 1 } else { y }
+}
+
+/// ⌊√t⌋ for t <= 2^62 (every r² and r² - X² here: the circle's bound keeps
+/// r below 2^30), from the f64 square root, one off at most and then
+/// corrected. `u64::isqrt` is a loop in software, with divisions: in Node
+/// 13% of the r = 300,000 circle's trace went to it (for the starts of the
+/// pieces its recording loop steps side by side, and the stretches' ends).
+///
+/// With n = ⌊√t⌋ <= 2^31: t converts to f64 with a relative error of at
+/// most 2^-53, so √ of n² as converted is within n·2^-54 (and a hair) of
+/// n, less than half an ulp of n, and the correctly rounded root is n
+/// itself; rounding and the root are monotonic, so the root of any t >= n²
+/// is at least n. Nor does it reach n + 2. So its whole part y is n or
+/// n + 1, and n + 1 exactly when y² > t.
+fn floor_sqrt(t: u64) -> u64 {
+    debug_assert!(t <= 1 << 62, "{t} past 2^62");
+    let y = (t as f64).sqrt() as u64;
+    y - u64::from(y * y > t)
 }
 
 /// The first n in [lo, hi] where `holds` (false before it, true from it
@@ -1405,6 +1525,30 @@ mod tests {
             2 * d * b + d < 0
         } else {
             2 * d * b + d > 0
+        }
+    }
+
+    /// floor_sqrt against the integer square root, at and beside every
+    /// square where the f64 root is nearest an integer (small roots, and
+    /// roots near 2^26 and 2^31, the largest), and at 2^62.
+    #[test]
+    fn floor_sqrt_is_the_integer_square_root() {
+        let roots = (0..100_000u64)
+            .chain((1 << 26) - 50_000..(1 << 26) + 50_000)
+            .chain((1 << 31) - 100_000..=1 << 31);
+        for y in roots {
+            for t in [y * y, y * y + y, (y * y).wrapping_sub(1), y * y + 1] {
+                if t <= 1 << 62 {
+                    assert_eq!(floor_sqrt(t), t.isqrt(), "t = {t}");
+                }
+            }
+        }
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn floor_sqrt_matches_isqrt_anywhere(t in 0u64..=1 << 62) {
+            proptest::prop_assert_eq!(floor_sqrt(t), t.isqrt());
         }
     }
 

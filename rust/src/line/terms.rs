@@ -13,6 +13,7 @@
 //! the property tests check that both give the same steps.
 
 use crate::grid::{MAX_AXES, Step, displacement};
+use crate::lanes::Quad;
 use crate::request::TiePolicy;
 
 /// One passive axis's discriminant, in the form [`Terms`] steps.
@@ -439,7 +440,7 @@ impl<const N: usize> Terms<N> {
         }
         // Lane 0 now holds the value at step out.len().
         for (value, lane) in values.iter_mut().zip(&lanes) {
-            *value = lane[0].first_lane();
+            *value = lane[0].lanes()[0];
         }
     }
 
@@ -536,26 +537,6 @@ struct Pair(
     [i64; 2],
 );
 
-// The interleaved loop packs codes to signed 16 bits and stores eight as 16
-// bytes: a code's bits (moving 0..MAX_AXES, negative 8..8 + MAX_AXES) stay
-// below 2^14, and a Step is a u16.
-const _: () = assert!(MAX_AXES <= 6 && std::mem::size_of::<Step>() == 2);
-
-/// One term's values at four consecutive steps ([`Terms::fill_interleaved`]),
-/// as i32 lanes of one 128-bit vector where the target has one (a compare is
-/// one instruction in wasm SIMD and in x86-64's SSE2), else four scalars.
-/// Every value and constant is below 2^30 in size ([`Term::fits_i32`]).
-#[derive(Clone, Copy)]
-struct Quad(
-    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))] core::arch::wasm32::v128,
-    #[cfg(target_arch = "x86_64")] core::arch::x86_64::__m128i,
-    #[cfg(not(any(
-        all(target_arch = "wasm32", target_feature = "simd128"),
-        target_arch = "x86_64"
-    )))]
-    [i32; 4],
-);
-
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 impl Pair {
     #[inline(always)]
@@ -602,61 +583,6 @@ impl Pair {
             i64x2_extract_lane::<0>(self.0),
             i64x2_extract_lane::<1>(self.0),
         ]
-    }
-}
-
-#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-impl Quad {
-    #[inline(always)]
-    fn new([a, b, c, d]: [i64; 4]) -> Quad {
-        Quad(core::arch::wasm32::i32x4(
-            a as i32, b as i32, c as i32, d as i32,
-        ))
-    }
-    #[inline(always)]
-    fn splat(x: i64) -> Quad {
-        Quad(core::arch::wasm32::i32x4_splat(x as i32))
-    }
-    /// All ones in each lane whose value is above `limit`'s, else 0.
-    #[inline(always)]
-    fn above(self, limit: Quad) -> Quad {
-        Quad(core::arch::wasm32::i32x4_gt(self.0, limit.0))
-    }
-    #[inline(always)]
-    fn add(self, other: Quad) -> Quad {
-        Quad(core::arch::wasm32::i32x4_add(self.0, other.0))
-    }
-    #[inline(always)]
-    fn sub(self, other: Quad) -> Quad {
-        Quad(core::arch::wasm32::i32x4_sub(self.0, other.0))
-    }
-    #[inline(always)]
-    fn and(self, other: Quad) -> Quad {
-        Quad(core::arch::wasm32::v128_and(self.0, other.0))
-    }
-    #[inline(always)]
-    fn or(self, other: Quad) -> Quad {
-        Quad(core::arch::wasm32::v128_or(self.0, other.0))
-    }
-    /// Writes the low 16 bits of each lane of `lo`, then of `hi`, in lane
-    /// order, to `group`'s eight steps: packed to 16 bits (a code is below
-    /// 2^14, so the signed saturation keeps it) and stored as 16 bytes.
-    #[inline(always)]
-    fn store_codes([lo, hi]: [Quad; 2], group: &mut [Step]) {
-        use core::arch::wasm32::{i16x8_narrow_i32x4, v128, v128_store};
-        assert_eq!(group.len(), 8, "eight steps");
-        // SAFETY: `group` is 8 Steps, 16 bytes (Step is a u16), borrowed
-        // mutably; a wasm store needs no alignment.
-        unsafe {
-            v128_store(
-                group.as_mut_ptr().cast::<v128>(),
-                i16x8_narrow_i32x4(lo.0, hi.0),
-            )
-        }
-    }
-    #[inline(always)]
-    fn first_lane(self) -> i64 {
-        core::arch::wasm32::i32x4_extract_lane::<0>(self.0) as i64
     }
 }
 
@@ -717,59 +643,6 @@ impl Pair {
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-impl Quad {
-    #[inline(always)]
-    fn new([a, b, c, d]: [i64; 4]) -> Quad {
-        Quad(unsafe { core::arch::x86_64::_mm_set_epi32(d as i32, c as i32, b as i32, a as i32) })
-    }
-    #[inline(always)]
-    fn splat(x: i64) -> Quad {
-        Quad(unsafe { core::arch::x86_64::_mm_set1_epi32(x as i32) })
-    }
-    /// All ones in each lane whose value is above `limit`'s, else 0.
-    #[inline(always)]
-    fn above(self, limit: Quad) -> Quad {
-        Quad(unsafe { core::arch::x86_64::_mm_cmpgt_epi32(self.0, limit.0) })
-    }
-    #[inline(always)]
-    fn add(self, other: Quad) -> Quad {
-        Quad(unsafe { core::arch::x86_64::_mm_add_epi32(self.0, other.0) })
-    }
-    #[inline(always)]
-    fn sub(self, other: Quad) -> Quad {
-        Quad(unsafe { core::arch::x86_64::_mm_sub_epi32(self.0, other.0) })
-    }
-    #[inline(always)]
-    fn and(self, other: Quad) -> Quad {
-        Quad(unsafe { core::arch::x86_64::_mm_and_si128(self.0, other.0) })
-    }
-    #[inline(always)]
-    fn or(self, other: Quad) -> Quad {
-        Quad(unsafe { core::arch::x86_64::_mm_or_si128(self.0, other.0) })
-    }
-    /// Writes the low 16 bits of each lane of `lo`, then of `hi`, in lane
-    /// order, to `group`'s eight steps: packed to 16 bits (a code is below
-    /// 2^14, so the signed saturation keeps it) and stored as 16 bytes.
-    #[inline(always)]
-    fn store_codes([lo, hi]: [Quad; 2], group: &mut [Step]) {
-        use core::arch::x86_64::{__m128i, _mm_packs_epi32, _mm_storeu_si128};
-        assert_eq!(group.len(), 8, "eight steps");
-        // SAFETY: `group` is 8 Steps, 16 bytes (Step is a u16), borrowed
-        // mutably; the store needs no alignment.
-        unsafe {
-            _mm_storeu_si128(
-                group.as_mut_ptr().cast::<__m128i>(),
-                _mm_packs_epi32(lo.0, hi.0),
-            )
-        }
-    }
-    #[inline(always)]
-    fn first_lane(self) -> i64 {
-        unsafe { core::arch::x86_64::_mm_cvtsi128_si32(self.0) as i64 }
-    }
-}
-
 #[cfg(not(any(
     all(target_arch = "wasm32", target_feature = "simd128"),
     target_arch = "x86_64"
@@ -803,44 +676,6 @@ impl Pair {
     }
     fn lanes(self) -> [i64; 2] {
         self.0
-    }
-}
-
-#[cfg(not(any(
-    all(target_arch = "wasm32", target_feature = "simd128"),
-    target_arch = "x86_64"
-)))]
-impl Quad {
-    fn new(values: [i64; 4]) -> Quad {
-        Quad(values.map(|v| v as i32))
-    }
-    fn splat(x: i64) -> Quad {
-        Quad([x as i32; 4])
-    }
-    /// All ones in each lane whose value is above `limit`'s, else 0.
-    fn above(self, limit: Quad) -> Quad {
-        Quad([0, 1, 2, 3].map(|i| (limit.0[i] - self.0[i]) >> 31))
-    }
-    fn add(self, other: Quad) -> Quad {
-        Quad([0, 1, 2, 3].map(|i| self.0[i] + other.0[i]))
-    }
-    fn sub(self, other: Quad) -> Quad {
-        Quad([0, 1, 2, 3].map(|i| self.0[i] - other.0[i]))
-    }
-    fn and(self, other: Quad) -> Quad {
-        Quad([0, 1, 2, 3].map(|i| self.0[i] & other.0[i]))
-    }
-    fn or(self, other: Quad) -> Quad {
-        Quad([0, 1, 2, 3].map(|i| self.0[i] | other.0[i]))
-    }
-    /// Writes the low 16 bits of each lane of `lo`, then of `hi`, to `group`.
-    fn store_codes([lo, hi]: [Quad; 2], group: &mut [Step]) {
-        for (step, lane) in group.iter_mut().zip(lo.0.into_iter().chain(hi.0)) {
-            *step = Step(lane as u16);
-        }
-    }
-    fn first_lane(self) -> i64 {
-        self.0[0] as i64
     }
 }
 
