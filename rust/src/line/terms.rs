@@ -444,6 +444,31 @@ impl<const N: usize> Terms<N> {
         }
     }
 
+    /// [`Self::fill_interleaved`], with a term whose axis never steps left
+    /// out of the loop when there are two: a line in a plane of the grid
+    /// (a circle's chords, most G-code moves) has a passive axis that does
+    /// not move, and its term would take half the loop's work for nothing.
+    /// A term of no increment never steps: its value lies in the window
+    /// (steps_above - decrement, steps_above] ([`Term::jumped`]), so it never
+    /// exceeds steps_above, and stays where it is.
+    #[inline(always)]
+    fn fill_interleaved_moving(
+        always: u16,
+        terms: &[Term; N],
+        values: &mut [i64; N],
+        out: &mut [Step],
+    ) {
+        if N == 2 {
+            if let Some(moving) = [1, 0].into_iter().find(|&i| terms[1 - i].increment == 0) {
+                let mut value = [values[moving]];
+                Terms::<1>::fill_interleaved(always, &[terms[moving]], &mut value, out);
+                values[moving] = value[0];
+                return;
+            }
+        }
+        Self::fill_interleaved(always, terms, values, out);
+    }
+
     /// One step, for a stepper that builds its decision around it.
     #[inline(always)]
     pub fn step(&mut self) -> Step {
@@ -485,7 +510,7 @@ impl<const N: usize> Terms<N> {
             && (0..N).all(|i| terms[i].fits_i32(values[i]))
         {
             filled = out.len() / NARROW_LANES * NARROW_LANES;
-            Self::fill_interleaved(always, &terms, &mut values, &mut out[..filled]);
+            Self::fill_interleaved_moving(always, &terms, &mut values, &mut out[..filled]);
         }
         if filled == 0 && out.len() >= LANES * MIN_LANE_STEPS {
             let lane_steps = out.len() / LANES;
@@ -845,6 +870,48 @@ mod tests {
                 },
                 len,
             );
+        }
+    }
+
+    #[test]
+    fn a_term_whose_axis_never_steps_is_left_out_exactly() {
+        // Wang's term of a passive axis with |Δ| = 0 (value -|Δa|, no
+        // increment: a line in a plane of the grid) beside a moving one,
+        // either first, both ties, starting anywhere in the window; then
+        // both idle (a line along one axis).
+        for tie in [TiePolicy::Hold, TiePolicy::Advance] {
+            let idle = Term {
+                step: Step(0b10),
+                ..wang(0, 300, tie)
+            };
+            let moving = wang(97, 300, tie);
+            let idle_at_top = Term {
+                value: idle.steps_above,
+                ..idle
+            };
+            for terms in [
+                [idle, moving],
+                [moving, idle],
+                [
+                    idle,
+                    Term {
+                        step: Step(0b100),
+                        ..idle
+                    },
+                ],
+                [idle_at_top, moving],
+                [moving, idle_at_top],
+            ] {
+                for len in [MIN_INTERLEAVED_STEPS, MIN_INTERLEAVED_STEPS + 5, 300, 4099] {
+                    fills_as_one_chain(
+                        Terms {
+                            always: Step(1),
+                            terms,
+                        },
+                        len,
+                    );
+                }
+            }
         }
     }
 
