@@ -849,12 +849,23 @@ impl TraceBuilder {
                 .collect::<Vec<_>>()
                 .into_iter()
         });
+        // Its segments made when read (an arc's chords) are made now and
+        // kept: this trace has no maker of the part's.
+        let mut made: Vec<Option<Segment>> = (0..part.segments.len())
+            .map(|index| match part.segment(index) {
+                SegmentRef::Made(segment) => Some(segment),
+                SegmentRef::Kept(_) => None,
+            })
+            .collect();
         let part_segments = std::mem::take(&mut part.segments);
-        assert!(
-            part_segments.kept_index.iter().all(|&slot| slot != MADE),
-            "an appended trace keeps its segments"
-        );
-        for mut segment in part_segments.kept {
+        let mut kept: Vec<Option<Segment>> = part_segments.kept.into_iter().map(Some).collect();
+        for (index, &slot) in part_segments.kept_index.iter().enumerate() {
+            let taken = if slot == MADE {
+                made[index].take()
+            } else {
+                kept[slot as usize].take()
+            };
+            let mut segment = taken.expect("each segment is kept or made once");
             if let Some(notes) = &mut prefixed_notes {
                 segment.setup_note = notes.next();
             }
