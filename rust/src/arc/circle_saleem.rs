@@ -928,7 +928,7 @@ impl SaleemCircle {
     /// [`Self::laned_fill`]'s steps in [`VECTOR_PIECES`] pieces of
     /// `piece_steps` steps (a multiple of 8), their carried values in i32
     /// lanes of two [`Quad`]s: a step of all eight pieces is, per vector,
-    /// one compare, three adds and two ands, where each piece's scalar step
+    /// one compare, four adds and two ands, where each piece's scalar step
     /// took a compare, two selects, three adds and a store of its own code.
     /// Every eighth step the pieces' eight decisions of each of the last
     /// eight steps (one column a step, narrowed to 16 bits) are turned into
