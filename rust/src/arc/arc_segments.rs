@@ -423,10 +423,7 @@ fn chords_by(
         .with_note_prefix(Rc::new(move |k| notes.prefix(k)))
         .with_segment_maker(
             Rc::new(move |k| segment.made(k)),
-            Rc::new(move |k| {
-                let (from, to) = ideal.notes.ends(k);
-                ideal.ideal_between(&from, &to)
-            }),
+            Rc::new(move |k| ideal.ideal_of(k)),
             Rc::new(move |k| start.notes.ends(k).0.point),
         ))
 }
@@ -458,13 +455,19 @@ impl Chords {
         }
     }
 
+    /// Chord `k`'s piece of the arc.
+    fn ideal_of(&self, k: usize) -> IdealPath {
+        let (from, to) = self.notes.ends(k);
+        self.ideal_between(&from, &to)
+    }
+
     /// Chord `k` as it was run: from its first vertex, its stepper before
     /// its first step, against its piece of the arc.
     fn made(&self, k: usize) -> MadeSegment {
         let (from, to) = self.notes.ends(k);
         let make = MakeChord {
             start: from.point,
-            ideal: self.ideal_between(&from, &to),
+            ideal: self.ideal_of(k),
         };
         self.stepper
             .with_stepper(from.point, to.point, make)
