@@ -30,7 +30,7 @@ use crate::grid::Point;
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
 use crate::line::Mirror;
-use crate::line::line_stepper::{LineStepper, StepperVisitor};
+use crate::line::line_stepper::{LineStepper, MakeSegment, StepperVisitor};
 use crate::line::regions_wang::RegionsWhy;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
 use crate::trace::{Decision, MadeSegment, Stepper, Trace, TraceBuilder};
@@ -465,25 +465,13 @@ impl Chords {
     /// its first step, against its piece of the arc.
     fn made(&self, k: usize) -> MadeSegment {
         let (from, to) = self.notes.ends(k);
-        let make = MakeChord {
+        let make = MakeSegment {
             start: from.point,
             ideal: self.ideal_of(k),
         };
         self.stepper
             .with_stepper(from.point, to.point, make)
             .expect("a chord made when read ran in place, by a LineStepper")
-    }
-}
-
-struct MakeChord {
-    start: Point,
-    ideal: IdealPath,
-}
-
-impl StepperVisitor for MakeChord {
-    type Out = MadeSegment;
-    fn visit<S: Stepper>(self, stepper: S) -> MadeSegment {
-        MadeSegment::new(self.start, self.ideal, stepper)
     }
 }
 

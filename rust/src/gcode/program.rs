@@ -39,7 +39,7 @@ use crate::arc::{ArcSpec, CENTER, MAX_TURNS, radii_within_tolerance};
 use crate::error::{Error, Limit, Location, counted};
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step};
 use crate::ideal::IdealPath;
-use crate::line::line_stepper::{LineStepper, StepperVisitor};
+use crate::line::line_stepper::{LineStepper, MakeSegment, StepperVisitor};
 use crate::machine::{MACHINE_AXES, Machine};
 use crate::memory::{HEAP_BUDGET_BYTES, held_bytes};
 use crate::planner::{self, Limits, Planner, Timing};
@@ -261,20 +261,6 @@ impl StepperVisitor for RunInPlace<'_> {
 enum MadePath {
     Circle(ArcSpec),
     Line { from: Point, to: Point },
-}
-
-/// Makes a straight move's segment again, measured against its line.
-struct MakeLineSegment {
-    from: Point,
-    to: Point,
-}
-
-impl StepperVisitor for MakeLineSegment {
-    type Out = MadeSegment;
-    fn visit<S: Stepper>(self, stepper: S) -> MadeSegment {
-        let (from, to) = (self.from, self.to);
-        MadeSegment::new(from, IdealPath::Line { from, to }, stepper)
-    }
 }
 
 /// A warning or an error at a place in the program (1-based).
@@ -603,7 +589,14 @@ impl MoveRecords {
             }
             MadePath::Line { from, to } => self
                 .line_stepper
-                .with_stepper(from, to, MakeLineSegment { from, to })
+                .with_stepper(
+                    from,
+                    to,
+                    MakeSegment {
+                        start: from,
+                        ideal: IdealPath::Line { from, to },
+                    },
+                )
                 .expect("a move stepped by its request keeps its segment"),
         }
     }

@@ -13,8 +13,9 @@ use super::{TieAxis, gcd_option};
 use crate::algorithm_info::AlgorithmInfo;
 use crate::error::Error;
 use crate::grid::Point;
+use crate::ideal::IdealPath;
 use crate::request::{Request, TiePolicy};
-use crate::trace::Stepper;
+use crate::trace::{MadeSegment, Stepper};
 
 /// A line algorithm with its options read once.
 #[derive(Clone, Copy, Debug)]
@@ -85,4 +86,19 @@ impl LineStepper {
 pub trait StepperVisitor {
     type Out;
     fn visit<S: Stepper>(self, stepper: S) -> Self::Out;
+}
+
+/// A segment made again when read ([`MadeSegment`]) from the stepper made
+/// for its line: where it starts and the path it is measured against (a
+/// G-code move's line, an arc's chord's piece of the arc).
+pub struct MakeSegment {
+    pub start: Point,
+    pub ideal: IdealPath,
+}
+
+impl StepperVisitor for MakeSegment {
+    type Out = MadeSegment;
+    fn visit<S: Stepper>(self, stepper: S) -> MadeSegment {
+        MadeSegment::new(self.start, self.ideal, stepper)
+    }
 }
