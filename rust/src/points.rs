@@ -251,8 +251,8 @@ fn by_vector_table<const DIMS: usize, const ENTRIES: usize>(
     // Lanes past DIMS stay 0: the start's are, and so are the table's.
     let mut p = Lanes4::load(&first);
     let base = out.as_mut_ptr().cast::<i32>();
-    let moved = |p: Lanes4, step: &Step| p.add(Lanes4::load(&table[table_index(step.0, DIMS)]));
     let moved_by = |p: Lanes4, index: usize| p.add(Lanes4::load(&table[index]));
+    let moved = |p: Lanes4, step: &Step| moved_by(p, table_index(step.0, DIMS));
     let mut rows = 0;
     if DIMS == 3 {
         for four in steps.chunks_exact(4) {

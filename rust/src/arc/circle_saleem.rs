@@ -952,12 +952,9 @@ impl SaleemCircle {
         out: &mut [Step],
     ) -> usize {
         let (fast, slow, stay_code, move_code) = self.octant_moves(K);
-        let carried = |piece: usize| {
-            let [sum, fast_term, slow_term] =
-                self.carried_at(run.point_at((piece * piece_steps) as i64), fast, slow);
-            [sum, 2 * fast_term, 2 * slow_term + 2]
-        };
-        let starts: [[i64; 3]; VECTOR_PIECES] = std::array::from_fn(carried);
+        let starts: [[i64; 3]; VECTOR_PIECES] = std::array::from_fn(|piece| {
+            self.lane_carried_at(run.point_at((piece * piece_steps) as i64), fast, slow)
+        });
         let lanes = |half: usize, value: usize| {
             Quad::new(std::array::from_fn(|j| starts[4 * half + j][value]))
         };
@@ -998,15 +995,21 @@ impl SaleemCircle {
                 fast_twice[1].lanes()[3],
                 slow_twice[1].lanes()[3]
             ],
-            {
-                let [s, f, e] = self.carried_at(self.pos, fast, slow);
-                [s, 2 * f, 2 * e + 2]
-            }
+            self.lane_carried_at(self.pos, fast, slow)
         );
         if let Some(n) = self.remaining.as_mut() {
             *n -= taken as u64;
         }
         taken
+    }
+
+    /// What a lane of [`Self::vector_fill`] carries at local point `p`:
+    /// [`Self::carried_at`]'s sum, and its terms doubled where they enter
+    /// the sum (F = 2·fast term, G = 2·slow term + 2).
+    #[inline(always)]
+    fn lane_carried_at(&self, p: [i64; 2], fast: [i64; 2], slow: [i64; 2]) -> [i64; 3] {
+        let [sum, fast_term, slow_term] = self.carried_at(p, fast, slow);
+        [sum, 2 * fast_term, 2 * slow_term + 2]
     }
 
     /// Where the first `steps` steps of `run` from the point reach the ray
