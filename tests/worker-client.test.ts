@@ -11,10 +11,13 @@ class FakeWorker implements WorkerPort {
   onmessage: ((event: MessageEvent<ReplyMessage>) => void) | null = null;
   onerror: ((event: ErrorEvent) => void) | null = null;
   readonly received: RequestMessage[] = [];
+  /** The buffers handed over with each message, in step with `received`. */
+  readonly transferred: Transferable[][] = [];
   terminated = false;
 
-  postMessage(message: RequestMessage): void {
+  postMessage(message: RequestMessage, transfer: Transferable[] = []): void {
     this.received.push(message);
+    this.transferred.push(transfer);
   }
 
   terminate(): void {
@@ -165,5 +168,17 @@ describe('TraceClient', () => {
     workers[0]!.reply({ id: workers[0]!.received[2]!.id, ok: true, value: PATH });
     expect(Array.from(await (await short).pointsInRange(1, 2))).toEqual([1, 1, 0]);
     expect(workers[0]!.received).toHaveLength(3);
+  });
+
+  it("sends a G-code program as its UTF-8 bytes, handing their buffer over rather than copying it", () => {
+    const { client, workers } = setUp();
+    const text = 'G1 X1 (Ø 3 mm, 𝜋/2)\n';
+    client.runGcode(text, { stepsPerMm: 80 }, () => undefined);
+    const message = workers[0]!.received[0]!;
+    expect(message).toMatchObject({ request: { kind: 'gcode', settings: { stepsPerMm: 80 } } });
+    const { source } = (message as { request: { source: Uint8Array } }).request;
+    expect(new TextDecoder().decode(source)).toBe(text);
+    expect(Array.from(source)).toEqual(Array.from(new TextEncoder().encode(text)));
+    expect(workers[0]!.transferred[0]).toEqual([source.buffer]);
   });
 });

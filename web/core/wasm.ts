@@ -3,6 +3,7 @@
  * importers of the generated package in ./pkg.
  */
 import init, * as bindings from './pkg/voxpath.js';
+import { encodeUtf8Into } from './utf8.js';
 
 export type CoreBindings = typeof bindings;
 
@@ -60,38 +61,31 @@ export function heapBytes(): number {
 }
 
 /**
- * Text goes to the core as UTF-8 bytes, encoded natively straight into wasm
- * memory (`encodeInto` on the core's TextBytes): passing the string itself
+ * `text` as UTF-8 in wasm memory, for `use` (which may take the bytes);
+ * freed after it. A string is encoded natively straight into wasm memory
+ * (`encodeInto` on the core's TextBytes): passing the string itself
  * re-encodes it a character at a time in JavaScript, and `encode` makes a
  * JavaScript array of the bytes that is then copied in (for a 20 MB CSV,
- * each longer than the encoding).
- */
-const utf8 = new TextEncoder();
-
-/**
- * `text` as UTF-8 in wasm memory, for `use` (which may take the bytes);
- * freed after it. Bytes (UTF-8 already: the core checks) are copied in as
- * they are, with no string made of them (a file read into a Buffer).
+ * each longer than the encoding). Bytes (UTF-8 already: the core checks)
+ * are copied in as they are, with no string made of them (a file read into
+ * a Buffer, a program the page encoded before sending it to its worker).
  */
 export function withTextBytes<T>(core: CoreBindings, text: string | Uint8Array, use: (bytes: bindings.TextBytes) => T): T {
-  // Room for the bytes as they are, or for one byte a character, enough for
-  // ASCII text; else for three, the most UTF-8 takes for one UTF-16 unit.
-  let bytes = new core.TextBytes(text.length);
+  // The room last made (a first one too small for a string is freed).
+  const made: { bytes?: bindings.TextBytes } = {};
+  const room = (length: number) => {
+    made.bytes?.free();
+    made.bytes = new core.TextBytes(length);
+    return made.bytes.view();
+  };
   try {
-    if (typeof text !== 'string') {
-      bytes.view().set(text);
-    } else {
-      let written = utf8.encodeInto(text, bytes.view());
-      if (written.read < text.length) {
-        const wider = new core.TextBytes(3 * text.length);
-        bytes.free();
-        bytes = wider;
-        written = utf8.encodeInto(text, bytes.view());
-      }
-      bytes.truncate(written.written);
+    if (typeof text !== 'string') room(text.length).set(text);
+    else {
+      const written = encodeUtf8Into(text, room);
+      made.bytes!.truncate(written);
     }
-    return use(bytes);
+    return use(made.bytes!);
   } finally {
-    bytes.free();
+    made.bytes?.free();
   }
 }

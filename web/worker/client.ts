@@ -9,6 +9,7 @@
  */
 import type { ExperimentProgress, GcodeMove, GcodeProgress, GcodeSettings, MotionChart, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { ChartSeries, IdealLine, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import { utf8Bytes } from '../core/utf8.js';
 import type {
   InputError,
   LearnerCheck,
@@ -54,7 +55,7 @@ export class Cancelled extends Error {
 
 /** The part of a Worker the client uses, so tests can drive it with a fake. */
 export interface WorkerPort {
-  postMessage(message: RequestMessage): void;
+  postMessage(message: RequestMessage, transfer?: Transferable[]): void;
   terminate(): void;
   onmessage: ((event: MessageEvent<ReplyMessage>) => void) | null;
   onerror: ((event: ErrorEvent) => void) | null;
@@ -148,16 +149,17 @@ export class TraceClient {
     return this.start(request).result;
   }
 
-  /** Sends `request`; progress messages (of a long request) go to `onProgress`. */
+  /** Sends `request`, handing over the buffers in `transfer`; progress messages (of a long request) go to `onProgress`. */
   start<K extends RequestKind>(
     request: Extract<WorkerRequest, { kind: K }>,
     onProgress?: (progress: K extends LongRequestKind ? ProgressValue[K] : never) => void,
+    transfer: Transferable[] = [],
   ): Running<ReplyValue[K]> {
     const id = this.#nextId++;
     const worker = this.#port();
     const result = new Promise<ReplyValue[K]>((resolve, reject) => {
       this.#pending.set(id, { resolve: resolve as Pending['resolve'], reject, onProgress: onProgress as Pending['onProgress'] });
-      worker.postMessage({ id, request });
+      worker.postMessage({ id, request }, transfer);
     });
     return {
       result,
@@ -185,10 +187,11 @@ export class TraceClient {
   }
 
   /** Runs a G-code program in the worker, reporting progress after every slice of lines; cancellable. */
-  runGcode(source: string, settings: GcodeSettings, onProgress: (progress: GcodeProgress) => void): Running<RemoteProgram> {
+  runGcode(text: string, settings: GcodeSettings, onProgress: (progress: GcodeProgress) => void): Running<RemoteProgram> {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
-    const running = this.start({ kind: 'gcode', traceId, source, settings, pointsSent: this.#pointsSent() }, onProgress);
+    const source = utf8Bytes(text);
+    const running = this.start({ kind: 'gcode', traceId, source, settings, pointsSent: this.#pointsSent() }, onProgress, [source.buffer]);
     return { result: running.result.then((run) => new RemoteProgram(this, traceId, generation, run)), cancel: running.cancel };
   }
 
