@@ -180,5 +180,14 @@ describe('TraceClient', () => {
     expect(new TextDecoder().decode(source)).toBe(text);
     expect(Array.from(source)).toEqual(Array.from(new TextEncoder().encode(text)));
     expect(workers[0]!.transferred[0]).toEqual([source.buffer]);
+
+    // Run again as it is (another machine setting), then edited: the same bytes in a buffer of their own, then the new text's.
+    client.runGcode(text, { stepsPerMm: 100 }, () => undefined);
+    client.runGcode(`${text}G0 X0\n`, { stepsPerMm: 100 }, () => undefined);
+    const [again, edited] = workers[0]!.received.slice(1).map((m) => (m as { request: { source: Uint8Array } }).request.source);
+    expect(new TextDecoder().decode(again)).toBe(text);
+    expect(again!.buffer).not.toBe(source.buffer);
+    expect(workers[0]!.transferred[1]).toEqual([again!.buffer]);
+    expect(new TextDecoder().decode(edited)).toBe(`${text}G0 X0\n`);
   });
 });
