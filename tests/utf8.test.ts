@@ -14,8 +14,10 @@ const TEXTS = {
 
 describe('utf8Bytes', () => {
   for (const [name, text] of Object.entries(TEXTS)) {
-    it(`gives TextEncoder's bytes for ${name}`, () => {
-      expect(Array.from(utf8Bytes(text))).toEqual(Array.from(new TextEncoder().encode(text)));
+    it(`gives TextEncoder's bytes for ${name}, in a buffer of their length`, () => {
+      const bytes = utf8Bytes(text);
+      expect(Array.from(bytes)).toEqual(Array.from(new TextEncoder().encode(text)));
+      expect(bytes.buffer.byteLength).toBe(bytes.length);
     });
   }
 });
