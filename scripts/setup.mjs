@@ -39,9 +39,15 @@ function fail(message) {
   throw new SetupError(message);
 }
 
-/** One line per step that actually does something. @param {string} message */
+/**
+ * One line per step that actually does something, on stderr as all of this
+ * script's output: it runs as the package's prepack, and `npm pack --json`
+ * hands its caller stdout, which must stay JSON (a build of lib/ by prepack
+ * put "setup: tsc ..." before it).
+ * @param {string} message
+ */
 function step(message) {
-  console.log(`setup: ${message}`);
+  console.error(`setup: ${message}`);
 }
 
 // Children find the tools this script installs: node_modules/.bin first, so
@@ -51,11 +57,12 @@ const cargoBin = join(process.env.CARGO_HOME ?? join(homedir(), '.cargo'), 'bin'
 process.env.PATH = [join(ROOT, 'node_modules', '.bin'), cargoBin, process.env.PATH ?? ''].join(delimiter);
 
 /**
- * Runs a command with output shown to the user; fails setup when it fails.
+ * Runs a command with output shown to the user, its stdout on this script's
+ * stderr (see step); fails setup when it fails.
  * @param {string} cmd @param {string[]} args @param {string} [cwd]
  */
 function run(cmd, args, cwd = ROOT) {
-  const result = spawnSync(cmd, args, { cwd, stdio: 'inherit' });
+  const result = spawnSync(cmd, args, { cwd, stdio: ['inherit', 2, 'inherit'] });
   if (result.error) fail(`cannot run ${cmd}: ${result.error.message}`);
   if (result.status !== 0) fail(`\`${[cmd, ...args].join(' ')}\` failed (exit ${result.status ?? result.signal})`);
 }
