@@ -263,6 +263,19 @@ enum MadePath {
     Line { from: Point, to: Point },
 }
 
+impl MadePath {
+    /// The path the segment is measured against: the arc, or the line.
+    fn ideal(&self) -> IdealPath {
+        match self {
+            MadePath::Circle(spec) => IdealPath::Arc(spec.ideal_arc()),
+            MadePath::Line { from, to } => IdealPath::Line {
+                from: *from,
+                to: *to,
+            },
+        }
+    }
+}
+
 /// A warning or an error at a place in the program (1-based).
 #[derive(Serialize, Tsify, Clone, Debug, PartialEq, Eq)]
 pub struct Diagnostic {
@@ -581,22 +594,17 @@ impl MoveRecords {
 
     /// Segment `segment` made again, its stepper and its ideal path.
     fn made_segment(&self, segment: usize) -> MadeSegment {
-        match self.made_path(segment) {
+        let path = self.made_path(segment);
+        let ideal = path.ideal();
+        match path {
             MadePath::Circle(spec) => {
                 let stepper =
                     circle_arc_stepper(&spec, MAX_STEPS_LIMIT).expect("it was checked when run");
-                MadeSegment::new(spec.from, IdealPath::Arc(spec.ideal_arc()), stepper)
+                MadeSegment::new(spec.from, ideal, stepper)
             }
             MadePath::Line { from, to } => self
                 .line_stepper
-                .with_stepper(
-                    from,
-                    to,
-                    MakeSegment {
-                        start: from,
-                        ideal: IdealPath::Line { from, to },
-                    },
-                )
+                .with_stepper(from, to, MakeSegment { start: from, ideal })
                 .expect("a move stepped by its request keeps its segment"),
         }
     }
@@ -610,10 +618,7 @@ impl MoveRecords {
     /// The ideal path of segment `segment`, as [`Self::made_segment`] makes
     /// it, without its stepper.
     fn made_ideal(&self, segment: usize) -> IdealPath {
-        match self.made_path(segment) {
-            MadePath::Circle(spec) => IdealPath::Arc(spec.ideal_arc()),
-            MadePath::Line { from, to } => IdealPath::Line { from, to },
-        }
+        self.made_path(segment).ideal()
     }
 
     pub fn len(&self) -> usize {
