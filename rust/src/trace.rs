@@ -717,8 +717,14 @@ impl TraceBuilder {
         }
         let column_index = self.column_slots(stepper.columns());
         self.add_figure(S::Why::FIGURE);
-        // A copy on the stack: boxed only if the segment is kept.
-        let first_state = stepper.clone();
+        // A copy on the stack, boxed if the segment is kept; none for one
+        // made when read that ends before its first checkpoint (an arc's
+        // chords, a program's moves), which is never kept.
+        let made_for_sure = made_when_read
+            && stepper
+                .remaining_steps()
+                .is_some_and(|n| n < CHECKPOINT_INTERVAL);
+        let first_state = (!made_for_sure).then(|| stepper.clone());
         let start = self.position;
         let mut segment_steps = 0;
         let mut states: Vec<Box<dyn Replay>> = Vec::new();
@@ -768,7 +774,9 @@ impl TraceBuilder {
                 ideal: ideal(),
                 setup_note: None,
                 column_index,
-                first_state: Box::new(first_state),
+                first_state: Box::new(
+                    first_state.expect("a segment that may be kept keeps its first state"),
+                ),
                 states,
             });
         }
