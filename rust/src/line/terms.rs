@@ -78,6 +78,20 @@ impl Jump {
     }
 }
 
+/// `steps`·`by`, None where it passes i64. Where both are below 2^31 in
+/// size (a chord's, a G-code move's, most lines') the product is below
+/// 2^62 and taken as it is: `checked_mul` on i64 is a call to a 128-bit
+/// multiplication in wasm, which has no overflow flag, and a fill asks for
+/// one or two products per term.
+#[inline(always)]
+fn steps_times(steps: u64, by: i64) -> Option<i64> {
+    if steps < 1 << 31 && by.unsigned_abs() < 1 << 31 {
+        Some(steps as i64 * by)
+    } else {
+        (steps as i64).checked_mul(by)
+    }
+}
+
 impl Term {
     /// `steps_above` for a rule that steps past `threshold` and decides
     /// `value == threshold` by `tie`.
@@ -200,16 +214,17 @@ impl Term {
     /// given the value they left: value_after = value + steps·increment -
     /// moves·decrement, so the value says it without a pass over the steps.
     pub fn moves(&self, steps: u64, value_after: i64) -> i64 {
-        if steps == 0 {
-            // No step (and a zero-length line's decrement is 0).
+        if steps == 0 || self.increment == 0 {
+            // No step (and a zero-length line's decrement is 0), or a term
+            // whose axis never steps ([`Terms::fill_interleaved_moving`]):
+            // a planar line's idle axis, one division a fill saved.
             return 0;
         }
         // In i64 where it fits (a chord's or a short line's terms: an i128
         // division is a library call in wasm, and a trace makes one per
         // chunk), else in i128: steps·increment reaches 2^63 on the longest
         // lines.
-        if let Some(gone) = (steps as i64)
-            .checked_mul(self.increment)
+        if let Some(gone) = steps_times(steps, self.increment)
             .and_then(|total| total.checked_add(self.value))
             .and_then(|total| total.checked_sub(value_after))
         {
@@ -234,9 +249,8 @@ impl Term {
         }
         // In i64 where it fits, as in `moves`, else in i128: steps·increment
         // reaches 2^63 on the longest lines.
-        let total = (steps as i64)
-            .checked_mul(self.increment)
-            .and_then(|gained| gained.checked_add(self.value));
+        let total =
+            steps_times(steps, self.increment).and_then(|gained| gained.checked_add(self.value));
         let excess = total.and_then(|t| {
             t.checked_sub(self.steps_above)
                 .and_then(|e| e.checked_sub(self.increment))
@@ -708,6 +722,29 @@ impl Pair {
 mod tests {
     use super::*;
     use crate::grid::displacement;
+
+    /// The product without checks where both factors are small, with them
+    /// past that: the same as i128 says, on both sides of 2^31.
+    #[test]
+    fn steps_times_is_the_product_where_it_fits_i64() {
+        let near = |n: i64| [n - 1, n, n + 1];
+        let sizes = [0, 1, 7]
+            .into_iter()
+            .chain(near(1 << 31))
+            .chain(near(1 << 32))
+            .chain(near(1 << 62))
+            .chain([i64::MAX]);
+        let sizes: Vec<i64> = sizes.collect();
+        for &steps in &sizes {
+            for &size in &sizes {
+                for by in [size, -size] {
+                    let exact = steps as i128 * by as i128;
+                    let want = i64::try_from(exact).ok();
+                    assert_eq!(steps_times(steps as u64, by), want, "{steps} x {by}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn a_term_steps_past_its_threshold_and_on_it_by_the_tie_policy() {
