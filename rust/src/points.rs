@@ -412,7 +412,9 @@ impl Lanes4 {
     /// Lanes 2 and 3, twice: [a2, a3, a2, a3].
     #[inline(always)]
     fn high_pair(self) -> Lanes4 {
-        Lanes4(core::arch::wasm32::i32x4_shuffle::<2, 3, 2, 3>(self.0, self.0))
+        Lanes4(core::arch::wasm32::i32x4_shuffle::<2, 3, 2, 3>(
+            self.0, self.0,
+        ))
     }
     /// Four points of 3 axes as their 12 values, in three vectors: [x0 y0
     /// z0 x1], [y1 z1 x2 y2], [z2 x3 y3 z3], each a shuffle of two points.
@@ -683,7 +685,11 @@ mod tests {
             for (k, step) in steps.iter().enumerate() {
                 p.apply(*step);
                 let row = [out[2 * k] as i64, out[2 * k + 1] as i64];
-                assert_eq!(&row[..], p.coords(), "{lead} steps first, step {k}: {step:?}");
+                assert_eq!(
+                    &row[..],
+                    p.coords(),
+                    "{lead} steps first, step {k}: {step:?}"
+                );
             }
             assert_eq!(end, p);
         }

@@ -411,9 +411,12 @@ impl TraceHandle {
             format!("an Int32Array of {values} values ({count} points of {dims})")
         })?;
         let rows = (POINTS_CHUNK_VALUES / dims) as u64;
-        let mut buffer = vec![0i32; rows.min(to - from).max(1) as usize * dims];
+        // Not zeroed: the decode writes every value it hands over.
+        let values = rows.min(to - from).max(1) as usize * dims;
+        let mut buffer = Vec::<i32>::with_capacity(values);
+        let buffer = &mut buffer.spare_capacity_mut()[..values];
         if every == 1 {
-            self.0.points_by_chunk(from, to, &mut buffer, |k, chunk| {
+            self.0.points_by_chunk(from, to, buffer, |k, chunk| {
                 let at = ((k - from) as usize * dims) as u32;
                 out.subarray(at, at + chunk.len() as u32).copy_from(chunk);
             });
@@ -421,7 +424,7 @@ impl TraceHandle {
         }
         // The chosen points of each chunk, gathered to cross in one copy.
         let mut chosen = Vec::with_capacity((buffer.len() / dims).div_ceil(every as usize) * dims);
-        self.0.points_by_chunk(from, to, &mut buffer, |k, chunk| {
+        self.0.points_by_chunk(from, to, buffer, |k, chunk| {
             // The chunk's first chosen point, the n-th of all chosen: the
             // first index from k on that is `from` plus a multiple of `every`.
             let n = (k - from).div_ceil(every);

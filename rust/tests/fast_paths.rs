@@ -78,14 +78,19 @@ fn check_trace(t: &Trace, range: (u64, u64), chunk: usize) -> Result<(), TestCas
     let (a, b) = (range.0.min(n - 1), range.1.min(n));
     let (a, b) = (a.min(b), a.max(b));
     prop_assert_eq!(t.points_flat(a, b), replayed_points(t, a, b));
-    let mut buffer = vec![0i32; chunk * dims];
+    let mut buffer = Vec::<i32>::with_capacity(chunk * dims);
     let mut chunked = Vec::new();
     let mut next = a;
-    t.points_by_chunk(a, b, &mut buffer, |k, points| {
-        assert_eq!(k, next, "chunks in order");
-        next += (points.len() / dims) as u64;
-        chunked.extend(points.iter().map(|&c| i64::from(c)));
-    });
+    t.points_by_chunk(
+        a,
+        b,
+        &mut buffer.spare_capacity_mut()[..chunk * dims],
+        |k, points| {
+            assert_eq!(k, next, "chunks in order");
+            next += (points.len() / dims) as u64;
+            chunked.extend(points.iter().map(|&c| i64::from(c)));
+        },
+    );
     prop_assert_eq!(chunked, replayed_points(t, a, b));
     // The bounds: each axis's extremes over every point replayed.
     let column = |axis: usize| all.iter().skip(axis).step_by(dims).copied();
