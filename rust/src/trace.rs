@@ -271,6 +271,10 @@ pub trait Stepper: Clone + 'static {
     }
 
     /// Steps this stepper will still take, when known without running it.
+    /// When known, it drops by exactly the steps each `fill` or `next_step`
+    /// takes: the trace reserves room by it, cuts its chunks to it, and
+    /// keeps no first state of a segment made when read that it says ends
+    /// before its first checkpoint ([`TraceBuilder::run_made_when_read`]).
     fn remaining_steps(&self) -> Option<u64>;
 
     /// The columns its decisions fill ([`Decision::write`]), in order: its
