@@ -37,9 +37,10 @@ use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, CENTER, MAX_TURNS, radii_within_tolerance};
 use crate::error::{Error, Limit, Location, counted};
+use crate::figure::FigureKind;
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step};
 use crate::ideal::IdealPath;
-use crate::line::line_stepper::{LineStepper, MakeSegment, StepperVisitor};
+use crate::line::line_stepper::{ColumnsAndFigure, LineStepper, MakeSegment, StepperVisitor};
 use crate::machine::{MACHINE_AXES, Machine};
 use crate::memory::{HEAP_BUDGET_BYTES, held_bytes};
 use crate::planner::{self, Limits, Planner, Timing};
@@ -47,7 +48,7 @@ use crate::request::{
     MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, too_long_advice,
 };
 use crate::text::split_line;
-use crate::trace::{MadeSegment, Stepper, Trace, TraceBuilder};
+use crate::trace::{Column, MadeSegment, Stepper, Trace, TraceBuilder};
 use serde::Serialize;
 use serde_json::{Map, Value};
 use std::cell::Cell;
@@ -890,6 +891,11 @@ pub struct Runner {
     steps: u64,
     segments: usize,
     moves: MoveRecords,
+    /// The line algorithm's decision columns and figure, when it takes a
+    /// line of at most a unit on every axis in one step
+    /// ([`LineStepper::takes_unit_lines_at_once`]): such moves are put in
+    /// without making their stepper ([`TraceBuilder::run_unit_made_when_read`]).
+    unit_lines: Option<(&'static [Column], Option<FigureKind>)>,
     warnings: Vec<Diagnostic>,
     warnings_omitted: u64,
     /// The last feed (mm/min) warned of as capped to maxRate.
@@ -949,6 +955,18 @@ impl Runner {
             .min(HEAP_BUDGET_BYTES.saturating_sub(held_bytes()) / 256);
         let mut moves = MoveRecords::new(&settings);
         moves.records.reserve(expected_moves);
+        let unit_lines = moves
+            .line_stepper
+            .takes_unit_lines_at_once()
+            .then(|| {
+                let origin = Point::origin(MACHINE_AXES);
+                let mut unit = origin;
+                unit.coords_mut()[0] = 1;
+                moves
+                    .line_stepper
+                    .with_stepper(origin, unit, ColumnsAndFigure)
+            })
+            .flatten();
         let mut builder = TraceBuilder::new(Point::origin(MACHINE_AXES), settings.max_steps);
         builder.reserve_segments(expected_moves);
         let mut planner = Planner::new(settings.limits);
@@ -972,6 +990,7 @@ impl Runner {
             steps: 0,
             segments: 0,
             moves,
+            unit_lines,
             warnings: Vec::new(),
             warnings_omitted: 0,
             capped_feed_warned: None,
@@ -1484,6 +1503,9 @@ impl Runner {
 
     /// Steps a straight move from `from` to `to` with the line algorithm.
     fn step_line(&mut self, m: &MoveMm, from: Point, to: Point) -> Result<(), Error> {
+        if self.in_place && self.run_unit_line(from, to) {
+            return Ok(());
+        }
         let line_stepper = self.moves.line_stepper;
         let direct = self.in_place
             && line_stepper
@@ -1502,6 +1524,33 @@ impl Runner {
             self.append(m, line_request(line, from, to))?;
         }
         Ok(())
+    }
+
+    /// Puts in a straight move of at most a unit on every axis as the line
+    /// algorithm would step it, where it takes such a line in one step
+    /// ([`Runner::unit_lines`]): one step moving every axis that differs,
+    /// none for a move that stays on its cell. False, doing nothing, for
+    /// any other move or rule, or past maxSteps.
+    fn run_unit_line(&mut self, from: Point, to: Point) -> bool {
+        let Some((columns, figure)) = self.unit_lines else {
+            return false;
+        };
+        let delta = from.delta_to(&to);
+        if delta.iter().any(|d| d.abs() > 1) {
+            return false;
+        }
+        let code = (0..from.dims()).fold(Step::NONE, |code, axis| code.with(axis, delta[axis]));
+        let step = (code != Step::NONE).then_some(code);
+        let steps = step.is_some() as u64;
+        if steps > self.settings.max_steps - self.steps {
+            return false;
+        }
+        self.builder
+            .run_unit_made_when_read(step, columns, figure)
+            .expect("a step within maxSteps runs");
+        self.steps += steps;
+        self.segments += 1;
+        true
     }
 
     /// Runs the planar circle arc `spec` straight into the program's
@@ -1674,6 +1723,39 @@ mod tests {
             assert_eq!(
                 seen(&fast),
                 seen(&run_with(source, &settings, true)),
+                "{line}"
+            );
+        }
+    }
+
+    /// Moves of at most a step on every axis, in all 27 directions, and
+    /// past two checkpoint intervals of such steps: put in without their
+    /// stepper where the line algorithm takes them in one step
+    /// ([`Runner::run_unit_line`]), they read back as the catalogue path's,
+    /// whatever the algorithm.
+    #[test]
+    fn unit_moves_read_back_as_the_catalogue_path() {
+        let mut lines = vec!["G1 X0 Y0 Z0 F300".to_string()];
+        let mut at = [0i64; 3];
+        for k in 0..(2 * crate::trace::CHECKPOINT_INTERVAL as i64 + 1000) {
+            let i = k % 27;
+            let delta = [i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1];
+            for axis in 0..3 {
+                at[axis] += delta[axis];
+            }
+            lines.push(format!("G1 X{} Y{} Z{}", at[0], at[1], at[2]));
+        }
+        let source = lines.join("\n");
+        for line in crate::arc::arc_segments::LINE_ALGORITHMS {
+            let settings = format!(r#"{{"stepsPerMm": 1, "lineAlgorithm": "{line}"}}"#);
+            let fast = run_with(&source, &settings, false);
+            assert!(
+                fast.trace.steps() > 2 * crate::trace::CHECKPOINT_INTERVAL,
+                "{line}"
+            );
+            assert_eq!(
+                seen(&fast),
+                seen(&run_with(&source, &settings, true)),
                 "{line}"
             );
         }

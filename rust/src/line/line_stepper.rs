@@ -12,10 +12,11 @@ use super::walk6::Walk6;
 use super::{TieAxis, gcd_option};
 use crate::algorithm_info::AlgorithmInfo;
 use crate::error::Error;
+use crate::figure::FigureKind;
 use crate::grid::Point;
 use crate::ideal::IdealPath;
 use crate::request::{Request, TiePolicy};
-use crate::trace::{MadeSegment, Stepper};
+use crate::trace::{Column, Decision, MadeSegment, Stepper};
 
 /// A line algorithm with its options read once.
 #[derive(Clone, Copy, Debug)]
@@ -78,6 +79,20 @@ impl LineStepper {
             LineStepper::ByRequest => return None,
         })
     }
+
+    /// Whether the rule takes a line that moves no axis more than a unit in
+    /// one step moving every axis that differs (none for a line of no
+    /// length), whatever its tie and GCD options: true of the Bresenham
+    /// rules, where the largest |Δ| is 1 and every axis that moves has it,
+    /// so each is active (regions) or its first decision is 2·1 - 1 > 0
+    /// (bresenham3d, nd). Not of greedy and walk6, which move one axis a
+    /// step, nor dda, nor a rule run by its request.
+    pub fn takes_unit_lines_at_once(self) -> bool {
+        matches!(
+            self,
+            LineStepper::Regions(..) | LineStepper::Bresenham3d(..) | LineStepper::Nd(..)
+        )
+    }
 }
 
 /// What is done with a line stepper of whichever type
@@ -86,6 +101,17 @@ impl LineStepper {
 pub trait StepperVisitor {
     type Out;
     fn visit<S: Stepper>(self, stepper: S) -> Self::Out;
+}
+
+/// The decision columns and figure of the stepper visited: what a trace
+/// registers for its segments.
+pub struct ColumnsAndFigure;
+
+impl StepperVisitor for ColumnsAndFigure {
+    type Out = (&'static [Column], Option<FigureKind>);
+    fn visit<S: Stepper>(self, stepper: S) -> Self::Out {
+        (stepper.columns(), <S::Why as Decision>::FIGURE)
+    }
 }
 
 /// A segment made again when read ([`MadeSegment`]) from the stepper made
@@ -100,5 +126,80 @@ impl StepperVisitor for MakeSegment {
     type Out = MadeSegment;
     fn visit<S: Stepper>(self, stepper: S) -> MadeSegment {
         MadeSegment::new(self.start, self.ideal, stepper)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::grid::Step;
+    use crate::line::TieAxis;
+
+    /// Every step a line stepper takes, by next_step.
+    struct AllSteps;
+
+    impl StepperVisitor for AllSteps {
+        type Out = Vec<Step>;
+        fn visit<S: Stepper>(self, mut stepper: S) -> Vec<Step> {
+            std::iter::from_fn(|| stepper.next_step().map(|(step, _)| step)).collect()
+        }
+    }
+
+    /// Each of the 27 moves of at most a unit a axis, from a start in each
+    /// octant of the grid.
+    fn unit_lines() -> impl Iterator<Item = (Point, Point, [i64; 3])> {
+        let starts: [[i64; 3]; 3] = [[0, 0, 0], [-7, 5, 1 << 30], [1 << 29, -(1 << 30), -3]];
+        starts.into_iter().flat_map(|start| {
+            (0..27).map(move |i| {
+                let delta = [i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1];
+                let end: [i64; 3] = std::array::from_fn(|a| {
+                    // Stay within ±2^30: step back from the edge.
+                    let d = if (start[a] + delta[a]).abs() > 1 << 30 {
+                        -delta[a]
+                    } else {
+                        delta[a]
+                    };
+                    start[a] + d
+                });
+                let delta = std::array::from_fn(|a| end[a] - start[a]);
+                (Point::new(&start), Point::new(&end), delta)
+            })
+        })
+    }
+
+    #[test]
+    fn unit_lines_are_one_step_of_every_axis_that_differs_where_the_rule_says_so() {
+        let steppers = [TiePolicy::Advance, TiePolicy::Hold]
+            .into_iter()
+            .flat_map(|tie| {
+                [false, true].into_iter().flat_map(move |gcd| {
+                    [
+                        LineStepper::Regions(tie, gcd),
+                        LineStepper::Bresenham3d(tie, gcd),
+                        LineStepper::Nd(tie, gcd),
+                    ]
+                })
+            });
+        for stepper in steppers {
+            assert!(stepper.takes_unit_lines_at_once(), "{stepper:?}");
+            for (from, to, delta) in unit_lines() {
+                let code = (0..3).fold(Step::NONE, |code, a| code.with(a, delta[a]));
+                let want: Vec<Step> = (code != Step::NONE).then_some(code).into_iter().collect();
+                let got = stepper.with_stepper(from, to, AllSteps).expect("in place");
+                assert_eq!(got, want, "{stepper:?} from {from:?} to {to:?}");
+            }
+        }
+        // Not vacuous: a rule that moves one axis a step takes a diagonal
+        // unit line in two, and says it does not take them at once.
+        let greedy = LineStepper::Greedy(TieAxis::Lower);
+        assert!(!greedy.takes_unit_lines_at_once());
+        let (from, to) = (Point::new(&[0, 0, 0]), Point::new(&[1, 1, 0]));
+        assert_eq!(
+            greedy
+                .with_stepper(from, to, AllSteps)
+                .expect("in place")
+                .len(),
+            2
+        );
     }
 }
