@@ -18,7 +18,7 @@
 use crate::algorithms::{self, AlgorithmInfo, Family};
 use crate::compare::{StepWhy, as_object, why_at_point};
 use crate::error::{Error, counted};
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, Point, Step, jumps};
 use crate::line::GCD;
 use crate::line::bresenham3d;
 use crate::line::liu_float::{self, DECIMALS};
@@ -143,7 +143,7 @@ impl Points {
     /// The step from each point to the next (a path: see [`Self::check_path`]).
     pub fn steps(&self) -> Arc<[Step]> {
         (1..self.len())
-            .map(|k| step_between(self.get(k - 1), self.get(k)))
+            .map(|k| Step::between(self.get(k - 1), self.get(k)))
             .collect()
     }
 
@@ -168,18 +168,6 @@ impl Points {
             Point::new(self.get(k - 1))
         )
     }
-}
-
-/// The step from `before` to `now`, at most one cell apart on each axis.
-fn step_between(before: &[i64], now: &[i64]) -> Step {
-    (0..before.len()).fold(Step::NONE, |step, axis| {
-        step.with(axis, now[axis] - before[axis])
-    })
-}
-
-/// Whether `now` is more than one cell from `before` on some axis.
-fn jumps(before: &[i64], now: &[i64]) -> bool {
-    before.iter().zip(now).any(|(a, b)| (a - b).abs() > 1)
 }
 
 /// A coordinate read from input: a whole number, exactly representable.
@@ -306,7 +294,7 @@ impl TextReader {
             if jumps(before, now) {
                 self.first_jump = Some((index, line, column));
             } else if let Some(steps) = &mut self.steps {
-                steps.push(step_between(before, now));
+                steps.push(Step::between(before, now));
             }
         }
     }

@@ -229,6 +229,14 @@ impl Step {
         Step(self.0 | moves << axis | negative << (8 + axis))
     }
 
+    /// The step from point `before` to point `now`, coordinates of points
+    /// at most one cell apart on each axis ([`jumps`] is false).
+    pub fn between(before: &[i64], now: &[i64]) -> Step {
+        (0..before.len()).fold(Step::NONE, |step, axis| {
+            step.with(axis, now[axis] - before[axis])
+        })
+    }
+
     /// Movement of `axis`: -1, 0 or +1, as moved - 2 * (moved and negative):
     /// no branch, so applying a run of steps to a point is a straight loop.
     #[inline]
@@ -284,6 +292,12 @@ const SPREAD_MULTIPLIER: u64 = 1 | 1 << 9 | 1 << 18 | 1 << 27 | 1 << 36 | 1 << 4
 const SPREAD_MASK: u64 = 1 | 1 << 10 | 1 << 20 | 1 << 30 | 1 << 40 | 1 << 50;
 /// Steps summed before the 10-bit counters are emptied.
 const LANE_CAPACITY: usize = (1 << LANE_BITS) - 1;
+
+/// Whether `now` is more than one cell from `before` on some axis, so
+/// that no step leads from one to the other.
+pub fn jumps(before: &[i64], now: &[i64]) -> bool {
+    before.iter().zip(now).any(|(a, b)| (a - b).abs() > 1)
+}
 
 /// Where a run of steps moves, per axis. Applying each step to a point
 /// costs several operations per axis; here each step's six moving bits and

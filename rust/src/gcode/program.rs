@@ -38,7 +38,7 @@ use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, CENTER, MAX_TURNS, radii_within_tolerance};
 use crate::error::{Error, Limit, Location, counted};
 use crate::figure::FigureKind;
-use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step};
+use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step, jumps};
 use crate::ideal::IdealPath;
 use crate::line::line_stepper::{ColumnsAndFigure, LineStepper, MakeSegment, StepperVisitor};
 use crate::machine::{MACHINE_AXES, Machine};
@@ -1535,11 +1535,10 @@ impl Runner {
         let Some((columns, figure)) = self.unit_lines else {
             return false;
         };
-        let delta = from.delta_to(&to);
-        if delta.iter().any(|d| d.abs() > 1) {
+        if jumps(from.coords(), to.coords()) {
             return false;
         }
-        let code = (0..from.dims()).fold(Step::NONE, |code, axis| code.with(axis, delta[axis]));
+        let code = Step::between(from.coords(), to.coords());
         let step = (code != Step::NONE).then_some(code);
         let steps = step.is_some() as u64;
         if steps > self.settings.max_steps - self.steps {
