@@ -114,32 +114,34 @@ const fn table_index(code: u16, dims: usize) -> usize {
 /// the next code lands above the index's 2·DIMS bits, which the mask drops.
 #[inline(always)]
 fn table_indices_of_four<const DIMS: usize, const ENTRIES: usize>(four: &[Step]) -> [usize; 4] {
+    let joined = indices_in_place::<DIMS>(four);
+    std::array::from_fn(|k| (joined >> (16 * k)) as usize & (ENTRIES - 1))
+}
+
+/// Four consecutive steps' codes on `DIMS` axes read as one u64, each
+/// code's negative bits moved down beside its moving bits: code k's table
+/// index in the low 2·DIMS bits of its 16 ([`table_indices_of_four`]).
+#[inline(always)]
+fn indices_in_place<const DIMS: usize>(four: &[Step]) -> u64 {
     debug_assert!(four.iter().all(|s| s.0 & !(((1 << DIMS) - 1) * 0x101) == 0));
     let codes = (four[0].0 as u64)
         | (four[1].0 as u64) << 16
         | (four[2].0 as u64) << 32
         | (four[3].0 as u64) << 48;
-    let joined = codes | codes >> (8 - DIMS);
-    std::array::from_fn(|k| (joined >> (16 * k)) as usize & (ENTRIES - 1))
+    codes | codes >> (8 - DIMS)
 }
 
 /// The [`PAIR_MOVES_2`] indices of four consecutive steps on 2 axes (the
-/// first two, the last two), from their codes read as one u64: as in
-/// [`table_indices_of_four`], each code's four-bit index lands in the low
-/// bits of its 16, and one more shift and or puts each odd step's index
-/// above the even one's. Exact for the same reason: above each index its
+/// first two, the last two): each code's four-bit index in the low bits of
+/// its 16 ([`indices_in_place`]), and one more shift and or puts each odd
+/// step's index above the even one's. Exact because above each index its
 /// 16 bits hold only the code's negative bits (8 and 9) and the next
 /// code's moving bits (brought down to 10 and 11), which the shift by 12
 /// moves to bits 0 to 3 of the 16 before, past the pair's mask, or to bits
 /// the mask drops.
 #[inline(always)]
 fn pair_indices_of_four(four: &[Step]) -> [usize; 2] {
-    debug_assert!(four.iter().all(|s| s.0 & !0x303 == 0));
-    let codes = (four[0].0 as u64)
-        | (four[1].0 as u64) << 16
-        | (four[2].0 as u64) << 32
-        | (four[3].0 as u64) << 48;
-    let joined = codes | codes >> 6;
+    let joined = indices_in_place::<2>(four);
     let pairs = joined | joined >> 12;
     [pairs as usize & 255, (pairs >> 32) as usize & 255]
 }

@@ -709,15 +709,12 @@ impl TraceBuilder {
         made_when_read: bool,
     ) -> Result<(), Error> {
         let first_step = self.steps.len() as u64;
-        let column_index =
-            self.begin_segment(stepper.remaining_steps(), stepper.columns(), S::Why::FIGURE)?;
+        let known_steps = stepper.remaining_steps();
+        let column_index = self.begin_segment(known_steps, stepper.columns(), S::Why::FIGURE)?;
         // A copy on the stack, boxed if the segment is kept; none for one
         // made when read that ends before its first checkpoint (an arc's
         // chords, a program's moves), which is never kept.
-        let made_for_sure = made_when_read
-            && stepper
-                .remaining_steps()
-                .is_some_and(|n| n < CHECKPOINT_INTERVAL);
+        let made_for_sure = made_when_read && known_steps.is_some_and(|n| n < CHECKPOINT_INTERVAL);
         let first_state = (!made_for_sure).then(|| stepper.clone());
         let start = self.position;
         let mut segment_steps = 0;
