@@ -52,6 +52,8 @@ const TO_3D = [N, (7 * N) / 10 + 1, (6 * N) / 10 + 3];
 const TO_2D = TO_3D.slice(0, 2);
 const RADIUS = 300_000;
 const CIRCLE = { from: [RADIUS, 0, 0], to: [RADIUS, 0, 0], center: [0, 0, 0] };
+/** The same circle given in x and y: its points have 2 coordinates, as a pixel circle's do. */
+const CIRCLE_2D = { from: [RADIUS, 0], to: [RADIUS, 0], center: [0, 0] };
 /** One turn of the same radius rising 100,000: the arc is still the major axis. */
 const HELIX = { from: [RADIUS, 0, 0], to: [RADIUS, 0, 100_000], center: [0, 0, 0] };
 
@@ -242,7 +244,9 @@ export default async function endToEnd(): Promise<BenchGroup> {
     await row('bresenham2d, 2D line, vs npm bresenham', await voxpathSide(line2d), pointsSide(2, () => npmBresenham([0, 0], TO_2D)), 2),
   );
   const circle = await voxpathSide({ algorithm: 'circle', ...CIRCLE });
-  rows.push(await row(`circle r = ${RADIUS}, vs npm bresenham-zingl circle`, circle, pointsSide(2, () => zinglCircle(RADIUS)), 2));
+  const zingl = pointsSide(2, () => zinglCircle(RADIUS));
+  rows.push(await row(`circle r = ${RADIUS} in 3 axes, vs npm bresenham-zingl circle`, circle, zingl, 2));
+  rows.push(await row(`circle r = ${RADIUS} in x and y (2 coordinates a cell like the peer's), vs npm bresenham-zingl circle`, await voxpathSide({ algorithm: 'circle', ...CIRCLE_2D }), zingl, 2));
   rows.push(await row('helix, one turn of the same radius, vs voxpath circle', await voxpathSide({ algorithm: 'helix', ...HELIX }), circle, 1));
   rows.push(await row('arc-segments, the same circle in chords, vs voxpath circle', await voxpathSide({ algorithm: 'arc-segments', ...CIRCLE }), circle, 1));
   for (const request of [

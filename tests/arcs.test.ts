@@ -162,6 +162,33 @@ describe("the circle's correction", () => {
   });
 });
 
+describe('a circle given in x and y', () => {
+  it("is the xy plane's circle at z = 0, its points, ideal path and candidates in 2 axes", async () => {
+    // A pixel circle: from, to and center with 2 coordinates each.
+    const [flat, spatial] = await Promise.all([
+      trace({ algorithm: 'circle', from: [7, -3], to: [-2, 6], center: [-1, -2], dir: 'cw', turns: 1 }),
+      trace({ algorithm: 'circle', from: [7, -3, 0], to: [-2, 6, 0], center: [-1, -2, 0], dir: 'cw', turns: 1 }),
+    ]);
+    expect([flat.dims, flat.steps]).toEqual([2, spatial.steps]);
+    const xy = (values: ArrayLike<number>) => Array.from(values).filter((_, i) => i % 3 !== 2);
+    expect(Array.from(flat.points)).toEqual(xy(spatial.points));
+    expect(Array.from(flat.idealPolyline())).toEqual(xy(spatial.idealPolyline()));
+    expect(flat.segments[0]!.ideal).toMatchObject({ kind: 'arc', center: [-1, -2], plane: 'xy' });
+    expect(flat.segments[0]!.note).toMatch(/to \(-2, 6\), which is the end point\.$/);
+    expect(flat.metrics.maxDeviation).toBe(spatial.metrics.maxDeviation);
+    const candidates = (t: Trace) => (t.stepDetail(5).figure as { candidates: { cell: number[] }[] }).candidates.map((c) => c.cell);
+    expect(candidates(flat)).toEqual(candidates(spatial).map((cell) => cell.slice(0, 2)));
+  });
+
+  it('takes only the xy plane, and center in as many axes as from', async () => {
+    const flat = { algorithm: 'circle', from: [5, 0], to: [0, 5], center: [0, 0] } as const;
+    const zx = await rejection(trace({ ...flat, plane: 'zx' }));
+    expect([zx.field, zx.message]).toEqual(['plane', 'plane: from, to and center have 2 coordinates (x, y), so the arc is in the xy plane (G17), not zx (G18); give 3 coordinates for that plane']);
+    expect((await rejection(trace({ ...flat, center: [0, 0, 0] }))).message).toBe('center: expected 2 coordinates, as from has, got 3');
+    expect((await rejection(trace({ ...flat, algorithm: 'helix' }))).message).toBe('from: helix takes 3 coordinates, got 2');
+  });
+});
+
 describe('arc-segments chord counts', () => {
   it('refuses more than 65,536 chords, naming the option and the count in a readable form', async () => {
     // Grbl's rule on a full circle of r = 10^6 with a tolerance of 1e-300:

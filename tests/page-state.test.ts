@@ -259,8 +259,8 @@ describe('page state in the URL query', () => {
       notes: { unread: [], fitted: ['from and to had 2 coordinates; regions takes 3: z = 0 added'] },
     });
     expect(fitted('algorithm=circle&from=5&to=0,5,0&center=0,0,0,9').notes.fitted).toEqual([
-      'from had 1 coordinate; circle takes 3: y = 0 and z = 0 added',
-      'center had 4 coordinates; circle takes 3: a dropped',
+      'from had 1 coordinate; the page shows 3: y = 0 and z = 0 added',
+      'center had 4 coordinates; the page shows 3: a dropped',
     ]);
     expect(fitted('mode=compare&algorithm=regions&other=greedy&from=0,0&to=7,-3,1').notes.fitted).toEqual(['from had 2 coordinates; regions and greedy take 3: z = 0 added']);
     // Where the algorithm takes more than one count: from's, else the page's.

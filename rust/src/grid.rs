@@ -89,6 +89,24 @@ impl Point {
         }
     }
 
+    /// This point in `dims` axes: the axes it gains are at 0, and those it
+    /// loses must be (a circle given in x and y runs at z = 0).
+    pub fn with_dims(&self, dims: usize) -> Point {
+        debug_assert!(
+            self.coords()
+                .get(dims..)
+                .is_none_or(|lost| lost.iter().all(|&c| c == 0)),
+            "{self} loses a coordinate that is not 0"
+        );
+        let mut c = [0; MAX_AXES];
+        let kept = dims.min(self.dims());
+        c[..kept].copy_from_slice(&self.coords[..kept]);
+        Point {
+            coords: c,
+            dims: dims as u8,
+        }
+    }
+
     /// The origin with `dims` axes.
     pub fn origin(dims: usize) -> Point {
         Point::new(&[0; MAX_AXES][..dims])

@@ -124,7 +124,7 @@ fn arc_strategy(max_r: i64) -> impl Strategy<Value = Arc> {
 /// The circle stepper of a circle or helix request, counted by its dry run
 /// as a trace counts it.
 fn counted_circle(json: &str) -> (ArcSpec, SaleemCircle) {
-    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true).unwrap();
+    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true, 3).unwrap();
     let circle = SaleemCircle::new(&spec).counted(DEFAULT_MAX_STEPS).unwrap();
     (spec, circle)
 }
@@ -157,7 +157,7 @@ fn plan_step_by_step(spec: &ArcSpec) -> CirclePlan {
 /// The dry run's count (which leaps along the path where the closed form
 /// knows it) against the step-by-step one.
 fn check_plan(json: &str) -> Result<(), TestCaseError> {
-    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true).unwrap();
+    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true, 3).unwrap();
     let by_leaps = SaleemCircle::new(&spec).plan(u64::MAX);
     prop_assert_eq!(by_leaps, Some(plan_step_by_step(&spec)), "{}", json);
     Ok(())
@@ -421,6 +421,57 @@ proptest! {
         let xy = local(0);
         prop_assert_eq!(&xy, &local(1));
         prop_assert_eq!(&xy, &local(2));
+    }
+
+    #[test]
+    fn a_circle_in_x_and_y_is_the_xy_plane_s_at_z_0_without_z(arc in arc_strategy(200)) {
+        let arc = Arc { plane: 0, center: [arc.center[0], arc.center[1], 0], ..arc };
+        let spatial = voxpath::trace_json(&arc.request("circle", 0, "")).unwrap();
+        let [from, to] = [arc.start, arc.end].map(|uv| arc.point(uv, 0)[..2].to_vec());
+        let planar = voxpath::trace_json(&format!(
+            r#"{{"algorithm":"circle","from":{from:?},"to":{to:?},"center":{:?},"dir":"{}","turns":{}}}"#,
+            &arc.center[..2],
+            if arc.ccw { "ccw" } else { "cw" },
+            arc.turns,
+        ))
+        .unwrap();
+        prop_assert_eq!(planar.dims(), 2);
+        prop_assert_eq!(planar.steps(), spatial.steps());
+        let n = spatial.steps() + 1;
+        // Every value in 3 axes with its z, which is 0, left out.
+        let without_z = |values: Vec<f64>| -> Vec<f64> {
+            values.chunks(3).flat_map(|p| { assert_eq!(p[2], 0.0); [p[0], p[1]] }).collect()
+        };
+        let points3: Vec<f64> = spatial.points_flat(0, n).into_iter().map(|c| c as f64).collect();
+        let points2: Vec<f64> = planar.points_flat(0, n).into_iter().map(|c| c as f64).collect();
+        prop_assert_eq!(points2, without_z(points3));
+        prop_assert_eq!(planar.ideal_polyline(), without_z(spatial.ideal_polyline()));
+        prop_assert_eq!(planar.axis_error_range(0, n), without_z(spatial.axis_error_range(0, n)));
+        prop_assert_eq!(planar.deviation_range(0, n), spatial.deviation_range(0, n));
+        // NaN where a column does not apply: compared bit for bit.
+        let bits = |values: Vec<f64>| values.into_iter().map(f64::to_bits).collect::<Vec<_>>();
+        prop_assert_eq!(bits(planar.decisions_flat(0, n - 1)), bits(spatial.decisions_flat(0, n - 1)));
+        let (m2, m3) = (planar.metrics(), spatial.metrics());
+        prop_assert_eq!(m2.max_deviation, m3.max_deviation);
+        prop_assert_eq!(&m2.max_axis_error[..], &m3.max_axis_error[..2]);
+        prop_assert_eq!(&m2.pulses_by_axis[..], &m3.pulses_by_axis[..2]);
+        // Texts name points and moves in 2 axes: "(5, 0)" for "(5, 0, 0)",
+        // "(x, y+1)" for "(x, y+1, z)".
+        let (note2, note3) = (planar.segment(0).note().into_owned(), spatial.segment(0).note().into_owned());
+        prop_assert_eq!(note2, note3.replace(", 0)", ")"));
+        // About 64 steps spread over the arc, each replayed from its checkpoint.
+        for k in (0..n - 1).step_by(((n - 1) / 64).max(1) as usize) {
+            let (s2, s3) = (planar.replay_step(k), spatial.replay_step(k));
+            prop_assert_eq!(s2.explanation, s3.explanation.replace(", z).", ")."));
+            let cells = |figure: Option<voxpath::figure::DecisionFigure>| match figure {
+                Some(voxpath::figure::DecisionFigure::ArcCandidates(c)) => {
+                    c.candidates.map(|c| (c.name, c.cell[..2].to_vec(), c.residual, c.taken)).to_vec()
+                }
+                Some(other) => panic!("a circle's figure is its candidates, got {other:?}"),
+                None => Vec::new(),
+            };
+            prop_assert_eq!(cells(s2.figure), cells(s3.figure));
+        }
     }
 
     #[test]

@@ -18,7 +18,7 @@ fn a_circle_with_a_correction_replays_across_checkpoints() {
     // path ends with a correction; about 11,300 steps, two checkpoints.
     let json = r#"{"algorithm":"circle","from":[4,-1000,-501],"to":[4,-1001,-497],"center":[9,-3000,-500],"dir":"cw","plane":"yz"}"#;
     let trace = voxpath::trace_json(json).unwrap();
-    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), false).unwrap();
+    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), false, 3).unwrap();
     let mut stepper = SaleemCircle::new(&spec);
     let mut p = spec.from;
     let (mut rows, mut explanations, mut points) = (Vec::new(), Vec::new(), vec![p]);
@@ -129,7 +129,7 @@ fn a_helix_replays_its_arc_and_linear_decisions() {
     }
     // The explanations recomputed from the checkpoint before step 4096
     // describe the same steps as a run from the start would.
-    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true).unwrap();
+    let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true, 3).unwrap();
     let circle = SaleemCircle::new(&spec).counted(1 << 20).unwrap();
     let mut helix =
         voxpath::arc::helix::SaleemHelix::new(&spec, circle, voxpath::request::TiePolicy::Hold);

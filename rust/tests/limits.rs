@@ -135,7 +135,8 @@ fn the_full_turn_bound_is_below_the_real_count() {
             let json = format!(
                 r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0],"turns":{turns}}}"#
             );
-            let spec = ArcSpec::parse(&voxpath::Request::from_json(&json).unwrap(), false).unwrap();
+            let spec =
+                ArcSpec::parse(&voxpath::Request::from_json(&json).unwrap(), false, 3).unwrap();
             let bound = SaleemCircle::new(&spec).steps_at_least();
             let steps = common::trace(&json).steps();
             assert!(

@@ -257,6 +257,32 @@ describe('trace mode', () => {
     await p.close();
   });
 
+  it('draws a circle given in x and y in the 2D view, its candidates at z = 0, and lifts it to 3 axes on request', async () => {
+    // The same quarter of r = 5 as above, as a pixel circle: from, to and
+    // center with 2 coordinates. Step 3 takes (4, 3), residual 0, over (5, 3), 9.
+    const p = await openPage('?algorithm=circle&from=5,0&to=0,5&center=0,0&step=3&decision3d=1');
+    const { page } = p;
+    await steps(page, 7);
+    await inspected(page);
+    const canvas = '[data-testid=scene-canvas]';
+    expect(await page.getByTestId('axes').inputValue()).toBe('2');
+    expect(await page.getByTestId('input-center-z').count()).toBe(0);
+    expect(await page.getByTestId('scene-canvas').getAttribute('data-projection')).toBe('2d');
+    await expect.poll(async () => candidatePixels(await shot(page, canvas))).toBeGreaterThan(200);
+    const labels = page.locator('.candidate-label');
+    expect((await labels.allInnerTexts()).sort()).toEqual(['move: 0, taken', 'stay: 9']);
+    await screenshot(page, 'arc-candidates-2d', canvas);
+
+    // 3 axes: the same circle at z = 0, in the 3D view.
+    await page.getByTestId('axes').selectOption('3');
+    await page.waitForURL(/center=0%2C0%2C0|center=0,0,0/);
+    expect(await page.getByTestId('input-center-z').inputValue()).toBe('0');
+    await steps(page, 7);
+    await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-projection')).toBe('3d');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("keeps the circle's two candidate labels apart in a small embedded view", async () => {
     // Step 2 from (5, 1) takes (5, 2), 25 + 4 - 25 = 4, over (4, 2),
     // 16 + 4 - 25 = -5 (eq. 7): the other candidate lies toward -x, which the

@@ -37,12 +37,12 @@ const LABEL_OFFSET = 1.05;
 const signed = (v: number) => (v < 0 ? `−${-v}` : String(v));
 
 export class ArcCandidateCells extends OverlayGroup {
-  /** The two `candidates` of one step (3 coordinates each). */
+  /** The two `candidates` of one step (3 coordinates each, or 2 for a circle given in x and y, at z = 0). */
   constructor({ candidates }: ArcCandidates) {
     super();
     const [takenOne, otherOne] = candidates[0].taken ? candidates : [candidates[1], candidates[0]];
-    const taken = new THREE.Vector3().fromArray(takenOne.cell);
-    const other = new THREE.Vector3().fromArray(otherOne.cell);
+    const taken = new THREE.Vector3().fromArray([...takenOne.cell, 0]);
+    const other = new THREE.Vector3().fromArray([...otherOne.cell, 0]);
     // One cell along the slow axis: the candidates differ there only.
     const toOther = other.clone().sub(taken);
 

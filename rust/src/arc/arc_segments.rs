@@ -137,7 +137,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     compared_by: None,
     trace: |req, find| {
         req.check_options(INFO.options)?;
-        let spec = ArcSpec::parse(req, false)?;
+        let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
         trace_chords(ID, req, &spec, false, find)
     },
 };
@@ -656,7 +656,7 @@ mod tests {
                     );
                     let req = Request::from_json(&json).unwrap();
                     let helical = algorithm == "helix";
-                    let spec = ArcSpec::parse(&req, helical).unwrap();
+                    let spec = ArcSpec::parse(&req, helical, 3).unwrap();
                     let fast = chords_by(algorithm, &req, &spec, helical, find_line, true);
                     let slow = chords_by(algorithm, &req, &spec, helical, find_line, false);
                     match (fast, slow) {
@@ -679,7 +679,7 @@ mod tests {
                     r#"{{"algorithm": "{algorithm}", "from": [100, 0, 0], "to": [0, 100, 0], "center": [0, 0, 0], "lineAlgorithm": "{line}", "tie": "hold"{extra}}}"#
                 );
                 let req = Request::from_json(&json).unwrap();
-                let spec = ArcSpec::parse(&req, algorithm == "helix").unwrap();
+                let spec = ArcSpec::parse(&req, algorithm == "helix", 3).unwrap();
                 let Err(error) = chords_by(
                     algorithm,
                     &req,
@@ -705,7 +705,7 @@ mod tests {
     use std::f64::consts::{PI, TAU};
 
     fn spec(json: &str) -> ArcSpec {
-        ArcSpec::parse(&Request::from_json(json).unwrap(), false).unwrap()
+        ArcSpec::parse(&Request::from_json(json).unwrap(), false, 3).unwrap()
     }
 
     /// The sweep as the post's Implementation computes it (dir > 0 is the

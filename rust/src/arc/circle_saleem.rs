@@ -61,7 +61,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     ],
     columns: CircleWhy::COLUMNS,
     options: &[FROM, TO, CENTER, DIR, PLANE, TURNS, MAX_STEPS],
-    min_dims: 3,
+    min_dims: 2,
     max_dims: 3,
     default_tie: None,
     compared_by: None,
@@ -70,8 +70,8 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 
 fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
-    let spec = ArcSpec::parse(req, false)?;
-    let mut builder = TraceBuilder::for_request(spec.from, req)?;
+    let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
+    let mut builder = TraceBuilder::for_request(spec.start_point(), req)?;
     let stepper = SaleemCircle::new(&spec).within(builder.max_steps())?;
     builder.run(stepper, IdealPath::Arc(spec.ideal_arc()))?;
     Ok(builder.finish(ID))
@@ -280,7 +280,7 @@ impl Decision for CircleWhy {
         }
     }
 
-    fn explain(&self, _from: &Point, step: Step) -> String {
+    fn explain(&self, from: &Point, step: Step) -> String {
         let f = &self.orientation;
         let [u, v, _] = f.plane.axes();
         let error = format!("{}² + {}² - r²", AXIS_NAMES[u], AXIS_NAMES[v]);
@@ -344,7 +344,7 @@ impl Decision for CircleWhy {
                 );
             }
         }
-        let _ = write!(s, ": {}.", step_target(step, 3));
+        let _ = write!(s, ": {}.", step_target(step, from.dims()));
         s
     }
 }
@@ -1381,7 +1381,7 @@ mod tests {
             r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},5000,0],"center":[0,0,0]}}"#
         ))
         .unwrap();
-        let circle = SaleemCircle::new(&ArcSpec::parse(&req, false).unwrap());
+        let circle = SaleemCircle::new(&ArcSpec::parse(&req, false, INFO.min_dims).unwrap());
         let edge = [-(1 << 30), -r, -1, 0, 1, r, 1 << 30];
         for a in edge {
             for b in edge {

@@ -128,7 +128,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 
 fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     req.check_options(INFO.options)?;
-    let spec = ArcSpec::parse(req, true)?;
+    let spec = ArcSpec::parse(req, true, INFO.min_dims)?;
     // The chord options given with method saleem were refused by
     // check_options (WITH_CHORDS).
     if req.choice(&METHOD)? == Some("segments") {

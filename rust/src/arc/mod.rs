@@ -2,8 +2,9 @@
 //! (`circle`), arcs split into chords (`arc-segments`) and Saleem's helix
 //! (`helix`), in the planes G17, G18 and G19 and both directions.
 //!
-//! Every arc is given by absolute `from`, `to` and `center` points (3 axes),
-//! `dir` and `plane`. The radius is that of the start point, r² = u² + v²
+//! Every arc is given by absolute `from`, `to` and `center` points (3 axes;
+//! a circle may be given in 2, x and y, and is then the xy plane's at
+//! z = 0, its points in 2 axes), `dir` and `plane`. The radius is that of the start point, r² = u² + v²
 //! relative to the center, an exact integer. The end may be off that circle
 //! by at most [`RADIUS_TOLERANCE`] grid unit; each algorithm says how it
 //! closes the difference.
@@ -77,7 +78,10 @@ pub const TURNS: OptionSpec = OptionSpec {
 /// A validated arc request.
 #[derive(Clone, Debug)]
 pub struct ArcSpec {
+    /// The start, in 3 axes (at z = 0 for a circle given in 2: see
+    /// [`Self::start_point`] for the start in the request's axes).
     pub from: Point,
+    /// The end, in 3 axes.
     pub to: Point,
     pub plane: Plane,
     pub turn: Turn,
@@ -95,14 +99,19 @@ pub struct ArcSpec {
 
 impl ArcSpec {
     /// Reads and checks the arc options. `allow_rise`: whether `to` may
-    /// differ from `from` along the normal axis (a helix).
-    pub fn parse(req: &Request, allow_rise: bool) -> Result<ArcSpec, Error> {
-        let (from, to) = req.endpoints(3, 3)?;
+    /// differ from `from` along the normal axis (a helix); `min_dims`: the
+    /// fewest axes the algorithm takes (2: a circle may be given in x and y).
+    pub fn parse(req: &Request, allow_rise: bool, min_dims: usize) -> Result<ArcSpec, Error> {
+        let (from, to) = req.endpoints(min_dims, 3)?;
         let center = req.point("center")?;
-        if center.dims() != 3 {
+        if center.dims() != from.dims() {
             return Err(Error::field(
                 "center",
-                format!("expected 3 coordinates, got {}", center.dims()),
+                format!(
+                    "expected {} coordinates, as from has, got {}",
+                    from.dims(),
+                    center.dims()
+                ),
             ));
         }
         let plane = Plane::parse(req.choice(&PLANE)?);
@@ -111,10 +120,11 @@ impl ArcSpec {
         ArcSpec::new(from, to, center, plane, turn, turns, allow_rise)
     }
 
-    /// The arc from `from` to `to` (3 axes) about `center` (its coordinates
-    /// on the plane's axes), checked as [`Self::parse`] checks a request's:
-    /// for a caller with typed values (a G-code program's arcs), which has
-    /// no request to read.
+    /// The arc from `from` to `to` about `center` (its coordinates on the
+    /// plane's axes), all in 3 axes, or all in 2 for an arc in the xy plane
+    /// at z = 0; checked as [`Self::parse`] checks a request's: for a
+    /// caller with typed values (a G-code program's arcs), which has no
+    /// request to read.
     pub fn new(
         from: Point,
         to: Point,
@@ -127,6 +137,22 @@ impl ArcSpec {
         if let Some(words) = TURNS_RANGE.refusal(turns.into()) {
             return Err(Error::field(TURNS.name, words));
         }
+        // A circle given in x and y is the xy plane's at z = 0: it runs in
+        // 3 axes like any other, and gives its points in 2 (Frame::point,
+        // and the trace's start).
+        let dims = from.dims();
+        debug_assert!(to.dims() == dims && center.dims() == dims);
+        if dims == 2 && plane != Plane::Xy {
+            return Err(Error::field(
+                PLANE.name,
+                format!(
+                    "from, to and center have 2 coordinates (x, y), so the arc is in the xy plane (G17), not {} ({}); give 3 coordinates for that plane",
+                    plane.label(),
+                    plane.gcode()
+                ),
+            ));
+        }
+        let (from, to, center) = (from.with_dims(3), to.with_dims(3), center.with_dims(3));
         if !allow_rise {
             same_height(plane, &from, &to)?;
         }
@@ -139,6 +165,7 @@ impl ArcSpec {
             plane,
             turn,
             center: Point::new(&c),
+            dims,
         };
         let start = frame.local(&from);
         let end = frame.local(&to);
@@ -230,10 +257,20 @@ impl ArcSpec {
         )
     }
 
+    /// Axes of the arc's points: 3, or 2 for a circle given in x and y.
+    pub fn dims(&self) -> usize {
+        self.frame.dims
+    }
+
+    /// Where the arc starts, in its points' axes ([`Self::dims`]).
+    pub fn start_point(&self) -> Point {
+        self.from.with_dims(self.dims())
+    }
+
     pub fn ideal_arc(&self) -> ArcPath {
         ArcPath::new(
             self.plane,
-            self.frame.center,
+            self.frame.center.with_dims(self.dims()),
             self.radius_sq,
             self.start_rad(),
             self.sweep_rad(),
@@ -259,7 +296,7 @@ impl ArcSpec {
             "{} in the {}; center {}, r² = {} + {} = {} (r = {:.3}); sweep {:.1}°",
             self.turn.describe(),
             self.plane.describe(),
-            self.frame.center,
+            self.frame.center.with_dims(self.dims()),
             squared(self.from.get(u) - self.frame.center.get(u)),
             squared(self.from.get(v) - self.frame.center.get(v)),
             self.radius_sq,
@@ -302,7 +339,7 @@ mod tests {
     use std::f64::consts::PI;
 
     fn spec(json: &str) -> Result<ArcSpec, Error> {
-        ArcSpec::parse(&Request::from_json(json).unwrap(), false)
+        ArcSpec::parse(&Request::from_json(json).unwrap(), false, 2)
     }
 
     #[test]
@@ -369,7 +406,19 @@ mod tests {
         );
         assert_eq!(
             e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,0]}"#),
-            "center: expected 3 coordinates, got 2"
+            "center: expected 3 coordinates, as from has, got 2"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0],"to":[0,5],"center":[0,0,0]}"#),
+            "center: expected 2 coordinates, as from has, got 3"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0],"to":[0,5],"center":[0,0],"plane":"zx"}"#),
+            "plane: from, to and center have 2 coordinates (x, y), so the arc is in the xy plane (G17), not zx (G18); give 3 coordinates for that plane"
+        );
+        assert_eq!(
+            e(r#"{"algorithm":"circle","from":[5,0],"to":[0,5,0],"center":[0,0]}"#),
+            "to: has 3 coordinates but from has 2"
         );
         assert_eq!(
             e(r#"{"algorithm":"circle","from":[5,0,0],"to":[0,5,0],"center":[0,"o",0]}"#),

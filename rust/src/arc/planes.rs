@@ -118,8 +118,12 @@ impl Turn {
 pub struct Frame {
     pub plane: Plane,
     pub turn: Turn,
-    /// The center; its normal coordinate is the height of the arc's start.
+    /// The center, in 3 axes; its normal coordinate is the height of the
+    /// arc's start.
     pub center: Point,
+    /// Axes of the grid points [`Frame::point`] gives: 3, or 2 for a circle
+    /// given in x and y (the xy plane at z = 0).
+    pub dims: usize,
 }
 
 impl Frame {
@@ -139,7 +143,7 @@ impl Frame {
         c[u] = self.center.get(u) + ab[0];
         c[v] = self.center.get(v) + self.turn.sign() * ab[1];
         c[normal] = n;
-        Point::new(&c)
+        Point::new(&c[..self.dims])
     }
 
     /// The grid step for a local move (da, db).
@@ -402,6 +406,7 @@ mod tests {
                 plane,
                 turn: Turn::Clockwise,
                 center,
+                dims: 3,
             };
             let p = Point::new(&[13, -1, 9]);
             let ab = cw.local(&p);

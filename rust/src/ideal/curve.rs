@@ -33,6 +33,8 @@ const ANCHOR_EVERY: usize = 64;
 pub struct ArcPath {
     pub plane: Plane,
     /// The center; its normal coordinate is the height of the arc's plane.
+    /// In 2 axes for a circle given in x and y (the xy plane at z = 0),
+    /// whose points have 2 too.
     pub center: Point,
     /// r², exact: the squared distance of the start point from the center.
     pub radius_sq: i64,
@@ -82,10 +84,17 @@ impl ArcPath {
         (self.radius_sq as f64).sqrt()
     }
 
-    /// (u, v, n) of `p` relative to the center, in the plane's frame.
+    /// (u, v, n) of `p` relative to the center, in the plane's frame; n is 0
+    /// for a point in 2 axes, which the arc's plane holds.
     fn relative(&self, p: &Point) -> [i64; 3] {
         let axes = self.plane.axes();
-        axes.map(|a| p.get(a) - self.center.get(a))
+        axes.map(|a| {
+            if a < p.dims() {
+                p.get(a) - self.center.get(a)
+            } else {
+                0
+            }
+        })
     }
 
     /// This arc ready to measure many points (its radius computed once).
@@ -119,13 +128,16 @@ impl ArcPath {
     }
 
     /// Grid coordinates of the point at radius `r` whose angle has sine
-    /// `sin` and cosine `cos`, at `height` above the center.
+    /// `sin` and cosine `cos`, at `height` above the center (x, y and 0
+    /// for an arc in 2 axes, which is in the xy plane).
     fn point_of(&self, sin: f64, cos: f64, r: f64, height: f64) -> [f64; 3] {
         let [au, av, an] = self.plane.axes();
         let mut c = [0.0; 3];
         c[au] = self.center.get(au) as f64 + r * cos;
         c[av] = self.center.get(av) as f64 + r * sin;
-        c[an] = self.center.get(an) as f64 + height;
+        if an < self.center.dims() {
+            c[an] = self.center.get(an) as f64 + height;
+        }
         c
     }
 
@@ -163,14 +175,16 @@ impl ArcPath {
                 )
             };
             let vertex = self.point_of(sin, cos, r, height(t));
-            if i > 0 || after != Some(&vertex[..]) {
-                f(&vertex);
+            // In the points' axes: an arc in 2 (the xy plane) leaves out z.
+            let vertex = &vertex[..self.center.dims()];
+            if i > 0 || after != Some(vertex) {
+                f(vertex);
             }
         }
     }
 
-    /// Vertices for drawing (stride 3), each handed to `f`, the first left
-    /// out where it equals `after`.
+    /// Vertices for drawing (stride: the center's axes), each handed to
+    /// `f`, the first left out where it equals `after`.
     pub fn for_each_vertex(&self, after: Option<&[f64]>, f: impl FnMut(&[f64])) {
         self.vertices_with(after, |_| 0.0, f)
     }
@@ -300,8 +314,12 @@ impl ArcMeter<'_> {
     /// [`ArcPath::relative`] takes apart, put together again.
     pub fn point_at(&self, offsets: [i64; 3]) -> Point {
         let mut p = self.arc.center;
+        let dims = p.dims();
         for (axis, offset) in self.arc.plane.axes().into_iter().zip(offsets) {
-            p.coords_mut()[axis] += offset;
+            // An arc in 2 axes has no normal axis, and every offset on it is 0.
+            if axis < dims {
+                p.coords_mut()[axis] += offset;
+            }
         }
         p
     }

@@ -60,7 +60,7 @@ impl IdealPath {
     }
 
     /// Points along the ideal path for drawing (`dims` values each: 3 for
-    /// an arc or a helix), each handed to `f` in order, the first left out
+    /// a helix, an arc's center's for an arc), each handed to `f` in order, the first left out
     /// where it equals `after` (where the path before ended).
     pub fn for_each_vertex(&self, after: Option<&[f64]>, mut f: impl FnMut(&[f64])) {
         match self {
@@ -83,7 +83,8 @@ impl IdealPath {
     pub fn polyline_into(&self, out: &mut Vec<f64>) {
         let dims = match self {
             IdealPath::Line { from, .. } => from.dims(),
-            IdealPath::Arc(_) | IdealPath::Helix(_) => 3,
+            IdealPath::Arc(arc) => arc.center.dims(),
+            IdealPath::Helix(_) => 3,
         };
         let after: Option<[f64; MAX_AXES]> = out
             .len()
