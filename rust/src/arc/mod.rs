@@ -4,10 +4,10 @@
 //!
 //! Every arc is given by absolute `from`, `to` and `center` points (3 axes;
 //! a circle may be given in 2, x and y, and is then the xy plane's at
-//! z = 0, its points in 2 axes), `dir` and `plane`. The radius is that of the start point, r² = u² + v²
-//! relative to the center, an exact integer. The end may be off that circle
-//! by at most [`RADIUS_TOLERANCE`] grid unit; each algorithm says how it
-//! closes the difference.
+//! z = 0, its points in 2 axes), `dir` and `plane`. The radius is that of
+//! the start point, r² = u² + v² relative to the center, an exact integer.
+//! The end may be off that circle by at most [`RADIUS_TOLERANCE`] grid unit;
+//! each algorithm says how it closes the difference.
 
 pub mod angle;
 pub mod arc_segments;
