@@ -37,7 +37,7 @@ pub const CENTER: OptionSpec = OptionSpec {
     required: true,
     default: None,
     applies_with: None,
-    doc: "Center of the circle, absolute grid units; its coordinate on the plane's normal axis is ignored.",
+    doc: "Center of the circle, absolute grid units, as many axes as from; its coordinate on the plane's normal axis is ignored.",
 };
 
 pub const DIR: OptionSpec = OptionSpec {
@@ -57,7 +57,7 @@ pub const PLANE: OptionSpec = OptionSpec {
     required: false,
     default: Some("xy"),
     applies_with: None,
-    doc: "xy = G17, zx = G18 (z is the first axis, so the plane is right-handed), yz = G19.",
+    doc: "xy = G17, zx = G18 (z is the first axis, so the plane is right-handed), yz = G19; a circle given in x and y alone is in xy.",
 };
 
 /// The extra full turns an arc may take.
