@@ -207,15 +207,6 @@ pub fn decode<C: Coordinate>(start: &Point, steps: &[Step], out: &mut [MaybeUnin
     }
 }
 
-/// [`decode`] into memory already initialised (a buffer reused chunk after
-/// chunk).
-pub fn decode_into<C: Coordinate>(start: &Point, steps: &[Step], out: &mut [C]) -> Point {
-    // SAFETY: MaybeUninit<C> has C's layout, and `decode` writes only
-    // initialised values of C, so `out` holds valid values throughout.
-    let out = unsafe { &mut *(out as *mut [C] as *mut [MaybeUninit<C>]) };
-    decode(start, steps, out)
-}
-
 /// [`decode`] for 2 to 4 axes: one table read and a four-lane add per step.
 #[inline(always)]
 fn by_table<C: Coordinate, const DIMS: usize, const ENTRIES: usize>(
@@ -629,6 +620,14 @@ fn bounds_by_move<const DIMS: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`decode`] into memory already initialised, as the tests read it.
+    fn decode_into<C: Coordinate>(start: &Point, steps: &[Step], out: &mut [C]) -> Point {
+        // SAFETY: MaybeUninit<C> has C's layout, and `decode` writes only
+        // initialised values of C, so `out` holds valid values throughout.
+        let out = unsafe { &mut *(out as *mut [C] as *mut [MaybeUninit<C>]) };
+        decode(start, steps, out)
+    }
 
     /// Every code a step on `dims` axes can have, with stray negative bits
     /// (on axes that do not move) included.
