@@ -304,6 +304,24 @@ proptest! {
     }
 
     #[test]
+    fn walk6_rounds_in_batches_take_the_rule_s_steps(
+        (from, to) in line_strategy(2..=3), stretch in 1i64..60, chunk in 190usize..5000
+    ) {
+        // Walk6 on two or three axes decides most rounds of its major axis
+        // a batch of 64 to 1,024 at a time: lines of up to 24,000 steps a
+        // axis, stretched from the random ones so that batches of every
+        // size start within rounds, after a chunk's end and where faces tie.
+        // Moved in from the grid's edge to make room for the stretch.
+        let room = COORD_LIMIT - 24_000;
+        let start: Vec<i64> = from.coords().iter().map(|&c| c.clamp(-room, room)).collect();
+        let end: Vec<i64> = (0..from.dims()).map(|a| start[a] + (to.get(a) - from.get(a)) * stretch).collect();
+        let (start, end) = (Point::new(&start), Point::new(&end));
+        for order in [TieAxis::Lower, TieAxis::Higher] {
+            common::check_fill(|| Walk6::new(start, end, order), chunk).map_err(TestCaseError::fail)?;
+        }
+    }
+
+    #[test]
     fn walk6_visits_exactly_the_cells_the_segment_passes_through(
         (from, to) in line_strategy(2..=6), lower in any::<bool>()
     ) {

@@ -9,6 +9,7 @@
 //! the steps that axis has taken. The face crossed first is the smallest
 //! t_a; two fractions compare exactly by cross-multiplying, in i128.
 
+use super::terms::{Term, Terms};
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
@@ -287,6 +288,15 @@ impl Stepper for Walk6 {
     }
 }
 
+/// Rounds a batch of [`Walk6::fill_rounds`] decides at most (their codes
+/// are kept on the stack: 2 KiB).
+const ROUNDS_PER_BATCH: usize = 1024;
+
+/// Fewer rounds than this are decided one at a time: a batch's setup (its
+/// terms' constants, their first eight values, a division per term for
+/// the moves) costs about as much as these rounds.
+const MIN_ROUNDS_PER_BATCH: usize = 64;
+
 impl Walk6 {
     /// [`Stepper::fill`] for `DIMS` axes: the same walk as
     /// [`Stepper::next_step`], without multiplying. For each pair of axes
@@ -370,10 +380,12 @@ impl Walk6 {
     /// M's step: 1 to 3 steps for one set of decisions, where
     /// [`Self::fill_axes`] decides every step. A third axis on a 2D walk
     /// has |Δ| = 0 and never steps. Whole rounds go into `out` while four
-    /// slots are left (a round stores four codes) and M has faces ahead; returns the steps written
-    /// (the rest is [`Self::fill_axes`]'s: the last steps of a chunk, and
-    /// a passive axis's last face where it comes on M's last one, after
-    /// it in the tie order). The gaps stay within 2^33, as there.
+    /// slots are left (a round stores four codes) and M has faces ahead,
+    /// most of them decided a batch at a time by the line rules' loop (see
+    /// the batches below); returns the steps written (the rest is
+    /// [`Self::fill_axes`]'s: the last steps of a chunk, and a passive
+    /// axis's last face where it comes on M's last one, after it in the
+    /// tie order). The gaps stay within 2^33, as there.
     fn fill_rounds(&mut self, out: &mut [Step]) -> usize {
         let dims = self.mirror.dims();
         let major = self.mirror.major();
@@ -438,28 +450,97 @@ impl Walk6 {
         // every round (- 2|Δp|), p's when p steps (+ 2|ΔM|); likewise q.
         let (pm_moved, pm_stayed) = (2 * m - 2 * mp, -2 * mp);
         let (qm_moved, qm_stayed) = (2 * m - 2 * mq, -2 * mq);
+        let (step_pq_p, step_pq_q) = (2 * mq, 2 * mp);
+        // What a round adds to gap_pq, by its code below: p's face crossed
+        // (+ 2|Δq|), q's (- 2|Δp|).
+        let pq_moves = [0, step_pq_p, -step_pq_q, step_pq_p - step_pq_q];
+        let mut round_codes = [Step::NONE; ROUNDS_PER_BATCH];
         let base = out.as_mut_ptr();
-        while round < rounds && written + 4 <= out.len() {
-            let steps_p = gap_pm < bias_pm;
-            let steps_q = gap_qm < bias_qm;
-            let p_before_q = gap_pq < bias_pq;
-            let codes = rounds_by_decisions
-                [usize::from(steps_p) | usize::from(steps_q) << 1 | usize::from(p_before_q) << 2];
-            // SAFETY: written + 4 <= out.len(): the four codes land in
-            // `out`, which this call borrows mutably.
-            unsafe { base.add(written).cast::<[Step; 4]>().write_unaligned(codes) };
-            written += 1 + usize::from(steps_p) + usize::from(steps_q);
-            // Each gap's next value by a select of two constants: the
-            // gaps are the loop's chains of dependent instructions, and a
-            // select is one instruction where a multiply by the 0-or-1
-            // decision took three cycles.
-            gap_pm += if steps_p { pm_moved } else { pm_stayed };
-            gap_qm += if steps_q { qm_moved } else { qm_stayed };
-            gap_pq += if steps_p { 2 * mq } else { 0 };
-            gap_pq -= if steps_q { 2 * mp } else { 0 };
-            moved_p += i64::from(steps_p);
-            moved_q += i64::from(steps_q);
-            round += 1;
+        // Rounds one at a time up to `until`: first the rest of a round a
+        // chunk may have ended in, so that the batches start where a round
+        // does; after the batches, those too few for one.
+        let mut until = rounds.min(1);
+        for batches_next in [true, false] {
+            while round < until && written + 4 <= out.len() {
+                let steps_p = gap_pm < bias_pm;
+                let steps_q = gap_qm < bias_qm;
+                let p_before_q = gap_pq < bias_pq;
+                let codes = rounds_by_decisions[usize::from(steps_p)
+                    | usize::from(steps_q) << 1
+                    | usize::from(p_before_q) << 2];
+                // SAFETY: written + 4 <= out.len(): the four codes land in
+                // `out`, which this call borrows mutably.
+                unsafe { base.add(written).cast::<[Step; 4]>().write_unaligned(codes) };
+                written += 1 + usize::from(steps_p) + usize::from(steps_q);
+                // Each gap's next value by a select of two constants: the
+                // gaps are the loop's chains of dependent instructions, and
+                // a select is one instruction where a multiply by the 0-or-1
+                // decision took three cycles.
+                gap_pm += if steps_p { pm_moved } else { pm_stayed };
+                gap_qm += if steps_q { qm_moved } else { qm_stayed };
+                gap_pq += if steps_p { step_pq_p } else { 0 };
+                gap_pq -= if steps_q { step_pq_q } else { 0 };
+                moved_p += i64::from(steps_p);
+                moved_q += i64::from(steps_q);
+                round += 1;
+            }
+            if !batches_next {
+                break;
+            }
+            // Then rounds a batch at a time, in two passes. Whether p
+            // steps in a round is a line rule's term ([`Term`]): it steps
+            // when -gap_pM > -bias, and a round adds 2|Δp| to -gap_pM and
+            // takes 2|ΔM| off when p stepped; likewise q. So the first
+            // pass is the line rules' recording loop ([`Terms::fill`],
+            // eight rounds at a time where the terms fit 32 bits, with no
+            // chain from one round to the next), a round's code having
+            // bit 1 where p steps and bit 2 where q does. The second
+            // writes each round's steps, p's and q's order from gap_pq,
+            // which the codes move on: its chains are two additions, where
+            // the loop above carries three of a comparison, a select and
+            // an addition. At a round's start each gap lies in its term's
+            // window (see [`Term::fits_i32`]), as those loops need.
+            loop {
+                // Each round writes four codes from where it starts, 1 to
+                // 3 of which count: n rounds fit in 3n + 1 slots.
+                let batch = (rounds - round)
+                    .min(out.len().saturating_sub(written + 1) / 3)
+                    .min(ROUNDS_PER_BATCH);
+                if batch < MIN_ROUNDS_PER_BATCH {
+                    break;
+                }
+                let term = |gap: i64, moves: i64, bias: i64, bit: u16| Term {
+                    value: -gap,
+                    increment: 2 * moves,
+                    decrement: 2 * m,
+                    steps_above: -bias,
+                    step: Step(bit),
+                };
+                let mut terms = Terms {
+                    always: Step::NONE,
+                    terms: [term(gap_pm, mp, bias_pm, 1), term(gap_qm, mq, bias_qm, 2)],
+                };
+                // Bits 1 and 2 read as steps of +x and +y: how many of the
+                // rounds p and q stepped in.
+                let [steps_p, steps_q, ..] = terms.fill(&mut round_codes[..batch]);
+                for code in &round_codes[..batch] {
+                    let decided = code.0 as usize & 3;
+                    let p_before_q = usize::from(gap_pq < bias_pq);
+                    // SAFETY: at most 3 codes count per round, and the batch
+                    // was cut so that the last round's four land in `out`.
+                    unsafe {
+                        base.add(written)
+                            .cast::<[Step; 4]>()
+                            .write_unaligned(rounds_by_decisions[decided | p_before_q << 2])
+                    };
+                    written += 1 + (decided & 1) + (decided >> 1);
+                    gap_pq += pq_moves[decided];
+                }
+                [gap_pm, gap_qm] = terms.terms.map(|t| -t.value);
+                (moved_p, moved_q) = (moved_p + steps_p, moved_q + steps_q);
+                round += batch;
+            }
+            until = rounds;
         }
         self.crossed[major] += round as i64;
         self.crossed[p] += moved_p;
