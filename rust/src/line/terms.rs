@@ -515,44 +515,50 @@ impl<const N: usize> Terms<N> {
     /// summed instead ([`MAX_STEPS_SUMMED`]).
     #[inline(always)]
     pub fn fill(&mut self, out: &mut [Step]) -> [i64; MAX_AXES] {
-        let terms = self.terms;
+        // Read in place, not copied: in wasm a copy of the terms (80 bytes
+        // for two) was a memory.copy, which V8 runs as a call into the
+        // engine, once per fill (a G-code move or an arc's chord).
+        let terms = &self.terms;
         let always = self.always.0;
-        let mut values = terms.map(|t| t.value);
+        let mut values: [i64; N] = std::array::from_fn(|i| terms[i].value);
         let mut filled = 0;
         if N <= MAX_NARROW_TERMS
             && out.len() >= MIN_INTERLEAVED_STEPS
             && (0..N).all(|i| terms[i].fits_i32(values[i]))
         {
             filled = out.len() / NARROW_LANES * NARROW_LANES;
-            Self::fill_interleaved_moving(always, &terms, &mut values, &mut out[..filled]);
+            Self::fill_interleaved_moving(always, terms, &mut values, &mut out[..filled]);
         }
         if filled == 0 && out.len() >= LANES * MIN_LANE_STEPS {
             let lane_steps = out.len() / LANES;
             filled = lane_steps * LANES;
             let mut lanes: [[i64; N]; LANES] = std::array::from_fn(|lane| {
-                terms.map(|t| t.jumped((lane * lane_steps) as u64).value)
+                std::array::from_fn(|i| terms[i].jumped((lane * lane_steps) as u64).value)
             });
-            Self::fill_chains(always, &terms, &mut lanes, &mut out[..filled]);
+            Self::fill_chains(always, terms, &mut lanes, &mut out[..filled]);
             values = lanes[LANES - 1];
         }
         let tail = &mut out[filled..];
         for slot in tail {
-            *slot = Self::advance(always, &terms, &mut values);
+            *slot = Self::advance(always, terms, &mut values);
         }
-        self.set_values(values);
         let steps = out.len();
-        if steps <= MAX_STEPS_SUMMED {
-            return displacement(out);
-        }
-        let moves = std::array::from_fn::<_, N, _>(|i| terms[i].moves(steps as u64, values[i]));
-        std::array::from_fn(|axis| {
-            let passive: i64 = terms
-                .iter()
-                .zip(moves)
-                .map(|(t, n)| t.step.delta(axis) * n)
-                .sum();
-            self.always.delta(axis) * steps as i64 + passive
-        })
+        let moved = if steps <= MAX_STEPS_SUMMED {
+            displacement(out)
+        } else {
+            // From the values before the fill (the terms') and after it.
+            let moves = std::array::from_fn::<_, N, _>(|i| terms[i].moves(steps as u64, values[i]));
+            std::array::from_fn(|axis| {
+                let passive: i64 = terms
+                    .iter()
+                    .zip(moves)
+                    .map(|(t, n)| t.step.delta(axis) * n)
+                    .sum();
+                self.always.delta(axis) * steps as i64 + passive
+            })
+        };
+        self.set_values(values);
+        moved
     }
 }
 
