@@ -704,7 +704,7 @@ impl TraceBuilder {
 
     fn run_segment<S: Stepper>(
         &mut self,
-        stepper: S,
+        mut stepper: S,
         ideal: impl FnOnce() -> IdealPath,
         made_when_read: bool,
     ) -> Result<(), Error> {
@@ -719,7 +719,9 @@ impl TraceBuilder {
         let start = self.position;
         let mut segment_steps = 0;
         let mut states: Vec<Box<dyn Replay>> = Vec::new();
-        let mut stepper = stepper;
+        // `stepper` is stepped where it was passed: moved into a local of
+        // its own, it was copied (a regions stepper is 296 bytes, in wasm a
+        // memory.copy, a call into the engine) once per segment.
         // Steps go in chunks that end where a stepper state (every
         // CHECKPOINT_INTERVAL steps of the segment) or a position (every
         // CHECKPOINT_INTERVAL steps of the trace) is due, written straight
