@@ -239,9 +239,6 @@ impl Stepper for Greedy {
     }
 }
 
-/// Rounds of a level written by one copy in [`Greedy::fill_axes`].
-const ROUNDS_PER_BLOCK: usize = 64;
-
 impl Greedy {
     /// [`Stepper::fill`] for `DIMS` axes: the same choices as
     /// [`Stepper::next_step`] without the squared distances, a run at a
@@ -289,15 +286,21 @@ impl Greedy {
             let run = ((most - below) as usize)
                 .saturating_mul(count)
                 .min(taken - written);
-            // Whole rounds a block at a time (a copy of a few steps per round
-            // costs more than its steps).
-            let mut block = [Step::NONE; ROUNDS_PER_BLOCK * MAX_AXES];
-            let block = &mut block[..ROUNDS_PER_BLOCK * count];
-            for slots in block.chunks_exact_mut(count) {
-                slots.copy_from_slice(&round[..count]);
-            }
-            for slots in out[written..written + run].chunks_mut(block.len()) {
-                slots.copy_from_slice(&block[..slots.len()]);
+            // The run's first round, then what is written so far copied
+            // after itself until the run is full: the copied stretch is a
+            // whole number of rounds, so each step keeps its place in the
+            // round. A run of n steps takes about log2(n / count) copies; in
+            // wasm each copy is a memory.copy, a call into the engine, and a
+            // copy of each round into a block of 64 made 115,840 of them in
+            // the bench's line.
+            let steps = &mut out[written..written + run];
+            let first = count.min(run);
+            steps[..first].copy_from_slice(&round[..first]);
+            let mut filled = first;
+            while filled < run {
+                let more = filled.min(run - filled);
+                steps.copy_within(..more, filled);
+                filled += more;
             }
             // A leader steps once per whole round, and once more if the cut
             // round reached it (the cut round takes them in tie order).
