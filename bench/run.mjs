@@ -4,7 +4,7 @@
 // whose names contain one of the words given. A bench file default-exports an async function returning
 // { title, notes, rows } (bench/types.ts), so a new one needs no change
 // here. Node 20 does not run TypeScript, so the files go through vite's
-// module runner (vite is already a dependency; this is what vitest does).
+// module runner (bench/module-runner.mjs).
 //
 // Timings are not asserted anywhere: they depend on the machine and on
 // what else runs on it. Run `node scripts/setup.mjs build` first (the npm
@@ -14,7 +14,7 @@ import { readdirSync } from 'node:fs';
 import { cpus, totalmem } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { createServer, createServerModuleRunner } from 'vite';
+import { openModuleRunner } from './module-runner.mjs';
 
 const BENCH = dirname(fileURLToPath(import.meta.url));
 const ROOT = dirname(BENCH);
@@ -73,20 +73,7 @@ console.log(
   ].join('\n'),
 );
 
-// No file watcher (watch: null): by default the server watches the whole
-// repository (rust/target and node_modules included) from a thread of this
-// process, which took a core of this 2-core machine while the benches ran:
-// a run of the plain JavaScript Bresenham took 14 ms of CPU time alone and
-// 22 to 94 ms beside the watcher, in CPU time and on the clock alike.
-const server = await createServer({
-  configFile: false,
-  root: ROOT,
-  logLevel: 'error',
-  appType: 'custom',
-  server: { middlewareMode: true, hmr: false, ws: false, watch: null },
-  optimizeDeps: { noDiscovery: true, include: [] },
-});
-const runner = createServerModuleRunner(server.environments.ssr, { hmr: false });
+const { runner, close } = await openModuleRunner(ROOT);
 try {
   for (const file of files) {
     const module = await runner.import(join(BENCH, file));
@@ -94,6 +81,5 @@ try {
     console.log(render(group));
   }
 } finally {
-  await runner.close();
-  await server.close();
+  await close();
 }
