@@ -92,8 +92,11 @@ try {
 
   /** @type {typeof import('../web/core/index.js')} */
   const api = await import(pathToFileURL(join(lib, 'core', 'index.js')).href);
-  // The G-code bench's program, from its TypeScript (bench/module-runner.mjs).
+  // The end-to-end bench's requests and the G-code bench's program, from
+  // their TypeScript (bench/module-runner.mjs).
   const modules = await openModuleRunner(ROOT);
+  /** @type {typeof import('../bench/end-to-end.bench.ts')} */
+  const { FROM_3D, TO_3D, CIRCLE, HELIX } = await modules.runner.import(join(ROOT, 'bench', 'end-to-end.bench.ts'));
   /** @type {typeof import('../bench/programs.ts')} */
   const { generateProgram } = await modules.runner.import(join(ROOT, 'bench', 'programs.ts'));
   await modules.close();
@@ -102,8 +105,7 @@ try {
     const exports = /** @type {Record<string, WebAssembly.Global>} */ (/** @type {Record<string, unknown>} */ (globalThis)[EXPORTS_NAME]);
     return sites.map((_, k) => /** @type {number} */ (exports[`__engine_calls_${k}`]?.value));
   };
-  const line = { from: [0, 0, 0], to: [2_000_000, 1_400_001, 1_200_003] };
-  const circle = { from: [300_000, 0, 0], to: [300_000, 0, 0], center: [0, 0, 0] };
+  const line = { from: FROM_3D, to: TO_3D };
   /**
    * A case: its name, and one run of it returning what is to be freed.
    * @typedef {{ name: string, once: () => Promise<{ free(): void }> }} Case
@@ -120,9 +122,9 @@ try {
   /** @type {Case[]} */
   const cases = [
     ...(/** @type {const} */ (['bresenham3d', 'regions', 'greedy', 'walk6'])).map((algorithm) => traced(`${algorithm}, the bench's 3D line`, { algorithm, ...line })),
-    traced('circle r = 300000', { algorithm: 'circle', ...circle }),
-    traced('helix, one turn rising 100000', { algorithm: 'helix', ...circle, to: [300_000, 0, 100_000] }),
-    traced('arc-segments, the same circle', { algorithm: 'arc-segments', ...circle }),
+    traced("the bench's circle", { algorithm: 'circle', ...CIRCLE }),
+    traced("the bench's helix", { algorithm: 'helix', ...HELIX }),
+    traced("arc-segments, the bench's circle", { algorithm: 'arc-segments', ...CIRCLE }),
   ];
   const source = generateProgram(100_000);
   for (const stepsPerMm of [1, 80]) {

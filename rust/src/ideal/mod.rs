@@ -60,8 +60,9 @@ impl IdealPath {
     }
 
     /// Points along the ideal path for drawing (`dims` values each: 3 for
-    /// a helix, an arc's center's for an arc), each handed to `f` in order, the first left out
-    /// where it equals `after` (where the path before ended).
+    /// a helix, as many as its center has for an arc), each handed to `f`
+    /// in order, the first left out where it equals `after` (where the
+    /// path before ended).
     pub fn for_each_vertex(&self, after: Option<&[f64]>, mut f: impl FnMut(&[f64])) {
         match self {
             IdealPath::Line { from, to } => {
