@@ -176,6 +176,15 @@ impl Point {
         d
     }
 
+    /// The most units any axis moves from here to `to`: the fewest steps
+    /// that reach it moving each axis at most a unit a step.
+    pub fn chebyshev_to(&self, to: &Point) -> u64 {
+        (0..self.dims())
+            .map(|axis| (to.coords[axis] - self.coords[axis]).unsigned_abs())
+            .max()
+            .unwrap_or(0)
+    }
+
     /// Moves this point by `delta` per axis (from [`displacement`]).
     pub fn displace(&mut self, delta: &[i64; MAX_AXES]) {
         for axis in 0..self.dims() {
@@ -369,6 +378,20 @@ pub fn gcd(a: u64, b: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn chebyshev_to_is_the_longest_move_of_any_axis() {
+        let from = Point::new(&[3, -4, 5]);
+        assert_eq!(from.chebyshev_to(&Point::new(&[-7, 2, 5])), 10);
+        assert_eq!(from.chebyshev_to(&Point::new(&[3, -4, 5])), 0);
+        assert_eq!(Point::new(&[0, 0]).chebyshev_to(&Point::new(&[2, -9])), 9);
+        // Across the whole coordinate range, as a chord's may be.
+        let edge = (1i64 << 30) - 1;
+        assert_eq!(
+            Point::new(&[-edge, 0, 0]).chebyshev_to(&Point::new(&[edge, 1, 0])),
+            2 * edge as u64
+        );
+    }
 
     #[test]
     fn step_packs_direction_per_axis() {
