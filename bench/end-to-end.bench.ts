@@ -7,7 +7,9 @@
  * are their plain TypeScript references (bench/reference, whose step codes
  * tests/reference.test.ts checks are the core's) with the points those
  * steps take, so that both sides hand over the same points, or voxpath's
- * own circle per cell. The native row runs rust/examples/end_to_end.rs.
+ * own circle per cell. The native row runs rust/examples/end_to_end.rs,
+ * which then runs line_drawing a round at a time for the wasm row, in turn
+ * with its rounds in Node.
  *
  * Each figure is the median of ROUNDS rounds after WARMUP_ROUNDS untimed ones; in a
  * round the two sides of a ratio run in turn, so that a slow moment of the
@@ -19,7 +21,8 @@
  * The native example times itself the same way. The goal column is the
  * ratio issue 13 asks for.
  */
-import { spawnSync } from 'node:child_process';
+import { spawn } from 'node:child_process';
+import { createInterface } from 'node:readline';
 import { fileURLToPath } from 'node:url';
 import { trace } from '../web/core/index.js';
 import type { AlgorithmId, TraceOptions } from '../web/core/index.js';
@@ -70,6 +73,11 @@ interface Side {
   run: () => unknown;
   /** Points (cells, steps) per run: what the rate counts. */
   count: number;
+  /**
+   * For a run in another process, which times itself: its CPU seconds.
+   * Node's own CPU time while it waits would count nothing of it.
+   */
+  seconds?: () => Promise<number>;
 }
 
 /** The middle value, or the mean of the two middle values of an even count. */
@@ -107,9 +115,14 @@ async function medianSeconds(sides: Side[]): Promise<number[]> {
     if (round % 2 === 0) order.reverse();
     for (const [i, side] of order) {
       await collectGarbage();
-      const start = cpuSeconds();
-      await side.run();
-      if (round >= WARMUP_ROUNDS) times[i]!.push(cpuSeconds() - start);
+      let seconds: number;
+      if (side.seconds) seconds = await side.seconds();
+      else {
+        const start = cpuSeconds();
+        await side.run();
+        seconds = cpuSeconds() - start;
+      }
+      if (round >= WARMUP_ROUNDS) times[i]!.push(seconds);
     }
   }
   return times.map(median);
@@ -185,24 +198,62 @@ async function referenceSide(request: TraceOptions): Promise<Side> {
   return { run, count: theirs.length / request.from.length };
 }
 
-/** What rust/examples/end_to_end.rs prints. */
+/** What rust/examples/end_to_end.rs prints first. */
 interface NativeResult {
   points: number;
   voxpathSeconds: number;
   lineDrawingSeconds: number;
 }
 
+/** The native comparison's process, its own rounds run: line_drawing's rounds on request. */
+interface Native {
+  result: NativeResult;
+  /** A peer side: one more line_drawing run in the native process, timed there. */
+  lineDrawing: Side;
+  close(): void;
+}
+
 const MANIFEST = fileURLToPath(new URL('../rust/Cargo.toml', import.meta.url));
 
-/** The native comparison (a release build; cargo builds it on first use). */
-function native(request: TraceOptions): NativeResult {
-  const run = spawnSync('cargo', ['run', '--quiet', '--release', '--manifest-path', MANIFEST, '--example', 'end_to_end'], {
-    input: JSON.stringify({ request, rounds: ROUNDS }),
-    encoding: 'utf8',
+/**
+ * The native comparison (a release build; cargo builds it on first use),
+ * left running to run line_drawing a round at a time: the wasm row's peer
+ * is taken in turn with its rounds, as every other row's two sides are,
+ * rather than from rounds run before them, while the machine may have been
+ * doing other work (in a run of 2026-12-06 the row's voxpath side, timed
+ * alone after them, ran at 411 M points/s, and the same measurement at
+ * 452 M in the table's first row).
+ */
+async function native(request: TraceOptions): Promise<Native> {
+  const child = spawn('cargo', ['run', '--quiet', '--release', '--manifest-path', MANIFEST, '--example', 'end_to_end'], {
     stdio: ['pipe', 'pipe', 'inherit'],
   });
-  if (run.status !== 0) throw new Error(`cargo run --example end_to_end failed (exit ${run.status ?? run.signal})`);
-  return JSON.parse(run.stdout) as NativeResult;
+  const exited = new Promise<never>((_, reject) => {
+    child.on('error', reject);
+    child.on('exit', (code, signal) => reject(new Error(`cargo run --example end_to_end exited (${code ?? signal}) before it answered`)));
+  });
+  // Closed by close(): not a failure of the bench.
+  exited.catch(() => undefined);
+  const lines = createInterface({ input: child.stdout })[Symbol.asyncIterator]();
+  const nextLine = async (): Promise<string> => {
+    const line = await Promise.race([lines.next(), exited]);
+    if (line.done) throw new Error('cargo run --example end_to_end closed its output');
+    return line.value as string;
+  };
+  child.stdin.write(`${JSON.stringify({ request, rounds: ROUNDS })}\n`);
+  const result = JSON.parse(await nextLine()) as NativeResult;
+  return {
+    result,
+    lineDrawing: {
+      run: () => undefined,
+      count: result.points,
+      seconds: async () => {
+        child.stdin.write('line_drawing\n');
+        return (JSON.parse(await nextLine()) as { lineDrawingSeconds: number }).lineDrawingSeconds;
+      },
+    },
+    close: () => child.stdin.end(),
+  };
 }
 
 const line3d = (algorithm: AlgorithmId): TraceOptions => ({ algorithm, from: FROM_3D, to: TO_3D });
@@ -263,22 +314,19 @@ export default async function endToEnd(): Promise<BenchGroup> {
   }
 
   const bresenham3d = line3d('bresenham3d');
-  const nativeResult = native(bresenham3d);
-  const lineDrawingRate = nativeResult.points / nativeResult.lineDrawingSeconds;
-  rows.push({
-    name: 'native: Trace + every point vs line_drawing::Bresenham3d into a Vec',
-    steps: nativeResult.points,
-    rates: { [COLUMNS.voxpath]: nativeResult.points / nativeResult.voxpathSeconds, [COLUMNS.peer]: lineDrawingRate },
-    ratios: { [COLUMNS.ratio]: nativeResult.lineDrawingSeconds / nativeResult.voxpathSeconds, [COLUMNS.goal]: 2 },
-  });
-  const [wasmSeconds] = await medianSeconds([await voxpathSide(bresenham3d)]);
-  const wasmRate = nativeResult.points / wasmSeconds!;
-  rows.push({
-    name: 'bresenham3d in Node (wasm) vs native line_drawing',
-    steps: nativeResult.points,
-    rates: { [COLUMNS.voxpath]: wasmRate, [COLUMNS.peer]: lineDrawingRate },
-    ratios: { [COLUMNS.ratio]: wasmRate / lineDrawingRate, [COLUMNS.goal]: 1 },
-  });
+  const nativeRun = await native(bresenham3d);
+  try {
+    const { result } = nativeRun;
+    rows.push({
+      name: 'native: Trace + every point vs line_drawing::Bresenham3d into a Vec',
+      steps: result.points,
+      rates: { [COLUMNS.voxpath]: result.points / result.voxpathSeconds, [COLUMNS.peer]: result.points / result.lineDrawingSeconds },
+      ratios: { [COLUMNS.ratio]: result.lineDrawingSeconds / result.voxpathSeconds, [COLUMNS.goal]: 2 },
+    });
+    rows.push(await row('bresenham3d in Node (wasm) vs native line_drawing', await voxpathSide(bresenham3d), nativeRun.lineDrawing, 1));
+  } finally {
+    nativeRun.close();
+  }
   // Read off the table by eye, a ratio of 1.996 printed as 2.00 would pass
   // for a goal reached: the rows short of their goal are named as well, in
   // full (named by their algorithm alone, greedy's row against the plain

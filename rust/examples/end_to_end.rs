@@ -3,17 +3,20 @@
 //! by voxpath with every point read, against the `line_drawing` crate's
 //! `Bresenham3d` collected into a Vec, what a Rust user would pick instead.
 //!
-//! Reads `{"request": {...a 3D line request...}, "rounds": n}` on stdin and
-//! prints `{"points", "voxpathSeconds", "lineDrawingSeconds"}`: the median
-//! of `n` rounds each, the two taken in turn within a round so that a slow
-//! moment of the machine falls on both (which goes first alternating from
-//! round to round), after one round that is not timed.
+//! Reads `{"request": {...a 3D line request...}, "rounds": n}` as the first
+//! line on stdin and prints `{"points", "voxpathSeconds", "lineDrawingSeconds"}`
+//! as one line: the median of `n` rounds each, the two taken in turn within
+//! a round so that a slow moment of the machine falls on both (which goes
+//! first alternating from round to round), after one round that is not
+//! timed. Then, for each further line on stdin, it runs `line_drawing` once
+//! more and prints `{"lineDrawingSeconds"}` as one line, until stdin ends:
+//! the bench's wasm row takes these rounds in turn with its own, in Node.
 //! Seconds are this thread's CPU time (page faults included, the kernel
 //! runs them on the thread), not wall time: on a machine shared with other
 //! work, wall time also counts the waits for a free core.
 
 use serde_json::{Value, json};
-use std::io::Read;
+use std::io::{BufRead, Write};
 use voxpath::Request;
 
 /// CPU seconds this thread has run.
@@ -48,10 +51,8 @@ fn median(mut values: Vec<f64>) -> f64 {
 }
 
 fn main() {
-    let mut input = String::new();
-    std::io::stdin()
-        .read_to_string(&mut input)
-        .expect("a case on stdin");
+    let mut lines = std::io::stdin().lock().lines();
+    let input = lines.next().expect("a case on stdin").expect("stdin reads");
     let case: Value = serde_json::from_str(&input).expect("a JSON case");
     let request = Request::from_json(&case["request"].to_string()).expect("a valid request");
     let rounds = case["rounds"].as_u64().unwrap_or(5).max(1) as usize;
@@ -93,4 +94,13 @@ fn main() {
             "lineDrawingSeconds": median(theirs),
         })
     );
+    // The bench waits for each line: flushed, not left to stdout's buffer.
+    std::io::stdout().flush().expect("stdout flushes");
+    for line in lines {
+        line.expect("stdin reads");
+        let (s, q) = seconds(line_drawing_points);
+        assert_eq!(q.len(), points, "every point of the line");
+        println!("{}", json!({ "lineDrawingSeconds": s }));
+        std::io::stdout().flush().expect("stdout flushes");
+    }
 }
