@@ -230,6 +230,9 @@ async function native(request: TraceOptions): Promise<Native> {
   });
   const exited = new Promise<never>((_, reject) => {
     child.on('error', reject);
+    // A write to a process that has gone (cargo missing, the example
+    // failed) fails on the pipe: the same error, not an uncaught one.
+    child.stdin.on('error', reject);
     child.on('exit', (code, signal) => reject(new Error(`cargo run --example end_to_end exited (${code ?? signal}) before it answered`)));
   });
   // Closed by close(): not a failure of the bench.
@@ -240,8 +243,17 @@ async function native(request: TraceOptions): Promise<Native> {
     if (line.done) throw new Error('cargo run --example end_to_end closed its output');
     return line.value as string;
   };
-  child.stdin.write(`${JSON.stringify({ request, rounds: ROUNDS })}\n`);
-  const result = JSON.parse(await nextLine()) as NativeResult;
+  let result: NativeResult;
+  try {
+    child.stdin.write(`${JSON.stringify({ request, rounds: ROUNDS })}\n`);
+    result = JSON.parse(await nextLine()) as NativeResult;
+  } catch (error) {
+    // Left running, the example would wait on stdin and keep Node alive:
+    // its input ended (cargo runs it as a child of its own) and cargo stopped.
+    child.stdin.end();
+    child.kill();
+    throw error;
+  }
   return {
     result,
     lineDrawing: {

@@ -896,14 +896,17 @@ mod tests {
 
     #[test]
     fn a_jump_over_four_steps_of_the_axis_is_four_jumps() {
-        // From every value of the window after a step of the axis (see
-        // Jump::over), sparse and dense axes, both ties: the same index and
-        // value as four single jumps. Past i64 there is no such jump.
+        // From values of the window after a step of the axis (see
+        // Jump::over; every one for the narrow windows, some 50 and both
+        // sides of the bound between short and long jumps for the wide
+        // ones), sparse and dense axes, both ties: the same index and value
+        // as four single jumps. Past i64 there is no such jump.
         for (minor, major) in [
             (1, 2),
             (1, 17),
             (3, 7),
             (5, 16),
+            (7, 1000),
             (999, 1000),
             (100_000, 1_697_056),
         ] {
@@ -915,7 +918,13 @@ mod tests {
                     Jump::over(4, increment, decrement, above).unwrap(),
                 );
                 let low = above + increment - decrement;
-                for v in (low + 1..=low + increment).step_by((increment as usize / 50).max(1)) {
+                let sampled = (low + 1..=low + increment).step_by((increment as usize / 50).max(1));
+                let bound = [four.long_below, four.long_below + 1];
+                for v in sampled.chain(
+                    bound
+                        .into_iter()
+                        .filter(|v| (low + 1..=low + increment).contains(v)),
+                ) {
                     let mut by_one = (10, v);
                     for _ in 0..4 {
                         by_one = one.from(by_one.0, by_one.1);
