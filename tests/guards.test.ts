@@ -210,11 +210,16 @@ describe('the JS API refuses what the core would misread, naming the argument', 
     }
     expect(thrown(() => kept.compareWith(freed)).field).toBe('other');
     expect(() => freed.free()).not.toThrow();
-    // What was read before the free stays readable.
+    // What a getter returned before the free, it keeps returning (it lives
+    // in JavaScript), every getter alike; what was not read is refused.
+    for (const read of [(t: Trace) => t.metrics, (t: Trace) => t.bounds, (t: Trace) => t.segments, (t: Trace) => t.deviation, (t: Trace) => t.axisError]) {
+      expect(thrown(() => read(freed)).field).toBe('trace');
+    }
     const cached = await trace(LINE);
-    const points = cached.points;
+    const before = [cached.points, cached.decisions, cached.deviation, cached.axisError, cached.metrics, cached.bounds, cached.segments];
     cached.free();
-    expect(cached.points).toBe(points);
+    expect([cached.points, cached.decisions, cached.deviation, cached.axisError, cached.metrics, cached.bounds, cached.segments]).toEqual(before);
+    expect(cached.metrics).toBe(before[4]);
 
     const program = await runGcode('G1 X10 Y5 F600', MACHINE);
     program.free();

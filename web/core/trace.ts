@@ -108,8 +108,10 @@ export class Trace {
    * for it. Not one of the summary's fields: spreading a Trace leaves it out.
    */
   get metrics(): Metrics {
-    const core = this.#core;
-    this.#metrics ??= callCore(() => core.metrics());
+    if (this.#metrics === undefined) {
+      const core = this.#core;
+      this.#metrics = callCore(() => core.metrics());
+    }
     return this.#metrics;
   }
 
@@ -119,8 +121,10 @@ export class Trace {
    * rather than scanning the points itself. Not one of the summary's fields.
    */
   get bounds(): PointBounds {
-    const core = this.#core;
-    this.#bounds ??= callCore(() => core.bounds());
+    if (this.#bounds === undefined) {
+      const core = this.#core;
+      this.#bounds = callCore(() => core.bounds());
+    }
     return this.#bounds;
   }
 
@@ -131,8 +135,10 @@ export class Trace {
    * or a G-code program has thousands). Not one of the summary's fields.
    */
   get segments(): SegmentInfo[] {
-    const core = this.#core;
-    this.#segments ??= callCore(() => core.segments());
+    if (this.#segments === undefined) {
+      const core = this.#core;
+      this.#segments = callCore(() => core.segments());
+    }
     return this.#segments;
   }
 
@@ -357,7 +363,10 @@ export class Trace {
 
   /**
    * Releases the core's memory now instead of at garbage collection. Reading
-   * the trace afterwards is a VoxpathError; freeing it again does nothing.
+   * the trace afterwards is a VoxpathError, except for what its getters
+   * (points, decisions, deviation, axisError, metrics, bounds, segments)
+   * returned before, which they keep returning: those live in JavaScript.
+   * Freeing it again does nothing.
    */
   free(): void {
     this.#handle?.free();
