@@ -259,6 +259,13 @@ describe('the JS API refuses what the core would misread, naming the argument', 
     for (const [call, field] of cases) expect(thrown(call).field).toBe(field);
     expect(p.stepTimes(0, 2).length).toBe(2);
     expect(p.pointAtSeconds(Number.POSITIVE_INFINITY)).toBe(p.steps);
+    // A window's infinite end is the program's (it was refused naming a
+    // 'window' no argument has), a reversed one names toSeconds, and one
+    // past the end is empty at the end (it came back reversed).
+    expect(p.motionChart(0, Number.POSITIVE_INFINITY, 10)).toEqual(p.motionChart(0, p.durationSeconds, 10));
+    expect(thrown(() => p.motionChart(2, 1, 10)).field).toBe('toSeconds');
+    const past = p.motionChart(5000, 6000, 10);
+    expect([past.fromSeconds, past.toSeconds, past.seconds.length]).toEqual([p.durationSeconds, p.durationSeconds, 0]);
     p.free();
   });
 

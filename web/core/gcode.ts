@@ -153,7 +153,8 @@ export class GcodeProgram {
   }
 
   /**
-   * The planned motion over fromSeconds..toSeconds (clipped to the program)
+   * The planned motion over fromSeconds..toSeconds (clipped to the program,
+   * an infinite end included; past its end, an empty window at the end)
    * as at most `buckets` chart rows: the tool's speed (mm/s) and each axis's
    * step rate (steps/s), least and greatest per row, and the planned speed
    * where each move starts after another (its corner's junction speed).

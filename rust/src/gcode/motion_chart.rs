@@ -145,18 +145,28 @@ impl Timeline {
                 format!("must be 1 to {MAX_CHART_BUCKETS}, got {buckets}"),
             ));
         }
-        if !(from_seconds.is_finite() && to_seconds.is_finite() && from_seconds < to_seconds) {
+        for (field, seconds) in [("fromSeconds", from_seconds), ("toSeconds", to_seconds)] {
+            if seconds.is_nan() {
+                return Err(Error::field(field, "is not a number"));
+            }
+        }
+        if from_seconds >= to_seconds {
             return Err(Error::field(
-                "window",
+                "toSeconds",
                 format!(
-                    "fromSeconds must be less than toSeconds, both finite numbers; got {}..{}",
+                    "must be greater than fromSeconds; got {}..{}",
                     number_text(from_seconds),
                     number_text(to_seconds)
                 ),
             ));
         }
+        // Clipped to the program, both ends (an infinite one included): a
+        // window past its end is empty at its end, not reversed.
         let duration = self.duration_seconds();
-        let (from, to) = (from_seconds.max(0.0), to_seconds.min(duration));
+        let (from, to) = (
+            from_seconds.clamp(0.0, duration),
+            to_seconds.clamp(0.0, duration),
+        );
         let mut chart = MotionChart {
             from_seconds: from,
             to_seconds: to,
@@ -462,21 +472,39 @@ mod tests {
         let p = square();
         let t = &p.timeline;
         let e = t.motion_chart(&[80.0; 3], 1.0, 1.0, 10).unwrap_err();
-        assert!(e.to_string().starts_with("window: "), "{e}");
-        let e = t.motion_chart(&[80.0; 3], 0.0, f64::NAN, 10).unwrap_err();
-        assert!(e.to_string().starts_with("window: "), "{e}");
+        assert_eq!(
+            e.to_string(),
+            "toSeconds: must be greater than fromSeconds; got 1..1"
+        );
         // An infinity as JavaScript, which passed it, spells it.
         let e = t
-            .motion_chart(&[80.0; 3], 0.0, f64::INFINITY, 10)
+            .motion_chart(&[80.0; 3], f64::INFINITY, f64::INFINITY, 10)
             .unwrap_err();
         assert_eq!(
             e.to_string(),
-            "window: fromSeconds must be less than toSeconds, both finite numbers; got 0..Infinity"
+            "toSeconds: must be greater than fromSeconds; got Infinity..Infinity"
         );
+        let e = t.motion_chart(&[80.0; 3], 0.0, f64::NAN, 10).unwrap_err();
+        assert_eq!(e.to_string(), "toSeconds: is not a number");
+        let e = t.motion_chart(&[80.0; 3], f64::NAN, 1.0, 10).unwrap_err();
+        assert_eq!(e.to_string(), "fromSeconds: is not a number");
         let e = t.motion_chart(&[80.0; 3], 0.0, 1.0, 0).unwrap_err();
         assert_eq!(e.to_string(), "buckets: must be 1 to 100000, got 0");
-        // Past the program's end: an empty window, no rows.
+        // An infinite end is the program's: the same chart as its duration.
+        let duration = t.duration_seconds();
+        let whole = t.motion_chart(&[80.0; 3], 0.0, duration, 10).unwrap();
+        let endless = t
+            .motion_chart(&[80.0; 3], f64::NEG_INFINITY, f64::INFINITY, 10)
+            .unwrap();
+        assert_eq!(endless, whole);
+        assert_eq!((whole.from_seconds, whole.to_seconds), (0.0, duration));
+        // Past the program's end: an empty window at its end, no rows; before
+        // its start, an empty one at 0.
         let c = t.motion_chart(&[80.0; 3], 1e6, 2e6, 10).unwrap();
         assert!(c.seconds.is_empty() && c.speed_max.is_empty());
+        assert_eq!((c.from_seconds, c.to_seconds), (duration, duration));
+        let c = t.motion_chart(&[80.0; 3], -2.0, -1.0, 10).unwrap();
+        assert!(c.seconds.is_empty());
+        assert_eq!((c.from_seconds, c.to_seconds), (0.0, 0.0));
     }
 }
