@@ -307,6 +307,20 @@ impl RandomLinesRun {
                 ));
             }
         }
+        // An option neither the experiment nor its lines take, refused now
+        // and named with what the experiment takes: the line algorithm's
+        // own refusal, line by line, listed from and to, which are refused
+        // above, and not count, seed, maxCoordinate or dims.
+        let accepted: Vec<OptionSpec> = OPTIONS
+            .iter()
+            .chain(
+                info.options
+                    .iter()
+                    .filter(|o| !["from", "to"].contains(&o.name)),
+            )
+            .copied()
+            .collect();
+        request.check_options_of(&format!("random-lines with {}", info.id), &accepted)?;
         let count = request.declared_integer(&COUNT)?.unwrap_or(100);
         let seed = request.declared_integer(&SEED)?.unwrap_or(1);
         let max_coordinate = request.declared_integer(&MAX_COORDINATE)?.unwrap_or(100);
@@ -547,6 +561,21 @@ mod tests {
             error.location,
             crate::error::Location::Field("tie".into()),
             "{error:?}"
+        );
+    }
+
+    #[test]
+    fn an_option_nothing_takes_is_refused_naming_what_the_experiment_takes() {
+        // The line algorithm's own refusal listed from and to (which the
+        // experiment refuses) and not count, seed, maxCoordinate or dims.
+        let error = RandomLinesRun::new(
+            &Request::from_json(r#"{"algorithm":"regions","cuont":5}"#).unwrap(),
+        )
+        .err()
+        .unwrap();
+        assert_eq!(
+            error.to_string(),
+            "cuont: random-lines with regions does not take this option (it takes count, seed, maxCoordinate, dims, tie, gcd, maxSteps)"
         );
     }
 

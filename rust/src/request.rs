@@ -302,6 +302,12 @@ impl Request {
     /// Rejects options that are not among `accepted`, naming the first one,
     /// then any given where it does not apply ([`OptionSpec::applies_with`]).
     pub fn check_options(&self, accepted: &[OptionSpec]) -> Result<(), Error> {
+        self.check_options_of(&self.algorithm, accepted)
+    }
+
+    /// [`Self::check_options`] for a run that is not the algorithm's alone
+    /// (`taker`, as the refusal names it: "random-lines with regions").
+    pub fn check_options_of(&self, taker: &str, accepted: &[OptionSpec]) -> Result<(), Error> {
         for name in self.options.keys() {
             if !accepted.iter().any(|o| o.name == name) {
                 let names: Vec<&str> = accepted.iter().map(|o| o.name).collect();
@@ -310,8 +316,7 @@ impl Request {
                 return Err(Error::field(
                     &echo(name),
                     format!(
-                        "{} does not take this option (it takes {})",
-                        self.algorithm,
+                        "{taker} does not take this option (it takes {})",
                         names.join(", ")
                     ),
                 ));
