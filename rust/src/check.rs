@@ -17,7 +17,7 @@
 
 use crate::algorithms::{self, AlgorithmInfo, Family};
 use crate::compare::{StepWhy, as_object, why_at_point};
-use crate::error::{Error, counted};
+use crate::error::{Error, counted, number_text};
 use crate::grid::{AXIS_NAMES, Point, Step, jumps};
 use crate::line::GCD;
 use crate::line::bresenham3d;
@@ -178,11 +178,15 @@ fn coordinate(value: f64, index: usize, axis: usize) -> Result<i64, String> {
     }
     if value.fract() != 0.0 {
         return Err(format!(
-            "point {index}: {name} = {value} is not a whole number"
+            "point {index}: {name} = {} is not a whole number",
+            number_text(value)
         ));
     }
     if value.abs() > EXACT_LIMIT {
-        return Err(format!("point {index}: {name} = {value} is too large"));
+        return Err(format!(
+            "point {index}: {name} = {} is too large",
+            number_text(value)
+        ));
     }
     Ok(value as i64)
 }
@@ -1971,6 +1975,11 @@ mod tests {
         assert_eq!(
             e("0,0,0\n1,a,1\n"),
             "line 2, column 3: point 1: y = 'a' is not a number"
+        );
+        // A huge value as JavaScript writes it, not in 301 digits.
+        assert_eq!(
+            e("0,0,0\n1,1e300,1\n"),
+            "line 2, column 3: point 1: y = 1e300 is too large"
         );
         assert_eq!(
             e("0,0,0\n1,1,1\n3,1,1\n"),

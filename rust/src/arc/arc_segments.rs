@@ -25,7 +25,7 @@
 use super::angle::{degrees, sin_cos_turns};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
-use crate::error::{Error, counted};
+use crate::error::{Error, counted, number_text};
 use crate::grid::Point;
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
@@ -160,7 +160,7 @@ impl Chording {
             (Some(l), None) if l > 0.0 => Ok(Chording::Length(l)),
             (Some(l), None) => Err(Error::field(
                 "segmentLength",
-                format!("must be more than 0, got {l}"),
+                format!("must be more than 0, got {}", number_text(l)),
             )),
             (None, t) => Ok(Chording::Tolerance(t.unwrap_or(0.5))),
         }
@@ -185,13 +185,17 @@ impl Chording {
                 if t >= 2.0 * r {
                     return Err(Error::field(
                         "tolerance",
-                        format!("must be less than the diameter {:.3}, got {t}", 2.0 * r),
+                        format!(
+                            "must be less than the diameter {:.3}, got {}",
+                            2.0 * r,
+                            number_text(t)
+                        ),
                     ));
                 }
                 if t <= 0.0 {
                     return Err(Error::field(
                         "tolerance",
-                        format!("must be more than 0, got {t}"),
+                        format!("must be more than 0, got {}", number_text(t)),
                     ));
                 }
                 // Grbl: segments = floor(|0.5 * angular_travel * radius| /
@@ -787,6 +791,12 @@ mod tests {
         assert_eq!(
             e.to_string(),
             "tolerance: must be less than the diameter 20.000, got 30"
+        );
+        // A huge value as JavaScript writes it, not in 301 digits.
+        let e = Chording::Tolerance(1e300).chords(10.0, PI).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "tolerance: must be less than the diameter 20.000, got 1e300"
         );
         let both =
             Request::from_json(r#"{"algorithm":"arc-segments","segmentLength":2,"tolerance":1}"#)
