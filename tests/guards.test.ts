@@ -79,6 +79,15 @@ describe('the JS API refuses what the core would misread, naming the argument', 
     expect([bigFrom.field, bigFrom.message]).toEqual(['from', 'from: 0n is a BigInt; give a number (Number(0n))']);
     expect((await rejection(compare({ algorithms: ['regions', 'greedy'], from: [0, 0, 0], to: any([1n, 1, 1]) }))).field).toBe('to');
     expect((await rejection(runGcode('G1 X1 F100', { stepsPerMm: any(80n) }))).field).toBe('stepsPerMm');
+    // NaN and Infinity cross as text: said as the numbers they were (as
+    // trace() says them), not quoted as if a string had been given.
+    for (const [settings, message] of [
+      [{ stepsPerMm: Number.NaN }, 'stepsPerMm: expected a number, got NaN'],
+      [{ stepsPerMm: [80, 80, Number.POSITIVE_INFINITY] }, 'stepsPerMm: expected a number, got Infinity'],
+      [{ stepsPerMm: 80, junctionDeviation: Number.NaN }, 'junctionDeviation: expected a number, got NaN'],
+    ] as const) {
+      expect((await rejection(runGcode('G1 X1 F100', settings as never))).message).toBe(message);
+    }
     expect((await rejection(randomLines({ algorithm: 'regions', count: any(5n) }))).field).toBe('count');
     // JSON leaves a function or a symbol out of an object: the option was
     // dropped and the core ran with its default (tie 'advance' for this one).

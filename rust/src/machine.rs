@@ -25,6 +25,7 @@
 
 use crate::error::Error;
 use crate::grid::{COORD_LIMIT, MAX_AXES};
+use crate::request::shown;
 use crate::trace::Trace;
 use serde_json::Value;
 
@@ -45,7 +46,7 @@ pub(crate) fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES]
     let number = |v: &Value| {
         v.as_f64()
             .filter(|x| x.is_finite())
-            .ok_or_else(|| Error::field(field, format!("expected a number, got {v}")))
+            .ok_or_else(|| Error::field(field, format!("expected a number, got {}", shown(v))))
     };
     match value {
         Value::Array(items) if items.len() == MACHINE_AXES => {

@@ -562,7 +562,7 @@ impl Request {
 
 /// A JSON value as a message quotes it: its JSON text, a long one by its
 /// start and length ([`echo`]), so that a 10 MB string is not said back whole.
-fn shown(value: &Value) -> String {
+pub(crate) fn shown(value: &Value) -> String {
     match value.as_str() {
         // How the JS API sends a number JSON cannot carry (JSON would make
         // it null): said as the number it was, not as text.

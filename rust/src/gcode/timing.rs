@@ -21,6 +21,7 @@ use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point};
 use crate::machine::{MACHINE_AXES, Machine, per_axis};
 use crate::planner::{self, Limits, Plan, Planner, Rate, Timing};
+use crate::request::shown;
 use crate::starts::Starts;
 use serde_json::{Map, Value};
 use std::ops::Range;
@@ -40,7 +41,7 @@ pub fn limits_from_settings(settings: &Map<String, Value>) -> Result<Limits, Err
         Some(v) => v.as_f64().ok_or_else(|| {
             Error::field(
                 planner::JUNCTION_DEVIATION.name,
-                format!("expected a number, got {v}"),
+                format!("expected a number, got {}", shown(v)),
             )
         })?,
     };
