@@ -1144,7 +1144,26 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
                 break;
             }
         }
-        out.extend(describe_matches(info, &tried, matched));
+        // A combination with an option the move refused (None: traced
+        // without it, so with its default) is the one with that default
+        // given, when that matched too: a circle in x and y refuses plane
+        // zx and yz, and was listed both "with plane = xy" and without it.
+        let stands_for_another = |m: &Vec<Option<Value>>| {
+            m.iter().enumerate().any(|(option, value)| {
+                value.is_none()
+                    && tried[option].0.default.is_some_and(|default| {
+                        let mut given = m.clone();
+                        given[option] = Some(Value::from(default));
+                        matched.contains(&given)
+                    })
+            })
+        };
+        let distinct: Vec<_> = matched
+            .iter()
+            .filter(|m| !stands_for_another(m))
+            .cloned()
+            .collect();
+        out.extend(describe_matches(info, &tried, distinct));
     }
     out
 }
@@ -1434,6 +1453,22 @@ mod tests {
         );
         assert_eq!(d.around.first().unwrap().point_index, 2);
         assert_eq!(d.around.last().unwrap().point_index, 8);
+    }
+
+    #[test]
+    fn a_circle_in_x_and_y_is_listed_once() {
+        // It refuses plane zx and yz, traced then without plane, that is in
+        // xy: listed as well as "with plane = xy" before.
+        let json = r#"{"algorithm":"circle","from":[5,0],"to":[5,0],"center":[0,0]}"#;
+        let circle = crate::algorithms::trace_json(json).unwrap();
+        let result = check(json, &points_of(&circle));
+        let labels: Vec<&str> = result
+            .also_matches
+            .iter()
+            .filter(|m| m.algorithm == "circle")
+            .map(|m| m.label.as_str())
+            .collect();
+        assert_eq!(labels, ["circle with dir = ccw, plane = xy"]);
     }
 
     #[test]
