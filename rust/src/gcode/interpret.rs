@@ -59,6 +59,11 @@ const SPIRAL_RELATIVE_TOLERANCE: f64 = 0.001;
 /// The fastest feed a program may set, mm/min (1000 km/min, past any
 /// machine): a bound that keeps a planner's squared speeds finite.
 pub const MAX_FEED_MM_PER_MIN: f64 = 1e9;
+/// The longest dwell a program may ask for, s (G4 P; about 11.6 days): a
+/// step's instant is an f64 of seconds from the program's start, and past
+/// about 4.5·10^6 s it no longer tells nanoseconds apart, so one dwell of
+/// 10^20 s left every later move's steps at one instant.
+pub const MAX_DWELL_SECONDS: f64 = 1e6;
 /// Grbl's ARC_ANGULAR_TRAVEL_EPSILON, radians.
 const FULL_CIRCLE_EPSILON_RAD: f64 = 5e-7;
 
@@ -536,6 +541,16 @@ impl Interpreter {
                     "G4 (dwell) needs P, the seconds to wait (Grbl refuses it without: error 28, a value word is missing)",
                 ));
             };
+            if p.value > MAX_DWELL_SECONDS {
+                return Err(Error::at(
+                    line,
+                    p.column,
+                    format!(
+                        "P (the dwell's seconds) must be at most {MAX_DWELL_SECONDS:e} s, got {}",
+                        p.value
+                    ),
+                ));
+            }
             *effects.stop.get_or_insert(0.0) += p.value;
         }
         if let Some((v, _)) = plane {
@@ -1511,6 +1526,13 @@ mod tests {
         );
         // A dwell on a line with a straight move or no move is fine.
         assert_eq!(run(&["G4 P2 G1 X1 F100"]).unwrap().1.stop, Some(2.0));
+        // A dwell past MAX_DWELL_SECONDS is refused at its P (one of 10^20 s
+        // left every later move's steps at one instant); the largest is not.
+        assert_eq!(
+            run(&["G4 P1000000.1"]).unwrap_err().to_string(),
+            "line 1, column 4: P (the dwell's seconds) must be at most 1e6 s, got 1000000.1"
+        );
+        assert_eq!(run(&["G4 P1000000"]).unwrap().1.stop, Some(1e6));
     }
 
     #[test]
