@@ -393,7 +393,8 @@ impl RandomLinesRun {
                     "maxSteps",
                     format!(
                         "random line {} (from the origin to {}) needs more than {} steps (at least {}); raise maxSteps (up to {MAX_STEPS_LIMIT}) or lower maxCoordinate",
-                        self.lines.len(),
+                        // Numbered from 1, as the table and CSV number the lines.
+                        self.lines.len() + 1,
                         Point::new(&to),
                         limit.value,
                         limit.at_least
@@ -457,7 +458,7 @@ mod tests {
         let limit = e.limit.clone().expect("the cap");
         assert_eq!(limit.value, 10);
         let expected = format!(
-            "random line 0 (from the origin to {}) needs more than 10 steps (at least {}); raise maxSteps (up to 1000000000) or lower maxCoordinate",
+            "random line 1 (from the origin to {}) needs more than 10 steps (at least {}); raise maxSteps (up to 1000000000) or lower maxCoordinate",
             Point::new(
                 &run(r#"{"algorithm":"regions","count":1,"seed":3}"#)
                     .unwrap()
