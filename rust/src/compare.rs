@@ -9,7 +9,9 @@
 //! declares is an error naming it (see [`compare_request`]).
 //!
 //! Cost: each trace's points are sorted once, 24 bytes per point (about
-//! 140 MB for each of two 6-million-step circles of radius 2^20).
+//! 140 MB for each of two 6-million-step circles of radius 2^20), and the
+//! cells one visits and the other does not are kept in a set while they
+//! are counted: a trace compared has at most [`MAX_COMPARED_POINTS`].
 
 use crate::algorithms::{self, AlgorithmInfo};
 use crate::error::Error;
@@ -24,6 +26,14 @@ use tsify::Tsify;
 
 /// Most cells listed per side; `count` still counts them all.
 pub const CELL_LIMIT: usize = 1000;
+
+/// Most points a compared trace may have. Its sorted cells take 24 bytes a
+/// point, and the cells only it visits a set of up to twice that: two
+/// different paths of 20,000,000 and 50,000,001 points ran the core past
+/// wasm's 4 GiB into a trap. Within it, regions' 10,000,001 points against
+/// walk6's 19,999,999 on the same line, 9,999,998 cells only walk6 visits,
+/// took 1.5 GiB of wasm memory in all.
+pub const MAX_COMPARED_POINTS: u64 = 20_000_000;
 
 /// Points read from a trace at a time.
 const CHUNK_POINTS: u64 = 1 << 16;
@@ -160,6 +170,7 @@ fn missing(t: &Trace, other: &[Key]) -> Cells {
 /// ([`Comparison::only_in_a`] lists the first [`CELL_LIMIT`]).
 pub fn cells_only_in(a: &Trace, b: &Trace) -> Result<Vec<i32>, Error> {
     same_axes(a, b)?;
+    within_compared_points(a, b, "other")?;
     let mut flat = Vec::new();
     // Trace points lie within ±2^30 (see `key`).
     for_each_missing(a, &sorted_cells(b), |p| {
@@ -251,7 +262,30 @@ fn first_difference(a: &Trace, b: &Trace) -> Option<FirstDifference> {
 
 /// Compares two traces with the same number of axes.
 pub fn compare(a: &Trace, b: &Trace) -> Result<Comparison, Error> {
+    compare_named(a, b, "other")
+}
+
+/// Both traces within [`MAX_COMPARED_POINTS`], else an error naming
+/// `field`: the argument a trace came in as (`other`, the trace `a` is
+/// compared with), or the option whose move made them (`to`).
+fn within_compared_points(a: &Trace, b: &Trace, field: &str) -> Result<(), Error> {
+    let points = [a, b].map(|t| t.steps() + 1);
+    if points.iter().all(|&n| n <= MAX_COMPARED_POINTS) {
+        return Ok(());
+    }
+    Err(Error::field(
+        field,
+        format!(
+            "the paths have {} and {} points; a comparison takes paths of at most {MAX_COMPARED_POINTS} points (it sorts every cell of both); compare a shorter move",
+            points[0], points[1]
+        ),
+    ))
+}
+
+/// [`compare`], a trace past [`MAX_COMPARED_POINTS`] refused naming `field`.
+fn compare_named(a: &Trace, b: &Trace, field: &str) -> Result<Comparison, Error> {
     same_axes(a, b)?;
+    within_compared_points(a, b, field)?;
     Ok(Comparison {
         a: digest(a),
         b: digest(b),
@@ -278,7 +312,19 @@ fn pick_algorithms(value: Option<Value>) -> Result<[&'static AlgorithmInfo; 2], 
         )));
     };
     let find = |id| algorithms::find(id).map_err(|e| wrong(e.message));
-    Ok([find(a)?, find(b)?])
+    let pair = [find(a)?, find(b)?];
+    // A line and an arc algorithm do not trace one move: the line's would
+    // leave the center out and step the chord.
+    if pair[0].family != pair[1].family {
+        return Err(wrong(format!(
+            "{} traces {}s and {} traces {}s; compare takes two of one family, which trace the same move",
+            pair[0].id,
+            pair[0].family.label(),
+            pair[1].id,
+            pair[1].family.label()
+        )));
+    }
+    Ok(pair)
 }
 
 /// A comparison as the JS API asks for it: the two algorithms, a then b,
@@ -379,7 +425,7 @@ pub fn compare_request(text: &str) -> Result<Comparison, Error> {
         let info = pair[side];
         (info.trace)(&requests[side], algorithms::find).map_err(|e| tagged(info, e))
     };
-    let mut comparison = compare(&run(0)?, &run(1)?)?;
+    let mut comparison = compare_named(&run(0)?, &run(1)?, "to")?;
     if let Some((_, [a, b])) = compared {
         comparison.a.compared_value = Some(a.to_string());
         comparison.b.compared_value = Some(b.to_string());
@@ -577,6 +623,50 @@ mod request_tests {
 
     fn error(json: &str) -> Error {
         compare_request(json).unwrap_err()
+    }
+
+    #[test]
+    fn a_line_and_an_arc_algorithm_are_not_compared() {
+        // regions would have stepped the chord, leaving the center out.
+        let e = error(
+            r#"{"algorithms":["regions","circle"],"from":[5,0,0],"to":[0,5,0],"center":[0,0,0]}"#,
+        );
+        assert_eq!(
+            e.to_string(),
+            "algorithms: regions traces lines and circle traces arcs; compare takes two of one family, which trace the same move"
+        );
+    }
+
+    #[test]
+    fn paths_past_the_compared_points_are_refused_naming_the_move() {
+        // One point past MAX_COMPARED_POINTS on one side: refused before its
+        // cells are sorted. (Two different paths of 20,000,000 and
+        // 50,000,001 points had trapped the core past 4 GiB.)
+        let n = MAX_COMPARED_POINTS;
+        let e = error(&format!(
+            r#"{{"algorithms":["regions","bresenham3d"],"from":[0,0,0],"to":[{n},3,1]}}"#
+        ));
+        assert_eq!(e.field_name(), Some("to"));
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "to: the paths have {} and {} points; a comparison takes paths of at most {n} points (it sorts every cell of both); compare a shorter move",
+                n + 1,
+                n + 1
+            )
+        );
+        let trace = |json: &str| crate::algorithms::trace_json(json).unwrap();
+        let (a, b) = (
+            trace(&format!(
+                r#"{{"algorithm":"regions","from":[0,0,0],"to":[{n},3,1]}}"#
+            )),
+            trace(r#"{"algorithm":"regions","from":[0,0,0],"to":[3,3,1]}"#),
+        );
+        assert_eq!(compare(&b, &a).unwrap_err().field_name(), Some("other"));
+        assert_eq!(
+            cells_only_in(&b, &a).unwrap_err().field_name(),
+            Some("other")
+        );
     }
 
     fn decisions(why: &StepWhy) -> Value {
