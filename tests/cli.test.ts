@@ -77,7 +77,9 @@ describe('voxpath trace', () => {
     expect(none.stderr).toMatch(/^voxpath: a command is needed \(voxpath --help describes each\)\nusage: voxpath trace/);
     const { version } = JSON.parse(readFileSync(new URL('../package.json', import.meta.url), 'utf8')) as { version: string };
     for (const flag of ['--version', '-V']) expect(voxpath([flag])).toEqual({ code: 0, stdout: `voxpath ${version}\n`, stderr: '' });
-    expect(voxpath(['--help']).stdout).toContain('voxpath --help | --version');
+    expect(voxpath(['--help']).stdout).toContain('voxpath --help (-h) | --version (-V)');
+    // -h was "unknown command '-h'", status 2.
+    for (const args of [['-h'], ['trace', '-h']]) expect(voxpath(args)).toEqual(voxpath(['--help']));
   });
 
   it('documents every algorithm and option in --help', () => {

@@ -377,8 +377,14 @@ pub fn compare_request(text: &str) -> Result<Comparison, Error> {
             ),
         ));
     }
+    // An error that names its algorithm already ("regions takes 3
+    // coordinates") is not named twice.
     let tagged = |info: &AlgorithmInfo, e: Error| Error {
-        message: format!("{}: {}", info.id, e.message),
+        message: if e.message.starts_with(&format!("{} ", info.id)) {
+            e.message
+        } else {
+            format!("{}: {}", info.id, e.message)
+        },
         ..e
     };
     let compared = compared_values(pair, &options).map_err(|e| tagged(pair[0], e))?;
@@ -883,11 +889,12 @@ mod request_tests {
                 .to_string()
                 .starts_with("algorithms: unknown algorithm 'bresenham9d' (known: regions")
         );
-        // A line algorithm and an arc on different axis counts: greedy takes
-        // 2D, regions does not.
+        // Two line algorithms on different axis counts: greedy takes 2D,
+        // regions does not; its own message names it, once (it was
+        // "regions: regions takes ...").
         assert_eq!(
             error(r#"{"algorithms":["greedy","regions"],"from":[0,0],"to":[3,1]}"#).to_string(),
-            "from: regions: regions takes 3 coordinates, got 2"
+            "from: regions takes 3 coordinates, got 2"
         );
     }
 }

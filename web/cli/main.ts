@@ -41,7 +41,7 @@ function shortUsage(): string {
     `       ${GCODE_USAGE}`,
     `       ${CHECK_USAGE}`,
     '       voxpath algorithms',
-    '       voxpath --help | --version',
+    '       voxpath --help (-h) | --version (-V)',
   ].join('\n');
 }
 
@@ -202,7 +202,8 @@ export async function main(args: string[]): Promise<number> {
       return 0;
     }
     const catalogues = await coreCatalogue();
-    if (command === '--help' || command === 'help' || rest.includes('--help')) {
+    // -h as --help, as -V is --version: what most CLIs take for help.
+    if (command === '--help' || command === '-h' || command === 'help' || rest.includes('--help') || rest.includes('-h')) {
       await write(fullUsage(catalogues));
       return 0;
     }
