@@ -1,6 +1,8 @@
 // The CLI as users run it: `node bin/voxpath.js ...` (the compiled lib/, built by setup).
 import { spawnSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { EXPORT_CHUNK_ROWS } from '../web/core/index.js';
 import { BIN, voxpath, voxpathPipedInto } from './helpers.js';
@@ -109,6 +111,22 @@ describe('voxpath reading numbers (issue 15 item 4)', () => {
     const r = voxpath(['trace', '--algorithm', 'regions', '--from', '0,0,0', ...args]);
     expect([r.code, r.stdout]).toEqual([2, '']);
     expect(r.stderr.split('\n')[0]).toBe(`voxpath: ${named} is not a finite decimal number (such as 12, -3.5 or 1e6)`);
+  });
+
+  it('takes every argument after -- as a file, as POSIX utilities do (-- was an unexpected argument)', () => {
+    const dir = mkdtempSync(join(tmpdir(), 'voxpath-cli-'));
+    try {
+      writeFileSync(join(dir, '--points.csv'), '0,0,0\n1,1,1\n');
+      const run = (args: string[]) => spawnSync(process.execPath, [BIN, ...args], { encoding: 'utf8', cwd: dir });
+      const check = ['check', '--algorithm', 'regions', '--from', '0,0,0', '--to', '1,1,1'];
+      const named = run([...check, '--', '--points.csv']);
+      expect([named.status, named.stderr]).toEqual([0, '']);
+      expect(named.stdout).toBe(voxpath([...check, '-'], '0,0,0\n1,1,1\n').stdout);
+      // Without --, the name is read as a flag.
+      expect(run([...check, '--points.csv']).status).toBe(2);
+    } finally {
+      rmSync(dir, { recursive: true });
+    }
   });
 
   it('refuses a machine setting written in hex as well', () => {

@@ -108,7 +108,12 @@ export function parseCommandLine(args: readonly string[], switches: readonly str
   const operands: string[] = [];
   for (let i = 0; i < args.length; i++) {
     const arg = args[i]!;
-    if (arg === '--') throw new UsageError(`unexpected argument '--'`);
+    // As POSIX utilities: after --, every argument is an operand, so that a
+    // file whose name starts with - or -- can be named.
+    if (arg === '--') {
+      operands.push(...args.slice(i + 1));
+      break;
+    }
     if (!arg.startsWith('--')) operands.push(arg);
     else if (arg.includes('=') || allSwitches.includes(arg)) joined.push(arg);
     else if (isValue(args[i + 1])) joined.push(`${arg}=${args[++i]}`);
