@@ -31,6 +31,15 @@ function vcdEdges(text: string, wire: string): { rising: number[]; falling: numb
 }
 
 describe('the planned motion profile', () => {
+  it("keeps the speed profile's times in order across a long arc's chords (they went back by up to 7e-12 s)", async () => {
+    const p = await runGcode('G0 X1\nG2 X1 I-1 P20 F1000\n', { stepsPerMm: 100 });
+    const profile = p.speedProfile();
+    let backwards = 0;
+    for (let k = 2; k < profile.length; k += 2) if (profile[k]! < profile[k - 2]!) backwards++;
+    expect([profile.length / 2 > 3000, backwards]).toEqual([true, 0]);
+    p.free();
+  });
+
   it('times the issue example: 3.0 s, the 400th step at √(2·5/100) s', async () => {
     const p = await runGcode(EXAMPLE, MACHINE);
     expect(p.durationSeconds).toBeCloseTo(3.0, 12);
