@@ -62,16 +62,19 @@ impl Jump {
     /// J that puts it there: Q = count·decrement / increment or Q + 1, the
     /// latter exactly when v <= low + count·decrement - Q·increment. For
     /// count 1 that is [`Jump::new`]'s bound.
+    ///
+    /// Only count·decrement can pass i64: the division's rest is below an
+    /// increment, and low plus it is at most steps_above.
     fn over(count: i64, increment: i64, decrement: i64, steps_above: i64) -> Option<Self> {
         let decrements = decrement.checked_mul(count)?;
         let short_count = decrements / increment;
-        let short_move = (short_count * increment).checked_sub(decrements)?;
-        let low = steps_above.checked_add(increment - decrement)?;
+        let rest = decrements - short_count * increment;
+        let low = steps_above + increment - decrement;
         Some(Jump {
-            long_below: low.checked_add(decrements - short_count * increment)?,
+            long_below: low + rest,
             short_count,
-            short_move,
-            long_move: short_move.checked_add(increment)?,
+            short_move: -rest,
+            long_move: increment - rest,
         })
     }
 
