@@ -122,8 +122,9 @@ describe('voxpath reading numbers (issue 15 item 4)', () => {
       const named = run([...check, '--', '--points.csv']);
       expect([named.status, named.stderr]).toEqual([0, '']);
       expect(named.stdout).toBe(voxpath([...check, '-'], '0,0,0\n1,1,1\n').stdout);
-      // Without --, the name is read as a flag.
+      // Without --, the name is read as a flag; after it, -h is a file too.
       expect(run([...check, '--points.csv']).status).toBe(2);
+      expect(run([...check, '--', '-h']).stderr.split('\n')[0]).toBe("voxpath: cannot read -h: ENOENT: no such file or directory, open '-h'");
     } finally {
       rmSync(dir, { recursive: true });
     }

@@ -203,7 +203,9 @@ export async function main(args: string[]): Promise<number> {
     }
     const catalogues = await coreCatalogue();
     // -h as --help, as -V is --version: what most CLIs take for help.
-    if (command === '--help' || command === '-h' || command === 'help' || rest.includes('--help') || rest.includes('-h')) {
+    // Not after --, where every argument is an operand (parseCommandLine).
+    const flagged = rest.includes('--') ? rest.slice(0, rest.indexOf('--')) : rest;
+    if (command === '--help' || command === '-h' || command === 'help' || flagged.includes('--help') || flagged.includes('-h')) {
       await write(fullUsage(catalogues));
       return 0;
     }
