@@ -125,6 +125,10 @@ describe('voxpath reading numbers (issue 15 item 4)', () => {
       // Without --, the name is read as a flag; after it, -h is a file too.
       expect(run([...check, '--points.csv']).status).toBe(2);
       expect(run([...check, '--', '-h']).stderr.split('\n')[0]).toBe("voxpath: cannot read -h: ENOENT: no such file or directory, open '-h'");
+      // gcode's FILE too, which before had to come first and so could not start with --.
+      writeFileSync(join(dir, '--x.gcode'), 'G1 X1 F100\n');
+      const gcode = run(['gcode', '--steps-per-mm', '80', '--format', 'json', '--', '--x.gcode']);
+      expect([gcode.status, gcode.stderr, JSON.parse(gcode.stdout).pulses]).toEqual([0, '', [80, 0, 0]]);
     } finally {
       rmSync(dir, { recursive: true });
     }

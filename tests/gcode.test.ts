@@ -210,6 +210,16 @@ describe('voxpath gcode', () => {
     expect(out.errors).toEqual([]);
   });
 
+  it('takes its FILE before or after the flags, and one FILE only', () => {
+    const first = voxpath(['gcode', file, '--steps-per-mm', '80', '--format', 'json']);
+    const last = voxpath(['gcode', '--steps-per-mm', '80', '--format', 'json', file]);
+    expect([last.code, last.stderr]).toEqual([0, '']);
+    expect(last.stdout).toBe(first.stdout);
+    const two = voxpath(['gcode', '-', 'more.gcode', '--steps-per-mm', '80'], 'G1 X1 F100\n');
+    expect([two.code, two.stdout]).toEqual([2, '']);
+    expect(two.stderr.split('\n')[0]).toBe("voxpath: gcode reads one FILE, got '-' and 'more.gcode'");
+  });
+
   it('reads standard input and takes the drive instead of steps per mm', () => {
     // 1.8° at 16 microsteps on an 8 mm screw: 3200 / 8 = 400 steps/mm.
     const r = voxpath(['gcode', '-', '--step-angle', '1.8', '--microsteps', '16', '--pitch', '8'], 'G1 X0.5 F1\n');

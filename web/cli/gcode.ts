@@ -14,7 +14,8 @@ import { readFile } from 'node:fs/promises';
 import { runGcode } from '../core/index.js';
 import type { Catalogue, GcodeProgram, GcodeProgramInfo, GcodeSettings, OptionSpec } from '../core/index.js';
 import { alignedTable, indexChunks, jsonListChunks, pointsJsonChunks } from '../core/export.js';
-import { FORMATS, UsageError, describeOption, inFlagWords, optionsFromFlags, parseFlags, pickFormat } from './flags.js';
+import { quoted } from '../core/guard.js';
+import { FORMATS, UsageError, describeOption, inFlagWords, optionsFromFlags, parseCommandLine, pickFormat } from './flags.js';
 import { writeAll } from './output.js';
 
 /** A flag without a value: adds stepTimes to the JSON. */
@@ -157,11 +158,12 @@ function* tableChunks(program: GcodeProgram, said: (message: string) => string):
  * trace's), then the program's errors to stderr; resolves to the exit code.
  */
 export async function gcodeCommand(args: string[], catalogue: Catalogue): Promise<number> {
-  const [file, ...rest] = args;
-  if (file === undefined || (file.startsWith('--') && file !== '-')) {
-    throw new UsageError('gcode needs a FILE (or - for standard input) before its flags');
-  }
-  const flags = parseFlags(rest, [STEP_TIMES_FLAG]);
+  // FILE is an operand, as check's: before or after the flags, and after --
+  // when its name starts with -- (`gcode -- --x.gcode`).
+  const { flags, operands } = parseCommandLine(args, [STEP_TIMES_FLAG]);
+  const [file, ...extra] = operands;
+  if (file === undefined) throw new UsageError('gcode needs a FILE (or - for standard input)');
+  if (extra.length > 0) throw new UsageError(`gcode reads one FILE, got '${quoted(file)}' and '${quoted(extra[0]!)}'`);
   const stepTimes = flags.has(STEP_TIMES_FLAG);
   const format = pickFormat(flags, GCODE_FORMATS);
   if (stepTimes && format !== 'json') throw new UsageError(`${STEP_TIMES_FLAG} adds stepTimes to the json format`);
