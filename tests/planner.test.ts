@@ -64,22 +64,54 @@ describe('the planned motion profile', () => {
   it("uses Grbl's defaults when no limits are given, and warns where Grbl would refuse", async () => {
     // defaults.h: max rate 500 mm/min and 10 mm/s² on every axis. G1 X10 has
     // no F, so it is timed at the max rate, v = 500/60 mm/s, from rest; it
-    // ends at the next move's F2 (read as 2 mm/min, G93 ignored), which Grbl's
-    // max entry speed takes as the lower nominal speed of the two: up v/a
-    // seconds, down (v − v1)/a, the rest of the 10 mm cruising at v.
+    // ends at the next move's feed, which Grbl's max entry speed takes as the
+    // lower nominal speed of the two: up v/a seconds, down (v − v1)/a, the
+    // rest of the 10 mm cruising at v. That move is in inverse time: F2 on
+    // 10 mm is 20 mm/min (planner.c: programmed_rate = feed_rate * millimeters).
     const p = await runGcode('G1 X10\nG93 G1 X20 F2\n', { stepsPerMm: 80 });
-    const [a, v, v1] = [10, 500 / 60, 2 / 60];
+    const [a, v, v1] = [10, 500 / 60, 20 / 60];
     const cruiseMm = 10 - (v * v) / (2 * a) - (v * v - v1 * v1) / (2 * a);
     expect(p.moves[0]!.timing.cruiseSpeed).toBeCloseTo(v, 9);
     expect(p.moves[0]!.timing.exitSpeed).toBeCloseTo(v1, 9);
     expect(p.moves[0]!.timing.endSeconds).toBeCloseTo(v / a + (v - v1) / a + cruiseMm / v, 9);
-    expect(p.warnings.map((w) => [w.line, w.message.match(/error 22|G93/)?.[0]])).toEqual([
-      [1, 'error 22'],
-      [2, 'G93'],
-    ]);
+    expect(p.moves[1]!.feedMmPerMin).toBeCloseTo(20, 9);
+    expect(p.warnings.map((w) => [w.line, w.message.match(/error 22|G93/)?.[0]])).toEqual([[1, 'error 22']]);
     p.free();
     const bad = runGcode('G1 X1 F1', { stepsPerMm: 80, acceleration: -1 });
     await expect(bad).rejects.toMatchObject({ field: 'acceleration' });
+  });
+});
+
+describe('inverse time (G93)', () => {
+  it('runs a line in 1/F minutes at F times its length (planner.c: programmed_rate = feed_rate * millimeters)', async () => {
+    // F6 on 10 mm: 60 mm/min, v = 1 mm/s; at a = 10 mm/s² the trapezoid is
+    // up v/a, down v/a, and the rest of the 10 mm at v.
+    const p = await runGcode('G93 G1 X10 F6\n', { stepsPerMm: 80, acceleration: 10, maxRate: 6000 });
+    const [a, v] = [10, 1];
+    expect(p.moves[0]!.feedMmPerMin).toBeCloseTo(60, 9);
+    expect(p.durationSeconds).toBeCloseTo((2 * v) / a + (10 - (v * v) / a) / v, 9);
+    expect(p.warnings).toEqual([]);
+    p.free();
+  });
+
+  it('runs an arc in 1/F minutes along all its chords, as mc_arc means to and RS274/NGC says', async () => {
+    // A half circle of r = 10 mm at F2: 30 s along its chords. The
+    // acceleration is high enough (10^6 mm/s²) that its ramps and corners
+    // take microseconds; its feed is F times the chords' summed length,
+    // below the arc's 10π mm. Grbl 1.1 would run its 78 chords
+    // (floor(5π / √(0.002 · 19.998)), arc tolerance 0.002 mm) at F·78 =
+    // 156 mm/min, about 12 s: it clears the inverse-time flag after scaling F.
+    const settings = { stepsPerMm: 100, acceleration: 1e6, maxRate: 1e5, junctionDeviation: 1 };
+    const p = await runGcode('G93 G2 X20 Y0 I10 J0 F2\n', settings);
+    const feed = p.moves[0]!.feedMmPerMin!;
+    expect(feed / 2).toBeGreaterThan(10 * Math.PI * 0.999);
+    expect(feed / 2).toBeLessThan(10 * Math.PI);
+    expect(p.durationSeconds).toBeCloseTo(30, 3);
+    // The next line's F is its own: F1 runs the same half circle back in 60 s.
+    const back = await runGcode('G93 G2 X20 Y0 I10 J0 F2\nG3 X0 Y0 I-10 J0 F1\n', settings);
+    expect(back.moves[1]!.timing.endSeconds - back.moves[1]!.timing.startSeconds).toBeCloseTo(60, 3);
+    p.free();
+    back.free();
   });
 });
 

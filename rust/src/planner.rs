@@ -235,6 +235,11 @@ fn unit_vector(v: [f64; MACHINE_AXES]) -> (f64, [f64; MACHINE_AXES]) {
     (length, v.map(|x| x * inverse_length))
 }
 
+/// The length of a block of `delta_mm` (mm), as the planner measures it.
+pub fn length_mm(delta_mm: [f64; MACHINE_AXES]) -> f64 {
+    unit_vector(delta_mm).0
+}
+
 /// Grbl's maximum junction speed², (mm/s)², between blocks of directions
 /// `previous` and `current` (units): `plan_buffer_line`, planner.c.
 pub fn max_junction_speed_sqr(
@@ -789,7 +794,7 @@ pub fn arc_chords(
     axes: [usize; 3],
     radius_mm: f64,
     sweep_rad: f64,
-) -> impl ExactSizeIterator<Item = [f64; MACHINE_AXES]> {
+) -> impl ExactSizeIterator<Item = [f64; MACHINE_AXES]> + Clone {
     let [u, v, n] = axes;
     // Grbl's count (the arc-segments algorithm's rule); a radius within
     // the tolerance is one straight block, as Grbl's NaN count of 0 is.

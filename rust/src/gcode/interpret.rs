@@ -36,8 +36,11 @@
 //! - the plane's normal axis may move during the arc: a helix.
 //!
 //! Feed F (units per minute, G94) is kept with each move in mm/min, for the
-//! planner (`timing`). G93 (inverse time, F = 1 / minutes per move) is a
-//! warning: its F is still read as units per minute.
+//! planner (`timing`). In G93 (inverse time) F is how many such moves take
+//! a minute: the move runs its whole path in 1/F minutes at its programmed
+//! rate, F being the line's own (Grbl zeroes it before and after every G93
+//! block, gcode.c step 3), never converted by G20; the planner turns it into
+//! mm/min once the move's length in steps is known (`timing::push_move`).
 
 use super::parse::{Block, Code, Problem, Word};
 use crate::arc::planes::{Plane, Turn};
@@ -59,6 +62,10 @@ const SPIRAL_RELATIVE_TOLERANCE: f64 = 0.001;
 /// The fastest feed a program may set, mm/min (1000 km/min, past any
 /// machine): a bound that keeps a planner's squared speeds finite.
 pub const MAX_FEED_MM_PER_MIN: f64 = 1e9;
+/// The largest F in inverse time (G93), moves a minute: a move in 60 ns.
+/// The feed it asks (F times the move's length) is held to
+/// [`MAX_FEED_MM_PER_MIN`] as well, by the planner's side.
+pub const MAX_INVERSE_TIME_PER_MIN: f64 = 1e9;
 /// The longest dwell a program may ask for, s (G4 P; about 11.6 days): a
 /// step's instant is an f64 of seconds from the program's start, and past
 /// about 4.5·10^6 s it no longer tells nanoseconds apart, so one dwell of
@@ -200,6 +207,9 @@ pub struct MoveMm {
     /// axis has none: an error about the target names it.
     pub axis_columns: [u32; MACHINE_AXES],
     pub feed_mm_per_min: Option<f64>,
+    /// In G93 (inverse time), the line's F instead: the move's whole path
+    /// in 1/F minutes. None in G94 and for rapids.
+    pub inverse_time_per_min: Option<f64>,
     pub arc: Option<ArcMm>,
 }
 
@@ -259,8 +269,10 @@ pub struct Interpreter {
     inches: bool,
     incremental: bool,
     absolute_centers: bool,
+    /// F in force: mm/min in G94; in G93 the line's F (moves per minute),
+    /// None on a G93 line without one.
     feed_mm_per_min: Option<f64>,
-    /// G93 (inverse time) was programmed and not yet left by G94.
+    /// G93 (inverse time) was programmed and not yet left by G94 or M2.
     inverse_time: bool,
     /// Programmed position, machine mm (before rounding to steps).
     position_mm: [f64; MACHINE_AXES],
@@ -565,7 +577,25 @@ impl Interpreter {
         if let Some((v, _)) = absolute_centers {
             self.absolute_centers = v;
         }
-        if let Some(f) = words.get('F') {
+        if self.inverse_time {
+            // G93: F is this line's alone, per minute (gcode.c leaves a
+            // G93 block's F at 0 without an F word, and converts none by
+            // G20); what it asks in mm/min is the move's length times F.
+            if let Some(f) = words
+                .get('F')
+                .filter(|f| f.value > MAX_INVERSE_TIME_PER_MIN)
+            {
+                return Err(Error::at(
+                    line,
+                    f.column,
+                    format!(
+                        "F (in inverse time, G93: moves a minute) must be at most {MAX_INVERSE_TIME_PER_MIN:e}, got {}",
+                        f.value
+                    ),
+                ));
+            }
+            self.feed_mm_per_min = words.get('F').map(|f| f.value).filter(|&v| v > 0.0);
+        } else if let Some(f) = words.get('F') {
             let feed = f.value * self.unit_mm();
             if feed > MAX_FEED_MM_PER_MIN {
                 return Err(Error::at(
@@ -788,12 +818,22 @@ impl Interpreter {
         if mode != Motion::Rapid && self.feed_mm_per_min.is_none() {
             effects.warnings.push(Problem {
                 column,
-                message: format!(
-                    "{} with no feed rate set (F, or F0): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate",
-                    mode.code()
-                ),
+                message: if self.inverse_time {
+                    format!(
+                        "{} in inverse time (G93) with no F on its line (or F0): Grbl would refuse it (error 22, undefined feed rate: in G93 every feed move gives its own F); voxpath runs it, timed at the max rate",
+                        mode.code()
+                    )
+                } else {
+                    format!(
+                        "{} with no feed rate set (F, or F0): Grbl would refuse it (error 22, undefined feed rate); voxpath runs it, timed at the max rate",
+                        mode.code()
+                    )
+                },
             });
         }
+        let feed = (mode != Motion::Rapid)
+            .then_some(self.feed_mm_per_min)
+            .flatten();
         self.position_mm = to_mm;
         effects.motion = Some(MoveMm {
             line,
@@ -802,9 +842,8 @@ impl Interpreter {
             from_mm,
             to_mm,
             axis_columns: axes.map(|w| w.map_or(column, |w| w.column)),
-            feed_mm_per_min: (mode != Motion::Rapid)
-                .then_some(self.feed_mm_per_min)
-                .flatten(),
+            feed_mm_per_min: feed.filter(|_| !self.inverse_time),
+            inverse_time_per_min: feed.filter(|_| self.inverse_time),
             arc,
         });
         Ok(())
@@ -835,10 +874,9 @@ impl Interpreter {
         match inverse_time {
             // Units per minute: the feed mode voxpath runs in.
             Some((false, _)) => self.leave_inverse_time(),
-            Some((true, code)) => {
-                self.inverse_time = true;
-                say(code.column, "G93 (inverse time) ignored: voxpath reads F as units per minute (G94), so the moves after it are timed at that feed".to_string());
-            }
+            // Inverse time: this line's F and every later G93 line's own
+            // (run_line reads it); the G94 feed before is not carried in.
+            Some((true, _)) => self.inverse_time = true,
             None => {}
         }
         let mut stops = false;
@@ -1561,13 +1599,55 @@ mod tests {
         assert_eq!(a.plane, Plane::Xy);
         // G93 ends with it, and F stays: Grbl carries the last F into a
         // G94 line when the state before it is G94, as the reset leaves it
-        // (gcode.c: "Last state is also G94"), so X2 runs at F2 mm/min.
-        let (_, e) = run(&["G93 G1 X1 F2", "M2", "X2"]).unwrap();
+        // (gcode.c: "Last state is also G94"), so X2 runs at F2 mm/min...
+        let (_, e) = run(&["G93 G1 X1 F2 M2", "X2"]).unwrap();
         assert!(e.warnings.is_empty(), "{:?}", e.warnings);
         assert!(close(e.motion.unwrap().feed_mm_per_min.unwrap(), 2.0));
+        // ...where M2 shares F's line: an M2 line of its own is a G93 block
+        // without F, which leaves F at 0 (undefined) before the reset.
+        let (_, e) = run(&["G93 G1 X1 F2", "M2", "X2"]).unwrap();
+        assert!(messages(&e)[0].1.starts_with("G1 with no feed rate set"));
         // A G94 word after G93 is what leaves F unset.
         let (_, e) = run(&["G93 G1 X1 F2", "G94 X2"]).unwrap();
         assert!(messages(&e)[0].1.starts_with("G1 with no feed rate set"));
+    }
+
+    #[test]
+    fn inverse_time_takes_each_line_s_own_f_as_moves_a_minute() {
+        // G93 F is the line's alone, per minute, not converted by G20
+        // (gcode.c step 3: a G93 block's F is 0 without an F word, and only
+        // G94 multiplies F by MM_PER_INCH); the planner makes it mm/min.
+        let (_, e) = run(&["G20", "G93 G1 X1 F2"]).unwrap();
+        let m = e.motion.unwrap();
+        assert_eq!(
+            (m.feed_mm_per_min, m.inverse_time_per_min),
+            (None, Some(2.0))
+        );
+        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
+        // The next feed move without F: Grbl's error 22, said as G93's.
+        let (_, e) = run(&["G93 G1 X1 F2", "X2"]).unwrap();
+        assert_eq!(
+            messages(&e),
+            [(1, "G1 in inverse time (G93) with no F on its line (or F0): Grbl would refuse it (error 22, undefined feed rate: in G93 every feed move gives its own F); voxpath runs it, timed at the max rate".to_string())]
+        );
+        assert_eq!(e.motion.unwrap().inverse_time_per_min, None);
+        // The G94 feed before is not carried into G93.
+        let (_, e) = run(&["G1 X1 F100", "G93 G1 X2"]).unwrap();
+        assert!(
+            messages(&e)[0]
+                .1
+                .starts_with("G1 in inverse time (G93) with no F")
+        );
+        // A rapid needs none, and carries none.
+        let (_, e) = run(&["G93 G0 X2 F5"]).unwrap();
+        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
+        assert_eq!(e.motion.unwrap().inverse_time_per_min, None);
+        // F's bound, said in G93's unit.
+        let err = run(&["G93 G1 X1 F2000000000"]).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "line 1, column 11: F (in inverse time, G93: moves a minute) must be at most 1e9, got 2000000000"
+        );
     }
 
     #[test]

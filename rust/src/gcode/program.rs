@@ -347,7 +347,9 @@ pub struct Move {
     pub to_mm: [f64; MACHINE_AXES],
     pub from_steps: [i64; MACHINE_AXES],
     pub to_steps: [i64; MACHINE_AXES],
-    /// The feed in force, mm/min; None for rapids and when none was set.
+    /// The feed the move was planned at, mm/min: F in G94; in G93 (inverse
+    /// time) F times the move's length, its whole path in 1/F minutes.
+    /// None for rapids and when none was set.
     pub feed_mm_per_min: Option<f64>,
     /// Step index of the move's first step, and its number of steps.
     pub first_step: u64,
@@ -1294,7 +1296,7 @@ impl Runner {
         let first_step = self.steps;
         let mut record = MoveRecord {
             to_mm: m.to_mm,
-            feed_mm_per_min: m.feed_mm_per_min.unwrap_or(f64::NAN),
+            feed_mm_per_min: f64::NAN,
             to_steps: grid(&to),
             line: m.line,
             column: m.column,
@@ -1317,14 +1319,23 @@ impl Runner {
         };
         self.spans
             .push(first_step, pushed.blocks.start, dwell_before);
-        // Once per feed value: every later move at the same F is capped alike.
-        if let (Some(top), Some(feed)) = (pushed.feed_capped_to_mm_per_min, m.feed_mm_per_min) {
+        // In G93 the feed planned is F times the move's length.
+        record.feed_mm_per_min = pushed.feed_mm_per_min.unwrap_or(f64::NAN);
+        // Once per feed value: every later move at the same F is capped
+        // alike (in G93, at the same F and length).
+        if let (Some(top), Some(feed)) = (pushed.feed_capped_to_mm_per_min, pushed.feed_mm_per_min)
+        {
             if self.capped_feed_warned != Some(feed) {
                 self.capped_feed_warned = Some(feed);
                 self.warn(Diagnostic {
                     line: record.line,
                     column: record.column,
-                    message: timing::feed_capped_message(feed, top, m.arc.is_some()),
+                    message: timing::feed_capped_message(
+                        feed,
+                        m.inverse_time_per_min,
+                        top,
+                        m.arc.is_some(),
+                    ),
                     limit: None,
                 });
             }

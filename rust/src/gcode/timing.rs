@@ -10,13 +10,24 @@
 //! - Rate: G0 runs at the top rate along the move; G1-G3 at F, at most the
 //!   top rate. A feed move before any F is refused by Grbl (error 22,
 //!   undefined feed rate); voxpath runs it, timed at the top rate, and warns.
+//! - In inverse time (G93) a move's feed is F times its length, the blocks'
+//!   lengths between their rounded ends summed: its whole path in 1/F
+//!   minutes at that rate. For a line that is Grbl's (planner.c:
+//!   `programmed_rate = feed_rate * millimeters`). For an arc it is what
+//!   mc_arc's comment asks ("The inverse feed_rate should be correct for
+//!   the sum of all segments") and the standard says (RS274/NGC 3.5.19: the
+//!   move in 1/F minutes); Grbl 1.1's mc_arc multiplies F by its segment
+//!   count and then clears the inverse-time flag, so its chords run at
+//!   F·n mm/min, which has no length in it (F2 on a half circle of
+//!   r = 10 mm, 78 chords: 156 mm/min, about 12 s, where 1/2 min asks for
+//!   about 62.8 mm/min).
 //! - Step k (0-based) of a move of n steps happens when the planned position
 //!   along the move's blocks reaches (k + 1) / n of its length: Grbl spreads
 //!   a block's step events evenly along it, one per step of its major axis
 //!   (a step of the trace is one step event, whichever axes it moves). Step
 //!   instants are computed on demand for any range, never stored.
 
-use super::interpret::{Motion, MoveMm};
+use super::interpret::{MAX_FEED_MM_PER_MIN, Motion, MoveMm};
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, Point};
 use crate::machine::{MACHINE_AXES, Machine, per_axis};
@@ -62,6 +73,9 @@ pub fn limits_from_settings(settings: &Map<String, Value>) -> Result<Limits, Err
 pub struct PushedMove {
     pub blocks: Range<usize>,
     pub feed_capped_to_mm_per_min: Option<f64>,
+    /// The feed its blocks were planned at, mm/min: F in G94, F times the
+    /// move's length in G93; None for rapids and a feed move without F.
+    pub feed_mm_per_min: Option<f64>,
 }
 
 /// Pushes the blocks of move `m`, stepped from `from` to `to` (steps):
@@ -75,22 +89,60 @@ pub fn push_move(
 ) -> PushedMove {
     let first = planner.len();
     let spm = machine.steps_per_mm();
-    let rate = match (m.motion, m.feed_mm_per_min) {
+    let to: [i64; MACHINE_AXES] = to.coords().try_into().expect("3 axes");
+    let from: [i64; MACHINE_AXES] = from.coords().try_into().expect("3 axes");
+    let targets = block_targets(machine, m, to);
+    let delta_mm = |a: &[i64; MACHINE_AXES], b: &[i64; MACHINE_AXES]| -> [f64; MACHINE_AXES] {
+        std::array::from_fn(|axis| (b[axis] - a[axis]) as f64 / spm[axis])
+    };
+    let feed_mm_per_min = match (m.motion, m.feed_mm_per_min, m.inverse_time_per_min) {
+        (Motion::Rapid, _, _) => None,
+        (_, Some(feed), _) => Some(feed),
+        (_, None, Some(per_min)) => {
+            let mut previous = from;
+            let length_mm: f64 = targets
+                .clone()
+                .map(|target| {
+                    let length = planner::length_mm(delta_mm(&previous, &target));
+                    previous = target;
+                    length
+                })
+                .sum();
+            // A move of no length plans no block: no feed to speak of.
+            (length_mm > 0.0).then(|| (per_min * length_mm).min(MAX_FEED_MM_PER_MIN))
+        }
+        (_, None, None) => None,
+    };
+    let rate = match (m.motion, feed_mm_per_min) {
         (Motion::Rapid, _) => Rate::Rapid,
         (_, Some(feed)) => Rate::Feed(feed),
         (_, None) => Rate::Unset,
     };
-    let to: [i64; MACHINE_AXES] = to.coords().try_into().expect("3 axes");
-    let mut previous: [i64; MACHINE_AXES] = from.coords().try_into().expect("3 axes");
     let mut capped: Option<f64> = None;
-    let mut push = |target: [i64; MACHINE_AXES]| {
-        let delta = std::array::from_fn(|axis| (target[axis] - previous[axis]) as f64 / spm[axis]);
-        if let Some(top) = planner.push(delta, rate) {
+    let mut previous = from;
+    for target in targets {
+        if let Some(top) = planner.push(delta_mm(&previous, &target), rate) {
             capped = Some(capped.map_or(top, |c: f64| c.min(top)));
         }
         previous = target;
-    };
-    if let Some(arc) = &m.arc {
+    }
+    PushedMove {
+        blocks: first..planner.len(),
+        feed_capped_to_mm_per_min: capped,
+        feed_mm_per_min,
+    }
+}
+
+/// The step positions move `m`'s blocks end at, in order, `to` last: one
+/// block for a line, one per chord of Grbl's mc_arc for an arc. An
+/// iterator, read again for a G93 move's length: nothing is collected per
+/// move.
+fn block_targets<'a>(
+    machine: &'a Machine,
+    m: &MoveMm,
+    to: [i64; MACHINE_AXES],
+) -> impl Iterator<Item = [i64; MACHINE_AXES]> + Clone + 'a {
+    let chord_ends = m.arc.as_ref().map(|arc| {
         let vertices = planner::arc_chords(
             m.from_mm,
             m.to_mm,
@@ -100,19 +152,13 @@ pub fn push_move(
             arc.sweep_rad,
         );
         let between = vertices.len() - 1;
-        for vertex in vertices.take(between) {
-            // A vertex lies within the arc's box, whose corners were
-            // rounded to steps already: its rounding fits too.
-            push(std::array::from_fn(|axis| {
-                machine.to_steps(axis, vertex[axis]).unwrap_or(to[axis])
-            }));
-        }
-    }
-    push(to);
-    PushedMove {
-        blocks: first..planner.len(),
-        feed_capped_to_mm_per_min: capped,
-    }
+        // A vertex lies within the arc's box, whose corners were rounded
+        // to steps already: its rounding fits too.
+        vertices.take(between).map(move |vertex| {
+            std::array::from_fn(|axis| machine.to_steps(axis, vertex[axis]).unwrap_or(to[axis]))
+        })
+    });
+    chord_ends.into_iter().flatten().chain(std::iter::once(to))
 }
 
 /// The warning for a feed above what maxRate allows along a move: Grbl
@@ -122,15 +168,33 @@ pub fn push_move(
 /// rate is below F are capped (an axis-aligned chord to maxRate, a
 /// diagonal one less), and the message says so; a top rate below Grbl's
 /// MINIMUM_FEED_RATE runs at that minimum, as the planner does.
-pub fn feed_capped_message(feed_mm_per_min: f64, top_mm_per_min: f64, arc: bool) -> String {
+pub fn feed_capped_message(
+    feed_mm_per_min: f64,
+    inverse_time_per_min: Option<f64>,
+    top_mm_per_min: f64,
+    arc: bool,
+) -> String {
     let runs = top_mm_per_min.max(planner::MINIMUM_FEED_RATE_MM_PER_MIN);
+    // In G93 the feed is F times the move's length: both are said.
+    let (asked, wanted) = match inverse_time_per_min {
+        None => (
+            format!("F{feed_mm_per_min} mm/min"),
+            format!("at F{feed_mm_per_min}"),
+        ),
+        Some(per_min) => (
+            format!(
+                "G93 F{per_min} ({feed_mm_per_min:.0} mm/min along this move, to run it in 1/{per_min} min)"
+            ),
+            format!("it in 1/{per_min} min"),
+        ),
+    };
     if arc {
         format!(
-            "F{feed_mm_per_min} mm/min is above the max rate along parts of this arc (down to {top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): its chords there run at their max rate, down to {runs:.0} mm/min, as Grbl caps them; raise maxRate to run at F{feed_mm_per_min} throughout"
+            "{asked} is above the max rate along parts of this arc (down to {top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): its chords there run at their max rate, down to {runs:.0} mm/min, as Grbl caps them; raise maxRate to run {wanted} throughout"
         )
     } else {
         format!(
-            "F{feed_mm_per_min} mm/min is above the max rate along this move ({top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): it runs at {runs:.0} mm/min, as Grbl caps it; raise maxRate to run at F{feed_mm_per_min}"
+            "{asked} is above the max rate along this move ({top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): it runs at {runs:.0} mm/min, as Grbl caps it; raise maxRate to run {wanted}"
         )
     }
 }
