@@ -1365,13 +1365,20 @@ impl Runner {
         };
         let rounded = [aim[0].round() as i64, aim[1].round() as i64];
         // Nearest first, by squared distance, each found once (in an array:
-        // every arc of a program looks for its center).
+        // every arc of a program looks for its center). A neighbour as near
+        // as the rounded center (the aim half a step off the grid) comes
+        // after it: taken first by its place in the array, the lower one
+        // won, so a center at +0.5 went down and one at -0.5 away from zero,
+        // and the note said the rounded one broke the tolerance.
         let mut candidates: [(f64, [i64; 2]); 9] = std::array::from_fn(|k| {
             let c = [rounded[0] + k as i64 / 3 - 1, rounded[1] + k as i64 % 3 - 1];
             let (du, dv) = (c[0] as f64 - aim[0], c[1] as f64 - aim[1]);
             (du * du + dv * dv, c)
         });
-        candidates.sort_by(|a, b| a.0.total_cmp(&b.0));
+        candidates.sort_by(|a, b| {
+            a.0.total_cmp(&b.0)
+                .then_with(|| (a.1 != rounded).cmp(&(b.1 != rounded)))
+        });
         let radius_sq = |p: [i64; 2], c: [i64; 2]| {
             let (du, dv) = ((p[0] - c[0]) as i128, (p[1] - c[1]) as i128);
             du * du + dv * dv
@@ -1676,6 +1683,30 @@ pub fn run(source: &str, settings: Settings) -> Program {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_center_half_a_step_off_the_grid_rounds_as_every_coordinate_does() {
+        // Halves away from zero, on either side: the rounded center keeps
+        // both radii equal here (11 and 11; 401 and 400 from 0 and 801),
+        // so no neighbour is needed. Found by a hunt: (0, 0.5) gave (0, 0),
+        // a 169.6° arc for 180°, and 400.5 gave 400 where -400.5 gave -401.
+        assert_eq!(
+            Runner::grid_center([11, 1], [-11, 1], [0.0, 0.5]),
+            Some([0, 1])
+        );
+        assert_eq!(
+            Runner::grid_center([0, 0], [801, 0], [400.5, 0.0]),
+            Some([401, 0])
+        );
+        assert_eq!(
+            Runner::grid_center([0, 0], [-801, 0], [-400.5, 0.0]),
+            Some([-401, 0])
+        );
+        assert_eq!(
+            Runner::grid_center([381, 445], [281, 445], [331.0, 444.5]),
+            Some([331, 445])
+        );
+    }
     use proptest::prelude::*;
 
     /// A run of `source` with straight moves stepped as chosen: straight
