@@ -4,11 +4,12 @@
  * chord stepped by the regions reference (lineAlgorithm's default). Chords
  * by segmentLength, or by tolerance (default 0.5); vertices are the arc
  * points at i/n of the sweep rounded as Rust rounds (halves away from
- * zero), the last one the end point. With a rise it is the helix's
+ * zero, a computed coordinate within its error of a half and a height
+ * exactly), the last one the end point. With a rise it is the helix's
  * method segments.
  */
 import { readArc } from './arc.js';
-import { onlyOptions, roundHalfAway, type ReferenceOptions } from './common.js';
+import { onlyOptions, roundHalfAwayWithin, roundRatioHalfAway, type ReferenceOptions } from './common.js';
 import { regions } from './regions.js';
 
 /** atan2 moved into [0, 2π): the blog's atan3. */
@@ -43,6 +44,9 @@ export function arcSegments(options: ReferenceOptions): Uint16Array {
     n = Math.floor((0.5 * arcLength) / Math.sqrt(t * (2 * r - t)));
   }
   n = Math.max(n, 1);
+  // A vertex coordinate within 8 units in the last place of |center| + r
+  // below a half is that half (arc_segments.rs, VERTEX_HALF_ULPS).
+  const error = (center: number) => (Math.abs(center) + r) * 8 * Number.EPSILON;
   const chords: Uint16Array[] = [];
   let previous = [...from];
   for (let i = 1; i <= n; i++) {
@@ -53,9 +57,9 @@ export function arcSegments(options: ReferenceOptions): Uint16Array {
       const fraction = i / n;
       const theta = start + sweep * fraction;
       point = [0, 0, 0];
-      point[u] = roundHalfAway(c[u]! + r * Math.cos(theta));
-      point[v] = roundHalfAway(c[v]! + r * Math.sin(theta));
-      point[normal] = from[normal]! + roundHalfAway(arc.rise * fraction);
+      point[u] = roundHalfAwayWithin(c[u]! + r * Math.cos(theta), error(c[u]!));
+      point[v] = roundHalfAwayWithin(c[v]! + r * Math.sin(theta), error(c[v]!));
+      point[normal] = from[normal]! + roundRatioHalfAway(BigInt(arc.rise) * BigInt(i), BigInt(n));
     }
     if (point.some((p, a) => p !== previous[a])) {
       chords.push(regions({ from: previous, to: point }));

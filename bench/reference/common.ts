@@ -73,6 +73,23 @@ export function roundHalfAway(x: number): number {
   return x < 0 ? -Math.round(-x) : Math.round(x);
 }
 
+/**
+ * rust/src/grid.rs, round_half_away_within: halves away from zero, x
+ * within `error` below a half taken as that half (a computed value whose
+ * exact one may be the half).
+ */
+export function roundHalfAwayWithin(x: number, error: number): number {
+  const whole = Math.trunc(x);
+  return Math.abs(x - whole) >= 0.5 - error ? whole + Math.sign(x) : whole;
+}
+
+/** rust/src/grid.rs, round_ratio_half_away: numerator / denominator (> 0) rounded, halves away from zero, exactly. */
+export function roundRatioHalfAway(numerator: bigint, denominator: bigint): number {
+  const size = numerator < 0n ? -numerator : numerator;
+  const rounded = (2n * size + denominator) / (2n * denominator);
+  return Number(numerator < 0n ? -rounded : rounded);
+}
+
 /** Refuses options a reference does not implement, so a test cannot pass on the wrong path. */
 export function onlyOptions(options: ReferenceOptions, allowed: readonly string[], name: string): void {
   for (const key of Object.keys(options)) {

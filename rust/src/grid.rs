@@ -352,6 +352,31 @@ pub fn displacement(steps: &[Step]) -> [i64; MAX_AXES] {
     delta
 }
 
+/// `x` rounded to the nearest whole number, halves away from zero, where x
+/// was computed within `error` of a value that may be exactly a half: x
+/// within `error` below a half is taken as that half (cos 60° in f64 is
+/// 0.5000000000000001, and r = 3 times the sine of 30° 1.4999999999999998).
+/// Wasm has only round-half-to-even, so f64::round is a libm call there;
+/// trunc and signum are wasm instructions. x - trunc(x) is exact (Sterbenz:
+/// for |x| >= 1, trunc(x) is within a factor 2 of x; below 1 it is 0); NaN
+/// and the infinities come out as they go in.
+pub fn round_half_away_within(x: f64, error: f64) -> f64 {
+    let whole = x.trunc();
+    if (x - whole).abs() >= 0.5 - error {
+        whole + x.signum()
+    } else {
+        whole
+    }
+}
+
+/// `numerator / denominator` (denominator > 0) rounded to the nearest whole
+/// number, halves away from zero, exactly: the quotient's half is a half,
+/// where the product of a float fraction may fall either side of it.
+pub fn round_ratio_half_away(numerator: i128, denominator: i128) -> i128 {
+    debug_assert!(denominator > 0);
+    numerator.signum() * ((2 * numerator.abs() + denominator) / (2 * denominator))
+}
+
 /// Greatest common divisor of non-negative integers (gcd(0, 0) = 0).
 /// Stein's binary algorithm: shifts and subtractions, no division, which
 /// in wasm (i64.rem_u) costs tens of cycles a step; a G-code program finds

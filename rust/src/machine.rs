@@ -24,7 +24,7 @@
 //! motion profile (`gcode::timing`).
 
 use crate::error::Error;
-use crate::grid::{COORD_LIMIT, MAX_AXES};
+use crate::grid::{COORD_LIMIT, MAX_AXES, round_half_away_within};
 use crate::request::shown;
 use crate::trace::Trace;
 use serde_json::Value;
@@ -201,13 +201,9 @@ const DECIMAL_HALVES_BELOW: f64 = (1u64 << 40) as f64;
 
 /// `x.round()` (the nearest whole number, halves away from zero) for a
 /// product of decimals: within [`DECIMAL_HALF_ULPS`] units in the last place
-/// below a half, x is taken as that half. Wasm has only round-half-to-even,
-/// so f64::round is a libm call there, once per axis of every G-code move;
-/// trunc and copysign are wasm instructions. x - trunc(x) is exact
-/// (Sterbenz: for |x| >= 1, trunc(x) is within a factor 2 of x; below 1 it
-/// is 0); NaN and the infinities come out as they go in.
+/// below a half, x is taken as that half ([`round_half_away_within`],
+/// once per axis of every G-code move).
 fn round_decimal_half_away(x: f64) -> f64 {
-    let whole = x.trunc();
     // A unit in the last place of x is at most |x| ε. Past 2^40 (far past
     // the grid's 2^30, which to_steps refuses) 8 units would be a good part
     // of a step: plain rounding there.
@@ -216,11 +212,7 @@ fn round_decimal_half_away(x: f64) -> f64 {
     } else {
         0.0
     };
-    if (x - whole).abs() >= 0.5 - slack {
-        whole + x.signum()
-    } else {
-        whole
-    }
+    round_half_away_within(x, slack)
 }
 
 /// DIR levels over step indices `from..to`: one byte per step, bit `axis`

@@ -26,7 +26,7 @@ use super::angle::{degrees, sin_cos_turns};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::{Error, counted, number_text};
-use crate::grid::Point;
+use crate::grid::{Point, round_half_away_within, round_ratio_half_away};
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
 use crate::line::line_stepper::{LineStepper, MakeSegment, StepperVisitor};
@@ -241,14 +241,26 @@ pub struct Vertex {
     pub fraction: f64,
 }
 
+/// How many units in the last place of |center| + r an in-plane vertex
+/// coordinate may be from its exact value (the sine and cosine within about
+/// one of 1, their product with r and the sum with the center one each):
+/// a coordinate that close below a half is that half.
+const VERTEX_HALF_ULPS: f64 = 8.0;
+
 /// The chord ends after the start: arc points at fractions i / n rounded to
 /// the grid, then the end point; a vertex equal to the one before is dropped.
 /// For a helix (`spec.rise` != 0) the height is interpolated by the same
-/// fraction and rounded too.
+/// fraction and rounded too. Halves go away from zero, as everywhere: a
+/// height exactly (rise·i/n in integers), an in-plane coordinate when
+/// within its rounding error of a half (3 + 3 sin 30° came out
+/// 1.4999999999999998 and went down, where 3 sin 210° went away from zero).
 pub fn vertices(spec: &ArcSpec, n: u64) -> Vec<Vertex> {
     let [u, v, normal] = spec.plane.axes();
     let c = &spec.frame.center;
     let (r, start, sweep) = (spec.radius(), spec.start_rad(), spec.sweep_rad());
+    let error =
+        |center: i64| (center.unsigned_abs() as f64 + r) * (VERTEX_HALF_ULPS * f64::EPSILON);
+    let (error_u, error_v) = (error(c.get(u)), error(c.get(v)));
     let mut out: Vec<Vertex> = Vec::with_capacity(n as usize);
     let mut previous = spec.from;
     for i in 1..=n {
@@ -259,9 +271,10 @@ pub fn vertices(spec: &ArcSpec, n: u64) -> Vec<Vertex> {
             let theta = start + sweep * t;
             let mut p = [0; 3];
             let (sin, cos) = sin_cos_turns(theta);
-            p[u] = (c.get(u) as f64 + r * cos).round() as i64;
-            p[v] = (c.get(v) as f64 + r * sin).round() as i64;
-            p[normal] = spec.from.get(normal) + (spec.rise as f64 * t).round() as i64;
+            p[u] = round_half_away_within(c.get(u) as f64 + r * cos, error_u) as i64;
+            p[v] = round_half_away_within(c.get(v) as f64 + r * sin, error_v) as i64;
+            let height = round_ratio_half_away(spec.rise as i128 * i as i128, n as i128);
+            p[normal] = spec.from.get(normal) + height as i64;
             Point::new(&p)
         };
         if point != previous {
@@ -846,6 +859,34 @@ mod tests {
         assert_eq!(v.len(), 16);
         assert!(v.windows(2).all(|w| w[0].point != w[1].point));
         assert_eq!(v.last().unwrap().point, Point::new(&[2, 0, 0]));
+    }
+
+    #[test]
+    fn vertex_halves_go_away_from_zero_whatever_the_float_error() {
+        // A rise of 45 in 30 chords: the 21st vertex is 31.5 up, where
+        // 45 × (21/30) is 31.499999999999996 in f64 (it went to 31).
+        let json = r#"{"algorithm":"helix","from":[10,0,0],"to":[10,0,45],"center":[0,0,0]}"#;
+        let s = ArcSpec::parse(&Request::from_json(json).unwrap(), true, 3).unwrap();
+        assert_eq!(vertices(&s, 30)[20].point.get(2), 32);
+        let heights: Vec<i64> = vertices(&s, 30).iter().map(|v| v.point.get(2)).collect();
+        let exact: Vec<i64> = (1..=30).map(|i| (2 * 45 * i + 30) / 60).collect();
+        assert_eq!(heights, exact);
+        // In the plane: r = 1 about (y, z) = (-7, -39), from 270° a
+        // counterclockwise 315° in 3 chords: the second vertex is at 120°,
+        // y = -7 + cos 120° = -7.5 exactly, computed a little above it
+        // (-7.499999999999999): -8 by the rule, where it went to -7.
+        let s = spec(
+            r#"{"algorithm":"arc-segments","from":[-6,-7,-40],"to":[-6,-8,-40],"center":[7,-7,-39],"plane":"yz","dir":"ccw"}"#,
+        );
+        let v: Vec<Point> = vertices(&s, 3).iter().map(|v| v.point).collect();
+        assert_eq!(
+            v,
+            [
+                Point::new(&[-6, -6, -39]),
+                Point::new(&[-6, -8, -38]),
+                Point::new(&[-6, -8, -40])
+            ]
+        );
     }
 
     #[test]
