@@ -794,7 +794,7 @@ pub fn arc_chords(
     axes: [usize; 3],
     radius_mm: f64,
     sweep_rad: f64,
-) -> impl ExactSizeIterator<Item = [f64; MACHINE_AXES]> + Clone {
+) -> impl ExactSizeIterator<Item = [f64; MACHINE_AXES]> {
     let [u, v, n] = axes;
     // Grbl's count (the arc-segments algorithm's rule); a radius within
     // the tolerance is one straight block, as Grbl's NaN count of 0 is.

@@ -91,7 +91,6 @@ pub fn push_move(
     let spm = machine.steps_per_mm();
     let to: [i64; MACHINE_AXES] = to.coords().try_into().expect("3 axes");
     let from: [i64; MACHINE_AXES] = from.coords().try_into().expect("3 axes");
-    let targets = block_targets(machine, m, to);
     let delta_mm = |a: &[i64; MACHINE_AXES], b: &[i64; MACHINE_AXES]| -> [f64; MACHINE_AXES] {
         std::array::from_fn(|axis| (b[axis] - a[axis]) as f64 / spm[axis])
     };
@@ -99,15 +98,13 @@ pub fn push_move(
         (Motion::Rapid, _, _) => None,
         (_, Some(feed), _) => Some(feed),
         (_, None, Some(per_min)) => {
-            let mut previous = from;
-            let length_mm: f64 = targets
-                .clone()
-                .map(|target| {
-                    let length = planner::length_mm(delta_mm(&previous, &target));
-                    previous = target;
-                    length
-                })
-                .sum();
+            // The blocks' ends once more, for the move's length (a G93
+            // arc's vertices found twice; every other move's once).
+            let (mut previous, mut length_mm) = (from, 0.0);
+            each_block_end(machine, m, to, |end| {
+                length_mm += planner::length_mm(delta_mm(&previous, &end));
+                previous = end;
+            });
             // A move of no length plans no block: no feed to speak of.
             (length_mm > 0.0).then(|| (per_min * length_mm).min(MAX_FEED_MM_PER_MIN))
         }
@@ -120,12 +117,12 @@ pub fn push_move(
     };
     let mut capped: Option<f64> = None;
     let mut previous = from;
-    for target in targets {
-        if let Some(top) = planner.push(delta_mm(&previous, &target), rate) {
+    each_block_end(machine, m, to, |end| {
+        if let Some(top) = planner.push(delta_mm(&previous, &end), rate) {
             capped = Some(capped.map_or(top, |c: f64| c.min(top)));
         }
-        previous = target;
-    }
+        previous = end;
+    });
     PushedMove {
         blocks: first..planner.len(),
         feed_capped_to_mm_per_min: capped,
@@ -133,16 +130,17 @@ pub fn push_move(
     }
 }
 
-/// The step positions move `m`'s blocks end at, in order, `to` last: one
-/// block for a line, one per chord of Grbl's mc_arc for an arc. An
-/// iterator, read again for a G93 move's length: nothing is collected per
-/// move.
-fn block_targets<'a>(
-    machine: &'a Machine,
+/// Calls `f` with the step positions move `m`'s blocks end at, in order,
+/// `to` last: one block for a line, one per chord of Grbl's mc_arc for an
+/// arc.
+#[inline(always)]
+fn each_block_end(
+    machine: &Machine,
     m: &MoveMm,
     to: [i64; MACHINE_AXES],
-) -> impl Iterator<Item = [i64; MACHINE_AXES]> + Clone + 'a {
-    let chord_ends = m.arc.as_ref().map(|arc| {
+    mut f: impl FnMut([i64; MACHINE_AXES]),
+) {
+    if let Some(arc) = &m.arc {
         let vertices = planner::arc_chords(
             m.from_mm,
             m.to_mm,
@@ -152,13 +150,15 @@ fn block_targets<'a>(
             arc.sweep_rad,
         );
         let between = vertices.len() - 1;
-        // A vertex lies within the arc's box, whose corners were rounded
-        // to steps already: its rounding fits too.
-        vertices.take(between).map(move |vertex| {
-            std::array::from_fn(|axis| machine.to_steps(axis, vertex[axis]).unwrap_or(to[axis]))
-        })
-    });
-    chord_ends.into_iter().flatten().chain(std::iter::once(to))
+        for vertex in vertices.take(between) {
+            // A vertex lies within the arc's box, whose corners were
+            // rounded to steps already: its rounding fits too.
+            f(std::array::from_fn(|axis| {
+                machine.to_steps(axis, vertex[axis]).unwrap_or(to[axis])
+            }));
+        }
+    }
+    f(to);
 }
 
 /// The warning for a feed above what maxRate allows along a move: Grbl
