@@ -504,9 +504,9 @@ impl TextReader {
             if first {
                 first = false;
                 if !cells.iter().any(|(_, c)| is_number(c)) {
-                    pick = Some(
-                        header_columns(&cells, self.dims).map_err(|m| Error::at(row_line, 1, m))?,
-                    );
+                    pick = Some(header_columns(&cells, self.dims).map_err(
+                        |(offset, message)| error_in(line, row_line, 1, offset, message),
+                    )?);
                     continue;
                 }
             }
@@ -791,10 +791,29 @@ fn is_number(cell: &str) -> bool {
 /// in its own column when the axes before it are named in theirs
 /// (`x,y,z,w` for 4 axes, whose fourth is called `a`). Refused: a header
 /// that names some of x, y, z but not all (`k,x,y` or `x,y,w` for a 3-axis
-/// move: its columns would read k as x, or w as z), and one naming an axis
-/// twice (which of the two holds it?).
-fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, String> {
+/// move: its columns would read k as x, or w as z), one naming an axis
+/// twice (which of the two holds it?), and one naming an axis the move does
+/// not have (z for a move in x and y: its points have a z, which would be
+/// dropped unread). An error is at the byte offset of its cell.
+fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, (usize, String)> {
     let axes = &AXIS_NAMES[..dims];
+    let names = |cell: &str, axes: &[&str]| axes.iter().any(|axis| cell.eq_ignore_ascii_case(axis));
+    // A header that names the move's axes and one past them (x, y, z for
+    // a move in x and y); one of no names of the move's axes (a, b) is
+    // read by its first columns, below.
+    let past = header
+        .iter()
+        .find(|(_, cell)| names(cell, &AXIS_NAMES[dims..]));
+    if let Some((offset, name)) = past.filter(|_| header.iter().any(|(_, cell)| names(cell, axes)))
+    {
+        return Err((
+            *offset,
+            format!(
+                "the header names {name}, an axis the move does not have: its {dims} axes are {}",
+                axes.join(", ")
+            ),
+        ));
+    }
     let columns_of = |axis: &str| -> Vec<usize> {
         (0..header.len())
             .filter(|&c| header[c].1.eq_ignore_ascii_case(axis))
@@ -806,10 +825,13 @@ fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, S
             [] => named.push(None),
             [column] => named.push(Some(column)),
             [first, second, ..] => {
-                return Err(format!(
-                    "the header names {axis} twice, in columns {} and {}",
-                    first + 1,
-                    second + 1
+                return Err((
+                    header[second].0,
+                    format!(
+                        "the header names {axis} twice, in columns {} and {}",
+                        first + 1,
+                        second + 1
+                    ),
                 ));
             }
         }
@@ -828,21 +850,27 @@ fn header_columns(header: &[(usize, &str)], dims: usize) -> Result<Vec<usize>, S
             .filter(|(_, at)| at.is_none())
             .map(|(axis, _)| *axis)
             .collect();
-        return Err(format!(
-            "the header has no {} column; the move has {} axes ({})",
-            missing.join(", "),
-            dims,
-            axes.join(", ")
+        return Err((
+            0,
+            format!(
+                "the header has no {} column; the move has {} axes ({})",
+                missing.join(", "),
+                dims,
+                axes.join(", ")
+            ),
         ));
     }
     if header.len() >= dims {
         return Ok((0..dims).collect());
     }
-    Err(format!(
-        "the header names none of {} and has {} columns, fewer than the move's {} axes",
-        axes.join(", "),
-        header.len(),
-        dims
+    Err((
+        0,
+        format!(
+            "the header names none of {} and has {} columns, fewer than the move's {} axes",
+            axes.join(", "),
+            header.len(),
+            dims
+        ),
     ))
 }
 
@@ -1964,7 +1992,25 @@ mod tests {
         );
         assert_eq!(
             e("x,x,y,z\n0,1,0,0\n"),
-            "line 1, column 1: the header names x twice, in columns 1 and 2"
+            "line 1, column 3: the header names x twice, in columns 1 and 2"
+        );
+        // x, y and z for a move in x and y: z was dropped unread, and
+        // points whose z wandered followed the 2D rule. Found by a hunt.
+        assert_eq!(
+            Points::from_text("x,y,z\n0,0,0\n1,0,1\n", 2)
+                .unwrap_err()
+                .to_string(),
+            "line 1, column 5: the header names z, an axis the move does not have: its 2 axes are x, y"
+        );
+        assert_eq!(
+            Points::from_text("X;Y;Time;C\n0;0;0;0\n", 2)
+                .unwrap_err()
+                .to_string(),
+            "line 1, column 10: the header names C, an axis the move does not have: its 2 axes are x, y"
+        );
+        assert_eq!(
+            Points::from_text("x,y,time\n3,4,0\n", 2).unwrap().coords,
+            vec![3, 4]
         );
         assert_eq!(
             e("a,b\n0,0\n"),
