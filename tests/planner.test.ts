@@ -94,6 +94,24 @@ describe('inverse time (G93)', () => {
     p.free();
   });
 
+  it("warns where Grbl's feed limits change the time G93 asks for: its max rate and its least feed", async () => {
+    // 0.1 mm at F2: 0.2 mm/min, which Grbl raises to its MINIMUM_FEED_RATE,
+    // 1 mm/min (planner.c): 6 s, not 30; the same below 1 mm/min in G94.
+    const slow = await runGcode('G93 G1 X0.1 F2\nG94 G1 X0 F0.5\n', { stepsPerMm: 80, acceleration: 10, maxRate: 6000 });
+    expect(slow.warnings.map((w) => [w.line, w.message])).toEqual([
+      [1, "G93 F2 (0.2 mm/min along this move, to run it in 1/2 min) is below Grbl's least feed, 1 mm/min (planner.c, MINIMUM_FEED_RATE): it runs at 1 mm/min, as Grbl runs it"],
+      [2, "F0.5 mm/min is below Grbl's least feed, 1 mm/min (planner.c, MINIMUM_FEED_RATE): it runs at 1 mm/min, as Grbl runs it"],
+    ]);
+    expect(slow.moves[0]!.timing.cruiseSpeed).toBeCloseTo(1 / 60, 12);
+    slow.free();
+    // 10 mm at F100: 1000 mm/min, twice Grbl's default max rate.
+    const fast = await runGcode('G93 G1 X10 F100\n', { stepsPerMm: 80 });
+    expect(fast.warnings.map((w) => w.message)).toEqual([
+      "G93 F100 (1000 mm/min along this move, to run it in 1/100 min) is above the max rate along this move (500 mm/min, from maxRate, Grbl's $110-$112): it runs at 500 mm/min, as Grbl caps it; raise maxRate to run it in 1/100 min",
+    ]);
+    fast.free();
+  });
+
   it('runs an arc in 1/F minutes along all its chords, as mc_arc means to and RS274/NGC says', async () => {
     // A half circle of r = 10 mm at F2: 30 s along its chords. The
     // acceleration is high enough (10^6 mm/s²) that its ramps and corners

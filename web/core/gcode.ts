@@ -202,8 +202,10 @@ export class GcodeProgram {
    * The VCD of vcd(), in parts: the header, then the lines of 65,536 steps
    * at a time, each written by the core when asked, so that only one part
    * is in memory (the CLI's --format vcd writes each as it comes). An error
-   * of the program's (two steps too close for a pulse between them) comes
-   * with the part that holds them, after the parts before it.
+   * of the program's (two steps too close for a pulse between them, or
+   * instants past the VCD's 2^64 ns) is thrown before the first part: the
+   * core checks every step's instant when the writer opens, so no part of a
+   * VCD that cannot be written whole is handed out.
    */
   *vcdChunks(): Generator<Uint8Array> {
     // It reads both the plan and the trace: neither may have been freed, before any part or between two.

@@ -347,9 +347,12 @@ pub struct Move {
     pub to_mm: [f64; MACHINE_AXES],
     pub from_steps: [i64; MACHINE_AXES],
     pub to_steps: [i64; MACHINE_AXES],
-    /// The feed the move was planned at, mm/min: F in G94; in G93 (inverse
-    /// time) F times the move's length, its whole path in 1/F minutes.
-    /// None for rapids and when none was set.
+    /// The feed the program asks for this move, mm/min: F in G94; in G93
+    /// (inverse time) F times the move's length, its whole path in 1/F
+    /// minutes. None for rapids and when none was set. The planner runs it
+    /// at most at the max rate along the move and at least at Grbl's least
+    /// feed (1 mm/min), as Grbl does, with a warning when either applies;
+    /// `timing` has the speeds it reaches.
     pub feed_mm_per_min: Option<f64>,
     /// Step index of the move's first step, and its number of steps.
     pub first_step: u64,
@@ -902,6 +905,8 @@ pub struct Runner {
     warnings_omitted: u64,
     /// The last feed (mm/min) warned of as capped to maxRate.
     capped_feed_warned: Option<f64>,
+    /// The last feed below Grbl's least (1 mm/min) warned about.
+    raised_feed_warned: Option<f64>,
     errors: Vec<Diagnostic>,
     stopped_at_line: Option<u32>,
     /// A `%` line or a line with codes or words has been read: a `%` line
@@ -996,6 +1001,7 @@ impl Runner {
             warnings: Vec::new(),
             warnings_omitted: 0,
             capped_feed_warned: None,
+            raised_feed_warned: None,
             errors: Vec::new(),
             stopped_at_line: None,
             program_begun: false,
@@ -1319,8 +1325,22 @@ impl Runner {
         };
         self.spans
             .push(first_step, pushed.blocks.start, dwell_before);
-        // In G93 the feed planned is F times the move's length.
+        // In G93 the feed asked is F times the move's length.
         record.feed_mm_per_min = pushed.feed_mm_per_min.unwrap_or(f64::NAN);
+        // Once per feed value, as the cap below.
+        if let Some(feed) = pushed.feed_mm_per_min.filter(|_| !pushed.blocks.is_empty()) {
+            if self.raised_feed_warned != Some(feed) {
+                if let Some(message) = timing::feed_raised_message(feed, m.inverse_time_per_min) {
+                    self.raised_feed_warned = Some(feed);
+                    self.warn(Diagnostic {
+                        line: record.line,
+                        column: record.column,
+                        message,
+                        limit: None,
+                    });
+                }
+            }
+        }
         // Once per feed value: every later move at the same F is capped
         // alike (in G93, at the same F and length).
         if let (Some(top), Some(feed)) = (pushed.feed_capped_to_mm_per_min, pushed.feed_mm_per_min)

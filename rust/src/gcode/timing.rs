@@ -28,7 +28,7 @@
 //!   instants are computed on demand for any range, never stored.
 
 use super::interpret::{MAX_FEED_MM_PER_MIN, Motion, MoveMm};
-use crate::error::Error;
+use crate::error::{Error, number_text};
 use crate::grid::{AXIS_NAMES, Point};
 use crate::machine::{MACHINE_AXES, Machine, per_axis};
 use crate::planner::{self, Limits, Plan, Planner, Rate, Timing};
@@ -175,19 +175,7 @@ pub fn feed_capped_message(
     arc: bool,
 ) -> String {
     let runs = top_mm_per_min.max(planner::MINIMUM_FEED_RATE_MM_PER_MIN);
-    // In G93 the feed is F times the move's length: both are said.
-    let (asked, wanted) = match inverse_time_per_min {
-        None => (
-            format!("F{feed_mm_per_min} mm/min"),
-            format!("at F{feed_mm_per_min}"),
-        ),
-        Some(per_min) => (
-            format!(
-                "G93 F{per_min} ({feed_mm_per_min:.0} mm/min along this move, to run it in 1/{per_min} min)"
-            ),
-            format!("it in 1/{per_min} min"),
-        ),
-    };
+    let (asked, wanted) = feed_asked(feed_mm_per_min, inverse_time_per_min);
     if arc {
         format!(
             "{asked} is above the max rate along parts of this arc (down to {top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): its chords there run at their max rate, down to {runs:.0} mm/min, as Grbl caps them; raise maxRate to run {wanted} throughout"
@@ -197,6 +185,51 @@ pub fn feed_capped_message(
             "{asked} is above the max rate along this move ({top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): it runs at {runs:.0} mm/min, as Grbl caps it; raise maxRate to run {wanted}"
         )
     }
+}
+
+/// Whether a move's feed is below Grbl's least (planner.c,
+/// plan_compute_profile_nominal_speed: MINIMUM_FEED_RATE, 1 mm/min), which
+/// the planner runs it at instead, as Grbl does: the warning for it, which
+/// Grbl does not give (a G93 move of 0.1 mm at F2 takes 6 s, not 30).
+pub fn feed_raised_message(
+    feed_mm_per_min: f64,
+    inverse_time_per_min: Option<f64>,
+) -> Option<String> {
+    let least = planner::MINIMUM_FEED_RATE_MM_PER_MIN;
+    (feed_mm_per_min < least).then(|| {
+        let (asked, _) = feed_asked(feed_mm_per_min, inverse_time_per_min);
+        format!(
+            "{asked} is below Grbl's least feed, {least} mm/min (planner.c, MINIMUM_FEED_RATE): it runs at {least} mm/min, as Grbl runs it"
+        )
+    })
+}
+
+/// A move's feed as the program asked for it, and what running at it
+/// means: in G93 the feed is F times the move's length, and both are said.
+fn feed_asked(feed_mm_per_min: f64, inverse_time_per_min: Option<f64>) -> (String, String) {
+    match inverse_time_per_min {
+        None => (
+            format!("F{feed_mm_per_min} mm/min"),
+            format!("at F{feed_mm_per_min}"),
+        ),
+        Some(per_min) => (
+            format!(
+                "G93 F{per_min} ({} mm/min along this move, to run it in 1/{per_min} min)",
+                shown_feed(feed_mm_per_min)
+            ),
+            format!("it in 1/{per_min} min"),
+        ),
+    }
+}
+
+/// A derived feed (mm/min) for a message: to three significant digits, or
+/// whole from 100 up (62.83185307179586 mm/min is said 62.8).
+fn shown_feed(feed_mm_per_min: f64) -> String {
+    let digits = (2 - feed_mm_per_min.log10().floor() as i32).clamp(0, 17) as usize;
+    let rounded: f64 = format!("{feed_mm_per_min:.digits$}")
+        .parse()
+        .unwrap_or(feed_mm_per_min);
+    number_text(rounded)
 }
 
 /// Where each move of a program starts in its steps and in its planner's
