@@ -1,16 +1,16 @@
 // The ideal polyline in the form the scene draws it (IdealLine): every
-// vertex's x, y, z as the 32-bit float WebGL reads, and the box of those
-// vertices. The core makes it for a trace (Trace.idealLine(), which the
+// vertex's x, y, z less an origin near the path, as the 32-bit float WebGL
+// reads, and the box of those vertices. The core makes it for a trace (Trace.idealLine(), which the
 // worker sends the page); web/ideal-line.ts for lines the page makes itself.
 import { describe, expect, it } from 'vitest';
 import { idealLineOf } from '../web/ideal-line.js';
 import { runGcode, trace } from '../web/core/index.js';
 
-/** The line as a plain per-vertex loop over the polyline gives it. */
-function expected(polyline: Float64Array | Int32Array, dims: number) {
+/** The line as a plain per-vertex loop over the polyline gives it, from `origin`. */
+function expected(polyline: Float64Array | Int32Array, dims: number, origin: number[]) {
   const xyz: number[] = [];
   for (let k = 0; k < polyline.length / dims; k++) {
-    for (let a = 0; a < 3; a++) xyz.push(a < dims ? Math.fround(polyline[k * dims + a]!) : 0);
+    for (let a = 0; a < 3; a++) xyz.push(a < dims ? Math.fround(polyline[k * dims + a]! - origin[a]!) : 0);
   }
   const axis = (a: number) => xyz.filter((_, i) => i % 3 === a);
   return {
@@ -27,7 +27,9 @@ describe('idealLineOf', () => {
     expect(polyline.length / 3).toBeGreaterThan(20);
     const line = idealLineOf(polyline, 3);
     expect(line.xyz).toBeInstanceOf(Float32Array);
-    expect({ xyz: Array.from(line.xyz), min: line.min, max: line.max }).toEqual(expected(polyline, 3));
+    // From its first vertex, rounded to the grid.
+    expect(line.origin).toEqual([0, 0, 0]);
+    expect({ xyz: Array.from(line.xyz), min: line.min, max: line.max }).toEqual(expected(polyline, 3, line.origin));
     program.free();
   });
 
@@ -39,13 +41,14 @@ describe('idealLineOf', () => {
       [cells4, cells4.points],
     ] as const) {
       const line = idealLineOf(points, t.dims);
-      expect({ xyz: Array.from(line.xyz), min: line.min, max: line.max }).toEqual(expected(points, t.dims));
+      expect(line.origin).toEqual([points[0], points[1], t.dims > 2 ? points[2] : 0]);
+      expect({ xyz: Array.from(line.xyz), min: line.min, max: line.max }).toEqual(expected(points, t.dims, line.origin));
       t.free();
     }
   });
 
   it('gives an empty line a zero box', () => {
-    expect(idealLineOf(new Float64Array(0), 3)).toEqual({ xyz: new Float32Array(0), min: [0, 0, 0], max: [0, 0, 0] });
+    expect(idealLineOf(new Float64Array(0), 3)).toEqual({ xyz: new Float32Array(0), min: [0, 0, 0], max: [0, 0, 0], origin: [0, 0, 0] });
   });
 });
 
@@ -58,12 +61,25 @@ describe('Trace.idealLine', () => {
     for (const t of [program.trace, empty.trace, line2, line4]) {
       const line = t.idealLine();
       expect(line.xyz).toBeInstanceOf(Float32Array);
+      expect(line.origin).toEqual([t.start[0], t.start[1], t.start[2] ?? 0]);
       const polyline = t.idealPolyline();
-      const want = polyline.length === 0 ? { xyz: [], min: [0, 0, 0], max: [0, 0, 0] } : expected(polyline, t.dims);
+      const want = polyline.length === 0 ? { xyz: [], min: [0, 0, 0], max: [0, 0, 0] } : expected(polyline, t.dims, line.origin);
       expect({ xyz: Array.from(line.xyz), min: line.min, max: line.max }, `${t.dims} axes`).toEqual(want);
     }
     expect(program.trace.idealPolyline().length / 3).toBeGreaterThan(20);
     expect(empty.trace.idealLine().xyz.length).toBe(0);
     for (const t of [program, empty, line2, line4]) t.free();
+  });
+
+  it('keeps each vertex exact near 2^30, where a 32-bit float of the coordinate is a multiple of 64', async () => {
+    // A line's ideal path is its two ends: from the start, the end is 24,
+    // 10, 5 exactly; as floats of their own, 1,073,741,800 and 1,073,741,824
+    // are one value (2^30), and the line was drawn as a point.
+    const far = await trace({ algorithm: 'regions', from: [1073741800, 1073741800, 1073741800], to: [1073741824, 1073741810, 1073741805] });
+    const line = far.idealLine();
+    expect(line.origin).toEqual([1073741800, 1073741800, 1073741800]);
+    expect(Array.from(line.xyz)).toEqual([0, 0, 0, 24, 10, 5]);
+    expect(Math.fround(1073741800)).toBe(Math.fround(1073741824));
+    far.free();
   });
 });

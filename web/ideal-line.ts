@@ -5,18 +5,19 @@
  */
 import type { IdealLine } from './core/types.js';
 
-/** `polyline`: flat, stride `dims`, grid units. */
+/**
+ * `polyline`: flat, stride `dims`, grid units. Its vertices are taken from
+ * its first one rounded to the grid (the origin), as the core's are from a
+ * trace's start (IdealLine).
+ */
 export function idealLineOf(polyline: Float64Array | Int32Array, dims: number): IdealLine {
   const count = polyline.length / dims;
-  let xyz: Float32Array;
-  if (dims === 3) {
-    xyz = new Float32Array(polyline);
-  } else {
-    xyz = new Float32Array(count * 3);
-    const axes = Math.min(dims, 3);
-    for (let k = 0; k < count; k++) for (let a = 0; a < axes; a++) xyz[k * 3 + a] = polyline[k * dims + a]!;
-  }
-  if (count === 0) return { xyz, min: [0, 0, 0], max: [0, 0, 0] };
+  const axes = Math.min(dims, 3);
+  const origin: [number, number, number] = [0, 0, 0];
+  if (count > 0) for (let a = 0; a < axes; a++) origin[a] = Math.round(polyline[a]!);
+  const xyz = new Float32Array(count * 3);
+  for (let k = 0; k < count; k++) for (let a = 0; a < axes; a++) xyz[k * 3 + a] = polyline[k * dims + a]! - origin[a]!;
+  if (count === 0) return { xyz, min: [0, 0, 0], max: [0, 0, 0], origin };
   let [minX, minY, minZ] = [xyz[0]!, xyz[1]!, xyz[2]!];
   let [maxX, maxY, maxZ] = [minX, minY, minZ];
   for (let i = 3; i < xyz.length; i += 3) {
@@ -28,5 +29,5 @@ export function idealLineOf(polyline: Float64Array | Int32Array, dims: number): 
     if (z < minZ) minZ = z;
     else if (z > maxZ) maxZ = z;
   }
-  return { xyz, min: [minX, minY, minZ], max: [maxX, maxY, maxZ] };
+  return { xyz, min: [minX, minY, minZ], max: [maxX, maxY, maxZ], origin };
 }

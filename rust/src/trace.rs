@@ -1855,16 +1855,20 @@ impl Trace {
         out
     }
 
-    /// [`Self::ideal_polyline`] as WebGL draws it, flat f32: the smallest x,
-    /// y, z over its vertices, the largest, then x, y, z of each vertex
-    /// (after [`IDEAL_LINE_BOX_VALUES`] values; a 2-axis path at z = 0, axes
-    /// past the third left out; the box all zeros when there is no vertex).
-    /// Each value is the polyline's f64 rounded to the nearest f32 (`as`).
+    /// [`Self::ideal_polyline`] as WebGL draws it, flat f32, each vertex
+    /// taken from `origin` (x, y, z): the smallest x, y, z over its vertices,
+    /// the largest, then x, y, z of each vertex (after
+    /// [`IDEAL_LINE_BOX_VALUES`] values; a 2-axis path at z = 0, axes past
+    /// the third left out; the box all zeros when there is no vertex). Each
+    /// value is the polyline's f64 less the origin's, rounded to the nearest
+    /// f32 (`as`): from an origin near the path (its start), a vertex keeps
+    /// its fraction of a cell where f32 would round a coordinate near 2^30
+    /// to a multiple of 64.
     /// Converted and boxed here, in the pass that copies the vertices: a
     /// page's worker did it in JavaScript, once per run and so mostly before
     /// its JIT had optimised the loop (11 to 12 ms for a 100,000-line
     /// program's 250,000 vertices, against 3.4 ms once optimised).
-    pub fn ideal_line_f32(&self) -> Vec<f32> {
+    pub fn ideal_line_f32(&self, origin: [f64; 3]) -> Vec<f32> {
         let dims = self.dims();
         let mut out = Vec::with_capacity(IDEAL_LINE_BOX_VALUES + 3 * (self.segments.len() + 1));
         out.resize(IDEAL_LINE_BOX_VALUES, 0.0);
@@ -1882,8 +1886,9 @@ impl Trace {
                 // Made whole, not lane by lane: the box's vector reads
                 // would wait on three separate stores (a failed store
                 // forward, which had made this loop a third slower).
-                let drawn: [f32; 3] =
-                    std::array::from_fn(|axis| vertex.get(axis).map_or(0.0, |&v| v as f32));
+                let drawn: [f32; 3] = std::array::from_fn(|axis| {
+                    vertex.get(axis).map_or(0.0, |&v| (v - origin[axis]) as f32)
+                });
                 for axis in 0..3 {
                     min[axis] = min[axis].min(drawn[axis]);
                     max[axis] = max[axis].max(drawn[axis]);

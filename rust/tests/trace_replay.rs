@@ -365,12 +365,12 @@ fn a_program_s_line_steps_have_no_circle_values_and_its_arc_steps_no_regions_val
 /// `Trace::ideal_line_f32` as a plain per-vertex loop over the f64
 /// polyline gives it: x, y, z of each vertex rounded to f32 (z = 0 on 2
 /// axes, axes past the third left out), after the box of those values.
-fn ideal_line_by_vertex(t: &voxpath::trace::Trace) -> Vec<f32> {
+fn ideal_line_by_vertex(t: &voxpath::trace::Trace, origin: [f64; 3]) -> Vec<f32> {
     let dims = t.dims();
     let polyline = t.ideal_polyline();
     let xyz: Vec<f32> = polyline
         .chunks_exact(dims)
-        .flat_map(|v| (0..3).map(move |a| v.get(a).map_or(0.0, |&c| c as f32)))
+        .flat_map(|v| (0..3).map(move |a| v.get(a).map_or(0.0, |&c| (c - origin[a]) as f32)))
         .collect();
     let mut line = vec![0.0f32; voxpath::trace::IDEAL_LINE_BOX_VALUES];
     if !xyz.is_empty() {
@@ -385,7 +385,7 @@ fn ideal_line_by_vertex(t: &voxpath::trace::Trace) -> Vec<f32> {
 }
 
 #[test]
-fn the_ideal_line_for_drawing_is_the_polyline_as_f32_after_its_box() {
+fn the_ideal_line_for_drawing_is_the_polyline_from_its_origin_as_f32_after_its_box() {
     let settings = |json: &str| voxpath::gcode::Settings::from_json(json).unwrap();
     // Arcs both ways and a helix (vertices off the grid, on three axes),
     // then a line, whose start repeats the last arc vertex only where it
@@ -408,9 +408,22 @@ fn the_ideal_line_for_drawing_is_the_polyline_as_f32_after_its_box() {
         .unwrap(),
     ];
     for t in traces {
-        let line = t.ideal_line_f32();
-        assert_eq!(line, ideal_line_by_vertex(t), "{} axes", t.dims());
+        for origin in [[0.0; 3], [7.0, -3.0, 2.0]] {
+            let line = t.ideal_line_f32(origin);
+            assert_eq!(line, ideal_line_by_vertex(t, origin), "{} axes", t.dims());
+        }
     }
-    assert_eq!(empty.trace.ideal_line_f32(), [0.0; 6]);
+    assert_eq!(empty.trace.ideal_line_f32([5.0, 6.0, 7.0]), [0.0; 6]);
+    // Near 2^30 a vertex keeps its place from an origin near it, where as
+    // an f32 of its own 1,073,741,800 is 2^30: the line is its two ends.
+    let far = voxpath::algorithms::trace_json(
+        r#"{"algorithm": "regions", "from": [1073741800, 1073741800, 1073741800], "to": [1073741824, 1073741810, 1073741805]}"#,
+    )
+    .unwrap();
+    let line = far.ideal_line_f32([1073741800.0; 3]);
+    assert_eq!(
+        line[voxpath::trace::IDEAL_LINE_BOX_VALUES..],
+        [0.0, 0.0, 0.0, 24.0, 10.0, 5.0]
+    );
     assert!(program.trace.ideal_polyline().len() / 3 > 20);
 }

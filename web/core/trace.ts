@@ -350,15 +350,17 @@ export class Trace {
   }
 
   /**
-   * The ideal polyline as WebGL draws it: each vertex's x, y, z rounded to
-   * a 32-bit float, with the box they lie in. Converted and boxed by the
-   * core in the pass that copies the vertices out.
+   * The ideal polyline as WebGL draws it: each vertex's x, y, z less the
+   * path's start (its origin) rounded to a 32-bit float, with the box they
+   * lie in. Converted and boxed by the core in the pass that copies the
+   * vertices out.
    */
   idealLine(): IdealLine {
-    const flat = this.#core.idealLine();
+    const origin: [number, number, number] = [this.start[0] ?? 0, this.start[1] ?? 0, this.start[2] ?? 0];
+    const flat = this.#core.idealLine(...origin);
     // The core's layout (Trace::ideal_line_f32): min x, y, z, max x, y, z, then the vertices.
     const box = (at: number): [number, number, number] => [flat[at]!, flat[at + 1]!, flat[at + 2]!];
-    return { xyz: flat.subarray(6), min: box(0), max: box(3) };
+    return { xyz: flat.subarray(6), min: box(0), max: box(3), origin };
   }
 
   /**

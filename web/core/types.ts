@@ -100,9 +100,15 @@ export interface ChartSeries {
  * are not drawn), with the box the vertices lie in.
  */
 export interface IdealLine {
-  /** Stride 3, grid units. */
+  /**
+   * Stride 3, grid units from `origin`: a 32-bit float keeps a vertex's
+   * fraction of a cell from a point near it, where it would round a
+   * coordinate near 2^30 to a multiple of 64.
+   */
   xyz: Float32Array;
-  /** Smallest and largest x, y, z over the vertices (zeros when there are none). */
+  /** Smallest and largest x, y, z over the vertices, from `origin` (zeros when there are none). */
   min: [number, number, number];
   max: [number, number, number];
+  /** The grid point the vertices are taken from (the path's start; x, y, z, in grid units). */
+  origin: [number, number, number];
 }

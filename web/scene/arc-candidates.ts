@@ -41,8 +41,11 @@ export class ArcCandidateCells extends OverlayGroup {
   constructor({ candidates }: ArcCandidates) {
     super();
     const [takenOne, otherOne] = candidates[0].taken ? candidates : [candidates[1], candidates[0]];
-    const taken = new THREE.Vector3().fromArray([...takenOne.cell, 0]);
-    const other = new THREE.Vector3().fromArray([...otherOne.cell, 0]);
+    // Drawn from the cell taken, where the overlay is placed: a WebGL float
+    // of a coordinate near 2^30 is a multiple of 64 (setCellOrigin, cells.ts).
+    this.position.fromArray([...takenOne.cell, 0]);
+    const taken = new THREE.Vector3();
+    const other = new THREE.Vector3().fromArray([...otherOne.cell, 0]).sub(this.position);
     // One cell along the slow axis: the candidates differ there only.
     const toOther = other.clone().sub(taken);
 

@@ -88,14 +88,20 @@ uniform mat4 modelViewMatrix;
 uniform mat4 projectionMatrix;
 uniform float cellSize;
 uniform float halfHeightPx;
+uniform ivec3 origin;
 out float shade;`;
 
-/** Where a vertex of the unit cube `position` lies in the cell `cell`: the cube drawn cellSize wide about the cell's center. */
+/**
+ * Where a vertex of the unit cube `position` lies in the cell `cell`: the
+ * cube drawn cellSize wide about the cell's center. The cell is taken from
+ * the origin in integers, exactly, before it becomes a float (see
+ * setCellOrigin).
+ */
 const CELL_CORNER = /* glsl */ `
 in vec3 position;
 in ivec3 cell;
 vec4 cellCorner() {
-  return projectionMatrix * modelViewMatrix * vec4(position * cellSize + vec3(cell), 1.0);
+  return projectionMatrix * modelViewMatrix * vec4(position * cellSize + vec3(cell - origin), 1.0);
 }`;
 
 const CUBE_VERTEX = /* glsl */ `${VERTEX_PREAMBLE}${CELL_CORNER}
@@ -111,7 +117,7 @@ const POINT_VERTEX = /* glsl */ `${VERTEX_PREAMBLE}
 in ivec3 position;
 void main() {
   shade = 1.0;
-  vec4 eye = modelViewMatrix * vec4(vec3(position), 1.0);
+  vec4 eye = modelViewMatrix * vec4(vec3(position - origin), 1.0);
   gl_Position = projectionMatrix * eye;
   // A perspective projection has -1 in its third column's last row; there a
   // cell shrinks with distance, in an orthographic one it does not.
@@ -155,8 +161,28 @@ export interface CellStyle {
 /** Draw order of cells drawn on top: after blended cells (1), before the ideal path (2), which stays over them. */
 const ON_TOP_ORDER = 1.5;
 
-/** Uniforms shared by every cell drawing; halfHeightPx is updated on resize. */
-export const cellUniforms = { halfHeightPx: { value: 300 } };
+/** Uniforms shared by every cell drawing; halfHeightPx is updated on resize, origin by setCellOrigin. */
+export const cellUniforms = { halfHeightPx: { value: 300 }, origin: { value: new THREE.Vector3() } };
+
+/** Every cell drawing not yet disposed: each is placed at the origin. */
+const live = new Set<Cells>();
+
+/**
+ * Draws every cell from the grid point `origin` (whole numbers), which the
+ * view sets before each frame to the point it looks at. A WebGL float has
+ * 24 bits: the cell 1,073,741,801 as a float is 1,073,741,824, and even a
+ * cell 1,500,000 from the one the camera looks at came out a tenth of a
+ * cell off, its cube skewed. So the shaders take each cell from the origin
+ * in integers, exactly, and every drawing sits at the origin, whose
+ * distance from the camera the view's matrices (doubles, in JavaScript)
+ * take off before WebGL sees a float: near the camera every number the
+ * GPU rounds is small.
+ */
+export function setCellOrigin(origin: THREE.Vector3): void {
+  if (origin.equals(cellUniforms.origin.value)) return;
+  cellUniforms.origin.value.copy(origin);
+  for (const cells of live) cells.placeAtOrigin();
+}
 
 function material(style: CellStyle, vertexShader: string): THREE.RawShaderMaterial {
   const transparent = style.opacity < 1;
@@ -169,6 +195,7 @@ function material(style: CellStyle, vertexShader: string): THREE.RawShaderMateri
       opacity: { value: style.opacity },
       cellSize: { value: style.cellSize },
       halfHeightPx: cellUniforms.halfHeightPx,
+      origin: cellUniforms.origin,
     },
     transparent,
     depthWrite: !transparent && !style.onTop,
@@ -193,12 +220,15 @@ export class Cells extends THREE.Group {
   readonly light: boolean;
   /** How many cells `points` holds. */
   readonly count: number;
+  /** The cells' box, grid units. */
+  readonly #bounds: THREE.Box3;
 
   /** `attribute` lets several drawings share one GPU buffer (see `attribute`); `bounds` frames culling. */
   constructor(points: Int32Array, dims: number, style: CellStyle, light: boolean, bounds: THREE.Box3, attribute?: THREE.BufferAttribute | THREE.InterleavedBufferAttribute) {
     super();
     this.light = light;
     this.count = points.length / dims;
+    this.#bounds = bounds.clone();
     const cells = attribute ?? cellAttribute(points, dims, !light);
     if (light) {
       this.#geometry = new THREE.BufferGeometry();
@@ -220,18 +250,31 @@ export class Cells extends THREE.Group {
         edges.setAttribute('position', UNIT_EDGES.getAttribute('position'));
         edges.setAttribute('cell', cells);
         edges.instanceCount = this.count;
-        edges.boundingBox = bounds.clone();
-        edges.boundingSphere = bounds.getBoundingSphere(new THREE.Sphere());
         this.#edges = new THREE.LineSegments(edges, material({ ...style, opacity: 1 }, EDGE_VERTEX));
         this.add(this.#edges);
       }
     }
-    // Bounds from the path's box, not from a scan of a million cells.
-    this.#geometry.boundingBox = bounds.clone();
-    this.#geometry.boundingSphere = bounds.getBoundingSphere(new THREE.Sphere());
     // Faint cells blend over what is behind them, so they come after the opaque ones.
     this.#object.renderOrder = style.onTop ? ON_TOP_ORDER : style.opacity < 1 ? 1 : 0;
     this.add(this.#object);
+    live.add(this);
+    this.placeAtOrigin();
+  }
+
+  /**
+   * At the cells' origin (setCellOrigin), with the box three culls by
+   * taken from it too: from the path's box, not from a scan of a million
+   * cells.
+   */
+  placeAtOrigin(): void {
+    const origin = cellUniforms.origin.value;
+    this.position.copy(origin);
+    const box = this.#bounds.clone().translate(origin.clone().negate());
+    for (const geometry of [this.#geometry, this.#edges?.geometry]) {
+      if (!geometry) continue;
+      geometry.boundingBox = box.clone();
+      geometry.boundingSphere = box.getBoundingSphere(new THREE.Sphere());
+    }
   }
 
   /** The GPU attribute, to share with another drawing of the same cells. */
@@ -251,6 +294,7 @@ export class Cells extends THREE.Group {
   }
 
   dispose(): void {
+    live.delete(this);
     // The box's own buffers are shared (UNIT_BOX, UNIT_EDGES); only this drawing's are released.
     this.#geometry.dispose();
     this.#material.dispose();

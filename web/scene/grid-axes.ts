@@ -192,8 +192,12 @@ export class GridAxes extends THREE.Group {
       area.max.setComponent(a, bounds.max.getComponent(a) + margin);
     }
     const level = (FAR_SIDE[normal] === 'min' ? bounds.min : bounds.max).getComponent(normal);
+    // The lines from a grid point at the area's corner, where the grid is
+    // placed: a WebGL float of a coordinate near 2^30 is a multiple of 64
+    // (see setCellOrigin in cells.ts).
+    const origin = area.min.clone().floor();
     const grid: number[] = [];
-    const line = (a: THREE.Vector3, b: THREE.Vector3) => grid.push(a.x, a.y, a.z, b.x, b.y, b.z);
+    const line = (a: THREE.Vector3, b: THREE.Vector3) => grid.push(a.x - origin.x, a.y - origin.y, a.z - origin.z, b.x - origin.x, b.y - origin.y, b.z - origin.z);
     for (const [along, across] of [
       [u, v],
       [v, u],
@@ -207,6 +211,7 @@ export class GridAxes extends THREE.Group {
     geometry.setAttribute('position', new THREE.Float32BufferAttribute(grid, 3));
     // First and leaving no depth: whatever the path draws is over it.
     this.#grid = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: PALETTE.grid, depthWrite: false }));
+    this.#grid.position.copy(origin);
     this.#grid.renderOrder = -1;
     this.add(this.#grid);
   }

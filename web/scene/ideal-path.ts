@@ -29,6 +29,10 @@ export class IdealPath extends THREE.Group {
   constructor(ideal: IdealLine, colour: string = PALETTE.ideal) {
     super();
     const { xyz } = ideal;
+    // The vertices are from their origin, which places the group: the
+    // view's matrices, computed in doubles, take the origin off the camera's
+    // position before WebGL's 32-bit floats see either.
+    this.position.fromArray(ideal.origin);
     const count = xyz.length / 3;
     // A program that made no move (empty, or stopped at its first line) has
     // no ideal path; a line needs two points (and LineGeometry throws on none).

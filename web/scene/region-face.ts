@@ -49,9 +49,14 @@ export class RegionFace extends OverlayGroup {
   /** `face` of the step that reached `reached` (the corner it went to, 3 coordinates). */
   constructor(face: ExitFace, reached: ArrayLike<number>) {
     super();
+    // Drawn from the corner reached, where the overlay is placed: a WebGL
+    // float of a coordinate near 2^30 is a multiple of 64 (setCellOrigin,
+    // cells.ts), and the face is a cell wide.
+    const origin = new THREE.Vector3(reached[0], reached[1], reached[2]);
+    this.position.copy(origin);
     const { uAxis, vAxis } = face;
     const regionLabelClass = (name: string) => `scene-label face-region-label${name === face.region ? ' chosen' : ''}`;
-    const center = new THREE.Vector3().fromArray(face.center);
+    const center = new THREE.Vector3().fromArray(face.center).sub(origin);
     const eu = unit(uAxis.axis, uAxis.sign);
     // With one passive axis the face is its edge: v does not move off it.
     const ev = vAxis === null ? new THREE.Vector3() : unit(vAxis.axis, vAxis.sign);
@@ -63,9 +68,9 @@ export class RegionFace extends OverlayGroup {
     for (let corner = 0; corner < 8; corner++) {
       for (let a = 0; a < 3; a++) {
         if (corner & (1 << a)) continue;
-        const p = [0, 1, 2].map((b) => (corner & (1 << b) ? far[b]! : near[b]!));
+        const p = [0, 1, 2].map((b) => (corner & (1 << b) ? far[b]! : near[b]!) - origin.getComponent(b));
         const q = [...p];
-        q[a] = far[a]!;
+        q[a] = far[a]! - origin.getComponent(a);
         cellEdges.push(...p, ...q);
       }
     }
@@ -106,8 +111,9 @@ export class RegionFace extends OverlayGroup {
     const normalAxis = [0, 1, 2].find((a) => a !== uAxis.axis && a !== vAxis?.axis)!;
     const ringGeometry = new THREE.RingGeometry(CORNER_RING[0], CORNER_RING[1], 40);
     const ring = this.#mesh(ringGeometry, PALETTE.ideal, 1);
-    ring.position.set(reached[0]!, reached[1]!, reached[2]!);
-    ring.lookAt(ring.position.clone().add(unit(normalAxis, 1)));
+    // At the corner reached, the origin; turned from facing z to the normal.
+    const facing = new THREE.Quaternion().setFromUnitVectors(unit(2, 1), unit(normalAxis, 1));
+    ring.quaternion.copy(facing);
 
     // The crossing: a yellow dot in a black ring, facing the same way.
     const crossing = at(...face.crossing);
@@ -117,7 +123,7 @@ export class RegionFace extends OverlayGroup {
     ] as const) {
       const dot = this.#mesh(new THREE.CircleGeometry(radius, 32), colour, 1);
       dot.position.copy(crossing);
-      dot.lookAt(crossing.clone().add(unit(normalAxis, 1)));
+      dot.quaternion.copy(facing);
     }
   }
 

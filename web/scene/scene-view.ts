@@ -23,7 +23,7 @@ import { formatPoint } from '../format.js';
 import { idealLineOf } from '../ideal-line.js';
 import type { CameraState, Projection } from '../state/app-state.js';
 import { roundCamera } from '../state/query.js';
-import { Cells, LIGHT_DRAWING_SPAN, cellUniforms, softwareRenderer } from './cells.js';
+import { Cells, LIGHT_DRAWING_SPAN, cellUniforms, setCellOrigin, softwareRenderer } from './cells.js';
 import { EndpointHandles, type Handle } from './endpoint-handles.js';
 import { GridAxes } from './grid-axes.js';
 import { FAT_LINE_POINTS, IdealPath } from './ideal-path.js';
@@ -769,6 +769,10 @@ export class SceneView {
     this.#drawnOnce = true;
     const camera = this.#activeCamera();
     camera.updateMatrixWorld();
+    // Cells drawn from the grid point looked at, so that near it every
+    // number the GPU rounds is small (setCellOrigin).
+    const target = this.#controls.target;
+    setCellOrigin(new THREE.Vector3(Math.round(target.x), Math.round(target.y), Math.round(target.z)));
     this.#handles.pinToView(camera, this.#controls.target);
     this.#drawn?.axes.showLegibleTicks(camera, this.#container.clientWidth, this.#container.clientHeight);
     this.#renderer.render(this.#scene, camera);

@@ -1914,9 +1914,15 @@ mod tests {
                 let repeats = joined.len() >= dims && joined[joined.len() - dims..] == own[..first];
                 joined.extend_from_slice(&own[if repeats { first } else { 0 }..]);
             }
-            // The line for drawing is the same vertices as f32, after their box.
-            let line = t.ideal_line_f32();
-            let xyz: Vec<f32> = joined.iter().map(|&v| v as f32).collect();
+            // The line for drawing is the same vertices less its origin as
+            // f32, after their box.
+            let origin = [3.0, -2.0, 1.0];
+            let line = t.ideal_line_f32(origin);
+            let xyz: Vec<f32> = joined
+                .iter()
+                .enumerate()
+                .map(|(i, &v)| (v - origin[i % 3]) as f32)
+                .collect();
             prop_assert_eq!(&line[crate::trace::IDEAL_LINE_BOX_VALUES..], &xyz[..]);
             for axis in 0..3 {
                 let values = || xyz.iter().skip(axis).step_by(3).copied();
