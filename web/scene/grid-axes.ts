@@ -58,7 +58,7 @@ export function sceneLabel(text: string, className: string, position: THREE.Vect
 }
 
 /** Which side of the cells the 2D grid lies on, per plane normal: away from the 2D camera (scene-view's PLANE_VIEWS). */
-const FAR_SIDE: Record<number, 'min' | 'max'> = { 0: 'min', 1: 'max', 2: 'min' };
+const FAR_SIDE: Record<number, 'min' | 'max'> = { 0: 'min', 1: 'min', 2: 'min' };
 
 /**
  * Rough widths of a tick's characters, CSS pixels (12 px digits, the unit

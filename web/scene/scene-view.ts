@@ -146,13 +146,17 @@ function sceneCorners(bounds: PointBounds): { min: THREE.Vector3; max: THREE.Vec
 }
 
 /**
- * The 2D view looks down the plane's normal from this side, with this
- * screen-up axis: the xy plane from above (y up), zx from the front and yz
- * from the right (z up), as drawings of those planes usually are.
+ * The 2D view looks down the plane's normal from its positive end, with
+ * this screen-up axis: the xy plane from +z (x right, y up), yz from +x (y
+ * right, z up) and zx from +y (z right, x up, as a lathe's drawings put
+ * them), so that a turn the page calls counterclockwise (G3), which is
+ * counterclockwise seen from there, is counterclockwise on screen. The zx
+ * plane seen from -y (the front, z up) showed every G18 arc the other way
+ * round from its label.
  */
 const PLANE_VIEWS: Record<number, { direction: THREE.Vector3; up: THREE.Vector3 }> = {
   0: { direction: new THREE.Vector3(1, 0, 0), up: new THREE.Vector3(0, 0, 1) },
-  1: { direction: new THREE.Vector3(0, -1, 0), up: new THREE.Vector3(0, 0, 1) },
+  1: { direction: new THREE.Vector3(0, 1, 0), up: new THREE.Vector3(1, 0, 0) },
   2: { direction: new THREE.Vector3(0, 0, 1), up: new THREE.Vector3(0, 1, 0) },
 };
 
