@@ -742,7 +742,21 @@ impl Interpreter {
             }
         }
         if first_axis.is_none() && arc_word.is_none() {
-            // A motion code alone sets the mode; nothing moves.
+            // A motion code alone sets the mode; nothing moves. Grbl checks
+            // a feed move's F first even so (gcode.c: a motion code on the
+            // line makes it a motion command, and F undefined is error 22).
+            if let Some((MotionCode::Move(mode), code)) = motion {
+                if mode != Motion::Rapid && self.feed_mm_per_min.is_none() {
+                    effects.warnings.push(Problem {
+                        column: code.column,
+                        message: format!(
+                            "{} with no feed rate set (F, or F0{}) and no axis word: Grbl refuses the line (error 22, undefined feed rate); voxpath sets the motion mode, and nothing moves",
+                            mode.code(),
+                            if self.inverse_time { "; in G93 each feed line's own" } else { "" }
+                        ),
+                    });
+                }
+            }
             self.warn_unused_p(&words, dwell.is_some(), effects);
             return Ok(());
         }
@@ -1631,6 +1645,18 @@ mod tests {
             [(1, "G1 in inverse time (G93) with no F on its line (or F0): Grbl would refuse it (error 22, undefined feed rate: in G93 every feed move gives its own F); voxpath runs it, timed at the max rate".to_string())]
         );
         assert_eq!(e.motion.unwrap().inverse_time_per_min, None);
+        // A motion code alone: no move, but Grbl's error 22 all the same.
+        let (_, e) = run(&["G1"]).unwrap();
+        assert_eq!(
+            messages(&e),
+            [(1, "G1 with no feed rate set (F, or F0) and no axis word: Grbl refuses the line (error 22, undefined feed rate); voxpath sets the motion mode, and nothing moves".to_string())]
+        );
+        assert!(run(&["G93 G1 F2"]).unwrap().1.warnings.is_empty());
+        assert!(run(&["G0"]).unwrap().1.warnings.is_empty());
+        let (_, e) = run(&["G93", "G2"]).unwrap();
+        assert!(messages(&e)[0].1.starts_with(
+            "G2 with no feed rate set (F, or F0; in G93 each feed line's own) and no axis word"
+        ));
         // The G94 feed before is not carried into G93.
         let (_, e) = run(&["G1 X1 F100", "G93 G1 X2"]).unwrap();
         assert!(
