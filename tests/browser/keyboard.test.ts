@@ -65,6 +65,26 @@ describe('the keys the page gives way to', () => {
     await p.close();
   });
 
+  it('plays and pauses with Space on a handle, whose arrows still move it', async () => {
+    // A handle is a button, and Space on a button was left to the button,
+    // whose press does nothing: Space did nothing there. Found by a helper's hunt.
+    const p = await openPage('?from=0,0,0&to=10,7,6&speed=8');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 0 of 10' }).waitFor();
+    const handle = page.getByTestId('handle-from');
+    await handle.focus();
+    await page.keyboard.press(' ');
+    await page.locator('#play-label').filter({ hasText: 'Pause' }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: /^Step [1-9]/ }).waitFor();
+    await page.keyboard.press(' ');
+    await page.locator('#play-label').filter({ hasText: 'Play' }).waitFor();
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => handle.getAttribute('title')).toBe('from (1, 0, 0)');
+    expect(await page.evaluate(() => (document.activeElement as HTMLElement | null)?.dataset.testid)).toBe('handle-from');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps every key from the page behind a modal dialog', async () => {
     const p = await openPage('?from=0,0,0&to=10,7,6&step=3');
     const { page } = p;

@@ -55,9 +55,10 @@ export function handlesItsOwnKeys(target: EventTarget | null, key: string): bool
   if (!(target instanceof HTMLElement)) return false;
   // The view and its handles use the keys they declare (the arrows, Page Up
   // and Down, + and -), and only those: Space, Home, End and ? still play,
-  // go and open the help there.
+  // go and open the help there. A handle is a button, but its press does
+  // nothing, so Space left to it as to other buttons did nothing at all.
   const owner = target.closest('[data-own-keys]');
-  if (owner && ownKeys(owner).includes(key)) return true;
+  if (owner) return ownKeys(owner).includes(key);
   // A select, and the options of one open as a styled list (appearance:
   // base-select focuses the option), take arrows, Home/End and Space.
   if (target.isContentEditable || target instanceof HTMLTextAreaElement || target.closest('select')) return true;
