@@ -122,6 +122,13 @@ describe('runGcode', () => {
     p.free();
   });
 
+  it('says in its progress the line a run stopped at, past which lines are read for their syntax only', async () => {
+    const seen: GcodeProgress[] = [];
+    const p = await runGcode('G1 X1 F1\nG2 X9 Y0 R1\nG1 X0\nG1 X1\n', { stepsPerMm: 2 }, { onProgress: (q) => seen.push(q) });
+    expect(seen.at(-1)).toMatchObject({ linesDone: 4, lines: 4, stoppedAtLine: 2, done: true });
+    p.free();
+  });
+
   it('rejects bad settings naming the setting', async () => {
     expect((await rejection(runGcode(SQUARE, { stepsPerMm: -1 }))).field).toBe('stepsPerMm');
     expect((await rejection(runGcode(SQUARE, { stepsPerMm: 1, lineAlgorithm: 'bresenham2d' }))).field).toBe('lineAlgorithm');
@@ -134,7 +141,7 @@ describe('runGcode', () => {
     const p = await runGcode(source, { stepsPerMm: 4 }, { onProgress: (q) => seen.push(q), sliceMs: 0.01 });
     expect(seen.length).toBeGreaterThan(2);
     expect(seen.map((q) => q.linesDone)).toEqual([...seen.map((q) => q.linesDone)].sort((a, b) => a - b));
-    expect(seen.at(-1)).toEqual({ linesDone: lines, lines, moves: lines, steps: p.steps, done: true });
+    expect(seen.at(-1)).toEqual({ linesDone: lines, lines, stoppedAtLine: null, moves: lines, steps: p.steps, done: true });
     p.free();
 
     const controller = new AbortController();

@@ -684,6 +684,32 @@ describe('G-code mode', () => {
     await p.close();
   });
 
+  it('names the line a program stopped at in its progress, not the last line read after it', async () => {
+    // A run goes on reading the lines after its first error, for their
+    // syntax only; the progress said the last line read ("line 40001 of
+    // 40001") where the run had stopped at line 31252. Found by a helper's hunt.
+    const record = () => {
+      const said: string[] = [];
+      (window as unknown as { statusSaid: string[] }).statusSaid = said;
+      document.addEventListener('DOMContentLoaded', () => {
+        new MutationObserver((records) => {
+          for (const r of records) for (const node of r.addedNodes) said.push(node.textContent ?? '');
+        }).observe(document.querySelector('[data-testid=trace-status]')!, { childList: true });
+      });
+    };
+    // 10 m at 80 steps/mm is more steps than a program may make: the run stops at line 2 of 4.
+    const program = 'G21 G90\nG1 X10000000 F100\nG1 X1\nG1 X2\n';
+    const p = await openPage(`?mode=gcode&gcode=${encodeURIComponent(program)}`, { initScript: record });
+    const { page } = p;
+    await page.getByTestId('trace-status').filter({ hasText: 'stopped at line 2' }).waitFor();
+    const said = await page.evaluate(() => (window as unknown as { statusSaid: string[] }).statusSaid);
+    const running = said.filter((text) => text.startsWith('Running'));
+    expect(running.length).toBeGreaterThan(0);
+    for (const text of running) expect(text).toBe('Running: line 2 of 4, 0 steps so far…');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps an edited program over a reload, and loads a sample', async () => {
     const p = await openPage('?mode=gcode');
     const { page } = p;

@@ -8,6 +8,8 @@ export interface LinesProgress {
   linesDone: number;
   lines: number;
   steps: number;
+  /** A program's first error's line, where its run stopped: the lines after it are read (linesDone) for their syntax only. */
+  stoppedAtLine?: number | null;
 }
 
 export interface RunProgressElements {

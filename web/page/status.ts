@@ -52,9 +52,9 @@ export class Status {
     this.#say(mode === 'experiment' ? 'Tracing the lines…' : 'Tracing…');
   }
 
-  /** How far a long run has got: a program's ('Running') or the experiment's ('Tracing'). */
+  /** How far a long run has got: a program's ('Running') or the experiment's ('Tracing'), at the line it has reached. */
   running(verb: string, progress: LinesProgress): void {
-    this.#say(`${verb}: line ${progress.linesDone} of ${progress.lines}, ${progress.steps} steps so far…`);
+    this.#say(`${verb}: line ${progress.stoppedAtLine ?? progress.linesDone} of ${progress.lines}, ${progress.steps} steps so far…`);
   }
 
   /** What is now on screen. */

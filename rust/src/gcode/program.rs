@@ -375,8 +375,14 @@ pub struct Move {
 #[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
 #[serde(rename_all = "camelCase")]
 pub struct Progress {
+    /// The lines read: past the first error too, whose lines are read for
+    /// their syntax only.
     pub lines_done: u32,
     pub lines: u32,
+    /// The line of the first error, where the run stopped (as
+    /// [`ProgramInfo::stopped_at_line`]), so that progress can name the
+    /// line reached rather than the last line read after it.
+    pub stopped_at_line: Option<u32>,
     pub moves: usize,
     pub steps: u64,
     pub done: bool,
@@ -1020,6 +1026,7 @@ impl Runner {
         Progress {
             lines_done: self.lines_done,
             lines: self.lines,
+            stopped_at_line: self.stopped_at_line,
             moves: self.moves.len(),
             steps: self.steps,
             done: self.lines_done == self.lines,
