@@ -244,7 +244,7 @@ describe('bad input', () => {
     expect((await rejected({ algorithm: 'regions', from: [0, 0], to: [1, 1] })).field).toBe('from');
     expect((await rejected({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1] })).field).toBe('to');
     const outside = await rejected({ algorithm: 'regions', from: [0, 0, 0], to: [0, 2 ** 31, 0] });
-    expect(outside.message).toBe('to: y = 2147483648 is outside ±2^30 (1073741824)');
+    expect(outside.message).toBe('to: y must be -1073741824 to 1073741824, got 2147483648');
     expect(outside.axis).toBe(1);
     expect((await rejected({ algorithm: 'nope', from: [0, 0, 0], to: [1, 1, 1] })).field).toBe('algorithm');
     expect((await rejected({ ...LINE, tie: 'maybe' })).field).toBe('tie');

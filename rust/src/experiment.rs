@@ -13,7 +13,8 @@
 use crate::algorithm_info::Family;
 use crate::error::Error;
 use crate::grid::{MAX_AXES, Point};
-use crate::request::{IntegerRange, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
+use crate::range::IntegerRange;
+use crate::request::{MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
 use serde::Serialize;
 use serde_json::Value;
 use tsify::Tsify;

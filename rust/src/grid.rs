@@ -5,6 +5,7 @@
 //! 32 bits and every product of two differences fits in i64 (2^31 * 2^31 = 2^62).
 
 use crate::error::{Error, number_text};
+use crate::range::IntegerRange;
 use std::fmt;
 
 /// Most axes a path may have: X Y Z A B C.
@@ -51,6 +52,15 @@ pub fn signed_axis(axis: usize, dir: i64) -> u8 {
 
 /// Largest accepted |coordinate| of an input point, in grid units.
 pub const COORD_LIMIT: i64 = 1 << 30;
+
+/// The range of each coordinate of an input point, as the catalogue
+/// declares it for every point option (the page's form checks each
+/// coordinate against it as it is typed, in the words [`Point::parse`]
+/// refuses it with).
+pub const COORD_RANGE: IntegerRange = IntegerRange {
+    min: Some(-COORD_LIMIT),
+    max: Some(COORD_LIMIT),
+};
 
 /// Largest magnitude (exclusive) of the integers whose products the fast
 /// paths form in i64: two factors below 2^31 multiply to below 2^62, so a
@@ -112,7 +122,7 @@ impl Point {
         Point::new(&[0; MAX_AXES][..dims])
     }
 
-    /// Validates user input: 2..=MAX_AXES integers within +-COORD_LIMIT.
+    /// Validates user input: 2..=MAX_AXES integers within [`COORD_RANGE`].
     /// `field` names the input in the error (for example "from").
     pub fn parse(field: &str, values: &[f64]) -> Result<Point, Error> {
         if !(2..=MAX_AXES).contains(&values.len()) {
@@ -134,15 +144,11 @@ impl Point {
                 )
                 .on_axis(axis));
             }
-            if v.abs() > COORD_LIMIT as f64 {
-                return Err(Error::field(
-                    field,
-                    format!(
-                        "{name} = {} is outside ±2^30 ({COORD_LIMIT})",
-                        number_text(v)
-                    ),
-                )
-                .on_axis(axis));
+            if let Some(words) = COORD_RANGE.must_be_if_outside(v) {
+                return Err(
+                    Error::field(field, format!("{name} {words}, got {}", number_text(v)))
+                        .on_axis(axis),
+                );
             }
             coords[axis] = v as i64;
         }
@@ -499,14 +505,17 @@ mod tests {
             "to: y must be an integer number of grid units, got 2.5"
         );
         let e = Point::parse("from", &[0.0, 2f64.powi(31)]).unwrap_err();
-        assert!(e.to_string().starts_with("from: y = 2147483648 is outside"));
+        assert_eq!(
+            e.to_string(),
+            "from: y must be -1073741824 to 1073741824, got 2147483648"
+        );
         let e = Point::parse("from", &[1.0]).unwrap_err();
         assert_eq!(e.to_string(), "from: expected 2 to 6 coordinates, got 1");
         // A huge number is said in e-notation, not as its 301 digits.
         let huge = Point::parse("to", &[1e300, 0.0]).unwrap_err();
         assert_eq!(
             huge.to_string(),
-            "to: x = 1e300 is outside ±2^30 (1073741824)"
+            "to: x must be -1073741824 to 1073741824, got 1e300"
         );
         let tiny = Point::parse("to", &[0.0, 1e-300]).unwrap_err();
         assert_eq!(

@@ -31,6 +31,7 @@ pub mod memory;
 pub mod metrics;
 pub mod planner;
 pub mod points;
+pub mod range;
 pub mod request;
 pub mod starts;
 pub mod step_clocks;

@@ -3,7 +3,8 @@
 //! the CLI flags and the page's inputs are generated from those declarations.
 
 use crate::error::Error;
-use crate::grid::{Point, Step};
+use crate::grid::{COORD_RANGE, Point, Step};
+use crate::range::IntegerRange;
 use crate::text::echo;
 use serde::Serialize;
 use serde_json::{Map, Value};
@@ -63,8 +64,10 @@ impl TiePolicy {
 #[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
 #[serde(tag = "type", rename_all = "camelCase")]
 pub enum OptionKind {
-    /// Integer grid coordinates, one per axis.
-    Point,
+    /// Integer grid coordinates, one per axis, each within its range
+    /// ([`crate::grid::COORD_RANGE`]).
+    // Crosses as IntegerRangeInfo, as Integer does.
+    Point(#[tsify(type = "IntegerRangeInfo")] IntegerRange),
     /// A real number.
     Number,
     /// A whole number, within its range where it has one (a small declared
@@ -79,70 +82,6 @@ pub enum OptionKind {
     /// A number for every axis, or one per axis ([x, y, z]); whole numbers
     /// when `integer` (a machine setting such as stepsPerMm or maxRate).
     PerAxis { integer: bool },
-}
-
-/// The bounds of a whole-number option, `min..=max`, either absent.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct IntegerRange {
-    pub min: Option<i64>,
-    pub max: Option<i64>,
-}
-
-impl IntegerRange {
-    /// What a value outside the range is told, before ", got" and the
-    /// value: "must be 1 to 5", "must be 0 or more", "must be 7 or less";
-    /// None when neither bound is given. The one statement of these words:
-    /// the core's errors and the page's form (from the catalogue) say them.
-    pub fn must_be(&self) -> Option<String> {
-        let expected = match (self.min, self.max) {
-            (Some(low), Some(high)) => format!("{low} to {high}"),
-            (Some(low), None) => format!("{low} or more"),
-            (None, Some(high)) => format!("{high} or less"),
-            (None, None) => return None,
-        };
-        Some(format!("must be {expected}"))
-    }
-
-    /// What `value` is told when it is outside the range ("must be 1 to 5,
-    /// got 6"), None when it is inside.
-    /// Taken as i128, so that any i64 or u64 is compared exactly.
-    pub fn refusal(&self, value: i128) -> Option<String> {
-        let below = self.min.is_some_and(|low| value < low as i128);
-        let above = self.max.is_some_and(|high| value > high as i128);
-        if below || above {
-            self.must_be().map(|words| format!("{words}, got {value}"))
-        } else {
-            None
-        }
-    }
-}
-
-/// An integer option's range as the catalogue gives it: its bounds and the
-/// words for a value outside them.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct IntegerRangeInfo {
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub min: Option<i64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub max: Option<i64>,
-    /// What the core tells a value outside `min..=max`, before ", got" and
-    /// the value ("must be 1 to 100000", "must be 0 or more"), so that the
-    /// page's form, checking each field as it is typed, says what the core
-    /// would; absent when neither bound is.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub must_be: Option<String>,
-}
-
-impl Serialize for IntegerRange {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        IntegerRangeInfo {
-            min: self.min,
-            max: self.max,
-            must_be: self.must_be(),
-        }
-        .serialize(s)
-    }
 }
 
 /// One option an algorithm takes.
@@ -173,7 +112,7 @@ pub struct AppliesWith {
 
 pub const FROM: OptionSpec = OptionSpec {
     name: "from",
-    kind: OptionKind::Point,
+    kind: OptionKind::Point(COORD_RANGE),
     required: true,
     default: None,
     applies_with: None,
@@ -182,7 +121,7 @@ pub const FROM: OptionSpec = OptionSpec {
 
 pub const TO: OptionSpec = OptionSpec {
     name: "to",
-    kind: OptionKind::Point,
+    kind: OptionKind::Point(COORD_RANGE),
     required: true,
     default: None,
     applies_with: None,
@@ -481,10 +420,7 @@ impl Request {
         let Some(x) = self.number(spec.name)? else {
             return Ok(None);
         };
-        let below = range.min.is_some_and(|low| x < low as f64);
-        let above = range.max.is_some_and(|high| x > high as f64);
-        if below || above {
-            let words = range.must_be().expect("a bound was passed");
+        if let Some(words) = range.must_be_if_outside(x) {
             return Err(Error::field(spec.name, format!("{words}, got {x}")));
         }
         self.integer(spec.name)

@@ -89,7 +89,7 @@ fn junk() -> impl Strategy<Value = Value> {
 /// runs), sometimes junk (so the checks run).
 fn option_value(option: &'static OptionSpec, dims: usize, base: i64) -> BoxedStrategy<Value> {
     let valid: BoxedStrategy<Value> = match option.kind {
-        OptionKind::Point => point(base, dims).boxed(),
+        OptionKind::Point(_) => point(base, dims).boxed(),
         OptionKind::Number => prop_oneof![
             4 => (-1e3f64..1e3).prop_map(Value::from),
             1 => any::<f64>().prop_map(|f| serde_json::Number::from_f64(f).map_or(Value::Null, Value::Number)),

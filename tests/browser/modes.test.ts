@@ -347,7 +347,7 @@ describe('trace mode', () => {
     const p = await openPage('?from=0,0,0&to=1073741825,0,0');
     const { page } = p;
     const buttons = ['export-csv', 'export-json', 'export-png'].map((id) => page.getByTestId(id));
-    await page.getByTestId('error-to').filter({ hasText: 'outside ±2^30' }).waitFor();
+    await page.getByTestId('error-to').filter({ hasText: 'must be -1073741824 to 1073741824' }).waitFor();
     for (const button of buttons) {
       await expect.poll(() => button.isDisabled()).toBe(true);
       expect(await button.getAttribute('title')).toMatch(/^Nothing to export: nothing was traced/);
@@ -364,7 +364,7 @@ describe('trace mode', () => {
     expect(await buttons[0]!.getAttribute('title')).toMatch(/^Not exported yet: the inputs as they are now are being traced/);
     await steps(page, 12);
     await expect.poll(() => buttons[0]!.isDisabled()).toBe(false);
-    // Refused by the core over a traced path: the path stays, dimmed, and is not exported as the inputs'.
+    // Refused over a traced path (by the page, as the core would): the path stays, dimmed, and is not exported as the inputs'.
     await page.getByTestId('input-to-x').fill('12.5');
     await page.getByTestId('stale-note').filter({ hasText: 'Out of date' }).waitFor();
     for (const button of buttons) {
@@ -850,7 +850,7 @@ describe('experiment mode, long runs', () => {
 describe('embedded', () => {
   it("says over the view why a link's input was not traced, as the hidden inputs would (a blank or white frame before)", async () => {
     const cases: [string, string][] = [
-      ['?mode=trace&algorithm=regions&from=0,0,0&to=1073741825,0,0&embed=1', 'Not traced: to: x = 1073741825 is outside ±2^30'],
+      ['?mode=trace&algorithm=regions&from=0,0,0&to=1073741825,0,0&embed=1', 'Not traced: to: x must be -1073741824 to 1073741824, got 1073741825'],
       ['?mode=experiment&count=0&embed=1', 'Not traced: count: must be 1 to 100000, got 0'],
       ['?mode=gcode&gcode=G21%0AG1%20X5%20Y%0A&embed=1', 'The program stopped at line 2, column 7: '],
     ];

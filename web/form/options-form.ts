@@ -8,8 +8,11 @@
  * The form only reads what was typed. Whether a value is acceptable is the
  * core's call: its errors come back naming the option and are shown beside
  * that field. The checks made here are that a field holds a number at all,
- * because an empty field has no value to send, and that a whole number is
- * within the range its spec declares, said in the core's words for it.
+ * because an empty field has no value to send, and that a whole number (an
+ * integer option, a point's coordinate) is whole and within the range its
+ * spec declares, said in the core's words for the range: a value refused
+ * here stays out of the state, and so out of the link (a coordinate of 2.5
+ * went into the link, then the core refused it).
  */
 import { readDecimal } from '../core/guard.js';
 import type { IntegerRangeInfo, OptionSpec } from '../core/types.js';
@@ -23,11 +26,11 @@ interface Field {
   /** What a control shows while the option is absent (the core's default applies). */
   absent: string;
   error: HTMLElement;
-  /** The field holds no number, so its value was not sent. */
+  /** Why the page refused what the field holds (no number, or one its declaration refuses), so its value was not sent. */
   localError?: string;
   /** What the core said about this option in the last trace request. */
   coreError?: string;
-  /** Where a refused text is kept over a reload (drafts.ts), for fields whose text can be put back (points, per-axis text); else undefined. */
+  /** Where a refused text is kept over a reload (drafts.ts), for fields whose text can be put back (points, per-axis text, integers); else undefined. */
   draftId?: string;
 }
 
@@ -59,10 +62,16 @@ export interface InputsValidity {
   invalid: boolean;
 }
 
-/** Why `value` is outside the declared range, in the words the core says it with (`mustBe`), or undefined when it is inside. */
-function outsideRange({ min, max, mustBe }: IntegerRangeInfo, value: number): string | undefined {
+/**
+ * Why whole number `value` is refused by its declaration: outside the
+ * range, in the words the core says it with (`mustBe`), checked first as
+ * the core does (1e20 is told its range); else not whole. Undefined when
+ * it is neither.
+ */
+function refusedWhole({ min, max, mustBe }: IntegerRangeInfo, value: number): string | undefined {
   const outside = (min !== undefined && value < min) || (max !== undefined && value > max);
-  return outside ? `${mustBe}, got ${value}` : undefined;
+  if (outside) return `${mustBe}, got ${value}`;
+  return Number.isInteger(value) ? undefined : `must be a whole number, got ${value}`;
 }
 
 export class OptionsForm {
@@ -140,16 +149,18 @@ export class OptionsForm {
       return c;
     };
 
-    // A point's number inputs can be put back empty, a per-axis text as typed; a
-    // number input holding no number reads as '' and would be put back as "use
-    // the default", so it keeps no draft.
-    if (spec.kind.type === 'point' || spec.kind.type === 'perAxis') field.draftId = id;
+    // A point's number inputs can be put back empty, a per-axis text as typed,
+    // an integer's input as the number refused; an integer's input holding no
+    // number reads as '' and would be put back as "use the default", so that
+    // keeps no draft (#setLocalError's `keep`).
+    if (spec.kind.type === 'point' || spec.kind.type === 'perAxis' || spec.kind.type === 'integer') field.draftId = id;
     switch (spec.kind.type) {
       case 'point': {
+        const range: IntegerRangeInfo = spec.kind;
         const coords = Array.isArray(value) ? value : [];
         const fields = AXIS_NAMES.slice(0, axes).map((axis, a) => {
           const input = control(element('input', { type: 'number', step: '1', value: coords[a] === undefined ? '' : String(coords[a]) }), `${id}-${axis}`);
-          input.addEventListener('input', () => this.#pointTyped(spec.name, field));
+          input.addEventListener('input', () => this.#pointTyped(spec.name, range, field));
           return element('label', { className: 'axis' }, element('span', { textContent: axis }), input);
         });
         return element('fieldset', { className: 'option' }, element('legend', { textContent: spec.name }), hint, element('div', { className: 'axes' }, ...fields), error);
@@ -178,8 +189,8 @@ export class OptionsForm {
           // Each field checked as it is typed, against the range its spec
           // declares (the core checks the same declaration): every field out
           // of range says so at once, where the core names only the first.
-          const refused = input.validity.badInput ? 'not a number' : given === undefined ? undefined : outsideRange(range, given);
-          this.#setLocalError(spec.name, field, refused);
+          const refused = input.validity.badInput ? 'not a number' : given === undefined || spec.kind.type !== 'integer' ? undefined : refusedWhole(range, given);
+          this.#setLocalError(spec.name, field, refused, !input.validity.badInput);
           if (refused === undefined) this.#onChange(spec.name, given);
         });
         return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
@@ -204,18 +215,25 @@ export class OptionsForm {
     }
   }
 
-  #pointTyped(name: string, field: Field): void {
+  /** A point's coordinates as typed, each held to `range`, the coordinates' declared range. */
+  #pointTyped(name: string, range: IntegerRangeInfo, field: Field): void {
     const inputs = field.controls as HTMLInputElement[];
-    const empty = inputs.findIndex((input) => input.value.trim() === '' || input.validity.badInput);
-    this.#setLocalError(name, field, empty < 0 ? undefined : `${AXIS_NAMES[empty]} needs a number`);
-    if (empty < 0) this.#onChange(name, inputs.map((input) => input.valueAsNumber));
+    const refusals = inputs.map((input, a) => {
+      if (input.value.trim() === '' || input.validity.badInput) return `${AXIS_NAMES[a]} needs a number`;
+      const refused = refusedWhole(range, input.valueAsNumber);
+      return refused === undefined ? undefined : `${AXIS_NAMES[a]} ${refused}`;
+    });
+    const refused = refusals.find((r) => r !== undefined);
+    this.#setLocalError(name, field, refused);
+    if (refused === undefined) this.#onChange(name, inputs.map((input) => input.valueAsNumber));
   }
 
-  #setLocalError(name: string, field: Field, message: string | undefined): void {
+  /** Shows `message` (undefined: none) as the page's own refusal of the field; `keep`: its text can be put back as typed (drafts.ts). */
+  #setLocalError(name: string, field: Field, message: string | undefined, keep = true): void {
     field.localError = message;
     this.#render(field);
     if (field.draftId !== undefined) {
-      if (message === undefined) dropDraft(field.draftId);
+      if (message === undefined || !keep) dropDraft(field.draftId);
       else keepDraft(field.draftId, field.controls.map((c) => c.value), this.#values[name]);
     }
     // The page's own check stopped a value short of the core: what is on

@@ -16,9 +16,10 @@ pub mod helix;
 pub mod planes;
 
 use crate::error::Error;
-use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point};
+use crate::grid::{AXIS_NAMES, COORD_LIMIT, COORD_RANGE, Point};
 use crate::ideal::curve::ArcPath;
-use crate::request::{IntegerRange, OptionKind, OptionSpec, Request};
+use crate::range::IntegerRange;
+use crate::request::{OptionKind, OptionSpec, Request};
 use angle::{atan3, degrees};
 use planes::{DIR_VALUES, Frame, PLANE_VALUES, Plane, Turn, same_height};
 use std::f64::consts::TAU;
@@ -33,7 +34,7 @@ pub const MAX_TURNS: i64 = 1_000_000;
 
 pub const CENTER: OptionSpec = OptionSpec {
     name: "center",
-    kind: OptionKind::Point,
+    kind: OptionKind::Point(COORD_RANGE),
     required: true,
     default: None,
     applies_with: None,

@@ -15,9 +15,8 @@ use super::{
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::{Error, counted};
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::request::{
-    FROM, IntegerRange, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option,
-};
+use crate::range::IntegerRange;
+use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, fill_by_next_step};
 
 pub const ID: &str = "liu-float";
