@@ -299,3 +299,39 @@ describe('an embedded view in a small frame', () => {
     }
   });
 });
+
+describe("the inspector's point", () => {
+  it('shows ten-digit coordinates whole inside the panel, broken only after a comma', async () => {
+    // Step 3 of this move is (-999999997, -999999998, -999999998): held on one
+    // line it ran about 100 px past the panel, its z unreadable.
+    const p = await openPage('?algorithm=regions&from=-1000000000,-1000000000,-1000000000&to=-999999990,-999999993,-999999994&step=3');
+    const { page } = p;
+    const point = page.getByTestId('inspector-point');
+    for (const [width, height] of [
+      [1280, 720],
+      [1920, 1080],
+    ] as const) {
+      await page.setViewportSize({ width, height });
+      await point.filter({ hasText: '(-999999997, -999999998, -999999998)' }).waitFor();
+      const laidOut = await point.evaluate((dd) => {
+        const text = dd.firstChild as Text;
+        const readout = dd.closest('.readout')!.getBoundingClientRect();
+        const range = document.createRange();
+        range.selectNodeContents(text);
+        const outside = [...range.getClientRects()].filter((r) => r.left < readout.left - 0.5 || r.right > readout.right + 0.5).map((r) => `${r.left}-${r.right}`);
+        // Each coordinate in one piece: a line break inside one would split its digits.
+        const pieces = [...text.data.matchAll(/-?\d+/g)].map((m) => {
+          range.setStart(text, m.index);
+          range.setEnd(text, m.index + m[0].length);
+          return range.getClientRects().length;
+        });
+        return { outside, pieces, readout: `${readout.left}-${readout.right}` };
+      });
+      expect(laidOut.outside, `${width}x${height}: lines past the readout's ${laidOut.readout}`).toEqual([]);
+      expect(laidOut.pieces, `${width}x${height}: each coordinate whole`).toEqual([1, 1, 1]);
+      await screenshot(page, `inspector-point-${width}x${height}`, '.inspector');
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
