@@ -1,5 +1,5 @@
 // The charts' reference labels (web/charts/reference-labels.ts): "largest"
-// and "bound" never sit on each other, however close their lines are.
+// and "bound" never sit on each other nor on a line, however close their lines are.
 import { describe, expect, it } from 'vitest';
 import { placeReferenceLabels } from '../web/charts/reference-labels.js';
 
@@ -53,5 +53,16 @@ describe('reference labels', () => {
 
   it('go below a line at the top of the plot', () => {
     expect(placeReferenceLabels([{ lineY: 14, width: 90, atRight: false }], BOX, TEXT, GAP, 4)).toEqual([29]);
+  });
+
+  it('keep off the other line: two lines 5 px apart at the top of the plot have their labels under both', () => {
+    // largest 0.6578 under a bound of 0.7071: "largest" above its line stood on the bound's line.
+    const lines = (largest: number, bound: number) => [
+      { lineY: 25, width: largest, atRight: false },
+      { lineY: 20, width: bound, atRight: true },
+    ];
+    // Side by side when they fit, one over the other when not.
+    expect(placeReferenceLabels(lines(60, 60), BOX, TEXT, GAP, 4)).toEqual([40, 40]);
+    expect(placeReferenceLabels(lines(90, 150), BOX, TEXT, GAP, 4)).toEqual([55, 40]);
   });
 });

@@ -335,3 +335,102 @@ describe("the inspector's point", () => {
     await p.close();
   });
 });
+
+/** Texts drawn on a canvas, each by its inked box, and its dashed horizontal lines, in canvas pixels. */
+interface Drawn {
+  texts: { text: string; left: number; right: number; top: number; bottom: number }[];
+  dashes: { y: number; left: number; right: number }[];
+}
+
+declare global {
+  interface HTMLCanvasElement {
+    drawn?: Drawn;
+  }
+}
+
+/**
+ * Installed before the page's scripts: each canvas keeps what was drawn on it
+ * since it was last cleared whole (uPlot clears a chart so before each draw),
+ * its texts' boxes as the context's transform puts them (the y axis's title
+ * is drawn turned) and the heights of its dashed horizontal lines (a chart's
+ * reference lines).
+ */
+function recordCanvasDrawing(): void {
+  const proto = CanvasRenderingContext2D.prototype;
+  const { clearRect, fillText, moveTo, lineTo } = proto;
+  let from: DOMPoint | undefined;
+  proto.clearRect = function (this: CanvasRenderingContext2D, x, y, w, h) {
+    if (x <= 0 && y <= 0 && w >= this.canvas.width && h >= this.canvas.height) this.canvas.drawn = { texts: [], dashes: [] };
+    clearRect.call(this, x, y, w, h);
+  };
+  proto.fillText = function (this: CanvasRenderingContext2D, text, x, y, maxWidth) {
+    const m = this.measureText(text);
+    const transform = this.getTransform();
+    const corners = [
+      [x - m.actualBoundingBoxLeft, y - m.actualBoundingBoxAscent],
+      [x + m.actualBoundingBoxRight, y - m.actualBoundingBoxAscent],
+      [x - m.actualBoundingBoxLeft, y + m.actualBoundingBoxDescent],
+      [x + m.actualBoundingBoxRight, y + m.actualBoundingBoxDescent],
+    ].map(([cx, cy]) => transform.transformPoint(new DOMPoint(cx, cy)));
+    const xs = corners.map((c) => c.x);
+    const ys = corners.map((c) => c.y);
+    this.canvas.drawn?.texts.push({ text, left: Math.min(...xs), right: Math.max(...xs), top: Math.min(...ys), bottom: Math.max(...ys) });
+    fillText.call(this, text, x, y, maxWidth);
+  };
+  proto.moveTo = function (this: CanvasRenderingContext2D, x, y) {
+    from = this.getTransform().transformPoint(new DOMPoint(x, y));
+    moveTo.call(this, x, y);
+  };
+  proto.lineTo = function (this: CanvasRenderingContext2D, x, y) {
+    const to = this.getTransform().transformPoint(new DOMPoint(x, y));
+    if (from && this.getLineDash().length > 0 && Math.abs(to.y - from.y) < 0.5) this.canvas.drawn?.dashes.push({ y: to.y, left: Math.min(from.x, to.x), right: Math.max(from.x, to.x) });
+    from = to;
+    lineTo.call(this, x, y);
+  };
+}
+
+describe('the charts', () => {
+  it("show every label whole, apart from the others and off the reference lines", async () => {
+    // Each move showed one fault: "largest 0.6578" on the bound's dashed line,
+    // the bound's label on the largest's, and the y axis's title against its
+    // "1,000"; ticks of ten digits cut to "000,000,000" at the canvas's edge;
+    // -5,000 to 6,000 labelled at 0 alone.
+    for (const [name, move] of [
+      ['near-bound', 'from=0,0,0&to=1000,7,6'],
+      ['ten-digits', 'from=1000000000,-1000000000,5&to=1000000020,-999999990,12'],
+      ['thousands', 'from=-5000,-5000,0&to=5000,2000,6000'],
+    ] as const) {
+      const p = await openPage(`?algorithm=regions&${move}`, { initScript: recordCanvasDrawing });
+      const { page } = p;
+      // Both charts drawn: they come once the worker sends their rows.
+      await page.waitForFunction(() => {
+        const canvases = [...document.querySelectorAll<HTMLCanvasElement>('#charts canvas')];
+        return canvases.length === 2 && canvases.every((c) => (c.drawn?.texts.length ?? 0) > 0);
+      });
+      const charts = await page.locator('#charts canvas').evaluateAll((canvases) =>
+        (canvases as HTMLCanvasElement[]).map((c) => ({ width: c.width, height: c.height, drawn: c.drawn! })),
+      );
+      for (const [i, { width, height, drawn }] of charts.entries()) {
+        const at = `${name}, chart ${i + 1}`;
+        const texts = drawn.texts.filter((t) => t.text.trim() !== '');
+        const cut = texts.filter((t) => t.left < -0.5 || t.top < -0.5 || t.right > width + 0.5 || t.bottom > height + 0.5).map((t) => t.text);
+        expect(cut, `${at}: cut at the canvas's edge`).toEqual([]);
+        const meeting = texts.flatMap((a, j) =>
+          texts.slice(j + 1).filter((b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom).map((b) => `${a.text} / ${b.text}`),
+        );
+        expect(meeting, `${at}: labels on each other`).toEqual([]);
+        // A reference line is 1.5 px wide.
+        const crossed = texts.filter((t) => drawn.dashes.some((d) => d.y + 0.75 > t.top && d.y - 0.75 < t.bottom && d.left < t.right && t.left < d.right)).map((t) => t.text);
+        expect(crossed, `${at}: labels on a reference line`).toEqual([]);
+        // Two labelled ticks at least on the y axis: numbers above the x axis's row of them.
+        const numbers = texts.filter((t) => /^-?[\d,.]+$/.test(t.text));
+        const xRow = Math.max(...numbers.map((t) => t.top));
+        expect(numbers.filter((t) => t.bottom < xRow).length, `${at}: y ticks labelled`).toBeGreaterThanOrEqual(2);
+      }
+      expect(charts[1]!.drawn.texts.map((t) => t.text)).toEqual(expect.arrayContaining([expect.stringMatching(/^largest /), expect.stringMatching(/^bound /)]));
+      await screenshot(page, `charts-${name}`, '#charts');
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+  });
+});

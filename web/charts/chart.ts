@@ -40,6 +40,34 @@ export interface ChartSpec {
   caption?: string;
 }
 
+/** The axes' tick labels: uPlot's own size, set here so that the y axis is measured in the font it draws. */
+const TICK_FONT = '12px system-ui, sans-serif';
+/** uPlot's tick length and its gap from tick to label, CSS pixels (its defaults, which the axes keep). */
+const TICK_PX = 10;
+const TICK_GAP_PX = 5;
+/**
+ * The least room between y ticks, CSS pixels. uPlot steps its tick interval
+ * by at most 2 (1, 2, 2.5, 5, 10), so an interval is under twice this, and a
+ * chart's plot, 87 px tall, holds two ticks at least; at uPlot's 30,
+ * -7,000 to 8,000 took 10,000 and showed only its 0.
+ */
+const Y_TICK_SPACE_PX = 20;
+
+let measuring: CanvasRenderingContext2D | undefined;
+
+/**
+ * The y axis's width for the tick labels it has: a fixed width cut
+ * 1,000,000,010 to 000,000,000 at the canvas's edge, and put the axis's
+ * title on a 1,000. `values` is null while uPlot first lays the chart out;
+ * it then asks again with the labels. The widest stands 2 px clear of the title.
+ */
+function yAxisSize(_u: uPlot, values: (string | null)[] | null): number {
+  measuring ??= document.createElement('canvas').getContext('2d')!;
+  measuring.font = TICK_FONT;
+  const widest = Math.max(0, ...(values ?? []).map((v) => (v ? measuring!.measureText(v).width : 0)));
+  return TICK_PX + TICK_GAP_PX + Math.ceil(widest) + 2;
+}
+
 /** The colour of the step cursor (the page's accent, as the scrubber). */
 const CURSOR_COLOUR = '#d55e00';
 
@@ -65,8 +93,8 @@ export class StepChart {
       bands: spec.bands,
       scales: { x: spec.xRange ? { time: false, range: spec.xRange } : { time: false }, y: spec.yRange ? { range: spec.yRange } : {} },
       axes: [
-        { label: spec.xLabel, size: 36 },
-        { label: spec.yLabel, size: 56, values: spec.yValues, splits: spec.ySplits && (() => spec.ySplits!) },
+        { label: spec.xLabel, size: 36, font: TICK_FONT },
+        { label: spec.yLabel, size: yAxisSize, space: Y_TICK_SPACE_PX, font: TICK_FONT, values: spec.yValues, splits: spec.ySplits && (() => spec.ySplits!) },
       ],
       legend: { show: spec.legend ?? true, live: false },
       cursor: { drag: { x: false, y: false }, points: { show: false } },
@@ -78,6 +106,11 @@ export class StepChart {
             ctx.lineWidth = 1.5 * devicePixelRatio;
             ctx.setLineDash([6 * devicePixelRatio, 4 * devicePixelRatio]);
             ctx.font = `${11 * devicePixelRatio}px system-ui, sans-serif`;
+            // The baselines placed below are alphabetic ones, each label's
+            // descenders within its gap: uPlot leaves the context at its axis
+            // values' 'middle', which drew each label half a line low, across
+            // the line it stood above.
+            ctx.textBaseline = 'alphabetic';
             const lineYs = references.map((r) => Math.round(u.valToPos(r.value, 'y', true)));
             const baselines = placeReferenceLabels(
               references.map((r, i) => ({ lineY: lineYs[i]!, width: ctx.measureText(r.label).width, atRight: r.labelAtRight ?? false })),
