@@ -139,6 +139,7 @@ function run(catalogue: Catalogue): void {
     {
       secondViewport: byId('viewport-b', HTMLDivElement),
       legend: byId('legend', HTMLUListElement),
+      tools: byId('view-tools', HTMLDivElement),
       view2d: byId('view-2d', HTMLInputElement),
       reset: byId('reset-view', HTMLButtonElement),
       decision3d: byId('decision-3d', HTMLInputElement),

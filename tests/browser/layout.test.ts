@@ -434,3 +434,50 @@ describe('the charts', () => {
     }
   });
 });
+
+describe('the view tools side by side', () => {
+  it("stand in one row above both views, off the ends' handles, with both reasons in sight", async () => {
+    // Stacked in the first view's corner, they ran down it and Reset view stood
+    // on the E handle; in the embedded frame the Embed dialog sizes (640 x 480)
+    // the second algorithm's reason was below the fold of the reason box.
+    for (const [query, width, height] of [
+      ['&embed=1', 640, 480],
+      ['', 1280, 720],
+    ] as const) {
+      const p = await openPage(`?mode=compare&algorithm=regions&other=bresenham3d&layout=side&from=0,0,0&to=10,7,6&step=5${query}`);
+      const { page } = p;
+      await page.setViewportSize({ width, height });
+      const at = `${width}x${height}`;
+      await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 10' }).waitFor();
+      await expect.poll(() => page.getByTestId('scene-canvas').count()).toBe(2);
+      await expect.poll(() => page.locator('.handle').count()).toBeGreaterThanOrEqual(2);
+      const boxes = async (selector: string) =>
+        Promise.all((await page.locator(selector).all()).map(async (e) => ({ text: await e.innerText(), box: (await e.boundingBox())! })));
+      const tools = await boxes('.view-tools > *');
+      expect(tools.map((t) => t.text.trim())).toEqual(['2D', 'Decision in 3D', 'Follow', 'Reset view']);
+      const views = await boxes('#viewport, #viewport-b');
+      const handles = await boxes('.handle');
+      for (const tool of tools) {
+        for (const handle of handles) expect(overlapOf(tool.box, handle.box), `${at}: ${tool.text} over the ${handle.text} handle`).toBe('');
+        for (const [i, view] of views.entries()) expect(overlapOf(tool.box, view.box), `${at}: ${tool.text} over view ${i + 1}`).toBe('');
+        const { x, y, width: w, height: h } = tool.box;
+        expect([x >= 0, y >= 0, x + w <= width + 0.5, y + h <= height + 0.5], `${at}: ${tool.text} inside the window`).toEqual([true, true, true, true]);
+      }
+      const middles = tools.map(({ box }) => box.y + box.height / 2);
+      expect(Math.max(...middles) - Math.min(...middles), `${at}: the tools in one row`).toBeLessThan(4);
+      // Each algorithm's reason whole inside the reason box, not scrolled to.
+      const reasonBox = page.getByTestId('step-reason');
+      await reasonBox.filter({ hasText: 'bresenham3d, step 5' }).waitFor();
+      const inner = await reasonBox.evaluate((e) => {
+        const r = e.getBoundingClientRect();
+        return { top: r.top + e.clientTop, bottom: r.top + e.clientTop + e.clientHeight };
+      });
+      for (const reason of await boxes('[data-testid=step-reason] .reason')) {
+        expect([reason.box.y >= inner.top - 0.5, reason.box.y + reason.box.height <= inner.bottom + 0.5], `${at}: "${reason.text.slice(0, 20)}" in sight`).toEqual([true, true]);
+      }
+      await screenshot(page, `compare-side-tools-${at}${query ? '-embed' : ''}`);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+  });
+});

@@ -478,7 +478,7 @@ describe('compare mode', () => {
     // Framed for the half-width views, nothing of either path reaches their left or right edge.
     for (const view of ['#viewport', '#viewport-b']) await expect.poll(() => sideEdgeInk(page, view)).toBe(0);
     const legend = (await page.locator('#legend').boundingBox())!;
-    const tools = (await page.locator('#viewport .view-tools').boundingBox())!;
+    const tools = (await page.locator('#view-tools').boundingBox())!;
     const overlap = legend.x < tools.x + tools.width && tools.x < legend.x + legend.width && legend.y < tools.y + tools.height && tools.y < legend.y + legend.height;
     expect(overlap).toBe(false);
     // The legend says where the second view is: to the right, or below once

@@ -28,6 +28,8 @@ export interface PathViewElements {
   secondViewport: HTMLDivElement;
   /** The legend, over the main view; side by side, above both views. */
   legend: HTMLElement;
+  /** The view's tools (2D, Decision in 3D, Follow, Reset view), after the legend wherever it is. */
+  tools: HTMLElement;
   view2d: HTMLInputElement;
   reset: HTMLButtonElement;
   decision3d: HTMLInputElement;
@@ -105,10 +107,15 @@ export class PathViews {
     const main = mainTrace(shown);
     const side = state.mode === 'compare' && state.layout === 'side';
     // Side by side, the legend tells of both views and stands above them: over
-    // the first one it covered its path (in a 640 x 480 frame). Placed before
-    // the views frame their paths below what lies over them.
+    // the first one it covered its path (in a 640 x 480 frame). So do the
+    // tools, which act on both (the cameras are linked): stacked in the first
+    // view's corner, Reset view stood on its E handle. Placed before the
+    // views frame their paths below what lies over them.
     const legendPlace = side ? this.#e.secondViewport.parentElement! : this.#legendView;
-    if (this.#e.legend.parentElement !== legendPlace) legendPlace.prepend(this.#e.legend);
+    if (this.#e.legend.parentElement !== legendPlace) {
+      legendPlace.prepend(this.#e.legend);
+      this.#e.legend.after(this.#e.tools);
+    }
     this.#main.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
     if (state.mode === 'compare' && !side) this.#main.setSecond(b);
     if (side) {
