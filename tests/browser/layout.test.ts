@@ -481,3 +481,47 @@ describe('the view tools side by side', () => {
     }
   });
 });
+
+describe('the header', () => {
+  it('keeps one row in every mode at 1280 px, showing the tagline whole or not at all', async () => {
+    // G-code mode adds the VCD button: at 1280 px the header wrapped to two
+    // rows (46 to 78 px) and pushed the page down; trace mode did from 1,181 to 1,250 px.
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=10,7,6');
+    const { page } = p;
+    for (const width of [1200, 1280, 1366]) {
+      await page.setViewportSize({ width, height: 720 });
+      for (const mode of ['trace', 'compare', 'gcode', 'experiment']) {
+        await page.getByTestId(`mode-${mode}`).click();
+        await expect.poll(() => page.evaluate(() => document.body.dataset.mode)).toBe(mode);
+        const at = `${width} px, ${mode}`;
+        const header = await page.evaluate(() => {
+          const masthead = document.querySelector('.masthead')!;
+          const items = [...masthead.querySelectorAll<HTMLElement>('h1, button')].filter((e) => e.checkVisibility());
+          const middles = items.map((e) => {
+            const box = e.getBoundingClientRect();
+            return box.top + box.height / 2;
+          });
+          // The tagline's text, against the part of the tagline shown.
+          const tagline = masthead.querySelector('.tagline')!.getBoundingClientRect();
+          const range = document.createRange();
+          range.selectNodeContents(masthead.querySelector('.tagline')!);
+          const text = range.getBoundingClientRect();
+          const inside = text.left >= tagline.left - 0.5 && text.right <= tagline.right + 0.5 && text.top >= tagline.top - 0.5 && text.bottom <= tagline.bottom + 0.5;
+          const outside = text.top >= tagline.bottom - 0.5 || text.left >= tagline.right - 0.5;
+          return {
+            height: masthead.getBoundingClientRect().height,
+            spread: Math.max(...middles) - Math.min(...middles),
+            tagline: inside ? 'whole' : outside ? 'hidden' : 'cut',
+          };
+        });
+        expect(header.spread, `${at}: the title and buttons in one row`).toBeLessThan(6);
+        expect(header.height, `${at}: header height`).toBeLessThan(50);
+        expect(header.tagline, `${at}: the tagline`).not.toBe('cut');
+        if (width === 1366) expect(header.tagline, `${at}: the tagline, with room for it`).toBe('whole');
+        if (width === 1280 && mode === 'gcode') await screenshot(page, 'header-1280-gcode', { x: 0, y: 0, width, height: 80 });
+      }
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
