@@ -199,6 +199,31 @@ describe('embedded', () => {
     await p.close();
   });
 
+  it('keeps its link to the full page off the views, one and two side by side, at 640 x 480', async () => {
+    for (const query of [`?embed=1&${EXAMPLE}`, '?embed=1&mode=compare&algorithm=regions&other=bresenham3d&layout=side&from=0,0,0&to=10,7,6&step=5']) {
+      const p = await openPage(query);
+      const { page } = p;
+      await page.setViewportSize({ width: 640, height: 480 });
+      await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 10' }).waitFor();
+      await page.waitForTimeout(300);
+      // Over the last view it covered the x axis's name and its last tick.
+      const boxes = await page.evaluate(() => {
+        const box = (e: Element) => e.getBoundingClientRect().toJSON() as { left: number; right: number; top: number; bottom: number };
+        return {
+          link: box(document.querySelector('[data-testid=open-full]')!),
+          views: [...document.querySelectorAll('.viewport')].filter((v) => (v as HTMLElement).checkVisibility()).map(box),
+        };
+      });
+      expect(boxes.views.length).toBe(query.includes('layout=side') ? 2 : 1);
+      for (const view of boxes.views) {
+        const apart = boxes.link.top >= view.bottom || boxes.link.bottom <= view.top || boxes.link.left >= view.right || boxes.link.right <= view.left;
+        expect(apart, `link ${JSON.stringify(boxes.link)}, view ${JSON.stringify(view)}`).toBe(true);
+      }
+      expect(boxes.link.bottom).toBeLessThanOrEqual(480);
+      await p.close();
+    }
+  });
+
   it('leaves the reason out with explain=0', async () => {
     const p = await openPage(`?embed=1&explain=0&${EXAMPLE}`);
     const { page } = p;
