@@ -104,6 +104,17 @@ describe('inverse time (G93)', () => {
     ]);
     expect(slow.moves[0]!.timing.cruiseSpeed).toBeCloseTo(1 / 60, 12);
     slow.free();
+    // 1000 mm at F10000000: 10^10 mm/min, said and run as such where the
+    // max rate allows it (it was held to 10^9 without a word).
+    const far = await runGcode('G93 G1 X1000 F10000000\n', { stepsPerMm: 1, maxRate: 1e12, acceleration: 1e16 });
+    expect(far.moves[0]!.feedMmPerMin).toBeCloseTo(1e10, 0);
+    expect(far.moves[0]!.timing.cruiseSpeed).toBeCloseTo(1e10 / 60, 0);
+    expect(far.warnings).toEqual([]);
+    far.free();
+    // A G93 feed and a G94 F of the same mm/min are told apart: each warned of.
+    const both = await runGcode('G93 G1 X10 F0.05\nG94 G1 X20 F0.5\n', { stepsPerMm: 80 });
+    expect(both.warnings.map((w) => w.line)).toEqual([1, 2]);
+    both.free();
     // 10 mm at F100: 1000 mm/min, twice Grbl's default max rate.
     const fast = await runGcode('G93 G1 X10 F100\n', { stepsPerMm: 80 });
     expect(fast.warnings.map((w) => w.message)).toEqual([

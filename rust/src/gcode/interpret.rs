@@ -63,8 +63,9 @@ const SPIRAL_RELATIVE_TOLERANCE: f64 = 0.001;
 /// machine): a bound that keeps a planner's squared speeds finite.
 pub const MAX_FEED_MM_PER_MIN: f64 = 1e9;
 /// The largest F in inverse time (G93), moves a minute: a move in 60 ns.
-/// The feed it asks (F times the move's length) is held to
-/// [`MAX_FEED_MM_PER_MIN`] as well, by the planner's side.
+/// The feed it asks is F times the move's length (at most about 4·10^12
+/// mm: 2^31 steps an axis at MIN_STEPS_PER_MM, 0.001): its square stays far
+/// inside f64, as the planner needs, without a bound of its own.
 pub const MAX_INVERSE_TIME_PER_MIN: f64 = 1e9;
 /// The longest dwell a program may ask for, s (G4 P; about 11.6 days): a
 /// step's instant is an f64 of seconds from the program's start, and past

@@ -909,10 +909,11 @@ pub struct Runner {
     unit_lines: Option<(&'static [Column], Option<FigureKind>)>,
     warnings: Vec<Diagnostic>,
     warnings_omitted: u64,
-    /// The last feed (mm/min) warned of as capped to maxRate.
-    capped_feed_warned: Option<f64>,
-    /// The last feed below Grbl's least (1 mm/min) warned about.
-    raised_feed_warned: Option<f64>,
+    /// The last feed warned of as capped to maxRate: the G93 F it came
+    /// from (None in G94) and the feed, mm/min, as the message says both.
+    capped_feed_warned: Option<(Option<f64>, f64)>,
+    /// The last feed below Grbl's least (1 mm/min) warned about, likewise.
+    raised_feed_warned: Option<(Option<f64>, f64)>,
     errors: Vec<Diagnostic>,
     stopped_at_line: Option<u32>,
     /// A `%` line or a line with codes or words has been read: a `%` line
@@ -1336,9 +1337,10 @@ impl Runner {
         record.feed_mm_per_min = pushed.feed_mm_per_min.unwrap_or(f64::NAN);
         // Once per feed value, as the cap below.
         if let Some(feed) = pushed.feed_mm_per_min.filter(|_| !pushed.blocks.is_empty()) {
-            if self.raised_feed_warned != Some(feed) {
+            let asked = (m.inverse_time_per_min, feed);
+            if self.raised_feed_warned != Some(asked) {
                 if let Some(message) = timing::feed_raised_message(feed, m.inverse_time_per_min) {
-                    self.raised_feed_warned = Some(feed);
+                    self.raised_feed_warned = Some(asked);
                     self.warn(Diagnostic {
                         line: record.line,
                         column: record.column,
@@ -1352,8 +1354,9 @@ impl Runner {
         // alike (in G93, at the same F and length).
         if let (Some(top), Some(feed)) = (pushed.feed_capped_to_mm_per_min, pushed.feed_mm_per_min)
         {
-            if self.capped_feed_warned != Some(feed) {
-                self.capped_feed_warned = Some(feed);
+            let asked = (m.inverse_time_per_min, feed);
+            if self.capped_feed_warned != Some(asked) {
+                self.capped_feed_warned = Some(asked);
                 self.warn(Diagnostic {
                     line: record.line,
                     column: record.column,

@@ -27,7 +27,7 @@
 //!   (a step of the trace is one step event, whichever axes it moves). Step
 //!   instants are computed on demand for any range, never stored.
 
-use super::interpret::{MAX_FEED_MM_PER_MIN, Motion, MoveMm};
+use super::interpret::{Motion, MoveMm};
 use crate::error::{Error, number_text};
 use crate::grid::{AXIS_NAMES, Point};
 use crate::machine::{MACHINE_AXES, Machine, per_axis};
@@ -105,8 +105,12 @@ pub fn push_move(
                 length_mm += planner::length_mm(delta_mm(&previous, &end));
                 previous = end;
             });
-            // A move of no length plans no block: no feed to speak of.
-            (length_mm > 0.0).then(|| (per_min * length_mm).min(MAX_FEED_MM_PER_MIN))
+            // A move of no length plans no block: no feed to speak of. Not
+            // held to MAX_FEED_MM_PER_MIN: F and the length are bounded, so
+            // its square stays finite (past 10^9 mm/min, held there, the
+            // move ran slower than asked with no word, and the cap's
+            // warning quoted the held value).
+            (length_mm > 0.0).then_some(per_min * length_mm)
         }
         (_, None, None) => None,
     };
