@@ -44,9 +44,10 @@ export function arcSegments(options: ReferenceOptions): Uint16Array {
     n = Math.floor((0.5 * arcLength) / Math.sqrt(t * (2 * r - t)));
   }
   n = Math.max(n, 1);
-  // A vertex coordinate within 8 units in the last place of |center| + r
-  // below a half is that half (arc_segments.rs, VERTEX_HALF_ULPS).
-  const error = (center: number) => (Math.abs(center) + r) * 8 * Number.EPSILON;
+  // A vertex coordinate within 8 units in the last place of
+  // |center| + r·(1 + |θ|) below a half is that half (arc_segments.rs,
+  // VERTEX_HALF_ULPS).
+  const error = (center: number, theta: number) => (Math.abs(center) + r * (1 + Math.abs(theta))) * 8 * Number.EPSILON;
   const chords: Uint16Array[] = [];
   let previous = [...from];
   for (let i = 1; i <= n; i++) {
@@ -57,8 +58,8 @@ export function arcSegments(options: ReferenceOptions): Uint16Array {
       const fraction = i / n;
       const theta = start + sweep * fraction;
       point = [0, 0, 0];
-      point[u] = roundHalfAwayWithin(c[u]! + r * Math.cos(theta), error(c[u]!));
-      point[v] = roundHalfAwayWithin(c[v]! + r * Math.sin(theta), error(c[v]!));
+      point[u] = roundHalfAwayWithin(c[u]! + r * Math.cos(theta), error(c[u]!, theta));
+      point[v] = roundHalfAwayWithin(c[v]! + r * Math.sin(theta), error(c[v]!, theta));
       point[normal] = from[normal]! + roundRatioHalfAway(BigInt(arc.rise) * BigInt(i), BigInt(n));
     }
     if (point.some((p, a) => p !== previous[a])) {
