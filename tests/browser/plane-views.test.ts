@@ -43,6 +43,28 @@ function turn(a: [number, number], b: [number, number], c: [number, number]): nu
   return -Math.sign(cross);
 }
 
+describe('the 2D view of the zx plane', () => {
+  it("stands x's tick labels left of its axis, which runs up the screen, and z's below theirs", async () => {
+    const p = await openPage('?algorithm=circle&from=0,0,40&to=40,0,0&center=0,0,0&plane=zx&dir=ccw&view=2d');
+    const { page } = p;
+    await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
+    await page.evaluate(() => new Promise<void>((resolve) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(resolve, 50)))));
+    const { axisX, x, z } = await page.evaluate(() => {
+      const shown = (axis: string) =>
+        [...document.querySelectorAll<HTMLElement>(`.scene-label.tick[data-axis=${axis}]`)].filter((e) => e.checkVisibility()).map((e) => e.getBoundingClientRect().toJSON() as DOMRect);
+      const name = [...document.querySelectorAll<HTMLElement>('.scene-label.axis-name')].find((e) => e.textContent === 'x')!.getBoundingClientRect();
+      return { axisX: name.left + name.width / 2, x: shown('x'), z: shown('z') };
+    });
+    expect(x.length).toBeGreaterThan(1);
+    expect(z.length).toBeGreaterThan(1);
+    // x's labels wholly left of its axis line (they were centred on it) and one above another; z's in one row.
+    for (const label of x) expect(label.right, JSON.stringify(label)).toBeLessThanOrEqual(axisX);
+    expect(new Set(x.map((l) => Math.round(l.left + l.width / 2))).size).toBeLessThanOrEqual(2);
+    expect(new Set(z.map((l) => Math.round(l.top))).size).toBe(1);
+    await p.close();
+  });
+});
+
 describe('the 2D view of each plane', () => {
   it.each([
     ['xy', '5,0,0', '0,5,0'],

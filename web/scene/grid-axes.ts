@@ -26,6 +26,13 @@ const MAX_MM_TICKS = 6;
  * the box and from the other axes' labels at the shared corners.
  */
 const TICK_ANCHORS = [new THREE.Vector2(0.5, 0), new THREE.Vector2(0, 0.5), new THREE.Vector2(1, 0.5)];
+/**
+ * The same in the 2D view of the zx plane, seen from +y (scene-view's
+ * PLANE_VIEWS): x runs up the screen along z's lowest edge and z across it
+ * along x's, so x's labels stand left of their points and z's hang below
+ * (with the 3D anchors each x label was centred on its own axis line).
+ */
+const ZX_TICK_ANCHORS = [new THREE.Vector2(1, 0.5), new THREE.Vector2(0, 0.5), new THREE.Vector2(0.5, 0)];
 /** At most this many grid lines per direction: a pixel grid up to this size, a lighter reference beyond. */
 const MAX_GRID_LINES = 48;
 /** The grid's margin around the path, as a share of its largest extent (at least one line's spacing). */
@@ -157,6 +164,8 @@ export class GridAxes extends THREE.Group {
 
   /** Adds a tick label of `axis`, about `widthPx` wide, to the scene and to the axis's `ticks`. */
   #addTick(axis: number, ticks: Tick[], label: CSS2DObject, widthPx: number): void {
+    // Which axis it counts, for a reader of the page (and its tests).
+    label.element.dataset.axis = AXIS_NAMES[axis];
     this.add(label);
     this.#reach(axis, widthPx);
     ticks.push({ label, widthPx });
@@ -175,6 +184,10 @@ export class GridAxes extends THREE.Group {
    * boundaries, a margin around the cells.
    */
   setGridPlane(normal: number, bounds: THREE.Box3): void {
+    const anchors = normal === 1 ? ZX_TICK_ANCHORS : TICK_ANCHORS;
+    this.#ticks.forEach((ticks, axis) => {
+      for (const { label } of ticks) label.center.copy(anchors[axis]!);
+    });
     if (this.#grid) {
       this.remove(this.#grid);
       this.#grid.geometry.dispose();
