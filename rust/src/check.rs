@@ -1105,6 +1105,7 @@ fn tried_values(spec: &OptionSpec) -> Option<Vec<Value>> {
         OptionKind::Integer(IntegerRange {
             min: Some(lo),
             max: Some(hi),
+            ..
         }) if hi - lo < SMALL_RANGE => Some((lo..=hi).map(Value::from).collect()),
         _ => None,
     }

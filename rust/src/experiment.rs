@@ -13,7 +13,7 @@
 use crate::algorithm_info::Family;
 use crate::error::Error;
 use crate::grid::{MAX_AXES, Point};
-use crate::range::IntegerRange;
+use crate::range::{IntegerRange, WHOLE_NUMBER};
 use crate::request::{MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
 use serde::Serialize;
 use serde_json::Value;
@@ -159,6 +159,7 @@ const COUNT: OptionSpec = OptionSpec {
     kind: OptionKind::Integer(IntegerRange {
         min: Some(1),
         max: Some(MAX_LINES as i64),
+        whole: WHOLE_NUMBER,
     }),
     required: false,
     default: Some("100"),
@@ -171,6 +172,7 @@ const SEED: OptionSpec = OptionSpec {
     kind: OptionKind::Integer(IntegerRange {
         min: Some(0),
         max: None,
+        whole: WHOLE_NUMBER,
     }),
     required: false,
     default: Some("1"),
@@ -183,6 +185,7 @@ const MAX_COORDINATE: OptionSpec = OptionSpec {
     kind: OptionKind::Integer(IntegerRange {
         min: Some(1),
         max: Some(10_000),
+        whole: WHOLE_NUMBER,
     }),
     required: false,
     default: Some("100"),
@@ -195,6 +198,7 @@ const DIMS: OptionSpec = OptionSpec {
     kind: OptionKind::Integer(IntegerRange {
         min: None,
         max: None,
+        whole: WHOLE_NUMBER,
     }),
     required: false,
     default: None,

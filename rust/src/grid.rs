@@ -60,7 +60,11 @@ pub const COORD_LIMIT: i64 = 1 << 30;
 pub const COORD_RANGE: IntegerRange = IntegerRange {
     min: Some(-COORD_LIMIT),
     max: Some(COORD_LIMIT),
+    whole: COORDINATE_UNITS,
 };
+
+/// What a coordinate must be when it is not whole.
+pub const COORDINATE_UNITS: &str = "an integer number of grid units";
 
 /// Largest magnitude (exclusive) of the integers whose products the fast
 /// paths form in i64: two factors below 2^31 multiply to below 2^62, so a
@@ -137,10 +141,7 @@ impl Point {
             if !v.is_finite() || v.fract() != 0.0 {
                 return Err(Error::field(
                     field,
-                    format!(
-                        "{name} must be an integer number of grid units, got {}",
-                        number_text(v)
-                    ),
+                    format!("{name} {}, got {}", COORD_RANGE.not_whole(), number_text(v)),
                 )
                 .on_axis(axis));
             }

@@ -6,14 +6,27 @@ use serde::Serialize;
 use tsify::Tsify;
 
 /// The bounds of a whole-number input (an option, a point's coordinate),
-/// `min..=max`, either absent.
+/// `min..=max`, either absent, and what a whole value of it is called.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct IntegerRange {
     pub min: Option<i64>,
     pub max: Option<i64>,
+    /// A whole value, as a value that is not one is told what it must be
+    /// ([`WHOLE_NUMBER`], or a coordinate's [`crate::grid::COORDINATE_UNITS`]).
+    pub whole: &'static str,
 }
 
+/// What a whole-number option's value must be.
+pub const WHOLE_NUMBER: &str = "a whole number";
+
 impl IntegerRange {
+    /// What a value that is not whole is told, before ", got" and the
+    /// value ("must be a whole number"): the one statement of these words,
+    /// as [`IntegerRange::must_be`]'s are.
+    pub fn not_whole(&self) -> String {
+        format!("must be {}", self.whole)
+    }
+
     /// What a value outside the range is told, before ", got" and the
     /// value: "must be 1 to 5", "must be 0 or more", "must be 7 or less";
     /// None when neither bound is given. The one statement of these words:
@@ -68,6 +81,9 @@ pub struct IntegerRangeInfo {
     /// would; absent when neither bound is.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub must_be: Option<String>,
+    /// What the core tells a value that is not whole, before ", got" and
+    /// the value ("must be a whole number"), for the form as `must_be`.
+    pub not_whole: String,
 }
 
 impl Serialize for IntegerRange {
@@ -76,6 +92,7 @@ impl Serialize for IntegerRange {
             min: self.min,
             max: self.max,
             must_be: self.must_be(),
+            not_whole: self.not_whole(),
         }
         .serialize(s)
     }

@@ -4,7 +4,7 @@
 
 use crate::error::Error;
 use crate::grid::{COORD_RANGE, Point, Step};
-use crate::range::IntegerRange;
+use crate::range::{IntegerRange, WHOLE_NUMBER};
 use crate::text::echo;
 use serde::Serialize;
 use serde_json::{Map, Value};
@@ -133,6 +133,7 @@ pub const MAX_STEPS: OptionSpec = OptionSpec {
     kind: OptionKind::Integer(IntegerRange {
         min: Some(0),
         max: Some(MAX_STEPS_LIMIT as i64),
+        whole: WHOLE_NUMBER,
     }),
     required: false,
     default: Some("50000000"),
@@ -402,7 +403,7 @@ impl Request {
             )),
             Some(x) => Err(Error::field(
                 name,
-                format!("expected a whole number, got {x}"),
+                format!("must be {WHOLE_NUMBER}, got {x}"),
             )),
         }
     }
@@ -422,6 +423,13 @@ impl Request {
         };
         if let Some(words) = range.must_be_if_outside(x) {
             return Err(Error::field(spec.name, format!("{words}, got {x}")));
+        }
+        // In the declaration's words, as the form says them.
+        if x.fract() != 0.0 {
+            return Err(Error::field(
+                spec.name,
+                format!("{}, got {x}", range.not_whole()),
+            ));
         }
         self.integer(spec.name)
     }
@@ -515,7 +523,11 @@ mod tests {
     fn a_declared_integer_is_held_to_its_declared_range_in_words_for_each_bound() {
         let spec = |min, max| OptionSpec {
             name: "n",
-            kind: OptionKind::Integer(IntegerRange { min, max }),
+            kind: OptionKind::Integer(IntegerRange {
+                min,
+                max,
+                whole: WHOLE_NUMBER,
+            }),
             required: false,
             default: None,
             applies_with: None,
@@ -557,7 +569,7 @@ mod tests {
         );
         assert_eq!(
             read(&n(0).replace('0', "0.5"), Some(0), Some(5)),
-            Err("expected a whole number, got 0.5".into())
+            Err("must be a whole number, got 0.5".into())
         );
     }
 
@@ -673,7 +685,7 @@ mod tests {
         let r = Request::from_json(r#"{"algorithm":"x","maxSteps":2.5}"#).unwrap();
         assert_eq!(
             r.max_steps().unwrap_err().to_string(),
-            "maxSteps: expected a whole number, got 2.5"
+            "maxSteps: must be a whole number, got 2.5"
         );
         // Whole, but past what JSON carries exactly: said so, not "not whole".
         let r = Request::from_json(r#"{"algorithm":"x","seed":9007199254740991}"#).unwrap();

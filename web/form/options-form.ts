@@ -65,13 +65,13 @@ export interface InputsValidity {
 /**
  * Why whole number `value` is refused by its declaration: outside the
  * range, in the words the core says it with (`mustBe`), checked first as
- * the core does (1e20 is told its range); else not whole. Undefined when
+ * the core does (1e20 is told its range); else not whole (`notWhole`). Undefined when
  * it is neither.
  */
-function refusedWhole({ min, max, mustBe }: IntegerRangeInfo, value: number): string | undefined {
+function refusedWhole({ min, max, mustBe, notWhole }: IntegerRangeInfo, value: number): string | undefined {
   const outside = (min !== undefined && value < min) || (max !== undefined && value > max);
   if (outside) return `${mustBe}, got ${value}`;
-  return Number.isInteger(value) ? undefined : `must be a whole number, got ${value}`;
+  return Number.isInteger(value) ? undefined : `${notWhole}, got ${value}`;
 }
 
 export class OptionsForm {
@@ -179,9 +179,9 @@ export class OptionsForm {
       case 'number':
       case 'integer': {
         const input = control(element('input', { type: 'number', step: spec.kind.type === 'integer' ? '1' : 'any' }), id);
-        const range: IntegerRangeInfo = spec.kind.type === 'integer' ? spec.kind : {};
-        if (range.min !== undefined) input.min = String(range.min);
-        if (range.max !== undefined) input.max = String(range.max);
+        const range: IntegerRangeInfo | undefined = spec.kind.type === 'integer' ? spec.kind : undefined;
+        if (range?.min !== undefined) input.min = String(range.min);
+        if (range?.max !== undefined) input.max = String(range.max);
         input.value = typeof value === 'number' ? String(value) : '';
         input.placeholder = spec.default ?? '';
         input.addEventListener('input', () => {
@@ -189,7 +189,7 @@ export class OptionsForm {
           // Each field checked as it is typed, against the range its spec
           // declares (the core checks the same declaration): every field out
           // of range says so at once, where the core names only the first.
-          const refused = input.validity.badInput ? 'not a number' : given === undefined || spec.kind.type !== 'integer' ? undefined : refusedWhole(range, given);
+          const refused = input.validity.badInput ? 'not a number' : given === undefined || range === undefined ? undefined : refusedWhole(range, given);
           this.#setLocalError(spec.name, field, refused, !input.validity.badInput);
           if (refused === undefined) this.#onChange(spec.name, given);
         });

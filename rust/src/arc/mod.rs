@@ -18,7 +18,7 @@ pub mod planes;
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, COORD_RANGE, Point};
 use crate::ideal::curve::ArcPath;
-use crate::range::IntegerRange;
+use crate::range::{IntegerRange, WHOLE_NUMBER};
 use crate::request::{OptionKind, OptionSpec, Request};
 use angle::{atan3, degrees};
 use planes::{DIR_VALUES, Frame, PLANE_VALUES, Plane, Turn, same_height};
@@ -65,6 +65,7 @@ pub const PLANE: OptionSpec = OptionSpec {
 const TURNS_RANGE: IntegerRange = IntegerRange {
     min: Some(0),
     max: Some(MAX_TURNS),
+    whole: WHOLE_NUMBER,
 };
 
 pub const TURNS: OptionSpec = OptionSpec {

@@ -15,7 +15,7 @@ use super::{
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::{Error, counted};
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::range::IntegerRange;
+use crate::range::{IntegerRange, WHOLE_NUMBER};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, fill_by_next_step};
 
@@ -30,6 +30,7 @@ pub const DECIMALS: OptionSpec = OptionSpec {
     kind: OptionKind::Integer(IntegerRange {
         min: Some(0),
         max: Some(MAX_DECIMALS),
+        whole: WHOLE_NUMBER,
     }),
     required: false,
     default: Some("1"),
