@@ -649,6 +649,37 @@ describe('G-code mode', () => {
     await p.close();
   });
 
+  it('picks a line of a listed program with the up and down arrows, where only a click did', async () => {
+    // Past 10,000 lines the program is listed read-only: arrows there moved the timeline.
+    const lines = ['G21 G90 F600', ...Array.from({ length: 10_000 }, (_, k) => `G1 X${(k % 50) + 1}`)];
+    const p = await openPage('?mode=gcode');
+    const { page } = p;
+    await p.context.grantPermissions(['clipboard-read', 'clipboard-write']);
+    await page.evaluate((text) => navigator.clipboard.writeText(text), lines.join('\n') + '\n');
+    const editor = page.getByTestId('gcode-text');
+    await editor.focus();
+    await page.keyboard.press('ControlOrMeta+A');
+    await page.keyboard.press('ControlOrMeta+V');
+    const listing = page.getByTestId('gcode-listing');
+    await listing.waitFor();
+    await page.getByTestId('trace-status').filter({ hasText: '10001 lines' }).waitFor();
+    const picked = () => page.getByTestId('gcode-picked-line').getAttribute('data-line');
+    // From the line of the step shown, down one, three more, up one.
+    const current = Number(await page.getByTestId('gcode-current-line').getAttribute('data-line'));
+    expect(current).toBeGreaterThanOrEqual(1);
+    await listing.focus();
+    await page.keyboard.press('ArrowDown');
+    await expect.poll(picked).toBe(String(current + 1));
+    for (let k = 0; k < 3; k++) await page.keyboard.press('ArrowDown');
+    await expect.poll(picked).toBe(String(current + 4));
+    await page.keyboard.press('ArrowUp');
+    await expect.poll(picked).toBe(String(current + 3));
+    // Its line (G1 X(k % 50 + 1) from X(k % 50)) is 1 mm of x, 80 steps at the page's 80 steps/mm: what the view lights up.
+    await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('80');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("shows each step's own figure in a program of a line and an arc: the exit face, then the circle's residuals", async () => {
     // At 4 steps/mm, G1 to (4, 2) is steps 1-4 (regions), G2 about (4, 0)
     // from (4, 2) steps 5-10 (Saleem's circle). Step 6 from (5, 2): x steps
