@@ -1335,39 +1335,34 @@ impl Runner {
             .push(first_step, pushed.blocks.start, dwell_before);
         // In G93 the feed asked is F times the move's length.
         record.feed_mm_per_min = pushed.feed_mm_per_min.unwrap_or(f64::NAN);
-        // Once per feed value, as the cap below.
-        if let Some(feed) = pushed.feed_mm_per_min.filter(|_| !pushed.blocks.is_empty()) {
-            let asked = (m.inverse_time_per_min, feed);
-            if self.raised_feed_warned != Some(asked) {
+        // Grbl's two feed limits, each said once per feed asked: every later
+        // move at the same F (in G93, the same F and length) is held alike.
+        if let Some(feed) = pushed.feed_mm_per_min {
+            let asked = Some((m.inverse_time_per_min, feed));
+            let said = |message: String| Diagnostic {
+                line: record.line,
+                column: record.column,
+                message,
+                limit: None,
+            };
+            if self.raised_feed_warned != asked && !pushed.blocks.is_empty() {
                 if let Some(message) = timing::feed_raised_message(feed, m.inverse_time_per_min) {
-                    self.raised_feed_warned = Some(asked);
-                    self.warn(Diagnostic {
-                        line: record.line,
-                        column: record.column,
-                        message,
-                        limit: None,
-                    });
+                    self.raised_feed_warned = asked;
+                    self.warn(said(message));
                 }
             }
-        }
-        // Once per feed value: every later move at the same F is capped
-        // alike (in G93, at the same F and length).
-        if let (Some(top), Some(feed)) = (pushed.feed_capped_to_mm_per_min, pushed.feed_mm_per_min)
-        {
-            let asked = (m.inverse_time_per_min, feed);
-            if self.capped_feed_warned != Some(asked) {
-                self.capped_feed_warned = Some(asked);
-                self.warn(Diagnostic {
-                    line: record.line,
-                    column: record.column,
-                    message: timing::feed_capped_message(
-                        feed,
-                        m.inverse_time_per_min,
-                        top,
-                        m.arc.is_some(),
-                    ),
-                    limit: None,
-                });
+            if let Some(top) = pushed
+                .feed_capped_to_mm_per_min
+                .filter(|_| self.capped_feed_warned != asked)
+            {
+                self.capped_feed_warned = asked;
+                let arc = m.arc.is_some();
+                self.warn(said(timing::feed_capped_message(
+                    feed,
+                    m.inverse_time_per_min,
+                    top,
+                    arc,
+                )));
             }
         }
         self.moves.records.push(record);
@@ -1713,6 +1708,7 @@ pub fn run(source: &str, settings: Settings) -> Program {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
 
     #[test]
     fn a_center_half_a_step_off_the_grid_rounds_as_every_coordinate_does() {
@@ -1737,7 +1733,6 @@ mod tests {
             Some([331, 445])
         );
     }
-    use proptest::prelude::*;
 
     /// A run of `source` with straight moves stepped as chosen: straight
     /// into the trace, or through the catalogue's request, as before the

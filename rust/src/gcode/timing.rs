@@ -73,8 +73,9 @@ pub fn limits_from_settings(settings: &Map<String, Value>) -> Result<Limits, Err
 pub struct PushedMove {
     pub blocks: Range<usize>,
     pub feed_capped_to_mm_per_min: Option<f64>,
-    /// The feed its blocks were planned at, mm/min: F in G94, F times the
-    /// move's length in G93; None for rapids and a feed move without F.
+    /// The feed asked for its blocks, mm/min: F in G94, F times the move's
+    /// length in G93 (the planner holds it to the max rate along each block
+    /// and to Grbl's least feed); None for rapids and a feed move without F.
     pub feed_mm_per_min: Option<f64>,
 }
 
