@@ -157,19 +157,15 @@ export class GcodePanel {
       if (line >= 1 && line <= this.#lineCount) void this.#pick(line);
     });
     // The up and down arrows pick the line above or below, as a click does,
-    // and bring it into view: a keyboard's way through a listed program
-    // (the listing declares them its own keys; left and right still step).
+    // and bring it into view as the problems' links do: a keyboard's way
+    // through a listed program (the listing declares them its own keys;
+    // left and right still step).
     elements.listing.addEventListener('keydown', (event) => {
       const by = { ArrowUp: -1, ArrowDown: 1 }[event.key];
       if (by === undefined || event.altKey || event.ctrlKey || event.metaKey || this.#lineCount === 0) return;
       event.preventDefault();
       const from = this.#pickedLine ?? this.#currentLine ?? (by > 0 ? 0 : this.#lineCount + 1);
-      const line = Math.min(this.#lineCount, Math.max(1, from + by));
-      const listing = elements.listing;
-      const top = this.#paddingTopPx + (line - 1) * this.#lineHeightPx;
-      if (top < listing.scrollTop) listing.scrollTop = top;
-      else if (top + this.#lineHeightPx > listing.scrollTop + listing.clientHeight) listing.scrollTop = top + this.#lineHeightPx - listing.clientHeight;
-      void this.#pick(line);
+      this.#goToLine(Math.min(this.#lineCount, Math.max(1, from + by)));
     });
     elements.editAnyway.addEventListener('click', () => {
       this.#setText(this.#text, { editable: true });
