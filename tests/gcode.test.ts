@@ -6,8 +6,8 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { EXPORT_CHUNK_ROWS, pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
-import type { GcodeProgress } from '../web/core/index.js';
+import { catalogue, EXPORT_CHUNK_ROWS, pulseTrains, runGcode, VoxpathError } from '../web/core/index.js';
+import type { GcodeProgress, GcodeSettings } from '../web/core/index.js';
 import { callCore } from '../web/core/errors.js';
 import { encodeRequest } from '../web/core/request.js';
 import { loadCore, withTextBytes } from '../web/core/wasm.js';
@@ -132,6 +132,29 @@ describe('runGcode', () => {
   it('rejects bad settings naming the setting', async () => {
     expect((await rejection(runGcode(SQUARE, { stepsPerMm: -1 }))).field).toBe('stepsPerMm');
     expect((await rejection(runGcode(SQUARE, { stepsPerMm: 1, lineAlgorithm: 'bresenham2d' }))).field).toBe('lineAlgorithm');
+  });
+
+  it("refuses a setting outside its declared range in the words the catalogue gives the page's form", async () => {
+    // tests/browser/page.test.ts types these into the form and reads the same words.
+    const specs = new Map((await catalogue()).gcodeSettings.map((s) => [s.name, s]));
+    const mustBe = (name: string) => {
+      const kind = specs.get(name)!.kind;
+      return 'mustBe' in kind ? kind.mustBe : undefined;
+    };
+    for (const [settings, field, message] of [
+      [{ stepsPerMm: 80, acceleration: [10, 0, 10] }, 'acceleration', `y ${mustBe('acceleration')}, got 0`],
+      [{ stepsPerMm: 80, junctionDeviation: -1 }, 'junctionDeviation', `${mustBe('junctionDeviation')}, got -1`],
+      [{ stepsPerMm: 2e6 }, 'stepsPerMm', `${mustBe('stepsPerMm')}, got 2000000`],
+      [{ stepAngle: 1.8, microsteps: 2.5, pitch: 2 }, 'microsteps', 'must be a whole number, got 2.5'],
+      [{ stepsPerMm: 80, maxStepRate: 0 }, 'maxStepRate', `${mustBe('maxStepRate')}, got 0`],
+    ] satisfies [GcodeSettings, string, string][]) {
+      const error = await rejection(runGcode(SQUARE, settings));
+      expect(error.field).toBe(field);
+      expect(error.message).toBe(`${field}: ${message}`);
+    }
+    expect(mustBe('acceleration')).toBe('must be more than 0 mm/s²');
+    expect(mustBe('junctionDeviation')).toBe('must be 0 mm or more');
+    expect(mustBe('stepsPerMm')).toBe('must be 0.001 to 1000000 steps per mm');
   });
 
   it('runs long programs in slices, reporting progress, and can be cancelled', async () => {

@@ -24,7 +24,7 @@ function sampleText(spec: OptionSpec): string {
     case 'choice':
       return spec.kind.values.at(-1)!;
     case 'perAxis':
-      return spec.kind.integer ? '4,8,16' : '1.5,2,4';
+      return spec.kind.notWhole !== undefined ? '4,8,16' : '1.5,2,4';
     case 'boolean':
       return 'true';
     case 'point':

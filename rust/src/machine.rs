@@ -25,7 +25,8 @@
 
 use crate::error::Error;
 use crate::grid::{COORD_LIMIT, MAX_AXES, round_half_away_within};
-use crate::request::shown;
+use crate::range::NumberRange;
+use crate::request::{OptionKind, OptionSpec, shown};
 use crate::trace::Trace;
 use serde_json::Value;
 
@@ -41,8 +42,36 @@ pub struct Machine {
     steps_per_mm: [f64; MACHINE_AXES],
 }
 
-/// A number, or one number per axis (x, y, z), from a JSON setting.
-pub(crate) fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES], Error> {
+/// The range of a per-axis setting, as its spec declares it.
+fn axis_range(spec: &OptionSpec) -> NumberRange {
+    let OptionKind::PerAxis(range) = spec.kind else {
+        unreachable!("{} is declared as a per-axis setting", spec.name)
+    };
+    range
+}
+
+/// Setting `spec`'s value on each axis, held to the range its spec
+/// declares; errors name the setting and the axis ("acceleration: y must
+/// be more than 0 mm/s², got 0").
+pub(crate) fn check_axes(spec: &OptionSpec, values: &[f64; MACHINE_AXES]) -> Result<(), Error> {
+    let range = axis_range(spec);
+    for (axis, &v) in values.iter().enumerate() {
+        if let Some(words) = range.refusal(v) {
+            return Err(Error::field(
+                spec.name,
+                format!("{} {words}", crate::grid::AXIS_NAMES[axis]),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Setting `spec` from JSON: a number for every axis, or one per axis (x,
+/// y, z), each within the range its spec declares. One number out of range
+/// is told so without an axis ("acceleration: must be more than 0 mm/s²,
+/// got 0"), as it was typed.
+pub(crate) fn per_axis(spec: &OptionSpec, value: &Value) -> Result<[f64; MACHINE_AXES], Error> {
+    let field = spec.name;
     let number = |v: &Value| {
         v.as_f64()
             .filter(|x| x.is_finite())
@@ -54,6 +83,7 @@ pub(crate) fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES]
             for (axis, item) in items.iter().enumerate() {
                 out[axis] = number(item)?;
             }
+            check_axes(spec, &out)?;
             Ok(out)
         }
         Value::Array(items) => Err(Error::field(
@@ -63,7 +93,13 @@ pub(crate) fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES]
                 items.len()
             ),
         )),
-        v => Ok([number(v)?; MACHINE_AXES]),
+        v => {
+            let x = number(v)?;
+            match axis_range(spec).refusal(x) {
+                Some(words) => Err(Error::field(field, words)),
+                None => Ok([x; MACHINE_AXES]),
+            }
+        }
     }
 }
 
@@ -74,21 +110,54 @@ pub(crate) fn per_axis(field: &str, value: &Value) -> Result<[f64; MACHINE_AXES]
 pub const MIN_STEPS_PER_MM: f64 = 0.001;
 pub const MAX_STEPS_PER_MM: f64 = 1e6;
 
+pub const STEPS_PER_MM: OptionSpec = OptionSpec {
+    name: "stepsPerMm",
+    kind: OptionKind::PerAxis(NumberRange::between(
+        MIN_STEPS_PER_MM,
+        MAX_STEPS_PER_MM,
+        "steps per mm",
+    )),
+    required: false,
+    default: None,
+    applies_with: None,
+    doc: "Steps per mm: one number for every axis, or one per axis as x,y,z (80,80,400). Or give stepAngle, microsteps and pitch.",
+};
+
+pub const STEP_ANGLE: OptionSpec = OptionSpec {
+    name: "stepAngle",
+    kind: OptionKind::PerAxis(NumberRange {
+        max: Some(360.0),
+        ..NumberRange::positive("degrees")
+    }),
+    required: false,
+    default: None,
+    applies_with: None,
+    doc: "Motor step angle θ, degrees (one, or x,y,z): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
+};
+
+pub const MICROSTEPS: OptionSpec = OptionSpec {
+    name: "microsteps",
+    kind: OptionKind::PerAxis(NumberRange::at_least(1.0, "").whole()),
+    required: false,
+    default: None,
+    applies_with: None,
+    doc: "Microsteps s per full step (one, or x,y,z).",
+};
+
+pub const PITCH: OptionSpec = OptionSpec {
+    name: "pitch",
+    kind: OptionKind::PerAxis(NumberRange::positive("mm per revolution")),
+    required: false,
+    default: None,
+    applies_with: None,
+    doc: "Lead-screw pitch P, mm per turn (one, or x,y,z): one step is L = P / p_m mm.",
+};
+
 impl Machine {
-    /// A machine with the given steps per mm (each from MIN_STEPS_PER_MM to MAX_STEPS_PER_MM).
+    /// A machine with the given steps per mm (each within STEPS_PER_MM's
+    /// range, MIN_STEPS_PER_MM to MAX_STEPS_PER_MM).
     pub fn new(steps_per_mm: [f64; MACHINE_AXES]) -> Result<Machine, Error> {
-        for (axis, &v) in steps_per_mm.iter().enumerate() {
-            if !(MIN_STEPS_PER_MM..=MAX_STEPS_PER_MM).contains(&v) {
-                return Err(Error::field(
-                    "stepsPerMm",
-                    format!(
-                        "{} must be {MIN_STEPS_PER_MM} to {MAX_STEPS_PER_MM} steps per mm, got {}",
-                        crate::grid::AXIS_NAMES[axis],
-                        crate::error::number_text(v)
-                    ),
-                ));
-            }
-        }
+        check_axes(&STEPS_PER_MM, &steps_per_mm)?;
         Ok(Machine { steps_per_mm })
     }
 
@@ -98,31 +167,14 @@ impl Machine {
         microsteps: [f64; MACHINE_AXES],
         pitch_mm: [f64; MACHINE_AXES],
     ) -> Result<Machine, Error> {
+        check_axes(&STEP_ANGLE, &step_angle_deg)?;
+        check_axes(&MICROSTEPS, &microsteps)?;
+        check_axes(&PITCH, &pitch_mm)?;
         let mut steps_per_mm = [0.0; MACHINE_AXES];
         for axis in 0..MACHINE_AXES {
-            let name = crate::grid::AXIS_NAMES[axis];
-            let (theta, s, p) = (step_angle_deg[axis], microsteps[axis], pitch_mm[axis]);
-            if !(theta > 0.0 && theta <= 360.0) {
-                return Err(Error::field(
-                    "stepAngle",
-                    format!("{name} must be more than 0 and at most 360 degrees, got {theta}"),
-                ));
-            }
-            if !(s >= 1.0 && s.fract() == 0.0) {
-                return Err(Error::field(
-                    "microsteps",
-                    format!("{name} must be a whole number of at least 1, got {s}"),
-                ));
-            }
-            if p <= 0.0 {
-                return Err(Error::field(
-                    "pitch",
-                    format!("{name} must be more than 0 mm per revolution, got {p}"),
-                ));
-            }
             // p_m = 360 / θ · s pulses per revolution; L = P / p_m mm per pulse.
-            let pulses_per_rev = 360.0 / theta * s;
-            steps_per_mm[axis] = pulses_per_rev / p;
+            let pulses_per_rev = 360.0 / step_angle_deg[axis] * microsteps[axis];
+            steps_per_mm[axis] = pulses_per_rev / pitch_mm[axis];
         }
         Machine::new(steps_per_mm)
     }
@@ -141,11 +193,11 @@ impl Machine {
                 given[0],
                 "give stepsPerMm or stepAngle, microsteps and pitch, not both",
             )),
-            (Some(v), _) => Machine::new(per_axis("stepsPerMm", v)?),
+            (Some(v), _) => Machine::new(per_axis(&STEPS_PER_MM, v)?),
             (None, 3) => Machine::from_drive(
-                per_axis("stepAngle", &settings["stepAngle"])?,
-                per_axis("microsteps", &settings["microsteps"])?,
-                per_axis("pitch", &settings["pitch"])?,
+                per_axis(&STEP_ANGLE, &settings[STEP_ANGLE.name])?,
+                per_axis(&MICROSTEPS, &settings[MICROSTEPS.name])?,
+                per_axis(&PITCH, &settings[PITCH.name])?,
             ),
             (None, 0) => Err(Error::field(
                 "stepsPerMm",
@@ -281,10 +333,11 @@ mod tests {
             e(json!({"stepsPerMm": [80, 0, 400]})),
             "stepsPerMm: y must be 0.001 to 1000000 steps per mm, got 0"
         );
-        // Once 0 steps for every move, silently.
+        // Once 0 steps for every move, silently. One number is told as
+        // typed, without an axis.
         assert_eq!(
             e(json!({"stepsPerMm": 1e-300})),
-            "stepsPerMm: x must be 0.001 to 1000000 steps per mm, got 1e-300"
+            "stepsPerMm: must be 0.001 to 1000000 steps per mm, got 1e-300"
         );
         assert_eq!(
             e(json!({"stepsPerMm": [80, 80, 2e6]})),
@@ -296,7 +349,19 @@ mod tests {
         );
         assert_eq!(
             e(json!({"stepAngle": 1.8, "microsteps": 2.5, "pitch": 2})),
-            "microsteps: x must be a whole number of at least 1, got 2.5"
+            "microsteps: must be a whole number, got 2.5"
+        );
+        assert_eq!(
+            e(json!({"stepAngle": 1.8, "microsteps": [8, 0, 8], "pitch": 2})),
+            "microsteps: y must be 1 or more, got 0"
+        );
+        assert_eq!(
+            e(json!({"stepAngle": [1.8, 1.8, 400], "microsteps": 8, "pitch": 2})),
+            "stepAngle: z must be more than 0 and at most 360 degrees, got 400"
+        );
+        assert_eq!(
+            e(json!({"stepAngle": 1.8, "microsteps": 8, "pitch": -2})),
+            "pitch: must be more than 0 mm per revolution, got -2"
         );
         assert_eq!(
             e(json!({"stepsPerMm": 80, "pitch": 2})),

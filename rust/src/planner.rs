@@ -45,8 +45,9 @@
 use crate::arc::angle::sin_cos_turns;
 use crate::arc::arc_segments::Chording;
 use crate::error::Error;
-use crate::machine::MACHINE_AXES;
+use crate::machine::{MACHINE_AXES, check_axes};
 use crate::memory::reserve_moving;
+use crate::range::NumberRange;
 use crate::request::{OptionKind, OptionSpec};
 use serde::Serialize;
 use std::ops::Range;
@@ -71,7 +72,7 @@ const MAX_ARC_CHORDS: u64 = u16::MAX as u64;
 
 pub const ACCELERATION: OptionSpec = OptionSpec {
     name: "acceleration",
-    kind: OptionKind::PerAxis { integer: false },
+    kind: OptionKind::PerAxis(NumberRange::positive("mm/s²")),
     required: false,
     default: Some("10"),
     applies_with: None,
@@ -80,7 +81,7 @@ pub const ACCELERATION: OptionSpec = OptionSpec {
 
 pub const MAX_RATE: OptionSpec = OptionSpec {
     name: "maxRate",
-    kind: OptionKind::PerAxis { integer: false },
+    kind: OptionKind::PerAxis(NumberRange::positive("mm/min")),
     required: false,
     default: Some("500"),
     applies_with: None,
@@ -89,7 +90,7 @@ pub const MAX_RATE: OptionSpec = OptionSpec {
 
 pub const JUNCTION_DEVIATION: OptionSpec = OptionSpec {
     name: "junctionDeviation",
-    kind: OptionKind::Number,
+    kind: OptionKind::Number(NumberRange::at_least(0.0, "mm")),
     required: false,
     default: Some("0.01"),
     applies_with: None,
@@ -98,7 +99,7 @@ pub const JUNCTION_DEVIATION: OptionSpec = OptionSpec {
 
 pub const MAX_STEP_RATE: OptionSpec = OptionSpec {
     name: "maxStepRate",
-    kind: OptionKind::PerAxis { integer: false },
+    kind: OptionKind::PerAxis(NumberRange::positive("steps/s")),
     required: false,
     default: None,
     applies_with: None,
@@ -126,38 +127,25 @@ impl Default for Limits {
 }
 
 impl Limits {
-    /// Checks every value is finite and positive (the junction deviation
-    /// may be 0: exact stop at every corner); errors name the setting.
+    /// Checks every value against the range its setting declares: finite
+    /// and positive (the junction deviation may be 0: exact stop at every
+    /// corner); errors name the setting.
     pub fn new(
         acceleration_mm_per_s2: [f64; MACHINE_AXES],
         max_rate_mm_per_min: [f64; MACHINE_AXES],
         junction_deviation_mm: f64,
         max_step_rate_hz: Option<[f64; MACHINE_AXES]>,
     ) -> Result<Limits, Error> {
-        let positive = |field: &str, values: &[f64; MACHINE_AXES], unit: &str| {
-            for (axis, &v) in values.iter().enumerate() {
-                if !(v.is_finite() && v > 0.0) {
-                    return Err(Error::field(
-                        field,
-                        format!(
-                            "{} must be more than 0 {unit}, got {v}",
-                            crate::grid::AXIS_NAMES[axis]
-                        ),
-                    ));
-                }
-            }
-            Ok(())
-        };
-        positive("acceleration", &acceleration_mm_per_s2, "mm/s²")?;
-        positive("maxRate", &max_rate_mm_per_min, "mm/min")?;
+        check_axes(&ACCELERATION, &acceleration_mm_per_s2)?;
+        check_axes(&MAX_RATE, &max_rate_mm_per_min)?;
         if let Some(rates) = &max_step_rate_hz {
-            positive("maxStepRate", rates, "steps/s")?;
+            check_axes(&MAX_STEP_RATE, rates)?;
         }
-        if !(junction_deviation_mm.is_finite() && junction_deviation_mm >= 0.0) {
-            return Err(Error::field(
-                "junctionDeviation",
-                format!("must be 0 mm or more, got {junction_deviation_mm}"),
-            ));
+        let OptionKind::Number(junction_range) = JUNCTION_DEVIATION.kind else {
+            unreachable!("junctionDeviation is declared as a number")
+        };
+        if let Some(words) = junction_range.refusal(junction_deviation_mm) {
+            return Err(Error::field(JUNCTION_DEVIATION.name, words));
         }
         Ok(Limits {
             acceleration_mm_per_s2,

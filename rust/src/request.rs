@@ -4,7 +4,7 @@
 
 use crate::error::Error;
 use crate::grid::{COORD_RANGE, Point, Step};
-use crate::range::{IntegerRange, WHOLE_NUMBER};
+use crate::range::{IntegerRange, NumberRange, WHOLE_NUMBER};
 use crate::text::echo;
 use serde::Serialize;
 use serde_json::{Map, Value};
@@ -68,8 +68,9 @@ pub enum OptionKind {
     /// ([`crate::grid::COORD_RANGE`]).
     // Crosses as IntegerRangeInfo, as Integer does.
     Point(#[tsify(type = "IntegerRangeInfo")] IntegerRange),
-    /// A real number.
-    Number,
+    /// A real number within its range, in its unit.
+    // Crosses as NumberRangeInfo: the bounds with their words.
+    Number(#[tsify(type = "NumberRangeInfo")] NumberRange),
     /// A whole number, within its range where it has one (a small declared
     /// range is what a check tries every value of, see `check`).
     // Crosses as IntegerRangeInfo: the bounds with their words, which no
@@ -79,9 +80,11 @@ pub enum OptionKind {
     Choice { values: &'static [&'static str] },
     /// true or false.
     Boolean,
-    /// A number for every axis, or one per axis ([x, y, z]); whole numbers
-    /// when `integer` (a machine setting such as stepsPerMm or maxRate).
-    PerAxis { integer: bool },
+    /// A number for every axis, or one per axis ([x, y, z]), each within
+    /// the range (a machine setting such as stepsPerMm or maxRate; whole
+    /// numbers where the range says so, as microsteps).
+    // Crosses as NumberRangeInfo, as Number does.
+    PerAxis(#[tsify(type = "NumberRangeInfo")] NumberRange),
 }
 
 /// One option an algorithm takes.
@@ -432,6 +435,22 @@ impl Request {
             ));
         }
         self.integer(spec.name)
+    }
+
+    /// The real number of option `spec`, within the range its kind
+    /// declares (the one statement of that range and its words, which the
+    /// catalogue gives to the page's form).
+    pub fn declared_number(&self, spec: &OptionSpec) -> Result<Option<f64>, Error> {
+        let OptionKind::Number(range) = spec.kind else {
+            unreachable!("{} is declared as a number option", spec.name)
+        };
+        let Some(x) = self.number(spec.name)? else {
+            return Ok(None);
+        };
+        match range.refusal(x) {
+            Some(words) => Err(Error::field(spec.name, words)),
+            None => Ok(Some(x)),
+        }
     }
 
     pub fn boolean(&self, name: &str) -> Result<Option<bool>, Error> {

@@ -90,7 +90,7 @@ fn junk() -> impl Strategy<Value = Value> {
 fn option_value(option: &'static OptionSpec, dims: usize, base: i64) -> BoxedStrategy<Value> {
     let valid: BoxedStrategy<Value> = match option.kind {
         OptionKind::Point(_) => point(base, dims).boxed(),
-        OptionKind::Number => prop_oneof![
+        OptionKind::Number(_) => prop_oneof![
             4 => (-1e3f64..1e3).prop_map(Value::from),
             1 => any::<f64>().prop_map(|f| serde_json::Number::from_f64(f).map_or(Value::Null, Value::Number)),
             1 => prop_oneof![Just(0.0), Just(1e-300), Just(1e300), Just(-0.0)].prop_map(Value::from),
@@ -104,7 +104,7 @@ fn option_value(option: &'static OptionSpec, dims: usize, base: i64) -> BoxedStr
         OptionKind::Choice { values } => prop::sample::select(values).prop_map(Value::from).boxed(),
         OptionKind::Boolean => any::<bool>().prop_map(Value::from).boxed(),
         // A machine setting: one number for every axis, or one per axis.
-        OptionKind::PerAxis { .. } => prop_oneof![
+        OptionKind::PerAxis(_) => prop_oneof![
             (0.001f64..1e3).prop_map(Value::from),
             prop::collection::vec(0.001f64..1e3, 3).prop_map(Value::from),
         ]

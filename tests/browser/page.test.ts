@@ -292,6 +292,31 @@ describe('the page', () => {
     await page.waitForURL(/mode=experiment.*count=3(&|$)/);
     await expect.poll(() => count.inputValue()).toBe('3.5');
     await page.getByTestId('error-experiment-count').filter({ hasText: 'got 3.5' }).waitFor();
+
+    // Real-number options and machine settings are held to their declared
+    // ranges too (an acceleration of 0 went into the link, then the core
+    // refused it), in the core's words (tests/settings.test.ts checks the
+    // core says the same), one of several values naming its axis.
+    await page.getByTestId('mode-gcode').click();
+    await page.waitForURL(/mode=gcode/);
+    for (const [name, typed, said, kept] of [
+      ['acceleration', '10,0,10', 'y must be more than 0 mm/s², got 0', '20'],
+      ['junctionDeviation', '-1', 'must be 0 mm or more, got -1', '0.02'],
+      ['stepsPerMm', '2000000', 'must be 0.001 to 1000000 steps per mm, got 2000000', '40'],
+    ] as const) {
+      const field = page.getByTestId(`input-machine-${name}`);
+      await field.fill(kept);
+      await page.waitForURL(new RegExp(`${name}=${kept}(&|$)`));
+      await field.fill(typed);
+      await page.getByTestId(`error-machine-${name}`).filter({ hasText: said }).waitFor();
+      // Not in the link: it still holds the value kept.
+      await page.getByTestId('gcode-text').fill(`G1 X${name.length} F100`);
+      await page.waitForURL(new RegExp(`X${name.length}`));
+      expect(new URL(page.url()).searchParams.get(name), name).toBe(kept);
+    }
+    await page.reload();
+    await expect.poll(() => page.getByTestId('input-machine-acceleration').inputValue()).toBe('10,0,10');
+    await page.getByTestId('error-machine-acceleration').filter({ hasText: 'y must be more than 0 mm/s²' }).waitFor();
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -43,6 +43,7 @@ export type {
   Family,
   FigureKind,
   IntegerRangeInfo,
+  NumberRangeInfo,
   Limit,
   Metrics,
   OptionKind,

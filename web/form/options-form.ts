@@ -15,7 +15,7 @@
  * went into the link, then the core refused it).
  */
 import { readDecimal } from '../core/guard.js';
-import type { IntegerRangeInfo, OptionSpec } from '../core/types.js';
+import type { IntegerRangeInfo, NumberRangeInfo, OptionSpec } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import type { OptionValue } from '../state/app-state.js';
 import { dropDraft, keepDraft, restoredDraft } from '../state/drafts.js';
@@ -72,6 +72,34 @@ function refusedWhole({ min, max, mustBe, notWhole }: IntegerRangeInfo, value: n
   const outside = (min !== undefined && value < min) || (max !== undefined && value > max);
   if (outside) return `${mustBe}, got ${value}`;
   return Number.isInteger(value) ? undefined : `${notWhole}, got ${value}`;
+}
+
+/**
+ * Why real number `value` is refused by its declaration: outside the range
+ * (or not finite), in the core's words (`mustBe`), checked first as the core
+ * does; else not whole where the range takes whole values only
+ * (`notWhole`). Undefined when it is neither.
+ */
+function refusedNumber({ min, minExclusive, max, mustBe, notWhole }: NumberRangeInfo, value: number): string | undefined {
+  const below = min !== undefined && (value < min || (minExclusive && value === min));
+  const above = max !== undefined && value > max;
+  if (below || above || !Number.isFinite(value)) return `${mustBe ?? 'must be a finite number'}, got ${value}`;
+  return notWhole === undefined || Number.isInteger(value) ? undefined : `${notWhole}, got ${value}`;
+}
+
+/**
+ * Why a per-axis setting as read (one number, or one per axis) is refused
+ * by `range`: one number as typed, one of several naming its axis (as the
+ * core says them). Undefined when every value is taken; how many values
+ * there are is the core's call.
+ */
+function refusedPerAxis(range: NumberRangeInfo, read: number | number[]): string | undefined {
+  if (!Array.isArray(read)) return refusedNumber(range, read);
+  for (const [a, value] of read.entries()) {
+    const refused = refusedNumber(range, value);
+    if (refused !== undefined) return `${AXIS_NAMES[a] ?? 'a value'} ${refused}`;
+  }
+  return undefined;
 }
 
 export class OptionsForm {
@@ -178,31 +206,34 @@ export class OptionsForm {
       }
       case 'number':
       case 'integer': {
-        const input = control(element('input', { type: 'number', step: spec.kind.type === 'integer' ? '1' : 'any' }), id);
-        const range: IntegerRangeInfo | undefined = spec.kind.type === 'integer' ? spec.kind : undefined;
-        if (range?.min !== undefined) input.min = String(range.min);
-        if (range?.max !== undefined) input.max = String(range.max);
+        const kind = spec.kind;
+        const input = control(element('input', { type: 'number', step: kind.type === 'integer' ? '1' : 'any' }), id);
+        if (kind.min !== undefined) input.min = String(kind.min);
+        if (kind.max !== undefined) input.max = String(kind.max);
         input.value = typeof value === 'number' ? String(value) : '';
         input.placeholder = spec.default ?? '';
+        const refusal = (given: number) => (kind.type === 'integer' ? refusedWhole(kind, given) : refusedNumber(kind, given));
         input.addEventListener('input', () => {
           const given = input.value === '' ? undefined : input.valueAsNumber;
           // Each field checked as it is typed, against the range its spec
           // declares (the core checks the same declaration): every field out
           // of range says so at once, where the core names only the first.
-          const refused = input.validity.badInput ? 'not a number' : given === undefined || range === undefined ? undefined : refusedWhole(range, given);
+          const refused = input.validity.badInput ? 'not a number' : given === undefined ? undefined : refusal(given);
           this.#setLocalError(spec.name, field, refused, !input.validity.badInput);
           if (refused === undefined) this.#onChange(spec.name, given);
         });
         return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
       }
       case 'perAxis': {
+        const range: NumberRangeInfo = spec.kind;
         const input = control(element('input', { type: 'text', inputMode: 'decimal' }), id);
         input.value = Array.isArray(value) ? value.join(',') : typeof value === 'number' ? String(value) : '';
         input.placeholder = spec.default ?? '';
         input.addEventListener('input', () => {
           const read = readPerAxis(input.value);
-          this.#setLocalError(spec.name, field, read === null ? 'give one number, or x,y,z' : undefined);
-          if (read !== null) this.#onChange(spec.name, read);
+          const refused = read === null ? 'give one number, or x,y,z' : read === undefined ? undefined : refusedPerAxis(range, read);
+          this.#setLocalError(spec.name, field, refused);
+          if (refused === undefined) this.#onChange(spec.name, read ?? undefined);
         });
         return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
       }

@@ -31,6 +31,7 @@ use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
 use crate::line::line_stepper::{LineStepper, MakeSegment, StepperVisitor};
 use crate::line::regions_wang::RegionsWhy;
+use crate::range::NumberRange;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
 use crate::trace::{Decision, MadeSegment, Stepper, Trace, TraceBuilder};
 use serde_json::{Map, Value};
@@ -60,7 +61,7 @@ pub const MIN_FULL_CIRCLE_CHORDS: u64 = 3;
 
 pub const SEGMENT_LENGTH: OptionSpec = OptionSpec {
     name: "segmentLength",
-    kind: OptionKind::Number,
+    kind: OptionKind::Number(NumberRange::positive("grid units")),
     required: false,
     default: None,
     applies_with: None,
@@ -69,7 +70,8 @@ pub const SEGMENT_LENGTH: OptionSpec = OptionSpec {
 
 pub const TOLERANCE: OptionSpec = OptionSpec {
     name: "tolerance",
-    kind: OptionKind::Number,
+    // Less than the arc's diameter too, which only the arc knows (Chording::chords).
+    kind: OptionKind::Number(NumberRange::positive("grid units")),
     required: false,
     default: Some("0.5"),
     applies_with: None,
@@ -150,18 +152,14 @@ pub enum Chording {
 
 impl Chording {
     pub fn parse(req: &Request) -> Result<Chording, Error> {
-        let length = req.number(SEGMENT_LENGTH.name)?;
-        let tolerance = req.number(TOLERANCE.name)?;
+        let length = req.declared_number(&SEGMENT_LENGTH)?;
+        let tolerance = req.declared_number(&TOLERANCE)?;
         match (length, tolerance) {
             (Some(_), Some(_)) => Err(Error::field(
                 "tolerance",
                 "give segmentLength or tolerance, not both",
             )),
-            (Some(l), None) if l > 0.0 => Ok(Chording::Length(l)),
-            (Some(l), None) => Err(Error::field(
-                "segmentLength",
-                format!("must be more than 0, got {}", number_text(l)),
-            )),
+            (Some(l), None) => Ok(Chording::Length(l)),
             (None, t) => Ok(Chording::Tolerance(t.unwrap_or(0.5))),
         }
     }
@@ -190,12 +188,6 @@ impl Chording {
                             2.0 * r,
                             number_text(t)
                         ),
-                    ));
-                }
-                if t <= 0.0 {
-                    return Err(Error::field(
-                        "tolerance",
-                        format!("must be more than 0, got {}", number_text(t)),
                     ));
                 }
                 // Grbl: segments = floor(|0.5 * angular_travel * radius| /

@@ -41,7 +41,7 @@ use crate::figure::FigureKind;
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, Point, Step, jumps};
 use crate::ideal::IdealPath;
 use crate::line::line_stepper::{ColumnsAndFigure, LineStepper, MakeSegment, StepperVisitor};
-use crate::machine::{MACHINE_AXES, Machine};
+use crate::machine::{MACHINE_AXES, MICROSTEPS, Machine, PITCH, STEP_ANGLE, STEPS_PER_MM};
 use crate::memory::{HEAP_BUDGET_BYTES, held_bytes};
 use crate::planner::{self, Limits, Planner, Timing};
 use crate::request::{
@@ -61,42 +61,6 @@ pub const ARC_ALGORITHMS: &[&str] = &["circle", "arc-segments"];
 
 /// Warnings kept per program; the rest are counted.
 pub const MAX_WARNINGS: usize = 1000;
-
-pub const STEPS_PER_MM: OptionSpec = OptionSpec {
-    name: "stepsPerMm",
-    kind: OptionKind::PerAxis { integer: false },
-    required: false,
-    default: None,
-    applies_with: None,
-    doc: "Steps per mm: one number for every axis, or one per axis as x,y,z (80,80,400). Or give stepAngle, microsteps and pitch.",
-};
-
-pub const STEP_ANGLE: OptionSpec = OptionSpec {
-    name: "stepAngle",
-    kind: OptionKind::PerAxis { integer: false },
-    required: false,
-    default: None,
-    applies_with: None,
-    doc: "Motor step angle θ, degrees (one, or x,y,z): p_m = 360 / θ · s pulses per turn (Wang 3.3).",
-};
-
-pub const MICROSTEPS: OptionSpec = OptionSpec {
-    name: "microsteps",
-    kind: OptionKind::PerAxis { integer: true },
-    required: false,
-    default: None,
-    applies_with: None,
-    doc: "Microsteps s per full step (one, or x,y,z).",
-};
-
-pub const PITCH: OptionSpec = OptionSpec {
-    name: "pitch",
-    kind: OptionKind::PerAxis { integer: false },
-    required: false,
-    default: None,
-    applies_with: None,
-    doc: "Lead-screw pitch P, mm per turn (one, or x,y,z): one step is L = P / p_m mm.",
-};
 
 pub const PROGRAM_LINE_ALGORITHM: OptionSpec = OptionSpec {
     applies_with: None,

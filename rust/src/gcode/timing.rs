@@ -32,7 +32,7 @@ use crate::error::{Error, number_text};
 use crate::grid::{AXIS_NAMES, Point};
 use crate::machine::{MACHINE_AXES, Machine, per_axis};
 use crate::planner::{self, Limits, Plan, Planner, Rate, Timing};
-use crate::request::shown;
+use crate::request::{OptionSpec, shown};
 use crate::starts::Starts;
 use serde_json::{Map, Value};
 use std::ops::Range;
@@ -42,10 +42,10 @@ use std::rc::Rc;
 /// (Grbl's defaults when absent); errors name the setting.
 pub fn limits_from_settings(settings: &Map<String, Value>) -> Result<Limits, Error> {
     let defaults = Limits::default();
-    let axes = |name: &str, default: [f64; MACHINE_AXES]| {
+    let axes = |spec: &OptionSpec, default: [f64; MACHINE_AXES]| {
         settings
-            .get(name)
-            .map_or(Ok(default), |v| per_axis(name, v))
+            .get(spec.name)
+            .map_or(Ok(default), |v| per_axis(spec, v))
     };
     let junction_deviation_mm = match settings.get(planner::JUNCTION_DEVIATION.name) {
         None => defaults.junction_deviation_mm,
@@ -58,11 +58,11 @@ pub fn limits_from_settings(settings: &Map<String, Value>) -> Result<Limits, Err
     };
     let max_step_rate_hz = match settings.get(planner::MAX_STEP_RATE.name) {
         None => None,
-        Some(v) => Some(per_axis(planner::MAX_STEP_RATE.name, v)?),
+        Some(v) => Some(per_axis(&planner::MAX_STEP_RATE, v)?),
     };
     Limits::new(
-        axes(planner::ACCELERATION.name, defaults.acceleration_mm_per_s2)?,
-        axes(planner::MAX_RATE.name, defaults.max_rate_mm_per_min)?,
+        axes(&planner::ACCELERATION, defaults.acceleration_mm_per_s2)?,
+        axes(&planner::MAX_RATE, defaults.max_rate_mm_per_min)?,
         junction_deviation_mm,
         max_step_rate_hz,
     )
@@ -508,6 +508,24 @@ pub fn step_rate_message(axis: usize, needed_hz: f64, max_hz: f64) -> String {
         "{} would step at {:.0} steps/s at the planned speed, more than maxStepRate = {} steps/s: the drivers would miss steps; lower the feed or maxRate",
         AXIS_NAMES[axis].to_uppercase(),
         needed_hz,
-        max_hz
+        // 1e-300 written out was 300 digits long.
+        number_text(max_hz)
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_step_rate_excess_says_the_max_rate_as_a_number_is_read() {
+        let message = step_rate_message(0, 8.0, 1e-300);
+        assert!(
+            message.contains("more than maxStepRate = 1e-300 steps/s"),
+            "{message}"
+        );
+        assert!(step_rate_message(1, 2530.4, 2000.0).starts_with(
+            "Y would step at 2530 steps/s at the planned speed, more than maxStepRate = 2000 steps/s"
+        ));
+    }
 }
