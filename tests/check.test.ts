@@ -107,6 +107,13 @@ describe('checkPoints', () => {
     expect(await readPoints(text, 3)).toEqual(Float64Array.from(rows.flat()));
     // A cell beyond ASCII is named with its line and column, in characters as written.
     expect((await rejection(checkPoints(REGIONS, '0,0,0\n1,é,1\n'))).message).toBe("line 2, column 3: point 1: y = 'é' is not a number");
+    // Its UTF-8 bytes, as a file holds them, read as the text; bytes that
+    // are not UTF-8 refused at their line and column, as runGcode's are.
+    expect(await checkPoints(REGIONS, new TextEncoder().encode(text))).toEqual(plain);
+    const latin1 = Uint8Array.from(Buffer.from('0,0,0\n1,1,1 \xe9\n', 'latin1'));
+    const error = await rejection(checkPoints(REGIONS, latin1));
+    expect([error.line, error.column]).toEqual([2, 7]);
+    expect(error.message).toMatch(/not UTF-8 text/);
   });
 });
 

@@ -280,6 +280,28 @@ describe('voxpath gcode', () => {
     }
   });
 
+  it('refuses a file that is not UTF-8 at the line and column of its first such byte, as the API does', () => {
+    // Decoded by the CLI, a Latin-1 "café" in a comment ran as U+FFFD without
+    // a word, while runGcode refused the same bytes. Found by a helper's hunt.
+    const latin1 = Buffer.from('G1 X1 F100\nG1 X2 (caf\xe9)\nG1 X3\n', 'latin1');
+    const r = spawnSync(process.execPath, [BIN, 'gcode', '-', '--steps-per-mm', '10'], { input: latin1, encoding: 'utf8' });
+    expect(r.status).toBe(2);
+    expect(r.stderr).toBe('voxpath: line 2, column 11: not UTF-8 text (invalid utf-8 sequence of 1 bytes from index 21): save it as UTF-8, or decode it to a string first\n');
+    const points = Buffer.from('x,y,z\n0,0,0 \xe9\n1,1,1\n', 'latin1');
+    const check = spawnSync(process.execPath, [BIN, 'check', '-', '--algorithm', 'regions', '--from', '0,0,0', '--to', '1,1,1'], { input: points, encoding: 'utf8' });
+    expect(check.status).toBe(2);
+    expect(check.stderr).toMatch(/^voxpath: line 2, column 7: not UTF-8 text/);
+    // A UTF-8 byte order mark is skipped, as before.
+    const marked = Buffer.concat([Buffer.from([0xef, 0xbb, 0xbf]), Buffer.from('G1 X1 F100\n')]);
+    const ok = spawnSync(process.execPath, [BIN, 'gcode', '-', '--steps-per-mm', '10', '--format', 'csv'], { input: marked, encoding: 'utf8' });
+    expect([ok.status, ok.stderr]).toEqual([0, '']);
+    // A UTF-16 mark before bytes that are not UTF-16 (an odd count).
+    const odd = Buffer.from([0xff, 0xfe, 0x47, 0x00, 0x31]);
+    const bad = spawnSync(process.execPath, [BIN, 'gcode', '-', '--steps-per-mm', '10'], { input: odd, encoding: 'utf8' });
+    expect(bad.status).toBe(2);
+    expect(bad.stderr).toContain('starts with the byte order mark of UTF-16LE but is not UTF-16LE text');
+  });
+
   it('names a setting by its flag where people read it (the table, stderr), and by its API name in the JSON', () => {
     const args = ['gcode', '-', '--steps-per-mm', '80', '--max-steps', '10'];
     const csv = voxpath([...args, '--format', 'csv'], 'G1 X10 F100\n');

@@ -368,3 +368,26 @@ fn a_move_that_does_not_move_is_an_instant_after_the_dwells_before_it_at_the_spe
     );
     assert!(close(t.start_seconds, moves[0].timing.end_seconds));
 }
+
+#[test]
+fn g92_brings_the_motion_to_rest_as_a_dwell_does() {
+    // Grbl synchronises its buffer for G92 (gcode.c step 19,
+    // system_flag_wco_change): the move after it starts from rest, as after
+    // G4 P0. voxpath ran straight on at 8.33 mm/s (3.23 s, not 4.07 s).
+    let slow = settings("");
+    let duration = |program: &str| run(program, slow.clone()).info.duration_seconds;
+    let through_dwell = duration("G1 X10 F500\nG4 P0\nG1 X20\n");
+    let through_g92 = duration("G1 X10 F500\nG92 X10\nG1 X20\n");
+    let straight_on = duration("G1 X10 F500\nG1 X20\n");
+    assert!(
+        close(through_g92, through_dwell),
+        "{through_g92} {through_dwell}"
+    );
+    assert!(
+        through_g92 > straight_on + 0.01,
+        "{through_g92} {straight_on}"
+    );
+    let program = run("G1 X10 F500\nG92 X0\nG1 X10\n", slow);
+    assert_eq!(program.moves()[0].timing.exit_speed, 0.0);
+    assert_eq!(program.moves()[1].timing.entry_speed, 0.0);
+}

@@ -45,13 +45,17 @@ export function gcodeHelp(settings: readonly OptionSpec[]): string {
 }
 
 /**
- * The text of FILE, or of standard input for '-': UTF-8, or UTF-16 where the
- * bytes start with its byte order mark, as a browser reads a file (the
- * Encoding Standard's BOM sniffing). A program or points file saved as
- * "Unicode" by Windows Notepad is UTF-16 with a mark; read as UTF-8 its
- * first line was "'��' is not G-code" and every character a NUL beside it.
+ * The text of FILE, or of standard input for '-': its bytes as they are,
+ * for the core to read as UTF-8 (which refuses bytes that are not UTF-8 at
+ * their line and column, as `runGcode` and `checkPoints` refuse them: decoded
+ * here, a Latin-1 "café" in a comment ran as U+FFFD without a word), or the
+ * text decoded from UTF-16 where the bytes start with its byte order mark,
+ * as a browser reads a file (the Encoding Standard's BOM sniffing). A
+ * program or points file saved as "Unicode" by Windows Notepad is UTF-16
+ * with a mark; read as UTF-8 its first line was "'��' is not G-code" and
+ * every character a NUL beside it.
  */
-export async function readSource(file: string): Promise<string> {
+export async function readSource(file: string): Promise<string | Uint8Array> {
   let bytes: Buffer;
   if (file === '-') {
     const chunks: Buffer[] = [];
@@ -64,9 +68,14 @@ export async function readSource(file: string): Promise<string> {
       throw new UsageError(`cannot read ${file}: ${error instanceof Error ? error.message : String(error)}`);
     }
   }
-  const encoding = bytes[0] === 0xff && bytes[1] === 0xfe ? 'utf-16le' : bytes[0] === 0xfe && bytes[1] === 0xff ? 'utf-16be' : 'utf-8';
-  // TextDecoder drops the mark of its own encoding, and puts U+FFFD where bytes are not text in it.
-  return new TextDecoder(encoding).decode(bytes);
+  const utf16 = bytes[0] === 0xff && bytes[1] === 0xfe ? 'utf-16le' : bytes[0] === 0xfe && bytes[1] === 0xff ? 'utf-16be' : undefined;
+  // TextDecoder drops the mark of its own encoding. UTF-8's mark the core skips.
+  if (utf16 === undefined) return bytes;
+  try {
+    return new TextDecoder(utf16, { fatal: true }).decode(bytes);
+  } catch {
+    throw new UsageError(`cannot read ${file}: it starts with the byte order mark of ${utf16.toUpperCase()} but is not ${utf16.toUpperCase()} text (an unpaired surrogate, or an odd byte count); save it as UTF-8`);
+  }
 }
 
 /** The program's own record (the core's ProgramInfo), without its trace. */

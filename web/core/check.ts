@@ -24,10 +24,11 @@ import { loadCore, withTextBytes } from './wasm.js';
  * A learner's points: rows of [x, y, z] (or [x, y] ...), a flat Int32Array (or Float64Array)
  * of `dims` values per point, or text: CSV or blank-separated rows with an
  * optional header (its x, y, z columns are read, so voxpath's own CSV works),
- * or the list a program printed (`[(0, 0, 0), (1, 1, 0), ...]`). Text is read
- * by the core, once.
+ * or the list a program printed (`[(0, 0, 0), (1, 1, 0), ...]`), as a string
+ * or as its UTF-8 bytes (a file's, in a Uint8Array). Text is read by the
+ * core, once.
  */
-export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Array | Float64Array; dims: number } | string;
+export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Array | Float64Array; dims: number } | string | Uint8Array;
 
 /** The result and its parts are the core's Rust types (rust/src/check.rs). */
 export type { AlsoMatch, AroundRow, Check, DifferenceKind, Difference as CheckDifference } from './pkg/voxpath.js';
@@ -69,7 +70,9 @@ function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number
  */
 export async function checkPoints(request: TraceOptions, points: LearnerPoints): Promise<Check> {
   const json = encodeRequest(request);
-  if (typeof points === 'string') {
+  // Text, or its UTF-8 bytes as a file holds them (refused at the line and
+  // column of the first byte that is not UTF-8), as runGcode takes a program.
+  if (typeof points === 'string' || points instanceof Uint8Array) {
     const core = await loadCore();
     return callCore(() => withTextBytes(core, points, (bytes) => core.checkText(json, bytes)));
   }

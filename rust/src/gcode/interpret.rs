@@ -284,6 +284,12 @@ pub struct Interpreter {
     spindle: Spindle,
     spindle_speed: f64,
     coolant: Coolant,
+    /// The work coordinate system selected (G54 to G59.3, as (number,
+    /// minor)) and the tool length offset (G43.1 Z, mm; G49: 0): voxpath
+    /// models neither, but Grbl brings the motion to rest when either
+    /// changes (see [`Interpreter::rest_for_unmodelled`]).
+    coordinate_system: (u32, u32),
+    tool_length_offset_mm: f64,
 }
 
 impl Default for Interpreter {
@@ -304,6 +310,8 @@ impl Default for Interpreter {
             spindle: Spindle::Off,
             spindle_speed: 0.0,
             coolant: COOLANT_OFF,
+            coordinate_system: (54, 0),
+            tool_length_offset_mm: 0.0,
         }
     }
 }
@@ -417,6 +425,68 @@ impl Interpreter {
         // reset (switching from G93 by a G94 word is what leaves F unset).
         self.inverse_time = false;
         (self.spindle, self.coolant) = (Spindle::Off, COOLANT_OFF);
+        // gcode.c: "gc_state.modal.coord_select = 0; // G54".
+        self.coordinate_system = (54, 0);
+    }
+
+    /// For G code `code`, which voxpath does not model, when Grbl brings
+    /// the motion to rest before its line's motion (`effects.stop`, set
+    /// here) and why, as a clause for the code's warning; "" when it does
+    /// not. Grbl synchronises its buffer when the work coordinate system
+    /// or the tool length offset changes (gcode.c steps 14 and 15:
+    /// system_flag_wco_change, with FORCE_BUFFER_SYNC_DURING_WCO_CHANGE on
+    /// by default in config.h) and before it writes coordinate data to its
+    /// EEPROM (G10 L2 and L20, G28.1, G30.1: settings_write_coord_data,
+    /// with FORCE_BUFFER_SYNC_DURING_EEPROM_WRITE on by default).
+    fn rest_for_unmodelled(
+        &mut self,
+        code: &Code,
+        words: &Words,
+        unit_mm: f64,
+        effects: &mut Effects,
+    ) -> &'static str {
+        let rest = match (code.number, code.minor) {
+            (54..=58, 0) | (59, 0..=3) => {
+                let changed = self.coordinate_system != (code.number, code.minor);
+                self.coordinate_system = (code.number, code.minor);
+                if changed {
+                    "; the motion comes to rest here first, as Grbl's does when the work coordinate system changes"
+                } else {
+                    ""
+                }
+            }
+            (43, 1) | (49, 0) => {
+                let offset_mm = if code.number == 49 {
+                    0.0
+                } else {
+                    words
+                        .get('Z')
+                        .map_or(self.tool_length_offset_mm, |z| z.value * unit_mm)
+                };
+                let changed = offset_mm != self.tool_length_offset_mm;
+                self.tool_length_offset_mm = offset_mm;
+                if changed {
+                    "; the motion comes to rest here first, as Grbl's does when the tool length offset changes"
+                } else {
+                    ""
+                }
+            }
+            (10, 0)
+                if words
+                    .get('L')
+                    .is_some_and(|l| l.value == 2.0 || l.value == 20.0) =>
+            {
+                "; the motion comes to rest here first, as Grbl's does before it writes coordinate data to its EEPROM"
+            }
+            (28 | 30, 1) => {
+                "; the motion comes to rest here first, as Grbl's does before it writes the position to its EEPROM"
+            }
+            _ => "",
+        };
+        if !rest.is_empty() {
+            effects.stop.get_or_insert(0.0);
+        }
+        rest
     }
 
     /// G94 after G93 leaves F undefined, as in Grbl (gcode.c: a feed move
@@ -465,6 +535,21 @@ impl Interpreter {
         let mut coolant: Option<(u32, Code)> = None;
         let mut flow: Option<(u32, Code)> = None;
         let mut other_groups: [Option<((), Code)>; OTHER_MODAL_GROUPS] = [None; OTHER_MODAL_GROUPS];
+        let words = Words::new(&block.words);
+        // What axis_code's warning adds when the motion comes to rest for it.
+        let mut axis_code_rest = "";
+        // The line's own units, which its axis words are in wherever G20
+        // or G21 stands on it (gcode.c converts them after reading the
+        // whole line); two of them are refused in the loop below.
+        let line_unit_mm = match block
+            .codes
+            .iter()
+            .find(|c| c.letter == 'G' && c.minor == 0 && matches!(c.number, 20 | 21))
+        {
+            Some(c) if c.number == 20 => MM_PER_INCH,
+            Some(_) => 1.0,
+            None => self.unit_mm(),
+        };
         for code in &block.codes {
             if let Some((group, name)) = (code.letter == 'G')
                 .then(|| other_modal_group(code.number, code.minor))
@@ -528,6 +613,7 @@ impl Interpreter {
                 ('G', n, m) if axis_code.is_none() && !leaves_axis_words_to_motion(n, m) => {
                     // Said below, once the line's axis words are known.
                     axis_code = Some(*code);
+                    axis_code_rest = self.rest_for_unmodelled(code, &words, line_unit_mm, effects);
                 }
                 (letter, _, _) => {
                     let what = match letter {
@@ -536,14 +622,14 @@ impl Interpreter {
                             "voxpath models motion only, not spindle, coolant, tools or program flow"
                         }
                     };
+                    let rest = self.rest_for_unmodelled(code, &words, line_unit_mm, effects);
                     effects.warnings.push(Problem {
                         column: code.column,
-                        message: format!("{} ignored: {what}", code.name()),
+                        message: format!("{} ignored: {what}{rest}", code.name()),
                     });
                 }
             }
         }
-        let words = Words::new(&block.words);
         self.run_machine_codes(&words, inverse_time, spindle, coolant, flow, effects);
         if let Some(code) = dwell {
             // mc_dwell: P seconds at rest, after the motion before has ended.
@@ -636,6 +722,15 @@ impl Interpreter {
         let axes = words.axes();
         let first_axis = words.first_of(&['X', 'Y', 'Z']);
         let arc_word = words.first_of(&['I', 'J', 'K', 'R']);
+        if g92.is_some() {
+            // G92 and G92.1 change the work coordinate offset, for which
+            // Grbl brings the motion to rest before the line's motion
+            // (gcode.c step 19: system_flag_wco_change, which with
+            // FORCE_BUFFER_SYNC_DURING_WCO_CHANGE, on by default in
+            // config.h, calls protocol_buffer_synchronize), whether or not
+            // the offset changes.
+            effects.stop.get_or_insert(0.0);
+        }
         if let Some((false, _)) = g92 {
             // G92.1; its line's axis words, if any, are a move in the
             // motion mode, as in Grbl (gcode.c: "If axis words are passed
@@ -694,7 +789,7 @@ impl Interpreter {
                 effects.warnings.push(Problem {
                     column: code.column,
                     message: format!(
-                        "{} ignored: voxpath does not model it, so this line's axis words are not a move either",
+                        "{} ignored: voxpath does not model it, so this line's axis words are not a move either{axis_code_rest}",
                         code.name()
                     ),
                 });
@@ -702,7 +797,10 @@ impl Interpreter {
             }
             effects.warnings.push(Problem {
                 column: code.column,
-                message: format!("{} ignored: voxpath does not model it", code.name()),
+                message: format!(
+                    "{} ignored: voxpath does not model it{axis_code_rest}",
+                    code.name()
+                ),
             });
         }
         // G53, as Grbl runs it (gcode.c, NON_MODAL_ABSOLUTE_OVERRIDE): a G0
@@ -1215,6 +1313,53 @@ mod tests {
         Ok((it, last))
     }
 
+    #[test]
+    fn comes_to_rest_where_grbl_synchronises_for_offsets_and_its_eeprom() {
+        // gcode.c steps 14, 15 and 19: system_flag_wco_change and
+        // settings_write_coord_data synchronise Grbl's buffer (config.h:
+        // FORCE_BUFFER_SYNC_DURING_WCO_CHANGE and _EEPROM_WRITE, both on).
+        let stop = |lines: &[&str]| run(lines).unwrap().1.stop;
+        let warned = |lines: &[&str]| {
+            run(lines)
+                .unwrap()
+                .1
+                .warnings
+                .iter()
+                .any(|w| w.message.contains("comes to rest here first"))
+        };
+        // G92 and G92.1, whether or not the offset changes.
+        assert_eq!(stop(&["G1 X1 F100", "G92 X0"]), Some(0.0));
+        assert_eq!(stop(&["G92 X0", "G92 X0"]), Some(0.0));
+        assert_eq!(stop(&["G92.1"]), Some(0.0));
+        assert_eq!(stop(&["G92.1 G1 X2 F100"]), Some(0.0));
+        // A coordinate system: only a change (G54 is the one at the start
+        // and after M2).
+        assert_eq!(stop(&["G54"]), None);
+        assert_eq!(stop(&["G55"]), Some(0.0));
+        assert!(warned(&["G55"]));
+        assert_eq!(stop(&["G55", "G55 G1 X1 F100"]), None);
+        assert!(!warned(&["G55", "G55"]));
+        assert_eq!(stop(&["G55", "G54"]), Some(0.0));
+        assert_eq!(stop(&["G55", "M2", "G54"]), None);
+        // The tool length offset: only a change, Z in the line's units.
+        assert_eq!(stop(&["G43.1 Z1"]), Some(0.0));
+        assert!(warned(&["G43.1 Z1"]));
+        assert_eq!(stop(&["G43.1 Z1", "G43.1 Z1"]), None);
+        assert_eq!(stop(&["G20 G43.1 Z1", "G21 G43.1 Z25.4"]), None);
+        assert_eq!(stop(&["G43.1 Z1 G20", "G21 G43.1 Z25.4"]), None);
+        assert_eq!(stop(&["G43.1 Z1", "G49"]), Some(0.0));
+        assert_eq!(stop(&["G49"]), None);
+        // Coordinate data written: always.
+        assert_eq!(stop(&["G10 L20 P1 X0"]), Some(0.0));
+        assert_eq!(stop(&["G10 L2 P1 X0"]), Some(0.0));
+        assert_eq!(stop(&["G28.1"]), Some(0.0));
+        assert_eq!(stop(&["G30.1"]), Some(0.0));
+        assert!(warned(&["G30.1"]));
+        // Nothing else.
+        assert_eq!(stop(&["G1 X1 F100", "G1 X2"]), None);
+        assert_eq!(stop(&["G61"]), None);
+    }
+
     fn arc(lines: &[&str]) -> ArcMm {
         run(lines).unwrap().1.motion.unwrap().arc.unwrap()
     }
@@ -1524,10 +1669,21 @@ mod tests {
             assert!(e.motion.is_none(), "{line} moved");
             assert_eq!(it.position_mm(), [1.0, 0.0, 0.0], "{line}");
             let code = line.split(' ').next().unwrap();
+            // G43.1 Z-2.5 changes the tool length offset and G10 L20
+            // writes coordinate data: the motion comes to rest for them.
+            let rest = match code {
+                "G43.1" => {
+                    "; the motion comes to rest here first, as Grbl's does when the tool length offset changes"
+                }
+                "G10" => {
+                    "; the motion comes to rest here first, as Grbl's does before it writes coordinate data to its EEPROM"
+                }
+                _ => "",
+            };
             assert_eq!(
                 messages(&e).last().unwrap().1,
                 format!(
-                    "{code} ignored: voxpath does not model it, so this line's axis words are not a move either"
+                    "{code} ignored: voxpath does not model it, so this line's axis words are not a move either{rest}"
                 ),
                 "{line}"
             );

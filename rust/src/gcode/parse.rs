@@ -737,12 +737,19 @@ impl<'t> Reader<'t> {
         let text = number.as_ref();
         let whole = text.split_once('.').map_or(text, |(w, _)| w);
         whole.parse::<u32>().map_err(|_| {
+            // Digits past u32 are a whole number too large, not "not a
+            // whole number" (N4294967296 was told so).
+            let why = if !whole.is_empty() && whole.bytes().all(|b| b.is_ascii_digit()) {
+                format!(
+                    "is too large: line and program numbers are at most {}",
+                    u32::MAX
+                )
+            } else {
+                "is not a whole number (line and program numbers are)".to_string()
+            };
             problem(
                 number_column,
-                format!(
-                    "malformed number: '{}' is not a whole number (line and program numbers are)",
-                    echo(text)
-                ),
+                format!("malformed number: '{}' {why}", echo(text)),
             )
         })
     }
@@ -1006,6 +1013,15 @@ mod tests {
         );
         // A signed line or program number is named at its sign, not as a
         // letter with no number after it.
+        // A line number past u32 is too large, not "not a whole number".
+        assert_eq!(
+            errors("N4294967296 G1 X1"),
+            [(
+                2,
+                "malformed number: '4294967296' is too large: line and program numbers are at most 4294967295".to_string()
+            )]
+        );
+        assert!(errors("N4294967295 G1 X1").is_empty());
         for (line, column, sign) in [("N-1 G1 X1", 2, '-'), ("O +7", 3, '+')] {
             let letter = &line[..1];
             assert_eq!(
