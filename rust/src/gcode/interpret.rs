@@ -94,6 +94,13 @@ fn leaves_axis_words_to_motion(number: u32, minor: u32) -> bool {
     )
 }
 
+/// Whether `letter` names an axis voxpath does not model: E (a 3D
+/// printer's extruder), the rotary axes A, B and C, and the parallel axes
+/// U, V and W.
+fn is_other_axis(letter: char) -> bool {
+    matches!(letter, 'E' | 'A' | 'B' | 'C' | 'U' | 'V' | 'W')
+}
+
 /// The modal group of a G code outside the groups voxpath models, as
 /// RS274/NGC (LinuxCNC) and Grbl group them, by the name an error gives it:
 /// a line holds one code of each group (Grbl refuses two: error 21, modal
@@ -722,20 +729,18 @@ impl Interpreter {
         let axes = words.axes();
         let first_axis = words.first_of(&['X', 'Y', 'Z']);
         let arc_word = words.first_of(&['I', 'J', 'K', 'R']);
-        if g92.is_some() {
-            // G92 and G92.1 change the work coordinate offset, for which
-            // Grbl brings the motion to rest before the line's motion
-            // (gcode.c step 19: system_flag_wco_change, which with
-            // FORCE_BUFFER_SYNC_DURING_WCO_CHANGE, on by default in
-            // config.h, calls protocol_buffer_synchronize), whether or not
-            // the offset changes.
-            effects.stop.get_or_insert(0.0);
-        }
+        // G92 and G92.1 change the work coordinate offset, for which Grbl
+        // brings the motion to rest before the line's motion (gcode.c step
+        // 19: system_flag_wco_change, which with
+        // FORCE_BUFFER_SYNC_DURING_WCO_CHANGE, on by default in config.h,
+        // calls protocol_buffer_synchronize), whether or not the offset
+        // changes.
         if let Some((false, _)) = g92 {
             // G92.1; its line's axis words, if any, are a move in the
             // motion mode, as in Grbl (gcode.c: "If axis words are passed
             // here, they are interpreted as an implicit motion mode").
             effects.clears_offset = true;
+            effects.stop.get_or_insert(0.0);
         }
         if let Some((true, code)) = g92 {
             if let Some((_, c)) = motion {
@@ -749,12 +754,27 @@ impl Interpreter {
                 ));
             }
             if first_axis.is_none() {
+                // A 3D printer's `G92 E0` (in most slicers' programs) sets
+                // an axis voxpath does not have, whose word is a warning
+                // above, as E is on a move: the line sets nothing, and the
+                // program goes on.
+                if let Some(w) = block.words.iter().find(|w| is_other_axis(w.letter)) {
+                    effects.warnings.push(Problem {
+                        column: code.column,
+                        message: format!(
+                            "G92 sets nothing here: its only axis word, {}{}, is of an axis voxpath does not model (X, Y and Z only)",
+                            w.letter, w.value
+                        ),
+                    });
+                    return Ok(());
+                }
                 return Err(Error::at(
                     line,
                     code.column,
                     "missing axis word: G92 sets the current position to X, Y and/or Z; give at least one",
                 ));
             }
+            effects.stop.get_or_insert(0.0);
             for (axis, w) in axes.iter().enumerate() {
                 if let Some(w) = w {
                     self.offset_mm[axis] = self.position_mm[axis] - w.value * self.unit_mm();
@@ -1530,6 +1550,25 @@ mod tests {
             e(&["G0 X1", "G92"]),
             "line 2, column 1: missing axis word: G92 sets the current position to X, Y and/or Z; give at least one"
         );
+        // A slicer's G92 E0 sets an axis voxpath does not have: warnings,
+        // no stop, and the program goes on (it stopped there, its message
+        // silent about the E0).
+        let (it, g92_e0) = run(&["G1 X1 F100", "G92 E0"]).unwrap();
+        assert_eq!(
+            messages(&g92_e0),
+            [
+                (
+                    5,
+                    "E0 ignored: voxpath models X, Y and Z motion only".to_string()
+                ),
+                (
+                    1,
+                    "G92 sets nothing here: its only axis word, E0, is of an axis voxpath does not model (X, Y and Z only)".to_string()
+                ),
+            ]
+        );
+        assert_eq!(g92_e0.stop, None);
+        assert_eq!(it.position_mm(), [1.0, 0.0, 0.0]);
         assert_eq!(
             e(&["G3 R5"]),
             "line 1, column 4: missing axis word: an R arc needs an end point other than its start on X or Y (a full circle needs I/J/K)"
