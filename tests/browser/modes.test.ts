@@ -668,11 +668,27 @@ describe('G-code mode', () => {
     const current = Number(await page.getByTestId('gcode-current-line').getAttribute('data-line'));
     expect(current).toBeGreaterThanOrEqual(1);
     await listing.focus();
+    // A line picked in view leaves the listing where it is (it scrolled the
+    // picked line to the third row at every arrow, as a problem's link did).
+    const scrolled = () => listing.evaluate((e) => e.scrollTop);
+    const before = await scrolled();
     await page.keyboard.press('ArrowDown');
     await expect.poll(picked).toBe(String(current + 1));
+    expect(await scrolled()).toBe(before);
     for (let k = 0; k < 3; k++) await page.keyboard.press('ArrowDown');
     await expect.poll(picked).toBe(String(current + 4));
     await page.keyboard.press('ArrowUp');
+    await expect.poll(picked).toBe(String(current + 3));
+    expect(await scrolled()).toBe(before);
+    // Past the rows in view, the picked line is brought into view.
+    const rows = await listing.evaluate((e) => Math.ceil(e.clientHeight / parseFloat(getComputedStyle(e).lineHeight)));
+    for (let k = 0; k < rows + 5; k++) await page.keyboard.press('ArrowDown');
+    await expect.poll(picked).toBe(String(current + 3 + rows + 5));
+    const box = (await listing.boundingBox())!;
+    const mark = (await page.getByTestId('gcode-picked-line').boundingBox())!;
+    expect(mark.y).toBeGreaterThanOrEqual(box.y);
+    expect(mark.y + mark.height).toBeLessThanOrEqual(box.y + box.height);
+    for (let k = 0; k < rows + 5; k++) await page.keyboard.press('ArrowUp');
     await expect.poll(picked).toBe(String(current + 3));
     // Its line (G1 X(k % 50 + 1) from X(k % 50)) is 1 mm of x, 80 steps at the page's 80 steps/mm: what the view lights up.
     await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('80');

@@ -401,19 +401,31 @@ export class GcodePanel {
     return list;
   }
 
-  /** Puts the editor's cursor on `line` (or scrolls the listing to it) and picks it. */
+  /** Puts the editor's cursor on `line` (or brings it into the listing's view) and picks it. */
   #goToLine(line: number): void {
-    const top = Math.max(0, (line - 3) * this.#lineHeightPx);
-    if (this.#listed) {
-      this.#e.listing.scrollTop = top;
-    } else {
+    if (!this.#listed) {
       const { text } = this.#e;
       const offset = this.#starts[Math.min(line, this.#lineCount) - 1]!;
       text.focus();
       text.setSelectionRange(offset, offset);
-      text.scrollTop = top;
     }
+    this.#bringIntoView(line);
     void this.#pick(line);
+  }
+
+  /**
+   * Scrolls the text (or the listing) so that `line` is in view, a third of
+   * the way down, when it is not; a line in view stays where it is, so that
+   * stepping line by line (the arrows, the timeline) does not move the text
+   * under the eye. The one way a line is brought into view: a problem's
+   * link, the arrows and the step shown all go through it.
+   */
+  #bringIntoView(line: number): void {
+    const scroller = this.#scroller;
+    const top = (line - 1) * this.#lineHeightPx;
+    if (top < scroller.scrollTop || top > scroller.scrollTop + scroller.clientHeight - this.#lineHeightPx) {
+      scroller.scrollTop = Math.max(0, top - scroller.clientHeight / 3);
+    }
   }
 
   /** Marks the line (and move) that made the step before point `pointIndex`. */
@@ -429,12 +441,8 @@ export class GcodePanel {
     const algorithm = this.#catalogue.algorithms.find((a) => a.id === moves[moveIndex - from]?.algorithm);
     this.#onColumns(algorithm && new Set(algorithm.columns.map((c) => c.name)));
     this.#currentLine = line;
-    const scroller = this.#scroller;
-    const top = (line - 1) * this.#lineHeightPx;
     // Not while the user types in the box: the view would jump away from the cursor.
-    if (document.activeElement !== this.#e.text && (top < scroller.scrollTop || top > scroller.scrollTop + scroller.clientHeight - this.#lineHeightPx)) {
-      scroller.scrollTop = Math.max(0, top - scroller.clientHeight / 3);
-    }
+    if (document.activeElement !== this.#e.text) this.#bringIntoView(line);
     this.#placeMarks();
     this.#renderMoves(program, from, moves, moveIndex);
   }
