@@ -285,8 +285,9 @@ describe('voxpath gcode', () => {
     // a word, while runGcode refused the same bytes. Found by a helper's hunt.
     const latin1 = Buffer.from('G1 X1 F100\nG1 X2 (caf\xe9)\nG1 X3\n', 'latin1');
     const r = spawnSync(process.execPath, [BIN, 'gcode', '-', '--steps-per-mm', '10'], { input: latin1, encoding: 'utf8' });
-    expect(r.status).toBe(2);
-    expect(r.stderr).toBe('voxpath: line 2, column 11: not UTF-8 text (invalid utf-8 sequence of 1 bytes from index 21): save it as UTF-8, or decode it to a string first\n');
+    // An error of the program, as its others are: FILE:line:column, status 1.
+    expect(r.status).toBe(1);
+    expect(r.stderr).toBe('voxpath: -:2:11: not UTF-8 text (invalid utf-8 sequence of 1 bytes from index 21): save it as UTF-8, or decode it to a string first\n');
     const points = Buffer.from('x,y,z\n0,0,0 \xe9\n1,1,1\n', 'latin1');
     const check = spawnSync(process.execPath, [BIN, 'check', '-', '--algorithm', 'regions', '--from', '0,0,0', '--to', '1,1,1'], { input: points, encoding: 'utf8' });
     expect(check.status).toBe(2);

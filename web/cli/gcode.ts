@@ -11,7 +11,7 @@
  * and on stderr for CSV and VCD.
  */
 import { readFile } from 'node:fs/promises';
-import { runGcode } from '../core/index.js';
+import { runGcode, VoxpathError } from '../core/index.js';
 import type { Catalogue, GcodeProgram, GcodeProgramInfo, GcodeSettings, OptionSpec } from '../core/index.js';
 import { alignedTable, indexChunks, jsonListChunks, pointsJsonChunks } from '../core/export.js';
 import { quoted } from '../core/guard.js';
@@ -180,7 +180,19 @@ export async function gcodeCommand(args: string[], catalogue: Catalogue): Promis
   // What people read (the table, stderr) names a setting by its flag ("raise --max-rate");
   // the JSON keeps the core's words, as the API gives them.
   const said = (message: string) => inFlagWords(message, catalogue);
-  const program = await runGcode(await readSource(file), settings);
+  let program: GcodeProgram;
+  try {
+    program = await runGcode(await readSource(file), settings);
+  } catch (error) {
+    // Bytes of the program that are not UTF-8 are an error of the program,
+    // at its line and column as its other errors are (status 1), not of the
+    // command line.
+    if (error instanceof VoxpathError && error.field === 'source' && error.line !== undefined) {
+      process.stderr.write(`voxpath: ${file}:${error.line}:${error.column}: ${error.detail}\n`);
+      return 1;
+    }
+    throw error;
+  }
   try {
     await writeAll(
       format === 'vcd'
