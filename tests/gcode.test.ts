@@ -299,8 +299,11 @@ describe('voxpath gcode', () => {
     // A UTF-16 mark before bytes that are not UTF-16 (an odd count).
     const odd = Buffer.from([0xff, 0xfe, 0x47, 0x00, 0x31]);
     const bad = spawnSync(process.execPath, [BIN, 'gcode', '-', '--steps-per-mm', '10'], { input: odd, encoding: 'utf8' });
-    expect(bad.status).toBe(2);
-    expect(bad.stderr).toContain('starts with the byte order mark of UTF-16LE but is not UTF-16LE text');
+    // One line, the program's status, no usage (a file's fault, not the command line's).
+    expect(bad.status).toBe(1);
+    expect(bad.stderr).toBe('voxpath: cannot read -: it starts with the byte order mark of UTF-16LE but is not UTF-16LE text (an unpaired surrogate, or an odd byte count); save it as UTF-8\n');
+    const badPoints = spawnSync(process.execPath, [BIN, 'check', '-', '--algorithm', 'regions', '--from', '0,0,0', '--to', '1,1,1'], { input: odd, encoding: 'utf8' });
+    expect([badPoints.status, badPoints.stderr]).toEqual([2, bad.stderr]);
   });
 
   it('names a setting by its flag where people read it (the table, stderr), and by its API name in the JSON', () => {

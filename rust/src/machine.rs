@@ -42,19 +42,11 @@ pub struct Machine {
     steps_per_mm: [f64; MACHINE_AXES],
 }
 
-/// The range of a per-axis setting, as its spec declares it.
-fn axis_range(spec: &OptionSpec) -> NumberRange {
-    let OptionKind::PerAxis(range) = spec.kind else {
-        unreachable!("{} is declared as a per-axis setting", spec.name)
-    };
-    range
-}
-
 /// Setting `spec`'s value on each axis, held to the range its spec
 /// declares; errors name the setting and the axis ("acceleration: y must
 /// be more than 0 mm/s², got 0").
 pub(crate) fn check_axes(spec: &OptionSpec, values: &[f64; MACHINE_AXES]) -> Result<(), Error> {
-    let range = axis_range(spec);
+    let range = spec.number_range();
     for (axis, &v) in values.iter().enumerate() {
         if let Some(words) = range.refusal(v) {
             return Err(Error::field(
@@ -93,13 +85,7 @@ pub(crate) fn per_axis(spec: &OptionSpec, value: &Value) -> Result<[f64; MACHINE
                 items.len()
             ),
         )),
-        v => {
-            let x = number(v)?;
-            match axis_range(spec).refusal(x) {
-                Some(words) => Err(Error::field(field, words)),
-                None => Ok([x; MACHINE_AXES]),
-            }
-        }
+        v => Ok([spec.number_range().check(field, number(v)?)?; MACHINE_AXES]),
     }
 }
 

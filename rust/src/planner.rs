@@ -141,12 +141,9 @@ impl Limits {
         if let Some(rates) = &max_step_rate_hz {
             check_axes(&MAX_STEP_RATE, rates)?;
         }
-        let OptionKind::Number(junction_range) = JUNCTION_DEVIATION.kind else {
-            unreachable!("junctionDeviation is declared as a number")
-        };
-        if let Some(words) = junction_range.refusal(junction_deviation_mm) {
-            return Err(Error::field(JUNCTION_DEVIATION.name, words));
-        }
+        JUNCTION_DEVIATION
+            .number_range()
+            .check(JUNCTION_DEVIATION.name, junction_deviation_mm)?;
         Ok(Limits {
             acceleration_mm_per_s2,
             max_rate_mm_per_min,

@@ -6,7 +6,7 @@
 //! core, and given by the catalogue to the page's form, which checks each
 //! field as it is typed in the same words.
 
-use crate::error::number_text;
+use crate::error::{Error, number_text};
 use serde::Serialize;
 use tsify::Tsify;
 
@@ -212,6 +212,15 @@ impl NumberRange {
             return Some(format!("{words}, got {got}"));
         }
         (self.whole && value.fract() != 0.0).then(|| format!("must be {WHOLE_NUMBER}, got {got}"))
+    }
+
+    /// `value` when the range takes it, else the error naming `field`
+    /// with [`NumberRange::refusal`]'s words.
+    pub fn check(&self, field: &str, value: f64) -> Result<f64, Error> {
+        match self.refusal(value) {
+            Some(words) => Err(Error::field(field, words)),
+            None => Ok(value),
+        }
     }
 }
 

@@ -105,6 +105,19 @@ pub struct OptionSpec {
     pub doc: &'static str,
 }
 
+impl OptionSpec {
+    /// The range a real-number option or a per-axis setting declares.
+    pub fn number_range(&self) -> NumberRange {
+        match self.kind {
+            OptionKind::Number(range) | OptionKind::PerAxis(range) => range,
+            _ => unreachable!(
+                "{} is declared as a number or a per-axis setting",
+                self.name
+            ),
+        }
+    }
+}
+
 /// An option's condition ([`OptionSpec::applies_with`]): the choice option
 /// named, at this value (given, or by its default).
 #[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq)]
@@ -441,16 +454,9 @@ impl Request {
     /// declares (the one statement of that range and its words, which the
     /// catalogue gives to the page's form).
     pub fn declared_number(&self, spec: &OptionSpec) -> Result<Option<f64>, Error> {
-        let OptionKind::Number(range) = spec.kind else {
-            unreachable!("{} is declared as a number option", spec.name)
-        };
-        let Some(x) = self.number(spec.name)? else {
-            return Ok(None);
-        };
-        match range.refusal(x) {
-            Some(words) => Err(Error::field(spec.name, words)),
-            None => Ok(Some(x)),
-        }
+        self.number(spec.name)?
+            .map(|x| spec.number_range().check(spec.name, x))
+            .transpose()
     }
 
     pub fn boolean(&self, name: &str) -> Result<Option<bool>, Error> {

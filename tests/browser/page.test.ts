@@ -317,6 +317,10 @@ describe('the page', () => {
     await page.reload();
     await expect.poll(() => page.getByTestId('input-machine-acceleration').inputValue()).toBe('10,0,10');
     await page.getByTestId('error-machine-acceleration').filter({ hasText: 'y must be more than 0 mm/s²' }).waitFor();
+    // A real number's field too is put back as typed, with its message (it
+    // showed the last valid value, silent).
+    await expect.poll(() => page.getByTestId('input-machine-junctionDeviation').inputValue()).toBe('-1');
+    await page.getByTestId('error-machine-junctionDeviation').filter({ hasText: 'must be 0 mm or more, got -1' }).waitFor();
     expect(p.problems()).toEqual([]);
     await p.close();
   });

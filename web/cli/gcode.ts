@@ -74,7 +74,9 @@ export async function readSource(file: string): Promise<string | Uint8Array> {
   try {
     return new TextDecoder(utf16, { fatal: true }).decode(bytes);
   } catch {
-    throw new UsageError(`cannot read ${file}: it starts with the byte order mark of ${utf16.toUpperCase()} but is not ${utf16.toUpperCase()} text (an unpaired surrogate, or an odd byte count); save it as UTF-8`);
+    // The file's fault, as bytes that are not UTF-8 are: one line, no usage.
+    const encoding = utf16.toUpperCase();
+    throw new VoxpathError(`cannot read ${file}: it starts with the byte order mark of ${encoding} but is not ${encoding} text (an unpaired surrogate, or an odd byte count); save it as UTF-8`, { field: 'source' });
   }
 }
 
@@ -184,11 +186,13 @@ export async function gcodeCommand(args: string[], catalogue: Catalogue): Promis
   try {
     program = await runGcode(await readSource(file), settings);
   } catch (error) {
-    // Bytes of the program that are not UTF-8 are an error of the program,
-    // at its line and column as its other errors are (status 1), not of the
-    // command line.
-    if (error instanceof VoxpathError && error.field === 'source' && error.line !== undefined) {
-      process.stderr.write(`voxpath: ${file}:${error.line}:${error.column}: ${error.detail}\n`);
+    // Bytes of the program that are not text (UTF-8, or UTF-16 after its
+    // mark) are an error of the program, at its line and column as its
+    // other errors are (status 1), not of the command line.
+    if (error instanceof VoxpathError && error.field === 'source') {
+      // readSource's own error names the file.
+      const at = error.line === undefined ? '' : `${file}:${error.line}:${error.column}: `;
+      process.stderr.write(`voxpath: ${at}${error.detail}\n`);
       return 1;
     }
     throw error;

@@ -243,10 +243,13 @@ export async function main(args: string[]): Promise<number> {
     if (error instanceof VoxpathError) {
       // A learner's points are the FILE of check and a G-code program the FILE of gcode, not
       // flags; text errors carry their line and column.
+      // A FILE that is not text (`source`, from readSource) is named in the message itself.
       const where =
         error.line !== undefined
           ? `line ${error.line}, column ${error.column}: `
-          : error.field === 'points' || error.field === 'program'
+          : error.field === 'source'
+            ? ''
+            : error.field === 'points' || error.field === 'program'
             ? `${error.field}: `
             : error.field !== undefined
               ? `${flagOf(error.field)}: `
@@ -262,7 +265,7 @@ export async function main(args: string[]): Promise<number> {
       }
       // A learner's file is bad input (status 2), but the command line was right: the usage
       // would bury the line and column that say what to mend.
-      if (error.line !== undefined || error.field === 'points') {
+      if (error.line !== undefined || error.field === 'points' || error.field === 'source') {
         process.stderr.write(`voxpath: ${where}${detail}\n`);
         return 2;
       }

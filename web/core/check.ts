@@ -14,7 +14,7 @@
  */
 import { AXIS_NAMES } from './axes.js';
 import { callCore } from './errors.js';
-import { argumentError, describeValue, isPromiseLike, text as guardText, wholeNumber } from './guard.js';
+import { argumentError, describeValue, isPromiseLike, isTextOrUtf8, text as guardText, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import type { Check } from './pkg/voxpath.js';
 import type { TraceOptions } from './types.js';
@@ -72,7 +72,7 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints):
   const json = encodeRequest(request);
   // Text, or its UTF-8 bytes as a file holds them (refused at the line and
   // column of the first byte that is not UTF-8), as runGcode takes a program.
-  if (typeof points === 'string' || points instanceof Uint8Array) {
+  if (isTextOrUtf8(points)) {
     const core = await loadCore();
     return callCore(() => withTextBytes(core, points, (bytes) => core.checkText(json, bytes)));
   }

@@ -90,15 +90,22 @@ export function text(field: string, value: unknown, what: string): string {
 }
 
 /**
- * `value` when it is text: a string, or UTF-8 bytes in a Uint8Array (a Node
+ * Whether `value` is text: a string, or UTF-8 bytes in a Uint8Array (a Node
  * Buffer is one), which the core reads as they are and refuses if they are
- * not UTF-8. Else a VoxpathError naming `field` (`what` says what text is
- * expected).
+ * not UTF-8.
  */
-export function textOrUtf8(field: string, value: unknown, what: string): string | Uint8Array {
+export function isTextOrUtf8(value: unknown): value is string | Uint8Array {
   // By its tag as well: a Uint8Array made in another realm (a vm context, a
   // frame) is not an instance of this one's.
-  if (typeof value === 'string' || value instanceof Uint8Array || Object.prototype.toString.call(value) === '[object Uint8Array]') return value as string | Uint8Array;
+  return typeof value === 'string' || value instanceof Uint8Array || Object.prototype.toString.call(value) === '[object Uint8Array]';
+}
+
+/**
+ * `value` when it is text (isTextOrUtf8). Else a VoxpathError naming
+ * `field` (`what` says what text is expected).
+ */
+export function textOrUtf8(field: string, value: unknown, what: string): string | Uint8Array {
+  if (isTextOrUtf8(value)) return value;
   const hint = ArrayBuffer.isView(value) ? ' (text of another encoding: decode it first, with new TextDecoder(encoding).decode(bytes))' : '';
   throw argumentError(field, `expected ${what} as a string or as UTF-8 bytes in a Uint8Array, got ${describeValue(value)}${hint}`);
 }

@@ -63,25 +63,16 @@ export interface InputsValidity {
 }
 
 /**
- * Why whole number `value` is refused by its declaration: outside the
- * range, in the words the core says it with (`mustBe`), checked first as
- * the core does (1e20 is told its range); else not whole (`notWhole`). Undefined when
- * it is neither.
- */
-function refusedWhole({ min, max, mustBe, notWhole }: IntegerRangeInfo, value: number): string | undefined {
-  const outside = (min !== undefined && value < min) || (max !== undefined && value > max);
-  if (outside) return `${mustBe}, got ${value}`;
-  return Number.isInteger(value) ? undefined : `${notWhole}, got ${value}`;
-}
-
-/**
- * Why real number `value` is refused by its declaration: outside the range
- * (or not finite), in the core's words (`mustBe`), checked first as the core
- * does; else not whole where the range takes whole values only
+ * Why `value` is refused by its declaration (a whole number's range, or a
+ * real number's): outside the range, or not finite, in the words the core
+ * says it with (`mustBe`), checked first as the core does (1e20 is told its
+ * range); else not whole where the range takes whole values only
  * (`notWhole`). Undefined when it is neither.
  */
-function refusedNumber({ min, minExclusive, max, mustBe, notWhole }: NumberRangeInfo, value: number): string | undefined {
-  const below = min !== undefined && (value < min || (minExclusive && value === min));
+function refusedBy(range: IntegerRangeInfo | NumberRangeInfo, value: number): string | undefined {
+  const { min, max, mustBe, notWhole } = range;
+  const exclusive = 'minExclusive' in range && range.minExclusive;
+  const below = min !== undefined && (value < min || (exclusive && value === min));
   const above = max !== undefined && value > max;
   if (below || above || !Number.isFinite(value)) return `${mustBe ?? 'must be a finite number'}, got ${value}`;
   return notWhole === undefined || Number.isInteger(value) ? undefined : `${notWhole}, got ${value}`;
@@ -94,9 +85,9 @@ function refusedNumber({ min, minExclusive, max, mustBe, notWhole }: NumberRange
  * there are is the core's call.
  */
 function refusedPerAxis(range: NumberRangeInfo, read: number | number[]): string | undefined {
-  if (!Array.isArray(read)) return refusedNumber(range, read);
+  if (!Array.isArray(read)) return refusedBy(range, read);
   for (const [a, value] of read.entries()) {
-    const refused = refusedNumber(range, value);
+    const refused = refusedBy(range, value);
     if (refused !== undefined) return `${AXIS_NAMES[a] ?? 'a value'} ${refused}`;
   }
   return undefined;
@@ -178,10 +169,11 @@ export class OptionsForm {
     };
 
     // A point's number inputs can be put back empty, a per-axis text as typed,
-    // an integer's input as the number refused; an integer's input holding no
-    // number reads as '' and would be put back as "use the default", so that
-    // keeps no draft (#setLocalError's `keep`).
-    if (spec.kind.type === 'point' || spec.kind.type === 'perAxis' || spec.kind.type === 'integer') field.draftId = id;
+    // a number's or an integer's input as the number refused; such an input
+    // holding no number reads as '' and would be put back as "use the
+    // default", so that keeps no draft (#setLocalError's `keep`). A choice or
+    // a checkbox holds nothing the core refuses.
+    if (spec.kind.type !== 'choice' && spec.kind.type !== 'boolean') field.draftId = id;
     switch (spec.kind.type) {
       case 'point': {
         const range: IntegerRangeInfo = spec.kind;
@@ -212,13 +204,12 @@ export class OptionsForm {
         if (kind.max !== undefined) input.max = String(kind.max);
         input.value = typeof value === 'number' ? String(value) : '';
         input.placeholder = spec.default ?? '';
-        const refusal = (given: number) => (kind.type === 'integer' ? refusedWhole(kind, given) : refusedNumber(kind, given));
         input.addEventListener('input', () => {
           const given = input.value === '' ? undefined : input.valueAsNumber;
           // Each field checked as it is typed, against the range its spec
           // declares (the core checks the same declaration): every field out
           // of range says so at once, where the core names only the first.
-          const refused = input.validity.badInput ? 'not a number' : given === undefined ? undefined : refusal(given);
+          const refused = input.validity.badInput ? 'not a number' : given === undefined ? undefined : refusedBy(kind, given);
           this.#setLocalError(spec.name, field, refused, !input.validity.badInput);
           if (refused === undefined) this.#onChange(spec.name, given);
         });
@@ -251,7 +242,7 @@ export class OptionsForm {
     const inputs = field.controls as HTMLInputElement[];
     const refusals = inputs.map((input, a) => {
       if (input.value.trim() === '' || input.validity.badInput) return `${AXIS_NAMES[a]} needs a number`;
-      const refused = refusedWhole(range, input.valueAsNumber);
+      const refused = refusedBy(range, input.valueAsNumber);
       return refused === undefined ? undefined : `${AXIS_NAMES[a]} ${refused}`;
     });
     const refused = refusals.find((r) => r !== undefined);

@@ -415,8 +415,10 @@ impl Interpreter {
 
     /// The program's end (M2, M30) as Grbl 1.1 runs it (gcode.c, step 21,
     /// PROGRAM_FLOW_COMPLETED): the motion mode, plane, distance mode and
-    /// feed rate mode go back to G1, G17, G90 and G94, and the spindle and
-    /// coolant are off (M5, M9; G40 and G54 are not modelled). The units
+    /// feed rate mode go back to G1, G17, G90 and G94, the spindle and
+    /// coolant are off (M5, M9) and the work coordinate system is G54
+    /// again (remembered only for the stop a change of it makes; G40 is
+    /// not modelled). The tool length offset stays, as in Grbl. The units
     /// (G20, G21), the arc center mode (G90.1, G91.1), F, S and the G92
     /// offset stay: Grbl resets none of them ("The remaining modal groups
     /// [G-code 4,6,8,10,13,14,15] and [M-code 4,5,6] and the modal words
@@ -452,8 +454,14 @@ impl Interpreter {
         unit_mm: f64,
         effects: &mut Effects,
     ) -> &'static str {
+        if code.letter != 'G' {
+            // M56 is Grbl's parking override and T55 a tool, not G56 and G55.
+            return "";
+        }
         let rest = match (code.number, code.minor) {
-            (54..=58, 0) | (59, 0..=3) => {
+            // G59.1 to G59.3 are LinuxCNC's: Grbl refuses them (error 23),
+            // so no stop of its is said for them, and they are not remembered.
+            (54..=59, 0) => {
                 let changed = self.coordinate_system != (code.number, code.minor);
                 self.coordinate_system = (code.number, code.minor);
                 if changed {
@@ -712,7 +720,14 @@ impl Interpreter {
             // it, error 22, and nothing else: a G0 line may carry it).
             self.feed_mm_per_min = (feed > 0.0).then_some(feed);
         }
+        let first_axis = words.first_of(&['X', 'Y', 'Z']);
+        // A G92 of other axes alone (a slicer's G92 E0) says so once, below,
+        // not once for G92 and once for each of its words.
+        let g92_of_other_axes = matches!(g92, Some((true, _))) && first_axis.is_none();
         for w in &block.words {
+            if g92_of_other_axes && is_other_axis(w.letter) {
+                continue;
+            }
             if !matches!(
                 w.letter,
                 'X' | 'Y' | 'Z' | 'I' | 'J' | 'K' | 'R' | 'P' | 'F' | 'S'
@@ -727,7 +742,6 @@ impl Interpreter {
             }
         }
         let axes = words.axes();
-        let first_axis = words.first_of(&['X', 'Y', 'Z']);
         let arc_word = words.first_of(&['I', 'J', 'K', 'R']);
         // G92 and G92.1 change the work coordinate offset, for which Grbl
         // brings the motion to rest before the line's motion (gcode.c step
@@ -758,12 +772,18 @@ impl Interpreter {
                 // an axis voxpath does not have, whose word is a warning
                 // above, as E is on a move: the line sets nothing, and the
                 // program goes on.
-                if let Some(w) = block.words.iter().find(|w| is_other_axis(w.letter)) {
+                let others: Vec<String> = block
+                    .words
+                    .iter()
+                    .filter(|w| is_other_axis(w.letter))
+                    .map(|w| format!("{}{}", w.letter, w.value))
+                    .collect();
+                if !others.is_empty() {
                     effects.warnings.push(Problem {
                         column: code.column,
                         message: format!(
-                            "G92 sets nothing here: its only axis word, {}{}, is of an axis voxpath does not model (X, Y and Z only)",
-                            w.letter, w.value
+                            "G92 {} ignored: voxpath models X, Y and Z motion only, so this G92 sets nothing",
+                            others.join(" ")
                         ),
                     });
                     return Ok(());
@@ -1361,6 +1381,15 @@ mod tests {
         assert!(!warned(&["G55", "G55"]));
         assert_eq!(stop(&["G55", "G54"]), Some(0.0));
         assert_eq!(stop(&["G55", "M2", "G54"]), None);
+        // Only G codes: M56 (Grbl's parking override), T55, M49 and M10 L2
+        // are not G56, G55, G49 and G10 L2.
+        assert_eq!(stop(&["M56"]), None);
+        assert_eq!(stop(&["T55"]), None);
+        assert_eq!(stop(&["M56", "G56"]), Some(0.0));
+        assert_eq!(stop(&["G43.1 Z1", "M49"]), None);
+        assert_eq!(stop(&["M10 L2"]), None);
+        // LinuxCNC's G59.1, which Grbl refuses: no stop of Grbl's to say.
+        assert_eq!(stop(&["G59.1"]), None);
         // The tool length offset: only a change, Z in the line's units.
         assert_eq!(stop(&["G43.1 Z1"]), Some(0.0));
         assert!(warned(&["G43.1 Z1"]));
@@ -1556,18 +1585,28 @@ mod tests {
         let (it, g92_e0) = run(&["G1 X1 F100", "G92 E0"]).unwrap();
         assert_eq!(
             messages(&g92_e0),
-            [
-                (
-                    5,
-                    "E0 ignored: voxpath models X, Y and Z motion only".to_string()
-                ),
-                (
-                    1,
-                    "G92 sets nothing here: its only axis word, E0, is of an axis voxpath does not model (X, Y and Z only)".to_string()
-                ),
-            ]
+            [(
+                1,
+                "G92 E0 ignored: voxpath models X, Y and Z motion only, so this G92 sets nothing"
+                    .to_string()
+            )]
         );
         assert_eq!(g92_e0.stop, None);
+        assert_eq!(
+            messages(&run(&["G92 E0 A1"]).unwrap().1),
+            [(
+                1,
+                "G92 E0 A1 ignored: voxpath models X, Y and Z motion only, so this G92 sets nothing".to_string()
+            )]
+        );
+        // With an axis it models, the others are said as on any line.
+        assert_eq!(
+            messages(&run(&["G92 X0 E0"]).unwrap().1),
+            [(
+                8,
+                "E0 ignored: voxpath models X, Y and Z motion only".to_string()
+            )]
+        );
         assert_eq!(it.position_mm(), [1.0, 0.0, 0.0]);
         assert_eq!(
             e(&["G3 R5"]),
