@@ -22,6 +22,7 @@ import {
   sharedOptionSpecs,
   traceOptions,
   withAxes,
+  withOption,
 } from '../web/state/app-state.js';
 import { GCODE_URL_LIMIT, type LinkNotes, STATE_KEYS, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
 import { carriedOptions } from '../web/form/algorithm-inputs.js';
@@ -282,6 +283,28 @@ describe('page state in the URL query', () => {
     expect(byTolerance).toMatchObject({ tolerance: 0.25 });
     expect(byTolerance).not.toHaveProperty('segmentLength');
     expect(stateFromQuery(`${query}&segmentLength=4`, catalogue)!.options).not.toHaveProperty('tolerance');
+  });
+
+  it('clears the alternative of a value typed, so that no form holds, nor link carries, a pair the core refuses together', async () => {
+    // tolerance typed beside the example's segmentLength went into the link,
+    // which opened to an empty view ("give segmentLength or tolerance, not both").
+    const query = 'algorithm=arc-segments&from=20,0,0&to=-20,0,0&center=0,0,0';
+    const state = stateFromQuery(query, catalogue)!;
+    state.options = withOption(state.options, 'tolerance', 0.5);
+    expect(state.options).toMatchObject({ tolerance: 0.5 });
+    expect(state.options).not.toHaveProperty('segmentLength');
+    const link = stateToQuery(state, { gcodeLimit: GCODE_URL_LIMIT });
+    expect(link).toContain('tolerance=0.5');
+    expect(link).not.toContain('segmentLength');
+    (await trace(traceOptions(stateFromQuery(link, catalogue)!, info('arc-segments')))).free();
+    expect(withOption({ tolerance: 0.5 }, 'segmentLength', 4)).toEqual({ segmentLength: 4 });
+    // Clearing one leaves the other as it is.
+    expect(withOption({ tolerance: 0.5, segmentLength: 4 }, 'tolerance', undefined)).toEqual({ segmentLength: 4 });
+    // Steps per mm, or the motor's three.
+    const machine = { stepsPerMm: 80, acceleration: 10 };
+    expect(withOption(machine, 'stepAngle', 1.8)).toEqual({ stepAngle: 1.8, acceleration: 10 });
+    expect(withOption({ stepAngle: 1.8, microsteps: 8, pitch: 2 }, 'stepsPerMm', 40)).toEqual({ stepsPerMm: 40 });
+    expect(withOption({ stepAngle: 1.8, microsteps: 8 }, 'pitch', 2)).toEqual({ stepAngle: 1.8, microsteps: 8, pitch: 2 });
   });
 
   it('leaves the options the page sets itself to the page', () => {

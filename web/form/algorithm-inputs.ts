@@ -26,6 +26,7 @@ import {
   sharedOptionSpecs,
   tracedAlgorithms,
   withAxes,
+  withOption,
 } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 import type { InputError } from '../worker/protocol.js';
@@ -202,10 +203,7 @@ export class AlgorithmInputs {
     if (key !== this.#formKey) {
       this.#formKey = key;
       this.#form = new OptionsForm(e.fields, e.formError, sharedOptionSpecs(infos), axes, state.options, (name, value) => {
-        const options = { ...this.#store.state.options };
-        if (value === undefined) delete options[name];
-        else options[name] = value;
-        this.#store.update({ options });
+        this.#store.update({ options: withOption(this.#store.state.options, name, value) });
       });
     } else {
       this.#form?.setValues(state.options);

@@ -21,7 +21,7 @@ import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
 import { RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, sentence } from '../format.js';
-import { type AppState, type Catalogue, machineSpecs } from '../state/app-state.js';
+import { type AppState, type Catalogue, machineSpecs, withOption } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
 import type { InputError, LineSteps } from '../worker/protocol.js';
@@ -181,10 +181,7 @@ export class GcodePanel {
     this.#progress = new RunProgress({ bar: elements.progress, cancel: elements.cancel }, events.onCancel);
 
     this.#machineForm = new OptionsForm(elements.machine, elements.formError, machineSpecs(catalogue), 3, store.state.machine, (name, value) => {
-      const machine = { ...store.state.machine };
-      if (value === undefined) delete machine[name];
-      else machine[name] = value;
-      store.update({ machine });
+      store.update({ machine: withOption(store.state.machine, name, value) });
     }, 'machine');
 
     elements.sample.addEventListener('change', () => void this.#loadSample(elements.sample.value));

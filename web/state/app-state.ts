@@ -277,6 +277,39 @@ export function machineSpecs(catalogue: Catalogue): OptionSpec[] {
   return catalogue.gcodeSettings.filter((spec) => !(spec.name in PAGE_OPTIONS));
 }
 
+/** Options an algorithm takes one of at most (arc-segments' and a segmented helix's chord rule). */
+export const EXCLUSIVE_OPTIONS = [['segmentLength', 'tolerance']] as const;
+
+/** The machine settings that give steps per mm: directly, or from the motor (the other three, together). */
+export const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'] as const;
+
+/** What setting option `name` clears: the other of its exclusive pair, or the other way of giving steps per mm. */
+function alternativesOf(name: string): readonly string[] {
+  const pair = EXCLUSIVE_OPTIONS.find((p) => (p as readonly string[]).includes(name));
+  if (pair) return pair.filter((other) => other !== name);
+  if (name === 'stepsPerMm') return DRIVE_KEYS.slice(1);
+  return (DRIVE_KEYS as readonly string[]).includes(name) ? ['stepsPerMm'] : [];
+}
+
+/**
+ * `values` with option `name` set to `value` (undefined: cleared, so the
+ * core's default applies). A value given for one of two alternatives the
+ * core takes only apart clears the other, as a choice between them would
+ * ("give segmentLength or tolerance, not both"; stepsPerMm or the motor's
+ * three): a form never holds, nor a link carries, a pair the core refuses
+ * together (tolerance typed beside the example's segmentLength went into
+ * the link, which then opened to an empty view).
+ */
+export function withOption(values: Readonly<Record<string, OptionValue>>, name: string, value: OptionValue | undefined): Record<string, OptionValue> {
+  const next = { ...values };
+  if (value === undefined) delete next[name];
+  else {
+    next[name] = value;
+    for (const other of alternativesOf(name)) delete next[other];
+  }
+  return next;
+}
+
 /** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */
 export const DEFAULT_GCODE = '(A 20 mm square, absolute coordinates)\nG21 G90 G17\nG0 X0 Y0 Z0\nG1 X20 Y0 F500\nY20\nX0\nY0\n';
 

@@ -28,6 +28,8 @@ import {
   type CameraState,
   type Catalogue,
   COMPARE_LAYOUTS,
+  DRIVE_KEYS,
+  EXCLUSIVE_OPTIONS,
   MODES,
   type OptionValue,
   PAGE_OPTIONS,
@@ -215,12 +217,6 @@ function fittingNotes(options: Readonly<Record<string, OptionValue>>, axes: numb
   }
   return [...pointsByChange].map(([note, names]) => `${listed(names)} ${note}`);
 }
-
-/** Options an algorithm takes one of at most (arc-segments' and a segmented helix's chord rule). */
-const EXCLUSIVE_OPTIONS = [['segmentLength', 'tolerance']] as const;
-
-/** The machine settings that give steps per mm, directly or from the motor. */
-const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'];
 
 /** Keys that say a query describes a state (any option name counts too). */
 export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowdown', 'view', 'decision3d', 'camera', 'follow', 'gcode', 'points', 'embed', 'explain'];
