@@ -7,7 +7,8 @@
 // gcd(10, 8, 6) = 2, so M_1 = 2·4 - 5 = 3.
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
-import { closeAll, openPage } from './harness.js';
+import { PALETTE } from '../../web/scene/palette.js';
+import { closeAll, openPage, pixelsOf, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -76,6 +77,31 @@ describe('view and form controls', () => {
       return hits;
     });
     expect(covered).toEqual([]);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('frames a path of no steps as a cell among others, with nothing to play', async () => {
+    // One cell filled the view, its axis names off screen, and Play was
+    // enabled at "Step 0 of 0". Found by a helper's hunt through the page.
+    const p = await openPage('?from=3,3,3&to=3,3,3');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 0 of 0' }).waitFor();
+    await expect.poll(() => page.getByTestId('play').isDisabled()).toBe(true);
+    // The cell's lit top face, in the current cell's colour: a cell among a
+    // few a side is a sliver of the view (it was 8% of it).
+    const shot = await screenshot(page, 'no-steps', '#viewport');
+    const view = (await page.locator('#viewport').boundingBox())!;
+    const share = pixelsOf(shot.file, PALETTE.current, 24) / (view.width * view.height);
+    expect(share).toBeGreaterThan(0);
+    expect(share).toBeLessThan(0.02);
+    // Every axis name in the view.
+    for (const name of await page.locator('#viewport .scene-label.axis-name').all()) {
+      const box = (await name.boundingBox())!;
+      expect(box.x).toBeGreaterThanOrEqual(view.x);
+      expect(box.x + box.width).toBeLessThanOrEqual(view.x + view.width);
+      expect(box.y + box.height).toBeLessThanOrEqual(view.y + view.height);
+    }
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -96,6 +96,8 @@ export class GridAxes extends THREE.Group {
    * edges.
    */
   readonly labelRoomPx = { left: 0, right: 0, below: 0 };
+  /** Where each axis's name stands, past its arrow's head: what a framing keeps in view with the path. */
+  readonly nameTips: THREE.Vector3[] = [];
   /** Per axis, its tick labels, lowest coordinate first, which showLegibleTicks thins out where they would overlap. */
   readonly #ticks: Tick[][] = [];
 
@@ -123,6 +125,7 @@ export class GridAxes extends THREE.Group {
       this.add(new THREE.ArrowHelper(direction, corner, length, PALETTE.axis, 0.375 * reach, 0.21 * reach));
       const tip = corner.clone().addScaledVector(direction, length + 0.375 * reach);
       this.add(sceneLabel(AXIS_NAMES[axis]!, 'scene-label axis-name', tip));
+      this.nameTips.push(tip);
       // Ticks sit just outside the box: x along the front edge, z beside its
       // axis, y along the far-x edge of the floor, away from z's ticks.
       const base = [

@@ -97,7 +97,7 @@ interface Drawn {
   voxels: VoxelPath;
   ideal: IdealPath;
   axes: GridAxes;
-  /** Cell-inclusive bounds, grid units, for framing. */
+  /** Cell-inclusive bounds, grid units, for framing: the path's, widened on x and y to MIN_FLOOR_CELLS. */
   bounds: THREE.Box3;
   /** The axis (0..2) all points share a coordinate on, or undefined when the path is not planar. */
   planeNormal: number | undefined;
@@ -107,6 +107,9 @@ interface Drawn {
 
 /** Cells of a path the 3D framing looks at (#fit): enough to follow a helix's turns, few enough to project four times at once. */
 const FRAMED_CELLS = 128;
+
+/** Fewest cells the floor (the grid, and what is framed) spans on x and y. */
+const MIN_FLOOR_CELLS = 5;
 
 /** Up to `count` cells of `trace` evenly along the path (of the points the page holds), the last one included. */
 function sampleCells(trace: DrawnTrace, count: number): THREE.Vector3[] {
@@ -358,6 +361,15 @@ export class SceneView {
     const { min, max } = sceneCorners(trace.bounds);
     const flat = [0, 1, 2].filter((a) => min.getComponent(a) === max.getComponent(a));
     const planeNormal = trace.dims === 2 ? 2 : flat.length > 0 ? flat[flat.length - 1] : undefined;
+    // The floor spans at least MIN_FLOOR_CELLS on x and y, the path in its
+    // middle: a path of one cell, framed alone, filled the view with one
+    // cube, its axis names off screen or over the legend.
+    for (const axis of [0, 1]) {
+      const short = MIN_FLOOR_CELLS - 1 - (max.getComponent(axis) - min.getComponent(axis));
+      if (short <= 0) continue;
+      min.setComponent(axis, min.getComponent(axis) - Math.floor(short / 2));
+      max.setComponent(axis, max.getComponent(axis) + Math.ceil(short / 2));
+    }
     const bounds = new THREE.Box3(min.clone().subScalar(0.5), max.clone().addScalar(0.5));
     const drawn: Drawn = {
       voxels: new VoxelPath(trace, bounds, { visited: this.#visitedColour }, () => this.#settled()),
@@ -640,6 +652,8 @@ export class SceneView {
     for (let c = 0; c < 4; c++) corners.push(new THREE.Vector3(c & 1 ? box.max.x : box.min.x, c & 2 ? box.max.y : box.min.y, bounds.min.z));
     corners.push(new THREE.Vector3(box.min.x, box.min.y, bounds.max.z));
     corners.push(new THREE.Vector3(bounds.min.x, bounds.min.y, bounds.max.z + Math.max(1.5, FIT_Z_TIP_SHARE * largest)));
+    // The axes' names, past their arrows' heads (x's was out of a small path's view).
+    corners.push(...drawn.axes.nameTips);
     // Each framed cell, whole.
     for (const cell of drawn.framedCells) {
       for (let c = 0; c < 8; c++) corners.push(new THREE.Vector3(cell.x + (c & 1 ? 0.5 : -0.5), cell.y + (c & 2 ? 0.5 : -0.5), cell.z + (c & 4 ? 0.5 : -0.5)));

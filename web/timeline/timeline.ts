@@ -236,7 +236,9 @@ export class Timeline {
     // pressing Next up to the last step would leave the user nowhere.
     for (const b of [e.first, e.previous]) b.setAttribute('aria-disabled', String(none || pointIndex === 0));
     for (const b of [e.next, e.last]) b.setAttribute('aria-disabled', String(none || pointIndex === steps));
-    e.play.disabled = e.scrubber.disabled = none;
+    // A path of no steps has nothing to play.
+    e.play.disabled = none || steps === 0;
+    e.scrubber.disabled = none;
     e.playLabel.textContent = playing ? 'Pause' : 'Play';
     e.play.title = playing ? 'Pause (Space)' : 'Play (Space)';
     e.play.dataset.playing = String(playing);
