@@ -234,6 +234,10 @@ describe('a 100,000-line G-code program', () => {
     expect(await progress.isHidden()).toBe(true);
     // The view still shows the square.
     expect(await counter(page)).toMatch(/of 6400$/);
+    // Its line marks are not put on the new text, whose lines are not its
+    // (the square's current line was marked on the cancelled program's).
+    // Found by a helper's hunt through the page.
+    expect(await page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('');
 
     // The progress shown as the program runs again: at once, then at most four times a second (each update repaints the page).
     await page.evaluate(() => {

@@ -322,18 +322,24 @@ export class GcodePanel {
     }
   }
 
-  /** Keeps the gutter and the marks level with the text as it scrolls. */
+  /**
+   * Keeps the gutter and the marks level with the text as it scrolls. The
+   * marks are of the program on screen, so only over its own text: over
+   * other text (being typed, or a run of it cancelled, the last program
+   * still shown) its line 4 is not the text's line 4.
+   */
   #placeMarks(): void {
     const scroller = this.#scroller;
     this.#renderGutter();
-    const top = (line: number | undefined) => (line === undefined ? -1e6 : (line - 1) * this.#lineHeightPx - scroller.scrollTop + this.#paddingTopPx);
+    const ofText = this.#program?.source === this.#text;
+    const top = (line: number | undefined) => (line === undefined || !ofText ? -1e6 : (line - 1) * this.#lineHeightPx - scroller.scrollTop + this.#paddingTopPx);
     const errorLine = this.#program?.program.errors[0]?.line;
     this.#errorMark.style.transform = `translateY(${top(errorLine)}px)`;
-    this.#errorMark.dataset.line = String(errorLine ?? '');
+    this.#errorMark.dataset.line = String((ofText && errorLine) || '');
     this.#currentMark.style.transform = `translateY(${top(this.#currentLine)}px)`;
     this.#pickedMark.style.transform = `translateY(${top(this.#pickedLine)}px)`;
-    this.#currentMark.dataset.line = String(this.#currentLine ?? '');
-    this.#pickedMark.dataset.line = String(this.#pickedLine ?? '');
+    this.#currentMark.dataset.line = String((ofText && this.#currentLine) || '');
+    this.#pickedMark.dataset.line = String((ofText && this.#pickedLine) || '');
   }
 
   /** Picks a 1-based line: marks it and reports its steps. */

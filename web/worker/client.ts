@@ -201,7 +201,7 @@ export class TraceClient {
     // A copy is handed over: the one kept stays whole.
     const source = this.#lastProgram.bytes.slice();
     const running = this.start({ kind: 'gcode', traceId, source, settings, pointsSent: this.#pointsSent() }, onProgress, [source.buffer]);
-    return { result: running.result.then((run) => new RemoteProgram(this, traceId, generation, run)), cancel: running.cancel };
+    return { result: running.result.then((run) => new RemoteProgram(this, traceId, generation, run, text)), cancel: running.cancel };
   }
 
   /** Where two traces of the same move part (both held by the current worker). */
@@ -346,9 +346,13 @@ export class RemoteProgram extends RemoteTrace {
   /** The program's record as the core reports it (lines, warnings, errors, duration...), less its moves. */
   readonly program: ProgramRecord;
 
-  constructor(client: TraceClient, traceId: number, generation: number, run: RunProgram) {
+  /** The text the program ran from: its lines are this text's. */
+  readonly source: string;
+
+  constructor(client: TraceClient, traceId: number, generation: number, run: RunProgram, source: string) {
     super(client, traceId, generation, run);
     this.program = run.program;
+    this.source = source;
   }
 
   /** The machine's steps per mm on each axis, which the view labels its axes with. */
