@@ -367,12 +367,17 @@ describe('results of a rejected input', () => {
     await page.getByTestId('input-to-x').fill('12');
     await expect.poll(() => note.isVisible()).toBe(false);
     expect(await opacity('#viewport')).toBe('1');
-    // Left refused, then another algorithm picked: its form is built anew and
-    // its trace shown, no longer out of date (the old form's refusal stayed).
+    // Left refused, then an algorithm picked that opens its own example (an
+    // arc: the line typed is not its move): its form is built anew and its
+    // trace shown, no longer out of date (the old form's refusal stayed).
+    // One that keeps the move keeps the text refused with it, out of date.
     await page.getByTestId('input-to-x').fill('');
     await note.filter({ hasText: 'Out of date' }).waitFor();
     await page.getByTestId('algorithm').selectOption('bresenham3d');
-    await page.getByTestId('trace-status').filter({ hasText: 'bresenham3d' }).waitFor();
+    await expect.poll(() => page.getByTestId('input-to-x').inputValue()).toBe('');
+    expect(await note.isVisible()).toBe(true);
+    await page.getByTestId('algorithm').selectOption('circle');
+    await page.getByTestId('trace-status').filter({ hasText: 'circle' }).waitFor();
     await expect.poll(() => note.isVisible()).toBe(false);
     expect(await opacity('#viewport')).toBe('1');
 

@@ -250,6 +250,37 @@ describe('the page', () => {
     await p.close();
   });
 
+  it('keeps the move typed when another algorithm that can trace it is picked, and opens the example of one that cannot', async () => {
+    // The move went back to each algorithm's example, and the one typed was
+    // lost. Found by a helper's hunt through the page.
+    const p = await openPage(EXAMPLE);
+    const { page } = p;
+    await traced(page, 10);
+    const to = () => Promise.all(['x', 'y', 'z'].map((a) => page.getByTestId(`input-to-${a}`).inputValue()));
+    // Untouched, each opens its own example (bresenham3d's is the same move).
+    await page.getByTestId('algorithm').selectOption('circle');
+    await page.getByTestId('trace-status').filter({ hasText: 'circle' }).waitFor();
+    expect(await to()).toEqual(['0', '5', '0']);
+    await page.getByTestId('algorithm').selectOption('regions');
+    await page.getByTestId('trace-status').filter({ hasText: 'regions' }).waitFor();
+    await page.getByTestId('input-to-x').fill('20');
+    await page.getByTestId('input-to-y').fill('3');
+    await page.getByTestId('input-to-z').fill('9');
+    await page.waitForURL(/to=20,3,9/);
+    for (const id of ['bresenham3d', 'nd', 'regions']) {
+      await page.getByTestId('algorithm').selectOption(id);
+      await page.getByTestId('trace-status').filter({ hasText: `${id}: ` }).waitFor();
+      expect(await to(), id).toEqual(['20', '3', '9']);
+      expect(new URL(page.url()).searchParams.get('to'), id).toBe('20,3,9');
+    }
+    // An arc cannot trace a line: its own example.
+    await page.getByTestId('algorithm').selectOption('circle');
+    await page.getByTestId('trace-status').filter({ hasText: 'circle: ' }).waitFor();
+    expect(await to()).toEqual(['0', '5', '0']);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps out of the link a coordinate or count the core would refuse, and keeps it as typed over a reload', async () => {
     // Only an empty field was held back: 2.5, or 2^30 + 1, went into the
     // state and the link, and the core refused it after. Found by a helper's hunt.

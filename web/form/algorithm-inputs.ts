@@ -69,6 +69,9 @@ function option(info: AlgorithmInfo, runs?: ComparedValues): HTMLOptionElement {
   return element('option', { value: info.id, textContent: `${title} (${info.id})` });
 }
 
+/** The options that make a move: its points (an arc's center too). */
+const POINT_OPTIONS = ['from', 'to', 'center'] as const;
+
 export class AlgorithmInputs {
   readonly #e: AlgorithmInputElements;
   readonly #catalogue: Catalogue;
@@ -100,7 +103,12 @@ export class AlgorithmInputs {
   }
 
   /**
-   * Traces `id` from its example move (in `mode`). The second algorithm of a
+   * Traces `id` on the move typed, when one was (the points differ from the
+   * example move of the algorithm left) and `id` can trace it (the same
+   * family, line or arc, and the same number of axes), with the options it
+   * takes kept too: comparing rules on one's own move is what switching is
+   * for (the move went back to the example, and the one typed was lost).
+   * Else from its own example move (in `mode`). The second algorithm of a
    * comparison stays when it can still be compared with `id`; else it
    * becomes the default partner of `id`, so that no mode is left comparing a
    * circle with a line, or an algorithm with itself by nothing. The helix
@@ -115,7 +123,11 @@ export class AlgorithmInputs {
     const keep = partner !== info && comparableWith(info, algorithms).some((a) => a.id === state.other);
     const other = keep ? state.other : partner.id;
     const next = tracedAlgorithms({ ...state, algorithm: info.id, other }, algorithms);
-    const options = carriedOptions(next, state.options, false);
+    const left = tracedAlgorithms(state, algorithms);
+    const example = defaultOptions(left);
+    const typed = POINT_OPTIONS.some((name) => JSON.stringify(state.options[name]) !== JSON.stringify(example[name]));
+    const traceable = left[0]?.family === info.family && axisChoices(next).includes(axisCount(left, state.options));
+    const options = carriedOptions(next, state.options, typed && traceable);
     this.#store.update({ algorithm: info.id, other, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(next, options)) });
   }
 
