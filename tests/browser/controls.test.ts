@@ -106,6 +106,27 @@ describe('view and form controls', () => {
     await p.close();
   });
 
+  it('keeps a chart where it is on screen when a click on it shows the step, and its decision figure above it', async () => {
+    // At step 0 the inspector has no figure: a click on a chart drew one
+    // above the charts, which pushed the chart clicked 314 px down, out of
+    // sight. Found by a helper's hunt through the page.
+    const p = await openPage('?from=0,0,0&to=100,70,60');
+    const { page } = p;
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 0 of 100' }).waitFor();
+    const chart = page.locator('#charts .u-wrap').first();
+    await chart.waitFor();
+    const before = (await chart.boundingBox())!;
+    await page.mouse.click(before.x + 0.6 * before.width, before.y + 0.5 * before.height);
+    await page.getByTestId('step-counter').filter({ hasText: /^Step [1-9]\d* of 100$/ }).waitFor();
+    await page.getByTestId('decision-figure').locator('svg').waitFor();
+    await page.waitForTimeout(300);
+    const after = (await chart.boundingBox())!;
+    expect(Math.abs(after.y - before.y)).toBeLessThan(2);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('frames the path again when the window changes shape, unless the user placed the camera', async () => {
     const p = await openPage('?from=0,0,0&to=10,7,6');
     const { page } = p;
