@@ -21,6 +21,8 @@ import {
   offeredAlgorithms,
   sharedOptionSpecs,
   traceOptions,
+  OptionSetter,
+  type OptionValue,
   withAxes,
   withOption,
 } from '../web/state/app-state.js';
@@ -305,6 +307,28 @@ describe('page state in the URL query', () => {
     expect(withOption(machine, 'stepAngle', 1.8)).toEqual({ stepAngle: 1.8, acceleration: 10 });
     expect(withOption({ stepAngle: 1.8, microsteps: 8, pitch: 2 }, 'stepsPerMm', 40)).toEqual({ stepsPerMm: 40 });
     expect(withOption({ stepAngle: 1.8, microsteps: 8 }, 'pitch', 2)).toEqual({ stepAngle: 1.8, microsteps: 8, pitch: 2 });
+  });
+
+  it("puts back what a value typed cleared once it is cleared in turn (a form's OptionSetter)", () => {
+    // One keystroke in stepAngle lost a stepsPerMm of 80,80,400 for good.
+    const setter = new OptionSetter();
+    let machine: Record<string, OptionValue> = { stepsPerMm: [80, 80, 400], acceleration: 10 };
+    machine = setter.set(machine, 'stepAngle', 1.8);
+    expect(machine).toEqual({ stepAngle: 1.8, acceleration: 10 });
+    machine = setter.set(machine, 'microsteps', 8);
+    machine = setter.set(machine, 'stepAngle', undefined);
+    // microsteps is still there: steps per mm would stand beside it, refused.
+    expect(machine).toEqual({ microsteps: 8, acceleration: 10 });
+    machine = setter.set(machine, 'microsteps', undefined);
+    expect(machine).toEqual({ stepsPerMm: [80, 80, 400], acceleration: 10 });
+    // A value typed for the option set aside supersedes it.
+    const chords = new OptionSetter();
+    let options: Record<string, OptionValue> = { segmentLength: 8 };
+    options = chords.set(options, 'tolerance', 0.5);
+    options = chords.set(options, 'segmentLength', 4);
+    expect(options).toEqual({ segmentLength: 4 });
+    options = chords.set(options, 'segmentLength', undefined);
+    expect(options).toEqual({ tolerance: 0.5 });
   });
 
   it('leaves the options the page sets itself to the page', () => {

@@ -238,6 +238,12 @@ describe('a 100,000-line G-code program', () => {
     // (the square's current line was marked on the cancelled program's).
     // Found by a helper's hunt through the page.
     expect(await page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('');
+    // Nor does a line picked in it light up the shown program's steps of that line.
+    const listing = page.getByTestId('gcode-listing');
+    const box = (await listing.boundingBox())!;
+    await page.mouse.click(box.x + box.width / 2, box.y + 60);
+    await page.waitForTimeout(300);
+    expect(await page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('0');
 
     // The progress shown as the program runs again: at once, then at most four times a second (each update repaints the page).
     await page.evaluate(() => {

@@ -71,6 +71,51 @@ function yAxisSize(_u: uPlot, values: (string | null)[] | null): number {
 /** The colour of the step cursor (the page's accent, as the scrubber). */
 const CURSOR_COLOUR = '#d55e00';
 
+/** How long a click holds a chart in place on screen (holdInPlace): the step's detail comes from the worker in a frame or two. */
+const HOLD_MS = 1000;
+
+/** The nearest ancestor of `element` that scrolls vertically, else the page's scrolling element. */
+function scrollerOf(element: HTMLElement): HTMLElement {
+  for (let e = element.parentElement; e; e = e.parentElement) {
+    const { overflowY } = getComputedStyle(e);
+    if (overflowY === 'auto' || overflowY === 'scroll') return e;
+  }
+  return document.scrollingElement as HTMLElement;
+}
+
+/**
+ * Keeps `element` where it is on screen for HOLD_MS, while what is above it
+ * in its scrolling panel changes size, unless the user scrolls meanwhile (a
+ * scroll this did not make: the wheel, the scrollbar, the keys): a chart
+ * clicked at step 0 made the inspector draw the step's decision figure above
+ * the charts, which pushed the chart clicked out of sight (314 px at 1280 x
+ * 800). The browser's own scroll anchoring does not act at the top of a
+ * panel, where the inspector starts.
+ */
+function holdInPlace(element: HTMLElement): void {
+  const scroller = scrollerOf(element);
+  // The page's own scrolling element sends its scroll events to the window.
+  const scrolled: EventTarget = scroller === document.scrollingElement ? window : scroller;
+  const top = element.getBoundingClientRect().top;
+  let held = scroller.scrollTop;
+  const observer = new ResizeObserver(() => {
+    const moved = element.getBoundingClientRect().top - top;
+    if (Math.abs(moved) < 1) return;
+    scroller.scrollTop += moved;
+    held = scroller.scrollTop;
+  });
+  for (const child of scroller.children) observer.observe(child);
+  const onScroll = () => {
+    if (Math.abs(scroller.scrollTop - held) >= 1) release();
+  };
+  const release = () => {
+    observer.disconnect();
+    scrolled.removeEventListener('scroll', onScroll);
+  };
+  scrolled.addEventListener('scroll', onScroll, { passive: true });
+  setTimeout(release, HOLD_MS);
+}
+
 export class StepChart {
   readonly #plot: uPlot;
   readonly #figure: HTMLElement;
@@ -154,6 +199,7 @@ export class StepChart {
       const left = this.#plot.cursor.left;
       if (left === undefined || left < 0) return;
       const x = this.#plot.posToVal(left, 'x');
+      holdInPlace(container);
       if (spec.pickX) spec.pickX(x);
       else onPick(Math.round(x));
     });

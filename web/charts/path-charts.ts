@@ -21,45 +21,8 @@ export interface ChartedTrace extends Pick<TraceSummary, 'dims' | 'deviationBoun
   series(maxPoints: number): Promise<ChartSeries>;
 }
 
-/** How long a click holds the charts in place on screen (holdInPlace): the decision's detail comes from the worker in a frame or two. */
-const HOLD_MS = 1000;
-
-/** The nearest ancestor of `element` that scrolls vertically, else the page's scrolling element. */
-function scrollerOf(element: HTMLElement): HTMLElement {
-  for (let e = element.parentElement; e; e = e.parentElement) {
-    const { overflowY } = getComputedStyle(e);
-    if (overflowY === 'auto' || overflowY === 'scroll') return e;
-  }
-  return document.scrollingElement as HTMLElement;
-}
-
-/**
- * Keeps `element` where it is on screen for HOLD_MS, while what is above it
- * in its scrolling panel changes size, unless the user scrolls meanwhile: a
- * chart clicked at step 0 made the inspector draw the step's decision figure
- * above the charts, which pushed the chart clicked out of sight (314 px at
- * 1280 x 800). The browser's own scroll anchoring does not act at the top of
- * a panel, where the inspector starts.
- */
-function holdInPlace(element: HTMLElement): void {
-  const scroller = scrollerOf(element);
-  const top = element.getBoundingClientRect().top;
-  const observer = new ResizeObserver(() => {
-    const moved = element.getBoundingClientRect().top - top;
-    if (Math.abs(moved) >= 1) scroller.scrollTop += moved;
-  });
-  for (const child of scroller.children) observer.observe(child);
-  const release = () => {
-    observer.disconnect();
-    for (const event of ['wheel', 'touchstart', 'keydown'] as const) window.removeEventListener(event, release);
-  };
-  for (const event of ['wheel', 'touchstart', 'keydown'] as const) window.addEventListener(event, release, { once: true, passive: true });
-  setTimeout(release, HOLD_MS);
-}
-
 export class PathCharts {
   readonly #container: HTMLElement;
-  /** The page's step set to a point clicked on a chart, the charts held where they are on screen. */
   readonly #onPick: (pointIndex: number) => void;
   #charts: StepChart[] = [];
   #request = 0;
@@ -67,10 +30,7 @@ export class PathCharts {
 
   constructor(container: HTMLElement, onPick: (pointIndex: number) => void) {
     this.#container = container;
-    this.#onPick = (pointIndex) => {
-      holdInPlace(container);
-      onPick(pointIndex);
-    };
+    this.#onPick = onPick;
   }
 
   /**

@@ -25,6 +25,7 @@ import {
   offeredAlgorithms,
   sharedOptionSpecs,
   tracedAlgorithms,
+  OptionSetter,
   withAxes,
   withOption,
 } from '../state/app-state.js';
@@ -60,7 +61,10 @@ export function carriedOptions(infos: readonly AlgorithmInfo[], current: Readonl
   if (!keep) return defaults;
   const names = new Set(sharedOptionSpecs(infos).map((s) => s.name));
   const kept = Object.fromEntries(Object.entries(current).filter(([name]) => names.has(name)));
-  return withAxes({ ...defaults, ...kept }, axisCount(infos, kept));
+  // Each kept value over the defaults as if typed: a kept tolerance clears
+  // the example's segmentLength (the two were refused together).
+  const merged = Object.entries(kept).reduce((options, [name, value]) => withOption(options, name, value), defaults);
+  return withAxes(merged, axisCount(infos, kept));
 }
 
 /** A picker's entry for `info`; `runs`: the value of its compared option it runs, when compared with itself. */
@@ -68,9 +72,6 @@ function option(info: AlgorithmInfo, runs?: ComparedValues): HTMLOptionElement {
   const title = runs ? `${info.title}, ${runs.option} ${runs.values[1]}` : info.title;
   return element('option', { value: info.id, textContent: `${title} (${info.id})` });
 }
-
-/** The options that make a move: its points (an arc's center too). */
-const POINT_OPTIONS = ['from', 'to', 'center'] as const;
 
 export class AlgorithmInputs {
   readonly #e: AlgorithmInputElements;
@@ -103,12 +104,14 @@ export class AlgorithmInputs {
   }
 
   /**
-   * Traces `id` on the move typed, when one was (the points differ from the
-   * example move of the algorithm left) and `id` can trace it (the same
-   * family, line or arc, and the same number of axes), with the options it
-   * takes kept too: comparing rules on one's own move is what switching is
-   * for (the move went back to the example, and the one typed was lost).
-   * Else from its own example move (in `mode`). The second algorithm of a
+   * Traces `id` on the line typed, when one was (its points differ from the
+   * example move of the line algorithm left) and `id` is a line algorithm
+   * that takes as many axes, with the options it takes kept too: comparing
+   * rules on one's own line is what switching is for (the move went back to
+   * the example, and the one typed was lost). Else from its own example move
+   * (in `mode`): an arc's options do not carry between its algorithms (the
+   * helix's rise, which circle and arc-segments refuse; arc-segments' chord
+   * options, which the helix takes with method segments only). The second algorithm of a
    * comparison stays when it can still be compared with `id`; else it
    * becomes the default partner of `id`, so that no mode is left comparing a
    * circle with a line, or an algorithm with itself by nothing. The helix
@@ -125,8 +128,9 @@ export class AlgorithmInputs {
     const next = tracedAlgorithms({ ...state, algorithm: info.id, other }, algorithms);
     const left = tracedAlgorithms(state, algorithms);
     const example = defaultOptions(left);
-    const typed = POINT_OPTIONS.some((name) => JSON.stringify(state.options[name]) !== JSON.stringify(example[name]));
-    const traceable = left[0]?.family === info.family && axisChoices(next).includes(axisCount(left, state.options));
+    const points = (left[0]?.options ?? []).filter((spec) => spec.kind.type === 'point').map((spec) => spec.name);
+    const typed = points.some((name) => JSON.stringify(state.options[name]) !== JSON.stringify(example[name]));
+    const traceable = left[0]?.family === 'line' && info.family === 'line' && axisChoices(next).includes(axisCount(left, state.options));
     const options = carriedOptions(next, state.options, typed && traceable);
     this.#store.update({ algorithm: info.id, other, options, pointIndex: 0, camera: null, projection: defaultProjection(axisCount(next, options)) });
   }
@@ -214,8 +218,9 @@ export class AlgorithmInputs {
     const key = `${state.mode} ${infos.map((i) => i.id).join(' ')} ${axes}`;
     if (key !== this.#formKey) {
       this.#formKey = key;
+      const setter = new OptionSetter();
       this.#form = new OptionsForm(e.fields, e.formError, sharedOptionSpecs(infos), axes, state.options, (name, value) => {
-        this.#store.update({ options: withOption(this.#store.state.options, name, value) });
+        this.#store.update({ options: setter.set(this.#store.state.options, name, value) });
       });
     } else {
       this.#form?.setValues(state.options);

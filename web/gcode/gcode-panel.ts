@@ -21,7 +21,7 @@ import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
 import { RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, sentence } from '../format.js';
-import { type AppState, type Catalogue, machineSpecs, withOption } from '../state/app-state.js';
+import { type AppState, type Catalogue, machineSpecs, OptionSetter } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
 import type { InputError, LineSteps } from '../worker/protocol.js';
@@ -180,8 +180,9 @@ export class GcodePanel {
     elements.run.addEventListener('click', events.onRun);
     this.#progress = new RunProgress({ bar: elements.progress, cancel: elements.cancel }, events.onCancel);
 
+    const setter = new OptionSetter();
     this.#machineForm = new OptionsForm(elements.machine, elements.formError, machineSpecs(catalogue), 3, store.state.machine, (name, value) => {
-      store.update({ machine: withOption(store.state.machine, name, value) });
+      store.update({ machine: setter.set(store.state.machine, name, value) });
     }, 'machine');
 
     elements.sample.addEventListener('change', () => void this.#loadSample(elements.sample.value));
@@ -302,8 +303,10 @@ export class GcodePanel {
     const first = Math.floor(scroller.scrollTop / this.#lineHeightPx);
     const last = Math.min(this.#lineCount, first + Math.ceil(scroller.clientHeight / this.#lineHeightPx) + 1);
     const numbers: (string | HTMLElement)[] = [];
+    // The shown program's problems, over its own text only (see #ofText).
+    const problems = this.#ofText ? this.#diagnosticLines : undefined;
     for (let line = first + 1; line <= last; line++) {
-      const kind = this.#diagnosticLines.get(line);
+      const kind = problems?.get(line);
       if (line > first + 1) numbers.push('\n');
       if (!kind) {
         numbers.push(String(line));
@@ -323,15 +326,21 @@ export class GcodePanel {
   }
 
   /**
-   * Keeps the gutter and the marks level with the text as it scrolls. The
-   * marks are of the program on screen, so only over its own text: over
-   * other text (being typed, or a run of it cancelled, the last program
-   * still shown) its line 4 is not the text's line 4.
+   * Whether the text shown is the source of the program on screen: its marks
+   * (current step, picked line, error) and its problems' tints in the gutter
+   * stand only over its own text, and a line picked in other text (being
+   * typed, or a run of it cancelled, the last program still shown) picks
+   * none of its steps: its line 4 is not the text's line 4.
    */
+  get #ofText(): boolean {
+    return this.#program?.source === this.#text;
+  }
+
+  /** Keeps the gutter and the marks level with the text as it scrolls. */
   #placeMarks(): void {
     const scroller = this.#scroller;
     this.#renderGutter();
-    const ofText = this.#program?.source === this.#text;
+    const ofText = this.#ofText;
     const top = (line: number | undefined) => (line === undefined || !ofText ? -1e6 : (line - 1) * this.#lineHeightPx - scroller.scrollTop + this.#paddingTopPx);
     const errorLine = this.#program?.program.errors[0]?.line;
     this.#errorMark.style.transform = `translateY(${top(errorLine)}px)`;
@@ -348,7 +357,7 @@ export class GcodePanel {
     this.#pickedLine = line;
     this.#placeMarks();
     const program = this.#program;
-    if (!program) return;
+    if (!program || !this.#ofText) return;
     const steps = await program.lineSteps(line);
     if (program === this.#program && line === this.#pickedLine) this.#onPick(line, steps);
   }

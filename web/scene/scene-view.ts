@@ -602,6 +602,8 @@ export class SceneView {
       const view = PLANE_VIEWS[drawn.planeNormal!]!;
       const extent = drawn.bounds.getSize(new THREE.Vector3());
       const box = drawn.bounds.clone().expandByScalar(FRAME_MARGIN + FRAME_MARGIN_SHARE * Math.max(extent.x, extent.y, extent.z));
+      // The axes' names too, as the 3D framing keeps them.
+      for (const tip of drawn.axes.nameTips) box.expandByPoint(tip);
       const size = box.getSize(new THREE.Vector3());
       const right = new THREE.Vector3().crossVectors(view.up, view.direction);
       const width = Math.abs(size.dot(right));

@@ -280,15 +280,18 @@ export function machineSpecs(catalogue: Catalogue): OptionSpec[] {
 /** Options an algorithm takes one of at most (arc-segments' and a segmented helix's chord rule). */
 export const EXCLUSIVE_OPTIONS = [['segmentLength', 'tolerance']] as const;
 
-/** The machine settings that give steps per mm: directly, or from the motor (the other three, together). */
-export const DRIVE_KEYS = ['stepsPerMm', 'stepAngle', 'microsteps', 'pitch'] as const;
+/** The motor's settings, which give steps per mm together (Wang section 3.3). */
+const MOTOR_KEYS = ['stepAngle', 'microsteps', 'pitch'] as const;
+
+/** The machine settings that give steps per mm: directly, or from the motor. */
+export const DRIVE_KEYS = ['stepsPerMm', ...MOTOR_KEYS] as const;
 
 /** What setting option `name` clears: the other of its exclusive pair, or the other way of giving steps per mm. */
 function alternativesOf(name: string): readonly string[] {
   const pair = EXCLUSIVE_OPTIONS.find((p) => (p as readonly string[]).includes(name));
   if (pair) return pair.filter((other) => other !== name);
-  if (name === 'stepsPerMm') return DRIVE_KEYS.slice(1);
-  return (DRIVE_KEYS as readonly string[]).includes(name) ? ['stepsPerMm'] : [];
+  if (name === 'stepsPerMm') return MOTOR_KEYS;
+  return (MOTOR_KEYS as readonly string[]).includes(name) ? ['stepsPerMm'] : [];
 }
 
 /**
@@ -308,6 +311,34 @@ export function withOption(values: Readonly<Record<string, OptionValue>>, name: 
     for (const other of alternativesOf(name)) delete next[other];
   }
   return next;
+}
+
+/**
+ * withOption for one form, remembering what each value typed cleared and
+ * putting it back once no alternative of it is left: stepAngle typed and
+ * cleared again brings back the stepsPerMm it cleared (80,80,400 was lost
+ * for good), tolerance cleared the example's segmentLength.
+ */
+export class OptionSetter {
+  /** Values a value typed cleared, by option name. */
+  readonly #setAside = new Map<string, OptionValue>();
+
+  /** `values` with `name` set to `value` (undefined: cleared), as withOption, with the values set aside put back when they fit again. */
+  set(values: Readonly<Record<string, OptionValue>>, name: string, value: OptionValue | undefined): Record<string, OptionValue> {
+    const next = withOption(values, name, value);
+    if (value !== undefined) {
+      // A value typed for an option supersedes what was set aside of it.
+      this.#setAside.delete(name);
+      for (const other of alternativesOf(name)) if (values[other] !== undefined) this.#setAside.set(other, values[other]);
+      return next;
+    }
+    for (const [other, kept] of this.#setAside) {
+      if (alternativesOf(other).some((alternative) => alternative in next)) continue;
+      next[other] = kept;
+      this.#setAside.delete(other);
+    }
+    return next;
+  }
 }
 
 /** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */

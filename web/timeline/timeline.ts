@@ -125,7 +125,7 @@ export class Timeline {
     this.#steps = steps;
     const { pointIndex } = this.#store.state;
     if (steps !== undefined && pointIndex > steps) this.#store.update({ pointIndex: steps });
-    if (steps === undefined) this.#store.update({ playing: false });
+    if (!steps) this.#store.update({ playing: false });
     this.#render();
   }
 
@@ -179,7 +179,8 @@ export class Timeline {
   }
 
   #togglePlay(): void {
-    if (this.#steps === undefined) return;
+    // No path, or one of no steps: nothing to play.
+    if (!this.#steps) return;
     const { playing, pointIndex } = this.#store.state;
     if (playing) this.#store.update({ playing: false });
     // Play at the end starts over, as media players do.
@@ -236,9 +237,10 @@ export class Timeline {
     // pressing Next up to the last step would leave the user nowhere.
     for (const b of [e.first, e.previous]) b.setAttribute('aria-disabled', String(none || pointIndex === 0));
     for (const b of [e.next, e.last]) b.setAttribute('aria-disabled', String(none || pointIndex === steps));
-    // A path of no steps has nothing to play.
-    e.play.disabled = none || steps === 0;
-    e.scrubber.disabled = none;
+    e.play.disabled = e.scrubber.disabled = none;
+    // A path of no steps has nothing to play: said, as the step buttons say
+    // theirs, without disabling it (a disabled button drops keyboard focus).
+    e.play.setAttribute('aria-disabled', String(steps === 0));
     e.playLabel.textContent = playing ? 'Pause' : 'Play';
     e.play.title = playing ? 'Pause (Space)' : 'Play (Space)';
     e.play.dataset.playing = String(playing);
