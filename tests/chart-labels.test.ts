@@ -2,6 +2,7 @@
 // and "bound" never sit on each other nor on a line, however close their lines are.
 import { describe, expect, it } from 'vitest';
 import { placeReferenceLabels } from '../web/charts/reference-labels.js';
+import { widestTickLabel } from '../web/charts/tick-labels.js';
 
 const BOX = { left: 50, top: 10, width: 220, height: 150 };
 const TEXT = 11;
@@ -64,5 +65,18 @@ describe('reference labels', () => {
     // Side by side when they fit, one over the other when not.
     expect(placeReferenceLabels(lines(60, 60), BOX, TEXT, GAP, 4)).toEqual([40, 40]);
     expect(placeReferenceLabels(lines(90, 150), BOX, TEXT, GAP, 4)).toEqual([55, 40]);
+  });
+});
+
+describe('x tick labels', () => {
+  it('are sized by the widest label the range can take, decimals and separators included', () => {
+    // A 1,200 s program seen 100 ms at a time: its ticks read 1,050.025 and
+    // the like, which a fixed 50 px ran together.
+    expect(widestTickLabel(1050, 1050.1)).toBe('1,050.100');
+    expect(widestTickLabel(9875, 9876)).toBe('9,876.00');
+    expect(widestTickLabel(0, 10000)).toBe('10,000');
+    expect(widestTickLabel(-3, 3)).toBe('3.00');
+    // A range of one value takes the labels of a span of 1.
+    expect(widestTickLabel(5, 5)).toBe('5.00');
   });
 });

@@ -140,6 +140,8 @@ describe('G-code mode: time', () => {
     const { page } = p;
     await loaded(page, 1);
     await page.getByTestId('timing').getByText(/planned instant, ms/).waitFor();
+    // One step, said so ("for 1 steps" before).
+    await expect.poll(() => page.getByTestId('total-time').innerText()).toMatch(/ for 1 step \(/);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

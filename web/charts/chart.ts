@@ -9,6 +9,7 @@
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import { placeReferenceLabels } from './reference-labels.js';
+import { widestTickLabel } from './tick-labels.js';
 
 /** Chart height by default, CSS pixels, plot area and axes (the legend is extra). */
 const HEIGHT_PX = 170;
@@ -62,10 +63,23 @@ let measuring: CanvasRenderingContext2D | undefined;
  * it then asks again with the labels. The widest stands 2 px clear of the title.
  */
 function yAxisSize(_u: uPlot, values: (string | null)[] | null): number {
+  const widest = Math.max(0, ...(values ?? []).map((v) => (v ? tickWidthPx(v) : 0)));
+  return TICK_PX + TICK_GAP_PX + Math.ceil(widest) + 2;
+}
+
+/** The width of tick label `text`, px, in TICK_FONT. */
+function tickWidthPx(text: string): number {
   measuring ??= document.createElement('canvas').getContext('2d')!;
   measuring.font = TICK_FONT;
-  const widest = Math.max(0, ...(values ?? []).map((v) => (v ? measuring!.measureText(v).width : 0)));
-  return TICK_PX + TICK_GAP_PX + Math.ceil(widest) + 2;
+  return measuring.measureText(text).width;
+}
+
+/** Least room between two x ticks' labels, px. */
+const X_TICK_GAP_PX = 14;
+
+/** The room an x tick needs, px (uPlot's axis `space`): its widest label's width and a gap, at least uPlot's 50. */
+function xTickSpace(_u: uPlot, _axis: number, min: number, max: number): number {
+  return Math.max(50, Math.ceil(tickWidthPx(widestTickLabel(min, max))) + X_TICK_GAP_PX);
 }
 
 /** The colour of the step cursor (the page's accent, as the scrubber). */
@@ -134,11 +148,14 @@ export class StepChart {
       title: spec.title,
       width: Math.max(200, container.clientWidth - 4),
       height: spec.heightPx ?? HEIGHT_PX,
-      series: [{ label: spec.xLabel }, ...spec.series],
+      // A line's rows are not drawn as points (uPlot draws hollow circles
+      // on a series of few rows, which read as the speed chart's junction
+      // dots); a series that wants points says so.
+      series: [{ label: spec.xLabel }, ...spec.series.map((series) => ({ points: { show: false }, ...series }))],
       bands: spec.bands,
       scales: { x: spec.xRange ? { time: false, range: spec.xRange } : { time: false }, y: spec.yRange ? { range: spec.yRange } : {} },
       axes: [
-        { label: spec.xLabel, size: 36, font: TICK_FONT },
+        { label: spec.xLabel, size: 36, font: TICK_FONT, space: xTickSpace },
         { label: spec.yLabel, size: yAxisSize, space: Y_TICK_SPACE_PX, font: TICK_FONT, values: spec.yValues, splits: spec.ySplits && (() => spec.ySplits!) },
       ],
       legend: { show: spec.legend ?? true, live: false },

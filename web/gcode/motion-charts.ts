@@ -95,7 +95,7 @@ export class MotionCharts {
     this.#container.hidden = !program;
     if (!program) return;
     const record = program.program;
-    this.#summary.textContent = `Total time on the planned profile: ${formatSeconds(record.durationSeconds)} for ${record.steps.toLocaleString('en-US')} steps (Grbl 1.1's planner: trapezoids, junction deviation, look-ahead over the whole program).`;
+    this.#summary.textContent = `Total time on the planned profile: ${formatSeconds(record.durationSeconds)} for ${record.steps.toLocaleString('en-US')} ${record.steps === 1 ? 'step' : 'steps'} (Grbl 1.1's planner: trapezoids, junction deviation, look-ahead over the whole program).`;
     this.#instant.textContent = '';
     await afterNextFrame();
     if (request !== this.#request) return;
