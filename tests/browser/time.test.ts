@@ -146,6 +146,21 @@ describe('G-code mode: time', () => {
     await p.close();
   });
 
+  it('plays a dwell after the last move in machine time, to the end of the program', async () => {
+    // 1 mm at 300 mm/min (0.63 s), then 1 s at rest: playback stopped at the last step, the clock at 0.63 s.
+    const program = encodeURIComponent('G1 X1 F300\nG4 P1\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=80&slowdown=1&gcode=${program}`);
+    const { page } = p;
+    await loaded(page, 80);
+    const clock = () => page.evaluate(() => Number(document.querySelector<HTMLOutputElement>('[data-testid=machine-time]')!.dataset.seconds ?? 0));
+    await page.getByTestId('play').click();
+    await expect.poll(() => page.getByTestId('play').getAttribute('data-playing'), { timeout: 10_000 }).toBe('false');
+    expect(await clock()).toBeCloseTo(2 * Math.sqrt(0.1) + 1, 6);
+    expect(await page.getByTestId('step-counter').innerText()).toBe('Step 80 of 80');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('resumes machine time where it was paused, in a dwell too, not at the instant of the step shown', async () => {
     // 1 mm at 300 mm/min: a triangle of 2·√0.1 = 0.63 s (a = 10 mm/s²), then 3 s at rest.
     const program = encodeURIComponent('G1 X1 F300\nG4 P3\nY1\n');

@@ -167,7 +167,9 @@ export class Timeline {
       const next = Math.min(pointIndex, steps);
       this.#machineSeconds = seconds;
       this.#machinePoint = next;
-      this.#store.update({ pointIndex: next, playing: next < steps });
+      // On to the program's end in time, not its last step: a dwell after
+      // the last move is played too (playback stopped at its start).
+      this.#store.update({ pointIndex: next, playing: next < steps || seconds < instants.durationSeconds });
       // Shown even when the step did not change (the state then is the same, and no render follows).
       this.#renderMachineTime();
     });
