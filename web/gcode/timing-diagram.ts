@@ -21,7 +21,7 @@ import { StepChart } from '../charts/chart.js';
 import { AXIS_NAMES } from '../format.js';
 import { AXIS_COLOURS } from '../scene/palette.js';
 import type { PulseWindow } from '../worker/protocol.js';
-import { pulseEdges } from './pulse-edges.js';
+import { drawnFromZero, pulseEdges, ROWS_PER_STEP } from './pulse-edges.js';
 import { timeUnit } from './time-format.js';
 
 /**
@@ -128,17 +128,20 @@ export class TimingDiagram {
   }
 
   /**
-   * The rows' x: two a step, where its STEP pulse rises and where it falls,
-   * and the right edge of the last step. Ticks: a step's start and middle;
-   * a program: pulseEdges of its instants, in the axis's unit, which is
-   * chosen by the time the axis spans, right edge included (chosen by the
-   * steps' spread alone, one step read in µs over a millisecond: 50,000 to
-   * 51,000 µs).
+   * The rows' x: ROWS_PER_STEP a step, where its STEP pulse rises, where it
+   * falls and where DIR is set for the next step, and the right edge of the
+   * last step. Ticks: a step's start, middle and three quarters; a program:
+   * pulseEdges of its instants, in the axis's unit, which is chosen by the
+   * time the axis spans, right edge included, from 0 s when `fromZero`
+   * (chosen by the steps' spread alone, one step read in µs over a
+   * millisecond: 50,000 to 51,000 µs).
    */
-  #rowsX(ticks: number, times: Float64Array | null): { x: Float64Array; unit: string } {
-    if (!times) return { x: Float64Array.from({ length: 2 * ticks + 1 }, (_, i) => this.#fromStep + i / 2), unit: 'tick' };
+  #rowsX(ticks: number, times: Float64Array | null, fromZero: boolean): { x: Float64Array; unit: string } {
+    // Ticks: a step's start, its middle, and three quarters on, where DIR is set for the next.
+    if (!times) return { x: Float64Array.from({ length: ROWS_PER_STEP * ticks + 1 }, (_, i) => this.#fromStep + Math.floor(i / ROWS_PER_STEP) + [0, 0.5, 0.75][i % ROWS_PER_STEP]!), unit: 'tick' };
     const edges = pulseEdges(times.subarray(0, ticks));
-    const { unit, perSecond } = timeUnit(edges[edges.length - 1]! - edges[0]!);
+    // The span drawn: from 0 s when the window starts there (#draw).
+    const { unit, perSecond } = timeUnit(edges[edges.length - 1]! - (fromZero ? 0 : edges[0]!));
     this.#perSecond = perSecond;
     return { x: edges.map((t) => t * perSecond), unit };
   }
@@ -147,7 +150,8 @@ export class TimingDiagram {
     const ticks = trains[0]!.step.length;
     this.#stepSeconds = stepSeconds;
     this.#perSecond = 1;
-    const { x, unit } = this.#rowsX(ticks, stepSeconds);
+    const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#fromStep === 0);
+    const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
@@ -157,13 +161,21 @@ export class TimingDiagram {
       const name = AXIS_NAMES[axis];
       for (const signal of ['STEP', 'DIR'] as const) {
         const lane = (count - 1 - lanes.length) * LANE;
-        const values = new Float64Array(2 * ticks + 1);
+        const values = new Float64Array(ROWS_PER_STEP * ticks + 1);
+        const dirLevel = (i: number) => lane + (train.dir[i]! < 0 ? SWING : 0);
         for (let i = 0; i < ticks; i++) {
-          // STEP: a pulse, high for the first half of a tick its axis moves in. DIR: high for -.
-          values[2 * i] = lane + (signal === 'STEP' ? train.step[i]! : train.dir[i]! < 0 ? 1 : 0) * SWING;
-          values[2 * i + 1] = signal === 'STEP' ? lane : values[2 * i]!;
+          const row = ROWS_PER_STEP * i;
+          if (signal === 'STEP') {
+            // A pulse, high from the step's instant to its drawn fall.
+            values[row] = lane + train.step[i]! * SWING;
+            values[row + 1] = values[row + 2] = lane;
+          } else {
+            // High for -; set for the next step half-way to it, settled before its edge (as the VCD).
+            values[row] = values[row + 1] = dirLevel(i);
+            values[row + 2] = dirLevel(Math.min(i + 1, ticks - 1));
+          }
         }
-        values[2 * ticks] = values[2 * ticks - 1]!;
+        values[ROWS_PER_STEP * ticks] = values[ROWS_PER_STEP * ticks - 1]!;
         lanes.push(values);
         if (signal === 'STEP') labels.push({ at: lane + SWING / 2, text: `${name} STEP` });
         else labels.push({ at: lane, text: `${name} DIR +` }, { at: lane + SWING, text: `${name} DIR -` });
@@ -175,8 +187,6 @@ export class TimingDiagram {
         });
       }
     });
-    // A program's first window starts at its start, 0 s, idle until the first step (from rest, its first steps come slowly).
-    const idle = stepSeconds !== null && this.#fromStep === 0 && stepSeconds[0]! > 0;
     const withStart = (values: Float64Array, first: number) => (idle ? Float64Array.of(first, ...values) : values);
     const data: uPlot.AlignedData = [withStart(x, 0), ...lanes.map((values, i) => withStart(values, i % 2 === 0 ? values[1]! : values[0]!))];
     const xLabel = stepSeconds ? `planned instant (${unit})` : 'step';
