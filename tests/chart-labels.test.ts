@@ -75,7 +75,10 @@ describe('x tick labels', () => {
     expect(widestTickLabel(1050, 1050.1)).toBe('1,050.100');
     expect(widestTickLabel(9875, 9876)).toBe('9,876.00');
     expect(widestTickLabel(0, 10000)).toBe('10,000');
-    expect(widestTickLabel(-3, 3)).toBe('3.00');
+    // The sign kept, and at most 3 decimals, as uPlot writes them.
+    expect(widestTickLabel(-1000, 0)).toBe('-1,000');
+    expect(widestTickLabel(-3, 2)).toBe('-3.00');
+    expect(widestTickLabel(1050, 1050.001)).toBe('1,050.001');
     // A range of one value takes the labels of a span of 1.
     expect(widestTickLabel(5, 5)).toBe('5.00');
   });

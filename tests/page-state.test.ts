@@ -329,6 +329,11 @@ describe('page state in the URL query', () => {
     expect(options).toEqual({ segmentLength: 4 });
     options = chords.set(options, 'segmentLength', undefined);
     expect(options).toEqual({ tolerance: 0.5 });
+    // One set aside that came back by other means (Back, a link) is not put back over itself when cleared.
+    const back = new OptionSetter();
+    let state: Record<string, OptionValue> = back.set({ stepsPerMm: 80 }, 'stepAngle', 1.8);
+    state = { stepsPerMm: 100 };
+    expect(back.set(state, 'stepsPerMm', undefined)).toEqual({});
   });
 
   it('leaves the options the page sets itself to the page', () => {

@@ -14,6 +14,9 @@ describe('time units for people', () => {
     // The boundary: exactly 1 ms is still read in ms.
     expect(timeUnit(1e-3).unit).toBe('ms');
     expect(timeUnit(0.999e-3).unit).toBe('µs');
+    // A millisecond as a difference of two instants: (t + 1e-3) - t.
+    expect(timeUnit(12.345 + 1e-3 - 12.345).unit).toBe('ms');
+    expect(12.345 + 1e-3 - 12.345).toBeLessThan(1e-3);
   });
 
   it('writes an instant in s, ms or µs', () => {

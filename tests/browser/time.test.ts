@@ -157,6 +157,24 @@ describe('G-code mode: time', () => {
     await expect.poll(() => page.getByTestId('play').getAttribute('data-playing'), { timeout: 10_000 }).toBe('false');
     expect(await clock()).toBeCloseTo(2 * Math.sqrt(0.1) + 1, 6);
     expect(await page.getByTestId('step-counter').innerText()).toBe('Step 80 of 80');
+    // Paused in that dwell, Play resumes it there (it started the program over).
+    await page.getByTestId('play').click();
+    await expect.poll(clock, { timeout: 10_000 }).toBeLessThan(0.2);
+    await expect.poll(clock, { timeout: 10_000 }).toBeGreaterThan(0.9);
+    await page.getByTestId('play').click();
+    const paused = await clock();
+    expect(paused).toBeLessThan(2 * Math.sqrt(0.1) + 1);
+    await page.getByTestId('play').click();
+    const seen: number[] = [];
+    while ((await page.getByTestId('play').getAttribute('data-playing')) === 'true' && seen.length < 200) {
+      seen.push(await clock());
+      await page.waitForTimeout(20);
+    }
+    // Never back before the pause.
+    expect(Math.min(...seen), `paused at ${paused}, then ${seen}`).toBeGreaterThanOrEqual(paused);
+    await expect.poll(() => page.getByTestId('play').getAttribute('data-playing'), { timeout: 10_000 }).toBe('false');
+    expect(await clock()).toBeCloseTo(2 * Math.sqrt(0.1) + 1, 6);
+    expect(await page.getByTestId('step-counter').innerText()).toBe('Step 80 of 80');
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -353,11 +353,12 @@ export class GcodePanel {
 
   /** Picks a 1-based line: marks it and reports its steps. */
   async #pick(line: number): Promise<void> {
-    if (line === this.#pickedLine) return;
+    // A line of other text than the shown program's picks none of its steps (#ofText).
+    if (line === this.#pickedLine || !this.#ofText) return;
     this.#pickedLine = line;
     this.#placeMarks();
     const program = this.#program;
-    if (!program || !this.#ofText) return;
+    if (!program) return;
     const steps = await program.lineSteps(line);
     if (program === this.#program && line === this.#pickedLine) this.#onPick(line, steps);
   }

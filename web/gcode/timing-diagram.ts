@@ -130,15 +130,14 @@ export class TimingDiagram {
   /**
    * The rows' x: ROWS_PER_STEP a step, where its STEP pulse rises, where it
    * falls and where DIR is set for the next step, and the right edge of the
-   * last step. Ticks: a step's start, middle and three quarters; a program:
+   * last step. Ticks: pulseEdges of steps a tick apart; a program:
    * pulseEdges of its instants, in the axis's unit, which is chosen by the
    * time the axis spans, right edge included, from 0 s when `fromZero`
    * (chosen by the steps' spread alone, one step read in µs over a
    * millisecond: 50,000 to 51,000 µs).
    */
   #rowsX(ticks: number, times: Float64Array | null, fromZero: boolean): { x: Float64Array; unit: string } {
-    // Ticks: a step's start, its middle, and three quarters on, where DIR is set for the next.
-    if (!times) return { x: Float64Array.from({ length: ROWS_PER_STEP * ticks + 1 }, (_, i) => this.#fromStep + Math.floor(i / ROWS_PER_STEP) + [0, 0.5, 0.75][i % ROWS_PER_STEP]!), unit: 'tick' };
+    if (!times) return { x: pulseEdges(Float64Array.from({ length: ticks }, (_, i) => this.#fromStep + i)), unit: 'tick' };
     const edges = pulseEdges(times.subarray(0, ticks));
     // The span drawn: from 0 s when the window starts there (#draw).
     const { unit, perSecond } = timeUnit(edges[edges.length - 1]! - (fromZero ? 0 : edges[0]!));
@@ -153,6 +152,8 @@ export class TimingDiagram {
     const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#fromStep === 0);
     const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
     const lanes: Float64Array[] = [];
+    /** Each lane's low level: a STEP lane's rest, a DIR lane's + (the VCD's level before any step). */
+    const bases: number[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
     const labels: { at: number; text: string }[] = [];
@@ -177,6 +178,7 @@ export class TimingDiagram {
         }
         values[ROWS_PER_STEP * ticks] = values[ROWS_PER_STEP * ticks - 1]!;
         lanes.push(values);
+        bases.push(lane);
         if (signal === 'STEP') labels.push({ at: lane + SWING / 2, text: `${name} STEP` });
         else labels.push({ at: lane, text: `${name} DIR +` }, { at: lane + SWING, text: `${name} DIR -` });
         series.push({
@@ -187,8 +189,14 @@ export class TimingDiagram {
         });
       }
     });
-    const withStart = (values: Float64Array, first: number) => (idle ? Float64Array.of(first, ...values) : values);
-    const data: uPlot.AlignedData = [withStart(x, 0), ...lanes.map((values, i) => withStart(values, i % 2 === 0 ? values[1]! : values[0]!))];
+    // Drawn from 0 s: two rows before the first step, at 0 s and half-way to
+    // it, where a DIR its first step needs is set (the VCD's DIR is + before
+    // any step); every lane low until then.
+    const withStart = (values: Float64Array, atZero: number, halfWay: number) => (idle ? Float64Array.of(atZero, halfWay, ...values) : values);
+    const data: uPlot.AlignedData = [
+      withStart(x, 0, x[0]! / 2),
+      ...lanes.map((values, i) => (i % 2 === 0 ? withStart(values, bases[i]!, bases[i]!) : withStart(values, bases[i]!, values[0]!))),
+    ];
     const xLabel = stepSeconds ? `planned instant (${unit})` : 'step';
     if (this.#chart && xLabel === this.#xLabel) {
       this.#chart.setData(data);

@@ -325,6 +325,9 @@ export class OptionSetter {
 
   /** `values` with `name` set to `value` (undefined: cleared), as withOption, with the values set aside put back when they fit again. */
   set(values: Readonly<Record<string, OptionValue>>, name: string, value: OptionValue | undefined): Record<string, OptionValue> {
+    // A value set aside that has come back by other means (Back, a link)
+    // is the one to keep: clearing it must not bring the old one back.
+    for (const other of this.#setAside.keys()) if (other in values) this.#setAside.delete(other);
     const next = withOption(values, name, value);
     if (value !== undefined) {
       // A value typed for an option supersedes what was set aside of it.

@@ -183,10 +183,18 @@ export class Timeline {
   #togglePlay(): void {
     // No path, or one of no steps: nothing to play.
     if (!this.#steps) return;
-    const { playing, pointIndex } = this.#store.state;
-    if (playing) this.#store.update({ playing: false });
-    // Play at the end starts over, as media players do.
-    else this.#store.update({ playing: true, pointIndex: pointIndex >= this.#steps ? 0 : pointIndex });
+    const { playing, pointIndex, slowdown } = this.#store.state;
+    if (playing) {
+      this.#store.update({ playing: false });
+      return;
+    }
+    // Play at the end starts over, as media players do; in machine time the
+    // end is the program's, so a pause in a dwell after the last step resumes
+    // the clock there (it started the program over).
+    const instants = this.#instants;
+    const inClosingDwell = slowdown !== null && instants !== undefined && this.#machinePoint === pointIndex && (this.#machineSeconds ?? instants.durationSeconds) < instants.durationSeconds;
+    const atEnd = pointIndex >= this.#steps && !inClosingDwell;
+    this.#store.update({ playing: true, pointIndex: atEnd ? 0 : pointIndex });
   }
 
   #key(event: KeyboardEvent): void {
