@@ -127,6 +127,8 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       expect(e.detail).toMatch(/^expected the program as a string or as UTF-8 bytes in a Uint8Array, got /);
     }
     expect((await rejection(runGcode(any(new Uint16Array(3)), MACHINE))).detail).toMatch(/Uint16Array of length 3 \(text of another encoding: decode it first/);
+    // A DataView by its bytes ("of length undefined" before).
+    expect((await rejection(runGcode(any(new DataView(new ArrayBuffer(4))), MACHINE))).detail).toMatch(/got a DataView of 4 bytes/);
     // UTF-8 bytes made in another realm are bytes too (instanceof fails across realms).
     const foreign = runInNewContext('new Uint8Array([71, 49, 32, 88, 49, 32, 70, 49, 48, 48])') as Uint8Array;
     expect(foreign instanceof Uint8Array).toBe(false);

@@ -157,10 +157,23 @@ impl Machine {
         check_axes(&MICROSTEPS, &microsteps)?;
         check_axes(&PITCH, &pitch_mm)?;
         let mut steps_per_mm = [0.0; MACHINE_AXES];
+        let range = STEPS_PER_MM.number_range();
         for axis in 0..MACHINE_AXES {
             // p_m = 360 / θ · s pulses per revolution; L = P / p_m mm per pulse.
             let pulses_per_rev = 360.0 / step_angle_deg[axis] * microsteps[axis];
             steps_per_mm[axis] = pulses_per_rev / pitch_mm[axis];
+            // Named by the settings given, not by stepsPerMm, which was not.
+            if range.refusal(steps_per_mm[axis]).is_some() {
+                return Err(Error::field(
+                    STEP_ANGLE.name,
+                    format!(
+                        "stepAngle, microsteps and pitch give {} {} steps per mm, which {}",
+                        crate::grid::AXIS_NAMES[axis],
+                        crate::error::number_text(steps_per_mm[axis]),
+                        range.must_be().expect("steps per mm have bounds")
+                    ),
+                ));
+            }
         }
         Machine::new(steps_per_mm)
     }
@@ -344,6 +357,11 @@ mod tests {
         assert_eq!(
             e(json!({"stepAngle": [1.8, 1.8, 400], "microsteps": 8, "pitch": 2})),
             "stepAngle: z must be more than 0 and at most 360 degrees, got 400"
+        );
+        // Steps per mm out of range from the motor's settings are told by them.
+        assert_eq!(
+            e(json!({"stepAngle": 1e-320, "microsteps": 8, "pitch": 2})),
+            "stepAngle: stepAngle, microsteps and pitch give x Infinity steps per mm, which must be 0.001 to 1000000 steps per mm"
         );
         assert_eq!(
             e(json!({"stepAngle": 1.8, "microsteps": 8, "pitch": -2})),

@@ -532,10 +532,17 @@ impl Request {
 /// A JSON value as a message quotes it: its JSON text, a long one by its
 /// start and length ([`echo`]), so that a 10 MB string is not said back whole.
 pub(crate) fn shown(value: &Value) -> String {
-    match value.as_str() {
+    match value {
         // How the JS API sends a number JSON cannot carry (JSON would make
         // it null): said as the number it was, not as text.
-        Some(text @ ("NaN" | "Infinity" | "-Infinity")) => text.to_string(),
+        Value::String(text) if matches!(text.as_str(), "NaN" | "Infinity" | "-Infinity") => {
+            text.clone()
+        }
+        // Its items so too: [NaN, 1, 1] was said ["NaN",1,1], as if text.
+        Value::Array(items) => format!(
+            "[{}]",
+            items.iter().map(shown).collect::<Vec<_>>().join(",")
+        ),
         _ => echo(&value.to_string()),
     }
 }
@@ -543,6 +550,17 @@ pub(crate) fn shown(value: &Value) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_number_json_cannot_carry_is_shown_as_the_number_it_was_in_a_list_too() {
+        use serde_json::json;
+        assert_eq!(shown(&json!("NaN")), "NaN");
+        assert_eq!(shown(&json!(["NaN", 1, "Infinity"])), "[NaN,1,Infinity]");
+        assert_eq!(
+            shown(&json!(["a", [1, "-Infinity"]])),
+            "[\"a\",[1,-Infinity]]"
+        );
+    }
 
     #[test]
     fn a_declared_integer_is_held_to_its_declared_range_in_words_for_each_bound() {

@@ -33,7 +33,8 @@ export function describeValue(value: unknown): string {
   if (typeof value === 'bigint') return `${value}n (a BigInt)`;
   if (typeof value === 'function') return 'a function';
   const kind = typeof value === 'object' ? (value.constructor?.name ?? 'Object') : typeof value;
-  const length = Array.isArray(value) || ArrayBuffer.isView(value) ? ` of length ${(value as ArrayLike<unknown>).length}` : '';
+  // A DataView has no length, only bytes ("a DataView of length undefined").
+  const length = value instanceof DataView ? ` of ${value.byteLength} bytes` : Array.isArray(value) || ArrayBuffer.isView(value) ? ` of length ${(value as ArrayLike<unknown>).length}` : '';
   // By sound: an Int32Array, an object, a Uint8Array.
   return `${/^[AEIO]/i.test(kind) ? 'an' : 'a'} ${kind === 'Object' ? 'object' : kind}${length}`;
 }

@@ -199,12 +199,15 @@ impl Chording {
             return Err(Error::field(
                 self.option(),
                 format!(
-                    "splits this arc into {} chords, more than {MAX_CHORDS}; use longer chords",
-                    // A tiny tolerance can make the count hundreds of digits long.
+                    "splits this arc into {}, more than {MAX_CHORDS}; use longer chords",
+                    // A tiny tolerance can make the count hundreds of digits
+                    // long, and a segment length of 1e-320 infinite ("inf").
                     if n < 1e15 {
-                        format!("{n:.0}")
+                        format!("{n:.0} chords")
+                    } else if n.is_finite() {
+                        format!("{n:.3e} chords")
                     } else {
-                        format!("{n:.3e}")
+                        "more chords than can be counted".to_string()
                     }
                 ),
             ));
@@ -797,6 +800,13 @@ mod tests {
             .unwrap_err();
         assert_eq!(e.field_name(), Some("segmentLength"));
         assert!(e.to_string().contains("6588397 chords"), "{e}");
+        // Past what a double counts: said so, not "inf chords".
+        let e = Chording::Length(1e-320).chords(20.0, PI).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("splits this arc into more chords than can be counted, more than 65536"),
+            "{e}"
+        );
         let e = Chording::Tolerance(30.0).chords(10.0, PI).unwrap_err();
         assert_eq!(
             e.to_string(),

@@ -646,7 +646,8 @@ impl<'t> Reader<'t> {
                     self.column,
                     format!(
                         "malformed number: {letter} must be followed by its number, found '{}'",
-                        self.next_char()
+                        // An escape or a NUL is quoted, never sent to a terminal raw.
+                        echo(self.next_char())
                     ),
                 ),
             });
@@ -1013,6 +1014,13 @@ mod tests {
         );
         // A signed line or program number is named at its sign, not as a
         // letter with no number after it.
+        // What follows a code's letter is quoted as echo quotes it: an
+        // escape sequence reached the terminal raw.
+        let [(_, message)] = &errors("G\u{1b}[31m1")[..] else {
+            panic!("one error")
+        };
+        assert!(!message.contains('\u{1b}'), "{message:?}");
+        assert!(message.contains("\\u{1b}"), "{message:?}");
         // A line number past u32 is too large, not "not a whole number".
         assert_eq!(
             errors("N4294967296 G1 X1"),

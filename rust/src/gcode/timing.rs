@@ -179,15 +179,17 @@ pub fn feed_capped_message(
     top_mm_per_min: f64,
     arc: bool,
 ) -> String {
-    let runs = top_mm_per_min.max(planner::MINIMUM_FEED_RATE_MM_PER_MIN);
+    // Three digits, not whole: a max rate of 2.5 mm/min was said 2 (and 0.4, 0).
+    let runs = shown_feed(top_mm_per_min.max(planner::MINIMUM_FEED_RATE_MM_PER_MIN));
+    let top = shown_feed(top_mm_per_min);
     let (asked, wanted) = feed_asked(feed_mm_per_min, inverse_time_per_min);
     if arc {
         format!(
-            "{asked} is above the max rate along parts of this arc (down to {top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): its chords there run at their max rate, down to {runs:.0} mm/min, as Grbl caps them; raise maxRate to run {wanted} throughout"
+            "{asked} is above the max rate along parts of this arc (down to {top} mm/min, from maxRate, Grbl's $110-$112): its chords there run at their max rate, down to {runs} mm/min, as Grbl caps them; raise maxRate to run {wanted} throughout"
         )
     } else {
         format!(
-            "{asked} is above the max rate along this move ({top_mm_per_min:.0} mm/min, from maxRate, Grbl's $110-$112): it runs at {runs:.0} mm/min, as Grbl caps it; raise maxRate to run {wanted}"
+            "{asked} is above the max rate along this move ({top} mm/min, from maxRate, Grbl's $110-$112): it runs at {runs} mm/min, as Grbl caps it; raise maxRate to run {wanted}"
         )
     }
 }
@@ -516,6 +518,15 @@ pub fn step_rate_message(axis: usize, needed_hz: f64, max_hz: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_capped_feed_says_the_max_rate_to_three_digits() {
+        // A max rate of 2.5 mm/min was said "2 mm/min" (and 0.4, "0").
+        let message = feed_capped_message(500.0, None, 2.5, false);
+        assert!(message.contains("(2.5 mm/min, from maxRate"), "{message}");
+        let message = feed_capped_message(500.0, None, 559.0169943749474, false);
+        assert!(message.contains("(559 mm/min, from maxRate"), "{message}");
+    }
 
     #[test]
     fn a_step_rate_excess_says_the_max_rate_as_a_number_is_read() {
