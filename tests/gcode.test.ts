@@ -152,7 +152,10 @@ describe('runGcode', () => {
       expect(error.field).toBe(field);
       expect(error.message).toBe(`${field}: ${message}`);
     }
-    expect(mustBe('acceleration')).toBe('must be more than 0 mm/s²');
+    expect(mustBe('acceleration')).toBe('must be 1e-100 mm/s² or more');
+    // Below it the planner's products underflowed: every time infinite, durationSeconds null.
+    const subnormal = await rejection(runGcode(SQUARE, { stepsPerMm: 80, acceleration: 5e-324 }));
+    expect(subnormal.message).toBe('acceleration: must be 1e-100 mm/s² or more, got 5e-324');
     expect(mustBe('junctionDeviation')).toBe('must be 0 mm or more');
     expect(mustBe('stepsPerMm')).toBe('must be 0.001 to 1000000 steps per mm');
   });

@@ -44,7 +44,7 @@ pub struct Machine {
 
 /// Setting `spec`'s value on each axis, held to the range its spec
 /// declares; errors name the setting and the axis ("acceleration: y must
-/// be more than 0 mm/s², got 0").
+/// be 1e-100 mm/s² or more, got 0").
 pub(crate) fn check_axes(spec: &OptionSpec, values: &[f64; MACHINE_AXES]) -> Result<(), Error> {
     let range = spec.number_range();
     for (axis, &v) in values.iter().enumerate() {
@@ -60,7 +60,7 @@ pub(crate) fn check_axes(spec: &OptionSpec, values: &[f64; MACHINE_AXES]) -> Res
 
 /// Setting `spec` from JSON: a number for every axis, or one per axis (x,
 /// y, z), each within the range its spec declares. One number out of range
-/// is told so without an axis ("acceleration: must be more than 0 mm/s²,
+/// is told so without an axis ("acceleration: must be 1e-100 mm/s² or more,
 /// got 0"), as it was typed.
 pub(crate) fn per_axis(spec: &OptionSpec, value: &Value) -> Result<[f64; MACHINE_AXES], Error> {
     let field = spec.name;

@@ -70,9 +70,16 @@ const JUNCTION_COS_LIMIT: f64 = 0.999999;
 /// mc_arc counts its segments in a uint16_t.
 const MAX_ARC_CHORDS: u64 = u16::MAX as u64;
 
+/// The least acceleration a machine may have, mm/s². Less, the planner's
+/// products underflow: at 5e-324 mm/s² a step's speed came out 0 and every
+/// time infinite (durationSeconds null, and the CLI's table threw). From
+/// here the longest move of the grid (2^31 steps an axis at 0.001 steps/mm,
+/// 3.7e12 mm) speeds up in 2·sqrt(L/a), about 4e56 s: any plan stays finite.
+pub const MIN_ACCELERATION_MM_PER_S2: f64 = 1e-100;
+
 pub const ACCELERATION: OptionSpec = OptionSpec {
     name: "acceleration",
-    kind: OptionKind::PerAxis(NumberRange::positive("mm/s²")),
+    kind: OptionKind::PerAxis(NumberRange::at_least(MIN_ACCELERATION_MM_PER_S2, "mm/s²")),
     required: false,
     default: Some("10"),
     applies_with: None,
@@ -1001,7 +1008,7 @@ mod tests {
         let e = Limits::new([0.0; 3], [500.0; 3], 0.01, None).unwrap_err();
         assert_eq!(
             e.to_string(),
-            "acceleration: x must be more than 0 mm/s², got 0"
+            "acceleration: x must be 1e-100 mm/s² or more, got 0"
         );
         let e = Limits::new([10.0; 3], [500.0; 3], -1.0, None).unwrap_err();
         assert_eq!(

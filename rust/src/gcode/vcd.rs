@@ -106,7 +106,7 @@ impl VcdChunks {
     /// came too close, and its status said the command line was wrong.
     pub fn new(timeline: &Timeline) -> io::Result<Self> {
         // Past the last tick every edge would be pressed onto that one tick
-        // (acceleration 1e-300 made a VCD of two timestamps): refused instead.
+        // (acceleration 1e-300, before its least, made a VCD of two timestamps): refused instead.
         let duration = timeline.duration_seconds();
         if duration.is_nan() || duration + STEP_PULSE_SECONDS > LAST_SECONDS {
             return Err(io::Error::new(
@@ -274,17 +274,18 @@ mod tests {
 
     #[test]
     fn a_program_longer_than_the_ticks_reach_is_refused() {
-        // 1e-300 mm/s²: the planned run lasts 1.3e151 s, and every edge was
-        // written at tick u64::MAX: two timestamps for 3,200 edges.
+        // 1e-100 mm/s² (the least): the planned run lasts 1.3e51 s; at
+        // 1e-300 every edge was written at tick u64::MAX: two timestamps
+        // for 3,200 edges.
         let settings =
-            Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 1e-300}"#).unwrap();
+            Settings::from_json(r#"{"stepsPerMm": 80, "acceleration": 1e-100}"#).unwrap();
         let program = run("G1 X10 Y5 F600\nG1 X0\n", settings);
         let mut out = Vec::new();
         let error = write_vcd(&program.trace, &program.timeline, &mut out).unwrap_err();
         assert_eq!(error.kind(), io::ErrorKind::InvalidInput);
         assert!(
             error.to_string().starts_with(
-                "the program lasts 1.255e151 s on its planned profile, past the 1.845e10 s"
+                "the program lasts 1.255e51 s on its planned profile, past the 1.845e10 s"
             ),
             "{error}"
         );
