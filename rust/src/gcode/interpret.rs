@@ -291,11 +291,11 @@ pub struct Interpreter {
     spindle: Spindle,
     spindle_speed: f64,
     coolant: Coolant,
-    /// The work coordinate system selected (G54 to G59.3, as (number,
-    /// minor)) and the tool length offset (G43.1 Z, mm; G49: 0): voxpath
-    /// models neither, but Grbl brings the motion to rest when either
-    /// changes (see [`Interpreter::rest_for_unmodelled`]).
-    coordinate_system: (u32, u32),
+    /// The work coordinate system selected (54 to 59: G54 to G59, Grbl's)
+    /// and the tool length offset (G43.1 Z, mm; G49: 0): voxpath models
+    /// neither, but Grbl brings the motion to rest when either changes (see
+    /// [`Interpreter::rest_for_unmodelled`]).
+    coordinate_system: u32,
     tool_length_offset_mm: f64,
 }
 
@@ -317,7 +317,7 @@ impl Default for Interpreter {
             spindle: Spindle::Off,
             spindle_speed: 0.0,
             coolant: COOLANT_OFF,
-            coordinate_system: (54, 0),
+            coordinate_system: 54,
             tool_length_offset_mm: 0.0,
         }
     }
@@ -394,6 +394,22 @@ impl Interpreter {
         if self.inches { MM_PER_INCH } else { 1.0 }
     }
 
+    /// The units `block`'s axis words are in: its own G20 or G21 wherever it
+    /// stands on the line (gcode.c converts them after reading the whole
+    /// line; two of them are refused), else the mode's. Found only where a
+    /// word is read before the mode is set (G43.1's Z), not for every line.
+    fn line_unit_mm(&self, block: &Block) -> f64 {
+        match block
+            .codes
+            .iter()
+            .find(|c| c.letter == 'G' && c.minor == 0 && matches!(c.number, 20 | 21))
+        {
+            Some(c) if c.number == 20 => MM_PER_INCH,
+            Some(_) => 1.0,
+            None => self.unit_mm(),
+        }
+    }
+
     fn unit_name(&self) -> &'static str {
         if self.inches { "in" } else { "mm" }
     }
@@ -435,7 +451,7 @@ impl Interpreter {
         self.inverse_time = false;
         (self.spindle, self.coolant) = (Spindle::Off, COOLANT_OFF);
         // gcode.c: "gc_state.modal.coord_select = 0; // G54".
-        self.coordinate_system = (54, 0);
+        self.coordinate_system = 54;
     }
 
     /// For G code `code`, which voxpath does not model, when Grbl brings
@@ -450,10 +466,19 @@ impl Interpreter {
     fn rest_for_unmodelled(
         &mut self,
         code: &Code,
+        block: &Block,
         words: &Words,
-        unit_mm: f64,
         effects: &mut Effects,
     ) -> &'static str {
+        /// The clause, the why after its one statement of what happens.
+        macro_rules! comes_to_rest {
+            ($why:literal) => {
+                concat!(
+                    "; the motion comes to rest here first, as Grbl's does ",
+                    $why
+                )
+            };
+        }
         if code.letter != 'G' {
             // M56 is Grbl's parking override and T55 a tool, not G56 and G55.
             return "";
@@ -462,10 +487,10 @@ impl Interpreter {
             // G59.1 to G59.3 are LinuxCNC's: Grbl refuses them (error 23),
             // so no stop of its is said for them, and they are not remembered.
             (54..=59, 0) => {
-                let changed = self.coordinate_system != (code.number, code.minor);
-                self.coordinate_system = (code.number, code.minor);
+                let changed = self.coordinate_system != code.number;
+                self.coordinate_system = code.number;
                 if changed {
-                    "; the motion comes to rest here first, as Grbl's does when the work coordinate system changes"
+                    comes_to_rest!("when the work coordinate system changes")
                 } else {
                     ""
                 }
@@ -474,14 +499,14 @@ impl Interpreter {
                 let offset_mm = if code.number == 49 {
                     0.0
                 } else {
-                    words
-                        .get('Z')
-                        .map_or(self.tool_length_offset_mm, |z| z.value * unit_mm)
+                    words.get('Z').map_or(self.tool_length_offset_mm, |z| {
+                        z.value * self.line_unit_mm(block)
+                    })
                 };
                 let changed = offset_mm != self.tool_length_offset_mm;
                 self.tool_length_offset_mm = offset_mm;
                 if changed {
-                    "; the motion comes to rest here first, as Grbl's does when the tool length offset changes"
+                    comes_to_rest!("when the tool length offset changes")
                 } else {
                     ""
                 }
@@ -491,11 +516,9 @@ impl Interpreter {
                     .get('L')
                     .is_some_and(|l| l.value == 2.0 || l.value == 20.0) =>
             {
-                "; the motion comes to rest here first, as Grbl's does before it writes coordinate data to its EEPROM"
+                comes_to_rest!("before it writes coordinate data to its EEPROM")
             }
-            (28 | 30, 1) => {
-                "; the motion comes to rest here first, as Grbl's does before it writes the position to its EEPROM"
-            }
+            (28 | 30, 1) => comes_to_rest!("before it writes the position to its EEPROM"),
             _ => "",
         };
         if !rest.is_empty() {
@@ -553,18 +576,6 @@ impl Interpreter {
         let words = Words::new(&block.words);
         // What axis_code's warning adds when the motion comes to rest for it.
         let mut axis_code_rest = "";
-        // The line's own units, which its axis words are in wherever G20
-        // or G21 stands on it (gcode.c converts them after reading the
-        // whole line); two of them are refused in the loop below.
-        let line_unit_mm = match block
-            .codes
-            .iter()
-            .find(|c| c.letter == 'G' && c.minor == 0 && matches!(c.number, 20 | 21))
-        {
-            Some(c) if c.number == 20 => MM_PER_INCH,
-            Some(_) => 1.0,
-            None => self.unit_mm(),
-        };
         for code in &block.codes {
             if let Some((group, name)) = (code.letter == 'G')
                 .then(|| other_modal_group(code.number, code.minor))
@@ -628,7 +639,7 @@ impl Interpreter {
                 ('G', n, m) if axis_code.is_none() && !leaves_axis_words_to_motion(n, m) => {
                     // Said below, once the line's axis words are known.
                     axis_code = Some(*code);
-                    axis_code_rest = self.rest_for_unmodelled(code, &words, line_unit_mm, effects);
+                    axis_code_rest = self.rest_for_unmodelled(code, block, &words, effects);
                 }
                 (letter, _, _) => {
                     let what = match letter {
@@ -637,7 +648,7 @@ impl Interpreter {
                             "voxpath models motion only, not spindle, coolant, tools or program flow"
                         }
                     };
-                    let rest = self.rest_for_unmodelled(code, &words, line_unit_mm, effects);
+                    let rest = self.rest_for_unmodelled(code, block, &words, effects);
                     effects.warnings.push(Problem {
                         column: code.column,
                         message: format!("{} ignored: {what}{rest}", code.name()),
