@@ -152,16 +152,16 @@ export class TimingDiagram {
     const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#fromStep === 0);
     const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
     const lanes: Float64Array[] = [];
-    /** Each lane's low level: a STEP lane's rest, a DIR lane's + (the VCD's level before any step). */
-    const bases: number[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
     const labels: { at: number; text: string }[] = [];
     const count = trains.length * 2;
+    /** Lane i's low level, from the top: a STEP lane's rest, a DIR lane's + (the VCD's level before any step). */
+    const laneBase = (i: number) => (count - 1 - i) * LANE;
     trains.forEach((train, axis) => {
       const name = AXIS_NAMES[axis];
       for (const signal of ['STEP', 'DIR'] as const) {
-        const lane = (count - 1 - lanes.length) * LANE;
+        const lane = laneBase(lanes.length);
         const values = new Float64Array(ROWS_PER_STEP * ticks + 1);
         const dirLevel = (i: number) => lane + (train.dir[i]! < 0 ? SWING : 0);
         for (let i = 0; i < ticks; i++) {
@@ -178,7 +178,6 @@ export class TimingDiagram {
         }
         values[ROWS_PER_STEP * ticks] = values[ROWS_PER_STEP * ticks - 1]!;
         lanes.push(values);
-        bases.push(lane);
         if (signal === 'STEP') labels.push({ at: lane + SWING / 2, text: `${name} STEP` });
         else labels.push({ at: lane, text: `${name} DIR +` }, { at: lane + SWING, text: `${name} DIR -` });
         series.push({
@@ -195,7 +194,7 @@ export class TimingDiagram {
     const withStart = (values: Float64Array, atZero: number, halfWay: number) => (idle ? Float64Array.of(atZero, halfWay, ...values) : values);
     const data: uPlot.AlignedData = [
       withStart(x, 0, x[0]! / 2),
-      ...lanes.map((values, i) => (i % 2 === 0 ? withStart(values, bases[i]!, bases[i]!) : withStart(values, bases[i]!, values[0]!))),
+      ...lanes.map((values, i) => withStart(values, laneBase(i), i % 2 === 0 ? laneBase(i) : values[0]!)),
     ];
     const xLabel = stepSeconds ? `planned instant (${unit})` : 'step';
     if (this.#chart && xLabel === this.#xLabel) {
