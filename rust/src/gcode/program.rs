@@ -445,6 +445,7 @@ struct ArcRecord {
 /// Why an arc is stepped as a straight line (its note says so).
 const TOO_SMALL: &str = "its radius is too small for a center on the step grid";
 const UNDER_ONE_STEP: &str = "on the grid it turns less than one step";
+const NO_CHORD_MOVES: &str = "every chord Grbl cuts it into ends on its start step (Grbl's planner drops a block of no steps, so Grbl does not move)";
 
 /// The moves of a run, compact, and what decoding them needs.
 #[derive(Clone, Debug)]
@@ -1464,6 +1465,19 @@ impl Runner {
             )
         };
         let spec = ArcSpec::new(from, to, center, arc.plane, arc.turn, 0, true).map_err(place)?;
+        // A full circle in steps whose chords all end on its start plans
+        // no motion: a grid circle about a center found for it took steps
+        // (4 diagonal ones about a center 1 step off, for a circle a
+        // hundredth of a step across) that the plan gave no time to, all at
+        // one instant. Only a circle that ends where it starts can, so no
+        // other arc pays for its chords twice; checked once the circle is
+        // known to lie on the grid, so that every vertex rounds to a step.
+        let ends: [i64; MACHINE_AXES] = to.coords().try_into().expect("3 axes");
+        if from == to && !timing::plans_a_step(&self.settings.machine, m, ends, ends) {
+            kept.as_line = Some(NO_CHORD_MOVES);
+            self.step_line(m, from, to)?;
+            return Ok(kept);
+        }
         let local = spec.local_sweep_rad();
         // Extra turns on the grid: those that bring the grid sweep nearest
         // the programmed one.
@@ -1815,6 +1829,53 @@ mod tests {
                 seen(&run_with(source, settings, true)),
                 "{source}"
             );
+        }
+    }
+
+    /// A full circle all of whose chords end on its start step plans no
+    /// motion, as in Grbl, and takes no step: it took 4 diagonal steps
+    /// about a grid center 1 step off, all at one instant (8 pulses in
+    /// 0 s for a circle 0.01 steps across).
+    #[test]
+    fn a_circle_whose_chords_all_end_on_its_start_takes_no_step() {
+        let source = "G1 X0 Y0 F600\nG2 X0 Y0 I5 J0\nG1 X2000";
+        let settings = r#"{"stepsPerMm": 0.001}"#;
+        for by_request in [false, true] {
+            let program = run_with(source, settings, by_request);
+            let arc = &program.moves()[1];
+            assert_eq!(arc.steps, 0, "{}", arc.note);
+            assert!(arc.note.contains("Grbl does not move"), "{}", arc.note);
+            assert_eq!(program.trace.steps(), 2);
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+
+        /// Every move that steps has time on the planned profile to step
+        /// in, whatever its size against a step: full circles from a
+        /// hundredth of a step across to a few steps, about centers off the
+        /// grid, at steps per mm from 0.001 to 1000.
+        #[test]
+        fn every_move_that_steps_takes_time(
+            radius_steps in 0.005f64..4.0,
+            off in (-0.5f64..0.5, -0.5f64..0.5),
+            steps_per_mm in prop::sample::select(vec![0.001, 0.1, 1.0, 80.0, 1000.0]),
+            arc in prop::sample::select(ARC_ALGORITHMS),
+        ) {
+            let mm = |steps: f64| steps / steps_per_mm;
+            let source = format!(
+                "G1 X{} Y{} F600\nG3 X{} Y{} I{} J0\nG1 X0 Y0",
+                mm(off.0), mm(off.1), mm(off.0), mm(off.1), mm(radius_steps)
+            );
+            let settings = format!(r#"{{"stepsPerMm": {steps_per_mm}, "arcAlgorithm": "{arc}"}}"#);
+            let program = run_with(&source, &settings, false);
+            for m in program.moves() {
+                prop_assert!(
+                    m.steps == 0 || m.timing.end_seconds > m.timing.start_seconds,
+                    "{source}: line {} takes {} steps in no time ({})", m.line, m.steps, m.note
+                );
+            }
         }
     }
 

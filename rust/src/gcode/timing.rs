@@ -166,6 +166,22 @@ fn each_block_end(
     f(to);
 }
 
+/// Whether any block of move `m` (stepped to `to`) ends off `from`, both in
+/// steps: Grbl's planner drops a block of no steps (plan_buffer_line's
+/// empty block), so a move all of whose blocks end on its start does not
+/// move in Grbl, such as a full circle whose every chord vertex rounds
+/// onto its start.
+pub fn plans_a_step(
+    machine: &Machine,
+    m: &MoveMm,
+    from: [i64; MACHINE_AXES],
+    to: [i64; MACHINE_AXES],
+) -> bool {
+    let mut moves = false;
+    each_block_end(machine, m, to, |end| moves |= end != from);
+    moves
+}
+
 /// The warning for a feed above what maxRate allows along a move: Grbl
 /// runs it at the top rate and says nothing, so a learner who times
 /// `G1 X200 F6000` against the default 500 mm/min would be puzzled.
