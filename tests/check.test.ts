@@ -1,6 +1,8 @@
 // checkPoints, `voxpath check` and the voxpath/vitest matcher against the
 // real wasm core: the issue's done-when case (bresenham3d with tie = hold,
 // checked against regions), the exercise's deliberate bug, and bad input.
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
 import { expect as jestExpect } from 'expect';
 import { describe, expect, it } from 'vitest';
 import { checkPoints, checkToTable, readPoints, trace } from '../web/core/index.js';
@@ -179,6 +181,21 @@ describe('the voxpath/vitest matcher', () => {
     expect(table).toContain('at point 5');
     await expect(expect(points).toFollowRule(REGIONS)).rejects.toThrow(table.trimEnd());
     await expect((jestExpect(points) as unknown as VoxpathMatchers).toFollowRule(REGIONS)).rejects.toThrow(/your points follow: .*bresenham3d with tie = hold/);
+  });
+
+  it('runs the exercise\'s own test as its README says (npx vitest run in its folder), failing at point 5', () => {
+    // The exercise's test itself, not only its function: from the repository's root its folder held
+    // no test vitest would find (the root config's projects take tests/ only).
+    const folder = fileURLToPath(new URL('../examples/exercise-bresenham3d/', import.meta.url));
+    const vitest = fileURLToPath(new URL('../node_modules/vitest/vitest.mjs', import.meta.url));
+    // Without this run's VITEST* variables, as a student's shell has none.
+    const env = Object.fromEntries(Object.entries(process.env).filter(([k]) => !k.startsWith('VITEST')));
+    const run = spawnSync(process.execPath, [vitest, 'run', '--color=false'], { cwd: folder, env: { ...env, NO_COLOR: '1' }, encoding: 'utf8', timeout: 60_000 });
+    const out = run.stdout + run.stderr;
+    expect(out).not.toContain('No test files found');
+    expect(out).toContain('at point 5 your path goes to (5, 3, 3); the rule goes to (5, 4, 3)');
+    expect(out).toMatch(/your points follow: .*bresenham3d with tie = hold/);
+    expect(run.status, out).toBe(1);
   });
 
   it('fails points that are not a path, saying why, so that .not passes them; a bad request or a Promise still throws', async () => {
