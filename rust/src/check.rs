@@ -325,6 +325,19 @@ impl TextReader {
             ));
         }
         if cells.len() != self.dims {
+            // A word among them (a comment after the point, a label with no
+            // header naming the columns to read) is named: counted as a
+            // coordinate, "0,0,0 # start" was "point 0 has 5 coordinates".
+            if let Some(&(offset, cell)) = cells.iter().find(|(_, c)| c.parse::<f64>().is_err()) {
+                return Err(at(
+                    offset,
+                    format!(
+                        "point {index}: '{}' is not a number, and a point is its {} alone",
+                        echo(cell),
+                        counted(self.dims as u64, "coordinate")
+                    ),
+                ));
+            }
             return Err(at(
                 0,
                 format!(
@@ -1958,7 +1971,7 @@ mod tests {
             Points::from_text("0 0 0\n# (a list)\n", 3)
                 .unwrap_err()
                 .to_string(),
-            "line 2, column 4: point 0 has 2 coordinates; the move has 3"
+            "line 2, column 4: point 0: 'a' is not a number, and a point is its 3 coordinates alone"
         );
     }
 
@@ -1976,7 +1989,11 @@ mod tests {
         );
         assert_eq!(
             e("0,0,0 # start\n1,1,1\n"),
-            "line 1, column 1: point 0 has 5 coordinates; the move has 3"
+            "line 1, column 7: point 0: '#' is not a number, and a point is its 3 coordinates alone"
+        );
+        assert_eq!(
+            e("0 0 0\n1 1 1 label\n"),
+            "line 2, column 7: point 1: 'label' is not a number, and a point is its 3 coordinates alone"
         );
         // k, x, y read k as x.
         assert_eq!(

@@ -149,7 +149,10 @@ fn utf8<'a>(field: &'static str, bytes: &'a [u8]) -> Result<&'a str, JsValue> {
 fn not_utf8(field: &'static str, bytes: &[u8], e: std::str::Utf8Error) -> JsValue {
     let before = std::str::from_utf8(&bytes[..e.valid_up_to()]).expect("valid up to there");
     let (line, column) = crate::text::line_and_column(before);
-    let message = format!("not UTF-8 text ({e}): save it as UTF-8, or decode it to a string first");
+    // No "decode it to a string first": the command line hands a file's
+    // bytes here too, and its user has no string to make (the README tells
+    // a JavaScript caller so).
+    let message = format!("not UTF-8 text ({e}): save it as UTF-8");
     let at = |n: usize| u32::try_from(n).unwrap_or(u32::MAX);
     to_js_text_error(&Error::at(at(line), at(column), message), field)
 }
