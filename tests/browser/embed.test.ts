@@ -99,7 +99,7 @@ describe('embedded', () => {
     expect(new URL(frame.url()).searchParams.has('points')).toBe(false);
     expect(new URL((await frame.getByTestId('open-full').getAttribute('href'))!).searchParams.has('points')).toBe(false);
     await frame.goto(`${siteUrl()}?embed=1&mode=gcode`);
-    await frame.getByTestId('step-counter').filter({ hasText: /of 6400$/ }).waitFor();
+    await frame.getByTestId('step-counter').filter({ hasText: /of 6,400$/ }).waitFor();
     expect(new URL(frame.url()).searchParams.get('gcode') ?? '').not.toContain('G1 X1 Y0.5');
 
     // And the reader's own visit is still theirs.
@@ -183,7 +183,7 @@ describe('embedded', () => {
     const p = await openPage('?embed=1&mode=gcode');
     const { page } = p;
     await page.setViewportSize({ width: 320, height: 240 });
-    await page.getByTestId('step-counter').filter({ hasText: /of 6400$/ }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: /of 6,400$/ }).waitFor();
     await page.waitForTimeout(600);
     await screenshot(page, 'embed-gcode-320x240');
     // Each label shown, with its bottom against the view's: x's ticks hang below their points, at the picture's front edge.
@@ -290,7 +290,7 @@ describe('the Embed button', () => {
   it("says when a learner's points are too long for the link it gives (they were left out silently)", async () => {
     const p = await openPage('?from=0,0,0&to=1000,0,0');
     const { page } = p;
-    await page.getByTestId('step-counter').filter({ hasText: /of 1000$/ }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: /of 1,000$/ }).waitFor();
     await page.getByTestId('check-points').locator('summary').click();
     const points = Array.from({ length: 1001 }, (_, x) => `${x},0,0`).join('\n');
     await page.getByTestId('learner-points').fill(points);

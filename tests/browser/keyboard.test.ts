@@ -171,7 +171,7 @@ describe('what is drawn for the keyboard and in forced colours', () => {
   it('keeps the legend swatches in the colours the view draws in, in forced colours', async () => {
     const p = await openPage('?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6');
     const { page } = p;
-    await page.getByTestId('step-counter').filter({ hasText: /of \d+$/ }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: /of [\d,]+$/ }).waitFor();
     const colours = () =>
       page.evaluate(() => ['visited', 'current', 'second', 'only-first', 'only-second'].map((name) => getComputedStyle(document.querySelector(`.swatch-${name}`)!).backgroundColor));
     const normal = await colours();

@@ -77,7 +77,7 @@ describe('G-code mode', () => {
     const p = await openPage('?mode=gcode');
     const { page } = p;
     await status(page, '6400 steps at 80 / 80 / 80 steps/mm');
-    await page.getByTestId('step-counter').filter({ hasText: 'of 6400' }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: 'of 6,400' }).waitFor();
     const ticks = await page.locator('#viewport .scene-label.tick').allInnerTexts();
     expect(ticks).toContain('20 mm1600');
     expect(ticks).toContain('10 mm800');
@@ -138,7 +138,7 @@ describe('the view of a long path', () => {
     const lines = Array.from({ length: 24 }, (_, i) => `X${(i % 2) * 5} Y${(i + 1) * 5}`);
     const gcode = encodeURIComponent(`G21 G90\nG1 F600\n${lines.join('\n')}\n`);
     await page.goto(`${p.url.replace(/\?.*$/, '')}?mode=gcode&gcode=${gcode}&stepsPerMm=80`);
-    await page.getByTestId('step-counter').filter({ hasText: /of \d+$/ }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: /of [\d,]+$/ }).waitFor();
     await expect.poll(() => ticks.allInnerTexts()).toContain('100 mm8000');
     expect(await overlappingLabels(page)).toEqual([]);
     expect(p.problems()).toEqual([]);
@@ -419,7 +419,7 @@ describe('the experiment', () => {
     const [, to, steps] = regionsRows[2]!.split('\t');
     const [x, y, z] = to!.replace(/[()]/g, '').split(', ');
     await page.getByTestId('lines-table').locator('tbody tr').nth(2).locator('td').nth(3).click();
-    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step 0 of ${steps}$`) }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step 0 of ${Number(steps!.replaceAll(',', '')).toLocaleString('en-US')}$`) }).waitFor();
     expect(await page.getByTestId('mode-trace').getAttribute('aria-pressed')).toBe('true');
     expect(await page.getByTestId('algorithm').inputValue()).toBe('bresenham3d');
     expect([await page.getByTestId('input-to-x').inputValue(), await page.getByTestId('input-to-y').inputValue(), await page.getByTestId('input-to-z').inputValue()]).toEqual([x, y, z]);
@@ -430,7 +430,7 @@ describe('the experiment', () => {
     await expect.poll(() => page.getByTestId('mode-experiment').getAttribute('aria-pressed')).toBe('true');
     await view.filter({ hasText: 'traced with bresenham3d' }).waitFor();
     await page.goForward();
-    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step 0 of ${steps}$`) }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step 0 of ${Number(steps!.replaceAll(',', '')).toLocaleString('en-US')}$`) }).waitFor();
     expect(await page.getByTestId('mode-trace').getAttribute('aria-pressed')).toBe('true');
 
     // And from the keyboard: the row's button.
@@ -597,7 +597,7 @@ describe('switching modes', () => {
     await counter.filter({ hasText: 'Step 5 of 10' }).waitFor();
     // G-code again: its program has not changed, so it comes back at its last step.
     await page.getByTestId('mode-gcode').click();
-    await counter.filter({ hasText: /^Step (\d+) of \1$/ }).waitFor();
+    await counter.filter({ hasText: /^Step ([\d,]+) of \1$/ }).waitFor();
     // Compare changes the algorithm: Trace's move is traced by another rule, from step 0.
     await page.getByTestId('mode-compare').click();
     await counter.filter({ hasText: /^Step 0 of / }).waitFor();

@@ -22,7 +22,7 @@ function text(page: Page, testId: string): Promise<string> {
 }
 
 async function steps(page: Page, count: number): Promise<void> {
-  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${count}$`) }).waitFor();
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${count.toLocaleString('en-US')}$`) }).waitFor();
 }
 
 /** Waits until the inspector shows the replayed values of the current point. */
@@ -640,7 +640,7 @@ describe('G-code mode', () => {
     });
     await page.keyboard.press('End');
     await expect.poll(() => page.getByTestId('scene-canvas').getAttribute('data-highlighted')).toBe('1600');
-    await expect.poll(() => text(page, 'step-counter')).toBe('Step 4800 of 6400');
+    await expect.poll(() => text(page, 'step-counter')).toBe('Step 4,800 of 6,400');
     expect(await page.getByTestId('gcode-picked-line').getAttribute('data-line')).toBe('6');
     expect(await page.getByTestId('legend-picked-line').isVisible()).toBe(true);
     const stats = await screenshot(page, 'gcode-square', '[data-testid=scene-canvas]');

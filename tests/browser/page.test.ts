@@ -28,7 +28,7 @@ function text(page: Page, testId: string): Promise<string> {
 
 /** Waits until the trace of `steps` steps is on screen and the inspector has its replayed values. */
 async function traced(page: Page, steps: number): Promise<void> {
-  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${steps}$`) }).waitFor();
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${steps.toLocaleString('en-US')}$`) }).waitFor();
   await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();
 }
 
@@ -453,7 +453,7 @@ describe('the page', () => {
     // 1600 steps a side (20 mm at 80 steps/mm): steps 1601..3200 are line 5's (Y20).
     const p = await openPage('?mode=gcode&stepsPerMm=80&step=2000');
     const { page } = p;
-    await page.getByTestId('step-counter').filter({ hasText: 'Step 2000 of 6400' }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 2,000 of 6,400' }).waitFor();
     await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('5');
     await page.getByTestId('moves-table').waitFor();
     await page.getByTestId('inspector-deviation').filter({ hasText: 'grid units' }).waitFor();

@@ -91,7 +91,7 @@ function counter(page: Page): Promise<string> {
 async function jumpTo(page: Page, step: number): Promise<void> {
   await page.getByTestId('jump-input').fill(String(step));
   await page.getByTestId('jump-input').press('Enter');
-  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step} of`) }).waitFor();
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step.toLocaleString('en-US')} of`) }).waitFor();
 }
 
 describe('a 1,000,000-step line', () => {
@@ -102,7 +102,7 @@ describe('a 1,000,000-step line', () => {
     // controls, and each press's delay is held to the bound below (slowestInput). The first press goes before
     // the first look at the counter: on a machine busy with other work that look could come back only once
     // the page had loaded, and no press was made at all (seen once in a CI run beside two wasm builds).
-    const loaded = page.getByTestId('step-counter').filter({ hasText: /of 1000000$/ });
+    const loaded = page.getByTestId('step-counter').filter({ hasText: /of 1,000,000$/ });
     do {
       await page.keyboard.press('Tab');
     } while (!(await loaded.isVisible()));
@@ -120,11 +120,11 @@ describe('a 1,000,000-step line', () => {
     await page.keyboard.press('End');
     await page.getByTestId('inspector-point').filter({ hasText: '(1000000, 700000, 600000)' }).waitFor();
     for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowLeft');
-    await expect.poll(() => counter(page)).toBe('Step 999997 of 1000000');
+    await expect.poll(() => counter(page)).toBe('Step 999,997 of 1,000,000');
     await page.keyboard.press('Home');
-    await expect.poll(() => counter(page)).toBe('Step 0 of 1000000');
+    await expect.poll(() => counter(page)).toBe('Step 0 of 1,000,000');
     await page.getByTestId('scrubber').fill('250000');
-    await expect.poll(() => counter(page)).toBe('Step 250000 of 1000000');
+    await expect.poll(() => counter(page)).toBe('Step 250,000 of 1,000,000');
     await page.getByTestId('inspector-point').filter({ hasText: /^\(250000, / }).waitFor();
     // The help opens on '?' at once (its handler ran, the dialog is up).
     await page.keyboard.press('?');
@@ -156,8 +156,8 @@ describe('a dense path on a software GPU', () => {
       return String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
     });
     expect(renderer).toMatch(/swiftshader|llvmpipe|software/i);
-    await page.getByTestId('step-counter').filter({ hasText: /of \d{5,}$/ }).waitFor();
-    expect(Number((await counter(page)).split(' of ')[1])).toBeGreaterThan(10_000);
+    await page.getByTestId('step-counter').filter({ hasText: /of \d{2,3}(,\d{3})+$/ }).waitFor();
+    expect(Number((await counter(page)).split(' of ')[1]!.replaceAll(',', ''))).toBeGreaterThan(10_000);
     expect(await page.getByTestId('scene-canvas').getAttribute('data-drawing')).toBe('points');
     await takeObserved(page);
     await page.locator('body').click({ position: { x: 5, y: 5 } });
@@ -195,7 +195,7 @@ describe('a 100,000-line G-code program', () => {
   it('is pasted, runs in the worker with progress, cancels, runs again and scrubs, with no main-thread task over the bound', { timeout: 180_000 }, async () => {
     const p = await openPage('?mode=gcode&stepsPerMm=80', { initScript: observe });
     const { page } = p;
-    await page.getByTestId('step-counter').filter({ hasText: /of 6400$/ }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: /of 6,400$/ }).waitFor();
     await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     // The observers run (Chromium has both entry types); the page's load is the other test's subject: count from here.
     expect(await page.evaluate(() => PerformanceObserver.supportedEntryTypes)).toEqual(expect.arrayContaining(['longtask', 'event']));
@@ -233,7 +233,7 @@ describe('a 100,000-line G-code program', () => {
     expect(await page.evaluate(() => (window as unknown as { cancelledAt: string | null }).cancelledAt)).toMatch(/^[1-9]\d* of 100000 lines/);
     expect(await progress.isHidden()).toBe(true);
     // The view still shows the square.
-    expect(await counter(page)).toMatch(/of 6400$/);
+    expect(await counter(page)).toMatch(/of 6,400$/);
     // Its line marks are not put on the new text, whose lines are not its
     // (the square's current line was marked on the cancelled program's).
     // Found by a helper's hunt through the page.
@@ -263,7 +263,7 @@ describe('a 100,000-line G-code program', () => {
     expect(shown.ended).toBeGreaterThan(0);
     // At once, at most one per 250 ms after it, and the last report (the run's end).
     expect(shown.updates).toBeLessThanOrEqual(2 + Math.ceil((shown.ended - shown.started) / 250));
-    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${program.steps}$`) }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${program.steps.toLocaleString('en-US')}$`) }).waitFor();
     // Its time charts are in the measure: the whole program's speed and step rates, in buckets of time.
     await page.getByTestId('motion').locator('.u-title').filter({ hasText: /buckets of/ }).first().waitFor();
     await page.getByTestId('motion').locator('canvas').nth(1).waitFor();
@@ -361,7 +361,7 @@ describe('200,000 points pasted into Check points', () => {
     const p = await openPage(`?algorithm=regions&from=0,0,0&to=${to.join(',')}`, { initScript: observeFrames });
     const { page } = p;
     expect(await page.evaluate(() => PerformanceObserver.supportedEntryTypes)).toContain('long-animation-frame');
-    await page.getByTestId('step-counter').filter({ hasText: /of 199999$/ }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: /of 199,999$/ }).waitFor();
     await page.getByTestId('check-points').locator('summary').click();
     await p.context.grantPermissions(['clipboard-read', 'clipboard-write']);
     await page.evaluate((points) => navigator.clipboard.writeText(points), text);

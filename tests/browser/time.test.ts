@@ -36,11 +36,11 @@ function firstSideMm(t: number): number {
 }
 
 function counterStep(text: string): number {
-  return Number(/^Step (\d+) of/.exec(text)![1]);
+  return Number(/^Step ([\d,]+) of/.exec(text)![1]!.replaceAll(',', ''));
 }
 
 async function loaded(page: Page, steps: number): Promise<void> {
-  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${steps}$`) }).waitFor();
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${steps.toLocaleString('en-US')}$`) }).waitFor();
 }
 
 describe('G-code mode: time', () => {

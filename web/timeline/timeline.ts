@@ -258,7 +258,8 @@ export class Timeline {
     e.jumpInput.disabled = none;
     e.scrubber.value = String(pointIndex);
     // No path (its input refused): the step a link asked for waits for one; "Step 3 of 0" read as a bug.
-    const text = none ? 'No path' : `Step ${pointIndex} of ${steps}`;
+    // Thousands grouped, as the time charts' totals are: "Step 0 of 49999336" had to be counted by eye.
+    const text = none ? 'No path' : `Step ${pointIndex.toLocaleString('en-US')} of ${steps.toLocaleString('en-US')}`;
     e.scrubber.setAttribute('aria-valuetext', text);
     e.counter.value = text;
     // Announcing every step of playback would drown a screen reader.
