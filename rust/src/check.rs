@@ -948,7 +948,8 @@ pub struct AlsoMatch {
     /// The options that choose this rule among the algorithm's variants
     /// (those with a fixed set of values); an option whose every value
     /// gives the same path here is left out. Pass it with the request's
-    /// other options to trace the same path.
+    /// other options to trace the same path, less those that do not apply
+    /// with it (the chord options beside the helix's method saleem).
     #[serde(serialize_with = "as_object")]
     #[tsify(type = "Record<string, unknown>")]
     pub options: Vec<(String, Value)>,
@@ -1292,10 +1293,23 @@ fn trace_combination(
                 options.insert(spec.name.to_string(), value.clone());
             }
         }
-        match (info.trace)(
-            &Request::new(info.id, options).following(steps.clone()),
-            algorithms::find,
-        ) {
+        let mut request = Request::new(info.id, options);
+        // An option of the request that does not apply with this
+        // combination's values (the chord options, segmentLength and
+        // tolerance, beside the helix's method saleem) is the request's
+        // setting of another variant, not part of this one: left out, as
+        // compare leaves it to the side it applies to. Kept, it refused the
+        // trace, and helix with method = saleem was never listed when the
+        // request gave a chord option.
+        if let Ok(off) = request.inapplicable(info.options) {
+            let off: Vec<&str> = off
+                .iter()
+                .map(|spec| spec.name)
+                .filter(|&name| base.contains_key(name))
+                .collect();
+            request = request.without(&off);
+        }
+        match (info.trace)(&request.following(steps.clone()), algorithms::find) {
             Ok(trace) => return Some(trace),
             Err(e) => {
                 let refused = tried
@@ -1425,7 +1439,16 @@ mod tests {
         for (name, value) in &entry.options {
             options.insert(name.clone(), value.clone());
         }
-        Request::new(&entry.algorithm, options)
+        // Less the request's options that do not apply with the entry's
+        // (a chord option beside the helix's method saleem).
+        let r = Request::new(&entry.algorithm, options);
+        let off: Vec<&str> = r
+            .inapplicable(info.options)
+            .unwrap()
+            .iter()
+            .map(|spec| spec.name)
+            .collect();
+        r.without(&off)
     }
 
     #[test]
@@ -1512,6 +1535,58 @@ mod tests {
             .map(|m| m.label.as_str())
             .collect();
         assert_eq!(labels, ["circle with dir = ccw, plane = xy"]);
+    }
+
+    #[test]
+    fn a_chord_option_of_the_request_does_not_hide_the_helix_by_saleem_s_method() {
+        // Saleem's helix, checked against the helix in chords of a given
+        // length or tolerance (compare mode's pair), or against arc-segments
+        // on a flat arc: the request's segmentLength or tolerance went to
+        // the helix with method saleem too, which refused it, so the points'
+        // own rule was never listed.
+        let saleem = crate::algorithms::trace_json(
+            r#"{"algorithm":"helix","from":[10,0,0],"to":[0,10,6],"center":[0,0,0]}"#,
+        )
+        .unwrap();
+        for chords in [r#""segmentLength":4"#, r#""tolerance":0.25"#] {
+            let json = format!(
+                r#"{{"algorithm":"helix","from":[10,0,0],"to":[0,10,6],"center":[0,0,0],"method":"segments",{chords}}}"#
+            );
+            let result = check(&json, &points_of(&saleem));
+            assert!(!result.matches, "{chords}");
+            let labels: Vec<&str> = result
+                .also_matches
+                .iter()
+                .map(|m| m.label.as_str())
+                .collect();
+            assert_eq!(
+                labels,
+                ["helix with dir = ccw, plane = xy, method = saleem"],
+                "{chords}"
+            );
+        }
+        let flat = r#"{"algorithm":"circle","from":[10,0,0],"to":[0,10,0],"center":[0,0,0]}"#;
+        let circle = crate::algorithms::trace_json(flat).unwrap();
+        let result = check(
+            r#"{"algorithm":"arc-segments","from":[10,0,0],"to":[0,10,0],"center":[0,0,0],"segmentLength":4}"#,
+            &points_of(&circle),
+        );
+        let algorithms: Vec<&str> = result
+            .also_matches
+            .iter()
+            .map(|m| m.algorithm.as_str())
+            .collect();
+        assert_eq!(algorithms, ["circle", "helix"]);
+        // Each entry, with the request's options that apply to it, traces
+        // the points.
+        let r = request(
+            r#"{"algorithm":"arc-segments","from":[10,0,0],"to":[0,10,0],"center":[0,0,0],"segmentLength":4}"#,
+        );
+        for entry in &result.also_matches {
+            let other = entry_request(&r, entry);
+            let trace = crate::algorithms::run(&other).unwrap();
+            assert!(check_trace(&other, &trace, &points_of(&circle)).matches);
+        }
     }
 
     #[test]
