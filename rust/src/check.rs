@@ -456,6 +456,10 @@ impl TextReader {
         let mut cells = Vec::new();
         let (mut line, mut line_start) = (1u32, 0usize);
         let mut open: Option<(usize, u32, u32)> = None;
+        // Whether the line so far is blank, and whether it is a comment
+        // (`#` its first character past blanks), whose brackets are its
+        // words, not points, as in a reading by lines.
+        let (mut blank, mut comment) = (true, false);
         for (i, c) in text.char_indices() {
             match c {
                 // A line ends at LF, CR LF or a lone CR (`text::split_line`).
@@ -463,7 +467,11 @@ impl TextReader {
                 '\n' | '\r' => {
                     line += 1;
                     line_start = i + 1;
+                    (blank, comment) = (true, false);
                 }
+                _ if comment => {}
+                '#' if blank => comment = true,
+                _ if c.is_whitespace() => {}
                 '[' | '(' => open = Some((i + 1, line, (i + 1 - line_start + 1) as u32)),
                 ']' | ')' => {
                     if let Some((start, row_line, column)) = open.take() {
@@ -476,6 +484,7 @@ impl TextReader {
                 }
                 _ => {}
             }
+            blank &= c.is_whitespace();
         }
         Ok(())
     }
@@ -509,8 +518,7 @@ impl TextReader {
             let line = record.text;
             let row_line = line_number;
             line_number += breaks(line);
-            let trimmed = line.trim_start();
-            if trimmed.is_empty() || trimmed.starts_with('#') {
+            if line.trim_start().is_empty() || is_comment(line) {
                 continue;
             }
             split_cells(line, &mut cells)
@@ -701,6 +709,17 @@ struct Record<'t> {
 impl<'t> Record<'t> {
     fn at(text: &'t str) -> Record<'t> {
         let (line, next) = split_line(text);
+        if is_comment(line) {
+            // A comment is its line, whatever it holds: a quote in it ("5"
+            // long") opened a quoted cell that ran on over the rows after
+            // it, which were then dropped unread with the comment, and a
+            // bracket made the whole text a printed list.
+            return Record {
+                text: line,
+                next,
+                bracket: false,
+            };
+        }
         if memchr::memchr(b'"', line.as_bytes()).is_none() {
             // No quote, so no quoted cell: the row is its line (found a
             // word at a time, as nearly every row is).
@@ -756,7 +775,13 @@ impl<'t> Record<'t> {
     }
 }
 
-/// Whether the text is a printed list: a bracket outside quotes.
+/// A comment line: `#` its first character past blanks.
+fn is_comment(line: &str) -> bool {
+    line.trim_start().starts_with('#')
+}
+
+/// Whether the text is a printed list: a bracket outside quotes and
+/// comments.
 fn has_bracket(text: &str) -> bool {
     let mut at = 0;
     while at < text.len() {
@@ -2042,11 +2067,46 @@ mod tests {
         ] {
             assert_eq!(Points::from_text(text, 3).unwrap().coords, vec![1, 1, 1]);
         }
+    }
+
+    #[test]
+    fn a_comment_line_is_its_line_whatever_it_holds() {
+        let rows = "0,0,0\n1,1,0\n2,1,1\n";
+        let all = vec![0, 0, 0, 1, 1, 0, 2, 1, 1];
+        // Brackets in a comment are words, not points: they made the whole
+        // text a printed list, whose points were the comment's
+        // ("point 1 (4, 2, 1) is more than one cell from point 0").
+        for comment in [
+            "# regions from (0,0,0) to (4,2,1)",
+            "# points (x, y, z)",
+            "  # [a list]",
+        ] {
+            let text = format!("{comment}\n{rows}");
+            assert_eq!(Points::from_text(&text, 3).unwrap().coords, all, "{text}");
+            let listed = format!("{comment}\n[(0, 0, 0), (1, 1, 0)]\n{comment}\n[(2, 1, 1)]");
+            assert_eq!(
+                Points::from_text(&listed, 3).unwrap().coords,
+                all,
+                "{listed}"
+            );
+        }
+        // A quote in a comment opens no quoted cell: one did, and the rows
+        // after it to the next quote, or to the end, went unread with the
+        // comment ("there are no points", or a path that stops early).
+        for text in [
+            "# a 5\" long line\n0,0,0\n1,1,0\n2,1,1\n",
+            "0,0,0\n# \"skip\n1,1,0\n2,1,1\n",
+            "0,0,0\n# \"left\n1,1,0\n# right\"\n2,1,1\n",
+            "x,y,z\n# \"\n0,0,0\r\n1,1,0\r2,1,1",
+        ] {
+            assert_eq!(Points::from_text(text, 3).unwrap().coords, all, "{text}");
+        }
+        // Not a comment: a # past the line's first character.
         assert_eq!(
-            Points::from_text("0 0 0\n# (a list)\n", 3)
+            Points::from_text("0 0 0\n1 1 # (a list)\n", 3)
                 .unwrap_err()
                 .to_string(),
-            "line 2, column 4: point 0: 'a' is not a number, and a point is its 3 coordinates alone"
+            "line 2, column 8: point 0: 'a' is not a number, and a point is its 3 coordinates alone"
         );
     }
 
