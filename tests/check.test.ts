@@ -216,7 +216,7 @@ describe('the voxpath/vitest matcher', () => {
     // Nothing that could be points at all is a misuse, which throws: .not passed undefined, 5 or a bare
     // Int32Array without testing anything.
     for (const misuse of [undefined, null, 5, new Int32Array([0, 0, 0]), { points: [1] }]) {
-      await expect(expect(misuse).not.toFollowRule(REGIONS), String(misuse)).rejects.toThrow(/^points: expected rows of coordinates, text, or \{ points/);
+      await expect(expect(misuse).not.toFollowRule(REGIONS), String(misuse)).rejects.toThrow(/^points: expected rows of coordinates, text \(a string, or its UTF-8 bytes in a Uint8Array\), or \{ points/);
     }
     // A request carrying an option named points is a bad request, not the learner's points.
     await expect(expect(skipping).not.toFollowRule({ ...REGIONS, points: 1 } as never)).rejects.toThrow(/^points: regions does not take this option/);
@@ -227,5 +227,9 @@ describe('the voxpath/vitest matcher', () => {
     const rows = pointsOf(t);
     t.free();
     await expect(rows).toFollowRule(REGIONS);
+    // And as a file's bytes, as checkPoints takes them (readFileSync's Buffer): they were refused as no points.
+    const csv = new TextEncoder().encode(rows.map((r) => r.join(',')).join('\n'));
+    await expect(csv).toFollowRule(REGIONS);
+    await expect(Buffer.from(csv)).toFollowRule(REGIONS);
   });
 });

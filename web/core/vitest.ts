@@ -20,7 +20,7 @@ import { checkPoints } from './check.js';
 import type { Check, LearnerPoints } from './check.js';
 import { VoxpathError } from './errors.js';
 import { checkToTable } from './export.js';
-import { argumentError, describeValue, isPromiseLike } from './guard.js';
+import { argumentError, describeValue, isPromiseLike, isTextOrUtf8 } from './guard.js';
 import type { TraceOptions } from './types.js';
 
 /** What vitest and Jest pass a matcher as `this` (the part used here). */
@@ -41,7 +41,8 @@ function isAboutThePoints(error: unknown, request: TraceOptions): error is Voxpa
 
 /** Whether `received` has the shape of a learner's points (what it holds is checkPoints' to judge). */
 function isLearnerPointsShape(received: unknown): boolean {
-  if (typeof received === 'string' || Array.isArray(received)) return true;
+  // Text as a string or as a file's bytes, as checkPoints takes it (its type says so; bytes were refused).
+  if (isTextOrUtf8(received) || Array.isArray(received)) return true;
   if (typeof received !== 'object' || received === null) return false;
   const { points, dims } = received as { points?: unknown; dims?: unknown };
   return (points instanceof Int32Array || points instanceof Float64Array) && typeof dims === 'number';
@@ -60,7 +61,7 @@ export const voxpathMatchers = {
     // Points in none of the shapes a learner's points come in are a misuse of the matcher, which
     // throws: failed as "not a path", undefined passed .not.toFollowRule without testing anything.
     if (!isLearnerPointsShape(received)) {
-      throw argumentError('points', `expected rows of coordinates, text, or { points: Int32Array or Float64Array, dims }, got ${describeValue(received)}`);
+      throw argumentError('points', `expected rows of coordinates, text (a string, or its UTF-8 bytes in a Uint8Array), or { points: Int32Array or Float64Array, dims }, got ${describeValue(received)}`);
     }
     let result: Check;
     try {
