@@ -76,7 +76,7 @@ describe('G-code mode', () => {
     // The square sample: 20 mm sides at 80 steps/mm, 1600 steps each.
     const p = await openPage('?mode=gcode');
     const { page } = p;
-    await status(page, '6400 steps at 80 / 80 / 80 steps/mm');
+    await status(page, '6,400 steps at 80 / 80 / 80 steps/mm');
     await page.getByTestId('step-counter').filter({ hasText: 'of 6,400' }).waitFor();
     const ticks = await page.locator('#viewport .scene-label.tick').allInnerTexts();
     expect(ticks).toContain('20 mm1600');

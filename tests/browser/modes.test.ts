@@ -662,7 +662,7 @@ describe('G-code mode', () => {
     await page.keyboard.press('ControlOrMeta+V');
     const listing = page.getByTestId('gcode-listing');
     await listing.waitFor();
-    await page.getByTestId('trace-status').filter({ hasText: '10001 lines' }).waitFor();
+    await page.getByTestId('trace-status').filter({ hasText: '10,001 lines' }).waitFor();
     const picked = () => page.getByTestId('gcode-picked-line').getAttribute('data-line');
     // From the line of the step shown, down one, three more, up one.
     const current = Number(await page.getByTestId('gcode-current-line').getAttribute('data-line'));
@@ -859,11 +859,11 @@ describe('experiment mode, long runs', () => {
     await page.getByTestId('input-experiment-maxCoordinate').fill('10000');
     await status.filter({ hasText: '20 lines traced' }).waitFor();
     await page.getByTestId('input-experiment-count').fill('100000');
-    await status.filter({ hasText: /^Tracing: line [1-9][\d,]* of 100000, \d+ steps so far…$/ }).waitFor();
+    await status.filter({ hasText: /^Tracing: line [1-9][\d,]* of 100,000, [\d,]+ steps so far…$/ }).waitFor();
     expect(await bar.isVisible()).toBe(true);
     // Said beside the bar, above the tables, as the bar's value says it to a screen reader.
     const said = await page.evaluate(() => [document.getElementById('experiment-progress')!.getAttribute('aria-valuetext'), document.getElementById('experiment-run-text')!.textContent]);
-    expect(said[0]).toMatch(/^Tracing: [1-9]\d* of 100000 lines, \d+ steps$/);
+    expect(said[0]).toMatch(/^Tracing: [1-9][\d,]* of 100,000 lines, [\d,]+ steps$/);
     expect(said[1]).toBe(said[0]);
     expect(Number(await bar.getAttribute('max'))).toBe(100000);
     // Drawn: a bar across the view, its words and Cancel, not a collapsed or blank box.

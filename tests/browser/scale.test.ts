@@ -230,7 +230,7 @@ describe('a 100,000-line G-code program', () => {
     expect(await page.getByTestId('gcode-listing').locator('pre').innerText()).toMatch(/^G21 G90 G17\nG0 X0 Y0 Z0\nG1 X0.000 Y0.000 F1200/);
     const progress = page.getByTestId('gcode-progress');
     await page.getByTestId('trace-status').filter({ hasText: 'Cancelled' }).waitFor();
-    expect(await page.evaluate(() => (window as unknown as { cancelledAt: string | null }).cancelledAt)).toMatch(/^[1-9]\d* of 100000 lines/);
+    expect(await page.evaluate(() => (window as unknown as { cancelledAt: string | null }).cancelledAt)).toMatch(/^[1-9][\d,]* of 100,000 lines/);
     expect(await progress.isHidden()).toBe(true);
     // The view still shows the square.
     expect(await counter(page)).toMatch(/of 6,400$/);
@@ -257,7 +257,7 @@ describe('a 100,000-line G-code program', () => {
       }).observe(bar, { attributeFilter: ['aria-valuetext', 'hidden'] });
     });
     await page.getByTestId('gcode-run').click();
-    await page.getByTestId('trace-status').filter({ hasText: `${program.moves} moves, ${program.steps} steps` }).waitFor({ timeout: 120_000 });
+    await page.getByTestId('trace-status').filter({ hasText: `${program.moves.toLocaleString('en-US')} moves, ${program.steps.toLocaleString('en-US')} steps` }).waitFor({ timeout: 120_000 });
     const shown = await page.evaluate(() => (window as unknown as { progressShown: { updates: number; started: number; ended: number } }).progressShown);
     expect(shown.updates).toBeGreaterThan(0);
     expect(shown.ended).toBeGreaterThan(0);
@@ -395,7 +395,7 @@ describe('200,000 points pasted into Check points', () => {
       ...(await framesDuring(page, async () => {
         await learner.focus();
         await page.keyboard.press('ControlOrMeta+V');
-        await page.getByTestId('check-verdict').filter({ hasText: 'point for point (199999 steps)' }).waitFor({ timeout: 60_000 });
+        await page.getByTestId('check-verdict').filter({ hasText: 'point for point (199,999 steps)' }).waitFor({ timeout: 60_000 });
       })),
       ...(await framesDuring(page, async () => {
         await page.keyboard.press('ControlOrMeta+End');

@@ -10,7 +10,7 @@
  */
 import type { Check } from '../core/index.js';
 import { element } from '../form/options-form.js';
-import { formatPoint, NO_VALUE_TEXT } from '../format.js';
+import { countOf, formatPoint, NO_VALUE_TEXT } from '../format.js';
 import type { AppState } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 
@@ -63,7 +63,7 @@ export class CheckPanel {
       className: 'check-verdict',
       textContent: first
         ? `Your points part from ${check.algorithm} at point ${first.pointIndex}: ${first.message}.`
-        : `Your points are the path of ${check.algorithm}, point for point (${check.steps} steps).`,
+        : `Your points are the path of ${check.algorithm}, point for point (${countOf(check.steps, 'step')}).`,
     });
     verdict.dataset.testid = 'check-verdict';
     verdict.dataset.matches = String(check.matches);

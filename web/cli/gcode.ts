@@ -13,7 +13,7 @@
 import { readFile } from 'node:fs/promises';
 import { runGcode, VoxpathError } from '../core/index.js';
 import type { Catalogue, GcodeProgram, GcodeProgramInfo, GcodeSettings, OptionSpec } from '../core/index.js';
-import { alignedTable, indexChunks, jsonListChunks, pointsJsonChunks } from '../core/export.js';
+import { alignedTable, countOf, indexChunks, jsonListChunks, pointsJsonChunks } from '../core/export.js';
 import { quoted } from '../core/guard.js';
 import { FORMATS, UsageError, describeOption, inFlagWords, optionsFromFlags, parseCommandLine, pickFormat } from './flags.js';
 import { writeAll } from './output.js';
@@ -130,7 +130,7 @@ function* csvChunks(program: GcodeProgram): Generator<string> {
  */
 function* tableChunks(program: GcodeProgram, said: (message: string) => string): Generator<string> {
   const header = ['move', 'line', 'code', 'kind', 'to (mm)', 'to (steps)', 'first step', 'steps', 'algorithm', 'start (s)', 'end (s)', 'mm/s in, top, out'];
-  yield `gcode: ${program.lines} lines, ${program.moveCount} moves, ${program.steps} steps; ${program.stepsPerMm.join(', ')} steps/mm (x, y, z); lines: ${program.lineAlgorithm}, arcs: ${program.arcAlgorithm}\n\n`;
+  yield `gcode: ${countOf(program.lines, 'line')}, ${countOf(program.moveCount, 'move')}, ${countOf(program.steps, 'step')}; ${program.stepsPerMm.join(', ')} steps/mm (x, y, z); lines: ${program.lineAlgorithm}, arcs: ${program.arcAlgorithm}\n\n`;
   for (const [from, to] of indexChunks(program.moveCount)) {
     const body = program.movesInRange(from, to).map((m, i) => [
       String(from + i),

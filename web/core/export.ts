@@ -202,7 +202,7 @@ export function traceToCsv(trace: Trace): string {
  */
 export function* traceTableChunks(trace: Trace): Generator<string> {
   requireTrace('trace', trace);
-  yield [`${trace.algorithm}: ${trace.steps} steps from (${trace.start.join(', ')}) to (${trace.end.join(', ')})`, ...trace.segments.map((s) => s.note), ''].join('\n') + '\n';
+  yield [`${trace.algorithm}: ${countOf(trace.steps, 'step')} from (${trace.start.join(', ')}) to (${trace.end.join(', ')})`, ...trace.segments.map((s) => s.note), ''].join('\n') + '\n';
   for (const [from, to] of indexChunks(trace.steps + 1)) {
     yield (from > 0 ? '\n' : '') + alignedTable(rowHeader(trace), rows(trace, from, to, TABLE_NO_VALUE, plain, (cells) => [...cells])).join('\n') + '\n';
   }
@@ -376,9 +376,9 @@ export function comparisonToTable(comparison: Comparison): string {
   return lines.join('\n') + '\n';
 }
 
-/** "1 move", "12 moves": a count with its noun, singular for one. */
+/** "1 move", "12 moves", "6,400 steps": a count with its noun, singular for one, its thousands grouped (as the step counter's). */
 export function countOf(count: number, noun: string, plural = `${noun}s`): string {
-  return `${count} ${count === 1 ? noun : plural}`;
+  return `${count.toLocaleString('en-US')} ${count === 1 ? noun : plural}`;
 }
 
 /**

@@ -3,6 +3,8 @@
  * the random-lines experiment's. Hidden while nothing runs.
  */
 
+import { countOf } from '../format.js';
+
 /** How far a run has got: the lines run (of a program, or of the experiment) and the steps they took. */
 export interface LinesProgress {
   linesDone: number;
@@ -38,7 +40,7 @@ export class RunProgress {
     if (!progress) return;
     bar.max = Math.max(1, progress.lines);
     bar.value = progress.linesDone;
-    const said = `${verb ? `${verb}: ` : ''}${progress.linesDone} of ${progress.lines} lines, ${progress.steps} steps`;
+    const said = `${verb ? `${verb}: ` : ''}${progress.linesDone.toLocaleString('en-US')} of ${countOf(progress.lines, 'line')}, ${countOf(progress.steps, 'step')}`;
     bar.setAttribute('aria-valuetext', said);
     if (text) text.textContent = said;
   }

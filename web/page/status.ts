@@ -16,7 +16,7 @@ export function traceStatus(trace: MeasuredTrace): string {
   const m = trace.metrics;
   const bound = trace.deviationBound;
   return (
-    `${trace.name}: ${trace.steps} steps from ${formatPoint(trace.start)} to ${formatPoint(trace.end)}; ` +
+    `${trace.name}: ${countOf(trace.steps, 'step')} from ${formatPoint(trace.start)} to ${formatPoint(trace.end)}; ` +
     `largest distance from the ideal path ${m.maxDeviation.toFixed(3)}` +
     (bound ? ` (the rule keeps it within ${bound.value.toFixed(3)}: ${bound.why})` : '') +
     `; ${countOf(m.ties, 'tie')}.`
@@ -54,12 +54,12 @@ export class Status {
 
   /** How far a long run has got: a program's ('Running') or the experiment's ('Tracing'), at the line it has reached. */
   running(verb: string, progress: LinesProgress): void {
-    this.#say(`${verb}: line ${progress.stoppedAtLine ?? progress.linesDone} of ${progress.lines}, ${progress.steps} steps so far…`);
+    this.#say(`${verb}: line ${(progress.stoppedAtLine ?? progress.linesDone).toLocaleString('en-US')} of ${progress.lines.toLocaleString('en-US')}, ${countOf(progress.steps, 'step')} so far…`);
   }
 
   /** What is now on screen. */
   shown(shown: Shown): void {
-    if (shown.experiment) this.#say(`${shown.experiment.lines.length} lines traced with ${shown.experiment.algorithm}.`);
+    if (shown.experiment) this.#say(`${countOf(shown.experiment.lines.length, 'line')} traced with ${shown.experiment.algorithm}.`);
     else if (shown.program) this.#say(programStatus(shown.program.program));
     else this.#say([shown.a, shown.b].filter((t) => t !== undefined).map(traceStatus).join(' '));
   }
