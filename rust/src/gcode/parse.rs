@@ -736,7 +736,20 @@ impl<'t> Reader<'t> {
         let (number_column, number, _) = self.number_after(letter, column)?;
         let number = number.text();
         let text = number.as_ref();
-        let whole = text.split_once('.').map_or(text, |(w, _)| w);
+        // Whole with or without a point ("N2.", "N2.0"); a fraction is
+        // refused, as at ".5" (N1.5 was read as N1 where N.5 was refused),
+        // LinuxCNC's reading: Grbl truncates both.
+        let whole = match text.split_once('.') {
+            None => text,
+            Some((w, fraction)) if fraction.bytes().all(|b| b == b'0') => {
+                if w.is_empty() {
+                    "0"
+                } else {
+                    w
+                }
+            }
+            Some(_) => "",
+        };
         whole.parse::<u32>().map_err(|_| {
             // Digits past u32 are a whole number too large, not "not a
             // whole number" (N4294967296 was told so).
@@ -1030,6 +1043,27 @@ mod tests {
             )]
         );
         assert!(errors("N4294967295 G1 X1").is_empty());
+        // A line number with a fraction is not a whole number, wherever its
+        // digits start; one with a point and no fraction is.
+        for (line, number) in [
+            ("N1.5 G1 X1", "1.5"),
+            ("N.5 G1 X1", ".5"),
+            ("N10.01 G1", "10.01"),
+        ] {
+            assert_eq!(
+                errors(line),
+                [(
+                    2,
+                    format!(
+                        "malformed number: '{number}' is not a whole number (line and program numbers are)"
+                    )
+                )],
+                "{line}"
+            );
+        }
+        for line in ["N2. G1 X1", "N2.00 G1 X1", "N.0 G1 X1", "N0 G1 X1"] {
+            assert!(errors(line).is_empty(), "{line}: {:?}", errors(line));
+        }
         for (line, column, sign) in [("N-1 G1 X1", 2, '-'), ("O +7", 3, '+')] {
             let letter = &line[..1];
             assert_eq!(
