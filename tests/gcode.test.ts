@@ -141,12 +141,18 @@ describe('runGcode', () => {
       const kind = specs.get(name)!.kind;
       return 'mustBe' in kind ? kind.mustBe : undefined;
     };
+    const wrongCount = (name: string) => {
+      const kind = specs.get(name)!.kind;
+      return kind.type === 'perAxis' ? kind.wrongCount : undefined;
+    };
     for (const [settings, field, message] of [
       [{ stepsPerMm: 80, acceleration: [10, 0, 10] }, 'acceleration', `y ${mustBe('acceleration')}, got 0`],
       [{ stepsPerMm: 80, junctionDeviation: -1 }, 'junctionDeviation', `${mustBe('junctionDeviation')}, got -1`],
       [{ stepsPerMm: 2e6 }, 'stepsPerMm', `${mustBe('stepsPerMm')}, got 2000000`],
       [{ stepAngle: 1.8, microsteps: 2.5, pitch: 2 }, 'microsteps', 'must be a whole number, got 2.5'],
       [{ stepsPerMm: 80, maxStepRate: 0 }, 'maxStepRate', `${mustBe('maxStepRate')}, got 0`],
+      // A list of another length, before its values (y's 0 here): the words and the count declared too.
+      [{ stepsPerMm: 80, maxRate: [10, 0] }, 'maxRate', `${wrongCount('maxRate')}, got 2`],
     ] satisfies [GcodeSettings, string, string][]) {
       const error = await rejection(runGcode(SQUARE, settings));
       expect(error.field).toBe(field);
@@ -158,6 +164,8 @@ describe('runGcode', () => {
     expect(subnormal.message).toBe('acceleration: must be 1e-100 mm/s² or more, got 5e-324');
     expect(mustBe('junctionDeviation')).toBe('must be 0 mm or more');
     expect(mustBe('stepsPerMm')).toBe('must be 0.001 to 1000000 steps per mm');
+    expect(wrongCount('maxRate')).toBe('expected one number or 3 (x, y, z)');
+    expect(specs.get('maxRate')!.kind).toMatchObject({ type: 'perAxis', axes: 3 });
   });
 
   it('runs long programs in slices, reporting progress, and can be cancelled', async () => {

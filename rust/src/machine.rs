@@ -25,10 +25,12 @@
 
 use crate::error::Error;
 use crate::grid::{COORD_LIMIT, MAX_AXES, round_half_away_within};
-use crate::range::NumberRange;
+use crate::range::{NumberRange, NumberRangeInfo};
 use crate::request::{OptionKind, OptionSpec, shown};
 use crate::trace::Trace;
+use serde::Serialize;
 use serde_json::Value;
+use tsify::Tsify;
 
 /// The axes a machine has: X, Y and Z.
 pub const MACHINE_AXES: usize = 3;
@@ -80,13 +82,44 @@ pub(crate) fn per_axis(spec: &OptionSpec, value: &Value) -> Result<[f64; MACHINE
         }
         Value::Array(items) => Err(Error::field(
             field,
-            format!(
-                "expected one number or {MACHINE_AXES} (x, y, z), got {}",
-                items.len()
-            ),
+            format!("{WRONG_COUNT}, got {}", items.len()),
         )),
         v => Ok([spec.number_range().check(field, number(v)?)?; MACHINE_AXES]),
     }
+}
+
+/// What a per-axis setting given as a list of another length is told,
+/// before ", got" and the length.
+const WRONG_COUNT: &str = "expected one number or 3 (x, y, z)";
+const _: () = assert!(MACHINE_AXES == 3, "WRONG_COUNT names 3 axes");
+
+/// A per-axis setting's declaration as the catalogue gives it: its range
+/// (each value's), and how many values a list of them holds, so that the
+/// page's form says a list of another length as the core does (it told
+/// `10,0` y's range, and the core, once y was mended, the count).
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct PerAxisInfo {
+    #[serde(flatten)]
+    pub range: NumberRangeInfo,
+    /// Values in a list: one per axis of the machine.
+    pub axes: usize,
+    /// What the core tells a list of another length, before ", got" and
+    /// its length ("expected one number or 3 (x, y, z)").
+    pub wrong_count: &'static str,
+}
+
+/// [`OptionKind::PerAxis`]'s range as a [`PerAxisInfo`].
+pub(crate) fn serialize_per_axis<S: serde::Serializer>(
+    range: &NumberRange,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    PerAxisInfo {
+        range: range.info(),
+        axes: MACHINE_AXES,
+        wrong_count: WRONG_COUNT,
+    }
+    .serialize(s)
 }
 
 /// Fewest and most steps per mm a machine may have: one step a metre, and

@@ -248,8 +248,9 @@ pub struct NumberRangeInfo {
     pub not_whole: Option<String>,
 }
 
-impl Serialize for NumberRange {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+impl NumberRange {
+    /// This range as the catalogue gives it.
+    pub fn info(&self) -> NumberRangeInfo {
         NumberRangeInfo {
             min: self.min,
             min_exclusive: self.min_exclusive,
@@ -258,7 +259,12 @@ impl Serialize for NumberRange {
             must_be: self.must_be(),
             not_whole: self.whole.then(|| format!("must be {WHOLE_NUMBER}")),
         }
-        .serialize(s)
+    }
+}
+
+impl Serialize for NumberRange {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.info().serialize(s)
     }
 }
 

@@ -83,8 +83,13 @@ pub enum OptionKind {
     /// A number for every axis, or one per axis ([x, y, z]), each within
     /// the range (a machine setting such as stepsPerMm or maxRate; whole
     /// numbers where the range says so, as microsteps).
-    // Crosses as NumberRangeInfo, as Number does.
-    PerAxis(#[tsify(type = "NumberRangeInfo")] NumberRange),
+    // Crosses as PerAxisInfo: the range's words and how many values a list
+    // must hold, with the words for one that does not.
+    PerAxis(
+        #[serde(serialize_with = "crate::machine::serialize_per_axis")]
+        #[tsify(type = "PerAxisInfo")]
+        NumberRange,
+    ),
 }
 
 /// One option an algorithm takes.

@@ -334,6 +334,8 @@ describe('the page', () => {
       ['acceleration', '10,0,10', 'y must be 1e-100 mm/s² or more, got 0', '20'],
       ['junctionDeviation', '-1', 'must be 0 mm or more, got -1', '0.02'],
       ['stepsPerMm', '2000000', 'must be 0.001 to 1000000 steps per mm, got 2000000', '40'],
+      // The count first, as the core checks it: y's 0 was said, then, once mended, the count.
+      ['maxRate', '10,0', 'expected one number or 3 (x, y, z), got 2', '600'],
     ] as const) {
       const field = page.getByTestId(`input-machine-${name}`);
       await field.fill(kept);

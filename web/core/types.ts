@@ -49,6 +49,7 @@ export type {
   OptionKind,
   OptionSpec,
   PerAxis,
+  PerAxisInfo,
   PointBounds,
   Reading,
   SignedAxis,

@@ -15,7 +15,7 @@
  * went into the link, then the core refused it).
  */
 import { readDecimal } from '../core/guard.js';
-import type { IntegerRangeInfo, NumberRangeInfo, OptionSpec } from '../core/types.js';
+import type { IntegerRangeInfo, NumberRangeInfo, OptionSpec, PerAxisInfo } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import type { OptionValue } from '../state/app-state.js';
 import { dropDraft, keepDraft, restoredDraft } from '../state/drafts.js';
@@ -80,12 +80,14 @@ function refusedBy(range: IntegerRangeInfo | NumberRangeInfo, value: number): st
 
 /**
  * Why a per-axis setting as read (one number, or one per axis) is refused
- * by `range`: one number as typed, one of several naming its axis (as the
- * core says them). Undefined when every value is taken; how many values
- * there are is the core's call.
+ * by its declaration, in the order the core checks: a list of another
+ * length than its axes (`10,0` was told y's range, then, once y was mended,
+ * the count), then one number as typed, one of several naming its axis (as
+ * the core says them). Undefined when every value is taken.
  */
-function refusedPerAxis(range: NumberRangeInfo, read: number | number[]): string | undefined {
+function refusedPerAxis(range: PerAxisInfo, read: number | number[]): string | undefined {
   if (!Array.isArray(read)) return refusedBy(range, read);
+  if (read.length !== range.axes) return `${range.wrongCount}, got ${read.length}`;
   for (const [a, value] of read.entries()) {
     const refused = refusedBy(range, value);
     if (refused !== undefined) return `${AXIS_NAMES[a] ?? 'a value'} ${refused}`;
@@ -216,7 +218,7 @@ export class OptionsForm {
         return element('div', { className: 'option' }, element('label', { htmlFor: id, textContent: spec.name }), input, hint, error);
       }
       case 'perAxis': {
-        const range: NumberRangeInfo = spec.kind;
+        const range: PerAxisInfo = spec.kind;
         const input = control(element('input', { type: 'text', inputMode: 'decimal' }), id);
         input.value = Array.isArray(value) ? value.join(',') : typeof value === 'number' ? String(value) : '';
         input.placeholder = spec.default ?? '';
