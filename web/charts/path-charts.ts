@@ -15,7 +15,7 @@ import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
 import { StepChart } from './chart.js';
 
 /** Rows the charts ask for: about one per pixel of a wide chart. */
-export const CHART_POINTS = 2000;
+const CHART_POINTS = 2000;
 
 export interface ChartedTrace extends Pick<TraceSummary, 'dims' | 'deviationBound'> {
   series(maxPoints: number): Promise<ChartSeries>;

@@ -15,7 +15,7 @@ import { PALETTE } from '../scene/palette.js';
 import { StepChart } from './chart.js';
 
 /** The blog's sentence, as it wrote it (shared/seeds/cnc-line-following-blog-2009.md). */
-export const BLOG_2009_SENTENCE = 'This means the speed would not be constant if I applied this algorithm directly.';
+const BLOG_2009_SENTENCE = 'This means the speed would not be constant if I applied this algorithm directly.';
 
 /** Most rows asked for: about a pixel each on a wide screen. */
 const MAX_ROWS = 2000;

@@ -140,7 +140,7 @@ function numberOf(flag: string, part: string): number {
 }
 
 /** A flag's text as the option's value, checked against its declared kind. */
-export function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
+function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
   switch (spec.kind.type) {
     case 'point':
       return text.split(',').map((part) => numberOf(flag, part));
@@ -166,7 +166,7 @@ export function optionValue(spec: OptionSpec, flag: string, text: string): unkno
 }
 
 /** How the value of a flag is written, in usage lines. */
-export function valueHint(spec: OptionSpec): string {
+function valueHint(spec: OptionSpec): string {
   const kind = spec.kind;
   switch (kind.type) {
     case 'point':

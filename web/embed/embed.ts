@@ -67,7 +67,7 @@ function frameTitle(state: AppState, catalogue: Catalogue): string {
 }
 
 /** The <iframe> element that embeds `state`. */
-export function iframeSnippet(state: AppState, catalogue: Catalogue): string {
+function iframeSnippet(state: AppState, catalogue: Catalogue): string {
   return (
     `<iframe src="${attribute(stateLink(state, true))}"\n` +
     `        title="${attribute(frameTitle(state, catalogue))}"\n` +

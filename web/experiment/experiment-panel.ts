@@ -17,7 +17,7 @@ import { newHistoryEntry } from '../state/persist.js';
 import type { Store } from '../state/store.js';
 
 /** Rows of the per-line table drawn at most; the CSV export has them all. */
-export const LINE_ROWS_SHOWN = 500;
+const LINE_ROWS_SHOWN = 500;
 
 const f4 = (v: number) => v.toFixed(4);
 

@@ -29,7 +29,7 @@ export function pathLimitAdvice(limit: Limit): string {
 }
 
 /** What to do about a program that needs more steps than the page runs. */
-export function programLimitAdvice(limit: Limit, line: number): string {
+function programLimitAdvice(limit: Limit, line: number): string {
   return (
     `By line ${line} the program needs at least ${count(limit.atLeast)} steps; the page runs at most ${count(limit.value)} (its ${limit.option}, fixed). ` +
     'Lower stepsPerMm under Machine, or shorten the moves.' +

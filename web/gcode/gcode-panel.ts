@@ -35,7 +35,7 @@ const MOVES_SHOWN = 12;
  * a text box in 1.2 to 1.6 s on this project's 2-core test machine, so the
  * box costs at most about 150 ms at this length.
  */
-export const EDITABLE_LINES = 10_000;
+const EDITABLE_LINES = 10_000;
 
 export interface GcodePanelElements {
   sample: HTMLSelectElement;

@@ -12,7 +12,7 @@ import type { ProgramRecord } from '../worker/protocol.js';
 import type { Shown } from './shown.js';
 
 /** One trace in a sentence. */
-export function traceStatus(trace: MeasuredTrace): string {
+function traceStatus(trace: MeasuredTrace): string {
   const m = trace.metrics;
   const bound = trace.deviationBound;
   return (

@@ -43,7 +43,7 @@ const AXIS_REACH_SHARE = 0.09;
 const TICK_PAD_SHARE = 0.035;
 
 /** The smallest of 1, 2 or 5 times a power of ten (fractions too) that splits `extent` into at most `parts`. */
-export function niceStep(extent: number, parts: number): number {
+function niceStep(extent: number, parts: number): number {
   const rough = Math.max(extent, Number.MIN_VALUE) / parts;
   const decade = 10 ** Math.floor(Math.log10(rough));
   return [1, 2, 5, 10].map((m) => m * decade).find((step) => step >= rough * (1 - 1e-12))!;

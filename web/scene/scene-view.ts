@@ -129,7 +129,7 @@ function sampleCells(trace: DrawnTrace, count: number): THREE.Vector3[] {
  * core's PointBounds: for points that did not come from the core (a
  * learner's, the cells a comparison picks out); a trace's come with it.
  */
-export function pointBounds(points: Int32Array, dims: number): PointBounds {
+function pointBounds(points: Int32Array, dims: number): PointBounds {
   const min = Array.from(points.subarray(0, dims));
   const max = [...min];
   for (let o = dims; o < points.length; o += dims) {

@@ -34,7 +34,7 @@ const CURRENT_MARKER_PX = 9;
 /** The lighter drawing's points along the whole path, at most. */
 export const SAMPLED_POINTS = 20_000;
 /** The lighter drawing's cubes: every cell within this many steps of the current one. */
-export const NEAR_CELLS = 2_000;
+const NEAR_CELLS = 2_000;
 
 /** Rows of `points` (stride dims) in reverse order. */
 function reversed(points: Int32Array, dims: number): Int32Array {

@@ -92,7 +92,7 @@ export const MODE_INPUT_KEYS: Record<Mode, readonly (keyof AppState)[]> = {
 
 export const SPEEDS_STEPS_PER_SECOND = [0.5, 1, 2, 4, 8, 16, 32, 64, 256, 1024, 8192] as const;
 
-export const DEFAULT_SPEED = 2;
+const DEFAULT_SPEED = 2;
 
 /** Machine-time playback: real time (1), or 10, 100 or 1000 times slower (a corner of a fast move lasts milliseconds). */
 export const SLOWDOWNS = [1, 10, 100, 1000] as const;
@@ -188,7 +188,7 @@ export function comparableWith(info: AlgorithmInfo, catalogue: readonly Algorith
 }
 
 /** Axes the page shows: 2 or 3 (a 3D view), within what the algorithm takes. */
-export const PAGE_AXES = [2, 3] as const;
+const PAGE_AXES = [2, 3] as const;
 
 /** The axis counts of PAGE_AXES that every algorithm of `infos` accepts. */
 export function axisChoices(infos: readonly AlgorithmInfo[]): number[] {
@@ -265,7 +265,7 @@ export function defaultOptions(infos: readonly AlgorithmInfo[]): Record<string, 
 }
 
 /** A first visit's machine: 80 steps/mm (a common belt-driven axis), regions for lines, Saleem's circle for arcs. */
-export const DEFAULT_MACHINE: Readonly<Record<string, OptionValue>> = { stepsPerMm: 80, lineAlgorithm: 'regions', arcAlgorithm: 'circle' };
+const DEFAULT_MACHINE: Readonly<Record<string, OptionValue>> = { stepsPerMm: 80, lineAlgorithm: 'regions', arcAlgorithm: 'circle' };
 
 /**
  * The machine's settings as form fields: the core's catalogue of G-code
@@ -345,10 +345,10 @@ export class OptionSetter {
 }
 
 /** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */
-export const DEFAULT_GCODE = '(A 20 mm square, absolute coordinates)\nG21 G90 G17\nG0 X0 Y0 Z0\nG1 X20 Y0 F500\nY20\nX0\nY0\n';
+const DEFAULT_GCODE = '(A 20 mm square, absolute coordinates)\nG21 G90 G17\nG0 X0 Y0 Z0\nG1 X20 Y0 F500\nY20\nX0\nY0\n';
 
 /** Wang's experiment: 100 lines to points in 0..100, seed 1. */
-export const DEFAULT_EXPERIMENT: Readonly<Record<string, OptionValue>> = { count: 100, seed: 1, maxCoordinate: 100 };
+const DEFAULT_EXPERIMENT: Readonly<Record<string, OptionValue>> = { count: 100, seed: 1, maxCoordinate: 100 };
 
 export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmInfo[]): AppState {
   return {
