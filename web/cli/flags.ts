@@ -13,7 +13,6 @@ import type { Catalogue, OptionSpec } from '../core/index.js';
 export class UsageError extends Error {}
 
 export const FORMATS = ['json', 'csv', 'table'] as const;
-export type Format = (typeof FORMATS)[number];
 
 /** The flag of an option: maxSteps -> --max-steps. */
 export function flagOf(option: string): string {
