@@ -227,11 +227,6 @@ export class StepChart {
     this.#resize.observe(container);
   }
 
-  /** The chart's canvas (for tests and export). */
-  get canvas(): HTMLCanvasElement {
-    return this.#plot.ctx.canvas;
-  }
-
   /** Moves the step cursor to `pointIndex`. */
   showPoint(pointIndex: number): void {
     this.showX(pointIndex);
