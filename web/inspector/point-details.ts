@@ -36,11 +36,6 @@ export class PointDetails {
     this.#onError = onError;
   }
 
-  /** The last detail handed out for the current trace, for a view switched on later (decision in 3D). */
-  get latest(): StepDetail | undefined {
-    return this.#latest;
-  }
-
   /** Follows `trace` (undefined: none) from `pointIndex`, once its first frame is drawn. */
   setTrace(trace: DetailedTrace | undefined, pointIndex: number): void {
     this.#trace = trace;
