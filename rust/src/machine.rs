@@ -260,11 +260,6 @@ impl Machine {
         let steps = round_decimal_half_away(mm * self.steps_per_mm[axis]);
         (steps.abs() <= COORD_LIMIT as f64).then_some(steps as i64)
     }
-
-    /// The position of a step count in mm.
-    pub fn to_mm(&self, axis: usize, steps: i64) -> f64 {
-        steps as f64 / self.steps_per_mm[axis]
-    }
 }
 
 /// How far below a half, in units in the last place of the product, a
