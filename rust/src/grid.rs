@@ -289,12 +289,6 @@ impl Step {
     pub fn axis_count(self) -> u32 {
         self.moving_axes().count_ones()
     }
-
-    /// The step undone: every moving axis reversed.
-    pub fn reversed(self) -> Step {
-        let moving = self.0 & 0xff;
-        Step(moving | ((self.0 >> 8 ^ moving) << 8))
-    }
 }
 
 impl fmt::Debug for Step {
@@ -433,12 +427,6 @@ mod tests {
             (1, 0, -1, 1)
         );
         assert_eq!(s.axis_count(), 3);
-        let r = s.reversed();
-        assert_eq!(
-            (r.delta(0), r.delta(1), r.delta(2), r.delta(5)),
-            (-1, 0, 1, -1)
-        );
-        assert_eq!(r.reversed(), s);
     }
 
     #[test]
