@@ -440,27 +440,6 @@ impl Timeline {
         out
     }
 
-    /// Each axis's planned step rate at the same corners as
-    /// [`Timeline::speed_profile`]: (seconds, then steps/s per axis) flat,
-    /// the speed times the axis's share of the block's direction times its
-    /// steps per mm.
-    pub fn step_rate_profile(&self, steps_per_mm: &[f64; MACHINE_AXES]) -> Vec<f64> {
-        let speeds = self.speed_profile();
-        let mut out = Vec::with_capacity(speeds.len() / 2 * (1 + MACHINE_AXES));
-        let blocks = self.plan.blocks(0..self.plan.len());
-        for (b, corners) in blocks.zip(speeds.chunks_exact(8)) {
-            for corner in corners.chunks_exact(2) {
-                out.push(corner[0]);
-                for axis in 0..MACHINE_AXES {
-                    out.push(
-                        corner[1] * (b.delta_mm[axis] / b.length_mm).abs() * steps_per_mm[axis],
-                    );
-                }
-            }
-        }
-        out
-    }
-
     /// The blocks in `blocks` that start a move after another block (where
     /// the machine turns from one move into the next), ascending.
     pub fn move_starts(&self, blocks: Range<usize>) -> Vec<usize> {
