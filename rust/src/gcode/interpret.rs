@@ -384,11 +384,6 @@ impl<'b> Words<'b> {
 }
 
 impl Interpreter {
-    /// Programmed position in machine mm.
-    pub fn position_mm(&self) -> [f64; MACHINE_AXES] {
-        self.position_mm
-    }
-
     /// mm per program unit.
     fn unit_mm(&self) -> f64 {
         if self.inches { MM_PER_INCH } else { 1.0 }
@@ -1437,21 +1432,21 @@ mod tests {
         // machine 4, where G0 X4 goes to 5.
         let (it, e) = run(&["G0 X1", "G92 X0", "G53 G0 X4 Y2"]).unwrap();
         assert!(e.motion.is_some() && e.warnings.is_empty());
-        assert_eq!(it.position_mm(), [4.0, 2.0, 0.0]);
+        assert_eq!(it.position_mm, [4.0, 2.0, 0.0]);
         let (it, _) = run(&["G0 X1", "G92 X0", "G0 X4"]).unwrap();
-        assert_eq!(it.position_mm(), [5.0, 0.0, 0.0]);
+        assert_eq!(it.position_mm, [5.0, 0.0, 0.0]);
         // Absolute in G91 too, in inches, in the modal G1, with axes not
         // named left where they are; the line's own mode comes back after.
         let (it, _) = run(&["G20 G91 G1 X1 Z1 F10", "G53 X2"]).unwrap();
-        assert_eq!(it.position_mm(), [50.8, 0.0, 25.4]);
+        assert_eq!(it.position_mm, [50.8, 0.0, 25.4]);
         let (it, _) = run(&["G91 G1 X1 F10", "G53 X2", "X1"]).unwrap();
-        assert_eq!(it.position_mm(), [3.0, 0.0, 0.0]);
+        assert_eq!(it.position_mm, [3.0, 0.0, 0.0]);
         // The motion mode a program starts in is G0, as in Grbl.
-        assert_eq!(run(&["G53 X5"]).unwrap().0.position_mm(), [5.0, 0.0, 0.0]);
+        assert_eq!(run(&["G53 X5"]).unwrap().0.position_mm, [5.0, 0.0, 0.0]);
         // No axis word: nothing moves.
         let (it, e) = run(&["G0 X1", "G53"]).unwrap();
         assert!(e.motion.is_none() && e.warnings.is_empty());
-        assert_eq!(it.position_mm(), [1.0, 0.0, 0.0]);
+        assert_eq!(it.position_mm, [1.0, 0.0, 0.0]);
         // Error 30 outside G0 and G1, at G53; with G92 on its line, error 21.
         for (lines, column, mode) in [
             (&["G2 X1 Y1 I1", "G53 X5"][..], 1, "G2"),
@@ -1480,13 +1475,13 @@ mod tests {
     #[test]
     fn absolute_incremental_inches_and_g92() {
         let (it, _) = run(&["G0 X10 Y5", "G91 G1 X1 Y1 F100", "X1"]).unwrap();
-        assert_eq!(it.position_mm(), [12.0, 6.0, 0.0]);
+        assert_eq!(it.position_mm, [12.0, 6.0, 0.0]);
         // G92 X0: the machine's 12 mm now reads 0, so X5 is machine 17.
         let (it, e) = run(&["G0 X12", "G92 X0", "G0 X5"]).unwrap();
-        assert_eq!(it.position_mm(), [17.0, 0.0, 0.0]);
+        assert_eq!(it.position_mm, [17.0, 0.0, 0.0]);
         assert_eq!(e.motion.unwrap().from_mm, [12.0, 0.0, 0.0]);
         let (it, e) = run(&["G20 G1 X1 F10"]).unwrap();
-        assert!(close(it.position_mm()[0], 25.4));
+        assert!(close(it.position_mm[0], 25.4));
         assert_eq!(e.motion.unwrap().feed_mm_per_min, Some(254.0));
     }
 
@@ -1618,7 +1613,7 @@ mod tests {
                 "E0 ignored: voxpath models X, Y and Z motion only".to_string()
             )]
         );
-        assert_eq!(it.position_mm(), [1.0, 0.0, 0.0]);
+        assert_eq!(it.position_mm, [1.0, 0.0, 0.0]);
         assert_eq!(
             e(&["G3 R5"]),
             "line 1, column 4: missing axis word: an R arc needs an end point other than its start on X or Y (a full circle needs I/J/K)"
@@ -1651,7 +1646,7 @@ mod tests {
             let line = format!("{code} X5 Y5 Z-1");
             let (it, e) = run(&["G1 X1 F100", &line, "X9"]).unwrap();
             assert!(e.motion.is_none(), "{code}: X9 moved");
-            assert_eq!(it.position_mm(), [1.0, 0.0, 0.0], "{code}");
+            assert_eq!(it.position_mm, [1.0, 0.0, 0.0], "{code}");
             assert_eq!(
                 e.warnings[0].message,
                 format!(
@@ -1667,7 +1662,7 @@ mod tests {
         // G0-G3 end the mode; G80 cancels it, and then axis words alone
         // have no motion mode at all.
         let (it, e) = run(&["G81 X5 Y5 Z-1 F100", "G1 X2"]).unwrap();
-        assert_eq!(it.position_mm(), [2.0, 0.0, 0.0]);
+        assert_eq!(it.position_mm, [2.0, 0.0, 0.0]);
         assert!(e.motion.is_some());
         let e = run(&["G1 X1 F100", "G81 X5 Y5 Z-1", "G80", "X3"]).unwrap_err();
         assert_eq!(
@@ -1756,7 +1751,7 @@ mod tests {
         for line in ["G43.1 Z-2.5", "G49 Z5", "G43 Z1", "G10 L20 P1 X0"] {
             let (it, e) = run(&["G0 X1", line]).unwrap();
             assert!(e.motion.is_none(), "{line} moved");
-            assert_eq!(it.position_mm(), [1.0, 0.0, 0.0], "{line}");
+            assert_eq!(it.position_mm, [1.0, 0.0, 0.0], "{line}");
             let code = line.split(' ').next().unwrap();
             // G43.1 Z-2.5 changes the tool length offset and G10 L20
             // writes coordinate data: the motion comes to rest for them.
@@ -1785,7 +1780,7 @@ mod tests {
         for line in ["G54 X5", "G40 G0 X5", "G61 X5", "G28.1 X5", "G64 X5"] {
             let (it, e) = run(&["G0 X1", line]).unwrap();
             assert!(e.motion.is_some(), "{line} did not move");
-            assert_eq!(it.position_mm(), [5.0, 0.0, 0.0], "{line}");
+            assert_eq!(it.position_mm, [5.0, 0.0, 0.0], "{line}");
         }
     }
 
@@ -1795,7 +1790,7 @@ mod tests {
         // `X10` alone was "X without a motion mode".
         let (it, e) = run(&["X10"]).unwrap();
         assert_eq!(e.motion.unwrap().motion, Motion::Rapid);
-        assert_eq!(it.position_mm(), [10.0, 0.0, 0.0]);
+        assert_eq!(it.position_mm, [10.0, 0.0, 0.0]);
         // After G80 there is no motion mode: an error, as Grbl's error 31.
         assert_eq!(
             run(&["G80", "X3"]).unwrap_err().to_string(),
@@ -1850,7 +1845,7 @@ mod tests {
         // G1 at F10 in/min, G90 through the G92 offset (1 in), in inches.
         assert_eq!(m.motion, Motion::Linear);
         assert!(close(m.feed_mm_per_min.unwrap(), 254.0));
-        assert!(close(it.position_mm()[0], 3.0 * 25.4));
+        assert!(close(it.position_mm[0], 3.0 * 25.4));
         assert!(e.warnings.is_empty(), "{:?}", e.warnings);
         assert_eq!(it.plane, Plane::Xy);
         assert_eq!((it.spindle, it.coolant), (Spindle::Off, COOLANT_OFF));
@@ -1928,7 +1923,7 @@ mod tests {
         // NON_MODAL_RESET_COORDINATE_OFFSET: clear_vector); it was ignored
         // with a warning, so X5 below went to machine 15.
         let (it, _) = run(&["G0 X10", "G92 X0", "G92.1", "G0 X5"]).unwrap();
-        assert_eq!(it.position_mm(), [5.0, 0.0, 0.0]);
+        assert_eq!(it.position_mm, [5.0, 0.0, 0.0]);
         // Its axis words are a move, through the offset before the line
         // (Grbl computes the target first, then clears the offset).
         let (it, e) = run(&["G0 X10", "G92 X0", "G92.1 X5"]).unwrap();
