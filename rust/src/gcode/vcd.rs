@@ -36,14 +36,6 @@ fn nanoseconds(seconds: f64) -> u64 {
     (seconds * 1e9).round().max(0.0) as u64
 }
 
-/// Writes the VCD of `trace`'s steps at the instants of `timeline`, whole
-/// (see `VcdChunks` for the errors, and to write it a part at a time).
-pub fn write_vcd(trace: &Trace, timeline: &Timeline, mut out: impl Write) -> io::Result<()> {
-    let mut chunks = VcdChunks::new(timeline)?;
-    while chunks.write_next(trace, timeline, &mut out)? {}
-    out.flush()
-}
-
 /// The first two steps whose ticks come under 2 ns apart, as an error: a
 /// pulse rises on the first step's tick and must fall on a tick before the
 /// next step's rises. (A pulse rises on its step's own tick: every edge
@@ -243,6 +235,14 @@ mod tests {
     use super::*;
     use crate::gcode::program::{Settings, run};
     use vcd::Command;
+
+    /// Writes the VCD of `trace`'s steps at the instants of `timeline`, whole
+    /// (see `VcdChunks` for the errors).
+    fn write_vcd(trace: &Trace, timeline: &Timeline, mut out: impl Write) -> io::Result<()> {
+        let mut chunks = VcdChunks::new(timeline)?;
+        while chunks.write_next(trace, timeline, &mut out)? {}
+        out.flush()
+    }
 
     /// (rising edge times in ns, DIR changes as (ns, value)) per wire name.
     fn read_back(text: &[u8]) -> std::collections::HashMap<String, Vec<(u64, bool)>> {
