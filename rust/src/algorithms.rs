@@ -2,7 +2,7 @@
 //! entry holds is declared in the leaf module `algorithm_info`, which the
 //! algorithms import; only this module imports the algorithms.
 
-pub use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+pub use crate::algorithm_info::{AlgorithmInfo, Family};
 use crate::error::Error;
 use crate::request::Request;
 use crate::trace::Trace;
