@@ -141,8 +141,10 @@ pub struct Block {
     pub error: Option<Problem>,
 }
 
-/// Parses one line (without its line break).
-pub fn parse_line(text: &str) -> Block {
+/// Parses one line (without its line break) into a block of its own: the
+/// tests' way in (a program reads every line with [`parse_line_into`]).
+#[cfg(test)]
+pub(crate) fn parse_line(text: &str) -> Block {
     let mut block = Block::default();
     parse_line_into(text, &mut block);
     block
