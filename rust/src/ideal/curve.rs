@@ -105,21 +105,6 @@ impl ArcPath {
         }
     }
 
-    /// Signed radial error ρ - r of `p` (> 0 outside); see [`ArcMeter::radial_error`].
-    pub fn radial_error(&self, p: &Point) -> f64 {
-        self.meter().radial_error(p)
-    }
-
-    /// Distance from `p` to the circle: radial error and height off the plane.
-    pub fn deviation(&self, p: &Point) -> f64 {
-        self.meter().deviation(p)
-    }
-
-    /// `p` minus the arc's point at the same angle (the radial projection).
-    pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
-        self.meter().axis_error(p)
-    }
-
     /// Grid coordinates of the arc's point at angle `theta` and height
     /// `height` above the center's normal coordinate.
     fn point_at(&self, theta: f64, height: f64) -> [f64; 3] {
@@ -245,8 +230,10 @@ impl ArcMeter<'_> {
     }
 
     /// Signed radial error ρ - r of `p` (> 0 outside), ρ = distance from the
-    /// center axis.
-    pub fn radial_error(&self, p: &Point) -> f64 {
+    /// center axis. For the tests: a deviation reads it through
+    /// [`Self::deviation_at`].
+    #[cfg(test)]
+    fn radial_error(&self, p: &Point) -> f64 {
         let [u, v, _] = self.arc.relative(p);
         self.rho_and_radial_error(u, v).1
     }
@@ -506,15 +493,25 @@ mod tests {
         let k = 1i64 << 18;
         let c = (1i64 << 30) - 6 * k;
         let a = arc([c, c, c], 25 * k * k, 0.0, TAU);
-        assert_eq!(a.radial_error(&Point::new(&[c + 3 * k, c + 4 * k, c])), 0.0);
-        assert_eq!(a.radial_error(&Point::new(&[c + 5 * k + 1, c, c])), 1.0);
-        assert_eq!(a.radial_error(&Point::new(&[c, c - 5 * k + 1, c])), -1.0);
+        let meter = a.meter();
+        assert_eq!(
+            meter.radial_error(&Point::new(&[c + 3 * k, c + 4 * k, c])),
+            0.0
+        );
+        assert_eq!(meter.radial_error(&Point::new(&[c + 5 * k + 1, c, c])), 1.0);
+        assert_eq!(
+            meter.radial_error(&Point::new(&[c, c - 5 * k + 1, c])),
+            -1.0
+        );
         // One unit off along the diagonal direction (3, 4)/5 is not a grid
         // point; (3k+1, 4k+1) is 7/5 out along it, to first order.
-        let e = a.radial_error(&Point::new(&[c + 3 * k + 1, c + 4 * k + 1, c]));
+        let e = meter.radial_error(&Point::new(&[c + 3 * k + 1, c + 4 * k + 1, c]));
         assert!((e - 1.4).abs() < 1e-6, "{e}");
         // Off the plane: distance combines radial and height.
-        assert_eq!(a.deviation(&Point::new(&[c + 5 * k + 3, c, c + 4])), 5.0);
+        assert_eq!(
+            meter.deviation(&Point::new(&[c + 5 * k + 3, c, c + 4])),
+            5.0
+        );
     }
 
     #[test]
@@ -545,8 +542,9 @@ mod tests {
     #[test]
     fn axis_error_is_the_radial_error_split_per_axis() {
         let a = arc([-7, -9, 2], 25, 0.0, TAU);
+        let meter = a.meter();
         // (-7 + 6, -9 + 8) is 10 from the center: 5 outside along (3, 4)/5.
-        let phi = a.axis_error(&Point::new(&[-1, -1, 2]));
+        let phi = meter.axis_error(&Point::new(&[-1, -1, 2]));
         assert!((phi[0] - 3.0).abs() < 1e-12 && (phi[1] - 4.0).abs() < 1e-12);
         assert_eq!(phi[2], 0.0);
     }
