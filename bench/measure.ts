@@ -39,14 +39,14 @@ export async function collectGarbage(): Promise<void> {
 const SETTLE_MS = 20;
 
 /** Timed runs of each measurement, after one untimed run; the fastest counts. */
-export const REPEAT = 5;
+const REPEAT = 5;
 
 /**
  * Seconds of the fastest of `repeat` runs of `run`, after one run that is
  * not timed: V8 compiles both JavaScript and wasm in tiers, optimising what
  * runs hot, so a first run measures the compiler as much as the code.
  */
-export async function bestSeconds(run: () => unknown, repeat = REPEAT): Promise<number> {
+async function bestSeconds(run: () => unknown, repeat = REPEAT): Promise<number> {
   await run();
   let best = Infinity;
   for (let i = 0; i < repeat; i++) {
@@ -82,7 +82,7 @@ export function native(requests: TraceOptions[], repeat = REPEAT): NativeResult[
 }
 
 /** Seconds of the core's trace in wasm: stepping and recording only. */
-export async function wasmStepsSeconds(request: TraceOptions): Promise<number> {
+async function wasmStepsSeconds(request: TraceOptions): Promise<number> {
   const core = await loadCore();
   const json = encodeRequest(request);
   // The raw binding: the public trace() also asks for the summary and
@@ -91,12 +91,12 @@ export async function wasmStepsSeconds(request: TraceOptions): Promise<number> {
 }
 
 /** Seconds of trace() as users call it: steps and summary, no metrics (computed when first read). */
-export async function wasmFullSeconds(request: TraceOptions): Promise<number> {
+async function wasmFullSeconds(request: TraceOptions): Promise<number> {
   return bestSeconds(async () => (await trace(request)).free());
 }
 
 /** Seconds of the plain TypeScript reference of `request.algorithm`. */
-export async function typescriptSeconds(request: TraceOptions): Promise<number> {
+async function typescriptSeconds(request: TraceOptions): Promise<number> {
   const { algorithm, ...options } = request;
   const reference = REFERENCES[algorithm];
   if (!reference) throw new Error(`no TypeScript reference for ${algorithm}`);

@@ -7,7 +7,7 @@ import { accessSync, constants } from 'node:fs';
 import { delimiter, join } from 'node:path';
 
 /** Environment variable that names the Chromium (or Chrome) binary to use. */
-export const CHROMIUM_ENV = 'VOXPATH_CHROMIUM';
+const CHROMIUM_ENV = 'VOXPATH_CHROMIUM';
 
 /** Printed when no browser is found and none can be installed. */
 export const CHROMIUM_HINT =

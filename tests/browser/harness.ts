@@ -15,10 +15,10 @@ import { PNG } from 'pngjs';
 import { inject } from 'vitest';
 import { CHROMIUM_ARGS, CHROMIUM_HINT, findChromium } from '../../scripts/chromium.mjs';
 
-export const VIEWPORT = { width: 1280, height: 720 };
+const VIEWPORT = { width: 1280, height: 720 };
 
 /** Where screenshot() writes its PNGs (gitignored). */
-export const SCREENSHOT_DIR = join(dirname(fileURLToPath(import.meta.url)), '__screenshots__', 'actual');
+const SCREENSHOT_DIR = join(dirname(fileURLToPath(import.meta.url)), '__screenshots__', 'actual');
 
 /** One HTTP response the page received. */
 export interface ResponseRecord {
@@ -190,7 +190,7 @@ export interface StatsOptions {
 }
 
 /** Statistics of a PNG image (see ImageStats). */
-export function imageStats(png: Buffer, options: StatsOptions = {}): ImageStats {
+function imageStats(png: Buffer, options: StatsOptions = {}): ImageStats {
   const { width, height, data } = PNG.sync.read(png);
   const pixelCount = width * height;
   // Each pixel as one RGBA number, counted per distinct value.
