@@ -265,6 +265,8 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       [() => p.pointAtSeconds(any(5n)), 'seconds'],
       [() => p.pointAtSeconds(Number.NaN), 'seconds'],
       [() => p.motionChart(any(null), 1, 10), 'fromSeconds'],
+      [() => p.dwellSeconds(any(null), 1), 'fromSeconds'],
+      [() => p.dwellSeconds(0, Number.NaN), 'toSeconds'],
       [() => p.motionChart(0, any('1'), 10), 'toSeconds'],
     ];
     for (const [call, field] of cases) expect(thrown(call).field).toBe(field);

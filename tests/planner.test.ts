@@ -178,6 +178,19 @@ describe('chart rows and the step reached at an instant, for the page', () => {
     long.free();
   });
 
+  it('tells the dwell in the pause between two steps, for the timing diagram', async () => {
+    // Grbl's defaults (10 mm/s²): 2 mm at 600 mm/min is a triangle of
+    // 2·√(2·1/10) s, then G4 P2; the next move's first step 1/80 mm from rest, √(2/800) s later.
+    const p = await runGcode('G21 G90\nG1 X2 F600\nG4 P2\nG1 X4\n', { stepsPerMm: 80 });
+    const [before, after] = p.stepTimes(159, 161);
+    expect(before).toBeCloseTo(2 * Math.sqrt(0.2), 9);
+    expect(after! - before!).toBeCloseTo(2 + Math.sqrt(2 / 800), 9);
+    expect(p.dwellSeconds(before!, after!)).toBeCloseTo(2, 12);
+    expect(p.dwellSeconds(0, before!)).toBe(0);
+    expect(p.dwellSeconds(after!, Number.POSITIVE_INFINITY)).toBe(0);
+    p.free();
+  });
+
   it("gives a trace's speed per step at one tick a step and at a constant feed", async () => {
     // Bresenham (0,0) -> (8,3): 5 axis steps and 3 diagonal ones.
     const t = await trace({ algorithm: 'bresenham2d', from: [0, 0], to: [8, 3] });

@@ -633,6 +633,32 @@ impl Plan {
         }
     }
 
+    /// Seconds the machine waits at rest (G4 dwells, [`Planner::stop`])
+    /// between `from_seconds` and `to_seconds`: the waits whose middle is in
+    /// that span, summed. By the middle, not the ends: a wait starts where
+    /// the block before it ends, the instant of that block's last step, up
+    /// to a rounding of it, so a wait between two steps is found from their
+    /// instants either way. For the timing diagram, which says a pause
+    /// between two steps is a dwell.
+    pub fn dwell_seconds_between(&self, from_seconds: f64, to_seconds: f64) -> f64 {
+        // The instant each wait ends: its block's start, or the program's
+        // end for a wait after the last block.
+        let middle = |&(i, seconds): &(usize, f64)| {
+            let end = match i < self.len() {
+                true => self.block(i).start_seconds,
+                false => self.duration_seconds,
+            };
+            end - seconds / 2.0
+        };
+        // Waits come in block order, so in time: bisected to the first.
+        let first = self.dwells.partition_point(|w| middle(w) < from_seconds);
+        self.dwells[first..]
+            .iter()
+            .take_while(|w| middle(w) <= to_seconds)
+            // From +0: an empty f64 sum is -0, which JavaScript tells apart.
+            .fold(0.0, |sum, &(_, seconds)| sum + seconds)
+    }
+
     /// Block `i` as planned: its start from the nearest kept one before it.
     pub fn block(&self, i: usize) -> Block {
         let first = i - i % START_INTERVAL;

@@ -773,6 +773,22 @@ impl GcodeResult {
         Ok(self.timeline.step_seconds(from, to))
     }
 
+    /// Seconds the machine waits at rest for a G4 dwell between
+    /// `from_seconds` and `to_seconds` (the dwells whose middle is in that
+    /// span): which part of a pause between two steps is a dwell.
+    #[wasm_bindgen(js_name = dwellSeconds)]
+    pub fn dwell_seconds(&self, from_seconds: f64, to_seconds: f64) -> Result<f64, JsValue> {
+        if from_seconds.is_nan() {
+            return Err(to_js_error(&Error::field("fromSeconds", "is not a number")));
+        }
+        if to_seconds.is_nan() {
+            return Err(to_js_error(&Error::field("toSeconds", "is not a number")));
+        }
+        Ok(self
+            .timeline
+            .dwell_seconds_between(from_seconds, to_seconds))
+    }
+
     /// The planned speed over time as corners of a polyline: (seconds,
     /// mm/s) pairs, four per planner block (start, end of acceleration,
     /// start of deceleration, end), flat.

@@ -387,3 +387,49 @@ fn g92_brings_the_motion_to_rest_as_a_dwell_does() {
     assert_eq!(program.moves()[0].timing.exit_speed, 0.0);
     assert_eq!(program.moves()[1].timing.entry_speed, 0.0);
 }
+
+#[test]
+fn the_dwells_between_two_steps_are_told_from_their_instants() {
+    // Grbl's defaults: 2 mm at 600 mm/min (a = 10 mm/s²) is a triangle,
+    // 1 mm up to √20 = 4.47 mm/s and down, 2·√(2·1/10) = 0.894 s; then G4
+    // P2, the same 2 mm again (its first step 1/80 mm from rest, 50 ms), and
+    // G4 P0.5 at the end. The timing diagram asks which part of the pause
+    // between the last step before a dwell and the first after is one.
+    let defaults = Settings::from_json(r#"{"stepsPerMm": 80}"#).unwrap();
+    let program = run(
+        "G21 G90\nG1 X2 F600\nG4 P2\nG1 X4\nG4 P0.5\n",
+        defaults.clone(),
+    );
+    let timeline = &program.timeline;
+    let triangle = 2.0 * 0.2f64.sqrt();
+    let times = timeline.step_seconds(0, 320);
+    assert!(close(times[159], triangle), "{}", times[159]);
+    assert!(close(
+        times[160] - times[159],
+        2.0 + (2.0f64 / 80.0 / 10.0).sqrt()
+    ));
+    // Between the two steps: the dwell, whole, though its start is the
+    // instant of the step before up to a rounding.
+    assert!(close(
+        timeline.dwell_seconds_between(times[159], times[160]),
+        2.0
+    ));
+    assert!(close(
+        timeline.dwell_seconds_between(times[159] + 1e-12, times[160]),
+        2.0
+    ));
+    // Between steps of a move, none; over the whole program, both.
+    assert_eq!(timeline.dwell_seconds_between(times[100], times[159]), 0.0);
+    assert_eq!(timeline.dwell_seconds_between(times[160], times[319]), 0.0);
+    let end = program.info.duration_seconds;
+    assert!(close(end, 2.0 * triangle + 2.5));
+    assert!(close(timeline.dwell_seconds_between(times[319], end), 0.5));
+    assert!(close(timeline.dwell_seconds_between(0.0, end), 2.5));
+    assert_eq!(timeline.dwell_seconds_between(end, f64::INFINITY), 0.0);
+    // A stop with no wait (M5 after M3) has no dwell in it.
+    let stopped = run("M3 S1000\nG1 X2 F600\nM5\nG1 X4\n", defaults);
+    assert_eq!(
+        stopped.timeline.dwell_seconds_between(0.0, f64::INFINITY),
+        0.0
+    );
+}

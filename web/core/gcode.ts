@@ -144,6 +144,19 @@ export class GcodeProgram {
   }
 
   /**
+   * Seconds the machine waits at rest for a G4 dwell between fromSeconds
+   * and toSeconds (the dwells whose middle is in that span, summed): which
+   * part of a pause between two steps (stepTimes) is a dwell, the rest
+   * being the machine slowing to the stop and starting again.
+   */
+  dwellSeconds(fromSeconds: number, toSeconds: number): number {
+    const core = this.#core;
+    aNumber('fromSeconds', fromSeconds, 'seconds');
+    aNumber('toSeconds', toSeconds, 'seconds');
+    return callCore(() => core.dwellSeconds(fromSeconds, toSeconds));
+  }
+
+  /**
    * The planned speed over time: (seconds, mm/s) pairs, flat, four per
    * planner block (start, end of acceleration, start of deceleration, end);
    * an arc has one block per chord (Grbl's mc_arc).

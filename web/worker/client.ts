@@ -390,6 +390,11 @@ export class RemoteProgram extends RemoteTrace {
     return this.ask({ kind: 'pointAtSeconds', traceId: this.traceId, seconds });
   }
 
+  /** Seconds of G4 dwell between two instants (GcodeProgram.dwellSeconds): which part of a pause between two steps is a dwell. */
+  dwellSeconds(fromSeconds: number, toSeconds: number): Promise<number> {
+    return this.ask({ kind: 'dwellSeconds', traceId: this.traceId, fromSeconds, toSeconds });
+  }
+
   /** The planned speed and step rates over a window of time, in at most `buckets` rows (GcodeProgram.motionChart). */
   motionChart(fromSeconds: number, toSeconds: number, buckets: number): Promise<MotionChart> {
     return this.ask({ kind: 'motionChart', traceId: this.traceId, fromSeconds, toSeconds, buckets });

@@ -42,6 +42,7 @@ export type WorkerRequest =
   | { kind: 'stepClocks'; traceId: number; maxRows: number }
   | { kind: 'stepTimes'; traceId: number; fromStep: number; toStep: number }
   | { kind: 'pointAtSeconds'; traceId: number; seconds: number }
+  | { kind: 'dwellSeconds'; traceId: number; fromSeconds: number; toSeconds: number }
   | { kind: 'motionChart'; traceId: number; fromSeconds: number; toSeconds: number; buckets: number }
   | { kind: 'vcd'; traceId: number }
   | { kind: 'moves'; traceId: number; fromMove: number; toMove: number }
@@ -170,6 +171,8 @@ export interface ReplyValue {
   /** A program's step instants over the range, seconds (GcodeProgram.stepTimes). */
   stepTimes: Float64Array;
   pointAtSeconds: number;
+  /** Seconds of G4 dwell between two instants (GcodeProgram.dwellSeconds). */
+  dwellSeconds: number;
   motionChart: MotionChart;
   /** The program's STEP and DIR wires as a VCD file (GcodeProgram.vcd). */
   vcd: Uint8Array;

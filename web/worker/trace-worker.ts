@@ -132,6 +132,8 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
     }
     case 'pointAtSeconds':
       return { value: heldProgram(request.traceId).pointAtSeconds(request.seconds), transfer: [] };
+    case 'dwellSeconds':
+      return { value: heldProgram(request.traceId).dwellSeconds(request.fromSeconds, request.toSeconds), transfer: [] };
     case 'motionChart':
       return { value: heldProgram(request.traceId).motionChart(request.fromSeconds, request.toSeconds, request.buckets), transfer: [] };
     case 'vcd': {

@@ -454,6 +454,11 @@ impl Timeline {
         starts
     }
 
+    /// Seconds of dwell (G4) between two instants ([`Plan::dwell_seconds_between`]).
+    pub fn dwell_seconds_between(&self, from_seconds: f64, to_seconds: f64) -> f64 {
+        self.plan.dwell_seconds_between(from_seconds, to_seconds)
+    }
+
     /// The point index the machine has reached at `seconds`: how many steps
     /// happen at or before that instant (0 before the first; every step
     /// once the program has ended). Bisects the steps by their instants
