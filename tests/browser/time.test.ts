@@ -8,6 +8,7 @@
 // along the corner's bisector, limit_value_by_axis_maximum).
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
+import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { AXIS_COLOURS, PALETTE } from '../../web/scene/palette.js';
 import { closeAll, openPage, pixelsOf, screenshot } from './harness.js';
@@ -142,6 +143,99 @@ describe('G-code mode: time', () => {
     await page.getByTestId('timing').getByText(/planned instant, ms/).waitFor();
     // One step, said so ("for 1 steps" before).
     await expect.poll(() => page.getByTestId('total-time').innerText()).toMatch(/ for 1 step \(/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('ends the STEP/DIR window at a dwell, labelled, so that the pulses beside it stay readable, and crosses it', async () => {
+    // 2 mm at 600 mm/min (a triangle of 2·√0.2 = 0.894 s, a = 10 mm/s²),
+    // G4 P2, 2 mm more: 160 X steps each side of a 2 s dwell; the first
+    // step after it comes √(2·(1/80)/10) = 50 ms after the dwell, from rest.
+    // A window of steps counted around the current one spanned the dwell:
+    // 2.4 s, its 30-odd steps of 0.3 s pressed into bars at the edges.
+    const program = encodeURIComponent('G21 G90\nG1 X2 F600\nG4 P2\nG1 X4\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=80&gcode=${program}`);
+    const { page } = p;
+    await loaded(page, 320);
+    const timing = page.getByTestId('timing');
+    const goTo = async (step: number) => {
+      await page.getByTestId('jump-input').fill(String(step));
+      await page.getByTestId('jump-input').press('Enter');
+      await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step} of`) }).waitFor();
+    };
+    /**
+     * The X STEP and DIR edges drawn in the plot outside the pause (columns
+     * where a vertical stroke of X's colour stands, a run of columns each;
+     * the pause's label is as dark): how many, and their span as a share of
+     * the plot's width outside the pause.
+     */
+    const edges = async (name: string, pause: { x: number; width: number }) => {
+      const plot = (await timing.locator('.u-over').boundingBox())!;
+      const shot = await screenshot(page, name, plot);
+      const { width, height, data } = PNG.sync.read(readFileSync(shot.file));
+      const rgb = [1, 3, 5].map((i) => parseInt(AXIS_COLOURS[0]!.slice(i, i + 2), 16));
+      const stroke = (x: number) => {
+        let n = 0;
+        for (let y = 0; y < height; y++) {
+          const i = 4 * (y * width + x);
+          if (rgb.every((v, c) => Math.abs(data[i + c]! - v) <= 40)) n++;
+        }
+        // A vertical edge is a swing high (17 px); the lanes' levels a few px a column.
+        return n >= 10;
+      };
+      const [pauseFrom, pauseTo] = [pause.x - plot.x, pause.x + pause.width - plot.x];
+      const columns = Array.from({ length: width }, (_, x) => (x < pauseFrom - 1 || x > pauseTo + 1) && stroke(x));
+      const runs = columns.filter((on, x) => on && !columns[x - 1]).length;
+      const first = columns.indexOf(true);
+      const last = columns.lastIndexOf(true);
+      return { runs, spanShare: (last - first) / (width - pause.width), first: first / width, last: last / width };
+    };
+    const pauseBox = timing.locator('.chart-break');
+
+    // Point 160, the last step before the dwell: the window ends there, the dwell at its right edge.
+    await goTo(160);
+    await expect.poll(() => pauseBox.count()).toBe(1);
+    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nnext step\n+2.050 s');
+    const plot = (await timing.locator('.u-over').boundingBox())!;
+    const box = (await pauseBox.boundingBox())!;
+    // At the right edge, the steps drawn up to the dwell (steps 0..159 the first move's).
+    expect(box.x + box.width).toBeCloseTo(plot.x + plot.width, 0);
+    expect(box.width / plot.width).toBeLessThanOrEqual(0.46);
+    const drawn = async () => [Number(await timing.getAttribute('data-from-step')), Number(await timing.getAttribute('data-to-step'))];
+    const [from, to] = await drawn();
+    expect(to).toBe(160);
+    expect(to - from).toBeGreaterThanOrEqual(12);
+    await screenshot(page, 'timing-dwell-before', '[data-testid=timing]');
+    const before = await edges('timing-dwell-before-plot', box);
+    // The pulses spread over the plot left of the pause, most of it,
+    // each apart from the next (a rise and a fall a step; DIR has no edge:
+    // X only goes +), where the window across the dwell drew a few bars.
+    expect(before.spanShare, JSON.stringify(before)).toBeGreaterThan(0.75);
+    expect(before.last).toBeLessThan(1 - box.width / plot.width + 0.01);
+    expect(before.runs, JSON.stringify(before)).toBeGreaterThanOrEqual(to - from);
+
+    // Point 161, across the dwell: the window starts there, the dwell at its left edge.
+    await goTo(161);
+    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nstep before\n−2.050 s');
+    const left = (await pauseBox.boundingBox())!;
+    expect(left.x).toBeCloseTo(plot.x, 0);
+    const [fromAfter, toAfter] = await drawn();
+    expect(fromAfter).toBe(160);
+    await screenshot(page, 'timing-dwell-after', '[data-testid=timing]');
+    const after = await edges('timing-dwell-after-plot', left);
+    expect(after.spanShare, JSON.stringify(after)).toBeGreaterThan(0.75);
+    expect(after.first).toBeGreaterThan(left.width / plot.width - 0.01);
+    expect(after.runs, JSON.stringify(after)).toBeGreaterThanOrEqual(toAfter! - fromAfter!);
+    // Its time in ms, from the steps' own span (not the dwell's 2 s); the pause has no tick in it.
+    await timing.getByText(/planned instant, ms/).waitFor();
+
+    // Clicking the pause goes to the point the machine waits at: the last before it.
+    await page.mouse.click(left.x + left.width / 2, left.y + left.height / 2);
+    await page.getByTestId('step-counter').filter({ hasText: /^Step 160 of/ }).waitFor();
+    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nnext step\n+2.050 s');
+    // Far from the dwell, no pause: the window counted in steps.
+    await goTo(60);
+    await expect.poll(() => pauseBox.count()).toBe(0);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

@@ -39,6 +39,24 @@ export interface ChartSpec {
   pickX?: (x: number) => void;
   /** Text under the chart (a figure caption: what it shows, its source). */
   caption?: string;
+  /** Stretches of x not drawn to scale (setBreaks). */
+  xBreaks?: XBreak[];
+}
+
+/**
+ * A stretch of the x axis not drawn to its scale: the timing diagram's pause
+ * at an edge of its window, seconds long beside steps a millisecond apart.
+ * Drawn hatched over the lines, with `lines` of text in it (the page's own
+ * text, which a screen reader and a test read), and no x tick inside it: a
+ * tick's value there would be read as to scale.
+ */
+export interface XBreak {
+  fromX: number;
+  toX: number;
+  /** The label, a line each. */
+  lines: string[];
+  /** The label as one sentence (its title, and what a screen reader says). */
+  description: string;
 }
 
 /** The axes' tick labels: uPlot's own size, set here so that the y axis is measured in the font it draws. */
@@ -136,6 +154,9 @@ export class StepChart {
   readonly #resize: ResizeObserver;
   /** The cursor's x: the point index, or on a chart over time its instant. */
   #cursorX = 0;
+  #breaks: XBreak[] = [];
+  /** One box per break, over the plot, placed on every draw. */
+  #breakBoxes: HTMLElement[] = [];
 
   /** Builds the chart in `container` with `data` (x first); `onPick` gets the point index clicked. */
   constructor(container: HTMLElement, spec: ChartSpec, data: uPlot.AlignedData, onPick: (pointIndex: number) => void) {
@@ -144,6 +165,8 @@ export class StepChart {
     this.#figure.setAttribute('aria-label', spec.title);
     container.append(this.#figure);
     const references = spec.references ?? [];
+    // No x tick, label or grid line inside a break (its values are not to scale).
+    const outsideBreaks = (_u: uPlot, splits: number[]) => splits.map((v) => (this.#breaks.some((b) => v > b.fromX && v < b.toX) ? null : v));
     const opts: uPlot.Options = {
       title: spec.title,
       width: Math.max(200, container.clientWidth - 4),
@@ -155,7 +178,7 @@ export class StepChart {
       bands: spec.bands,
       scales: { x: spec.xRange ? { time: false, range: spec.xRange } : { time: false }, y: spec.yRange ? { range: spec.yRange } : {} },
       axes: [
-        { label: spec.xLabel, size: 36, font: TICK_FONT, space: xTickSpace },
+        { label: spec.xLabel, size: 36, font: TICK_FONT, space: xTickSpace, filter: outsideBreaks, grid: { filter: outsideBreaks }, ticks: { filter: outsideBreaks } },
         { label: spec.yLabel, size: yAxisSize, space: Y_TICK_SPACE_PX, font: TICK_FONT, values: spec.yValues, splits: spec.ySplits && (() => spec.ySplits!) },
       ],
       legend: { show: spec.legend ?? true, live: false },
@@ -202,10 +225,12 @@ export class StepChart {
             ctx.lineTo(x, u.bbox.top + u.bbox.height);
             ctx.stroke();
             ctx.restore();
+            this.#placeBreaks(u);
           },
         ],
       },
     };
+    this.#breaks = spec.xBreaks ?? [];
     this.#plot = new uPlot(opts, data, this.#figure);
     if (spec.caption) {
       const caption = document.createElement('figcaption');
@@ -237,6 +262,40 @@ export class StepChart {
     if (x === this.#cursorX) return;
     this.#cursorX = x;
     this.#plot.redraw(false, false);
+  }
+
+  /** The plot's width, CSS pixels (the chart's less its y axis). */
+  get plotWidthPx(): number {
+    return this.#plot.bbox.width / devicePixelRatio;
+  }
+
+  /** Replaces the breaks, drawn from the next draw on (setData's). */
+  setBreaks(breaks: XBreak[]): void {
+    this.#breaks = breaks;
+  }
+
+  /** Lays the breaks' boxes over the plot, where their x is now. */
+  #placeBreaks(u: uPlot): void {
+    while (this.#breakBoxes.length > this.#breaks.length) this.#breakBoxes.pop()!.remove();
+    this.#breaks.forEach((b, i) => {
+      let box = this.#breakBoxes[i];
+      if (!box) {
+        box = document.createElement('div');
+        box.className = 'chart-break';
+        box.setAttribute('role', 'note');
+        u.over.append(box);
+        this.#breakBoxes.push(box);
+      }
+      const leftPx = u.valToPos(b.fromX, 'x');
+      box.style.left = `${leftPx}px`;
+      box.style.width = `${u.valToPos(b.toX, 'x') - leftPx}px`;
+      box.title = b.description;
+      box.setAttribute('aria-label', b.description);
+      if (box.dataset.lines !== b.lines.join('\n')) {
+        box.dataset.lines = b.lines.join('\n');
+        box.replaceChildren(...b.lines.map((line) => Object.assign(document.createElement('span'), { textContent: line })));
+      }
+    });
   }
 
   /** Replaces the data (same series), keeping the cursor. */

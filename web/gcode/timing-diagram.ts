@@ -15,14 +15,22 @@
  * it (a driver's pulse is some µs, too thin to see at this scale; across a
  * stop or a dwell it stays as narrow as its neighbours'). The cursor is the instant the
  * current point is reached.
+ *
+ * A program's window stops at a pause (timing-window.ts): a dwell, a stop,
+ * a slow step before fast ones, much longer than the steps' spacing around
+ * the current step, would press their pulses into bars. The pause is drawn
+ * at that edge, not to scale, hatched and labelled with its length and the
+ * dwell in it (the core's dwellSeconds); the signals hold through it, DIR
+ * set half-way across it for the step on its other side, as the VCD sets it.
  */
 import uPlot from 'uplot';
-import { StepChart } from '../charts/chart.js';
+import { StepChart, type XBreak } from '../charts/chart.js';
 import { AXIS_NAMES } from '../format.js';
 import { AXIS_COLOURS } from '../scene/palette.js';
 import type { PulseWindow } from '../worker/protocol.js';
 import { drawnFromZero, pulseEdges, ROWS_PER_STEP } from './pulse-edges.js';
-import { timeUnit } from './time-format.js';
+import { formatSeconds, timeUnit } from './time-format.js';
+import { neededSteps, type Pause, type StepWindow, stepWindow, windowHolds } from './timing-window.js';
 
 /**
  * Ticks shown at once: as many as leave each tick this many CSS pixels, so
@@ -39,11 +47,58 @@ const FRAME_PX = 64;
 /** Lane pitch and signal swing, in lane units. */
 const LANE = 1.5;
 const SWING = 1;
+/**
+ * The width of a pause drawn at an edge, CSS pixels: room for its label,
+ * three short lines; at most PAUSE_MAX_SHARE of the plot, which leaves the
+ * steps the rest (the panel is some 300 px wide beside a 1280 px view).
+ */
+const PAUSE_PX = 76;
+const PAUSE_MAX_SHARE = 0.45;
 
 export interface PulsedTrace {
   dims: number;
   steps: number;
   pulseTrains(fromStep: number, toStep: number): Promise<PulseWindow>;
+  /** A program's seconds of G4 dwell between two instants (GcodeProgram.dwellSeconds). */
+  dwellSeconds?(fromSeconds: number, toSeconds: number): Promise<number>;
+}
+
+/** A pause at an edge of the window, as drawn: the dwell in it, and each axis's DIR on its far side. */
+interface EdgePause {
+  pause: Pause;
+  dwellSeconds: number;
+  /** Per axis, +1 or -1: DIR for the step after the pause (a pause after the window), or before it (one before). */
+  farDir: number[];
+}
+
+/** The signals of steps fromStep..toStep of a window fetched from step `first`. */
+function slicePulses({ trains, stepSeconds }: PulseWindow, first: number, fromStep: number, toStep: number): PulseWindow {
+  const [from, to] = [fromStep - first, toStep - first];
+  return {
+    trains: trains.map((t) => ({ step: t.step.subarray(from, to), dir: t.dir.subarray(from, to) })),
+    stepSeconds: stepSeconds?.subarray(from, to) ?? null,
+  };
+}
+
+/** A dwell's seconds as G4 gives them: "2 s", "0.5 s". */
+function dwellText(seconds: number): string {
+  return `${Number(seconds.toFixed(6))} s`;
+}
+
+/**
+ * The label of a pause at the window's edge `side`: what it is (a dwell or
+ * a pause), and the time to the step across it (`atStart`: the wait before
+ * the program's first step, from 0 s).
+ */
+function pauseLabel({ pause, dwellSeconds }: EdgePause, side: 'before' | 'after', atStart = false): { lines: string[]; description: string } {
+  const title = dwellSeconds > 0 ? `dwell ${dwellText(dwellSeconds)}` : 'pause';
+  const gap = formatSeconds(pause.toSeconds - pause.fromSeconds);
+  const kind = dwellSeconds > 0 ? `a pause with a G4 dwell of ${dwellText(dwellSeconds)} in it` : 'a pause';
+  if (side === 'after') return { lines: [title, 'next step', `+${gap}`], description: `${kind}: the next step comes ${gap} after the last one drawn (not to scale)` };
+  return {
+    lines: [title, atStart ? 'first step at' : 'step before', atStart ? gap : `−${gap}`],
+    description: `${kind}: the first step drawn comes ${gap} after the ${atStart ? "program's start" : 'step before it'} (not to scale)`,
+  };
 }
 
 export class TimingDiagram {
@@ -51,9 +106,12 @@ export class TimingDiagram {
   readonly #onPick: (pointIndex: number) => void;
   #trace: PulsedTrace | undefined;
   #chart: StepChart | undefined;
-  /** Step indices shown: fromStep..fromStep + #windowTicks. */
+  /** Step indices shown: fromStep..fromStep + #windowTicks (a program's: #window's, up to a pause). */
   #fromStep = -1;
   #windowTicks = MIN_WINDOW_TICKS;
+  #window: StepWindow | null = null;
+  /** Where a pause before the window is drawn from, in the axis's unit: the cursor of point 0 then. */
+  #pauseBeforeX: number | null = null;
   #request = 0;
   /** A program's window: its steps' instants, seconds, and the axis unit's factor from seconds. */
   #stepSeconds: Float64Array | null = null;
@@ -76,6 +134,8 @@ export class TimingDiagram {
     if (!trace || trace.steps === 0) {
       this.#chart?.destroy();
       this.#chart = undefined;
+      delete this.#container.dataset.fromStep;
+      delete this.#container.dataset.toStep;
     }
     void this.showPoint(pointIndex);
   }
@@ -84,16 +144,26 @@ export class TimingDiagram {
   async showPoint(pointIndex: number): Promise<void> {
     const trace = this.#trace;
     if (!trace || trace.steps === 0) return;
-    const margin = Math.floor(this.#windowTicks / 8);
-    const inside = this.#fromStep >= 0 && pointIndex >= this.#fromStep + margin && pointIndex <= this.#fromStep + this.#windowTicks - margin;
+    const inside = this.#fromStep >= 0 && windowHolds(this.#window!, pointIndex, this.#windowTicks, trace.steps, this.#stepSeconds !== null);
     if (!inside) {
       const request = ++this.#request;
       const ticks = Math.max(MIN_WINDOW_TICKS, Math.floor((this.#container.clientWidth - LABELS_PX) / TICK_PX));
-      const fromStep = Math.max(0, Math.min(pointIndex - Math.floor(ticks / 3), trace.steps - ticks));
-      const toStep = Math.min(trace.steps, fromStep + ticks);
-      let window: PulseWindow;
+      // The steps any window for this point can hold, and one past each
+      // edge: a program's window is chosen from their instants.
+      const needed = neededSteps(pointIndex, ticks, trace.steps);
+      let window: StepWindow;
+      let pulses: PulseWindow;
+      const pauses: { before: EdgePause | null; after: EdgePause | null } = { before: null, after: null };
       try {
-        window = await trace.pulseTrains(fromStep, toStep);
+        const fetched = await trace.pulseTrains(needed.fromStep, needed.toStep);
+        window = stepWindow(pointIndex, ticks, trace.steps, needed.fromStep, fetched.stepSeconds);
+        pulses = slicePulses(fetched, needed.fromStep, window.fromStep, window.toStep);
+        const dirAt = (k: number) => fetched.trains.map((t) => (k < 0 ? 1 : t.dir[k - needed.fromStep]!));
+        const edge = async (pause: Pause | null, farStep: number): Promise<EdgePause | null> =>
+          pause && { pause, dwellSeconds: (await trace.dwellSeconds?.(pause.fromSeconds, pause.toSeconds)) ?? 0, farDir: dirAt(farStep) };
+        // Before the program's first step DIR is + (the VCD's level before any step).
+        pauses.before = await edge(window.pauseBefore, window.fromStep - 1);
+        pauses.after = await edge(window.pauseAfter, window.toStep);
       } catch (error) {
         // The last trace's chart, kept until this window came, must not stay.
         if (request === this.#request && this.#fromStep < 0) {
@@ -103,9 +173,13 @@ export class TimingDiagram {
         throw error;
       }
       if (request !== this.#request || trace !== this.#trace) return;
-      this.#fromStep = fromStep;
+      this.#fromStep = window.fromStep;
       this.#windowTicks = ticks;
-      this.#draw(window);
+      this.#window = window;
+      // The steps drawn, for a reader (and a test) of the page.
+      this.#container.dataset.fromStep = String(window.fromStep);
+      this.#container.dataset.toStep = String(window.toStep);
+      this.#draw(pulses, pauses);
     }
     this.#chart?.showX(this.#xOfPoint(pointIndex));
   }
@@ -114,7 +188,8 @@ export class TimingDiagram {
   #xOfPoint(pointIndex: number): number {
     const times = this.#stepSeconds;
     if (!times) return pointIndex;
-    if (pointIndex === 0) return 0;
+    // At the start, in a wait drawn as a pause: the pause's start.
+    if (pointIndex === 0) return this.#pauseBeforeX ?? 0;
     const i = Math.max(0, Math.min(times.length - 1, pointIndex - 1 - this.#fromStep));
     return times[i]! * this.#perSecond;
   }
@@ -145,12 +220,23 @@ export class TimingDiagram {
     return { x: edges.map((t) => t * perSecond), unit };
   }
 
-  #draw({ trains, stepSeconds }: PulseWindow): void {
+  #draw({ trains, stepSeconds }: PulseWindow, pauses: { before: EdgePause | null; after: EdgePause | null }): void {
     const ticks = trains[0]!.step.length;
     this.#stepSeconds = stepSeconds;
     this.#perSecond = 1;
     const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#fromStep === 0);
     const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
+    // The x the pauses take, out of scale: PAUSE_PX each of the plot's width
+    // (the chart's own, or for a first chart the panel's less the lane labels).
+    const [startX, endX] = [idle ? 0 : x[0]!, x[x.length - 1]!];
+    const edges = (pauses.before ? 1 : 0) + (pauses.after ? 1 : 0);
+    const plotPx = this.#chart?.plotWidthPx ?? this.#container.clientWidth - LABELS_PX;
+    const share = Math.min(PAUSE_MAX_SHARE / Math.max(edges, 1), PAUSE_PX / Math.max(1, plotPx));
+    const pauseX = ((endX - startX) * share) / (1 - edges * share);
+    this.#pauseBeforeX = pauses.before ? startX - pauseX : null;
+    const breaks: XBreak[] = [];
+    if (pauses.before) breaks.push({ fromX: startX - pauseX, toX: startX, ...pauseLabel(pauses.before, 'before', this.#fromStep === 0) });
+    if (pauses.after) breaks.push({ fromX: endX, toX: endX + pauseX, ...pauseLabel(pauses.after, 'after') });
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
@@ -192,12 +278,28 @@ export class TimingDiagram {
     // it, where a DIR its first step needs is set (the VCD's DIR is + before
     // any step); every lane low until then.
     const withStart = (values: Float64Array, atZero: number, halfWay: number) => (idle ? Float64Array.of(atZero, halfWay, ...values) : values);
+    // A pause at an edge: two rows more, at its far end and half-way, where
+    // DIR is set for the step across it (lane i / 2's axis); STEP low.
+    const dirLevel = (i: number, dir: number) => laneBase(i) + (dir < 0 ? SWING : 0);
+    const withPauses = (values: Float64Array, before: [number, number] | null, after: [number, number] | null) =>
+      Float64Array.of(...(before ?? []), ...values, ...(after ?? []));
+    const before = pauses.before;
+    const after = pauses.after;
     const data: uPlot.AlignedData = [
-      withStart(x, 0, x[0]! / 2),
-      ...lanes.map((values, i) => withStart(values, laneBase(i), i % 2 === 0 ? laneBase(i) : values[0]!)),
+      withPauses(withStart(x, 0, x[0]! / 2), before && [startX - pauseX, startX - pauseX / 2], after && [endX + pauseX / 2, endX + pauseX]),
+      ...lanes.map((values, i) => {
+        const isStep = i % 2 === 0;
+        const axis = Math.floor(i / 2);
+        return withPauses(
+          withStart(values, laneBase(i), isStep ? laneBase(i) : values[0]!),
+          before && (isStep ? [laneBase(i), laneBase(i)] : [dirLevel(i, before.farDir[axis]!), values[0]!]),
+          after && (isStep ? [laneBase(i), laneBase(i)] : [dirLevel(i, after.farDir[axis]!), dirLevel(i, after.farDir[axis]!)]),
+        );
+      }),
     ];
     const xLabel = stepSeconds ? `planned instant (${unit})` : 'step';
     if (this.#chart && xLabel === this.#xLabel) {
+      this.#chart.setBreaks(breaks);
       this.#chart.setData(data);
       return;
     }
@@ -221,6 +323,7 @@ export class TimingDiagram {
         // A label per STEP lane and per DIR level, naming the signal and what the level means.
         yValues: (_u, splits) => splits.map((v) => labels.find((l) => Math.abs(l.at - v) < 1e-9)?.text ?? ''),
         ySplits: labels.map((l) => l.at).sort((a, b) => a - b),
+        xBreaks: breaks,
       },
       data,
       this.#onPick,

@@ -1,0 +1,88 @@
+// Which steps the G-code timing diagram draws (web/gcode/timing-window.ts).
+// A program of 160 steps 1 ms apart with a 2 s dwell between steps 79 and
+// 80 (as G1 X2, G4 P2, G1 X4 at 40 steps/mm would be, less the ramps): a
+// window of 60 steps counted around the current one spanned the dwell, 2 s,
+// and pressed its 60 ms of pulses into bars at its edges.
+import { describe, expect, it } from 'vitest';
+import { neededSteps, PAUSE_FACTOR, stepWindow, windowHolds } from '../web/gcode/timing-window.js';
+
+const STEPS = 160;
+const TICKS = 60;
+/** Step k's instant: 1 ms apart from 10 ms, the second move's 2.05 s after the first's last step. */
+const dwellAt = (k: number) => 0.01 + k * 1e-3 + (k >= 80 ? 2.05 : 0);
+const times = Float64Array.from({ length: STEPS }, (_, k) => dwellAt(k));
+
+/** stepWindow for point p, given the instants of the steps neededSteps asks for (as the diagram fetches them). */
+function windowFor(p: number, all = times, ticks = TICKS) {
+  const { fromStep, toStep } = neededSteps(p, ticks, all.length);
+  return stepWindow(p, ticks, all.length, fromStep, all.subarray(fromStep, toStep));
+}
+
+describe('the timing diagram window', () => {
+  it('ends at a dwell after the current step, with the steps before it, and starts at it once past', () => {
+    // Point 80, the last step before the dwell (step 79): the 60 steps up to it, the dwell at the right edge.
+    expect(windowFor(80)).toEqual({ fromStep: 20, toStep: 80, pauseBefore: null, pauseAfter: { fromSeconds: times[79], toSeconds: times[80] } });
+    // Point 81, the first step after it: 60 steps from it, the dwell at the left edge.
+    expect(windowFor(81)).toEqual({ fromStep: 80, toStep: 140, pauseBefore: { fromSeconds: times[79], toSeconds: times[80] }, pauseAfter: null });
+    // Further from it, the window counted in steps (a third before) stops at it all the same.
+    expect(windowFor(50)).toMatchObject({ fromStep: 20, toStep: 80, pauseBefore: null });
+    expect(windowFor(100)).toMatchObject({ fromStep: 80, toStep: 140, pauseAfter: null });
+    // Far enough that the window counted in steps does not reach it: that window, no pause.
+    expect(windowFor(30)).toEqual({ fromStep: 10, toStep: 70, pauseBefore: null, pauseAfter: null });
+    expect(windowFor(150)).toEqual({ fromStep: 100, toStep: 160, pauseBefore: null, pauseAfter: null });
+  });
+
+  it('keeps the window counted in steps when no gap is a pause, and for a trace', () => {
+    const even = Float64Array.from({ length: STEPS }, (_, k) => k * 1e-3);
+    expect(windowFor(80, even)).toEqual({ fromStep: 60, toStep: 120, pauseBefore: null, pauseAfter: null });
+    expect(stepWindow(80, TICKS, STEPS, 0, null)).toEqual({ fromStep: 60, toStep: 120, pauseBefore: null, pauseAfter: null });
+    // Steps slowing gradually, each gap 5 % longer than the one before: none ten times its neighbours'.
+    const slowing = Float64Array.from({ length: STEPS }, (_, k) => (1.05 ** k - 1) * 1e-3);
+    expect(windowFor(80, slowing)).toMatchObject({ fromStep: 60, toStep: 120, pauseBefore: null, pauseAfter: null });
+    // All at one instant (a move that does not take time): nothing to compare a pause with.
+    expect(windowFor(5, new Float64Array(20))).toEqual({ fromStep: 0, toStep: 20, pauseBefore: null, pauseAfter: null });
+  });
+
+  it('tells a pause by the spacing around the current step: ten times it', () => {
+    // Steps 1 ms apart with one gap of 9 ms and one of 11 ms: the window ends at the second, 60 steps up to it.
+    const gaps = Array.from({ length: STEPS - 1 }, (_, k) => (k === 70 ? 9e-3 : k === 100 ? 11e-3 : 1e-3));
+    const uneven = Float64Array.from({ length: STEPS }, (_, k) => gaps.slice(0, k).reduce((a, b) => a + b, 0));
+    expect(PAUSE_FACTOR).toBe(10);
+    expect(windowFor(80, uneven)).toMatchObject({ fromStep: 41, toStep: 101, pauseBefore: null, pauseAfter: { fromSeconds: uneven[100], toSeconds: uneven[101] } });
+    // A slow move between fast ones, and the current step in it: its own spacing is the measure, the fast steps no pause.
+    const slowMiddle = Float64Array.from({ length: STEPS }, (_, k) => (k < 70 ? k * 1e-3 : k < 90 ? 0.07 + (k - 70) * 0.05 : 1.07 + (k - 90) * 1e-3));
+    expect(windowFor(80, slowMiddle)).toMatchObject({ pauseBefore: null, pauseAfter: null });
+    // From a fast step, the slow ones after it are a pause.
+    expect(windowFor(60, slowMiddle)).toMatchObject({ fromStep: 11, toStep: 71, pauseAfter: { fromSeconds: slowMiddle[70], toSeconds: slowMiddle[71] } });
+  });
+
+  it("shows the wait before the program's first step as a pause where it is not drawn from 0 s", () => {
+    // A 2 s dwell first: steps from 2.01 s, 1 ms apart.
+    const late = Float64Array.from({ length: STEPS }, (_, k) => 2.01 + k * 1e-3);
+    expect(windowFor(0, late)).toEqual({ fromStep: 0, toStep: 60, pauseBefore: { fromSeconds: 0, toSeconds: 2.01 }, pauseAfter: null });
+    expect(windowFor(1, late)).toMatchObject({ pauseBefore: { fromSeconds: 0, toSeconds: 2.01 } });
+    // From rest, the first steps come slowly (s = ½at²): drawn from 0 s, no pause.
+    const fromRest = Float64Array.from({ length: STEPS }, (_, k) => 0.05 * Math.sqrt(k + 1));
+    expect(windowFor(0, fromRest)).toEqual({ fromStep: 0, toStep: 60, pauseBefore: null, pauseAfter: null });
+  });
+
+  it('holds while the current step is in it, away from an edge with steps past it', () => {
+    const before = windowFor(80);
+    // Up to the dwell at its right edge, and back 45 steps, it holds; past the dwell it does not.
+    for (const p of [30, 40, 60, 80]) expect(windowHolds(before, p, TICKS, STEPS, true), `point ${p}`).toBe(true);
+    expect(windowHolds(before, 81, TICKS, STEPS, true)).toBe(false);
+    // Within an eighth (7 steps) of its left edge, past which there are steps: a new window.
+    expect(windowHolds(before, 27, TICKS, STEPS, true)).toBe(false);
+    const after = windowFor(81);
+    expect(windowHolds(after, 81, TICKS, STEPS, true)).toBe(true);
+    expect(windowHolds(after, 80, TICKS, STEPS, true)).toBe(false);
+    expect(windowHolds(after, 134, TICKS, STEPS, true)).toBe(false);
+    // The program's edges have no steps past them.
+    expect(windowHolds(windowFor(0), 1, TICKS, STEPS, true)).toBe(true);
+    expect(windowHolds(windowFor(160), 160, TICKS, STEPS, true)).toBe(true);
+    // A trace's window of ticks follows the point, an eighth from its edges.
+    const ticks = stepWindow(80, TICKS, STEPS, 0, null);
+    expect(windowHolds(ticks, 67, TICKS, STEPS, false)).toBe(true);
+    expect(windowHolds(ticks, 66, TICKS, STEPS, false)).toBe(false);
+  });
+});

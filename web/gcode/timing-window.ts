@@ -1,0 +1,135 @@
+/**
+ * Which steps the timing diagram (timing-diagram.ts) draws around the
+ * current one. The window is counted in steps, about a third of them before
+ * the current one, but a program's steps are drawn at their instants: a
+ * pause inside the window (a G4 dwell, a stop, the one slow step before a
+ * fast move) made it span seconds while the steps beside the pause take
+ * milliseconds, and pressed their pulses into two bars at its edges. So the
+ * window ends (or starts) at a pause much longer than the steps' own spacing
+ * around the current step, and the steps it loses there are taken on the
+ * other side; the diagram shows the pause at that edge, labelled. Stepping
+ * past it moves the window to its other side.
+ */
+import { drawnFromZero } from './pulse-edges.js';
+
+/**
+ * A gap between two steps is a pause when it is longer than this many times
+ * the steps' own spacing around the current step: a window of 40 steps at
+ * that spacing then gives a pause at least a fifth of its width, pressing
+ * the steps beside it by as much, which is where a pulse starts to blur.
+ */
+export const PAUSE_FACTOR = 10;
+
+/** Gaps each side of the current step whose median is the steps' own spacing there (one long gap among them does not move it). */
+const SPACING_GAPS = 4;
+
+/** A stretch with no step, between two instants, seconds. */
+export interface Pause {
+  fromSeconds: number;
+  toSeconds: number;
+}
+
+export interface StepWindow {
+  /** The steps drawn: fromStep..toStep. */
+  fromStep: number;
+  toStep: number;
+  /** The pause the window starts at: from the instant of step fromStep - 1 (0 s before the program's first step) to that of step fromStep. */
+  pauseBefore: Pause | null;
+  /** The pause the window ends at: from the instant of step toStep - 1 to that of step toStep. */
+  pauseAfter: Pause | null;
+}
+
+/** The window counted in steps alone: `ticks` steps, a third before point `pointIndex`, within the program's `steps`. */
+function countedWindow(pointIndex: number, ticks: number, steps: number): { fromStep: number; toStep: number } {
+  const fromStep = Math.max(0, Math.min(pointIndex - Math.floor(ticks / 3), steps - ticks));
+  return { fromStep, toStep: Math.min(steps, fromStep + ticks) };
+}
+
+/**
+ * The step whose instant point `pointIndex` is reached at (step k reaches
+ * point k + 1; point 0, the start, is the first step's window).
+ */
+function currentStep(pointIndex: number, steps: number): number {
+  return Math.max(0, Math.min(steps - 1, pointIndex - 1));
+}
+
+/**
+ * The steps whose instants `stepWindow` needs for point `pointIndex`: any
+ * window of at most `ticks` steps holding its step, and one step more on
+ * each side, to see a pause at either edge.
+ */
+export function neededSteps(pointIndex: number, ticks: number, steps: number): { fromStep: number; toStep: number } {
+  const c = currentStep(pointIndex, steps);
+  return { fromStep: Math.max(0, c - ticks), toStep: Math.min(steps, c + ticks + 1) };
+}
+
+/**
+ * The steps to draw for point `pointIndex`, at most `ticks` of a program of
+ * `steps`, and the pauses it starts or ends at. `times`: the instants of
+ * steps firstStep..firstStep + times.length, seconds (at least
+ * `neededSteps`); null for a trace (one tick a step, no pause): the window
+ * counted in steps.
+ */
+export function stepWindow(pointIndex: number, ticks: number, steps: number, firstStep: number, times: Float64Array | null): StepWindow {
+  const counted = countedWindow(pointIndex, ticks, steps);
+  const none = { ...counted, pauseBefore: null, pauseAfter: null };
+  if (!times || steps === 0) return none;
+  const at = (k: number) => times[k - firstStep]!;
+  const first = firstStep;
+  const last = firstStep + times.length - 1;
+  const c = currentStep(pointIndex, steps);
+  const spacingSeconds = spacingAround(times, c - firstStep);
+  // Steps all at one instant (or a single step): no spacing to compare a pause with.
+  if (!(spacingSeconds > 0)) return none;
+  const pauseAt = (k: number) => k >= first && k + 1 <= last && at(k + 1) - at(k) > PAUSE_FACTOR * spacingSeconds;
+  // The pauses nearest the current step: the window stays between them.
+  let lo = c;
+  while (lo > first && lo > c - ticks + 1 && !pauseAt(lo - 1)) lo--;
+  let hi = c;
+  while (hi < last && hi < c + ticks - 1 && !pauseAt(hi)) hi++;
+  let fromStep = Math.max(counted.fromStep, lo);
+  let toStep = Math.min(counted.toStep, hi + 1);
+  // The steps cut off at a pause on one side are taken on the other.
+  if (toStep < counted.toStep) fromStep = Math.max(lo, toStep - ticks);
+  else if (fromStep > counted.fromStep) toStep = Math.min(hi + 1, fromStep + ticks);
+  const drawn = times.subarray(fromStep - firstStep, toStep - firstStep);
+  let pauseBefore: Pause | null = null;
+  if (fromStep > 0 && pauseAt(fromStep - 1)) pauseBefore = { fromSeconds: at(fromStep - 1), toSeconds: at(fromStep) };
+  // The wait before the program's first step: a pause where it is not drawn (drawnFromZero) and is one.
+  else if (fromStep === 0 && at(0) > PAUSE_FACTOR * spacingSeconds && !drawnFromZero(drawn, true)) pauseBefore = { fromSeconds: 0, toSeconds: at(0) };
+  const pauseAfter = toStep < steps && pauseAt(toStep - 1) ? { fromSeconds: at(toStep - 1), toSeconds: at(toStep) } : null;
+  return { fromStep, toStep, pauseBefore, pauseAfter };
+}
+
+/**
+ * The steps' own spacing around step index `i` of `times`, seconds: the
+ * median of the gaps over SPACING_GAPS steps each side, those that are not 0
+ * (steps at one instant); NaN for none.
+ */
+function spacingAround(times: Float64Array, i: number): number {
+  const gaps: number[] = [];
+  for (let k = Math.max(0, i - SPACING_GAPS); k < Math.min(times.length - 1, i + SPACING_GAPS); k++) {
+    const gap = times[k + 1]! - times[k]!;
+    if (gap > 0) gaps.push(gap);
+  }
+  gaps.sort((a, b) => a - b);
+  // The lower median: of 8 gaps with one pause among them, a gap beside it.
+  return gaps.length === 0 ? Number.NaN : gaps[Math.floor((gaps.length - 1) / 2)]!;
+}
+
+/**
+ * Whether the window drawn still serves point `pointIndex`, without a new
+ * one: its step is in it, and not within an eighth of the window of an edge
+ * past which there are steps to show (a pause's edge, or the program's, has
+ * none). A trace's window, counted in ticks, follows the point itself.
+ */
+export function windowHolds(window: StepWindow, pointIndex: number, ticks: number, steps: number, timed: boolean): boolean {
+  const margin = Math.floor(ticks / 8);
+  const { fromStep, toStep } = window;
+  if (!timed) return pointIndex >= fromStep + margin && pointIndex <= fromStep + ticks - margin;
+  const c = currentStep(pointIndex, steps);
+  if (c < fromStep || c >= toStep) return false;
+  const roomBefore = c >= fromStep + margin || window.pauseBefore !== null || fromStep === 0;
+  const roomAfter = c <= toStep - 1 - margin || window.pauseAfter !== null || toStep === steps;
+  return roomBefore && roomAfter;
+}
