@@ -644,9 +644,10 @@ impl Plan {
         // The instant each wait ends: its block's start, or the program's
         // end for a wait after the last block.
         let middle = |&(i, seconds): &(usize, f64)| {
-            let end = match i < self.len() {
-                true => self.block(i).start_seconds,
-                false => self.duration_seconds,
+            let end = if i < self.len() {
+                self.block(i).start_seconds
+            } else {
+                self.duration_seconds
             };
             end - seconds / 2.0
         };

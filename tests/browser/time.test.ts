@@ -319,10 +319,10 @@ describe('G-code mode: time', () => {
       await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toBe(text);
       await page.waitForFunction((runs) => {
         const status = document.querySelector('[data-testid=trace-status]')!.textContent ?? '';
-        return (!runs || (window as unknown as { statusChanged: boolean }).statusChanged) && /moves, \d+ steps/.test(status);
+        return (!runs || (window as unknown as { statusChanged: boolean }).statusChanged) && /moves, [\d,]+ steps/.test(status);
       }, runs);
       const status = page.getByTestId('trace-status');
-      const steps = Number(/moves, (\d+) steps/.exec(await status.innerText())![1]);
+      const steps = Number(/moves, ([\d,]+) steps/.exec(await status.innerText())![1]!.replaceAll(',', ''));
       expect(steps, file).toBeGreaterThan(0);
       await loaded(page, steps);
       const motion = page.getByTestId('motion');
