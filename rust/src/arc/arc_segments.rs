@@ -347,11 +347,7 @@ fn chords_by(
     };
     let chords = vertices(spec, n);
     let arc = spec.ideal_arc();
-    let helix = HelixPath {
-        arc: arc.clone(),
-        start_height: 0.0,
-        rise: spec.rise as f64,
-    };
+    let helix = HelixPath::new(arc.clone(), 0.0, spec.rise as f64);
     let mut builder = TraceBuilder::for_request(spec.from, req)?;
     // A line algorithm moves each axis at most one unit per step, so a
     // chord takes at least its largest |Δ| steps: an arc that needs more

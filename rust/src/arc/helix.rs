@@ -147,11 +147,7 @@ fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     if helix.remaining > builder.max_steps() {
         return Err(builder.too_long(helix.remaining));
     }
-    let ideal = HelixPath {
-        arc: spec.ideal_arc(),
-        start_height: 0.0,
-        rise: spec.rise as f64,
-    };
+    let ideal = HelixPath::new(spec.ideal_arc(), 0.0, spec.rise as f64);
     builder.run(helix, IdealPath::Helix(ideal))?;
     Ok(builder.finish(ID))
 }
@@ -621,6 +617,31 @@ mod tests {
         let starts: Vec<i64> = t.segments().map(|s| s.start.get(2)).collect();
         assert_eq!(starts, [0, 5, 10, 15]);
         assert!(matches!(t.segment(0).ideal, IdealPath::Helix(_)));
+    }
+
+    /// Method segments measures every point against the helix, as method
+    /// saleem does, not against its own chord's stretch of it alone: point
+    /// 66 of this helix, a rounded vertex (-177, -166, -7), is 0.111 from
+    /// the helix but was 0.704 from the stretch of the chord it starts
+    /// (measured to that stretch's start). Found by recomputing the
+    /// distance to the helix by sampling, outside voxpath.
+    #[test]
+    fn chords_measure_their_points_against_the_whole_helix() {
+        let json = r#"{"algorithm":"helix","from":[-111,-202,-6],"to":[-129,172,-13],"center":[-50,-12,-6],"dir":"cw","method":"segments","segmentLength":2}"#;
+        let t = INFO.trace_json(json, find_regions).unwrap();
+        let spec = ArcSpec::parse(&Request::from_json(json).unwrap(), true, 3).unwrap();
+        let whole = HelixPath::new(spec.ideal_arc(), 0.0, spec.rise as f64);
+        let deviation = t.deviation_range(0, t.steps() + 1);
+        let mut worst = 0f64;
+        for (k, p) in points(&t).into_iter().enumerate() {
+            let want = whole.deviation(&Point::new(&p));
+            worst = worst.max((deviation[k] - want).abs());
+        }
+        assert!(worst < 1e-9, "off the whole helix's distance by {worst}");
+        assert_eq!(points(&t)[66], [-177, -166, -7]);
+        assert!((deviation[66] - 0.1113).abs() < 1e-4, "{}", deviation[66]);
+        let max = deviation.iter().copied().fold(0.0, f64::max);
+        assert_eq!(t.metrics().max_deviation, max);
     }
 
     /// A full circle whose rule counts 1 chord (floor(2π 10 / 1000) = 0,

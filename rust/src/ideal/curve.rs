@@ -346,15 +346,37 @@ pub struct HelixPath {
     pub start_height: f64,
     /// Change of height over the whole sweep, grid units.
     pub rise: f64,
+    /// The fractions of this path's sweep between which a point is
+    /// measured (its nearest point sought): [0, 1] for a whole helix
+    /// ([`HelixPath::new`]). A piece ([`HelixPath::piece`], a chord's
+    /// stretch of the helix) keeps the whole helix's, so a chord's point is
+    /// measured against the helix, not against its own stretch of it alone:
+    /// a vertex rounded back past its fraction was measured to the end of
+    /// the next chord's stretch (0.704 where the helix passes 0.111 away).
+    pub measured: [f64; 2],
 }
 
 /// Newton iterations per candidate in [`HelixPath::deviation`].
 const NEWTON_ITERATIONS: usize = 8;
 
 impl HelixPath {
+    /// The whole helix: `arc` rising `rise` from `start_height`.
+    pub fn new(arc: ArcPath, start_height: f64, rise: f64) -> HelixPath {
+        HelixPath {
+            arc,
+            start_height,
+            rise,
+            measured: [0.0, 1.0],
+        }
+    }
+
+    /// The stretch between two fractions of this helix's sweep, measuring
+    /// points against the same helix as this one ([`Self::measured`]).
     pub fn piece(&self, start_fraction: f64, end_fraction: f64) -> HelixPath {
         let sweep = self.arc.sweep_rad;
+        let span = end_fraction - start_fraction;
         HelixPath {
+            measured: self.measured.map(|t| (t - start_fraction) / span),
             arc: self.arc.piece(
                 self.arc.start_rad + sweep * start_fraction,
                 sweep * (end_fraction - start_fraction),
@@ -378,26 +400,28 @@ impl HelixPath {
         (q[0] - r * c).powi(2) + (q[1] - r * s).powi(2) + (q[2] - self.rise * t).powi(2)
     }
 
-    /// The fraction t in [0, 1] at which the helix has the point's own angle,
-    /// on the turn whose height is nearest the point's (the middle of the
-    /// three candidates [`Self::deviation`] starts from).
+    /// The fraction t in [`Self::measured`] at which the helix has the
+    /// point's own angle, on the turn whose height is nearest the point's
+    /// (the middle of the three candidates [`Self::deviation`] starts from).
     fn same_angle_fraction(&self, q: [f64; 3]) -> [f64; 3] {
         let sweep = self.arc.sweep_rad;
+        let [lo, hi] = self.measured;
         let phi = q[1].atan2(q[0]);
         // t_k = (phi + 2πk - θ0) / s for whole k: the angles equal to phi.
         let t_of = |k: f64| (phi + TAU * k - self.arc.start_rad) / sweep;
         let height_fraction = if self.rise == 0.0 {
             0.5
         } else {
-            (q[2] / self.rise).clamp(0.0, 1.0)
+            (q[2] / self.rise).clamp(lo, hi)
         };
         let k = ((self.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
-        [k - 1.0, k, k + 1.0].map(|k| t_of(k).clamp(0.0, 1.0))
+        [k - 1.0, k, k + 1.0].map(|k| t_of(k).clamp(lo, hi))
     }
 
-    /// Distance from `p` to the helix (its nearest point, ends included).
+    /// Distance from `p` to the helix (its nearest point, ends included;
+    /// for a piece, the whole helix's: [`Self::measured`]).
     ///
-    /// Method: D(t) = |q - H(t)|² over t in [0, 1], where H(t) is the helix
+    /// Method: D(t) = |q - H(t)|² over t in [`Self::measured`], where H(t) is the helix
     /// at angle θ0 + s t and height rise t. Start Newton's method on
     /// D'(t) = 0 from the point's own angle on the turn nearest its height
     /// and the turns either side, and from both ends; take the smallest D.
@@ -408,9 +432,10 @@ impl HelixPath {
         let r = self.arc.radius();
         let s = self.arc.sweep_rad;
         let rise = self.rise;
+        let [lo, hi] = self.measured;
         let [before, nearest, after] = self.same_angle_fraction(q);
         let mut best = f64::INFINITY;
-        for start in [before, nearest, after, 0.0, 1.0] {
+        for start in [before, nearest, after, lo, hi] {
             let mut t = start;
             best = best.min(self.distance_sq(q, t));
             for _ in 0..NEWTON_ITERATIONS {
@@ -421,7 +446,7 @@ impl HelixPath {
                 if curvature <= 0.0 {
                     break;
                 }
-                let next = (t - slope / curvature).clamp(0.0, 1.0);
+                let next = (t - slope / curvature).clamp(lo, hi);
                 if next == t {
                     break;
                 }
@@ -652,11 +677,7 @@ mod tests {
             [0, 20, 5],
         ];
         for (radius_sq, start, sweep, rise) in helices {
-            let h = HelixPath {
-                arc: arc([0, 0, 0], radius_sq, start, sweep),
-                start_height: 0.0,
-                rise,
-            };
+            let h = HelixPath::new(arc([0, 0, 0], radius_sq, start, sweep), 0.0, rise);
             for p in points {
                 let p = Point::new(&p);
                 let (fast, slow) = (h.deviation(&p), brute_force(&h, &p));
@@ -672,11 +693,7 @@ mod tests {
     fn helix_axis_error_compares_at_the_same_angle() {
         // One turn of r = 5 rising 80 from height 0: at angle 90° the helix
         // is at height 20. A point at (0, 5, 23) is 3 high there.
-        let h = HelixPath {
-            arc: arc([0, 0, 0], 25, 0.0, TAU),
-            start_height: 0.0,
-            rise: 80.0,
-        };
+        let h = HelixPath::new(arc([0, 0, 0], 25, 0.0, TAU), 0.0, 80.0);
         let phi = h.axis_error(&Point::new(&[0, 5, 23]));
         assert!(phi[0].abs() < 1e-12 && phi[1].abs() < 1e-12, "{phi:?}");
         assert!((phi[2] - 3.0).abs() < 1e-12, "{phi:?}");
