@@ -15,10 +15,10 @@
 //! Saleem's linear axis advances evenly per arc step, not per degree. The
 //! circle takes 0.9003 r steps per radian on average (4 sqrt(2) r per turn),
 //! but in octant 1 it has taken r sin θ steps at angle θ, which leads or
-//! lags 0.9003 r θ by up to 0.0296 r (at θ = 25.8°; the other octants
-//! mirror it). That spread of 0.0593 r is 0.0593 / (2π × 0.9003) = 1.05% of a
+//! lags 0.9003 r θ by up to 0.0298 r (at θ = 25.8°; the other octants
+//! mirror it). That spread of 0.0596 r is 0.0596 / (2π × 0.9003) = 1.05% of a
 //! turn, so at a given angle the height differs from the true helix's by up
-//! to 1.05% of one turn's rise (0.52% for arcs from axis to axis), plus the
+//! to 1.05% of one turn's rise (0.53% for arcs from axis to axis), plus the
 //! height of two arc steps (rise / n_c each: one for the run of linear steps
 //! taken at one arc position, one because the discrete circle's count at an
 //! angle differs from the continuous r sin θ by up to a step) and half a
@@ -98,7 +98,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     family: Family::Arc,
     title: "Helix (arc plus linear axis)",
     citation: "Saleem & Saleem (2004), Bresenham type fast algorithm for 3-D linear and helical movement in CNC machines, section 5 (method saleem); chords as in arc-segments (method segments)",
-    teaching: "A helix is a circle in the plane while the linear (normal) axis travels. Saleem treats it as a 2D line between two axes: the arc, which needs n_c steps (counted by a dry run of the circle, the paper's dummy procedure), and the linear axis, which needs n_z. The larger one steps every iteration; the smaller one keeps a Bresenham error, adding 2 × its count each iteration and stepping when the error exceeds the larger count (then subtracting 2 × the larger count). The linear axis thus advances evenly per arc step, not per degree: the circle takes up to sqrt(2) times more steps per degree near the axes than near the diagonals (its fast axis moves r cos θ per radian), so at a given angle the height differs from the true helix's by up to about 1% of a turn's rise (1.05%: the arc's step count runs from 0.0296 r ahead of an even rate to 0.0296 r behind it; about half that for an arc that starts on an axis: the largest of sin θ/(4 sqrt 2) - θ/2π, 0.0053 of a turn). Method segments, as most controllers do, cuts the helix into chords with the height interpolated by angle.",
+    teaching: "A helix is a circle in the plane while the linear (normal) axis travels. Saleem treats it as a 2D line between two axes: the arc, which needs n_c steps (counted by a dry run of the circle, the paper's dummy procedure), and the linear axis, which needs n_z. The larger one steps every iteration; the smaller one keeps a Bresenham error, adding 2 × its count each iteration and stepping when the error exceeds the larger count (then subtracting 2 × the larger count). The linear axis thus advances evenly per arc step, not per degree: the circle takes up to sqrt(2) times more steps per degree near the axes than near the diagonals (its fast axis moves r cos θ per radian), so at a given angle the height differs from the true helix's by up to about 1% of a turn's rise (1.05%: the arc's step count runs from 0.0298 r ahead of an even rate to 0.0298 r behind it; about half that for an arc that starts on an axis: the largest of sin θ/(4 sqrt 2) - θ/2π, 0.0053 of a turn). Method segments, as most controllers do, cuts the helix into chords with the height interpolated by angle.",
     errata: &[
         "The helical() pseudo-code has no loop: the body under `if(nz > nc)` and `else` runs once. voxpath iterates max(n_c, n_z) times.",
         "helical() calls nextStep(currentX, currentY, r) with currentX and currentY never declared or set; they are the arc's current point relative to the center (eq. 12-13).",
@@ -617,6 +617,36 @@ mod tests {
         let starts: Vec<i64> = t.segments().map(|s| s.start.get(2)).collect();
         assert_eq!(starts, [0, 5, 10, 15]);
         assert!(matches!(t.segment(0).ideal, IdealPath::Helix(_)));
+    }
+
+    /// The teaching's numbers for the drift of Saleem's height against the
+    /// angle: r sin θ - (2 sqrt 2 / π) r θ peaks at 0.02982 r (θ = 25.8°),
+    /// 0.0053 of a turn of 4 sqrt 2 r steps. It said 0.0296 r. Found by a
+    /// helper's hunt recomputing the teaching's numbers.
+    #[test]
+    fn the_teaching_states_the_height_drift_it_computes() {
+        let rate = 2.0 * 2f64.sqrt() / PI;
+        let (mut peak, mut at) = (0f64, 0f64);
+        for i in 0..=1_000_000 {
+            let theta = PI / 4.0 * f64::from(i) / 1e6;
+            let lead = theta.sin() - rate * theta;
+            if lead > peak {
+                (peak, at) = (lead, theta);
+            }
+        }
+        let teaching = INFO.teaching;
+        assert!(
+            teaching.contains(&format!(
+                "{peak:.4} r ahead of an even rate to {peak:.4} r behind"
+            )),
+            "{peak}"
+        );
+        assert!(
+            teaching.contains(&format!("{:.2}%", 200.0 * peak / (4.0 * 2f64.sqrt()))),
+            "{teaching}"
+        );
+        assert!(teaching.contains(&format!("{:.4} of a turn", peak / (4.0 * 2f64.sqrt()))));
+        assert!((at.to_degrees() - 25.8).abs() < 0.05, "{}", at.to_degrees());
     }
 
     /// Method segments measures every point against the helix, as method
