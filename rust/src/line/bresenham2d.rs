@@ -401,8 +401,14 @@ impl Stepper for Bresenham2d {
                 .to_string();
         }
         let (major, minor) = (AXIS_NAMES[self.major], AXIS_NAMES[1 - self.major]);
+        // Said as the tie policy decides: with advance an error equal to
+        // |Δmajor| steps too (the note said "exceeds" whatever the policy).
+        let reaches = match self.tie {
+            TiePolicy::Hold => "exceeds",
+            TiePolicy::Advance => "reaches",
+        };
         let mut s = format!(
-            "Octant {} (Saleem Fig. 1): |Δ{major}| = {} is the major axis and steps every time; {minor} steps when its error, starting at 0 and growing by 2|Δ{minor}| = {}, exceeds |Δ{major}| = {}.",
+            "Octant {} (Saleem Fig. 1): |Δ{major}| = {} is the major axis and steps every time; {minor} steps when its error, starting at 0 and growing by 2|Δ{minor}| = {}, {reaches} |Δ{major}| = {}.",
             self.octant, self.term.threshold, self.term.two_minor, self.term.threshold,
         );
         if self.variant == Variant::Printed {
@@ -419,6 +425,29 @@ impl Stepper for Bresenham2d {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_setup_note_says_the_tie_policy_s_test() {
+        let note = |tie| {
+            Bresenham2d::new(
+                Point::new(&[0, 0]),
+                Point::new(&[10, 5]),
+                tie,
+                Variant::Corrected,
+            )
+            .setup_note()
+        };
+        assert!(
+            note(TiePolicy::Hold).contains("10, exceeds |Δx| = 10."),
+            "{}",
+            note(TiePolicy::Hold)
+        );
+        assert!(
+            note(TiePolicy::Advance).contains("10, reaches |Δx| = 10."),
+            "{}",
+            note(TiePolicy::Advance)
+        );
+    }
 
     #[test]
     fn octants_are_half_open_45_degree_ranges() {
