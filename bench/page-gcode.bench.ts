@@ -24,6 +24,7 @@ import type { Page } from 'playwright-core';
 import { build } from 'vite';
 import { CHROMIUM_ARGS, CHROMIUM_HINT, findChromium } from '../scripts/chromium.mjs';
 import { serveStatic } from '../scripts/static-server.mjs';
+import { countOf } from '../web/core/export.js';
 import { runGcode } from '../web/core/index.js';
 import { GCODE_BENCH_LINES } from './gcode.bench.js';
 import { collectGarbage } from './measure.js';
@@ -71,7 +72,8 @@ async function nodeRun(source: string, stepsPerMm: number): Promise<{ seconds: n
   const program = await runGcode(source, { stepsPerMm });
   const seconds = (performance.now() - started) / 1000;
   const { steps } = program;
-  const status = `${program.lines} lines, ${program.moveCount} moves, ${steps} steps at `;
+  // The page's own wording (web/page/status.ts), counts grouped.
+  const status = `${countOf(program.lines, 'line')}, ${countOf(program.moveCount, 'move')}, ${countOf(steps, 'step')} at `;
   program.free();
   return { seconds, steps, status };
 }
