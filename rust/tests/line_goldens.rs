@@ -484,4 +484,26 @@ fn explanations_name_the_values_that_decided() {
         ),
         "Octant 1: x steps every time; the error is 12 > 10, so the rule says y steps; y has reached its end coordinate, so the finish rule holds it (the printed program would now be 1 past the end); the step goes to (x+1, y)."
     );
+    // A step the finish rule forced is said as the rule's decision and then
+    // the override, as bresenham2d's is: it read "epsilon(y) = -1 < 0, so y
+    // steps", the comparison credited with the step it refused.
+    assert_eq!(
+        explain(
+            r#"{"algorithm":"liu-float","from":[0,0,0],"to":[7,3,1],"decimals":0}"#,
+            4
+        ),
+        "x steps as active; epsilon(y) = -1 < 0, so the rule says y holds (it has drifted -2.643 from its exact value); y has as many units left as there are steps, so the finish rule forces it; epsilon(z) = -1 < 0, so z holds (it has drifted -1.214 from its exact value); the step goes to (x+1, y+1, z)."
+    );
+    // dda's words (the finish rule seldom acts on its f64 drift): the same
+    // three cases.
+    use voxpath::line::Guard;
+    assert_eq!(Guard::Rule.decided(1, false, "stays"), "so y stays");
+    assert_eq!(
+        Guard::Held.decided(1, false, "stays"),
+        "so the rule says y steps"
+    );
+    assert_eq!(
+        Guard::Forced.decided(0, true, "stays"),
+        "so the rule says x stays"
+    );
 }

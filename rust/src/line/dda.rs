@@ -95,11 +95,11 @@ impl Decision for DdaWhy {
         let parts: Vec<String> = (0..self.dims)
             .map(|a| {
                 let name = AXIS_NAMES[a];
-                let verdict = if step.delta(a) != 0 { "steps" } else { "stays" };
                 format!(
-                    "{name} accumulator {} rounds to {}, so {name} {verdict}{}",
+                    "{name} accumulator {} rounds to {}, {}{}",
                     self.acc[a],
                     self.rounded[a],
+                    self.guards[a].decided(a, step.delta(a) != 0, "stays"),
                     self.guards[a].clause(a)
                 )
             })

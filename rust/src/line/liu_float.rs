@@ -223,14 +223,8 @@ impl Decision for LiuWhy {
             } else {
                 " < 0".to_string()
             };
-            let moved = if step.delta(axis) != 0 {
-                "steps"
-            } else {
-                "holds"
-            };
-            s.push_str(&format!(
-                "; epsilon({name}) = {e:.d$}{verdict}, so {name} {moved}"
-            ));
+            let decided = self.guards[axis].decided(axis, step.delta(axis) != 0, "holds");
+            s.push_str(&format!("; epsilon({name}) = {e:.d$}{verdict}, {decided}"));
             if drift.abs() >= 0.5 * 10f64.powi(-(self.decimals as i32)) {
                 s.push_str(&format!(
                     " (it has drifted {drift:+.3} from its exact value)"

@@ -409,6 +409,23 @@ impl Guard {
             .unwrap_or(Guard::Rule)
     }
 
+    /// What the rule decided for `axis`, for an explanation before
+    /// [`Guard::clause`]: the step's own move (`moved`, or `stays`, the
+    /// algorithm's word for not moving) where the rule decided, else what
+    /// the finish rule overrode, as bresenham2d says it ("so the rule says
+    /// y steps; y has reached its end coordinate, so the finish rule holds
+    /// it"). The step's move was said as the rule's: "epsilon(y) = -1 < 0,
+    /// so y steps (...); y has as many units left as there are steps, so
+    /// the finish rule forces it".
+    pub fn decided(self, axis: usize, moved: bool, stays: &str) -> String {
+        let name = AXIS_NAMES[axis];
+        match self {
+            Guard::Rule => format!("so {name} {}", if moved { "steps" } else { stays }),
+            Guard::Held => format!("so the rule says {name} steps"),
+            Guard::Forced => format!("so the rule says {name} {stays}"),
+        }
+    }
+
     /// A clause for an explanation, "" when the rule decided.
     pub fn clause(self, axis: usize) -> String {
         match self {
