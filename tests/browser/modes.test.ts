@@ -654,6 +654,10 @@ describe('G-code mode', () => {
     const lines = ['G21 G90 F600', ...Array.from({ length: 10_000 }, (_, k) => `G1 X${(k % 50) + 1}`)];
     const p = await openPage('?mode=gcode');
     const { page } = p;
+    // The page's own program run first: pasted while it still loaded, the paste
+    // could be run over by it (seen under load in CI: the listing stayed hidden,
+    // or the status never named the pasted program).
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     await p.context.grantPermissions(['clipboard-read', 'clipboard-write']);
     await page.evaluate((text) => navigator.clipboard.writeText(text), lines.join('\n') + '\n');
     const editor = page.getByTestId('gcode-text');
