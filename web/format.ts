@@ -1,7 +1,7 @@
 /** How the page writes grid quantities, the same way in every view. */
 
 export { AXIS_NAMES } from './core/axes.js';
-export { countOf } from './core/export.js';
+export { countOf, grouped } from './core/export.js';
 
 /** What the page shows for a decision value where its column does not apply to the step. */
 export const NO_VALUE_TEXT = '—';

@@ -376,9 +376,14 @@ export function comparisonToTable(comparison: Comparison): string {
   return lines.join('\n') + '\n';
 }
 
-/** "1 move", "12 moves", "6,400 steps": a count with its noun, singular for one, its thousands grouped (as the step counter's). */
+/** "6,400": a count with its thousands grouped, as every count voxpath prints is. */
+export function grouped(count: number): string {
+  return count.toLocaleString('en-US');
+}
+
+/** "1 move", "12 moves", "6,400 steps": a count with its noun, singular for one, its thousands grouped. */
 export function countOf(count: number, noun: string, plural = `${noun}s`): string {
-  return `${count.toLocaleString('en-US')} ${count === 1 ? noun : plural}`;
+  return `${grouped(count)} ${count === 1 ? noun : plural}`;
 }
 
 /**

@@ -11,7 +11,7 @@ import { type AppState, tracedAlgorithms, type Catalogue, comparedValues, experi
 import { GCODE_URL_LIMIT, stateToQuery } from '../state/query.js';
 import type { Store } from '../state/store.js';
 import { staleness } from '../state/stale.js';
-import { formatPoint } from '../format.js';
+import { formatPoint, grouped } from '../format.js';
 
 export interface EmbedElements {
   /** Embedded: the link to the same state in the full page, in the views' corner. */
@@ -91,7 +91,7 @@ export function embedding(store: Store<AppState>, catalogue: Catalogue, e: Embed
     }
     if (e.dialog.open) {
       e.snippet.value = iframeSnippet(state, catalogue);
-      const limit = GCODE_URL_LIMIT.toLocaleString('en');
+      const limit = grouped(GCODE_URL_LIMIT);
       const note =
         staleness() !== undefined
           ? 'The inputs were not traced as they are (see the message by them), so the frame may not show what is on screen: mend them first (or run a cancelled run to its end).'

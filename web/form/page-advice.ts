@@ -9,20 +9,19 @@
  */
 import type { GcodeDiagnostic } from '../core/index.js';
 import type { Limit } from '../core/types.js';
-
-const count = (n: number) => n.toLocaleString('en');
+import { grouped } from '../format.js';
 
 /** Where a command-line run could go past the page's cap, and when none could. */
 function elsewhere(limit: Limit, command: string): string {
   return limit.atLeast <= limit.most
-    ? ` The command line goes up to ${count(limit.most)} steps: ${command} --max-steps ${limit.atLeast}.`
-    : ` No trace may have that many steps (${count(limit.most)} at most, anywhere).`;
+    ? ` The command line goes up to ${grouped(limit.most)} steps: ${command} --max-steps ${limit.atLeast}.`
+    : ` No trace may have that many steps (${grouped(limit.most)} at most, anywhere).`;
 }
 
 /** What to do about a path (trace or compare mode) that needs more steps than the page draws. */
 export function pathLimitAdvice(limit: Limit): string {
   return (
-    `This path needs at least ${count(limit.atLeast)} steps; the page draws at most ${count(limit.value)} (its ${limit.option}, fixed). ` +
+    `This path needs at least ${grouped(limit.atLeast)} steps; the page draws at most ${grouped(limit.value)} (its ${limit.option}, fixed). ` +
     'Shorten the move: bring its points closer together (drag a handle, or type smaller coordinates), or give an arc fewer turns.' +
     elsewhere(limit, 'voxpath trace')
   );
@@ -31,7 +30,7 @@ export function pathLimitAdvice(limit: Limit): string {
 /** What to do about a program that needs more steps than the page runs. */
 function programLimitAdvice(limit: Limit, line: number): string {
   return (
-    `By line ${line} the program needs at least ${count(limit.atLeast)} steps; the page runs at most ${count(limit.value)} (its ${limit.option}, fixed). ` +
+    `By line ${line} the program needs at least ${grouped(limit.atLeast)} steps; the page runs at most ${grouped(limit.value)} (its ${limit.option}, fixed). ` +
     'Lower stepsPerMm under Machine, or shorten the moves.' +
     elsewhere(limit, 'voxpath gcode')
   );

@@ -3,7 +3,7 @@
  * the random-lines experiment's. Hidden while nothing runs.
  */
 
-import { countOf } from '../format.js';
+import { countOf, grouped } from '../format.js';
 
 /** How far a run has got: the lines run (of a program, or of the experiment) and the steps they took. */
 export interface LinesProgress {
@@ -40,7 +40,7 @@ export class RunProgress {
     if (!progress) return;
     bar.max = Math.max(1, progress.lines);
     bar.value = progress.linesDone;
-    const said = `${verb ? `${verb}: ` : ''}${progress.linesDone.toLocaleString('en-US')} of ${countOf(progress.lines, 'line')}, ${countOf(progress.steps, 'step')}`;
+    const said = `${verb ? `${verb}: ` : ''}${grouped(progress.linesDone)} of ${countOf(progress.lines, 'line')}, ${countOf(progress.steps, 'step')}`;
     bar.setAttribute('aria-valuetext', said);
     if (text) text.textContent = said;
   }

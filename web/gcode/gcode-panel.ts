@@ -20,7 +20,7 @@ import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js
 import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
 import { RunProgress } from '../form/run-progress.js';
-import { countOf, formatPoint, sentence } from '../format.js';
+import { countOf, formatPoint, grouped, sentence } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs, OptionSetter } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
@@ -279,7 +279,7 @@ export class GcodePanel {
       // Counted as the core counts them (and the status line says): a final
       // line break ends the last line rather than starting an empty one.
       const lines = this.#lineCount - (/[\n\r]$/.test(text) ? 1 : 0);
-      longNote.querySelector('.long-lines')!.textContent = lines.toLocaleString('en');
+      longNote.querySelector('.long-lines')!.textContent = grouped(lines);
     } else if (!fromBox) {
       box.value = text;
     }

@@ -15,7 +15,7 @@
 import type uPlot from 'uplot';
 import { StepChart } from '../charts/chart.js';
 import type { GcodeProgramInfo, MotionChart } from '../core/index.js';
-import { AXIS_NAMES } from '../format.js';
+import { AXIS_NAMES, countOf } from '../format.js';
 import { afterNextFrame } from '../main-thread.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
 import { formatSeconds } from './time-format.js';
@@ -95,7 +95,7 @@ export class MotionCharts {
     this.#container.hidden = !program;
     if (!program) return;
     const record = program.program;
-    this.#summary.textContent = `Total time on the planned profile: ${formatSeconds(record.durationSeconds)} for ${record.steps.toLocaleString('en-US')} ${record.steps === 1 ? 'step' : 'steps'} (Grbl 1.1's planner: trapezoids, junction deviation, look-ahead over the whole program).`;
+    this.#summary.textContent = `Total time on the planned profile: ${formatSeconds(record.durationSeconds)} for ${countOf(record.steps, 'step')} (Grbl 1.1's planner: trapezoids, junction deviation, look-ahead over the whole program).`;
     this.#instant.textContent = '';
     await afterNextFrame();
     if (request !== this.#request) return;

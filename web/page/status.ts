@@ -5,7 +5,7 @@
  */
 import { diagnosticText } from '../form/page-advice.js';
 import type { LinesProgress } from '../form/run-progress.js';
-import { clause, countOf, formatPoint } from '../format.js';
+import { clause, countOf, formatPoint, grouped } from '../format.js';
 import type { Mode } from '../state/app-state.js';
 import type { MeasuredTrace } from '../worker/client.js';
 import type { ProgramRecord } from '../worker/protocol.js';
@@ -54,7 +54,7 @@ export class Status {
 
   /** How far a long run has got: a program's ('Running') or the experiment's ('Tracing'), at the line it has reached. */
   running(verb: string, progress: LinesProgress): void {
-    this.#say(`${verb}: line ${(progress.stoppedAtLine ?? progress.linesDone).toLocaleString('en-US')} of ${progress.lines.toLocaleString('en-US')}, ${countOf(progress.steps, 'step')} so far…`);
+    this.#say(`${verb}: line ${grouped(progress.stoppedAtLine ?? progress.linesDone)} of ${grouped(progress.lines)}, ${countOf(progress.steps, 'step')} so far…`);
   }
 
   /** What is now on screen. */

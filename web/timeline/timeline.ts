@@ -9,6 +9,7 @@
  * program with the slowdown set, it runs in machine time (MachineClock): the
  * steps come at their planned instants, slowed down.
  */
+import { grouped } from '../format.js';
 import { formatSeconds } from '../gcode/time-format.js';
 import { type AppState, SLOWDOWNS, SPEEDS_STEPS_PER_SECOND } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
@@ -259,7 +260,7 @@ export class Timeline {
     e.scrubber.value = String(pointIndex);
     // No path (its input refused): the step a link asked for waits for one; "Step 3 of 0" read as a bug.
     // Thousands grouped, as the time charts' totals are: "Step 0 of 49999336" had to be counted by eye.
-    const text = none ? 'No path' : `Step ${pointIndex.toLocaleString('en-US')} of ${steps.toLocaleString('en-US')}`;
+    const text = none ? 'No path' : `Step ${grouped(pointIndex)} of ${grouped(steps)}`;
     e.scrubber.setAttribute('aria-valuetext', text);
     e.counter.value = text;
     // Announcing every step of playback would drown a screen reader.
