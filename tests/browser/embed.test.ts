@@ -199,6 +199,44 @@ describe('embedded', () => {
     await p.close();
   });
 
+  it('keeps at least half of a 320 x 180 or 400 x 225 frame for its view, the playback whole under it', async () => {
+    // The playback, the reason and the clock took all but 18 to 115 px of it; a link's note all but 2.
+    const side = 'mode=compare&layout=side&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6&step=5';
+    const note = 'algorithm=regionz&from=0,0&to=7,-3';
+    for (const [width, height] of [
+      [320, 180],
+      [400, 225],
+    ] as const) {
+      for (const query of [EXAMPLE, 'mode=gcode&slowdown=1000', side, note]) {
+        const p = await openPage(`?embed=1&${query}`);
+        const { page } = p;
+        await page.setViewportSize({ width, height });
+        await page.getByTestId('step-counter').filter({ hasText: /of [1-9]/ }).waitFor();
+        await page.waitForTimeout(300);
+        const at = `${query} at ${width}x${height}`;
+        const { views, controls, scrollHeight } = await page.evaluate(() => {
+          const box = (e: Element) => e.getBoundingClientRect().toJSON() as { top: number; bottom: number; left: number; right: number; height: number };
+          return {
+            views: [...document.querySelectorAll('.viewport')].filter((v) => (v as HTMLElement).checkVisibility()).map(box),
+            controls: [...document.querySelectorAll<HTMLElement>('.timeline input, .timeline button, .timeline select, .timeline output')].filter((e) => e.checkVisibility()).map((e) => ({ name: e.id, ...box(e) })),
+            scrollHeight: document.documentElement.scrollHeight,
+          };
+        });
+        expect(views.length, at).toBe(query === side ? 2 : 1);
+        // With a link's note above it, a third.
+        const least = query === note ? height / 3 : height / 2;
+        for (const view of views) expect(view.height, `${at}: the view's height`).toBeGreaterThanOrEqual(least);
+        expect(controls.map((c) => c.name), at).toEqual(expect.arrayContaining(['scrubber', 'step-counter', 'first', 'previous', 'play', 'next', 'last', 'speed']));
+        const outside = controls.filter((c) => c.top < 0 || c.left < 0 || c.bottom > height + 0.5 || c.right > width + 0.5).map((c) => c.name);
+        expect(outside, `${at}: controls outside the frame`).toEqual([]);
+        expect(scrollHeight, `${at}: nothing runs off the frame`).toBeLessThanOrEqual(height);
+        await screenshot(page, `embed-${width}x${height}-${query === side ? 'side' : query === note ? 'link-note' : query.includes('gcode') ? 'machine-time' : 'trace'}`);
+        expect(p.problems()).toEqual([]);
+        await p.close();
+      }
+    }
+  });
+
   it('keeps its link to the full page off the views, one and two side by side, at 640 x 480', async () => {
     for (const query of [`?embed=1&${EXAMPLE}`, '?embed=1&mode=compare&algorithm=regions&other=bresenham3d&layout=side&from=0,0,0&to=10,7,6&step=5']) {
       const p = await openPage(query);
