@@ -50,11 +50,16 @@ describe('page state in the URL query', () => {
     expect(notes.fitted).toEqual([]);
     expect(notes.unread).toEqual(['mode=tracee', 'algorithm=regionz', 'from=5,abc,2', 'to=9999999999999999... (3004 characters)', 'tie=sideways', 'step=-1', 'view=4d', 'camera=1,2']);
     expect([state.mode, state.algorithm, state.options.from, state.options.tie]).toEqual(['trace', 'regions', [0, 0, 0], first().options.tie]);
+    // A step it reads is kept for the note, which says once traced whether it is past the path's end.
+    expect(notes.step).toBeUndefined();
+    const read: LinkNotes = { unread: [], fitted: [] };
+    stateFromQuery('from=0,0,0&to=10,7,6&step=500', catalogue, read);
+    expect(read).toEqual({ unread: [], fitted: [], step: 500 });
     // Every link the page writes is read whole.
     for (const written of [first(), { ...first(), mode: 'compare' as const, other: 'bresenham3d', layout: 'side' as const }, { ...first(), mode: 'gcode' as const }, { ...first(), mode: 'experiment' as const }]) {
       const none: LinkNotes = { unread: [], fitted: [] };
       stateFromQuery(stateToQuery(written, url), catalogue, none);
-      expect(none).toEqual({ unread: [], fitted: [] });
+      expect([none.unread, none.fitted]).toEqual([[], []]);
     }
   });
 

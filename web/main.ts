@@ -12,7 +12,7 @@ import { ExperimentPanel } from './experiment/experiment-panel.js';
 import { AlgorithmInputs } from './form/algorithm-inputs.js';
 import { OptionsForm } from './form/options-form.js';
 import { RunProgress } from './form/run-progress.js';
-import { sentence } from './format.js';
+import { grouped, sentence } from './format.js';
 import { GcodePanel } from './gcode/gcode-panel.js';
 import { TimingDiagram } from './gcode/timing-diagram.js';
 import { TimeViews } from './page/time-views.js';
@@ -69,11 +69,15 @@ const scene = new SceneView(byId('viewport', HTMLDivElement), {
 function run(catalogue: Catalogue): void {
   const notes: LinkNotes = { unread: [], fitted: [] };
   const store = new Store<AppState>(loadState(catalogue, notes));
-  // A link's values the page cannot read were taken as their defaults, and its points fitted to the axes shown, without a word.
+  // A link's values the page cannot read were taken as their defaults, its points fitted to the axes shown, and (said once traced: firstPaths) its step past the path's end shown at the end, without a word.
   const linkNote = byId('link-note', HTMLParagraphElement);
   const unread = notes.unread.length > 0 ? [`Not understood in this link, so left at their defaults: ${notes.unread.join(', ')}.`] : [];
-  linkNote.textContent = [...unread, ...notes.fitted.map(sentence)].join(' ');
-  linkNote.hidden = linkNote.textContent === '';
+  const linkSentences = [...unread, ...notes.fitted.map(sentence)];
+  const showLinkNote = () => {
+    linkNote.textContent = linkSentences.join(' ');
+    linkNote.hidden = linkSentences.length === 0;
+  };
+  showLinkNote();
   const storageNote = byId('storage-note', HTMLParagraphElement);
   persistState(store, catalogue, (kept) => {
     storageNote.hidden = kept;
@@ -255,6 +259,13 @@ function run(catalogue: Catalogue): void {
     embedProblem: byId('embed-problem', HTMLParagraphElement),
     exports,
     inspectorHeading: byId('inspector-heading', HTMLHeadingElement),
+    firstPaths: (lastPoint) => {
+      if (notes.step === undefined || notes.step <= lastPoint) return;
+      const { mode } = store.state;
+      const whose = mode === 'compare' ? "the longer path's" : mode === 'gcode' ? "the program's" : "this path's";
+      linkSentences.push(`step ${grouped(notes.step)} is past ${whose} last step, ${grouped(lastPoint)}: shown at its end.`);
+      showLinkNote();
+    },
   });
   orchestrator = page;
   exports.refresh(false);

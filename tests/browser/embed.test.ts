@@ -179,6 +179,30 @@ describe('embedded', () => {
     }
   });
 
+  it("says when its link's step is past the path's end, once traced, in the full page too (it opened at the end without a word)", async () => {
+    const past = 'mode=trace&algorithm=bresenham3d&from=0,0,0&to=10,7,6&step=500';
+    for (const [query, counter, said] of [
+      [past, 'Step 10 of 10', "step 500 is past this path's last step, 10: shown at its end."],
+      [`embed=1&${past}`, 'Step 10 of 10', "step 500 is past this path's last step, 10: shown at its end."],
+      // After what the page could not read; the longer path's end; a program's.
+      ['algorithm=regions&from=0,0,0&to=10,7,6&tie=sideways&step=11', 'Step 10 of 10', "Not understood in this link, so left at their defaults: tie=sideways. step 11 is past this path's last step, 10: shown at its end."],
+      ['embed=1&mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6&step=30', 'Step 23 of 23', "step 30 is past the longer path's last step, 23: shown at its end."],
+      ['embed=1&mode=gcode&step=10000', 'Step 6,400 of 6,400', "step 10,000 is past the program's last step, 6,400: shown at its end."],
+    ] as const) {
+      const p = await openPage(query);
+      const { page } = p;
+      await page.getByTestId('step-counter').filter({ hasText: counter }).waitFor();
+      expect(await page.getByTestId('link-note').innerText(), query).toBe(said);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+    // Its last step says nothing.
+    const last = await openPage('?embed=1&mode=trace&algorithm=bresenham3d&from=0,0,0&to=10,7,6&step=10');
+    await last.page.getByTestId('step-counter').filter({ hasText: 'Step 10 of 10' }).waitFor();
+    expect(await last.page.getByTestId('link-note').isVisible()).toBe(false);
+    await last.close();
+  });
+
   it("keeps a 320 x 240 G-code frame's labels inside its view (x's hung 2 px below it)", async () => {
     const p = await openPage('?embed=1&mode=gcode');
     const { page } = p;

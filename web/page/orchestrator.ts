@@ -120,6 +120,8 @@ export interface PageParts {
   /** The export buttons, enabled only for what was traced from the inputs shown. */
   exports: Exports;
   inspectorHeading: HTMLElement;
+  /** Told once, when the first paths are shown, their last point index (the longer one's), which only their traces know: a link's step past it is said in the link's note. */
+  firstPaths: (lastPoint: number) => void;
 }
 
 export class Orchestrator {
@@ -146,6 +148,8 @@ export class Orchestrator {
   #inputsPending = false;
   /** Forms with a field holding a value the page refused itself (INPUTS_VALIDITY). */
   readonly #invalidForms = new Set<Element>();
+  /** PageParts.firstPaths has been told. */
+  #firstPathsTold = false;
 
   /** A form of the mode shown holds a value the page refused (another mode's form is hidden, and says nothing of this one's results). */
   #refusedHere(): boolean {
@@ -346,7 +350,13 @@ export class Orchestrator {
       this.#shown = next;
       this.#ruleOptions = ruleOptions;
       if (next.experiment) p.experimentPanel.show(next.experiment);
-      else this.#present();
+      else {
+        this.#present();
+        if (!this.#firstPathsTold) {
+          this.#firstPathsTold = true;
+          p.firstPaths(this.#lastPoint());
+        }
+      }
       p.status.shown(next);
       const stop = next.program?.program.errors[0];
       p.embedProblem.textContent = stop ? `The program stopped at line ${stop.line}, column ${stop.column}: ${diagnosticText(stop)}` : '';

@@ -105,6 +105,8 @@ export interface LinkNotes {
   unread: string[];
   /** Its points of another coordinate count than the page's axes, as fitted: "from and to had 2 coordinates; regions takes 3: z = 0 added". */
   fitted: string[];
+  /** The point index its `step` names, as read: one past the path's end is shown at the end, which only the trace knows (its step count), so the note says it once traced. */
+  step?: number;
 }
 
 /** A key of a link the page could not read, as the page says it: "tie=sideways". */
@@ -294,6 +296,7 @@ export function stateFromQuery(query: string, catalogue: Catalogue, notes?: Link
   const step = readDecimal(params.get('step') ?? '');
   if (step !== undefined && Number.isSafeInteger(step) && step >= 0) state.pointIndex = step;
   taken('step', state.pointIndex === step);
+  if (notes && state.pointIndex === step) notes.step = step;
   const speed = readDecimal(params.get('speed') ?? '');
   if (SPEEDS_STEPS_PER_SECOND.some((s) => s === speed)) state.speed = speed!;
   taken('speed', state.speed === speed);
