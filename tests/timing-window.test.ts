@@ -12,10 +12,10 @@ const TICKS = 60;
 const dwellAt = (k: number) => 0.01 + k * 1e-3 + (k >= 80 ? 2.05 : 0);
 const times = Float64Array.from({ length: STEPS }, (_, k) => dwellAt(k));
 
-/** stepWindow for point p, given the instants of the steps neededSteps asks for (as the diagram fetches them). */
-function windowFor(p: number, all = times, ticks = TICKS) {
+/** stepWindow for point p, given the instants of the steps neededSteps asks for (as the diagram fetches them), and the program's end. */
+function windowFor(p: number, all = times, ticks = TICKS, endSeconds = all[all.length - 1]) {
   const { fromStep, toStep } = neededSteps(p, ticks, all.length);
-  return stepWindow(p, ticks, all.length, fromStep, all.subarray(fromStep, toStep));
+  return stepWindow(p, ticks, all.length, fromStep, all.subarray(fromStep, toStep), endSeconds);
 }
 
 describe('the timing diagram window', () => {
@@ -64,6 +64,18 @@ describe('the timing diagram window', () => {
     // From rest, the first steps come slowly (s = ½at²): drawn from 0 s, no pause.
     const fromRest = Float64Array.from({ length: STEPS }, (_, k) => 0.05 * Math.sqrt(k + 1));
     expect(windowFor(0, fromRest)).toEqual({ fromStep: 0, toStep: 60, pauseBefore: null, pauseAfter: null });
+  });
+
+  it("ends at a dwell after the program's last step, to the program's end", () => {
+    // G1 X2, G4 P2: the steps of the first move alone, the program ending 2 s after its last.
+    const first = times.subarray(0, 80);
+    const end = first[79]! + 2;
+    expect(windowFor(80, first, TICKS, end)).toEqual({ fromStep: 20, toStep: 80, pauseBefore: null, pauseAfter: { fromSeconds: first[79], toSeconds: end } });
+    // A window away from the last step does not reach it.
+    expect(windowFor(30, first, TICKS, end)).toMatchObject({ toStep: 70, pauseAfter: null });
+    // Ending at the last step, or a wait after it too short for a pause (under ten times the spacing): none.
+    expect(windowFor(80, first)).toMatchObject({ pauseAfter: null });
+    expect(windowFor(80, first, TICKS, first[79]! + 9e-3)).toMatchObject({ pauseAfter: null });
   });
 
   it('holds while the current step is in it, away from an edge with steps past it', () => {

@@ -240,6 +240,34 @@ describe('G-code mode: time', () => {
     await p.close();
   });
 
+  it("ends the STEP/DIR window at a dwell after the program's last step, labelled with the program's end", async () => {
+    // 2 mm at 600 mm/min (0.894 s), then G4 P2: the program ends 2 s after its 160th and last step.
+    const program = encodeURIComponent('G21 G90\nG1 X2 F600\nG4 P2\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=80&gcode=${program}`);
+    const { page } = p;
+    await loaded(page, 160);
+    const timing = page.getByTestId('timing');
+    await page.getByTestId('jump-input').fill('160');
+    await page.getByTestId('jump-input').press('Enter');
+    await page.getByTestId('step-counter').filter({ hasText: /^Step 160 of/ }).waitFor();
+    const pauseBox = timing.locator('.chart-break');
+    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nprogram ends\n+2.000 s');
+    expect(await pauseBox.getAttribute('title')).toBe("a pause with a G4 dwell of 2 s in it: the program ends 2.000 s after its last step (not to scale)");
+    // At the right edge, after the last steps drawn, whose time reads in ms (not the dwell's 2 s).
+    const plot = (await timing.locator('.u-over').boundingBox())!;
+    const box = (await pauseBox.boundingBox())!;
+    expect(box.x + box.width).toBeCloseTo(plot.x + plot.width, 0);
+    expect(await timing.getAttribute('data-to-step')).toBe('160');
+    await timing.getByText(/planned instant, ms/).waitFor();
+    await screenshot(page, 'timing-closing-dwell', '[data-testid=timing]');
+    // Far from the end, no pause.
+    await page.getByTestId('jump-input').fill('40');
+    await page.getByTestId('jump-input').press('Enter');
+    await expect.poll(() => pauseBox.count()).toBe(0);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('plays a dwell after the last move in machine time, to the end of the program', async () => {
     // 1 mm at 300 mm/min (0.63 s), then 1 s at rest: playback stopped at the last step, the clock at 0.63 s.
     const program = encodeURIComponent('G1 X1 F300\nG4 P1\n');

@@ -22,6 +22,8 @@
  * at that edge, not to scale, hatched and labelled with its length and the
  * dwell in it (the core's dwellSeconds); the signals hold through it, DIR
  * set half-way across it for the step on its other side, as the VCD sets it.
+ * The wait before the program's first step and after its last (a closing
+ * dwell, to the program's end) are drawn so too.
  */
 import uPlot from 'uplot';
 import { StepChart, type XBreak } from '../charts/chart.js';
@@ -59,6 +61,8 @@ export interface PulsedTrace {
   dims: number;
   steps: number;
   pulseTrains(fromStep: number, toStep: number): Promise<PulseWindow>;
+  /** A program's record (GcodeProgramInfo): its duration is its end, seconds, after its last step when it ends with a dwell. */
+  readonly program?: { readonly durationSeconds: number };
   /** A program's seconds of G4 dwell between two instants (GcodeProgram.dwellSeconds). */
   dwellSeconds?(fromSeconds: number, toSeconds: number): Promise<number>;
 }
@@ -69,6 +73,8 @@ interface EdgePause {
   dwellSeconds: number;
   /** Per axis, +1 or -1: DIR for the step after the pause (a pause after the window), or before it (one before). */
   farDir: number[];
+  /** The wait before the program's first step or after its last: no step on its far side. */
+  programEdge: boolean;
 }
 
 /** The signals of steps fromStep..toStep of a window fetched from step `first`. */
@@ -87,17 +93,21 @@ function dwellText(seconds: number): string {
 
 /**
  * The label of a pause at the window's edge `side`: what it is (a dwell or
- * a pause), and the time to the step across it (`atStart`: the wait before
- * the program's first step, from 0 s).
+ * a pause), and the time to the step across it, or at the program's edge
+ * from its start (0 s) to the first step and from the last step to its end.
  */
-function pauseLabel({ pause, dwellSeconds }: EdgePause, side: 'before' | 'after', atStart = false): { lines: string[]; description: string } {
+function pauseLabel({ pause, dwellSeconds, programEdge }: EdgePause, side: 'before' | 'after'): { lines: string[]; description: string } {
   const title = dwellSeconds > 0 ? `dwell ${dwellText(dwellSeconds)}` : 'pause';
   const gap = formatSeconds(pause.toSeconds - pause.fromSeconds);
   const kind = dwellSeconds > 0 ? `a pause with a G4 dwell of ${dwellText(dwellSeconds)} in it` : 'a pause';
-  if (side === 'after') return { lines: [title, 'next step', `+${gap}`], description: `${kind}: the next step comes ${gap} after the last one drawn (not to scale)` };
+  if (side === 'after') {
+    return programEdge
+      ? { lines: [title, 'program ends', `+${gap}`], description: `${kind}: the program ends ${gap} after its last step (not to scale)` }
+      : { lines: [title, 'next step', `+${gap}`], description: `${kind}: the next step comes ${gap} after the last one drawn (not to scale)` };
+  }
   return {
-    lines: [title, atStart ? 'first step at' : 'step before', atStart ? gap : `−${gap}`],
-    description: `${kind}: the first step drawn comes ${gap} after the ${atStart ? "program's start" : 'step before it'} (not to scale)`,
+    lines: [title, programEdge ? 'first step at' : 'step before', programEdge ? gap : `−${gap}`],
+    description: `${kind}: the first step drawn comes ${gap} after the ${programEdge ? "program's start" : 'step before it'} (not to scale)`,
   };
 }
 
@@ -156,12 +166,17 @@ export class TimingDiagram {
       const pauses: { before: EdgePause | null; after: EdgePause | null } = { before: null, after: null };
       try {
         const fetched = await trace.pulseTrains(needed.fromStep, needed.toStep);
-        window = stepWindow(pointIndex, ticks, trace.steps, needed.fromStep, fetched.stepSeconds);
+        window = stepWindow(pointIndex, ticks, trace.steps, needed.fromStep, fetched.stepSeconds, trace.program?.durationSeconds);
         pulses = slicePulses(fetched, needed.fromStep, window.fromStep, window.toStep);
-        const dirAt = (k: number) => fetched.trains.map((t) => (k < 0 ? 1 : t.dir[k - needed.fromStep]!));
+        // Before the program's first step DIR is + (the VCD's level before any step); after its last, it holds.
+        const dirAt = (k: number) => fetched.trains.map((t) => (k < 0 ? 1 : t.dir[Math.min(k, trace.steps - 1) - needed.fromStep]!));
         const edge = async (pause: Pause | null, farStep: number): Promise<EdgePause | null> =>
-          pause && { pause, dwellSeconds: (await trace.dwellSeconds?.(pause.fromSeconds, pause.toSeconds)) ?? 0, farDir: dirAt(farStep) };
-        // Before the program's first step DIR is + (the VCD's level before any step).
+          pause && {
+            pause,
+            dwellSeconds: (await trace.dwellSeconds?.(pause.fromSeconds, pause.toSeconds)) ?? 0,
+            farDir: dirAt(farStep),
+            programEdge: farStep < 0 || farStep >= trace.steps,
+          };
         pauses.before = await edge(window.pauseBefore, window.fromStep - 1);
         pauses.after = await edge(window.pauseAfter, window.toStep);
       } catch (error) {
@@ -235,7 +250,7 @@ export class TimingDiagram {
     const pauseX = ((endX - startX) * share) / (1 - edges * share);
     this.#pauseBeforeX = pauses.before ? startX - pauseX : null;
     const breaks: XBreak[] = [];
-    if (pauses.before) breaks.push({ fromX: startX - pauseX, toX: startX, ...pauseLabel(pauses.before, 'before', this.#fromStep === 0) });
+    if (pauses.before) breaks.push({ fromX: startX - pauseX, toX: startX, ...pauseLabel(pauses.before, 'before') });
     if (pauses.after) breaks.push({ fromX: endX, toX: endX + pauseX, ...pauseLabel(pauses.after, 'after') });
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];

@@ -8,7 +8,8 @@
  * window ends (or starts) at a pause much longer than the steps' own spacing
  * around the current step, and the steps it loses there are taken on the
  * other side; the diagram shows the pause at that edge, labelled. Stepping
- * past it moves the window to its other side.
+ * past it moves the window to its other side. A dwell after the program's
+ * last step is a pause at the window's end too, to the program's end.
  */
 import { drawnFromZero } from './pulse-edges.js';
 
@@ -35,7 +36,7 @@ export interface StepWindow {
   toStep: number;
   /** The pause the window starts at: from the instant of step fromStep - 1 (0 s before the program's first step) to that of step fromStep. */
   pauseBefore: Pause | null;
-  /** The pause the window ends at: from the instant of step toStep - 1 to that of step toStep. */
+  /** The pause the window ends at: from the instant of step toStep - 1 to that of step toStep (to the program's end after its last step). */
   pauseAfter: Pause | null;
 }
 
@@ -68,9 +69,10 @@ export function neededSteps(pointIndex: number, ticks: number, steps: number): {
  * `steps`, and the pauses it starts or ends at. `times`: the instants of
  * steps firstStep..firstStep + times.length, seconds (at least
  * `neededSteps`); null for a trace (one tick a step, no pause): the window
- * counted in steps.
+ * counted in steps. `endSeconds`: the program's end (its duration), later
+ * than its last step's instant when it ends with a dwell.
  */
-export function stepWindow(pointIndex: number, ticks: number, steps: number, firstStep: number, times: Float64Array | null): StepWindow {
+export function stepWindow(pointIndex: number, ticks: number, steps: number, firstStep: number, times: Float64Array | null, endSeconds?: number): StepWindow {
   const counted = countedWindow(pointIndex, ticks, steps);
   const none = { ...counted, pauseBefore: null, pauseAfter: null };
   if (!times || steps === 0) return none;
@@ -97,7 +99,10 @@ export function stepWindow(pointIndex: number, ticks: number, steps: number, fir
   if (fromStep > 0 && pauseAt(fromStep - 1)) pauseBefore = { fromSeconds: at(fromStep - 1), toSeconds: at(fromStep) };
   // The wait before the program's first step: a pause where it is not drawn (drawnFromZero) and is one.
   else if (fromStep === 0 && at(0) > PAUSE_FACTOR * spacingSeconds && !drawnFromZero(drawn, true)) pauseBefore = { fromSeconds: 0, toSeconds: at(0) };
-  const pauseAfter = toStep < steps && pauseAt(toStep - 1) ? { fromSeconds: at(toStep - 1), toSeconds: at(toStep) } : null;
+  let pauseAfter: Pause | null = null;
+  if (toStep < steps && pauseAt(toStep - 1)) pauseAfter = { fromSeconds: at(toStep - 1), toSeconds: at(toStep) };
+  // The wait after the program's last step (a closing dwell): a pause where it is one, as a dwell between steps is.
+  else if (toStep === steps && endSeconds !== undefined && endSeconds - at(steps - 1) > PAUSE_FACTOR * spacingSeconds) pauseAfter = { fromSeconds: at(steps - 1), toSeconds: endSeconds };
   return { fromStep, toStep, pauseBefore, pauseAfter };
 }
 
