@@ -49,11 +49,43 @@ describe('the timing diagram window', () => {
     const uneven = Float64Array.from({ length: STEPS }, (_, k) => gaps.slice(0, k).reduce((a, b) => a + b, 0));
     expect(PAUSE_FACTOR).toBe(10);
     expect(windowFor(80, uneven)).toMatchObject({ fromStep: 41, toStep: 101, pauseBefore: null, pauseAfter: { fromSeconds: uneven[100], toSeconds: uneven[101] } });
-    // A slow move between fast ones, and the current step in it: its own spacing is the measure, the fast steps no pause.
+    // A slow move between fast ones, and the current step in it: its own spacing is the measure, the fast
+    // steps each side 50 times faster, cut off as at a pause (step 90 comes a slow step after 89).
     const slowMiddle = Float64Array.from({ length: STEPS }, (_, k) => (k < 70 ? k * 1e-3 : k < 90 ? 0.07 + (k - 70) * 0.05 : 1.07 + (k - 90) * 1e-3));
-    expect(windowFor(80, slowMiddle)).toMatchObject({ pauseBefore: null, pauseAfter: null });
+    expect(windowFor(80, slowMiddle)).toEqual({
+      fromStep: 70,
+      toStep: 91,
+      pauseBefore: { fromSeconds: slowMiddle[69], toSeconds: slowMiddle[70], faster: true },
+      pauseAfter: { fromSeconds: slowMiddle[90], toSeconds: slowMiddle[91], faster: true },
+    });
     // From a fast step, the slow ones after it are a pause.
     expect(windowFor(60, slowMiddle)).toMatchObject({ fromStep: 11, toStep: 71, pauseAfter: { fromSeconds: slowMiddle[70], toSeconds: slowMiddle[71] } });
+  });
+
+  it('ends at the steps of a much faster move, with the slow steps before it, and starts at them after a fast one', () => {
+    // F60 then F3000 at 80 steps/mm, 1000 mm/s²: 80 steps 12.5 ms apart (1 mm/s), then the fast move's
+    // speeding up from 1 mm/s, √(1 + 25 j) mm/s j steps in, to 50 mm/s (0.25 ms a step).
+    const speed = (j: number) => Math.min(50, Math.sqrt(1 + 25 * j));
+    const gaps = Array.from({ length: STEPS - 1 }, (_, k) => (k < 79 ? 12.5e-3 : 1 / 80 / ((speed(k - 79) + speed(k - 78)) / 2)));
+    const slowFast = Float64Array.from({ length: STEPS }, (_, k) => gaps.slice(0, k).reduce((a, b) => a + b, 0));
+    // Its steps come over ten times faster than the slow ones from step 84 on (the gap after step 83).
+    expect(gaps.findIndex((gap) => gap < 1.25e-3)).toBe(83);
+    // Points 78 and 80, among the slow move's last steps (point 80 its last): the window counted in steps
+    // ran 37 steps into the fast move, 29 ms of them beside 275 ms of slow steps. Now it ends where the
+    // fast move starts, after step 79: the spacing of the steps past it is under a tenth of 12.5 ms,
+    // though its first gaps (4.1 to 1.3 ms) are not, which are not left pressed at the edge. The steps
+    // lost there are the slow ones before.
+    for (const p of [78, 80]) {
+      expect(windowFor(p, slowFast), `point ${p}`).toEqual({
+        fromStep: 20,
+        toStep: 80,
+        pauseBefore: null,
+        pauseAfter: { fromSeconds: slowFast[79], toSeconds: slowFast[80], faster: true },
+      });
+    }
+    // Reversed, the fast move first: from a slow step after it, the window starts at the cut.
+    const fastSlow = slowFast.map((t) => slowFast[STEPS - 1]! - t).reverse();
+    expect(windowFor(STEPS - 78, fastSlow)).toMatchObject({ fromStep: STEPS - 80, toStep: STEPS - 20, pauseBefore: { faster: true }, pauseAfter: null });
   });
 
   it("shows the wait before the program's first step as a pause where it is not drawn from 0 s", () => {

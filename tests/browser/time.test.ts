@@ -44,6 +44,38 @@ async function loaded(page: Page, steps: number): Promise<void> {
   await page.getByTestId('step-counter').filter({ hasText: new RegExp(`of ${steps.toLocaleString('en-US')}$`) }).waitFor();
 }
 
+/**
+ * The X STEP and DIR edges drawn in the timing diagram's plot outside its
+ * pause (columns where a vertical stroke of X's colour stands, a run of
+ * columns each; the pause's label is as dark): how many, their span as a
+ * share of the plot's width outside the pause, and the least distance from
+ * one to the next, px.
+ */
+async function xEdges(page: Page, name: string, pause: { x: number; width: number }) {
+  const over = page.getByTestId('timing').locator('.u-over');
+  await over.scrollIntoViewIfNeeded();
+  const plot = (await over.boundingBox())!;
+  const shot = await screenshot(page, name, plot);
+  const { width, height, data } = PNG.sync.read(readFileSync(shot.file));
+  const rgb = [1, 3, 5].map((i) => parseInt(AXIS_COLOURS[0]!.slice(i, i + 2), 16));
+  const stroke = (x: number) => {
+    let n = 0;
+    for (let y = 0; y < height; y++) {
+      const i = 4 * (y * width + x);
+      if (rgb.every((v, c) => Math.abs(data[i + c]! - v) <= 40)) n++;
+    }
+    // A vertical edge is a swing high (17 px); the lanes' levels a few px a column.
+    return n >= 10;
+  };
+  const [pauseFrom, pauseTo] = [pause.x - plot.x, pause.x + pause.width - plot.x];
+  const columns = Array.from({ length: width }, (_, x) => (x < pauseFrom - 1 || x > pauseTo + 1) && stroke(x));
+  const starts = columns.flatMap((on, x) => (on && !columns[x - 1] ? [x] : []));
+  const first = columns.indexOf(true);
+  const last = columns.lastIndexOf(true);
+  const nearestPx = Math.min(...starts.slice(1).map((x, i) => x - starts[i]!));
+  return { runs: starts.length, spanShare: (last - first) / (width - pause.width), first: first / width, last: last / width, nearestPx };
+}
+
 describe('G-code mode: time', () => {
   it("shows the total time worked from Grbl's formulas, the current step's instant, the charts, and exports the VCD", async () => {
     const p = await openPage('?mode=gcode&stepsPerMm=80');
@@ -163,33 +195,6 @@ describe('G-code mode: time', () => {
       await page.getByTestId('jump-input').press('Enter');
       await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step} of`) }).waitFor();
     };
-    /**
-     * The X STEP and DIR edges drawn in the plot outside the pause (columns
-     * where a vertical stroke of X's colour stands, a run of columns each;
-     * the pause's label is as dark): how many, and their span as a share of
-     * the plot's width outside the pause.
-     */
-    const edges = async (name: string, pause: { x: number; width: number }) => {
-      const plot = (await timing.locator('.u-over').boundingBox())!;
-      const shot = await screenshot(page, name, plot);
-      const { width, height, data } = PNG.sync.read(readFileSync(shot.file));
-      const rgb = [1, 3, 5].map((i) => parseInt(AXIS_COLOURS[0]!.slice(i, i + 2), 16));
-      const stroke = (x: number) => {
-        let n = 0;
-        for (let y = 0; y < height; y++) {
-          const i = 4 * (y * width + x);
-          if (rgb.every((v, c) => Math.abs(data[i + c]! - v) <= 40)) n++;
-        }
-        // A vertical edge is a swing high (17 px); the lanes' levels a few px a column.
-        return n >= 10;
-      };
-      const [pauseFrom, pauseTo] = [pause.x - plot.x, pause.x + pause.width - plot.x];
-      const columns = Array.from({ length: width }, (_, x) => (x < pauseFrom - 1 || x > pauseTo + 1) && stroke(x));
-      const runs = columns.filter((on, x) => on && !columns[x - 1]).length;
-      const first = columns.indexOf(true);
-      const last = columns.lastIndexOf(true);
-      return { runs, spanShare: (last - first) / (width - pause.width), first: first / width, last: last / width };
-    };
     const pauseBox = timing.locator('.chart-break');
 
     // Point 160, the last step before the dwell: the window ends there, the dwell at its right edge.
@@ -206,7 +211,7 @@ describe('G-code mode: time', () => {
     expect(to).toBe(160);
     expect(to - from).toBeGreaterThanOrEqual(12);
     await screenshot(page, 'timing-dwell-before', '[data-testid=timing]');
-    const before = await edges('timing-dwell-before-plot', box);
+    const before = await xEdges(page, 'timing-dwell-before-plot', box);
     // The pulses spread over the plot left of the pause, most of it,
     // each apart from the next (a rise and a fall a step; DIR has no edge:
     // X only goes +), where the window across the dwell drew a few bars.
@@ -222,7 +227,7 @@ describe('G-code mode: time', () => {
     const [fromAfter, toAfter] = await drawn();
     expect(fromAfter).toBe(160);
     await screenshot(page, 'timing-dwell-after', '[data-testid=timing]');
-    const after = await edges('timing-dwell-after-plot', left);
+    const after = await xEdges(page, 'timing-dwell-after-plot', left);
     expect(after.spanShare, JSON.stringify(after)).toBeGreaterThan(0.75);
     expect(after.first).toBeGreaterThan(left.width / plot.width - 0.01);
     expect(after.runs, JSON.stringify(after)).toBeGreaterThanOrEqual(toAfter! - fromAfter!);
@@ -264,6 +269,40 @@ describe('G-code mode: time', () => {
     await page.getByTestId('jump-input').fill('40');
     await page.getByTestId('jump-input').press('Enter');
     await expect.poll(() => pauseBox.count()).toBe(0);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('ends the STEP/DIR window where a much faster move starts, labelled, so that the pulses before it stay readable', async () => {
+    // 1 mm at 60 mm/min, then 3 mm at 3000 mm/min with 1000 mm/s²: 80 X steps 12.5 ms apart, then the
+    // fast move's, speeding up from 1 mm/s, the first 4.1 ms after the slow move's last, the fifth under
+    // 1.25 ms after the one before. Around the slow move's last step the window's scale was the slow
+    // steps': the fast ones in it were pressed into a bar at its right edge.
+    const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG1 X4 F3000\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=80&acceleration=1000&maxRate=3000&gcode=${program}`);
+    const { page } = p;
+    await loaded(page, 320);
+    // A narrow window, one column: the diagram the page's width, some 40 steps.
+    await page.setViewportSize({ width: 700, height: 900 });
+    const timing = page.getByTestId('timing');
+    await page.getByTestId('jump-input').fill('80');
+    await page.getByTestId('jump-input').press('Enter');
+    await page.getByTestId('step-counter').filter({ hasText: /^Step 80 of/ }).waitFor();
+    // The window ends at the slow move's last step, the edge marked as a pause's is, with the time to the next step.
+    const pauseBox = timing.locator('.chart-break');
+    await expect.poll(() => pauseBox.innerText()).toBe('faster steps\nnext step\n+4.099 ms');
+    expect(await pauseBox.getAttribute('title')).toBe("a faster move, its steps over 10 times as fast as the current step's: the next step comes 4.099 ms after the last one drawn (not to scale)");
+    expect(await timing.getAttribute('data-to-step')).toBe('80');
+    const plot = (await timing.locator('.u-over').boundingBox())!;
+    const box = (await pauseBox.boundingBox())!;
+    expect(box.x + box.width).toBeCloseTo(plot.x + plot.width, 0);
+    await screenshot(page, 'timing-faster', '[data-testid=timing]');
+    // The pulses over the plot left of the cut, each apart from the next, their edges some px apart.
+    const drawn = await xEdges(page, 'timing-faster-plot', box);
+    expect(drawn.spanShare, JSON.stringify(drawn)).toBeGreaterThan(0.75);
+    expect(drawn.runs, JSON.stringify(drawn)).toBeGreaterThanOrEqual(80 - Number(await timing.getAttribute('data-from-step')));
+    expect(drawn.nearestPx, JSON.stringify(drawn)).toBeGreaterThanOrEqual(4);
+    expect(drawn.last).toBeLessThan(1 - box.width / plot.width + 0.01);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

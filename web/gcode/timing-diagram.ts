@@ -23,7 +23,9 @@
  * dwell in it (the core's dwellSeconds); the signals hold through it, DIR
  * set half-way across it for the step on its other side, as the VCD sets it.
  * The wait before the program's first step and after its last (a closing
- * dwell, to the program's end) are drawn so too.
+ * dwell, to the program's end) are drawn so too, and so is the edge where
+ * a much faster move starts, where the window is cut as well (the steps
+ * past it ten times faster than the current step's), labelled so.
  */
 import uPlot from 'uplot';
 import { StepChart, type XBreak } from '../charts/chart.js';
@@ -32,7 +34,7 @@ import { AXIS_COLOURS } from '../scene/palette.js';
 import type { PulseWindow } from '../worker/protocol.js';
 import { drawnFromZero, pulseEdges, ROWS_PER_STEP } from './pulse-edges.js';
 import { formatSeconds, timeUnit } from './time-format.js';
-import { neededSteps, type Pause, type StepWindow, stepWindow, windowHolds } from './timing-window.js';
+import { neededSteps, PAUSE_FACTOR, type Pause, type StepWindow, stepWindow, windowHolds } from './timing-window.js';
 
 /**
  * Ticks shown at once: as many as leave each tick this many CSS pixels, so
@@ -92,14 +94,19 @@ function dwellText(seconds: number): string {
 }
 
 /**
- * The label of a pause at the window's edge `side`: what it is (a dwell or
- * a pause), and the time to the step across it, or at the program's edge
- * from its start (0 s) to the first step and from the last step to its end.
+ * The label of a pause at the window's edge `side`: what it is (a dwell, a
+ * pause, or faster steps past it), and the time to the step across it, or
+ * at the program's edge from its start (0 s) to the first step and from the
+ * last step to its end.
  */
 function pauseLabel({ pause, dwellSeconds, programEdge }: EdgePause, side: 'before' | 'after'): { lines: string[]; description: string } {
-  const title = dwellSeconds > 0 ? `dwell ${dwellText(dwellSeconds)}` : 'pause';
+  const title = pause.faster ? 'faster steps' : dwellSeconds > 0 ? `dwell ${dwellText(dwellSeconds)}` : 'pause';
   const gap = formatSeconds(pause.toSeconds - pause.fromSeconds);
-  const kind = dwellSeconds > 0 ? `a pause with a G4 dwell of ${dwellText(dwellSeconds)} in it` : 'a pause';
+  const kind = pause.faster
+    ? `a faster move, its steps over ${PAUSE_FACTOR} times as fast as the current step's`
+    : dwellSeconds > 0
+      ? `a pause with a G4 dwell of ${dwellText(dwellSeconds)} in it`
+      : 'a pause';
   if (side === 'after') {
     return programEdge
       ? { lines: [title, 'program ends', `+${gap}`], description: `${kind}: the program ends ${gap} after its last step (not to scale)` }
@@ -158,8 +165,8 @@ export class TimingDiagram {
     if (!inside) {
       const request = ++this.#request;
       const ticks = Math.max(MIN_WINDOW_TICKS, Math.floor((this.#container.clientWidth - LABELS_PX) / TICK_PX));
-      // The steps any window for this point can hold, and one past each
-      // edge: a program's window is chosen from their instants.
+      // The steps any window for this point can hold, and those past its
+      // edges (neededSteps): a program's window is chosen from their instants.
       const needed = neededSteps(pointIndex, ticks, trace.steps);
       let window: StepWindow;
       let pulses: PulseWindow;

@@ -9,7 +9,10 @@
  * around the current step, and the steps it loses there are taken on the
  * other side; the diagram shows the pause at that edge, labelled. Stepping
  * past it moves the window to its other side. A dwell after the program's
- * last step is a pause at the window's end too, to the program's end.
+ * last step is a pause at the window's end too, to the program's end. The
+ * steps of a much faster move are pressed the same way beside slow ones
+ * (drawn at the slow steps' spacing, a fast move's steps were a bar at the
+ * window's edge): the window is cut where they start, as at a pause.
  */
 import { drawnFromZero } from './pulse-edges.js';
 
@@ -18,16 +21,21 @@ import { drawnFromZero } from './pulse-edges.js';
  * the steps' own spacing around the current step: a window of 40 steps at
  * that spacing then gives a pause at least a fifth of its width, pressing
  * the steps beside it by as much, which is where a pulse starts to blur.
+ * The window is cut alike where the steps past a gap come this many times
+ * faster than the current step's: at its scale they were under a tenth of a
+ * tick apart.
  */
 export const PAUSE_FACTOR = 10;
 
-/** Gaps each side of the current step whose median is the steps' own spacing there (one long gap among them does not move it). */
+/** Steps each side of a step whose gaps, with its own, have the median that is the steps' own spacing there (one long gap among them does not move it). */
 const SPACING_GAPS = 4;
 
 /** A stretch with no step, between two instants, seconds. */
 export interface Pause {
   fromSeconds: number;
   toSeconds: number;
+  /** Set when the gap is no pause but where the steps past it start to come PAUSE_FACTOR times faster than the current step's: the window is cut there all the same. */
+  faster?: true;
 }
 
 export interface StepWindow {
@@ -56,12 +64,15 @@ function currentStep(pointIndex: number, steps: number): number {
 
 /**
  * The steps whose instants `stepWindow` needs for point `pointIndex`: any
- * window of at most `ticks` steps holding its step, and one step more on
- * each side, to see a pause at either edge.
+ * window of at most `ticks` steps holding its step, one step more on each
+ * side, to see a pause at either edge, and the steps past that whose
+ * spacing tells whether a faster move starts there (spacingAround's, about
+ * the (SPACING_GAPS + 1)th step past it).
  */
 export function neededSteps(pointIndex: number, ticks: number, steps: number): { fromStep: number; toStep: number } {
   const c = currentStep(pointIndex, steps);
-  return { fromStep: Math.max(0, c - ticks), toStep: Math.min(steps, c + ticks + 1) };
+  const past = 2 * SPACING_GAPS + 1;
+  return { fromStep: Math.max(0, c - ticks - past), toStep: Math.min(steps, c + ticks + 1 + past) };
 }
 
 /**
@@ -83,24 +94,35 @@ export function stepWindow(pointIndex: number, ticks: number, steps: number, fir
   const spacingSeconds = spacingAround(times, c - firstStep);
   // Steps all at one instant (or a single step): no spacing to compare a pause with.
   if (!(spacingSeconds > 0)) return none;
-  const pauseAt = (k: number) => k >= first && k + 1 <= last && at(k + 1) - at(k) > PAUSE_FACTOR * spacingSeconds;
-  // The pauses nearest the current step: the window stays between them.
+  // The gap after step k; NaN past the steps fetched, which no comparison cuts at.
+  const gapAt = (k: number) => (k >= first && k + 1 <= last ? at(k + 1) - at(k) : Number.NaN);
+  const pauseAt = (k: number) => gapAt(k) > PAUSE_FACTOR * spacingSeconds;
+  // A faster move past the gap after step k, on side `side` of it (+1 after, -1 before): the spacing of
+  // the steps past it (spacingAround the (SPACING_GAPS + 1)th) PAUSE_FACTOR times shorter than the current
+  // step's, and the gap itself under half of it, the change under way there. A single gap that short
+  // comes after the first steps of a move speeding up from the slow one's speed, which the window
+  // would have kept, pressed, at its edge.
+  const fasterAt = (k: number, side: 1 | -1) =>
+    gapAt(k) < spacingSeconds / 2 && spacingAround(times, (side > 0 ? k + 1 + SPACING_GAPS : k - SPACING_GAPS) - firstStep) < spacingSeconds / PAUSE_FACTOR;
+  const cutAt = (k: number, side: 1 | -1) => pauseAt(k) || fasterAt(k, side);
+  const cut = (k: number): Pause => (pauseAt(k) ? { fromSeconds: at(k), toSeconds: at(k + 1) } : { fromSeconds: at(k), toSeconds: at(k + 1), faster: true });
+  // The cuts nearest the current step: the window stays between them.
   let lo = c;
-  while (lo > first && lo > c - ticks + 1 && !pauseAt(lo - 1)) lo--;
+  while (lo > first && lo > c - ticks + 1 && !cutAt(lo - 1, -1)) lo--;
   let hi = c;
-  while (hi < last && hi < c + ticks - 1 && !pauseAt(hi)) hi++;
+  while (hi < last && hi < c + ticks - 1 && !cutAt(hi, 1)) hi++;
   let fromStep = Math.max(counted.fromStep, lo);
   let toStep = Math.min(counted.toStep, hi + 1);
-  // The steps cut off at a pause on one side are taken on the other.
+  // The steps cut off on one side are taken on the other.
   if (toStep < counted.toStep) fromStep = Math.max(lo, toStep - ticks);
   else if (fromStep > counted.fromStep) toStep = Math.min(hi + 1, fromStep + ticks);
   const drawn = times.subarray(fromStep - firstStep, toStep - firstStep);
   let pauseBefore: Pause | null = null;
-  if (fromStep > 0 && pauseAt(fromStep - 1)) pauseBefore = { fromSeconds: at(fromStep - 1), toSeconds: at(fromStep) };
+  if (fromStep > 0 && cutAt(fromStep - 1, -1)) pauseBefore = cut(fromStep - 1);
   // The wait before the program's first step: a pause where it is not drawn (drawnFromZero) and is one.
   else if (fromStep === 0 && at(0) > PAUSE_FACTOR * spacingSeconds && !drawnFromZero(drawn, true)) pauseBefore = { fromSeconds: 0, toSeconds: at(0) };
   let pauseAfter: Pause | null = null;
-  if (toStep < steps && pauseAt(toStep - 1)) pauseAfter = { fromSeconds: at(toStep - 1), toSeconds: at(toStep) };
+  if (toStep < steps && cutAt(toStep - 1, 1)) pauseAfter = cut(toStep - 1);
   // The wait after the program's last step (a closing dwell): a pause where it is one, as a dwell between steps is.
   else if (toStep === steps && endSeconds !== undefined && endSeconds - at(steps - 1) > PAUSE_FACTOR * spacingSeconds) pauseAfter = { fromSeconds: at(steps - 1), toSeconds: endSeconds };
   return { fromStep, toStep, pauseBefore, pauseAfter };
@@ -108,17 +130,21 @@ export function stepWindow(pointIndex: number, ticks: number, steps: number, fir
 
 /**
  * The steps' own spacing around step index `i` of `times`, seconds: the
- * median of the gaps over SPACING_GAPS steps each side, those that are not 0
- * (steps at one instant); NaN for none.
+ * median of the gaps steps i - SPACING_GAPS..i + SPACING_GAPS are reached
+ * by, those that are not 0 (steps at one instant); NaN for none. Step i's
+ * own gap in the middle of them: at the last step of a slow move, reached
+ * by a slow gap before four faster ones, the median is the slow move's
+ * spacing (of the eight gaps about the step before, the lower median was
+ * the faster move's, and its steps were drawn at that scale).
  */
 function spacingAround(times: Float64Array, i: number): number {
   const gaps: number[] = [];
-  for (let k = Math.max(0, i - SPACING_GAPS); k < Math.min(times.length - 1, i + SPACING_GAPS); k++) {
+  for (let k = Math.max(0, i - SPACING_GAPS - 1); k < Math.min(times.length - 1, i + SPACING_GAPS); k++) {
     const gap = times[k + 1]! - times[k]!;
     if (gap > 0) gaps.push(gap);
   }
   gaps.sort((a, b) => a - b);
-  // The lower median: of 8 gaps with one pause among them, a gap beside it.
+  // The lower median: of 9 gaps with one pause among them, a gap beside it; of fewer (the program's ends) too.
   return gaps.length === 0 ? Number.NaN : gaps[Math.floor((gaps.length - 1) / 2)]!;
 }
 
