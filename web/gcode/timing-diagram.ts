@@ -123,10 +123,9 @@ export class TimingDiagram {
   readonly #onPick: (pointIndex: number) => void;
   #trace: PulsedTrace | undefined;
   #chart: StepChart | undefined;
-  /** Step indices shown: fromStep..fromStep + #windowTicks (a program's: #window's, up to a pause). */
-  #fromStep = -1;
-  #windowTicks = MIN_WINDOW_TICKS;
+  /** The steps shown (a trace's fromStep..fromStep + #windowTicks; a program's up to a pause), null until a trace's first window is drawn. */
   #window: StepWindow | null = null;
+  #windowTicks = MIN_WINDOW_TICKS;
   /** Where a pause before the window is drawn from, in the axis's unit: the cursor of point 0 then. */
   #pauseBeforeX: number | null = null;
   #request = 0;
@@ -143,7 +142,7 @@ export class TimingDiagram {
 
   setTrace(trace: PulsedTrace | undefined, pointIndex: number): void {
     this.#trace = trace;
-    this.#fromStep = -1;
+    this.#window = null;
     // The old chart stays until the new trace's first window replaces it
     // (#draw makes a new chart for a new label), so the box never empties
     // for the moment the window is fetched; none stays for no steps.
@@ -161,7 +160,7 @@ export class TimingDiagram {
   async showPoint(pointIndex: number): Promise<void> {
     const trace = this.#trace;
     if (!trace || trace.steps === 0) return;
-    const inside = this.#fromStep >= 0 && windowHolds(this.#window!, pointIndex, this.#windowTicks, trace.steps, this.#stepSeconds !== null);
+    const inside = this.#window !== null && windowHolds(this.#window, pointIndex, this.#windowTicks, trace.steps, this.#stepSeconds !== null);
     if (!inside) {
       const request = ++this.#request;
       const ticks = Math.max(MIN_WINDOW_TICKS, Math.floor((this.#container.clientWidth - LABELS_PX) / TICK_PX));
@@ -188,14 +187,13 @@ export class TimingDiagram {
         pauses.after = await edge(window.pauseAfter, window.toStep);
       } catch (error) {
         // The last trace's chart, kept until this window came, must not stay.
-        if (request === this.#request && this.#fromStep < 0) {
+        if (request === this.#request && this.#window === null) {
           this.#chart?.destroy();
           this.#chart = undefined;
         }
         throw error;
       }
       if (request !== this.#request || trace !== this.#trace) return;
-      this.#fromStep = window.fromStep;
       this.#windowTicks = ticks;
       this.#window = window;
       // The steps drawn, for a reader (and a test) of the page.
@@ -212,7 +210,7 @@ export class TimingDiagram {
     if (!times) return pointIndex;
     // At the start, in a wait drawn as a pause: the pause's start.
     if (pointIndex === 0) return this.#pauseBeforeX ?? 0;
-    const i = Math.max(0, Math.min(times.length - 1, pointIndex - 1 - this.#fromStep));
+    const i = Math.max(0, Math.min(times.length - 1, pointIndex - 1 - this.#window!.fromStep));
     return times[i]! * this.#perSecond;
   }
 
@@ -221,7 +219,7 @@ export class TimingDiagram {
     const times = this.#stepSeconds!;
     let k = 0;
     while (k < times.length && times[k]! * this.#perSecond <= x) k++;
-    return this.#fromStep + k;
+    return this.#window!.fromStep + k;
   }
 
   /**
@@ -234,7 +232,7 @@ export class TimingDiagram {
    * millisecond: 50,000 to 51,000 µs).
    */
   #rowsX(ticks: number, times: Float64Array | null, fromZero: boolean): { x: Float64Array; unit: string } {
-    if (!times) return { x: pulseEdges(Float64Array.from({ length: ticks }, (_, i) => this.#fromStep + i)), unit: 'tick' };
+    if (!times) return { x: pulseEdges(Float64Array.from({ length: ticks }, (_, i) => this.#window!.fromStep + i)), unit: 'tick' };
     const edges = pulseEdges(times.subarray(0, ticks));
     // The span drawn: from 0 s when the window starts there (#draw).
     const { unit, perSecond } = timeUnit(edges[edges.length - 1]! - (fromZero ? 0 : edges[0]!));
@@ -246,7 +244,7 @@ export class TimingDiagram {
     const ticks = trains[0]!.step.length;
     this.#stepSeconds = stepSeconds;
     this.#perSecond = 1;
-    const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#fromStep === 0);
+    const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#window!.fromStep === 0);
     const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
     // The x the pauses take, out of scale: PAUSE_PX each of the plot's width
     // (the chart's own, or for a first chart the panel's less the lane labels).
@@ -336,7 +334,7 @@ export class TimingDiagram {
         xLabel,
         // No pick while a new trace's first window is fetched: the chart
         // still shows the last trace's instants.
-        pickX: stepSeconds ? (at) => this.#fromStep >= 0 && this.#onPick(this.#pointOfX(at)) : undefined,
+        pickX: stepSeconds ? (at) => this.#window !== null && this.#onPick(this.#pointOfX(at)) : undefined,
         yLabel: '',
         series,
         yRange: [-0.3, count * LANE],
