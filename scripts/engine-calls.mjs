@@ -4,7 +4,7 @@
 // (a copy or a clear of more than 64 bytes it could not keep in registers,
 // about 7 ns a call on the bench's machine, measured apart). A loop that
 // makes one a step or a segment pays it millions of times; this is how the
-// README's "calls into the engine" were found.
+// "calls into the engine" in docs/benchmark-history.md were found.
 //
 //   node scripts/setup.mjs lib && node scripts/engine-calls.mjs [sites]
 //
