@@ -1,24 +1,33 @@
 // The ideal polyline in the form the scene draws it (IdealLine): every
 // vertex's x, y, z less an origin near the path, as the 32-bit float WebGL
-// reads, and the box of those vertices. The core makes it for a trace (Trace.idealLine(), which the
+// reads, what that float left of each, and the box of those vertices. The core makes it for a trace (Trace.idealLine(), which the
 // worker sends the page); web/ideal-line.ts for lines the page makes itself.
 import { describe, expect, it } from 'vitest';
+import type { IdealLine } from '../web/core/types.js';
 import { idealLineOf } from '../web/ideal-line.js';
 import { runGcode, trace } from '../web/core/index.js';
 
 /** The line as a plain per-vertex loop over the polyline gives it, from `origin`. */
 function expected(polyline: Float64Array | Int32Array, dims: number, origin: number[]) {
-  const xyz: number[] = [];
+  const [xyz, rest]: number[][] = [[], []];
   for (let k = 0; k < polyline.length / dims; k++) {
-    for (let a = 0; a < 3; a++) xyz.push(a < dims ? Math.fround(polyline[k * dims + a]! - origin[a]!) : 0);
+    for (let a = 0; a < 3; a++) {
+      const exact = a < dims ? polyline[k * dims + a]! - origin[a]! : 0;
+      xyz.push(Math.fround(exact));
+      rest.push(Math.fround(exact - Math.fround(exact)));
+    }
   }
   const axis = (a: number) => xyz.filter((_, i) => i % 3 === a);
   return {
     xyz,
+    rest,
     min: [0, 1, 2].map((a) => Math.min(...axis(a))),
     max: [0, 1, 2].map((a) => Math.max(...axis(a))),
   };
 }
+
+/** What `expected` compares of a line. */
+const compared = (line: IdealLine) => ({ xyz: Array.from(line.xyz), rest: Array.from(line.rest), min: line.min, max: line.max });
 
 describe('idealLineOf', () => {
   it("holds a G-code program's polyline vertex for vertex, as 32-bit floats, with its box", async () => {
@@ -29,7 +38,7 @@ describe('idealLineOf', () => {
     expect(line.xyz).toBeInstanceOf(Float32Array);
     // From its first vertex, rounded to the grid.
     expect(line.origin).toEqual([0, 0, 0]);
-    expect({ xyz: Array.from(line.xyz), min: line.min, max: line.max }).toEqual(expected(polyline, 3, line.origin));
+    expect(compared(line)).toEqual(expected(polyline, 3, line.origin));
     program.free();
   });
 
@@ -42,13 +51,13 @@ describe('idealLineOf', () => {
     ] as const) {
       const line = idealLineOf(points, t.dims);
       expect(line.origin).toEqual([points[0], points[1], t.dims > 2 ? points[2] : 0]);
-      expect({ xyz: Array.from(line.xyz), min: line.min, max: line.max }).toEqual(expected(points, t.dims, line.origin));
+      expect(compared(line)).toEqual(expected(points, t.dims, line.origin));
       t.free();
     }
   });
 
   it('gives an empty line a zero box', () => {
-    expect(idealLineOf(new Float64Array(0), 3)).toEqual({ xyz: new Float32Array(0), min: [0, 0, 0], max: [0, 0, 0], origin: [0, 0, 0] });
+    expect(idealLineOf(new Float64Array(0), 3)).toEqual({ xyz: new Float32Array(0), rest: new Float32Array(0), min: [0, 0, 0], max: [0, 0, 0], origin: [0, 0, 0] });
   });
 });
 
@@ -63,8 +72,8 @@ describe('Trace.idealLine', () => {
       expect(line.xyz).toBeInstanceOf(Float32Array);
       expect(line.origin).toEqual([t.start[0], t.start[1], t.start[2] ?? 0]);
       const polyline = t.idealPolyline();
-      const want = polyline.length === 0 ? { xyz: [], min: [0, 0, 0], max: [0, 0, 0] } : expected(polyline, t.dims, line.origin);
-      expect({ xyz: Array.from(line.xyz), min: line.min, max: line.max }, `${t.dims} axes`).toEqual(want);
+      const want = polyline.length === 0 ? { xyz: [], rest: [], min: [0, 0, 0], max: [0, 0, 0] } : expected(polyline, t.dims, line.origin);
+      expect(compared(line), `${t.dims} axes`).toEqual(want);
     }
     expect(program.trace.idealPolyline().length / 3).toBeGreaterThan(20);
     expect(empty.trace.idealLine().xyz.length).toBe(0);

@@ -61,7 +61,7 @@ const PATH: TracedPath = {
   },
   sampledPoints: new Int32Array([0, 0, 0, 1, 1, 0]),
   pointsEvery: 1,
-  idealLine: { xyz: new Float32Array([0, 0, 0, 1, 1, 0]), min: [0, 0, 0], max: [1, 1, 0], origin: [0, 0, 0] },
+  idealLine: { xyz: new Float32Array([0, 0, 0, 1, 1, 0]), rest: new Float32Array(6), min: [0, 0, 0], max: [1, 1, 0], origin: [0, 0, 0] },
   bounds: { min: [0, 0, 0], max: [1, 1, 0] },
 };
 

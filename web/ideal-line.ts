@@ -15,9 +15,18 @@ export function idealLineOf(polyline: Float64Array | Int32Array, dims: number): 
   const axes = Math.min(dims, 3);
   const origin: [number, number, number] = [0, 0, 0];
   if (count > 0) for (let a = 0; a < axes; a++) origin[a] = Math.round(polyline[a]!);
-  const xyz = new Float32Array(count * 3);
-  for (let k = 0; k < count; k++) for (let a = 0; a < axes; a++) xyz[k * 3 + a] = polyline[k * dims + a]! - origin[a]!;
-  if (count === 0) return { xyz, min: [0, 0, 0], max: [0, 0, 0], origin };
+  // One buffer for both, which the worker hands over whole.
+  const values = new Float32Array(count * 6);
+  const xyz = values.subarray(0, count * 3);
+  const rest = values.subarray(count * 3);
+  for (let k = 0; k < count; k++) {
+    for (let a = 0; a < axes; a++) {
+      const exact = polyline[k * dims + a]! - origin[a]!;
+      xyz[k * 3 + a] = exact;
+      rest[k * 3 + a] = exact - xyz[k * 3 + a]!;
+    }
+  }
+  if (count === 0) return { xyz, rest, min: [0, 0, 0], max: [0, 0, 0], origin };
   let [minX, minY, minZ] = [xyz[0]!, xyz[1]!, xyz[2]!];
   let [maxX, maxY, maxZ] = [minX, minY, minZ];
   for (let i = 3; i < xyz.length; i += 3) {
@@ -29,5 +38,6 @@ export function idealLineOf(polyline: Float64Array | Int32Array, dims: number): 
     if (z < minZ) minZ = z;
     else if (z > maxZ) maxZ = z;
   }
-  return { xyz, min: [minX, minY, minZ], max: [maxX, maxY, maxZ], origin };
+  return { xyz, rest, min: [minX, minY, minZ], max: [maxX, maxY, maxZ], origin };
 }
+

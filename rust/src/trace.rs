@@ -1859,19 +1859,24 @@ impl Trace {
     /// taken from `origin` (x, y, z): the smallest x, y, z over its vertices,
     /// the largest, then x, y, z of each vertex (after
     /// [`IDEAL_LINE_BOX_VALUES`] values; a 2-axis path at z = 0, axes past
-    /// the third left out; the box all zeros when there is no vertex). Each
-    /// value is the polyline's f64 less the origin's, rounded to the nearest
-    /// f32 (`as`): from an origin near the path (its start), a vertex keeps
-    /// its fraction of a cell where f32 would round a coordinate near 2^30
-    /// to a multiple of 64.
+    /// the third left out; the box all zeros when there is no vertex), then,
+    /// as many again, what rounding left of each (its rest). Each value is
+    /// the polyline's f64 less the origin's, rounded to the nearest f32
+    /// (`as`): from an origin near the path (its start), a vertex keeps its
+    /// fraction of a cell where f32 would round a coordinate near 2^30 to a
+    /// multiple of 64. A million cells from the origin it keeps only an
+    /// eighth of one, so the rest (that f64 less the f32, itself as f32)
+    /// gives the page the vertex to about 2^-48 of its distance, to draw
+    /// the part of a long path the learner looks at from an origin there.
     /// Converted and boxed here, in the pass that copies the vertices: a
     /// page's worker did it in JavaScript, once per run and so mostly before
     /// its JIT had optimised the loop (11 to 12 ms for a 100,000-line
     /// program's 250,000 vertices, against 3.4 ms once optimised).
     pub fn ideal_line_f32(&self, origin: [f64; 3]) -> Vec<f32> {
         let dims = self.dims();
-        let mut out = Vec::with_capacity(IDEAL_LINE_BOX_VALUES + 3 * (self.segments.len() + 1));
+        let mut out = Vec::with_capacity(IDEAL_LINE_BOX_VALUES + 6 * (self.segments.len() + 1));
         out.resize(IDEAL_LINE_BOX_VALUES, 0.0);
+        let mut rests: Vec<f32> = Vec::with_capacity(3 * (self.segments.len() + 1));
         let (mut min, mut max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
         // Each vertex goes straight into the f32 array, with no vector of
         // f64 between (what ideal_polyline gives, without its megabytes),
@@ -1886,14 +1891,17 @@ impl Trace {
                 // Made whole, not lane by lane: the box's vector reads
                 // would wait on three separate stores (a failed store
                 // forward, which had made this loop a third slower).
-                let drawn: [f32; 3] = std::array::from_fn(|axis| {
-                    vertex.get(axis).map_or(0.0, |&v| (v - origin[axis]) as f32)
-                });
+                let exact: [f64; 3] =
+                    std::array::from_fn(|axis| vertex.get(axis).map_or(0.0, |&v| v - origin[axis]));
+                let drawn: [f32; 3] = exact.map(|v| v as f32);
                 for axis in 0..3 {
                     min[axis] = min[axis].min(drawn[axis]);
                     max[axis] = max[axis].max(drawn[axis]);
                 }
                 out.extend_from_slice(&drawn);
+                rests.extend(std::array::from_fn::<f32, 3, _>(|axis| {
+                    (exact[axis] - f64::from(drawn[axis])) as f32
+                }));
                 last = Some(std::array::from_fn(|axis| {
                     vertex.get(axis).copied().unwrap_or(0.0)
                 }));
@@ -1903,6 +1911,7 @@ impl Trace {
             out[..3].copy_from_slice(&min);
             out[3..IDEAL_LINE_BOX_VALUES].copy_from_slice(&max);
         }
+        out.extend_from_slice(&rests);
         out
     }
 }

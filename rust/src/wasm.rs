@@ -568,7 +568,8 @@ impl TraceHandle {
 
     /// The ideal polyline as WebGL draws it (Float32Array), from the grid
     /// point (`origin_x`, `origin_y`, `origin_z`): min x, y, z, max x, y, z,
-    /// then x, y, z per vertex (see `Trace::ideal_line_f32`).
+    /// then x, y, z per vertex, then what rounding left of each (see
+    /// `Trace::ideal_line_f32`).
     #[wasm_bindgen(js_name = idealLine)]
     pub fn ideal_line(&self, origin_x: f64, origin_y: f64, origin_z: f64) -> Vec<f32> {
         self.0.ideal_line_f32([origin_x, origin_y, origin_z])

@@ -352,15 +352,17 @@ export class Trace {
   /**
    * The ideal polyline as WebGL draws it: each vertex's x, y, z less the
    * path's start (its origin) rounded to a 32-bit float, with the box they
-   * lie in. Converted and boxed by the core in the pass that copies the
-   * vertices out.
+   * lie in and what the rounding left. Converted and boxed by the core in
+   * the pass that copies the vertices out.
    */
   idealLine(): IdealLine {
     const origin: [number, number, number] = [this.start[0] ?? 0, this.start[1] ?? 0, this.start[2] ?? 0];
     const flat = this.#core.idealLine(...origin);
-    // The core's layout (Trace::ideal_line_f32): min x, y, z, max x, y, z, then the vertices.
+    // The core's layout (Trace::ideal_line_f32): min x, y, z, max x, y, z,
+    // then the vertices, then as many rests.
     const box = (at: number): [number, number, number] => [flat[at]!, flat[at + 1]!, flat[at + 2]!];
-    return { xyz: flat.subarray(6), min: box(0), max: box(3), origin };
+    const values = (flat.length - 6) / 2;
+    return { xyz: flat.subarray(6, 6 + values), rest: flat.subarray(6 + values), min: box(0), max: box(3), origin };
   }
 
   /**

@@ -108,6 +108,14 @@ export interface IdealLine {
    * coordinate near 2^30 to a multiple of 64.
    */
   xyz: Float32Array;
+  /**
+   * What rounding each value of `xyz` to a 32-bit float left (the exact
+   * value less it, itself as a 32-bit float): xyz + rest, added in doubles,
+   * is the vertex from `origin` to about 2^-48 of its distance, for drawing
+   * the part of a long path the learner looks at from an origin there
+   * (IdealPath). Zero where the float was exact.
+   */
+  rest: Float32Array;
   /** Smallest and largest x, y, z over the vertices, from `origin` (zeros when there are none). */
   min: [number, number, number];
   max: [number, number, number];

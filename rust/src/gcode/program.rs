@@ -1945,15 +1945,14 @@ mod tests {
                 joined.extend_from_slice(&own[if repeats { first } else { 0 }..]);
             }
             // The line for drawing is the same vertices less its origin as
-            // f32, after their box.
+            // f32, after their box, then what the f32 left of each.
             let origin = [3.0, -2.0, 1.0];
             let line = t.ideal_line_f32(origin);
-            let xyz: Vec<f32> = joined
-                .iter()
-                .enumerate()
-                .map(|(i, &v)| (v - origin[i % 3]) as f32)
-                .collect();
-            prop_assert_eq!(&line[crate::trace::IDEAL_LINE_BOX_VALUES..], &xyz[..]);
+            let exact = joined.iter().enumerate().map(|(i, &v)| v - origin[i % 3]);
+            let xyz: Vec<f32> = exact.clone().map(|v| v as f32).collect();
+            let rests: Vec<f32> = exact.zip(&xyz).map(|(v, &drawn)| (v - f64::from(drawn)) as f32).collect();
+            let vertices = &line[crate::trace::IDEAL_LINE_BOX_VALUES..];
+            prop_assert_eq!(vertices, &[xyz.clone(), rests].concat()[..]);
             for axis in 0..3 {
                 let values = || xyz.iter().skip(axis).step_by(3).copied();
                 let (min, max) = match values().next() {
