@@ -4,7 +4,7 @@
 // worker sends the page); web/ideal-line.ts for lines the page makes itself.
 import { describe, expect, it } from 'vitest';
 import type { IdealLine } from '../web/core/types.js';
-import { idealLineOf } from '../web/ideal-line.js';
+import { REBASE_CELLS, idealLineOf, verticesFrom } from '../web/ideal-line.js';
 import { runGcode, trace } from '../web/core/index.js';
 
 /** The line as a plain per-vertex loop over the polyline gives it, from `origin`. */
@@ -90,5 +90,55 @@ describe('Trace.idealLine', () => {
     expect(Array.from(line.xyz)).toEqual([0, 0, 0, 24, 10, 5]);
     expect(Math.fround(1073741800)).toBe(Math.fround(1073741824));
     far.free();
+  });
+});
+
+describe('verticesFrom', () => {
+  /** The vertices drawn from `origin` as doubles, one array of x, y, z each. */
+  const drawn = (line: IdealLine, origin: [number, number, number]) => {
+    const xyz = verticesFrom(line, origin);
+    return Array.from({ length: xyz.length / 3 }, (_, k) => Array.from(xyz.subarray(k * 3, k * 3 + 3)));
+  };
+
+  it("is the line's own vertices from its own origin", () => {
+    const line = idealLineOf(new Float64Array([5, 5, 5, 2005, 1405, 1205, 6005, 1405, 1205]), 3);
+    expect(verticesFrom(line, line.origin)).toBe(line.xyz);
+  });
+
+  it('takes the vertices of a long line from a point near its far end, exactly', async () => {
+    // An arc's vertices have fractions, which a float a million cells from the start rounds to an eighth.
+    const program = await runGcode('G21 G90\nG2 X20000 Y0 I10000 J0\n', { stepsPerMm: 80 });
+    const polyline = program.trace.idealPolyline();
+    const line = program.trace.idealLine();
+    // The vertex the floats from the start rounded most (a million cells out, to a sixteenth).
+    const rounding = (k: number) => Math.max(...line.rest.subarray(k * 3, k * 3 + 3).map(Math.abs));
+    const k = Array.from({ length: polyline.length / 3 }, (_, i) => i).reduce((best, i) => (rounding(i) > rounding(best) ? i : best));
+    const vertex = [0, 1, 2].map((a) => polyline[k * 3 + a]!);
+    expect(Math.hypot(...vertex)).toBeGreaterThan(500_000);
+    const origin = vertex.map((c) => Math.round(c) - 3) as [number, number, number];
+    const vertices = drawn(line, origin);
+    // Nothing is split: the segments near the origin have an end there.
+    expect(vertices.length).toBe(polyline.length / 3);
+    expect(vertices[k]).toEqual(vertex.map((c, a) => Math.fround(c - origin[a]!)));
+    // The float from the start, moved there, was off by a share of a cell.
+    expect(rounding(k)).toBeGreaterThan(0.01);
+    program.free();
+  });
+
+  it('splits a segment whose ends are far, at its point nearest the origin, and only such a segment', () => {
+    // Through (0, 5.5, 0.25) from a million cells either side, then off to a far point.
+    const line = idealLineOf(new Float64Array([-1e6, 5.5, 0.25, 1e6, 5.5, 0.25, 1e6, 3e6, 0]), 3);
+    const vertices = drawn(line, [0, 5, 0]);
+    expect(vertices).toEqual([[-1e6, 0.5, 0.25], [0, 0.5, 0.25], [1e6, 0.5, 0.25], [1e6, 3e6 - 5, 0]]);
+    // Its middle, from the start, is a float a million cells out: the one the view rounded.
+    expect(drawn(line, line.origin)).toHaveLength(3);
+  });
+
+  it('leaves a segment passing far beyond the point looked at, seen within a quarter of a pixel at a thousand', () => {
+    // 100,000 cells off, its ends at 1,000,000 (off by 2^-24 of that, 0.06 cell): 6e-7 radians.
+    const passing = (offset: number) => idealLineOf(new Float64Array([-1e6, offset, 0, 1e6, offset, 0]), 3);
+    expect(drawn(passing(100_000), [0, 0, 0])).toHaveLength(2);
+    // REBASE_CELLS on each axis is where the view may look from this origin: a segment through there is split.
+    expect(drawn(passing(REBASE_CELLS), [0, 0, 0])).toEqual([[-1e6, REBASE_CELLS, 0], [0, REBASE_CELLS, 0], [1e6, REBASE_CELLS, 0]]);
   });
 });

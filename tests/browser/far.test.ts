@@ -55,6 +55,24 @@ function drawnShare(png: PNG): number {
 }
 
 describe('a path far from the origin', () => {
+  it('is drawn at the far end of a long line as at the same end of a short one: the ideal line runs where its cells are', async () => {
+    // Lines along (10, 7, 6): a short one's last cells are a long one's,
+    // moved by a multiple of it, and so is the ideal line through them. The
+    // long line's ideal line is taken from its start, 1,850,000 units away:
+    // before, it was drawn 11 pixels (a tenth of a cell) off, across the
+    // cells there, which are drawn from the point looked at. The step is 6
+    // before the end and the camera looks at the last cells, which are
+    // ahead of it and faint: no solid cell hides the line, whose dashes
+    // behind cells are placed by its length, which differs.
+    const end = (scale: number) => [10 * scale, 7 * scale, 6 * scale];
+    const camera = (at: readonly number[]) => [at[0]! + 3.5, at[1]! - 5, at[2]! - 4.5, at[0]! - 1.5, at[1]! - 1.05, at[2]! - 0.9];
+    const [long, short] = [end(140_000), end(20)];
+    const near = await drawn('regions', [0, 0, 0], short, camera(short), 0, `&step=${short[0]! - 6}`);
+    const far = await drawn('regions', [0, 0, 0], long, camera(long), 0, `&step=${long[0]! - 6}`);
+    expect(drawnShare(near)).toBeGreaterThan(0.05);
+    expect(differingShare(near, far)).toBeLessThan(0.002);
+  });
+
   it('is drawn near 2^30 as at the origin: cells, ideal line, grid and the exit face of Decision in 3D', async () => {
     const shape = ['regions', [0, 0, 0], [24, 10, 5], [30, -22, 20, 8, 4, 2]] as const;
     const near = await drawn(...shape, 0, '&step=5&decision3d=1');

@@ -8,12 +8,18 @@
  * drawn once, as a plain 1-pixel line: wide lines cost a quad per segment
  * twice over, which a software renderer feels, and at that length the path
  * is thin on screen anyway.
+ *
+ * Its vertices are drawn from a grid point near the point the view looks at
+ * (drawNear, verticesFrom in web/ideal-line.ts), as the cells are
+ * (setCellOrigin): from the path's start, the far end of a long path was
+ * drawn a tenth of a cell off the cells there.
  */
 import * as THREE from 'three';
 import { Line2 } from 'three/examples/jsm/lines/Line2.js';
 import { LineGeometry } from 'three/examples/jsm/lines/LineGeometry.js';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import type { IdealLine } from '../core/types.js';
+import { REBASE_CELLS, verticesFrom } from '../ideal-line.js';
 import { PALETTE } from './palette.js';
 
 /** Line width, CSS pixels. */
@@ -22,18 +28,18 @@ const WIDTH_PX = 3;
 export const FAT_LINE_POINTS = 1_000;
 
 export class IdealPath extends THREE.Group {
-  readonly #geometry: THREE.BufferGeometry;
+  readonly #ideal: IdealLine;
+  readonly #fat: boolean;
+  #geometry: THREE.BufferGeometry;
   readonly #materials: THREE.Material[];
+  readonly #lines: (THREE.Line | Line2)[] = [];
 
   /** `ideal` (a Trace's idealLine(), or idealLineOf a path's cell centers), drawn in `colour`. */
   constructor(ideal: IdealLine, colour: string = PALETTE.ideal) {
     super();
-    const { xyz } = ideal;
-    // The vertices are from their origin, which places the group: the
-    // view's matrices, computed in doubles, take the origin off the camera's
-    // position before WebGL's 32-bit floats see either.
-    this.position.fromArray(ideal.origin);
-    const count = xyz.length / 3;
+    this.#ideal = ideal;
+    const count = ideal.xyz.length / 3;
+    this.#fat = count <= FAT_LINE_POINTS;
     // A program that made no move (empty, or stopped at its first line) has
     // no ideal path; a line needs two points (and LineGeometry throws on none).
     if (count < 2) {
@@ -41,47 +47,80 @@ export class IdealPath extends THREE.Group {
       this.#materials = [];
       return;
     }
-    if (count > FAT_LINE_POINTS) {
-      // The line's box as it came: three.js would otherwise make two more
-      // passes over the vertices to cull it in the first frame (13 ms for a
-      // 100,000-line program's 250,000 vertices). A wide line's geometry
-      // finds its own.
-      const box = new THREE.Box3(new THREE.Vector3(...ideal.min), new THREE.Vector3(...ideal.max));
-      this.#geometry = new THREE.BufferGeometry();
-      this.#geometry.setAttribute('position', new THREE.BufferAttribute(xyz, 3));
-      this.#geometry.boundingBox = box;
-      this.#geometry.boundingSphere = box.getBoundingSphere(new THREE.Sphere());
+    if (!this.#fat) {
       this.#materials = [new THREE.LineBasicMaterial({ color: colour })];
-      const line = new THREE.Line(this.#geometry, this.#materials[0]);
-      line.renderOrder = 2;
-      this.add(line);
-      return;
+    } else {
+      const visible = new LineMaterial({ color: colour, linewidth: WIDTH_PX });
+      const hidden = new LineMaterial({
+        color: colour,
+        linewidth: WIDTH_PX * 0.75,
+        dashed: true,
+        dashSize: 0.22,
+        gapSize: 0.16,
+        transparent: true,
+        opacity: 0.7,
+        // Only where something nearer has already been drawn.
+        depthFunc: THREE.GreaterDepth,
+        depthWrite: false,
+      });
+      this.#materials = [visible, hidden];
     }
-    const geometry = new LineGeometry();
-    geometry.setPositions(xyz);
-    this.#geometry = geometry;
-
-    const visible = new LineMaterial({ color: colour, linewidth: WIDTH_PX });
-    const hidden = new LineMaterial({
-      color: colour,
-      linewidth: WIDTH_PX * 0.75,
-      dashed: true,
-      dashSize: 0.22,
-      gapSize: 0.16,
-      transparent: true,
-      opacity: 0.7,
-      // Only where something nearer has already been drawn.
-      depthFunc: THREE.GreaterDepth,
-      depthWrite: false,
-    });
-    this.#materials = [visible, hidden];
-    for (const material of [visible, hidden]) {
-      const line = new Line2(geometry, material);
-      line.computeLineDistances();
+    this.#geometry = this.#drawnFrom(ideal.origin);
+    for (const material of this.#materials) {
+      const line = this.#fat ? new Line2(this.#geometry as LineGeometry, material as LineMaterial) : new THREE.Line(this.#geometry, material);
       // After every cell, transparent ones included, so the depth test sees them all.
       line.renderOrder = 2;
+      this.#lines.push(line);
       this.add(line);
     }
+    this.#measureDashes();
+  }
+
+  /**
+   * Keeps the vertices drawn from near `point` (a grid point the view looks
+   * at): once it is more than REBASE_CELLS from where they are taken from
+   * on some axis, they are taken again from it (verticesFrom).
+   */
+  drawNear(point: THREE.Vector3): void {
+    if (this.#lines.length === 0) return;
+    const from = this.position;
+    if (Math.max(Math.abs(point.x - from.x), Math.abs(point.y - from.y), Math.abs(point.z - from.z)) <= REBASE_CELLS) return;
+    this.#geometry.dispose();
+    this.#geometry = this.#drawnFrom(point.toArray());
+    for (const line of this.#lines) line.geometry = this.#geometry;
+    this.#measureDashes();
+  }
+
+  /** A wide line's distances along it, which place its dashes: on the geometry both its lines share. */
+  #measureDashes(): void {
+    const [line] = this.#lines;
+    if (line instanceof Line2) line.computeLineDistances();
+  }
+
+  /** The line's geometry, its vertices taken from the grid point `origin`, where the group is placed. */
+  #drawnFrom(origin: [number, number, number]): THREE.BufferGeometry {
+    const ideal = this.#ideal;
+    // The view's matrices, computed in doubles, take the origin off the
+    // camera's position before WebGL's 32-bit floats see either.
+    this.position.fromArray(origin);
+    const xyz = verticesFrom(ideal, origin);
+    if (this.#fat) {
+      // A wide line's geometry finds its own box.
+      const geometry = new LineGeometry();
+      geometry.setPositions(xyz);
+      return geometry;
+    }
+    // The line's box as it came, from `origin`: three.js would otherwise
+    // make two more passes over the vertices to cull it in the first frame
+    // (13 ms for a 100,000-line program's 250,000 vertices). Split points
+    // lie on its segments, inside it.
+    const shift = new THREE.Vector3().fromArray(ideal.origin).sub(this.position);
+    const box = new THREE.Box3(new THREE.Vector3(...ideal.min).add(shift), new THREE.Vector3(...ideal.max).add(shift));
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(xyz, 3));
+    geometry.boundingBox = box;
+    geometry.boundingSphere = box.getBoundingSphere(new THREE.Sphere());
+    return geometry;
   }
 
   dispose(): void {

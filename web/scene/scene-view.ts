@@ -789,10 +789,13 @@ export class SceneView {
     this.#drawnOnce = true;
     const camera = this.#activeCamera();
     camera.updateMatrixWorld();
-    // Cells drawn from the grid point looked at, so that near it every
-    // number the GPU rounds is small (setCellOrigin).
+    // Cells and ideal lines drawn from the grid point looked at, so that
+    // near it every number the GPU rounds is small (setCellOrigin, drawNear).
     const target = this.#controls.target;
-    setCellOrigin(new THREE.Vector3(Math.round(target.x), Math.round(target.y), Math.round(target.z)));
+    const lookedAt = new THREE.Vector3(Math.round(target.x), Math.round(target.y), Math.round(target.z));
+    setCellOrigin(lookedAt);
+    this.#drawn?.ideal.drawNear(lookedAt);
+    this.#secondLine?.drawNear(lookedAt);
     this.#handles.pinToView(camera, this.#controls.target);
     this.#drawn?.axes.showLegibleTicks(camera, this.#container.clientWidth, this.#container.clientHeight);
     this.#renderer.render(this.#scene, camera);
