@@ -132,6 +132,8 @@ describe('verticesFrom', () => {
     expect(vertices).toEqual([[-1e6, 0.5, 0.25], [0, 0.5, 0.25], [1e6, 0.5, 0.25], [1e6, 3e6 - 5, 0]]);
     // Its middle, from the start, is a float a million cells out: the one the view rounded.
     expect(drawn(line, line.origin)).toHaveLength(3);
+    // Nor is a segment split that has an end near the origin: it is off by little near there.
+    expect(drawn(line, [999_998, 5, 0])).toHaveLength(3);
   });
 
   it('leaves a segment passing far beyond the point looked at, seen within a quarter of a pixel at a thousand', () => {

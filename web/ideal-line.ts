@@ -91,9 +91,10 @@ const ANGLE_TOLERANCE = 2 ** -12;
  * line's middle) is off there as much as its ends. Such a segment is split
  * at its point nearest the origin, so each half has an end near where the
  * learner looks: one vertex more per such segment, not one per stretch of
- * a long line, whatever its length. Near the point looked at a segment is
- * split when its far end is off by more than EXACT_REACH allows; farther
- * out, when that is more than ANGLE_TOLERANCE of its distance from there.
+ * a long line, whatever its length. A segment is split when it is off
+ * there (its ends' errors, interpolated) by more than EXACT_REACH allows
+ * near the point looked at, or farther out by more than ANGLE_TOLERANCE of
+ * its distance from there.
  *
  * Taken again only when the point looked at moves REBASE_CELLS, not every
  * frame: between times a frame draws the same vertices. `ideal.xyz` itself
@@ -131,8 +132,8 @@ export function verticesFrom(ideal: IdealLine, origin: readonly [number, number,
       taken[i + 2] = cz;
     }
     const c2 = cx * cx + cy * cy + cz * cz;
-    const far2 = Math.max(a2, c2);
-    if (seek && i > 0 && far2 > EXACT_REACH ** 2) {
+    // Only a segment with a vertex past EXACT_REACH can be off by more than it allows.
+    if (seek && i > 0 && Math.max(a2, c2) > EXACT_REACH ** 2) {
       const dx = cx - ax;
       const dy = cy - ay;
       const dz = cz - az;
@@ -142,7 +143,8 @@ export function verticesFrom(ideal: IdealLine, origin: readonly [number, number,
       if (t > 0 && t < 1) {
         const point: [number, number, number] = [ax + t * dx, ay + t * dy, az + t * dz];
         const beyondLookedAt = Math.max(0, Math.sqrt(point[0] ** 2 + point[1] ** 2 + point[2] ** 2) - LOOKED_AT_REACH);
-        if (Math.sqrt(far2) * FLOAT_ROUNDING > EXACT_REACH * FLOAT_ROUNDING + ANGLE_TOLERANCE * beyondLookedAt) splits.push({ segment: i / 3 - 1, point });
+        const off = ((1 - t) * Math.sqrt(a2) + t * Math.sqrt(c2)) * FLOAT_ROUNDING;
+        if (off > EXACT_REACH * FLOAT_ROUNDING + ANGLE_TOLERANCE * beyondLookedAt) splits.push({ segment: i / 3 - 1, point });
       }
     }
     ax = cx;
