@@ -4,7 +4,7 @@
 // worker sends the page); web/ideal-line.ts for lines the page makes itself.
 import { describe, expect, it } from 'vitest';
 import type { IdealLine } from '../web/core/types.js';
-import { REBASE_CELLS, idealLineOf, verticesFrom } from '../web/ideal-line.js';
+import { REBASE_CELLS, dashDistances, idealLineOf, verticesFrom } from '../web/ideal-line.js';
 import { runGcode, trace } from '../web/core/index.js';
 
 /** The line as a plain per-vertex loop over the polyline gives it, from `origin`. */
@@ -96,13 +96,14 @@ describe('Trace.idealLine', () => {
 describe('verticesFrom', () => {
   /** The vertices drawn from `origin` as doubles, one array of x, y, z each. */
   const drawn = (line: IdealLine, origin: [number, number, number]) => {
-    const xyz = verticesFrom(line, origin);
+    const { xyz } = verticesFrom(line, origin);
     return Array.from({ length: xyz.length / 3 }, (_, k) => Array.from(xyz.subarray(k * 3, k * 3 + 3)));
   };
 
   it("is the line's own vertices from its own origin", () => {
     const line = idealLineOf(new Float64Array([5, 5, 5, 2005, 1405, 1205, 6005, 1405, 1205]), 3);
-    expect(verticesFrom(line, line.origin)).toBe(line.xyz);
+    expect(verticesFrom(line, line.origin)).toEqual({ xyz: line.xyz, splits: [] });
+    expect(verticesFrom(line, line.origin).xyz).toBe(line.xyz);
   });
 
   it('takes the vertices of a long line from a point near its far end, exactly', async () => {
@@ -142,5 +143,32 @@ describe('verticesFrom', () => {
     expect(drawn(passing(100_000), [0, 0, 0])).toHaveLength(2);
     // REBASE_CELLS on each axis is where the view may look from this origin: a segment through there is split.
     expect(drawn(passing(REBASE_CELLS), [0, 0, 0])).toEqual([[-1e6, REBASE_CELLS, 0], [0, REBASE_CELLS, 0], [1e6, REBASE_CELLS, 0]]);
+  });
+});
+
+describe('dashDistances', () => {
+  /** The distances of `line`'s drawn segments from `origin`, two per segment, as doubles. */
+  const distances = (line: IdealLine, origin: [number, number, number], periodCells: number) =>
+    Array.from(dashDistances(line, origin, verticesFrom(line, origin).splits, periodCells));
+
+  it("adds up the path's length, as three.js does, along a path drawn from its start", () => {
+    const line = idealLineOf(new Float64Array([0, 0, 0, 3, 4, 0, 3, 4, 2]), 3);
+    expect(distances(line, line.origin, 100)).toEqual([0, 5, 5, 7]);
+    // Each segment's from its start, the end nearer the origin, less whole periods.
+    expect(distances(line, line.origin, 0.38)).toEqual([0, 5, 5 % 0.38, (5 % 0.38) + 2].map(Math.fround));
+  });
+
+  it('gives a segment its distances from its end nearer the origin, small there, a million cells along', () => {
+    const line = idealLineOf(new Float64Array([0, 0, 0, 1_000_000, 0.5, 0]), 3);
+    const along = Math.hypot(1_000_000, 0.5);
+    const [start, end] = distances(line, [999_998, 0, 0], 0.38);
+    expect(end).toBe(Math.fround(along % 0.38));
+    expect(start).toBe(Math.fround((along % 0.38) - along));
+  });
+
+  it('runs on through a split point, from which both halves are given', () => {
+    const line = idealLineOf(new Float64Array([-1e6, 5.5, 0.25, 1e6, 5.5, 0.25]), 3);
+    const anchor = 1e6 % 0.38;
+    expect(distances(line, [0, 5, 0], 0.38)).toEqual([anchor - 1e6, anchor, anchor, anchor + 1e6].map(Math.fround));
   });
 });

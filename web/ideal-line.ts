@@ -74,6 +74,22 @@ const EXACT_REACH = 2 ** 14;
  */
 const ANGLE_TOLERANCE = 2 ** -12;
 
+/** A segment split where it passes nearest the drawn vertices' origin (verticesFrom). */
+export interface Split {
+  /** Segment index k: from vertex k to vertex k + 1 of the ideal line. */
+  segment: number;
+  /** The point it is split at, grid units from the origin, exact (doubles). */
+  point: [number, number, number];
+}
+
+/** An ideal line's vertices as drawn from an origin (verticesFrom). */
+export interface DrawnVertices {
+  /** Stride 3, grid units from the origin, 32-bit floats: the line's vertices with each split point after its segment's first. */
+  xyz: Float32Array;
+  /** The segments split, in order. */
+  splits: readonly Split[];
+}
+
 /**
  * The vertices of `ideal` taken from the grid point `origin` (x, y, z) as
  * 32-bit floats, each from its exact value (xyz + rest from ideal.origin),
@@ -97,10 +113,10 @@ const ANGLE_TOLERANCE = 2 ** -12;
  * its distance from there.
  *
  * Taken again only when the point looked at moves REBASE_CELLS, not every
- * frame: between times a frame draws the same vertices. `ideal.xyz` itself
- * when `origin` is ideal.origin and nothing is split.
+ * frame: between times a frame draws the same vertices. Its xyz is
+ * `ideal.xyz` itself when `origin` is ideal.origin and nothing is split.
  */
-export function verticesFrom(ideal: IdealLine, origin: readonly [number, number, number]): Float32Array {
+export function verticesFrom(ideal: IdealLine, origin: readonly [number, number, number]): DrawnVertices {
   const { xyz, rest } = ideal;
   const count = xyz.length / 3;
   // ideal.origin - origin: whole numbers, exact in doubles.
@@ -110,10 +126,9 @@ export function verticesFrom(ideal: IdealLine, origin: readonly [number, number,
   // vertex can be off by more than EXACT_REACH allows, no segment is looked at.
   const corner = (a: number, shift: number) => Math.max(Math.abs(ideal.min[a]! + shift), Math.abs(ideal.max[a]! + shift));
   const seek = corner(0, sx) ** 2 + corner(1, sy) ** 2 + corner(2, sz) ** 2 > EXACT_REACH ** 2;
-  if (!moved && !seek) return xyz;
+  if (!moved && !seek) return { xyz, splits: [] };
   const taken = moved ? new Float32Array(count * 3) : xyz;
-  /** Each split: segment k (vertex k to k + 1) and the point it is split at, from `origin`. */
-  const splits: { segment: number; point: [number, number, number] }[] = [];
+  const splits: Split[] = [];
   // One pass, written out (no Math.hypot, no arrays per vertex): it runs
   // over a program's quarter of a million vertices in the frame that takes
   // them from a new origin, mostly before V8 has optimised it. A vertex
@@ -152,7 +167,7 @@ export function verticesFrom(ideal: IdealLine, origin: readonly [number, number,
     az = cz;
     a2 = c2;
   }
-  if (splits.length === 0) return taken;
+  if (splits.length === 0) return { xyz: taken, splits };
   // Each split point after its segment's first vertex, the runs between copied whole.
   const out = new Float32Array((count + splits.length) * 3);
   let from = 0;
@@ -163,5 +178,47 @@ export function verticesFrom(ideal: IdealLine, origin: readonly [number, number,
     from = to;
   });
   out.set(taken.subarray(from), from + splits.length * 3);
+  return { xyz: out, splits };
+}
+
+/**
+ * Where a wide line's dashes fall on each drawn segment of `ideal` from
+ * `origin` (its vertices and `splits` as verticesFrom gave them): its
+ * distance along the path at its start and at its end, two per segment,
+ * as LineMaterial reads them (instanceDistanceStart, instanceDistanceEnd),
+ * dashes repeating every `periodCells`.
+ *
+ * Why: three.js's computeLineDistances adds up distances from the path's
+ * start as 32-bit floats, which at a million cells along are multiples of
+ * an eighth of a cell: the dashes there, a fifth of a cell long, ran
+ * together. Here the distances are added up exactly (doubles) and each
+ * segment's are given from its end nearer the origin (near where the
+ * learner looks), as that distance less whole periods (small, so exact as
+ * a float), and its other end that plus or minus its length: the pattern
+ * is the path's own, continuous from segment to segment, and exact where
+ * the learner looks; only far out is it rounded.
+ */
+export function dashDistances(ideal: IdealLine, origin: readonly [number, number, number], splits: readonly Split[], periodCells: number): Float32Array {
+  const { xyz, rest } = ideal;
+  // The drawn vertices, exact: each of the line's, and each split point after its segment's first.
+  const exact: number[] = [];
+  let next = 0;
+  for (let k = 0; k < xyz.length / 3; k++) {
+    for (let a = 0; a < 3; a++) exact.push(ideal.origin[a]! - origin[a]! + xyz[k * 3 + a]! + rest[k * 3 + a]!);
+    if (splits[next]?.segment === k) exact.push(...splits[next++]!.point);
+  }
+  const segments = Math.max(0, exact.length / 3 - 1);
+  const out = new Float32Array(segments * 2);
+  /** Distance along the path from its start to drawn vertex j, cells. */
+  let along = 0;
+  for (let j = 0; j < segments; j++) {
+    const [ax, ay, az, cx, cy, cz] = exact.slice(j * 3, j * 3 + 6) as [number, number, number, number, number, number];
+    const length = Math.hypot(cx - ax, cy - ay, cz - az);
+    const startNearer = Math.hypot(ax, ay, az) <= Math.hypot(cx, cy, cz);
+    const anchor = (startNearer ? along : along + length) % periodCells;
+    out[j * 2] = startNearer ? anchor : anchor - length;
+    out[j * 2 + 1] = startNearer ? anchor + length : anchor;
+    along += length;
+  }
   return out;
 }

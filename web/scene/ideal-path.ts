@@ -19,11 +19,14 @@ import { Line2 } from 'three/examples/jsm/lines/Line2.js';
 import { LineGeometry } from 'three/examples/jsm/lines/LineGeometry.js';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import type { IdealLine } from '../core/types.js';
-import { REBASE_CELLS, verticesFrom } from '../ideal-line.js';
+import { REBASE_CELLS, dashDistances, verticesFrom } from '../ideal-line.js';
 import { PALETTE } from './palette.js';
 
 /** Line width, CSS pixels. */
 const WIDTH_PX = 3;
+/** The hidden part's dashes and the gaps between them, grid units. */
+const DASH_CELLS = 0.22;
+const GAP_CELLS = 0.16;
 /** Polylines longer than this are drawn as a plain line (see above). */
 export const FAT_LINE_POINTS = 1_000;
 
@@ -55,8 +58,8 @@ export class IdealPath extends THREE.Group {
         color: colour,
         linewidth: WIDTH_PX * 0.75,
         dashed: true,
-        dashSize: 0.22,
-        gapSize: 0.16,
+        dashSize: DASH_CELLS,
+        gapSize: GAP_CELLS,
         transparent: true,
         opacity: 0.7,
         // Only where something nearer has already been drawn.
@@ -73,7 +76,6 @@ export class IdealPath extends THREE.Group {
       this.#lines.push(line);
       this.add(line);
     }
-    this.#measureDashes();
   }
 
   /**
@@ -88,13 +90,6 @@ export class IdealPath extends THREE.Group {
     this.#geometry.dispose();
     this.#geometry = this.#drawnFrom(point.toArray());
     for (const line of this.#lines) line.geometry = this.#geometry;
-    this.#measureDashes();
-  }
-
-  /** A wide line's distances along it, which place its dashes: on the geometry both its lines share. */
-  #measureDashes(): void {
-    const [line] = this.#lines;
-    if (line instanceof Line2) line.computeLineDistances();
   }
 
   /** The line's geometry, its vertices taken from the grid point `origin`, where the group is placed. */
@@ -103,11 +98,16 @@ export class IdealPath extends THREE.Group {
     // The view's matrices, computed in doubles, take the origin off the
     // camera's position before WebGL's 32-bit floats see either.
     this.position.fromArray(origin);
-    const xyz = verticesFrom(ideal, origin);
+    const { xyz, splits } = verticesFrom(ideal, origin);
     if (this.#fat) {
-      // A wide line's geometry finds its own box.
+      // A wide line's geometry finds its own box. Its distances along the
+      // path place the dashes, as Line2.computeLineDistances would, but
+      // exact where the learner looks (dashDistances).
       const geometry = new LineGeometry();
       geometry.setPositions(xyz);
+      const distances = new THREE.InstancedInterleavedBuffer(dashDistances(ideal, origin, splits, DASH_CELLS + GAP_CELLS), 2, 1);
+      geometry.setAttribute('instanceDistanceStart', new THREE.InterleavedBufferAttribute(distances, 1, 0));
+      geometry.setAttribute('instanceDistanceEnd', new THREE.InterleavedBufferAttribute(distances, 1, 1));
       return geometry;
     }
     // The line's box as it came, from `origin`: three.js would otherwise
