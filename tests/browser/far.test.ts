@@ -73,6 +73,20 @@ describe('a path far from the origin', () => {
     expect(differingShare(near, far)).toBeLessThan(0.002);
   });
 
+  it("is drawn in a long line's middle as in a short one's, the ideal line through its cells", async () => {
+    // The ideal line is one segment whose ends are 900,000 cells from the
+    // middle, each off by up to a sixteenth of a cell as a float from
+    // there: drawn between them, the line was as far off in the middle.
+    // It is split there, so each half has an exact end near the camera.
+    const point = (scale: number) => [10 * scale, 7 * scale, 6 * scale];
+    const camera = (at: readonly number[]) => [at[0]! + 3.5, at[1]! - 5, at[2]! - 4.5, at[0]! - 1.5, at[1]! - 1.05, at[2]! - 0.9];
+    const [long, short] = [140_000, 20];
+    const near = await drawn('regions', [0, 0, 0], point(short), camera(point(short / 2)), 0, `&step=${5 * short - 6}`);
+    const far = await drawn('regions', [0, 0, 0], point(long), camera(point(long / 2)), 0, `&step=${5 * long - 6}`);
+    expect(drawnShare(near)).toBeGreaterThan(0.05);
+    expect(differingShare(near, far)).toBeLessThan(0.002);
+  });
+
   it('dashes the ideal line behind the cells at the far end of a long line as at the end of a short one', async () => {
     // At the path's end every cell is solid, and the line behind them is
     // dashed by its length from the start. Before, the long line's lengths
