@@ -12,7 +12,14 @@
  * Its vertices are drawn from a grid point near the point the view looks at
  * (drawNear, verticesFrom in web/ideal-line.ts), as the cells are
  * (setCellOrigin): from the path's start, the far end of a long path was
- * drawn a tenth of a cell off the cells there.
+ * drawn a tenth of a cell off the cells there. Taking the whole line from
+ * there again, now and then, was chosen over pieces of the line each with
+ * its own origin, which would be a draw call per few thousand cells
+ * (thousands for the page's longest paths, each of which a software
+ * renderer feels in every frame), and over taking the vertices from the
+ * point looked at in the vertex shader, which would read two attributes
+ * per vertex in every frame of a 250,000-vertex program and cannot split
+ * the segment a long line is.
  */
 import * as THREE from 'three';
 import { Line2 } from 'three/examples/jsm/lines/Line2.js';
