@@ -69,13 +69,13 @@ describe('TraceClient', () => {
   it('starts no worker until asked, and matches replies to requests by id', async () => {
     const { client, workers } = setUp();
     expect(workers).toHaveLength(0);
-    const first = client.request({ kind: 'export', traceId: 1, format: 'csv' });
-    const second = client.request({ kind: 'export', traceId: 1, format: 'json' });
+    const first = client.request({ kind: 'pointAtSeconds', traceId: 1, seconds: 1 });
+    const second = client.request({ kind: 'pointAtSeconds', traceId: 1, seconds: 2 });
     const [a, b] = workers[0]!.received;
-    workers[0]!.reply({ id: b!.id, ok: true, value: 'second' });
-    workers[0]!.reply({ id: a!.id, ok: true, value: 'first' });
-    expect(await first).toBe('first');
-    expect(await second).toBe('second');
+    workers[0]!.reply({ id: b!.id, ok: true, value: 20 });
+    workers[0]!.reply({ id: a!.id, ok: true, value: 10 });
+    expect(await first).toBe(10);
+    expect(await second).toBe(20);
     expect(workers).toHaveLength(1);
   });
 

@@ -217,7 +217,14 @@ function run(catalogue: Catalogue): void {
   );
 
   const exports = wireExports(
-    { csv: byId('export-csv', HTMLButtonElement), json: byId('export-json', HTMLButtonElement), png: byId('export-png', HTMLButtonElement) },
+    { csv: byId('export-csv', HTMLButtonElement), json: byId('export-json', HTMLButtonElement), png: byId('export-png', HTMLButtonElement), vcd: byId('export-vcd', HTMLButtonElement) },
+    {
+      bar: byId('export-progress', HTMLProgressElement),
+      cancel: byId('export-cancel', HTMLButtonElement),
+      box: byId('export-run', HTMLSpanElement),
+      text: byId('export-run-text', HTMLSpanElement),
+      note: byId('export-note', HTMLSpanElement),
+    },
     () => page.shown,
     pathViews,
     () => (store.state.mode === 'gcode' ? 'program' : store.state.algorithm),
@@ -252,7 +259,7 @@ function run(catalogue: Catalogue): void {
       scene.lookAtCurrentCell();
     }),
     timing: new TimingDiagram(byId('timing', HTMLDivElement), goTo),
-    timeViews: new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), vcd: byId('export-vcd', HTMLButtonElement) }, catalogue, timeline, goTo),
+    timeViews: new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), }, catalogue, timeline, goTo),
     experimentPanel: new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue, byId('viewport', HTMLDivElement)),
     stepReason: new StepReason(byId('step-reason', HTMLParagraphElement)),
     staleNote: byId('stale-note', HTMLParagraphElement),

@@ -173,6 +173,49 @@ describe('a dense path on a software GPU', () => {
   });
 });
 
+describe("a 1,400,000-step line's export", () => {
+  it('is written in the worker with its progress and a Cancel, off the main thread, and a change of the inputs cancels it', { timeout: 120_000 }, async () => {
+    // 1,400,001 rows of CSV (121 MB): it took 3 s with no sign of it, and
+    // its text crossed to the page as one string, a task of 0.65 s (a 50,000,000-step
+    // program's was past the longest string a browser holds: nothing was saved, nothing said).
+    const p = await openPage('?algorithm=regions&from=0,0,0&to=1400000,700,600', { initScript: observe });
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 1,400,000$/ }).waitFor();
+    const saved: string[] = [];
+    page.on('download', (d) => saved.push(d.suggestedFilename()));
+    const [csv, json] = ['export-csv', 'export-json'].map((id) => page.getByTestId(id));
+
+    await json!.click();
+    await page.getByTestId('export-run-text').filter({ hasText: /^Writing regions-steps\.json: [\d.,]+ MB so far$/ }).waitFor();
+    expect(await csv!.isDisabled()).toBe(true);
+    await page.getByTestId('export-cancel').click();
+    await page.getByTestId('export-note').filter({ hasText: 'regions-steps.json was not saved: the export was cancelled.' }).waitFor();
+    expect(await page.getByTestId('export-run').isHidden()).toBe(true);
+    await expect.poll(() => csv!.isDisabled()).toBe(false);
+
+    // The inputs change under an export: its trace is about to be freed.
+    await json!.click();
+    await page.getByTestId('export-run-text').filter({ hasText: 'MB so far' }).waitFor();
+    await page.getByTestId('input-to-y').fill('800');
+    await page.getByTestId('export-note').filter({ hasText: 'regions-steps.json was not saved: the export was cancelled.' }).waitFor();
+    await page.getByTestId('step-counter').filter({ hasText: /of 1,400,000$/ }).waitFor();
+    await page.getByTestId('trace-status').filter({ hasText: 'to (1400000, 800, 600)' }).waitFor();
+
+    await takeObserved(page);
+    const downloading = page.waitForEvent('download', { timeout: 60_000 });
+    await csv!.click();
+    const download = await downloading;
+    expect(await page.getByTestId('export-note').innerText()).toBe('');
+    const rows = (await new Response((await download.createReadStream()) as unknown as ReadableStream).text()).split('\n');
+    expect(rows).toHaveLength(1 + 1_400_001 + 1);
+    expect(rows.at(-2)).toMatch(/^1400000,1400000,800,600,/);
+    expect(saved).toEqual(['regions-steps.csv']);
+    expect(worst(await takeObserved(page)).longestTask).toBeLessThan(LONG_TASK_BOUND_MS);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
 /**
  * A program of `lines` lines: set up, then G1 moves of 0.125 mm along x,
  * 400 to a row (50 mm), each row 0.125 mm further along y. At 80 steps/mm a

@@ -1,6 +1,6 @@
 /**
- * A long run's progress bar and its Cancel button: a G-code program's, and
- * the random-lines experiment's. Hidden while nothing runs.
+ * A long run's progress bar and its Cancel button: a G-code program's, the
+ * random-lines experiment's, and an export's. Hidden while nothing runs.
  */
 
 import { countOf, grouped } from '../format.js';
@@ -12,6 +12,18 @@ export interface LinesProgress {
   steps: number;
   /** A program's first error's line, where its run stopped: the lines after it are read (linesDone) for their syntax only. */
   stoppedAtLine?: number | null;
+}
+
+/** A run's progress as its bar shows it: `done` of `total` (undefined: not known before the end, so the bar only says the run goes on), and in words. */
+export interface BarProgress {
+  done: number;
+  total?: number;
+  said: string;
+}
+
+/** A run of lines as its bar shows it: the lines run, of all, and the steps they took. */
+export function linesBar(progress: LinesProgress): BarProgress {
+  return { done: progress.linesDone, total: Math.max(1, progress.lines), said: `${grouped(progress.linesDone)} of ${countOf(progress.lines, 'line')}, ${countOf(progress.steps, 'step')}` };
 }
 
 export interface RunProgressElements {
@@ -33,14 +45,19 @@ export class RunProgress {
     elements.cancel.addEventListener('click', onCancel);
   }
 
-  /** Shows how far the run has got (undefined: no run under way). */
-  set(progress: LinesProgress | undefined): void {
-    const { bar, cancel, box, text, verb } = this.#e;
+  /** Shows how far the run has got (undefined: no run under way); `verb`, when given, says what it does instead of the elements' own. */
+  set(progress: BarProgress | undefined, verb = this.#e.verb): void {
+    const { bar, cancel, box, text } = this.#e;
     for (const shown of box ? [box] : [bar, cancel]) shown.hidden = progress === undefined;
     if (!progress) return;
-    bar.max = Math.max(1, progress.lines);
-    bar.value = progress.linesDone;
-    const said = `${verb ? `${verb}: ` : ''}${grouped(progress.linesDone)} of ${countOf(progress.lines, 'line')}, ${countOf(progress.steps, 'step')}`;
+    if (progress.total === undefined) {
+      // Indeterminate: the bar moves without saying how far.
+      bar.removeAttribute('value');
+    } else {
+      bar.max = progress.total;
+      bar.value = progress.done;
+    }
+    const said = `${verb ? `${verb}: ` : ''}${progress.said}`;
     bar.setAttribute('aria-valuetext', said);
     if (text) text.textContent = said;
   }

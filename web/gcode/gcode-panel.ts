@@ -19,7 +19,7 @@
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
-import { RunProgress } from '../form/run-progress.js';
+import { linesBar, RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, grouped, sentence } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs, OptionSetter } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
@@ -487,7 +487,7 @@ export class GcodePanel {
   /** A run's progress (undefined: no run under way). */
   setProgress(progress: GcodeProgress | undefined): void {
     this.#e.run.disabled = progress !== undefined;
-    this.#progress.set(progress);
+    this.#progress.set(progress && linesBar(progress));
   }
 
   /** Shows the core's verdict on the machine settings. */

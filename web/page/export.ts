@@ -1,10 +1,15 @@
 /**
  * The page's exports: the traces on screen as the CLI writes them (CSV,
- * JSON, written by the core's writers in the worker), the random lines as
- * CSV, and the view as a PNG.
+ * JSON, written by the core's writers in the worker), a program's STEP and
+ * DIR wires (VCD, likewise), the random lines as CSV, and the view as a PNG.
+ * A file the worker writes is written a part at a time, its progress shown
+ * beside the buttons with a Cancel: a long program's takes a minute.
  */
 import { randomLinesToCsv } from '../core/export.js';
-import type { RemoteTrace } from '../worker/client.js';
+import { RunProgress, type RunProgressElements } from '../form/run-progress.js';
+import { grouped } from '../format.js';
+import { Cancelled, CoreCrash, type RemoteTrace, type Running } from '../worker/client.js';
+import type { ExportFormat } from '../worker/protocol.js';
 import { staleness } from '../state/stale.js';
 import type { Shown } from './shown.js';
 
@@ -12,6 +17,13 @@ export interface ExportButtons {
   csv: HTMLButtonElement;
   json: HTMLButtonElement;
   png: HTMLButtonElement;
+  /** G-code mode's: the program's wires. */
+  vcd: HTMLButtonElement;
+}
+
+/** An export's bar and Cancel, and where it says how it ended when it did not save its file (cancelled, or refused). */
+export interface ExportRunElements extends RunProgressElements {
+  note: HTMLElement;
 }
 
 /** Saves `blob` as a file named `name` through the browser's download. */
@@ -47,43 +59,88 @@ export interface Exports {
    * button that did nothing, or saved the last path traced under the new
    * inputs' name (in the quarter second before a retrace, or after a
    * refusal, when the view is dimmed and marked out of date but the file
-   * is not), said nothing of it.
+   * is not), said nothing of it. A change of the inputs (`tracing`)
+   * cancels an export under way: the traces it reads are about to be freed.
    */
   refresh(tracing: boolean): void;
 }
 
 /** Why nothing can be exported now, or undefined when what is shown can. */
-function notExportable(shown: Shown, tracing: boolean): string | undefined {
+function notExportable(shown: Shown, tracing: boolean, exporting: boolean): string | undefined {
+  if (exporting) return 'An export is under way: wait for it, or cancel it.';
   if (tracing) return 'Not exported yet: the inputs as they are now are being traced.';
   if (!shown.a && !shown.program && !shown.experiment) return 'Nothing to export: nothing was traced (see the message by the inputs).';
   if (staleness() !== undefined) return 'Not exported: what is shown is out of date with the inputs (see the message by them).';
   return undefined;
 }
 
+/** Bytes as the export's progress says them: "12.3 MB". */
+function megabytes(bytes: number): string {
+  return `${grouped(Math.round(bytes / 1e5) / 10)} MB`;
+}
+
 /**
  * Wires the export buttons: `shown` says what is on screen when one is
  * pressed, `view` draws the PNG, `viewName` names it.
  */
-export function wireExports(buttons: ExportButtons, shown: () => Shown, view: { toPng(): Promise<Blob> }, viewName: () => string): Exports {
-  buttons.csv.addEventListener('click', async () => {
+export function wireExports(buttons: ExportButtons, run: ExportRunElements, shown: () => Shown, view: { toPng(): Promise<Blob> }, viewName: () => string): Exports {
+  /** The file the worker is writing, if any. */
+  let running: Running<Blob> | undefined;
+  const progress = new RunProgress(run, () => running?.cancel());
+  // The buttons' state, as the page last asked for it (refresh).
+  let tracing = false;
+  const refresh = () => {
+    const why = notExportable(shown(), tracing, running !== undefined);
+    for (const button of [buttons.csv, buttons.json, buttons.png, buttons.vcd]) {
+      button.disabled = why !== undefined;
+      if (why === undefined) button.removeAttribute('title');
+      else button.title = why;
+    }
+  };
+  /** Saves `trace` as `format` under `name`, written in the worker; false when it was not saved (the note says why). */
+  const save = async (trace: RemoteTrace, format: ExportFormat, name: string): Promise<boolean> => {
+    const verb = `Writing ${name}`;
+    progress.set({ done: 0, said: 'starting' }, verb);
+    running = trace.exportAs(format, ({ bytes }) => progress.set({ done: bytes, said: `${megabytes(bytes)} so far` }, verb));
+    refresh();
+    try {
+      download(name, await running.result);
+      return true;
+    } catch (error) {
+      // A crash is said by the page's alert; anything else here.
+      if (!(error instanceof CoreCrash)) run.note.textContent = error instanceof Cancelled ? `${name} was not saved: the export was cancelled.` : `${name} was not saved: ${error instanceof Error ? error.message : String(error)}`;
+      return false;
+    } finally {
+      running = undefined;
+      progress.set(undefined);
+      refresh();
+    }
+  };
+  /** Saves every trace on screen as `format`, one after the other, stopping at one not saved. */
+  const saveShown = async (format: 'csv' | 'json'): Promise<void> => {
+    run.note.textContent = '';
+    for (const [trace, name] of exported(shown())) if (!(await save(trace, format, `${name}-steps.${format}`))) return;
+  };
+  buttons.csv.addEventListener('click', () => {
     const { experiment } = shown();
     if (experiment) return download(`random-lines-${experiment.algorithm}.csv`, new Blob([randomLinesToCsv(experiment)], { type: 'text/csv' }));
-    for (const [trace, name] of exported(shown())) download(`${name}-steps.csv`, new Blob([await trace.exportAs('csv')], { type: 'text/csv' }));
+    void saveShown('csv');
   });
-  buttons.json.addEventListener('click', async () => {
-    for (const [trace, name] of exported(shown())) download(`${name}-steps.json`, new Blob([await trace.exportAs('json')], { type: 'application/json' }));
+  buttons.json.addEventListener('click', () => void saveShown('json'));
+  buttons.vcd.addEventListener('click', () => {
+    // The core's VCD (the CLI's --format vcd): STEP and DIR per axis at the planned instants.
+    const { program } = shown();
+    run.note.textContent = '';
+    if (program) void save(program, 'vcd', 'program-step-dir.vcd');
   });
   buttons.png.addEventListener('click', async () => {
     download(`${viewName()}-view.png`, await view.toPng());
   });
   return {
-    refresh(tracing) {
-      const why = notExportable(shown(), tracing);
-      for (const button of [buttons.csv, buttons.json, buttons.png]) {
-        button.disabled = why !== undefined;
-        if (why === undefined) button.removeAttribute('title');
-        else button.title = why;
-      }
+    refresh(inputsTracing) {
+      tracing = inputsTracing;
+      if (tracing) running?.cancel();
+      refresh();
     },
   };
 }

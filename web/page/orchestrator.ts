@@ -25,7 +25,7 @@ import type { ExperimentPanel } from '../experiment/experiment-panel.js';
 import type { AlgorithmInputs } from '../form/algorithm-inputs.js';
 import { INPUTS_VALIDITY, type InputsValidity, type OptionsForm } from '../form/options-form.js';
 import { diagnosticText, pathLimitAdvice } from '../form/page-advice.js';
-import type { RunProgress } from '../form/run-progress.js';
+import { linesBar, type RunProgress } from '../form/run-progress.js';
 import type { GcodePanel } from '../gcode/gcode-panel.js';
 import type { TimingDiagram } from '../gcode/timing-diagram.js';
 import type { Inspector } from '../inspector/inspector.js';
@@ -327,7 +327,7 @@ export class Orchestrator {
         const started = p.client.randomLines(
           options,
           this.#throttled(run, (progress) => {
-            p.experimentProgress.set(progress);
+            p.experimentProgress.set(linesBar(progress));
             p.status.running('Tracing', progress);
           }),
         );

@@ -3,14 +3,13 @@
  * with a few lines:
  * - G-code mode: the total time, the speed and step-rate charts
  *   (gcode/motion-charts.ts), machine-time playback (the timeline follows
- *   the program's planned instants) and the VCD under Export;
+ *   the program's planned instants);
  * - trace mode, for a line: the speed per step at one tick a step and at a
  *   constant feed (charts/step-clocks-chart.ts).
  * The timing diagram (gcode/timing-diagram.ts) takes its clock from the
  * worker's pulses: ticks for a trace, planned instants for a program.
  */
 import { StepClocksChart } from '../charts/step-clocks-chart.js';
-import { download } from './export.js';
 import { MotionCharts } from '../gcode/motion-charts.js';
 import type { Catalogue, Mode } from '../state/app-state.js';
 import type { Timeline } from '../timeline/timeline.js';
@@ -21,8 +20,6 @@ export interface TimeViewElements {
   motion: HTMLElement;
   /** Trace mode: where the speed-per-step chart goes. */
   stepClocks: HTMLElement;
-  /** Export's VCD button. */
-  vcd: HTMLButtonElement;
 }
 
 export class TimeViews {
@@ -39,11 +36,6 @@ export class TimeViews {
     this.#timeline = timeline;
     this.#motion = new MotionCharts(elements.motion, onPick);
     this.#stepClocks = new StepClocksChart(elements.stepClocks, onPick);
-    elements.vcd.addEventListener('click', async () => {
-      // The core's VCD (the CLI's --format vcd): STEP and DIR per axis at the planned instants.
-      const program = this.#program;
-      if (program) download('program-step-dir.vcd', new Blob([(await program.vcd()) as Uint8Array<ArrayBuffer>], { type: 'text/plain' }));
-    });
   }
 
   /** Shows the time of what is on screen: `program` in G-code mode, `trace` (when a line) in trace mode. */

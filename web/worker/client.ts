@@ -11,6 +11,8 @@ import type { ExperimentProgress, GcodeMove, GcodeProgress, GcodeSettings, Motio
 import type { ChartSeries, IdealLine, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 import { utf8Bytes } from '../core/utf8.js';
 import type {
+  ExportFormat,
+  ExportProgress,
   InputError,
   LearnerCheck,
   LineSteps,
@@ -312,9 +314,14 @@ export class RemoteTrace {
     return this.ask({ kind: 'stepClocks', traceId: this.traceId, maxRows });
   }
 
-  /** The whole trace as the CLI writes it: CSV (one row per point) or JSON. */
-  exportAs(format: 'csv' | 'json'): Promise<string> {
-    return this.ask({ kind: 'export', traceId: this.traceId, format });
+  /**
+   * The whole trace as the CLI writes it, made in the worker a part at a
+   * time: CSV (one row per point) or JSON, and a program's VCD; cancellable,
+   * reporting the bytes written so far.
+   */
+  exportAs(format: ExportFormat, onProgress: (progress: ExportProgress) => void): Running<Blob> {
+    if (!this.alive) return { result: Promise.reject(new CoreCrash('this trace was lost with a crashed worker; trace again')), cancel: () => {} };
+    return this.#client.start({ kind: 'export', traceId: this.traceId, format }, onProgress);
   }
 
   /** Releases the worker's copy; a trace lost in a crash has nothing left to free. */
@@ -398,10 +405,5 @@ export class RemoteProgram extends RemoteTrace {
   /** The planned speed and step rates over a window of time, in at most `buckets` rows (GcodeProgram.motionChart). */
   motionChart(fromSeconds: number, toSeconds: number, buckets: number): Promise<MotionChart> {
     return this.ask({ kind: 'motionChart', traceId: this.traceId, fromSeconds, toSeconds, buckets });
-  }
-
-  /** The STEP and DIR wires as an IEEE 1364 VCD file (GcodeProgram.vcd). */
-  vcd(): Promise<Uint8Array> {
-    return this.ask({ kind: 'vcd', traceId: this.traceId });
   }
 }

@@ -5,7 +5,7 @@
  *
  * Each request carries an id; the worker answers each with exactly one reply
  * carrying the same id, and a long request (a G-code run, the random-lines
- * experiment) may send progress messages with that id before it. A `cancel` message stops the request it
+ * experiment, an export) may send progress messages with that id before it. A `cancel` message stops the request it
  * names at its next slice. Bulk arrays cross as transferred buffers, not
  * copies:
  * - a G-code program's text: UTF-8 bytes, encoded by the page (in the
@@ -44,11 +44,10 @@ export type WorkerRequest =
   | { kind: 'pointAtSeconds'; traceId: number; seconds: number }
   | { kind: 'dwellSeconds'; traceId: number; fromSeconds: number; toSeconds: number }
   | { kind: 'motionChart'; traceId: number; fromSeconds: number; toSeconds: number; buckets: number }
-  | { kind: 'vcd'; traceId: number }
   | { kind: 'moves'; traceId: number; fromMove: number; toMove: number }
   | { kind: 'moveOfStep'; traceId: number; stepIndex: number }
   | { kind: 'lineSteps'; traceId: number; line: number }
-  | { kind: 'export'; traceId: number; format: 'csv' | 'json' }
+  | { kind: 'export'; traceId: number; format: ExportFormat }
   | { kind: 'randomLines'; options: RandomLinesOptions }
   | { kind: 'check'; traceId: number; options: TraceOptions; text: string }
   | { kind: 'free'; traceId: number };
@@ -174,12 +173,11 @@ export interface ReplyValue {
   /** Seconds of G4 dwell between two instants (GcodeProgram.dwellSeconds). */
   dwellSeconds: number;
   motionChart: MotionChart;
-  /** The program's STEP and DIR wires as a VCD file (GcodeProgram.vcd). */
-  vcd: Uint8Array;
   moves: GcodeMove[];
   moveOfStep: { moveIndex: number; line: number };
   lineSteps: LineSteps;
-  export: string;
+  /** The file, made in the worker: it never passes through the page's thread as one string (a program's CSV is past the longest string a browser holds). */
+  export: Blob;
   randomLines: RandomLinesResult;
   check: LearnerCheck;
   free: null;
@@ -209,10 +207,23 @@ export type ReplyMessage =
   | { id: number; ok: false; failure: 'crash' | 'error' | 'cancelled'; message: string }
   | { id: number; progress: ProgressValue[LongRequestKind] };
 
+/**
+ * A file the page saves: a trace's (or a program's) rows as the CLI writes
+ * them (csv, json), or a program's STEP and DIR wires (vcd, GcodeProgram.vcdChunks).
+ */
+export type ExportFormat = 'csv' | 'json' | 'vcd';
+
+/** How much of a file an export has written: its size is not known before its end. */
+export interface ExportProgress {
+  bytes: number;
+  done: boolean;
+}
+
 /** What a long request reports after each slice of its work, by request kind. */
 export interface ProgressValue {
   gcode: GcodeProgress;
   randomLines: ExperimentProgress;
+  export: ExportProgress;
 }
 
 /** The requests that run in slices, report progress and can be cancelled. */

@@ -18,9 +18,11 @@ import {
   VoxpathError,
 } from '../core/index.js';
 import type { Trace, TraceSummary } from '../core/index.js';
+import { grouped } from '../core/export.js';
+import { yieldToEventLoop } from '../core/slices.js';
 import { idealLineOf } from '../ideal-line.js';
 import { pointsEvery } from './protocol.js';
-import type { LongRequestKind, PointsSent, ProgressValue, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
+import type { ExportFormat, LongRequestKind, PointsSent, ProgressValue, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
 const programs = new Map<number, GcodeProgram>();
@@ -76,6 +78,67 @@ async function cancellable(id: number, work: (signal: AbortSignal) => Promise<An
   } finally {
     running.delete(id);
   }
+}
+
+/**
+ * Bytes of an export's parts gathered before they are put in its Blob: the
+ * browser keeps a Blob's bytes outside the worker's heap (on disk when they
+ * are many), where the parts themselves would all stay in it.
+ */
+const EXPORT_BLOB_BYTES = 16 * 1024 * 1024;
+
+/**
+ * An export's progress is posted at most this often, ms: its parts take a
+ * millisecond or two each, and the page shows four reports a second at most
+ * (orchestrator.ts, PROGRESS_EVERY_MS).
+ */
+const EXPORT_REPORT_MS = 250;
+
+/** The media type each export is saved as. */
+const EXPORT_TYPES: Record<ExportFormat, string> = { csv: 'text/csv', json: 'application/json', vcd: 'text/plain' };
+
+/**
+ * The file trace `traceId` exports as `format`, made a part at a time from
+ * the core's writers, with the event loop let run between parts (a cancel
+ * through `signal`, the progress posted): a 50,000,000-step program's CSV
+ * took a minute, and joined into one string it was past the longest a
+ * browser holds.
+ */
+async function exportFile(id: number, traceId: number, format: ExportFormat, signal: AbortSignal): Promise<Blob> {
+  const parts = format === 'vcd' ? heldProgram(traceId).vcdChunks() : format === 'csv' ? traceCsvChunks(held(traceId)) : traceJsonChunks(held(traceId));
+  let file = new Blob([], { type: EXPORT_TYPES[format] });
+  let gathered: (string | Uint8Array<ArrayBuffer>)[] = [];
+  let gatheredBytes = 0;
+  let bytes = 0;
+  let reportedAt = -Infinity;
+  for (const part of parts) {
+    gathered.push(part as string | Uint8Array<ArrayBuffer>);
+    // A string's length is its UTF-8 size but for the few non-ASCII names in a JSON export's notes.
+    gatheredBytes += part.length;
+    if (gatheredBytes >= EXPORT_BLOB_BYTES) {
+      file = new Blob([file, ...gathered], { type: EXPORT_TYPES[format] });
+      [gathered, gatheredBytes] = [[], 0];
+    }
+    bytes += part.length;
+    if (performance.now() - reportedAt >= EXPORT_REPORT_MS) {
+      reportedAt = performance.now();
+      report(id, { bytes, done: false });
+    }
+    await yieldToEventLoop();
+    signal.throwIfAborted();
+  }
+  file = new Blob([file, ...gathered], { type: EXPORT_TYPES[format] });
+  // A Blob past what the browser can keep (a 50,000,000-step program's CSV,
+  // 4 GB) is made all the same, and its download failed in the browser's
+  // list, the page saying nothing: its end is read here, to say so.
+  try {
+    await file.slice(-1).arrayBuffer();
+  } catch {
+    const command = `voxpath ${programs.has(traceId) ? 'gcode' : 'trace'} --format ${format}`;
+    throw new VoxpathError(`the browser could not keep its ${grouped(file.size)} bytes; the command line writes it as it goes (${command})`);
+  }
+  report(id, { bytes: file.size, done: true });
+  return file;
 }
 
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {
@@ -136,10 +199,6 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       return { value: heldProgram(request.traceId).dwellSeconds(request.fromSeconds, request.toSeconds), transfer: [] };
     case 'motionChart':
       return { value: heldProgram(request.traceId).motionChart(request.fromSeconds, request.toSeconds, request.buckets), transfer: [] };
-    case 'vcd': {
-      const bytes = heldProgram(request.traceId).vcd();
-      return { value: bytes, transfer: [bytes.buffer] };
-    }
     case 'moves': {
       const program = heldProgram(request.traceId);
       const to = Math.min(request.toMove, program.moveCount);
@@ -156,11 +215,9 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       const pointBefore = program.pointBeforeLine(request.line);
       return { value: { firstStep: move?.firstStep ?? pointBefore, steps: move?.steps ?? 0, pointBefore }, transfer: [] };
     }
-    case 'export': {
-      const t = held(request.traceId);
-      // The JSON text as the writer makes it: not parsed into an object and written again.
-      return { value: [...(request.format === 'csv' ? traceCsvChunks(t) : traceJsonChunks(t))].join(''), transfer: [] };
-    }
+    case 'export':
+      // A Blob crosses to the page as a handle on its bytes, not a copy.
+      return cancellable(id, async (signal) => ({ value: await exportFile(id, request.traceId, request.format, signal), transfer: [] }));
     case 'randomLines':
       return cancellable(id, async (signal) => ({
         value: await randomLines(request.options, { signal, onProgress: (progress) => report(id, progress) }),
