@@ -395,6 +395,32 @@ describe('the page', () => {
     await p.close();
   });
 
+  it("keeps a program typed in one tab over a reload after another tab changed only its own mode's input", async () => {
+    const a = await openPage('?mode=gcode');
+    await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const b = await a.context.newPage();
+    await b.goto(`${siteUrl()}?mode=trace&from=0,0,0&to=10,7,6`);
+    await traced(b, 10);
+    const program = 'G21 G90\nG1 X3 Y4 F600\nG1 X7\n';
+    await a.page.getByTestId('gcode-text').fill(program);
+    await a.page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    await a.page.getByTestId('mode-trace').click();
+    await a.page.waitForURL(/mode=trace/);
+    // Tab B, which never touched the program, changes its move: past the
+    // write delay (400 ms) it wrote every mode's part as it held it, its
+    // sample program too.
+    await b.getByTestId('input-to-x').fill('12');
+    await traced(b, 12);
+    await b.waitForTimeout(1_000);
+    await a.page.reload();
+    await a.page.getByTestId('step-counter').filter({ hasText: /of \d+$/ }).waitFor();
+    await a.page.getByTestId('mode-gcode').click();
+    await a.page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    expect(await a.page.getByTestId('gcode-text').inputValue()).toBe(program);
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
   it("keeps a refused text over a visit to another mode, with its message (the last valid value came back)", async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;

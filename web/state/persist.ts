@@ -3,7 +3,7 @@
  * query format of state/query.ts, so nothing a user typed is lost on reload.
  * On load a URL describing a state wins over localStorage.
  */
-import { type AppState, type Catalogue, comparableWith, defaultAlgorithm, defaultState } from './app-state.js';
+import { type AppState, type Catalogue, comparableWith, defaultAlgorithm, defaultState, MODES } from './app-state.js';
 import { GCODE_URL_LIMIT, type LinkNotes, stateFromQuery, stateToQuery } from './query.js';
 import type { Store } from './store.js';
 
@@ -120,16 +120,59 @@ interface StoredParts {
   experiment: string;
 }
 
-function storedText(state: AppState): string {
+function storedParts(state: AppState): StoredParts {
   const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: GCODE_URL_LIMIT });
-  const parts: StoredParts = {
+  return {
     shown: stateToQuery(state, { gcodeLimit: 0 }),
     trace: part('trace'),
     compare: part('compare'),
     gcode: part('gcode'),
     experiment: part('experiment'),
   };
-  return JSON.stringify(parts);
+}
+
+/** The mode whose part holds each long text when it is short (and says, when it is long, that it is kept apart). */
+const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', learnerPoints: 'trace' };
+
+/** The input each mode's part keeps for a visit in another mode (storedState takes these of it). */
+const PART_INPUTS: Record<AppState['mode'], readonly (keyof AppState)[]> = {
+  trace: ['algorithm', 'options', 'learnerPoints'],
+  compare: ['other', 'layout'],
+  gcode: ['gcode', 'machine', 'slowdown'],
+  experiment: ['experiment'],
+};
+
+/** The state this tab last wrote (undefined before its first write). */
+let lastWritten: AppState | undefined;
+
+/**
+ * The modes whose input (PART_INPUTS) this tab changed since it last wrote
+ * (every mode at its first write): only their parts are written. Each tab
+ * wrote every mode's part as it held it, so a program typed in one tab was
+ * replaced by another tab's old one as soon as that tab changed anything
+ * (a step, a point), and lost at the next reload of the first tab outside
+ * G-code mode. A mode changed in both tabs keeps the last writer's input.
+ */
+function changedModes(state: AppState): Set<AppState['mode']> {
+  const last = lastWritten;
+  return new Set(MODES.filter((mode) => !last || PART_INPUTS[mode].some((key) => state[key] !== last[key])));
+}
+
+/** `parts`, but for the modes not `changed`, the parts as stored (another tab's, if it wrote them since). */
+function partsToStore(parts: StoredParts, changed: Set<AppState['mode']>, store: Storage): StoredParts {
+  let stored: unknown;
+  try {
+    stored = JSON.parse(store.getItem(STORAGE_KEY) ?? 'null');
+  } catch {
+    return parts;
+  }
+  if (typeof stored !== 'object' || stored === null) return parts;
+  const merged = { ...parts };
+  for (const mode of MODES) {
+    const theirs = (stored as Partial<StoredParts>)[mode];
+    if (!changed.has(mode) && typeof theirs === 'string') merged[mode] = theirs;
+  }
+  return merged;
 }
 
 /**
@@ -252,12 +295,17 @@ function write(state: AppState): void {
   // An embedded view (say in a course page) must not replace the reader's own last visit.
   const store = storage();
   if (state.embed || !store) return;
+  const changed = changedModes(state);
+  lastWritten = state;
   // The long texts before the part that says where they are: a page closed
   // between the two writes leaves the text before, not a part pointing at
-  // pieces not yet written.
-  let kept = (Object.keys(LONG_TEXT_KEYS) as LongText[]).map((field) => writeLongText(store, field, state[field])).every(Boolean);
+  // pieces not yet written. Those of modes this tab did not change are
+  // another tab's to write, and kept as far as this tab knows.
+  let kept = (Object.keys(LONG_TEXT_KEYS) as LongText[])
+    .map((field) => (changed.has(LONG_TEXT_MODES[field]) ? writeLongText(store, field, state[field]) : (longTextsWritten.get(field)?.kept ?? true)))
+    .every(Boolean);
   try {
-    store.setItem(STORAGE_KEY, storedText(state));
+    store.setItem(STORAGE_KEY, JSON.stringify(partsToStore(storedParts(state), changed, store)));
   } catch {
     // Storage blocked or full: the URL still holds the state, and the page
     // says what a reload loses.
