@@ -47,7 +47,7 @@ function reversed(points: Int32Array, dims: number): Int32Array {
 }
 
 /** Every `every`-th row of `points` (rows 0, every, 2 every, ...). */
-function sampled(points: Int32Array, dims: number, every: number): Int32Array {
+export function sampled(points: Int32Array, dims: number, every: number): Int32Array {
   const rows = Math.ceil(points.length / dims / every);
   const out = new Int32Array(rows * dims);
   for (let r = 0; r < rows; r++) {
