@@ -216,6 +216,9 @@ function run(catalogue: Catalogue): void {
     },
   );
 
+  // Runs the experiment on its inputs as they are: after a Cancel nothing did, short of changing one of them.
+  const experimentStart = byId('experiment-start', HTMLButtonElement);
+  experimentStart.addEventListener('click', () => void page.retrace());
   const exports = wireExports(
     { csv: byId('export-csv', HTMLButtonElement), json: byId('export-json', HTMLButtonElement), png: byId('export-png', HTMLButtonElement), vcd: byId('export-vcd', HTMLButtonElement) },
     {
@@ -242,6 +245,7 @@ function run(catalogue: Catalogue): void {
       {
         bar: byId('experiment-progress', HTMLProgressElement),
         cancel: byId('experiment-cancel', HTMLButtonElement),
+        start: experimentStart,
         box: byId('experiment-run', HTMLDivElement),
         text: byId('experiment-run-text', HTMLSpanElement),
         verb: 'Tracing',

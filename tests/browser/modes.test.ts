@@ -881,6 +881,15 @@ describe('experiment mode, long runs', () => {
     expect(await text(page, 'stale-note')).toMatch(/the run was cancelled/);
     // The 20 lines are still there, marked out of date.
     expect(await page.getByTestId('lines-table').locator('tbody tr').count()).toBe(20);
+    // Run experiment runs the inputs as they are again (nothing did, short of
+    // changing one), and waits while it runs.
+    const start = page.getByTestId('experiment-start');
+    await start.click();
+    await status.filter({ hasText: /^Tracing: line [1-9]/ }).waitFor();
+    expect(await start.isDisabled()).toBe(true);
+    await cancel.click();
+    await status.filter({ hasText: 'Cancelled.' }).waitFor();
+    expect(await start.isDisabled()).toBe(false);
 
     // A change while the long run goes on replaces it: the worker stops the
     // run under way (before, both ran to their end, and the answer to the

@@ -1,6 +1,7 @@
 /**
  * A long run's progress bar and its Cancel button: a G-code program's, the
- * random-lines experiment's, and an export's. Hidden while nothing runs.
+ * random-lines experiment's, and an export's. Hidden while nothing runs,
+ * when the run's own button (Run program, Run experiment) runs it again.
  */
 
 import { countOf, grouped } from '../format.js';
@@ -29,6 +30,8 @@ export function linesBar(progress: LinesProgress): BarProgress {
 export interface RunProgressElements {
   bar: HTMLProgressElement;
   cancel: HTMLButtonElement;
+  /** The button that runs the inputs as they are (again, after a Cancel): disabled while a run goes on. */
+  start?: HTMLButtonElement;
   /** What is shown only while a run goes on: the bar and Cancel themselves when absent. */
   box?: HTMLElement;
   /** Where the progress is said in words beside the bar (a screen reader hears it as the bar's value). */
@@ -47,8 +50,9 @@ export class RunProgress {
 
   /** Shows how far the run has got (undefined: no run under way); `verb`, when given, says what it does instead of the elements' own. */
   set(progress: BarProgress | undefined, verb = this.#e.verb): void {
-    const { bar, cancel, box, text } = this.#e;
+    const { bar, cancel, start, box, text } = this.#e;
     for (const shown of box ? [box] : [bar, cancel]) shown.hidden = progress === undefined;
+    if (start) start.disabled = progress !== undefined;
     if (!progress) return;
     if (progress.total === undefined) {
       // Indeterminate: the bar moves without saying how far.

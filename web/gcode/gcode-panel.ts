@@ -178,7 +178,7 @@ export class GcodePanel {
     }
     for (const type of ['click', 'keyup']) elements.text.addEventListener(type, () => this.#pick(this.#lineAt(elements.text.selectionStart)));
     elements.run.addEventListener('click', events.onRun);
-    this.#progress = new RunProgress({ bar: elements.progress, cancel: elements.cancel }, events.onCancel);
+    this.#progress = new RunProgress({ bar: elements.progress, cancel: elements.cancel, start: elements.run }, events.onCancel);
 
     const setter = new OptionSetter();
     this.#machineForm = new OptionsForm(elements.machine, elements.formError, machineSpecs(catalogue), 3, store.state.machine, (name, value) => {
@@ -486,7 +486,6 @@ export class GcodePanel {
 
   /** A run's progress (undefined: no run under way). */
   setProgress(progress: GcodeProgress | undefined): void {
-    this.#e.run.disabled = progress !== undefined;
     this.#progress.set(progress && linesBar(progress));
   }
 
