@@ -395,7 +395,7 @@ describe('the page', () => {
     await p.close();
   });
 
-  it("keeps a program typed in one tab over a reload after another tab changed only its own mode's input", async () => {
+  it('keeps a program typed in one tab over a reload after another tab changed its move, or its machine', async () => {
     const a = await openPage('?mode=gcode');
     await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     const b = await a.context.newPage();
@@ -416,6 +416,20 @@ describe('the page', () => {
     await a.page.getByTestId('step-counter').filter({ hasText: /of \d+$/ }).waitFor();
     await a.page.getByTestId('mode-gcode').click();
     await a.page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    expect(await a.page.getByTestId('gcode-text').inputValue()).toBe(program);
+    // Nor does B's machine, typed beside its own (sample) program, replace
+    // A's program: each input of a mode is written by the tab that typed it.
+    await a.page.getByTestId('mode-trace').click();
+    await a.page.waitForURL(/mode=trace/);
+    await b.getByTestId('mode-gcode').click();
+    await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    await b.getByTestId('input-machine-stepsPerMm').fill('40');
+    await b.getByTestId('trace-status').filter({ hasText: 'at 40 / 40 / 40 steps/mm' }).waitFor();
+    await b.waitForTimeout(1_000);
+    await a.page.reload();
+    await a.page.getByTestId('step-counter').filter({ hasText: /of \d+$/ }).waitFor();
+    await a.page.getByTestId('mode-gcode').click();
+    await a.page.getByTestId('trace-status').filter({ hasText: /^3 lines, 2 moves, [\d,]+ steps at 40 \/ 40 \/ 40 steps\/mm/ }).waitFor();
     expect(await a.page.getByTestId('gcode-text').inputValue()).toBe(program);
     expect(a.problems()).toEqual([]);
     await a.close();

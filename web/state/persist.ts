@@ -131,7 +131,12 @@ function storedParts(state: AppState): StoredParts {
   };
 }
 
-/** The mode whose part holds each long text when it is short (and says, when it is long, that it is kept apart). */
+/**
+ * The mode whose part holds each long text when it is short (and says, when
+ * it is long, that it is kept apart). Each is typed apart from the rest of
+ * its part (the points beside the move, the program beside the machine),
+ * and so written or kept on its own (partsToStore).
+ */
 const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', learnerPoints: 'trace' };
 
 /** The input each mode's part keeps for a visit in another mode (storedState takes these of it). */
@@ -146,20 +151,35 @@ const PART_INPUTS: Record<AppState['mode'], readonly (keyof AppState)[]> = {
 let lastWritten: AppState | undefined;
 
 /**
- * The modes whose input (PART_INPUTS) this tab changed since it last wrote
- * (every mode at its first write): only their parts are written. Each tab
- * wrote every mode's part as it held it, so a program typed in one tab was
- * replaced by another tab's old one as soon as that tab changed anything
- * (a step, a point), and lost at the next reload of the first tab outside
- * G-code mode. A mode changed in both tabs keeps the last writer's input.
+ * The inputs (of PART_INPUTS) this tab changed since it last wrote (every
+ * one at its first write): only they are written. Each tab wrote every
+ * mode's part as it held it, so a program typed in one tab was replaced by
+ * another tab's old one as soon as that tab changed anything (a step, a
+ * point), and lost at the next reload of the first tab outside G-code mode.
+ * An input changed in both tabs keeps the last writer's.
  */
-function changedModes(state: AppState): Set<AppState['mode']> {
+function changedInputs(state: AppState): Set<keyof AppState> {
   const last = lastWritten;
-  return new Set(MODES.filter((mode) => !last || PART_INPUTS[mode].some((key) => state[key] !== last[key])));
+  return new Set(MODES.flatMap((mode) => PART_INPUTS[mode]).filter((key) => !last || state[key] !== last[key]));
 }
 
-/** `parts`, but for the modes not `changed`, the parts as stored (another tab's, if it wrote them since). */
-function partsToStore(parts: StoredParts, changed: Set<AppState['mode']>, store: Storage): StoredParts {
+/** `query` with the value `from` has for `key` (none when it has none). */
+function withParamOf(query: string, key: string, from: string): string {
+  const params = new URLSearchParams(query);
+  const value = new URLSearchParams(from).get(key);
+  params.delete(key);
+  if (value !== null) params.set(key, value);
+  return params.toString();
+}
+
+/**
+ * `parts`, but with the inputs not `changed` as stored (another tab's, if
+ * it wrote them since): a part of which this tab changed nothing is kept
+ * whole; one of which it changed only the long text, or all but it, takes
+ * that text's parameter from the other (a program too long for the part has
+ * none: it is in its keys).
+ */
+function partsToStore(parts: StoredParts, changed: Set<keyof AppState>, store: Storage): StoredParts {
   let stored: unknown;
   try {
     stored = JSON.parse(store.getItem(STORAGE_KEY) ?? 'null');
@@ -170,7 +190,12 @@ function partsToStore(parts: StoredParts, changed: Set<AppState['mode']>, store:
   const merged = { ...parts };
   for (const mode of MODES) {
     const theirs = (stored as Partial<StoredParts>)[mode];
-    if (!changed.has(mode) && typeof theirs === 'string') merged[mode] = theirs;
+    if (typeof theirs !== 'string') continue;
+    const text = (Object.keys(LONG_TEXT_MODES) as LongText[]).find((field) => LONG_TEXT_MODES[field] === mode);
+    const restChanged = PART_INPUTS[mode].some((key) => key !== text && changed.has(key));
+    const base = restChanged ? parts[mode] : theirs;
+    if (text === undefined || changed.has(text) === restChanged) merged[mode] = base;
+    else merged[mode] = withParamOf(base, LONG_TEXT_PARAMS[text], restChanged ? theirs : parts[mode]);
   }
   return merged;
 }
@@ -295,14 +320,14 @@ function write(state: AppState): void {
   // An embedded view (say in a course page) must not replace the reader's own last visit.
   const store = storage();
   if (state.embed || !store) return;
-  const changed = changedModes(state);
+  const changed = changedInputs(state);
   lastWritten = state;
   // The long texts before the part that says where they are: a page closed
   // between the two writes leaves the text before, not a part pointing at
-  // pieces not yet written. Those of modes this tab did not change are
-  // another tab's to write, and kept as far as this tab knows.
+  // pieces not yet written. One this tab did not change is another tab's to
+  // write, and kept as far as this tab knows.
   let kept = (Object.keys(LONG_TEXT_KEYS) as LongText[])
-    .map((field) => (changed.has(LONG_TEXT_MODES[field]) ? writeLongText(store, field, state[field]) : (longTextsWritten.get(field)?.kept ?? true)))
+    .map((field) => (changed.has(field) ? writeLongText(store, field, state[field]) : (longTextsWritten.get(field)?.kept ?? true)))
     .every(Boolean);
   try {
     store.setItem(STORAGE_KEY, JSON.stringify(partsToStore(storedParts(state), changed, store)));
