@@ -236,7 +236,7 @@ function run(catalogue: Catalogue): void {
     client,
     catalogue,
     store,
-    status: new Status(byId('trace-status', HTMLParagraphElement)),
+    status: new Status(byId('trace-status', HTMLParagraphElement), byId('embed-busy', HTMLParagraphElement)),
     modeTabs,
     views: pathViews,
     inputs,

@@ -145,6 +145,19 @@ describe('embedded', () => {
     await p.close();
   });
 
+  it('says over its view that it is tracing while a long comparison runs (it showed "No path" for seconds, without a word)', async () => {
+    // Two lines of 1,400,000 steps and the cells only one visits: seconds in the worker.
+    const p = await openPage('?embed=1&mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=1400000,700,600', { waitUntil: 'commit' });
+    const { page } = p;
+    const busy = page.getByTestId('embed-busy');
+    await busy.filter({ hasText: 'Tracing…' }).waitFor();
+    expect(await busy.isVisible()).toBe(true);
+    await page.getByTestId('step-counter').filter({ hasText: 'of 1,401,300' }).waitFor({ timeout: 60_000 });
+    await expect.poll(() => busy.isVisible()).toBe(false);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("says what its link says that it cannot read, each left at its default (a frame showed another line without a word)", async () => {
     const p = await openPage('?embed=1&algorithm=regionz&from=5,abc,2&to=20,10,5&tie=sideways');
     const { page } = p;

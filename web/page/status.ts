@@ -34,13 +34,18 @@ export function programStatus(p: ProgramRecord): string {
 
 export class Status {
   readonly #element: HTMLElement;
+  /** Where an embedded view, which hides the status line, says what it says while a run goes on (empty otherwise). */
+  readonly #busy: HTMLElement;
 
-  constructor(element: HTMLElement) {
+  constructor(element: HTMLElement, busy: HTMLElement) {
     this.#element = element;
+    this.#busy = busy;
   }
 
-  #say(text: string): void {
+  /** Says `text`; `running`: of a run under way, said in an embedded view too. */
+  #say(text: string, running = false): void {
     this.#element.textContent = text;
+    this.#busy.textContent = running ? text : '';
   }
 
   clear(): void {
@@ -49,12 +54,12 @@ export class Status {
 
   /** The core was asked to run for `mode`. */
   tracing(mode: Mode): void {
-    this.#say(mode === 'experiment' ? 'Tracing the lines…' : 'Tracing…');
+    this.#say(mode === 'experiment' ? 'Tracing the lines…' : 'Tracing…', true);
   }
 
   /** How far a long run has got: a program's ('Running') or the experiment's ('Tracing'), at the line it has reached. */
   running(verb: string, progress: LinesProgress): void {
-    this.#say(`${verb}: line ${grouped(progress.stoppedAtLine ?? progress.linesDone)} of ${grouped(progress.lines)}, ${countOf(progress.steps, 'step')} so far…`);
+    this.#say(`${verb}: line ${grouped(progress.stoppedAtLine ?? progress.linesDone)} of ${grouped(progress.lines)}, ${countOf(progress.steps, 'step')} so far…`, true);
   }
 
   /** What is now on screen. */
