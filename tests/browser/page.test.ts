@@ -395,6 +395,26 @@ describe('the page', () => {
     await p.close();
   });
 
+  it('keeps a refused coordinate typed in one tab over a reload after another tab typed in the same field', async () => {
+    const a = await openPage('?from=0,0,0&to=10,7,6');
+    await traced(a.page, 10);
+    const b = await a.context.newPage();
+    await b.goto(`${siteUrl()}?from=0,0,0&to=10,7,6`);
+    await traced(b, 10);
+    await a.page.getByTestId('input-to-x').fill('2.5');
+    await a.page.getByTestId('error-to').filter({ hasText: 'x ' }).waitFor();
+    // B's own refused y, typed right: its draft dropped, A's went with it.
+    await b.getByTestId('input-to-y').fill('2.5');
+    await b.getByTestId('error-to').filter({ hasText: 'y ' }).waitFor();
+    await b.getByTestId('input-to-y').fill('8');
+    await traced(b, 10);
+    await a.page.reload();
+    await a.page.getByTestId('error-to').filter({ hasText: 'x ' }).waitFor();
+    expect(await a.page.getByTestId('input-to-x').inputValue()).toBe('2.5');
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
   it('keeps a program typed in one tab over a reload after another tab changed its move, or its machine', async () => {
     const a = await openPage('?mode=gcode');
     await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();

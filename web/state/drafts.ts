@@ -2,12 +2,18 @@
  * What a user typed into a field that the page refused before the core saw
  * it (an empty coordinate, "80,abc" for steps per mm). The state, and so the
  * link and localStorage, holds valid values only; the typed text is kept
- * here, in localStorage too, so that a reload shows the field as it was
- * typed, with its message, not the last valid value. A draft goes with the
- * state's value of its field when it was typed, and is shown again only over
- * that same value: a link or a later edit with another value wins.
+ * here, so that a reload shows the field as it was typed, with its message,
+ * not the last valid value. A draft goes with the state's value of its
+ * field when it was typed, and is shown again only over that same value: a
+ * link or a later edit with another value wins.
+ *
+ * Each draft is kept twice: in this tab's sessionStorage, which a reload of
+ * the tab reads first, and in localStorage, for a new visit. With one copy,
+ * shared by every tab, another tab that typed in the same field (and then
+ * typed it right, dropping the draft) took this tab's away: its text, typed
+ * and refused, came back on reload as the last valid value.
  */
-import { storage } from './persist.js';
+import { storage, tabStorage } from './persist.js';
 
 const KEY = 'voxpath-drafts';
 
@@ -17,20 +23,19 @@ interface Draft {
   value: string;
 }
 
-function read(): Record<string, Draft> {
+function read(area: Storage | undefined): Record<string, Draft> {
   try {
-    const drafts: unknown = JSON.parse(storage()?.getItem(KEY) ?? '{}');
+    const drafts: unknown = JSON.parse(area?.getItem(KEY) ?? '{}');
     return typeof drafts === 'object' && drafts !== null ? (drafts as Record<string, Draft>) : {};
   } catch {
     return {};
   }
 }
 
-function write(drafts: Record<string, Draft>): void {
+function write(area: Storage | undefined, drafts: Record<string, Draft>): void {
   try {
-    const store = storage();
-    if (Object.keys(drafts).length === 0) store?.removeItem(KEY);
-    else store?.setItem(KEY, JSON.stringify(drafts));
+    if (Object.keys(drafts).length === 0) area?.removeItem(KEY);
+    else area?.setItem(KEY, JSON.stringify(drafts));
   } catch {
     // Storage full or blocked: the draft is lost on reload, as before.
   }
@@ -38,15 +43,23 @@ function write(drafts: Record<string, Draft>): void {
 
 /** Keeps the texts typed into field `id` (refused), over the state's value `value`. */
 export function keepDraft(id: string, texts: string[], value: unknown): void {
-  write({ ...read(), [id]: { texts, value: JSON.stringify(value ?? null) } });
+  const draft = { texts, value: JSON.stringify(value ?? null) };
+  for (const area of [tabStorage(), storage()]) write(area, { ...read(area), [id]: draft });
 }
 
-/** Forgets field `id`'s draft: its value was accepted, or typed right again. */
+/** Forgets this tab's draft of field `id` (its value was accepted, or typed right again), and the shared copy if it is this tab's. */
 export function dropDraft(id: string): void {
-  const drafts = read();
-  if (!(id in drafts)) return;
-  delete drafts[id];
-  write(drafts);
+  const mine = read(tabStorage());
+  const shared = read(storage());
+  const own = mine[id];
+  if (own) {
+    delete mine[id];
+    write(tabStorage(), mine);
+  }
+  if (shared[id] && (own === undefined || JSON.stringify(shared[id]) === JSON.stringify(own))) {
+    delete shared[id];
+    write(storage(), shared);
+  }
 }
 
 /**
@@ -59,7 +72,7 @@ export function dropDraft(id: string): void {
  * value a link changed.
  */
 export function restoredDraft(id: string, value: unknown): string[] | undefined {
-  const draft = read()[id];
+  const draft = read(tabStorage())[id] ?? read(storage())[id];
   if (draft && draft.value === JSON.stringify(value ?? null) && Array.isArray(draft.texts)) return draft.texts;
   dropDraft(id);
   return undefined;

@@ -71,7 +71,7 @@ export function loadState(catalogue: Catalogue, notes?: LinkNotes): AppState {
 const RELOAD_KEY = 'voxpath.reload';
 
 /** This tab's sessionStorage, or undefined where it is blocked. */
-function tabStorage(): Storage | undefined {
+export function tabStorage(): Storage | undefined {
   try {
     return window.sessionStorage;
   } catch {
