@@ -215,6 +215,8 @@ describe("a 1,400,000-step line's export", () => {
     await json!.click();
     await page.getByTestId('export-run-text').filter({ hasText: /^Writing regions-steps\.json: [\d.,]+ MB so far$/ }).waitFor();
     expect(await csv!.isDisabled()).toBe(true);
+    // The view's PNG is drawn on the page: the export in the worker does not hold it up.
+    expect(await page.getByTestId('export-png').isDisabled()).toBe(false);
     await page.getByTestId('export-cancel').click();
     await page.getByTestId('export-note').filter({ hasText: 'regions-steps.json was not saved: the export was cancelled.' }).waitFor();
     expect(await page.getByTestId('export-run').isHidden()).toBe(true);

@@ -91,10 +91,13 @@ export function wireExports(buttons: ExportButtons, run: ExportRunElements, show
   let tracing = false;
   const refresh = () => {
     const why = notExportable(shown(), tracing, running !== undefined);
-    for (const button of [buttons.csv, buttons.json, buttons.png, buttons.vcd]) {
-      button.disabled = why !== undefined;
-      if (why === undefined) button.removeAttribute('title');
-      else button.title = why;
+    // The view's PNG is drawn on the page, not written by the worker: an
+    // export under way there does not hold it up.
+    const whyNotPng = notExportable(shown(), tracing, false);
+    for (const [button, reason] of [[buttons.csv, why], [buttons.json, why], [buttons.vcd, why], [buttons.png, whyNotPng]] as const) {
+      button.disabled = reason !== undefined;
+      if (reason === undefined) button.removeAttribute('title');
+      else button.title = reason;
     }
   };
   /** Saves `trace` as `format` under `name`, written in the worker; false when it was not saved (the note says why). */
