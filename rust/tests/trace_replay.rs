@@ -364,13 +364,20 @@ fn a_program_s_line_steps_have_no_circle_values_and_its_arc_steps_no_regions_val
 
 /// `Trace::ideal_line_f32` as a plain per-vertex loop over the f64
 /// polyline gives it: x, y, z of each vertex rounded to f32 (z = 0 on 2
-/// axes, axes past the third left out), after the box of those values.
+/// axes, axes past the third left out), after the box of those values,
+/// then what the rounding left of each, itself as f32.
 fn ideal_line_by_vertex(t: &voxpath::trace::Trace, origin: [f64; 3]) -> Vec<f32> {
     let dims = t.dims();
     let polyline = t.ideal_polyline();
-    let xyz: Vec<f32> = polyline
+    let exact: Vec<f64> = polyline
         .chunks_exact(dims)
-        .flat_map(|v| (0..3).map(move |a| v.get(a).map_or(0.0, |&c| (c - origin[a]) as f32)))
+        .flat_map(|v| (0..3).map(move |a| v.get(a).map_or(0.0, |&c| c - origin[a])))
+        .collect();
+    let xyz: Vec<f32> = exact.iter().map(|&v| v as f32).collect();
+    let rests: Vec<f32> = exact
+        .iter()
+        .zip(&xyz)
+        .map(|(&v, &drawn)| (v - f64::from(drawn)) as f32)
         .collect();
     let mut line = vec![0.0f32; voxpath::trace::IDEAL_LINE_BOX_VALUES];
     if !xyz.is_empty() {
@@ -381,6 +388,7 @@ fn ideal_line_by_vertex(t: &voxpath::trace::Trace, origin: [f64; 3]) -> Vec<f32>
         }
     }
     line.extend(xyz);
+    line.extend(rests);
     line
 }
 
@@ -423,7 +431,7 @@ fn the_ideal_line_for_drawing_is_the_polyline_from_its_origin_as_f32_after_its_b
     let line = far.ideal_line_f32([1073741800.0; 3]);
     assert_eq!(
         line[voxpath::trace::IDEAL_LINE_BOX_VALUES..],
-        [0.0, 0.0, 0.0, 24.0, 10.0, 5.0]
+        [0.0, 0.0, 0.0, 24.0, 10.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
     );
     assert!(program.trace.ideal_polyline().len() / 3 > 20);
 }
