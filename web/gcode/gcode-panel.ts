@@ -11,14 +11,14 @@
  *   editor (scrolled into view unless the user is typing) and in the move list.
  *
  * A program of more than EDITABLE_LINES lines is shown read-only in a
- * listing that lays out only the lines in view: a text box holding 100,000
- * lines takes Chromium over a second to lay out, in one task. Pasting over
- * the listing replaces the program; "Edit as text" puts it in the text box
- * anyway, at that cost.
+ * listing that lays out only the lines in view (form/long-text.ts). Pasting
+ * over the listing replaces the program; "Edit as text" puts it in the text
+ * box anyway, at the cost the listing avoids.
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
+import { countedLines, divertLongPastes, EDITABLE_LINES, lineStarts, linesInView, TextListing, tooLongToEdit } from '../form/long-text.js';
 import { linesBar, RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, grouped, sentence } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs, OptionSetter } from '../state/app-state.js';
@@ -28,14 +28,6 @@ import type { InputError, LineSteps } from '../worker/protocol.js';
 
 /** Moves listed at a time around the current one. */
 const MOVES_SHOWN = 12;
-
-/**
- * Programs up to this many lines are edited in the text box; longer ones are
- * listed read-only (see above). Chromium laid out 100,000 lines of G-code in
- * a text box in 1.2 to 1.6 s on this project's 2-core test machine, so the
- * box costs at most about 150 ms at this length.
- */
-const EDITABLE_LINES = 10_000;
 
 export interface GcodePanelElements {
   sample: HTMLSelectElement;
@@ -61,14 +53,6 @@ interface SampleInfo {
   file: string;
   title: string;
   description: string;
-}
-
-/** Where each line of `text` starts (its character offset), and one past the end. */
-function lineStarts(text: string): number[] {
-  const starts = [0];
-  for (let i = text.indexOf('\n'); i !== -1; i = text.indexOf('\n', i + 1)) starts.push(i + 1);
-  starts.push(text.length + 1);
-  return starts;
 }
 
 export class GcodePanel {
@@ -103,9 +87,8 @@ export class GcodePanel {
   #sampleInserted = false;
   /** The gutter's numbers: only the lines in view (a program can have 100,000). */
   readonly #gutterLines: HTMLElement;
-  /** The listing's lines in view, placed over a spacer as tall as the whole program. */
-  readonly #listingLines: HTMLElement;
-  readonly #listingSpacer: HTMLElement;
+  /** The program listed read-only while it is #listed. */
+  readonly #listing: TextListing;
   /** The run's progress bar and Cancel. */
   readonly #progress: RunProgress;
 
@@ -130,27 +113,11 @@ export class GcodePanel {
     this.#gutterLines = element('span', { className: 'gutter-lines' });
     elements.gutter.replaceChildren(this.#gutterLines);
 
-    this.#listingSpacer = element('div', { className: 'listing-spacer' });
-    this.#listingLines = element('pre', { className: 'listing-lines' });
-    elements.listing.replaceChildren(this.#listingSpacer, this.#listingLines);
+    this.#listing = new TextListing(elements.listing, (text) => this.#edited(text));
 
     this.#setText(store.state.gcode);
     elements.text.addEventListener('input', () => this.#edited(elements.text.value, true));
-    elements.text.addEventListener('paste', (event) => {
-      // A paste that makes the program too long for the text box goes to the
-      // listing before the box lays it out (unless the user chose to edit a long one here).
-      if (this.#lineCount > EDITABLE_LINES) return;
-      const pasted = event.clipboardData?.getData('text/plain') ?? '';
-      const { selectionStart, selectionEnd } = elements.text;
-      const text = this.#text.slice(0, selectionStart) + pasted + this.#text.slice(selectionEnd);
-      if (lineStarts(text).length - 1 <= EDITABLE_LINES) return;
-      event.preventDefault();
-      this.#edited(text);
-    });
-    elements.listing.addEventListener('paste', (event) => {
-      event.preventDefault();
-      this.#edited(event.clipboardData?.getData('text/plain') ?? '');
-    });
+    divertLongPastes(elements.text, () => ({ text: this.#text, lineCount: this.#lineCount }), (text) => this.#edited(text));
     elements.listing.addEventListener('click', (event) => {
       const top = elements.listing.getBoundingClientRect().top;
       const line = Math.floor((event.clientY - top + elements.listing.scrollTop - this.#paddingTopPx) / this.#lineHeightPx) + 1;
@@ -215,7 +182,7 @@ export class GcodePanel {
    */
   #replaceInBox(text: string): boolean {
     const box = this.#e.text;
-    if (this.#listed || lineStarts(text).length - 1 > EDITABLE_LINES) return false;
+    if (this.#listed || tooLongToEdit(text)) return false;
     const focused = document.activeElement;
     box.focus({ preventScroll: true });
     // A box that cannot take focus (hidden: the mode changed while the
@@ -276,17 +243,14 @@ export class GcodePanel {
     if (this.#listed) {
       // An empty box lays out at once; the listing lays out only what is in view.
       box.value = '';
-      // Counted as the core counts them (and the status line says): a final
-      // line break ends the last line rather than starting an empty one.
-      const lines = this.#lineCount - (/[\n\r]$/.test(text) ? 1 : 0);
-      longNote.querySelector('.long-lines')!.textContent = grouped(lines);
+      longNote.querySelector('.long-lines')!.textContent = grouped(countedLines(text, this.#starts));
     } else if (!fromBox) {
       box.value = text;
     }
     const style = getComputedStyle(box);
     this.#lineHeightPx = parseFloat(style.lineHeight) || this.#lineHeightPx;
     this.#paddingTopPx = parseFloat(style.paddingTop) || 0;
-    this.#listingSpacer.style.height = `${this.#lineCount * this.#lineHeightPx + 2 * this.#paddingTopPx}px`;
+    this.#listing.setText(text, this.#starts);
     // As wide as the longest number (its width is not its content's: style.css contains it).
     this.#e.gutter.style.width = `calc(${Math.max(3, String(this.#lineCount).length)}ch + 12px)`;
     this.#placeMarks();
@@ -300,8 +264,7 @@ export class GcodePanel {
   /** Numbers the lines in view (and lists them, in the listing), level with the scrolled text. */
   #renderGutter(): void {
     const scroller = this.#scroller;
-    const first = Math.floor(scroller.scrollTop / this.#lineHeightPx);
-    const last = Math.min(this.#lineCount, first + Math.ceil(scroller.clientHeight / this.#lineHeightPx) + 1);
+    const { first, last } = linesInView(scroller, this.#lineHeightPx, this.#lineCount);
     const numbers: (string | HTMLElement)[] = [];
     // The shown program's problems, over its own text only (see #ofText).
     const problems = this.#ofText ? this.#diagnosticLines : undefined;
@@ -318,11 +281,7 @@ export class GcodePanel {
     }
     this.#gutterLines.replaceChildren(...numbers);
     this.#gutterLines.style.transform = `translateY(${first * this.#lineHeightPx - scroller.scrollTop}px)`;
-    if (this.#listed) {
-      // Lines first + 1..last, without the last one's line break.
-      this.#listingLines.textContent = this.#text.slice(this.#starts[first], Math.max(this.#starts[first]!, this.#starts[last]! - 1));
-      this.#listingLines.style.top = `${first * this.#lineHeightPx}px`;
-    }
+    if (this.#listed) this.#listing.render(first, last);
   }
 
   /**

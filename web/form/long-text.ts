@@ -1,0 +1,99 @@
+/**
+ * Long texts (a G-code program) shown without freezing the page: a text
+ * box holding 100,000 lines takes Chromium over a second to lay out, in one
+ * task, at every change of its value. Past EDITABLE_LINES lines such a text is listed
+ * read-only in a TextListing, which lays out only the lines in view; a
+ * paste that would make the text box's text that long goes to the listing
+ * before the box lays it out (divertLongPastes).
+ */
+import { element } from './options-form.js';
+
+/**
+ * Texts up to this many lines are edited in a text box; longer ones are
+ * listed read-only. Chromium laid out 100,000 lines of G-code in a text box
+ * in 1.2 to 1.6 s on this project's 2-core test machine, so the box costs at
+ * most about 150 ms at this length.
+ */
+export const EDITABLE_LINES = 10_000;
+
+/** Where each line of `text` starts (its character offset), and one past the end. */
+export function lineStarts(text: string): number[] {
+  const starts = [0];
+  for (let i = text.indexOf('\n'); i !== -1; i = text.indexOf('\n', i + 1)) starts.push(i + 1);
+  starts.push(text.length + 1);
+  return starts;
+}
+
+/** Whether `text` has more than EDITABLE_LINES lines: found by counting no further than that. */
+export function tooLongToEdit(text: string): boolean {
+  let breaks = 0;
+  for (let i = text.indexOf('\n'); i !== -1 && breaks < EDITABLE_LINES; i = text.indexOf('\n', i + 1)) breaks++;
+  return breaks === EDITABLE_LINES;
+}
+
+/** Lines of `text` as the core counts them (and the status line says): a final line break ends the last line rather than starting an empty one. */
+export function countedLines(text: string, starts: readonly number[]): number {
+  return starts.length - 1 - (/[\n\r]$/.test(text) ? 1 : 0);
+}
+
+/** The lines of a `lineCount`-line text in view in `scroller` (lines `lineHeightPx` tall): first (from 0) and last (from 1, inclusive). */
+export function linesInView(scroller: HTMLElement, lineHeightPx: number, lineCount: number): { first: number; last: number } {
+  const first = Math.floor(scroller.scrollTop / lineHeightPx);
+  return { first, last: Math.min(lineCount, first + Math.ceil(scroller.clientHeight / lineHeightPx) + 1) };
+}
+
+/**
+ * A paste into `box` that would give it more than EDITABLE_LINES lines goes
+ * to `onLong` (with the text the box would have held) instead of the box.
+ * `shown` is the box's text as last read, with its line count: reading a
+ * long box's value copies it. A text already that long in the box is there
+ * because the user chose to edit it there, and its pastes stay in the box.
+ */
+export function divertLongPastes(box: HTMLTextAreaElement, shown: () => { text: string; lineCount: number }, onLong: (text: string) => void): void {
+  box.addEventListener('paste', (event) => {
+    const { text, lineCount } = shown();
+    if (lineCount > EDITABLE_LINES) return;
+    const pasted = event.clipboardData?.getData('text/plain') ?? '';
+    const after = text.slice(0, box.selectionStart) + pasted + text.slice(box.selectionEnd);
+    if (!tooLongToEdit(after)) return;
+    event.preventDefault();
+    onLong(after);
+  });
+}
+
+/**
+ * A long text listed read-only in `listing` (a scrollable box): only the
+ * lines in view are in the page, over a spacer as tall as the whole text.
+ * Pasting over the listing replaces the text (`onPaste`).
+ */
+export class TextListing {
+  readonly #spacer = element('div', { className: 'listing-spacer' });
+  readonly #lines = element('pre', { className: 'listing-lines' });
+  #text = '';
+  #starts: readonly number[] = [0, 1];
+  #lineHeightPx = 18;
+
+  constructor(listing: HTMLElement, onPaste: (text: string) => void) {
+    listing.replaceChildren(this.#spacer, this.#lines);
+    listing.addEventListener('paste', (event) => {
+      event.preventDefault();
+      onPaste(event.clipboardData?.getData('text/plain') ?? '');
+    });
+  }
+
+  /** Lists `text` (its line starts `starts`): the spacer as tall as all its lines and their padding. */
+  setText(text: string, starts: readonly number[]): void {
+    this.#text = text;
+    this.#starts = starts;
+    const style = getComputedStyle(this.#lines);
+    this.#lineHeightPx = parseFloat(style.lineHeight) || this.#lineHeightPx;
+    this.#spacer.style.height = `${(starts.length - 1) * this.#lineHeightPx + parseFloat(style.paddingTop) + parseFloat(style.paddingBottom)}px`;
+  }
+
+  /** Lays out lines first + 1..last (see linesInView), where they stand in the whole text. */
+  render(first: number, last: number): void {
+    // Without the last one's line break.
+    this.#lines.textContent = this.#text.slice(this.#starts[first], Math.max(this.#starts[first]!, this.#starts[last]! - 1));
+    this.#lines.style.top = `${first * this.#lineHeightPx}px`;
+  }
+}
