@@ -258,10 +258,21 @@ function run(catalogue: Catalogue): void {
     charts: new PathCharts(byId('charts', HTMLDivElement), goTo),
     comparePanel: new ComparePanel(byId('comparison', HTMLDivElement), goTo),
     // Its "Go to point" also brings the difference close: on a long path it was too small to see.
-    checkPanel: new CheckPanel({ box: byId('check-points', HTMLDetailsElement), text: byId('learner-points', HTMLTextAreaElement), result: byId('check-result', HTMLDivElement) }, store, (pointIndex) => {
-      goTo(pointIndex);
-      scene.lookAtCurrentCell();
-    }),
+    checkPanel: new CheckPanel(
+      {
+        box: byId('check-points', HTMLDetailsElement),
+        text: byId('learner-points', HTMLTextAreaElement),
+        listing: byId('learner-listing', HTMLDivElement),
+        longNote: byId('learner-long', HTMLParagraphElement),
+        clear: byId('learner-clear', HTMLButtonElement),
+        editAnyway: byId('learner-edit-anyway', HTMLButtonElement),
+        result: byId('check-result', HTMLDivElement),
+      },
+      store, (pointIndex) => {
+        goTo(pointIndex);
+        scene.lookAtCurrentCell();
+      },
+    ),
     timing: new TimingDiagram(byId('timing', HTMLDivElement), goTo),
     timeViews: new TimeViews({ motion: byId('motion', HTMLDivElement), stepClocks: byId('step-clocks', HTMLDivElement), }, catalogue, timeline, goTo),
     experimentPanel: new ExperimentPanel(byId('experiment-view', HTMLDivElement), store, catalogue, byId('viewport', HTMLDivElement)),

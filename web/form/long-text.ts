@@ -1,7 +1,8 @@
 /**
- * Long texts (a G-code program) shown without freezing the page: a text
- * box holding 100,000 lines takes Chromium over a second to lay out, in one
- * task, at every change of its value. Past EDITABLE_LINES lines such a text is listed
+ * Long texts (a G-code program, a learner's points) shown without freezing
+ * the page: a text box holding 100,000 lines takes Chromium over a second
+ * to lay out, in one task, at every change of its value (and 200,000
+ * points about 4 s). Past EDITABLE_LINES lines such a text is listed
  * read-only in a TextListing, which lays out only the lines in view; a
  * paste that would make the text box's text that long goes to the listing
  * before the box lays it out (divertLongPastes).
@@ -79,6 +80,11 @@ export class TextListing {
       event.preventDefault();
       onPaste(event.clipboardData?.getData('text/plain') ?? '');
     });
+  }
+
+  /** How tall a line of the listing is, px (its style's line height). */
+  get lineHeightPx(): number {
+    return this.#lineHeightPx;
   }
 
   /** Lists `text` (its line starts `starts`): the spacer as tall as all its lines and their padding. */
