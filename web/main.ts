@@ -196,6 +196,8 @@ function run(catalogue: Catalogue): void {
       listing: byId('gcode-listing', HTMLDivElement),
       longNote: byId('gcode-long', HTMLParagraphElement),
       editAnyway: byId('gcode-edit-anyway', HTMLButtonElement),
+      replaced: byId('gcode-replaced', HTMLParagraphElement),
+      bringBack: byId('gcode-bring-back', HTMLButtonElement),
       gutter: byId('gcode-gutter', HTMLPreElement),
       problems: byId('gcode-problems', HTMLDivElement),
       backdrop: byId('gcode-backdrop', HTMLPreElement),

@@ -791,6 +791,85 @@ describe('G-code mode', () => {
     expect(p.problems()).toEqual([]);
     await p.close();
   });
+  it('keeps a pasted 20,000-line program that a sample replaced, and brings it back, over reloads', async () => {
+    // Too long for the text box, the program is listed, with no undo: the
+    // sample replaced it for good, and a reload stored only the sample.
+    const program = ['G21 G90 F600', ...Array.from({ length: 20_000 }, (_, k) => `G1 X${(k % 50) + 1} Y${k % 7}`)].join('\n') + '\n';
+    const p = await openPage('?mode=gcode');
+    const { page } = p;
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    await p.context.grantPermissions(['clipboard-read', 'clipboard-write']);
+    await page.evaluate((text) => navigator.clipboard.writeText(text), program);
+    await page.getByTestId('gcode-text').focus();
+    await page.keyboard.press('ControlOrMeta+A');
+    await page.keyboard.press('ControlOrMeta+V');
+    await page.getByTestId('gcode-listing').waitFor();
+    await page.getByTestId('trace-status').filter({ hasText: '20,001 lines' }).waitFor();
+    const offer = page.getByTestId('gcode-replaced');
+    expect(await offer.isHidden()).toBe(true);
+
+    await page.getByTestId('sample').selectOption('helix.gcode');
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
+    await offer.waitFor();
+    expect(await offer.innerText()).toBe("Your program (20,001 lines) was replaced by the sample 'Helix'. Bring it back");
+    // Kept over a reload, beside the sample it was replaced by.
+    await page.reload();
+    await offer.waitFor();
+    expect(await offer.innerText()).toMatch(/^Your program \(20,001 lines\) was replaced by the sample 'Helix'\./);
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
+
+    await page.getByTestId('gcode-bring-back').click();
+    await page.getByTestId('gcode-listing').waitFor();
+    await page.getByTestId('trace-status').filter({ hasText: '20,001 lines' }).waitFor();
+    expect(await offer.isHidden()).toBe(true);
+    expect(await page.getByTestId('sample').inputValue()).toBe('');
+    // Brought back, it is the program again after a reload, exactly, and offered no more.
+    await page.reload();
+    await page.getByTestId('gcode-listing').waitFor();
+    await page.getByTestId('trace-status').filter({ hasText: '20,001 lines' }).waitFor();
+    expect(await offer.isHidden()).toBe(true);
+    await page.getByTestId('gcode-edit-anyway').click();
+    expect(await page.getByTestId('gcode-text').inputValue()).toBe(program);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("offers a typed program back after a sample or a link's program replaced it, not a sample, and no more once a program is typed", async () => {
+    const p = await openPage('?mode=gcode');
+    const { page } = p;
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const offer = page.getByTestId('gcode-replaced');
+    // The default program is the square sample: replaced, it is not offered back.
+    await page.getByTestId('sample').selectOption('helix.gcode');
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toMatch(/P3/);
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    expect(await offer.isHidden()).toBe(true);
+    // A program typed, replaced by a sample and that sample by another: offered back, named by the last.
+    const typed = 'G21 G90\nG1 X1 Y0.5 F100\n';
+    await page.getByTestId('gcode-text').fill(typed);
+    await page.getByTestId('sample').selectOption('square.gcode');
+    await offer.filter({ hasText: "Your program (2 lines) was replaced by the sample 'Square'." }).waitFor();
+    await page.getByTestId('sample').selectOption('helix.gcode');
+    await offer.filter({ hasText: "replaced by the sample 'Helix'." }).waitFor();
+    await page.getByTestId('gcode-bring-back').click();
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toBe(typed);
+    await page.getByTestId('trace-status').filter({ hasText: '2 lines' }).waitFor();
+    expect(await offer.isHidden()).toBe(true);
+    // A link's program replaces it: offered back too.
+    await page.goto(new URL('?mode=gcode&gcode=G21%20G90%0AG1%20X5%20F100%0A', page.url()).href);
+    await offer.filter({ hasText: "Your program (2 lines) was replaced by the link's program." }).waitFor();
+    expect(await page.getByTestId('gcode-text').inputValue()).toBe('G21 G90\nG1 X5 F100\n');
+    // A program typed is the user's again: the offer goes, and stays gone after a reload.
+    const retyped = 'G21 G90\nG1 X2 F100\nY1\n';
+    await page.getByTestId('gcode-text').fill(retyped);
+    await expect.poll(() => offer.isHidden()).toBe(true);
+    await page.reload();
+    await expect.poll(() => page.getByTestId('gcode-text').inputValue()).toBe(retyped);
+    await page.getByTestId('trace-status').filter({ hasText: '3 lines' }).waitFor();
+    expect(await offer.isHidden()).toBe(true);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
 });
 
 describe('experiment mode', () => {

@@ -14,6 +14,12 @@
  * listing that lays out only the lines in view (form/long-text.ts). Pasting
  * over the listing replaces the program; "Edit as text" puts it in the text
  * box anyway, at the cost the listing avoids.
+ *
+ * A program the user typed or pasted that the page replaces (a sample
+ * picked, a link's program) is kept (AppState's replacedProgram, stored as
+ * the program is) and offered back beside the editor until it is brought
+ * back or the user types a program again: a listed program has no undo, and
+ * a reload kept only the sample.
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
@@ -21,7 +27,7 @@ import { diagnosticText } from '../form/page-advice.js';
 import { countedLines, divertLongPastes, EDITABLE_LINES, lineStarts, linesInView, TextListing, tooLongToEdit } from '../form/long-text.js';
 import { linesBar, RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, grouped, sentence } from '../format.js';
-import { type AppState, type Catalogue, machineSpecs, OptionSetter } from '../state/app-state.js';
+import { type AppState, type Catalogue, machineSpecs, OptionSetter, programReplaced } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
 import type { InputError, LineSteps } from '../worker/protocol.js';
@@ -37,6 +43,9 @@ export interface GcodePanelElements {
   /** The note shown with the listing, and its button that puts the program in the text box anyway. */
   longNote: HTMLElement;
   editAnyway: HTMLButtonElement;
+  /** The offer of the user's program that the page replaced, and its button that brings it back. */
+  replaced: HTMLElement;
+  bringBack: HTMLButtonElement;
   gutter: HTMLElement;
   /** Above the editor: the program's error (and how many warnings), each with a way to its line. */
   problems: HTMLElement;
@@ -53,6 +62,18 @@ interface SampleInfo {
   file: string;
   title: string;
   description: string;
+}
+
+/** The text of the site's file `path`; `what` names it in the error when it cannot be loaded. */
+async function fetchedText(path: string, what: string): Promise<string> {
+  const response = await fetch(path);
+  if (!response.ok) throw new Error(`${what} could not be loaded (HTTP ${response.status})`);
+  return response.text();
+}
+
+/** The sample program `file` as loaded. */
+function sampleText(file: string): Promise<string> {
+  return fetchedText(`samples/${encodeURIComponent(file)}`, `the sample ${file}`);
 }
 
 export class GcodePanel {
@@ -83,8 +104,14 @@ export class GcodePanel {
   #starts = [0, 1];
   /** True while the program is listed read-only rather than in the text box. */
   #listed = false;
-  /** True while a sample is inserted into the box as an edit (its input event is not the user's). */
-  #sampleInserted = false;
+  /** True while the page inserts a program into the box as an edit (its input event is not the user's). */
+  #programInserted = false;
+  /** The samples listed (samples/index.json), fetched once. */
+  readonly #samples: Promise<SampleInfo[]>;
+  /** The sample programs' texts, fetched when first needed: a program that is one of them as loaded is not the user's own. */
+  #sampleTexts: Promise<Set<string>> | undefined;
+  /** The replaced program, and what replaced it, that the offer was last made for (or withdrawn, as a sample's). */
+  #offered = { program: '', by: '' };
   /** The gutter's numbers: only the lines in view (a program can have 100,000). */
   readonly #gutterLines: HTMLElement;
   /** The program listed read-only while it is #listed. */
@@ -153,32 +180,80 @@ export class GcodePanel {
     }, 'machine');
 
     elements.sample.addEventListener('change', () => void this.#loadSample(elements.sample.value));
+    elements.bringBack.addEventListener('click', () => this.#bringBack());
+    this.#samples = fetchedText('samples/index.json', 'the sample list').then((text) => JSON.parse(text) as SampleInfo[]);
     void this.#listSamples();
+    this.#offerReplaced();
   }
 
   async #listSamples(): Promise<void> {
-    const response = await fetch('samples/index.json');
-    if (!response.ok) throw new Error(`the sample list could not be loaded (HTTP ${response.status})`);
-    const samples = (await response.json()) as SampleInfo[];
+    const samples = await this.#samples;
     this.#e.sample.append(...samples.map((s) => element('option', { value: s.file, textContent: s.title, title: s.description })));
   }
 
   async #loadSample(file: string): Promise<void> {
     if (!file) return;
-    const response = await fetch(`samples/${encodeURIComponent(file)}`);
-    if (!response.ok) throw new Error(`the sample ${file} could not be loaded (HTTP ${response.status})`);
-    const text = await response.text();
+    const text = await sampleText(file);
+    const title = [...this.#e.sample.options].find((option) => option.value === file)?.textContent ?? file;
+    // Whether the program it replaces (as it is now: the user may have typed while the sample loaded) is the user's own.
+    const typed = !(await this.#isSample(this.#store.state.gcode));
+    this.#showProgram(text);
+    this.#store.update({ ...programReplaced(this.#store.state, text, `the sample '${title}'`, typed), pointIndex: 0, camera: null });
+  }
+
+  /** Whether `text` is one of the sample programs as loaded (the default program is the square sample). */
+  async #isSample(text: string): Promise<boolean> {
+    this.#sampleTexts ??= this.#samples.then((samples) => Promise.all(samples.map(({ file }) => sampleText(file)))).then((texts) => new Set(texts));
+    return (await this.#sampleTexts).has(text);
+  }
+
+  /** Puts a program the page chose (a sample, a program brought back) in the editor: as an edit the box can undo where it can (#replaceInBox). */
+  #showProgram(text: string): void {
     if (!this.#replaceInBox(text)) this.#setText(text);
-    this.#store.update({ gcode: text, pointIndex: 0, camera: null });
   }
 
   /**
-   * Puts a sample in the text box as an edit the box can undo, so that
-   * Ctrl+Z brings back the program it replaced (written as the box's value,
-   * the user's own program was gone, and Undo gave a mix of both). Only
-   * where both fit the box (a listing has no undo) and the browser still
-   * records an inserted text (execCommand). Focus goes back where it was.
-   * False when the sample is to be shown the plain way.
+   * Offers the program a sample or a link replaced, beside the editor; a
+   * sample's text, as loaded (a link's program replacing a sample), is
+   * withdrawn instead: the user can pick it again.
+   */
+  #offerReplaced(): void {
+    const { replacedProgram, replacedBy } = this.#store.state;
+    const { replaced } = this.#e;
+    // Called at every change of the state (each step played): a long program's lines are counted only when the offer changes.
+    if (replacedProgram === this.#offered.program && replacedBy === this.#offered.by) return;
+    const newProgram = replacedProgram !== this.#offered.program;
+    this.#offered = { program: replacedProgram, by: replacedBy };
+    if (replacedProgram === '') {
+      replaced.hidden = true;
+      return;
+    }
+    replaced.querySelector('.replaced-text')!.textContent = `Your program (${countOf(countedLines(replacedProgram, lineStarts(replacedProgram)), 'line')}) was replaced by ${replacedBy}.`;
+    if (!newProgram) return;
+    // Shown once it is known not to be a sample's text.
+    replaced.hidden = true;
+    void this.#isSample(replacedProgram).then((sample) => {
+      if (replacedProgram !== this.#store.state.replacedProgram) return;
+      if (sample) this.#store.update({ replacedProgram: '', replacedBy: '' });
+      else replaced.hidden = false;
+    });
+  }
+
+  /** Puts the replaced program back, exactly as it was, and runs it; the offer is withdrawn. */
+  #bringBack(): void {
+    const program = this.#store.state.replacedProgram;
+    this.#e.sample.value = '';
+    this.#showProgram(program);
+    this.#store.update({ gcode: program, replacedProgram: '', replacedBy: '', pointIndex: 0, camera: null });
+  }
+
+  /**
+   * Puts a program the page chose in the text box as an edit the box can
+   * undo, so that Ctrl+Z brings back the program it replaced (written as the
+   * box's value, the user's own program was gone, and Undo gave a mix of
+   * both). Only where both fit the box (a listing has no undo) and the
+   * browser still records an inserted text (execCommand). Focus goes back
+   * where it was. False when the program is to be shown the plain way.
    */
   #replaceInBox(text: string): boolean {
     const box = this.#e.text;
@@ -189,9 +264,9 @@ export class GcodePanel {
     // sample loaded) would let the insertion land in whatever has it.
     if (document.activeElement !== box) return false;
     box.select();
-    this.#sampleInserted = true;
+    this.#programInserted = true;
     const inserted = document.execCommand('insertText', false, text) && box.value === text;
-    this.#sampleInserted = false;
+    this.#programInserted = false;
     if (focused instanceof HTMLElement) focused.focus({ preventScroll: true });
     if (!inserted) return false;
     box.setSelectionRange(0, 0);
@@ -218,12 +293,13 @@ export class GcodePanel {
 
   /** The user changed the program to `text`: in the box (`fromBox`: typed, dropped) or by a paste the box did not take. */
   #edited(text: string, fromBox = false): void {
-    // The sample's own insertion (#replaceInBox) is shown by #loadSample.
-    if (this.#sampleInserted) return;
+    // The page's own insertion (#replaceInBox) is shown by its caller.
+    if (this.#programInserted) return;
     // No longer the sample as loaded; and picking that sample again must fire a change to load it afresh.
     this.#e.sample.value = '';
     this.#setText(text, { fromBox });
-    this.#store.update({ gcode: text });
+    // A program of the user's own again: the replaced one is no longer offered.
+    this.#store.update({ gcode: text, replacedProgram: '', replacedBy: '' });
   }
 
   /**
@@ -456,6 +532,7 @@ export class GcodePanel {
   /** Brings the editor in line with the state (a sample, a link). */
   render(): void {
     if (this.#text !== this.#store.state.gcode) this.#setText(this.#store.state.gcode);
+    this.#offerReplaced();
     this.#machineForm.setValues(this.#store.state.machine);
   }
 }

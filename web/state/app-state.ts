@@ -52,6 +52,15 @@ export interface AppState {
   options: Record<string, OptionValue>;
   /** G-code mode: the program's text. */
   gcode: string;
+  /**
+   * G-code mode: the user's own program (typed or pasted, not a sample as
+   * loaded) that the page replaced with another (a sample picked, a link's
+   * program), kept so that it can be brought back; '' for none. The page
+   * offers it until it is brought back or the user types a program again.
+   */
+  replacedProgram: string;
+  /** What replaced `replacedProgram`, as the offer names it ("the sample 'Helix'"); '' with no replaced program. */
+  replacedBy: string;
   /** Trace mode: a learner's points as pasted into Check points (CSV, rows or a printed list), checked against the rule; '' for none. */
   learnerPoints: string;
   /** G-code mode: the machine, by GcodeSettings name (stepsPerMm or stepAngle + microsteps + pitch, line/arc algorithm). */
@@ -344,8 +353,27 @@ export class OptionSetter {
   }
 }
 
+/**
+ * The program fields once `state`'s program is replaced by `program`, which
+ * the page put in (`by` names it, as the offer to bring the replaced one
+ * back says): the replaced program is kept when it was `typed` (the user's,
+ * not a sample as loaded), else the one kept before, if any, stays (with an
+ * offer standing, the program shown is what replaced the user's: typing
+ * withdraws the offer).
+ */
+export function programReplaced(
+  state: Pick<AppState, 'gcode' | 'replacedProgram' | 'replacedBy'>,
+  program: string,
+  by: string,
+  typed: boolean,
+): Pick<AppState, 'gcode' | 'replacedProgram' | 'replacedBy'> {
+  if (program === state.gcode) return { gcode: program, replacedProgram: state.replacedProgram, replacedBy: state.replacedBy };
+  if (state.replacedProgram !== '') return { gcode: program, replacedProgram: state.replacedProgram, replacedBy: by };
+  return typed ? { gcode: program, replacedProgram: state.gcode, replacedBy: by } : { gcode: program, replacedProgram: '', replacedBy: '' };
+}
+
 /** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */
-const DEFAULT_GCODE = '(A 20 mm square, absolute coordinates)\nG21 G90 G17\nG0 X0 Y0 Z0\nG1 X20 Y0 F500\nY20\nX0\nY0\n';
+export const DEFAULT_GCODE = '(A 20 mm square, absolute coordinates)\nG21 G90 G17\nG0 X0 Y0 Z0\nG1 X20 Y0 F500\nY20\nX0\nY0\n';
 
 /** Wang's experiment: 100 lines to points in 0..100, seed 1. */
 const DEFAULT_EXPERIMENT: Readonly<Record<string, OptionValue>> = { count: 100, seed: 1, maxCoordinate: 100 };
@@ -358,6 +386,8 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     layout: 'overlay',
     options: defaultOptions([info]),
     gcode: DEFAULT_GCODE,
+    replacedProgram: '',
+    replacedBy: '',
     learnerPoints: '',
     machine: { ...DEFAULT_MACHINE },
     experiment: { ...DEFAULT_EXPERIMENT },

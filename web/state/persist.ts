@@ -3,32 +3,36 @@
  * query format of state/query.ts, so nothing a user typed is lost on reload.
  * On load a URL describing a state wins over localStorage.
  */
-import { type AppState, type Catalogue, comparableWith, defaultAlgorithm, defaultState, MODES } from './app-state.js';
+import { type AppState, type Catalogue, comparableWith, DEFAULT_GCODE, defaultAlgorithm, defaultState, MODES, programReplaced } from './app-state.js';
 import { GCODE_URL_LIMIT, type LinkNotes, stateFromQuery, stateToQuery } from './query.js';
 import type { Store } from './store.js';
 
 const STORAGE_KEY = 'voxpath.state';
 
 /**
- * The texts longer than a link holds (GCODE_URL_LIMIT), a program and a
- * learner's points, are kept as typed, under keys of their own: KEY holds
- * how many pieces of LONG_TEXT_PIECE characters the text is cut into, and
- * KEY.0, KEY.1, ... the pieces. They are written with the rest of the state
+ * The texts longer than a link holds (GCODE_URL_LIMIT), a program, the
+ * program it replaced (kept to bring back) and a learner's points, are kept
+ * as typed, under keys of their own: KEY holds how many pieces of
+ * LONG_TEXT_PIECE characters the text is cut into, and KEY.0, KEY.1, ...
+ * the pieces. They are written with the rest of the state
  * (throttled, WRITE_DELAY_MS), each piece only when it changed: inside the
  * state's parts they were URL-encoded, quoted and written out again at
  * every write, 0.1 to 0.6 s of the main thread after pasting 200,000 points
  * (3.7 MB) and after each keystroke in them; written whole under one key,
  * 15 to 55 ms.
  */
-const LONG_TEXT_KEYS = { gcode: 'voxpath.gcode', learnerPoints: 'voxpath.points' } as const;
+const LONG_TEXT_KEYS = { gcode: 'voxpath.gcode', replacedProgram: 'voxpath.replaced', learnerPoints: 'voxpath.points' } as const;
 
 /** Characters per stored piece of a long text: a keystroke rewrites one piece. */
 const LONG_TEXT_PIECE = 65_536;
 
 type LongText = keyof typeof LONG_TEXT_KEYS;
 
-/** The query key that holds each long text's field when it is short enough, and a link's program or points. */
-const LONG_TEXT_PARAMS: Record<LongText, string> = { gcode: 'gcode', learnerPoints: 'points' };
+/** The query key that holds each long text's field when it is short enough, and a link's program or points (a link never holds a replaced program). */
+const LONG_TEXT_PARAMS: Record<LongText, string> = { gcode: 'gcode', replacedProgram: 'replaced', learnerPoints: 'points' };
+
+/** The query key of the gcode part that names what replaced the kept program (AppState's replacedBy). */
+const REPLACED_BY_PARAM = 'replacedBy';
 
 /**
  * Writes are throttled to one per WRITE_DELAY_MS: playback changes the step
@@ -106,8 +110,9 @@ function addressAfterReload(): string {
  * view, the step), and one of each mode for the part of the page it holds:
  * trace (the algorithm, its move, the learner's points), compare (the
  * second algorithm and the layout), gcode (the program and the machine),
- * experiment (its options). A permalink holds only its own mode's keys, so
- * one alone lost every other mode's input on a reload. The program and the
+ * experiment (its options); the gcode part also holds the program a sample
+ * or a link replaced, kept to bring back. A permalink holds only its own
+ * mode's keys, so one alone lost every other mode's input on a reload. The program and the
  * points are written once, in their parts as a link holds them, never in
  * `shown`; longer ones under LONG_TEXT_KEYS (a visit from before those keys
  * kept them whole in their parts, which are read as before).
@@ -126,9 +131,21 @@ function storedParts(state: AppState): StoredParts {
     shown: stateToQuery(state, { gcodeLimit: 0 }),
     trace: part('trace'),
     compare: part('compare'),
-    gcode: part('gcode'),
+    gcode: withReplacedProgram(part('gcode'), state),
     experiment: part('experiment'),
   };
+}
+
+/**
+ * The gcode part `query` with the replaced program (when short enough:
+ * longTextPieces) and what replaced it, added after the part's own keys,
+ * which are left as stateToQuery wrote them.
+ */
+function withReplacedProgram(query: string, { replacedProgram, replacedBy }: AppState): string {
+  if (replacedProgram === '') return query;
+  const added = new URLSearchParams({ [REPLACED_BY_PARAM]: replacedBy });
+  if (replacedProgram.length <= GCODE_URL_LIMIT) added.set(LONG_TEXT_PARAMS.replacedProgram, replacedProgram);
+  return `${query}&${added}`;
 }
 
 /**
@@ -137,13 +154,13 @@ function storedParts(state: AppState): StoredParts {
  * its part (the points beside the move, the program beside the machine),
  * and so written or kept on its own (partsToStore).
  */
-const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', learnerPoints: 'trace' };
+const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', replacedProgram: 'gcode', learnerPoints: 'trace' };
 
 /** The input each mode's part keeps for a visit in another mode (storedState takes these of it). */
 const PART_INPUTS: Record<AppState['mode'], readonly (keyof AppState)[]> = {
   trace: ['algorithm', 'options', 'learnerPoints'],
   compare: ['other', 'layout'],
-  gcode: ['gcode', 'machine', 'slowdown'],
+  gcode: ['gcode', 'replacedProgram', 'replacedBy', 'machine', 'slowdown'],
   experiment: ['experiment'],
 };
 
@@ -175,7 +192,7 @@ function withParamOf(query: string, key: string, from: string): string {
 /**
  * `parts`, but with the inputs not `changed` as stored (another tab's, if
  * it wrote them since): a part of which this tab changed nothing is kept
- * whole; one of which it changed only the long text, or all but it, takes
+ * whole; one of which it changed only a long text, or all but it, takes
  * that text's parameter from the other (a program too long for the part has
  * none: it is in its keys).
  */
@@ -191,11 +208,11 @@ function partsToStore(parts: StoredParts, changed: Set<keyof AppState>, store: S
   for (const mode of MODES) {
     const theirs = (stored as Partial<StoredParts>)[mode];
     if (typeof theirs !== 'string') continue;
-    const text = (Object.keys(LONG_TEXT_MODES) as LongText[]).find((field) => LONG_TEXT_MODES[field] === mode);
-    const restChanged = PART_INPUTS[mode].some((key) => key !== text && changed.has(key));
-    const base = restChanged ? parts[mode] : theirs;
-    if (text === undefined || changed.has(text) === restChanged) merged[mode] = base;
-    else merged[mode] = withParamOf(base, LONG_TEXT_PARAMS[text], restChanged ? theirs : parts[mode]);
+    const texts = (Object.keys(LONG_TEXT_MODES) as LongText[]).filter((field) => LONG_TEXT_MODES[field] === mode);
+    const restChanged = PART_INPUTS[mode].some((key) => !(texts as (keyof AppState)[]).includes(key) && changed.has(key));
+    merged[mode] = texts
+      .filter((text) => changed.has(text) !== restChanged)
+      .reduce((query, text) => withParamOf(query, LONG_TEXT_PARAMS[text], restChanged ? theirs : parts[mode]), restChanged ? parts[mode] : theirs);
   }
   return merged;
 }
@@ -216,11 +233,14 @@ function storedState(catalogue: Catalogue): AppState | undefined {
   const shown = read(parts.shown);
   const [trace, compare, gcode, experiment] = [read(parts.trace), read(parts.compare), read(parts.gcode), read(parts.experiment)];
   if (!shown || !trace || !compare || !gcode || !experiment) return shown;
+  const gcodeParams = new URLSearchParams(parts.gcode);
   const typed: AppState = {
     ...trace,
     other: compare.other,
     layout: compare.layout,
     gcode: storedLongText('gcode', parts.gcode!) ?? gcode.gcode,
+    replacedProgram: storedLongText('replacedProgram', parts.gcode!) ?? gcodeParams.get(LONG_TEXT_PARAMS.replacedProgram) ?? '',
+    replacedBy: gcodeParams.get(REPLACED_BY_PARAM) ?? '',
     machine: gcode.machine,
     slowdown: gcode.slowdown,
     experiment: experiment.experiment,
@@ -264,6 +284,11 @@ function withOtherModes(catalogue: Catalogue, described: AppState, params: URLSe
   for (const [field, param] of Object.entries(LONG_TEXT_PARAMS) as [LongText, string][]) {
     if (!params.has(param)) state[field] = typed[field];
   }
+  // A link's program replacing the one typed keeps it, to bring back (a
+  // link never holds a replaced program: the one kept stays). Not the
+  // default program; the page withdraws the offer of another sample as
+  // loaded (their texts are the site's to fetch).
+  Object.assign(state, programReplaced(typed, state.gcode, "the link's program", typed.gcode !== DEFAULT_GCODE));
   if (state.mode !== 'gcode') Object.assign(state, { machine: typed.machine, slowdown: typed.slowdown });
   if (state.mode !== 'experiment') state.experiment = typed.experiment;
   if (state.mode === 'gcode' || (state.mode === 'experiment' && typed.algorithm === state.algorithm)) {
