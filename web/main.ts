@@ -83,7 +83,7 @@ function run(catalogue: Catalogue): void {
     storageNote.hidden = kept;
     storageNote.textContent = kept
       ? ''
-      : "Too large for the browser's storage (a few MB): the program, or your points, will not come back after a reload or on a new visit, which open on the sample program (or without the points). Save the text as a file to keep it.";
+      : "Too large for the browser's storage (a few MB): the program, your points, or the replaced program offered back will not come back after a reload or on a new visit, which open on the sample program (or without the points, or the offer). Save the text as a file to keep it.";
   });
   document.body.classList.toggle('embed', store.state.embed);
   embedding(store, catalogue, {

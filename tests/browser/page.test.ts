@@ -494,6 +494,31 @@ describe('the page', () => {
     await p.close();
   });
 
+  it("says when a program a sample replaced, kept to bring back, is too large for the browser's storage", async () => {
+    const p = await openPage('?mode=gcode');
+    const { page } = p;
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const note = page.getByTestId('storage-note');
+    await page.evaluate(() => {
+      const text = document.querySelector<HTMLTextAreaElement>('[data-testid=gcode-text]')!;
+      text.value = `G21 G90\nG1 X3 Y4 F600\n(${'x'.repeat(12_000_000)})\n`;
+      text.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    await note.filter({ hasText: "Too large for the browser's storage" }).waitFor();
+    // The sample fits, but the program it replaced, offered back, does not: still said.
+    await page.getByTestId('sample').selectOption('helix.gcode');
+    await page.getByTestId('gcode-replaced').filter({ hasText: "Your program (3 lines) was replaced by the sample 'Helix'." }).waitFor();
+    // Written: the address holds the sample.
+    await page.waitForURL(/P3/);
+    expect(await note.innerText()).toMatch(/the replaced program offered back will not come back after a reload/);
+    // Brought back, the program itself is too large: said as before.
+    await page.getByTestId('gcode-bring-back').click();
+    await page.getByTestId('trace-status').filter({ hasText: '3 lines' }).waitFor();
+    expect(await note.isVisible()).toBe(true);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps what was typed just before a reload (the address written after the request went)', async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;
