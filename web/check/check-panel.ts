@@ -16,8 +16,8 @@
  */
 import type { Check } from '../core/index.js';
 import { element } from '../form/options-form.js';
-import { countedLines, divertLongPastes, EDITABLE_LINES, lineStarts, linesInView, TextListing } from '../form/long-text.js';
-import { countOf, formatPoint, grouped, NO_VALUE_TEXT } from '../format.js';
+import { LongTextField, linesInView } from '../form/long-text.js';
+import { countOf, formatPoint, NO_VALUE_TEXT } from '../format.js';
 import type { AppState } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 
@@ -43,39 +43,28 @@ export class CheckPanel {
   readonly #e: CheckPanelElements;
   readonly #onGo: (pointIndex: number) => void;
   readonly #store: Store<AppState>;
-  readonly #listing: TextListing;
-  /** The points as last set or read: reading a long text box's value copies it, so it is read once per edit. */
-  #text = '';
-  /** Offsets where the lines of #text start, plus one past its end: lines are #starts.length - 1. */
-  #starts: readonly number[] = [0, 1];
-  /** True while the points are listed read-only rather than in the text box. */
-  #listed = false;
+  /** The points, in the text box or listed read-only. */
+  readonly #field: LongTextField;
 
   constructor(elements: CheckPanelElements, store: Store<AppState>, onGo: (pointIndex: number) => void) {
     this.#e = elements;
     this.#store = store;
     this.#onGo = onGo;
-    this.#listing = new TextListing(elements.listing, (text) => this.#edited(text));
+    this.#field = new LongTextField(elements, (text) => this.#edited(text));
     this.#setText(store.state.learnerPoints);
     elements.box.open = store.state.learnerPoints !== '';
     elements.text.addEventListener('input', () => this.#edited(elements.text.value, true));
-    divertLongPastes(elements.text, () => ({ text: this.#text, lineCount: this.#lineCount }), (text) => this.#edited(text));
     elements.clear.addEventListener('click', () => {
       this.#edited('');
       elements.text.focus();
     });
     elements.editAnyway.addEventListener('click', () => {
-      this.#setText(this.#text, { editable: true });
+      this.#setText(this.#field.text, { editable: true });
       elements.text.focus();
     });
     elements.listing.addEventListener('scroll', () => this.#renderListing());
     // Shown (the panel opened, the mode changed) or resized: more or fewer lines are in view.
     new ResizeObserver(() => this.#renderListing()).observe(elements.listing);
-  }
-
-  /** Lines of the points' text. */
-  get #lineCount(): number {
-    return this.#starts.length - 1;
   }
 
   /** The user changed the points to `text`: in the box (`fromBox`: typed, dropped), or by a paste the box did not take, or Clear. */
@@ -84,36 +73,21 @@ export class CheckPanel {
     this.#store.update({ learnerPoints: text });
   }
 
-  /**
-   * Shows `text`: in the text box when it has at most EDITABLE_LINES lines
-   * (or `editable`), else in the list. `fromBox`: the box already holds it
-   * (the user typed it), so the box is not written, which would lose the
-   * cursor and the undo history; text typed in the box stays there, whatever its length.
-   */
-  #setText(text: string, { fromBox = false, editable = false } = {}): void {
-    const { text: box, listing, longNote } = this.#e;
-    this.#text = text;
-    this.#starts = lineStarts(text);
-    this.#listed = !(editable || (fromBox && !this.#listed)) && this.#lineCount > EDITABLE_LINES;
-    box.hidden = this.#listed;
-    listing.hidden = longNote.hidden = !this.#listed;
-    if (this.#listed) {
-      // An empty box lays out at once; the list lays out only what is in view.
-      box.value = '';
-      longNote.querySelector('.long-lines')!.textContent = grouped(countedLines(text, this.#starts));
-      this.#listing.setText(text, this.#starts);
-      listing.scrollTop = 0;
+  /** Shows `text` (LongTextField.show), a list from its top. */
+  #setText(text: string, options?: { fromBox?: boolean; editable?: boolean }): void {
+    this.#field.show(text, options);
+    if (this.#field.listed) {
+      this.#e.listing.scrollTop = 0;
       this.#renderListing();
-    } else if (!fromBox) {
-      box.value = text;
     }
   }
 
   /** Lists the lines in view. */
   #renderListing(): void {
-    if (!this.#listed) return;
-    const { first, last } = linesInView(this.#e.listing, this.#listing.lineHeightPx, this.#lineCount);
-    this.#listing.render(first, last);
+    const field = this.#field;
+    if (!field.listed) return;
+    const { first, last } = linesInView(this.#e.listing, field.listing.lineHeightPx, field.lineCount);
+    field.listing.render(first, last);
   }
 
   /** Nothing to show: no points, or a new rule being traced. */

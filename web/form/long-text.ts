@@ -7,6 +7,7 @@
  * paste that would make the text box's text that long goes to the listing
  * before the box lays it out (divertLongPastes).
  */
+import { grouped } from '../format.js';
 import { element } from './options-form.js';
 
 /**
@@ -50,7 +51,7 @@ export function linesInView(scroller: HTMLElement, lineHeightPx: number, lineCou
  * long box's value copies it. A text already that long in the box is there
  * because the user chose to edit it there, and its pastes stay in the box.
  */
-export function divertLongPastes(box: HTMLTextAreaElement, shown: () => { text: string; lineCount: number }, onLong: (text: string) => void): void {
+function divertLongPastes(box: HTMLTextAreaElement, shown: () => { text: string; lineCount: number }, onLong: (text: string) => void): void {
   box.addEventListener('paste', (event) => {
     const { text, lineCount } = shown();
     if (lineCount > EDITABLE_LINES) return;
@@ -67,7 +68,7 @@ export function divertLongPastes(box: HTMLTextAreaElement, shown: () => { text: 
  * lines in view are in the page, over a spacer as tall as the whole text.
  * Pasting over the listing replaces the text (`onPaste`).
  */
-export class TextListing {
+class TextListing {
   readonly #spacer = element('div', { className: 'listing-spacer' });
   readonly #lines = element('pre', { className: 'listing-lines' });
   #text = '';
@@ -101,5 +102,76 @@ export class TextListing {
     // Without the last one's line break.
     this.#lines.textContent = this.#text.slice(this.#starts[first], Math.max(this.#starts[first]!, this.#starts[last]! - 1));
     this.#lines.style.top = `${first * this.#lineHeightPx}px`;
+  }
+}
+
+/** A long text's field: its text box, the listing in its place past EDITABLE_LINES lines, and the note shown with the listing (its `.long-lines` says how many). */
+export interface LongTextElements {
+  text: HTMLTextAreaElement;
+  listing: HTMLElement;
+  longNote: HTMLElement;
+}
+
+/**
+ * A long text shown in a text box, or past EDITABLE_LINES lines in a
+ * TextListing in its place (a G-code program, a learner's points): the
+ * text as last set or read (reading a long box's value copies it, so it is
+ * read once per edit), where its lines start, and which of the two shows
+ * it. A paste the box should not take, and a paste over the listing, go to
+ * `onEdited` with the text they make.
+ */
+export class LongTextField {
+  readonly listing: TextListing;
+  readonly #e: LongTextElements;
+  #text = '';
+  /** Offsets where the lines of the text start, plus one past its end: lines are starts.length - 1. */
+  #starts: readonly number[] = [0, 1];
+  #listed = false;
+
+  constructor(elements: LongTextElements, onEdited: (text: string) => void) {
+    this.#e = elements;
+    this.listing = new TextListing(elements.listing, onEdited);
+    divertLongPastes(elements.text, () => ({ text: this.#text, lineCount: this.lineCount }), onEdited);
+  }
+
+  get text(): string {
+    return this.#text;
+  }
+
+  get starts(): readonly number[] {
+    return this.#starts;
+  }
+
+  get lineCount(): number {
+    return this.#starts.length - 1;
+  }
+
+  /** True while the text is listed read-only rather than in the text box. */
+  get listed(): boolean {
+    return this.#listed;
+  }
+
+  /**
+   * Shows `text`: in the text box when it has at most EDITABLE_LINES lines
+   * (or `editable`), else in the listing. `fromBox`: the box already holds
+   * it (the user typed it), so the box is not written, which would lose the
+   * cursor and the undo history.
+   */
+  show(text: string, { fromBox = false, editable = false } = {}): void {
+    const { text: box, listing, longNote } = this.#e;
+    this.#text = text;
+    this.#starts = lineStarts(text);
+    // Text typed in the box stays there, whatever its length.
+    this.#listed = !(editable || (fromBox && !this.#listed)) && this.lineCount > EDITABLE_LINES;
+    box.hidden = this.#listed;
+    listing.hidden = longNote.hidden = !this.#listed;
+    if (this.#listed) {
+      // An empty box lays out at once; the listing lays out only what is in view.
+      box.value = '';
+      longNote.querySelector('.long-lines')!.textContent = grouped(countedLines(text, this.#starts));
+      this.listing.setText(text, this.#starts);
+    } else if (!fromBox) {
+      box.value = text;
+    }
   }
 }

@@ -24,9 +24,9 @@
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
-import { countedLines, divertLongPastes, EDITABLE_LINES, lineStarts, linesInView, TextListing, tooLongToEdit } from '../form/long-text.js';
+import { countedLines, lineStarts, linesInView, LongTextField, tooLongToEdit } from '../form/long-text.js';
 import { linesBar, RunProgress } from '../form/run-progress.js';
-import { countOf, formatPoint, grouped, sentence } from '../format.js';
+import { countOf, formatPoint, sentence } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs, OptionSetter, programReplaced } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
@@ -98,12 +98,6 @@ export class GcodePanel {
   #stepRequest = 0;
   #lineHeightPx = 18;
   #paddingTopPx = 4;
-  /** The editor's text as last set or read: reading a long textarea's value copies it, so it is read once per edit. */
-  #text = '';
-  /** Offsets where the lines of #text start, plus one past its end: lines are #starts.length - 1. */
-  #starts = [0, 1];
-  /** True while the program is listed read-only rather than in the text box. */
-  #listed = false;
   /** True while the page inserts a program into the box as an edit (its input event is not the user's). */
   #programInserted = false;
   /** The samples listed (samples/index.json), fetched once. */
@@ -114,8 +108,8 @@ export class GcodePanel {
   #offered = { program: '', by: '' };
   /** The gutter's numbers: only the lines in view (a program can have 100,000). */
   readonly #gutterLines: HTMLElement;
-  /** The program listed read-only while it is #listed. */
-  readonly #listing: TextListing;
+  /** The program, in the text box or listed read-only. */
+  readonly #field: LongTextField;
   /** The run's progress bar and Cancel. */
   readonly #progress: RunProgress;
 
@@ -140,11 +134,10 @@ export class GcodePanel {
     this.#gutterLines = element('span', { className: 'gutter-lines' });
     elements.gutter.replaceChildren(this.#gutterLines);
 
-    this.#listing = new TextListing(elements.listing, (text) => this.#edited(text));
+    this.#field = new LongTextField(elements, (text) => this.#edited(text));
 
     this.#setText(store.state.gcode);
     elements.text.addEventListener('input', () => this.#edited(elements.text.value, true));
-    divertLongPastes(elements.text, () => ({ text: this.#text, lineCount: this.#lineCount }), (text) => this.#edited(text));
     elements.listing.addEventListener('click', (event) => {
       const top = elements.listing.getBoundingClientRect().top;
       const line = Math.floor((event.clientY - top + elements.listing.scrollTop - this.#paddingTopPx) / this.#lineHeightPx) + 1;
@@ -162,7 +155,7 @@ export class GcodePanel {
       this.#goToLine(Math.min(this.#lineCount, Math.max(1, from + by)));
     });
     elements.editAnyway.addEventListener('click', () => {
-      this.#setText(this.#text, { editable: true });
+      this.#setText(this.#field.text, { editable: true });
       elements.text.focus();
     });
     for (const scroller of [elements.text, elements.listing]) {
@@ -257,7 +250,7 @@ export class GcodePanel {
    */
   #replaceInBox(text: string): boolean {
     const box = this.#e.text;
-    if (this.#listed || tooLongToEdit(text)) return false;
+    if (this.#field.listed || tooLongToEdit(text)) return false;
     const focused = document.activeElement;
     box.focus({ preventScroll: true });
     // A box that cannot take focus (hidden: the mode changed while the
@@ -280,7 +273,7 @@ export class GcodePanel {
     let [low, high] = [0, this.#lineCount - 1];
     while (low < high) {
       const middle = (low + high + 1) >> 1;
-      if (this.#starts[middle]! <= offset) low = middle;
+      if (this.#field.starts[middle]! <= offset) low = middle;
       else high = middle - 1;
     }
     return low + 1;
@@ -288,7 +281,7 @@ export class GcodePanel {
 
   /** Lines of the program. */
   get #lineCount(): number {
-    return this.#starts.length - 1;
+    return this.#field.lineCount;
   }
 
   /** The user changed the program to `text`: in the box (`fromBox`: typed, dropped) or by a paste the box did not take. */
@@ -302,31 +295,13 @@ export class GcodePanel {
     this.#store.update({ gcode: text, replacedProgram: '', replacedBy: '' });
   }
 
-  /**
-   * Shows `text`: in the text box when it has at most EDITABLE_LINES lines
-   * (or `editable`), else in the listing. `fromBox`: the box already holds
-   * it (the user typed it), so the box is not written, which would lose the
-   * cursor and the undo history.
-   */
-  #setText(text: string, { fromBox = false, editable = false } = {}): void {
-    const { text: box, listing, longNote } = this.#e;
-    this.#text = text;
-    this.#starts = lineStarts(text);
-    // Text typed in the box stays there, whatever its length.
-    this.#listed = !(editable || (fromBox && !this.#listed)) && this.#lineCount > EDITABLE_LINES;
-    box.hidden = this.#listed;
-    listing.hidden = longNote.hidden = !this.#listed;
-    if (this.#listed) {
-      // An empty box lays out at once; the listing lays out only what is in view.
-      box.value = '';
-      longNote.querySelector('.long-lines')!.textContent = grouped(countedLines(text, this.#starts));
-    } else if (!fromBox) {
-      box.value = text;
-    }
+  /** Shows `text` (LongTextField.show), with its gutter and marks. */
+  #setText(text: string, options?: { fromBox?: boolean; editable?: boolean }): void {
+    this.#field.show(text, options);
+    const box = this.#e.text;
     const style = getComputedStyle(box);
     this.#lineHeightPx = parseFloat(style.lineHeight) || this.#lineHeightPx;
     this.#paddingTopPx = parseFloat(style.paddingTop) || 0;
-    this.#listing.setText(text, this.#starts);
     // As wide as the longest number (its width is not its content's: style.css contains it).
     this.#e.gutter.style.width = `calc(${Math.max(3, String(this.#lineCount).length)}ch + 12px)`;
     this.#placeMarks();
@@ -334,7 +309,7 @@ export class GcodePanel {
 
   /** The box that scrolls the program: the text box, or the listing. */
   get #scroller(): HTMLElement {
-    return this.#listed ? this.#e.listing : this.#e.text;
+    return this.#field.listed ? this.#e.listing : this.#e.text;
   }
 
   /** Numbers the lines in view (and lists them, in the listing), level with the scrolled text. */
@@ -357,7 +332,7 @@ export class GcodePanel {
     }
     this.#gutterLines.replaceChildren(...numbers);
     this.#gutterLines.style.transform = `translateY(${first * this.#lineHeightPx - scroller.scrollTop}px)`;
-    if (this.#listed) this.#listing.render(first, last);
+    if (this.#field.listed) this.#field.listing.render(first, last);
   }
 
   /**
@@ -368,7 +343,7 @@ export class GcodePanel {
    * none of its steps: its line 4 is not the text's line 4.
    */
   get #ofText(): boolean {
-    return this.#program?.source === this.#text;
+    return this.#program?.source === this.#field.text;
   }
 
   /** Keeps the gutter and the marks level with the text as it scrolls. */
@@ -451,9 +426,9 @@ export class GcodePanel {
 
   /** Puts the editor's cursor on `line` (or brings it into the listing's view) and picks it. */
   #goToLine(line: number): void {
-    if (!this.#listed) {
+    if (!this.#field.listed) {
       const { text } = this.#e;
-      const offset = this.#starts[Math.min(line, this.#lineCount) - 1]!;
+      const offset = this.#field.starts[Math.min(line, this.#lineCount) - 1]!;
       text.focus();
       text.setSelectionRange(offset, offset);
     }
@@ -531,7 +506,7 @@ export class GcodePanel {
 
   /** Brings the editor in line with the state (a sample, a link). */
   render(): void {
-    if (this.#text !== this.#store.state.gcode) this.#setText(this.#store.state.gcode);
+    if (this.#field.text !== this.#store.state.gcode) this.#setText(this.#store.state.gcode);
     this.#offerReplaced();
     this.#machineForm.setValues(this.#store.state.machine);
   }
