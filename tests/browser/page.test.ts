@@ -470,18 +470,27 @@ describe('the page', () => {
     await p.close();
   });
 
-  it("says when a program is too large for the browser's storage, and keeps the rest (it was lost silently)", async () => {
+  /**
+   * G-code mode with a 3-line program typed whose comment of 12 million
+   * characters is past any browser's few MB of storage (quick to run), once
+   * the storage note says so.
+   */
+  async function programTooLargeToStore() {
     const p = await openPage('?mode=gcode');
     const { page } = p;
     await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     const note = page.getByTestId('storage-note');
-    // A comment of 12 million characters: past any browser's few MB, quick to run.
     await page.evaluate(() => {
       const text = document.querySelector<HTMLTextAreaElement>('[data-testid=gcode-text]')!;
       text.value = `G21 G90\nG1 X3 Y4 F600\n(${'x'.repeat(12_000_000)})\n`;
       text.dispatchEvent(new Event('input', { bubbles: true }));
     });
     await note.filter({ hasText: "Too large for the browser's storage" }).waitFor();
+    return { p, page, note };
+  }
+
+  it("says when a program is too large for the browser's storage, and keeps the rest (it was lost silently)", async () => {
+    const { p, page, note } = await programTooLargeToStore();
     // The rest of the state is kept: steps/mm typed after it come back.
     await page.getByTestId('input-machine-stepsPerMm').fill('40');
     await page.waitForURL(/stepsPerMm=40/);
@@ -495,16 +504,7 @@ describe('the page', () => {
   });
 
   it("says when a program a sample replaced, kept to bring back, is too large for the browser's storage", async () => {
-    const p = await openPage('?mode=gcode');
-    const { page } = p;
-    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
-    const note = page.getByTestId('storage-note');
-    await page.evaluate(() => {
-      const text = document.querySelector<HTMLTextAreaElement>('[data-testid=gcode-text]')!;
-      text.value = `G21 G90\nG1 X3 Y4 F600\n(${'x'.repeat(12_000_000)})\n`;
-      text.dispatchEvent(new Event('input', { bubbles: true }));
-    });
-    await note.filter({ hasText: "Too large for the browser's storage" }).waitFor();
+    const { p, page, note } = await programTooLargeToStore();
     // The sample fits, but the program it replaced, offered back, does not: still said.
     await page.getByTestId('sample').selectOption('helix.gcode');
     await page.getByTestId('gcode-replaced').filter({ hasText: "Your program (3 lines) was replaced by the sample 'Helix'." }).waitFor();
