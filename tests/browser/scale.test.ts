@@ -91,6 +91,22 @@ function counter(page: Page): Promise<string> {
   return page.getByTestId('step-counter').innerText();
 }
 
+/**
+ * Steps 1, 2 and 3, each by the right arrow (the page focused by a click
+ * off its controls), then `settleMs` more for what the steps set off (their
+ * frames); the worst of what was observed from the first press on.
+ */
+async function firstStepsByArrows(page: Page, settleMs = 0): Promise<{ longestTask: number; slowestInput: number }> {
+  await takeObserved(page);
+  await page.locator('body').click({ position: { x: 5, y: 5 } });
+  for (let i = 0; i < 3; i++) {
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => counter(page)).toMatch(new RegExp(`^Step ${i + 1} of`));
+  }
+  if (settleMs > 0) await page.waitForTimeout(settleMs);
+  return worst(await takeObserved(page));
+}
+
 async function jumpTo(page: Page, step: number): Promise<void> {
   await page.getByTestId('jump-input').fill(String(step));
   await page.getByTestId('jump-input').press('Enter');
@@ -162,13 +178,7 @@ describe('a dense path on a software GPU', () => {
     await page.getByTestId('step-counter').filter({ hasText: /of \d{2,3}(,\d{3})+$/ }).waitFor();
     expect(Number((await counter(page)).split(' of ')[1]!.replaceAll(',', ''))).toBeGreaterThan(10_000);
     expect(await page.getByTestId('scene-canvas').getAttribute('data-drawing')).toBe('points');
-    await takeObserved(page);
-    await page.locator('body').click({ position: { x: 5, y: 5 } });
-    for (let i = 0; i < 3; i++) {
-      await page.keyboard.press('ArrowRight');
-      await expect.poll(() => counter(page)).toMatch(new RegExp(`^Step ${i + 1} of`));
-    }
-    const { longestTask, slowestInput } = worst(await takeObserved(page));
+    const { longestTask, slowestInput } = await firstStepsByArrows(page);
     expect(longestTask).toBeLessThan(LONG_TASK_BOUND_MS);
     expect(slowestInput).toBeLessThan(LONG_TASK_BOUND_MS);
     expect(p.problems()).toEqual([]);
@@ -188,14 +198,7 @@ describe('two long lines compared on a software GPU', () => {
     await expect.poll(() => canvas.getAttribute('data-highlighted')).toBe('2799300');
     expect(Number(await canvas.getAttribute('data-highlights-drawn'))).toBeLessThanOrEqual(2 * 20_000);
     await page.waitForTimeout(1_000);
-    await takeObserved(page);
-    await page.locator('body').click({ position: { x: 5, y: 5 } });
-    for (let i = 0; i < 3; i++) {
-      await page.keyboard.press('ArrowRight');
-      await expect.poll(() => counter(page)).toMatch(new RegExp(`^Step ${i + 1} of`));
-    }
-    await page.waitForTimeout(1_000);
-    const { longestTask, slowestInput } = worst(await takeObserved(page));
+    const { longestTask, slowestInput } = await firstStepsByArrows(page, 1_000);
     expect(longestTask).toBeLessThan(LONG_TASK_BOUND_MS);
     expect(slowestInput).toBeLessThan(LONG_TASK_BOUND_MS);
     expect(p.problems()).toEqual([]);
