@@ -153,6 +153,13 @@ export async function openPage(query = '', options: OpenOptions = {}): Promise<O
   return result;
 }
 
+/** Goes to step `step` by the playback's jump field, as a learner types it, once the step counter says so. */
+export async function jumpTo(page: Page, step: number): Promise<void> {
+  await page.getByTestId('jump-input').fill(String(step));
+  await page.getByTestId('jump-input').press('Enter');
+  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step.toLocaleString('en-US')} of`) }).waitFor();
+}
+
 /** Closes every page still open and the browser; use as `afterAll(closeAll)`. */
 export async function closeAll(): Promise<void> {
   await Promise.all([...opened].map((p) => p.close()));

@@ -30,7 +30,7 @@ import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
 import { trace } from '../../web/core/index.js';
 import { pointsOf } from '../helpers.js';
-import { closeAll, openPage } from './harness.js';
+import { closeAll, jumpTo, openPage } from './harness.js';
 
 afterAll(closeAll);
 
@@ -105,12 +105,6 @@ async function firstStepsByArrows(page: Page, settleMs = 0): Promise<{ longestTa
   }
   if (settleMs > 0) await page.waitForTimeout(settleMs);
   return worst(await takeObserved(page));
-}
-
-async function jumpTo(page: Page, step: number): Promise<void> {
-  await page.getByTestId('jump-input').fill(String(step));
-  await page.getByTestId('jump-input').press('Enter');
-  await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step.toLocaleString('en-US')} of`) }).waitFor();
 }
 
 describe('a 1,000,000-step line', () => {

@@ -11,7 +11,7 @@ import type { Page } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { AXIS_COLOURS, PALETTE } from '../../web/scene/palette.js';
-import { closeAll, openPage, pixelsOf, screenshot } from './harness.js';
+import { closeAll, jumpTo, openPage, pixelsOf, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -190,15 +190,10 @@ describe('G-code mode: time', () => {
     const { page } = p;
     await loaded(page, 320);
     const timing = page.getByTestId('timing');
-    const goTo = async (step: number) => {
-      await page.getByTestId('jump-input').fill(String(step));
-      await page.getByTestId('jump-input').press('Enter');
-      await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step} of`) }).waitFor();
-    };
     const pauseBox = timing.locator('.chart-break');
 
     // Point 160, the last step before the dwell: the window ends there, the dwell at its right edge.
-    await goTo(160);
+    await jumpTo(page, 160);
     await expect.poll(() => pauseBox.count()).toBe(1);
     await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nnext step\n+2.050 s');
     const plot = (await timing.locator('.u-over').boundingBox())!;
@@ -220,7 +215,7 @@ describe('G-code mode: time', () => {
     expect(before.runs, JSON.stringify(before)).toBeGreaterThanOrEqual(to - from);
 
     // Point 161, across the dwell: the window starts there, the dwell at its left edge.
-    await goTo(161);
+    await jumpTo(page, 161);
     await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nstep before\n−2.050 s');
     const left = (await pauseBox.boundingBox())!;
     expect(left.x).toBeCloseTo(plot.x, 0);
@@ -239,7 +234,7 @@ describe('G-code mode: time', () => {
     await page.getByTestId('step-counter').filter({ hasText: /^Step 160 of/ }).waitFor();
     await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nnext step\n+2.050 s');
     // Far from the dwell, no pause: the window counted in steps.
-    await goTo(60);
+    await jumpTo(page, 60);
     await expect.poll(() => pauseBox.count()).toBe(0);
     expect(p.problems()).toEqual([]);
     await p.close();
@@ -252,9 +247,7 @@ describe('G-code mode: time', () => {
     const { page } = p;
     await loaded(page, 160);
     const timing = page.getByTestId('timing');
-    await page.getByTestId('jump-input').fill('160');
-    await page.getByTestId('jump-input').press('Enter');
-    await page.getByTestId('step-counter').filter({ hasText: /^Step 160 of/ }).waitFor();
+    await jumpTo(page, 160);
     const pauseBox = timing.locator('.chart-break');
     await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nprogram ends\n+2.000 s');
     expect(await pauseBox.getAttribute('title')).toBe("a pause with a G4 dwell of 2 s in it: the program ends 2.000 s after its last step (not to scale)");
@@ -285,9 +278,7 @@ describe('G-code mode: time', () => {
     // A narrow window, one column: the diagram the page's width, some 40 steps.
     await page.setViewportSize({ width: 700, height: 900 });
     const timing = page.getByTestId('timing');
-    await page.getByTestId('jump-input').fill('80');
-    await page.getByTestId('jump-input').press('Enter');
-    await page.getByTestId('step-counter').filter({ hasText: /^Step 80 of/ }).waitFor();
+    await jumpTo(page, 80);
     // The window ends at the slow move's last step, the edge marked as a pause's is, with the time to the next step.
     const pauseBox = timing.locator('.chart-break');
     await expect.poll(() => pauseBox.innerText()).toBe('faster steps\nnext step\n+4.099 ms');
