@@ -665,31 +665,45 @@ mod tests {
     }
 
     /// Nearest distance by sampling t finely over the fractions measured,
-    /// then golden-section refinement around the best sample.
+    /// then golden-section refinement around every sample nearer than its
+    /// neighbours. Refining only the best sample is not enough: where the
+    /// turns lie closer together than the sampling's own error (turns
+    /// 0.06 apart, samples 0.4 grid units apart along r = 2858), the best
+    /// sample can sit on a turn whose true minimum is not the nearest.
     fn brute_force(h: &HelixPath, p: &Point) -> f64 {
         let q = h.local(p);
         let samples = 200_000;
         let [first, last] = h.measured;
         let spacing = (last - first) / samples as f64;
-        let (mut best_t, mut best) = (first, f64::INFINITY);
-        for i in 0..=samples {
-            let t = first + i as f64 * spacing;
-            let d = distance_sq(h, q, t);
-            if d < best {
-                (best_t, best) = (t, d);
+        let sampled: Vec<f64> = (0..=samples)
+            .map(|i| distance_sq(h, q, first + i as f64 * spacing))
+            .collect();
+        let refine = |t: f64| {
+            let (mut lo, mut hi) = ((t - spacing).max(first), (t + spacing).min(last));
+            let g = (5f64.sqrt() - 1.0) / 2.0;
+            for _ in 0..100 {
+                let (a, b) = (hi - g * (hi - lo), lo + g * (hi - lo));
+                if distance_sq(h, q, a) < distance_sq(h, q, b) {
+                    hi = b;
+                } else {
+                    lo = a;
+                }
             }
-        }
-        let (mut lo, mut hi) = ((best_t - spacing).max(first), (best_t + spacing).min(last));
-        let g = (5f64.sqrt() - 1.0) / 2.0;
-        for _ in 0..100 {
-            let (a, b) = (hi - g * (hi - lo), lo + g * (hi - lo));
-            if distance_sq(h, q, a) < distance_sq(h, q, b) {
-                hi = b;
+            distance_sq(h, q, (lo + hi) / 2.0)
+        };
+        let mut best = f64::INFINITY;
+        for (i, &d) in sampled.iter().enumerate() {
+            let left = if i == 0 {
+                f64::INFINITY
             } else {
-                lo = a;
+                sampled[i - 1]
+            };
+            let right = sampled.get(i + 1).copied().unwrap_or(f64::INFINITY);
+            if d <= left && d <= right {
+                best = best.min(d).min(refine(first + i as f64 * spacing));
             }
         }
-        best.min(distance_sq(h, q, (lo + hi) / 2.0)).sqrt()
+        best.sqrt()
     }
 
     #[test]
