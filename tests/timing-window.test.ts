@@ -4,6 +4,7 @@
 // window of 60 steps counted around the current one spanned the dwell, 2 s,
 // and pressed its 60 ms of pulses into bars at its edges.
 import { describe, expect, it } from 'vitest';
+import { runGcode } from '../web/core/index.js';
 import { neededSteps, PAUSE_FACTOR, stepWindow, windowHolds } from '../web/gcode/timing-window.js';
 
 const STEPS = 160;
@@ -13,7 +14,7 @@ const dwellAt = (k: number) => 0.01 + k * 1e-3 + (k >= 80 ? 2.05 : 0);
 const times = Float64Array.from({ length: STEPS }, (_, k) => dwellAt(k));
 
 /** stepWindow for point p, given the instants of the steps neededSteps asks for (as the diagram fetches them), and the program's end. */
-function windowFor(p: number, all = times, ticks = TICKS, endSeconds = all[all.length - 1]) {
+function windowFor(p: number, all: Float64Array = times, ticks = TICKS, endSeconds = all[all.length - 1]) {
   const { fromStep, toStep } = neededSteps(p, ticks, all.length);
   return stepWindow(p, ticks, all.length, fromStep, all.subarray(fromStep, toStep), endSeconds);
 }
@@ -108,6 +109,31 @@ describe('the timing diagram window', () => {
     // Ending at the last step, or a wait after it too short for a pause (under ten times the spacing): none.
     expect(windowFor(80, first)).toMatchObject({ pauseAfter: null });
     expect(windowFor(80, first, TICKS, first[79]! + 9e-3)).toMatchObject({ pauseAfter: null });
+  });
+
+  it('gives a program of one step its waits as pauses too: the dwell after it, and the wait before it', async () => {
+    // G1 X1 F60 at 1 step/mm, G4 P2: the one step when the move ends (1 mm/s, ramps at Grbl's 10 mm/s²), the
+    // program 2 s later. With no gap to give a spacing the window had no pause, and the diagram ended 1 ms
+    // after the step (pulseEdges). Its scale is that 1 ms now: the waits either side of it are pauses.
+    const program = await runGcode('G1 X1 F60\nG4 P2\n', { stepsPerMm: 1 });
+    const [step] = program.stepTimes(0, 1);
+    const end = program.durationSeconds;
+    // 1 mm/s reached in 0.1 s over 0.05 mm, 0.9 mm at it, 0.1 s to stop: 1.1 s.
+    expect(program.trace.steps).toBe(1);
+    expect(step).toBeCloseTo(1.1, 12);
+    expect(end - step!).toBeCloseTo(2, 12);
+    for (const p of [0, 1]) {
+      expect(windowFor(p, program.stepTimes(0, 1), TICKS, end), `point ${p}`).toEqual({
+        fromStep: 0,
+        toStep: 1,
+        pauseBefore: { fromSeconds: 0, toSeconds: step },
+        pauseAfter: { fromSeconds: step, toSeconds: end },
+      });
+    }
+    // Ending at its step (no dwell), or 5 ms after it (under ten times the 1 ms drawn after it): no pause after it.
+    expect(windowFor(1, program.stepTimes(0, 1), TICKS, step)).toMatchObject({ pauseAfter: null });
+    expect(windowFor(1, program.stepTimes(0, 1), TICKS, step! + 5e-3)).toMatchObject({ pauseAfter: null });
+    program.free();
   });
 
   it('holds while the current step is in it, away from an edge with steps past it', () => {

@@ -266,6 +266,31 @@ describe('G-code mode: time', () => {
     await p.close();
   });
 
+  it('draws the waits of a program of one step as pauses, its closing dwell to the program\'s end', async () => {
+    // G1 X1 F60 at 1 step/mm, then G4 P2: the one step at 1.1 s (1 mm/s, reached and left in 0.1 s at
+    // 10 mm/s²), the program's end 2 s later. With no gap to space it the diagram drew the step alone,
+    // 1 ms of it, neither the dwell after it (which a program of several steps draws) nor the wait before.
+    const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG4 P2\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=1&gcode=${program}`);
+    const { page } = p;
+    await loaded(page, 1);
+    const timing = page.getByTestId('timing');
+    const pauseBox = timing.locator('.chart-break');
+    await expect.poll(() => pauseBox.allInnerTexts()).toEqual(['pause\nfirst step at\n1.100 s', 'dwell 2 s\nprogram ends\n+2.000 s']);
+    // The wait from the start at the left edge, the dwell at the right, the step between them read in ms.
+    const plot = (await timing.locator('.u-over').boundingBox())!;
+    const [before, after] = [(await pauseBox.nth(0).boundingBox())!, (await pauseBox.nth(1).boundingBox())!];
+    expect(before.x).toBeCloseTo(plot.x, 0);
+    expect(after.x + after.width).toBeCloseTo(plot.x + plot.width, 0);
+    await timing.getByText(/planned instant, ms/).waitFor();
+    await screenshot(page, 'timing-one-step', '[data-testid=timing]');
+    // The same at point 0, before the step: the window is the step's.
+    await jumpTo(page, 0);
+    await expect.poll(() => pauseBox.count()).toBe(2);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('ends the STEP/DIR window where a much faster move starts, labelled, so that the pulses before it stay readable', async () => {
     // 1 mm at 60 mm/min, then 3 mm at 3000 mm/min with 1000 mm/s²: 80 X steps 12.5 ms apart, then the
     // fast move's, speeding up from 1 mm/s, the first 4.1 ms after the slow move's last, the fifth under

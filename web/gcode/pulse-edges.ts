@@ -7,6 +7,9 @@
 /** Rows of the diagram a step: its STEP pulse's rise and fall, and where DIR settles for the next step. */
 export const ROWS_PER_STEP = 3;
 
+/** How long after a lone step (or steps all at one instant) the diagram runs, seconds: no gap gives it a scale. */
+export const LONE_STEP_SECONDS = 1e-3;
+
 /**
  * The instants of `times` (seconds, one per step, in order) as the diagram's
  * rows, ROWS_PER_STEP a step: where its STEP pulse rises (the step's
@@ -23,7 +26,7 @@ export function pulseEdges(times: Float64Array): Float64Array {
   const ticks = times.length;
   const x = new Float64Array(ROWS_PER_STEP * ticks + 1);
   if (ticks === 0) return x;
-  const lastGap = (ticks > 1 ? times[ticks - 1]! - times[ticks - 2]! : 0) || 1e-3;
+  const lastGap = (ticks > 1 ? times[ticks - 1]! - times[ticks - 2]! : 0) || LONE_STEP_SECONDS;
   for (let i = 0; i < ticks; i++) {
     const next = i + 1 < ticks ? times[i + 1]! : times[i]! + lastGap;
     const gap = Math.min(next - times[i]!, i > 0 ? times[i]! - times[i - 1]! : Number.POSITIVE_INFINITY);

@@ -14,7 +14,7 @@
  * (drawn at the slow steps' spacing, a fast move's steps were a bar at the
  * window's edge): the window is cut where they start, as at a pause.
  */
-import { drawnFromZero } from './pulse-edges.js';
+import { drawnFromZero, LONE_STEP_SECONDS } from './pulse-edges.js';
 
 /**
  * A gap between two steps is a pause when it is longer than this many times
@@ -85,15 +85,14 @@ export function neededSteps(pointIndex: number, ticks: number, steps: number): {
  */
 export function stepWindow(pointIndex: number, ticks: number, steps: number, firstStep: number, times: Float64Array | null, endSeconds?: number): StepWindow {
   const counted = countedWindow(pointIndex, ticks, steps);
-  const none = { ...counted, pauseBefore: null, pauseAfter: null };
-  if (!times || steps === 0) return none;
+  if (!times || steps === 0) return { ...counted, pauseBefore: null, pauseAfter: null };
   const at = (k: number) => times[k - firstStep]!;
   const first = firstStep;
   const last = firstStep + times.length - 1;
   const c = currentStep(pointIndex, steps);
-  const spacingSeconds = spacingAround(times, c - firstStep);
-  // Steps all at one instant (or a single step): no spacing to compare a pause with.
-  if (!(spacingSeconds > 0)) return none;
+  // A lone step (or steps all at one instant) has no gap to space it: its scale is the time the
+  // diagram runs after it, so that the wait before it and a dwell after it are pauses as other steps'.
+  const spacingSeconds = spacingAround(times, c - firstStep) || LONE_STEP_SECONDS;
   // The gap after step k; NaN past the steps fetched, which no comparison cuts at.
   const gapAt = (k: number) => (k >= first && k + 1 <= last ? at(k + 1) - at(k) : Number.NaN);
   const pauseAt = (k: number) => gapAt(k) > PAUSE_FACTOR * spacingSeconds;
