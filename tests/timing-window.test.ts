@@ -5,6 +5,7 @@
 // and pressed its 60 ms of pulses into bars at its edges.
 import { describe, expect, it } from 'vitest';
 import { runGcode } from '../web/core/index.js';
+import { pulseEdges } from '../web/gcode/pulse-edges.js';
 import { neededSteps, PAUSE_FACTOR, stepWindow, windowHolds } from '../web/gcode/timing-window.js';
 
 const STEPS = 160;
@@ -37,9 +38,12 @@ describe('the timing diagram window', () => {
     const even = Float64Array.from({ length: STEPS }, (_, k) => k * 1e-3);
     expect(windowFor(80, even)).toEqual({ fromStep: 60, toStep: 120, pauseBefore: null, pauseAfter: null });
     expect(stepWindow(80, TICKS, STEPS, 0, null)).toEqual({ fromStep: 60, toStep: 120, pauseBefore: null, pauseAfter: null });
-    // Steps slowing gradually, each gap 5 % longer than the one before: none ten times its neighbours'.
+    // Steps slowing gradually, each gap 5 % longer than the one before: none ten times its neighbours', no
+    // pause. But 60 of them span 1.05^59 = 17.8 times their first gap at the end, 353 of it in all (pulseEdges'
+    // right edge with it), where 2 × 60 leave it half a tick: the window holds 39, Σ 1.05^j for j < 38 and
+    // 1.05^37 again, 113.8 first gaps (40 span 120.5), from step 60 as the counted window, the step a third in.
     const slowing = Float64Array.from({ length: STEPS }, (_, k) => (1.05 ** k - 1) * 1e-3);
-    expect(windowFor(80, slowing)).toMatchObject({ fromStep: 60, toStep: 120, pauseBefore: null, pauseAfter: null });
+    expect(windowFor(80, slowing)).toEqual({ fromStep: 60, toStep: 99, pauseBefore: null, pauseAfter: null });
     // All at one instant (a move that does not take time): nothing to compare a pause with.
     expect(windowFor(5, new Float64Array(20))).toEqual({ fromStep: 0, toStep: 20, pauseBefore: null, pauseAfter: null });
   });
@@ -87,6 +91,59 @@ describe('the timing diagram window', () => {
     // Reversed, the fast move first: from a slow step after it, the window starts at the cut.
     const fastSlow = slowFast.map((t) => slowFast[STEPS - 1]! - t).reverse();
     expect(windowFor(STEPS - 78, fastSlow)).toMatchObject({ fromStep: STEPS - 80, toStep: STEPS - 20, pauseBefore: { faster: true }, pauseAfter: null });
+  });
+
+  describe('beside a move 2 to 10 times faster, G1 X1 F60 then G1 X2 at 2 to 10 times the feed', () => {
+    // 80 steps/mm and 10,000 mm/s² (the speed changes within a step): 80 steps 12.5 ms apart, then 80 steps
+    // 12.5/r ms apart (the first a little later, the fast move starting at the slow one's speed), from
+    // the core's planner. At 3 to 9 times (under PAUSE_FACTOR, no cut) the window counted in steps drew
+    // both moves at a scale where the fast pulses were a third to a ninth of a tick apart, pressed into
+    // a bar (2 px at the page's 14 px a tick). Now no window draws a gap under half a tick: where the
+    // counted one would, the window holds fewer steps, the most that leave each pulse apart.
+    async function program(r: number) {
+      const p = await runGcode(`G1 X1 F60\nG1 X2 F${60 * r}\n`, { stepsPerMm: 80, acceleration: 10000, maxRate: 6000 });
+      const all = p.stepTimes(0, p.trace.steps);
+      p.free();
+      return all;
+    }
+    /** The narrowest gap drawn in window w, in ticks of a plot TICKS ticks wide spanning the window as pulseEdges draws it. */
+    function narrowestTicks(all: Float64Array, w: { fromStep: number; toStep: number }): number {
+      const drawn = all.subarray(w.fromStep, w.toStep);
+      const x = pulseEdges(drawn);
+      const gaps = Array.from(drawn.subarray(1), (t, i) => t - drawn[i]!);
+      return (Math.min(...gaps) / (x[x.length - 1]! - x[0]!)) * TICKS;
+    }
+
+    for (const r of [2, 3, 5, 9]) {
+      it(`draws both moves at ${r} times, each gap at least half a tick`, async () => {
+        const all = await program(r);
+        expect(all.length).toBe(160);
+        // The fast move's steps, from the core: 12.5/r ms apart.
+        expect((all[120]! - all[119]!) * r).toBeCloseTo(12.5e-3, 9);
+        for (let p = 0; p <= 160; p++) {
+          const w = windowFor(p, all);
+          const c = Math.max(0, p - 1);
+          expect([w.fromStep <= c, c < w.toStep, w.pauseBefore, w.pauseAfter], `point ${p}`).toEqual([true, true, null, null]);
+          expect(narrowestTicks(all, w), `point ${p}: ${w.fromStep}..${w.toStep}`).toBeGreaterThanOrEqual(0.5);
+        }
+        // At the slow move's last step and the fast one's first, steps of both, and the current one at least
+        // an eighth of the window (7 steps) from either edge, where windowHolds keeps it.
+        for (const p of [80, 81]) {
+          const w = windowFor(p, all);
+          expect([p - 1 - w.fromStep >= 7, w.toStep - p >= 7], `point ${p}: ${w.fromStep}..${w.toStep}`).toEqual([true, true]);
+          expect(windowHolds(w, p, TICKS, 160, true), `point ${p}`).toBe(true);
+        }
+        // At twice the speed the counted windows leave every gap half a tick already: they are kept.
+        if (r === 2) for (let p = 0; p <= 160; p++) expect(windowFor(p, all), `point ${p}`).toMatchObject({ fromStep: Math.min(Math.max(0, p - 20), 100), toStep: Math.min(Math.max(0, p - 20), 100) + 60 });
+      });
+    }
+
+    it('is cut at 10 times, where the fast move starts, as at a pause, and draws each gap half a tick apart', async () => {
+      const all = await program(10);
+      // At the slow move's last step: its steps up to the cut, the faster steps past it.
+      expect(windowFor(80, all)).toEqual({ fromStep: 20, toStep: 80, pauseBefore: null, pauseAfter: { fromSeconds: all[79], toSeconds: all[80], faster: true } });
+      for (let p = 0; p <= 160; p++) expect(narrowestTicks(all, windowFor(p, all)), `point ${p}`).toBeGreaterThanOrEqual(0.5);
+    });
   });
 
   it("shows the wait before the program's first step as a pause where it is not drawn from 0 s", () => {

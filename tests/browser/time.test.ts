@@ -11,6 +11,7 @@ import type { Page } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { AXIS_COLOURS, PALETTE } from '../../web/scene/palette.js';
+import { runGcode } from '../../web/core/index.js';
 import { closeAll, jumpTo, openPage, pixelsOf, screenshot } from './harness.js';
 
 afterAll(closeAll);
@@ -319,6 +320,45 @@ describe('G-code mode: time', () => {
     expect(drawn.runs, JSON.stringify(drawn)).toBeGreaterThanOrEqual(80 - Number(await timing.getAttribute('data-from-step')));
     expect(drawn.nearestPx, JSON.stringify(drawn)).toBeGreaterThanOrEqual(4);
     expect(drawn.last).toBeLessThan(1 - box.width / plot.width + 0.01);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('draws a move nine times faster beside a slow one with each of their pulses apart', async () => {
+    // 1 mm at 60 mm/min, then 1 mm at 540 mm/min, with 10,000 mm/s² (the speed changes within a step):
+    // 80 X steps 12.5 ms apart, then 80 steps 1.39 ms apart, instants from the core's planner. Under ten
+    // times, the window is not cut; counted in steps around the slow move's last step, it drew 13 slow
+    // steps beside 28 fast ones 3.9 px apart, a rise and a fall 2 px apart, some merged (77 edges for 41 steps).
+    const gcode = 'G21 G90\nG1 X1 F60\nG1 X2 F540\n';
+    const machine = { stepsPerMm: 80, acceleration: 10000, maxRate: 6000 };
+    const planned = await runGcode(gcode, machine);
+    const instants = planned.stepTimes(0, planned.trace.steps);
+    planned.free();
+    expect(((instants[120]! - instants[119]!) * 9) / (instants[40]! - instants[39]!)).toBeCloseTo(1, 9);
+    const p = await openPage(`?mode=gcode&stepsPerMm=80&acceleration=10000&maxRate=6000&gcode=${encodeURIComponent(gcode)}`);
+    const { page } = p;
+    await loaded(page, 160);
+    await page.setViewportSize({ width: 700, height: 900 });
+    const timing = page.getByTestId('timing');
+    await jumpTo(page, 80);
+    // Steps of both moves, at least 5 each side of the change (an eighth of the window from the current step), no cut.
+    await expect.poll(async () => Number(await timing.getAttribute('data-to-step'))).toBeGreaterThan(85);
+    const [from, to] = [Number(await timing.getAttribute('data-from-step')), Number(await timing.getAttribute('data-to-step'))];
+    expect(from).toBeLessThan(75);
+    expect(await timing.locator('.chart-break').count()).toBe(0);
+    const plot = (await timing.locator('.u-over').boundingBox())!;
+    // The narrowest gap drawn, by the core's instants over the span drawn (pulseEdges' right edge, a last
+    // gap after the last step): over 6 px of the plot (half a tick, 7 px, of the panel's width less its labels).
+    const drawn = instants.subarray(from, to);
+    const gaps = Array.from(drawn.subarray(1), (t, i) => t - drawn[i]!);
+    const span = drawn[drawn.length - 1]! - drawn[0]! + gaps[gaps.length - 1]!;
+    expect((Math.min(...gaps) / span) * plot.width).toBeGreaterThan(6);
+    await screenshot(page, 'timing-nine-times', '[data-testid=timing]');
+    // Drawn so: a STEP rise and fall a step (X only goes +, DIR has no edge), each apart from the next, but
+    // the first step's rise, where the line starts high at the plot's edge, and the current one's, under the cursor.
+    const edges = await xEdges(page, 'timing-nine-times-plot', { x: plot.x - 10, width: 0 });
+    expect(edges.runs, JSON.stringify(edges)).toBeGreaterThanOrEqual(2 * (to - from) - 2);
+    expect(edges.nearestPx, JSON.stringify(edges)).toBeGreaterThanOrEqual(3);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

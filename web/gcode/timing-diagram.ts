@@ -26,6 +26,8 @@
  * dwell, to the program's end) are drawn so too, and so is the edge where
  * a much faster move starts, where the window is cut as well (the steps
  * past it ten times faster than the current step's), labelled so.
+ * Beside a move less than that faster, the window holds fewer steps where
+ * it must, so that the narrowest gap it draws stays half a tick wide.
  */
 import uPlot from 'uplot';
 import { StepChart, type XBreak } from '../charts/chart.js';

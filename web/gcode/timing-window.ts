@@ -12,7 +12,11 @@
  * last step is a pause at the window's end too, to the program's end. The
  * steps of a much faster move are pressed the same way beside slow ones
  * (drawn at the slow steps' spacing, a fast move's steps were a bar at the
- * window's edge): the window is cut where they start, as at a pause.
+ * window's edge): the window is cut where they start, as at a pause. A move
+ * less than that faster (3 to 9 times) is drawn beside the slow one, in a
+ * window of fewer steps where the counted one would draw a gap under half a
+ * tick (NARROWEST_GAP_TICKS): the most steps around the current one that
+ * leave each pulse apart from the next.
  */
 import { drawnFromZero, LONE_STEP_SECONDS } from './pulse-edges.js';
 
@@ -26,6 +30,19 @@ import { drawnFromZero, LONE_STEP_SECONDS } from './pulse-edges.js';
  * tick apart.
  */
 export const PAUSE_FACTOR = 10;
+
+/**
+ * The narrowest gap between two steps drawn, in ticks of the panel (the
+ * diagram's TICK_PX each): a STEP pulse is drawn half its gap wide, so half
+ * a tick leaves its rise and fall 3.5 px apart; where a move 3 to 9 times
+ * faster came beside a slow one's steps (under PAUSE_FACTOR, no cut) its
+ * pulses were a third to a tenth of a tick apart, a bar. A window of steps
+ * speeding up from rest, whose gaps shrink as 1/√k (s = ½at²), spans about
+ * twice its count in its last gap, so it stays whole at half a tick; one
+ * across a stop, slowing to rest and speeding up again, gives up a few
+ * steps (at most 8 of 90 in the sample programs at 80 steps/mm).
+ */
+const NARROWEST_GAP_TICKS = 0.5;
 
 /** Steps each side of a step whose gaps, with its own, have the median that is the steps' own spacing there (one long gap among them does not move it). */
 const SPACING_GAPS = 4;
@@ -115,6 +132,34 @@ export function stepWindow(pointIndex: number, ticks: number, steps: number, fir
   // The steps cut off on one side are taken on the other.
   if (toStep < counted.toStep) fromStep = Math.max(lo, toStep - ticks);
   else if (fromStep > counted.fromStep) toStep = Math.min(hi + 1, fromStep + ticks);
+  // Where that window presses its narrowest gap under NARROWEST_GAP_TICKS of a tick (a move some
+  // times faster than the one beside it, under PAUSE_FACTOR), another between the same cuts is drawn:
+  // of the windows that are readable, one that holds its step (windowHolds: it is not fetched again
+  // at once, nor its step drawn at an edge past which there are steps not shown), then the one of
+  // most steps, then the one whose step is nearest a third in, as the counted window's.
+  if (!readable(at, fromStep, toStep, ticks)) {
+    const wantBefore = c - counted.fromStep;
+    const margin = edgeMargin(ticks);
+    let best: { holds: boolean; steps: number; offThird: number } | null = null;
+    for (let from = Math.max(lo, c - ticks + 1); from <= c; from++) {
+      // Steps from..to - 1, the narrowest gap between them and the last gap, one step more at a time.
+      let narrowestSeconds = Number.POSITIVE_INFINITY;
+      for (let to = from + 1; to <= Math.min(hi + 1, from + ticks); to++) {
+        const lastGap = to - from > 1 ? at(to - 1) - at(to - 2) : 0;
+        if (lastGap > 0) narrowestSeconds = Math.min(narrowestSeconds, lastGap);
+        if (to <= c || !fits(at(to - 1) - at(from) + lastGap, narrowestSeconds, ticks)) continue;
+        const candidate = {
+          holds: (c - from >= margin || from === lo) && (to - 1 - c >= margin || to === hi + 1),
+          steps: to - from,
+          offThird: Math.abs(c - from - wantBefore),
+        };
+        const better =
+          !best ||
+          (candidate.holds !== best.holds ? candidate.holds : candidate.steps !== best.steps ? candidate.steps > best.steps : candidate.offThird < best.offThird);
+        if (better) [best, fromStep, toStep] = [candidate, from, to];
+      }
+    }
+  }
   const drawn = times.subarray(fromStep - firstStep, toStep - firstStep);
   let pauseBefore: Pause | null = null;
   if (fromStep > 0 && cutAt(fromStep - 1, -1)) pauseBefore = cut(fromStep - 1);
@@ -148,13 +193,43 @@ function spacingAround(times: Float64Array, i: number): number {
 }
 
 /**
+ * Whether steps fromStep..toStep at instants `at(k)` (seconds), drawn over
+ * `ticks` ticks, leave their narrowest gap at least NARROWEST_GAP_TICKS of
+ * a tick (fits). Gaps of 0 (steps at one instant, drawn as one) do not count.
+ */
+function readable(at: (k: number) => number, fromStep: number, toStep: number, ticks: number): boolean {
+  let narrowestSeconds = Number.POSITIVE_INFINITY;
+  for (let k = fromStep; k + 1 < toStep; k++) {
+    const gap = at(k + 1) - at(k);
+    if (gap > 0) narrowestSeconds = Math.min(narrowestSeconds, gap);
+  }
+  const lastGap = toStep - fromStep > 1 ? at(toStep - 1) - at(toStep - 2) : 0;
+  return fits(at(toStep - 1) - at(fromStep) + lastGap, narrowestSeconds, ticks);
+}
+
+/**
+ * Whether steps spanning `spanSeconds` as drawn (first to last step and the
+ * last gap again, pulseEdges' right edge) over `ticks` ticks leave a gap
+ * of `narrowestSeconds` at least NARROWEST_GAP_TICKS of a tick (none for
+ * steps with no gap between them).
+ */
+function fits(spanSeconds: number, narrowestSeconds: number, ticks: number): boolean {
+  return spanSeconds * NARROWEST_GAP_TICKS <= ticks * narrowestSeconds;
+}
+
+/** Steps a window keeps between its current step and an edge past which there are steps to show: an eighth of it. */
+function edgeMargin(ticks: number): number {
+  return Math.floor(ticks / 8);
+}
+
+/**
  * Whether the window drawn still serves point `pointIndex`, without a new
  * one: its step is in it, and not within an eighth of the window of an edge
  * past which there are steps to show (a pause's edge, or the program's, has
  * none). A trace's window, counted in ticks, follows the point itself.
  */
 export function windowHolds(window: StepWindow, pointIndex: number, ticks: number, steps: number, timed: boolean): boolean {
-  const margin = Math.floor(ticks / 8);
+  const margin = edgeMargin(ticks);
   const { fromStep, toStep } = window;
   if (!timed) return pointIndex >= fromStep + margin && pointIndex <= fromStep + ticks - margin;
   const c = currentStep(pointIndex, steps);
