@@ -100,8 +100,8 @@ describe('the timing diagram window', () => {
     // both moves at a scale where the fast pulses were a third to a ninth of a tick apart, pressed into
     // a bar (2 px at the page's 14 px a tick). Now no window draws a gap under half a tick: where the
     // counted one would, the window holds fewer steps, the most that leave each pulse apart.
-    async function program(r: number) {
-      const p = await runGcode(`G1 X1 F60\nG1 X2 F${60 * r}\n`, { stepsPerMm: 80, acceleration: 10000, maxRate: 6000 });
+    async function program(r: number, stepsPerMm = 80) {
+      const p = await runGcode(`G1 X1 F60\nG1 X2 F${60 * r}\n`, { stepsPerMm, acceleration: 10000, maxRate: 6000 });
       const all = p.stepTimes(0, p.trace.steps);
       p.free();
       return all;
@@ -143,6 +143,10 @@ describe('the timing diagram window', () => {
       // At the slow move's last step: its steps up to the cut, the faster steps past it.
       expect(windowFor(80, all)).toEqual({ fromStep: 20, toStep: 80, pauseBefore: null, pauseAfter: { fromSeconds: all[79], toSeconds: all[80], faster: true } });
       for (let p = 0; p <= 160; p++) expect(narrowestTicks(all, windowFor(p, all)), `point ${p}`).toBeGreaterThanOrEqual(0.5);
+      // At 160 steps/mm the fast steps' spacing rounds a little over a tenth of the slow ones' (the window
+      // was not cut there, but drew steps 152..207 of both): ten times is ten times, to a rounding.
+      const fine = await program(10, 160);
+      expect(windowFor(160, fine)).toEqual({ fromStep: 100, toStep: 160, pauseBefore: null, pauseAfter: { fromSeconds: fine[159], toSeconds: fine[160], faster: true } });
     });
   });
 

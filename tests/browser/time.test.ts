@@ -308,7 +308,7 @@ describe('G-code mode: time', () => {
     // The window ends at the slow move's last step, the edge marked as a pause's is, with the time to the next step.
     const pauseBox = timing.locator('.chart-break');
     await expect.poll(() => pauseBox.innerText()).toBe('faster steps\nnext step\n+4.099 ms');
-    expect(await pauseBox.getAttribute('title')).toBe("a faster move, its steps over 10 times as fast as the current step's: the next step comes 4.099 ms after the last one drawn (not to scale)");
+    expect(await pauseBox.getAttribute('title')).toBe("a faster move, its steps at least 10 times as fast as the current step's: the next step comes 4.099 ms after the last one drawn (not to scale)");
     expect(await timing.getAttribute('data-to-step')).toBe('80');
     const plot = (await timing.locator('.u-over').boundingBox())!;
     const box = (await pauseBox.boundingBox())!;

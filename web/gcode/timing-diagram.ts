@@ -25,7 +25,7 @@
  * The wait before the program's first step and after its last (a closing
  * dwell, to the program's end) are drawn so too, and so is the edge where
  * a much faster move starts, where the window is cut as well (the steps
- * past it ten times faster than the current step's), labelled so.
+ * past it ten times faster than the current step's, or more), labelled so.
  * Beside a move less than that faster, the window holds fewer steps where
  * it must, so that the narrowest gap it draws stays half a tick wide.
  */
@@ -105,7 +105,7 @@ function pauseLabel({ pause, dwellSeconds, programEdge }: EdgePause, side: 'befo
   const title = pause.faster ? 'faster steps' : dwellSeconds > 0 ? `dwell ${dwellText(dwellSeconds)}` : 'pause';
   const gap = formatSeconds(pause.toSeconds - pause.fromSeconds);
   const kind = pause.faster
-    ? `a faster move, its steps over ${PAUSE_FACTOR} times as fast as the current step's`
+    ? `a faster move, its steps at least ${PAUSE_FACTOR} times as fast as the current step's`
     : dwellSeconds > 0
       ? `a pause with a G4 dwell of ${dwellText(dwellSeconds)} in it`
       : 'a pause';

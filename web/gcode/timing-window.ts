@@ -51,7 +51,7 @@ const SPACING_GAPS = 4;
 export interface Pause {
   fromSeconds: number;
   toSeconds: number;
-  /** Set when the gap is no pause but where the steps past it start to come PAUSE_FACTOR times faster than the current step's: the window is cut there all the same. */
+  /** Set when the gap is no pause but where the steps past it start to come PAUSE_FACTOR times faster than the current step's, or more: the window is cut there all the same. */
   faster?: true;
 }
 
@@ -115,11 +115,13 @@ export function stepWindow(pointIndex: number, ticks: number, steps: number, fir
   const pauseAt = (k: number) => gapAt(k) > PAUSE_FACTOR * spacingSeconds;
   // A faster move past the gap after step k, on side `side` of it (+1 after, -1 before): the spacing of
   // the steps past it (spacingAround the (SPACING_GAPS + 1)th) PAUSE_FACTOR times shorter than the current
-  // step's, and the gap itself under half of it, the change under way there. A single gap that short
-  // comes after the first steps of a move speeding up from the slow one's speed, which the window
-  // would have kept, pressed, at its edge.
+  // step's or more (to a rounding: F60 then F600 is ten times faster, whichever way its instants round),
+  // and the gap itself under half of it, the change under way there. A single gap that short comes after
+  // the first steps of a move speeding up from the slow one's speed, which the window would have kept,
+  // pressed, at its edge.
   const fasterAt = (k: number, side: 1 | -1) =>
-    gapAt(k) < spacingSeconds / 2 && spacingAround(times, (side > 0 ? k + 1 + SPACING_GAPS : k - SPACING_GAPS) - firstStep) < spacingSeconds / PAUSE_FACTOR;
+    gapAt(k) < spacingSeconds / 2 &&
+    PAUSE_FACTOR * spacingAround(times, (side > 0 ? k + 1 + SPACING_GAPS : k - SPACING_GAPS) - firstStep) <= spacingSeconds * (1 + 1e-9);
   const cutAt = (k: number, side: 1 | -1) => pauseAt(k) || fasterAt(k, side);
   const cut = (k: number): Pause => (pauseAt(k) ? { fromSeconds: at(k), toSeconds: at(k + 1) } : { fromSeconds: at(k), toSeconds: at(k + 1), faster: true });
   // The cuts nearest the current step: the window stays between them.
