@@ -9,7 +9,7 @@ import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { catalogue, trace } from '../../web/core/index.js';
 import { PALETTE } from '../../web/scene/palette.js';
-import { canvasPng, closeAll, openPage, screenshot } from './harness.js';
+import { canvasPng, closeAll, jumpTo, openPage, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -574,8 +574,7 @@ describe("a G-code step's decision", () => {
     const { algorithms } = await catalogue();
     const columnsOf = (id: string) => algorithms.find((a) => a.id === id)!.columns.map((c) => c.name);
     await expect.poll(shown).toEqual(columnsOf('regions'));
-    await page.getByTestId('jump-input').fill('6');
-    await page.getByTestId('jump-input').press('Enter');
+    await jumpTo(page, 6);
     await expect.poll(shown).toEqual(columnsOf('circle'));
     expect(p.problems()).toEqual([]);
     await p.close();

@@ -13,7 +13,7 @@ import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { randomLines, trace } from '../../web/core/index.js';
 import { AXIS_COLOURS } from '../../web/scene/palette.js';
-import { closeAll, openPage, screenshot } from './harness.js';
+import { closeAll, jumpTo, openPage, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -615,8 +615,7 @@ describe('G-code mode', () => {
     const p = await openPage('?mode=gcode&stepsPerMm=80');
     const { page } = p;
     await steps(page, 6400);
-    await page.getByTestId('jump-input').fill('2000');
-    await page.getByTestId('jump-input').press('Enter');
+    await jumpTo(page, 2000);
     await expect.poll(() => page.getByTestId('gcode-current-line').getAttribute('data-line')).toBe('5');
     await page.getByTestId('moves-table').locator('tr.current').filter({ hasText: 'G1' }).waitFor();
 
@@ -712,8 +711,7 @@ describe('G-code mode', () => {
     await inspected(page);
     const figure = page.getByTestId('decision-figure');
     await expect.poll(() => figure.locator('.face-region.chosen').count()).toBe(1);
-    await page.getByTestId('jump-input').fill('6');
-    await page.getByTestId('jump-input').press('Enter');
+    await jumpTo(page, 6);
     await expect.poll(() => figure.locator('.bar-label').allTextContents()).toEqual(['stay', 'move']);
     expect(await figure.locator('.bar-value').allTextContents()).toEqual(['4', '1 (taken)']);
     expect(await figure.locator('.face-region').count()).toBe(0);

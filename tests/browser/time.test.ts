@@ -91,8 +91,7 @@ describe('G-code mode: time', () => {
     await page.getByTestId('timing').getByText(/planned instant, ms/).waitFor();
 
     // Step 800 of the first side: 10 mm in, cruising: t = t_a + (10 − s_a)/v.
-    await page.getByTestId('jump-input').fill('800');
-    await page.getByTestId('jump-input').press('Enter');
+    await jumpTo(page, 800);
     const at800 = TOP / A + (10 - (0.5 * TOP * TOP) / A) / TOP;
     await expect.poll(async () => Number(await page.getByTestId('step-instant').getAttribute('data-seconds'))).toBeCloseTo(at800, 9);
     const charts = await screenshot(page, 'gcode-time-charts', '[data-testid=motion]');
@@ -260,8 +259,7 @@ describe('G-code mode: time', () => {
     await timing.getByText(/planned instant, ms/).waitFor();
     await screenshot(page, 'timing-closing-dwell', '[data-testid=timing]');
     // Far from the end, no pause.
-    await page.getByTestId('jump-input').fill('40');
-    await page.getByTestId('jump-input').press('Enter');
+    await jumpTo(page, 40);
     await expect.poll(() => pauseBox.count()).toBe(0);
     expect(p.problems()).toEqual([]);
     await p.close();
