@@ -29,6 +29,7 @@ import {
 import { GCODE_URL_LIMIT, type LinkNotes, STATE_KEYS, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
 import { carriedOptions } from '../web/form/algorithm-inputs.js';
 import { readPerAxis } from '../web/form/options-form.js';
+import { otherTabEdits, otherTabNote } from '../web/state/persist.js';
 
 let catalogue: Catalogue;
 const url = { gcodeLimit: GCODE_URL_LIMIT };
@@ -395,5 +396,54 @@ describe('axes and options of one or two algorithms', () => {
     const options = carriedOptions([info('regions'), info('greedy')], { from: [1, 2, 3], to: [9, 8, 7], tie: 'hold' }, true);
     expect(options).toEqual({ from: [1, 2, 3], to: [9, 8, 7], tie: 'hold' });
     expect(carriedOptions([info('greedy')], { from: [1, 2, 3] }, false)).toEqual({ from: [0, 0], to: [8, 3] });
+  });
+});
+
+describe("another tab's write (persist.ts)", () => {
+  /** Every mode's input as storage's parts keep it, read back as a reload reads it. */
+  const stored = (state: AppState): AppState => {
+    const read = (mode: AppState['mode']) => stateFromQuery(stateToQuery({ ...state, mode }, url), catalogue)!;
+    return { ...read('trace'), other: read('compare').other, layout: read('compare').layout, gcode: state.gcode, replacedProgram: state.replacedProgram, replacedBy: state.replacedBy, machine: read('gcode').machine, slowdown: read('gcode').slowdown, experiment: read('experiment').experiment };
+  };
+  const typed = 'G21 G90\nG1 X3 Y4 F600\n';
+
+  it('follows what only the other tab changed, and nothing it wrote again unchanged (read anew, each object is another)', () => {
+    const written = first();
+    const seen = stored(written);
+    const theirs = stored({ ...written, options: { ...written.options, to: [12, 7, 6] }, gcode: typed, machine: { ...written.machine, stepsPerMm: 40 } });
+    const edits = otherTabEdits(seen, theirs, written, written);
+    expect(edits.followed).toEqual({ options: theirs.options, gcode: typed, machine: theirs.machine });
+    expect(edits.followed.options).toBe(theirs.options);
+    expect([edits.both, edits.kept]).toEqual([[], {}]);
+    expect(otherTabNote(edits)).toBe('Another tab changed the move, the program and the machine: shown here as there.');
+    // Storage read again as written, each value another object: nothing is followed, nothing said.
+    const again = otherTabEdits(seen, stored(written), written, written);
+    expect(again).toEqual({ followed: {}, both: [], kept: {} });
+    expect(otherTabNote(again)).toBe('');
+  });
+
+  it("keeps this tab's edit of an input the other tab changed too, and the other's program, written over, to bring back", () => {
+    const written = first();
+    const seen = stored(written);
+    const mine = { ...written, gcode: 'G21\nG1 X1 F600\n', learnerPoints: '0,0,0\n1,1,1', options: { ...written.options, to: [9, 7, 6] } };
+    const theirs = stored({ ...written, gcode: typed, learnerPoints: '0,0,0\n1,0,0', options: { ...written.options, to: [12, 7, 6] }, layout: 'side' });
+    const edits = otherTabEdits(seen, theirs, written, mine);
+    expect(edits.followed).toEqual({ layout: 'side' });
+    expect(edits.both).toEqual(['options', 'learnerPoints', 'gcode']);
+    expect(edits.kept).toEqual({ replacedProgram: typed, replacedBy: "another tab's program, typed at the same time" });
+    expect(otherTabNote(edits)).toBe(
+      "Another tab changed the layout: shown here as there. Another tab changed the move, your points and the program at the same time as this one: this tab's are kept (a reload shows them). The other tab's program is offered back beside the editor.",
+    );
+    // The same text typed in both is no clash; the default program, put back there, is not kept.
+    expect(otherTabEdits(seen, stored({ ...written, gcode: mine.gcode }), written, mine).followed).toEqual({ gcode: mine.gcode });
+    const reset = otherTabEdits(stored({ ...written, gcode: typed }), stored(written), { ...written, gcode: typed }, mine);
+    expect([reset.both, reset.kept]).toEqual([['gcode'], {}]);
+  });
+
+  it('keeps a move with a text refused here (a draft: the state holds the last valid move) rather than follow the other tab', () => {
+    const written = first();
+    const theirs = stored({ ...written, options: { ...written.options, to: [10, 8, 6] } });
+    expect(otherTabEdits(stored(written), theirs, written, written, new Set(['options'])).both).toEqual(['options']);
+    expect(otherTabEdits(stored(written), theirs, written, written, new Set(['machine'])).followed).toEqual({ options: theirs.options });
   });
 });

@@ -21,3 +21,8 @@ export function sentence(text: string): string {
 export function clause(text: string): string {
   return text.replace(/\.$/, '');
 }
+
+/** Items as a sentence lists them: "a", "a and b", "a, b and c". */
+export function listed(items: readonly string[]): string {
+  return items.length < 2 ? items.join('') : `${items.slice(0, -1).join(', ')} and ${items.at(-1)}`;
+}

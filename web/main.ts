@@ -79,11 +79,18 @@ function run(catalogue: Catalogue): void {
   };
   showLinkNote();
   const storageNote = byId('storage-note', HTMLParagraphElement);
-  persistState(store, catalogue, (kept) => {
-    storageNote.hidden = kept;
-    storageNote.textContent = kept
-      ? ''
-      : "Too large for the browser's storage (a few MB): the program, your points, or the replaced program offered back will not come back after a reload or on a new visit, which open on the sample program (or without the points, or the offer). Save the text as a file to keep it.";
+  const tabsNote = byId('tabs-note', HTMLParagraphElement);
+  persistState(store, catalogue, {
+    onKept: (kept) => {
+      storageNote.hidden = kept;
+      storageNote.textContent = kept
+        ? ''
+        : "Too large for the browser's storage (a few MB): the program, your points, or the replaced program offered back will not come back after a reload or on a new visit, which open on the sample program (or without the points, or the offer). Save the text as a file to keep it.";
+    },
+    onOtherTab: (note) => {
+      tabsNote.hidden = note === '';
+      tabsNote.textContent = note;
+    },
   });
   document.body.classList.toggle('embed', store.state.embed);
   embedding(store, catalogue, {

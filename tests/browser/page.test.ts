@@ -455,6 +455,76 @@ describe('the page', () => {
     await a.close();
   });
 
+  it("offers back a program typed in one tab that another tab's, typed at the same time, replaced: in both tabs and over reloads", async () => {
+    const a = await openPage('?mode=gcode');
+    await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const b = await a.context.newPage();
+    // B hears of A's write only when it writes itself (its storage events
+    // held): it types before A's write reaches it, as a tab does within
+    // A's write delay (400 ms), or while busy.
+    await b.addInitScript(() => {
+      window.addEventListener('storage', (event) => event.stopImmediatePropagation(), { capture: true });
+    });
+    await b.goto(`${siteUrl()}?mode=gcode`);
+    await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const programA = 'G21 G90\nG1 X3 Y4 F600\nG1 X7\n';
+    const programB = 'G21 G90\nG1 X5 Y1 F600\nG1 Y6\nG1 X0\n';
+    await a.page.getByTestId('gcode-text').fill(programA);
+    await a.page.waitForURL(/X3/);
+    await b.getByTestId('gcode-text').fill(programB);
+    // B keeps its program, and A's, which it writes over, to bring back; A
+    // follows B's write, and offers its own program back.
+    const offer = "Your program (3 lines) was replaced by another tab's program, typed at the same time.";
+    await b.getByTestId('gcode-replaced').filter({ hasText: offer }).waitFor();
+    expect(await b.getByTestId('tabs-note').innerText()).toBe(
+      "Another tab changed the program at the same time as this one: this tab's is kept (a reload shows it). The other tab's program is offered back beside the editor.",
+    );
+    await expect.poll(() => a.page.getByTestId('gcode-text').inputValue()).toBe(programB);
+    await a.page.getByTestId('gcode-replaced').filter({ hasText: offer }).waitFor();
+    for (const page of [a.page, b]) {
+      await page.reload();
+      await page.getByTestId('trace-status').filter({ hasText: '4 lines, 3 moves' }).waitFor();
+      await page.getByTestId('gcode-replaced').filter({ hasText: offer }).waitFor();
+    }
+    await a.page.getByTestId('gcode-bring-back').click();
+    await a.page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    await a.page.reload();
+    await a.page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
+    expect(await a.page.getByTestId('gcode-text').inputValue()).toBe(programA);
+    expect(await a.page.getByTestId('gcode-replaced').isHidden()).toBe(true);
+    expect([...a.problems()]).toEqual([]);
+    await a.close();
+  });
+
+  it('shows, as it is typed there, an input another tab changes that this tab left alone: the move and the points, without writing them back', async () => {
+    const a = await openPage(EXAMPLE);
+    await traced(a.page, 10);
+    const b = await a.context.newPage();
+    await b.goto(`${siteUrl()}${EXAMPLE}`);
+    await traced(b, 10);
+    await a.page.getByTestId('input-to-x').fill('12');
+    await traced(a.page, 12);
+    // B's form, view and address follow, with a word.
+    await traced(b, 12);
+    expect(await b.getByTestId('input-to-x').inputValue()).toBe('12');
+    await b.waitForURL(/to=12,7,6/);
+    expect(await b.getByTestId('tabs-note').innerText()).toBe('Another tab changed the move: shown here as there.');
+    // The learner's points too: in the box, checked.
+    await a.page.getByTestId('check-points').locator('summary').click();
+    await a.page.getByTestId('learner-points').fill('0,0,0\n1,1,1\n');
+    await b.getByTestId('check-verdict').filter({ hasText: /^Your points part from regions at point \d+/ }).waitFor();
+    expect(await b.getByTestId('learner-points').inputValue()).toBe('0,0,0\n1,1,1\n');
+    // B wrote none of them back: its writes since (a step) left A's as A wrote them.
+    const edit = () => b.evaluate(() => (JSON.parse(localStorage.getItem('voxpath.state')!) as { edit: string }).edit);
+    const before = await edit();
+    await b.getByTestId('next').click();
+    await b.waitForURL(/step=1/);
+    expect(await edit()).toBe(before);
+    expect(await a.page.evaluate(() => (JSON.parse(localStorage.getItem('voxpath.state')!) as { edit: string }).edit)).toBe(before);
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
   it("keeps a refused text over a visit to another mode, with its message (the last valid value came back)", async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;

@@ -90,6 +90,14 @@ export class CheckPanel {
     field.listing.render(first, last);
   }
 
+  /** Brings the points in line with the state (another tab's, followed). */
+  render(): void {
+    const points = this.#store.state.learnerPoints;
+    if (this.#field.text === points) return;
+    this.#setText(points);
+    if (points !== '') this.#e.box.open = true;
+  }
+
   /** Nothing to show: no points, or a new rule being traced. */
   clear(): void {
     this.#e.result.replaceChildren();

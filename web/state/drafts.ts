@@ -13,7 +13,7 @@
  * typed it right, dropping the draft) took this tab's away: its text, typed
  * and refused, came back on reload as the last valid value.
  */
-import { storage, tabStorage } from './persist.js';
+import { storage, tabStorage } from './storage-areas.js';
 
 const KEY = 'voxpath-drafts';
 
@@ -76,4 +76,13 @@ export function restoredDraft(id: string, value: unknown): string[] | undefined 
   if (draft && draft.value === JSON.stringify(value ?? null) && Array.isArray(draft.texts)) return draft.texts;
   dropDraft(id);
   return undefined;
+}
+
+/**
+ * Whether this tab holds a text typed and refused in a field whose id
+ * starts with `prefix` (a form's): an input being edited here, which the
+ * state does not show.
+ */
+export function draftedHere(prefix: string): boolean {
+  return Object.keys(read(tabStorage())).some((id) => id.startsWith(prefix));
 }

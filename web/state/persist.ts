@@ -3,7 +3,10 @@
  * query format of state/query.ts, so nothing a user typed is lost on reload.
  * On load a URL describing a state wins over localStorage.
  */
+import { listed } from '../format.js';
 import { type AppState, type Catalogue, comparableWith, DEFAULT_GCODE, defaultAlgorithm, defaultState, MODES, programReplaced } from './app-state.js';
+import { draftedHere } from './drafts.js';
+import { storage, tabStorage } from './storage-areas.js';
 import { GCODE_URL_LIMIT, type LinkNotes, stateFromQuery, stateToQuery } from './query.js';
 import type { Store } from './store.js';
 
@@ -41,15 +44,6 @@ const REPLACED_BY_PARAM = 'replacedBy';
  */
 const WRITE_DELAY_MS = 400;
 
-/** localStorage, or undefined where it is blocked (some privacy settings throw on access). */
-export function storage(): Storage | undefined {
-  try {
-    return window.localStorage;
-  } catch {
-    return undefined;
-  }
-}
-
 /**
  * The state to start from: the URL's, else the last visit's, else the
  * defaults. The parts of the page the URL does not describe (another mode's
@@ -73,15 +67,6 @@ export function loadState(catalogue: Catalogue, notes?: LinkNotes): AppState {
 
 /** Where the last page of this tab said a reload should have gone (sessionStorage: this tab's only). */
 const RELOAD_KEY = 'voxpath.reload';
-
-/** This tab's sessionStorage, or undefined where it is blocked. */
-export function tabStorage(): Storage | undefined {
-  try {
-    return window.sessionStorage;
-  } catch {
-    return undefined;
-  }
-}
 
 /**
  * The address's query, as the page last wrote it before a reload. A reload
@@ -123,7 +108,18 @@ interface StoredParts {
   compare: string;
   gcode: string;
   experiment: string;
+  /**
+   * Which write last changed an input (EDIT_STAMP and a count), so that
+   * another tab follows (followOtherTabs) only a write that changed one, and
+   * hears of a long text's edit: its pieces are written apart, before this
+   * key, whose parts do not change with them.
+   */
+  edit?: string;
 }
+
+/** This page's part of each StoredParts.edit it writes (the rest counts its writes): tells its writes from another tab's. */
+const EDIT_STAMP = Math.random().toString(36).slice(2);
+let editsWritten = 0;
 
 function storedParts(state: AppState): StoredParts {
   const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: GCODE_URL_LIMIT });
@@ -164,8 +160,21 @@ const PART_INPUTS: Record<AppState['mode'], readonly (keyof AppState)[]> = {
   experiment: ['experiment'],
 };
 
-/** The state this tab last wrote (undefined before its first write). */
+/** Every input storage keeps: what a tab writes when it changed it, and follows when another tab did. */
+const INPUTS = MODES.flatMap((mode) => PART_INPUTS[mode]);
+
+/**
+ * The state this tab last wrote (undefined before its first write), with
+ * the inputs it followed since from another tab: an input of the state
+ * that is not this one's is an edit of this tab's.
+ */
 let lastWritten: AppState | undefined;
+
+/** The inputs as storage held them when this tab last wrote or followed them, read as a reload reads them: what another tab's write is told from. */
+let storedSeen: AppState | undefined;
+
+/** The StoredParts.edit of storedSeen. */
+let editSeen: string | undefined;
 
 /**
  * The inputs (of PART_INPUTS) this tab changed since it last wrote (every
@@ -173,7 +182,8 @@ let lastWritten: AppState | undefined;
  * mode's part as it held it, so a program typed in one tab was replaced by
  * another tab's old one as soon as that tab changed anything (a step, a
  * point), and lost at the next reload of the first tab outside G-code mode.
- * An input changed in both tabs keeps the last writer's.
+ * An input another tab changed is followed, or, changed in both, said
+ * (followOtherTabs).
  */
 function changedInputs(state: AppState): Set<keyof AppState> {
   const last = lastWritten;
@@ -194,19 +204,13 @@ function withParamOf(query: string, key: string, from: string): string {
  * it wrote them since): a part of which this tab changed nothing is kept
  * whole; one of which it changed only a long text, or all but it, takes
  * that text's parameter from the other (a program too long for the part has
- * none: it is in its keys).
+ * none: it is in its keys). Its edit is `edit`, else the stored one.
  */
-function partsToStore(parts: StoredParts, changed: Set<keyof AppState>, store: Storage): StoredParts {
-  let stored: unknown;
-  try {
-    stored = JSON.parse(store.getItem(STORAGE_KEY) ?? 'null');
-  } catch {
-    return parts;
-  }
-  if (typeof stored !== 'object' || stored === null) return parts;
-  const merged = { ...parts };
+function partsToStore(parts: StoredParts, changed: Set<keyof AppState>, edit: string | undefined, stored: Partial<StoredParts> | undefined): StoredParts {
+  if (!stored) return { ...parts, edit };
+  const merged = { ...parts, edit: edit ?? stored.edit };
   for (const mode of MODES) {
-    const theirs = (stored as Partial<StoredParts>)[mode];
+    const theirs = stored[mode];
     if (typeof theirs !== 'string') continue;
     const texts = (Object.keys(LONG_TEXT_MODES) as LongText[]).filter((field) => LONG_TEXT_MODES[field] === mode);
     const restChanged = PART_INPUTS[mode].some((key) => !(texts as (keyof AppState)[]).includes(key) && changed.has(key));
@@ -223,30 +227,51 @@ function partsToStore(parts: StoredParts, changed: Set<keyof AppState>, store: S
  */
 function storedState(catalogue: Catalogue): AppState | undefined {
   const text = storage()?.getItem(STORAGE_KEY) ?? '';
-  let parts: Partial<StoredParts>;
+  const parts = partsOf(text);
+  if (!parts) return stateFromQuery(text, catalogue);
+  const read = readParts(catalogue, parts);
+  return read?.typed ? withOtherModes(catalogue, read.shown, new URLSearchParams(parts.shown), read.typed) : read?.shown;
+}
+
+/** The parts stored as `text`; undefined when it is not theirs (a visit from before them stored one permalink). */
+function partsOf(text: string): Partial<StoredParts> | undefined {
   try {
-    parts = JSON.parse(text) as Partial<StoredParts>;
+    const parts: unknown = JSON.parse(text);
+    return typeof parts === 'object' && parts !== null ? (parts as Partial<StoredParts>) : undefined;
   } catch {
-    return stateFromQuery(text, catalogue);
+    return undefined;
   }
+}
+
+/**
+ * The state shown of `parts`, and every mode's input as its part keeps it
+ * (a long text kept apart as `longText` gives it); no input when a part
+ * is missing or unreadable (a visit from before a part).
+ */
+function readParts(
+  catalogue: Catalogue,
+  parts: Partial<StoredParts>,
+  longText: (field: LongText, query: string) => string | undefined = storedLongText,
+): { shown: AppState; typed: AppState | undefined } | undefined {
   const read = (query: unknown) => (typeof query === 'string' ? stateFromQuery(query, catalogue) : undefined);
   const shown = read(parts.shown);
   const [trace, compare, gcode, experiment] = [read(parts.trace), read(parts.compare), read(parts.gcode), read(parts.experiment)];
-  if (!shown || !trace || !compare || !gcode || !experiment) return shown;
+  if (!shown) return undefined;
+  if (!trace || !compare || !gcode || !experiment) return { shown, typed: undefined };
   const gcodeParams = new URLSearchParams(parts.gcode);
   const typed: AppState = {
     ...trace,
     other: compare.other,
     layout: compare.layout,
-    gcode: storedLongText('gcode', parts.gcode!) ?? gcode.gcode,
-    replacedProgram: storedLongText('replacedProgram', parts.gcode!) ?? gcodeParams.get(LONG_TEXT_PARAMS.replacedProgram) ?? '',
+    gcode: longText('gcode', parts.gcode!) ?? gcode.gcode,
+    replacedProgram: longText('replacedProgram', parts.gcode!) ?? gcodeParams.get(LONG_TEXT_PARAMS.replacedProgram) ?? '',
     replacedBy: gcodeParams.get(REPLACED_BY_PARAM) ?? '',
     machine: gcode.machine,
     slowdown: gcode.slowdown,
     experiment: experiment.experiment,
-    learnerPoints: storedLongText('learnerPoints', parts.trace!) ?? trace.learnerPoints,
+    learnerPoints: longText('learnerPoints', parts.trace!) ?? trace.learnerPoints,
   };
-  return withOtherModes(catalogue, shown, new URLSearchParams(parts.shown), typed);
+  return { shown, typed };
 }
 
 /**
@@ -334,7 +359,14 @@ const longTextsWritten = new Map<LongText, { text: string; pieces: string[]; kep
 /** Told whether the program and the points as they are now are kept in storage (persistState's `onKept`). */
 let reportKept: (kept: boolean) => void = () => {};
 
-function write(state: AppState): void {
+/** The page's state and what it is told of another tab's edits (persistState's), for followOtherTabs. */
+let tab: { store: Store<AppState>; catalogue: Catalogue; onOtherTab: (note: string) => void } | undefined;
+
+function write(given: AppState): void {
+  // Another tab's edits first, so that this write neither undoes them nor,
+  // where this tab edited the same input, erases them unsaid.
+  followOtherTabs();
+  const state = tab?.store.state ?? given;
   // Replaced only when it changes (typing in a program or points too long
   // for it does not change it): with 200,000 points pasted in Check points,
   // each replacement took 30 to 70 ms of the main thread (once 0.6 s) in
@@ -354,8 +386,16 @@ function write(state: AppState): void {
   let kept = (Object.keys(LONG_TEXT_KEYS) as LongText[])
     .map((field) => (changed.has(field) ? writeLongText(store, field, state[field]) : (longTextsWritten.get(field)?.kept ?? true)))
     .every(Boolean);
+  const edit = changed.size > 0 ? `${EDIT_STAMP}.${++editsWritten}` : undefined;
+  const parts = partsToStore(storedParts(state), changed, edit, partsOf(store.getItem(STORAGE_KEY) ?? ''));
   try {
-    store.setItem(STORAGE_KEY, JSON.stringify(partsToStore(storedParts(state), changed, store)));
+    store.setItem(STORAGE_KEY, JSON.stringify(parts));
+    if (edit && tab) {
+      editSeen = edit;
+      // The long texts as written (this tab's) or as last read (another's): not read back.
+      const text = (field: LongText, query: string) => (new URLSearchParams(query).has(LONG_TEXT_PARAMS[field]) ? undefined : changed.has(field) ? state[field] : storedSeen?.[field]);
+      storedSeen = readParts(tab.catalogue, parts, text)?.typed;
+    }
   } catch {
     // Storage blocked or full: the URL still holds the state, and the page
     // says what a reload loses.
@@ -399,6 +439,114 @@ function writeLongText(store: Storage, field: LongText, text: string): boolean {
 }
 
 /**
+ * What replaced a program of this tab's that another tab changed at the
+ * same time, as the offer to bring it back says ("Your program (3 lines)
+ * was replaced by ..."): written over, it is offered there too.
+ */
+const ANOTHER_TABS_PROGRAM = "another tab's program, typed at the same time";
+
+/** Whether two values of an input are the same (an object's keys in any order). */
+function sameInput(a: unknown, b: unknown): boolean {
+  if (a === b) return true;
+  if (typeof a !== 'object' || typeof b !== 'object' || a === null || b === null) return false;
+  const keys = Object.keys(a);
+  return keys.length === Object.keys(b).length && keys.every((key) => sameInput((a as Record<string, unknown>)[key], (b as Record<string, unknown>)[key]));
+}
+
+/** What another tab's write means to this one (otherTabEdits). */
+export interface OtherTabEdits {
+  /** The inputs another tab changed that this one had not: taken as they are stored. */
+  followed: Partial<AppState>;
+  /** The inputs both tabs changed: this tab's stays, and is written over the other's. */
+  both: (keyof AppState)[];
+  /** The program fields keeping the other tab's program, written over, to bring back (programReplaced); empty when it was not changed in both, or was the default. */
+  kept: Partial<AppState>;
+}
+
+/**
+ * What this tab takes of another tab's write: storage held `seen` when this
+ * tab last wrote or followed it, and holds `stored` now (both as a reload
+ * reads them); the state was `written` then and is `current` now. An input
+ * the other tab changed (stored unlike seen) is followed where this tab had
+ * not changed it since (current is written, and it is not of `drafted`, the
+ * inputs with a text refused here) or has the same; else both changed it,
+ * and this tab's wins (the state's, about to be written, or the draft's,
+ * over the value a reload of it shows), but the other's program is kept to
+ * bring back.
+ */
+export function otherTabEdits(seen: AppState, stored: AppState, written: AppState, current: AppState, drafted: ReadonlySet<keyof AppState> = new Set()): OtherTabEdits {
+  const followed: Partial<AppState> = {};
+  const both: (keyof AppState)[] = [];
+  for (const key of INPUTS) {
+    if (sameInput(stored[key], seen[key])) continue;
+    if ((current[key] === written[key] && !drafted.has(key)) || sameInput(current[key], stored[key])) Object.assign(followed, { [key]: stored[key] });
+    else both.push(key);
+  }
+  const replaced = both.includes('gcode') ? programReplaced({ gcode: stored.gcode, replacedProgram: '', replacedBy: '' }, current.gcode, ANOTHER_TABS_PROGRAM, stored.gcode !== DEFAULT_GCODE) : undefined;
+  const kept = replaced && replaced.replacedProgram !== '' ? { replacedProgram: replaced.replacedProgram, replacedBy: replaced.replacedBy } : {};
+  return { followed, both, kept };
+}
+
+/**
+ * The inputs whose forms keep a text typed and refused (drafts.ts), by the
+ * prefix of their fields' ids: the move's form (OptionsForm's default), the
+ * machine's (GcodePanel) and the experiment's (main.ts).
+ */
+const DRAFT_PREFIXES: Partial<Record<keyof AppState, string>> = { options: 'option-', machine: 'machine-', experiment: 'experiment-' };
+
+/** How the note names each input another tab changed; the offer of a replaced program goes with the program, unnamed. */
+const INPUT_NAMES: Partial<Record<keyof AppState, string>> = {
+  algorithm: 'the algorithm',
+  options: 'the move',
+  learnerPoints: 'your points',
+  other: 'the compared algorithm',
+  layout: 'the layout',
+  gcode: 'the program',
+  machine: 'the machine',
+  slowdown: 'the machine-time playback',
+  experiment: 'the experiment',
+};
+
+/** What the page says of another tab's edits (otherTabEdits): '' when it changed nothing this tab shows. */
+export function otherTabNote({ followed, both, kept }: OtherTabEdits): string {
+  const names = (keys: (keyof AppState)[]) => keys.flatMap((key) => INPUT_NAMES[key] ?? []);
+  const shown = names(Object.keys(followed) as (keyof AppState)[]);
+  const ours = names(both);
+  const sentences = shown.length > 0 ? [`Another tab changed ${listed(shown)}: shown here as there.`] : [];
+  if (ours.length > 0) {
+    const offered = 'replacedProgram' in kept ? " The other tab's program is offered back beside the editor." : '';
+    sentences.push(`Another tab changed ${listed(ours)} at the same time as this one: this tab's ${ours.length > 1 ? 'are kept (a reload shows them)' : 'is kept (a reload shows it)'}.${offered}`);
+  }
+  return sentences.join(' ');
+}
+
+/**
+ * Takes what another tab wrote since this tab last wrote or followed
+ * storage (its StoredParts.edit differs): the inputs this tab had not
+ * changed since are followed, the form and views updated as if typed
+ * (lastWritten too, so they are not written back); an input both changed
+ * is this tab's, said in a note, a program of the other's kept to bring
+ * back. Each tab wrote only what it changed, but the last writer of an
+ * input both changed erased the other's without a word, and a tab showed
+ * what a reload of it no longer gave.
+ */
+function followOtherTabs(): void {
+  const store = storage();
+  if (!tab || !store || !lastWritten || !storedSeen || tab.store.state.embed) return;
+  const parts = partsOf(store.getItem(STORAGE_KEY) ?? '');
+  if (!parts || parts.edit === editSeen) return;
+  const stored = readParts(tab.catalogue, parts)?.typed;
+  if (!stored) return;
+  editSeen = parts.edit;
+  const drafted = new Set((Object.keys(DRAFT_PREFIXES) as (keyof AppState)[]).filter((key) => draftedHere(DRAFT_PREFIXES[key]!)));
+  const edits = otherTabEdits(storedSeen, stored, lastWritten, tab.store.state, drafted);
+  storedSeen = stored;
+  lastWritten = { ...lastWritten, ...edits.followed };
+  tab.store.update({ ...edits.followed, ...edits.kept });
+  tab.onOtherTab(otherTabNote(edits));
+}
+
+/**
  * Makes what is shown now an entry of the browser's history, so that Back
  * comes back to it after the change that follows (an experiment's line
  * opened in Trace mode: Back left the site). Every other change replaces
@@ -415,22 +563,30 @@ export function newHistoryEntry(state: AppState): void {
  * Persists every change of `store`, throttled, and any pending change when
  * the page is hidden or closed; Back and Forward between the entries
  * newHistoryEntry made bring back their states. `onKept` is told at every
- * write whether the program and the learner's points fitted in storage.
+ * write whether the program and the learner's points fitted in storage;
+ * `onOtherTab`, what another tab's write changed here (otherTabNote).
  */
-export function persistState(store: Store<AppState>, catalogue: Catalogue, onKept: (kept: boolean) => void): void {
-  reportKept = onKept;
+export function persistState(store: Store<AppState>, catalogue: Catalogue, notes: { onKept: (kept: boolean) => void; onOtherTab: (note: string) => void }): void {
+  reportKept = notes.onKept;
+  tab = { store, catalogue, onOtherTab: notes.onOtherTab };
   let timer: ReturnType<typeof setTimeout> | undefined;
   const flush = () => {
     clearTimeout(timer);
     timer = undefined;
     write(store.state);
   };
-  // Another tab wrote a long text's keys (key null: the storage was cleared).
   window.addEventListener('storage', ({ key, storageArea }) => {
     if (storageArea !== storage()) return;
+    // Another tab wrote a long text's keys (key null: the storage was cleared).
     for (const [field, fieldKey] of Object.entries(LONG_TEXT_KEYS) as [LongText, string][]) {
       if (key === null || key === fieldKey || key.startsWith(`${fieldKey}.`)) longTextsWritten.delete(field);
     }
+    // Its parts, written after its long texts: its write is whole.
+    if (key === STORAGE_KEY) followOtherTabs();
+  });
+  // Back to a page kept in the browser's cache, which heard no other tab meanwhile.
+  window.addEventListener('pageshow', ({ persisted }) => {
+    if (persisted) followOtherTabs();
   });
   // A page hidden may be discarded without a pagehide (mobile browsers).
   document.addEventListener('visibilitychange', () => {

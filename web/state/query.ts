@@ -22,7 +22,7 @@
  */
 import { quoted, readDecimal } from '../core/guard.js';
 import type { AlgorithmInfo, OptionSpec } from '../core/types.js';
-import { AXIS_NAMES, countOf } from '../format.js';
+import { AXIS_NAMES, countOf, listed } from '../format.js';
 import {
   type AppState,
   type CameraState,
@@ -180,11 +180,6 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
   if (state.embed) pairs.push(['embed', '1']);
   if (!state.explain) pairs.push(['explain', '0']);
   return pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v).replaceAll('%2C', ',')}`).join('&');
-}
-
-/** Items as a sentence lists them: "a", "a and b", "a, b and c". */
-function listed(items: readonly string[]): string {
-  return items.length < 2 ? items.join('') : `${items.slice(0, -1).join(', ')} and ${items.at(-1)}`;
 }
 
 /**
