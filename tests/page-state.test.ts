@@ -403,7 +403,7 @@ describe("another tab's write (persist.ts)", () => {
   /** Every mode's input as storage's parts keep it, read back as a reload reads it. */
   const stored = (state: AppState): AppState => {
     const read = (mode: AppState['mode']) => stateFromQuery(stateToQuery({ ...state, mode }, url), catalogue)!;
-    return { ...read('trace'), other: read('compare').other, layout: read('compare').layout, gcode: state.gcode, replacedProgram: state.replacedProgram, replacedBy: state.replacedBy, machine: read('gcode').machine, slowdown: read('gcode').slowdown, experiment: read('experiment').experiment };
+    return { ...read('trace'), other: read('compare').other, layout: read('compare').layout, replacedPoints: state.replacedPoints, gcode: state.gcode, replacedProgram: state.replacedProgram, replacedBy: state.replacedBy, machine: read('gcode').machine, slowdown: read('gcode').slowdown, experiment: read('experiment').experiment };
   };
   const typed = 'G21 G90\nG1 X3 Y4 F600\n';
 
@@ -422,7 +422,7 @@ describe("another tab's write (persist.ts)", () => {
     expect(otherTabNote(again)).toBe('');
   });
 
-  it("keeps this tab's edit of an input the other tab changed too, and the other's program, written over, to bring back", () => {
+  it("keeps this tab's edit of an input the other tab changed too, and the other's program and points, written over, to bring back", () => {
     const written = first();
     const seen = stored(written);
     const mine = { ...written, gcode: 'G21\nG1 X1 F600\n', learnerPoints: '0,0,0\n1,1,1', options: { ...written.options, to: [9, 7, 6] } };
@@ -430,14 +430,14 @@ describe("another tab's write (persist.ts)", () => {
     const edits = otherTabEdits(seen, theirs, written, mine);
     expect(edits.followed).toEqual({ layout: 'side' });
     expect(edits.both).toEqual(['options', 'learnerPoints', 'gcode']);
-    expect(edits.kept).toEqual({ replacedProgram: typed, replacedBy: "another tab's program, typed at the same time" });
+    expect(edits.kept).toEqual({ replacedProgram: typed, replacedBy: "another tab's program, typed at the same time", replacedPoints: '0,0,0\n1,0,0' });
     expect(otherTabNote(edits)).toBe(
-      "Another tab changed the layout: shown here as there. Another tab changed the move, your points and the program at the same time as this one: this tab's are kept (a reload shows them). The other tab's program is offered back beside the editor.",
+      "Another tab changed the layout: shown here as there. Another tab changed the move, your points and the program at the same time as this one: what this tab has is kept, and is what a reload shows. The other tab's program is offered back beside the editor. The other tab's points are offered back in Check points.",
     );
-    // The same text typed in both is no clash; the default program, put back there, is not kept.
+    // The same text typed in both is no clash; the default program, or no points, put back there, are not kept.
     expect(otherTabEdits(seen, stored({ ...written, gcode: mine.gcode }), written, mine).followed).toEqual({ gcode: mine.gcode });
-    const reset = otherTabEdits(stored({ ...written, gcode: typed }), stored(written), { ...written, gcode: typed }, mine);
-    expect([reset.both, reset.kept]).toEqual([['gcode'], {}]);
+    const reset = otherTabEdits(stored({ ...written, gcode: typed, learnerPoints: '0,0,0' }), stored(written), { ...written, gcode: typed, learnerPoints: '0,0,0' }, mine);
+    expect([reset.both, reset.kept]).toEqual([['learnerPoints', 'gcode'], {}]);
   });
 
   it('keeps a move with a text refused here (a draft: the state holds the last valid move) rather than follow the other tab', () => {

@@ -275,6 +275,8 @@ function run(catalogue: Catalogue): void {
         longNote: byId('learner-long', HTMLParagraphElement),
         clear: byId('learner-clear', HTMLButtonElement),
         editAnyway: byId('learner-edit-anyway', HTMLButtonElement),
+        replaced: byId('learner-replaced', HTMLParagraphElement),
+        bringBack: byId('learner-bring-back', HTMLButtonElement),
         result: byId('check-result', HTMLDivElement),
       },
       store, (pointIndex) => {

@@ -11,7 +11,7 @@
 //   cp tests/browser/__screenshots__/actual/readme.png docs/screenshot.png
 //   cp tests/browser/__screenshots__/actual/readme-gcode.png docs/gcode.png
 //   cp tests/browser/__screenshots__/actual/readme-embed.png docs/embed.png
-import type { Page } from 'playwright-core';
+import type { BrowserContext, Page } from 'playwright-core';
 import type { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { canvasPng, closeAll, openPage, screenshot, siteUrl } from './harness.js';
@@ -455,17 +455,25 @@ describe('the page', () => {
     await a.close();
   });
 
+  /**
+   * A second tab of `context` at `query` that hears of another tab's write
+   * only when it writes itself (its storage events stopped): it types
+   * before another's write reaches it, as a tab does within that tab's
+   * write delay (400 ms), or while busy.
+   */
+  async function unhearingTab(context: BrowserContext, query: string): Promise<Page> {
+    const page = await context.newPage();
+    await page.addInitScript(() => {
+      window.addEventListener('storage', (event) => event.stopImmediatePropagation(), { capture: true });
+    });
+    await page.goto(`${siteUrl()}${query}`);
+    return page;
+  }
+
   it("offers back a program typed in one tab that another tab's, typed at the same time, replaced: in both tabs and over reloads", async () => {
     const a = await openPage('?mode=gcode');
     await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
-    const b = await a.context.newPage();
-    // B hears of A's write only when it writes itself (its storage events
-    // held): it types before A's write reaches it, as a tab does within
-    // A's write delay (400 ms), or while busy.
-    await b.addInitScript(() => {
-      window.addEventListener('storage', (event) => event.stopImmediatePropagation(), { capture: true });
-    });
-    await b.goto(`${siteUrl()}?mode=gcode`);
+    const b = await unhearingTab(a.context, '?mode=gcode');
     await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     const programA = 'G21 G90\nG1 X3 Y4 F600\nG1 X7\n';
     const programB = 'G21 G90\nG1 X5 Y1 F600\nG1 Y6\nG1 X0\n';
@@ -477,7 +485,7 @@ describe('the page', () => {
     const offer = "Your program (3 lines) was replaced by another tab's program, typed at the same time.";
     await b.getByTestId('gcode-replaced').filter({ hasText: offer }).waitFor();
     expect(await b.getByTestId('tabs-note').innerText()).toBe(
-      "Another tab changed the program at the same time as this one: this tab's is kept (a reload shows it). The other tab's program is offered back beside the editor.",
+      "Another tab changed the program at the same time as this one: what this tab has is kept, and is what a reload shows. The other tab's program is offered back beside the editor.",
     );
     await expect.poll(() => a.page.getByTestId('gcode-text').inputValue()).toBe(programB);
     await a.page.getByTestId('gcode-replaced').filter({ hasText: offer }).waitFor();
@@ -492,7 +500,37 @@ describe('the page', () => {
     await a.page.getByTestId('trace-status').filter({ hasText: '3 lines, 2 moves' }).waitFor();
     expect(await a.page.getByTestId('gcode-text').inputValue()).toBe(programA);
     expect(await a.page.getByTestId('gcode-replaced').isHidden()).toBe(true);
-    expect([...a.problems()]).toEqual([]);
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
+  it("offers back points typed in one tab that another tab's, typed at the same time, replaced", async () => {
+    const a = await openPage(EXAMPLE);
+    await traced(a.page, 10);
+    const b = await unhearingTab(a.context, EXAMPLE);
+    await traced(b, 10);
+    const [pointsA, pointsB] = ['0,0,0\n1,1,1\n2,1,1\n', '0,0,0\n1,0,0\n'];
+    await a.page.getByTestId('check-points').locator('summary').click();
+    await a.page.getByTestId('learner-points').fill(pointsA);
+    await a.page.waitForURL(/points=/);
+    await b.getByTestId('check-points').locator('summary').click();
+    await b.getByTestId('learner-points').fill(pointsB);
+    const offer = "Your points (3 lines) were replaced by another tab's, typed at the same time.";
+    await b.getByTestId('learner-replaced').filter({ hasText: offer }).waitFor();
+    expect(await b.getByTestId('tabs-note').innerText()).toBe(
+      "Another tab changed your points at the same time as this one: what this tab has is kept, and is what a reload shows. The other tab's points are offered back in Check points.",
+    );
+    await expect.poll(() => a.page.getByTestId('learner-points').inputValue()).toBe(pointsB);
+    await a.page.reload();
+    await a.page.getByTestId('learner-replaced').filter({ hasText: offer }).waitFor();
+    await a.page.getByTestId('learner-bring-back').click();
+    await a.page.getByTestId('check-verdict').waitFor();
+    expect(await a.page.getByTestId('learner-points').inputValue()).toBe(pointsA);
+    expect(await a.page.getByTestId('learner-replaced').isHidden()).toBe(true);
+    await a.page.reload();
+    await a.page.getByTestId('check-verdict').waitFor();
+    expect(await a.page.getByTestId('learner-points').inputValue()).toBe(pointsA);
+    expect(a.problems()).toEqual([]);
     await a.close();
   });
 

@@ -13,10 +13,15 @@
  * took Chromium about 4 s to lay out, in one task, pasted and again at each
  * reload. Pasting over the list replaces them, Clear empties it, and "Edit
  * as text" puts them in the text box anyway, at that cost.
+ *
+ * Points another tab wrote over, changed there at the same time as here
+ * (AppState's replacedPoints), are offered back above the box, as a
+ * program a sample replaced is beside the editor, until brought back or the
+ * points are changed again.
  */
 import type { Check } from '../core/index.js';
 import { element } from '../form/options-form.js';
-import { LongTextField, linesInView } from '../form/long-text.js';
+import { countedLines, lineStarts, LongTextField, linesInView } from '../form/long-text.js';
 import { countOf, formatPoint, NO_VALUE_TEXT } from '../format.js';
 import type { AppState } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
@@ -31,6 +36,9 @@ export interface CheckPanelElements {
   longNote: HTMLElement;
   clear: HTMLButtonElement;
   editAnyway: HTMLButtonElement;
+  /** The offer of the points another tab's replaced, and its button that brings them back. */
+  replaced: HTMLElement;
+  bringBack: HTMLButtonElement;
   result: HTMLElement;
 }
 
@@ -45,6 +53,8 @@ export class CheckPanel {
   readonly #store: Store<AppState>;
   /** The points, in the text box or listed read-only. */
   readonly #field: LongTextField;
+  /** The replaced points the offer was last made for ('' for none). */
+  #offered = '';
 
   constructor(elements: CheckPanelElements, store: Store<AppState>, onGo: (pointIndex: number) => void) {
     this.#e = elements;
@@ -62,6 +72,12 @@ export class CheckPanel {
       this.#setText(this.#field.text, { editable: true });
       elements.text.focus();
     });
+    elements.bringBack.addEventListener('click', () => {
+      const points = this.#store.state.replacedPoints;
+      this.#setText(points);
+      this.#store.update({ learnerPoints: points, replacedPoints: '' });
+    });
+    this.#offerReplaced();
     elements.listing.addEventListener('scroll', () => this.#renderListing());
     // Shown (the panel opened, the mode changed) or resized: more or fewer lines are in view.
     new ResizeObserver(() => this.#renderListing()).observe(elements.listing);
@@ -70,7 +86,8 @@ export class CheckPanel {
   /** The user changed the points to `text`: in the box (`fromBox`: typed, dropped), or by a paste the box did not take, or Clear. */
   #edited(text: string, fromBox = false): void {
     this.#setText(text, { fromBox });
-    this.#store.update({ learnerPoints: text });
+    // Points of the user's own again: the replaced ones are no longer offered.
+    this.#store.update({ learnerPoints: text, replacedPoints: '' });
   }
 
   /** Shows `text` (LongTextField.show), a list from its top. */
@@ -90,12 +107,25 @@ export class CheckPanel {
     field.listing.render(first, last);
   }
 
-  /** Brings the points in line with the state (another tab's, followed). */
+  /** Brings the points, and the offer of replaced ones, in line with the state (another tab's, followed). */
   render(): void {
     const points = this.#store.state.learnerPoints;
-    if (this.#field.text === points) return;
-    this.#setText(points);
-    if (points !== '') this.#e.box.open = true;
+    if (this.#field.text !== points) {
+      this.#setText(points);
+      if (points !== '') this.#e.box.open = true;
+    }
+    this.#offerReplaced();
+  }
+
+  /** Offers the points another tab's replaced, above the box (their lines counted only when they change). */
+  #offerReplaced(): void {
+    const replaced = this.#store.state.replacedPoints;
+    if (replaced === this.#offered) return;
+    this.#offered = replaced;
+    this.#e.replaced.hidden = replaced === '';
+    if (replaced === '') return;
+    this.#e.replaced.querySelector('.replaced-text')!.textContent = `Your points (${countOf(countedLines(replaced, lineStarts(replaced)), 'line')}) were replaced by another tab's, typed at the same time.`;
+    this.#e.box.open = true;
   }
 
   /** Nothing to show: no points, or a new rule being traced. */

@@ -477,7 +477,7 @@ export class Orchestrator {
     }
     if (state.decision3d !== previous.decision3d) p.views.setDecision3d(state.decision3d);
     if (state.mode === 'gcode') p.gcodePanel.render();
-    if (state.learnerPoints !== previous.learnerPoints) p.checkPanel.render();
+    if (state.learnerPoints !== previous.learnerPoints || state.replacedPoints !== previous.replacedPoints) p.checkPanel.render();
     p.experimentForm.setValues(state.experiment);
     if (state.pointIndex !== previous.pointIndex) this.#showPoint(state.pointIndex);
   }

@@ -63,6 +63,13 @@ export interface AppState {
   replacedBy: string;
   /** Trace mode: a learner's points as pasted into Check points (CSV, rows or a printed list), checked against the rule; '' for none. */
   learnerPoints: string;
+  /**
+   * Trace mode: the learner's points another tab had, changed there at the
+   * same time as here and written over by this tab's (persist.ts), kept so
+   * that they can be brought back, as replacedProgram is; '' for none.
+   * Offered until brought back or the points are changed again.
+   */
+  replacedPoints: string;
   /** G-code mode: the machine, by GcodeSettings name (stepsPerMm or stepAngle + microsteps + pitch, line/arc algorithm). */
   machine: Record<string, OptionValue>;
   /** Experiment mode: the random-lines options (count, seed, maxCoordinate, dims); the algorithm is `algorithm`. */
@@ -389,6 +396,7 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     replacedProgram: '',
     replacedBy: '',
     learnerPoints: '',
+    replacedPoints: '',
     machine: { ...DEFAULT_MACHINE },
     experiment: { ...DEFAULT_EXPERIMENT },
     projection: defaultProjection(axisCount([info], {})),

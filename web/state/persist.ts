@@ -14,7 +14,8 @@ const STORAGE_KEY = 'voxpath.state';
 
 /**
  * The texts longer than a link holds (GCODE_URL_LIMIT), a program, the
- * program it replaced (kept to bring back) and a learner's points, are kept
+ * program it replaced (kept to bring back), a learner's points and the
+ * points another tab's replaced (the same), are kept
  * as typed, under keys of their own: KEY holds how many pieces of
  * LONG_TEXT_PIECE characters the text is cut into, and KEY.0, KEY.1, ...
  * the pieces. They are written with the rest of the state
@@ -24,15 +25,15 @@ const STORAGE_KEY = 'voxpath.state';
  * (3.7 MB) and after each keystroke in them; written whole under one key,
  * 15 to 55 ms.
  */
-const LONG_TEXT_KEYS = { gcode: 'voxpath.gcode', replacedProgram: 'voxpath.replaced', learnerPoints: 'voxpath.points' } as const;
+const LONG_TEXT_KEYS = { gcode: 'voxpath.gcode', replacedProgram: 'voxpath.replaced', learnerPoints: 'voxpath.points', replacedPoints: 'voxpath.replacedPoints' } as const;
 
 /** Characters per stored piece of a long text: a keystroke rewrites one piece. */
 const LONG_TEXT_PIECE = 65_536;
 
 type LongText = keyof typeof LONG_TEXT_KEYS;
 
-/** The query key that holds each long text's field when it is short enough, and a link's program or points (a link never holds a replaced program). */
-const LONG_TEXT_PARAMS: Record<LongText, string> = { gcode: 'gcode', replacedProgram: 'replaced', learnerPoints: 'points' };
+/** The query key that holds each long text's field when it is short enough, and a link's program or points (a link never holds a replaced program or points). */
+const LONG_TEXT_PARAMS: Record<LongText, string> = { gcode: 'gcode', replacedProgram: 'replaced', learnerPoints: 'points', replacedPoints: 'replacedPoints' };
 
 /** The query key of the gcode part that names what replaced the kept program (AppState's replacedBy). */
 const REPLACED_BY_PARAM = 'replacedBy';
@@ -96,7 +97,8 @@ function addressAfterReload(): string {
  * trace (the algorithm, its move, the learner's points), compare (the
  * second algorithm and the layout), gcode (the program and the machine),
  * experiment (its options); the gcode part also holds the program a sample
- * or a link replaced, kept to bring back. A permalink holds only its own
+ * or a link replaced, kept to bring back, and the trace part the points
+ * another tab's replaced. A permalink holds only its own
  * mode's keys, so one alone lost every other mode's input on a reload. The program and the
  * points are written once, in their parts as a link holds them, never in
  * `shown`; longer ones under LONG_TEXT_KEYS (a visit from before those keys
@@ -125,23 +127,24 @@ function storedParts(state: AppState): StoredParts {
   const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: GCODE_URL_LIMIT });
   return {
     shown: stateToQuery(state, { gcodeLimit: 0 }),
-    trace: part('trace'),
+    trace: withReplaced(part('trace'), 'replacedPoints', state),
     compare: part('compare'),
-    gcode: withReplacedProgram(part('gcode'), state),
+    gcode: withReplaced(part('gcode'), 'replacedProgram', state),
     experiment: part('experiment'),
   };
 }
 
 /**
- * The gcode part `query` with the replaced program (when short enough:
- * longTextPieces) and what replaced it, added after the part's own keys,
- * which are left as stateToQuery wrote them.
+ * The part `query` with the replaced text `field` of `state` (when short
+ * enough: longTextPieces), and for a program what replaced it, added after
+ * the part's own keys, which are left as stateToQuery wrote them.
  */
-function withReplacedProgram(query: string, { replacedProgram, replacedBy }: AppState): string {
-  if (replacedProgram === '') return query;
-  const added = new URLSearchParams({ [REPLACED_BY_PARAM]: replacedBy });
-  if (replacedProgram.length <= GCODE_URL_LIMIT) added.set(LONG_TEXT_PARAMS.replacedProgram, replacedProgram);
-  return `${query}&${added}`;
+function withReplaced(query: string, field: 'replacedProgram' | 'replacedPoints', state: AppState): string {
+  const text = state[field];
+  if (text === '') return query;
+  const added = new URLSearchParams(field === 'replacedProgram' ? { [REPLACED_BY_PARAM]: state.replacedBy } : {});
+  if (text.length <= GCODE_URL_LIMIT) added.set(LONG_TEXT_PARAMS[field], text);
+  return added.toString() === '' ? query : `${query}&${added}`;
 }
 
 /**
@@ -150,11 +153,11 @@ function withReplacedProgram(query: string, { replacedProgram, replacedBy }: App
  * its part (the points beside the move, the program beside the machine),
  * and so written or kept on its own (partsToStore).
  */
-const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', replacedProgram: 'gcode', learnerPoints: 'trace' };
+const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', replacedProgram: 'gcode', learnerPoints: 'trace', replacedPoints: 'trace' };
 
 /** The input each mode's part keeps for a visit in another mode (storedState takes these of it). */
 const PART_INPUTS: Record<AppState['mode'], readonly (keyof AppState)[]> = {
-  trace: ['algorithm', 'options', 'learnerPoints'],
+  trace: ['algorithm', 'options', 'learnerPoints', 'replacedPoints'],
   compare: ['other', 'layout'],
   gcode: ['gcode', 'replacedProgram', 'replacedBy', 'machine', 'slowdown'],
   experiment: ['experiment'],
@@ -258,7 +261,7 @@ function readParts(
   const [trace, compare, gcode, experiment] = [read(parts.trace), read(parts.compare), read(parts.gcode), read(parts.experiment)];
   if (!shown) return undefined;
   if (!trace || !compare || !gcode || !experiment) return { shown, typed: undefined };
-  const gcodeParams = new URLSearchParams(parts.gcode);
+  const [traceParams, gcodeParams] = [new URLSearchParams(parts.trace), new URLSearchParams(parts.gcode)];
   const typed: AppState = {
     ...trace,
     other: compare.other,
@@ -270,6 +273,7 @@ function readParts(
     slowdown: gcode.slowdown,
     experiment: experiment.experiment,
     learnerPoints: longText('learnerPoints', parts.trace!) ?? trace.learnerPoints,
+    replacedPoints: longText('replacedPoints', parts.trace!) ?? traceParams.get(LONG_TEXT_PARAMS.replacedPoints) ?? '',
   };
   return { shown, typed };
 }
@@ -459,7 +463,11 @@ export interface OtherTabEdits {
   followed: Partial<AppState>;
   /** The inputs both tabs changed: this tab's stays, and is written over the other's. */
   both: (keyof AppState)[];
-  /** The program fields keeping the other tab's program, written over, to bring back (programReplaced); empty when it was not changed in both, or was the default. */
+  /**
+   * The other tab's program or points, written over, kept to bring back:
+   * the program fields (programReplaced; not the default program), and
+   * replacedPoints (not none).
+   */
   kept: Partial<AppState>;
 }
 
@@ -471,8 +479,8 @@ export interface OtherTabEdits {
  * not changed it since (current is written, and it is not of `drafted`, the
  * inputs with a text refused here) or has the same; else both changed it,
  * and this tab's wins (the state's, about to be written, or the draft's,
- * over the value a reload of it shows), but the other's program is kept to
- * bring back.
+ * over the value a reload of it shows), but the other's program or points
+ * are kept to bring back.
  */
 export function otherTabEdits(seen: AppState, stored: AppState, written: AppState, current: AppState, drafted: ReadonlySet<keyof AppState> = new Set()): OtherTabEdits {
   const followed: Partial<AppState> = {};
@@ -483,7 +491,8 @@ export function otherTabEdits(seen: AppState, stored: AppState, written: AppStat
     else both.push(key);
   }
   const replaced = both.includes('gcode') ? programReplaced({ gcode: stored.gcode, replacedProgram: '', replacedBy: '' }, current.gcode, ANOTHER_TABS_PROGRAM, stored.gcode !== DEFAULT_GCODE) : undefined;
-  const kept = replaced && replaced.replacedProgram !== '' ? { replacedProgram: replaced.replacedProgram, replacedBy: replaced.replacedBy } : {};
+  const kept: Partial<AppState> = replaced && replaced.replacedProgram !== '' ? { replacedProgram: replaced.replacedProgram, replacedBy: replaced.replacedBy } : {};
+  if (both.includes('learnerPoints') && stored.learnerPoints !== '') kept.replacedPoints = stored.learnerPoints;
   return { followed, both, kept };
 }
 
@@ -494,7 +503,7 @@ export function otherTabEdits(seen: AppState, stored: AppState, written: AppStat
  */
 const DRAFT_PREFIXES: Partial<Record<keyof AppState, string>> = { options: 'option-', machine: 'machine-', experiment: 'experiment-' };
 
-/** How the note names each input another tab changed; the offer of a replaced program goes with the program, unnamed. */
+/** How the note names each input another tab changed; the offer of a replaced program or points goes with them, unnamed. */
 const INPUT_NAMES: Partial<Record<keyof AppState, string>> = {
   algorithm: 'the algorithm',
   options: 'the move',
@@ -514,8 +523,11 @@ export function otherTabNote({ followed, both, kept }: OtherTabEdits): string {
   const ours = names(both);
   const sentences = shown.length > 0 ? [`Another tab changed ${listed(shown)}: shown here as there.`] : [];
   if (ours.length > 0) {
-    const offered = 'replacedProgram' in kept ? " The other tab's program is offered back beside the editor." : '';
-    sentences.push(`Another tab changed ${listed(ours)} at the same time as this one: this tab's ${ours.length > 1 ? 'are kept (a reload shows them)' : 'is kept (a reload shows it)'}.${offered}`);
+    const offered = [
+      ...('replacedProgram' in kept ? [" The other tab's program is offered back beside the editor."] : []),
+      ...('replacedPoints' in kept ? [" The other tab's points are offered back in Check points."] : []),
+    ].join('');
+    sentences.push(`Another tab changed ${listed(ours)} at the same time as this one: what this tab has is kept, and is what a reload shows.${offered}`);
   }
   return sentences.join(' ');
 }
@@ -525,8 +537,8 @@ export function otherTabNote({ followed, both, kept }: OtherTabEdits): string {
  * storage (its StoredParts.edit differs): the inputs this tab had not
  * changed since are followed, the form and views updated as if typed
  * (lastWritten too, so they are not written back); an input both changed
- * is this tab's, said in a note, a program of the other's kept to bring
- * back. Each tab wrote only what it changed, but the last writer of an
+ * is this tab's, said in a note, the other's program or points kept to
+ * bring back. Each tab wrote only what it changed, but the last writer of an
  * input both changed erased the other's without a word, and a tab showed
  * what a reload of it no longer gave.
  */
