@@ -77,6 +77,34 @@ async function xEdges(page: Page, name: string, pause: { x: number; width: numbe
   return { runs: starts.length, spanShare: (last - first) / (width - pause.width), first: first / width, last: last / width, nearestPx };
 }
 
+/**
+ * The lines of the timing diagram's pause labels as drawn, and those of them
+ * not whole in their box: a line's text (its glyphs' boxes, the DOM's text
+ * metrics of each line it wraps to) outside its box's inside, clipped by it.
+ */
+async function pauseLabelLines(page: Page): Promise<{ lines: string[][]; clipped: string[] }> {
+  return page.evaluate(() => {
+    const boxes = [...document.querySelectorAll<HTMLElement>('[data-testid=timing] .chart-break')];
+    const clipped: string[] = [];
+    const lines = boxes.map((box) => {
+      const outer = box.getBoundingClientRect();
+      const inside = { left: outer.left + box.clientLeft, right: outer.left + box.clientLeft + box.clientWidth, top: outer.top + box.clientTop, bottom: outer.top + box.clientTop + box.clientHeight };
+      return [...box.querySelectorAll('span')].map((span) => {
+        const range = document.createRange();
+        range.selectNodeContents(span);
+        for (const r of range.getClientRects()) {
+          if (r.left < inside.left - 0.5 || r.right > inside.right + 0.5 || r.top < inside.top - 0.5 || r.bottom > inside.bottom + 0.5) {
+            clipped.push(`'${span.textContent}': ${r.left.toFixed(1)}..${r.right.toFixed(1)} in a box ${inside.left.toFixed(1)}..${inside.right.toFixed(1)} wide`);
+          }
+        }
+        // A line wrapped to its words (a value keeps its unit: no-break spaces) reads as one.
+        return span.textContent!.replaceAll('\u00a0', ' ');
+      });
+    });
+    return { lines, clipped };
+  });
+}
+
 describe('G-code mode: time', () => {
   it("shows the total time worked from Grbl's formulas, the current step's instant, the charts, and exports the VCD", async () => {
     const p = await openPage('?mode=gcode&stepsPerMm=80');
@@ -195,7 +223,7 @@ describe('G-code mode: time', () => {
     // Point 160, the last step before the dwell: the window ends there, the dwell at its right edge.
     await jumpTo(page, 160);
     await expect.poll(() => pauseBox.count()).toBe(1);
-    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nnext step\n+2.050 s');
+    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2\u00a0s\nnext step\n+2.050\u00a0s');
     const plot = (await timing.locator('.u-over').boundingBox())!;
     const box = (await pauseBox.boundingBox())!;
     // At the right edge, the steps drawn up to the dwell (steps 0..159 the first move's).
@@ -216,7 +244,7 @@ describe('G-code mode: time', () => {
 
     // Point 161, across the dwell: the window starts there, the dwell at its left edge.
     await jumpTo(page, 161);
-    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nstep before\n−2.050 s');
+    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2\u00a0s\nstep before\n−2.050\u00a0s');
     const left = (await pauseBox.boundingBox())!;
     expect(left.x).toBeCloseTo(plot.x, 0);
     const [fromAfter, toAfter] = await drawn();
@@ -232,7 +260,7 @@ describe('G-code mode: time', () => {
     // Clicking the pause goes to the point the machine waits at: the last before it.
     await page.mouse.click(left.x + left.width / 2, left.y + left.height / 2);
     await page.getByTestId('step-counter').filter({ hasText: /^Step 160 of/ }).waitFor();
-    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nnext step\n+2.050 s');
+    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2\u00a0s\nnext step\n+2.050\u00a0s');
     // Far from the dwell, no pause: the window counted in steps.
     await jumpTo(page, 60);
     await expect.poll(() => pauseBox.count()).toBe(0);
@@ -249,7 +277,7 @@ describe('G-code mode: time', () => {
     const timing = page.getByTestId('timing');
     await jumpTo(page, 160);
     const pauseBox = timing.locator('.chart-break');
-    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2 s\nprogram ends\n+2.000 s');
+    await expect.poll(() => pauseBox.innerText()).toBe('dwell 2\u00a0s\nprogram ends\n+2.000\u00a0s');
     expect(await pauseBox.getAttribute('title')).toBe("a pause with a G4 dwell of 2 s in it: the program ends 2.000 s after its last step (not to scale)");
     // At the right edge, after the last steps drawn, whose time reads in ms (not the dwell's 2 s).
     const plot = (await timing.locator('.u-over').boundingBox())!;
@@ -275,7 +303,7 @@ describe('G-code mode: time', () => {
     await loaded(page, 1);
     const timing = page.getByTestId('timing');
     const pauseBox = timing.locator('.chart-break');
-    await expect.poll(() => pauseBox.allInnerTexts()).toEqual(['pause\nfirst step at\n1.100 s', 'dwell 2 s\nprogram ends\n+2.000 s']);
+    await expect.poll(() => pauseBox.allInnerTexts()).toEqual(['pause\nfirst step at\n1.100\u00a0s', 'dwell 2\u00a0s\nprogram ends\n+2.000\u00a0s']);
     // The wait from the start at the left edge, the dwell at the right, the step between them read in ms.
     const plot = (await timing.locator('.u-over').boundingBox())!;
     const [before, after] = [(await pauseBox.nth(0).boundingBox())!, (await pauseBox.nth(1).boundingBox())!];
@@ -283,6 +311,24 @@ describe('G-code mode: time', () => {
     expect(after.x + after.width).toBeCloseTo(plot.x + plot.width, 0);
     await timing.getByText(/planned instant, ms/).waitFor();
     await screenshot(page, 'timing-one-step', '[data-testid=timing]');
+    // Each label whole in its box (the panel's plot is 174 px; in boxes of 39 px they read 'st step',
+    // 'rogram e'), here, in a one-column page 320 px wide and in the 260 px column of a 721 px window.
+    const labels = [
+      ['pause', 'first step at', '1.100 s'],
+      ['dwell 2 s', 'program ends', '+2.000 s'],
+    ];
+    expect(await pauseLabelLines(page)).toEqual({ lines: labels, clipped: [] });
+    for (const [width, height] of [
+      [320, 700],
+      [721, 700],
+    ] as const) {
+      await page.setViewportSize({ width, height });
+      await jumpTo(page, 1);
+      await expect.poll(async () => (await pauseLabelLines(page)).clipped, { message: `${width} x ${height}` }).toEqual([]);
+      expect((await pauseLabelLines(page)).lines).toEqual(labels);
+      await timing.scrollIntoViewIfNeeded();
+      await screenshot(page, `timing-one-step-${width}`, '[data-testid=timing]');
+    }
     // The same at point 0, before the step: the window is the step's.
     await jumpTo(page, 0);
     await expect.poll(() => pauseBox.count()).toBe(2);
@@ -305,7 +351,7 @@ describe('G-code mode: time', () => {
     await jumpTo(page, 80);
     // The window ends at the slow move's last step, the edge marked as a pause's is, with the time to the next step.
     const pauseBox = timing.locator('.chart-break');
-    await expect.poll(() => pauseBox.innerText()).toBe('faster steps\nnext step\n+4.099 ms');
+    await expect.poll(() => pauseBox.innerText()).toBe('faster steps\nnext step\n+4.099\u00a0ms');
     expect(await pauseBox.getAttribute('title')).toBe("a faster move, its steps at least 10 times as fast as the current step's: the next step comes 4.099 ms after the last one drawn (not to scale)");
     expect(await timing.getAttribute('data-to-step')).toBe('80');
     const plot = (await timing.locator('.u-over').boundingBox())!;

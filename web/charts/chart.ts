@@ -53,10 +53,44 @@ export interface ChartSpec {
 export interface XBreak {
   fromX: number;
   toX: number;
-  /** The label, a line each. */
+  /** The label, a line each; a line wraps at its spaces where the box is narrower than it (a no-break space keeps a value with its unit). */
   lines: string[];
   /** The label as one sentence (its title, and what a screen reader says). */
   description: string;
+}
+
+/** A break's box with label `lines` in it, as drawn: the CSS class chart-break, a span a line. */
+function breakBox(lines: string[]): HTMLElement {
+  const box = document.createElement('div');
+  box.className = 'chart-break';
+  box.setAttribute('role', 'note');
+  setBreakLines(box, lines);
+  return box;
+}
+
+function setBreakLines(box: HTMLElement, lines: string[]): void {
+  box.dataset.lines = lines.join('\n');
+  box.replaceChildren(...lines.map((line) => Object.assign(document.createElement('span'), { textContent: line })));
+}
+
+/**
+ * The widths, CSS pixels and borders included, a break's box can take with
+ * label `lines` whole in it: `wrappedPx`, its widest word's (each line
+ * wrapped at every space), the least; `unwrappedPx`, its widest line's.
+ * Measured in the page's style of the box, laid out in `container` out of
+ * sight, so that a box sized by them (the timing diagram's pauseBoxPx) holds its text
+ * whatever the font.
+ */
+export function breakLabelWidthsPx(container: HTMLElement, lines: string[]): { wrappedPx: number; unwrappedPx: number } {
+  const box = breakBox(lines);
+  Object.assign(box.style, { visibility: 'hidden', left: '0', top: '0', bottom: 'auto' });
+  container.append(box);
+  box.style.width = 'min-content';
+  const wrappedPx = box.getBoundingClientRect().width;
+  box.style.width = 'max-content';
+  const unwrappedPx = box.getBoundingClientRect().width;
+  box.remove();
+  return { wrappedPx, unwrappedPx };
 }
 
 /** The axes' tick labels: uPlot's own size, set here so that the y axis is measured in the font it draws. */
@@ -232,6 +266,9 @@ export class StepChart {
     };
     this.#breaks = spec.xBreaks ?? [];
     this.#plot = new uPlot(opts, data, this.#figure);
+    // Laid out now rather than at uPlot's next microtask, so that plotWidthPx is the plot's from the
+    // start: its axes' sizes are only measured then (the timing diagram's plot read 216 px, not 174).
+    this.#plot.batch(() => {});
     if (spec.caption) {
       const caption = document.createElement('figcaption');
       caption.textContent = spec.caption;
@@ -280,9 +317,7 @@ export class StepChart {
     this.#breaks.forEach((b, i) => {
       let box = this.#breakBoxes[i];
       if (!box) {
-        box = document.createElement('div');
-        box.className = 'chart-break';
-        box.setAttribute('role', 'note');
+        box = breakBox(b.lines);
         u.over.append(box);
         this.#breakBoxes.push(box);
       }
@@ -291,10 +326,7 @@ export class StepChart {
       box.style.width = `${u.valToPos(b.toX, 'x') - leftPx}px`;
       box.title = b.description;
       box.setAttribute('aria-label', b.description);
-      if (box.dataset.lines !== b.lines.join('\n')) {
-        box.dataset.lines = b.lines.join('\n');
-        box.replaceChildren(...b.lines.map((line) => Object.assign(document.createElement('span'), { textContent: line })));
-      }
+      if (box.dataset.lines !== b.lines.join('\n')) setBreakLines(box, b.lines);
     });
   }
 

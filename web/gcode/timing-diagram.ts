@@ -30,7 +30,7 @@
  * it must, so that the narrowest gap it draws stays half a tick wide.
  */
 import uPlot from 'uplot';
-import { StepChart, type XBreak } from '../charts/chart.js';
+import { breakLabelWidthsPx, StepChart, type XBreak } from '../charts/chart.js';
 import { AXIS_NAMES } from '../format.js';
 import { AXIS_COLOURS } from '../scene/palette.js';
 import type { PulseWindow } from '../worker/protocol.js';
@@ -54,12 +54,14 @@ const FRAME_PX = 64;
 const LANE = 1.5;
 const SWING = 1;
 /**
- * The width of a pause drawn at an edge, CSS pixels: room for its label,
- * three short lines; at most PAUSE_MAX_SHARE of the plot, which leaves the
- * steps the rest (the panel is some 300 px wide beside a 1280 px view).
+ * A pause drawn at an edge is a box as wide as its label's longest line, up
+ * to this share of the plot (two such boxes leave the steps 55% of it);
+ * narrower, its lines wrap, to its widest word's width and no narrower, so
+ * the label stays whole: beside a 1280 px view the panel is some 300 px
+ * wide, its plot 174 px, where boxes of 76 px, or two of 45% of the plot,
+ * cut 'program ends' (79 px of text) to 'rogram end' and 'st step'.
  */
-const PAUSE_PX = 76;
-const PAUSE_MAX_SHARE = 0.45;
+const PAUSE_LINE_SHARE = 0.225;
 
 export interface PulsedTrace {
   dims: number;
@@ -95,6 +97,11 @@ function dwellText(seconds: number): string {
   return `${Number(seconds.toFixed(6))} s`;
 }
 
+/** `text` with its spaces no-break ones: a value and its unit, kept on one line of a pause's label. */
+function whole(text: string): string {
+  return text.replaceAll(' ', '\u00a0');
+}
+
 /**
  * The label of a pause at the window's edge `side`: what it is (a dwell, a
  * pause, or faster steps past it), and the time to the step across it, or
@@ -102,8 +109,9 @@ function dwellText(seconds: number): string {
  * last step to its end.
  */
 function pauseLabel({ pause, dwellSeconds, programEdge }: EdgePause, side: 'before' | 'after'): { lines: string[]; description: string } {
-  const title = pause.faster ? 'faster steps' : dwellSeconds > 0 ? `dwell ${dwellText(dwellSeconds)}` : 'pause';
+  const title = pause.faster ? 'faster steps' : dwellSeconds > 0 ? `dwell ${whole(dwellText(dwellSeconds))}` : 'pause';
   const gap = formatSeconds(pause.toSeconds - pause.fromSeconds);
+  const gapLine = whole(gap);
   const kind = pause.faster
     ? `a faster move, its steps at least ${PAUSE_FACTOR} times as fast as the current step's`
     : dwellSeconds > 0
@@ -111,11 +119,11 @@ function pauseLabel({ pause, dwellSeconds, programEdge }: EdgePause, side: 'befo
       : 'a pause';
   if (side === 'after') {
     return programEdge
-      ? { lines: [title, 'program ends', `+${gap}`], description: `${kind}: the program ends ${gap} after its last step (not to scale)` }
-      : { lines: [title, 'next step', `+${gap}`], description: `${kind}: the next step comes ${gap} after the last one drawn (not to scale)` };
+      ? { lines: [title, 'program ends', `+${gapLine}`], description: `${kind}: the program ends ${gap} after its last step (not to scale)` }
+      : { lines: [title, 'next step', `+${gapLine}`], description: `${kind}: the next step comes ${gap} after the last one drawn (not to scale)` };
   }
   return {
-    lines: [title, programEdge ? 'first step at' : 'step before', programEdge ? gap : `−${gap}`],
+    lines: [title, programEdge ? 'first step at' : 'step before', programEdge ? gapLine : `−${gapLine}`],
     description: `${kind}: the first step drawn comes ${gap} after the ${programEdge ? "program's start" : 'step before it'} (not to scale)`,
   };
 }
@@ -242,23 +250,39 @@ export class TimingDiagram {
     return { x: edges.map((t) => t * perSecond), unit };
   }
 
+  /**
+   * The width of a pause's box with label `lines` over a plot `plotPx`
+   * wide, CSS pixels: its longest line's, up to PAUSE_LINE_SHARE of the
+   * plot, but never under its widest word's, so that its text is whole.
+   */
+  #pauseBoxPx(lines: string[], plotPx: number): number {
+    const { wrappedPx, unwrappedPx } = breakLabelWidthsPx(this.#container, lines);
+    return Math.max(wrappedPx, Math.min(unwrappedPx, PAUSE_LINE_SHARE * plotPx));
+  }
+
   #draw({ trains, stepSeconds }: PulseWindow, pauses: { before: EdgePause | null; after: EdgePause | null }): void {
     const ticks = trains[0]!.step.length;
     this.#stepSeconds = stepSeconds;
     this.#perSecond = 1;
     const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#window!.fromStep === 0);
     const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
-    // The x the pauses take, out of scale: PAUSE_PX each of the plot's width
-    // (the chart's own, or for a first chart the panel's less the lane labels).
+    // The x the pauses take, out of scale: each its box's width (pauseBoxPx)
+    // of the plot's (the chart's own, or for a first chart the panel's less
+    // the lane labels), the steps the rest.
     const [startX, endX] = [idle ? 0 : x[0]!, x[x.length - 1]!];
-    const edges = (pauses.before ? 1 : 0) + (pauses.after ? 1 : 0);
     const plotPx = this.#chart?.plotWidthPx ?? this.#container.clientWidth - LABELS_PX;
-    const share = Math.min(PAUSE_MAX_SHARE / Math.max(edges, 1), PAUSE_PX / Math.max(1, plotPx));
-    const pauseX = ((endX - startX) * share) / (1 - edges * share);
-    this.#pauseBeforeX = pauses.before ? startX - pauseX : null;
+    const pauseLabels = { before: pauses.before && pauseLabel(pauses.before, 'before'), after: pauses.after && pauseLabel(pauses.after, 'after') };
+    const boxPx = {
+      before: pauseLabels.before ? this.#pauseBoxPx(pauseLabels.before.lines, plotPx) : 0,
+      after: pauseLabels.after ? this.#pauseBoxPx(pauseLabels.after.lines, plotPx) : 0,
+    };
+    // Over a plot too narrow for both labels (under some 130 px), the steps keep a tick's width.
+    const xPerPx = (endX - startX) / Math.max(TICK_PX, plotPx - boxPx.before - boxPx.after);
+    const [beforeX, afterX] = [boxPx.before * xPerPx, boxPx.after * xPerPx];
+    this.#pauseBeforeX = pauses.before ? startX - beforeX : null;
     const breaks: XBreak[] = [];
-    if (pauses.before) breaks.push({ fromX: startX - pauseX, toX: startX, ...pauseLabel(pauses.before, 'before') });
-    if (pauses.after) breaks.push({ fromX: endX, toX: endX + pauseX, ...pauseLabel(pauses.after, 'after') });
+    if (pauseLabels.before) breaks.push({ fromX: startX - beforeX, toX: startX, ...pauseLabels.before });
+    if (pauseLabels.after) breaks.push({ fromX: endX, toX: endX + afterX, ...pauseLabels.after });
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
@@ -308,7 +332,7 @@ export class TimingDiagram {
     const before = pauses.before;
     const after = pauses.after;
     const data: uPlot.AlignedData = [
-      withPauses(withStart(x, 0, x[0]! / 2), before && [startX - pauseX, startX - pauseX / 2], after && [endX + pauseX / 2, endX + pauseX]),
+      withPauses(withStart(x, 0, x[0]! / 2), before && [startX - beforeX, startX - beforeX / 2], after && [endX + afterX / 2, endX + afterX]),
       ...lanes.map((values, i) => {
         const isStep = i % 2 === 0;
         const axis = Math.floor(i / 2);
@@ -350,5 +374,8 @@ export class TimingDiagram {
       data,
       this.#onPick,
     );
+    // A first chart's plot is narrower than the panel less LABELS_PX (its lane labels' axis is
+    // measured as it is made): its pauses again at the plot's own width, so that their boxes hold their labels.
+    if (breaks.length > 0 && Math.abs(this.#chart.plotWidthPx - plotPx) > 0.5) this.#draw({ trains, stepSeconds }, pauses);
   }
 }
