@@ -5,7 +5,7 @@
 // and pressed its 60 ms of pulses into bars at its edges.
 import { describe, expect, it } from 'vitest';
 import { runGcode } from '../web/core/index.js';
-import { pulseEdges } from '../web/gcode/pulse-edges.js';
+import { drawnFromZero, pulseEdges } from '../web/gcode/pulse-edges.js';
 import { neededSteps, PAUSE_FACTOR, stepWindow, windowHolds } from '../web/gcode/timing-window.js';
 
 const STEPS = 160;
@@ -155,9 +155,55 @@ describe('the timing diagram window', () => {
     const late = Float64Array.from({ length: STEPS }, (_, k) => 2.01 + k * 1e-3);
     expect(windowFor(0, late)).toEqual({ fromStep: 0, toStep: 60, pauseBefore: { fromSeconds: 0, toSeconds: 2.01 }, pauseAfter: null });
     expect(windowFor(1, late)).toMatchObject({ pauseBefore: { fromSeconds: 0, toSeconds: 2.01 } });
-    // From rest, the first steps come slowly (s = ½at²): drawn from 0 s, no pause.
+    // From rest, the first steps come slowly (s = ½at²): drawn from 0 s, no pause. Drawn from 0 s, their span
+    // is from 0 s: 60 steps, 0.05·√60 s and their last gap again, 0.3905 s, of which the last gap, 0.05·(√60 − √59)
+    // = 3.24 ms, came to 6.97 px of 60 ticks' 840 (the span was taken from the first step): 59 steps.
     const fromRest = Float64Array.from({ length: STEPS }, (_, k) => 0.05 * Math.sqrt(k + 1));
-    expect(windowFor(0, fromRest)).toEqual({ fromStep: 0, toStep: 60, pauseBefore: null, pauseAfter: null });
+    expect(windowFor(0, fromRest)).toEqual({ fromStep: 0, toStep: 59, pauseBefore: null, pauseAfter: null });
+  });
+
+  describe("beside a move 3 and 5 times faster, with the pauses' boxes drawn", () => {
+    // G1 X1 F60, G1 X1.075 at 3 and 5 times the feed, G4 P2, at 80 steps/mm and 10,000 mm/s²: 80 steps 12.5 ms
+    // apart, 6 steps 12.5/r ms apart, the program ending 2 s after its last: a window up to that step ends at
+    // the dwell. Over the page's default plot, 174 px for 12 ticks, the dwell's box takes 58 px (its label's
+    // widest word, '+2.000 s'), and as much for a box before; the window was chosen for 12 ticks' whole width,
+    // 168 px, which left the steps' narrowest gap 5.2 px of the 116 px they get (3 and 5 times, at points 76
+    // and 80: steps 74..85 and 76..85, 6 and 4 slow ones beside the 6 fast).
+    const widths = { plotPx: 174, pauseBeforePx: 58, pauseAfterPx: 58 };
+    const ticks = 12;
+    for (const r of [3, 5]) {
+      it(`at ${r} times, draws every gap at least half a tick of the width the steps get`, async () => {
+        const p = await runGcode(`G1 X1 F60\nG1 X1.075 F${60 * r}\nG4 P2\n`, { stepsPerMm: 80, acceleration: 10000, maxRate: 6000 });
+        const all = p.stepTimes(0, p.trace.steps);
+        const end = p.durationSeconds;
+        p.free();
+        expect(all.length).toBe(86);
+        expect(end - all[85]!).toBeCloseTo(2, 9);
+        let withPause = 0;
+        for (let point = 0; point <= 86; point++) {
+          const { fromStep, toStep } = neededSteps(point, ticks, 86);
+          const w = stepWindow(point, ticks, 86, fromStep, all.subarray(fromStep, toStep), end, widths);
+          const c = Math.max(0, point - 1);
+          expect([w.fromStep <= c, c < w.toStep], `point ${point}`).toEqual([true, true]);
+          // As the diagram draws it: the steps' span (pulseEdges' right edge; from 0 s where drawn from 0 s)
+          // over the plot less the boxes of the pauses drawn.
+          const drawn = all.subarray(w.fromStep, w.toStep);
+          const x = pulseEdges(drawn);
+          const spanSeconds = x[x.length - 1]! - (drawnFromZero(drawn, w.fromStep === 0) ? 0 : x[0]!);
+          const stepsPx = widths.plotPx - (w.pauseBefore ? widths.pauseBeforePx : 0) - (w.pauseAfter ? widths.pauseAfterPx : 0);
+          const gaps = Array.from(drawn.subarray(1), (t, i) => t - drawn[i]!);
+          const narrowestPx = (Math.min(...gaps) / spanSeconds) * stepsPx;
+          expect(narrowestPx, `point ${point}: ${w.fromStep}..${w.toStep}`).toBeGreaterThanOrEqual(7);
+          if (w.pauseAfter) withPause++;
+        }
+        // The windows up to the last step end at the dwell, with steps of both moves.
+        expect(withPause).toBeGreaterThan(0);
+        const { fromStep, toStep } = neededSteps(86, ticks, 86);
+        const last = stepWindow(86, ticks, 86, fromStep, all.subarray(fromStep, toStep), end, widths);
+        expect(last).toMatchObject({ toStep: 86, pauseAfter: { fromSeconds: all[85], toSeconds: end } });
+        expect(last.fromStep).toBeLessThan(80);
+      });
+    }
   });
 
   it("ends at a dwell after the program's last step, to the program's end", () => {

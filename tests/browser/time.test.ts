@@ -78,6 +78,18 @@ async function xEdges(page: Page, name: string, pause: { x: number; width: numbe
 }
 
 /**
+ * The narrowest gap between steps from..to - 1 at `instants` (the core's, seconds), px, drawn as the
+ * timing diagram spans them (from the first to the last step and its last gap again, pulseEdges'
+ * right edge) over the `stepsPx` they get.
+ */
+function narrowestGapPx(instants: Float64Array, from: number, to: number, stepsPx: number): number {
+  const drawn = instants.subarray(from, to);
+  const gaps = Array.from(drawn.subarray(1), (t, i) => t - drawn[i]!);
+  const span = drawn[drawn.length - 1]! - drawn[0]! + gaps[gaps.length - 1]!;
+  return (Math.min(...gaps) / span) * stepsPx;
+}
+
+/**
  * The lines of the timing diagram's pause labels as drawn, and those of them
  * not whole in their box: a line's text (its glyphs' boxes, the DOM's text
  * metrics of each line it wraps to) outside its box's inside, clipped by it.
@@ -213,8 +225,11 @@ describe('G-code mode: time', () => {
     // step after it comes √(2·(1/80)/10) = 50 ms after the dwell, from rest.
     // A window of steps counted around the current one spanned the dwell:
     // 2.4 s, its 30-odd steps of 0.3 s pressed into bars at the edges.
-    const program = encodeURIComponent('G21 G90\nG1 X2 F600\nG4 P2\nG1 X4\n');
-    const p = await openPage(`?mode=gcode&stepsPerMm=80&gcode=${program}`);
+    const gcode = 'G21 G90\nG1 X2 F600\nG4 P2\nG1 X4\n';
+    const planned = await runGcode(gcode, { stepsPerMm: 80 });
+    const instants = planned.stepTimes(0, planned.trace.steps);
+    planned.free();
+    const p = await openPage(`?mode=gcode&stepsPerMm=80&gcode=${encodeURIComponent(gcode)}`);
     const { page } = p;
     await loaded(page, 320);
     const timing = page.getByTestId('timing');
@@ -232,7 +247,11 @@ describe('G-code mode: time', () => {
     const drawn = async () => [Number(await timing.getAttribute('data-from-step')), Number(await timing.getAttribute('data-to-step'))];
     const [from, to] = await drawn();
     expect(to).toBe(160);
-    expect(to - from).toBeGreaterThanOrEqual(12);
+    // Slowing to rest, each gap longer than the one before: the most steps whose narrowest gap, by the
+    // core's instants, is half a tick (7 px) of the plot left of the pause: 7 steps (the window chosen for
+    // the whole plot, 12 steps, drew it 4.2 px; 11 after the dwell, where 15 drew it 5.1 px).
+    expect(to - from).toBeGreaterThanOrEqual(6);
+    expect(narrowestGapPx(instants, from, to, box.x - plot.x)).toBeGreaterThan(6.99);
     await screenshot(page, 'timing-dwell-before', '[data-testid=timing]');
     const before = await xEdges(page, 'timing-dwell-before-plot', box);
     // The pulses spread over the plot left of the pause, most of it,
@@ -249,6 +268,7 @@ describe('G-code mode: time', () => {
     expect(left.x).toBeCloseTo(plot.x, 0);
     const [fromAfter, toAfter] = await drawn();
     expect(fromAfter).toBe(160);
+    expect(narrowestGapPx(instants, fromAfter!, toAfter!, plot.x + plot.width - (left.x + left.width))).toBeGreaterThan(6.99);
     await screenshot(page, 'timing-dwell-after', '[data-testid=timing]');
     const after = await xEdges(page, 'timing-dwell-after-plot', left);
     expect(after.spanShare, JSON.stringify(after)).toBeGreaterThan(0.75);
@@ -385,18 +405,17 @@ describe('G-code mode: time', () => {
     await page.setViewportSize({ width: 700, height: 900 });
     const timing = page.getByTestId('timing');
     await jumpTo(page, 80);
-    // Steps of both moves, at least 5 each side of the change (an eighth of the window from the current step), no cut.
+    // Steps of both moves, no cut.
     await expect.poll(async () => Number(await timing.getAttribute('data-to-step'))).toBeGreaterThan(85);
     const [from, to] = [Number(await timing.getAttribute('data-from-step')), Number(await timing.getAttribute('data-to-step'))];
-    expect(from).toBeLessThan(75);
+    // The current step, 79, an eighth of the window or more from either edge (windowHolds keeps it): 5 slow steps
+    // and 33 fast of a plot of 536 px, 38 ticks.
+    expect([79 - from, to - 1 - 79].every((n) => n >= Math.floor((to - from) / 8)), `${from}..${to}`).toBe(true);
+    expect(from).toBeLessThan(80);
     expect(await timing.locator('.chart-break').count()).toBe(0);
     const plot = (await timing.locator('.u-over').boundingBox())!;
-    // The narrowest gap drawn, by the core's instants over the span drawn (pulseEdges' right edge, a last
-    // gap after the last step): over 6 px of the plot (half a tick, 7 px, of the panel's width less its labels).
-    const drawn = instants.subarray(from, to);
-    const gaps = Array.from(drawn.subarray(1), (t, i) => t - drawn[i]!);
-    const span = drawn[drawn.length - 1]! - drawn[0]! + gaps[gaps.length - 1]!;
-    expect((Math.min(...gaps) / span) * plot.width).toBeGreaterThan(6);
+    // The narrowest gap drawn, by the core's instants: half a tick, 7 px, of the plot.
+    expect(narrowestGapPx(instants, from, to, plot.width)).toBeGreaterThan(6.99);
     await screenshot(page, 'timing-nine-times', '[data-testid=timing]');
     // Drawn so: a STEP rise and fall a step (X only goes +, DIR has no edge), each apart from the next, but
     // the first step's rise, where the line starts high at the plot's edge, and the current one's, under the cursor.

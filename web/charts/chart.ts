@@ -330,9 +330,9 @@ export class StepChart {
     });
   }
 
-  /** Replaces the data (same series), keeping the cursor. */
+  /** Replaces the data (same series), keeping the cursor; laid out at once, as when made, so that plotWidthPx is the new layout's. */
   setData(data: uPlot.AlignedData): void {
-    this.#plot.setData(data);
+    this.#plot.batch(() => this.#plot.setData(data));
   }
 
   destroy(): void {

@@ -27,7 +27,9 @@
  * a much faster move starts, where the window is cut as well (the steps
  * past it ten times faster than the current step's, or more), labelled so.
  * Beside a move less than that faster, the window holds fewer steps where
- * it must, so that the narrowest gap it draws stays half a tick wide.
+ * it must, so that the narrowest gap it draws stays half a tick wide of the
+ * width its steps get: the plot's less the pauses' boxes, each as wide as
+ * its label (pauseBoxPx), measured before the window is chosen.
  */
 import uPlot from 'uplot';
 import { breakLabelWidthsPx, StepChart, type XBreak } from '../charts/chart.js';
@@ -36,17 +38,30 @@ import { AXIS_COLOURS } from '../scene/palette.js';
 import type { PulseWindow } from '../worker/protocol.js';
 import { drawnFromZero, pulseEdges, ROWS_PER_STEP } from './pulse-edges.js';
 import { formatSeconds, timeUnit } from './time-format.js';
-import { neededSteps, PAUSE_FACTOR, type Pause, type StepWindow, stepWindow, windowHolds } from './timing-window.js';
+import {
+  type EdgePause,
+  edgePauses,
+  neededSteps,
+  PAUSE_FACTOR,
+  type Pause,
+  type PlotWidths,
+  type StepWindow,
+  stepsWidthPx,
+  stepWindow,
+  TICK_PX,
+  windowHolds,
+} from './timing-window.js';
 
-/**
- * Ticks shown at once: as many as leave each tick this many CSS pixels, so
- * a STEP pulse (half a tick) stays apart from the next one.
- */
-const TICK_PX = 14;
-/** Fewest ticks shown, however narrow the panel. */
+/** Fewest ticks shown (TICK_PX each), however narrow the plot. */
 const MIN_WINDOW_TICKS = 12;
-/** Width of the lane labels and margins, CSS pixels, left of the plot. */
-const LABELS_PX = 80;
+/**
+ * The panel's width less the plot's, CSS pixels, until a chart is drawn:
+ * the lane labels' axis (62 px in the page's font), uPlot's room for its
+ * (empty) y title (30), its padding at the right (25) and the chart's 4 px
+ * inside the panel; 122 of a 296 px panel beside a 1280 px view. The plot's
+ * own width is read once a chart is drawn.
+ */
+const LABELS_PX = 122;
 /** Height per lane, CSS pixels, and for the title and the step axis. */
 const LANE_PX = 26;
 const FRAME_PX = 64;
@@ -73,14 +88,11 @@ export interface PulsedTrace {
   dwellSeconds?(fromSeconds: number, toSeconds: number): Promise<number>;
 }
 
-/** A pause at an edge of the window, as drawn: the dwell in it, and each axis's DIR on its far side. */
-interface EdgePause {
-  pause: Pause;
-  dwellSeconds: number;
+/** A pause at an edge of the window, as drawn: each axis's DIR on its far side, and its label (pauseLabel). */
+interface LabelledPause {
   /** Per axis, +1 or -1: DIR for the step after the pause (a pause after the window), or before it (one before). */
   farDir: number[];
-  /** The wait before the program's first step or after its last: no step on its far side. */
-  programEdge: boolean;
+  label: { lines: string[]; description: string };
 }
 
 /** The signals of steps fromStep..toStep of a window fetched from step `first`. */
@@ -103,12 +115,12 @@ function whole(text: string): string {
 }
 
 /**
- * The label of a pause at the window's edge `side`: what it is (a dwell, a
- * pause, or faster steps past it), and the time to the step across it, or
- * at the program's edge from its start (0 s) to the first step and from the
- * last step to its end.
+ * The label of a pause at the window's edge `side`: what it is (a dwell of
+ * `dwellSeconds` in it, a pause, or faster steps past it), and the time to
+ * the step across it, or at the program's edge (`programEdge`) from its
+ * start (0 s) to the first step and from the last step to its end.
  */
-function pauseLabel({ pause, dwellSeconds, programEdge }: EdgePause, side: 'before' | 'after'): { lines: string[]; description: string } {
+function pauseLabel(pause: Pause, dwellSeconds: number, programEdge: boolean, side: 'before' | 'after'): { lines: string[]; description: string } {
   const title = pause.faster ? 'faster steps' : dwellSeconds > 0 ? `dwell ${whole(dwellText(dwellSeconds))}` : 'pause';
   const gap = formatSeconds(pause.toSeconds - pause.fromSeconds);
   const gapLine = whole(gap);
@@ -166,35 +178,53 @@ export class TimingDiagram {
     void this.showPoint(pointIndex);
   }
 
-  /** Moves the cursor to `pointIndex`, fetching a new window of ticks when it leaves the one shown. */
-  async showPoint(pointIndex: number): Promise<void> {
+  /**
+   * Moves the cursor to `pointIndex`, fetching a new window of ticks when it
+   * leaves the one shown. `relayout`: once drawn, whether to choose the window
+   * again if its plot came out of another width than it was chosen for.
+   */
+  async showPoint(pointIndex: number, relayout = true): Promise<void> {
     const trace = this.#trace;
     if (!trace || trace.steps === 0) return;
     const inside = this.#window !== null && windowHolds(this.#window, pointIndex, this.#windowTicks, trace.steps, this.#stepSeconds !== null);
     if (!inside) {
       const request = ++this.#request;
-      const ticks = Math.max(MIN_WINDOW_TICKS, Math.floor((this.#container.clientWidth - LABELS_PX) / TICK_PX));
+      // The plot's width: the chart's as last drawn, or before the first the panel's less the lane labels.
+      const plotPx = this.#chart?.plotWidthPx ?? this.#container.clientWidth - LABELS_PX;
+      const ticks = Math.max(MIN_WINDOW_TICKS, Math.floor(plotPx / TICK_PX));
       // The steps any window for this point can hold, and those past its
       // edges (neededSteps): a program's window is chosen from their instants.
       const needed = neededSteps(pointIndex, ticks, trace.steps);
       let window: StepWindow;
       let pulses: PulseWindow;
-      const pauses: { before: EdgePause | null; after: EdgePause | null } = { before: null, after: null };
+      let widths: PlotWidths;
+      const pauses: { before: LabelledPause | null; after: LabelledPause | null } = { before: null, after: null };
       try {
         const fetched = await trace.pulseTrains(needed.fromStep, needed.toStep);
-        window = stepWindow(pointIndex, ticks, trace.steps, needed.fromStep, fetched.stepSeconds, trace.program?.durationSeconds);
-        pulses = slicePulses(fetched, needed.fromStep, window.fromStep, window.toStep);
+        const endSeconds = trace.program?.durationSeconds;
+        // The pauses a window can start and end at, labelled, and their boxes' widths: what the
+        // window is chosen over (stepWindow), as the steps are drawn (#draw).
+        const edges = edgePauses(pointIndex, ticks, trace.steps, needed.fromStep, fetched.stepSeconds, endSeconds);
         // Before the program's first step DIR is + (the VCD's level before any step); after its last, it holds.
         const dirAt = (k: number) => fetched.trains.map((t) => (k < 0 ? 1 : t.dir[Math.min(k, trace.steps - 1) - needed.fromStep]!));
-        const edge = async (pause: Pause | null, farStep: number): Promise<EdgePause | null> =>
-          pause && {
-            pause,
-            dwellSeconds: (await trace.dwellSeconds?.(pause.fromSeconds, pause.toSeconds)) ?? 0,
-            farDir: dirAt(farStep),
-            programEdge: farStep < 0 || farStep >= trace.steps,
-          };
-        pauses.before = await edge(window.pauseBefore, window.fromStep - 1);
-        pauses.after = await edge(window.pauseAfter, window.toStep);
+        const labelled = async (edge: EdgePause | null, side: 'before' | 'after'): Promise<LabelledPause | null> => {
+          if (!edge) return null;
+          const dwellSeconds = (await trace.dwellSeconds?.(edge.pause.fromSeconds, edge.pause.toSeconds)) ?? 0;
+          // The wait before the program's first step or after its last: no step on its far side.
+          const programEdge = edge.farStep < 0 || edge.farStep >= trace.steps;
+          return { farDir: dirAt(edge.farStep), label: pauseLabel(edge.pause, dwellSeconds, programEdge, side) };
+        };
+        const before = await labelled(edges.before, 'before');
+        const after = await labelled(edges.after, 'after');
+        widths = {
+          plotPx,
+          pauseBeforePx: before ? this.#pauseBoxPx(before.label.lines, plotPx) : 0,
+          pauseAfterPx: after ? this.#pauseBoxPx(after.label.lines, plotPx) : 0,
+        };
+        window = stepWindow(pointIndex, ticks, trace.steps, needed.fromStep, fetched.stepSeconds, endSeconds, widths);
+        pauses.before = window.pauseBefore && before;
+        pauses.after = window.pauseAfter && after;
+        pulses = slicePulses(fetched, needed.fromStep, window.fromStep, window.toStep);
       } catch (error) {
         // The last trace's chart, kept until this window came, must not stay.
         if (request === this.#request && this.#window === null) {
@@ -209,7 +239,15 @@ export class TimingDiagram {
       // The steps drawn, for a reader (and a test) of the page.
       this.#container.dataset.fromStep = String(window.fromStep);
       this.#container.dataset.toStep = String(window.toStep);
-      this.#draw(pulses, pauses);
+      this.#draw(pulses, pauses, widths);
+      // A plot of another width than the window was chosen for (a first chart, whose lane labels'
+      // axis is measured as it is made, or one resized): the window once more, at the plot's own
+      // width, so that the steps' gaps drawn are those stepWindow kept.
+      if (relayout && this.#chart && Math.abs(this.#chart.plotWidthPx - plotPx) > 0.5) {
+        this.#window = null;
+        await this.showPoint(pointIndex, false);
+        return;
+      }
     }
     this.#chart?.showX(this.#xOfPoint(pointIndex));
   }
@@ -260,29 +298,21 @@ export class TimingDiagram {
     return Math.max(wrappedPx, Math.min(unwrappedPx, PAUSE_LINE_SHARE * plotPx));
   }
 
-  #draw({ trains, stepSeconds }: PulseWindow, pauses: { before: EdgePause | null; after: EdgePause | null }): void {
+  #draw({ trains, stepSeconds }: PulseWindow, pauses: { before: LabelledPause | null; after: LabelledPause | null }, widths: PlotWidths): void {
     const ticks = trains[0]!.step.length;
     this.#stepSeconds = stepSeconds;
     this.#perSecond = 1;
     const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#window!.fromStep === 0);
     const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
     // The x the pauses take, out of scale: each its box's width (pauseBoxPx)
-    // of the plot's (the chart's own, or for a first chart the panel's less
-    // the lane labels), the steps the rest.
+    // of the plot's, the steps the rest (stepsWidthPx, as stepWindow took it).
     const [startX, endX] = [idle ? 0 : x[0]!, x[x.length - 1]!];
-    const plotPx = this.#chart?.plotWidthPx ?? this.#container.clientWidth - LABELS_PX;
-    const pauseLabels = { before: pauses.before && pauseLabel(pauses.before, 'before'), after: pauses.after && pauseLabel(pauses.after, 'after') };
-    const boxPx = {
-      before: pauseLabels.before ? this.#pauseBoxPx(pauseLabels.before.lines, plotPx) : 0,
-      after: pauseLabels.after ? this.#pauseBoxPx(pauseLabels.after.lines, plotPx) : 0,
-    };
-    // Over a plot too narrow for both labels (under some 130 px), the steps keep a tick's width.
-    const xPerPx = (endX - startX) / Math.max(TICK_PX, plotPx - boxPx.before - boxPx.after);
-    const [beforeX, afterX] = [boxPx.before * xPerPx, boxPx.after * xPerPx];
+    const xPerPx = (endX - startX) / stepsWidthPx(widths, pauses.before !== null, pauses.after !== null);
+    const [beforeX, afterX] = [widths.pauseBeforePx * xPerPx, widths.pauseAfterPx * xPerPx];
     this.#pauseBeforeX = pauses.before ? startX - beforeX : null;
     const breaks: XBreak[] = [];
-    if (pauseLabels.before) breaks.push({ fromX: startX - beforeX, toX: startX, ...pauseLabels.before });
-    if (pauseLabels.after) breaks.push({ fromX: endX, toX: endX + afterX, ...pauseLabels.after });
+    if (pauses.before) breaks.push({ fromX: startX - beforeX, toX: startX, ...pauses.before.label });
+    if (pauses.after) breaks.push({ fromX: endX, toX: endX + afterX, ...pauses.after.label });
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
@@ -374,8 +404,5 @@ export class TimingDiagram {
       data,
       this.#onPick,
     );
-    // A first chart's plot is narrower than the panel less LABELS_PX (its lane labels' axis is
-    // measured as it is made): its pauses again at the plot's own width, so that their boxes hold their labels.
-    if (breaks.length > 0 && Math.abs(this.#chart.plotWidthPx - plotPx) > 0.5) this.#draw({ trains, stepSeconds }, pauses);
   }
 }

@@ -15,8 +15,10 @@
  * window's edge): the window is cut where they start, as at a pause. A move
  * less than that faster (3 to 9 times) is drawn beside the slow one, in a
  * window of fewer steps where the counted one would draw a gap under half a
- * tick (NARROWEST_GAP_TICKS): the most steps around the current one that
- * leave each pulse apart from the next.
+ * tick (NARROWEST_GAP_TICKS) of the width the steps get, the plot's less
+ * the boxes of the pauses at its edges (PlotWidths, which the diagram
+ * draws them over): the most steps around the current one that leave each
+ * pulse apart from the next.
  */
 import { drawnFromZero, LONE_STEP_SECONDS } from './pulse-edges.js';
 
@@ -32,8 +34,15 @@ import { drawnFromZero, LONE_STEP_SECONDS } from './pulse-edges.js';
 export const PAUSE_FACTOR = 10;
 
 /**
- * The narrowest gap between two steps drawn, in ticks of the panel (the
- * diagram's TICK_PX each): a STEP pulse is drawn half its gap wide, so half
+ * A tick's width, CSS pixels: the diagram shows as many steps as its plot
+ * has ticks, so that a STEP pulse (half a tick) stays apart from the next.
+ */
+export const TICK_PX = 14;
+
+/**
+ * The narrowest gap between two steps drawn, in ticks (TICK_PX each) of the
+ * width the steps get (the plot's, less the boxes of the pauses drawn at its
+ * edges, stepsWidthPx): a STEP pulse is drawn half its gap wide, so half
  * a tick leaves its rise and fall 3.5 px apart; where a move 3 to 9 times
  * faster came beside a slow one's steps (under PAUSE_FACTOR, no cut) its
  * pulses were a third to a tenth of a tick apart, a bar. A window of steps
@@ -43,6 +52,27 @@ export const PAUSE_FACTOR = 10;
  * steps (at most 8 of 90 in the sample programs at 80 steps/mm).
  */
 const NARROWEST_GAP_TICKS = 0.5;
+
+/**
+ * The widths a window of steps is drawn over, CSS pixels: the plot's, and
+ * the boxes of the pauses it can start and end at (edgePauses': a box's
+ * width where the window starts or ends at its pause, else not drawn).
+ */
+export interface PlotWidths {
+  plotPx: number;
+  pauseBeforePx: number;
+  pauseAfterPx: number;
+}
+
+/**
+ * The width the steps drawn get, CSS pixels: the plot's less the boxes of
+ * the pauses drawn before and after them; a tick's at least, where a plot
+ * is too narrow for both boxes (under some 130 px, a page under 300 px
+ * wide), which then come out that much narrower than their labels.
+ */
+export function stepsWidthPx(widths: PlotWidths, pauseBefore: boolean, pauseAfter: boolean): number {
+  return Math.max(TICK_PX, widths.plotPx - (pauseBefore ? widths.pauseBeforePx : 0) - (pauseAfter ? widths.pauseAfterPx : 0));
+}
 
 /** Steps each side of a step whose gaps, with its own, have the median that is the steps' own spacing there (one long gap among them does not move it). */
 const SPACING_GAPS = 4;
@@ -93,16 +123,11 @@ export function neededSteps(pointIndex: number, ticks: number, steps: number): {
 }
 
 /**
- * The steps to draw for point `pointIndex`, at most `ticks` of a program of
- * `steps`, and the pauses it starts or ends at. `times`: the instants of
- * steps firstStep..firstStep + times.length, seconds (at least
- * `neededSteps`); null for a trace (one tick a step, no pause): the window
- * counted in steps. `endSeconds`: the program's end (its duration), later
- * than its last step's instant when it ends with a dwell.
+ * The cuts nearest the current step of point `pointIndex` (stepWindow's
+ * arguments): the window stays between them, steps lo..hi at most, and the
+ * pauses it can start and end at there.
  */
-export function stepWindow(pointIndex: number, ticks: number, steps: number, firstStep: number, times: Float64Array | null, endSeconds?: number): StepWindow {
-  const counted = countedWindow(pointIndex, ticks, steps);
-  if (!times || steps === 0) return { ...counted, pauseBefore: null, pauseAfter: null };
+function cutsAround(pointIndex: number, ticks: number, steps: number, firstStep: number, times: Float64Array, endSeconds: number | undefined) {
   const at = (k: number) => times[k - firstStep]!;
   const first = firstStep;
   const last = firstStep + times.length - 1;
@@ -124,32 +149,104 @@ export function stepWindow(pointIndex: number, ticks: number, steps: number, fir
     PAUSE_FACTOR * spacingAround(times, (side > 0 ? k + 1 + SPACING_GAPS : k - SPACING_GAPS) - firstStep) <= spacingSeconds * (1 + 1e-9);
   const cutAt = (k: number, side: 1 | -1) => pauseAt(k) || fasterAt(k, side);
   const cut = (k: number): Pause => (pauseAt(k) ? { fromSeconds: at(k), toSeconds: at(k + 1) } : { fromSeconds: at(k), toSeconds: at(k + 1), faster: true });
-  // The cuts nearest the current step: the window stays between them.
   let lo = c;
   while (lo > first && lo > c - ticks + 1 && !cutAt(lo - 1, -1)) lo--;
   let hi = c;
   while (hi < last && hi < c + ticks - 1 && !cutAt(hi, 1)) hi++;
+  // The steps between lo and hi have no cut between them: a window starts at a pause only at lo
+  // (the wait before the program's first step when lo is 0, where it is not drawn from 0 s), and
+  // ends at one only after hi (a dwell after the program's last step when that is hi).
+  let before: EdgePause | null = null;
+  if (lo > 0 && cutAt(lo - 1, -1)) before = { pause: cut(lo - 1), farStep: lo - 1 };
+  else if (lo === 0 && at(0) > PAUSE_FACTOR * spacingSeconds) before = { pause: { fromSeconds: 0, toSeconds: at(0) }, farStep: -1 };
+  let after: EdgePause | null = null;
+  if (hi + 1 < steps && cutAt(hi, 1)) after = { pause: cut(hi), farStep: hi + 1 };
+  else if (hi + 1 === steps && endSeconds !== undefined && endSeconds - at(steps - 1) > PAUSE_FACTOR * spacingSeconds) {
+    after = { pause: { fromSeconds: at(steps - 1), toSeconds: endSeconds }, farStep: steps };
+  }
+  return { at, c, lo, hi, before, after };
+}
+
+/** A pause a window can start or end at, and the step on its far side: -1 before the program's first step, the program's steps after its last. */
+export interface EdgePause {
+  pause: Pause;
+  farStep: number;
+}
+
+/**
+ * The pauses a window for point `pointIndex` can start and end at (one at
+ * most each side; stepWindow's arguments): the diagram labels them, and
+ * sizes their boxes (PlotWidths) before the window is chosen with them.
+ * None for a trace.
+ */
+export function edgePauses(pointIndex: number, ticks: number, steps: number, firstStep: number, times: Float64Array | null, endSeconds?: number): { before: EdgePause | null; after: EdgePause | null } {
+  if (!times || steps === 0) return { before: null, after: null };
+  const { before, after } = cutsAround(pointIndex, ticks, steps, firstStep, times, endSeconds);
+  return { before, after };
+}
+
+/**
+ * The steps to draw for point `pointIndex`, at most `ticks` of a program of
+ * `steps`, and the pauses it starts or ends at. `times`: the instants of
+ * steps firstStep..firstStep + times.length, seconds (at least
+ * `neededSteps`); null for a trace (one tick a step, no pause): the window
+ * counted in steps. `endSeconds`: the program's end (its duration), later
+ * than its last step's instant when it ends with a dwell. `widths`: what
+ * the steps are drawn over (by default `ticks` ticks, no pause box), where
+ * no gap between two steps may come under NARROWEST_GAP_TICKS of a tick.
+ */
+export function stepWindow(
+  pointIndex: number,
+  ticks: number,
+  steps: number,
+  firstStep: number,
+  times: Float64Array | null,
+  endSeconds?: number,
+  widths: PlotWidths = { plotPx: ticks * TICK_PX, pauseBeforePx: 0, pauseAfterPx: 0 },
+): StepWindow {
+  const counted = countedWindow(pointIndex, ticks, steps);
+  if (!times || steps === 0) return { ...counted, pauseBefore: null, pauseAfter: null };
+  const { at, c, lo, hi, before, after } = cutsAround(pointIndex, ticks, steps, firstStep, times, endSeconds);
+  const drawn = (from: number, to: number) => times.subarray(from - firstStep, to - firstStep);
+  // The pauses window from..to - 1 is drawn with: its first steps drawn from 0 s instead of after a pause.
+  const pausesOf = (from: number, to: number) => {
+    const idle = drawnFromZero(drawn(from, to), from === 0);
+    return { idle, before: from === lo && before !== null && !idle ? before.pause : null, after: to === hi + 1 && after !== null ? after.pause : null };
+  };
+  /**
+   * Whether steps from..to - 1, of narrowest gap `narrowestSeconds` (none for steps with no gap between
+   * them), leave it NARROWEST_GAP_TICKS of a tick drawn as the diagram draws them: from their first
+   * step (from 0 s when drawn so) to the last and the last gap again (pulseEdges' right edge), over
+   * the plot less their pauses' boxes.
+   */
+  const readable = (from: number, to: number, narrowestSeconds: number) => {
+    const { idle, before: pauseBefore, after: pauseAfter } = pausesOf(from, to);
+    const lastGap = to - from > 1 ? at(to - 1) - at(to - 2) : 0;
+    const spanSeconds = at(to - 1) - (idle ? 0 : at(from)) + lastGap;
+    return spanSeconds * NARROWEST_GAP_TICKS * TICK_PX <= stepsWidthPx(widths, pauseBefore !== null, pauseAfter !== null) * narrowestSeconds;
+  };
   let fromStep = Math.max(counted.fromStep, lo);
   let toStep = Math.min(counted.toStep, hi + 1);
   // The steps cut off on one side are taken on the other.
   if (toStep < counted.toStep) fromStep = Math.max(lo, toStep - ticks);
   else if (fromStep > counted.fromStep) toStep = Math.min(hi + 1, fromStep + ticks);
   // Where that window presses its narrowest gap under NARROWEST_GAP_TICKS of a tick (a move some
-  // times faster than the one beside it, under PAUSE_FACTOR), another between the same cuts is drawn:
-  // of the windows that are readable, one that holds its step (windowHolds: it is not fetched again
-  // at once, nor its step drawn at an edge past which there are steps not shown), then the one of
-  // most steps, then the one whose step is nearest a third in, as the counted window's.
-  if (!readable(at, fromStep, toStep, ticks)) {
+  // times faster than the one beside it, under PAUSE_FACTOR, or the width pauses' boxes take), another
+  // between the same cuts is drawn: of the windows that are readable, one that holds its step
+  // (windowHolds: it is not fetched again at once, nor its step drawn at an edge past which there are
+  // steps not shown), then the one of most steps, then the one whose step is nearest a third in, as
+  // the counted window's.
+  if (!readable(fromStep, toStep, narrowestGap(at, fromStep, toStep))) {
     const wantBefore = c - counted.fromStep;
     const margin = edgeMargin(ticks);
     let best: { holds: boolean; steps: number; offThird: number } | null = null;
     for (let from = Math.max(lo, c - ticks + 1); from <= c; from++) {
-      // Steps from..to - 1, the narrowest gap between them and the last gap, one step more at a time.
+      // Steps from..to - 1 and the narrowest gap between them, one step more at a time.
       let narrowestSeconds = Number.POSITIVE_INFINITY;
       for (let to = from + 1; to <= Math.min(hi + 1, from + ticks); to++) {
         const lastGap = to - from > 1 ? at(to - 1) - at(to - 2) : 0;
         if (lastGap > 0) narrowestSeconds = Math.min(narrowestSeconds, lastGap);
-        if (to <= c || !fits(at(to - 1) - at(from) + lastGap, narrowestSeconds, ticks)) continue;
+        if (to <= c || !readable(from, to, narrowestSeconds)) continue;
         const candidate = {
           holds: (c - from >= margin || from === lo) && (to - 1 - c >= margin || to === hi + 1),
           steps: to - from,
@@ -162,15 +259,7 @@ export function stepWindow(pointIndex: number, ticks: number, steps: number, fir
       }
     }
   }
-  const drawn = times.subarray(fromStep - firstStep, toStep - firstStep);
-  let pauseBefore: Pause | null = null;
-  if (fromStep > 0 && cutAt(fromStep - 1, -1)) pauseBefore = cut(fromStep - 1);
-  // The wait before the program's first step: a pause where it is not drawn (drawnFromZero) and is one.
-  else if (fromStep === 0 && at(0) > PAUSE_FACTOR * spacingSeconds && !drawnFromZero(drawn, true)) pauseBefore = { fromSeconds: 0, toSeconds: at(0) };
-  let pauseAfter: Pause | null = null;
-  if (toStep < steps && cutAt(toStep - 1, 1)) pauseAfter = cut(toStep - 1);
-  // The wait after the program's last step (a closing dwell): a pause where it is one, as a dwell between steps is.
-  else if (toStep === steps && endSeconds !== undefined && endSeconds - at(steps - 1) > PAUSE_FACTOR * spacingSeconds) pauseAfter = { fromSeconds: at(steps - 1), toSeconds: endSeconds };
+  const { before: pauseBefore, after: pauseAfter } = pausesOf(fromStep, toStep);
   return { fromStep, toStep, pauseBefore, pauseAfter };
 }
 
@@ -194,29 +283,14 @@ function spacingAround(times: Float64Array, i: number): number {
   return gaps.length === 0 ? Number.NaN : gaps[Math.floor((gaps.length - 1) / 2)]!;
 }
 
-/**
- * Whether steps fromStep..toStep at instants `at(k)` (seconds), drawn over
- * `ticks` ticks, leave their narrowest gap at least NARROWEST_GAP_TICKS of
- * a tick (fits). Gaps of 0 (steps at one instant, drawn as one) do not count.
- */
-function readable(at: (k: number) => number, fromStep: number, toStep: number, ticks: number): boolean {
+/** The narrowest gap between steps fromStep..toStep - 1 at instants `at(k)`, seconds; gaps of 0 (steps at one instant, drawn as one) do not count: infinite for none. */
+function narrowestGap(at: (k: number) => number, fromStep: number, toStep: number): number {
   let narrowestSeconds = Number.POSITIVE_INFINITY;
   for (let k = fromStep; k + 1 < toStep; k++) {
     const gap = at(k + 1) - at(k);
     if (gap > 0) narrowestSeconds = Math.min(narrowestSeconds, gap);
   }
-  const lastGap = toStep - fromStep > 1 ? at(toStep - 1) - at(toStep - 2) : 0;
-  return fits(at(toStep - 1) - at(fromStep) + lastGap, narrowestSeconds, ticks);
-}
-
-/**
- * Whether steps spanning `spanSeconds` as drawn (first to last step and the
- * last gap again, pulseEdges' right edge) over `ticks` ticks leave a gap
- * of `narrowestSeconds` at least NARROWEST_GAP_TICKS of a tick (none for
- * steps with no gap between them).
- */
-function fits(spanSeconds: number, narrowestSeconds: number, ticks: number): boolean {
-  return spanSeconds * NARROWEST_GAP_TICKS <= ticks * narrowestSeconds;
+  return narrowestSeconds;
 }
 
 /** Steps a window keeps between its current step and an edge past which there are steps to show: an eighth of it. */
