@@ -28,7 +28,7 @@ use crate::request::{MAX_STEPS_LIMIT, Request, too_long_advice};
 use crate::starts::Starts;
 use serde::Serialize;
 use std::borrow::Cow;
-use std::cell::OnceCell;
+use std::cell::{OnceCell, RefCell};
 use std::mem::MaybeUninit;
 use std::rc::Rc;
 use std::sync::Arc;
@@ -567,6 +567,12 @@ pub struct Trace {
     /// reads points or appends this trace to another (a chord of an arc)
     /// never pays for.
     metrics: OnceCell<Metrics>,
+    /// The metrics' pass made so far, while it is made a stretch of points
+    /// at a time ([`Trace::advance_metrics`]) and not finished.
+    metrics_pass: RefCell<Option<MetricsPass>>,
+    /// A chart's rows made so far a stretch of points at a time
+    /// ([`Trace::advance_chart_rows`]), until they are taken.
+    chart_pass: RefCell<Option<ChartPass>>,
     /// What the algorithm promises of the deviation, when it promises one.
     deviation_bound: Option<DeviationBound>,
     /// What starts the note of segment i, made when read (a G-code move's
@@ -987,6 +993,8 @@ impl TraceBuilder {
             columns: self.columns,
             figures: self.figures,
             metrics: OnceCell::new(),
+            metrics_pass: RefCell::new(None),
+            chart_pass: RefCell::new(None),
             deviation_bound: None,
             note_prefix: None,
         }
@@ -1196,40 +1204,83 @@ impl Trace {
     /// Whole-path statistics, computed the first time they are asked for:
     /// one pass over the points, and the ties counted by replaying each
     /// segment from its first state (steps are recorded without their
-    /// decisions).
+    /// decisions). A pass begun by [`Self::advance_metrics`] is finished.
     pub fn metrics(&self) -> &Metrics {
         self.metrics.get_or_init(|| {
-            let mut acc = MetricsAccumulator::new(self.dims());
-            acc.add_steps(&self.steps);
-            // Over every point, each segment that took a step is one piece
-            // (one that took none has no tie to count), so its ties are
-            // counted here, the segment read once.
-            let mut ties = 0;
-            self.for_each_piece(0, self.steps() + 1, |piece| {
-                ties += piece.segment.state_at(0).count_ties(piece.segment.steps);
-                let mut largest = [0i64; MAX_AXES];
-                let walked = piece.walk_line(|deviation, numerator| {
-                    acc.add_deviation(deviation);
-                    for (l, v) in largest.iter_mut().zip(numerator) {
-                        *l = (*l).max(v.abs());
-                    }
-                });
-                if walked {
-                    // max |numerator / n| is max |numerator| / n: the division
-                    // and the rounding keep the order.
-                    let n = piece.segment.steps as f64;
-                    acc.add_axis_error(&largest.map(|l| l as f64 / n));
-                } else if !piece.walk_arc(|meter, offsets| {
-                    let (deviation, error) = meter.measure_at(offsets);
-                    acc.add_point(deviation, &error);
-                }) {
-                    piece.for_each_point(|_, p, meter, local, n| {
-                        acc.add_point(meter.deviation(p), &meter.axis_error(p, local, n));
-                    });
+            let mut pass = self
+                .metrics_pass
+                .take()
+                .unwrap_or_else(|| MetricsPass::new(self.dims()));
+            pass.advance(self, u64::MAX);
+            pass.finish()
+        })
+    }
+
+    /// Makes the metrics' pass over at most `max_points` more points (a
+    /// worker makes it a slice at a time, reporting and stopping between
+    /// slices: a helix's 1,500,000 points take a second or two); once it
+    /// has reached the last point, [`Self::metrics`] holds them. The
+    /// points go into one accumulator in point order, so the metrics are
+    /// those of one pass, to the bit, however the pass was sliced.
+    pub fn advance_metrics(&self, max_points: u64) -> PointsProgress {
+        let points = self.steps() + 1;
+        if self.metrics.get().is_some() {
+            return PointsProgress::of(points, points);
+        }
+        let mut pass = self
+            .metrics_pass
+            .take()
+            .unwrap_or_else(|| MetricsPass::new(self.dims()));
+        pass.advance(self, max_points);
+        let progress = PointsProgress::of(pass.next_point, points);
+        if progress.done {
+            let _ = self.metrics.set(pass.finish());
+        } else {
+            *self.metrics_pass.borrow_mut() = Some(pass);
+        }
+        progress
+    }
+
+    /// Ties among step indices `from..to`, each segment replayed from its
+    /// checkpoint before `from`.
+    fn count_ties(&self, from: u64, to: u64) -> u64 {
+        let mut ties = 0;
+        let mut k = from;
+        while k < to {
+            let segment = self.segment(self.segment_of_step(k));
+            let end = to.min(segment.first_step + segment.steps);
+            ties += Self::replay_to(&segment, k).count_ties(end - k);
+            k = end;
+        }
+        ties
+    }
+
+    /// Adds the deviation and axis error of points `from..to` to `acc`, in
+    /// point order.
+    fn measure_points(&self, from: u64, to: u64, acc: &mut MetricsAccumulator) {
+        self.for_each_piece(from, to, |piece| {
+            let mut largest = [0i64; MAX_AXES];
+            let walked = piece.walk_line(|deviation, numerator| {
+                acc.add_deviation(deviation);
+                for (l, v) in largest.iter_mut().zip(numerator) {
+                    *l = (*l).max(v.abs());
                 }
             });
-            acc.finish(ties)
-        })
+            if walked {
+                // max |numerator / n| is max |numerator| / n: the division
+                // and the rounding keep the order (so too across pieces of
+                // one segment, when a pass is sliced).
+                let n = piece.segment.steps as f64;
+                acc.add_axis_error(&largest.map(|l| l as f64 / n));
+            } else if !piece.walk_arc(|meter, offsets| {
+                let (deviation, error) = meter.measure_at(offsets);
+                acc.add_point(deviation, &error);
+            }) {
+                piece.for_each_point(|_, p, meter, local, n| {
+                    acc.add_point(meter.deviation(p), &meter.axis_error(p, local, n));
+                });
+            }
+        });
     }
 
     /// The packed steps with step indices in `from..to`.
@@ -1482,28 +1533,71 @@ impl Trace {
     /// A trace without segments has no ideal path: its ideal positions
     /// and deviations are NaN.
     pub fn chart_rows(&self, from: u64, to: u64, max_rows: u64) -> Vec<f64> {
+        let mut pass = ChartPass::new(self, from, to, max_rows);
+        self.fill_chart_rows(&mut pass, u64::MAX);
+        pass.out
+    }
+
+    /// Makes the rows of [`Self::chart_rows`]`(from, to, max_rows)` over at
+    /// most `max_points` more points (whole buckets of them, at least
+    /// one), kept until [`Self::take_chart_rows`] takes them: a worker makes
+    /// them a slice at a time, reporting and stopping between slices. A
+    /// bucket is made whole in one slice, from its own points alone, so the
+    /// rows are those of one pass, to the bit. Rows of another range or
+    /// row count begun before are dropped.
+    pub fn advance_chart_rows(
+        &self,
+        from: u64,
+        to: u64,
+        max_rows: u64,
+        max_points: u64,
+    ) -> PointsProgress {
+        let mut pass = match self.chart_pass.take() {
+            Some(pass) if (pass.from, pass.to, pass.max_rows) == (from, to, max_rows) => pass,
+            _ => ChartPass::new(self, from, to, max_rows),
+        };
+        self.fill_chart_rows(&mut pass, max_points);
+        let progress = PointsProgress::of(pass.next_point - from, to - from);
+        *self.chart_pass.borrow_mut() = Some(pass);
+        progress
+    }
+
+    /// The rows of [`Self::chart_rows`]`(from, to, max_rows)`: those
+    /// [`Self::advance_chart_rows`] made, the rest of them made now.
+    pub fn take_chart_rows(&self, from: u64, to: u64, max_rows: u64) -> Vec<f64> {
+        match self.chart_pass.take() {
+            Some(mut pass) if (pass.from, pass.to, pass.max_rows) == (from, to, max_rows) => {
+                self.fill_chart_rows(&mut pass, u64::MAX);
+                pass.out
+            }
+            _ => self.chart_rows(from, to, max_rows),
+        }
+    }
+
+    /// Makes the rows of `pass` over at most `max_points` more points,
+    /// rounded up to whole buckets.
+    fn fill_chart_rows(&self, pass: &mut ChartPass, max_points: u64) {
         let dims = self.dims();
-        let bucket = (to - from).div_ceil(max_rows.max(1)).max(1);
-        let rows = (to - from).div_ceil(bucket) as usize;
-        let mut out = vec![f64::NAN; rows * (3 + 2 * dims)];
-        let (head, deviation) = out.split_at_mut(rows * (1 + 2 * dims));
+        let (origin, bucket, rows) = (pass.from, pass.bucket, pass.rows);
+        let from = pass.next_point;
+        let to = pass
+            .to
+            .min(from.saturating_add(max_points.div_ceil(bucket).max(1).saturating_mul(bucket)));
+        pass.next_point = to;
+        let (head, deviation) = pass.out.split_at_mut(rows * (1 + 2 * dims));
         let (largest, smallest) = deviation.split_at_mut(rows);
-        largest.fill(f64::NEG_INFINITY);
-        smallest.fill(f64::INFINITY);
         if self.segments.is_empty() {
             // Nothing to measure against (a program with no move): the
             // points alone, the rest NaN.
             self.walk_points(from, to, |k, p| {
-                if (k - from) % bucket == 0 {
-                    let r = ((k - from) / bucket) as usize;
+                if (k - origin) % bucket == 0 {
+                    let r = ((k - origin) / bucket) as usize;
                     head[r] = k as f64;
                     for a in 0..dims {
                         head[(1 + a) * rows + r] = p.get(a) as f64;
                     }
                 }
             });
-            largest.fill(f64::NAN);
-            smallest.fill(f64::NAN);
         }
         // One row's share of point k: its coordinates and ideal position
         // when it starts a bucket (the error is computed only then), its
@@ -1528,10 +1622,10 @@ impl Trace {
                     (largest[r], smallest[r]) = (high, low);
                 }
                 (high, low) = (f64::NEG_INFINITY, f64::INFINITY);
-                let r = ((k - from) / bucket) as usize;
+                let r = ((k - origin) / bucket) as usize;
                 row = Some(r);
                 left = bucket;
-                debug_assert_eq!((k - from) % bucket, 0, "point {k} starts a bucket");
+                debug_assert_eq!((k - origin) % bucket, 0, "point {k} starts a bucket");
                 head[r] = k as f64;
                 let (p, error) = (point(), error());
                 for a in 0..dims {
@@ -1582,7 +1676,6 @@ impl Trace {
             // The last bucket, which no later point ends.
             (largest[r], smallest[r]) = (high, low);
         }
-        out
     }
 
     /// Calls `f` with each stretch of point indices `from..to` that belongs
@@ -1921,3 +2014,98 @@ pub const IDEAL_LINE_BOX_VALUES: usize = 6;
 
 /// Most columns one stepper may declare.
 const MAX_COLUMNS: usize = 32;
+
+/// How far a pass over a trace's points (its metrics, a chart's rows) made
+/// a slice at a time has got.
+#[derive(Serialize, Tsify, Debug, Clone, Copy, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct PointsProgress {
+    /// Points measured so far, of `points`.
+    pub points_done: u64,
+    pub points: u64,
+    pub done: bool,
+}
+
+impl PointsProgress {
+    fn of(points_done: u64, points: u64) -> PointsProgress {
+        PointsProgress {
+            points_done,
+            points,
+            done: points_done == points,
+        }
+    }
+}
+
+/// The metrics' pass made so far ([`Trace::advance_metrics`]).
+struct MetricsPass {
+    acc: MetricsAccumulator,
+    ties: u64,
+    /// The first point index not measured yet.
+    next_point: u64,
+}
+
+impl MetricsPass {
+    fn new(dims: usize) -> MetricsPass {
+        MetricsPass {
+            acc: MetricsAccumulator::new(dims),
+            ties: 0,
+            next_point: 0,
+        }
+    }
+
+    /// Measures at most `max_points` more points of `trace`, with the steps
+    /// to them (step k is counted with point k, so each once).
+    fn advance(&mut self, trace: &Trace, max_points: u64) {
+        let from = self.next_point;
+        let to = from.saturating_add(max_points).min(trace.steps() + 1);
+        let (first_step, end_step) = (from.min(trace.steps()), to.min(trace.steps()));
+        self.acc.add_steps(trace.step_range(first_step, end_step));
+        self.ties += trace.count_ties(first_step, end_step);
+        trace.measure_points(from, to, &mut self.acc);
+        self.next_point = to;
+    }
+
+    fn finish(self) -> Metrics {
+        self.acc.finish(self.ties)
+    }
+}
+
+/// A chart's rows made so far ([`Trace::chart_rows`]), a stretch of whole
+/// buckets at a time.
+struct ChartPass {
+    from: u64,
+    to: u64,
+    max_rows: u64,
+    /// Points per row: `ceil((to - from) / max_rows)`.
+    bucket: u64,
+    rows: usize,
+    /// Column-major, as [`Trace::chart_rows`] returns them.
+    out: Vec<f64>,
+    /// The first point index whose bucket is not made yet.
+    next_point: u64,
+}
+
+impl ChartPass {
+    fn new(trace: &Trace, from: u64, to: u64, max_rows: u64) -> ChartPass {
+        let dims = trace.dims();
+        let bucket = (to - from).div_ceil(max_rows.max(1)).max(1);
+        let rows = (to - from).div_ceil(bucket) as usize;
+        let mut out = vec![f64::NAN; rows * (3 + 2 * dims)];
+        if !trace.segments.is_empty() {
+            // A trace without segments keeps NaN deviations.
+            let deviation = &mut out[rows * (1 + 2 * dims)..];
+            let (largest, smallest) = deviation.split_at_mut(rows);
+            largest.fill(f64::NEG_INFINITY);
+            smallest.fill(f64::INFINITY);
+        }
+        ChartPass {
+            from,
+            to,
+            max_rows,
+            bucket,
+            rows,
+            out,
+            next_point: from,
+        }
+    }
+}

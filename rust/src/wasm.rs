@@ -351,6 +351,15 @@ impl TraceHandle {
     fn step_range(&self, from: u32, to: u32) -> Result<(u64, u64), JsValue> {
         self.check_range("step indices", from, to, self.0.steps())
     }
+
+    /// The point range of a chart of at most `max_rows` rows, checked.
+    fn chart_range(&self, from: u32, to: u32, max_rows: u32) -> Result<(u64, u64), JsValue> {
+        let range = self.point_range(from, to)?;
+        if max_rows == 0 {
+            return Err(to_js_error(&Error::field("maxRows", "must be at least 1")));
+        }
+        Ok(range)
+    }
 }
 
 #[wasm_bindgen]
@@ -373,6 +382,13 @@ impl TraceHandle {
     #[wasm_bindgen(unchecked_return_type = "Metrics")]
     pub fn metrics(&self) -> JsValue {
         to_js(self.0.metrics())
+    }
+
+    /// Makes the metrics' pass over at most `max_points` more points
+    /// (`Trace::advance_metrics`); once done, `metrics` returns them at once.
+    #[wasm_bindgen(js_name = advanceMetrics, unchecked_return_type = "PointsProgress")]
+    pub fn advance_metrics(&self, max_points: u32) -> JsValue {
+        to_js(&self.0.advance_metrics(max_points.into()))
     }
 
     /// The box every point lies in (a pass over the steps on each call).
@@ -528,11 +544,36 @@ impl TraceHandle {
     /// (buckets of points past that), column-major: see `Trace::chart_rows`.
     #[wasm_bindgen(js_name = chartRows)]
     pub fn chart_rows(&self, from: u32, to: u32, max_rows: u32) -> Result<Vec<f64>, JsValue> {
-        let (from, to) = self.point_range(from, to)?;
-        if max_rows == 0 {
-            return Err(to_js_error(&Error::field("maxRows", "must be at least 1")));
-        }
+        let (from, to) = self.chart_range(from, to, max_rows)?;
         Ok(self.0.chart_rows(from, to, max_rows.into()))
+    }
+
+    /// Makes the rows of `chartRows(from, to, max_rows)` over at most
+    /// `max_points` more points (`Trace::advance_chart_rows`), kept until
+    /// `takeChartRows` takes them.
+    #[wasm_bindgen(js_name = advanceChartRows, unchecked_return_type = "PointsProgress")]
+    pub fn advance_chart_rows(
+        &self,
+        from: u32,
+        to: u32,
+        max_rows: u32,
+        max_points: u32,
+    ) -> Result<JsValue, JsValue> {
+        let (from, to) = self.chart_range(from, to, max_rows)?;
+        Ok(to_js(&self.0.advance_chart_rows(
+            from,
+            to,
+            max_rows.into(),
+            max_points.into(),
+        )))
+    }
+
+    /// The rows of `chartRows(from, to, max_rows)`: those `advanceChartRows`
+    /// made, the rest made now.
+    #[wasm_bindgen(js_name = takeChartRows)]
+    pub fn take_chart_rows(&self, from: u32, to: u32, max_rows: u32) -> Result<Vec<f64>, JsValue> {
+        let (from, to) = self.chart_range(from, to, max_rows)?;
+        Ok(self.0.take_chart_rows(from, to, max_rows.into()))
     }
 
     /// This trace against `other` (same dims): both digests, the first

@@ -21,6 +21,7 @@
  *   p.trace;           // a Trace of every step
  */
 export { trace, algorithms, Trace } from './trace.js';
+export type { PointsPassOptions } from './trace.js';
 export { catalogue } from './catalogue.js';
 export { AXIS_NAMES } from './axes.js';
 export { VoxpathError } from './errors.js';

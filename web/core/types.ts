@@ -51,6 +51,7 @@ export type {
   PerAxis,
   PerAxisInfo,
   PointBounds,
+  PointsProgress,
   Reading,
   SignedAxis,
   StepDetail,
