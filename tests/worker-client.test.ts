@@ -81,7 +81,7 @@ describe('TraceClient', () => {
 
   it("turns the core's input errors into InputRejected naming the field", async () => {
     const { client, workers, crashes } = setUp();
-    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [2e9, 0, 0] });
+    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [2e9, 0, 0] }).result;
     const { id } = workers[0]!.received[0]!;
     workers[0]!.reply({ id, ok: false, failure: 'input', error: { field: 'to', message: 'x = 2000000000 is outside ±2^30' } });
     const error = await traced.catch((e: unknown) => e);
@@ -93,7 +93,7 @@ describe('TraceClient', () => {
 
   it('on a crash rejects everything pending, reports it once and starts a fresh worker on the next request', async () => {
     const { client, workers, crashes } = setUp();
-    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] });
+    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] }).result;
     workers[0]!.reply({ id: workers[0]!.received[0]!.id, ok: true, value: PATH });
     const trace = await traced;
     expect(trace.alive).toBe(true);
@@ -149,7 +149,7 @@ describe('TraceClient', () => {
     expect(pointsEvery(1001, POINTS_SENT)).toBe(101);
     expect(pointsEvery(99, POINTS_SENT)).toBe(1);
     expect(pointsEvery(100, POINTS_SENT)).toBe(10);
-    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1000, 0, 0] });
+    const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1000, 0, 0] }).result;
     const request = workers[0]!.received[0]!;
     expect(request).toMatchObject({ request: { kind: 'trace', pointsSent: POINTS_SENT } });
     const sampledPoints = Int32Array.from({ length: 10 * 3 }, (_, i) => (i % 3 === 0 ? (i / 3) * 101 : 0));
@@ -164,7 +164,7 @@ describe('TraceClient', () => {
     expect(Array.from(await range)).toEqual([200, 0, 0, 201, 0, 0, 202, 0, 0]);
 
     // A short path is held whole: its ranges are read without asking.
-    const short = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] });
+    const short = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] }).result;
     workers[0]!.reply({ id: workers[0]!.received[2]!.id, ok: true, value: PATH });
     expect(Array.from(await (await short).pointsInRange(1, 2))).toEqual([1, 1, 0]);
     expect(workers[0]!.received).toHaveLength(3);

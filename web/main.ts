@@ -261,10 +261,28 @@ function run(catalogue: Catalogue): void {
       },
       () => page.cancel(),
     ),
+    traceProgress: new RunProgress(
+      {
+        bar: byId('trace-progress', HTMLProgressElement),
+        cancel: byId('trace-cancel', HTMLButtonElement),
+        box: byId('trace-run', HTMLDivElement),
+        text: byId('trace-run-text', HTMLSpanElement),
+        verb: 'Measuring',
+      },
+      () => page.cancel(),
+    ),
     gcodePanel,
     timeline,
     inspector,
-    charts: new PathCharts(byId('charts', HTMLDivElement), goTo),
+    charts: new PathCharts(byId('charts', HTMLDivElement), goTo, {
+      bar: byId('charts-progress', HTMLProgressElement),
+      cancel: byId('charts-cancel', HTMLButtonElement),
+      box: byId('charts-run', HTMLDivElement),
+      text: byId('charts-run-text', HTMLSpanElement),
+      verb: 'Charting',
+      cancelled: byId('charts-cancelled', HTMLParagraphElement),
+      start: byId('charts-draw', HTMLButtonElement),
+    }),
     comparePanel: new ComparePanel(byId('comparison', HTMLDivElement), goTo),
     // Its "Go to point" also brings the difference close: on a long path it was too small to see.
     checkPanel: new CheckPanel(

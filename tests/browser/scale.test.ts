@@ -200,6 +200,88 @@ describe('two long lines compared on a software GPU', () => {
   });
 });
 
+/**
+ * Once the element of test id `box` shows (a run's bar: its first report),
+ * clicks the element of test id `click`, or types `value` into the field
+ * of test id `field`, from inside the page, at once: a click from the test
+ * comes tens of ms later, after a run shorter than that (a chart's rows in
+ * Chromium's worker) had ended. Resolves when done.
+ */
+function onceShown(page: Page, box: string, act: { click: string } | { field: string; value: string }): Promise<void> {
+  return page.evaluate(
+    ([box, act]) =>
+      new Promise<void>((resolve) => {
+        const target = document.querySelector(`[data-testid="${box}"]`)!;
+        const run = () => {
+          if ((target as HTMLElement).hidden) return;
+          observer.disconnect();
+          if ('click' in act) (document.querySelector(`[data-testid="${act.click}"]`) as HTMLButtonElement).click();
+          else {
+            const field = document.querySelector(`[data-testid="${act.field}"]`) as HTMLInputElement;
+            field.value = act.value;
+            field.dispatchEvent(new Event('input', { bubbles: true }));
+          }
+          resolve();
+        };
+        const observer = new MutationObserver(run);
+        observer.observe(target, { attributes: true, attributeFilter: ['hidden'] });
+        run();
+      }),
+    [box, act] as const,
+  );
+}
+
+describe("a 1,498,840-step helix's metrics and charts", () => {
+  it('are made in the worker with their progress and a Cancel, and a change of the inputs or a Cancel stops them', { timeout: 180_000 }, async () => {
+    // 264 turns of r = 1000 rising 300, near the page's 1,500,000 steps:
+    // each point's distance to the helix is a search of its own, and its
+    // metrics (1 to 2 s in Node) and its charts' rows (0.4 to 0.8 s) were
+    // each one call in the worker, with nothing said and no Cancel, which a
+    // changed input waited behind.
+    const helix = '?algorithm=helix&from=1000,0,0&to=1000,0,300&center=0,0,0&plane=xy&turns=264';
+    const p = await openPage(helix, { initScript: observe });
+    const { page } = p;
+    const status = page.getByTestId('trace-status');
+    await page.getByTestId('trace-run-text').filter({ hasText: /^Measuring: [\d,]+ of 1,498,841 points$/ }).waitFor();
+    await status.filter({ hasText: /^Measuring the path: [\d,]+ of 1,498,841 points…$/ }).waitFor();
+    // Cancelled while measured: no path, and nothing runs on.
+    await page.getByTestId('trace-cancel').click();
+    await status.filter({ hasText: /^Cancelled\.$/ }).waitFor({ timeout: 2000 });
+    expect(await page.getByTestId('trace-run').isHidden()).toBe(true);
+    expect(await page.getByTestId('step-counter').innerText()).not.toMatch(/of 1,498,840$/);
+
+    // Measured to its end, charted with a bar; cancelled at the bar's first report.
+    const cancelled = onceShown(page, 'charts-run', { click: 'charts-cancel' });
+    await page.getByTestId('input-turns').fill('263');
+    await page.getByTestId('step-counter').filter({ hasText: /of 1,493,184$/ }).waitFor({ timeout: 60_000 });
+    await cancelled;
+    expect(await page.getByTestId('charts-run-text').innerText()).toMatch(/^Charting: [\d,]+ of 1,493,185 points$/);
+    await page.getByTestId('charts-cancelled').waitFor({ timeout: 2000 });
+    expect(await page.getByTestId('charts-run').isHidden()).toBe(true);
+    expect(await page.getByTestId('charts').locator('.uplot').count()).toBe(0);
+    await page.getByTestId('charts-draw').click();
+    await expect.poll(() => page.getByTestId('charts').locator('.uplot').count(), { timeout: 30_000 }).toBe(2);
+    expect(await page.getByTestId('charts-cancelled').isHidden()).toBe(true);
+
+    // A change of the inputs at the new metrics' first report stops them:
+    // the status line goes on to the path typed, whose metrics are measured
+    // at once, and which is shown and charted.
+    await takeObserved(page);
+    const changed = onceShown(page, 'trace-run', { field: 'input-turns', value: '261' });
+    await page.getByTestId('input-turns').fill('262');
+    await changed;
+    await status.filter({ hasText: /^Measuring the path: [\d,]+ of 1,481,873 points…$/ }).waitFor({ timeout: 5000 });
+    await page.getByTestId('step-counter').filter({ hasText: /of 1,481,872$/ }).waitFor({ timeout: 60_000 });
+    await expect.poll(() => page.getByTestId('charts').locator('.uplot').count(), { timeout: 60_000 }).toBe(2);
+    expect(await status.innerText()).toMatch(/^helix: 1,481,872 steps /);
+    const { longestTask } = worst(await takeObserved(page));
+    console.info(`helix near 1,500,000 steps: longest task ${longestTask.toFixed(0)} ms`);
+    expect(longestTask).toBeLessThan(LONG_TASK_BOUND_MS);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
 describe("a 1,400,000-step line's export", () => {
   it('is written in the worker with its progress and a Cancel, off the main thread, and a change of the inputs cancels it', { timeout: 120_000 }, async () => {
     // 1,400,001 rows of CSV (121 MB): it took 3 s with no sign of it, and

@@ -3,51 +3,95 @@
  * position against the step (6a: the point as stepped, and the ideal path at
  * the same progress), and each point's distance from the ideal path (6b's
  * straightness error) with the largest one marked. Their cursor is the
- * page's step. The rows come from the core through the worker, in one call
- * for the whole path (ChartSeries): every point, or buckets of points on a
+ * page's step. The rows come from the core through the worker, in one
+ * request for the whole path (ChartSeries), made a slice of points at a
+ * time with a bar and a Cancel: every point, or buckets of points on a
  * long path, where the deviation chart shows each bucket's range as a band.
  */
 import type uPlot from 'uplot';
-import type { ChartSeries, TraceSummary } from '../core/types.js';
+import type { ChartSeries, PointsProgress, TraceSummary } from '../core/types.js';
+import { pointsBar, RunProgress, type RunProgressElements, throttled } from '../form/run-progress.js';
 import { AXIS_NAMES } from '../format.js';
 import { afterNextFrame } from '../main-thread.js';
 import { AXIS_COLOURS, PALETTE } from '../scene/palette.js';
+import { Cancelled, type Running } from '../worker/client.js';
 import { StepChart } from './chart.js';
 
 /** Rows the charts ask for: about one per pixel of a wide chart. */
 const CHART_POINTS = 2000;
 
 export interface ChartedTrace extends Pick<TraceSummary, 'dims' | 'deviationBound'> {
-  series(maxPoints: number): Promise<ChartSeries>;
+  series(maxPoints: number, onProgress: (progress: PointsProgress) => void): Running<ChartSeries>;
+}
+
+/** What the charts show while their rows are made, and after a Cancel. */
+export interface ChartsRunElements extends RunProgressElements {
+  /** Says the charts were cancelled, with a button (`start`) that draws them. */
+  cancelled: HTMLElement;
+  start: HTMLButtonElement;
 }
 
 export class PathCharts {
   readonly #container: HTMLElement;
   readonly #onPick: (pointIndex: number) => void;
+  readonly #progress: RunProgress;
+  readonly #cancelledNote: HTMLElement;
   #charts: StepChart[] = [];
   #request = 0;
   #pointIndex = 0;
+  /** The trace charted (or to chart), and its rows on their way from the worker. */
+  #trace: ChartedTrace | undefined;
+  #running: Running<ChartSeries> | undefined;
 
-  constructor(container: HTMLElement, onPick: (pointIndex: number) => void) {
+  constructor(container: HTMLElement, onPick: (pointIndex: number) => void, run: ChartsRunElements) {
     this.#container = container;
     this.#onPick = onPick;
+    // The rows of every point of a long path take a while (a helix's 1,500,000 about a second): a bar and a Cancel.
+    this.#progress = new RunProgress({ ...run, start: undefined }, () => this.cancel());
+    this.#cancelledNote = run.cancelled;
+    run.start.addEventListener('click', () => void this.setTrace(this.#trace, this.#pointIndex));
   }
 
   /**
    * Charts `trace` (undefined: none) once the worker sends its rows, its
    * cursor at point index `pointIndex` (a link's step: the cursor stayed at
-   * 0 until the step changed).
+   * 0 until the step changed). The rows asked for before are cancelled.
    */
   async setTrace(trace: ChartedTrace | undefined, pointIndex: number): Promise<void> {
     const request = ++this.#request;
+    this.#running?.cancel();
+    this.#running = undefined;
+    this.#trace = trace;
     this.#pointIndex = pointIndex;
+    this.#progress.set(undefined);
+    this.#cancelledNote.hidden = true;
     // The new path is drawn first: the worker builds the series after that frame.
     await afterNextFrame();
     if (request !== this.#request) return;
-    const series = trace ? await trace.series(CHART_POINTS) : undefined;
-    if (request !== this.#request) return;
-    for (const chart of this.#charts) chart.destroy();
-    this.#charts = [];
+    let series: ChartSeries | undefined;
+    if (trace) {
+      const current = () => request === this.#request;
+      this.#running = trace.series(
+        CHART_POINTS,
+        throttled(current, (progress) => this.#progress.set(pointsBar(progress))),
+      );
+      try {
+        series = await this.#running.result;
+      } catch (error) {
+        // Rows asked for a trace no longer charted: dropped (its trace may be freed meanwhile).
+        if (!current()) return;
+        this.#running = undefined;
+        this.#progress.set(undefined);
+        if (!(error instanceof Cancelled)) throw error;
+        this.#destroy();
+        this.#cancelledNote.hidden = false;
+        return;
+      }
+      if (!current()) return;
+      this.#running = undefined;
+      this.#progress.set(undefined);
+    }
+    this.#destroy();
     if (!trace || !series) return;
     const axes = AXIS_NAMES.slice(0, trace.dims);
     const x = series.pointIndex;
@@ -96,6 +140,16 @@ export class PathCharts {
       ),
     );
     for (const chart of this.#charts) chart.showPoint(this.#pointIndex);
+  }
+
+  /** Stops the rows on their way (a Cancel, or new inputs whose path will replace this one): the charts say so, with Draw charts. */
+  cancel(): void {
+    this.#running?.cancel();
+  }
+
+  #destroy(): void {
+    for (const chart of this.#charts) chart.destroy();
+    this.#charts = [];
   }
 
   /** Moves the charts' cursor to `pointIndex`. */

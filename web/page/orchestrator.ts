@@ -20,12 +20,12 @@
 import type { PathCharts } from '../charts/path-charts.js';
 import type { CheckPanel } from '../check/check-panel.js';
 import type { ComparePanel } from '../compare/compare-panel.js';
-import type { StepDetail, TraceOptions } from '../core/types.js';
+import type { PointsProgress, StepDetail, TraceOptions } from '../core/types.js';
 import type { ExperimentPanel } from '../experiment/experiment-panel.js';
 import type { AlgorithmInputs } from '../form/algorithm-inputs.js';
 import { INPUTS_VALIDITY, type InputsValidity, type OptionsForm } from '../form/options-form.js';
 import { diagnosticText, pathLimitAdvice } from '../form/page-advice.js';
-import { linesBar, type RunProgress } from '../form/run-progress.js';
+import { linesBar, pointsBar, type RunProgress, throttled } from '../form/run-progress.js';
 import type { GcodePanel } from '../gcode/gcode-panel.js';
 import type { TimingDiagram } from '../gcode/timing-diagram.js';
 import type { Inspector } from '../inspector/inspector.js';
@@ -47,17 +47,6 @@ import type { PathViews } from './path-views.js';
 import { mainTrace, type Shown } from './shown.js';
 import type { Status } from './status.js';
 
-/**
- * A long run's progress (a G-code program's, the experiment's) is shown at
- * once, then at most this often, ms, and at its end.
- * The worker reports it after every slice of lines (about 20 ms), and each
- * update repaints the page: where the compositor draws on the CPU, that
- * took the run's time in the worker from 50 to 55 ms to 58 to 71 ms at
- * 1 step/mm for the G-code bench's program on the project's 2-core
- * machine. Four updates a second are as many as a reader follows.
- */
-const PROGRESS_EVERY_MS = 250;
-
 /** Quiet time after the last keystroke before re-tracing, ms. */
 const RETRACE_DELAY_MS = 250;
 
@@ -67,17 +56,28 @@ const RETRACE_DELAY_MS = 250;
  * which no circle takes) the other side, traced all the same, is freed here:
  * nothing else held it, and each refused change kept one more in the worker.
  */
-async function traceBoth(client: TraceClient, [first, second]: readonly [ComparedSide, ComparedSide]): Promise<[MeasuredTrace, MeasuredTrace]> {
-  const [a, b] = await Promise.allSettled([client.trace(first.options, first.distinction), client.trace(second.options, second.distinction)]);
-  if (a.status === 'rejected') {
-    if (b.status === 'fulfilled') b.value.free();
-    throw refusedBy(traceName(first.options.algorithm, first.distinction), a.reason);
-  }
-  if (b.status === 'rejected') {
-    a.value.free();
-    throw refusedBy(traceName(second.options.algorithm, second.distinction), b.reason);
-  }
-  return [a.value, b.value];
+function traceBoth(client: TraceClient, [first, second]: readonly [ComparedSide, ComparedSide], onProgress: (progress: PointsProgress) => void): Running<[MeasuredTrace, MeasuredTrace]> {
+  // Their metrics' passes, reported as one: the points of both measured, of all.
+  const sides: [PointsProgress | undefined, PointsProgress | undefined] = [undefined, undefined];
+  const report = (side: 0 | 1) => (progress: PointsProgress) => {
+    sides[side] = progress;
+    const [a, b] = sides;
+    if (a && b) onProgress({ pointsDone: a.pointsDone + b.pointsDone, points: a.points + b.points, done: a.done && b.done });
+  };
+  const runs = [client.trace(first.options, report(0), first.distinction), client.trace(second.options, report(1), second.distinction)] as const;
+  const both = async (): Promise<[MeasuredTrace, MeasuredTrace]> => {
+    const [a, b] = await Promise.allSettled(runs.map((r) => r.result));
+    if (a.status === 'rejected') {
+      if (b.status === 'fulfilled') b.value.free();
+      throw refusedBy(traceName(first.options.algorithm, first.distinction), a.reason);
+    }
+    if (b.status === 'rejected') {
+      a.value.free();
+      throw refusedBy(traceName(second.options.algorithm, second.distinction), b.reason);
+    }
+    return [a.value, b.value];
+  };
+  return { result: both(), cancel: () => runs.forEach((r) => r.cancel()) };
 }
 
 /**
@@ -102,6 +102,8 @@ export interface PageParts {
   experimentForm: OptionsForm;
   /** The experiment's progress bar and Cancel. */
   experimentProgress: RunProgress;
+  /** The bar and Cancel of a path's metrics, measured in the worker (trace and compare modes). */
+  traceProgress: RunProgress;
   gcodePanel: GcodePanel;
   timeline: Timeline;
   inspector: Inspector;
@@ -131,7 +133,7 @@ export class Orchestrator {
   #shown: Shown = {};
   /** Counts runs of the core, so only the latest one's answer is shown. */
   #latestRun = 0;
-  /** The long run under way (a program, an experiment), to cancel. */
+  /** The long run under way (a path's metrics, a program, an experiment), to cancel. */
   #running: Running<unknown> | undefined;
   /** The G-code line last picked (pickLine), whose cells are on their way. */
   #pickedLine: LineSteps | undefined;
@@ -186,7 +188,7 @@ export class Orchestrator {
     return this.#shown;
   }
 
-  /** Stops the long run under way (a G-code program, the experiment). */
+  /** Stops the long run under way (a path's metrics, a G-code program, the experiment). */
   cancel(): void {
     this.#running?.cancel();
   }
@@ -276,19 +278,16 @@ export class Orchestrator {
     this.#shown = {};
   }
 
-  /**
-   * `show`, called for run `run`'s progress at once, then at most every
-   * PROGRESS_EVERY_MS, and at its end; not once a later run has started.
-   */
+  /** `show`, throttled (run-progress.ts), for run `run`'s progress; not once a later run has started. */
   #throttled<Progress extends { done: boolean }>(run: number, show: (progress: Progress) => void): (progress: Progress) => void {
-    let shownAt = -Infinity;
-    return (progress) => {
-      const now = performance.now();
-      // The last report is shown too, so the bar does not end at its first.
-      if (run !== this.#latestRun || (now - shownAt < PROGRESS_EVERY_MS && !progress.done)) return;
-      shownAt = now;
-      show(progress);
-    };
+    return throttled(() => run === this.#latestRun, show);
+  }
+
+  /** How far the metrics' pass over the path (or both paths) has got, on its bar and the status line. */
+  #measuring(progress: PointsProgress): void {
+    const bar = pointsBar(progress);
+    this.#p.traceProgress.set(bar);
+    this.#p.status.measuring(bar);
   }
 
   /** Runs the core on the current inputs and shows what it returns (unless a later run has started). */
@@ -298,8 +297,11 @@ export class Orchestrator {
     const state = p.store.state;
     this.#running?.cancel();
     this.#running = undefined;
+    // The charts' rows of the path about to be replaced would hold up the new one's in the worker.
+    p.charts.cancel();
     p.gcodePanel.setProgress(undefined);
     p.experimentProgress.set(undefined);
+    p.traceProgress.set(undefined);
     p.status.tracing(state.mode);
     try {
       let next: Shown;
@@ -307,9 +309,15 @@ export class Orchestrator {
       if (state.mode === 'trace') {
         const [info] = tracedAlgorithms(state, p.catalogue.algorithms);
         ruleOptions = traceOptions(state, info!);
-        next = { a: await p.client.trace(ruleOptions) };
+        const started = p.client.trace(ruleOptions, this.#throttled(run, (progress) => this.#measuring(progress)));
+        this.#running = started;
+        next = { a: await started.result };
       } else if (state.mode === 'compare') {
-        const [a, b] = await traceBoth(p.client, comparedRequests(state, p.catalogue.algorithms));
+        const started = traceBoth(p.client, comparedRequests(state, p.catalogue.algorithms), this.#throttled(run, (progress) => this.#measuring(progress)));
+        this.#running = started;
+        const [a, b] = await started.result;
+        p.traceProgress.set(undefined);
+        p.status.tracing(state.mode);
         next = { a, b, difference: await p.client.difference(a, b) };
       } else if (state.mode === 'gcode') {
         const started = p.client.runGcode(
@@ -364,8 +372,8 @@ export class Orchestrator {
     } catch (error) {
       if (run !== this.#latestRun || error instanceof CoreCrash) return;
       if (error instanceof Cancelled) {
-        const kept = this.#shown.program ?? this.#shown.experiment;
-        p.status.cancelled(kept === undefined ? undefined : this.#shown.program ? 'program' : 'experiment');
+        const kept = this.#shown.program ?? this.#shown.experiment ?? this.#shown.a;
+        p.status.cancelled(kept === undefined ? undefined : this.#shown.program ? 'program' : this.#shown.experiment ? 'experiment' : 'paths');
         if (kept) markStale(p.staleNote, 'cancelled');
       } else if (error instanceof InputRejected) {
         this.#rejected = true;
@@ -386,6 +394,7 @@ export class Orchestrator {
         this.#running = undefined;
         p.gcodePanel.setProgress(undefined);
         p.experimentProgress.set(undefined);
+        p.traceProgress.set(undefined);
         this.#inputsPending = false;
         p.exports.refresh(false);
       }

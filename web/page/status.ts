@@ -4,7 +4,7 @@
  * a program's lines, moves and stop), and why nothing was traced.
  */
 import { diagnosticText } from '../form/page-advice.js';
-import type { LinesProgress } from '../form/run-progress.js';
+import type { BarProgress, LinesProgress } from '../form/run-progress.js';
 import { clause, countOf, formatPoint, grouped } from '../format.js';
 import type { Mode } from '../state/app-state.js';
 import type { MeasuredTrace } from '../worker/client.js';
@@ -62,6 +62,11 @@ export class Status {
     this.#say(`${verb}: line ${grouped(progress.stoppedAtLine ?? progress.linesDone)} of ${grouped(progress.lines)}, ${countOf(progress.steps, 'step')} so far…`, true);
   }
 
+  /** How far the metrics' pass over the path (or both paths) has got. */
+  measuring(bar: BarProgress): void {
+    this.#say(`Measuring the path: ${bar.said}…`, true);
+  }
+
   /** What is now on screen. */
   shown(shown: Shown): void {
     if (shown.experiment) this.#say(`${countOf(shown.experiment.lines.length, 'line')} traced with ${shown.experiment.algorithm}.`);
@@ -70,8 +75,9 @@ export class Status {
   }
 
   /** The run was cancelled; `kept`: what is still on screen from the last run that went to its end. */
-  cancelled(kept: 'program' | 'experiment' | undefined): void {
-    if (kept === 'program') this.#say('Cancelled. The view still shows the last program that ran.');
+  cancelled(kept: 'paths' | 'program' | 'experiment' | undefined): void {
+    if (kept === 'paths') this.#say('Cancelled. The view still shows the last paths traced.');
+    else if (kept === 'program') this.#say('Cancelled. The view still shows the last program that ran.');
     else if (kept === 'experiment') this.#say('Cancelled. The tables still show the last experiment that ran.');
     else this.#say('Cancelled.');
   }

@@ -8,7 +8,7 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { ExperimentProgress, GcodeMove, GcodeProgress, GcodeSettings, MotionChart, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ChartSeries, IdealLine, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { ChartSeries, IdealLine, PointBounds, PointsProgress, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 import { utf8Bytes } from '../core/utf8.js';
 import type {
   ExportFormat,
@@ -184,15 +184,17 @@ export class TraceClient {
   }
 
   /**
-   * Runs a trace in the worker; rejects with InputRejected naming the option
-   * at fault. `distinction`: the value it is told apart by from the other
-   * side of an algorithm compared with itself (its `name` says it).
+   * Runs a trace in the worker, with its metrics, measured a slice of
+   * points at a time (reported to `onProgress`); cancellable. Rejects with
+   * InputRejected naming the option at fault. `distinction`: the value it
+   * is told apart by from the other side of an algorithm compared with
+   * itself (its `name` says it).
    */
-  async trace(options: TraceOptions, distinction?: string): Promise<MeasuredTrace> {
+  trace(options: TraceOptions, onProgress?: (progress: PointsProgress) => void, distinction?: string): Running<MeasuredTrace> {
     const traceId = this.#nextTraceId++;
     const generation = this.#generation;
-    const path = await this.request({ kind: 'trace', traceId, options, pointsSent: this.#pointsSent() });
-    return new MeasuredTrace(this, traceId, generation, path, distinction);
+    const running = this.start({ kind: 'trace', traceId, options, pointsSent: this.#pointsSent() }, onProgress);
+    return { result: running.result.then((path) => new MeasuredTrace(this, traceId, generation, path, distinction)), cancel: running.cancel };
   }
 
   /** Runs a G-code program in the worker, reporting progress after every slice of lines; cancellable. */
@@ -290,6 +292,12 @@ export class RemoteTrace {
     return this.#client.request(request);
   }
 
+  /** Starts the long request `request` (cancellable, reporting to `onProgress`); a CoreCrash, with no message sent, once this trace's worker is gone. */
+  protected startLong<K extends LongRequestKind>(request: Extract<WorkerRequest, { kind: K }>, onProgress?: (progress: ProgressValue[K]) => void): Running<ReplyValue[K]> {
+    if (!this.alive) return { result: Promise.reject(new CoreCrash('this trace was lost with a crashed worker; trace again')), cancel: () => {} };
+    return this.#client.start(request, onProgress as (progress: K extends LongRequestKind ? ProgressValue[K] : never) => void);
+  }
+
   /**
    * Point index p and the step that produced it (step index p - 1), as the
    * core replays it once: decision read, explanation, deviation, segment and
@@ -299,9 +307,13 @@ export class RemoteTrace {
     return this.ask({ kind: 'stepDetail', traceId: this.traceId, pointIndex });
   }
 
-  /** The charts' rows: every point, or buckets when there are more than maxPoints. */
-  series(maxPoints: number): Promise<ChartSeries> {
-    return this.ask({ kind: 'series', traceId: this.traceId, maxPoints });
+  /**
+   * The charts' rows: every point, or buckets when there are more than
+   * maxPoints; made a slice of points at a time (reported to
+   * `onProgress`), cancellable.
+   */
+  series(maxPoints: number, onProgress?: (progress: PointsProgress) => void): Running<ChartSeries> {
+    return this.startLong({ kind: 'series', traceId: this.traceId, maxPoints }, onProgress);
   }
 
   /** Each axis's STEP and DIR signals over step indices fromStep..toStep (the core's pulseTrains), for the timing diagram; a program's with its steps' instants. */
@@ -320,8 +332,7 @@ export class RemoteTrace {
    * reporting the bytes written so far.
    */
   exportAs(format: ExportFormat, onProgress: (progress: ExportProgress) => void): Running<Blob> {
-    if (!this.alive) return { result: Promise.reject(new CoreCrash('this trace was lost with a crashed worker; trace again')), cancel: () => {} };
-    return this.#client.start({ kind: 'export', traceId: this.traceId, format }, onProgress);
+    return this.startLong({ kind: 'export', traceId: this.traceId, format }, onProgress);
   }
 
   /** Releases the worker's copy; a trace lost in a crash has nothing left to free. */

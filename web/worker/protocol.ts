@@ -5,7 +5,8 @@
  *
  * Each request carries an id; the worker answers each with exactly one reply
  * carrying the same id, and a long request (a G-code run, the random-lines
- * experiment, an export) may send progress messages with that id before it. A `cancel` message stops the request it
+ * experiment, an export, a trace's metrics, a chart's rows) may send
+ * progress messages with that id before it. A `cancel` message stops the request it
  * names at its next slice. Bulk arrays cross as transferred buffers, not
  * copies:
  * - a G-code program's text: UTF-8 bytes, encoded by the page (in the
@@ -27,7 +28,7 @@
  * StepDetail.
  */
 import type { Check, ExperimentProgress, FirstDifference, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { Catalogue, ChartSeries, IdealLine, Limit, Metrics, PointBounds, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, ChartSeries, IdealLine, Limit, Metrics, PointBounds, PointsProgress, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -224,6 +225,10 @@ export interface ProgressValue {
   gcode: GcodeProgress;
   randomLines: ExperimentProgress;
   export: ExportProgress;
+  /** The trace's metrics, measured a slice of points at a time (the trace itself is one call: a path the page takes, at most 1,500,000 steps, is traced in a fifth of a second). */
+  trace: PointsProgress;
+  /** The charts' rows, made a slice of points at a time. */
+  series: PointsProgress;
 }
 
 /** The requests that run in slices, report progress and can be cancelled. */

@@ -58,10 +58,16 @@ function pathOf(t: Trace, sent: PointsSent): TracedPath<TraceSummary> {
   return { summary: { ...t }, sampledPoints, pointsEvery: every, idealLine, bounds: t.bounds };
 }
 
-/** pathOf, with the metrics, which the page shows at once for a trace (its status line), asked of the core here. */
-function tracedPath(t: Trace, sent: PointsSent): TracedPath {
+/**
+ * pathOf, with the metrics, which the page shows at once for a trace (its
+ * status line): measured by the core a slice of points at a time, each
+ * slice's progress posted, stopped by a cancel through `signal` (a helix's
+ * 1,500,000 points took 1 to 2 s).
+ */
+async function tracedPath(id: number, t: Trace, sent: PointsSent, signal: AbortSignal): Promise<TracedPath> {
+  const metrics = await t.metricsInSlices({ signal, onProgress: (progress) => report(id, progress) });
   const path = pathOf(t, sent);
-  return { ...path, summary: { ...path.summary, metrics: t.metrics } };
+  return { ...path, summary: { ...path.summary, metrics } };
 }
 
 /** Posts the progress of the long request `id`. */
@@ -90,7 +96,7 @@ const EXPORT_BLOB_BYTES = 16 * 1024 * 1024;
 /**
  * An export's progress is posted at most this often, ms: its parts take a
  * millisecond or two each, and the page shows four reports a second at most
- * (orchestrator.ts, PROGRESS_EVERY_MS).
+ * (run-progress.ts, PROGRESS_EVERY_MS).
  */
 const EXPORT_REPORT_MS = 250;
 
@@ -145,12 +151,20 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
   switch (request.kind) {
     case 'catalogue':
       return { value: await catalogue(), transfer: [] };
-    case 'trace': {
-      const t = await trace(request.options);
-      traces.set(request.traceId, t);
-      const path = tracedPath(t, request.pointsSent);
-      return { value: path, transfer: [path.sampledPoints.buffer, path.idealLine.xyz.buffer] };
-    }
+    case 'trace':
+      return cancellable(id, async (signal) => {
+        const t = await trace(request.options);
+        let path: TracedPath;
+        try {
+          path = await tracedPath(id, t, request.pointsSent, signal);
+        } catch (error) {
+          // Stopped: the page never holds this trace, to free it.
+          t.free();
+          throw error;
+        }
+        traces.set(request.traceId, t);
+        return { value: path, transfer: [path.sampledPoints.buffer, path.idealLine.xyz.buffer] };
+      });
     case 'gcode':
       return cancellable(id, async (signal) => {
         const program = await runGcode(request.source, request.settings, { signal, onProgress: (progress) => report(id, progress) });
@@ -170,11 +184,13 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       const points = held(request.traceId).pointsInRange(request.fromPoint, request.toPoint);
       return { value: points, transfer: [points.buffer] };
     }
-    case 'series': {
-      const series = held(request.traceId).chartSeries(request.maxPoints);
-      const arrays = [series.pointIndex, ...series.position, ...series.ideal, series.deviationMax, series.deviationMin];
-      return { value: series, transfer: arrays.map((a) => a.buffer) };
-    }
+    case 'series':
+      // Every point's deviation, a slice of points at a time: a helix's 1,500,000 took about a second.
+      return cancellable(id, async (signal) => {
+        const series = await held(request.traceId).chartSeriesInSlices(request.maxPoints, { signal, onProgress: (progress) => report(id, progress) });
+        const arrays = [series.pointIndex, ...series.position, ...series.ideal, series.deviationMax, series.deviationMin];
+        return { value: series, transfer: arrays.map((a) => a.buffer) };
+      });
     case 'difference': {
       const [a, b] = [held(request.traceIdA), held(request.traceIdB)];
       const difference = { firstDifference: a.compareWith(b).firstDifference, onlyInA: a.cellsOnlyIn(b), onlyInB: b.cellsOnlyIn(a) };
