@@ -1,5 +1,6 @@
 // A trace's metrics and a chart's rows made by the core a slice of points at
-// a time (metricsInSlices, chartSeriesInSlices), as the page's worker makes
+// a time (metricsInSlices, chartSeriesInSlices), and two traces' difference
+// a trace's cells at a time (differenceWith), as the page's worker makes
 // them to report progress and take a Cancel: the values of the one call, to
 // the bit, whatever the slices; a signal stops the pass between slices.
 import { describe, expect, it } from 'vitest';
@@ -67,10 +68,37 @@ describe('passes over the points made in slices', () => {
     sliced.free();
   });
 
+  it('find where two paths differ, each one\'s cells sorted in turn, as compareWith and cellsOnlyIn find it, stopped between the two', async () => {
+    const pairs: [TraceOptions, TraceOptions][] = [
+      [PATHS['a line (walked)']!, { ...PATHS['a line (walked)']!, algorithm: 'greedy' }],
+      [PATHS['a helix (point by point)']!, PATHS['a helix in chords']!],
+      [PATHS['a circle (walked)']!, PATHS['a circle (walked)']!],
+    ];
+    for (const [first, second] of pairs) {
+      const [a, b] = [await trace(first), await trace(second)];
+      const seen: PointsProgress[] = [];
+      const difference = await a.differenceWith(b, { onProgress: (p) => seen.push(p) });
+      expect(seen.map((p) => [p.pointsDone, p.done])).toEqual([
+        [a.steps + 1, false],
+        [a.steps + b.steps + 2, true],
+      ]);
+      expect(difference.firstDifference).toEqual(a.compareWith(b).firstDifference);
+      expect(Array.from(difference.onlyInA)).toEqual(Array.from(a.cellsOnlyIn(b)));
+      expect(Array.from(difference.onlyInB)).toEqual(Array.from(b.cellsOnlyIn(a)));
+      const cancel = new AbortController();
+      await expect(a.differenceWith(b, { signal: cancel.signal, onProgress: () => cancel.abort() })).rejects.toMatchObject({ name: 'AbortError' });
+      a.free();
+      b.free();
+    }
+  });
+
   it('refuse a freed trace and bad options, naming them', async () => {
     const t = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [5, 3, 1] });
     await expect(t.chartSeriesInSlices(0)).rejects.toMatchObject({ field: 'maxRows' });
     await expect(t.metricsInSlices({ onprogress: () => {} } as object)).rejects.toMatchObject({ field: 'onprogress' });
+    const flat = await trace({ algorithm: 'bresenham2d', from: [0, 0], to: [5, 3] });
+    await expect(t.differenceWith(flat)).rejects.toMatchObject({ field: 'other' });
+    flat.free();
     t.free();
     const freed = t.metricsInSlices();
     await expect(freed).rejects.toBeInstanceOf(VoxpathError);

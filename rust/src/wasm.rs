@@ -617,6 +617,57 @@ impl TraceHandle {
     }
 }
 
+/// Where two traces of one move differ, as the page shows them (the first
+/// point where they part, the cells only one visits), made a trace's cells
+/// at a time (`compare::DifferencePass`): each call takes the two traces it
+/// was made for.
+#[wasm_bindgen]
+pub struct DifferenceRun(crate::compare::DifferencePass);
+
+#[wasm_bindgen]
+impl DifferenceRun {
+    /// The difference of `a` and `b` (same axes, each within the compared
+    /// points), else an error naming `other`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(a: &TraceHandle, b: &TraceHandle) -> Result<DifferenceRun, JsValue> {
+        crate::compare::DifferencePass::new(&a.0, &b.0)
+            .map(DifferenceRun)
+            .map_err(|e| to_js_error(&e))
+    }
+
+    /// Sorts the next trace's cells (`a`'s, then `b`'s, merged with `a`'s).
+    #[wasm_bindgen(unchecked_return_type = "PointsProgress")]
+    pub fn advance(&mut self, a: &TraceHandle, b: &TraceHandle) -> Result<JsValue, JsValue> {
+        let progress = self.0.advance(&a.0, &b.0).map_err(|e| to_js_error(&e))?;
+        Ok(to_js(&progress))
+    }
+
+    /// The first point where they part, with why each stepped there; null
+    /// where they do not.
+    #[wasm_bindgen(js_name = firstDifference, unchecked_return_type = "FirstDifference | null")]
+    pub fn first_difference(&self, a: &TraceHandle, b: &TraceHandle) -> Result<JsValue, JsValue> {
+        let first = self
+            .0
+            .first_difference(&a.0, &b.0)
+            .map_err(|e| to_js_error(&e))?;
+        Ok(to_js(&first))
+    }
+
+    /// The cells only `a` (`side` 0) or only `b` (1) visits, in its order,
+    /// each once (Int32Array, stride dims), once `advance` is done.
+    #[wasm_bindgen(js_name = cellsOnlyIn)]
+    pub fn cells_only_in(
+        &self,
+        side: u32,
+        a: &TraceHandle,
+        b: &TraceHandle,
+    ) -> Result<Vec<i32>, JsValue> {
+        self.0
+            .cells_only_in(side as usize, &a.0, &b.0)
+            .map_err(|e| to_js_error(&e))
+    }
+}
+
 /// The STEP and DIR wires of a G-code run as an IEEE 1364 VCD file
 /// (`gcode::vcd`), a part at a time: `next` hands out the header, then the
 /// file's lines for `CHUNK_STEPS` steps per call, so that neither the core

@@ -10,7 +10,7 @@
  */
 import { callCore } from './errors.js';
 import { encodeRequest } from './request.js';
-import type { CompareOptions, Comparison } from './pkg/voxpath.js';
+import type { CompareOptions, Comparison, FirstDifference } from './pkg/voxpath.js';
 import { loadCore } from './wasm.js';
 
 export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDigest } from './pkg/voxpath.js';
@@ -20,4 +20,17 @@ export async function compare(options: CompareOptions): Promise<Comparison> {
   const core = await loadCore();
   const request = encodeRequest(options);
   return callCore(() => core.compare(request));
+}
+
+/**
+ * Where two traces of one move differ, as a view shows them
+ * (Trace.differenceWith): the first point where they part, and every cell
+ * only one visits.
+ */
+export interface TraceDifference {
+  /** The first point where the paths differ, with each side's reason and decision values; null when they are the same. */
+  firstDifference: FirstDifference | null;
+  /** Every distinct cell only one path visits, in its path order, flat with stride dims. */
+  onlyInA: Int32Array;
+  onlyInB: Int32Array;
 }

@@ -27,7 +27,7 @@ export { AXIS_NAMES } from './axes.js';
 export { VoxpathError } from './errors.js';
 export { heapBytes, memoryBytes } from './wasm.js';
 export { compare } from './compare.js';
-export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDigest } from './compare.js';
+export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDifference, TraceDigest } from './compare.js';
 export { checkPoints, readPoints } from './check.js';
 export type { AlsoMatch, AroundRow, Check, CheckDifference, DifferenceKind, LearnerPoints } from './check.js';
 export { GcodeProgram, runGcode } from './gcode.js';

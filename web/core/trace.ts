@@ -7,13 +7,13 @@
  * Either way a long path never needs a second full-size copy inside wasm
  * (whose memory, once grown, is never given back).
  */
-import type { Comparison } from './compare.js';
+import type { Comparison, TraceDifference } from './compare.js';
 import { callCore } from './errors.js';
 import { argumentError, describeValue, indexRange, wholeNumber } from './guard.js';
 import type { StepClocks, TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
 import { catalogue } from './catalogue.js';
-import { advanceInSlices, checkSliceOptions, type SliceOptions, type SliceSizes, yieldToEventLoop } from './slices.js';
+import { advanceInSlices, checkSliceOptions, freeStopped, type SliceOptions, type SliceSizes, yieldToEventLoop } from './slices.js';
 import type { AlgorithmInfo, ChartSeries, DecisionColumns, IdealLine, Metrics, PointBounds, PointsProgress, SegmentInfo, StepDetail, TraceOptions, TraceSummary } from './types.js';
 import { loadCore } from './wasm.js';
 
@@ -401,6 +401,35 @@ export class Trace {
     const core = this.#core;
     const theirs = handleOf('other', other);
     return callCore(() => core.cellsOnlyIn(theirs));
+  }
+
+  /**
+   * Where this trace (a) and `other` (b), of one move, differ as a view
+   * shows them: the first point where they part (compareWith's) and every
+   * cell only one visits (cellsOnlyIn, both ways), each trace's cells
+   * sorted once (those two calls sort each three times), one trace's at a
+   * time, the event loop let run between them: `onProgress` hears the
+   * points sorted, and `signal` stops it between the two.
+   */
+  async differenceWith(other: Trace, runOptions: PointsPassOptions = {}): Promise<TraceDifference> {
+    const sliceMs = checkSliceOptions('differenceWith', runOptions);
+    const both = (): [TraceHandle, TraceHandle] => [this.#core, handleOf('other', other)];
+    const core = await loadCore();
+    const run = callCore(() => new core.DifferenceRun(...both()));
+    let difference: TraceDifference;
+    try {
+      // One trace's cells a slice, however many: a sort is not cut.
+      await advanceInSlices(() => callCore(() => run.advance(...both())), runOptions, sliceMs, { first: 1, least: 1 });
+      await yieldToEventLoop();
+      runOptions.signal?.throwIfAborted();
+      const [a, b] = both();
+      difference = callCore(() => ({ firstDifference: run.firstDifference(a, b), onlyInA: run.cellsOnlyIn(0, a, b), onlyInB: run.cellsOnlyIn(1, a, b) }));
+    } catch (error) {
+      freeStopped(run);
+      throw error;
+    }
+    run.free();
+    return difference;
   }
 
   /**

@@ -102,7 +102,7 @@ export interface PageParts {
   experimentForm: OptionsForm;
   /** The experiment's progress bar and Cancel. */
   experimentProgress: RunProgress;
-  /** The bar and Cancel of a path's metrics, measured in the worker (trace and compare modes). */
+  /** The bar and Cancel of a path's metrics measured in the worker (trace and compare modes), and of two paths' cells compared. */
   traceProgress: RunProgress;
   gcodePanel: GcodePanel;
   timeline: Timeline;
@@ -283,11 +283,15 @@ export class Orchestrator {
     return throttled(() => run === this.#latestRun, show);
   }
 
-  /** How far the metrics' pass over the path (or both paths) has got, on its bar and the status line. */
-  #measuring(progress: PointsProgress): void {
+  /**
+   * How far a pass over the points of the path (or both paths) has got, on
+   * its bar (`verb`) and the status line (`said`): their metrics', or
+   * compared, their cells' sort.
+   */
+  #passing(progress: PointsProgress, verb = 'Measuring', said = 'Measuring the path'): void {
     const bar = pointsBar(progress);
-    this.#p.traceProgress.set(bar);
-    this.#p.status.measuring(bar);
+    this.#p.traceProgress.set(bar, verb);
+    this.#p.status.passing(said, bar);
   }
 
   /** Runs the core on the current inputs and shows what it returns (unless a later run has started). */
@@ -309,16 +313,23 @@ export class Orchestrator {
       if (state.mode === 'trace') {
         const [info] = tracedAlgorithms(state, p.catalogue.algorithms);
         ruleOptions = traceOptions(state, info!);
-        const started = p.client.trace(ruleOptions, this.#throttled(run, (progress) => this.#measuring(progress)));
+        const started = p.client.trace(ruleOptions, this.#throttled(run, (progress) => this.#passing(progress)));
         this.#running = started;
         next = { a: await started.result };
       } else if (state.mode === 'compare') {
-        const started = traceBoth(p.client, comparedRequests(state, p.catalogue.algorithms), this.#throttled(run, (progress) => this.#measuring(progress)));
+        const started = traceBoth(p.client, comparedRequests(state, p.catalogue.algorithms), this.#throttled(run, (progress) => this.#passing(progress)));
         this.#running = started;
         const [a, b] = await started.result;
-        p.traceProgress.set(undefined);
-        p.status.tracing(state.mode);
-        next = { a, b, difference: await p.client.difference(a, b) };
+        const differing = p.client.difference(a, b, this.#throttled(run, (progress) => this.#passing(progress, 'Comparing', 'Comparing the paths (cells sorted)')));
+        this.#running = differing;
+        try {
+          next = { a, b, difference: await differing.result };
+        } catch (error) {
+          // Not shown: nothing else holds them.
+          a.free();
+          b.free();
+          throw error;
+        }
       } else if (state.mode === 'gcode') {
         const started = p.client.runGcode(
           state.gcode,

@@ -62,9 +62,9 @@ export class Status {
     this.#say(`${verb}: line ${grouped(progress.stoppedAtLine ?? progress.linesDone)} of ${grouped(progress.lines)}, ${countOf(progress.steps, 'step')} so far…`, true);
   }
 
-  /** How far the metrics' pass over the path (or both paths) has got. */
-  measuring(bar: BarProgress): void {
-    this.#say(`Measuring the path: ${bar.said}…`, true);
+  /** How far a pass over the points of the path (or both paths) has got: `verb` says which ('Measuring the path'). */
+  passing(verb: string, bar: BarProgress): void {
+    this.#say(`${verb}: ${bar.said}…`, true);
   }
 
   /** What is now on screen. */

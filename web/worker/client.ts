@@ -208,10 +208,10 @@ export class TraceClient {
     return { result: running.result.then((run) => new RemoteProgram(this, traceId, generation, run, text)), cancel: running.cancel };
   }
 
-  /** Where two traces of the same move part (both held by the current worker). */
-  difference(a: RemoteTrace, b: RemoteTrace): Promise<TraceDifference> {
-    if (!a.alive || !b.alive) return Promise.reject(new CoreCrash('a trace was lost with a crashed worker; trace again'));
-    return this.request({ kind: 'difference', traceIdA: a.traceId, traceIdB: b.traceId });
+  /** Where two traces of the same move part (both held by the current worker), each one's cells sorted in turn (reported to `onProgress`); cancellable. */
+  difference(a: RemoteTrace, b: RemoteTrace, onProgress?: (progress: PointsProgress) => void): Running<TraceDifference> {
+    if (!a.alive || !b.alive) return { result: Promise.reject(new CoreCrash('a trace was lost with a crashed worker; trace again')), cancel: () => {} };
+    return this.start({ kind: 'difference', traceIdA: a.traceId, traceIdB: b.traceId }, onProgress);
   }
 
   /** A learner's points (text, as pasted) checked against the rule `options` traces, whose trace `rule` the worker holds. */

@@ -191,11 +191,12 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         const arrays = [series.pointIndex, ...series.position, ...series.ideal, series.deviationMax, series.deviationMin];
         return { value: series, transfer: arrays.map((a) => a.buffer) };
       });
-    case 'difference': {
-      const [a, b] = [held(request.traceIdA), held(request.traceIdB)];
-      const difference = { firstDifference: a.compareWith(b).firstDifference, onlyInA: a.cellsOnlyIn(b), onlyInB: b.cellsOnlyIn(a) };
-      return { value: difference, transfer: [difference.onlyInA.buffer, difference.onlyInB.buffer] };
-    }
+    case 'difference':
+      return cancellable(id, async (signal) => {
+        const [a, b] = [held(request.traceIdA), held(request.traceIdB)];
+        const difference = await a.differenceWith(b, { signal, onProgress: (progress) => report(id, progress) });
+        return { value: difference, transfer: [difference.onlyInA.buffer, difference.onlyInB.buffer] };
+      });
     case 'pulses': {
       // A program's steps have instants on its planned profile; a trace's are ticks.
       const stepSeconds = programs.get(request.traceId)?.stepTimes(request.fromStep, request.toStep) ?? null;
