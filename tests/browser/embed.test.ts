@@ -146,14 +146,30 @@ describe('embedded', () => {
   });
 
   it('says over its view that it is tracing while a long comparison runs (it showed "No path" for seconds, without a word)', async () => {
-    // Two lines of 1,400,000 steps and the cells only one visits: seconds in the worker.
-    const p = await openPage('?embed=1&mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=1400000,700,600', { waitUntil: 'commit' });
+    // Two lines of 1,400,000 steps, their metrics and the cells only one
+    // visits: a second or so in the worker, said in steps too short to
+    // poll for each ("Tracing…", "Measuring the path: ...", "Comparing the
+    // paths ..."), so what it says is recorded as it changes, from the start.
+    const p = await openPage('?embed=1&mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=1400000,700,600', {
+      waitUntil: 'commit',
+      initScript: () => {
+        const said: string[] = [];
+        (window as unknown as { busySaid: string[] }).busySaid = said;
+        document.addEventListener('DOMContentLoaded', () => {
+          const busy = document.querySelector('[data-testid="embed-busy"]')!;
+          new MutationObserver(() => {
+            if ((busy as HTMLElement).checkVisibility() && busy.textContent) said.push(busy.textContent);
+          }).observe(busy, { childList: true, characterData: true, subtree: true });
+        });
+      },
+    });
     const { page } = p;
     const busy = page.getByTestId('embed-busy');
-    await busy.filter({ hasText: 'Tracing…' }).waitFor();
-    expect(await busy.isVisible()).toBe(true);
     await page.getByTestId('step-counter').filter({ hasText: 'of 1,401,300' }).waitFor({ timeout: 60_000 });
     await expect.poll(() => busy.isVisible()).toBe(false);
+    const said = await page.evaluate(() => (window as unknown as { busySaid: string[] }).busySaid);
+    expect(said[0]).toBe('Tracing…');
+    expect(said).toContainEqual(expect.stringMatching(/^Comparing the paths \(cells sorted\): [\d,]+ of 2,801,302 points…$/));
     expect(p.problems()).toEqual([]);
     await p.close();
   });
