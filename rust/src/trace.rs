@@ -18,7 +18,7 @@
 use crate::error::{Error, Limit};
 use crate::figure::{DecisionFigure, FigureKind};
 use crate::grid::{MAX_AXES, Point, Step, displacement};
-use crate::ideal::curve::ArcMeter;
+use crate::ideal::curve::{ArcMeter, HelixMeter, HelixPoint};
 use crate::ideal::info::IdealPathInfo;
 use crate::ideal::line::LineMeter;
 use crate::ideal::{IdealPath, Meter};
@@ -1047,9 +1047,21 @@ impl Piece<'_> {
         true
     }
 
+    /// Walks the points along a helix segment ([`HelixMeter::walk`]),
+    /// calling `f(meter, the point placed around the helix)` for each:
+    /// false, calling nothing, where the segment is no helix.
+    fn walk_helix(&self, mut f: impl FnMut(&HelixMeter, &HelixPoint)) -> bool {
+        let IdealPath::Helix(helix) = &self.segment.ideal else {
+            return false;
+        };
+        let meter = helix.meter();
+        meter.walk(&self.start, self.steps, |point| f(&meter, point));
+        true
+    }
+
     /// Calls `f(k, point k, meter, step of the segment, its steps)` for
-    /// each point, each measured on its own: the reference the line and arc
-    /// walks are held to, and the way helices are measured.
+    /// each point, each measured on its own: the reference the line, arc
+    /// and helix walks are held to.
     fn for_each_point(&self, mut f: impl FnMut(u64, &Point, &Meter, u64, u64)) {
         let meter = self.segment.ideal.meter();
         let n = self.segment.steps;
@@ -1275,6 +1287,8 @@ impl Trace {
             } else if !piece.walk_arc(|meter, offsets| {
                 let (deviation, error) = meter.measure_at(offsets);
                 acc.add_point(deviation, &error);
+            }) && !piece.walk_helix(|meter, point| {
+                acc.add_point(meter.deviation_at(point), &meter.axis_error_at(point));
             }) {
                 piece.for_each_point(|_, p, meter, local, n| {
                     acc.add_point(meter.deviation(p), &meter.axis_error(p, local, n));
@@ -1481,6 +1495,7 @@ impl Trace {
         self.for_each_piece(from, to, |piece| {
             if !piece.walk_line(|deviation, _| f(deviation))
                 && !piece.walk_arc(|meter, offsets| f(meter.deviation_at(offsets)))
+                && !piece.walk_helix(|meter, point| f(meter.deviation_at(point)))
             {
                 piece.for_each_point(|_, p, meter, _, _| f(meter.deviation(p)));
             }
@@ -1506,6 +1521,10 @@ impl Trace {
                 }
             }) || piece.walk_arc(|meter, offsets| {
                 for &error in &meter.axis_error_at(offsets)[..dims] {
+                    f(error);
+                }
+            }) || piece.walk_helix(|meter, point| {
+                for &error in &meter.axis_error_at(point)[..dims] {
                     f(error);
                 }
             });
@@ -1661,6 +1680,20 @@ impl Trace {
                         &|| meter.point_at(offsets),
                         meter.deviation_at(offsets),
                         &|| meter.axis_error_at(offsets),
+                    );
+                    i += 1;
+                });
+            // A helix too, its points decoded alongside as a line's are.
+            let walked = walked
+                || piece.walk_helix(|meter, point| {
+                    if i > 0 {
+                        p.apply(piece.steps[i - 1]);
+                    }
+                    record(
+                        piece.first + i as u64,
+                        &|| p,
+                        meter.deviation_at(point),
+                        &|| meter.axis_error_at(point),
                     );
                     i += 1;
                 });

@@ -107,6 +107,7 @@ impl ArcPath {
 
     /// Grid coordinates of the arc's point at angle `theta` and height
     /// `height` above the center's normal coordinate.
+    #[cfg(test)]
     fn point_at(&self, theta: f64, height: f64) -> [f64; 3] {
         let (sin, cos) = sin_cos_turns(theta);
         self.point_of(sin, cos, self.radius(), height)
@@ -356,10 +357,10 @@ pub struct HelixPath {
     pub measured: [f64; 2],
 }
 
-/// Newton iterations per candidate in [`HelixPath::deviation`], at most.
+/// Newton iterations per candidate in [`HelixMeter::deviation_at`], at most.
 const NEWTON_ITERATIONS: usize = 8;
 
-/// A Newton step in [`HelixPath::deviation`] shorter than this along the
+/// A Newton step in [`HelixMeter::deviation_at`] shorter than this along the
 /// helix, grid units, ends the candidate's iterations: the distance there
 /// is flat to the square of the step (about 10^-18 of a cell), and the
 /// steps after it only wander in the last bits of t. Without it, every
@@ -395,55 +396,225 @@ impl HelixPath {
         }
     }
 
-    /// (a, b, h): `p` relative to the center, h measured from the start height.
-    fn local(&self, p: &Point) -> [f64; 3] {
-        let [u, v, n] = self.arc.relative(p);
-        [u as f64, v as f64, n as f64 - self.start_height]
+    /// This helix ready to measure many points: its constants, and the
+    /// sine and cosine of the angles at the ends of [`Self::measured`],
+    /// computed once.
+    pub fn meter(&self) -> HelixMeter<'_> {
+        let s = self.arc.sweep_rad;
+        let arc = self.arc.meter();
+        let end = |t: f64| {
+            let (sin, cos) = sin_cos_turns(self.arc.start_rad + s * t);
+            SinCos { sin, cos }
+        };
+        HelixMeter {
+            helix: self,
+            converged: CONVERGED_STEP_UNITS / (arc.radius * s).hypot(self.rise),
+            half_turn: PI / s.abs(),
+            ends: self.measured.map(end),
+            arc,
+        }
     }
 
-    /// The fraction t in [`Self::measured`] at which the helix has the
+    /// Distance from `p` to the helix: [`HelixMeter::deviation`].
+    pub fn deviation(&self, p: &Point) -> f64 {
+        self.meter().deviation(p)
+    }
+
+    /// `p` minus the helix's point at the same angle: [`HelixMeter::axis_error`].
+    pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
+        self.meter().axis_error(p)
+    }
+
+    /// Vertices for drawing (stride 3), each handed to `f`, the first left
+    /// out where it equals `after`.
+    pub fn for_each_vertex(&self, after: Option<&[f64]>, f: impl FnMut(&[f64])) {
+        self.arc
+            .vertices_with(after, |t| self.start_height + self.rise * t, f)
+    }
+
+    pub fn info(&self) -> IdealPathInfo {
+        IdealPathInfo::Helix {
+            center: self.arc.center.coords().to_vec(),
+            plane: self.arc.plane.label(),
+            radius: self.arc.radius(),
+            start_rad: self.arc.start_rad,
+            sweep_rad: self.arc.sweep_rad,
+            start_height: self.start_height,
+            rise: self.rise,
+        }
+    }
+}
+
+/// A turn in [`HelixMeter::deviation_at`]'s iterations no longer than this,
+/// radians, finds the new angle's sine and cosine by turning the old ones
+/// ([`SinCos::turned`]); a longer one (a first step on a small or steep
+/// helix) computes them.
+const SMALL_TURN_RAD: f64 = 0.125;
+
+/// The sine and cosine of an angle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct SinCos {
+    sin: f64,
+    cos: f64,
+}
+
+impl SinCos {
+    /// This angle turned by `delta` radians, |delta| at most
+    /// [`SMALL_TURN_RAD`]: by the Taylor series of sin δ (to δ^9) and of
+    /// cos δ - 1 (to δ^10), whose next terms are under 3e-18 there. In
+    /// wasm, sin and cos come from a software libm; a helix's per-point
+    /// distance called them once per Newton iterate, and they were its
+    /// largest part.
+    #[inline]
+    fn turned(self, delta: f64) -> SinCos {
+        let d2 = delta * delta;
+        let sin_delta = delta
+            * (1.0
+                - d2 * (1.0 / 6.0)
+                    * (1.0
+                        - d2 * (1.0 / 20.0)
+                            * (1.0 - d2 * (1.0 / 42.0) * (1.0 - d2 * (1.0 / 72.0)))));
+        let cos_delta_less_1 = -d2
+            * 0.5
+            * (1.0
+                - d2 * (1.0 / 12.0)
+                    * (1.0
+                        - d2 * (1.0 / 30.0)
+                            * (1.0 - d2 * (1.0 / 56.0) * (1.0 - d2 * (1.0 / 90.0)))));
+        SinCos {
+            sin: self.sin + (self.sin * cos_delta_less_1 + self.cos * sin_delta),
+            cos: self.cos + (self.cos * cos_delta_less_1 - self.sin * sin_delta),
+        }
+    }
+}
+
+/// A point as a helix measures it ([`HelixMeter::place`]): found once, for
+/// both its distance and its per-axis error, which share its angle (one
+/// atan2 a point, where each took its own).
+#[derive(Clone, Copy, Debug)]
+pub struct HelixPoint {
+    /// (a, b, h): offsets from the center in the plane's frame, h measured
+    /// from the start height.
+    q: [f64; 3],
+    /// Distance from the helix's axis less the radius (ρ - r, exact to
+    /// the rounding of f64: [`ArcMeter`]).
+    radial: f64,
+    /// The point's own angle around the axis: (b / ρ, a / ρ), or angle 0
+    /// on the axis itself, where atan2 gives 0.
+    angle: SinCos,
+    /// The fractions in [`HelixPath::measured`] at which the helix has the
     /// point's own angle, on the turn whose height is nearest the point's
-    /// (the middle of the three candidates [`Self::deviation`] starts from).
-    fn same_angle_fraction(&self, q: [f64; 3]) -> [f64; 3] {
-        let sweep = self.arc.sweep_rad;
-        let [lo, hi] = self.measured;
-        let phi = q[1].atan2(q[0]);
+    /// (the middle one) and on the turns either side, each clamped to the
+    /// fractions measured.
+    same_angle: [f64; 3],
+}
+
+/// A helix with its constants computed, measuring points: each point on its
+/// own (no state carried from one point to the next, so a stretch of points
+/// measures the same whichever point it starts from).
+pub struct HelixMeter<'a> {
+    helix: &'a HelixPath,
+    /// The helix's circle (its radius, and ρ - r of a point).
+    arc: ArcMeter<'a>,
+    /// Fractions of t a step of [`CONVERGED_STEP_UNITS`] along the helix spans.
+    converged: f64,
+    /// Fractions of t in half a turn.
+    half_turn: f64,
+    /// sin and cos of the angles at the two ends of [`HelixPath::measured`].
+    ends: [SinCos; 2],
+}
+
+impl HelixMeter<'_> {
+    /// The point at offsets (u, v, n) from the center, in the plane's frame
+    /// ([`ArcMeter::walk`]), placed around the helix.
+    pub fn place(&self, [u, v, n]: [i64; 3]) -> HelixPoint {
+        let helix = self.helix;
+        let (a, b) = (u as f64, v as f64);
+        let q = [a, b, n as f64 - helix.start_height];
+        let (rho, radial) = self.arc.rho_and_radial_error(u, v);
+        let (phi, angle) = if rho == 0.0 {
+            (0.0, SinCos { sin: 0.0, cos: 1.0 })
+        } else {
+            (
+                b.atan2(a),
+                SinCos {
+                    sin: b / rho,
+                    cos: a / rho,
+                },
+            )
+        };
+        let sweep = helix.arc.sweep_rad;
+        let [lo, hi] = helix.measured;
         // t_k = (phi + 2πk - θ0) / s for whole k: the angles equal to phi.
-        let t_of = |k: f64| (phi + TAU * k - self.arc.start_rad) / sweep;
-        let height_fraction = if self.rise == 0.0 {
+        let t_of = |k: f64| (phi + TAU * k - helix.arc.start_rad) / sweep;
+        let height_fraction = if helix.rise == 0.0 {
             0.5
         } else {
-            (q[2] / self.rise).clamp(lo, hi)
+            (q[2] / helix.rise).clamp(lo, hi)
         };
-        let k = ((self.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
-        [k - 1.0, k, k + 1.0].map(|k| t_of(k).clamp(lo, hi))
+        let k = ((helix.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
+        HelixPoint {
+            q,
+            radial,
+            angle,
+            same_angle: [k - 1.0, k, k + 1.0].map(|k| t_of(k).clamp(lo, hi)),
+        }
+    }
+
+    /// The points at `start` and after each of `moves`, placed
+    /// ([`Self::place`]) and handed to `f` in order, their offsets from the
+    /// center carried from step to step ([`ArcMeter::walk`]).
+    pub fn walk(&self, start: &Point, moves: &[Step], mut f: impl FnMut(&HelixPoint)) {
+        self.arc
+            .walk(start, moves, |offsets| f(&self.place(offsets)));
     }
 
     /// Distance from `p` to the helix (its nearest point, ends included;
-    /// for a piece, the whole helix's: [`Self::measured`]).
+    /// for a piece, the whole helix's: [`HelixPath::measured`]).
+    pub fn deviation(&self, p: &Point) -> f64 {
+        self.deviation_at(&self.place(self.helix.arc.relative(p)))
+    }
+
+    /// sin and cos at fraction `t` when it is an end of the fractions
+    /// measured (computed once, in [`HelixPath::meter`]).
+    fn at_end(&self, t: f64) -> Option<SinCos> {
+        let [lo, hi] = self.helix.measured;
+        if t == lo {
+            Some(self.ends[0])
+        } else if t == hi {
+            Some(self.ends[1])
+        } else {
+            None
+        }
+    }
+
+    /// [`Self::deviation`] of a placed point.
     ///
-    /// Method: D(t) = |q - H(t)|² over t in [`Self::measured`], where H(t) is the helix
-    /// at angle θ0 + s t and height rise t. Start Newton's method on
-    /// D'(t) = 0 from the point's own angle on the turn nearest its height
-    /// and the turns either side, and from both ends; take the smallest D.
+    /// Method: D(t) = |q - H(t)|² over t in [`HelixPath::measured`], where
+    /// H(t) is the helix at angle θ0 + s t and height rise t. Start
+    /// Newton's method on D'(t) = 0 from the point's own angle on the turn
+    /// nearest its height and the turns either side, and from both ends;
+    /// take the smallest D.
     /// D'(t)/2 = r s (a sin θ - b cos θ) - rise (h - rise t),
     /// D''(t)/2 = r s² (a cos θ + b sin θ) + rise², positive near the helix.
-    pub fn deviation(&self, p: &Point) -> f64 {
-        let q = self.local(p);
-        let r = self.arc.radius();
-        let s = self.arc.sweep_rad;
-        let rise = self.rise;
-        let [lo, hi] = self.measured;
-        // Fractions of t a step of CONVERGED_STEP_UNITS along the helix spans.
-        let converged = CONVERGED_STEP_UNITS / (r * s).hypot(rise);
-        let [before, nearest, after] = self.same_angle_fraction(q);
-        // Fractions of t in half a turn: the stretch of the helix about a
-        // start that its iterations search (one turn from an end).
-        let half_turn = PI / s.abs();
+    /// A start at the point's own angle has the point's sine and cosine
+    /// (b / ρ, a / ρ), an end the ones the meter keeps, and each iterate
+    /// turns the one before's by its step ([`SinCos::turned`]): sin and
+    /// cos are computed only for a step longer than [`SMALL_TURN_RAD`].
+    pub fn deviation_at(&self, point: &HelixPoint) -> f64 {
+        let helix = self.helix;
+        let q = point.q;
+        let r = self.arc.radius;
+        let s = helix.arc.sweep_rad;
+        let rise = helix.rise;
+        let [lo, hi] = helix.measured;
+        let [before, nearest, after] = point.same_angle;
+        // The stretch of the helix about a start that its iterations
+        // search: half a turn either side (one turn from an end).
+        let half_turn = self.half_turn;
         let around = |t: f64| [(t - half_turn).max(lo), (t + half_turn).min(hi)];
-        // The point's distance from the helix's axis less the radius: no
-        // point of the helix is nearer than that across, whatever its height.
-        let radial = q[0].hypot(q[1]) - r;
+        // No point of the helix is nearer than ρ - r across, whatever its height.
+        let radial = point.radial;
         let mut best = f64::INFINITY;
         let starts = [
             (nearest, around(nearest)),
@@ -470,9 +641,10 @@ impl HelixPath {
                 continue;
             }
             let mut t = start;
+            let mut along = self.at_end(t).unwrap_or(point.angle);
             // D at each iterate, and D' and D'' from the same sine and cosine.
             for iteration in 0..=NEWTON_ITERATIONS {
-                let (sin, cos) = sin_cos_turns(self.arc.start_rad + s * t);
+                let SinCos { sin, cos } = along;
                 let height = q[2] - rise * t;
                 best =
                     best.min((q[0] - r * cos).powi(2) + (q[1] - r * sin).powi(2) + height * height);
@@ -482,9 +654,18 @@ impl HelixPath {
                 }
                 let slope = r * s * (q[0] * sin - q[1] * cos) - rise * height;
                 let next = (t - slope / curvature).clamp(lo, hi);
-                if (next - t).abs() <= converged {
+                if (next - t).abs() <= self.converged {
                     break;
                 }
+                let turn = s * (next - t);
+                along = match self.at_end(next) {
+                    Some(end) => end,
+                    None if turn.abs() <= SMALL_TURN_RAD => along.turned(turn),
+                    None => {
+                        let (sin, cos) = sin_cos_turns(helix.arc.start_rad + s * next);
+                        SinCos { sin, cos }
+                    }
+                };
                 t = next;
             }
         }
@@ -492,39 +673,24 @@ impl HelixPath {
     }
 
     /// `p` minus the helix's point at the same angle, on the turn nearest
-    /// the point's height.
+    /// the point's height (an end of the fractions measured where that
+    /// turn's point lies past it).
     pub fn axis_error(&self, p: &Point) -> [f64; MAX_AXES] {
-        let q = self.local(p);
-        let t = self.same_angle_fraction(q)[1];
-        let [au, av, an] = self.arc.plane.axes();
-        let ideal = self.arc.point_at(
-            self.arc.start_rad + self.arc.sweep_rad * t,
-            self.start_height + self.rise * t,
-        );
+        self.axis_error_at(&self.place(self.helix.arc.relative(p)))
+    }
+
+    /// [`Self::axis_error`] of a placed point: the helix's point at its
+    /// angle has its sine and cosine, an end's the ones the meter keeps.
+    pub fn axis_error_at(&self, point: &HelixPoint) -> [f64; MAX_AXES] {
+        let t = point.same_angle[1];
+        let SinCos { sin, cos } = self.at_end(t).unwrap_or(point.angle);
+        let r = self.arc.radius;
+        let [au, av, an] = self.helix.arc.plane.axes();
         let mut phi = [0.0; MAX_AXES];
-        for axis in [au, av, an] {
-            phi[axis] = p.get(axis) as f64 - ideal[axis];
-        }
+        phi[au] = point.q[0] - r * cos;
+        phi[av] = point.q[1] - r * sin;
+        phi[an] = point.q[2] - self.helix.rise * t;
         phi
-    }
-
-    /// Vertices for drawing (stride 3), each handed to `f`, the first left
-    /// out where it equals `after`.
-    pub fn for_each_vertex(&self, after: Option<&[f64]>, f: impl FnMut(&[f64])) {
-        self.arc
-            .vertices_with(after, |t| self.start_height + self.rise * t, f)
-    }
-
-    pub fn info(&self) -> IdealPathInfo {
-        IdealPathInfo::Helix {
-            center: self.arc.center.coords().to_vec(),
-            plane: self.arc.plane.label(),
-            radius: self.arc.radius(),
-            start_rad: self.arc.start_rad,
-            sweep_rad: self.arc.sweep_rad,
-            start_height: self.start_height,
-            rise: self.rise,
-        }
     }
 }
 
@@ -671,7 +837,8 @@ mod tests {
     /// 0.06 apart, samples 0.4 grid units apart along r = 2858), the best
     /// sample can sit on a turn whose true minimum is not the nearest.
     fn brute_force(h: &HelixPath, p: &Point) -> f64 {
-        let q = h.local(p);
+        let [u, v, n] = h.arc.relative(p);
+        let q = [u as f64, v as f64, n as f64 - h.start_height];
         let samples = 200_000;
         let [first, last] = h.measured;
         let spacing = (last - first) / samples as f64;
@@ -779,6 +946,92 @@ mod tests {
             let axis_point = Point::new(&[0, 0, (rise * at).round() as i64]);
             let (fast, slow) = (h.deviation(&axis_point), brute_force(&h, &axis_point));
             proptest::prop_assert!((fast - slow).abs() <= 1e-7 * slow.max(1.0), "on the axis: newton {fast}, brute force {slow}");
+        }
+    }
+
+    /// `p` minus the helix's point at the same angle on the turn nearest
+    /// its height, as the definition reads: the angle by atan2, the point
+    /// by its own sine and cosine, in grid coordinates.
+    fn axis_error_by_definition(h: &HelixPath, p: &Point) -> [f64; 3] {
+        let [u, v, n] = h.arc.relative(p);
+        let phi = (v as f64).atan2(u as f64);
+        let [lo, hi] = h.measured;
+        let sweep = h.arc.sweep_rad;
+        let h_rel = n as f64 - h.start_height;
+        let height_fraction = if h.rise == 0.0 {
+            0.5
+        } else {
+            (h_rel / h.rise).clamp(lo, hi)
+        };
+        let k = ((h.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
+        let t = ((phi + TAU * k - h.arc.start_rad) / sweep).clamp(lo, hi);
+        let ideal = h
+            .arc
+            .point_at(h.arc.start_rad + sweep * t, h.start_height + h.rise * t);
+        std::array::from_fn(|axis| p.get(axis) as f64 - ideal[axis])
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// A walk of steps near a random helix or piece of one (turns far
+        /// apart or closer together than a cell, either direction, centers
+        /// anywhere up to ±2^30): each walked point measures as it does on
+        /// its own, to the bit (so a stretch of points measures the same
+        /// wherever it starts), its distance is the brute force's and its
+        /// axis error the definition's.
+        #[test]
+        fn walked_helix_points_measure_as_each_alone(
+            radius in 1i64..3_000,
+            center in proptest::array::uniform3(proptest::prop_oneof![
+                -(1i64 << 30) + 3_100..=(1i64 << 30) - 3_100,
+                proptest::strategy::Just((1i64 << 30) - 3_100),
+                proptest::strategy::Just(-(1i64 << 30) + 3_100),
+            ]),
+            start in 0.0..TAU,
+            turns in -6.0f64..6.0,
+            pitch in proptest::prop_oneof![-0.5f64..0.5, -4.0f64..4.0, -3_000.0f64..3_000.0],
+            piece in proptest::option::of((0.0f64..0.5, 0.5f64..1.0)),
+            at in 0.0f64..1.0,
+            moves in proptest::collection::vec(proptest::array::uniform3(-1i64..=1), 0..6),
+        ) {
+            let sweep = if turns.abs() < 0.05 { 0.05 * TAU } else { turns * TAU };
+            let rise = (pitch * sweep.abs() / TAU).clamp(-1e5, 1e5);
+            let whole = HelixPath::new(arc(center, radius * radius, start, sweep), 0.0, rise);
+            let h = match piece {
+                Some((from, to)) => whole.piece(from, to),
+                None => whole.clone(),
+            };
+            let on = whole.arc.point_at(start + sweep * at, rise * at);
+            let first = Point::new(&std::array::from_fn::<i64, 3, _>(|axis| on[axis].round() as i64));
+            let moves: Vec<Step> = moves
+                .iter()
+                .map(|m| (0..3).fold(Step::NONE, |step, a| step.with(a, m[a])))
+                .collect();
+            let meter = h.meter();
+            let mut walked = Vec::new();
+            meter.walk(&first, &moves, |point| walked.push((meter.deviation_at(point), meter.axis_error_at(point))));
+            let mut p = first;
+            for (k, (deviation, error)) in walked.into_iter().enumerate() {
+                if k > 0 {
+                    p.apply(moves[k - 1]);
+                }
+                proptest::prop_assert_eq!(deviation.to_bits(), h.deviation(&p).to_bits(), "point {}", k);
+                proptest::prop_assert_eq!(error.map(f64::to_bits), h.axis_error(&p).map(f64::to_bits), "point {}", k);
+                let slow = brute_force(&h, &p);
+                proptest::prop_assert!(
+                    (deviation - slow).abs() <= 1e-7 * slow.max(1.0),
+                    "point {}: newton {}, brute force {}", k, deviation, slow
+                );
+                let want = axis_error_by_definition(&h, &p);
+                for axis in 0..3 {
+                    // The definition's point has the rounding of coordinates
+                    // up to 2^30; the meter's offsets from the center are exact.
+                    proptest::prop_assert!(
+                        (error[axis] - want[axis]).abs() <= 1e-9 * (radius as f64).max(1e3) + 1e-15 * center[axis].abs() as f64,
+                        "point {} axis {}: {:?}, by definition {:?}", k, axis, error, want
+                    );
+                }
+            }
         }
     }
 

@@ -9,7 +9,7 @@ pub mod info;
 pub mod line;
 
 use crate::grid::{MAX_AXES, Point};
-use curve::{ArcMeter, ArcPath, HelixPath};
+use curve::{ArcMeter, ArcPath, HelixMeter, HelixPath};
 use info::IdealPathInfo;
 use line::LineMeter;
 
@@ -37,13 +37,13 @@ impl IdealPath {
     }
 
     /// This path ready to measure many points: its per-path constants
-    /// (direction, squared length, radius) computed once. Build one per
+    /// (direction, squared length, radius, a helix's ends) computed once. Build one per
     /// segment, not per point.
     pub fn meter(&self) -> Meter<'_> {
         match self {
             IdealPath::Line { from, to } => Meter::Line(LineMeter::new(from, to)),
             IdealPath::Arc(arc) => Meter::Arc(arc.meter()),
-            IdealPath::Helix(helix) => Meter::Helix(helix),
+            IdealPath::Helix(helix) => Meter::Helix(helix.meter()),
         }
     }
 
@@ -111,7 +111,7 @@ fn as_f64(p: &Point) -> [f64; MAX_AXES] {
 pub enum Meter<'a> {
     Line(LineMeter),
     Arc(ArcMeter<'a>),
-    Helix(&'a HelixPath),
+    Helix(HelixMeter<'a>),
 }
 
 impl Meter<'_> {
