@@ -552,7 +552,32 @@ impl HelixMeter<'_> {
         } else {
             (q[2] / helix.rise).clamp(lo, hi)
         };
-        let k = ((helix.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
+        let mut k = ((helix.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
+        // That turn may have no point at this angle within the fractions
+        // measured (a point near an end, at an angle past the end's): then
+        // the next turn inward, where it has one and its point at this
+        // angle is nearer than the end. Clamped onto the end always, a
+        // point was compared with the end's angle: on a helix of pitch
+        // 0.5, points at height 0 half a turn from the start were 2 r off
+        // in x. (The end itself, its fraction rounded past the end, stays
+        // with the end.)
+        let past = t_of(k);
+        if past < lo || past > hi {
+            let (end, end_t, inner_k) = if past < lo {
+                (self.ends[0], lo, k + sweep.signum())
+            } else {
+                (self.ends[1], hi, k - sweep.signum())
+            };
+            let inner_t = t_of(inner_k);
+            let r = self.arc.radius;
+            let to_end = (a - r * end.cos).powi(2)
+                + (b - r * end.sin).powi(2)
+                + (q[2] - helix.rise * end_t).powi(2);
+            let to_inner = radial * radial + (q[2] - helix.rise * inner_t).powi(2);
+            if (lo..=hi).contains(&inner_t) && to_inner < to_end {
+                k = inner_k;
+            }
+        }
         HelixPoint {
             q,
             radial,
@@ -963,8 +988,31 @@ mod tests {
         } else {
             (h_rel / h.rise).clamp(lo, hi)
         };
-        let k = ((h.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
-        let t = ((phi + TAU * k - h.arc.start_rad) / sweep).clamp(lo, hi);
+        // The nearest turn by height (its point clamped onto the end), or
+        // the nearest turn with a point at angle phi within the fractions
+        // measured: whichever's point is nearer.
+        let t_of = |k: f64| (phi + TAU * k - h.arc.start_rad) / sweep;
+        let x = ((h.arc.start_rad + sweep * height_fraction - phi) / TAU).round();
+        let at = |t: f64| {
+            h.arc
+                .point_at(h.arc.start_rad + sweep * t, h.start_height + h.rise * t)
+        };
+        let distance = |t: f64| {
+            (0..3)
+                .map(|axis| (p.get(axis) as f64 - at(t)[axis]).powi(2))
+                .sum::<f64>()
+        };
+        let clamped = t_of(x).clamp(lo, hi);
+        let t = (-3..=3)
+            .map(|i| t_of(x + i as f64))
+            .filter(|t| (lo..=hi).contains(t))
+            .min_by(|a, b| {
+                (a - height_fraction)
+                    .abs()
+                    .total_cmp(&(b - height_fraction).abs())
+            })
+            .filter(|&inner| distance(inner) < distance(clamped))
+            .unwrap_or(clamped);
         let ideal = h
             .arc
             .point_at(h.arc.start_rad + sweep * t, h.start_height + h.rise * t);
@@ -1033,6 +1081,26 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn helix_axis_error_takes_a_turn_that_has_the_points_angle() {
+        // Three turns of r = 10 rising 1.5 (0.5 a turn): at -90°, three
+        // quarters of the first turn, the helix is at height 0.375. The
+        // point (0, -10, 0) is nearest in height to the turn before the
+        // start, which has no point there: it was compared with the start
+        // (10, 0, 0), 10 off in x and y.
+        let h = HelixPath::new(arc([0, 0, 0], 100, 0.0, 3.0 * TAU), 0.0, 1.5);
+        let phi = h.axis_error(&Point::new(&[0, -10, 0]));
+        assert!(phi[0].abs() < 1e-12 && phi[1].abs() < 1e-12, "{phi:?}");
+        assert!((phi[2] + 0.375).abs() < 1e-12, "{phi:?}");
+        // The same at the end, clockwise: at -90° the last turn passed
+        // a quarter turn before the end, at height 1.125; (0, -10, 2) was
+        // compared with the end (10, 0, 1.5).
+        let h = HelixPath::new(arc([0, 0, 0], 100, 0.0, -3.0 * TAU), 0.0, 1.5);
+        let phi = h.axis_error(&Point::new(&[0, -10, 2]));
+        assert!(phi[0].abs() < 1e-12 && phi[1].abs() < 1e-12, "{phi:?}");
+        assert!((phi[2] - 0.875).abs() < 1e-12, "{phi:?}");
     }
 
     #[test]
