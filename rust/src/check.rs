@@ -29,6 +29,7 @@ use crate::text::{echo, split_line};
 use crate::trace::Trace;
 use serde::Serialize;
 use serde_json::{Map, Value};
+use std::borrow::Borrow;
 use std::sync::Arc;
 use tsify::Tsify;
 
@@ -1005,61 +1006,212 @@ pub struct Check {
 
 /// Checks text points against the request given as JSON text.
 pub fn check_text(request_json: &str, text: &str) -> Result<Check, Error> {
-    let request = Request::from_json(request_json)?;
-    let trace = crate::algorithms::run(&request)?;
-    let (points, steps) = Points::read_text(text, trace.dims(), true)?;
-    let steps = steps.expect("asked for with the points");
-    Ok(check_with_steps(&request, &trace, &points, &steps))
+    CheckPass::from_text(request_json, text).map(CheckPass::run)
 }
 
 /// Checks flat points (`dims` per point) against the request as JSON text.
 pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Check, Error> {
-    let request = Request::from_json(request_json)?;
-    let trace = crate::algorithms::run(&request)?;
-    let points = Points::from_flat(values, dims, trace.dims())?;
-    Ok(check_trace(&request, &trace, &points))
+    CheckPass::from_flat(request_json, values, dims).map(CheckPass::run)
 }
 
 /// Checks points against the trace of `request` (already run).
 pub fn check_trace(request: &Request, trace: &Trace, points: &Points) -> Check {
-    check_with_steps(request, trace, points, &points.steps())
+    CheckPass::new(request.clone(), trace, points.clone(), points.steps()).run()
 }
 
-/// [`check_trace`] with the points' steps, made once: the rule's path is
-/// compared with them, and every candidate of alsoMatches follows them.
-fn check_with_steps(
-    request: &Request,
-    trace: &Trace,
-    points: &Points,
-    steps: &Arc<[Step]>,
-) -> Check {
-    let first_difference = first_difference(trace, points, steps);
-    Check {
-        matches: first_difference.is_none(),
-        algorithm: trace.algorithm.clone(),
-        steps: trace.steps(),
-        your_steps: points.len() - 1,
-        first_difference,
-        also_matches: also_matches(request, points, steps),
+/// How far a check made a slice at a time has got ([`CheckPass::advance`]).
+#[derive(Serialize, Tsify, Debug, Clone, Copy, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct CheckProgress {
+    /// What the check does now.
+    pub stage: CheckStage,
+    /// Step indices compared so far, of `stepsShared`, the steps both paths
+    /// have (all of them once the first difference is found).
+    pub steps_compared: u64,
+    pub steps_shared: u64,
+    /// Option combinations of the family's rules tried for alsoMatches so
+    /// far, of `variants`.
+    pub variants_tried: u64,
+    pub variants: u64,
+    pub done: bool,
+}
+
+/// The stages of a check, in order.
+#[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
+#[serde(rename_all = "camelCase")]
+pub enum CheckStage {
+    /// The points' steps compared with the rule's, to the first that differs.
+    Comparing,
+    /// Every option combination of the rule's family traced along the
+    /// points, for those whose path they are (alsoMatches).
+    Variants,
+    /// The check is made.
+    Done,
+}
+
+/// A check made a slice at a time, so that a worker can report it and stop
+/// it between slices: at the page's cap (1,500,000 steps) the whole check
+/// took about a second in one call. The steps are compared a bounded
+/// number at a time, then the family's option combinations are traced one
+/// or more at a time ([`AlsoMatchesPass`]); the result is the one a whole
+/// check gives, which is this pass run to its end ([`Self::run`]). The
+/// rule's trace is owned (a worker's check) or borrowed (`&Trace`).
+pub struct CheckPass<T: Borrow<Trace> = Trace> {
+    request: Request,
+    /// The rule's path.
+    trace: T,
+    points: Points,
+    /// The points' steps, made once: compared with the rule's, and followed
+    /// by every combination alsoMatches traces.
+    steps: Arc<[Step]>,
+    /// Step indices compared so far, below `steps_shared`.
+    steps_compared: u64,
+    /// The steps both paths have.
+    steps_shared: u64,
+    /// The first point index where the two part, once the comparison found
+    /// it (0: they start apart).
+    mismatch: Option<u64>,
+    /// Set once the comparison is over: the first difference (None: the
+    /// points are the rule's path).
+    first_difference: Option<Option<Difference>>,
+    variants: AlsoMatchesPass,
+}
+
+impl CheckPass {
+    /// A check of points read from text ([`Points::from_text`]) against the
+    /// request given as JSON text.
+    pub fn from_text(request_json: &str, text: &str) -> Result<CheckPass, Error> {
+        let request = Request::from_json(request_json)?;
+        let trace = crate::algorithms::run(&request)?;
+        let (points, steps) = Points::read_text(text, trace.dims(), true)?;
+        let steps = steps.expect("asked for with the points");
+        Ok(CheckPass::new(request, trace, points, steps))
+    }
+
+    /// A check of flat points (`dims` per point, [`Points::from_flat`])
+    /// against the request given as JSON text.
+    pub fn from_flat(request_json: &str, values: &[f64], dims: usize) -> Result<CheckPass, Error> {
+        let request = Request::from_json(request_json)?;
+        let trace = crate::algorithms::run(&request)?;
+        let points = Points::from_flat(values, dims, trace.dims())?;
+        let steps = points.steps();
+        Ok(CheckPass::new(request, trace, points, steps))
     }
 }
 
-/// The first point index below both lengths where `trace` and `points`
-/// differ. Two paths from the same start are the same points exactly as
-/// far as their steps are the same, and the step that differs first
-/// leads to the first point that does: so the step codes (2 bytes a step)
-/// are compared, not the points (8 bytes a coordinate, decoded from the
-/// trace's steps first).
-fn first_mismatch(trace: &Trace, points: &Points, steps: &[Step]) -> Option<u64> {
-    if trace.start().coords() != points.get(0) {
-        return Some(0);
+impl<T: Borrow<Trace>> CheckPass<T> {
+    /// A check of `points` (with their `steps`) against `trace`, the path
+    /// of `request`.
+    pub fn new(request: Request, trace: T, points: Points, steps: Arc<[Step]>) -> CheckPass<T> {
+        let rule = trace.borrow();
+        let starts_apart = rule.start().coords() != points.get(0);
+        let steps_shared = rule.steps().min(steps.len() as u64);
+        CheckPass {
+            variants: AlsoMatchesPass::new(&request, &points),
+            mismatch: starts_apart.then_some(0),
+            // Nothing to compare past a start that differs.
+            steps_compared: if starts_apart { steps_shared } else { 0 },
+            steps_shared,
+            request,
+            trace,
+            points,
+            steps,
+            first_difference: None,
+        }
     }
-    let shared = trace.steps().min(steps.len() as u64);
-    let rule = trace.step_range(0, shared);
-    rule.iter()
-        .zip(steps)
-        .position(|(a, b)| a != b)
-        .map(|step| step as u64 + 1)
+
+    /// The learner's points.
+    pub fn points(&self) -> &Points {
+        &self.points
+    }
+
+    /// The whole check, in one call.
+    pub fn run(mut self) -> Check {
+        self.advance(u64::MAX);
+        self.finish()
+    }
+
+    /// Takes the check on by about `units` points' worth of work: up to
+    /// `units` steps compared, then option combinations traced, each
+    /// counted as the points (what tracing one along the points can take),
+    /// at least one a call. A call after the end does nothing.
+    pub fn advance(&mut self, units: u64) -> CheckProgress {
+        let mut budget = units.max(1);
+        while budget > 0 && self.first_difference.is_none() {
+            let to = self
+                .steps_compared
+                .saturating_add(budget)
+                .min(self.steps_shared);
+            let from = self.steps_compared as usize;
+            let rule = self.trace.borrow().step_range(self.steps_compared, to);
+            let parted = rule
+                .iter()
+                .zip(&self.steps[from..to as usize])
+                .position(|(a, b)| a != b);
+            budget -= to - self.steps_compared;
+            match parted {
+                // Point k + 1 is the first the differing step k reaches.
+                Some(at) => {
+                    self.mismatch = Some(from as u64 + at as u64 + 1);
+                    self.steps_compared = self.steps_shared;
+                }
+                None => self.steps_compared = to,
+            }
+            if self.steps_compared == self.steps_shared {
+                self.first_difference = Some(first_difference(
+                    self.trace.borrow(),
+                    &self.points,
+                    self.mismatch,
+                ));
+            }
+        }
+        let combination_cost = self.points.len();
+        while budget > 0 && !self.variants.is_done() {
+            self.variants
+                .try_next(&self.request, &self.points, &self.steps);
+            budget = budget.saturating_sub(combination_cost);
+        }
+        self.progress()
+    }
+
+    pub fn progress(&self) -> CheckProgress {
+        let stage = if self.first_difference.is_none() {
+            CheckStage::Comparing
+        } else if !self.variants.is_done() {
+            CheckStage::Variants
+        } else {
+            CheckStage::Done
+        };
+        CheckProgress {
+            stage,
+            steps_compared: self.steps_compared,
+            steps_shared: self.steps_shared,
+            variants_tried: self.variants.combinations_tried,
+            variants: self.variants.combinations,
+            done: stage == CheckStage::Done,
+        }
+    }
+
+    /// The check, once [`Self::advance`] is done; else None.
+    pub fn result(&self) -> Option<Check> {
+        if !self.variants.is_done() {
+            return None;
+        }
+        let first_difference = self.first_difference.clone()?;
+        let rule = self.trace.borrow();
+        Some(Check {
+            matches: first_difference.is_none(),
+            algorithm: rule.algorithm.clone(),
+            steps: rule.steps(),
+            your_steps: self.points.len() - 1,
+            first_difference,
+            also_matches: self.variants.matches.clone(),
+        })
+    }
+
+    fn finish(self) -> Check {
+        self.result().expect("advanced to the end")
+    }
 }
 
 /// Whether `trace`, traced to follow `steps` (the points' own steps), is
@@ -1069,9 +1221,15 @@ fn follows(trace: &Trace, points: &Points, steps: &[Step]) -> bool {
     trace.steps() == steps.len() as u64 && trace.start().coords() == points.get(0)
 }
 
-fn first_difference(trace: &Trace, points: &Points, your_steps: &[Step]) -> Option<Difference> {
+/// The first difference of `points` from `trace`'s path, given `mismatch`,
+/// the first point index below both lengths where they differ. Two paths
+/// from the same start are the same points exactly as far as their steps
+/// are the same, and the step that differs first leads to the first point
+/// that does: so the step codes (2 bytes a step) are compared, not the
+/// points (8 bytes a coordinate, decoded from the trace's steps first).
+fn first_difference(trace: &Trace, points: &Points, mismatch: Option<u64>) -> Option<Difference> {
     let steps = trace.steps();
-    let (kind, k) = match first_mismatch(trace, points, your_steps) {
+    let (kind, k) = match mismatch {
         Some(0) => (DifferenceKind::Start, 0),
         Some(k) => (DifferenceKind::Step, k),
         None if points.len() < steps + 1 => (DifferenceKind::Stops, points.len()),
@@ -1161,15 +1319,49 @@ fn family_of(request: &Request) -> Option<Family> {
 /// other options go to each algorithm that takes them; `maxSteps` is held
 /// to the points' length, so a rule that needs more steps stops early.
 pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> Vec<AlsoMatch> {
-    let Some(family) = family_of(request) else {
-        return Vec::new();
-    };
-    let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
-    let mut out = Vec::new();
-    // The combinations traced so far, by algorithm, each with whether it
-    // matched, for those whose path is known to be the path of one of them.
-    let mut traced: Vec<(&str, Vec<Option<Value>>, bool)> = Vec::new();
-    for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
+    let mut pass = AlsoMatchesPass::new(request, points);
+    while !pass.is_done() {
+        pass.try_next(request, points, steps);
+    }
+    pass.matches
+}
+
+/// [`also_matches`] made one option combination at a time, so that a
+/// check can be run in slices: at the page's cap each combination traces
+/// up to the whole path (a helix's circle is counted by a dry run of every
+/// turn first), and a helix's family has 200 of them.
+struct AlsoMatchesPass {
+    /// The algorithms of the request's family, in the catalogue's order.
+    family: Vec<&'static AlgorithmInfo>,
+    /// `maxSteps` as each combination is traced: the points' steps at most.
+    max_steps: u64,
+    /// The algorithm being tried, by index into `family`, and its
+    /// combinations' state; None once every algorithm has been tried.
+    algorithm: Option<(usize, AlgorithmTrial)>,
+    /// The combinations traced so far, by algorithm, each with whether it
+    /// matched, for those whose path is known to be the path of one of them.
+    traced: Vec<(&'static str, Vec<Option<Value>>, bool)>,
+    /// Combinations tried so far, of `combinations` (every algorithm's).
+    combinations_tried: u64,
+    combinations: u64,
+    /// The entries of the algorithms tried to the end.
+    matches: Vec<AlsoMatch>,
+}
+
+/// One algorithm's combinations, tried in the odometer's order.
+struct AlgorithmTrial {
+    info: &'static AlgorithmInfo,
+    tried: Vec<(&'static OptionSpec, Vec<Value>)>,
+    /// The request's options this algorithm takes and the check does not vary.
+    base: Map<String, Value>,
+    /// The next combination: an index into each tried option's values.
+    choice: Vec<usize>,
+    /// The combinations whose path is the points'.
+    matched: Vec<Vec<Option<Value>>>,
+}
+
+impl AlgorithmTrial {
+    fn new(info: &'static AlgorithmInfo, request: &Request, max_steps: u64) -> AlgorithmTrial {
         let tried = tried_options(info);
         let mut base = Map::new();
         for (name, value) in request.options() {
@@ -1181,38 +1373,23 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
         if info.options.iter().any(|o| o.name == MAX_STEPS.name) {
             base.insert(MAX_STEPS.name.to_string(), Value::from(max_steps));
         }
-        let mut matched: Vec<Vec<Option<Value>>> = Vec::new();
-        let mut choice = vec![0usize; tried.len()];
-        loop {
-            let mut combination: Vec<Option<Value>> = tried
-                .iter()
-                .zip(&choice)
-                .map(|((_, values), &i)| Some(values[i].clone()))
-                .collect();
-            let known =
-                same_path_as(info, request, &tried, &combination).and_then(|(id, earlier)| {
-                    traced
-                        .iter()
-                        .find(|(i, c, _)| *i == id && *c == earlier)
-                        .map(|&(_, _, path_follows)| path_follows)
-                });
-            let path_follows = known.unwrap_or_else(|| {
-                let asked = combination.clone();
-                let path_follows = trace_combination(info, &base, &tried, steps, &mut combination)
-                    .is_some_and(|trace| follows(&trace, points, steps));
-                // Only a combination traced as asked stands for another.
-                if combination == asked {
-                    traced.push((info.id, asked, path_follows));
-                }
-                path_follows
-            });
-            if path_follows && !matched.contains(&combination) {
-                matched.push(combination);
-            }
-            if !next_combination(&mut choice, &tried) {
-                break;
-            }
+        AlgorithmTrial {
+            info,
+            choice: vec![0; tried.len()],
+            tried,
+            base,
+            matched: Vec::new(),
         }
+    }
+
+    /// The matching combinations as entries ([`describe_matches`]).
+    fn finish(self) -> Vec<AlsoMatch> {
+        let AlgorithmTrial {
+            info,
+            tried,
+            matched,
+            ..
+        } = self;
         // A combination with an option the move refused (None: traced
         // without it, so with its default) is the one with that default
         // given, when that matched too: a circle in x and y refuses plane
@@ -1232,9 +1409,90 @@ pub fn also_matches(request: &Request, points: &Points, steps: &Arc<[Step]>) -> 
             .filter(|m| !stands_for_another(m))
             .cloned()
             .collect();
-        out.extend(describe_matches(info, &tried, distinct));
+        describe_matches(info, &tried, distinct)
     }
-    out
+}
+
+/// How many combinations of its tried options' values `info` has.
+fn combination_count(info: &AlgorithmInfo) -> u64 {
+    tried_options(info)
+        .iter()
+        .map(|(_, values)| values.len() as u64)
+        .product()
+}
+
+impl AlsoMatchesPass {
+    fn new(request: &Request, points: &Points) -> AlsoMatchesPass {
+        let family: Vec<&'static AlgorithmInfo> = match family_of(request) {
+            Some(family) => algorithms::ALGORITHMS
+                .iter()
+                .copied()
+                .filter(|a| a.family == family)
+                .collect(),
+            None => Vec::new(),
+        };
+        let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
+        AlsoMatchesPass {
+            algorithm: family
+                .first()
+                .map(|&info| (0, AlgorithmTrial::new(info, request, max_steps))),
+            combinations: family.iter().map(|info| combination_count(info)).sum(),
+            family,
+            max_steps,
+            traced: Vec::new(),
+            combinations_tried: 0,
+            matches: Vec::new(),
+        }
+    }
+
+    fn is_done(&self) -> bool {
+        self.algorithm.is_none()
+    }
+
+    /// Tries the next combination (traced along `steps`, unless its path is
+    /// known to be one traced before), and when it was its algorithm's
+    /// last, lists that algorithm's matches and moves to the next one.
+    fn try_next(&mut self, request: &Request, points: &Points, steps: &Arc<[Step]>) {
+        let Some((index, trial)) = &mut self.algorithm else {
+            return;
+        };
+        let (info, tried) = (trial.info, &trial.tried);
+        let mut combination: Vec<Option<Value>> = tried
+            .iter()
+            .zip(&trial.choice)
+            .map(|((_, values), &i)| Some(values[i].clone()))
+            .collect();
+        let known = same_path_as(info, request, tried, &combination).and_then(|(id, earlier)| {
+            self.traced
+                .iter()
+                .find(|(i, c, _)| *i == id && *c == earlier)
+                .map(|&(_, _, path_follows)| path_follows)
+        });
+        let path_follows = known.unwrap_or_else(|| {
+            let asked = combination.clone();
+            let path_follows = trace_combination(info, &trial.base, tried, steps, &mut combination)
+                .is_some_and(|trace| follows(&trace, points, steps));
+            // Only a combination traced as asked stands for another.
+            if combination == asked {
+                self.traced.push((info.id, asked, path_follows));
+            }
+            path_follows
+        });
+        if path_follows && !trial.matched.contains(&combination) {
+            trial.matched.push(combination);
+        }
+        self.combinations_tried += 1;
+        if next_combination(&mut trial.choice, &trial.tried) {
+            return;
+        }
+        let next = *index + 1;
+        let next_trial = self
+            .family
+            .get(next)
+            .map(|&info| (next, AlgorithmTrial::new(info, request, self.max_steps)));
+        let (_, done) = std::mem::replace(&mut self.algorithm, next_trial).expect("tried above");
+        self.matches.extend(done.finish());
+    }
 }
 
 /// The name of the `tie` option.
@@ -1474,6 +1732,131 @@ mod tests {
             .map(|spec| spec.name)
             .collect();
         r.without(&off)
+    }
+
+    /// The points `points` with changes that make them part from their
+    /// path at various places: the path itself, started elsewhere, two
+    /// unequal steps swapped (point k alone moves) near the start, the
+    /// middle and the end, cut short, and gone on a step past the end.
+    fn deviations(points: &Points) -> Vec<Points> {
+        let dims = points.dims;
+        let n = points.len() as usize;
+        let mut out = vec![points.clone()];
+        let mut shifted = points.clone();
+        shifted
+            .coords
+            .iter_mut()
+            .step_by(dims)
+            .for_each(|x| *x += 1);
+        out.push(shifted);
+        for near in [1, n / 2, n - 2] {
+            // Point k between steps k - 1 and k, swapped: the first two
+            // unequal steps from `near` on.
+            let step = |k: usize| -> Vec<i64> {
+                (0..dims)
+                    .map(|a| points.coords[k * dims + a] - points.coords[(k - 1) * dims + a])
+                    .collect()
+            };
+            if let Some(k) = (near.max(1)..n - 1).find(|&k| step(k) != step(k + 1)) {
+                let mut swapped = points.clone();
+                for a in 0..dims {
+                    swapped.coords[k * dims + a] =
+                        points.coords[(k - 1) * dims + a] + step(k + 1)[a];
+                }
+                out.push(swapped);
+            }
+        }
+        out.push(Points {
+            dims,
+            coords: points.coords[..(n / 2).max(1) * dims].to_vec(),
+        });
+        let mut longer = points.clone();
+        let last = points.get(n as u64 - 1).to_vec();
+        longer
+            .coords
+            .extend(last.iter().enumerate().map(|(a, &c)| c + i64::from(a == 0)));
+        out.push(longer);
+        out
+    }
+
+    /// The first point index below both lengths where the rule's points
+    /// and the learner's differ, by the points themselves.
+    fn first_differing_point(trace: &Trace, points: &Points) -> Option<u64> {
+        (0..points.len().min(trace.steps() + 1)).find(|&k| trace.point(k).coords() != points.get(k))
+    }
+
+    #[test]
+    fn a_check_made_in_slices_is_the_whole_check_bit_for_bit() {
+        let requests = [
+            r#"{"algorithm":"regions","from":[0,0,0],"to":[30,17,11]}"#,
+            r#"{"algorithm":"bresenham3d","from":[-3,5,2],"to":[40,-9,17],"tie":"hold"}"#,
+            r#"{"algorithm":"bresenham2d","from":[0,0],"to":[25,10]}"#,
+            r#"{"algorithm":"circle","from":[10,0,0],"to":[0,10,0],"center":[0,0,0],"dir":"ccw","plane":"xy"}"#,
+            r#"{"algorithm":"arc-segments","from":[12,0,0],"to":[-12,0,0],"center":[0,0,0],"dir":"cw","plane":"xy"}"#,
+            r#"{"algorithm":"helix","from":[10,0,0],"to":[10,0,24],"center":[0,0,0],"dir":"ccw","plane":"xy"}"#,
+            r#"{"algorithm":"helix","from":[8,0,0],"to":[8,0,40],"center":[0,0,0],"plane":"xy","turns":2,"method":"segments"}"#,
+        ];
+        for json in requests {
+            let r = request(json);
+            let trace = crate::algorithms::run(&r).unwrap();
+            for points in deviations(&points_of(&trace)) {
+                let whole = check_trace(&r, &trace, &points);
+                // The comparison of steps finds the first point that differs.
+                let differs = first_differing_point(&trace, &points);
+                let kind = whole.first_difference.as_ref().map(|d| d.kind);
+                if let Some(k) = differs {
+                    assert_eq!(
+                        whole.first_difference.as_ref().map(|d| d.point_index),
+                        Some(k),
+                        "{json}"
+                    );
+                } else {
+                    assert!(
+                        !matches!(kind, Some(DifferenceKind::Start | DifferenceKind::Step)),
+                        "{json}"
+                    );
+                }
+                let whole_json = serde_json::to_string(&whole).unwrap();
+                let combinations = AlsoMatchesPass::new(&r, &points).combinations;
+                for units in [1, 7, 64, points.len(), u64::MAX] {
+                    let mut pass =
+                        CheckPass::new(r.clone(), &trace, points.clone(), points.steps());
+                    let mut before = pass.progress();
+                    let mut calls = 0;
+                    while !before.done {
+                        assert_eq!(pass.result(), None, "{json}: a result before the end");
+                        let now = pass.advance(units);
+                        calls += 1;
+                        // Each call does at most its units of comparing, or
+                        // one combination at least.
+                        assert!(
+                            now.steps_compared - before.steps_compared <= units
+                                || now.steps_compared == now.steps_shared,
+                            "{json}"
+                        );
+                        if units == 1 && before.stage == CheckStage::Variants {
+                            assert_eq!(now.variants_tried, before.variants_tried + 1, "{json}");
+                        }
+                        assert!(
+                            now.variants_tried >= before.variants_tried
+                                && now.steps_compared >= before.steps_compared
+                        );
+                        before = now;
+                    }
+                    assert_eq!(before.variants_tried, combinations, "{json}");
+                    assert_eq!(before.steps_compared, before.steps_shared, "{json}");
+                    if units == 1 {
+                        assert!(calls as u64 >= combinations, "{json}: {calls} calls");
+                    }
+                    let sliced = pass.result().unwrap();
+                    assert_eq!(sliced, whole, "{json} in slices of {units}");
+                    assert_eq!(serde_json::to_string(&sliced).unwrap(), whole_json);
+                    // A call after the end changes nothing.
+                    assert_eq!(pass.advance(units), before);
+                    assert_eq!(pass.result().unwrap(), whole);
+                }
+            }
+        }
     }
 
     #[test]

@@ -187,42 +187,74 @@ impl TextBytes {
     }
 }
 
-/// Checks a learner's points, text (CSV, blank-separated rows or a printed
-/// list, parsed here and nowhere else), against the request (see `check`).
-#[wasm_bindgen(js_name = checkText, unchecked_return_type = "Check")]
-pub fn check_text(request_json: &str, text: &TextBytes) -> Result<JsValue, JsValue> {
-    let check = crate::check::check_text(request_json, utf8("points", &text.0)?)
-        .map_err(|e| to_js_text_error(&e, "points"))?;
-    Ok(to_js(&check))
-}
+/// A learner's points checked against a request's rule a slice at a time
+/// (`check::CheckPass`), so that a worker can report the check and stop it
+/// between slices; `advance(Infinity)` makes the whole check in one call.
+#[wasm_bindgen]
+pub struct CheckRun(crate::check::CheckPass);
 
-/// Checks a learner's points, a flat Int32Array / Float64Array with `dims`
-/// values per point, against the request (see `check`).
-#[wasm_bindgen(js_name = check, unchecked_return_type = "Check")]
-pub fn check(
-    request_json: &str,
-    #[wasm_bindgen(unchecked_param_type = "Int32Array | Float64Array")] points: JsValue,
-    dims: Option<u32>,
-) -> Result<JsValue, JsValue> {
-    let values: Vec<f64> = if let Some(ints) = points.dyn_ref::<js_sys::Int32Array>() {
-        ints.to_vec().into_iter().map(f64::from).collect()
-    } else if let Some(floats) = points.dyn_ref::<js_sys::Float64Array>() {
-        floats.to_vec()
-    } else {
-        return Err(to_js_error(&Error::field(
-            "points",
-            "expected an Int32Array or a Float64Array",
-        )));
-    };
-    let dims = dims.ok_or_else(|| {
-        to_js_error(&Error::field(
-            "dims",
-            "missing: give the coordinates per point",
-        ))
-    })?;
-    let check = crate::check::check_flat(request_json, &values, dims as usize)
-        .map_err(|e| to_js_error(&e))?;
-    Ok(to_js(&check))
+#[wasm_bindgen]
+impl CheckRun {
+    /// A check of points given as text (CSV, blank-separated rows or a
+    /// printed list, read here and nowhere else): the text is read and the
+    /// rule traced in this call; errors give the line and column.
+    #[wasm_bindgen(js_name = fromText)]
+    pub fn from_text(request_json: &str, text: &TextBytes) -> Result<CheckRun, JsValue> {
+        crate::check::CheckPass::from_text(request_json, utf8("points", &text.0)?)
+            .map(CheckRun)
+            .map_err(|e| to_js_text_error(&e, "points"))
+    }
+
+    /// A check of points given as a flat Int32Array / Float64Array with
+    /// `dims` values per point.
+    #[wasm_bindgen(js_name = fromPoints)]
+    pub fn from_points(
+        request_json: &str,
+        #[wasm_bindgen(unchecked_param_type = "Int32Array | Float64Array")] points: JsValue,
+        dims: Option<u32>,
+    ) -> Result<CheckRun, JsValue> {
+        let values: Vec<f64> = if let Some(ints) = points.dyn_ref::<js_sys::Int32Array>() {
+            ints.to_vec().into_iter().map(f64::from).collect()
+        } else if let Some(floats) = points.dyn_ref::<js_sys::Float64Array>() {
+            floats.to_vec()
+        } else {
+            return Err(to_js_error(&Error::field(
+                "points",
+                "expected an Int32Array or a Float64Array",
+            )));
+        };
+        let dims = dims.ok_or_else(|| {
+            to_js_error(&Error::field(
+                "dims",
+                "missing: give the coordinates per point",
+            ))
+        })?;
+        crate::check::CheckPass::from_flat(request_json, &values, dims as usize)
+            .map(CheckRun)
+            .map_err(|e| to_js_error(&e))
+    }
+
+    /// Takes the check on by about `units` points' worth of work
+    /// (`CheckPass::advance`: steps compared, then option combinations
+    /// traced, each counted as the points); Infinity runs it to its end.
+    #[wasm_bindgen(unchecked_return_type = "CheckProgress")]
+    pub fn advance(&mut self, units: f64) -> JsValue {
+        // `as` saturates: Infinity is u64::MAX, a negative or NaN 0 (one
+        // step or combination, the least a call makes).
+        to_js(&self.0.advance(units as u64))
+    }
+
+    /// The check, once `advance` is done.
+    #[wasm_bindgen(unchecked_return_type = "Check")]
+    pub fn result(&self) -> Result<JsValue, JsValue> {
+        let check = self.0.result().ok_or_else(|| {
+            to_js_error(&Error::field(
+                "check",
+                "not made yet: advance the run to its end first",
+            ))
+        })?;
+        Ok(to_js(&check))
+    }
 }
 
 /// Bytes of values made in wasm memory at a time when points, deviations

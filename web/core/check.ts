@@ -16,7 +16,8 @@ import { AXIS_NAMES } from './axes.js';
 import { callCore } from './errors.js';
 import { argumentError, describeValue, isPromiseLike, isTextOrUtf8, text as guardText, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
-import type { Check } from './pkg/voxpath.js';
+import { advanceForTime, checkSliceOptions, freeStopped, type SliceOptions, yieldToEventLoop } from './slices.js';
+import type { Check, CheckProgress, CheckRun } from './pkg/voxpath.js';
 import type { TraceOptions } from './types.js';
 import { loadCore, withTextBytes } from './wasm.js';
 
@@ -31,7 +32,19 @@ import { loadCore, withTextBytes } from './wasm.js';
 export type LearnerPoints = readonly (readonly number[])[] | { points: Int32Array | Float64Array; dims: number } | string | Uint8Array;
 
 /** The result and its parts are the core's Rust types (rust/src/check.rs). */
-export type { AlsoMatch, AroundRow, Check, DifferenceKind, Difference as CheckDifference } from './pkg/voxpath.js';
+export type { AlsoMatch, AroundRow, Check, CheckProgress, CheckStage, DifferenceKind, Difference as CheckDifference } from './pkg/voxpath.js';
+
+/** Options of a check made in slices: onProgress gets each slice's CheckProgress. */
+export type CheckOptions = SliceOptions<CheckProgress>;
+
+/**
+ * Points' worth of work each core call of a check in slices makes
+ * (CheckRun.advance: a step compared is one, an option combination traced
+ * along the points counts as all of them, at least one a call): about
+ * 0.1 ms of steps compared, or one combination of a long path (0.05 to
+ * 9 ms along a helix's 1,500,000 points in Node), several of a short one.
+ */
+const CHECK_UNITS_PER_CALL = 65_536;
 
 /** A slot of a sparse array as a message shows it: `[1, , 3]` has no y, which indexing reads as undefined and a typed array as 0. */
 function slotValue(array: readonly unknown[], index: number): string {
@@ -67,29 +80,54 @@ function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number
  * Checks a learner's points against the rule of `request`. Rejects with a
  * VoxpathError for a bad request, or for points that are not a path
  * (naming the point index, and for text the line and column).
+ *
+ * With `runOptions` (any of onProgress, signal, sliceMs) the core makes the
+ * check a slice at a time, the event loop let run between slices:
+ * `onProgress` hears after each (steps compared, then the family's option
+ * combinations tried), and `signal` stops it between them (at the page's
+ * cap, 1,500,000 steps, the whole check took about a second in one call).
+ * The result is the one call's, to the bit. Reading text points and
+ * tracing the rule come first, in one call.
  */
-export async function checkPoints(request: TraceOptions, points: LearnerPoints): Promise<Check> {
+export async function checkPoints(request: TraceOptions, points: LearnerPoints, runOptions?: CheckOptions): Promise<Check> {
   const json = encodeRequest(request);
+  const sliceMs = runOptions === undefined ? undefined : checkSliceOptions('checkPoints', runOptions);
+  const core = await loadCore();
+  let run: CheckRun;
   // Text, or its UTF-8 bytes as a file holds them (refused at the line and
   // column of the first byte that is not UTF-8), as runGcode takes a program.
-  if (isTextOrUtf8(points)) {
-    const core = await loadCore();
-    return callCore(() => withTextBytes(core, points, (bytes) => core.checkText(json, bytes)));
-  }
-  let given: { values: Int32Array | Float64Array; dims: number };
-  if (Array.isArray(points)) given = flatten(points);
-  else if (isPromiseLike(points)) throw argumentError('points', 'got a Promise, not the points: await it first (checkPoints(request, await points))');
-  else if (typeof points === 'object' && points !== null && !ArrayBuffer.isView(points)) {
-    const flat = points as { points: unknown; dims: unknown };
-    if (!(flat.points instanceof Int32Array || flat.points instanceof Float64Array)) {
-      throw argumentError('points', `expected { points: Int32Array or Float64Array, dims }, got points = ${describeValue(flat.points)}`);
+  if (isTextOrUtf8(points)) run = callCore(() => withTextBytes(core, points, (bytes) => core.CheckRun.fromText(json, bytes)));
+  else {
+    let given: { values: Int32Array | Float64Array; dims: number };
+    if (Array.isArray(points)) given = flatten(points);
+    else if (isPromiseLike(points)) throw argumentError('points', 'got a Promise, not the points: await it first (checkPoints(request, await points))');
+    else if (typeof points === 'object' && points !== null && !ArrayBuffer.isView(points)) {
+      const flat = points as { points: unknown; dims: unknown };
+      if (!(flat.points instanceof Int32Array || flat.points instanceof Float64Array)) {
+        throw argumentError('points', `expected { points: Int32Array or Float64Array, dims }, got points = ${describeValue(flat.points)}`);
+      }
+      given = { values: flat.points, dims: wholeNumber('dims', flat.dims, 1, 2 ** 32 - 1, 'coordinates per point') };
+    } else {
+      throw argumentError('points', `expected rows of coordinates, { points, dims } or text, got ${describeValue(points)}`);
     }
-    given = { values: flat.points, dims: wholeNumber('dims', flat.dims, 1, 2 ** 32 - 1, 'coordinates per point') };
-  } else {
-    throw argumentError('points', `expected rows of coordinates, { points, dims } or text, got ${describeValue(points)}`);
+    run = callCore(() => core.CheckRun.fromPoints(json, given.values, given.dims));
   }
-  const core = await loadCore();
-  return callCore(() => core.check(json, given.values, given.dims));
+  let check: Check;
+  try {
+    if (runOptions === undefined || sliceMs === undefined) callCore(() => run.advance(Infinity));
+    else {
+      await advanceForTime(() => callCore(() => run.advance(CHECK_UNITS_PER_CALL)), runOptions, sliceMs);
+      // A cancel sent while the last slice ran is still honoured.
+      await yieldToEventLoop();
+      runOptions.signal?.throwIfAborted();
+    }
+    check = callCore(() => run.result());
+  } catch (error) {
+    freeStopped(run);
+    throw error;
+  }
+  run.free();
+  return check;
 }
 
 /**

@@ -91,6 +91,28 @@ export async function advanceInSlices<Progress extends { done: boolean }>(
 }
 
 /**
+ * Calls `advance()` until it reports done, as many calls a slice as fit in
+ * `sliceMs` (at least one), reporting each slice's progress and yielding to
+ * the event loop between slices; rejects with the signal's reason when it
+ * is aborted before a slice. For work whose calls vary in cost far more
+ * than advanceInSlices's units can follow: a check's option combinations
+ * took 0.05 to 9 ms each along the same 1,500,000 points, and slices sized
+ * by the cheap ones grew to 60 combinations, 0.1 to 0.4 s.
+ */
+export async function advanceForTime<Progress extends { done: boolean }>(advance: () => Progress, options: SliceOptions<Progress>, sliceMs: number): Promise<void> {
+  for (;;) {
+    options.signal?.throwIfAborted();
+    const until = performance.now() + sliceMs;
+    let progress: Progress;
+    do progress = advance();
+    while (!progress.done && performance.now() < until);
+    options.onProgress?.(progress);
+    if (progress.done) return;
+    await yieldToEventLoop();
+  }
+}
+
+/**
  * Frees the core's object of work that stopped before its end (a cancel, an
  * error). One the core trapped in stays borrowed and cannot be freed: that
  * must not hide the error that stopped it (the instance's memory is lost

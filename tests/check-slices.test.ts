@@ -1,0 +1,117 @@
+// A learner's points checked by the core a slice at a time (checkPoints
+// with onProgress, signal or sliceMs), as the page's worker checks them to
+// report progress and take a Cancel: the check of the one call, to the bit,
+// whatever the slices and wherever the points part from the rule; a signal
+// stops it between slices.
+import { describe, expect, it } from 'vitest';
+import { type Check, type CheckProgress, checkPoints, trace, type TraceOptions, traceToCsv } from '../web/core/index.js';
+
+/** Moves of each family, each long enough to take several slices. */
+const RULES: Record<string, TraceOptions> = {
+  'a line': { algorithm: 'regions', from: [0, 0, 0], to: [30001, 17003, 9999] },
+  'an arc': { algorithm: 'circle', from: [300, 0, 0], to: [0, 300, 0], center: [0, 0, 0], plane: 'xy', turns: 3 },
+  'a helix': { algorithm: 'helix', from: [200, 0, 0], to: [200, 0, 300], center: [0, 0, 0], plane: 'xy', turns: 6 },
+  'a helix in chords': { algorithm: 'helix', method: 'segments', from: [200, 0, 0], to: [200, 0, 300], center: [0, 0, 0], plane: 'xy', turns: 6 },
+};
+
+/** The step from point k - 1 to point k of flat points, stride 3. */
+function stepAt(points: Int32Array, k: number): number[] {
+  return [0, 1, 2].map((a) => points[k * 3 + a]! - points[(k - 1) * 3 + a]!);
+}
+
+/**
+ * The rule's own points, and points that part from them at various places:
+ * started elsewhere, two unequal steps swapped (point k alone moves) near
+ * the start, the middle and the end, cut short, and gone on past the end.
+ */
+function deviations(points: Int32Array): [string, Int32Array][] {
+  const n = points.length / 3;
+  const out: [string, Int32Array][] = [['the path', points]];
+  out.push(['started elsewhere', points.map((c, i) => (i % 3 === 0 ? c + 1 : c))]);
+  for (const near of [1, Math.floor(n / 2), n - 2]) {
+    let k = Math.max(1, near);
+    while (k < n - 1 && stepAt(points, k).join() === stepAt(points, k + 1).join()) k++;
+    if (k >= n - 1) continue;
+    const swapped = points.slice();
+    const next = stepAt(points, k + 1);
+    for (let a = 0; a < 3; a++) swapped[k * 3 + a] = points[(k - 1) * 3 + a]! + next[a]!;
+    out.push([`a step swapped at point ${k}`, swapped]);
+  }
+  out.push(['cut short', points.slice(0, Math.floor(n / 2) * 3)]);
+  const longer = new Int32Array(points.length + 3);
+  longer.set(points);
+  longer.set([points[points.length - 3]! + 1, points[points.length - 2]!, points[points.length - 1]!], points.length);
+  out.push(['gone on', longer]);
+  return out;
+}
+
+describe('a check made in slices', () => {
+  it.each(Object.entries(RULES))('is the one call check, for %s, wherever the points part', async (_, rule) => {
+    const t = await trace(rule);
+    const path = t.pointsInRange(0, t.steps + 1);
+    t.free();
+    for (const [how, points] of deviations(path)) {
+      const whole: Check = await checkPoints(rule, { points, dims: 3 });
+      expect(whole.matches, how).toBe(how === 'the path');
+      for (const sliceMs of [0.05, 0.5, 5]) {
+        const progress: CheckProgress[] = [];
+        const sliced = await checkPoints(rule, { points, dims: 3 }, { sliceMs, onProgress: (p) => progress.push(p) });
+        // Bit for bit: JSON writes every double so that it reads back the same.
+        expect(JSON.stringify(sliced), `${how}, slices of ${sliceMs} ms`).toBe(JSON.stringify(whole));
+        expect(sliced).toEqual(whole);
+        const last = progress.at(-1)!;
+        expect(last).toMatchObject({ stage: 'done', done: true });
+        expect(last.variantsTried).toBe(last.variants);
+        expect(last.stepsCompared).toBe(last.stepsShared);
+        // The stages in order, each count growing.
+        const order = ['comparing', 'variants', 'done'];
+        for (let i = 1; i < progress.length; i++) {
+          const [before, now] = [progress[i - 1]!, progress[i]!];
+          expect(order.indexOf(now.stage)).toBeGreaterThanOrEqual(order.indexOf(before.stage));
+          expect(now.stepsCompared).toBeGreaterThanOrEqual(before.stepsCompared);
+          expect(now.variantsTried).toBeGreaterThanOrEqual(before.variantsTried);
+        }
+        if (sliceMs === 0.05) expect(progress.filter((p) => p.stage === 'variants').length, how).toBeGreaterThan(2);
+      }
+    }
+  });
+
+  it('reads text as the one call does', async () => {
+    const rule = RULES['a helix']!;
+    const t = await trace(rule);
+    const text = traceToCsv(t);
+    t.free();
+    const whole = await checkPoints(rule, text);
+    expect(whole.matches).toBe(true);
+    expect(await checkPoints(rule, text, { sliceMs: 0.1 })).toEqual(whole);
+  });
+
+  it('stops between slices when its signal is aborted', async () => {
+    const rule = RULES['a helix']!;
+    const t = await trace(rule);
+    const points = t.pointsInRange(0, t.steps + 1);
+    t.free();
+    // Aborted at the first report, then at the third.
+    for (const reports of [1, 3]) {
+      const cancel = new AbortController();
+      const seen: CheckProgress[] = [];
+      const stopped = checkPoints(rule, { points, dims: 3 }, {
+        signal: cancel.signal,
+        sliceMs: 0.05,
+        onProgress: (p) => {
+          seen.push(p);
+          if (seen.length === reports) cancel.abort();
+        },
+      });
+      await expect(stopped).rejects.toMatchObject({ name: 'AbortError' });
+      // The slice that heard the abort was the last one made, before the end.
+      expect(seen).toHaveLength(reports);
+      expect(seen.at(-1)!.done).toBe(false);
+      expect(seen.at(-1)!.variantsTried).toBeLessThan(seen.at(-1)!.variants);
+    }
+  });
+
+  it('refuses a slice option it does not know, naming it', async () => {
+    await expect(checkPoints(RULES['a line']!, [[0, 0, 0]], { onprogress: () => {} } as object)).rejects.toThrow(/onprogress.*did you mean onProgress/);
+  });
+});
