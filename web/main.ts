@@ -296,10 +296,21 @@ function run(catalogue: Catalogue): void {
         replaced: byId('learner-replaced', HTMLParagraphElement),
         bringBack: byId('learner-bring-back', HTMLButtonElement),
         result: byId('check-result', HTMLDivElement),
+        run: {
+          bar: byId('check-progress', HTMLProgressElement),
+          cancel: byId('check-cancel', HTMLButtonElement),
+          box: byId('check-run', HTMLDivElement),
+          text: byId('check-run-text', HTMLSpanElement),
+        },
       },
-      store, (pointIndex) => {
-        goTo(pointIndex);
-        scene.lookAtCurrentCell();
+      store,
+      {
+        goTo: (pointIndex) => {
+          goTo(pointIndex);
+          scene.lookAtCurrentCell();
+        },
+        cancel: () => page.cancelCheck(),
+        checkAgain: () => page.checkAgain(),
       },
     ),
     timing: new TimingDiagram(byId('timing', HTMLDivElement), goTo),

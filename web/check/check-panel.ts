@@ -14,6 +14,11 @@
  * reload. Pasting over the list replaces them, Clear empties it, and "Edit
  * as text" puts them in the text box anyway, at that cost.
  *
+ * A check of many points runs in the worker a slice at a time: the panel
+ * shows what it does on a bar with a Cancel (at the page's cap, 1,500,000
+ * steps, it takes about a second), and after a Cancel says so, with a
+ * button that checks them again.
+ *
  * Points another tab wrote over, changed there at the same time as here
  * (AppState's replacedPoints), are offered back above the box, as a
  * program a sample replaced is beside the editor, until brought back or the
@@ -21,10 +26,12 @@
  */
 import type { Check } from '../core/index.js';
 import { element } from '../form/options-form.js';
+import { checkBar, RunProgress, type RunProgressElements } from '../form/run-progress.js';
 import { countedLines, lineStarts, LongTextField, linesInView } from '../form/long-text.js';
 import { countOf, formatPoint, NO_VALUE_TEXT } from '../format.js';
 import type { AppState } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
+import type { CheckRunProgress } from '../worker/protocol.js';
 
 export interface CheckPanelElements {
   /** The disclosure holding the panel: opened when the state has points. */
@@ -40,6 +47,15 @@ export interface CheckPanelElements {
   replaced: HTMLElement;
   bringBack: HTMLButtonElement;
   result: HTMLElement;
+  /** The bar and Cancel of a check under way. */
+  run: RunProgressElements;
+}
+
+/** What the panel asks of the page: go to a point, stop the check under way, check the points again. */
+export interface CheckPanelActions {
+  goTo: (pointIndex: number) => void;
+  cancel: () => void;
+  checkAgain: () => void;
 }
 
 /** A point, or what stands where a path has none. */
@@ -49,17 +65,19 @@ function pointText(point: number[] | null | undefined, none: string): string {
 
 export class CheckPanel {
   readonly #e: CheckPanelElements;
-  readonly #onGo: (pointIndex: number) => void;
+  readonly #actions: CheckPanelActions;
   readonly #store: Store<AppState>;
+  readonly #progress: RunProgress;
   /** The points, in the text box or listed read-only. */
   readonly #field: LongTextField;
   /** The replaced points the offer was last made for ('' for none). */
   #offered = '';
 
-  constructor(elements: CheckPanelElements, store: Store<AppState>, onGo: (pointIndex: number) => void) {
+  constructor(elements: CheckPanelElements, store: Store<AppState>, actions: CheckPanelActions) {
     this.#e = elements;
     this.#store = store;
-    this.#onGo = onGo;
+    this.#actions = actions;
+    this.#progress = new RunProgress(elements.run, actions.cancel);
     this.#field = new LongTextField(elements, (text) => this.#edited(text));
     this.#setText(store.state.learnerPoints);
     elements.box.open = store.state.learnerPoints !== '';
@@ -133,6 +151,23 @@ export class CheckPanel {
     this.#e.result.replaceChildren();
   }
 
+  /** How far the check under way has got, on the bar (undefined: none under way). */
+  setProgress(progress: CheckRunProgress | undefined): void {
+    if (progress === undefined) return this.#progress.set(undefined);
+    const { bar, verb } = checkBar(progress);
+    this.#progress.set(bar, verb);
+  }
+
+  /** The check was cancelled (its Cancel): the points are not checked, and a button checks them. */
+  cancelled(): void {
+    const again = element('button', { type: 'button', textContent: 'Check them' });
+    again.dataset.testid = 'check-again';
+    again.addEventListener('click', () => this.#actions.checkAgain());
+    const p = element('p', { className: 'hint' }, 'Cancelled: your points are not checked. ', again);
+    p.dataset.testid = 'check-cancelled';
+    this.#e.result.replaceChildren(p);
+  }
+
   /** The core refused the points (or the rule): its message, naming the line and column. */
   showError(message: string): void {
     const p = element('p', { className: 'field-error', textContent: message });
@@ -187,7 +222,7 @@ export class CheckPanel {
       );
       const go = element('button', { type: 'button', textContent: `Go to point ${first.pointIndex}` });
       go.dataset.testid = 'go-check-difference';
-      go.addEventListener('click', () => this.#onGo(first.pointIndex));
+      go.addEventListener('click', () => this.#actions.goTo(first.pointIndex));
       parts.push(why, table, go);
     }
     const follows = element(

@@ -1,11 +1,12 @@
 /**
  * A long run's progress bar and its Cancel button: a G-code program's, the
- * random-lines experiment's, an export's, and a pass over a path's points
- * (its metrics, its charts' rows). Hidden while nothing runs,
+ * random-lines experiment's, an export's, a pass over a path's points
+ * (its metrics, its charts' rows), and a check of a learner's points. Hidden while nothing runs,
  * when the run's own button (Run program, Run experiment) runs it again.
  */
 
-import type { PointsProgress } from '../core/types.js';
+import type { PointsProgress } from '../core/index.js';
+import type { CheckRunProgress } from '../worker/protocol.js';
 import { countOf, grouped } from '../format.js';
 
 /**
@@ -59,6 +60,26 @@ export function linesBar(progress: LinesProgress): BarProgress {
 /** A pass over a path's points as its bar shows it: the points measured, of all. */
 export function pointsBar(progress: PointsProgress): BarProgress {
   return { done: progress.pointsDone, total: Math.max(1, progress.points), said: `${grouped(progress.pointsDone)} of ${countOf(progress.points, 'point')}` };
+}
+
+/**
+ * A check of a learner's points as its bar shows it, with what it does now
+ * (`verb`): reading them (one call whose length is not known),
+ * comparing their steps with the rule's, then tracing the rule's family's
+ * option combinations along them (alsoMatches).
+ */
+export function checkBar(progress: CheckRunProgress): { bar: BarProgress; verb: string } {
+  if (progress.stage === 'reading') return { bar: { done: 0, said: 'your points and the rule' }, verb: 'Reading' };
+  if (progress.stage === 'comparing') {
+    return {
+      bar: { done: progress.stepsCompared, total: Math.max(1, progress.stepsShared), said: `${grouped(progress.stepsCompared)} of ${countOf(progress.stepsShared, 'step')}` },
+      verb: 'Comparing with the rule',
+    };
+  }
+  return {
+    bar: { done: progress.variantsTried, total: Math.max(1, progress.variants), said: `${grouped(progress.variantsTried)} of ${countOf(progress.variants, 'option combination')}` },
+    verb: 'Finding the rules your points follow',
+  };
 }
 
 export interface RunProgressElements {

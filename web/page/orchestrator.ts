@@ -143,6 +143,8 @@ export class Orchestrator {
   /** Counts checks of a learner's points, so only the latest one's answer is shown. */
   #latestCheck = 0;
   #checkTimer: ReturnType<typeof setTimeout> | undefined;
+  /** The check of a learner's points under way in the worker, to cancel (its Cancel, new points, a new rule). */
+  #checking: Running<unknown> | undefined;
 
   /** The core refused the last request (its message is by the inputs). */
   #rejected = false;
@@ -191,6 +193,16 @@ export class Orchestrator {
   /** Stops the long run under way (a path's metrics, a G-code program, the experiment). */
   cancel(): void {
     this.#running?.cancel();
+  }
+
+  /** Stops the check of the learner's points under way (its Cancel): the panel says so. */
+  cancelCheck(): void {
+    this.#checking?.cancel();
+  }
+
+  /** Checks the learner's points again (after a Cancel). */
+  checkAgain(): void {
+    void this.#check();
   }
 
   /**
@@ -301,8 +313,9 @@ export class Orchestrator {
     const state = p.store.state;
     this.#running?.cancel();
     this.#running = undefined;
-    // The charts' rows of the path about to be replaced would hold up the new one's in the worker.
+    // The charts' rows of the path about to be replaced would hold up the new one's in the worker, as would a check against its rule.
     p.charts.cancel();
+    this.#stopCheck();
     p.gcodePanel.setProgress(undefined);
     p.experimentProgress.set(undefined);
     p.traceProgress.set(undefined);
@@ -419,8 +432,8 @@ export class Orchestrator {
    */
   async #check(): Promise<void> {
     const p = this.#p;
-    const check = ++this.#latestCheck;
-    clearTimeout(this.#checkTimer);
+    this.#stopCheck();
+    const check = this.#latestCheck;
     const { mode, learnerPoints } = p.store.state;
     const rule = this.#shown.a;
     const options = this.#ruleOptions;
@@ -429,21 +442,44 @@ export class Orchestrator {
       p.checkPanel.clear();
       return;
     }
+    const current = () => check === this.#latestCheck && rule === this.#shown.a;
+    const started = p.client.check(rule, options, learnerPoints, throttled(current, (progress) => p.checkPanel.setProgress(progress)));
+    this.#checking = started;
     try {
-      const learner = await p.client.check(rule, options, learnerPoints);
-      if (check !== this.#latestCheck || rule !== this.#shown.a) return;
+      const learner = await started.result;
+      if (!current()) return;
       this.#showLearner(learner);
       p.checkPanel.show(learner.check);
     } catch (error) {
-      if (check !== this.#latestCheck || rule !== this.#shown.a || error instanceof CoreCrash) return;
+      if (!current() || error instanceof CoreCrash) return;
       this.#showLearner(undefined);
-      if (error instanceof InputRejected) {
+      if (error instanceof Cancelled) {
+        p.checkPanel.cancelled();
+      } else if (error instanceof InputRejected) {
         p.checkPanel.showError(error.field ? `${error.field}: ${error.message}` : error.message);
       } else {
         console.error(error);
         p.checkPanel.showError(`The check failed, a bug in voxpath: ${String(error)}`);
       }
+    } finally {
+      if (check === this.#latestCheck) {
+        this.#checking = undefined;
+        p.checkPanel.setProgress(undefined);
+      }
     }
+  }
+
+  /**
+   * Stops the check under way and any waiting to start: a newer input (an
+   * edit of the points, a new rule) cancels it in the worker rather than
+   * waiting behind it, and a later answer of it is not shown.
+   */
+  #stopCheck(): void {
+    this.#latestCheck += 1;
+    clearTimeout(this.#checkTimer);
+    this.#checking?.cancel();
+    this.#checking = undefined;
+    this.#p.checkPanel.setProgress(undefined);
   }
 
   #showLearner(learner: LearnerCheck | undefined): void {
@@ -476,14 +512,16 @@ export class Orchestrator {
     if (state.mode !== previous.mode || state.layout !== previous.layout) p.modeTabs.render();
     const inputsChanged = state.mode !== previous.mode || MODE_INPUT_KEYS[state.mode].some((k) => state[k] !== previous[k]);
     if (inputsChanged) {
+      // A check against the rule about to be replaced stops now, not when the retrace starts.
+      this.#stopCheck();
       clearTimeout(this.#retraceTimer);
       this.#retraceTimer = setTimeout(() => void this.retrace(), RETRACE_DELAY_MS);
       this.#inputsPending = true;
       p.exports.refresh(true);
       if (state.options !== previous.options) p.views.setHandles(this.#handles());
     } else if (state.learnerPoints !== previous.learnerPoints) {
-      // The same rule: only the check runs again.
-      clearTimeout(this.#checkTimer);
+      // The same rule: only the check runs again, the one under way stopped at once.
+      this.#stopCheck();
       this.#checkTimer = setTimeout(() => void this.#check(), RETRACE_DELAY_MS);
     } else if (state.layout !== previous.layout) {
       // The same traces, laid out anew: the path views only.

@@ -214,10 +214,14 @@ export class TraceClient {
     return this.start({ kind: 'difference', traceIdA: a.traceId, traceIdB: b.traceId }, onProgress);
   }
 
-  /** A learner's points (text, as pasted) checked against the rule `options` traces, whose trace `rule` the worker holds. */
-  check(rule: RemoteTrace, options: TraceOptions, text: string): Promise<LearnerCheck> {
-    if (!rule.alive) return Promise.reject(new CoreCrash('the trace was lost with a crashed worker; trace again'));
-    return this.request({ kind: 'check', traceId: rule.traceId, options, text });
+  /**
+   * A learner's points (text, as pasted) checked against the rule `options`
+   * traces, whose trace `rule` the worker holds, a slice at a time (each
+   * slice's progress to `onProgress`); cancellable.
+   */
+  check(rule: RemoteTrace, options: TraceOptions, text: string, onProgress?: (progress: ProgressValue['check']) => void): Running<LearnerCheck> {
+    if (!rule.alive) return { result: Promise.reject(new CoreCrash('the trace was lost with a crashed worker; trace again')), cancel: () => {} };
+    return this.start({ kind: 'check', traceId: rule.traceId, options, text }, onProgress);
   }
 
   /** Wang's random-lines experiment (section 3.2, Figure 9), reporting progress after every slice of lines; cancellable. */

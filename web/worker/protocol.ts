@@ -27,7 +27,7 @@
  * and its 3D overlay) is one request, stepDetail, answered with the core's
  * StepDetail.
  */
-import type { Check, ExperimentProgress, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult, TraceDifference } from '../core/index.js';
+import type { Check, CheckProgress, ExperimentProgress, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult, TraceDifference } from '../core/index.js';
 import type { Catalogue, ChartSeries, IdealLine, Limit, Metrics, PointBounds, PointsProgress, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
@@ -222,7 +222,17 @@ export interface ProgressValue {
   series: PointsProgress;
   /** Where two paths differ: each path's cells sorted in turn (a sort of 1,500,000 cells took 0.2 to 0.3 s). */
   difference: PointsProgress;
+  /** A learner's points checked (CheckRunProgress). */
+  check: CheckRunProgress;
 }
+
+/**
+ * How far a check of a learner's points has got: their text read and the
+ * rule traced first, in one call (0.1 to 0.3 s at the page's cap), reported
+ * as stage 'reading' before it; then the core's CheckProgress after each
+ * slice (steps compared, then the family's option combinations tried).
+ */
+export type CheckRunProgress = CheckProgress | { stage: 'reading'; done: false };
 
 /** The requests that run in slices, report progress and can be cancelled. */
 export type LongRequestKind = keyof ProgressValue;

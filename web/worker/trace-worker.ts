@@ -240,16 +240,23 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
         value: await randomLines(request.options, { signal, onProgress: (progress) => report(id, progress) }),
         transfer: [],
       }));
-    case 'check': {
-      // The text is read once, giving its line and column to any error, and checked as the flat points read.
-      const dims = held(request.traceId).dims;
-      const read = await readPoints(request.text, dims);
-      const check = await checkPoints(request.options, { points: read, dims });
-      const drawable = read.every((c) => c === (c | 0));
-      const points = drawable ? Int32Array.from(read) : null;
-      const centers = points ? idealLineOf(points, dims) : null;
-      return { value: { check, points, centers, dims }, transfer: points && centers ? [points.buffer, centers.xyz.buffer] : [] };
-    }
+    case 'check':
+      // The text is read once, giving its line and column to any error, and
+      // checked as the flat points read, a slice at a time (at the page's
+      // cap the check took about a second in one call).
+      return cancellable(id, async (signal) => {
+        const dims = held(request.traceId).dims;
+        report(id, { stage: 'reading', done: false });
+        const read = await readPoints(request.text, dims);
+        const drawable = read.every((c) => c === (c | 0));
+        const points = drawable ? Int32Array.from(read) : null;
+        const centers = points ? idealLineOf(points, dims) : null;
+        // A cancel (a newer edit of the points) sent while they were read.
+        await yieldToEventLoop();
+        signal.throwIfAborted();
+        const check = await checkPoints(request.options, { points: read, dims }, { signal, onProgress: (progress) => report(id, progress) });
+        return { value: { check, points, centers, dims }, transfer: points && centers ? [points.buffer, centers.xyz.buffer] : [] };
+      });
     case 'free':
       // A program owns its trace: freeing the program frees both.
       (programs.get(request.traceId) ?? traces.get(request.traceId))?.free();
