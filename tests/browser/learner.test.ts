@@ -71,6 +71,15 @@ async function labelsPastTheView(page: Page): Promise<string[]> {
   });
 }
 
+/** Whether the view's canvas is drawn at the size of the box it fills (its renderer resized to it). */
+function canvasFitsItsBox(page: Page): Promise<boolean> {
+  return page.evaluate(() => {
+    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="scene-canvas"]')!;
+    const box = canvas.parentElement!;
+    return canvas.clientWidth === box.clientWidth && canvas.clientHeight === box.clientHeight;
+  });
+}
+
 describe('G-code mode', () => {
   it('opens on a visible path: over a grid that reaches past it, framed, its axes in mm with steps beside', async () => {
     // The square sample: 20 mm sides at 80 steps/mm, 1600 steps each.
@@ -87,6 +96,10 @@ describe('G-code mode', () => {
     // its edge, at 1280 px and on a phone alike, its last digit cut.
     for (const size of [{ width: 390, height: 844 }, { width: 1280, height: 720 }]) {
       await page.setViewportSize(size);
+      // The view resized to its box first: until its ResizeObserver has run, the labels of the
+      // narrower frame lie inside the wider one, and the PNG below was drawn at the old size (the
+      // square 392 pixels of ideal line where it has over 500, once in CI).
+      await expect.poll(() => canvasFitsItsBox(page), { message: `${size.width} px` }).toBe(true);
       await expect.poll(() => labelsPastTheView(page), { message: `${size.width} px` }).toEqual([]);
     }
     await page.setViewportSize({ width: 1280, height: 720 });
