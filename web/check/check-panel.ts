@@ -27,7 +27,7 @@
 import type { Check } from '../core/index.js';
 import { element } from '../form/options-form.js';
 import { checkBar, RunProgress, type RunProgressElements } from '../form/run-progress.js';
-import { countedLines, lineStarts, LongTextField, linesInView } from '../form/long-text.js';
+import { LongTextField, linesInView, linesOfText } from '../form/long-text.js';
 import { countOf, formatPoint, NO_VALUE_TEXT } from '../format.js';
 import type { AppState } from '../state/app-state.js';
 import type { Store } from '../state/store.js';
@@ -142,7 +142,7 @@ export class CheckPanel {
     this.#offered = replaced;
     this.#e.replaced.hidden = replaced === '';
     if (replaced === '') return;
-    this.#e.replaced.querySelector('.replaced-text')!.textContent = `Your points (${countOf(countedLines(replaced, lineStarts(replaced)), 'line')}) were replaced by another tab's, typed at the same time.`;
+    this.#e.replaced.querySelector('.replaced-text')!.textContent = `Your points (${linesOfText(replaced)}) were replaced by another tab's, typed at the same time.`;
     this.#e.box.open = true;
   }
 

@@ -7,7 +7,7 @@
  * paste that would make the text box's text that long goes to the listing
  * before the box lays it out (divertLongPastes).
  */
-import { grouped } from '../format.js';
+import { countOf, grouped } from '../format.js';
 import { element } from './options-form.js';
 
 /**
@@ -36,6 +36,11 @@ export function tooLongToEdit(text: string): boolean {
 /** Lines of `text` as the core counts them (and the status line says): a final line break ends the last line rather than starting an empty one. */
 export function countedLines(text: string, starts: readonly number[]): number {
   return starts.length - 1 - (/[\n\r]$/.test(text) ? 1 : 0);
+}
+
+/** "3 lines": how many lines `text` has as the core counts them, as an offer of a replaced text says it. */
+export function linesOfText(text: string): string {
+  return countOf(countedLines(text, lineStarts(text)), 'line');
 }
 
 /** The lines of a `lineCount`-line text in view in `scroller` (lines `lineHeightPx` tall): first (from 0) and last (from 1, inclusive). */

@@ -24,7 +24,7 @@
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
-import { countedLines, lineStarts, linesInView, LongTextField, tooLongToEdit } from '../form/long-text.js';
+import { linesInView, linesOfText, LongTextField, tooLongToEdit } from '../form/long-text.js';
 import { linesBar, RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, sentence } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs, OptionSetter, programReplaced } from '../state/app-state.js';
@@ -221,7 +221,7 @@ export class GcodePanel {
       replaced.hidden = true;
       return;
     }
-    replaced.querySelector('.replaced-text')!.textContent = `Your program (${countOf(countedLines(replacedProgram, lineStarts(replacedProgram)), 'line')}) was replaced by ${replacedBy}.`;
+    replaced.querySelector('.replaced-text')!.textContent = `Your program (${linesOfText(replacedProgram)}) was replaced by ${replacedBy}.`;
     if (!newProgram) return;
     // Shown once it is known not to be a sample's text.
     replaced.hidden = true;
