@@ -13,7 +13,7 @@ import { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { randomLines, trace } from '../../web/core/index.js';
 import { AXIS_COLOURS } from '../../web/scene/palette.js';
-import { closeAll, jumpTo, openPage, screenshot } from './harness.js';
+import { closeAll, jumpTo, openPage, screenshot, siteUrl } from './harness.js';
 
 afterAll(closeAll);
 
@@ -408,6 +408,29 @@ describe('trace mode', () => {
     expect(q.problems()).toEqual([]);
     await p.close();
     await q.close();
+  });
+});
+
+describe('the mode tabs', () => {
+  it('take a tab pressed while the page is still loading its core (the press did nothing: the page opened in the mode it was leaving)', async () => {
+    const p = await openPage('?mode=trace');
+    const page = await p.context.newPage();
+    // The worker's script held back: the page is on screen, its core not loaded.
+    let release = () => {};
+    const held = new Promise<void>((resolve) => (release = resolve));
+    await page.route(/trace-worker/, async (route) => {
+      await held;
+      await route.continue();
+    });
+    await page.goto(`${siteUrl()}?mode=trace`, { waitUntil: 'domcontentloaded' });
+    const pressed = page.getByTestId('mode-gcode').click();
+    await page.waitForTimeout(500);
+    release();
+    await pressed;
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor({ timeout: 15_000 });
+    expect(new URL(page.url()).searchParams.get('mode')).toBe('gcode');
+    expect(p.problems()).toEqual([]);
+    await p.close();
   });
 });
 

@@ -33,6 +33,10 @@ export class ModeTabs {
         const mode = MODES.find((m) => m === button.dataset.mode);
         if (mode && mode !== store.state.mode) switchMode(mode);
       });
+      // The page's HTML has them disabled: pressed while the page loaded the
+      // core, before this listener, a tab did nothing (the page opened in the
+      // mode it was leaving) without a word.
+      button.disabled = false;
     }
     this.render();
   }
