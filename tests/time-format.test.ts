@@ -5,7 +5,7 @@
 // dozens a window. The spans below are 50 steps' 49 gaps at a step rate:
 // 8 kHz (X at 100 mm/s and 80 steps/mm) and 100 kHz.
 import { describe, expect, it } from 'vitest';
-import { formatSeconds, timeUnit } from '../web/gcode/time-format.js';
+import { formatSeconds, formatSecondsBrief, timeUnit } from '../web/gcode/time-format.js';
 
 describe('time units for people', () => {
   it('puts a window of steps on an ms axis, or a µs one under a millisecond', () => {
@@ -24,5 +24,17 @@ describe('time units for people', () => {
     expect(formatSeconds(0)).toBe('0.000 s');
     expect(formatSeconds(Math.sqrt((2 * 5) / 100))).toBe('316.228 ms');
     expect(formatSeconds(1 / 8000)).toBe('125.0 µs');
+  });
+
+  it('writes a time briefly, to two significant digits in the same unit', () => {
+    // The timing diagram's pause label in a narrow box: "+2 s" for "+2.000 s".
+    expect(formatSecondsBrief(2)).toBe('2 s');
+    expect(formatSecondsBrief(1.1)).toBe('1.1 s');
+    expect(formatSecondsBrief(0.004099)).toBe('4.1 ms');
+    expect(formatSecondsBrief(1 / 8000)).toBe('130 µs');
+    expect(formatSecondsBrief(0)).toBe('0 s');
+    // Rounded up into the next unit, read in it (formatSeconds: "999.600 ms").
+    expect(formatSecondsBrief(0.9996)).toBe('1 s');
+    expect(formatSecondsBrief(0.0009996)).toBe('1 ms');
   });
 });

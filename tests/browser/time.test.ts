@@ -356,6 +356,67 @@ describe('G-code mode: time', () => {
     await p.close();
   });
 
+  it("keeps the pauses' labels whole in their boxes down to the narrowest page, shortened, the full ones under the chart", async () => {
+    // The one-step program's two pauses, the most label the diagram draws beside the fewest steps. G-code
+    // mode's page is laid out down to 272 px (its clock's choice is as wide; narrower, it scrolls sideways),
+    // and a chart is 200 px wide at least, its plot 82 px (a page of 246 px or less). Below some 300 px the
+    // two boxes needed more than the plot for their words, were drawn narrower, and cut their labels
+    // ('rogram', '.100 s', 'st step'); resized, the diagram kept the boxes it had chosen for the wider plot.
+    const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG4 P2\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=1&gcode=${program}`);
+    const { page } = p;
+    await loaded(page, 1);
+    const timing = page.getByTestId('timing');
+    const pauseBox = timing.locator('.chart-break');
+    await expect.poll(() => pauseBox.count()).toBe(2);
+    const full = ['pause, first step at 1.100 s', 'dwell 2 s, program ends +2.000 s'];
+    const descriptions = await pauseBox.evaluateAll((boxes) => boxes.map((b) => b.getAttribute('title')));
+    for (const width of [300, 280, 240]) {
+      await page.setViewportSize({ width, height: 700 });
+      const at = `${width} px`;
+      // Each label whole in its box, once the boxes are chosen for the plot's new width.
+      await expect.poll(async () => (await pauseLabelLines(page)).clipped, { message: at, timeout: 5000 }).toEqual([]);
+      const { lines } = await pauseLabelLines(page);
+      const plot = (await timing.locator('.u-over').boundingBox())!;
+      const [before, after] = [(await pauseBox.nth(0).boundingBox())!, (await pauseBox.nth(1).boundingBox())!];
+      // At the plot's edges, apart, the step between them 30% of the plot or more.
+      expect(before.x, at).toBeCloseTo(plot.x, 0);
+      expect(after.x + after.width, at).toBeCloseTo(plot.x + plot.width, 0);
+      expect(after.x - (before.x + before.width), at).toBeGreaterThanOrEqual(0.3 * plot.width - 1);
+      // What a label leaves out of its box is said under the chart, in full; the tooltip says it all.
+      const caption = ((await timing.locator('figcaption').count()) ? await timing.locator('figcaption').innerText() : '').replaceAll('\u00a0', ' ');
+      lines.forEach((shown, i) => {
+        const whole = shown.length === 3 && `${shown[0]}, ${shown.slice(1).join(' ')}` === full[i];
+        expect(whole || caption.includes(full[i]!), `${at}: '${shown.join(' / ')}', under the chart '${caption}'`).toBe(true);
+      });
+      expect(await pauseBox.evaluateAll((boxes) => boxes.map((b) => b.getAttribute('title'))), at).toEqual(descriptions);
+      await timing.scrollIntoViewIfNeeded();
+      await screenshot(page, `timing-one-step-narrow-${width}`, '[data-testid=timing]');
+    }
+    // Wide again, the full labels in their boxes and none under the chart.
+    await page.setViewportSize({ width: 1280, height: 720 });
+    await expect.poll(async () => (await pauseLabelLines(page)).lines.map((shown) => `${shown[0]}, ${shown.slice(1).join(' ')}`)).toEqual(full);
+    expect(await timing.locator('figcaption').count()).toBe(0);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+
+    // Across a dwell in a page of 280 px, where a new window is chosen at that width: its label whole too.
+    const dwell = await openPage(`?mode=gcode&stepsPerMm=80&gcode=${encodeURIComponent('G21 G90\nG1 X2 F600\nG4 P2\nG1 X4\n')}`);
+    await dwell.page.setViewportSize({ width: 280, height: 700 });
+    await loaded(dwell.page, 320);
+    await jumpTo(dwell.page, 161);
+    const across = dwell.page.getByTestId('timing');
+    await expect.poll(() => across.getAttribute('data-from-step')).toBe('160');
+    await expect.poll(async () => (await pauseLabelLines(dwell.page)).clipped).toEqual([]);
+    const shown = (await pauseLabelLines(dwell.page)).lines[0]!;
+    const under = ((await across.locator('figcaption').count()) ? await across.locator('figcaption').innerText() : '').replaceAll('\u00a0', ' ');
+    expect(shown.join(', ') === 'dwell 2 s, step before, −2.050 s' || under.includes('dwell 2 s, step before −2.050 s'), `'${shown.join(' / ')}', '${under}'`).toBe(true);
+    await across.scrollIntoViewIfNeeded();
+    await screenshot(dwell.page, 'timing-dwell-after-narrow-280', '[data-testid=timing]');
+    expect(dwell.problems()).toEqual([]);
+    await dwell.close();
+  });
+
   it('ends the STEP/DIR window where a much faster move starts, labelled, so that the pulses before it stay readable', async () => {
     // 1 mm at 60 mm/min, then 3 mm at 3000 mm/min with 1000 mm/s²: 80 X steps 12.5 ms apart, then the
     // fast move's, speeding up from 1 mm/s, the first 4.1 ms after the slow move's last, the fifth under

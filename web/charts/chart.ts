@@ -37,8 +37,10 @@ export interface ChartSpec {
   heightPx?: number;
   /** A chart whose x is not the point index (time): a click gives its x here instead of a point index to onPick. */
   pickX?: (x: number) => void;
-  /** Text under the chart (a figure caption: what it shows, its source). */
+  /** Text under the chart (a figure caption: what it shows, its source); setCaption changes it. */
   caption?: string;
+  /** Called once the plot has been resized to a new width of its container (plotWidthPx is the new one). */
+  onResize?: () => void;
   /** Stretches of x not drawn to scale (setBreaks). */
   xBreaks?: XBreak[];
 }
@@ -53,7 +55,7 @@ export interface ChartSpec {
 export interface XBreak {
   fromX: number;
   toX: number;
-  /** The label, a line each; a line wraps at its spaces where the box is narrower than it (a no-break space keeps a value with its unit). */
+  /** The label, a line each (none: the box bare); a line wraps at its spaces where the box is narrower than it (a no-break space keeps a value with its unit). */
   lines: string[];
   /** The label as one sentence (its title, and what a screen reader says). */
   description: string;
@@ -78,7 +80,7 @@ function setBreakLines(box: HTMLElement, lines: string[]): void {
  * label `lines` whole in it: `wrappedPx`, its widest word's (each line
  * wrapped at every space), the least; `unwrappedPx`, its widest line's.
  * Measured in the page's style of the box, laid out in `container` out of
- * sight, so that a box sized by them (the timing diagram's pauseBoxPx) holds its text
+ * sight, so that a box sized by them (the timing diagram's pauseBoxes) holds its text
  * whatever the font.
  */
 export function breakLabelWidthsPx(container: HTMLElement, lines: string[]): { wrappedPx: number; unwrappedPx: number } {
@@ -269,11 +271,7 @@ export class StepChart {
     // Laid out now rather than at uPlot's next microtask, so that plotWidthPx is the plot's from the
     // start: its axes' sizes are only measured then (the timing diagram's plot read 216 px, not 174).
     this.#plot.batch(() => {});
-    if (spec.caption) {
-      const caption = document.createElement('figcaption');
-      caption.textContent = spec.caption;
-      this.#figure.append(caption);
-    }
+    this.setCaption(spec.caption ?? '');
     this.#plot.over.addEventListener('click', () => {
       const left = this.#plot.cursor.left;
       if (left === undefined || left < 0) return;
@@ -284,7 +282,9 @@ export class StepChart {
     });
     this.#resize = new ResizeObserver(() => {
       const width = Math.max(200, container.clientWidth - 4);
-      if (width !== this.#plot.width) this.#plot.setSize({ width, height: spec.heightPx ?? HEIGHT_PX });
+      if (width === this.#plot.width) return;
+      this.#plot.setSize({ width, height: spec.heightPx ?? HEIGHT_PX });
+      spec.onResize?.();
     });
     this.#resize.observe(container);
   }
@@ -304,6 +304,17 @@ export class StepChart {
   /** The plot's width, CSS pixels (the chart's less its y axis). */
   get plotWidthPx(): number {
     return this.#plot.bbox.width / devicePixelRatio;
+  }
+
+  /** Replaces the text under the chart; none for ''. */
+  setCaption(text: string): void {
+    let caption = this.#figure.querySelector('figcaption');
+    if (!text) {
+      caption?.remove();
+      return;
+    }
+    caption ??= this.#figure.appendChild(document.createElement('figcaption'));
+    caption.textContent = text;
   }
 
   /** Replaces the breaks, drawn from the next draw on (setData's). */

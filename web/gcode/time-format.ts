@@ -1,9 +1,26 @@
+/** `seconds` in the unit formatSeconds writes it in: s from a second (and 0), ms from a millisecond, µs under. */
+function inUnit(seconds: number): { value: number; unit: 's' | 'ms' | 'µs' } {
+  const abs = Math.abs(seconds);
+  if (abs >= 1 || abs === 0) return { value: seconds, unit: 's' };
+  if (abs >= 1e-3) return { value: seconds * 1e3, unit: 'ms' };
+  return { value: seconds * 1e6, unit: 'µs' };
+}
+
 /** Seconds for people: "3.000 s", "12.500 ms", "40.0 µs". */
 export function formatSeconds(seconds: number): string {
-  const abs = Math.abs(seconds);
-  if (abs >= 1 || abs === 0) return `${seconds.toFixed(3)} s`;
-  if (abs >= 1e-3) return `${(seconds * 1e3).toFixed(3)} ms`;
-  return `${(seconds * 1e6).toFixed(1)} µs`;
+  const { value, unit } = inUnit(seconds);
+  return `${value.toFixed(unit === 'µs' ? 1 : 3)} ${unit}`;
+}
+
+/**
+ * Seconds in few characters, to two significant digits in formatSeconds'
+ * unit: "2 s", "1.1 s", "4.1 ms", "130 µs" (the timing diagram's pause
+ * label where its box is too narrow for formatSeconds' "+2.000 s").
+ */
+export function formatSecondsBrief(seconds: number): string {
+  // Rounded before the unit is chosen: 0.9996 s is "1 s", not "1000 ms".
+  const { value, unit } = inUnit(Number(seconds.toPrecision(2)));
+  return `${Number(value.toPrecision(2))} ${unit}`;
 }
 
 /**

@@ -29,7 +29,11 @@
  * Beside a move less than that faster, the window holds fewer steps where
  * it must, so that the narrowest gap it draws stays half a tick wide of the
  * width its steps get: the plot's less the pauses' boxes, each as wide as
- * its label (pauseBoxPx), measured before the window is chosen.
+ * its label (pauseBoxes), measured before the window is chosen. In a
+ * narrow plot a label takes a shorter form ('dwell 2 s', '+2 s'; '+2 s'),
+ * or none, so that the boxes leave the steps 30% of it; the labels so
+ * shortened are written whole under the chart. The window and the boxes
+ * are chosen again when the plot is resized.
  */
 import uPlot from 'uplot';
 import { breakLabelWidthsPx, StepChart, type XBreak } from '../charts/chart.js';
@@ -37,7 +41,7 @@ import { AXIS_NAMES } from '../format.js';
 import { AXIS_COLOURS } from '../scene/palette.js';
 import type { PulseWindow } from '../worker/protocol.js';
 import { drawnFromZero, pulseEdges, ROWS_PER_STEP } from './pulse-edges.js';
-import { formatSeconds, timeUnit } from './time-format.js';
+import { formatSeconds, formatSecondsBrief, timeUnit } from './time-format.js';
 import {
   type EdgePause,
   edgePauses,
@@ -77,6 +81,18 @@ const SWING = 1;
  * cut 'program ends' (79 px of text) to 'rogram end' and 'st step'.
  */
 const PAUSE_LINE_SHARE = 0.225;
+/**
+ * The share of the plot the pauses' boxes may take together, their labels
+ * wrapped to their widest words: past it a label takes a shorter form
+ * (pauseLabel's), the wider box's first, so that the steps keep 30% of the
+ * plot. Without it, in a page under some 300 px wide (the chart's plot 82 px
+ * at its narrowest, a page of 246 px or less) the two boxes of a program of
+ * one step needed 107 px for their words, and were drawn narrower than their
+ * labels ('rogram', '.100 s', '2.000').
+ */
+const PAUSES_SHARE = 0.7;
+/** A pause's box with no label in it (the label under the chart), CSS pixels: a tick of hatching between its dashed edges. */
+const BARE_PAUSE_PX = TICK_PX;
 
 export interface PulsedTrace {
   dims: number;
@@ -88,11 +104,32 @@ export interface PulsedTrace {
   dwellSeconds?(fromSeconds: number, toSeconds: number): Promise<number>;
 }
 
+/** A pause's label: the lines its box can show, fullest first, and all it says as one sentence. */
+interface PauseLabel {
+  /** Each a form of the label, a line each: the full one, then shorter ones for a narrow box. */
+  forms: string[][];
+  description: string;
+}
+
 /** A pause at an edge of the window, as drawn: each axis's DIR on its far side, and its label (pauseLabel). */
 interface LabelledPause {
   /** Per axis, +1 or -1: DIR for the step after the pause (a pause after the window), or before it (one before). */
   farDir: number[];
-  label: { lines: string[]; description: string };
+  label: PauseLabel;
+}
+
+/** A pause's box as drawn: its width, CSS pixels, and the form of its label it shows (none: the label is under the chart). */
+interface PauseBox {
+  px: number;
+  lines: string[];
+}
+
+/** A pause drawn at an edge of the window, in its box. */
+type DrawnPause = LabelledPause & { box: PauseBox };
+
+/** A pause's full label as a phrase: 'dwell 2 s, program ends +2.000 s'. */
+function fullLabel({ forms: [[title, ...rest]] }: PauseLabel): string {
+  return `${title}, ${rest.join(' ')}`;
 }
 
 /** The signals of steps fromStep..toStep of a window fetched from step `first`. */
@@ -118,24 +155,31 @@ function whole(text: string): string {
  * The label of a pause at the window's edge `side`: what it is (a dwell of
  * `dwellSeconds` in it, a pause, or faster steps past it), and the time to
  * the step across it, or at the program's edge (`programEdge`) from its
- * start (0 s) to the first step and from the last step to its end.
+ * start (0 s) to the first step and from the last step to its end. Its
+ * forms, for narrower boxes: the full one ('dwell 2 s', 'program ends',
+ * '+2.000 s'), what it is and the time in two digits ('dwell 2 s', '+2 s'),
+ * then that time alone ('+2 s').
  */
-function pauseLabel(pause: Pause, dwellSeconds: number, programEdge: boolean, side: 'before' | 'after'): { lines: string[]; description: string } {
+function pauseLabel(pause: Pause, dwellSeconds: number, programEdge: boolean, side: 'before' | 'after'): PauseLabel {
   const title = pause.faster ? 'faster steps' : dwellSeconds > 0 ? `dwell ${whole(dwellText(dwellSeconds))}` : 'pause';
-  const gap = formatSeconds(pause.toSeconds - pause.fromSeconds);
-  const gapLine = whole(gap);
+  const seconds = pause.toSeconds - pause.fromSeconds;
+  const gap = formatSeconds(seconds);
+  // The time's sign: + after the window, − before it, none from the program's start (an instant).
+  const sign = side === 'after' ? '+' : programEdge ? '' : '−';
+  const [gapLine, briefLine] = [whole(`${sign}${gap}`), whole(`${sign}${formatSecondsBrief(seconds)}`)];
   const kind = pause.faster
     ? `a faster move, its steps at least ${PAUSE_FACTOR} times as fast as the current step's`
     : dwellSeconds > 0
       ? `a pause with a G4 dwell of ${dwellText(dwellSeconds)} in it`
       : 'a pause';
+  const forms = (across: string) => [[title, across, gapLine], [title, briefLine], [briefLine]];
   if (side === 'after') {
     return programEdge
-      ? { lines: [title, 'program ends', `+${gapLine}`], description: `${kind}: the program ends ${gap} after its last step (not to scale)` }
-      : { lines: [title, 'next step', `+${gapLine}`], description: `${kind}: the next step comes ${gap} after the last one drawn (not to scale)` };
+      ? { forms: forms('program ends'), description: `${kind}: the program ends ${gap} after its last step (not to scale)` }
+      : { forms: forms('next step'), description: `${kind}: the next step comes ${gap} after the last one drawn (not to scale)` };
   }
   return {
-    lines: [title, programEdge ? 'first step at' : 'step before', programEdge ? gapLine : `−${gapLine}`],
+    forms: forms(programEdge ? 'first step at' : 'step before'),
     description: `${kind}: the first step drawn comes ${gap} after the ${programEdge ? "program's start" : 'step before it'} (not to scale)`,
   };
 }
@@ -156,6 +200,9 @@ export class TimingDiagram {
   #perSecond = 1;
   /** The x axis's label, to know when the chart must be made again (the unit changed). */
   #xLabel = '';
+  /** The point shown, and the plot's width its window and pauses' boxes were chosen for, CSS pixels: chosen again when the plot is resized. */
+  #pointIndex = 0;
+  #windowPlotPx = 0;
 
   constructor(container: HTMLElement, onPick: (pointIndex: number) => void) {
     this.#container = container;
@@ -185,6 +232,7 @@ export class TimingDiagram {
    */
   async showPoint(pointIndex: number, relayout = true): Promise<void> {
     const trace = this.#trace;
+    this.#pointIndex = pointIndex;
     if (!trace || trace.steps === 0) return;
     const inside = this.#window !== null && windowHolds(this.#window, pointIndex, this.#windowTicks, trace.steps, this.#stepSeconds !== null);
     if (!inside) {
@@ -198,7 +246,7 @@ export class TimingDiagram {
       let window: StepWindow;
       let pulses: PulseWindow;
       let widths: PlotWidths;
-      const pauses: { before: LabelledPause | null; after: LabelledPause | null } = { before: null, after: null };
+      const pauses: { before: DrawnPause | null; after: DrawnPause | null } = { before: null, after: null };
       try {
         const fetched = await trace.pulseTrains(needed.fromStep, needed.toStep);
         const endSeconds = trace.program?.durationSeconds;
@@ -216,14 +264,11 @@ export class TimingDiagram {
         };
         const before = await labelled(edges.before, 'before');
         const after = await labelled(edges.after, 'after');
-        widths = {
-          plotPx,
-          pauseBeforePx: before ? this.#pauseBoxPx(before.label.lines, plotPx) : 0,
-          pauseAfterPx: after ? this.#pauseBoxPx(after.label.lines, plotPx) : 0,
-        };
+        const [boxBefore, boxAfter] = this.#pauseBoxes([before?.label ?? null, after?.label ?? null], plotPx);
+        widths = { plotPx, pauseBeforePx: boxBefore?.px ?? 0, pauseAfterPx: boxAfter?.px ?? 0 };
         window = stepWindow(pointIndex, ticks, trace.steps, needed.fromStep, fetched.stepSeconds, endSeconds, widths);
-        pauses.before = window.pauseBefore && before;
-        pauses.after = window.pauseAfter && after;
+        pauses.before = window.pauseBefore && before && { ...before, box: boxBefore! };
+        pauses.after = window.pauseAfter && after && { ...after, box: boxAfter! };
         pulses = slicePulses(fetched, needed.fromStep, window.fromStep, window.toStep);
       } catch (error) {
         // The last trace's chart, kept until this window came, must not stay.
@@ -236,6 +281,7 @@ export class TimingDiagram {
       if (request !== this.#request || trace !== this.#trace) return;
       this.#windowTicks = ticks;
       this.#window = window;
+      this.#windowPlotPx = plotPx;
       // The steps drawn, for a reader (and a test) of the page.
       this.#container.dataset.fromStep = String(window.fromStep);
       this.#container.dataset.toStep = String(window.toStep);
@@ -289,30 +335,69 @@ export class TimingDiagram {
   }
 
   /**
-   * The width of a pause's box with label `lines` over a plot `plotPx`
-   * wide, CSS pixels: its longest line's, up to PAUSE_LINE_SHARE of the
-   * plot, but never under its widest word's, so that its text is whole.
+   * The boxes of the pauses with `labels` (null: no pause there) over a
+   * plot `plotPx` wide. A box with a form of its label is as wide as its
+   * longest line, up to PAUSE_LINE_SHARE of the plot, but never under its
+   * widest word's, so that its text is whole; each takes its label's
+   * fullest form, but while the boxes take more than PAUSES_SHARE of the
+   * plot together, the widest of them that can takes its next narrower
+   * form, and past the last, none (a bare box, the label under the chart).
    */
-  #pauseBoxPx(lines: string[], plotPx: number): number {
-    const { wrappedPx, unwrappedPx } = breakLabelWidthsPx(this.#container, lines);
-    return Math.max(wrappedPx, Math.min(unwrappedPx, PAUSE_LINE_SHARE * plotPx));
+  #pauseBoxes(labels: (PauseLabel | null)[], plotPx: number): (PauseBox | null)[] {
+    // Each label's boxes, narrowest last: a form no narrower than a fuller one before it is of no use.
+    const choices = labels.map((label) => {
+      if (!label) return [];
+      const boxes: PauseBox[] = [];
+      for (const lines of [...label.forms, []]) {
+        const { wrappedPx, unwrappedPx } = lines.length ? breakLabelWidthsPx(this.#container, lines) : { wrappedPx: BARE_PAUSE_PX, unwrappedPx: BARE_PAUSE_PX };
+        const px = Math.max(wrappedPx, Math.min(unwrappedPx, PAUSE_LINE_SHARE * plotPx));
+        if (boxes.length === 0 || px < boxes[boxes.length - 1]!.px) boxes.push({ px, lines });
+      }
+      return boxes;
+    });
+    const chosen = choices.map(() => 0);
+    const boxPx = (i: number) => choices[i]![chosen[i]!]?.px ?? 0;
+    for (;;) {
+      const totalPx = choices.reduce((sum, _, i) => sum + boxPx(i), 0);
+      if (totalPx <= PAUSES_SHARE * plotPx) break;
+      const narrowable = choices.map((_, i) => i).filter((i) => chosen[i]! < choices[i]!.length - 1);
+      if (narrowable.length === 0) break;
+      const widest = narrowable.reduce((a, b) => (boxPx(b) > boxPx(a) ? b : a));
+      chosen[widest]!++;
+    }
+    return choices.map((boxes, i) => boxes[chosen[i]!] ?? null);
   }
 
-  #draw({ trains, stepSeconds }: PulseWindow, pauses: { before: LabelledPause | null; after: LabelledPause | null }, widths: PlotWidths): void {
+  /** The plot resized: its window and pauses' boxes chosen again for its width, when it is on screen (a hidden chart is drawn at its least width). */
+  #resized(): void {
+    if (!this.#chart || !this.#container.checkVisibility() || Math.abs(this.#chart.plotWidthPx - this.#windowPlotPx) <= 0.5) return;
+    this.#window = null;
+    void this.showPoint(this.#pointIndex);
+  }
+
+  #draw({ trains, stepSeconds }: PulseWindow, pauses: { before: DrawnPause | null; after: DrawnPause | null }, widths: PlotWidths): void {
     const ticks = trains[0]!.step.length;
     this.#stepSeconds = stepSeconds;
     this.#perSecond = 1;
     const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#window!.fromStep === 0);
     const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
-    // The x the pauses take, out of scale: each its box's width (pauseBoxPx)
+    // The x the pauses take, out of scale: each its box's width (pauseBoxes)
     // of the plot's, the steps the rest (stepsWidthPx, as stepWindow took it).
     const [startX, endX] = [idle ? 0 : x[0]!, x[x.length - 1]!];
     const xPerPx = (endX - startX) / stepsWidthPx(widths, pauses.before !== null, pauses.after !== null);
     const [beforeX, afterX] = [widths.pauseBeforePx * xPerPx, widths.pauseAfterPx * xPerPx];
     this.#pauseBeforeX = pauses.before ? startX - beforeX : null;
     const breaks: XBreak[] = [];
-    if (pauses.before) breaks.push({ fromX: startX - beforeX, toX: startX, ...pauses.before.label });
-    if (pauses.after) breaks.push({ fromX: endX, toX: endX + afterX, ...pauses.after.label });
+    if (pauses.before) breaks.push({ fromX: startX - beforeX, toX: startX, lines: pauses.before.box.lines, description: pauses.before.label.description });
+    if (pauses.after) breaks.push({ fromX: endX, toX: endX + afterX, lines: pauses.after.box.lines, description: pauses.after.label.description });
+    // The labels shortened to fit their boxes (or left out), whole under the chart.
+    const shortened = (
+      [
+        ['at the left', pauses.before],
+        ['at the right', pauses.after],
+      ] as const
+    ).flatMap(([edge, pause]) => (pause && pause.box.lines !== pause.label.forms[0] ? [`${edge}, ${fullLabel(pause.label)}`] : []));
+    const caption = shortened.length ? `Hatched, not to scale: ${shortened.join('; ')}.` : '';
     const lanes: Float64Array[] = [];
     const series: uPlot.Series[] = [];
     /** Tick labels of the y axis: where each lane's levels are, and what they say. */
@@ -376,6 +461,7 @@ export class TimingDiagram {
     const xLabel = stepSeconds ? `planned instant (${unit})` : 'step';
     if (this.#chart && xLabel === this.#xLabel) {
       this.#chart.setBreaks(breaks);
+      this.#chart.setCaption(caption);
       this.#chart.setData(data);
       return;
     }
@@ -400,6 +486,8 @@ export class TimingDiagram {
         yValues: (_u, splits) => splits.map((v) => labels.find((l) => Math.abs(l.at - v) < 1e-9)?.text ?? ''),
         ySplits: labels.map((l) => l.at).sort((a, b) => a - b),
         xBreaks: breaks,
+        caption,
+        onResize: () => this.#resized(),
       },
       data,
       this.#onPick,

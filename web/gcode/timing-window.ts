@@ -66,9 +66,9 @@ export interface PlotWidths {
 
 /**
  * The width the steps drawn get, CSS pixels: the plot's less the boxes of
- * the pauses drawn before and after them; a tick's at least, where a plot
- * is too narrow for both boxes (under some 130 px, a page under 300 px
- * wide), which then come out that much narrower than their labels.
+ * the pauses drawn before and after them; a tick's at least, for boxes
+ * wider than the plot (the timing diagram's take 70% of it at most, their
+ * labels shortened to fit: PAUSES_SHARE).
  */
 export function stepsWidthPx(widths: PlotWidths, pauseBefore: boolean, pauseAfter: boolean): number {
   return Math.max(TICK_PX, widths.plotPx - (pauseBefore ? widths.pauseBeforePx : 0) - (pauseAfter ? widths.pauseAfterPx : 0));
