@@ -578,6 +578,69 @@ describe('the page', () => {
     await a.close();
   });
 
+  /** Where `box`'s selection is and which way it runs, and how far it is scrolled. */
+  function caret(page: Page, testId: string) {
+    return page.getByTestId(testId).evaluate((box: HTMLTextAreaElement) => ({
+      start: box.selectionStart,
+      end: box.selectionEnd,
+      direction: box.selectionDirection,
+      scrollTop: box.scrollTop,
+      focused: document.activeElement === box,
+    }));
+  }
+
+  /** The offset of `line` (from 1), `column` (from 0) in `text`. */
+  function offsetIn(text: string, line: number, column: number): number {
+    return text.split('\n').slice(0, line - 1).reduce((offset, l) => offset + l.length + 1, 0) + column;
+  }
+
+  it("keeps the caret, the selection and the scroll of a text box in use where they were when another tab's program or points are followed into it", async () => {
+    const a = await openPage('?mode=gcode');
+    await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const b = await a.context.newPage();
+    await b.goto(`${siteUrl()}?mode=gcode`);
+    await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    // Taller than the box: B reads it scrolled down, a selection on lines 40 and 41.
+    const moves = Array.from({ length: 60 }, (_, i) => `G1 X${i} Y${i} F600`);
+    const before = `G21 G90\n${moves.join('\n')}\n`;
+    await a.page.getByTestId('gcode-text').fill(before);
+    await expect.poll(() => b.getByTestId('gcode-text').inputValue()).toBe(before);
+    const box = b.getByTestId('gcode-text');
+    await box.focus();
+    await box.evaluate((text: HTMLTextAreaElement, [start, end]) => {
+      text.setSelectionRange(start!, end!, 'backward');
+      text.scrollTop = 500;
+    }, [offsetIn(before, 40, 3), offsetIn(before, 41, 5)]);
+    const read = await caret(b, 'gcode-text');
+    expect(read.scrollTop).toBe(500);
+    // A lengthens line 10: lines 40 and 41 stand further on in the text, at the same line and column.
+    const after = before.replace('G1 X8 Y8 F600', 'G1 X8 Y8 Z2 F600 (over the clamp)');
+    await a.page.getByTestId('gcode-text').fill(after);
+    await expect.poll(() => box.inputValue()).toBe(after);
+    expect(await caret(b, 'gcode-text')).toEqual({ ...read, start: offsetIn(after, 40, 3), end: offsetIn(after, 41, 5) });
+    // A shorter program: the selection's end, on line 40, clamped to the last line, its column to that line's end.
+    await box.evaluate((text: HTMLTextAreaElement, [start, end]) => text.setSelectionRange(start!, end!), [offsetIn(after, 1, 5), offsetIn(after, 40, 12)]);
+    const short = 'G21 G90\nG1 X3 Y4 F600\nG1 X7';
+    await a.page.getByTestId('gcode-text').fill(short);
+    await expect.poll(() => box.inputValue()).toBe(short);
+    expect(await caret(b, 'gcode-text')).toMatchObject({ start: offsetIn(short, 1, 5), end: offsetIn(short, 3, 5), direction: 'forward', focused: true });
+    // The points in Check points, likewise.
+    await Promise.all([a.page, b].map((page) => page.getByTestId('mode-trace').click()));
+    await Promise.all([a.page, b].map((page) => page.getByTestId('check-points').locator('summary').click()));
+    const points = Array.from({ length: 4 }, (_, i) => `${i},${i},0`).join('\n');
+    await a.page.getByTestId('learner-points').fill(points);
+    const pointsBox = b.getByTestId('learner-points');
+    await expect.poll(() => pointsBox.inputValue()).toBe(points);
+    await pointsBox.focus();
+    await pointsBox.evaluate((text: HTMLTextAreaElement, at) => text.setSelectionRange(at, at), offsetIn(points, 2, 2));
+    const morePoints = `0,0,0\n${points}`;
+    await a.page.getByTestId('learner-points').fill(morePoints);
+    await expect.poll(() => pointsBox.inputValue()).toBe(morePoints);
+    expect(await caret(b, 'learner-points')).toMatchObject({ start: offsetIn(morePoints, 2, 2), end: offsetIn(morePoints, 2, 2), focused: true });
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
   it("keeps a refused text over a visit to another mode, with its message (the last valid value came back)", async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;

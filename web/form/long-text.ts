@@ -26,6 +26,28 @@ export function lineStarts(text: string): number[] {
   return starts;
 }
 
+/** The line (from 0) of a text (its line starts `starts`, lineStarts) holding character `offset`: by bisection of the line starts, not a scan of the text. */
+export function lineAt(starts: readonly number[], offset: number): number {
+  let [low, high] = [0, starts.length - 2];
+  while (low < high) {
+    const middle = (low + high + 1) >> 1;
+    if (starts[middle]! <= offset) low = middle;
+    else high = middle - 1;
+  }
+  return low;
+}
+
+/**
+ * Character `offset` of a text (its line starts `before`) at the same line
+ * and column in another text (its line starts `after`): past the other's
+ * last line, on its last line; past a line's end, at that end.
+ */
+export function sameLineAndColumn(offset: number, before: readonly number[], after: readonly number[]): number {
+  const line = lineAt(before, offset);
+  const shown = Math.min(line, after.length - 2);
+  return Math.min(after[shown]! + offset - before[line]!, after[shown + 1]! - 1);
+}
+
 /** Whether `text` has more than EDITABLE_LINES lines: found by counting no further than that. */
 export function tooLongToEdit(text: string): boolean {
   let breaks = 0;
@@ -160,10 +182,14 @@ export class LongTextField {
    * Shows `text`: in the text box when it has at most EDITABLE_LINES lines
    * (or `editable`), else in the listing. `fromBox`: the box already holds
    * it (the user typed it), so the box is not written, which would lose the
-   * cursor and the undo history.
+   * cursor and the undo history. A text written over the one in the box
+   * (another tab's, followed) keeps the box's selection and scroll where
+   * they were (#rewriteBox).
    */
   show(text: string, { fromBox = false, editable = false } = {}): void {
     const { text: box, listing, longNote } = this.#e;
+    // Where the lines of the text the box holds start (none: the box is empty, its text listed).
+    const inBox = this.#listed ? undefined : this.#starts;
     this.#text = text;
     this.#starts = lineStarts(text);
     // Text typed in the box stays there, whatever its length.
@@ -176,7 +202,25 @@ export class LongTextField {
       longNote.querySelector('.long-lines')!.textContent = grouped(countedLines(text, this.#starts));
       this.listing.setText(text, this.#starts);
     } else if (!fromBox) {
-      box.value = text;
+      if (inBox) this.#rewriteBox(text, inBox);
+      else box.value = text;
     }
+  }
+
+  /**
+   * Writes `text` over the text in the box (its line starts `before`),
+   * keeping the box's selection (and which way it runs) at the same lines
+   * and columns (sameLineAndColumn), and its scroll: written as the box's
+   * value, the caret of a user reading the box or about to type in it
+   * jumped to the end of the text when another tab's text was followed.
+   */
+  #rewriteBox(text: string, before: readonly number[]): void {
+    const box = this.#e.text;
+    const { selectionStart, selectionEnd, selectionDirection, scrollTop, scrollLeft } = box;
+    box.value = text;
+    const kept = (offset: number) => sameLineAndColumn(offset, before, this.#starts);
+    box.setSelectionRange(kept(selectionStart), kept(selectionEnd), selectionDirection ?? undefined);
+    box.scrollTop = scrollTop;
+    box.scrollLeft = scrollLeft;
   }
 }

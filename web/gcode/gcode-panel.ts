@@ -24,7 +24,7 @@
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
 import { diagnosticText } from '../form/page-advice.js';
-import { linesInView, linesOfText, LongTextField, tooLongToEdit } from '../form/long-text.js';
+import { lineAt, linesInView, linesOfText, LongTextField, tooLongToEdit } from '../form/long-text.js';
 import { linesBar, RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, sentence } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs, OptionSetter, programReplaced } from '../state/app-state.js';
@@ -268,15 +268,9 @@ export class GcodePanel {
     return true;
   }
 
-  /** The line (from 1) holding character `offset` of the program: by bisection of the line starts, not a scan of the text. */
+  /** The line (from 1) holding character `offset` of the program. */
   #lineAt(offset: number): number {
-    let [low, high] = [0, this.#lineCount - 1];
-    while (low < high) {
-      const middle = (low + high + 1) >> 1;
-      if (this.#field.starts[middle]! <= offset) low = middle;
-      else high = middle - 1;
-    }
-    return low + 1;
+    return lineAt(this.#field.starts, offset) + 1;
   }
 
   /** Lines of the program. */
