@@ -496,15 +496,19 @@ describe('the page', () => {
     await a.page.waitForURL(/X3/);
     await b.getByTestId('gcode-text').fill(programB);
     // B keeps its program, and A's, which it writes over, to bring back; A
-    // follows B's write, and offers its own program back.
-    const offer = "Your program (3 lines) was replaced by another tab's program, typed at the same time.";
-    await b.getByTestId('gcode-replaced').filter({ hasText: offer }).waitFor();
+    // follows B's write, and offers its own program back. Each says so from
+    // its side (B said A's words: that its program was replaced).
+    const offers = new Map([
+      [a.page, "Your program (3 lines) was replaced by another tab's program, typed at the same time."],
+      [b, "The other tab's program (3 lines), typed at the same time, was written over by this one."],
+    ]);
+    await b.getByTestId('gcode-replaced').filter({ hasText: offers.get(b) }).waitFor();
     expect(await b.getByTestId('tabs-note').innerText()).toBe(
       "Another tab changed the program at the same time as this one: what this tab has is kept, and is what a reload shows. The other tab's program is offered back beside the editor.",
     );
     await expect.poll(() => a.page.getByTestId('gcode-text').inputValue()).toBe(programB);
-    await a.page.getByTestId('gcode-replaced').filter({ hasText: offer }).waitFor();
-    for (const page of [a.page, b]) {
+    await a.page.getByTestId('gcode-replaced').filter({ hasText: offers.get(a.page) }).waitFor();
+    for (const [page, offer] of offers) {
       await page.reload();
       await gcodeStatus(page, '4 lines, 3 moves');
       await page.getByTestId('gcode-replaced').filter({ hasText: offer }).waitFor();
@@ -530,12 +534,17 @@ describe('the page', () => {
     await a.page.waitForURL(/points=/);
     await b.getByTestId('check-points').locator('summary').click();
     await b.getByTestId('learner-points').fill(pointsB);
+    // Each tab says so from its side, after a reload too (B said A's words).
     const offer = "Your points (3 lines) were replaced by another tab's, typed at the same time.";
-    await b.getByTestId('learner-replaced').filter({ hasText: offer }).waitFor();
+    const othersOffer = "The other tab's points (3 lines), typed at the same time, were written over by this tab's.";
+    await b.getByTestId('learner-replaced').filter({ hasText: othersOffer }).waitFor();
     expect(await b.getByTestId('tabs-note').innerText()).toBe(
       "Another tab changed your points at the same time as this one: what this tab has is kept, and is what a reload shows. The other tab's points are offered back in Check points.",
     );
     await expect.poll(() => a.page.getByTestId('learner-points').inputValue()).toBe(pointsB);
+    await a.page.getByTestId('learner-replaced').filter({ hasText: offer }).waitFor();
+    await b.reload();
+    await b.getByTestId('learner-replaced').filter({ hasText: othersOffer }).waitFor();
     await a.page.reload();
     await a.page.getByTestId('learner-replaced').filter({ hasText: offer }).waitFor();
     await a.page.getByTestId('learner-bring-back').click();

@@ -19,10 +19,11 @@
  * steps, it takes about a second), and after a Cancel says so, with a
  * button that checks them again.
  *
- * Points another tab wrote over, changed there at the same time as here
- * (AppState's replacedPoints), are offered back above the box, as a
- * program a sample replaced is beside the editor, until brought back or the
- * points are changed again.
+ * Points changed in two tabs at the same time, one tab's written over by
+ * the other's (AppState's replacedPoints), are offered back above the box
+ * in both, each saying whose they are (OfferSide), as a program a sample
+ * replaced is beside the editor, until brought back or the points are
+ * changed again.
  */
 import type { Check } from '../core/index.js';
 import { element } from '../form/options-form.js';
@@ -30,6 +31,7 @@ import { checkBar, RunProgress, type RunProgressElements } from '../form/run-pro
 import { LongTextField, linesInView, linesOfText } from '../form/long-text.js';
 import { countOf, formatPoint, NO_VALUE_TEXT } from '../format.js';
 import type { AppState } from '../state/app-state.js';
+import { OfferSide } from '../state/offer-side.js';
 import type { Store } from '../state/store.js';
 import type { CheckRunProgress } from '../worker/protocol.js';
 
@@ -72,6 +74,8 @@ export class CheckPanel {
   readonly #field: LongTextField;
   /** The replaced points the offer was last made for ('' for none). */
   #offered = '';
+  /** Whether the offer's points are this tab's, replaced, or another tab's this tab's points were kept over. */
+  readonly #side = new OfferSide('voxpath.keptOverPoints');
 
   constructor(elements: CheckPanelElements, store: Store<AppState>, actions: CheckPanelActions) {
     this.#e = elements;
@@ -135,14 +139,18 @@ export class CheckPanel {
     this.#offerReplaced();
   }
 
-  /** Offers the points another tab's replaced, above the box (their lines counted only when they change). */
+  /** Offers the points another tab's replaced, or this tab's replaced another's, above the box (their lines counted only when they change). */
   #offerReplaced(): void {
-    const replaced = this.#store.state.replacedPoints;
+    const { learnerPoints, replacedPoints: replaced } = this.#store.state;
+    const othersPoints = this.#side.othersText(learnerPoints, replaced);
     if (replaced === this.#offered) return;
     this.#offered = replaced;
     this.#e.replaced.hidden = replaced === '';
     if (replaced === '') return;
-    this.#e.replaced.querySelector('.replaced-text')!.textContent = `Your points (${linesOfText(replaced)}) were replaced by another tab's, typed at the same time.`;
+    const lines = linesOfText(replaced);
+    this.#e.replaced.querySelector('.replaced-text')!.textContent = othersPoints
+      ? `The other tab's points (${lines}), typed at the same time, were written over by this tab's.`
+      : `Your points (${lines}) were replaced by another tab's, typed at the same time.`;
     this.#e.box.open = true;
   }
 

@@ -19,7 +19,8 @@
  * picked, a link's program) is kept (AppState's replacedProgram, stored as
  * the program is) and offered back beside the editor until it is brought
  * back or the user types a program again: a listed program has no undo, and
- * a reload kept only the sample.
+ * a reload kept only the sample. A program typed in two tabs at the same
+ * time is offered in both, each saying whose it is (OfferSide).
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
@@ -28,6 +29,7 @@ import { lineAt, linesInView, linesOfText, LongTextField, tooLongToEdit } from '
 import { linesBar, RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, sentence } from '../format.js';
 import { type AppState, type Catalogue, machineSpecs, OptionSetter, programReplaced } from '../state/app-state.js';
+import { OfferSide } from '../state/offer-side.js';
 import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
 import type { InputError, LineSteps } from '../worker/protocol.js';
@@ -106,6 +108,8 @@ export class GcodePanel {
   #sampleTexts: Promise<Set<string>> | undefined;
   /** The replaced program, and what replaced it, that the offer was last made for (or withdrawn, as a sample's). */
   #offered = { program: '', by: '' };
+  /** Whether the offer's program is this tab's, replaced, or another tab's this tab's program was kept over. */
+  readonly #side = new OfferSide('voxpath.keptOverProgram');
   /** The gutter's numbers: only the lines in view (a program can have 100,000). */
   readonly #gutterLines: HTMLElement;
   /** The program, in the text box or listed read-only. */
@@ -206,13 +210,15 @@ export class GcodePanel {
   }
 
   /**
-   * Offers the program a sample or a link replaced, beside the editor; a
+   * Offers the program a sample, a link or another tab replaced (or another
+   * tab's, which this tab's was kept over: OfferSide), beside the editor; a
    * sample's text, as loaded (a link's program replacing a sample), is
    * withdrawn instead: the user can pick it again.
    */
   #offerReplaced(): void {
-    const { replacedProgram, replacedBy } = this.#store.state;
+    const { gcode, replacedProgram, replacedBy } = this.#store.state;
     const { replaced } = this.#e;
+    const othersProgram = this.#side.othersText(gcode, replacedProgram);
     // Called at every change of the state (each step played): a long program's lines are counted only when the offer changes.
     if (replacedProgram === this.#offered.program && replacedBy === this.#offered.by) return;
     const newProgram = replacedProgram !== this.#offered.program;
@@ -221,7 +227,10 @@ export class GcodePanel {
       replaced.hidden = true;
       return;
     }
-    replaced.querySelector('.replaced-text')!.textContent = `Your program (${linesOfText(replacedProgram)}) was replaced by ${replacedBy}.`;
+    const lines = linesOfText(replacedProgram);
+    replaced.querySelector('.replaced-text')!.textContent = othersProgram
+      ? `The other tab's program (${lines}), typed at the same time, was written over by this one.`
+      : `Your program (${lines}) was replaced by ${replacedBy}.`;
     if (!newProgram) return;
     // Shown once it is known not to be a sample's text.
     replaced.hidden = true;
