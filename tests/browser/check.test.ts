@@ -122,6 +122,56 @@ describe('Check points (trace mode)', () => {
     await p.close();
   });
 
+  it("draws a long path's points as the rule's are drawn, by their sample, with every cell near the current step", { timeout: 180_000 }, async () => {
+    // The rule's 200,000-step line (drawn the lighter way on any WebGL: cells.ts), and its
+    // points with one near the middle moved a cell: its z step taken a point later. Their line through the cells' centers was
+    // drawn through all 200,001 of them: at the page's cap, 1,498,841 vertices that a software
+    // GPU took 0.7 to 1.6 s to draw in every frame.
+    const move = { from: [0, 0, 0], to: [200_000, 140_000, 120_000] };
+    const rule = await trace({ algorithm: 'regions', ...move });
+    const rows = pointsOf(rule);
+    rule.free();
+    const z = (k: number) => rows[k]![2]!;
+    let moved = 100_000;
+    while (z(moved) === z(moved - 1) || z(moved + 1) !== z(moved)) moved++;
+    rows[moved]![2] = z(moved - 1);
+    const [at, of] = [moved, rows.length - 1].map((n) => n.toLocaleString('en-US'));
+    const p = await openPage(`?mode=trace&algorithm=regions&from=0,0,0&to=${move.to.join(',')}`);
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 200,000$/ }).waitFor({ timeout: 60_000 });
+    await page.getByTestId('check-points').locator('summary').click();
+    await typeInto(page, rows.map((r) => r.join(',')).join('\n') + '\n');
+    await page.getByTestId('check-verdict').filter({ hasText: new RegExp(`at point (${moved}|${at}):`) }).waitFor({ timeout: 120_000 });
+    const canvas = page.getByTestId('scene-canvas');
+    await page.getByTestId('go-check-difference').click();
+    await page.getByTestId('step-counter').filter({ hasText: `Step ${at} of ${of}` }).waitFor();
+    // The rule's cubes near the step come from the worker; the learner's points are held.
+    interface Drawn {
+      points: number;
+      cubes: number;
+      lineVertices: number;
+    }
+    const drawn = async (path: 'pathDrawn' | 'secondDrawn'): Promise<Drawn | undefined> => {
+      const json = await canvas.evaluate((c, key) => (c as HTMLCanvasElement).dataset[key], path);
+      return json ? (JSON.parse(json) as Drawn) : undefined;
+    };
+    await expect.poll(async () => (await drawn('pathDrawn'))?.cubes ?? 0).toBeGreaterThan(0);
+    const ruleDrawn = (await drawn('pathDrawn'))!;
+    const learnerDrawn = (await drawn('secondDrawn'))!;
+    // The same sample of points as the rule's, the same cubes around the step, and the line through those cubes alone.
+    expect(learnerDrawn.points).toBe(ruleDrawn.points);
+    expect(learnerDrawn.cubes).toBe(ruleDrawn.cubes);
+    expect(learnerDrawn.lineVertices).toBe(learnerDrawn.cubes);
+    expect(learnerDrawn.points + learnerDrawn.cubes + learnerDrawn.lineVertices).toBeLessThan(rows.length / 5);
+    // Brought close, the learner's cells and line at their difference are drawn, the two cells outlined.
+    await page.waitForTimeout(300);
+    expect(await canvas.getAttribute('data-highlighted')).toBe('2');
+    expect(learnerPixels(await canvasPng(page))).toBeGreaterThan(500);
+    await screenshot(page, 'check-points-long', '[data-testid=scene-canvas]');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('goes to a difference past the end of the path at its last point', async () => {
     // Points that go on after the rule's path ends: the difference is at
     // point 11 of a 10-step path, and "Go to point 11" showed step 11 of 10.

@@ -185,8 +185,6 @@ export class SceneView {
   #orthoHeight = 10;
   #drawn: Drawn | undefined;
   #second: VoxelPath | undefined;
-  /** A line through the second path's cell centers, when it has one (a learner's points). */
-  #secondLine: IdealPath | undefined;
   #highlights: Cells[] = [];
   #overlay: THREE.Object3D | undefined;
   #renderPending = false;
@@ -509,17 +507,24 @@ export class SceneView {
     this.requestRender();
   }
 
-  /** The canvas says where the current cell is drawn (x,y,z), empty while its point is on its way: for tests and tools. */
+  /**
+   * The canvas says where the current cell is drawn (x,y,z), empty while its
+   * point is on its way, and what each path hands three.js (DrawnCounts, as
+   * JSON; the second path's empty when there is none): for tests and tools.
+   */
   #markCurrentCell(): void {
     this.canvas.dataset.currentCell = this.#drawn?.voxels.currentCell?.toArray().join(',') ?? '';
+    this.canvas.dataset.pathDrawn = this.#drawn ? JSON.stringify(this.#drawn.voxels.drawnCounts) : '';
+    this.canvas.dataset.secondDrawn = this.#second ? JSON.stringify(this.#second.drawnCounts) : '';
   }
 
   /**
    * A second path drawn over the first with smaller cells, in `colour` (an
    * overlaid comparison, a learner's checked points); undefined removes it.
-   * With `centers`, also that line through its cells' centers in that
-   * colour: a learner's path mostly runs inside the rule's cells, and the
-   * line shows where it goes there.
+   * With `centers`, also the line through its cells' centers in that
+   * colour, drawn as its cells are (PathStyle.centers): a learner's path
+   * mostly runs inside the rule's cells, and the line shows where it goes
+   * there.
    */
   setSecond(trace: (PathPoints & Pick<DrawnTrace, 'bounds'>) | undefined, colour: string = PALETTE.second, centers?: IdealLine): void {
     if (this.#second) {
@@ -527,22 +532,17 @@ export class SceneView {
       this.#second.dispose();
       this.#second = undefined;
     }
-    if (this.#secondLine) {
-      this.#scene.remove(this.#secondLine);
-      this.#secondLine.dispose();
-      this.#secondLine = undefined;
-    }
-    if (trace && centers) {
-      this.#secondLine = new IdealPath(centers, colour);
-      this.#scene.add(this.#secondLine);
-    }
     if (trace) {
       const { min, max } = sceneCorners(trace.bounds);
       const bounds = new THREE.Box3(min.subScalar(0.5), max.addScalar(0.5));
-      this.#second = new VoxelPath(trace, bounds, { visited: colour, cellSize: SECOND_PATH_SIZE, onTop: true }, () => this.requestRender());
+      this.#second = new VoxelPath(trace, bounds, { visited: colour, cellSize: SECOND_PATH_SIZE, onTop: true, centers }, () => {
+        this.#markCurrentCell();
+        this.requestRender();
+      });
       this.#scene.add(this.#second);
       this.#second.show(Math.min(this.#pointIndex, this.#second.steps));
     }
+    this.#markCurrentCell();
     this.requestRender();
   }
 
@@ -802,7 +802,7 @@ export class SceneView {
     const lookedAt = new THREE.Vector3(Math.round(target.x), Math.round(target.y), Math.round(target.z));
     setCellOrigin(lookedAt);
     this.#drawn?.ideal.drawNear(lookedAt);
-    this.#secondLine?.drawNear(lookedAt);
+    this.#second?.drawNear(lookedAt);
     this.#handles.pinToView(camera, this.#controls.target);
     this.#drawn?.axes.showLegibleTicks(camera, this.#container.clientWidth, this.#container.clientHeight);
     this.#renderer.render(this.#scene, camera);

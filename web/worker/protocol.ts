@@ -140,8 +140,11 @@ export interface LearnerCheck {
   points: Int32Array | null;
   /**
    * The line through the points' cell centers, and its box, as the view
-   * draws it (null with the points): made by the worker, since on the main
-   * thread it took 18 to 39 ms of showing 200,000 points.
+   * draws it when it draws every cell as a cube (null with the points):
+   * made by the worker, since on the main thread it took 18 to 39 ms of
+   * showing 200,000 points. A path drawn the lighter way has the line drawn
+   * through the cells near the current one only, made with their cubes
+   * (PathStyle.centers in web/scene/voxel-path.ts); its box is still this one.
    */
   centers: IdealLine | null;
   dims: number;
