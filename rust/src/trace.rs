@@ -30,6 +30,7 @@ use serde::Serialize;
 use std::borrow::Cow;
 use std::cell::{OnceCell, RefCell};
 use std::mem::MaybeUninit;
+use std::ops::Range;
 use std::rc::Rc;
 use std::sync::Arc;
 use tsify::Tsify;
@@ -1257,13 +1258,9 @@ impl Trace {
     /// checkpoint before `from`.
     fn count_ties(&self, from: u64, to: u64) -> u64 {
         let mut ties = 0;
-        let mut k = from;
-        while k < to {
-            let segment = self.segment(self.segment_of_step(k));
-            let end = to.min(segment.first_step + segment.steps);
-            ties += Self::replay_to(&segment, k).count_ties(end - k);
-            k = end;
-        }
+        self.for_each_replay(from, to, |_, mut stepper, steps| {
+            ties += stepper.count_ties(steps.end - steps.start);
+        });
         ties
     }
 
@@ -1794,12 +1791,8 @@ impl Trace {
     /// not have are left alone.
     fn replay_decisions(&self, from: u64, to: u64, mut put: impl FnMut(usize, usize, f64)) {
         let mut row = vec![f64::NAN; MAX_COLUMNS];
-        let mut k = from;
-        while k < to {
-            let segment = self.segment(self.segment_of_step(k));
-            let seg_end = (segment.first_step + segment.steps).min(to);
-            let mut stepper = Self::replay_to(&segment, k);
-            for i in k..seg_end {
+        self.for_each_replay(from, to, |segment, mut stepper, steps| {
+            for i in steps {
                 row.fill(f64::NAN);
                 stepper.replay_step(&mut row);
                 for (local, &global) in segment.column_index.iter().enumerate() {
@@ -1807,7 +1800,26 @@ impl Trace {
                     put(global, (i - from) as usize, value);
                 }
             }
-            k = seg_end;
+        });
+    }
+
+    /// Calls `f(segment, its stepper replayed so that its next step is the
+    /// first of them, step indices)` for each stretch of step indices
+    /// `from..to` that belongs to one segment, in order: the one walk of
+    /// the segments that [`Self::replay_decisions`] and
+    /// [`Self::count_ties`] make.
+    fn for_each_replay(
+        &self,
+        from: u64,
+        to: u64,
+        mut f: impl FnMut(&Segment, Box<dyn Replay>, Range<u64>),
+    ) {
+        let mut k = from;
+        while k < to {
+            let segment = self.segment(self.segment_of_step(k));
+            let end = to.min(segment.first_step + segment.steps);
+            f(&segment, Self::replay_to(&segment, k), k..end);
+            k = end;
         }
     }
 

@@ -793,3 +793,30 @@ fn circles_that_touch_the_limit_run_within_it() {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// Steps are recorded without their decisions: the metrics count the
+    /// ties by replaying the segments, which must find the ones the
+    /// decisions record, whole or in slices (the wider arcs cross
+    /// checkpoints), for the circle and the helix by either method, the
+    /// arc or the linear axis major, either tie policy.
+    #[test]
+    fn the_metrics_count_the_ties_the_decisions_record(
+        arc in prop_oneof![arc_strategy(40), arc_strategy(2000)],
+        rise in prop_oneof![-40i64..40, -30000i64..30000],
+        hold in any::<bool>(),
+        parts in 1u64..12,
+    ) {
+        let tie = if hold { "hold" } else { "advance" };
+        for request in [
+            arc.request("circle", 0, ""),
+            arc.request("helix", rise, &format!(r#","tie":"{tie}""#)),
+            arc.request("helix", rise, &format!(r#","method":"segments","tie":"{tie}""#)),
+        ] {
+            common::check_ties(|| common::trace(&request), parts)
+                .map_err(|e| TestCaseError::fail(format!("{request}: {e}")))?;
+        }
+    }
+}

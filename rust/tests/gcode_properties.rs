@@ -2,6 +2,8 @@
 //! its target rounded to steps, however many moves come before (no drift),
 //! with every line algorithm.
 
+mod common;
+
 use proptest::prelude::*;
 use voxpath::Point;
 use voxpath::gcode::{Settings, run};
@@ -228,5 +230,30 @@ proptest! {
         );
         prop_assert_eq!(p.records.move_of_step(p.info.steps), None);
         prop_assert_eq!(p.records.move_at_line(1), None);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Steps are recorded without their decisions: the metrics count the
+    /// ties by replaying the segments (made when read, with the lines',
+    /// arcs' and helices' steppers), which must find the ones the
+    /// decisions record, whole or in slices.
+    #[test]
+    fn the_metrics_count_the_ties_the_decisions_record(
+        lines in prop::collection::vec(program_line(), 1..16),
+        steps_per_mm in prop::sample::select(vec![1.0, 3.0, 10.0, 80.0]),
+        line in prop::sample::select(voxpath::arc::arc_segments::LINE_ALGORITHMS),
+        arcs in prop::sample::select(voxpath::gcode::program::ARC_ALGORITHMS),
+        parts in 1u64..12,
+    ) {
+        let source = format!("G21 G90 G17 F600\n{}\n", lines.join("\n"));
+        let settings = format!(
+            r#"{{"stepsPerMm": {steps_per_mm}, "lineAlgorithm": "{line}", "arcAlgorithm": "{arcs}"}}"#
+        );
+        let trace = || run(&source, Settings::from_json(&settings).unwrap()).trace;
+        common::check_ties(trace, parts)
+            .map_err(|e| TestCaseError::fail(format!("{settings}\n{source}: {e}")))?;
     }
 }

@@ -629,3 +629,32 @@ fn float_rules_on_the_longest_lines() {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// Steps are recorded without their decisions: the metrics count the
+    /// ties by replaying the segments, which must find the ones the
+    /// decisions record, whole or in slices, with every line algorithm
+    /// and either tie policy.
+    #[test]
+    fn the_metrics_count_the_ties_the_decisions_record(
+        (from, to) in line_strategy(2..=6), tie in tie_strategy(), parts in 1u64..12
+    ) {
+        for a in common::line_algorithms() {
+            if !(a.min_dims..=a.max_dims).contains(&from.dims()) {
+                continue;
+            }
+            let tie = if a.default_tie.is_some() {
+                format!(r#","tie":"{}""#, tie.label())
+            } else {
+                String::new()
+            };
+            let request = format!(
+                r#"{{"algorithm":"{}","from":{:?},"to":{:?}{tie}}}"#, a.id, from.coords(), to.coords()
+            );
+            common::check_ties(|| common::trace(&request), parts)
+                .map_err(|e| TestCaseError::fail(format!("{request}: {e}")))?;
+        }
+    }
+}

@@ -119,3 +119,41 @@ pub fn same_cell(kind: ColumnKind, traced: f64, written: f64) -> bool {
     };
     traced == expected || (traced.is_nan() && expected.is_nan())
 }
+
+/// The ties among a trace's steps as each step's decision records them,
+/// replayed step by step: the flags of its tie columns (the lines' "tie",
+/// Saleem's helix's "helixTie"; the circle's rule has no ties).
+pub fn ties_by_decision(t: &voxpath::Trace) -> u64 {
+    let table = t.decisions(0, t.steps());
+    t.columns()
+        .iter()
+        .zip(&table.columns)
+        .filter(|(column, _)| column.name == "tie" || column.name == "helixTie")
+        .map(|(_, flags)| flags.iter().filter(|&&flag| flag == 1.0).count() as u64)
+        .sum()
+}
+
+/// Checks the ties a trace's metrics count, in one pass and in a pass
+/// made in `parts` slices of points (each slice's ties counted from the
+/// checkpoint before it), against [`ties_by_decision`]. `make` makes the
+/// trace afresh: a trace keeps its metrics once made.
+pub fn check_ties(make: impl Fn() -> voxpath::Trace, parts: u64) -> Result<(), String> {
+    let whole = make();
+    let expected = ties_by_decision(&whole);
+    let counted = whole.metrics().ties;
+    if counted != expected {
+        return Err(format!(
+            "one pass: {counted} ties, the decisions {expected}"
+        ));
+    }
+    let sliced = make();
+    let slice = (sliced.steps() + 1).div_ceil(parts.max(1));
+    while !sliced.advance_metrics(slice).done {}
+    let counted = sliced.metrics().ties;
+    if counted != expected {
+        return Err(format!(
+            "{slice} points a slice: {counted} ties, the decisions {expected}"
+        ));
+    }
+    Ok(())
+}
