@@ -232,7 +232,8 @@ pub trait Decision: Copy {
     }
 
     /// True when [`Decision::is_tie`] is always false: the metrics pass, which
-    /// counts ties by replaying each segment, then skips the replay.
+    /// counts ties by replaying each segment ([`Stepper::ties_ahead`]),
+    /// then skips the replay.
     const NEVER_TIES: bool = false;
 
     /// One plain sentence saying why `step` was taken from `from`.
@@ -269,6 +270,22 @@ pub trait Stepper: Clone + 'static {
     #[inline]
     fn fill(&mut self, out: &mut [Step]) -> Filled {
         fill_by_next_step(self, out)
+    }
+
+    /// How many of its next `steps` steps (fewer where the path ends
+    /// first) a tie decides ([`Decision::is_tie`]): the metrics count the
+    /// ties of a recorded stretch so, from the stepper's state before it.
+    /// By taking the steps; a stepper whose ties follow from its state in
+    /// closed form overrides this (Saleem's helix, whose ties its line's
+    /// term alone decides, and whose circle the steps would take).
+    fn ties_ahead(mut self, steps: u64) -> u64 {
+        if Self::Why::NEVER_TIES {
+            return 0;
+        }
+        (0..steps)
+            .map_while(|_| self.next_step())
+            .filter(|(_, why)| why.is_tie())
+            .count() as u64
     }
 
     /// Steps this stepper will still take, when known without running it.
@@ -346,8 +363,9 @@ trait Replay {
         from: &Point,
         row: &mut [f64],
     ) -> Option<(String, Option<DecisionFigure>)>;
-    /// Takes `steps` steps: how many of them a tie decided.
-    fn count_ties(&mut self, steps: u64) -> u64;
+    /// How many of the next `steps` steps a tie decides
+    /// ([`Stepper::ties_ahead`]).
+    fn count_ties(self: Box<Self>, steps: u64) -> u64;
     /// The stepper's [`Stepper::setup_note`] (of the state it is in).
     fn setup_note(&self) -> String;
 }
@@ -385,14 +403,8 @@ impl<S: Stepper> Replay for S {
         Some((why.explain(from, step), figure))
     }
 
-    fn count_ties(&mut self, steps: u64) -> u64 {
-        if S::Why::NEVER_TIES {
-            return 0;
-        }
-        (0..steps)
-            .map_while(|_| self.next_step())
-            .filter(|(_, why)| why.is_tie())
-            .count() as u64
+    fn count_ties(self: Box<Self>, steps: u64) -> u64 {
+        self.ties_ahead(steps)
     }
 
     fn setup_note(&self) -> String {
@@ -1217,7 +1229,7 @@ impl Trace {
     /// Whole-path statistics, computed the first time they are asked for:
     /// one pass over the points, and the ties counted by replaying each
     /// segment from its first state (steps are recorded without their
-    /// decisions). A pass begun by [`Self::advance_metrics`] is finished.
+    /// decisions; [`Stepper::ties_ahead`]). A pass begun by [`Self::advance_metrics`] is finished.
     pub fn metrics(&self) -> &Metrics {
         self.metrics.get_or_init(|| {
             let mut pass = self
@@ -1258,7 +1270,7 @@ impl Trace {
     /// checkpoint before `from`.
     fn count_ties(&self, from: u64, to: u64) -> u64 {
         let mut ties = 0;
-        self.for_each_replay(from, to, |_, mut stepper, steps| {
+        self.for_each_replay(from, to, |_, stepper, steps| {
             ties += stepper.count_ties(steps.end - steps.start);
         });
         ties

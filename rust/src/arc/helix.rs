@@ -357,6 +357,15 @@ impl SaleemHelix {
         }
     }
 
+    /// The count of the axis that steps every iteration: the minor
+    /// axis's error equal to it is a tie.
+    fn major_count(&self) -> i64 {
+        match self.major {
+            Major::Arc => self.n_c as i64,
+            Major::Linear => self.n_z as i64,
+        }
+    }
+
     fn arc_step(&mut self) -> (Step, CircleWhy) {
         // A Bresenham line between n_c and n_z takes exactly n_c arc steps,
         // all of which the dry run counted.
@@ -374,12 +383,8 @@ impl Stepper for SaleemHelix {
             return None;
         }
         self.remaining -= 1;
-        let major_count = match self.major {
-            Major::Arc => self.n_c as i64,
-            Major::Linear => self.n_z as i64,
-        };
         let error = self.line.value;
-        let tie = error == major_count;
+        let tie = error == self.major_count();
         let mut value = error;
         let minor_steps = self.line.advance_mask(&mut value) != 0;
         self.line.value = value;
@@ -453,6 +458,15 @@ impl Stepper for SaleemHelix {
             steps: taken,
             displacement,
         }
+    }
+
+    /// A tie is the line's error equal to the major count, whatever the
+    /// circle does: counted from the term in closed form
+    /// ([`Term::values_equal`]), with no step of the circle (replaying the
+    /// helix for its ties took a fifth of its metrics' time).
+    fn ties_ahead(self, steps: u64) -> u64 {
+        self.line
+            .values_equal(self.major_count(), steps.min(self.remaining))
     }
 
     fn remaining_steps(&self) -> Option<u64> {

@@ -284,6 +284,42 @@ impl Term {
             / self.decrement as i128) as i64
     }
 
+    /// How many of the values the next `steps` steps compare, this one
+    /// first, equal `target`, without taking the steps: the ties among
+    /// them where `target` is the rule's threshold (Saleem's helix).
+    ///
+    /// Step j compares value + j·increment less n·decrement (n the steps
+    /// of the axis before it), and every value lies in the window
+    /// (steps_above - decrement + increment, steps_above + increment]
+    /// ([`Term::jumped`]), which holds one number of each class modulo the
+    /// decrement. So a target in the window is compared exactly at the j
+    /// with j·increment ≡ target - value (mod decrement): every period-th
+    /// j from the least one.
+    pub fn values_equal(&self, target: i64, steps: u64) -> u64 {
+        if self.decrement == 0 {
+            // No step of the axis, nor an increment (at most the
+            // decrement): the value stays.
+            return if self.value == target { steps } else { 0 };
+        }
+        let (increment, decrement) = (self.increment as i128, self.decrement as i128);
+        let target = target as i128;
+        let above = self.steps_above as i128;
+        if target <= above - decrement + increment || target > above + increment {
+            return 0;
+        }
+        let Some((first, period)) =
+            least_solution(increment, target - self.value as i128, decrement)
+        else {
+            return 0;
+        };
+        let steps = steps as i128;
+        if first >= steps {
+            0
+        } else {
+            ((steps - 1 - first) / period + 1) as u64
+        }
+    }
+
     /// This term `steps` steps later, without taking them.
     ///
     /// Every rule here keeps its value in the window (steps_above -
@@ -324,6 +360,27 @@ impl Term {
             ..*self
         }
     }
+}
+
+/// The least j >= 0 with a·j ≡ c (mod d), d > 0, and the period of the
+/// solutions, d / gcd(a, d); None where there is none. By Euclid's
+/// algorithm extended: each remainder r is s·a modulo d, so the last one
+/// that is not 0, gcd(a, d), is s·a with the s kept beside it, and
+/// (c / gcd)·s solves the congruence where gcd divides c.
+fn least_solution(a: i128, c: i128, d: i128) -> Option<(i128, i128)> {
+    let (mut r, mut next_r) = (d, a.rem_euclid(d));
+    let (mut s, mut next_s) = (0i128, 1i128);
+    while next_r != 0 {
+        let q = r / next_r;
+        (r, next_r) = (next_r, r - q * next_r);
+        (s, next_s) = (next_s, s - q * next_s);
+    }
+    if c.rem_euclid(r) != 0 {
+        return None;
+    }
+    let period = d / r;
+    let first = (c / r).rem_euclid(period) * s.rem_euclid(period) % period;
+    Some((first, period))
 }
 
 /// `N` passive terms and the axes that step every time. `N` is a constant
@@ -778,6 +835,51 @@ impl Pair {
 mod tests {
     use super::*;
     use crate::grid::displacement;
+
+    /// The values a term compares equal a target where its steps, taken
+    /// one by one, find it: every small term of either tie policy, from
+    /// every value of its window, for every target in and around it.
+    #[test]
+    fn values_equal_counts_what_the_steps_compare() {
+        for decrement in 0..=12i64 {
+            for increment in 0..=decrement {
+                for threshold in -3..=decrement + 3 {
+                    for tie in [TiePolicy::Hold, TiePolicy::Advance] {
+                        let steps_above = Term::steps_above(threshold, tie);
+                        let window =
+                            steps_above - decrement + increment + 1..=steps_above + increment;
+                        for value in window.clone() {
+                            let term = Term {
+                                value,
+                                increment,
+                                decrement,
+                                steps_above,
+                                step: Step::NONE,
+                            };
+                            let mut compared = Vec::new();
+                            let mut v = value;
+                            for _ in 0..60 {
+                                compared.push(v);
+                                term.advance_mask(&mut v);
+                            }
+                            for target in window.start() - 2..=window.end() + 2 {
+                                for steps in [0, 1, 2, 5, 13, 60] {
+                                    let expected =
+                                        compared[..steps].iter().filter(|&&v| v == target).count()
+                                            as u64;
+                                    assert_eq!(
+                                        term.values_equal(target, steps as u64),
+                                        expected,
+                                        "{term:?}, target {target}, {steps} steps"
+                                    );
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
 
     /// The product without checks where both factors are small, with them
     /// past that: the same as i128 says, on both sides of 2^31.
