@@ -61,9 +61,11 @@ pub(crate) fn check_axes(spec: &OptionSpec, values: &[f64; MACHINE_AXES]) -> Res
 }
 
 /// Setting `spec` from JSON: a number for every axis, or one per axis (x,
-/// y, z), each within the range its spec declares. One number out of range
-/// is told so without an axis ("acceleration: must be 1e-100 mm/s² or more,
-/// got 0"), as it was typed.
+/// y, z). One number out of range is told so here, without an axis
+/// ("acceleration: must be 1e-100 mm/s² or more, got 0"), as it was typed;
+/// a list's values are held to the range by the constructor they go to
+/// ([`Machine::new`], [`Machine::from_drive`], [`crate::planner::Limits::new`]: their
+/// [`check_axes`] names the axis), which checks every value it is given.
 pub(crate) fn per_axis(spec: &OptionSpec, value: &Value) -> Result<[f64; MACHINE_AXES], Error> {
     let field = spec.name;
     let number = |v: &Value| {
@@ -77,7 +79,6 @@ pub(crate) fn per_axis(spec: &OptionSpec, value: &Value) -> Result<[f64; MACHINE
             for (axis, item) in items.iter().enumerate() {
                 out[axis] = number(item)?;
             }
-            check_axes(spec, &out)?;
             Ok(out)
         }
         Value::Array(items) => Err(Error::field(
