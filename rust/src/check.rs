@@ -1462,12 +1462,17 @@ impl AlsoMatchesPass {
             .zip(&trial.choice)
             .map(|((_, values), &i)| Some(values[i].clone()))
             .collect();
-        let known = same_path_as(info, request, tried, &combination).and_then(|(id, earlier)| {
-            self.traced
-                .iter()
-                .find(|(i, c, _)| *i == id && *c == earlier)
-                .map(|&(_, _, path_follows)| path_follows)
-        });
+        leave_out_inapplicable(info, &trial.base, tried, &mut combination);
+        // The combination traced before whose path is this one's: one
+        // paired with it, or this one itself, reached again with an option
+        // it leaves out at another value.
+        let (id, earlier) = same_path_as(info, request, tried, &combination)
+            .unwrap_or_else(|| (info.id, combination.clone()));
+        let known = self
+            .traced
+            .iter()
+            .find(|(i, c, _)| *i == id && *c == earlier)
+            .map(|&(_, _, path_follows)| path_follows);
         let path_follows = known.unwrap_or_else(|| {
             let asked = combination.clone();
             let path_follows = trace_combination(info, &trial.base, tried, steps, &mut combination)
@@ -1570,13 +1575,7 @@ fn trace_combination(
     combination: &mut [Option<Value>],
 ) -> Option<Trace> {
     loop {
-        let mut options = base.clone();
-        for ((spec, _), value) in tried.iter().zip(combination.iter()) {
-            if let Some(value) = value {
-                options.insert(spec.name.to_string(), value.clone());
-            }
-        }
-        let mut request = Request::new(info.id, options);
+        let mut request = combination_request(info, base, tried, combination);
         // An option of the request that does not apply with this
         // combination's values (the chord options, segmentLength and
         // tolerance, beside the helix's method saleem) is the request's
@@ -1600,6 +1599,48 @@ fn trace_combination(
                     .position(|(spec, _)| e.field_name() == Some(spec.name))?;
                 combination[refused].take()?;
             }
+        }
+    }
+}
+
+/// The request of `info` with `base` and the combination's values (those
+/// not left out, None).
+fn combination_request(
+    info: &AlgorithmInfo,
+    base: &Map<String, Value>,
+    tried: &[(&OptionSpec, Vec<Value>)],
+    combination: &[Option<Value>],
+) -> Request {
+    let mut options = base.clone();
+    for ((spec, _), value) in tried.iter().zip(combination) {
+        if let Some(value) = value {
+            options.insert(spec.name.to_string(), value.clone());
+        }
+    }
+    Request::new(info.id, options)
+}
+
+/// Leaves out (None) each option of the combination that does not apply
+/// with its other values ([`Request::inapplicable`]: the helix's
+/// lineAlgorithm beside its method saleem), as its trace would refuse it
+/// and be made again without it ([`trace_combination`]). So combinations
+/// that differ only there are one request, traced once: the helix's seven
+/// line algorithms had Saleem's method traced seven times over, a dry run
+/// of its circle each (a third of alsoMatches at the page's cap).
+fn leave_out_inapplicable(
+    info: &AlgorithmInfo,
+    base: &Map<String, Value>,
+    tried: &[(&OptionSpec, Vec<Value>)],
+    combination: &mut [Option<Value>],
+) {
+    // A value not among its choices is the trace's to refuse.
+    let Ok(off) = combination_request(info, base, tried, combination).inapplicable(info.options)
+    else {
+        return;
+    };
+    for ((spec, _), value) in tried.iter().zip(combination.iter_mut()) {
+        if off.iter().any(|o| o.name == spec.name) {
+            *value = None;
         }
     }
 }
@@ -1690,6 +1731,7 @@ fn plain(value: &Value) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::arc::arc_segments::LINE_ALGORITHMS;
     use proptest::prelude::*;
 
     fn request(json: &str) -> Request {
@@ -2236,6 +2278,104 @@ mod tests {
                     prop_assert_eq!(same, named, "{}: {:?} in {:?}", info.id, combination, entries);
                 }
             }
+        }
+    }
+
+    /// alsoMatches with no combination taken from another: each traced
+    /// as asked (an option it refuses left out and the trace made again),
+    /// as alsoMatches was made before the combinations that leave out the
+    /// same options were traced once.
+    fn also_matches_tracing_each(request: &Request, points: &Points) -> Vec<AlsoMatch> {
+        let steps = points.steps();
+        let family = family_of(request).unwrap();
+        let max_steps = request.max_steps().unwrap_or(0).min(points.len() - 1);
+        let mut out = Vec::new();
+        for info in algorithms::ALGORITHMS.iter().filter(|a| a.family == family) {
+            let mut trial = AlgorithmTrial::new(info, request, max_steps);
+            for mut combination in combinations(&trial.tried) {
+                let traced =
+                    trace_combination(info, &trial.base, &trial.tried, &steps, &mut combination);
+                if traced.is_some_and(|t| follows(&t, points, &steps))
+                    && !trial.matched.contains(&combination)
+                {
+                    trial.matched.push(combination);
+                }
+            }
+            out.extend(trial.finish());
+        }
+        out
+    }
+
+    /// An arc, a helix or a circle: from (r, 0) about a center near the
+    /// origin to a point a quarter, half or three quarters round (or back
+    /// at the start), with turns, a rise for the helix, any direction,
+    /// plane, method, tie and chords' line algorithm.
+    fn arc_request() -> impl Strategy<Value = String> {
+        (
+            (1i64..25, -3i64..3, -3i64..3, 0usize..4, 0u64..3),
+            (
+                -40i64..40,
+                proptest::sample::select(vec!["circle", "arc-segments", "helix"]),
+                proptest::sample::select(vec!["xy", "zx", "yz"]),
+                proptest::sample::select(vec!["ccw", "cw"]),
+                proptest::sample::select(vec!["saleem", "segments"]),
+                proptest::sample::select(vec!["advance", "hold"]),
+                proptest::sample::select(LINE_ALGORITHMS.to_vec()),
+                prop_oneof![Just(String::new()), (1u32..8).prop_map(|l| format!(r#","segmentLength":{l}"#))],
+            ),
+        )
+            .prop_map(|((r, cu, cv, quarter, turns), (rise, algorithm, plane, dir, method, tie, line, chords))| {
+                let axes: [usize; 3] = match plane {
+                    "xy" => [0, 1, 2],
+                    "zx" => [2, 0, 1],
+                    _ => [1, 2, 0],
+                };
+                let at = |u: i64, v: i64, w: i64| {
+                    let mut p = [0i64; 3];
+                    p[axes[0]] = cu + u;
+                    p[axes[1]] = cv + v;
+                    p[axes[2]] = w;
+                    p
+                };
+                let (u, v) = [(r, 0), (0, r), (-r, 0), (0, -r)][quarter];
+                let (center, from) = (at(0, 0, 0), at(r, 0, 0));
+                let rise = if algorithm == "helix" { rise } else { 0 };
+                let to = at(u, v, rise);
+                let options = match algorithm {
+                    "circle" => String::new(),
+                    "arc-segments" => format!(r#","lineAlgorithm":"{line}"{chords}"#),
+                    _ if method == "segments" => format!(r#","method":"segments","lineAlgorithm":"{line}","tie":"{tie}"{chords}"#),
+                    _ => format!(r#","tie":"{tie}"{chords}"#),
+                };
+                let tie = if algorithm == "arc-segments" && ["regions", "bresenham3d", "nd", "liu-float"].contains(&line) {
+                    format!(r#","tie":"{tie}""#)
+                } else {
+                    String::new()
+                };
+                format!(
+                    r#"{{"algorithm":"{algorithm}","from":{from:?},"to":{to:?},"center":{center:?},"plane":"{plane}","dir":"{dir}","turns":{turns}{options}{tie}}}"#
+                )
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// Combinations that leave out the same options are traced once
+        /// ([`leave_out_inapplicable`]): on random arcs and helices, their
+        /// own points and those points changed, alsoMatches is what
+        /// tracing every combination gives, entry for entry.
+        #[test]
+        fn also_matches_is_every_combination_traced_on_its_own(json in arc_request(), change in 0usize..8) {
+            let r = request(&json);
+            let rule = match crate::algorithms::run(&r) {
+                Ok(rule) => rule,
+                // A chord option given with Saleem's method, or a helix whose rise the circle cannot carry.
+                Err(_) => return Ok(()),
+            };
+            let all = deviations(&points_of(&rule));
+            let points = &all[change % all.len()];
+            let steps = points.steps();
+            prop_assert_eq!(also_matches(&r, points, &steps), also_matches_tracing_each(&r, points), "{}", json);
         }
     }
 
