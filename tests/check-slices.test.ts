@@ -4,7 +4,8 @@
 // whatever the slices and wherever the points part from the rule; a signal
 // stops it between slices.
 import { describe, expect, it } from 'vitest';
-import { type Check, type CheckProgress, checkPoints, trace, type TraceOptions, traceToCsv } from '../web/core/index.js';
+import { type Check, type CheckProgress, checkPoints, readAndCheckPoints, readPoints, trace, type TraceOptions, traceToCsv } from '../web/core/index.js';
+import { loadCore, withTextBytes } from '../web/core/wasm.js';
 
 /** Moves of each family, each long enough to take several slices. */
 const RULES: Record<string, TraceOptions> = {
@@ -76,14 +77,84 @@ describe('a check made in slices', () => {
     }
   });
 
-  it('reads text as the one call does', async () => {
+  it('reads text as the one call does, a slice at a time', { timeout: 120_000 }, async () => {
     const rule = RULES['a helix']!;
+    const t = await trace(rule);
+    const path = t.pointsInRange(0, t.steps + 1);
+    t.free();
+    const rows = (points: Int32Array, bracketed: boolean) => {
+      const out: string[] = [];
+      for (let k = 0; k < points.length; k += 3) out.push(bracketed ? `(${points[k]}, ${points[k + 1]}, ${points[k + 2]})` : `${points[k]},${points[k + 1]},${points[k + 2]}`);
+      return bracketed ? `[${out.join(',\n')}]\n` : `x,y,z\n${out.join('\n')}\n`;
+    };
+    const core = await loadCore();
+    for (const [how, points] of deviations(path)) {
+      for (const bracketed of [false, true]) {
+        const text = rows(points, bracketed);
+        const whole = await checkPoints(rule, text);
+        const json = JSON.stringify(whole);
+        expect(whole.matches, how).toBe(how === 'the path');
+        // The core's run at 1, 7 and 65,536 units a call: the reading is
+        // its first stage, its bytes and points growing to the text's.
+        for (const units of [1, 7, 65_536]) {
+          const run = withTextBytes(core, text, (bytes) => core.CheckRun.fromText(JSON.stringify(rule), bytes));
+          const seen: CheckProgress[] = [];
+          for (let p = run.advance(units); ; p = run.advance(units)) {
+            seen.push(p);
+            if (p.done) break;
+          }
+          expect(JSON.stringify(run.result()), `${how}, ${units} units a call`).toBe(json);
+          expect(run.readPoints()).toEqual(await readPoints(text, 3));
+          run.free();
+          const reading = seen.filter((p) => p.stage === 'reading');
+          // 65,536 rows read the helix's text in one call, which goes on to check them.
+          if (units < 65_536) expect(reading.length, how).toBeGreaterThan(units === 1 ? 100 : 0);
+          for (let i = 1; i < reading.length; i++) {
+            expect(reading[i]!.pointsRead).toBeGreaterThanOrEqual(reading[i - 1]!.pointsRead);
+            expect(reading[i]!.bytes).toBe(reading[0]!.bytes);
+          }
+          const last = seen.at(-1)!;
+          expect(last.bytes).toBeGreaterThanOrEqual(text.length);
+          expect(last).toMatchObject({ bytesRead: last.bytes, pointsRead: points.length / 3 });
+        }
+        for (const sliceMs of [0.05, 1, 5]) {
+          const progress: CheckProgress[] = [];
+          const sliced = await checkPoints(rule, text, { sliceMs, onProgress: (p) => progress.push(p) });
+          expect(JSON.stringify(sliced), `${how}, slices of ${sliceMs} ms`).toBe(json);
+          expect(progress.at(-1)!.done).toBe(true);
+          const both = await readAndCheckPoints(rule, text, { sliceMs });
+          expect(JSON.stringify(both.check)).toBe(json);
+          expect(both.points).toEqual(Float64Array.from(points));
+        }
+      }
+    }
+    // An error in the text, found by the slice that reads it: its line and column, as the one call gives them.
+    const bad = `${rows(path, false)}1,2,x\n`;
+    const error = await checkPoints(rule, bad).catch((e: unknown) => e);
+    const slicedError = await checkPoints(rule, bad, { sliceMs: 0.05 }).catch((e: unknown) => e);
+    expect(slicedError).toMatchObject({ message: (error as Error).message, line: path.length / 3 + 2 });
+  });
+
+  it('stops while it reads text when its signal is aborted', async () => {
+    // A helix of 150,000 points: its text takes three slices to read.
+    const rule: TraceOptions = { algorithm: 'helix', from: [250, 0, 0], to: [250, 0, 300], center: [0, 0, 0], plane: 'xy', turns: 106 };
     const t = await trace(rule);
     const text = traceToCsv(t);
     t.free();
-    const whole = await checkPoints(rule, text);
-    expect(whole.matches).toBe(true);
-    expect(await checkPoints(rule, text, { sliceMs: 0.1 })).toEqual(whole);
+    const cancel = new AbortController();
+    const seen: CheckProgress[] = [];
+    const stopped = checkPoints(rule, text, {
+      signal: cancel.signal,
+      sliceMs: 0.05,
+      onProgress: (p) => {
+        seen.push(p);
+        cancel.abort();
+      },
+    });
+    await expect(stopped).rejects.toMatchObject({ name: 'AbortError' });
+    expect(seen).toHaveLength(1);
+    expect(seen[0]!.stage).toBe('reading');
+    expect(seen[0]!.bytesRead).toBeLessThan(seen[0]!.bytes);
   });
 
   it('stops between slices when its signal is aborted', async () => {

@@ -113,33 +113,9 @@ impl Points {
     /// [`Self::from_text`], and when `with_steps`, the points' steps
     /// ([`Self::steps`]) made as the rows are read, not in a second pass.
     fn read_text(text: &str, dims: usize, with_steps: bool) -> Result<PointsRead, Error> {
-        let text = crate::text::without_byte_order_mark(text);
-        let mut reader = TextReader::new(dims, with_steps);
-        // Text with a bracket anywhere is a printed list. Plain rows have
-        // none, so the rows are read until a line with one shows (then the
-        // list is read from the start), and an error before it stands only
-        // if no bracket follows: the text is read once, not searched first.
-        let listed = match reader.line_rows(text) {
-            Ok(rows) => rows == Rows::Listed,
-            Err(_) if has_bracket(text) => true,
-            Err(e) => return Err(e),
-        };
-        if listed {
-            reader = TextReader::new(dims, with_steps);
-            reader.bracket_rows(text)?;
-        }
-        if reader.points == 0 {
-            return Err(Error::at(1, 1, "there are no points"));
-        }
-        let first_jump = reader.first_jump;
-        let points = Points {
-            dims,
-            coords: reader.coords,
-        };
-        match first_jump {
-            Some((index, line, column)) => Err(Error::at(line, column, points.jump(index))),
-            None => Ok((points, reader.steps.map(Arc::from))),
-        }
+        let mut reading = TextReading::new(dims, with_steps);
+        reading.advance(text, u64::MAX)?;
+        reading.finish()
     }
 
     /// The step from each point to the next (a path: see [`Self::check_path`]).
@@ -191,6 +167,162 @@ fn coordinate(value: f64, index: usize, axis: usize) -> Result<i64, String> {
         ));
     }
     Ok(value as i64)
+}
+
+/// Text read into points a slice at a time ([`Self::advance`]), to the
+/// points and the errors of one reading ([`Points::from_text`], which is
+/// this run to its end): a check reads the 1,500,000 points of the page's
+/// cap (19 MB of text, 60 ms natively, 0.1 to 0.2 s in wasm) in slices a
+/// worker can report and stop between. The text is given to each call
+/// (its owner keeps it), the same text every time.
+pub struct TextReading {
+    reader: TextReader,
+    /// Where the reading stands: by lines until a line shows a bracket
+    /// (then the text is read again as a printed list, from its start).
+    rows: RowsRead,
+    /// Bytes of the text read so far.
+    bytes_read: usize,
+}
+
+/// How far [`TextReading`] has got.
+enum RowsRead {
+    Lines(LineRows),
+    Brackets(BracketRows),
+    Done,
+}
+
+impl TextReading {
+    pub fn new(dims: usize, with_steps: bool) -> TextReading {
+        TextReading {
+            reader: TextReader::new(dims, with_steps),
+            rows: RowsRead::Lines(LineRows::default()),
+            bytes_read: 0,
+        }
+    }
+
+    /// Reads about `units` more rows of `text` (lines, or for a printed
+    /// list 16 bytes a unit), at least one; true once the whole text is
+    /// read. An error is the reading's ([`Points::from_text`]).
+    pub fn advance(&mut self, text: &str, units: u64) -> Result<bool, Error> {
+        let text = crate::text::without_byte_order_mark(text);
+        let mut budget = units.max(1);
+        loop {
+            match &mut self.rows {
+                RowsRead::Lines(state) => {
+                    // Text with a bracket anywhere is a printed list. Plain
+                    // rows have none, so the rows are read until a line with
+                    // one shows (then the list is read from the start), and
+                    // an error before it stands only if no bracket follows:
+                    // the text is read once, not searched first.
+                    let read = self.reader.line_rows(text, state, &mut budget);
+                    self.bytes_read = state.at;
+                    match read {
+                        Ok(None) => return Ok(false),
+                        Ok(Some(Rows::Read)) => self.rows = RowsRead::Done,
+                        Ok(Some(Rows::Listed)) => self.read_as_list(),
+                        Err(_) if has_bracket(text) => self.read_as_list(),
+                        Err(e) => return Err(e),
+                    }
+                }
+                RowsRead::Brackets(state) => {
+                    let done = self.reader.bracket_rows(text, state, &mut budget)?;
+                    self.bytes_read = state.at;
+                    if !done {
+                        return Ok(false);
+                    }
+                    self.rows = RowsRead::Done;
+                }
+                RowsRead::Done => return Ok(true),
+            }
+        }
+    }
+
+    /// Starts the reading again, of the text as a printed list.
+    fn read_as_list(&mut self) {
+        self.reader = TextReader::new(self.reader.dims, self.reader.steps.is_some());
+        self.rows = RowsRead::Brackets(BracketRows::default());
+        self.bytes_read = 0;
+    }
+
+    /// Bytes of the text read so far (after a byte order mark).
+    pub fn bytes_read(&self) -> u64 {
+        self.bytes_read as u64
+    }
+
+    /// Points read so far.
+    pub fn points_read(&self) -> u64 {
+        self.reader.points
+    }
+
+    /// The points, and their steps when asked for, once [`Self::advance`]
+    /// is done: the errors found at the end (no points, a point more than
+    /// one cell from the one before).
+    fn finish(self) -> Result<PointsRead, Error> {
+        debug_assert!(matches!(self.rows, RowsRead::Done));
+        let reader = self.reader;
+        if reader.points == 0 {
+            return Err(Error::at(1, 1, "there are no points"));
+        }
+        let points = Points {
+            dims: reader.dims,
+            coords: reader.coords,
+        };
+        match reader.first_jump {
+            Some((index, line, column)) => Err(Error::at(line, column, points.jump(index))),
+            None => Ok((points, reader.steps.map(Arc::from))),
+        }
+    }
+}
+
+/// Where a reading by lines ([`TextReader::line_rows`]) stands.
+struct LineRows {
+    /// The next line's byte offset and 1-based number.
+    at: usize,
+    line_number: u32,
+    /// No row read yet: the next may be a header.
+    first: bool,
+    /// The columns a header named.
+    pick: Option<Vec<usize>>,
+}
+
+impl Default for LineRows {
+    fn default() -> LineRows {
+        LineRows {
+            at: 0,
+            line_number: 0,
+            first: true,
+            pick: None,
+        }
+    }
+}
+
+/// Where a reading of a printed list ([`TextReader::bracket_rows`]) stands.
+struct BracketRows {
+    /// The next character's byte offset.
+    at: usize,
+    /// The line it is on (1-based) and where that line starts.
+    line: u32,
+    line_start: usize,
+    /// The bracket open: where its row starts, its line and column.
+    open: Option<(usize, u32, u32)>,
+    /// Whether the line so far is blank, and whether it is a comment
+    /// (`#` its first character past blanks), whose brackets are its
+    /// words, not points, as in a reading by lines.
+    blank: bool,
+    comment: bool,
+}
+
+impl Default for BracketRows {
+    fn default() -> BracketRows {
+        BracketRows {
+            at: 0,
+            line: 1,
+            line_start: 0,
+            open: None,
+            blank: true,
+            comment: false,
+        }
+    }
 }
 
 /// Reads text into points in one pass, a row at a time, with no
@@ -452,30 +584,42 @@ impl TextReader {
         })
     }
 
-    /// One row per innermost bracket pair, `[...]` or `(...)`.
-    fn bracket_rows(&mut self, text: &str) -> Result<(), Error> {
+    /// One row per innermost bracket pair, `[...]` or `(...)`, from where
+    /// `state` stands, until about `budget` units (16 bytes each) are
+    /// spent; true at the text's end.
+    fn bracket_rows(
+        &mut self,
+        text: &str,
+        state: &mut BracketRows,
+        budget: &mut u64,
+    ) -> Result<bool, Error> {
         let mut cells = Vec::new();
-        let (mut line, mut line_start) = (1u32, 0usize);
-        let mut open: Option<(usize, u32, u32)> = None;
-        // Whether the line so far is blank, and whether it is a comment
-        // (`#` its first character past blanks), whose brackets are its
-        // words, not points, as in a reading by lines.
-        let (mut blank, mut comment) = (true, false);
-        for (i, c) in text.char_indices() {
+        let stop = state
+            .at
+            .saturating_add(usize::try_from(budget.saturating_mul(16)).unwrap_or(usize::MAX));
+        for (i, c) in text[state.at..].char_indices() {
+            let i = i + state.at;
+            if i >= stop {
+                *budget = 0;
+                state.at = i;
+                return Ok(false);
+            }
             match c {
                 // A line ends at LF, CR LF or a lone CR (`text::split_line`).
                 '\r' if text.as_bytes().get(i + 1) == Some(&b'\n') => {}
                 '\n' | '\r' => {
-                    line += 1;
-                    line_start = i + 1;
-                    (blank, comment) = (true, false);
+                    state.line += 1;
+                    state.line_start = i + 1;
+                    (state.blank, state.comment) = (true, false);
                 }
-                _ if comment => {}
-                '#' if blank => comment = true,
+                _ if state.comment => {}
+                '#' if state.blank => state.comment = true,
                 _ if c.is_whitespace() => {}
-                '[' | '(' => open = Some((i + 1, line, (i + 1 - line_start + 1) as u32)),
+                '[' | '(' => {
+                    state.open = Some((i + 1, state.line, (i + 1 - state.line_start + 1) as u32));
+                }
                 ']' | ')' => {
-                    if let Some((start, row_line, column)) = open.take() {
+                    if let Some((start, row_line, column)) = state.open.take() {
                         let row = &text[start..i];
                         split_cells(row, &mut cells).map_err(|(offset, message)| {
                             error_in(row, row_line, column, offset, message)
@@ -485,9 +629,11 @@ impl TextReader {
                 }
                 _ => {}
             }
-            blank &= c.is_whitespace();
+            state.blank &= c.is_whitespace();
         }
-        Ok(())
+        *budget = budget.saturating_sub(((text.len() - state.at) / 16) as u64);
+        state.at = text.len();
+        Ok(true)
     }
 
     /// One row per non-blank line; a first line with no number in it is a
@@ -495,49 +641,63 @@ impl TextReader {
     /// if it names none of them, its first `dims` columns. A first line
     /// with numbers in it is a point, so that a typo in it ("1 2 three",
     /// "0,0,0x1") is an error at its column, not a point silently taken for
-    /// a header and dropped.
-    fn line_rows(&mut self, text: &str) -> Result<Rows, Error> {
+    /// a header and dropped. Reads from where `state` stands until `budget`
+    /// lines are spent: None until the text's end.
+    fn line_rows(
+        &mut self,
+        text: &str,
+        state: &mut LineRows,
+        budget: &mut u64,
+    ) -> Result<Option<Rows>, Error> {
         let mut cells = Vec::new();
         let mut picked = Vec::new();
-        let mut pick: Option<Vec<usize>> = None;
-        let mut first = true;
-        let (mut at, mut line_number) = (0, 0u32);
-        while at < text.len() {
-            line_number += 1;
-            if let Some(next) = self.plain_row(text.as_bytes(), at, line_number, pick.as_deref()) {
-                at = next;
-                first = false;
+        let LineRows {
+            at,
+            line_number,
+            first,
+            pick,
+        } = state;
+        while *at < text.len() {
+            if *budget == 0 {
+                return Ok(None);
+            }
+            *budget -= 1;
+            *line_number += 1;
+            if let Some(next) = self.plain_row(text.as_bytes(), *at, *line_number, pick.as_deref())
+            {
+                *at = next;
+                *first = false;
                 continue;
             }
-            let record = Record::at(&text[at..]);
-            at += record.next;
+            let record = Record::at(&text[*at..]);
+            *at += record.next;
             if record.bracket {
-                return Ok(Rows::Listed);
+                return Ok(Some(Rows::Listed));
             }
             // A row that spans lines (a line break inside a quoted cell)
             // moves the next row's line number past them.
             let line = record.text;
-            let row_line = line_number;
-            line_number += breaks(line);
+            let row_line = *line_number;
+            *line_number += breaks(line);
             if line.trim_start().is_empty() || is_comment(line) {
                 continue;
             }
             split_cells(line, &mut cells)
                 .map_err(|(offset, message)| error_in(line, row_line, 1, offset, message))?;
-            if first {
-                first = false;
+            if *first {
+                *first = false;
                 if !cells.iter().any(|(_, c)| is_number(c)) {
-                    pick = Some(header_columns(&cells, self.dims).map_err(
+                    *pick = Some(header_columns(&cells, self.dims).map_err(
                         |(offset, message)| error_in(line, row_line, 1, offset, message),
                     )?);
                     continue;
                 }
             }
-            match &pick {
+            match pick {
                 None => self.push_row(row_line, 1, line, &cells)?,
                 Some(columns) => {
                     picked.clear();
-                    for &c in columns {
+                    for &c in columns.iter() {
                         let cell = cells.get(c).copied().ok_or_else(|| {
                             Error::at(
                                 row_line,
@@ -555,7 +715,7 @@ impl TextReader {
                 }
             }
         }
-        Ok(Rows::Read)
+        Ok(Some(Rows::Read))
     }
 }
 
@@ -1006,12 +1166,12 @@ pub struct Check {
 
 /// Checks text points against the request given as JSON text.
 pub fn check_text(request_json: &str, text: &str) -> Result<Check, Error> {
-    CheckPass::from_text(request_json, text).map(CheckPass::run)
+    SlicedCheck::from_text(request_json, text.to_string())?.run()
 }
 
 /// Checks flat points (`dims` per point) against the request as JSON text.
 pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Check, Error> {
-    CheckPass::from_flat(request_json, values, dims).map(CheckPass::run)
+    SlicedCheck::from_flat(request_json, values, dims)?.run()
 }
 
 /// Checks points against the trace of `request` (already run).
@@ -1025,6 +1185,12 @@ pub fn check_trace(request: &Request, trace: &Trace, points: &Points) -> Check {
 pub struct CheckProgress {
     /// What the check does now.
     pub stage: CheckStage,
+    /// Bytes of the points' text read so far, of `bytes` (both 0 for
+    /// points given as numbers), and the points read so far (all of them
+    /// once the reading is over).
+    pub bytes_read: u64,
+    pub bytes: u64,
+    pub points_read: u64,
     /// Step indices compared so far, of `stepsShared`, the steps both paths
     /// have (all of them once the first difference is found).
     pub steps_compared: u64,
@@ -1040,6 +1206,8 @@ pub struct CheckProgress {
 #[derive(Serialize, Tsify, Clone, Copy, Debug, PartialEq, Eq)]
 #[serde(rename_all = "camelCase")]
 pub enum CheckStage {
+    /// The points' text read ([`TextReading`]).
+    Reading,
     /// The points' steps compared with the rule's, to the first that differs.
     Comparing,
     /// Every option combination of the rule's family traced along the
@@ -1077,25 +1245,129 @@ pub struct CheckPass<T: Borrow<Trace> = Trace> {
     variants: AlsoMatchesPass,
 }
 
-impl CheckPass {
+/// A check of points as given, a slice at a time: points given as text
+/// are read first, a slice at a time too ([`TextReading`]: at the page's
+/// cap the reading was one call of 0.1 to 0.2 s before the check's first
+/// slice, which a Cancel waited for), then checked ([`CheckPass`]). The
+/// request is read and its rule traced when it is made. The result is the
+/// one a whole check gives ([`Self::run`]).
+pub struct SlicedCheck {
+    /// The text while it is read, and the rule; None once it is read.
+    reading: Option<Box<ReadingStage>>,
+    /// The check, once there are points.
+    pass: Option<CheckPass>,
+    /// Bytes of the text (0 for points given as numbers).
+    bytes: u64,
+}
+
+/// What [`SlicedCheck`] holds while it reads the points' text.
+struct ReadingStage {
+    request: Request,
+    trace: Trace,
+    text: String,
+    reading: TextReading,
+}
+
+impl SlicedCheck {
     /// A check of points read from text ([`Points::from_text`]) against the
-    /// request given as JSON text.
-    pub fn from_text(request_json: &str, text: &str) -> Result<CheckPass, Error> {
+    /// request given as JSON text. A bad request is an error here; one in
+    /// the text, from [`Self::advance`].
+    pub fn from_text(request_json: &str, text: String) -> Result<SlicedCheck, Error> {
         let request = Request::from_json(request_json)?;
         let trace = crate::algorithms::run(&request)?;
-        let (points, steps) = Points::read_text(text, trace.dims(), true)?;
-        let steps = steps.expect("asked for with the points");
-        Ok(CheckPass::new(request, trace, points, steps))
+        let reading = TextReading::new(trace.dims(), true);
+        Ok(SlicedCheck {
+            bytes: crate::text::without_byte_order_mark(&text).len() as u64,
+            reading: Some(Box::new(ReadingStage {
+                request,
+                trace,
+                text,
+                reading,
+            })),
+            pass: None,
+        })
     }
 
     /// A check of flat points (`dims` per point, [`Points::from_flat`])
     /// against the request given as JSON text.
-    pub fn from_flat(request_json: &str, values: &[f64], dims: usize) -> Result<CheckPass, Error> {
+    pub fn from_flat(
+        request_json: &str,
+        values: &[f64],
+        dims: usize,
+    ) -> Result<SlicedCheck, Error> {
         let request = Request::from_json(request_json)?;
         let trace = crate::algorithms::run(&request)?;
         let points = Points::from_flat(values, dims, trace.dims())?;
         let steps = points.steps();
-        Ok(CheckPass::new(request, trace, points, steps))
+        Ok(SlicedCheck {
+            reading: None,
+            pass: Some(CheckPass::new(request, trace, points, steps)),
+            bytes: 0,
+        })
+    }
+
+    /// The whole check, in one call.
+    pub fn run(mut self) -> Result<Check, Error> {
+        self.advance(u64::MAX)?;
+        Ok(self.result().expect("advanced to the end"))
+    }
+
+    /// Takes the check on by about `units` points' worth of work: rows of
+    /// the text read, then [`CheckPass::advance`]'s (both in the call that
+    /// ends the reading). An error is the
+    /// text's ([`Points::from_text`]), once the reading comes to it.
+    pub fn advance(&mut self, units: u64) -> Result<CheckProgress, Error> {
+        if let Some(stage) = &mut self.reading {
+            if !stage.reading.advance(&stage.text, units)? {
+                return Ok(self.progress());
+            }
+            let ReadingStage {
+                request,
+                trace,
+                reading,
+                ..
+            } = *self.reading.take().expect("read above");
+            let (points, steps) = reading.finish()?;
+            let steps = steps.expect("asked for with the points");
+            // The check goes on in this call, by as much again at most (so
+            // that Infinity makes the whole check).
+            self.pass = Some(CheckPass::new(request, trace, points, steps));
+        }
+        let pass = self.pass.as_mut().expect("points read");
+        pass.advance(units);
+        Ok(self.progress())
+    }
+
+    pub fn progress(&self) -> CheckProgress {
+        match (&self.reading, &self.pass) {
+            (Some(stage), _) => CheckProgress {
+                stage: CheckStage::Reading,
+                bytes_read: stage.reading.bytes_read(),
+                bytes: self.bytes,
+                points_read: stage.reading.points_read(),
+                steps_compared: 0,
+                steps_shared: 0,
+                variants_tried: 0,
+                variants: 0,
+                done: false,
+            },
+            (None, Some(pass)) => CheckProgress {
+                bytes_read: self.bytes,
+                bytes: self.bytes,
+                ..pass.progress()
+            },
+            (None, None) => unreachable!("a check reads its points or has them"),
+        }
+    }
+
+    /// The learner's points, once read.
+    pub fn points(&self) -> Option<&Points> {
+        self.pass.as_ref().map(CheckPass::points)
+    }
+
+    /// The check, once [`Self::advance`] is done; else None.
+    pub fn result(&self) -> Option<Check> {
+        self.pass.as_ref()?.result()
     }
 }
 
@@ -1184,6 +1456,9 @@ impl<T: Borrow<Trace>> CheckPass<T> {
         };
         CheckProgress {
             stage,
+            bytes_read: 0,
+            bytes: 0,
+            points_read: self.points.len(),
             steps_compared: self.steps_compared,
             steps_shared: self.steps_shared,
             variants_tried: self.variants.combinations_tried,
@@ -1896,6 +2171,105 @@ mod tests {
                     // A call after the end changes nothing.
                     assert_eq!(pass.advance(units), before);
                     assert_eq!(pass.result().unwrap(), whole);
+                }
+            }
+        }
+    }
+
+    /// A reading of `text` a slice of `units` at a time: its points and
+    /// steps, or its error with the line and column.
+    fn read_in_slices(text: &str, dims: usize, units: u64) -> Result<PointsRead, Error> {
+        let mut reading = TextReading::new(dims, true);
+        while !reading.advance(text, units)? {}
+        reading.finish()
+    }
+
+    #[test]
+    fn text_read_in_slices_is_the_one_reading_bit_for_bit() {
+        // Plain rows, a header and comments, a printed list (read again as
+        // one at its first bracket), a list after a row that is not a point,
+        // quoted cells over lines, CR line ends, a byte order mark, and
+        // errors: a word, a jump (reported after the whole text), no points.
+        let texts = [
+            "0,0,0\n1,1,0\n2,1,1\n3,2,1\n",
+            "\u{feff}x,y,z\n# start\n0,0,0\n\n1,1,0\r\n2,1,1\r3,2,1",
+            "k,x,y,z\n0,0,0,0\n1,1,1,0\n2,2,1,1\n",
+            "[(0, 0, 0), (1, 1, 0),\n (2, 1, 1), (3, 2, 1)]\n",
+            "points:\n[0, 0, 0]\n[1, 1, 0]\n",
+            "\"0\",\"0\",\"0\"\n\"1\",\"1\n\",\"0\"\n",
+            "0 0 0\n1 1 # (a list)\n",
+            "0,0,0\n1,1,0\n3,1,1\n4,1,1\n",
+            "0,0,0\n1,one,0\n",
+            "# nothing\n\n",
+            "",
+        ];
+        for text in texts {
+            let whole = Points::read_text(text, 3, true);
+            for units in [1, 2, 3, 16, u64::MAX] {
+                let sliced = read_in_slices(text, 3, units);
+                match (&whole, &sliced) {
+                    (Ok((p, s)), Ok((q, t))) => {
+                        assert!(p == q && s == t, "{text:?} in slices of {units}")
+                    }
+                    (Err(e), Err(f)) => assert_eq!(
+                        (e.to_string(), &e.location),
+                        (f.to_string(), &f.location),
+                        "{text:?} in slices of {units}"
+                    ),
+                    _ => panic!("{text:?} in slices of {units}: {whole:?} against {sliced:?}"),
+                }
+            }
+        }
+        // The helix's own points as text, in slices of 1 and 65,536 rows.
+        let rule = crate::algorithms::trace_json(
+            r#"{"algorithm":"helix","from":[30,0,0],"to":[30,0,40],"center":[0,0,0],"turns":3}"#,
+        )
+        .unwrap();
+        let points = points_of(&rule);
+        let text: String = (0..points.len())
+            .map(|k| format!("{:?}\n", points.get(k)).replace(['[', ']'], ""))
+            .collect();
+        for units in [1, 65_536] {
+            let (read, steps) = read_in_slices(&text, 3, units).unwrap();
+            assert_eq!(read, points);
+            assert_eq!(steps.unwrap(), points.steps());
+        }
+    }
+
+    #[test]
+    fn a_check_of_text_made_in_slices_is_the_one_call_s_bit_for_bit() {
+        let json =
+            r#"{"algorithm":"helix","from":[30,0,0],"to":[30,0,40],"center":[0,0,0],"turns":2}"#;
+        let rule = crate::algorithms::trace_json(json).unwrap();
+        let points = points_of(&rule);
+        for changed in deviations(&points) {
+            let text: String = (0..changed.len())
+                .map(|k| format!("({:?})\n", changed.get(k)))
+                .collect();
+            let whole = check_text(json, &text);
+            for units in [1, 7, 4096, u64::MAX] {
+                let mut run = SlicedCheck::from_text(json, text.clone()).unwrap();
+                let mut stages = vec![run.progress().stage];
+                let sliced = loop {
+                    match run.advance(units) {
+                        Err(e) => break Err(e),
+                        Ok(p) if p.done => break Ok(run.result().unwrap()),
+                        Ok(p) => {
+                            assert_eq!(run.result(), None);
+                            if stages.last() != Some(&p.stage) {
+                                stages.push(p.stage);
+                            }
+                        }
+                    }
+                };
+                assert_eq!(stages[0], CheckStage::Reading);
+                match (&whole, &sliced) {
+                    (Ok(a), Ok(b)) => assert_eq!(
+                        serde_json::to_string(a).unwrap(),
+                        serde_json::to_string(b).unwrap()
+                    ),
+                    (Err(e), Err(f)) => assert_eq!(e.to_string(), f.to_string()),
+                    _ => panic!("in slices of {units}: {whole:?} against {sliced:?}"),
                 }
             }
         }

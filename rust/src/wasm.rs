@@ -188,21 +188,24 @@ impl TextBytes {
 }
 
 /// A learner's points checked against a request's rule a slice at a time
-/// (`check::CheckPass`), so that a worker can report the check and stop it
-/// between slices; `advance(Infinity)` makes the whole check in one call.
+/// (`check::SlicedCheck`: points given as text read a slice at a time
+/// first), so that a worker can report the check and stop it between
+/// slices; `advance(Infinity)` makes the whole check in one call.
 #[wasm_bindgen]
-pub struct CheckRun(crate::check::CheckPass);
+pub struct CheckRun(crate::check::SlicedCheck);
 
 #[wasm_bindgen]
 impl CheckRun {
     /// A check of points given as text (CSV, blank-separated rows or a
-    /// printed list, read here and nowhere else): the text is read and the
-    /// rule traced in this call; errors give the line and column.
+    /// printed list, read here and nowhere else): the rule is traced in
+    /// this call, the text read by `advance`, whose errors give the line
+    /// and column.
     #[wasm_bindgen(js_name = fromText)]
     pub fn from_text(request_json: &str, text: &TextBytes) -> Result<CheckRun, JsValue> {
-        crate::check::CheckPass::from_text(request_json, utf8("points", &text.0)?)
+        let text = utf8("points", &text.0)?.to_string();
+        crate::check::SlicedCheck::from_text(request_json, text)
             .map(CheckRun)
-            .map_err(|e| to_js_text_error(&e, "points"))
+            .map_err(|e| to_js_error(&e))
     }
 
     /// A check of points given as a flat Int32Array / Float64Array with
@@ -229,19 +232,37 @@ impl CheckRun {
                 "missing: give the coordinates per point",
             ))
         })?;
-        crate::check::CheckPass::from_flat(request_json, &values, dims as usize)
+        crate::check::SlicedCheck::from_flat(request_json, &values, dims as usize)
             .map(CheckRun)
             .map_err(|e| to_js_error(&e))
     }
 
     /// Takes the check on by about `units` points' worth of work
-    /// (`CheckPass::advance`: steps compared, then option combinations
-    /// traced, each counted as the points); Infinity runs it to its end.
+    /// (`SlicedCheck::advance`: rows of text read, steps compared, then
+    /// option combinations traced, each counted as the points); Infinity
+    /// runs it to its end. An error in the text gives its line and column.
     #[wasm_bindgen(unchecked_return_type = "CheckProgress")]
-    pub fn advance(&mut self, units: f64) -> JsValue {
+    pub fn advance(&mut self, units: f64) -> Result<JsValue, JsValue> {
         // `as` saturates: Infinity is u64::MAX, a negative or NaN 0 (one
-        // step or combination, the least a call makes).
-        to_js(&self.0.advance(units as u64))
+        // row, step or combination, the least a call makes).
+        self.0
+            .advance(units as u64)
+            .map(|progress| to_js(&progress))
+            .map_err(|e| to_js_text_error(&e, "points"))
+    }
+
+    /// The points as read (flat, `dims` values a point), once the reading
+    /// is over: for a view that draws them, the text read once. Exact: the
+    /// reader refuses coordinates past 2^53.
+    #[wasm_bindgen(js_name = readPoints)]
+    pub fn read_points(&self) -> Result<Vec<f64>, JsValue> {
+        let points = self.0.points().ok_or_else(|| {
+            to_js_error(&Error::field(
+                "points",
+                "not read yet: advance the run past its reading first",
+            ))
+        })?;
+        Ok(points.coords.iter().map(|&c| c as f64).collect())
     }
 
     /// The check, once `advance` is done.

@@ -39,10 +39,11 @@ export type CheckOptions = SliceOptions<CheckProgress>;
 
 /**
  * Points' worth of work each core call of a check in slices makes
- * (CheckRun.advance: a step compared is one, an option combination traced
- * along the points counts as all of them, at least one a call): about
- * 0.1 ms of steps compared, or one combination of a long path (0.05 to
- * 9 ms along a helix's 1,500,000 points in Node), several of a short one.
+ * (CheckRun.advance: a line of text read or a step compared is one, an
+ * option combination traced along the points counts as all of them, at
+ * least one a call): about 5 ms of text read in Node, 0.1 ms of steps
+ * compared, or one combination of a long path (0.05 to 9 ms along a
+ * helix's 1,500,000 points in Node), several of a short one.
  */
 const CHECK_UNITS_PER_CALL = 65_536;
 
@@ -83,15 +84,35 @@ function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number
  *
  * With `runOptions` (any of onProgress, signal, sliceMs) the core makes the
  * check a slice at a time, the event loop let run between slices:
- * `onProgress` hears after each (steps compared, then the family's option
- * combinations tried), and `signal` stops it between them (at the page's
- * cap, 1,500,000 steps, the whole check took about a second in one call).
- * The result is the one call's, to the bit. Reading text points and
- * tracing the rule come first, in one call.
+ * `onProgress` hears after each (text points read, then steps compared,
+ * then the family's option combinations tried), and `signal` stops it
+ * between them (at the page's cap, 1,500,000 steps, the whole check took
+ * about a second in one call, its text read in 0.1 to 0.2 s of it). The
+ * result is the one call's, to the bit. Tracing the rule comes first, in
+ * one call (a few ms at the page's cap).
  */
 export async function checkPoints(request: TraceOptions, points: LearnerPoints, runOptions?: CheckOptions): Promise<Check> {
-  const json = encodeRequest(request);
   const sliceMs = runOptions === undefined ? undefined : checkSliceOptions('checkPoints', runOptions);
+  const run = await startCheck(request, points);
+  return (await finishCheck(run, runOptions, sliceMs, false)).check;
+}
+
+/**
+ * checkPoints of text points, and the points as the check read them (flat,
+ * `dims` a point, as readPoints gives them): for a view that draws the
+ * points beside the check, the text read once, and in slices with the
+ * check when `runOptions` are given.
+ */
+export async function readAndCheckPoints(request: TraceOptions, text: string, runOptions?: CheckOptions): Promise<{ check: Check; points: Float64Array }> {
+  const sliceMs = runOptions === undefined ? undefined : checkSliceOptions('readAndCheckPoints', runOptions);
+  const run = await startCheck(request, guardText('text', text, 'the points'));
+  const { check, points } = await finishCheck(run, runOptions, sliceMs, true);
+  return { check, points: points! };
+}
+
+/** The core's run of a check of `points` against `request`, not advanced yet. */
+async function startCheck(request: TraceOptions, points: LearnerPoints): Promise<CheckRun> {
+  const json = encodeRequest(request);
   const core = await loadCore();
   let run: CheckRun;
   // Text, or its UTF-8 bytes as a file holds them (refused at the line and
@@ -112,7 +133,13 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints, 
     }
     run = callCore(() => core.CheckRun.fromPoints(json, given.values, given.dims));
   }
+  return run;
+}
+
+/** `run` advanced to its end (in slices with `runOptions`), its result, and its points as read when `keepPoints`; the run freed. */
+async function finishCheck(run: CheckRun, runOptions: CheckOptions | undefined, sliceMs: number | undefined, keepPoints: boolean): Promise<{ check: Check; points?: Float64Array }> {
   let check: Check;
+  let points: Float64Array | undefined;
   try {
     if (runOptions === undefined || sliceMs === undefined) callCore(() => run.advance(Infinity));
     else {
@@ -122,12 +149,13 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints, 
       runOptions.signal?.throwIfAborted();
     }
     check = callCore(() => run.result());
+    if (keepPoints) points = callCore(() => run.readPoints());
   } catch (error) {
     freeStopped(run);
     throw error;
   }
   run.free();
-  return check;
+  return { check, points };
 }
 
 /**

@@ -28,7 +28,7 @@ export { VoxpathError } from './errors.js';
 export { heapBytes, memoryBytes } from './wasm.js';
 export { compare } from './compare.js';
 export type { Cells, CompareOptions, Comparison, FirstDifference, StepWhy, TraceDifference, TraceDigest } from './compare.js';
-export { checkPoints, readPoints } from './check.js';
+export { checkPoints, readAndCheckPoints, readPoints } from './check.js';
 export type { AlsoMatch, AroundRow, Check, CheckDifference, CheckOptions, CheckProgress, CheckStage, DifferenceKind, LearnerPoints } from './check.js';
 export { GcodeProgram, runGcode } from './gcode.js';
 export type { GcodeArc, GcodeDiagnostic, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, GcodeTiming, MotionChart, RunGcodeOptions } from './gcode.js';

@@ -64,12 +64,18 @@ export function pointsBar(progress: PointsProgress): BarProgress {
 
 /**
  * A check of a learner's points as its bar shows it, with what it does now
- * (`verb`): reading them (one call whose length is not known),
- * comparing their steps with the rule's, then tracing the rule's family's
- * option combinations along them (alsoMatches).
+ * (`verb`): reading them (the rule traced first, then their text a slice at
+ * a time, its bytes read of all and the points read so far), comparing
+ * their steps with the rule's, then tracing the rule's family's option
+ * combinations along them (alsoMatches).
  */
 export function checkBar(progress: CheckRunProgress): { bar: BarProgress; verb: string } {
-  if (progress.stage === 'reading') return { bar: { done: 0, said: 'your points and the rule' }, verb: 'Reading' };
+  if (progress.stage === 'reading') {
+    // The worker's report before the core's first slice has no counts yet.
+    if (!('bytes' in progress) || progress.bytes === 0) return { bar: { done: 0, said: 'your points and the rule' }, verb: 'Reading' };
+    const percent = Math.floor((100 * progress.bytesRead) / progress.bytes);
+    return { bar: { done: progress.bytesRead, total: progress.bytes, said: `${countOf(progress.pointsRead, 'point')}, ${percent}% of the text` }, verb: 'Reading your points' };
+  }
   if (progress.stage === 'comparing') {
     return {
       bar: { done: progress.stepsCompared, total: Math.max(1, progress.stepsShared), said: `${grouped(progress.stepsCompared)} of ${countOf(progress.stepsShared, 'step')}` },

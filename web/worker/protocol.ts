@@ -133,7 +133,7 @@ export interface PulseWindow {
   stepSeconds: Float64Array | null;
 }
 
-/** A learner's points checked against the rule of a trace (the core's readPoints, then checkPoints). */
+/** A learner's points checked against the rule of a trace (readAndCheckPoints: the text read once, as the check's first stage). */
 export interface LearnerCheck {
   check: Check;
   /** The learner's points as read, flat with stride dims, to draw; null when a coordinate is past what the view draws (int32). */
@@ -230,10 +230,10 @@ export interface ProgressValue {
 }
 
 /**
- * How far a check of a learner's points has got: their text read and the
- * rule traced first, in one call (0.1 to 0.3 s at the page's cap), reported
- * as stage 'reading' before it; then the core's CheckProgress after each
- * slice (steps compared, then the family's option combinations tried).
+ * How far a check of a learner's points has got: stage 'reading' with no
+ * counts before the rule is traced; then the core's CheckProgress after
+ * each slice (the text read, its bytes and points so far, then steps
+ * compared, then the family's option combinations tried).
  */
 export type CheckRunProgress = CheckProgress | { stage: 'reading'; done: false };
 
