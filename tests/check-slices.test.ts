@@ -6,6 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { type Check, type CheckProgress, checkPoints, readAndCheckPoints, readPoints, trace, type TraceOptions, traceToCsv } from '../web/core/index.js';
 import { loadCore, withTextBytes } from '../web/core/wasm.js';
+import { checkBar } from '../web/form/run-progress.js';
 
 /** Moves of each family, each long enough to take several slices. */
 const RULES: Record<string, TraceOptions> = {
@@ -112,6 +113,12 @@ describe('a check made in slices', () => {
           for (let i = 1; i < reading.length; i++) {
             expect(reading[i]!.pointsRead).toBeGreaterThanOrEqual(reading[i - 1]!.pointsRead);
             expect(reading[i]!.bytes).toBe(reading[0]!.bytes);
+          }
+          // As the page's bar says them: the points read and the part of the text.
+          for (const p of reading.filter((p) => p.bytes > 0)) {
+            const { bar, verb } = checkBar(p);
+            expect(verb).toBe('Reading your points');
+            expect(bar.said).toBe(`${p.pointsRead.toLocaleString('en-US')} point${p.pointsRead === 1 ? '' : 's'}, ${Math.floor((100 * p.bytesRead) / p.bytes)}% of the text`);
           }
           const last = seen.at(-1)!;
           expect(last.bytes).toBeGreaterThanOrEqual(text.length);
