@@ -117,6 +117,20 @@ async function pauseLabelLines(page: Page): Promise<{ lines: string[][]; clipped
   });
 }
 
+/**
+ * The program of one step between two waits, G1 X1 F60 then G4 P2 at 1
+ * step/mm, opened in G-code mode, with its timing diagram and the diagram's
+ * pause boxes.
+ */
+async function oneStepProgram() {
+  const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG4 P2\n');
+  const p = await openPage(`?mode=gcode&stepsPerMm=1&gcode=${program}`);
+  const { page } = p;
+  await loaded(page, 1);
+  const timing = page.getByTestId('timing');
+  return { p, page, timing, pauseBox: timing.locator('.chart-break') };
+}
+
 describe('G-code mode: time', () => {
   it("shows the total time worked from Grbl's formulas, the current step's instant, the charts, and exports the VCD", async () => {
     const p = await openPage('?mode=gcode&stepsPerMm=80');
@@ -317,12 +331,7 @@ describe('G-code mode: time', () => {
     // G1 X1 F60 at 1 step/mm, then G4 P2: the one step at 1.1 s (1 mm/s, reached and left in 0.1 s at
     // 10 mm/s²), the program's end 2 s later. With no gap to space it the diagram drew the step alone,
     // 1 ms of it, neither the dwell after it (which a program of several steps draws) nor the wait before.
-    const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG4 P2\n');
-    const p = await openPage(`?mode=gcode&stepsPerMm=1&gcode=${program}`);
-    const { page } = p;
-    await loaded(page, 1);
-    const timing = page.getByTestId('timing');
-    const pauseBox = timing.locator('.chart-break');
+    const { p, page, timing, pauseBox } = await oneStepProgram();
     await expect.poll(() => pauseBox.allInnerTexts()).toEqual(['pause\nfirst step at\n1.100\u00a0s', 'dwell 2\u00a0s\nprogram ends\n+2.000\u00a0s']);
     // The wait from the start at the left edge, the dwell at the right, the step between them read in ms.
     const plot = (await timing.locator('.u-over').boundingBox())!;
@@ -362,12 +371,7 @@ describe('G-code mode: time', () => {
     // and a chart is 200 px wide at least, its plot 82 px (a page of 246 px or less). Below some 300 px the
     // two boxes needed more than the plot for their words, were drawn narrower, and cut their labels
     // ('rogram', '.100 s', 'st step'); resized, the diagram kept the boxes it had chosen for the wider plot.
-    const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG4 P2\n');
-    const p = await openPage(`?mode=gcode&stepsPerMm=1&gcode=${program}`);
-    const { page } = p;
-    await loaded(page, 1);
-    const timing = page.getByTestId('timing');
-    const pauseBox = timing.locator('.chart-break');
+    const { p, page, timing, pauseBox } = await oneStepProgram();
     await expect.poll(() => pauseBox.count()).toBe(2);
     const full = ['pause, first step at 1.100 s', 'dwell 2 s, program ends +2.000 s'];
     const descriptions = await pauseBox.evaluateAll((boxes) => boxes.map((b) => b.getAttribute('title')));
