@@ -163,9 +163,9 @@ export class PathViews {
     this.#e.legendDifference.hidden = cells.length === 0;
     // Other modes' second path and highlights are their own.
     if (!traced) return;
-    const centers = learner?.centers;
-    // The points' box is their line's: the worker found it with the line.
-    this.#main.setSecond(points && centers ? { ...heldPoints(points, learner.dims), bounds: { min: centers.min, max: centers.max } } : undefined, PALETTE.learner, centers ?? undefined);
+    // The points' box and their line (for a path drawn whole) as the worker found them.
+    const bounds = learner?.bounds;
+    this.#main.setSecond(points && bounds ? { ...heldPoints(points, learner.dims), bounds } : undefined, PALETTE.learner, { whole: learner?.centers ?? null });
     this.#main.setHighlights(cells.length > 0 ? [{ cells: Int32Array.from(cells.flat()), dims: learner!.dims, colour: PALETTE.onlyFirst }] : []);
   }
 

@@ -53,13 +53,6 @@ export function softwareRenderer(): boolean {
   return software;
 }
 
-/**
- * A path this many grid units wide (on its widest axis) or more is drawn as
- * points too: framed whole, its cubes would be under 2 pixels, which points
- * (never drawn smaller than 2 pixels) keep visible.
- */
-export const LIGHT_DRAWING_SPAN = 300;
-
 /** A colour as the shaders want it: sRGB components, since these raw shaders skip three's colour management. */
 function srgb(hex: string): THREE.Vector3 {
   const c = new THREE.Color(hex);

@@ -23,12 +23,13 @@ import { formatPoint } from '../format.js';
 import { idealLineOf } from '../ideal-line.js';
 import type { CameraState, Projection } from '../state/app-state.js';
 import { roundCamera } from '../state/query.js';
-import { Cells, LIGHT_DRAWING_SPAN, cellUniforms, setCellOrigin, softwareRenderer } from './cells.js';
+import { Cells, cellUniforms, setCellOrigin, softwareRenderer } from './cells.js';
 import { EndpointHandles, type Handle } from './endpoint-handles.js';
 import { GridAxes } from './grid-axes.js';
 import { FAT_LINE_POINTS, IdealPath } from './ideal-path.js';
+import { LIGHT_DRAWING_SPAN, pointBounds } from './light-drawing.js';
 import { PALETTE } from './palette.js';
-import { heldPoints, type PathPoints, SAMPLED_POINTS, sampled, VoxelPath } from './voxel-path.js';
+import { heldPoints, type PathPoints, type PathStyle, SAMPLED_POINTS, sampled, VoxelPath } from './voxel-path.js';
 
 /** Vertical field of view, degrees. */
 const FOV_DEG = 35;
@@ -122,24 +123,6 @@ function sampleCells(trace: DrawnTrace, count: number): THREE.Vector3[] {
   // A path sent as a sample may not hold its last point; its summary does.
   if (trace.pointsEvery > 1 && trace.steps % trace.pointsEvery !== 0) out.push(cell(trace.end));
   return out;
-}
-
-/**
- * The smallest and largest coordinate of `points` on each axis, as the
- * core's PointBounds: for points that did not come from the core (a
- * learner's, the cells a comparison picks out); a trace's come with it.
- */
-function pointBounds(points: Int32Array, dims: number): PointBounds {
-  const min = Array.from(points.subarray(0, dims));
-  const max = [...min];
-  for (let o = dims; o < points.length; o += dims) {
-    for (let a = 0; a < dims; a++) {
-      const c = points[o + a]!;
-      if (c < min[a]!) min[a] = c;
-      else if (c > max[a]!) max[a] = c;
-    }
-  }
-  return { min, max };
 }
 
 /** `bounds` on the scene's three axes: 0 on an axis the path lacks (axes past the third are not drawn). */
@@ -526,7 +509,7 @@ export class SceneView {
    * mostly runs inside the rule's cells, and the line shows where it goes
    * there.
    */
-  setSecond(trace: (PathPoints & Pick<DrawnTrace, 'bounds'>) | undefined, colour: string = PALETTE.second, centers?: IdealLine): void {
+  setSecond(trace: (PathPoints & Pick<DrawnTrace, 'bounds'>) | undefined, colour: string = PALETTE.second, centers?: PathStyle['centers']): void {
     if (this.#second) {
       this.#scene.remove(this.#second);
       this.#second.dispose();

@@ -31,8 +31,9 @@
 import * as THREE from 'three';
 import type { IdealLine } from '../core/types.js';
 import { idealLineOf } from '../ideal-line.js';
-import { Cells, LIGHT_DRAWING_SPAN, lightDrawingCells } from './cells.js';
+import { Cells, lightDrawingCells } from './cells.js';
 import { IdealPath } from './ideal-path.js';
+import { drawnLight } from './light-drawing.js';
 import { PALETTE } from './palette.js';
 
 /** Drawn edge of a path's cell, grid units: a little under 1 so neighbouring cells stay apart. */
@@ -103,12 +104,14 @@ export interface PathStyle {
   /** Cells drawn over what is drawn before them (CellStyle.onTop): the second path of an overlaid comparison. */
   onTop?: boolean;
   /**
-   * The line through every cell's center (idealLineOf the path's points,
-   * made off the main thread), when the path has one: drawn in the visited
-   * colour, whole in the full drawing, near the current cell in the lighter
-   * one (see the file's comment).
+   * A line through the cells' centers, when the path has one, drawn in the
+   * visited colour (see the file's comment). The full drawing draws `whole`,
+   * through every cell (idealLineOf the path's points, made off the main
+   * thread); the lighter drawing makes its own through the cells near the
+   * current one, and is given none (null: the worker makes a learner's only
+   * for a path drawn whole, LearnerCheck in web/worker/protocol.ts).
    */
-  centers?: IdealLine;
+  centers?: { whole: IdealLine | null };
 }
 
 /** What a path hands three.js to draw: cells as points, cells as cubes, and vertices of its centers' line. */
@@ -206,7 +209,7 @@ export class VoxelPath extends THREE.Group {
     this.#style = style;
     this.#onSettled = onSettled;
     const size = bounds.getSize(new THREE.Vector3());
-    this.light = this.#count >= lightDrawingCells() || Math.max(size.x, size.y, size.z) >= LIGHT_DRAWING_SPAN;
+    this.light = drawnLight(this.#count, Math.max(size.x, size.y, size.z), lightDrawingCells());
     if (this.light) {
       // A path held whole is sampled here; one sent as a sample is drawn as sent.
       const every = pointsEvery > 1 ? pointsEvery : Math.max(1, Math.ceil(this.#count / SAMPLED_POINTS));
@@ -218,7 +221,7 @@ export class VoxelPath extends THREE.Group {
       this.#sampled = { visited, ahead, every };
       this.add(visited, ahead);
     } else {
-      this.#setCubes(new CubeRun(this.#held({ first: 0, count: this.#count })!, dims, 0, bounds, style, style.centers));
+      this.#setCubes(new CubeRun(this.#held({ first: 0, count: this.#count })!, dims, 0, bounds, style, style.centers?.whole ?? undefined));
     }
 
     const currentBox = new THREE.BoxGeometry(CURRENT_SIZE, CURRENT_SIZE, CURRENT_SIZE);

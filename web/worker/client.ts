@@ -94,7 +94,7 @@ export class TraceClient {
    */
   #lastProgram?: { text: string; bytes: Uint8Array };
 
-  /** `pointsSent`: which of a path's points come with it (the rest are asked for by range), asked when a path is: it depends on the page's WebGL, found once the view is made. */
+  /** `pointsSent`: which of a path's points come with it (the rest are asked for by range), asked when a path or a check is: it depends on the page's WebGL, found once the view is made. */
   constructor(createWorker: () => WorkerPort, onCrash: (message: string) => void, pointsSent: () => PointsSent) {
     this.#pointsSent = pointsSent;
     this.#createWorker = createWorker;
@@ -221,7 +221,7 @@ export class TraceClient {
    */
   check(rule: RemoteTrace, options: TraceOptions, text: string, onProgress?: (progress: ProgressValue['check']) => void): Running<LearnerCheck> {
     if (!rule.alive) return { result: Promise.reject(new CoreCrash('the trace was lost with a crashed worker; trace again')), cancel: () => {} };
-    return this.start({ kind: 'check', traceId: rule.traceId, options, text }, onProgress);
+    return this.start({ kind: 'check', traceId: rule.traceId, options, text, pointsSent: this.#pointsSent() }, onProgress);
   }
 
   /** Wang's random-lines experiment (section 3.2, Figure 9), reporting progress after every slice of lines; cancellable. */

@@ -50,7 +50,7 @@ export type WorkerRequest =
   | { kind: 'lineSteps'; traceId: number; line: number }
   | { kind: 'export'; traceId: number; format: ExportFormat }
   | { kind: 'randomLines'; options: RandomLinesOptions }
-  | { kind: 'check'; traceId: number; options: TraceOptions; text: string }
+  | { kind: 'check'; traceId: number; options: TraceOptions; text: string; pointsSent: PointsSent }
   | { kind: 'free'; traceId: number };
 
 export type RequestKind = WorkerRequest['kind'];
@@ -71,6 +71,8 @@ export type PathSummary = TraceSummary & { metrics: Metrics };
  * draws as cubes (those near the point shown) by range. At 80 steps/mm the
  * G-code bench's program has 5.5 million points, 66 MB the page would
  * receive, each byte of it in fresh memory, to draw 20,000 of them.
+ * A check's points come whole (the page holds no trace of them to ask
+ * ranges of); `allBelow` decides whether their line comes too (LearnerCheck).
  */
 export interface PointsSent {
   allBelow: number;
@@ -138,13 +140,17 @@ export interface LearnerCheck {
   check: Check;
   /** The learner's points as read, flat with stride dims, to draw; null when a coordinate is past what the view draws (int32). */
   points: Int32Array | null;
+  /** The box every point lies in (null with the points): the view frames and culls their cells by it, and decides with it how to draw them. */
+  bounds: PointBounds | null;
   /**
-   * The line through the points' cell centers, and its box, as the view
-   * draws it when it draws every cell as a cube (null with the points):
-   * made by the worker, since on the main thread it took 18 to 39 ms of
-   * showing 200,000 points. A path drawn the lighter way has the line drawn
+   * The line through the points' cell centers, as the view draws it when it
+   * draws every cell as a cube (drawnLight in web/scene/light-drawing.ts,
+   * with the request's PointsSent.allBelow): made by the worker, since on
+   * the main thread it took 18 to 39 ms of showing 200,000 points. Null with
+   * the points, and for a path drawn the lighter way, whose line is drawn
    * through the cells near the current one only, made with their cubes
-   * (PathStyle.centers in web/scene/voxel-path.ts); its box is still this one.
+   * (PathStyle.centers in web/scene/voxel-path.ts): at the page's cap,
+   * 1,498,841 points, this line was 36 MB made and sent for nothing.
    */
   centers: IdealLine | null;
   dims: number;

@@ -20,6 +20,7 @@ import type { Trace, TraceSummary } from '../core/index.js';
 import { grouped } from '../core/export.js';
 import { yieldToEventLoop } from '../core/slices.js';
 import { idealLineOf } from '../ideal-line.js';
+import { drawnLight, pointBounds, widestCells } from '../scene/light-drawing.js';
 import { pointsEvery } from './protocol.js';
 import type { ExportFormat, LongRequestKind, PointsSent, ProgressValue, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
 
@@ -146,6 +147,19 @@ async function exportFile(id: number, traceId: number, format: ExportFormat, sig
   return file;
 }
 
+/**
+ * A learner's points as read (doubles), as the cells the view draws
+ * (int32), in one pass; null when a coordinate is not one (past int32).
+ */
+function drawableCells(read: Float64Array): Int32Array | null {
+  const cells = new Int32Array(read.length);
+  for (let i = 0; i < read.length; i++) {
+    cells[i] = read[i]!;
+    if (cells[i] !== read[i]) return null;
+  }
+  return cells;
+}
+
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {
   switch (request.kind) {
     case 'catalogue':
@@ -243,16 +257,18 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       // The text is read once, a slice at a time as the check's first stage
       // (at the page's cap, 19 MB, one call of 0.1 to 0.2 s before, which a
       // Cancel waited for), giving its line and column to any error, and
-      // then checked a slice at a time; the points read make their line
-      // for the view.
+      // then checked a slice at a time; the points read are drawn, and make
+      // their line for the view when it draws them whole.
       return cancellable(id, async (signal) => {
         const dims = held(request.traceId).dims;
         report(id, { stage: 'reading', done: false });
         const { check, points: read } = await readAndCheckPoints(request.options, request.text, { signal, onProgress: (progress) => report(id, progress) });
-        const drawable = read.every((c) => c === (c | 0));
-        const points = drawable ? Int32Array.from(read) : null;
-        const centers = points ? idealLineOf(points, dims) : null;
-        return { value: { check, points, centers, dims }, transfer: points && centers ? [points.buffer, centers.xyz.buffer] : [] };
+        const points = drawableCells(read);
+        const bounds = points && pointBounds(points, dims);
+        const whole = bounds !== null && !drawnLight(points!.length / dims, widestCells(bounds), request.pointsSent.allBelow);
+        const centers = whole ? idealLineOf(points!, dims) : null;
+        const transfer = [points?.buffer, centers?.xyz.buffer].filter((b) => b !== undefined);
+        return { value: { check, points, bounds, centers, dims }, transfer };
       });
     case 'free':
       // A program owns its trace: freeing the program frees both.
