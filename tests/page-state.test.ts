@@ -5,6 +5,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { catalogue as coreCatalogue, compare, trace } from '../web/core/index.js';
 import { rejection } from './helpers.js';
 import {
+  ANOTHER_TABS_PROGRAM,
   type AppState,
   type Catalogue,
   PAGE_OPTIONS,
@@ -19,6 +20,8 @@ import {
   experimentAlgorithm,
   machineSpecs,
   offeredAlgorithms,
+  programBroughtBack,
+  programReplaced,
   sharedOptionSpecs,
   traceOptions,
   OptionSetter,
@@ -28,6 +31,7 @@ import {
 } from '../web/state/app-state.js';
 import { GCODE_URL_LIMIT, type LinkNotes, STATE_KEYS, roundCamera, stateFromQuery, stateToQuery } from '../web/state/query.js';
 import { carriedOptions } from '../web/form/algorithm-inputs.js';
+import { OfferSide } from '../web/state/offer-side.js';
 import { readPerAxis } from '../web/form/options-form.js';
 import { otherTabEdits, otherTabNote } from '../web/state/persist.js';
 
@@ -445,5 +449,55 @@ describe("another tab's write (persist.ts)", () => {
     const theirs = stored({ ...written, options: { ...written.options, to: [10, 8, 6] } });
     expect(otherTabEdits(stored(written), theirs, written, written, new Set(['options'])).both).toEqual(['options']);
     expect(otherTabEdits(stored(written), theirs, written, written, new Set(['machine'])).followed).toEqual({ options: theirs.options });
+  });
+});
+
+describe('the programs kept to bring back (programReplaced, programBroughtBack, OfferSide)', () => {
+  const [mine, theirs, sample] = ['G21 G90\nG1 X3 Y4 F600\nG1 X7\n', 'G21 G90\nG1 X5 Y1 F600\nG1 Y6\nG1 X0\n', 'G21\nG1 X1 F600\n'];
+  const none = { replacedProgram: '', replacedBy: '', secondReplacedProgram: '' };
+  /** After a clash: this tab's program kept, the other's written over and offered (otherTabEdits). */
+  const clashed = { gcode: mine, replacedProgram: theirs, replacedBy: ANOTHER_TABS_PROGRAM, secondReplacedProgram: '' };
+
+  it('keeps a typed program a sample replaces, and with an offer standing keeps that one (the program shown replaced it)', () => {
+    expect(programReplaced({ gcode: mine, ...none }, sample, "the sample 'Helix'", true)).toEqual({ gcode: sample, replacedProgram: mine, replacedBy: "the sample 'Helix'", secondReplacedProgram: '' });
+    expect(programReplaced({ gcode: sample, ...none }, mine, "the link's program", false)).toEqual({ gcode: mine, ...none });
+    const offered = { gcode: sample, replacedProgram: mine, replacedBy: "the sample 'Helix'", secondReplacedProgram: '' };
+    expect(programReplaced(offered, theirs, "the link's program", true)).toEqual({ ...offered, gcode: theirs, replacedBy: "the link's program" });
+  });
+
+  it("keeps both programs of a clash when the one kept is replaced: it first, the other tab's second; and both again after another sample", () => {
+    const replaced = programReplaced(clashed, sample, "the sample 'Helix'", true);
+    expect(replaced).toEqual({ gcode: sample, replacedProgram: mine, replacedBy: "the sample 'Helix'", secondReplacedProgram: theirs });
+    expect(programReplaced(replaced, 'G1 X2\n', "the sample 'Star'", false)).toEqual({ ...replaced, gcode: 'G1 X2\n', replacedBy: "the sample 'Star'" });
+    // A sample shown at the clash (picked here while the other tab typed) is not kept.
+    expect(programReplaced({ ...clashed, gcode: sample }, 'G1 X2\n', "the sample 'Star'", false)).toEqual({ ...clashed, gcode: 'G1 X2\n', replacedBy: "the sample 'Star'" });
+  });
+
+  it('brings back either of two programs kept, the other offered as after the clash; one alone, the offer withdrawn', () => {
+    const replaced = programReplaced(clashed, sample, "the sample 'Helix'", true);
+    expect(programBroughtBack(replaced, 'replacedProgram')).toEqual(clashed);
+    expect(programBroughtBack(replaced, 'secondReplacedProgram')).toEqual({ gcode: theirs, replacedProgram: mine, replacedBy: ANOTHER_TABS_PROGRAM, secondReplacedProgram: '' });
+    expect(programBroughtBack(clashed, 'replacedProgram')).toEqual({ gcode: theirs, ...none });
+  });
+
+  it('says, in the tab whose program was kept and in the one whose program was written over, whose each kept program is as they move', () => {
+    // In node there is no sessionStorage: each tab judges by what it saw.
+    const kept = new OfferSide('kept');
+    const writtenOver = new OfferSide('writtenOver');
+    kept.othersText(mine, '');
+    writtenOver.othersText(theirs, '');
+    // The clash: the tab that kept its program sees the offer come beside it; the other sees its program replaced.
+    expect(kept.othersText(mine, theirs)).toBe(true);
+    expect(writtenOver.othersText(mine, theirs)).toBe(false);
+    // A sample replaces the program kept: the two change places (the second is the other of the two).
+    const replaced = programReplaced(clashed, sample, "the sample 'Helix'", true);
+    const judged = (side: OfferSide, state: typeof replaced) => side.othersText(state.gcode, state.replacedProgram, state.secondReplacedProgram);
+    expect(judged(kept, replaced)).toBe(false);
+    expect(judged(writtenOver, replaced)).toBe(true);
+    // Brought back, the first: as after the clash; or the second: the first stays whose it was.
+    expect(judged(kept, programBroughtBack(replaced, 'replacedProgram'))).toBe(true);
+    expect(judged(writtenOver, programBroughtBack(replaced, 'replacedProgram'))).toBe(false);
+    for (const side of [kept, writtenOver]) judged(side, replaced);
+    expect(judged(kept, programBroughtBack(replaced, 'secondReplacedProgram'))).toBe(false);
   });
 });

@@ -205,6 +205,8 @@ function run(catalogue: Catalogue): void {
       editAnyway: byId('gcode-edit-anyway', HTMLButtonElement),
       replaced: byId('gcode-replaced', HTMLParagraphElement),
       bringBack: byId('gcode-bring-back', HTMLButtonElement),
+      secondReplaced: byId('gcode-second-replaced', HTMLParagraphElement),
+      secondBringBack: byId('gcode-second-bring-back', HTMLButtonElement),
       gutter: byId('gcode-gutter', HTMLPreElement),
       problems: byId('gcode-problems', HTMLDivElement),
       backdrop: byId('gcode-backdrop', HTMLPreElement),

@@ -523,6 +523,63 @@ describe('the page', () => {
     await a.close();
   });
 
+  it("keeps both tabs' programs of a clash when a sample then replaces the one kept: both offered, and brought back, over reloads (the other tab's too long for a link)", async () => {
+    const a = await openPage('?mode=gcode');
+    await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const b = await unhearingTab(a.context, '?mode=gcode');
+    await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    // A's program, 151 lines (2,500 characters), is kept under storage's own keys, not in the part.
+    const programA = `G21 G90\n${Array.from({ length: 150 }, (_, i) => `G1 X${i % 10} Y4 F600\n`).join('')}`;
+    const programB = 'G21 G90\nG1 X5 Y1 F600\nG1 Y6\nG1 X0\n';
+    await a.page.getByTestId('gcode-text').fill(programA);
+    await a.page.waitForFunction(() => localStorage.getItem('voxpath.gcode') !== null);
+    await b.getByTestId('gcode-text').fill(programB);
+    await b.getByTestId('gcode-replaced').filter({ hasText: "The other tab's program (151 lines), typed at the same time, was written over by this one." }).waitFor();
+    await expect.poll(() => a.page.getByTestId('gcode-text').inputValue()).toBe(programB);
+    // B, whose program was kept, picks a sample: its own program is offered
+    // first, A's still (it held the offer) under it; A, following, says the same from its side.
+    await b.getByTestId('sample').selectOption('helix.gcode');
+    const offers = (page: Page) => Promise.all(['gcode-replaced', 'gcode-second-replaced'].map(async (id) => ((await page.getByTestId(id).isHidden()) ? '' : await page.getByTestId(id).innerText())));
+    // The first offer waits for the sample programs' texts (one of them is not offered) and the page's run: longer than expect.poll's 1 s on a busy machine.
+    const offered = (page: Page, expected: string[]) => expect.poll(() => offers(page), { timeout: 20_000 }).toEqual(expected);
+    const bothOffered = [
+      "Your program (4 lines) was replaced by the sample 'Helix'. Bring it back",
+      "The other tab's program (151 lines), typed at the same time, was written over by yours. Bring it back",
+    ];
+    await offered(b, bothOffered);
+    await offered(a.page, [
+      "The other tab's program (4 lines) was replaced by the sample 'Helix'. Bring it back",
+      "Your program (151 lines), typed at the same time, was written over by the other tab's. Bring it back",
+    ]);
+    // A link's program in B, then a reload: both still offered, the first named by the link.
+    const linked = 'G21 G90\nG1 X9 F600\n';
+    await b.goto(`${siteUrl()}?mode=gcode&gcode=${encodeURIComponent(linked)}`);
+    await gcodeStatus(b, '2 lines, 1 move');
+    const linkOffered = ["Your program (4 lines) was replaced by the link's program. Bring it back", bothOffered[1]];
+    await offered(b, linkOffered);
+    await b.reload();
+    await gcodeStatus(b, '2 lines, 1 move');
+    await offered(b, linkOffered);
+    // A's brought back in B: B's own stays offered, as A's words after the clash were.
+    await b.getByTestId('gcode-second-bring-back').click();
+    await gcodeStatus(b, '151 lines, 150 moves');
+    const bOffered = ["Your program (4 lines) was replaced by another tab's program, typed at the same time. Bring it back", ''];
+    await offered(b, bOffered);
+    await b.reload();
+    await gcodeStatus(b, '151 lines, 150 moves');
+    expect(await b.getByTestId('gcode-text').inputValue()).toBe(programA);
+    await offered(b, bOffered);
+    // And B's own brought back: the offer goes, B's program stays over a reload.
+    await b.getByTestId('gcode-bring-back').click();
+    await gcodeStatus(b, '4 lines, 3 moves');
+    await b.reload();
+    await gcodeStatus(b, '4 lines, 3 moves');
+    expect(await b.getByTestId('gcode-text').inputValue()).toBe(programB);
+    expect(await offers(b)).toEqual(['', '']);
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
   it("offers back points typed in one tab that another tab's, typed at the same time, replaced", async () => {
     const a = await openPage(EXAMPLE);
     await traced(a.page, 10);

@@ -20,7 +20,8 @@
  * the program is) and offered back beside the editor until it is brought
  * back or the user types a program again: a listed program has no undo, and
  * a reload kept only the sample. A program typed in two tabs at the same
- * time is offered in both, each saying whose it is (OfferSide).
+ * time is offered in both, each saying whose it is (OfferSide); when the
+ * one kept is replaced in turn, both are offered, one under the other.
  */
 import type { GcodeDiagnostic, GcodeMove, GcodeProgress } from '../core/index.js';
 import { OptionsForm, element } from '../form/options-form.js';
@@ -28,7 +29,7 @@ import { diagnosticText } from '../form/page-advice.js';
 import { lineAt, linesInView, linesOfText, LongTextField, tooLongToEdit } from '../form/long-text.js';
 import { linesBar, RunProgress } from '../form/run-progress.js';
 import { countOf, formatPoint, sentence } from '../format.js';
-import { type AppState, type Catalogue, machineSpecs, OptionSetter, programReplaced } from '../state/app-state.js';
+import { ANOTHER_TABS_PROGRAM, type AppState, type Catalogue, machineSpecs, OptionSetter, programBroughtBack, programReplaced } from '../state/app-state.js';
 import { OfferSide } from '../state/offer-side.js';
 import type { Store } from '../state/store.js';
 import type { RemoteProgram } from '../worker/client.js';
@@ -48,6 +49,9 @@ export interface GcodePanelElements {
   /** The offer of the user's program that the page replaced, and its button that brings it back. */
   replaced: HTMLElement;
   bringBack: HTMLButtonElement;
+  /** The offer of the second program kept (AppState's secondReplacedProgram), and its button. */
+  secondReplaced: HTMLElement;
+  secondBringBack: HTMLButtonElement;
   gutter: HTMLElement;
   /** Above the editor: the program's error (and how many warnings), each with a way to its line. */
   problems: HTMLElement;
@@ -106,8 +110,8 @@ export class GcodePanel {
   readonly #samples: Promise<SampleInfo[]>;
   /** The sample programs' texts, fetched when first needed: a program that is one of them as loaded is not the user's own. */
   #sampleTexts: Promise<Set<string>> | undefined;
-  /** The replaced program, and what replaced it, that the offer was last made for (or withdrawn, as a sample's). */
-  #offered = { program: '', by: '' };
+  /** The replaced programs, and what replaced the first, that the offers were last made for (or withdrawn, as a sample's). */
+  #offered = { program: '', by: '', second: '' };
   /** Whether the offer's program is this tab's, replaced, or another tab's this tab's program was kept over. */
   readonly #side = new OfferSide('voxpath.keptOverProgram');
   /** The gutter's numbers: only the lines in view (a program can have 100,000). */
@@ -177,7 +181,8 @@ export class GcodePanel {
     }, 'machine');
 
     elements.sample.addEventListener('change', () => void this.#loadSample(elements.sample.value));
-    elements.bringBack.addEventListener('click', () => this.#bringBack());
+    elements.bringBack.addEventListener('click', () => this.#bringBack('replacedProgram'));
+    elements.secondBringBack.addEventListener('click', () => this.#bringBack('secondReplacedProgram'));
     this.#samples = fetchedText('samples/index.json', 'the sample list').then((text) => JSON.parse(text) as SampleInfo[]);
     void this.#listSamples();
     this.#offerReplaced();
@@ -211,42 +216,51 @@ export class GcodePanel {
 
   /**
    * Offers the program a sample, a link or another tab replaced (or another
-   * tab's, which this tab's was kept over: OfferSide), beside the editor; a
-   * sample's text, as loaded (a link's program replacing a sample), is
-   * withdrawn instead: the user can pick it again.
+   * tab's, which this tab's was kept over: OfferSide), beside the editor,
+   * and under it the second one kept, if any (the other of two tabs'
+   * programs); a sample's text, as loaded (a link's program replacing a
+   * sample), is withdrawn instead: the user can pick it again.
    */
   #offerReplaced(): void {
-    const { gcode, replacedProgram, replacedBy } = this.#store.state;
-    const { replaced } = this.#e;
-    const othersProgram = this.#side.othersText(gcode, replacedProgram);
+    const { gcode, replacedProgram, replacedBy, secondReplacedProgram: second } = this.#store.state;
+    const { replaced, secondReplaced } = this.#e;
+    const othersProgram = this.#side.othersText(gcode, replacedProgram, second);
     // Called at every change of the state (each step played): a long program's lines are counted only when the offer changes.
-    if (replacedProgram === this.#offered.program && replacedBy === this.#offered.by) return;
+    if (replacedProgram === this.#offered.program && replacedBy === this.#offered.by && second === this.#offered.second) return;
     const newProgram = replacedProgram !== this.#offered.program;
-    this.#offered = { program: replacedProgram, by: replacedBy };
+    this.#offered = { program: replacedProgram, by: replacedBy, second };
+    secondReplaced.hidden = second === '';
+    if (second !== '') {
+      secondReplaced.querySelector('.replaced-text')!.textContent = othersProgram
+        ? `Your program (${linesOfText(second)}), typed at the same time, was written over by the other tab's.`
+        : `The other tab's program (${linesOfText(second)}), typed at the same time, was written over by yours.`;
+    }
     if (replacedProgram === '') {
       replaced.hidden = true;
       return;
     }
     const lines = linesOfText(replacedProgram);
-    replaced.querySelector('.replaced-text')!.textContent = othersProgram
-      ? `The other tab's program (${lines}), typed at the same time, was written over by this one.`
-      : `Your program (${lines}) was replaced by ${replacedBy}.`;
+    const whose = othersProgram ? "The other tab's program" : 'Your program';
+    replaced.querySelector('.replaced-text')!.textContent =
+      othersProgram && replacedBy === ANOTHER_TABS_PROGRAM ? `The other tab's program (${lines}), typed at the same time, was written over by this one.` : `${whose} (${lines}) was replaced by ${replacedBy}.`;
     if (!newProgram) return;
     // Shown once it is known not to be a sample's text.
     replaced.hidden = true;
     void this.#isSample(replacedProgram).then((sample) => {
-      if (replacedProgram !== this.#store.state.replacedProgram) return;
-      if (sample) this.#store.update({ replacedProgram: '', replacedBy: '' });
+      const state = this.#store.state;
+      if (replacedProgram !== state.replacedProgram) return;
+      // The second one kept, if any, is offered in its place, as what replaced the sample's.
+      if (sample) this.#store.update({ replacedProgram: state.secondReplacedProgram, replacedBy: state.secondReplacedProgram === '' ? '' : state.replacedBy, secondReplacedProgram: '' });
       else replaced.hidden = false;
     });
   }
 
-  /** Puts the replaced program back, exactly as it was, and runs it; the offer is withdrawn. */
-  #bringBack(): void {
-    const program = this.#store.state.replacedProgram;
+  /** Puts the replaced program `which` back, exactly as it was, and runs it; its offer is withdrawn (programBroughtBack). */
+  #bringBack(which: 'replacedProgram' | 'secondReplacedProgram'): void {
+    const fields = programBroughtBack(this.#store.state, which);
     this.#e.sample.value = '';
-    this.#showProgram(program);
-    this.#store.update({ gcode: program, replacedProgram: '', replacedBy: '', pointIndex: 0, camera: null });
+    this.#showProgram(fields.gcode);
+    this.#store.update({ ...fields, pointIndex: 0, camera: null });
   }
 
   /**
@@ -295,7 +309,7 @@ export class GcodePanel {
     this.#e.sample.value = '';
     this.#setText(text, { fromBox });
     // A program of the user's own again: the replaced one is no longer offered.
-    this.#store.update({ gcode: text, replacedProgram: '', replacedBy: '' });
+    this.#store.update({ gcode: text, replacedProgram: '', replacedBy: '', secondReplacedProgram: '' });
   }
 
   /** Shows `text` (LongTextField.show), with its gutter and marks. */

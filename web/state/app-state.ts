@@ -61,6 +61,16 @@ export interface AppState {
   replacedProgram: string;
   /** What replaced `replacedProgram`, as the offer names it ("the sample 'Helix'"); '' with no replaced program. */
   replacedBy: string;
+  /**
+   * G-code mode: the second program offered back, beside replacedProgram:
+   * of two programs typed in two tabs at the same time, the one written over
+   * (persist.ts's otherTabEdits kept it as replacedProgram), once the one
+   * kept over it was replaced in turn (a sample picked, a link opened) and
+   * became replacedProgram; '' for none. Each is the other's "another tab's
+   * program, typed at the same time": bringing one back offers the other as
+   * after the clash (programBroughtBack).
+   */
+  secondReplacedProgram: string;
   /** Trace mode: a learner's points as pasted into Check points (CSV, rows or a printed list), checked against the rule; '' for none. */
   learnerPoints: string;
   /**
@@ -360,23 +370,46 @@ export class OptionSetter {
   }
 }
 
+/** What replaced a program of a tab that another tab changed at the same time, as the offer to bring it back says ("Your program (3 lines) was replaced by ..."). */
+export const ANOTHER_TABS_PROGRAM = "another tab's program, typed at the same time";
+
+/** AppState's program and the programs kept to bring back. */
+export type ProgramFields = Pick<AppState, 'gcode' | 'replacedProgram' | 'replacedBy' | 'secondReplacedProgram'>;
+
 /**
  * The program fields once `state`'s program is replaced by `program`, which
  * the page put in (`by` names it, as the offer to bring the replaced one
  * back says): the replaced program is kept when it was `typed` (the user's,
  * not a sample as loaded), else the one kept before, if any, stays (with an
  * offer standing, the program shown is what replaced the user's: typing
- * withdraws the offer).
+ * withdraws the offer). But an offer standing since two tabs typed a
+ * program at the same time (ANOTHER_TABS_PROGRAM) holds the program written
+ * over, and the one shown is the one kept over it, typed too: both are
+ * kept, the one shown first (the tab that kept it typed it, and a tab sees
+ * the program it shows as its own), the other second.
  */
-export function programReplaced(
-  state: Pick<AppState, 'gcode' | 'replacedProgram' | 'replacedBy'>,
-  program: string,
-  by: string,
-  typed: boolean,
-): Pick<AppState, 'gcode' | 'replacedProgram' | 'replacedBy'> {
-  if (program === state.gcode) return { gcode: program, replacedProgram: state.replacedProgram, replacedBy: state.replacedBy };
-  if (state.replacedProgram !== '') return { gcode: program, replacedProgram: state.replacedProgram, replacedBy: by };
-  return typed ? { gcode: program, replacedProgram: state.gcode, replacedBy: by } : { gcode: program, replacedProgram: '', replacedBy: '' };
+export function programReplaced(state: ProgramFields, program: string, by: string, typed: boolean): ProgramFields {
+  const { replacedProgram, replacedBy, secondReplacedProgram } = state;
+  if (program === state.gcode) return { gcode: program, replacedProgram, replacedBy, secondReplacedProgram };
+  if (replacedProgram !== '' && replacedBy === ANOTHER_TABS_PROGRAM && typed) {
+    return { gcode: program, replacedProgram: state.gcode, replacedBy: by, secondReplacedProgram: replacedProgram };
+  }
+  if (replacedProgram !== '') return { gcode: program, replacedProgram, replacedBy: by, secondReplacedProgram };
+  return typed ? { gcode: program, replacedProgram: state.gcode, replacedBy: by, secondReplacedProgram: '' } : { gcode: program, replacedProgram: '', replacedBy: '', secondReplacedProgram: '' };
+}
+
+/**
+ * The program fields once the kept program `which` of `state` is brought
+ * back (put in the editor, the program shown, a sample's or a link's,
+ * dropped): with two kept (secondReplacedProgram), the other stays offered
+ * as it was after the two tabs' clash, "another tab's program, typed at
+ * the same time", replaced by the one brought back; else none is.
+ */
+export function programBroughtBack(state: ProgramFields, which: 'replacedProgram' | 'secondReplacedProgram'): ProgramFields {
+  const { replacedProgram, secondReplacedProgram } = state;
+  if (secondReplacedProgram === '') return { gcode: replacedProgram, replacedProgram: '', replacedBy: '', secondReplacedProgram: '' };
+  const [back, other] = which === 'replacedProgram' ? [replacedProgram, secondReplacedProgram] : [secondReplacedProgram, replacedProgram];
+  return { gcode: back, replacedProgram: other, replacedBy: ANOTHER_TABS_PROGRAM, secondReplacedProgram: '' };
 }
 
 /** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */
@@ -395,6 +428,7 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     gcode: DEFAULT_GCODE,
     replacedProgram: '',
     replacedBy: '',
+    secondReplacedProgram: '',
     learnerPoints: '',
     replacedPoints: '',
     machine: { ...DEFAULT_MACHINE },

@@ -11,7 +11,9 @@
  * followed the other's write; or a sample picked, a link opened), with its
  * own text unchanged in the tab that kept it. That tab notes it in its
  * sessionStorage (a fingerprint of the other's text), so that it says the
- * same after a reload.
+ * same after a reload. When the text kept is replaced in turn (a sample
+ * picked), both programs are offered (AppState's secondReplacedProgram):
+ * the two change places, each still the same tab's.
  */
 import { tabStorage } from './storage-areas.js';
 
@@ -25,8 +27,8 @@ function fingerprint(text: string): string {
 export class OfferSide {
   /** This tab's sessionStorage key for the mark of the other tab's text this tab's was kept over. */
   readonly #key: string;
-  /** The text and the replaced one at the last look (none yet: the page has just loaded). */
-  #seen: { text: string; replaced: string } | undefined;
+  /** The text and the replaced ones at the last look (none yet: the page has just loaded). */
+  #seen: { text: string; replaced: string; second: string } | undefined;
   /** Whether the replaced text last seen is another tab's, written over by this tab's. */
   #othersText = false;
 
@@ -38,22 +40,35 @@ export class OfferSide {
    * Whether `replaced` (the text offered back, '' for none), beside `text`
    * (the program or points the state holds now), is another tab's text that
    * this tab's was kept over, rather than a text of this tab's replaced.
-   * Called at every render of the offer's panel: a new offer is judged
-   * against the text of the render before it.
+   * `second` (a program: AppState's secondReplacedProgram; '' for none) is
+   * the other of the two tabs' texts, so the other way round. Called at
+   * every render of the offer's panel: a new offer is judged against the
+   * texts of the render before it.
    */
-  othersText(text: string, replaced: string): boolean {
+  othersText(text: string, replaced: string, second = ''): boolean {
     const seen = this.#seen;
-    this.#seen = { text, replaced };
-    if (seen && replaced === seen.replaced) return this.#othersText;
+    this.#seen = { text, replaced, second };
+    if (seen && replaced === seen.replaced && second === seen.second) return this.#othersText;
     const store = tabStorage();
     const noted = store?.getItem(this.#key) ?? undefined;
-    // Hashed only where this tab may have kept its text over it: the page
-    // loaded with an offer this tab had noted, or a new offer beside the same text.
-    const mark = replaced !== '' && (seen ? text === seen.text : noted !== undefined) ? fingerprint(replaced) : undefined;
-    this.#othersText = mark !== undefined && (seen !== undefined || noted === mark);
+    if (seen && seen.replaced !== '' && replaced !== '' && (replaced === seen.text || replaced === seen.second)) {
+      // The two tabs' texts changed places (the one shown replaced, the
+      // second one or the one shown brought back): the offer now holds the
+      // other one of the two.
+      this.#othersText = !this.#othersText;
+    } else if (seen && replaced !== '' && text === seen.text) {
+      // A new offer beside the same text: the other tab's, written over.
+      this.#othersText = true;
+    } else {
+      // Hashed only where this tab noted a text of the other tab's (the page loaded, or the texts moved).
+      this.#othersText = replaced !== '' && noted !== undefined && noted === fingerprint(replaced);
+    }
+    const others = this.#othersText ? replaced : second;
+    const mark = others === '' ? undefined : fingerprint(others);
     try {
-      if (this.#othersText) store?.setItem(this.#key, mark!);
-      else if (noted !== undefined) store?.removeItem(this.#key);
+      if (mark !== undefined) {
+        if (mark !== noted) store?.setItem(this.#key, mark);
+      } else if (noted !== undefined) store?.removeItem(this.#key);
     } catch {
       // Storage full or blocked: after a reload, the offer says the text was this tab's.
     }

@@ -4,7 +4,7 @@
  * On load a URL describing a state wins over localStorage.
  */
 import { listed } from '../format.js';
-import { type AppState, type Catalogue, comparableWith, DEFAULT_GCODE, defaultAlgorithm, defaultState, MODES, programReplaced } from './app-state.js';
+import { ANOTHER_TABS_PROGRAM, type AppState, type Catalogue, comparableWith, DEFAULT_GCODE, defaultAlgorithm, defaultState, MODES, programReplaced } from './app-state.js';
 import { draftedHere } from './drafts.js';
 import { storage, tabStorage } from './storage-areas.js';
 import { GCODE_URL_LIMIT, type LinkNotes, stateFromQuery, stateToQuery } from './query.js';
@@ -14,7 +14,7 @@ const STORAGE_KEY = 'voxpath.state';
 
 /**
  * The texts longer than a link holds (GCODE_URL_LIMIT), a program, the
- * program it replaced (kept to bring back), a learner's points and the
+ * programs it replaced (kept to bring back), a learner's points and the
  * points another tab's replaced (the same), are kept
  * as typed, under keys of their own: KEY holds how many pieces of
  * LONG_TEXT_PIECE characters the text is cut into, and KEY.0, KEY.1, ...
@@ -25,7 +25,13 @@ const STORAGE_KEY = 'voxpath.state';
  * (3.7 MB) and after each keystroke in them; written whole under one key,
  * 15 to 55 ms.
  */
-const LONG_TEXT_KEYS = { gcode: 'voxpath.gcode', replacedProgram: 'voxpath.replaced', learnerPoints: 'voxpath.points', replacedPoints: 'voxpath.replacedPoints' } as const;
+const LONG_TEXT_KEYS = {
+  gcode: 'voxpath.gcode',
+  replacedProgram: 'voxpath.replaced',
+  secondReplacedProgram: 'voxpath.secondReplaced',
+  learnerPoints: 'voxpath.points',
+  replacedPoints: 'voxpath.replacedPoints',
+} as const;
 
 /** Characters per stored piece of a long text: a keystroke rewrites one piece. */
 const LONG_TEXT_PIECE = 65_536;
@@ -33,7 +39,13 @@ const LONG_TEXT_PIECE = 65_536;
 type LongText = keyof typeof LONG_TEXT_KEYS;
 
 /** The query key that holds each long text's field when it is short enough, and a link's program or points (a link never holds a replaced program or points). */
-const LONG_TEXT_PARAMS: Record<LongText, string> = { gcode: 'gcode', replacedProgram: 'replaced', learnerPoints: 'points', replacedPoints: 'replacedPoints' };
+const LONG_TEXT_PARAMS: Record<LongText, string> = {
+  gcode: 'gcode',
+  replacedProgram: 'replaced',
+  secondReplacedProgram: 'secondReplaced',
+  learnerPoints: 'points',
+  replacedPoints: 'replacedPoints',
+};
 
 /** The query key of the gcode part that names what replaced the kept program (AppState's replacedBy). */
 const REPLACED_BY_PARAM = 'replacedBy';
@@ -132,7 +144,7 @@ function storedParts(state: AppState): StoredParts {
     shown: stateToQuery(state, { gcodeLimit: 0 }),
     trace: withReplaced(part('trace'), 'replacedPoints', state),
     compare: part('compare'),
-    gcode: withReplaced(part('gcode'), 'replacedProgram', state),
+    gcode: withReplaced(withReplaced(part('gcode'), 'replacedProgram', state), 'secondReplacedProgram', state),
     experiment: part('experiment'),
   };
 }
@@ -142,7 +154,7 @@ function storedParts(state: AppState): StoredParts {
  * enough: longTextPieces), and for a program what replaced it, added after
  * the part's own keys, which are left as stateToQuery wrote them.
  */
-function withReplaced(query: string, field: 'replacedProgram' | 'replacedPoints', state: AppState): string {
+function withReplaced(query: string, field: 'replacedProgram' | 'secondReplacedProgram' | 'replacedPoints', state: AppState): string {
   const text = state[field];
   if (text === '') return query;
   const added = new URLSearchParams(field === 'replacedProgram' ? { [REPLACED_BY_PARAM]: state.replacedBy } : {});
@@ -156,13 +168,13 @@ function withReplaced(query: string, field: 'replacedProgram' | 'replacedPoints'
  * its part (the points beside the move, the program beside the machine),
  * and so written or kept on its own (partsToStore).
  */
-const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', replacedProgram: 'gcode', learnerPoints: 'trace', replacedPoints: 'trace' };
+const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', replacedProgram: 'gcode', secondReplacedProgram: 'gcode', learnerPoints: 'trace', replacedPoints: 'trace' };
 
 /** The input each mode's part keeps for a visit in another mode (storedState takes these of it). */
 const PART_INPUTS: Record<AppState['mode'], readonly (keyof AppState)[]> = {
   trace: ['algorithm', 'options', 'learnerPoints', 'replacedPoints'],
   compare: ['other', 'layout'],
-  gcode: ['gcode', 'replacedProgram', 'replacedBy', 'machine', 'slowdown'],
+  gcode: ['gcode', 'replacedProgram', 'replacedBy', 'secondReplacedProgram', 'machine', 'slowdown'],
   experiment: ['experiment'],
 };
 
@@ -272,6 +284,7 @@ function readParts(
     gcode: longText('gcode', parts.gcode!) ?? gcode.gcode,
     replacedProgram: longText('replacedProgram', parts.gcode!) ?? gcodeParams.get(LONG_TEXT_PARAMS.replacedProgram) ?? '',
     replacedBy: gcodeParams.get(REPLACED_BY_PARAM) ?? '',
+    secondReplacedProgram: longText('secondReplacedProgram', parts.gcode!) ?? gcodeParams.get(LONG_TEXT_PARAMS.secondReplacedProgram) ?? '',
     machine: gcode.machine,
     slowdown: gcode.slowdown,
     experiment: experiment.experiment,
@@ -445,13 +458,6 @@ function writeLongText(store: Storage, field: LongText, text: string): boolean {
   }
 }
 
-/**
- * What replaced a program of this tab's that another tab changed at the
- * same time, as the offer to bring it back says ("Your program (3 lines)
- * was replaced by ..."): written over, it is offered there too.
- */
-const ANOTHER_TABS_PROGRAM = "another tab's program, typed at the same time";
-
 /** Whether two values of an input are the same (an object's keys in any order). */
 function sameInput(a: unknown, b: unknown): boolean {
   if (a === b) return true;
@@ -493,7 +499,7 @@ export function otherTabEdits(seen: AppState, stored: AppState, written: AppStat
     if ((current[key] === written[key] && !drafted.has(key)) || sameInput(current[key], stored[key])) Object.assign(followed, { [key]: stored[key] });
     else both.push(key);
   }
-  const replaced = both.includes('gcode') ? programReplaced({ gcode: stored.gcode, replacedProgram: '', replacedBy: '' }, current.gcode, ANOTHER_TABS_PROGRAM, stored.gcode !== DEFAULT_GCODE) : undefined;
+  const replaced = both.includes('gcode') ? programReplaced({ gcode: stored.gcode, replacedProgram: '', replacedBy: '', secondReplacedProgram: '' }, current.gcode, ANOTHER_TABS_PROGRAM, stored.gcode !== DEFAULT_GCODE) : undefined;
   const kept: Partial<AppState> = replaced && replaced.replacedProgram !== '' ? { replacedProgram: replaced.replacedProgram, replacedBy: replaced.replacedBy } : {};
   if (both.includes('learnerPoints') && stored.learnerPoints !== '') kept.replacedPoints = stored.learnerPoints;
   return { followed, both, kept };
