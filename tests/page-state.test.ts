@@ -5,6 +5,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { catalogue as coreCatalogue, compare, trace } from '../web/core/index.js';
 import { rejection } from './helpers.js';
 import {
+  ANOTHER_TABS_POINTS,
   ANOTHER_TABS_PROGRAM,
   type AppState,
   type Catalogue,
@@ -20,6 +21,8 @@ import {
   experimentAlgorithm,
   machineSpecs,
   offeredAlgorithms,
+  pointsBroughtBack,
+  pointsReplaced,
   programBroughtBack,
   programReplaced,
   sharedOptionSpecs,
@@ -434,7 +437,7 @@ describe("another tab's write (persist.ts)", () => {
     const edits = otherTabEdits(seen, theirs, written, mine);
     expect(edits.followed).toEqual({ layout: 'side' });
     expect(edits.both).toEqual(['options', 'learnerPoints', 'gcode']);
-    expect(edits.kept).toEqual({ replacedProgram: typed, replacedBy: "another tab's program, typed at the same time", replacedPoints: '0,0,0\n1,0,0' });
+    expect(edits.kept).toEqual({ replacedProgram: typed, replacedBy: "another tab's program, typed at the same time", replacedPoints: '0,0,0\n1,0,0', replacedPointsBy: "another tab's, typed at the same time" });
     expect(otherTabNote(edits)).toBe(
       "Another tab changed the layout: shown here as there. Another tab changed the move, your points and the program at the same time as this one: what this tab has is kept, and is what a reload shows. The other tab's program is offered back beside the editor. The other tab's points are offered back in Check points.",
     );
@@ -478,6 +481,19 @@ describe('the programs kept to bring back (programReplaced, programBroughtBack, 
     expect(programBroughtBack(replaced, 'replacedProgram')).toEqual(clashed);
     expect(programBroughtBack(replaced, 'secondReplacedProgram')).toEqual({ gcode: theirs, replacedProgram: mine, replacedBy: ANOTHER_TABS_PROGRAM, secondReplacedProgram: '' });
     expect(programBroughtBack(clashed, 'replacedProgram')).toEqual({ gcode: theirs, ...none });
+  });
+
+  it("keeps points a link's replace, and both tabs' points of a clash when a link's replace the ones kept", () => {
+    const [ours, others, linked] = ['0,0,0\n1,1,1\n2,1,1', '0,0,0\n1,0,0', '0,0,0\n0,1,0'];
+    const noPoints = { replacedPoints: '', replacedPointsBy: '', secondReplacedPoints: '' };
+    expect(pointsReplaced({ learnerPoints: ours, ...noPoints }, linked, "the link's points")).toEqual({ learnerPoints: linked, replacedPoints: ours, replacedPointsBy: "the link's points", secondReplacedPoints: '' });
+    expect(pointsReplaced({ learnerPoints: '', ...noPoints }, linked, "the link's points")).toEqual({ learnerPoints: linked, ...noPoints });
+    const clash = { learnerPoints: ours, replacedPoints: others, replacedPointsBy: ANOTHER_TABS_POINTS, secondReplacedPoints: '' };
+    const replaced = pointsReplaced(clash, linked, "the link's points");
+    expect(replaced).toEqual({ learnerPoints: linked, replacedPoints: ours, replacedPointsBy: "the link's points", secondReplacedPoints: others });
+    expect(pointsBroughtBack(replaced, 'replacedPoints')).toEqual(clash);
+    expect(pointsBroughtBack(replaced, 'secondReplacedPoints')).toEqual({ learnerPoints: others, replacedPoints: ours, replacedPointsBy: ANOTHER_TABS_POINTS, secondReplacedPoints: '' });
+    expect(pointsBroughtBack(clash, 'replacedPoints')).toEqual({ learnerPoints: others, ...noPoints });
   });
 
   it('says, in the tab whose program was kept and in the one whose program was written over, whose each kept program is as they move', () => {

@@ -297,6 +297,8 @@ function run(catalogue: Catalogue): void {
         editAnyway: byId('learner-edit-anyway', HTMLButtonElement),
         replaced: byId('learner-replaced', HTMLParagraphElement),
         bringBack: byId('learner-bring-back', HTMLButtonElement),
+        secondReplaced: byId('learner-second-replaced', HTMLParagraphElement),
+        secondBringBack: byId('learner-second-bring-back', HTMLButtonElement),
         result: byId('check-result', HTMLDivElement),
         run: {
           bar: byId('check-progress', HTMLProgressElement),

@@ -615,6 +615,55 @@ describe('the page', () => {
     await a.close();
   });
 
+  it("keeps both tabs' points of a clash when a link's points then replace the ones kept: both offered, and brought back, over reloads (the other tab's too long for a link)", async () => {
+    const a = await openPage(EXAMPLE);
+    await traced(a.page, 10);
+    const b = await unhearingTab(a.context, EXAMPLE);
+    await traced(b, 10);
+    // A's points, 401 lines (2,406 characters), are kept under storage's own keys, not in the part.
+    const pointsA = `0,0,0\n${Array.from({ length: 400 }, (_, i) => `${i % 10},1,1`).join('\n')}\n`;
+    const pointsB = '0,0,0\n1,0,0\n';
+    await a.page.getByTestId('check-points').locator('summary').click();
+    await a.page.getByTestId('learner-points').fill(pointsA);
+    await a.page.waitForFunction(() => localStorage.getItem('voxpath.points') !== null);
+    await b.getByTestId('check-points').locator('summary').click();
+    await b.getByTestId('learner-points').fill(pointsB);
+    await b.getByTestId('learner-replaced').filter({ hasText: "The other tab's points (401 lines), typed at the same time, were written over by this tab's." }).waitFor();
+    const offers = (page: Page) => Promise.all(['learner-replaced', 'learner-second-replaced'].map(async (id) => ((await page.getByTestId(id).isHidden()) ? '' : await page.getByTestId(id).innerText())));
+    const offered = (page: Page, expected: string[]) => expect.poll(() => offers(page), { timeout: 20_000 }).toEqual(expected);
+    // B, whose points were kept, opens a link with points: its own are offered first, A's under them.
+    const linked = '0,0,0\n0,1,0\n1,1,1\n';
+    await b.goto(`${siteUrl()}${EXAMPLE}&points=${encodeURIComponent(linked)}`);
+    await traced(b, 10);
+    expect(await b.getByTestId('learner-points').inputValue()).toBe(linked);
+    const bothOffered = [
+      "Your points (2 lines) were replaced by the link's points. Bring them back",
+      "The other tab's points (401 lines), typed at the same time, were written over by yours. Bring them back",
+    ];
+    await offered(b, bothOffered);
+    await b.reload();
+    await traced(b, 10);
+    await offered(b, bothOffered);
+    // A's brought back in B: B's own stay offered, as A's words after the clash were.
+    await b.getByTestId('learner-second-bring-back').click();
+    await expect.poll(() => b.getByTestId('learner-points').inputValue()).toBe(pointsA);
+    const bOffered = ["Your points (2 lines) were replaced by another tab's, typed at the same time. Bring them back", ''];
+    await offered(b, bOffered);
+    await b.reload();
+    await traced(b, 10);
+    await offered(b, bOffered);
+    expect(await b.getByTestId('learner-points').inputValue()).toBe(pointsA);
+    // And B's own brought back: the offers go, B's points stay over a reload.
+    await b.getByTestId('learner-bring-back').click();
+    await expect.poll(() => b.getByTestId('learner-points').inputValue()).toBe(pointsB);
+    await b.reload();
+    await traced(b, 10);
+    await expect.poll(() => b.getByTestId('learner-points').inputValue()).toBe(pointsB);
+    expect(await offers(b)).toEqual(['', '']);
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
   it('shows, as it is typed there, an input another tab changes that this tab left alone: the move and the points, without writing them back', async () => {
     const a = await openPage(EXAMPLE);
     await traced(a.page, 10);

@@ -23,14 +23,16 @@
  * the other's (AppState's replacedPoints), are offered back above the box
  * in both, each saying whose they are (OfferSide), as a program a sample
  * replaced is beside the editor, until brought back or the points are
- * changed again.
+ * changed again; so are points typed that a link's replaced, and when those
+ * were a clash's points kept, the other tab's too, under them
+ * (secondReplacedPoints).
  */
 import type { Check } from '../core/index.js';
 import { element } from '../form/options-form.js';
 import { checkBar, RunProgress, type RunProgressElements } from '../form/run-progress.js';
 import { LongTextField, linesInView, linesOfText } from '../form/long-text.js';
 import { countOf, formatPoint, NO_VALUE_TEXT } from '../format.js';
-import type { AppState } from '../state/app-state.js';
+import { ANOTHER_TABS_POINTS, type AppState, pointsBroughtBack } from '../state/app-state.js';
 import { OfferSide } from '../state/offer-side.js';
 import type { Store } from '../state/store.js';
 import type { CheckRunProgress } from '../worker/protocol.js';
@@ -45,9 +47,12 @@ export interface CheckPanelElements {
   longNote: HTMLElement;
   clear: HTMLButtonElement;
   editAnyway: HTMLButtonElement;
-  /** The offer of the points another tab's replaced, and its button that brings them back. */
+  /** The offer of the points another tab's (or a link's) replaced, and its button that brings them back. */
   replaced: HTMLElement;
   bringBack: HTMLButtonElement;
+  /** The offer of the second points kept (AppState's secondReplacedPoints), and its button. */
+  secondReplaced: HTMLElement;
+  secondBringBack: HTMLButtonElement;
   result: HTMLElement;
   /** The bar and Cancel of a check under way. */
   run: RunProgressElements;
@@ -72,8 +77,8 @@ export class CheckPanel {
   readonly #progress: RunProgress;
   /** The points, in the text box or listed read-only. */
   readonly #field: LongTextField;
-  /** The replaced points the offer was last made for ('' for none). */
-  #offered = '';
+  /** The replaced points, what replaced them, and the second points kept, that the offers were last made for. */
+  #offered = { points: '', by: '', second: '' };
   /** Whether the offer's points are this tab's, replaced, or another tab's this tab's points were kept over. */
   readonly #side = new OfferSide('voxpath.keptOverPoints');
 
@@ -94,11 +99,16 @@ export class CheckPanel {
       this.#setText(this.#field.text, { editable: true });
       elements.text.focus();
     });
-    elements.bringBack.addEventListener('click', () => {
-      const points = this.#store.state.replacedPoints;
-      this.#setText(points);
-      this.#store.update({ learnerPoints: points, replacedPoints: '' });
-    });
+    for (const [button, which] of [
+      [elements.bringBack, 'replacedPoints'],
+      [elements.secondBringBack, 'secondReplacedPoints'],
+    ] as const) {
+      button.addEventListener('click', () => {
+        const fields = pointsBroughtBack(this.#store.state, which);
+        this.#setText(fields.learnerPoints);
+        this.#store.update(fields);
+      });
+    }
     this.#offerReplaced();
     elements.listing.addEventListener('scroll', () => this.#renderListing());
     // Shown (the panel opened, the mode changed) or resized: more or fewer lines are in view.
@@ -109,7 +119,7 @@ export class CheckPanel {
   #edited(text: string, fromBox = false): void {
     this.#setText(text, { fromBox });
     // Points of the user's own again: the replaced ones are no longer offered.
-    this.#store.update({ learnerPoints: text, replacedPoints: '' });
+    this.#store.update({ learnerPoints: text, replacedPoints: '', replacedPointsBy: '', secondReplacedPoints: '' });
   }
 
   /** Shows `text` (LongTextField.show), a list from its top. */
@@ -139,18 +149,30 @@ export class CheckPanel {
     this.#offerReplaced();
   }
 
-  /** Offers the points another tab's replaced, or this tab's replaced another's, above the box (their lines counted only when they change). */
+  /**
+   * Offers the points another tab's or a link's replaced, or another tab's
+   * this tab's were kept over, above the box, and under them the second
+   * points kept, if any (their lines counted only when they change).
+   */
   #offerReplaced(): void {
-    const { learnerPoints, replacedPoints: replaced } = this.#store.state;
-    const othersPoints = this.#side.othersText(learnerPoints, replaced);
-    if (replaced === this.#offered) return;
-    this.#offered = replaced;
-    this.#e.replaced.hidden = replaced === '';
+    const { learnerPoints, replacedPoints: replaced, replacedPointsBy: by, secondReplacedPoints: second } = this.#store.state;
+    const othersPoints = this.#side.othersText(learnerPoints, replaced, second);
+    if (replaced === this.#offered.points && by === this.#offered.by && second === this.#offered.second) return;
+    this.#offered = { points: replaced, by, second };
+    const { replaced: offer, secondReplaced } = this.#e;
+    offer.hidden = replaced === '';
+    secondReplaced.hidden = second === '';
+    if (second !== '') {
+      secondReplaced.querySelector('.replaced-text')!.textContent = othersPoints
+        ? `Your points (${linesOfText(second)}), typed at the same time, were written over by the other tab's.`
+        : `The other tab's points (${linesOfText(second)}), typed at the same time, were written over by yours.`;
+    }
     if (replaced === '') return;
     const lines = linesOfText(replaced);
-    this.#e.replaced.querySelector('.replaced-text')!.textContent = othersPoints
-      ? `The other tab's points (${lines}), typed at the same time, were written over by this tab's.`
-      : `Your points (${lines}) were replaced by another tab's, typed at the same time.`;
+    offer.querySelector('.replaced-text')!.textContent =
+      othersPoints && by === ANOTHER_TABS_POINTS
+        ? `The other tab's points (${lines}), typed at the same time, were written over by this tab's.`
+        : `${othersPoints ? "The other tab's points" : 'Your points'} (${lines}) were replaced by ${by}.`;
     this.#e.box.open = true;
   }
 

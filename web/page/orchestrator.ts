@@ -535,7 +535,8 @@ export class Orchestrator {
     }
     if (state.decision3d !== previous.decision3d) p.views.setDecision3d(state.decision3d);
     if (state.mode === 'gcode') p.gcodePanel.render();
-    if (state.learnerPoints !== previous.learnerPoints || state.replacedPoints !== previous.replacedPoints) p.checkPanel.render();
+    const pointsFields = ['learnerPoints', 'replacedPoints', 'replacedPointsBy', 'secondReplacedPoints'] as const;
+    if (pointsFields.some((field) => state[field] !== previous[field])) p.checkPanel.render();
     p.experimentForm.setValues(state.experiment);
     if (state.pointIndex !== previous.pointIndex) this.#showPoint(state.pointIndex);
   }

@@ -75,11 +75,16 @@ export interface AppState {
   learnerPoints: string;
   /**
    * Trace mode: the learner's points another tab had, changed there at the
-   * same time as here and written over by this tab's (persist.ts), kept so
-   * that they can be brought back, as replacedProgram is; '' for none.
-   * Offered until brought back or the points are changed again.
+   * same time as here and written over by this tab's (persist.ts), or the
+   * points typed here that a link's replaced, kept so that they can be
+   * brought back, as replacedProgram is; '' for none. Offered until brought
+   * back or the points are changed again.
    */
   replacedPoints: string;
+  /** What replaced `replacedPoints`, as the offer names it ("the link's points", ANOTHER_TABS_POINTS); '' with none. */
+  replacedPointsBy: string;
+  /** Trace mode: the second points offered back, beside replacedPoints, as secondReplacedProgram is for programs; '' for none. */
+  secondReplacedPoints: string;
   /** G-code mode: the machine, by GcodeSettings name (stepsPerMm or stepAngle + microsteps + pitch, line/arc algorithm). */
   machine: Record<string, OptionValue>;
   /** Experiment mode: the random-lines options (count, seed, maxCoordinate, dims); the algorithm is `algorithm`. */
@@ -373,43 +378,85 @@ export class OptionSetter {
 /** What replaced a program of a tab that another tab changed at the same time, as the offer to bring it back says ("Your program (3 lines) was replaced by ..."). */
 export const ANOTHER_TABS_PROGRAM = "another tab's program, typed at the same time";
 
-/** AppState's program and the programs kept to bring back. */
-export type ProgramFields = Pick<AppState, 'gcode' | 'replacedProgram' | 'replacedBy' | 'secondReplacedProgram'>;
+/** The same for points ("Your points (3 lines) were replaced by ..."). */
+export const ANOTHER_TABS_POINTS = "another tab's, typed at the same time";
 
 /**
- * The program fields once `state`'s program is replaced by `program`, which
- * the page put in (`by` names it, as the offer to bring the replaced one
- * back says): the replaced program is kept when it was `typed` (the user's,
- * not a sample as loaded), else the one kept before, if any, stays (with an
- * offer standing, the program shown is what replaced the user's: typing
- * withdraws the offer). But an offer standing since two tabs typed a
- * program at the same time (ANOTHER_TABS_PROGRAM) holds the program written
- * over, and the one shown is the one kept over it, typed too: both are
- * kept, the one shown first (the tab that kept it typed it, and a tab sees
- * the program it shows as its own), the other second.
+ * A text the user types (a program, points), the one kept to bring back
+ * once the page replaced it, what replaced that one, and the second one
+ * kept (AppState's secondReplacedProgram); `clash` is what names another
+ * tab's text typed at the same time (ANOTHER_TABS_PROGRAM, ANOTHER_TABS_POINTS).
  */
-export function programReplaced(state: ProgramFields, program: string, by: string, typed: boolean): ProgramFields {
-  const { replacedProgram, replacedBy, secondReplacedProgram } = state;
-  if (program === state.gcode) return { gcode: program, replacedProgram, replacedBy, secondReplacedProgram };
-  if (replacedProgram !== '' && replacedBy === ANOTHER_TABS_PROGRAM && typed) {
-    return { gcode: program, replacedProgram: state.gcode, replacedBy: by, secondReplacedProgram: replacedProgram };
-  }
-  if (replacedProgram !== '') return { gcode: program, replacedProgram, replacedBy: by, secondReplacedProgram };
-  return typed ? { gcode: program, replacedProgram: state.gcode, replacedBy: by, secondReplacedProgram: '' } : { gcode: program, replacedProgram: '', replacedBy: '', secondReplacedProgram: '' };
+interface KeptTexts {
+  text: string;
+  replaced: string;
+  by: string;
+  second: string;
+  clash: string;
 }
 
 /**
- * The program fields once the kept program `which` of `state` is brought
- * back (put in the editor, the program shown, a sample's or a link's,
- * dropped): with two kept (secondReplacedProgram), the other stays offered
- * as it was after the two tabs' clash, "another tab's program, typed at
- * the same time", replaced by the one brought back; else none is.
+ * `kept` once its text is replaced by `text`, which the page put in (`by`
+ * names it, as the offer to bring the replaced one back says): the
+ * replaced text is kept when it was `typed` (the user's, not a sample as
+ * loaded), else the one kept before, if any, stays (with an offer standing,
+ * the text shown is what replaced the user's: typing withdraws the offer).
+ * But an offer standing since two tabs typed at the same time (`clash`)
+ * holds the text written over, and the one shown is the one kept over it,
+ * typed too: both are kept, the one shown first (the tab that kept it
+ * typed it, and a tab sees the text it shows as its own), the other second.
  */
+function textReplaced(kept: KeptTexts, text: string, by: string, typed: boolean): KeptTexts {
+  const { replaced } = kept;
+  if (text === kept.text) return kept;
+  if (replaced !== '' && kept.by === kept.clash && typed) return { ...kept, text, replaced: kept.text, by, second: replaced };
+  if (replaced !== '') return { ...kept, text, by };
+  return typed ? { ...kept, text, replaced: kept.text, by, second: '' } : { ...kept, text, replaced: '', by: '', second: '' };
+}
+
+/**
+ * `kept` once its kept text `which` is brought back (the text shown, a
+ * sample's or a link's, dropped): with two kept, the other stays offered
+ * as it was after the two tabs' clash, the other tab's text replaced by
+ * the one brought back; else none is.
+ */
+function textBroughtBack(kept: KeptTexts, which: 'replaced' | 'second'): KeptTexts {
+  const { replaced, second } = kept;
+  if (second === '') return { ...kept, text: replaced, replaced: '', by: '', second: '' };
+  const [back, other] = which === 'replaced' ? [replaced, second] : [second, replaced];
+  return { ...kept, text: back, replaced: other, by: kept.clash, second: '' };
+}
+
+/** AppState's program and the programs kept to bring back. */
+export type ProgramFields = Pick<AppState, 'gcode' | 'replacedProgram' | 'replacedBy' | 'secondReplacedProgram'>;
+
+const programTexts = (state: ProgramFields): KeptTexts => ({ text: state.gcode, replaced: state.replacedProgram, by: state.replacedBy, second: state.secondReplacedProgram, clash: ANOTHER_TABS_PROGRAM });
+const programFields = (kept: KeptTexts): ProgramFields => ({ gcode: kept.text, replacedProgram: kept.replaced, replacedBy: kept.by, secondReplacedProgram: kept.second });
+
+/** The program fields once `state`'s program is replaced by `program` (textReplaced). */
+export function programReplaced(state: ProgramFields, program: string, by: string, typed: boolean): ProgramFields {
+  return programFields(textReplaced(programTexts(state), program, by, typed));
+}
+
+/** The program fields once the kept program `which` is brought back (textBroughtBack). */
 export function programBroughtBack(state: ProgramFields, which: 'replacedProgram' | 'secondReplacedProgram'): ProgramFields {
-  const { replacedProgram, secondReplacedProgram } = state;
-  if (secondReplacedProgram === '') return { gcode: replacedProgram, replacedProgram: '', replacedBy: '', secondReplacedProgram: '' };
-  const [back, other] = which === 'replacedProgram' ? [replacedProgram, secondReplacedProgram] : [secondReplacedProgram, replacedProgram];
-  return { gcode: back, replacedProgram: other, replacedBy: ANOTHER_TABS_PROGRAM, secondReplacedProgram: '' };
+  return programFields(textBroughtBack(programTexts(state), which === 'replacedProgram' ? 'replaced' : 'second'));
+}
+
+/** AppState's points and the points kept to bring back. */
+export type PointsFields = Pick<AppState, 'learnerPoints' | 'replacedPoints' | 'replacedPointsBy' | 'secondReplacedPoints'>;
+
+const pointsTexts = (state: PointsFields): KeptTexts => ({ text: state.learnerPoints, replaced: state.replacedPoints, by: state.replacedPointsBy, second: state.secondReplacedPoints, clash: ANOTHER_TABS_POINTS });
+const pointsFields = (kept: KeptTexts): PointsFields => ({ learnerPoints: kept.text, replacedPoints: kept.replaced, replacedPointsBy: kept.by, secondReplacedPoints: kept.second });
+
+/** The points fields once `state`'s points are replaced by `points` (a link's: textReplaced); points are the user's unless none. */
+export function pointsReplaced(state: PointsFields, points: string, by: string): PointsFields {
+  return pointsFields(textReplaced(pointsTexts(state), points, by, state.learnerPoints !== ''));
+}
+
+/** The points fields once the kept points `which` are brought back (textBroughtBack). */
+export function pointsBroughtBack(state: PointsFields, which: 'replacedPoints' | 'secondReplacedPoints'): PointsFields {
+  return pointsFields(textBroughtBack(pointsTexts(state), which === 'replacedPoints' ? 'replaced' : 'second'));
 }
 
 /** The program a first visit to the G-code mode shows (public/samples/square.gcode's moves). */
@@ -431,6 +478,8 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     secondReplacedProgram: '',
     learnerPoints: '',
     replacedPoints: '',
+    replacedPointsBy: '',
+    secondReplacedPoints: '',
     machine: { ...DEFAULT_MACHINE },
     experiment: { ...DEFAULT_EXPERIMENT },
     projection: defaultProjection(axisCount([info], {})),

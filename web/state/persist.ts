@@ -4,7 +4,19 @@
  * On load a URL describing a state wins over localStorage.
  */
 import { listed } from '../format.js';
-import { ANOTHER_TABS_PROGRAM, type AppState, type Catalogue, comparableWith, DEFAULT_GCODE, defaultAlgorithm, defaultState, MODES, programReplaced } from './app-state.js';
+import {
+  ANOTHER_TABS_POINTS,
+  ANOTHER_TABS_PROGRAM,
+  type AppState,
+  type Catalogue,
+  comparableWith,
+  DEFAULT_GCODE,
+  defaultAlgorithm,
+  defaultState,
+  MODES,
+  pointsReplaced,
+  programReplaced,
+} from './app-state.js';
 import { draftedHere } from './drafts.js';
 import { storage, tabStorage } from './storage-areas.js';
 import { GCODE_URL_LIMIT, type LinkNotes, stateFromQuery, stateToQuery } from './query.js';
@@ -15,7 +27,7 @@ const STORAGE_KEY = 'voxpath.state';
 /**
  * The texts longer than a link holds (GCODE_URL_LIMIT), a program, the
  * programs it replaced (kept to bring back), a learner's points and the
- * points another tab's replaced (the same), are kept
+ * points replaced (the same), are kept
  * as typed, under keys of their own: KEY holds how many pieces of
  * LONG_TEXT_PIECE characters the text is cut into, and KEY.0, KEY.1, ...
  * the pieces. They are written with the rest of the state
@@ -31,6 +43,7 @@ const LONG_TEXT_KEYS = {
   secondReplacedProgram: 'voxpath.secondReplaced',
   learnerPoints: 'voxpath.points',
   replacedPoints: 'voxpath.replacedPoints',
+  secondReplacedPoints: 'voxpath.secondReplacedPoints',
 } as const;
 
 /** Characters per stored piece of a long text: a keystroke rewrites one piece. */
@@ -45,10 +58,11 @@ const LONG_TEXT_PARAMS: Record<LongText, string> = {
   secondReplacedProgram: 'secondReplaced',
   learnerPoints: 'points',
   replacedPoints: 'replacedPoints',
+  secondReplacedPoints: 'secondReplacedPoints',
 };
 
-/** The query key of the gcode part that names what replaced the kept program (AppState's replacedBy). */
-const REPLACED_BY_PARAM = 'replacedBy';
+/** The field that names what replaced each first kept text, stored in its part under a query key of its own name. */
+const REPLACED_BY = { replacedProgram: 'replacedBy', replacedPoints: 'replacedPointsBy' } as const;
 
 /**
  * Writes are throttled to one per WRITE_DELAY_MS: playback changes the step
@@ -142,7 +156,7 @@ function storedParts(state: AppState): StoredParts {
   const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: GCODE_URL_LIMIT });
   return {
     shown: stateToQuery(state, { gcodeLimit: 0 }),
-    trace: withReplaced(part('trace'), 'replacedPoints', state),
+    trace: withReplaced(withReplaced(part('trace'), 'replacedPoints', state), 'secondReplacedPoints', state),
     compare: part('compare'),
     gcode: withReplaced(withReplaced(part('gcode'), 'replacedProgram', state), 'secondReplacedProgram', state),
     experiment: part('experiment'),
@@ -151,13 +165,14 @@ function storedParts(state: AppState): StoredParts {
 
 /**
  * The part `query` with the replaced text `field` of `state` (when short
- * enough: longTextPieces), and for a program what replaced it, added after
+ * enough: longTextPieces), and for the first one kept what replaced it, added after
  * the part's own keys, which are left as stateToQuery wrote them.
  */
-function withReplaced(query: string, field: 'replacedProgram' | 'secondReplacedProgram' | 'replacedPoints', state: AppState): string {
+function withReplaced(query: string, field: 'replacedProgram' | 'secondReplacedProgram' | 'replacedPoints' | 'secondReplacedPoints', state: AppState): string {
   const text = state[field];
   if (text === '') return query;
-  const added = new URLSearchParams(field === 'replacedProgram' ? { [REPLACED_BY_PARAM]: state.replacedBy } : {});
+  const by = field === 'replacedProgram' || field === 'replacedPoints' ? REPLACED_BY[field] : undefined;
+  const added = new URLSearchParams(by ? { [by]: state[by] } : {});
   if (text.length <= GCODE_URL_LIMIT) added.set(LONG_TEXT_PARAMS[field], text);
   return added.toString() === '' ? query : `${query}&${added}`;
 }
@@ -168,11 +183,11 @@ function withReplaced(query: string, field: 'replacedProgram' | 'secondReplacedP
  * its part (the points beside the move, the program beside the machine),
  * and so written or kept on its own (partsToStore).
  */
-const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', replacedProgram: 'gcode', secondReplacedProgram: 'gcode', learnerPoints: 'trace', replacedPoints: 'trace' };
+const LONG_TEXT_MODES: Record<LongText, AppState['mode']> = { gcode: 'gcode', replacedProgram: 'gcode', secondReplacedProgram: 'gcode', learnerPoints: 'trace', replacedPoints: 'trace', secondReplacedPoints: 'trace' };
 
 /** The input each mode's part keeps for a visit in another mode (storedState takes these of it). */
 const PART_INPUTS: Record<AppState['mode'], readonly (keyof AppState)[]> = {
-  trace: ['algorithm', 'options', 'learnerPoints', 'replacedPoints'],
+  trace: ['algorithm', 'options', 'learnerPoints', 'replacedPoints', 'replacedPointsBy', 'secondReplacedPoints'],
   compare: ['other', 'layout'],
   gcode: ['gcode', 'replacedProgram', 'replacedBy', 'secondReplacedProgram', 'machine', 'slowdown'],
   experiment: ['experiment'],
@@ -277,19 +292,23 @@ function readParts(
   if (!shown) return undefined;
   if (!trace || !compare || !gcode || !experiment) return { shown, typed: undefined };
   const [traceParams, gcodeParams] = [new URLSearchParams(parts.trace), new URLSearchParams(parts.gcode)];
+  const replacedPoints = longText('replacedPoints', parts.trace!) ?? traceParams.get(LONG_TEXT_PARAMS.replacedPoints) ?? '';
   const typed: AppState = {
     ...trace,
     other: compare.other,
     layout: compare.layout,
     gcode: longText('gcode', parts.gcode!) ?? gcode.gcode,
     replacedProgram: longText('replacedProgram', parts.gcode!) ?? gcodeParams.get(LONG_TEXT_PARAMS.replacedProgram) ?? '',
-    replacedBy: gcodeParams.get(REPLACED_BY_PARAM) ?? '',
+    replacedBy: gcodeParams.get(REPLACED_BY.replacedProgram) ?? '',
     secondReplacedProgram: longText('secondReplacedProgram', parts.gcode!) ?? gcodeParams.get(LONG_TEXT_PARAMS.secondReplacedProgram) ?? '',
     machine: gcode.machine,
     slowdown: gcode.slowdown,
     experiment: experiment.experiment,
     learnerPoints: longText('learnerPoints', parts.trace!) ?? trace.learnerPoints,
-    replacedPoints: longText('replacedPoints', parts.trace!) ?? traceParams.get(LONG_TEXT_PARAMS.replacedPoints) ?? '',
+    replacedPoints,
+    // Kept before points had more than one way to be replaced: by another tab's.
+    replacedPointsBy: traceParams.get(REPLACED_BY.replacedPoints) ?? (replacedPoints === '' ? '' : ANOTHER_TABS_POINTS),
+    secondReplacedPoints: longText('secondReplacedPoints', parts.trace!) ?? traceParams.get(LONG_TEXT_PARAMS.secondReplacedPoints) ?? '',
   };
   return { shown, typed };
 }
@@ -334,6 +353,8 @@ function withOtherModes(catalogue: Catalogue, described: AppState, params: URLSe
   // default program; the page withdraws the offer of another sample as
   // loaded (their texts are the site's to fetch).
   Object.assign(state, programReplaced(typed, state.gcode, "the link's program", typed.gcode !== DEFAULT_GCODE));
+  // A link's points replacing the ones typed keep them, as its program does.
+  Object.assign(state, pointsReplaced(typed, state.learnerPoints, "the link's points"));
   if (state.mode !== 'gcode') Object.assign(state, { machine: typed.machine, slowdown: typed.slowdown });
   if (state.mode !== 'experiment') state.experiment = typed.experiment;
   if (state.mode === 'gcode' || (state.mode === 'experiment' && typed.algorithm === state.algorithm)) {
@@ -475,7 +496,7 @@ export interface OtherTabEdits {
   /**
    * The other tab's program or points, written over, kept to bring back:
    * the program fields (programReplaced; not the default program), and
-   * replacedPoints (not none).
+   * the points fields (not none).
    */
   kept: Partial<AppState>;
 }
@@ -501,7 +522,7 @@ export function otherTabEdits(seen: AppState, stored: AppState, written: AppStat
   }
   const replaced = both.includes('gcode') ? programReplaced({ gcode: stored.gcode, replacedProgram: '', replacedBy: '', secondReplacedProgram: '' }, current.gcode, ANOTHER_TABS_PROGRAM, stored.gcode !== DEFAULT_GCODE) : undefined;
   const kept: Partial<AppState> = replaced && replaced.replacedProgram !== '' ? { replacedProgram: replaced.replacedProgram, replacedBy: replaced.replacedBy } : {};
-  if (both.includes('learnerPoints') && stored.learnerPoints !== '') kept.replacedPoints = stored.learnerPoints;
+  if (both.includes('learnerPoints') && stored.learnerPoints !== '') Object.assign(kept, { replacedPoints: stored.learnerPoints, replacedPointsBy: ANOTHER_TABS_POINTS });
   return { followed, both, kept };
 }
 
