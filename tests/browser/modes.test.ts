@@ -428,7 +428,8 @@ describe('the mode tabs', () => {
     release();
     await pressed;
     await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor({ timeout: 15_000 });
-    expect(new URL(page.url()).searchParams.get('mode')).toBe('gcode');
+    // Its address too, written within the write delay (400 ms).
+    await page.waitForURL((url) => url.searchParams.get('mode') === 'gcode');
     expect(p.problems()).toEqual([]);
     await p.close();
   });
