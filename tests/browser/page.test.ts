@@ -33,6 +33,14 @@ async function traced(page: Page, steps: number): Promise<void> {
 }
 
 /**
+ * How long a test waits for another tab's edit to show in a tab: the writer
+ * waits 400 ms (the write delay) before it writes, and the reader follows
+ * at the storage event; expect.poll's own second was too short for this
+ * under CI's load (the caret test saw the program before the edit at 1 s).
+ */
+const TABS_POLL_MS = 10_000;
+
+/**
  * Waits until G-code mode's status says `status` (the program and machine
  * run); if it never does, fails with what the page shows and what storage
  * holds, which say which tab's write was lost.
@@ -506,7 +514,7 @@ describe('the page', () => {
     expect(await b.getByTestId('tabs-note').innerText()).toBe(
       "Another tab changed the program at the same time as this one: what this tab has is kept, and is what a reload shows. The other tab's program is offered back beside the editor.",
     );
-    await expect.poll(() => a.page.getByTestId('gcode-text').inputValue()).toBe(programB);
+    await expect.poll(() => a.page.getByTestId('gcode-text').inputValue(), { timeout: TABS_POLL_MS }).toBe(programB);
     await a.page.getByTestId('gcode-replaced').filter({ hasText: offers.get(a.page) }).waitFor();
     for (const [page, offer] of offers) {
       await page.reload();
@@ -535,7 +543,7 @@ describe('the page', () => {
     await a.page.waitForFunction(() => localStorage.getItem('voxpath.gcode') !== null);
     await b.getByTestId('gcode-text').fill(programB);
     await b.getByTestId('gcode-replaced').filter({ hasText: "The other tab's program (151 lines), typed at the same time, was written over by this one." }).waitFor();
-    await expect.poll(() => a.page.getByTestId('gcode-text').inputValue()).toBe(programB);
+    await expect.poll(() => a.page.getByTestId('gcode-text').inputValue(), { timeout: TABS_POLL_MS }).toBe(programB);
     // B, whose program was kept, picks a sample: its own program is offered
     // first, A's still (it held the offer) under it; A, following, says the same from its side.
     await b.getByTestId('sample').selectOption('helix.gcode');
@@ -598,7 +606,7 @@ describe('the page', () => {
     expect(await b.getByTestId('tabs-note').innerText()).toBe(
       "Another tab changed your points at the same time as this one: what this tab has is kept, and is what a reload shows. The other tab's points are offered back in Check points.",
     );
-    await expect.poll(() => a.page.getByTestId('learner-points').inputValue()).toBe(pointsB);
+    await expect.poll(() => a.page.getByTestId('learner-points').inputValue(), { timeout: TABS_POLL_MS }).toBe(pointsB);
     await a.page.getByTestId('learner-replaced').filter({ hasText: offer }).waitFor();
     await b.reload();
     await b.getByTestId('learner-replaced').filter({ hasText: othersOffer }).waitFor();
@@ -646,7 +654,7 @@ describe('the page', () => {
     await offered(b, bothOffered);
     // A's brought back in B: B's own stay offered, as A's words after the clash were.
     await b.getByTestId('learner-second-bring-back').click();
-    await expect.poll(() => b.getByTestId('learner-points').inputValue()).toBe(pointsA);
+    await expect.poll(() => b.getByTestId('learner-points').inputValue(), { timeout: TABS_POLL_MS }).toBe(pointsA);
     const bOffered = ["Your points (2 lines) were replaced by another tab's, typed at the same time. Bring them back", ''];
     await offered(b, bOffered);
     await b.reload();
@@ -655,10 +663,10 @@ describe('the page', () => {
     expect(await b.getByTestId('learner-points').inputValue()).toBe(pointsA);
     // And B's own brought back: the offers go, B's points stay over a reload.
     await b.getByTestId('learner-bring-back').click();
-    await expect.poll(() => b.getByTestId('learner-points').inputValue()).toBe(pointsB);
+    await expect.poll(() => b.getByTestId('learner-points').inputValue(), { timeout: TABS_POLL_MS }).toBe(pointsB);
     await b.reload();
     await traced(b, 10);
-    await expect.poll(() => b.getByTestId('learner-points').inputValue()).toBe(pointsB);
+    await expect.poll(() => b.getByTestId('learner-points').inputValue(), { timeout: TABS_POLL_MS }).toBe(pointsB);
     expect(await offers(b)).toEqual(['', '']);
     expect(a.problems()).toEqual([]);
     await a.close();
@@ -719,7 +727,7 @@ describe('the page', () => {
     const moves = Array.from({ length: 60 }, (_, i) => `G1 X${i} Y${i} F600`);
     const before = `G21 G90\n${moves.join('\n')}\n`;
     await a.page.getByTestId('gcode-text').fill(before);
-    await expect.poll(() => b.getByTestId('gcode-text').inputValue()).toBe(before);
+    await expect.poll(() => b.getByTestId('gcode-text').inputValue(), { timeout: TABS_POLL_MS }).toBe(before);
     const box = b.getByTestId('gcode-text');
     await box.focus();
     await box.evaluate((text: HTMLTextAreaElement, [start, end]) => {
@@ -731,13 +739,13 @@ describe('the page', () => {
     // A lengthens line 10: lines 40 and 41 stand further on in the text, at the same line and column.
     const after = before.replace('G1 X8 Y8 F600', 'G1 X8 Y8 Z2 F600 (over the clamp)');
     await a.page.getByTestId('gcode-text').fill(after);
-    await expect.poll(() => box.inputValue()).toBe(after);
+    await expect.poll(() => box.inputValue(), { timeout: TABS_POLL_MS }).toBe(after);
     expect(await caret(b, 'gcode-text')).toEqual({ ...read, start: offsetIn(after, 40, 3), end: offsetIn(after, 41, 5) });
     // A shorter program: the selection's end, on line 40, clamped to the last line, its column to that line's end.
     await box.evaluate((text: HTMLTextAreaElement, [start, end]) => text.setSelectionRange(start!, end!), [offsetIn(after, 1, 5), offsetIn(after, 40, 12)]);
     const short = 'G21 G90\nG1 X3 Y4 F600\nG1 X7';
     await a.page.getByTestId('gcode-text').fill(short);
-    await expect.poll(() => box.inputValue()).toBe(short);
+    await expect.poll(() => box.inputValue(), { timeout: TABS_POLL_MS }).toBe(short);
     expect(await caret(b, 'gcode-text')).toMatchObject({ start: offsetIn(short, 1, 5), end: offsetIn(short, 3, 5), direction: 'forward', focused: true });
     // The points in Check points, likewise.
     await Promise.all([a.page, b].map((page) => page.getByTestId('mode-trace').click()));
@@ -745,12 +753,12 @@ describe('the page', () => {
     const points = Array.from({ length: 4 }, (_, i) => `${i},${i},0`).join('\n');
     await a.page.getByTestId('learner-points').fill(points);
     const pointsBox = b.getByTestId('learner-points');
-    await expect.poll(() => pointsBox.inputValue()).toBe(points);
+    await expect.poll(() => pointsBox.inputValue(), { timeout: TABS_POLL_MS }).toBe(points);
     await pointsBox.focus();
     await pointsBox.evaluate((text: HTMLTextAreaElement, at) => text.setSelectionRange(at, at), offsetIn(points, 2, 2));
     const morePoints = `0,0,0\n${points}`;
     await a.page.getByTestId('learner-points').fill(morePoints);
-    await expect.poll(() => pointsBox.inputValue()).toBe(morePoints);
+    await expect.poll(() => pointsBox.inputValue(), { timeout: TABS_POLL_MS }).toBe(morePoints);
     expect(await caret(b, 'learner-points')).toMatchObject({ start: offsetIn(morePoints, 2, 2), end: offsetIn(morePoints, 2, 2), focused: true });
     expect(a.problems()).toEqual([]);
     await a.close();
