@@ -372,8 +372,12 @@ pub fn round_half_away_within(x: f64, error: f64) -> f64 {
 
 /// `numerator / denominator` (denominator > 0) rounded to the nearest whole
 /// number, halves away from zero, exactly: the quotient's half is a half,
-/// where the product of a float fraction may fall either side of it.
-pub fn round_ratio_half_away(numerator: i128, denominator: i128) -> i128 {
+/// where the product of a float fraction may fall either side of it. In
+/// i64, not i128 (in wasm a call into software a multiplication and a
+/// division): its caller, a helix's chord heights, passes a rise of at most
+/// 2^31 times a chord index of at most 2^16, so 2 |numerator| + denominator
+/// stays under 2^49.
+pub fn round_ratio_half_away(numerator: i64, denominator: i64) -> i64 {
     debug_assert!(denominator > 0);
     numerator.signum() * ((2 * numerator.abs() + denominator) / (2 * denominator))
 }
@@ -515,6 +519,27 @@ mod tests {
             Point::parse("from", &[-3.0, 4.0]).unwrap(),
             Point::new(&[-3, 4])
         );
+    }
+
+    /// Exact at the largest inputs its caller passes (a rise of ±2^31 at
+    /// chord i of 2^16), against the quotient rounded in i128.
+    #[test]
+    fn ratio_rounds_halves_away_at_the_largest_heights() {
+        let n = 1i64 << 16;
+        for rise in [(1i64 << 31), -(1i64 << 31), (1 << 31) - 1, 3, -3, 0] {
+            for i in [1, 2, n / 2, n - 1, n] {
+                let exact = (rise as i128 * i as i128 * 2 + (n as i128) * (rise as i128).signum())
+                    / (2 * n as i128);
+                assert_eq!(
+                    round_ratio_half_away(rise * i, n) as i128,
+                    exact,
+                    "{rise} {i}"
+                );
+            }
+        }
+        assert_eq!(round_ratio_half_away(5, 2), 3);
+        assert_eq!(round_ratio_half_away(-5, 2), -3);
+        assert_eq!(round_ratio_half_away(7, 3), 2);
     }
 
     #[test]

@@ -262,10 +262,13 @@ pub fn vertices(spec: &ArcSpec, n: u64) -> Vec<Vertex> {
         (center.unsigned_abs() as f64 + r * (1.0 + theta.abs())) * (VERTEX_HALF_ULPS * f64::EPSILON)
     };
     let mut out: Vec<Vertex> = Vec::with_capacity(n as usize);
-    let mut previous = spec.from;
+    // Compared as three coordinates, not as Points: a Point is MAX_AXES
+    // coordinates and its axis count, and comparing two was a memcmp call.
+    let to = spec.to.coords();
+    let mut previous = [spec.from.get(0), spec.from.get(1), spec.from.get(2)];
     for i in 1..=n {
-        let point = if i == n {
-            spec.to
+        let p = if i == n {
+            [to[0], to[1], to[2]]
         } else {
             let t = i as f64 / n as f64;
             let theta = start + sweep * t;
@@ -273,16 +276,16 @@ pub fn vertices(spec: &ArcSpec, n: u64) -> Vec<Vertex> {
             let (sin, cos) = sin_cos_turns(theta);
             p[u] = round_half_away_within(c.get(u) as f64 + r * cos, error(c.get(u), theta)) as i64;
             p[v] = round_half_away_within(c.get(v) as f64 + r * sin, error(c.get(v), theta)) as i64;
-            let height = round_ratio_half_away(spec.rise as i128 * i as i128, n as i128);
-            p[normal] = spec.from.get(normal) + height as i64;
-            Point::new(&p)
+            p[normal] =
+                spec.from.get(normal) + round_ratio_half_away(spec.rise * i as i64, n as i64);
+            p
         };
-        if point != previous {
+        if p != previous {
             out.push(Vertex {
-                point,
+                point: Point::new(&p),
                 fraction: i as f64 / n as f64,
             });
-            previous = point;
+            previous = p;
         }
     }
     out
@@ -369,18 +372,11 @@ fn chords_by(
     }
     let line_request = Request::new(line, line_options);
     let notes = Rc::new(ChordNotes {
-        intro: {
-            let sagitta = spec.radius() * (1.0 - (spec.sweep_rad().abs() / (2 * n) as f64).cos());
-            format!(
-                "{}. {}{}, each of sagitta {sagitta:.3}; vertices are the arc points at i/{n} of the sweep, rounded to the grid. ",
-                spec.describe(),
-                chording.describe(counted),
-                if n > counted {
-                    format!(", raised to {n}, the fewest that go around a full circle")
-                } else {
-                    String::new()
-                },
-            )
+        intro: ChordingIntro {
+            spec: spec.clone(),
+            chording,
+            counted,
+            chords: n,
         },
         start: spec.from,
         chords,
@@ -490,10 +486,40 @@ impl Chords {
     }
 }
 
+/// The sentence before the first chord's note: the arc and how its chords
+/// were counted. Kept as its parts and written when a note is read (most
+/// traces never read one): formatting it took about 1% of the r = 300,000
+/// circle's trace in 1,720 chords, which the circle itself does not pay.
+struct ChordingIntro {
+    spec: ArcSpec,
+    chording: Chording,
+    /// Chords the rule counted, and the chords taken (more for a full
+    /// circle counted under [`MIN_FULL_CIRCLE_CHORDS`]).
+    counted: u64,
+    chords: u64,
+}
+
+impl ChordingIntro {
+    fn text(&self) -> String {
+        let (spec, n, counted) = (&self.spec, self.chords, self.counted);
+        let sagitta = spec.radius() * (1.0 - (spec.sweep_rad().abs() / (2 * n) as f64).cos());
+        format!(
+            "{}. {}{}, each of sagitta {sagitta:.3}; vertices are the arc points at i/{n} of the sweep, rounded to the grid. ",
+            spec.describe(),
+            self.chording.describe(counted),
+            if n > counted {
+                format!(", raised to {n}, the fewest that go around a full circle")
+            } else {
+                String::new()
+            },
+        )
+    }
+}
+
 /// What a learner reads before each chord: the arc's chording before the
 /// first, then the chord's ends and the part of the arc it stands for.
 struct ChordNotes {
-    intro: String,
+    intro: ChordingIntro,
     start: Point,
     chords: Vec<Vertex>,
     start_rad: f64,
@@ -519,7 +545,11 @@ impl ChordNotes {
         let (from, to) = self.ends(k);
         format!(
             "{}Chord {} of {}: {} -> {}, the arc from {:.1}° to {:.1}°, stepped by {}:",
-            if k == 0 { self.intro.as_str() } else { "" },
+            if k == 0 {
+                self.intro.text()
+            } else {
+                String::new()
+            },
             k + 1,
             self.chords.len(),
             from.point,
