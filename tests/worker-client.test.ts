@@ -1,11 +1,12 @@
 // The page's worker client: replies matched by id, the core's input errors
-// kept apart from crashes, and a crashed worker replaced so the page goes on.
+// kept apart from crashes, a crashed worker replaced so the page goes on,
+// and a Cancel honoured even when the worker had already answered.
 // A scripted fake stands in for the Worker; the real worker runs in the
 // browser tests.
 import { describe, expect, it } from 'vitest';
-import { CoreCrash, InputRejected, TraceClient, type WorkerPort } from '../web/worker/client.js';
+import { Cancelled, CoreCrash, InputRejected, TraceClient, type WorkerPort } from '../web/worker/client.js';
 import { pointsEvery } from '../web/worker/protocol.js';
-import type { ReplyMessage, RequestMessage, TracedPath } from '../web/worker/protocol.js';
+import type { ProgramRecord, ReplyMessage, RequestMessage, TracedPath, WorkerRequest } from '../web/worker/protocol.js';
 
 class FakeWorker implements WorkerPort {
   onmessage: ((event: MessageEvent<ReplyMessage>) => void) | null = null;
@@ -189,5 +190,97 @@ describe('TraceClient', () => {
     expect(again!.buffer).not.toBe(source.buffer);
     expect(workers[0]!.transferred[1]).toEqual([again!.buffer]);
     expect(new TextDecoder().decode(edited)).toBe(`${text}G0 X0\n`);
+  });
+
+  describe('a Cancel', () => {
+    /** The request the worker received as message `index`, with its id. */
+    function requestAt(worker: FakeWorker, index: number): { id: number; request: WorkerRequest } {
+      const message = worker.received[index]!;
+      if (!('request' in message)) throw new Error(`message ${index} is a cancel, not a request`);
+      return message;
+    }
+
+    it("made before the worker's answer was handled rejects with Cancelled, and frees the trace or program that answer left in the worker", async () => {
+      // The worker had ended before the cancel reached it: its answer was on
+      // its way (or queued behind the main thread's drawing), and the path
+      // was shown though Cancel had been pressed.
+      const { client, workers } = setUp();
+      const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] });
+      const run = client.runGcode('G1 X1\n', { stepsPerMm: 80 }, () => undefined);
+      const worker = workers[0]!;
+      const [traceRequest, programRequest] = [requestAt(worker, 0), requestAt(worker, 1)];
+      traced.cancel();
+      run.cancel();
+      expect(worker.received.slice(2)).toEqual([
+        { id: traceRequest.id, cancel: true },
+        { id: programRequest.id, cancel: true },
+      ]);
+      worker.reply({ id: traceRequest.id, ok: true, value: PATH });
+      worker.reply({ id: programRequest.id, ok: true, value: { ...PATH, program: {} as ProgramRecord } });
+      await expect(traced.result).rejects.toBeInstanceOf(Cancelled);
+      await expect(run.result).rejects.toBeInstanceOf(Cancelled);
+      // Nothing on the page holds them to free them later.
+      const frees = worker.received.slice(4).map((m) => ('request' in m ? m.request : m));
+      expect(frees).toEqual([
+        { kind: 'free', traceId: (traceRequest.request as { traceId: number }).traceId },
+        { kind: 'free', traceId: (programRequest.request as { traceId: number }).traceId },
+      ]);
+    });
+
+    it('rejects with Cancelled whatever the worker answers, and frees nothing that the answer did not leave in the worker', async () => {
+      const { client, workers } = setUp();
+      const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] }).result;
+      const worker = workers[0]!;
+      worker.reply({ id: requestAt(worker, 0).id, ok: true, value: PATH });
+      const rule = await traced;
+      const rows = rule.series(2000);
+      const exported = rule.exportAs('csv', () => undefined);
+      const stopped = rule.exportAs('json', () => undefined);
+      for (const running of [rows, exported, stopped]) running.cancel();
+      const [rowsId, exportId, stoppedId] = [1, 2, 3].map((index) => requestAt(worker, index).id);
+      worker.reply({ id: rowsId!, ok: false, failure: 'error', message: 'Error: this worker holds no trace 1' });
+      worker.reply({ id: exportId!, ok: true, value: new Blob(['x,y,z\n']) });
+      worker.reply({ id: stoppedId!, ok: false, failure: 'cancelled', message: 'AbortError: aborted' });
+      for (const running of [rows, exported, stopped]) await expect(running.result).rejects.toBeInstanceOf(Cancelled);
+      // The three requests and their three cancels: no free.
+      expect(worker.received).toHaveLength(1 + 3 + 3);
+    });
+
+    it('made after the answer was handled changes nothing', async () => {
+      const { client, workers } = setUp();
+      const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] });
+      const worker = workers[0]!;
+      worker.reply({ id: requestAt(worker, 0).id, ok: true, value: PATH });
+      const trace = await traced.result;
+      traced.cancel();
+      expect(await traced.result).toBe(trace);
+      expect(trace.alive).toBe(true);
+      // No cancel, and no free of the trace the page now holds.
+      expect(worker.received).toHaveLength(1);
+    });
+
+    it('stops the progress reported: a report that comes after it is not passed on', async () => {
+      const { client, workers } = setUp();
+      const reports: number[] = [];
+      const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] }, (progress) => reports.push(progress.pointsDone));
+      const worker = workers[0]!;
+      const { id } = requestAt(worker, 0);
+      worker.reply({ id, progress: { pointsDone: 1, points: 2, done: false } });
+      traced.cancel();
+      worker.reply({ id, progress: { pointsDone: 2, points: 2, done: true } });
+      worker.reply({ id, ok: false, failure: 'cancelled', message: 'AbortError: aborted' });
+      await expect(traced.result).rejects.toBeInstanceOf(Cancelled);
+      expect(reports).toEqual([1]);
+    });
+
+    it('still lets a crash of the worker say so', async () => {
+      // The page restarts the worker and says why; a Cancelled would read as the user's own doing.
+      const { client, workers, crashes } = setUp();
+      const traced = client.trace({ algorithm: 'regions', from: [0, 0, 0], to: [1, 1, 0] });
+      traced.cancel();
+      workers[0]!.reply({ id: requestAt(workers[0]!, 0).id, ok: false, failure: 'crash', message: 'RuntimeError: unreachable' });
+      await expect(traced.result).rejects.toBeInstanceOf(CoreCrash);
+      expect(crashes).toEqual(['RuntimeError: unreachable']);
+    });
   });
 });

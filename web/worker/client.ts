@@ -10,6 +10,7 @@
 import type { ExperimentProgress, GcodeMove, GcodeProgress, GcodeSettings, MotionChart, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
 import type { ChartSeries, IdealLine, PointBounds, PointsProgress, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
 import { utf8Bytes } from '../core/utf8.js';
+import { traceIdHeldAfter } from './protocol.js';
 import type {
   ExportFormat,
   ExportProgress,
@@ -67,12 +68,22 @@ interface Pending {
   resolve(value: ReplyValue[RequestKind]): void;
   reject(error: Error): void;
   onProgress?: (progress: ProgressValue[LongRequestKind]) => void;
+  /** The trace the worker holds once it has answered (traceIdHeldAfter): freed when the answer comes after a cancel. */
+  holds: number | undefined;
+  /** The page cancelled it: its progress is dropped, and whatever the worker answers, it rejects with Cancelled. */
+  cancelled: boolean;
 }
 
 /** A request under way that can be stopped. */
 export interface Running<T> {
   result: Promise<T>;
-  /** Asks the worker to stop; `result` then rejects with Cancelled (unless it had finished). */
+  /**
+   * Asks the worker to stop. Unless `result` had already settled, it then
+   * rejects with Cancelled when the worker answers, even with a result made
+   * before the cancel reached it (whose trace, if it holds one, is freed),
+   * and no more progress is reported; a crash of the worker meanwhile still
+   * rejects it with CoreCrash, as it does every request.
+   */
   cancel(): void;
 }
 
@@ -129,10 +140,20 @@ export class TraceClient {
     const pending = this.#pending.get(reply.id);
     if (!pending) return;
     if ('progress' in reply) {
-      pending.onProgress?.(reply.progress);
+      // After a cancel the page has taken the run as stopped: a report would show its bar again.
+      if (!pending.cancelled) pending.onProgress?.(reply.progress);
       return;
     }
     this.#pending.delete(reply.id);
+    if (pending.cancelled && (reply.ok || reply.failure === 'input' || reply.failure === 'error')) {
+      // The worker had ended before the cancel reached it (its answer on
+      // its way, or not yet handled by a busy main thread): the user pressed
+      // Cancel, and is not shown it. Nothing else will hold what it left in
+      // the worker.
+      if (reply.ok && pending.holds !== undefined) this.freeTrace(pending.holds);
+      pending.reject(new Cancelled('cancelled after the worker had answered'));
+      return;
+    }
     if (reply.ok) pending.resolve(reply.value);
     else if (reply.failure === 'input') pending.reject(new InputRejected(reply.error));
     else if (reply.failure === 'error') pending.reject(new Error(reply.message));
@@ -167,15 +188,25 @@ export class TraceClient {
     const id = this.#nextId++;
     const worker = this.#port();
     const result = new Promise<ReplyValue[K]>((resolve, reject) => {
-      this.#pending.set(id, { resolve: resolve as Pending['resolve'], reject, onProgress: onProgress as Pending['onProgress'] });
+      this.#pending.set(id, { resolve: resolve as Pending['resolve'], reject, onProgress: onProgress as Pending['onProgress'], holds: traceIdHeldAfter(request), cancelled: false });
       worker.postMessage({ id, request }, transfer);
     });
     return {
       result,
       cancel: () => {
-        if (this.#pending.has(id) && this.#worker === worker) worker.postMessage({ id, cancel: true });
+        const pending = this.#pending.get(id);
+        // Ids are never reused: a request lost with a crashed worker is no longer pending.
+        if (!pending || pending.cancelled) return;
+        pending.cancelled = true;
+        worker.postMessage({ id, cancel: true });
       },
     };
+  }
+
+  /** Releases the worker's trace (or program) `traceId`: a RemoteTrace's (free), or one whose answer came after a cancel. */
+  freeTrace(traceId: number): void {
+    // A crash while this is on its way takes the trace with it: nothing to report.
+    this.request({ kind: 'free', traceId }).catch(() => undefined);
   }
 
   /** Every algorithm and experiment the core runs. */
@@ -341,8 +372,7 @@ export class RemoteTrace {
 
   /** Releases the worker's copy; a trace lost in a crash has nothing left to free. */
   free(): void {
-    // A crash while this is on its way takes the trace with it: nothing to report.
-    if (this.alive) this.#client.request({ kind: 'free', traceId: this.traceId }).catch(() => undefined);
+    if (this.alive) this.#client.freeTrace(this.traceId);
   }
 }
 

@@ -56,6 +56,17 @@ export type WorkerRequest =
 export type RequestKind = WorkerRequest['kind'];
 
 /**
+ * The trace id a successful reply to `request` leaves the worker holding (a
+ * trace, or a program and its trace) until the page frees it; undefined
+ * when the worker keeps nothing of it. A request kind that keeps something
+ * must say so here: the client frees it when the page had cancelled the
+ * request before its reply came.
+ */
+export function traceIdHeldAfter(request: WorkerRequest): number | undefined {
+  return request.kind === 'trace' || request.kind === 'gcode' ? request.traceId : undefined;
+}
+
+/**
  * The summary the page receives: the trace's, with its metrics. Not its
  * segments: a G-code program has a segment per move (100,000 for a program
  * of 100,000 lines), which the page would take a long task to receive; the
