@@ -42,8 +42,6 @@ export class PathCharts {
   /** The trace charted (or to chart), and its rows on their way from the worker. */
   #trace: ChartedTrace | undefined;
   #running: Running<ChartSeries> | undefined;
-  /** Whether the rows on their way were cancelled (cancel): rows that come after it are dropped. */
-  #cancelRequested = false;
 
   constructor(container: HTMLElement, onPick: (pointIndex: number) => void, run: ChartsRunElements) {
     this.#container = container;
@@ -63,7 +61,6 @@ export class PathCharts {
     const request = ++this.#request;
     this.#running?.cancel();
     this.#running = undefined;
-    this.#cancelRequested = false;
     this.#trace = trace;
     this.#pointIndex = pointIndex;
     this.#progress.set(undefined);
@@ -79,12 +76,8 @@ export class PathCharts {
         throttled(current, (progress) => this.#progress.set(pointsBar(progress))),
       );
       try {
+        // Cancelled, even when the rows were made before the Cancel reached the worker (Running.cancel).
         series = await this.#running.result;
-        // Cancel pressed at a report that came after the worker had ended
-        // (the main thread busy drawing the new path while the rows were
-        // made): the rows came anyway, and were charted though Cancel was
-        // pressed while the bar showed. Taken as cancelled.
-        if (current() && this.#cancelRequested) throw new Cancelled('cancelled after the rows were made');
       } catch (error) {
         // Rows asked for a trace no longer charted: dropped (its trace may be freed meanwhile).
         if (!current()) return;
@@ -152,9 +145,7 @@ export class PathCharts {
 
   /** Stops the rows on their way (a Cancel, or new inputs whose path will replace this one): the charts say so, with Draw charts. */
   cancel(): void {
-    if (!this.#running) return;
-    this.#cancelRequested = true;
-    this.#running.cancel();
+    this.#running?.cancel();
   }
 
   #destroy(): void {
