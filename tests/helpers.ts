@@ -29,6 +29,20 @@ export function voxpathPipedInto(args: string[], reader: string): { code: number
   return { code: Number(r.stdout.trim()), stderr: (r.output[3] as string | null) ?? '' };
 }
 
+/**
+ * Runs `act` in a task of its own, after the one that calls this: as a
+ * worker receives a message (a cancel), and as the core's slices yield
+ * (yieldToEventLoop, a message on a channel too, not a timer).
+ */
+export function inTaskOfItsOwn(act: () => void): void {
+  const { port1, port2 } = new MessageChannel();
+  port1.onmessage = () => {
+    port1.close();
+    act();
+  };
+  port2.postMessage(null);
+}
+
 /** The VoxpathError `promise` rejects with (failing the test if it resolves or rejects with anything else). */
 export async function rejection(promise: Promise<unknown>): Promise<VoxpathError> {
   const error = await promise.then(

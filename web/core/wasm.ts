@@ -3,7 +3,8 @@
  * importers of the generated package in ./pkg.
  */
 import init, * as bindings from './pkg/voxpath.js';
-import { encodeUtf8Into } from './utf8.js';
+import { advanceForTime, yieldToEventLoop } from './slices.js';
+import { Utf8Encoding } from './utf8.js';
 
 export type CoreBindings = typeof bindings;
 
@@ -71,21 +72,80 @@ export function heapBytes(): number {
  * a Buffer, a program the page encoded before sending it to its worker).
  */
 export function withTextBytes<T>(core: CoreBindings, text: string | Uint8Array, use: (bytes: bindings.TextBytes) => T): T {
-  // The room last made (a first one too small for a string is freed).
-  const made: { bytes?: bindings.TextBytes } = {};
-  const room = (length: number) => {
-    made.bytes?.free();
-    made.bytes = new core.TextBytes(length);
-    return made.bytes.view();
-  };
+  const writing = new TextBytesWriting(core, text);
   try {
-    if (typeof text !== 'string') room(text.length).set(text);
-    else {
-      const written = encodeUtf8Into(text, room);
-      made.bytes!.truncate(written);
-    }
-    return use(made.bytes!);
+    while (!writing.advance(Infinity).done);
+    return use(writing.bytes);
   } finally {
-    made.bytes?.free();
+    writing.free();
+  }
+}
+
+/**
+ * UTF-16 units of a string withTextBytesInSlices encodes a call: about 1 to
+ * 3 ms in a Chromium worker, a fraction of one in Node.
+ */
+const TEXT_UNITS_PER_CALL = 262_144;
+
+/**
+ * withTextBytes a slice of about `sliceMs` at a time (advanceForTime), the
+ * event loop let run between slices and before `use`, stopped by `signal`
+ * (rejecting with its reason, the bytes freed): a check's 19 MB of points
+ * took 70 to 200 ms to encode into wasm memory in one call in a Chromium
+ * worker, which a Cancel waited for.
+ */
+export async function withTextBytesInSlices<T>(
+  core: CoreBindings,
+  text: string | Uint8Array,
+  use: (bytes: bindings.TextBytes) => T,
+  signal: AbortSignal | undefined,
+  sliceMs: number,
+): Promise<T> {
+  const writing = new TextBytesWriting(core, text);
+  try {
+    await advanceForTime(() => writing.advance(TEXT_UNITS_PER_CALL), signal === undefined ? {} : { signal }, sliceMs);
+    await yieldToEventLoop();
+    signal?.throwIfAborted();
+    return use(writing.bytes);
+  } finally {
+    writing.free();
+  }
+}
+
+/** Text being put into wasm memory as UTF-8: a string a part at a time (Utf8Encoding), bytes copied in at once. */
+class TextBytesWriting {
+  /** The room last made (a first one too small for a string is freed), and its size. */
+  #room: bindings.TextBytes | undefined;
+  #roomBytes = 0;
+  readonly #encoding: Utf8Encoding | undefined;
+
+  constructor(core: CoreBindings, text: string | Uint8Array) {
+    const room = (bytes: number) => {
+      if (this.#room === undefined || bytes !== this.#roomBytes) {
+        this.#room?.free();
+        this.#room = new core.TextBytes(bytes);
+        this.#roomBytes = bytes;
+      }
+      return this.#room.view();
+    };
+    if (typeof text === 'string') this.#encoding = new Utf8Encoding(text, room);
+    else room(text.length).set(text);
+  }
+
+  /** Writes up to `units` more UTF-16 units of a string; whether the whole text is written now. */
+  advance(units: number): { done: boolean } {
+    if (this.#encoding === undefined) return { done: true };
+    if (!this.#encoding.advance(units)) return { done: false };
+    this.#room!.truncate(this.#encoding.written);
+    return { done: true };
+  }
+
+  /** The text's bytes, once written. */
+  get bytes(): bindings.TextBytes {
+    return this.#room!;
+  }
+
+  free(): void {
+    this.#room?.free();
   }
 }
