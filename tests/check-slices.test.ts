@@ -7,6 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { type Check, type CheckProgress, checkPoints, readAndCheckPoints, readPoints, trace, type TraceOptions, traceToCsv } from '../web/core/index.js';
 import { loadCore, withTextBytes } from '../web/core/wasm.js';
 import { checkBar } from '../web/form/run-progress.js';
+import { inTaskOfItsOwn } from './helpers.js';
 
 /** Moves of each family, each long enough to take several slices. */
 const RULES: Record<string, TraceOptions> = {
@@ -162,6 +163,24 @@ describe('a check made in slices', () => {
     expect(seen).toHaveLength(1);
     expect(seen[0]!.stage).toBe('reading');
     expect(seen[0]!.bytesRead).toBeLessThan(seen[0]!.bytes);
+  });
+
+  it('stops before its first slice when its signal is aborted as it starts', async () => {
+    // The text put into wasm memory and the run made were one task before
+    // the first slice (0.1 to 0.25 s in Chromium at the page's cap), which
+    // an abort sent as the check started waited for: the first slice ran.
+    const rule: TraceOptions = { algorithm: 'helix', from: [250, 0, 0], to: [250, 0, 300], center: [0, 0, 0], plane: 'xy', turns: 106 };
+    const t = await trace(rule);
+    const text = traceToCsv(t);
+    t.free();
+    for (const check of [checkPoints, readAndCheckPoints]) {
+      const cancel = new AbortController();
+      const seen: CheckProgress[] = [];
+      const stopped = check(rule, text, { signal: cancel.signal, onProgress: (p) => seen.push(p) });
+      inTaskOfItsOwn(() => cancel.abort());
+      await expect(stopped).rejects.toMatchObject({ name: 'AbortError' });
+      expect(seen).toEqual([]);
+    }
   });
 
   it('stops between slices when its signal is aborted', async () => {

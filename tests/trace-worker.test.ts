@@ -3,9 +3,9 @@
 // which hands it requests and keeps its replies with the buffers it
 // transfers. The page's own worker runs in the browser tests.
 import { beforeAll, describe, expect, it } from 'vitest';
-import { trace, type TraceOptions } from '../web/core/index.js';
-import type { LearnerCheck, PointsSent, ReplyMessage, WorkerRequest } from '../web/worker/protocol.js';
-import { pointsOf } from './helpers.js';
+import { trace, type TraceOptions, traceToCsv } from '../web/core/index.js';
+import type { LearnerCheck, PointsSent, ReplyMessage, RequestMessage, WorkerRequest } from '../web/worker/protocol.js';
+import { inTaskOfItsOwn, pointsOf } from './helpers.js';
 
 type Listener = (event: { data: unknown }) => void;
 let listener: Listener | undefined;
@@ -25,12 +25,16 @@ let nextId = 1;
 async function ask(request: WorkerRequest): Promise<{ value: unknown; transfer: Transferable[] }> {
   const id = nextId++;
   listener!({ data: { id, request } });
+  const reply = await replyTo(id);
+  if (!('value' in reply.message)) throw new Error(`the worker failed: ${JSON.stringify(reply.message)}`);
+  return { value: reply.message.value, transfer: reply.transfer };
+}
+
+/** The worker's reply to request `id`, once posted. */
+async function replyTo(id: number): Promise<{ message: ReplyMessage; transfer: Transferable[] }> {
   for (;;) {
     const reply = posted.find((p) => p.message.id === id && 'ok' in p.message);
-    if (reply) {
-      if (!('value' in reply.message)) throw new Error(`the worker failed: ${JSON.stringify(reply.message)}`);
-      return { value: reply.message.value, transfer: reply.transfer };
-    }
+    if (reply) return reply;
     await new Promise((resolve) => setTimeout(resolve, 0));
   }
 }
@@ -77,5 +81,36 @@ describe("the worker's answer to a check", () => {
     expect(learner.centers).toBeNull();
     expect(learner.bounds).toEqual({ min: [0, 0, 0], max: [400, 3, 1] });
     expect(transfer).toEqual([learner.points!.buffer]);
+  });
+});
+
+describe('a check cancelled as it starts', () => {
+  it("stops before the check's first slice, the points' text not read", async () => {
+    // A helix of 150,000 points, 2 MB of text. The text put into wasm
+    // memory and the run made were one task before the check's first
+    // slice (0.1 to 0.25 s in Chromium at the page's cap), which a Cancel
+    // sent at the check's first report waited for: the first slice ran,
+    // and reported, before the cancel was read.
+    const rule: TraceOptions = { algorithm: 'helix', from: [250, 0, 0], to: [250, 0, 300], center: [0, 0, 0], plane: 'xy', turns: 106 };
+    const t = await trace(rule);
+    const text = traceToCsv(t);
+    t.free();
+    const pointsSent: PointsSent = { allBelow: 1000, sampled: 10 };
+    const traceId = nextId++;
+    await ask({ kind: 'trace', traceId, options: rule, pointsSent });
+    const id = nextId++;
+    listener!({ data: { id, request: { kind: 'check', traceId, options: rule, text, pointsSent } } });
+    // As the page's Cancel reaches the worker: in a task of its own.
+    inTaskOfItsOwn(() => listener!({ data: { id, cancel: true } satisfies RequestMessage }));
+    const reply = await replyTo(id);
+    expect(reply.message).toMatchObject({ ok: false, failure: 'cancelled' });
+    // The worker's own first report, and none of the check's slices.
+    const progress = posted.filter((p) => p.message.id === id && 'progress' in p.message).map((p) => (p.message as { progress: unknown }).progress);
+    expect(progress).toEqual([{ stage: 'reading', done: false }]);
+    // Checked when not cancelled.
+    const again = nextId++;
+    listener!({ data: { id: again, request: { kind: 'check', traceId, options: rule, text, pointsSent } } });
+    expect((await replyTo(again)).message).toMatchObject({ ok: true, value: { check: { matches: true } } });
+    await ask({ kind: 'free', traceId });
   });
 });

@@ -17,9 +17,9 @@ import { callCore } from './errors.js';
 import { argumentError, describeValue, isPromiseLike, isTextOrUtf8, text as guardText, wholeNumber } from './guard.js';
 import { encodeRequest } from './request.js';
 import { advanceForTime, checkSliceOptions, freeStopped, type SliceOptions, yieldToEventLoop } from './slices.js';
-import type { Check, CheckProgress, CheckRun } from './pkg/voxpath.js';
+import type { Check, CheckProgress, CheckRun, TextBytes } from './pkg/voxpath.js';
 import type { TraceOptions } from './types.js';
-import { loadCore, withTextBytes } from './wasm.js';
+import { loadCore, withTextBytes, withTextBytesInSlices } from './wasm.js';
 
 /**
  * A learner's points: rows of [x, y, z] (or [x, y] ...), a flat Int32Array (or Float64Array)
@@ -88,12 +88,14 @@ function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number
  * then the family's option combinations tried), and `signal` stops it
  * between them (at the page's cap, 1,500,000 steps, the whole check took
  * about a second in one call, its text read in 0.1 to 0.2 s of it). The
- * result is the one call's, to the bit. Tracing the rule comes first, in
- * one call (a few ms at the page's cap).
+ * result is the one call's, to the bit. Text is put into wasm memory
+ * first, in slices too (one call of 70 to 200 ms at the page's cap in a
+ * Chromium worker), then the rule is traced, in one call (a few ms), the
+ * signal heard before and after it.
  */
 export async function checkPoints(request: TraceOptions, points: LearnerPoints, runOptions?: CheckOptions): Promise<Check> {
   const sliceMs = runOptions === undefined ? undefined : checkSliceOptions('checkPoints', runOptions);
-  const run = await startCheck(request, points);
+  const run = await startCheck(request, points, runOptions?.signal, sliceMs);
   return (await finishCheck(run, runOptions, sliceMs, false)).check;
 }
 
@@ -105,20 +107,26 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints, 
  */
 export async function readAndCheckPoints(request: TraceOptions, text: string, runOptions?: CheckOptions): Promise<{ check: Check; points: Float64Array }> {
   const sliceMs = runOptions === undefined ? undefined : checkSliceOptions('readAndCheckPoints', runOptions);
-  const run = await startCheck(request, guardText('text', text, 'the points'));
+  const run = await startCheck(request, guardText('text', text, 'the points'), runOptions?.signal, sliceMs);
   const { check, points } = await finishCheck(run, runOptions, sliceMs, true);
   return { check, points: points! };
 }
 
-/** The core's run of a check of `points` against `request`, not advanced yet. */
-async function startCheck(request: TraceOptions, points: LearnerPoints): Promise<CheckRun> {
+/**
+ * The core's run of a check of `points` against `request`, not advanced
+ * yet. With `sliceMs` (a check in slices), text is put into wasm memory a
+ * slice at a time, stopped by `signal` (withTextBytesInSlices).
+ */
+async function startCheck(request: TraceOptions, points: LearnerPoints, signal: AbortSignal | undefined, sliceMs: number | undefined): Promise<CheckRun> {
   const json = encodeRequest(request);
   const core = await loadCore();
   let run: CheckRun;
   // Text, or its UTF-8 bytes as a file holds them (refused at the line and
   // column of the first byte that is not UTF-8), as runGcode takes a program.
-  if (isTextOrUtf8(points)) run = callCore(() => withTextBytes(core, points, (bytes) => core.CheckRun.fromText(json, bytes)));
-  else {
+  if (isTextOrUtf8(points)) {
+    const fromText = (bytes: TextBytes) => callCore(() => core.CheckRun.fromText(json, bytes));
+    run = sliceMs === undefined ? withTextBytes(core, points, fromText) : await withTextBytesInSlices(core, points, fromText, signal, sliceMs);
+  } else {
     let given: { values: Int32Array | Float64Array; dims: number };
     if (Array.isArray(points)) given = flatten(points);
     else if (isPromiseLike(points)) throw argumentError('points', 'got a Promise, not the points: await it first (checkPoints(request, await points))');
@@ -143,6 +151,10 @@ async function finishCheck(run: CheckRun, runOptions: CheckOptions | undefined, 
   try {
     if (runOptions === undefined || sliceMs === undefined) callCore(() => run.advance(Infinity));
     else {
+      // The run was made in one call (the request read, the rule traced,
+      // the text taken: 10 to 45 ms in Chromium at the page's cap): a
+      // cancel sent meanwhile is honoured before the first slice.
+      await yieldToEventLoop();
       await advanceForTime(() => callCore(() => run.advance(CHECK_UNITS_PER_CALL)), runOptions, sliceMs);
       // A cancel sent while the last slice ran is still honoured.
       await yieldToEventLoop();
