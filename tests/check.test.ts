@@ -5,7 +5,7 @@ import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { expect as jestExpect } from 'expect';
 import { describe, expect, it } from 'vitest';
-import { checkPoints, checkToTable, readPoints, trace } from '../web/core/index.js';
+import { checkPoints, checkToTable, readAndCheckPoints, readPoints, trace } from '../web/core/index.js';
 import type { TraceOptions } from '../web/core/index.js';
 import { voxpathMatchers } from '../web/core/vitest.js';
 import type { VoxpathMatchers } from '../web/core/vitest.js';
@@ -116,6 +116,33 @@ describe('checkPoints', () => {
     const error = await rejection(checkPoints(REGIONS, latin1));
     expect([error.line, error.column]).toEqual([2, 7]);
     expect(error.message).toMatch(/not UTF-8 text/);
+  });
+});
+
+describe('readAndCheckPoints', () => {
+  it('hands the points read back as an Int32Array of the values in the text, to the ends of the grid and of int32', async () => {
+    // A path (one cell or less a step) through the grid's ±2^30 and int32's
+    // -2^31 and 2^31 - 1, far from the rule's: the check parts at point 0.
+    const rows = [
+      [2 ** 30, -(2 ** 30), 0],
+      [2 ** 30 - 1, -(2 ** 30) + 1, 1],
+      [2 ** 31 - 1, -(2 ** 31), 2 ** 30],
+      [2 ** 31 - 2, -(2 ** 31) + 1, 2 ** 30 - 1],
+    ];
+    for (const text of [rows.slice(0, 2), rows.slice(2)].map((path) => path.map((r) => r.join(',')).join('\n'))) {
+      const { check, points } = await readAndCheckPoints(REGIONS, text);
+      expect(check.firstDifference?.kind).toBe('start');
+      expect(points).toBeInstanceOf(Int32Array);
+      expect(Array.from(points!)).toEqual(text.split('\n').flatMap((line) => line.split(',').map(Number)));
+    }
+  });
+
+  it('gives null for points with a coordinate past int32, and still the check, which names it', async () => {
+    for (const far of [2 ** 31, -(2 ** 31) - 1, 2 ** 53]) {
+      const { check, points } = await readAndCheckPoints(REGIONS, `0,0,${far}\n1,1,${far - Math.sign(far)}\n`);
+      expect(points).toBeNull();
+      expect(check.firstDifference).toMatchObject({ kind: 'start', pointIndex: 0, got: [0, 0, far] });
+    }
   });
 });
 

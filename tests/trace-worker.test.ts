@@ -2,10 +2,24 @@
 // module is loaded with a stand-in for a worker's global scope (`self`),
 // which hands it requests and keeps its replies with the buffers it
 // transfers. The page's own worker runs in the browser tests.
-import { beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it, vi } from 'vitest';
 import { trace, type TraceOptions, traceToCsv } from '../web/core/index.js';
 import type { LearnerCheck, PointsSent, ReplyMessage, RequestMessage, WorkerRequest } from '../web/worker/protocol.js';
 import { inTaskOfItsOwn, pointsOf } from './helpers.js';
+
+/** What readAndCheckPoints gave the worker, call by call: the core itself, only watched. */
+const { checksRead } = vi.hoisted(() => ({ checksRead: [] as { points: Int32Array | null }[] }));
+vi.mock('../web/core/index.js', async (importOriginal) => {
+  const core = await importOriginal<typeof import('../web/core/index.js')>();
+  return {
+    ...core,
+    readAndCheckPoints: async (...args: Parameters<typeof core.readAndCheckPoints>) => {
+      const read = await core.readAndCheckPoints(...args);
+      checksRead.push(read);
+      return read;
+    },
+  };
+});
 
 type Listener = (event: { data: unknown }) => void;
 let listener: Listener | undefined;
@@ -62,6 +76,15 @@ describe("the worker's answer to a check", () => {
     expect(learner.centers!.xyz.length / 3).toBe(points.length);
     expect(learner.centers!.origin).toEqual([5, 5, 5]);
     expect(transfer).toEqual([learner.points!.buffer, learner.centers!.xyz.buffer]);
+  });
+
+  it("hands over the core's own Int32Array of the points, not a copy made of them", async () => {
+    const { learner, transfer, points } = await checkOwnPoints({ algorithm: 'regions', from: [5, 5, 5], to: [205, 60, 9] }, 100);
+    const read = checksRead.at(-1)!.points!;
+    expect(read).toBeInstanceOf(Int32Array);
+    expect(learner.points).toBe(read);
+    expect(transfer).toEqual([read.buffer]);
+    expect(Array.from(read)).toEqual(points.flat());
   });
 
   it('carries no line for a path too long to be drawn whole, only the points and their box', async () => {

@@ -2,7 +2,8 @@
 //!
 //! Bulk data crosses as flat typed arrays, copied out of wasm memory once:
 //! - points: Int32Array, stride = dims, one row per point index (made on the
-//!   JS side and filled from wasm memory a chunk at a time);
+//!   JS side and filled from wasm memory a chunk at a time); a learner's
+//!   points as a check read them: Int32Array too, stride = dims;
 //! - decisions: Float64Array, column-major, one run of (to - from) values per
 //!   trace column, in the order of the summary's `columns` (where a column
 //!   does not apply to a step: NaN, or `trace::NO_VALUE` in a category or
@@ -257,17 +258,28 @@ impl CheckRun {
     }
 
     /// The points as read (flat, `dims` values a point), once the reading
-    /// is over: for a view that draws them, the text read once. Exact: the
-    /// reader refuses coordinates past 2^53.
+    /// is over: for a view that draws them, the text read once. An
+    /// Int32Array, as a trace's points cross (half the bytes of doubles,
+    /// 18 MB at the page's cap, and drawn as they are); undefined when a
+    /// coordinate does not fit one. The reader takes whole numbers up to
+    /// 2^53, and the check says where such points leave the rule's path,
+    /// whose grid points are within ±2^30.
     #[wasm_bindgen(js_name = readPoints)]
-    pub fn read_points(&self) -> Result<Vec<f64>, JsValue> {
+    pub fn read_points(&self) -> Result<Option<Vec<i32>>, JsValue> {
         let points = self.0.points().ok_or_else(|| {
             to_js_error(&Error::field(
                 "points",
                 "not read yet: advance the run past its reading first",
             ))
         })?;
-        Ok(points.coords.iter().map(|&c| c as f64).collect())
+        let mut cells = Vec::with_capacity(points.coords.len());
+        for &c in &points.coords {
+            let Ok(cell) = i32::try_from(c) else {
+                return Ok(None);
+            };
+            cells.push(cell);
+        }
+        Ok(Some(cells))
     }
 
     /// The check, once `advance` is done.

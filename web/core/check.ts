@@ -101,15 +101,18 @@ export async function checkPoints(request: TraceOptions, points: LearnerPoints, 
 
 /**
  * checkPoints of text points, and the points as the check read them (flat,
- * `dims` a point, as readPoints gives them): for a view that draws the
- * points beside the check, the text read once, and in slices with the
- * check when `runOptions` are given.
+ * `dims` a point, the values readPoints gives), as the core hands them
+ * over: an Int32Array, as a trace's points (CheckRun.readPoints), or null
+ * when a coordinate does not fit one (the text may hold whole numbers up to
+ * 2^53; the check then says where such points leave the rule's path). For
+ * a view that draws the points beside the check, the text read once, and
+ * in slices with the check when `runOptions` are given.
  */
-export async function readAndCheckPoints(request: TraceOptions, text: string, runOptions?: CheckOptions): Promise<{ check: Check; points: Float64Array }> {
+export async function readAndCheckPoints(request: TraceOptions, text: string, runOptions?: CheckOptions): Promise<{ check: Check; points: Int32Array | null }> {
   const sliceMs = runOptions === undefined ? undefined : checkSliceOptions('readAndCheckPoints', runOptions);
   const run = await startCheck(request, guardText('text', text, 'the points'), runOptions?.signal, sliceMs);
   const { check, points } = await finishCheck(run, runOptions, sliceMs, true);
-  return { check, points: points! };
+  return { check, points: points ?? null };
 }
 
 /**
@@ -144,10 +147,10 @@ async function startCheck(request: TraceOptions, points: LearnerPoints, signal: 
   return run;
 }
 
-/** `run` advanced to its end (in slices with `runOptions`), its result, and its points as read when `keepPoints`; the run freed. */
-async function finishCheck(run: CheckRun, runOptions: CheckOptions | undefined, sliceMs: number | undefined, keepPoints: boolean): Promise<{ check: Check; points?: Float64Array }> {
+/** `run` advanced to its end (in slices with `runOptions`), its result, and its points as read when `keepPoints` (CheckRun.readPoints); the run freed. */
+async function finishCheck(run: CheckRun, runOptions: CheckOptions | undefined, sliceMs: number | undefined, keepPoints: boolean): Promise<{ check: Check; points?: Int32Array }> {
   let check: Check;
-  let points: Float64Array | undefined;
+  let points: Int32Array | undefined;
   try {
     if (runOptions === undefined || sliceMs === undefined) callCore(() => run.advance(Infinity));
     else {

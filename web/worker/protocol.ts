@@ -149,7 +149,7 @@ export interface PulseWindow {
 /** A learner's points checked against the rule of a trace (readAndCheckPoints: the text read once, as the check's first stage). */
 export interface LearnerCheck {
   check: Check;
-  /** The learner's points as read, flat with stride dims, to draw; null when a coordinate is past what the view draws (int32). */
+  /** The learner's points as read, flat with stride dims, to draw: readAndCheckPoints' own; null when a coordinate is past what the view draws (int32). */
   points: Int32Array | null;
   /** The box every point lies in (null with the points): the view frames and culls their cells by it, and decides with it how to draw them. */
   bounds: PointBounds | null;

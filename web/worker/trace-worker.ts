@@ -147,19 +147,6 @@ async function exportFile(id: number, traceId: number, format: ExportFormat, sig
   return file;
 }
 
-/**
- * A learner's points as read (doubles), as the cells the view draws
- * (int32), in one pass; null when a coordinate is not one (past int32).
- */
-function drawableCells(read: Float64Array): Int32Array | null {
-  const cells = new Int32Array(read.length);
-  for (let i = 0; i < read.length; i++) {
-    cells[i] = read[i]!;
-    if (cells[i] !== read[i]) return null;
-  }
-  return cells;
-}
-
 async function answer(id: number, request: WorkerRequest): Promise<Answer> {
   switch (request.kind) {
     case 'catalogue':
@@ -258,13 +245,12 @@ async function answer(id: number, request: WorkerRequest): Promise<Answer> {
       // time (at the page's cap, 19 MB, one call of 70 to 200 ms and one of
       // 0.1 to 0.2 s before, which a Cancel waited for), giving its line
       // and column to any error, and then checked a slice at a time; the
-      // points read are drawn, and make their line for the view when it
-      // draws them whole.
+      // points read, the core's Int32Array handed over as it is, are
+      // drawn, and make their line for the view when it draws them whole.
       return cancellable(id, async (signal) => {
         const dims = held(request.traceId).dims;
         report(id, { stage: 'reading', done: false });
-        const { check, points: read } = await readAndCheckPoints(request.options, request.text, { signal, onProgress: (progress) => report(id, progress) });
-        const points = drawableCells(read);
+        const { check, points } = await readAndCheckPoints(request.options, request.text, { signal, onProgress: (progress) => report(id, progress) });
         const bounds = points && pointBounds(points, dims);
         const whole = bounds !== null && !drawnLight(points!.length / dims, widestCells(bounds), request.pointsSent.allBelow);
         const centers = whole ? idealLineOf(points!, dims) : null;
