@@ -425,7 +425,7 @@ describe("another tab's write (persist.ts)", () => {
     expect(otherTabNote(edits)).toBe('Another tab changed the move, the program and the machine: shown here as there.');
     // Storage read again as written, each value another object: nothing is followed, nothing said.
     const again = otherTabEdits(seen, stored(written), written, written);
-    expect(again).toEqual({ followed: {}, both: [], kept: {} });
+    expect(again).toEqual({ followed: {}, both: [], kept: {}, rewritten: [] });
     expect(otherTabNote(again)).toBe('');
   });
 
@@ -452,6 +452,17 @@ describe("another tab's write (persist.ts)", () => {
     const theirs = stored({ ...written, options: { ...written.options, to: [10, 8, 6] } });
     expect(otherTabEdits(stored(written), theirs, written, written, new Set(['options'])).both).toEqual(['options']);
     expect(otherTabEdits(stored(written), theirs, written, written, new Set(['machine'])).followed).toEqual({ options: theirs.options });
+  });
+
+  it("follows nothing of storage gone back to a write older than this tab's, and writes again what differs: a tab wrote back storage as it read it before this tab's write reached it (this tab's program was lost in both tabs)", () => {
+    const older = { ...first(), gcode: typed, options: { ...first().options, to: [12, 7, 6] } };
+    // This tab wrote a shorter program over it, and followed another tab's move.
+    const mine = { ...older, gcode: 'G21 G90\nG1 X3 Y4 F600\nG1 X7', options: { ...older.options, to: [9, 7, 6] } };
+    const edits = otherTabEdits(stored(mine), stored(older), mine, mine, new Set(), true);
+    expect(edits).toEqual({ followed: {}, both: [], kept: {}, rewritten: ['options', 'gcode'] });
+    expect(otherTabNote(edits)).toBe('');
+    // Nothing differs: nothing to write again.
+    expect(otherTabEdits(stored(mine), stored(mine), mine, mine, new Set(), true).rewritten).toEqual([]);
   });
 });
 

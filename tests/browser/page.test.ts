@@ -764,6 +764,34 @@ describe('the page', () => {
     await a.close();
   });
 
+  it("keeps a tab's program, in both tabs and in storage, when another tab writes back storage as it read it before that program reached it (both then showed the older program)", async () => {
+    const a = await openPage('?mode=gcode');
+    await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const b = await a.context.newPage();
+    await b.goto(`${siteUrl()}?mode=gcode`);
+    await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const older = 'G21 G90\nG1 X3 Y4 F600\n';
+    await a.page.getByTestId('gcode-text').fill(older);
+    await expect.poll(() => b.getByTestId('gcode-text').inputValue(), { timeout: TABS_POLL_MS }).toBe(older);
+    const storedThen = await b.evaluate(() => localStorage.getItem('voxpath.state')!);
+    const newer = 'G21 G90\nG1 X3 Y4 F600\nG1 X7';
+    await a.page.getByTestId('gcode-text').fill(newer);
+    await expect.poll(() => b.getByTestId('gcode-text').inputValue(), { timeout: TABS_POLL_MS }).toBe(newer);
+    // B's write of storage as it read it before A's reached it (each tab
+    // reads its own copy of storage), landing after A's: as B's throttled
+    // write after following a program, which changes no input, does when it
+    // crosses A's next write (the caret test's failure in CI).
+    await b.evaluate((text) => localStorage.setItem('voxpath.state', text), storedThen);
+    const storedProgram = (page: Page) =>
+      page.evaluate(() => new URLSearchParams((JSON.parse(localStorage.getItem('voxpath.state')!) as { gcode: string }).gcode).get('gcode'));
+    // A writes its program again: storage holds it, and both tabs show it.
+    for (const page of [a.page, b]) await expect.poll(() => storedProgram(page), { timeout: TABS_POLL_MS }).toBe(newer);
+    for (const page of [a.page, b]) expect(await page.getByTestId('gcode-text').inputValue()).toBe(newer);
+    expect(await a.page.getByTestId('tabs-note').evaluate((note: HTMLElement) => [note.hidden, note.textContent])).toEqual([true, '']);
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
   it("keeps a refused text over a visit to another mode, with its message (the last valid value came back)", async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;

@@ -210,6 +210,12 @@ let storedSeen: AppState | undefined;
 let editSeen: string | undefined;
 
 /**
+ * Every StoredParts.edit storage held before one this tab wrote or followed
+ * since: storage holding one of them again went back (followOtherTabs).
+ */
+const editsSuperseded = new Set<string>();
+
+/**
  * The inputs (of PART_INPUTS) this tab changed since it last wrote (every
  * one at its first write): only they are written. Each tab wrote every
  * mode's part as it held it, so a program typed in one tab was replaced by
@@ -428,10 +434,14 @@ function write(given: AppState): void {
     .map((field) => (changed.has(field) ? writeLongText(store, field, state[field]) : (longTextsWritten.get(field)?.kept ?? true)))
     .every(Boolean);
   const edit = changed.size > 0 ? `${EDIT_STAMP}.${++editsWritten}` : undefined;
-  const parts = partsToStore(storedParts(state), changed, edit, partsOf(store.getItem(STORAGE_KEY) ?? ''));
+  const before = partsOf(store.getItem(STORAGE_KEY) ?? '');
+  const parts = partsToStore(storedParts(state), changed, edit, before);
   try {
     store.setItem(STORAGE_KEY, JSON.stringify(parts));
     if (edit && tab) {
+      // The write this one goes over, as this tab read it (another tab's,
+      // at this tab's first write), is older than this one.
+      for (const older of [editSeen, before?.edit]) if (older !== undefined) editsSuperseded.add(older);
       editSeen = edit;
       // The long texts as written (this tab's) or as last read (another's): not read back.
       const text = (field: LongText, query: string) => (new URLSearchParams(query).has(LONG_TEXT_PARAMS[field]) ? undefined : changed.has(field) ? state[field] : storedSeen?.[field]);
@@ -499,6 +509,8 @@ export interface OtherTabEdits {
    * the points fields (not none).
    */
   kept: Partial<AppState>;
+  /** The inputs this tab writes again, storage having gone back to an older write: those it holds otherwise. */
+  rewritten: (keyof AppState)[];
 }
 
 /**
@@ -511,8 +523,24 @@ export interface OtherTabEdits {
  * and this tab's wins (the state's, about to be written, or the draft's,
  * over the value a reload of it shows), but the other's program or points
  * are kept to bring back.
+ *
+ * Unless storage `wentBack`: it holds a write older than one this tab wrote
+ * or followed, written again by a tab that wrote back the inputs as it had
+ * read them before the newer write reached it (each tab reads its own copy
+ * of storage, which another tab's write reaches a little later). Nothing is
+ * followed of it: the inputs this tab holds otherwise are written again
+ * (`rewritten`). Followed, the newer write was lost in both tabs, its
+ * writer's text box showing the older program again.
  */
-export function otherTabEdits(seen: AppState, stored: AppState, written: AppState, current: AppState, drafted: ReadonlySet<keyof AppState> = new Set()): OtherTabEdits {
+export function otherTabEdits(
+  seen: AppState,
+  stored: AppState,
+  written: AppState,
+  current: AppState,
+  drafted: ReadonlySet<keyof AppState> = new Set(),
+  wentBack = false,
+): OtherTabEdits {
+  if (wentBack) return { followed: {}, both: [], kept: {}, rewritten: INPUTS.filter((key) => !sameInput(current[key], stored[key])) };
   const followed: Partial<AppState> = {};
   const both: (keyof AppState)[] = [];
   for (const key of INPUTS) {
@@ -523,7 +551,7 @@ export function otherTabEdits(seen: AppState, stored: AppState, written: AppStat
   const replaced = both.includes('gcode') ? programReplaced({ gcode: stored.gcode, replacedProgram: '', replacedBy: '', secondReplacedProgram: '' }, current.gcode, ANOTHER_TABS_PROGRAM, stored.gcode !== DEFAULT_GCODE) : undefined;
   const kept: Partial<AppState> = replaced && replaced.replacedProgram !== '' ? { replacedProgram: replaced.replacedProgram, replacedBy: replaced.replacedBy } : {};
   if (both.includes('learnerPoints') && stored.learnerPoints !== '') Object.assign(kept, { replacedPoints: stored.learnerPoints, replacedPointsBy: ANOTHER_TABS_POINTS });
-  return { followed, both, kept };
+  return { followed, both, kept, rewritten: [] };
 }
 
 /**
@@ -570,22 +598,36 @@ export function otherTabNote({ followed, both, kept }: OtherTabEdits): string {
  * is this tab's, said in a note, the other's program or points kept to
  * bring back. Each tab wrote only what it changed, but the last writer of an
  * input both changed erased the other's without a word, and a tab showed
- * what a reload of it no longer gave.
+ * what a reload of it no longer gave. Storage gone back to an older write
+ * (otherTabEdits' wentBack) is followed in nothing: true when this tab is to
+ * write its inputs again (lastWritten holds them as stored, so the next
+ * write takes them as changed).
  */
-function followOtherTabs(): void {
+function followOtherTabs(): boolean {
   const store = storage();
-  if (!tab || !store || !lastWritten || !storedSeen || tab.store.state.embed) return;
+  if (!tab || !store || !lastWritten || !storedSeen || tab.store.state.embed) return false;
   const parts = partsOf(store.getItem(STORAGE_KEY) ?? '');
-  if (!parts || parts.edit === editSeen) return;
+  if (!parts || parts.edit === editSeen) return false;
   const stored = readParts(tab.catalogue, parts)?.typed;
-  if (!stored) return;
+  if (!stored) return false;
+  const wentBack = parts.edit !== undefined && editsSuperseded.has(parts.edit);
+  if (editSeen !== undefined) editsSuperseded.add(editSeen);
   editSeen = parts.edit;
   const drafted = new Set((Object.keys(DRAFT_PREFIXES) as (keyof AppState)[]).filter((key) => draftedHere(DRAFT_PREFIXES[key]!)));
-  const edits = otherTabEdits(storedSeen, stored, lastWritten, tab.store.state, drafted);
+  const edits = otherTabEdits(storedSeen, stored, lastWritten, tab.store.state, drafted, wentBack);
   storedSeen = stored;
+  if (wentBack) {
+    // Seen as this tab is about to write them: another tab writing them
+    // again too (it had seen them, as this one) changed none of them.
+    const rewritten = (from: AppState) => Object.fromEntries(edits.rewritten.map((key) => [key, from[key]]));
+    storedSeen = { ...stored, ...rewritten(tab.store.state) };
+    lastWritten = { ...lastWritten, ...rewritten(stored) };
+    return edits.rewritten.length > 0;
+  }
   lastWritten = { ...lastWritten, ...edits.followed };
   tab.store.update({ ...edits.followed, ...edits.kept });
   tab.onOtherTab(otherTabNote(edits));
+  return false;
 }
 
 /**
@@ -624,11 +666,11 @@ export function persistState(store: Store<AppState>, catalogue: Catalogue, notes
       if (key === null || key === fieldKey || key.startsWith(`${fieldKey}.`)) longTextsWritten.delete(field);
     }
     // Its parts, written after its long texts: its write is whole.
-    if (key === STORAGE_KEY) followOtherTabs();
+    if (key === STORAGE_KEY && followOtherTabs()) timer ??= setTimeout(flush, WRITE_DELAY_MS);
   });
   // Back to a page kept in the browser's cache, which heard no other tab meanwhile.
   window.addEventListener('pageshow', ({ persisted }) => {
-    if (persisted) followOtherTabs();
+    if (persisted && followOtherTabs()) timer ??= setTimeout(flush, WRITE_DELAY_MS);
   });
   // A page hidden may be discarded without a pagehide (mobile browsers).
   document.addEventListener('visibilitychange', () => {
