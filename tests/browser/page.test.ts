@@ -717,12 +717,18 @@ describe('the page', () => {
     return text.split('\n').slice(0, line - 1).reduce((offset, l) => offset + l.length + 1, 0) + column;
   }
 
-  it("keeps the caret, the selection and the scroll of a text box in use where they were when another tab's program or points are followed into it", async () => {
+  /** Two tabs of one browser context in G-code mode, each once its program has run: `a` (with openPage's checks) and `b`. */
+  async function twoGcodeTabs() {
     const a = await openPage('?mode=gcode');
     await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     const b = await a.context.newPage();
     await b.goto(`${siteUrl()}?mode=gcode`);
     await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    return { a, b };
+  }
+
+  it("keeps the caret, the selection and the scroll of a text box in use where they were when another tab's program or points are followed into it", async () => {
+    const { a, b } = await twoGcodeTabs();
     // Taller than the box: B reads it scrolled down, a selection on lines 40 and 41.
     const moves = Array.from({ length: 60 }, (_, i) => `G1 X${i} Y${i} F600`);
     const before = `G21 G90\n${moves.join('\n')}\n`;
@@ -765,11 +771,7 @@ describe('the page', () => {
   });
 
   it("keeps a tab's program, in both tabs and in storage, when another tab writes back storage as it read it before that program reached it (both then showed the older program)", async () => {
-    const a = await openPage('?mode=gcode');
-    await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
-    const b = await a.context.newPage();
-    await b.goto(`${siteUrl()}?mode=gcode`);
-    await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const { a, b } = await twoGcodeTabs();
     const older = 'G21 G90\nG1 X3 Y4 F600\n';
     await a.page.getByTestId('gcode-text').fill(older);
     await expect.poll(() => b.getByTestId('gcode-text').inputValue(), { timeout: TABS_POLL_MS }).toBe(older);
