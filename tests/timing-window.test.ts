@@ -169,7 +169,7 @@ describe('the timing diagram window', () => {
     // widest word, '+2.000 s'), and as much for a box before; the window was chosen for 12 ticks' whole width,
     // 168 px, which left the steps' narrowest gap 5.2 px of the 116 px they get (3 and 5 times, at points 76
     // and 80: steps 74..85 and 76..85, 6 and 4 slow ones beside the 6 fast).
-    const widths = { plotPx: 174, pauseBeforePx: 58, pauseAfterPx: 58 };
+    const widths = { plotPx: 174, pausesPx: (before: boolean, after: boolean) => ({ beforePx: before ? 58 : 0, afterPx: after ? 58 : 0 }) };
     const ticks = 12;
     for (const r of [3, 5]) {
       it(`at ${r} times, draws every gap at least half a tick of the width the steps get`, async () => {
@@ -190,7 +190,7 @@ describe('the timing diagram window', () => {
           const drawn = all.subarray(w.fromStep, w.toStep);
           const x = pulseEdges(drawn);
           const spanSeconds = x[x.length - 1]! - (drawnFromZero(drawn, w.fromStep === 0) ? 0 : x[0]!);
-          const stepsPx = widths.plotPx - (w.pauseBefore ? widths.pauseBeforePx : 0) - (w.pauseAfter ? widths.pauseAfterPx : 0);
+          const stepsPx = widths.plotPx - (w.pauseBefore ? 58 : 0) - (w.pauseAfter ? 58 : 0);
           const gaps = Array.from(drawn.subarray(1), (t, i) => t - drawn[i]!);
           const narrowestPx = (Math.min(...gaps) / spanSeconds) * stepsPx;
           expect(narrowestPx, `point ${point}: ${w.fromStep}..${w.toStep}`).toBeGreaterThanOrEqual(7);

@@ -421,6 +421,38 @@ describe('G-code mode: time', () => {
     await dwell.close();
   });
 
+  it("sizes a pause's box for the pauses drawn beside it: drawn alone in a narrow page, its label whole", async () => {
+    // Moves of 10 steps 0.1 s apart between dwells of 3 s (1 mm at F60, 10 steps/mm). At the middle move's
+    // first step in a page of 240 px (the plot 82 px) a window can end at either dwell, but its steps leave
+    // room for one box only: it is drawn with the dwell before it alone. Its box was sized as beside the other
+    // dwell's too, the two more than 70% of the plot, and came out bare, its whole label under the chart.
+    const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG4 P3\nG1 X2\nG4 P3\nG1 X3\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=10&gcode=${program}`);
+    const { page } = p;
+    await page.setViewportSize({ width: 240, height: 700 });
+    await loaded(page, 30);
+    await jumpTo(page, 11);
+    const timing = page.getByTestId('timing');
+    await expect.poll(() => timing.getAttribute('data-from-step'), { timeout: 10_000 }).toBe('10');
+    const pauseBox = timing.locator('.chart-break');
+    await expect.poll(() => pauseBox.count()).toBe(1);
+    await expect.poll(async () => (await pauseLabelLines(page)).clipped, { timeout: 10_000 }).toEqual([]);
+    // Its label in its box at the plot's left, what the pause is and its time, if not in full ('dwell 3 s,
+    // step before −3.150 s', wrapped to its words, takes more than 70% of the plot) then said in full under the chart.
+    const { lines } = await pauseLabelLines(page);
+    expect(lines).toEqual([['dwell 3 s', '−3.2 s']]);
+    expect((await timing.locator('figcaption').innerText()).replaceAll('\u00a0', ' ')).toBe('Hatched, not to scale: at the left, dwell 3 s, step before −3.150 s.');
+    const plot = (await timing.locator('.u-over').boundingBox())!;
+    const box = (await pauseBox.boundingBox())!;
+    expect(box.x).toBeCloseTo(plot.x, 0);
+    // The steps keep 30% of the plot.
+    expect(plot.x + plot.width - (box.x + box.width)).toBeGreaterThanOrEqual(0.3 * plot.width - 1);
+    await timing.scrollIntoViewIfNeeded();
+    await screenshot(page, 'timing-lone-dwell-narrow-240', '[data-testid=timing]');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('ends the STEP/DIR window where a much faster move starts, labelled, so that the pulses before it stay readable', async () => {
     // 1 mm at 60 mm/min, then 3 mm at 3000 mm/min with 1000 mm/s²: 80 X steps 12.5 ms apart, then the
     // fast move's, speeding up from 1 mm/s, the first 4.1 ms after the slow move's last, the fifth under

@@ -80,7 +80,7 @@ function setBreakLines(box: HTMLElement, lines: string[]): void {
  * label `lines` whole in it: `wrappedPx`, its widest word's (each line
  * wrapped at every space), the least; `unwrappedPx`, its widest line's.
  * Measured in the page's style of the box, laid out in `container` out of
- * sight, so that a box sized by them (the timing diagram's pauseBoxes) holds its text
+ * sight, so that a box sized by them (the timing diagram's #pauseBoxChoices) holds its text
  * whatever the font.
  */
 export function breakLabelWidthsPx(container: HTMLElement, lines: string[]): { wrappedPx: number; unwrappedPx: number } {

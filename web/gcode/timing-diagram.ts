@@ -29,7 +29,8 @@
  * Beside a move less than that faster, the window holds fewer steps where
  * it must, so that the narrowest gap it draws stays half a tick wide of the
  * width its steps get: the plot's less the pauses' boxes, each as wide as
- * its label (pauseBoxes), measured before the window is chosen. In a
+ * its label (#pauseBoxChoices), measured before the window is chosen, and
+ * chosen for the pauses the window is drawn with (choosePauseBoxes). In a
  * narrow plot a label takes a shorter form ('dwell 2 s', '+2 s'; '+2 s'),
  * or none, so that the boxes leave the steps 30% of it; the labels so
  * shortened are written whole under the chart. The window and the boxes
@@ -184,6 +185,28 @@ function pauseLabel(pause: Pause, dwellSeconds: number, programEdge: boolean, si
   };
 }
 
+/**
+ * The boxes of the pauses drawn together over a plot `plotPx` wide, from
+ * each one's `choices` (#pauseBoxChoices', fullest first; none: no pause
+ * there, null). Each takes its fullest, but while the boxes take more than
+ * PAUSES_SHARE of the plot together, the widest of them that can takes its
+ * next narrower one, and past its last, none (a bare box, the label under
+ * the chart).
+ */
+function choosePauseBoxes(choices: PauseBox[][], plotPx: number): (PauseBox | null)[] {
+  const chosen = choices.map(() => 0);
+  const boxPx = (i: number) => choices[i]![chosen[i]!]?.px ?? 0;
+  for (;;) {
+    const totalPx = choices.reduce((sum, _, i) => sum + boxPx(i), 0);
+    if (totalPx <= PAUSES_SHARE * plotPx) break;
+    const narrowable = choices.map((_, i) => i).filter((i) => chosen[i]! < choices[i]!.length - 1);
+    if (narrowable.length === 0) break;
+    const widest = narrowable.reduce((a, b) => (boxPx(b) > boxPx(a) ? b : a));
+    chosen[widest]!++;
+  }
+  return choices.map((boxes, i) => boxes[chosen[i]!] ?? null);
+}
+
 export class TimingDiagram {
   readonly #container: HTMLElement;
   readonly #onPick: (pointIndex: number) => void;
@@ -264,9 +287,21 @@ export class TimingDiagram {
         };
         const before = await labelled(edges.before, 'before');
         const after = await labelled(edges.after, 'after');
-        const [boxBefore, boxAfter] = this.#pauseBoxes([before?.label ?? null, after?.label ?? null], plotPx);
-        widths = { plotPx, pauseBeforePx: boxBefore?.px ?? 0, pauseAfterPx: boxAfter?.px ?? 0 };
+        // The boxes each label can take, then those chosen for each set of the pauses a window is drawn with:
+        // a pause drawn alone keeps the fuller label it has room for beside the steps.
+        const [choicesBefore, choicesAfter] = [before, after].map((pause) => (pause ? this.#pauseBoxChoices(pause.label, plotPx) : []));
+        const boxesFor = [false, true].map((withBefore) =>
+          [false, true].map((withAfter) => choosePauseBoxes([withBefore ? choicesBefore! : [], withAfter ? choicesAfter! : []], plotPx)),
+        );
+        widths = {
+          plotPx,
+          pausesPx: (withBefore, withAfter) => {
+            const [b, a] = boxesFor[Number(withBefore)]![Number(withAfter)]!;
+            return { beforePx: b?.px ?? 0, afterPx: a?.px ?? 0 };
+          },
+        };
         window = stepWindow(pointIndex, ticks, trace.steps, needed.fromStep, fetched.stepSeconds, endSeconds, widths);
+        const [boxBefore, boxAfter] = boxesFor[Number(window.pauseBefore !== null)]![Number(window.pauseAfter !== null)]!;
         pauses.before = window.pauseBefore && before && { ...before, box: boxBefore! };
         pauses.after = window.pauseAfter && after && { ...after, box: boxAfter! };
         pulses = slicePulses(fetched, needed.fromStep, window.fromStep, window.toStep);
@@ -335,37 +370,20 @@ export class TimingDiagram {
   }
 
   /**
-   * The boxes of the pauses with `labels` (null: no pause there) over a
-   * plot `plotPx` wide. A box with a form of its label is as wide as its
-   * longest line, up to PAUSE_LINE_SHARE of the plot, but never under its
-   * widest word's, so that its text is whole; each takes its label's
-   * fullest form, but while the boxes take more than PAUSES_SHARE of the
-   * plot together, the widest of them that can takes its next narrower
-   * form, and past the last, none (a bare box, the label under the chart).
+   * The boxes a pause's `label` can take over a plot `plotPx` wide, fullest
+   * first (choosePauseBoxes' choices): with each form of its label, as wide
+   * as its longest line, up to PAUSE_LINE_SHARE of the plot, but never under
+   * its widest word's, so that its text is whole; then bare. A form no
+   * narrower than a fuller one before it is left out, of no use.
    */
-  #pauseBoxes(labels: (PauseLabel | null)[], plotPx: number): (PauseBox | null)[] {
-    // Each label's boxes, narrowest last: a form no narrower than a fuller one before it is of no use.
-    const choices = labels.map((label) => {
-      if (!label) return [];
-      const boxes: PauseBox[] = [];
-      for (const lines of [...label.forms, []]) {
-        const { wrappedPx, unwrappedPx } = lines.length ? breakLabelWidthsPx(this.#container, lines) : { wrappedPx: BARE_PAUSE_PX, unwrappedPx: BARE_PAUSE_PX };
-        const px = Math.max(wrappedPx, Math.min(unwrappedPx, PAUSE_LINE_SHARE * plotPx));
-        if (boxes.length === 0 || px < boxes[boxes.length - 1]!.px) boxes.push({ px, lines });
-      }
-      return boxes;
-    });
-    const chosen = choices.map(() => 0);
-    const boxPx = (i: number) => choices[i]![chosen[i]!]?.px ?? 0;
-    for (;;) {
-      const totalPx = choices.reduce((sum, _, i) => sum + boxPx(i), 0);
-      if (totalPx <= PAUSES_SHARE * plotPx) break;
-      const narrowable = choices.map((_, i) => i).filter((i) => chosen[i]! < choices[i]!.length - 1);
-      if (narrowable.length === 0) break;
-      const widest = narrowable.reduce((a, b) => (boxPx(b) > boxPx(a) ? b : a));
-      chosen[widest]!++;
+  #pauseBoxChoices(label: PauseLabel, plotPx: number): PauseBox[] {
+    const boxes: PauseBox[] = [];
+    for (const lines of [...label.forms, []]) {
+      const { wrappedPx, unwrappedPx } = lines.length ? breakLabelWidthsPx(this.#container, lines) : { wrappedPx: BARE_PAUSE_PX, unwrappedPx: BARE_PAUSE_PX };
+      const px = Math.max(wrappedPx, Math.min(unwrappedPx, PAUSE_LINE_SHARE * plotPx));
+      if (boxes.length === 0 || px < boxes[boxes.length - 1]!.px) boxes.push({ px, lines });
     }
-    return choices.map((boxes, i) => boxes[chosen[i]!] ?? null);
+    return boxes;
   }
 
   /** The plot resized: its window and pauses' boxes chosen again for its width, when it is on screen (a hidden chart is drawn at its least width). */
@@ -381,11 +399,11 @@ export class TimingDiagram {
     this.#perSecond = 1;
     const idle = stepSeconds !== null && drawnFromZero(stepSeconds.subarray(0, ticks), this.#window!.fromStep === 0);
     const { x, unit } = this.#rowsX(ticks, stepSeconds, idle);
-    // The x the pauses take, out of scale: each its box's width (pauseBoxes)
+    // The x the pauses take, out of scale: each its box's width (choosePauseBoxes')
     // of the plot's, the steps the rest (stepsWidthPx, as stepWindow took it).
     const [startX, endX] = [idle ? 0 : x[0]!, x[x.length - 1]!];
     const xPerPx = (endX - startX) / stepsWidthPx(widths, pauses.before !== null, pauses.after !== null);
-    const [beforeX, afterX] = [widths.pauseBeforePx * xPerPx, widths.pauseAfterPx * xPerPx];
+    const [beforeX, afterX] = [(pauses.before?.box.px ?? 0) * xPerPx, (pauses.after?.box.px ?? 0) * xPerPx];
     this.#pauseBeforeX = pauses.before ? startX - beforeX : null;
     const breaks: XBreak[] = [];
     if (pauses.before) breaks.push({ fromX: startX - beforeX, toX: startX, lines: pauses.before.box.lines, description: pauses.before.label.description });

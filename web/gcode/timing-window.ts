@@ -53,15 +53,22 @@ export const TICK_PX = 14;
  */
 const NARROWEST_GAP_TICKS = 0.5;
 
+/** The widths of the boxes of the pauses drawn before and after a window's steps, CSS pixels: 0 where none is drawn. */
+export interface PauseBoxesPx {
+  beforePx: number;
+  afterPx: number;
+}
+
 /**
  * The widths a window of steps is drawn over, CSS pixels: the plot's, and
- * the boxes of the pauses it can start and end at (edgePauses': a box's
- * width where the window starts or ends at its pause, else not drawn).
+ * the boxes of the pauses it can start and end at (edgePauses'), by which of
+ * them the window is drawn with: the boxes are sized for the pauses drawn
+ * together, so that a pause drawn alone can have a wider box (a fuller
+ * label) than beside another.
  */
 export interface PlotWidths {
   plotPx: number;
-  pauseBeforePx: number;
-  pauseAfterPx: number;
+  pausesPx(pauseBefore: boolean, pauseAfter: boolean): PauseBoxesPx;
 }
 
 /**
@@ -71,7 +78,8 @@ export interface PlotWidths {
  * labels shortened to fit: PAUSES_SHARE).
  */
 export function stepsWidthPx(widths: PlotWidths, pauseBefore: boolean, pauseAfter: boolean): number {
-  return Math.max(TICK_PX, widths.plotPx - (pauseBefore ? widths.pauseBeforePx : 0) - (pauseAfter ? widths.pauseAfterPx : 0));
+  const { beforePx, afterPx } = widths.pausesPx(pauseBefore, pauseAfter);
+  return Math.max(TICK_PX, widths.plotPx - (pauseBefore ? beforePx : 0) - (pauseAfter ? afterPx : 0));
 }
 
 /** Steps each side of a step whose gaps, with its own, have the median that is the steps' own spacing there (one long gap among them does not move it). */
@@ -202,7 +210,7 @@ export function stepWindow(
   firstStep: number,
   times: Float64Array | null,
   endSeconds?: number,
-  widths: PlotWidths = { plotPx: ticks * TICK_PX, pauseBeforePx: 0, pauseAfterPx: 0 },
+  widths: PlotWidths = { plotPx: ticks * TICK_PX, pausesPx: () => ({ beforePx: 0, afterPx: 0 }) },
 ): StepWindow {
   const counted = countedWindow(pointIndex, ticks, steps);
   if (!times || steps === 0) return { ...counted, pauseBefore: null, pauseAfter: null };
