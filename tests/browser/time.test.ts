@@ -118,6 +118,27 @@ async function pauseLabelLines(page: Page): Promise<{ lines: string[][]; clipped
 }
 
 /**
+ * Where the timing diagram's x axis title is drawn (on its canvas, in the
+ * band under the tick labels): the columns of its ink from the canvas's
+ * left side, and the canvas's width, CSS pixels, read from a screenshot
+ * `name` of the band. The title is black; nothing else is drawn there.
+ */
+async function xTitleInk(page: Page, name: string): Promise<{ fromPx: number; toPx: number; canvasPx: number }> {
+  const timing = page.getByTestId('timing');
+  await timing.scrollIntoViewIfNeeded();
+  const canvas = (await timing.locator('canvas').boundingBox())!;
+  const plot = (await timing.locator('.u-over').boundingBox())!;
+  // Under the plot, past the axis's ticks and their labels (its 36 px), to the canvas's bottom.
+  const top = plot.y + plot.height + 36;
+  const shot = await screenshot(page, name, { x: canvas.x, y: top, width: canvas.width, height: canvas.y + canvas.height - top });
+  const { width, height, data } = PNG.sync.read(readFileSync(shot.file));
+  const inked = Array.from({ length: width }, (_, x) =>
+    Array.from({ length: height }, (_, y) => 4 * (y * width + x)).some((i) => data[i]! < 110 && data[i + 1]! < 110 && data[i + 2]! < 110),
+  );
+  return { fromPx: inked.indexOf(true), toPx: inked.lastIndexOf(true), canvasPx: width };
+}
+
+/**
  * The program of one step between two waits, G1 X1 F60 then G4 P2 at 1
  * step/mm, opened in G-code mode, with its timing diagram and the diagram's
  * pause boxes.
@@ -419,6 +440,46 @@ describe('G-code mode: time', () => {
     await screenshot(dwell.page, 'timing-dwell-after-narrow-280', '[data-testid=timing]');
     expect(dwell.problems()).toEqual([]);
     await dwell.close();
+  });
+
+  it("keeps the diagram's axis title whole inside its chart down to a page of 240 px", async () => {
+    // The axis's title, 'planned instant (ms)', was drawn by uPlot centred under the plot: in a page under
+    // 272 px (the plot 82 px at 240, the lane names' axis at its left) it ran past the canvas's right side, cut.
+    const { p, page, timing, pauseBox } = await oneStepProgram();
+    await expect.poll(() => pauseBox.count()).toBe(2);
+    // Beside a 1280 px view, centred under the plot and whole: its ink's width, read again at each width.
+    const wide = await xTitleInk(page, 'timing-x-title-1280');
+    const titleInkPx = wide.toPx - wide.fromPx;
+    expect(titleInkPx).toBeGreaterThan(60);
+    for (const width of [300, 272, 260, 240]) {
+      await page.setViewportSize({ width, height: 700 });
+      const at = `${width} px`;
+      // The chart resized to its panel (200 px at least), and its window chosen again for the new plot.
+      const chartPx = () => timing.evaluate((t) => [t.querySelector('canvas')!.getBoundingClientRect().width, Math.max(200, t.clientWidth - 4)]);
+      await expect.poll(async () => new Set(await chartPx()).size, { message: at, timeout: 10_000 }).toBe(1);
+      await expect.poll(async () => (await pauseLabelLines(page)).clipped, { message: at, timeout: 10_000 }).toEqual([]);
+      const ink = await xTitleInk(page, `timing-x-title-${width}`);
+      // Whole, a column clear of the canvas's sides, and as wide as beside the wide view.
+      expect(ink.fromPx, at).toBeGreaterThanOrEqual(1);
+      expect(ink.toPx, at).toBeLessThanOrEqual(ink.canvasPx - 2);
+      expect(Math.abs(ink.toPx - ink.fromPx - titleInkPx), at).toBeLessThanOrEqual(1);
+      // The canvas and the chart's title in sight: inside the page's width, the title's text inside its box.
+      const { canvas, title, viewportPx } = await timing.evaluate((t) => {
+        const box = (e: Element) => e.getBoundingClientRect();
+        const heading = t.querySelector<HTMLElement>('.u-title')!;
+        return {
+          canvas: box(t.querySelector('canvas')!),
+          title: { ...box(heading).toJSON(), scrollPx: heading.scrollWidth, clientPx: heading.clientWidth },
+          viewportPx: document.documentElement.clientWidth,
+        };
+      });
+      expect(canvas.left, at).toBeGreaterThanOrEqual(0);
+      expect(canvas.right, at).toBeLessThanOrEqual(viewportPx);
+      expect(title.scrollPx, at).toBeLessThanOrEqual(title.clientPx);
+      expect([title.left >= canvas.left - 0.5, title.right <= canvas.right + 0.5], at).toEqual([true, true]);
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
   });
 
   it("sizes a pause's box for the pauses drawn beside it: drawn alone in a narrow page, its label whole", async () => {

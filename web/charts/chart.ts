@@ -97,6 +97,34 @@ export function breakLabelWidthsPx(container: HTMLElement, lines: string[]): { w
 
 /** The axes' tick labels: uPlot's own size, set here so that the y axis is measured in the font it draws. */
 const TICK_FONT = '12px system-ui, sans-serif';
+/** The x axis's height, CSS pixels: its ticks and their labels, the title under them (drawXTitle). */
+const X_AXIS_PX = 36;
+/** The least room between the x axis's title and the canvas's side, CSS pixels. */
+const X_TITLE_MARGIN_PX = 2;
+
+/**
+ * Draws the x axis's title `text` where uPlot draws an axis's label, in the
+ * band under the x axis's tick labels (the axis `sizePx` tall): centred under
+ * the plot, or, where that would take it past the canvas's side, moved in
+ * to stand X_TITLE_MARGIN_PX inside it. uPlot centres it under the plot
+ * whatever its width, which in a narrow chart put its end past the canvas's
+ * right side, cut: the timing diagram's 'planned instant (ms)' under its
+ * 82 px plot, the lane names' axis at its left, in a page under 272 px.
+ */
+function drawXTitle(u: uPlot, text: string, sizePx: number): void {
+  const ctx = u.ctx;
+  // uPlot's own font for an axis's label: bold, the ticks' size.
+  ctx.font = `bold ${12 * devicePixelRatio}px system-ui, sans-serif`;
+  ctx.fillStyle = '#000';
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'top';
+  const halfPx = ctx.measureText(text).width / 2;
+  const marginPx = X_TITLE_MARGIN_PX * devicePixelRatio;
+  const centre = u.bbox.left + u.bbox.width / 2;
+  const x = Math.max(halfPx + marginPx, Math.min(centre, ctx.canvas.width - halfPx - marginPx));
+  ctx.fillText(text, Math.round(x), Math.round(u.bbox.top + u.bbox.height + sizePx * devicePixelRatio));
+}
+
 /** uPlot's tick length and its gap from tick to label, CSS pixels (its defaults, which the axes keep). */
 const TICK_PX = 10;
 const TICK_GAP_PX = 5;
@@ -214,7 +242,8 @@ export class StepChart {
       bands: spec.bands,
       scales: { x: spec.xRange ? { time: false, range: spec.xRange } : { time: false }, y: spec.yRange ? { range: spec.yRange } : {} },
       axes: [
-        { label: spec.xLabel, size: 36, font: TICK_FONT, space: xTickSpace, filter: outsideBreaks, grid: { filter: outsideBreaks }, ticks: { filter: outsideBreaks } },
+        // The title's room kept (uPlot's 30 px under the axis), its text drawn by drawXTitle.
+        { label: '', size: X_AXIS_PX, font: TICK_FONT, space: xTickSpace, filter: outsideBreaks, grid: { filter: outsideBreaks }, ticks: { filter: outsideBreaks } },
         { label: spec.yLabel, size: yAxisSize, space: Y_TICK_SPACE_PX, font: TICK_FONT, values: spec.yValues, splits: spec.ySplits && (() => spec.ySplits!) },
       ],
       legend: { show: spec.legend ?? true, live: false },
@@ -260,6 +289,7 @@ export class StepChart {
             ctx.moveTo(x, u.bbox.top);
             ctx.lineTo(x, u.bbox.top + u.bbox.height);
             ctx.stroke();
+            drawXTitle(u, spec.xLabel, X_AXIS_PX);
             ctx.restore();
             this.#placeBreaks(u);
           },
