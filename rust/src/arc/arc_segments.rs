@@ -372,16 +372,11 @@ fn chords_by(
     }
     let line_request = Request::new(line, line_options);
     let notes = Rc::new(ChordNotes {
-        intro: ChordingIntro {
-            spec: spec.clone(),
-            chording,
-            counted,
-            chords: n,
-        },
-        start: spec.from,
+        spec: spec.clone(),
+        chording,
+        counted,
+        taken: n,
         chords,
-        start_rad: arc.start_rad,
-        sweep_rad: arc.sweep_rad,
         line: line_info.id,
     });
     let stepper = if in_place {
@@ -486,22 +481,41 @@ impl Chords {
     }
 }
 
-/// The sentence before the first chord's note: the arc and how its chords
-/// were counted. Kept as its parts and written when a note is read (most
-/// traces never read one): formatting it took about 1% of the r = 300,000
-/// circle's trace in 1,720 chords, which the circle itself does not pay.
-struct ChordingIntro {
+/// What a learner reads before each chord: the arc's chording before the
+/// first, then the chord's ends and the part of the arc it stands for. Kept
+/// as the arc and its vertices, each note written when it is read (most
+/// traces never read one): the intro sentence formatted at trace time took
+/// about 1% of the r = 300,000 circle's trace in 1,720 chords, which the
+/// circle itself does not pay.
+struct ChordNotes {
     spec: ArcSpec,
     chording: Chording,
     /// Chords the rule counted, and the chords taken (more for a full
-    /// circle counted under [`MIN_FULL_CIRCLE_CHORDS`]).
+    /// circle counted under [`MIN_FULL_CIRCLE_CHORDS`]); `chords` holds
+    /// fewer where a vertex rounded onto the one before.
     counted: u64,
-    chords: u64,
+    taken: u64,
+    chords: Vec<Vertex>,
+    line: &'static str,
 }
 
-impl ChordingIntro {
-    fn text(&self) -> String {
-        let (spec, n, counted) = (&self.spec, self.chords, self.counted);
+impl ChordNotes {
+    /// Chord `k`'s first and last vertices.
+    fn ends(&self, k: usize) -> (Vertex, Vertex) {
+        let from = k.checked_sub(1).map_or(
+            Vertex {
+                point: self.spec.from,
+                fraction: 0.0,
+            },
+            |j| self.chords[j],
+        );
+        (from, self.chords[k])
+    }
+
+    /// The sentence before the first chord's note: the arc and how its
+    /// chords were counted.
+    fn intro(&self) -> String {
+        let (spec, n, counted) = (&self.spec, self.taken, self.counted);
         let sagitta = spec.radius() * (1.0 - (spec.sweep_rad().abs() / (2 * n) as f64).cos());
         format!(
             "{}. {}{}, each of sagitta {sagitta:.3}; vertices are the arc points at i/{n} of the sweep, rounded to the grid. ",
@@ -514,48 +528,20 @@ impl ChordingIntro {
             },
         )
     }
-}
-
-/// What a learner reads before each chord: the arc's chording before the
-/// first, then the chord's ends and the part of the arc it stands for.
-struct ChordNotes {
-    intro: ChordingIntro,
-    start: Point,
-    chords: Vec<Vertex>,
-    start_rad: f64,
-    sweep_rad: f64,
-    line: &'static str,
-}
-
-impl ChordNotes {
-    /// Chord `k`'s first and last vertices.
-    fn ends(&self, k: usize) -> (Vertex, Vertex) {
-        let from = k.checked_sub(1).map_or(
-            Vertex {
-                point: self.start,
-                fraction: 0.0,
-            },
-            |j| self.chords[j],
-        );
-        (from, self.chords[k])
-    }
 
     /// The start of chord `k`'s note (its stepper's own note follows).
     fn prefix(&self, k: usize) -> String {
         let (from, to) = self.ends(k);
+        let (start_rad, sweep_rad) = (self.spec.start_rad(), self.spec.sweep_rad());
         format!(
             "{}Chord {} of {}: {} -> {}, the arc from {:.1}° to {:.1}°, stepped by {}:",
-            if k == 0 {
-                self.intro.text()
-            } else {
-                String::new()
-            },
+            if k == 0 { self.intro() } else { String::new() },
             k + 1,
             self.chords.len(),
             from.point,
             to.point,
-            degrees(self.start_rad + self.sweep_rad * from.fraction),
-            degrees(self.start_rad + self.sweep_rad * to.fraction),
+            degrees(start_rad + sweep_rad * from.fraction),
+            degrees(start_rad + sweep_rad * to.fraction),
             self.line,
         )
     }
@@ -590,7 +576,7 @@ fn by_requests(
     let mut parts = Vec::with_capacity(notes.chords.len());
     let mut total_steps = 0;
     let mut from = Vertex {
-        point: notes.start,
+        point: notes.spec.from,
         fraction: 0.0,
     };
     for to in &notes.chords {
