@@ -272,14 +272,11 @@ impl CheckRun {
                 "not read yet: advance the run past its reading first",
             ))
         })?;
-        let mut cells = Vec::with_capacity(points.coords.len());
-        for &c in &points.coords {
-            let Ok(cell) = i32::try_from(c) else {
-                return Ok(None);
-            };
-            cells.push(cell);
-        }
-        Ok(Some(cells))
+        Ok(points
+            .coords
+            .iter()
+            .map(|&c| i32::try_from(c).ok())
+            .collect())
     }
 
     /// The check, once `advance` is done.
