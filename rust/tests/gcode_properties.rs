@@ -231,10 +231,6 @@ proptest! {
         prop_assert_eq!(p.records.move_of_step(p.info.steps), None);
         prop_assert_eq!(p.records.move_at_line(1), None);
     }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
 
     /// Steps are recorded without their decisions: the metrics count the
     /// ties by replaying the segments (made when read, with the lines',
