@@ -79,7 +79,7 @@ export interface PlotWidths {
  */
 export function stepsWidthPx(widths: PlotWidths, pauseBefore: boolean, pauseAfter: boolean): number {
   const { beforePx, afterPx } = widths.pausesPx(pauseBefore, pauseAfter);
-  return Math.max(TICK_PX, widths.plotPx - (pauseBefore ? beforePx : 0) - (pauseAfter ? afterPx : 0));
+  return Math.max(TICK_PX, widths.plotPx - beforePx - afterPx);
 }
 
 /** Steps each side of a step whose gaps, with its own, have the median that is the steps' own spacing there (one long gap among them does not move it). */
