@@ -46,6 +46,14 @@ pub trait Coordinate: Copy + Default + std::ops::AddAssign {
     ) -> Point {
         by_table::<Self, DIMS, ENTRIES>(table, start, steps, out)
     }
+
+    /// [`decode`] into memory that will not stay in cache until it is
+    /// read (see [`decode_streaming`]): [`decode`] itself, unless the type
+    /// has a way to write past the cache.
+    #[inline(always)]
+    fn decode_past_cache(start: &Point, steps: &[Step], out: &mut [MaybeUninit<Self>]) -> Point {
+        decode(start, steps, out)
+    }
 }
 
 impl Coordinate for i32 {
@@ -65,7 +73,7 @@ impl Coordinate for i32 {
 
     #[inline(always)]
     fn decode_pairs(start: &Point, steps: &[Step], out: &mut [MaybeUninit<i32>]) -> Point {
-        by_pair_table(start, steps, out)
+        by_pair_table::<false>(start, steps, out)
     }
 
     #[inline(always)]
@@ -75,7 +83,13 @@ impl Coordinate for i32 {
         steps: &[Step],
         out: &mut [MaybeUninit<i32>],
     ) -> Point {
-        by_vector_table::<DIMS, ENTRIES>(table, start, steps, out)
+        by_vector_table::<DIMS, ENTRIES, false>(table, start, steps, out)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn decode_past_cache(start: &Point, steps: &[Step], out: &mut [MaybeUninit<i32>]) -> Point {
+        decode_streaming(start, steps, out)
     }
 }
 
@@ -207,6 +221,65 @@ pub fn decode<C: Coordinate>(start: &Point, steps: &[Step], out: &mut [MaybeUnin
     }
 }
 
+/// Bytes of points from which [`decode_to_new`] writes them past the
+/// cache: more than a core's L2 cache holds (1 MiB on the AMD EPYC, 2 MiB
+/// on the Intel Xeon the benches ran on), and than the share of L3 one core
+/// can count on, so that the first points written are gone from the cache
+/// by the time the last are, and a reader fetches them from memory either
+/// way.
+const PAST_CACHE_BYTES: usize = 8 << 20;
+
+/// [`decode`] into a new array that the caller hands over whole (a
+/// trace's points read at once, [`crate::Trace::points_i32`]): past
+/// [`PAST_CACHE_BYTES`], by [`Coordinate::decode_past_cache`].
+pub fn decode_to_new<C: Coordinate>(
+    start: &Point,
+    steps: &[Step],
+    out: &mut [MaybeUninit<C>],
+) -> Point {
+    if std::mem::size_of_val(out) < PAST_CACHE_BYTES {
+        decode(start, steps, out)
+    } else {
+        C::decode_past_cache(start, steps, out)
+    }
+}
+
+/// [`decode`] into i32 with its vector stores past the cache (x86-64's
+/// non-temporal stores). An ordinary store into memory not in cache first
+/// reads the line it writes into (its old bytes, never used), so points
+/// too many to stay in cache cost twice their bytes of memory traffic; a
+/// streaming store sends its line straight to memory. Natively the points
+/// of the bench's 2,000,001-point 3D line (24 MB) took 3.7 to 4.0 ms with
+/// the trace, 3.1 to 3.3 ms so (Intel Xeon, `end_to_end` example).
+///
+/// Such a store needs a 16-byte aligned place: the rows before the first
+/// that starts on one (three at most) are decoded as usual, and when no
+/// row does (an even number of axes from an address 4 past a multiple of
+/// 8), all of them.
+#[cfg(target_arch = "x86_64")]
+fn decode_streaming(start: &Point, steps: &[Step], out: &mut [MaybeUninit<i32>]) -> Point {
+    let dims = start.dims();
+    let row_bytes = dims * std::mem::size_of::<i32>();
+    let aligned = (0..4).find(|rows| (out.as_ptr() as usize + rows * row_bytes) % 16 == 0);
+    let (2..=4, Some(head)) = (dims, aligned) else {
+        return decode(start, steps, out);
+    };
+    let head = head.min(steps.len());
+    let (head_out, rest) = out.split_at_mut(head * dims);
+    let p = decode(start, &steps[..head], head_out);
+    let steps = &steps[head..];
+    let end = match dims {
+        2 => by_pair_table::<true>(&p, steps, rest),
+        3 => by_vector_table::<3, 64, true>(&MOVES_3, &p, steps, rest),
+        _ => by_vector_table::<4, 256, true>(&MOVES_4, &p, steps, rest),
+    };
+    // Streaming stores are ordered with no other access: the fence makes
+    // them visible before any later read of the points.
+    // SAFETY: SSE is part of x86-64 itself.
+    unsafe { core::arch::x86_64::_mm_sfence() };
+    end
+}
+
 /// [`decode`] for 2 to 4 axes: one table read and a four-lane add per step.
 #[inline(always)]
 fn by_table<C: Coordinate, const DIMS: usize, const ENTRIES: usize>(
@@ -259,8 +332,12 @@ fn by_table<C: Coordinate, const DIMS: usize, const ENTRIES: usize>(
 /// memset of their 24 MB takes 0.7). On 3 axes four rows are 12 values,
 /// three whole vectors ([`Lanes4::rows_of_three`]): three stores for four
 /// steps, none straddling another's bytes (1.39 ms to 1.30 ms natively).
+///
+/// With `STREAMING`, the vectors of whole rows (four rows at a time on 3
+/// axes) go past the cache ([`Lanes4::store_as`]): `out` must then start
+/// 16-byte aligned ([`decode_streaming`]).
 #[inline(always)]
-fn by_vector_table<const DIMS: usize, const ENTRIES: usize>(
+fn by_vector_table<const DIMS: usize, const ENTRIES: usize, const STREAMING: bool>(
     table: &[[i32; 4]; ENTRIES],
     start: &Point,
     steps: &[Step],
@@ -289,8 +366,10 @@ fn by_vector_table<const DIMS: usize, const ENTRIES: usize>(
                 .enumerate()
             {
                 // SAFETY: rows `rows..rows + 4` are values rows·3 .. rows·3
-                // + 12 <= out.len() (four more steps are left).
-                unsafe { vector.store(base.add(rows * 3 + 4 * i)) };
+                // + 12 <= out.len() (four more steps are left); with
+                // STREAMING, `base` is 16-byte aligned and so is every
+                // vector's place, 48 bytes a four rows.
+                unsafe { vector.store_as::<STREAMING>(base.add(rows * 3 + 4 * i)) };
             }
             rows += 4;
         }
@@ -300,8 +379,9 @@ fn by_vector_table<const DIMS: usize, const ENTRIES: usize>(
             for index in table_indices_of_four::<DIMS, ENTRIES>(four) {
                 p = moved_by(p, index);
                 // SAFETY: four more steps are left, so row `rows`' four
-                // values end at (rows + 1)·4 <= out.len().
-                unsafe { p.store(base.add(rows * 4)) };
+                // values end at (rows + 1)·4 <= out.len(); with STREAMING,
+                // `base` and so every row is 16-byte aligned.
+                unsafe { p.store_as::<STREAMING>(base.add(rows * 4)) };
                 rows += 1;
             }
         }
@@ -335,6 +415,24 @@ struct Lanes4(
     )))]
     [i32; 4],
 );
+
+impl Lanes4 {
+    /// Writes the four lanes to `at..at + 4`, with `STREAMING` past the
+    /// cache where the target can ([`decode_streaming`]: x86-64), else as
+    /// [`Lanes4::store`] does.
+    /// SAFETY: the caller owns those 16 bytes; with `STREAMING` on x86-64,
+    /// `at` is 16-byte aligned.
+    #[inline(always)]
+    unsafe fn store_as<const STREAMING: bool>(self, at: *mut i32) {
+        #[cfg(target_arch = "x86_64")]
+        if STREAMING {
+            use core::arch::x86_64::{__m128i, _mm_stream_si128};
+            unsafe { _mm_stream_si128(at.cast::<__m128i>(), self.0) };
+            return;
+        }
+        unsafe { self.store(at) }
+    }
+}
 
 // SAFETY (the intrinsics): SSE2 is part of x86-64 itself; the unaligned
 // load reads the 16 bytes of a [i32; 4].
@@ -478,8 +576,15 @@ impl Lanes4 {
 /// instructions again: the points of a 2,000,001-point 2D line decoded in
 /// 1.06 to 1.08 ms natively, 0.63 ms so; read in Node, 2.5 to 2.6 ms,
 /// 2.0 to 2.1 ms so.
+///
+/// With `STREAMING`, the stores of each four steps go past the cache
+/// ([`Lanes4::store_as`]): `out` must then start 16-byte aligned.
 #[inline(always)]
-fn by_pair_table(start: &Point, steps: &[Step], out: &mut [MaybeUninit<i32>]) -> Point {
+fn by_pair_table<const STREAMING: bool>(
+    start: &Point,
+    steps: &[Step],
+    out: &mut [MaybeUninit<i32>],
+) -> Point {
     assert!(start.dims() == 2 && out.len() == steps.len() * 2);
     let (x, y) = (i32::from_i64(start.get(0)), i32::from_i64(start.get(1)));
     let mut p = Lanes4::load(&[x, y, x, y]);
@@ -491,10 +596,13 @@ fn by_pair_table(start: &Point, steps: &[Step], out: &mut [MaybeUninit<i32>]) ->
         let [first, second] = pair_indices_of_four(four).map(|i| Lanes4::load(&PAIR_MOVES_2[i]));
         let after_first = p.add(first.high_pair());
         // SAFETY: four more steps are left, so rows `rows..rows + 4`, the
-        // values rows·2 .. rows·2 + 8, lie within `out`.
+        // values rows·2 .. rows·2 + 8, lie within `out`; with STREAMING,
+        // `base` and so both 16-byte halves are 16-byte aligned.
         unsafe {
-            p.add(first).store(base.add(rows * 2));
-            after_first.add(second).store(base.add(rows * 2 + 4));
+            p.add(first).store_as::<STREAMING>(base.add(rows * 2));
+            after_first
+                .add(second)
+                .store_as::<STREAMING>(base.add(rows * 2 + 4));
         }
         p = after_first.add(second.high_pair());
         rows += 4;
@@ -693,6 +801,48 @@ mod tests {
                 );
             }
             assert_eq!(end, p);
+        }
+    }
+
+    /// The streaming decode, whatever the alignment of its output and
+    /// however many steps (fewer than its aligned head, a group of four
+    /// and a tail), writes what [`decode`] does.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn the_streaming_decode_writes_what_decode_does_at_every_alignment() {
+        for dims in 1..=MAX_AXES {
+            let start = Point::new(&[-(1 << 30), 5, 1 << 30, 0, -7, 3][..dims]);
+            let every: Vec<Step> = every_code(dims).chain(every_code(dims).skip(1)).collect();
+            for len in (0..12.min(every.len())).chain([every.len() - 1, every.len()]) {
+                let steps = &every[..len];
+                let mut want = vec![0i32; len * dims];
+                let want_end = decode_into(&start, steps, &mut want);
+                // A u128 vector is 16-byte aligned: `offset` values into it
+                // is each alignment an i32 can have.
+                let mut memory = vec![0u128; (len * dims).div_ceil(4) + 1];
+                for offset in 0..4 {
+                    // SAFETY: u128 is 16 bytes of four i32 lanes; the slice
+                    // lies within `memory`, which it borrows mutably.
+                    let out = unsafe {
+                        std::slice::from_raw_parts_mut(
+                            memory.as_mut_ptr().cast::<MaybeUninit<i32>>().add(offset),
+                            len * dims,
+                        )
+                    };
+                    let end = decode_streaming(&start, steps, out);
+                    // SAFETY: decode_streaming wrote every value of `out`.
+                    let got = unsafe { &*(out as *const [MaybeUninit<i32>] as *const [i32]) };
+                    assert_eq!(
+                        got,
+                        &want[..],
+                        "{dims} axes, {len} steps, {offset} values in"
+                    );
+                    assert_eq!(
+                        end, want_end,
+                        "{dims} axes, {len} steps, {offset} values in"
+                    );
+                }
+            }
         }
     }
 

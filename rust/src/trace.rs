@@ -1374,7 +1374,8 @@ impl Trace {
     /// Writes the points with point indices `from..` into `out`, stride
     /// `dims`, as many as it holds, every value of it: the first from its
     /// checkpoint, the others by the decode specialised for this trace's
-    /// number of axes ([`crate::points::decode`]), straight into `out`.
+    /// number of axes, straight into `out`, past the cache when they are
+    /// too many to stay in it ([`crate::points::decode_to_new`]).
     fn write_points<C: Coordinate>(&self, from: u64, out: &mut [MaybeUninit<C>]) {
         let dims = self.dims();
         assert_eq!(out.len() % dims, 0, "whole points");
@@ -1387,7 +1388,7 @@ impl Trace {
         for (c, &v) in head.iter_mut().zip(first.coords()) {
             c.write(C::from_i64(v));
         }
-        crate::points::decode(&first, self.step_range(from, from + count - 1), rest);
+        crate::points::decode_to_new(&first, self.step_range(from, from + count - 1), rest);
     }
 
     /// Points `from..to` through `buffer`, a chunk at a time: each chunk,

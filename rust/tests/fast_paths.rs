@@ -292,8 +292,10 @@ fn the_line_walk_leaves_moves_past_the_product_bound_to_the_point_by_point_path(
 }
 
 /// A line long enough that its points fill whole huge pages, which the
-/// native reads advise for huge pages before writing (`huge_pages`): the
-/// points are still the replay's, whatever backs their memory.
+/// native reads advise for huge pages before writing (`huge_pages`), and
+/// that its i32 points are written past the cache (`decode_to_new`, past
+/// 8 MiB, on x86-64): the points are still the replay's, whatever backs
+/// their memory and however they reach it.
 #[test]
 fn points_of_a_long_line_are_the_replay() {
     let (from, to) = (
@@ -310,7 +312,7 @@ fn points_of_a_long_line_are_the_replay() {
     let n = t.steps() + 1;
     assert!(
         n as usize * 3 * 4 > 8 << 20,
-        "more than four huge pages of i32"
+        "more than four huge pages of i32, and past the cache"
     );
     let all = replayed_points(&t, 0, n);
     let narrow: Vec<i64> = t.points_i32(0, n).into_iter().map(i64::from).collect();
