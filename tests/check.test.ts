@@ -48,6 +48,19 @@ describe('checkPoints', () => {
     }
   });
 
+  it('checks an Int32Array as the same values in a Float64Array, to the ends of int32', async () => {
+    // A path from int32's largest x, past the grid's +-2^30: the core reads
+    // an Int32Array's values as they are, not widened to numbers first.
+    const far = [2 ** 31 - 1, -(2 ** 31), 0];
+    const rows = [far, [far[0]! - 1, far[1]! + 1, 1], [far[0]! - 2, far[1]! + 1, 2]];
+    for (const path of [rows, (await holdPath()).rows]) {
+      const values = path.flat();
+      const asInts = await checkPoints(REGIONS, { points: Int32Array.from(values), dims: 3 });
+      expect(asInts).toEqual(await checkPoints(REGIONS, { points: Float64Array.from(values), dims: 3 }));
+      expect(asInts.matches).toBe(false);
+    }
+  });
+
   it('matches the rule\'s own path, and reports a short tail', async () => {
     const t = await trace(REGIONS);
     const rows = pointsOf(t);

@@ -70,9 +70,14 @@ impl Points {
     }
 
     /// Points from a flat array of `dims` values per point (a JS array of
-    /// `[x, y, z]` rows or an Int32Array), checked as [`Self::from_text`]
-    /// checks text; errors name the field `points` and the point index.
-    pub fn from_flat(values: &[f64], dims: usize, move_dims: usize) -> Result<Points, Error> {
+    /// `[x, y, z]` rows or a Float64Array as f64, an Int32Array as i32:
+    /// [`FlatValue`]), checked as [`Self::from_text`] checks text; errors
+    /// name the field `points` and the point index.
+    pub fn from_flat<V: FlatValue>(
+        values: &[V],
+        dims: usize,
+        move_dims: usize,
+    ) -> Result<Points, Error> {
         let wrong = |message: String| Error::field("points", message);
         // An empty list has no coordinates to count ("the points have 0
         // coordinates each" said it as a mismatch).
@@ -93,7 +98,7 @@ impl Points {
         }
         let mut coords = Vec::with_capacity(values.len());
         for (i, &v) in values.iter().enumerate() {
-            coords.push(coordinate(v, i / dims, i % dims).map_err(wrong)?);
+            coords.push(v.coordinate(i / dims, i % dims).map_err(wrong)?);
         }
         let points = Points { dims, coords };
         points.check_path().map_err(|(_, message)| wrong(message))?;
@@ -145,6 +150,30 @@ impl Points {
             k - 1,
             Point::new(self.get(k - 1))
         )
+    }
+}
+
+/// A value of a flat array of points ([`Points::from_flat`]), as the
+/// array holds it: f64 (a JS number), which must be a whole number read
+/// exactly, or i32 (an Int32Array's, a trace's points as they cross to
+/// JavaScript), every one a coordinate as it is. An Int32Array was widened
+/// to f64 first: a second copy of the points, twice their bytes (36 MB at
+/// the page's cap of 1,500,000 points of 3 axes).
+pub trait FlatValue: Copy {
+    /// This value as the coordinate of point `index` on `axis`, or why it
+    /// is not one.
+    fn coordinate(self, index: usize, axis: usize) -> Result<i64, String>;
+}
+
+impl FlatValue for f64 {
+    fn coordinate(self, index: usize, axis: usize) -> Result<i64, String> {
+        coordinate(self, index, axis)
+    }
+}
+
+impl FlatValue for i32 {
+    fn coordinate(self, _index: usize, _axis: usize) -> Result<i64, String> {
+        Ok(self.into())
     }
 }
 
@@ -1170,7 +1199,11 @@ pub fn check_text(request_json: &str, text: &str) -> Result<Check, Error> {
 }
 
 /// Checks flat points (`dims` per point) against the request as JSON text.
-pub fn check_flat(request_json: &str, values: &[f64], dims: usize) -> Result<Check, Error> {
+pub fn check_flat<V: FlatValue>(
+    request_json: &str,
+    values: &[V],
+    dims: usize,
+) -> Result<Check, Error> {
     SlicedCheck::from_flat(request_json, values, dims)?.run()
 }
 
@@ -1290,9 +1323,9 @@ impl SlicedCheck {
 
     /// A check of flat points (`dims` per point, [`Points::from_flat`])
     /// against the request given as JSON text.
-    pub fn from_flat(
+    pub fn from_flat<V: FlatValue>(
         request_json: &str,
-        values: &[f64],
+        values: &[V],
         dims: usize,
     ) -> Result<SlicedCheck, Error> {
         let request = Request::from_json(request_json)?;
@@ -3136,7 +3169,7 @@ mod tests {
             "line 1, column 1: point 0 has 1 coordinate; the move has 3"
         );
         assert_eq!(
-            Points::from_flat(&[], 0, 3).unwrap_err().to_string(),
+            Points::from_flat::<f64>(&[], 0, 3).unwrap_err().to_string(),
             "points: there are no points"
         );
         assert_eq!(
@@ -3146,6 +3179,38 @@ mod tests {
         assert_eq!(
             f(&[0.0, 0.0, 0.0, 1.0], 3),
             "points: 4 values are not a whole number of 3-coordinate points"
+        );
+    }
+
+    /// An Int32Array's values, read as i32, are the points (or the error)
+    /// the same values give as JS numbers: a path, a path with a jump,
+    /// i32's extremes, a count that is not whole points.
+    #[test]
+    fn int32_values_read_as_the_same_numbers_do() {
+        let cases: [&[i32]; 4] = [
+            &[0, 0, 0, 1, 1, 0, 2, 1, 1],
+            &[0, 0, 0, 3, 1, 1],
+            &[i32::MIN, 0, i32::MAX, i32::MIN + 1, -1, i32::MAX],
+            &[0, 0, 0, 1],
+        ];
+        let read = |points: Result<Points, Error>| {
+            points
+                .map(|p| (p.dims, p.coords))
+                .map_err(|e| e.to_string())
+        };
+        for ints in cases {
+            let numbers: Vec<f64> = ints.iter().map(|&v| v.into()).collect();
+            assert_eq!(
+                read(Points::from_flat(ints, 3, 3)),
+                read(Points::from_flat(&numbers, 3, 3)),
+                "{ints:?}"
+            );
+        }
+        assert_eq!(
+            read(Points::from_flat(&[i32::MIN, 0, i32::MAX], 3, 3))
+                .unwrap()
+                .1,
+            [i32::MIN as i64, 0, i32::MAX as i64]
         );
     }
 

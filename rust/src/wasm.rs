@@ -222,25 +222,27 @@ impl CheckRun {
         #[wasm_bindgen(unchecked_param_type = "Int32Array | Float64Array")] points: JsValue,
         dims: Option<u32>,
     ) -> Result<CheckRun, JsValue> {
-        let values: Vec<f64> = if let Some(ints) = points.dyn_ref::<js_sys::Int32Array>() {
-            ints.to_vec().into_iter().map(f64::from).collect()
+        let dims = || {
+            dims.map(|d| d as usize).ok_or_else(|| {
+                to_js_error(&Error::field(
+                    "dims",
+                    "missing: give the coordinates per point",
+                ))
+            })
+        };
+        // Each array copied into wasm memory as it is: an Int32Array's
+        // values are coordinates already.
+        let check = if let Some(ints) = points.dyn_ref::<js_sys::Int32Array>() {
+            crate::check::SlicedCheck::from_flat(request_json, &ints.to_vec(), dims()?)
         } else if let Some(floats) = points.dyn_ref::<js_sys::Float64Array>() {
-            floats.to_vec()
+            crate::check::SlicedCheck::from_flat(request_json, &floats.to_vec(), dims()?)
         } else {
             return Err(to_js_error(&Error::field(
                 "points",
                 "expected an Int32Array or a Float64Array",
             )));
         };
-        let dims = dims.ok_or_else(|| {
-            to_js_error(&Error::field(
-                "dims",
-                "missing: give the coordinates per point",
-            ))
-        })?;
-        crate::check::SlicedCheck::from_flat(request_json, &values, dims as usize)
-            .map(CheckRun)
-            .map_err(|e| to_js_error(&e))
+        check.map(CheckRun).map_err(|e| to_js_error(&e))
     }
 
     /// Takes the check on by about `units` points' worth of work
