@@ -249,8 +249,9 @@ pub fn decode_to_new<C: Coordinate>(
 /// reads the line it writes into (its old bytes, never used), so points
 /// too many to stay in cache cost twice their bytes of memory traffic; a
 /// streaming store sends its line straight to memory. Natively the points
-/// of the bench's 2,000,001-point 3D line (24 MB) took 3.7 to 4.0 ms with
-/// the trace, 3.1 to 3.3 ms so (Intel Xeon, `end_to_end` example).
+/// of the bench's 2,000,001-point 3D line (24 MB) took 3.65 to 3.88 ms with
+/// the trace, 2.99 to 3.03 ms so (Intel Xeon, `end_to_end` example, four
+/// runs alternating the two).
 ///
 /// Such a store needs a 16-byte aligned place: the rows before the first
 /// that starts on one (three at most) are decoded as usual, and when no
@@ -273,8 +274,8 @@ fn decode_streaming(start: &Point, steps: &[Step], out: &mut [MaybeUninit<i32>])
         3 => by_vector_table::<3, 64, true>(&MOVES_3, &p, steps, rest),
         _ => by_vector_table::<4, 256, true>(&MOVES_4, &p, steps, rest),
     };
-    // Streaming stores are ordered with no other access: the fence makes
-    // them visible before any later read of the points.
+    // Streaming stores are weakly ordered, even with this thread's later
+    // reads: the fence orders them before any read of the points.
     // SAFETY: SSE is part of x86-64 itself.
     unsafe { core::arch::x86_64::_mm_sfence() };
     end
