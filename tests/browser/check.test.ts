@@ -122,6 +122,60 @@ describe('Check points (trace mode)', () => {
     await p.close();
   });
 
+  it('draws the checked points in one frame, framed below the legend their entries grow', async () => {
+    // The learner's two legend entries grow the legend over the view's top,
+    // below which the path is framed. Framed again only when the legend's
+    // ResizeObserver reported it, after the layout of the frame that drew
+    // the points, the view drew a second frame just to move the camera: at
+    // the page's cap each is 100 to 210 ms of the main thread on a software
+    // GPU (the compositor reads the canvas back). The frames are counted by
+    // the view's clears, one a frame (three.js clears before it draws).
+    const hold = await trace({ algorithm: 'bresenham3d', ...MOVE, tie: 'hold' });
+    const csv = pointsOf(hold).map((r) => r.join(',')).join('\n') + '\n';
+    hold.free();
+    const p = await openPage('?mode=trace&algorithm=regions&from=0,0,0&to=10,7,6', {
+      initScript: () => {
+        const counted = window as unknown as { sceneFrames: number };
+        counted.sceneFrames = 0;
+        const clear = WebGL2RenderingContext.prototype.clear;
+        WebGL2RenderingContext.prototype.clear = function (this: WebGL2RenderingContext, mask: number) {
+          if ((this.canvas as HTMLCanvasElement).dataset.testid === 'scene-canvas') counted.sceneFrames++;
+          clear.call(this, mask);
+        };
+      },
+    });
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+    await page.getByTestId('check-points').locator('summary').click();
+    expect(await page.getByTestId('legend-learner').isHidden()).toBe(true);
+    // From the task that shows the verdict (the worker's answer), the view's frames over the next ten animation frames.
+    const framesAfterAnswer = page.evaluate(
+      () =>
+        new Promise<number>((resolve) => {
+          const counted = window as unknown as { sceneFrames: number };
+          const result = document.querySelector('[data-testid="check-result"]')!;
+          const observer = new MutationObserver(() => {
+            if (!result.querySelector('[data-testid="check-verdict"]')) return;
+            observer.disconnect();
+            const atAnswer = counted.sceneFrames;
+            let left = 10;
+            const tick = () => (--left > 0 ? requestAnimationFrame(tick) : resolve(counted.sceneFrames - atAnswer));
+            requestAnimationFrame(tick);
+          });
+          observer.observe(result, { childList: true, subtree: true });
+        }),
+    );
+    await page.getByTestId('learner-points').fill(csv);
+    expect(await framesAfterAnswer).toBe(1);
+    expect(await page.getByTestId('legend-learner').isVisible()).toBe(true);
+    // That frame is framed below the grown legend: the z axis's name clear of it.
+    const legend = (await page.locator('#legend').boundingBox())!;
+    const z = (await page.locator('#viewport .axis-name').filter({ hasText: /^z$/ }).boundingBox())!;
+    expect(z.y).toBeGreaterThanOrEqual(legend.y + legend.height);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("draws a long path's points as the rule's are drawn, by their sample, with every cell near the current step", { timeout: 180_000 }, async () => {
     // The rule's 200,000-step line (drawn the lighter way on any WebGL: cells.ts), and its
     // points with one near the middle moved a cell: its z step taken a point later. Their line through the cells' centers was

@@ -161,6 +161,8 @@ export class PathViews {
     const cells = [difference?.expected, difference?.got].filter((p): p is number[] => p !== null && p !== undefined);
     this.#e.legendLearner.hidden = !points;
     this.#e.legendDifference.hidden = cells.length === 0;
+    // The legend, its entries shown or hidden (and, from show, renamed), framed for before the view draws again.
+    this.#main.overlaysChanged();
     // Other modes' second path and highlights are their own.
     if (!traced) return;
     // The points' box and their line (for a path drawn whole) as the worker found them.

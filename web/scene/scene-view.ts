@@ -180,6 +180,8 @@ export class SceneView {
   #lookOnce = false;
   /** The camera is where resetView put it, not where the user or a link did: a resize frames the path again. */
   #framedByDefault = false;
+  /** The share of the view's top that what lies over it took (#topInset) when resetView last framed the path below it. */
+  #framedInset = 0;
   /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
   #drawnOnce = false;
   /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
@@ -254,7 +256,7 @@ export class SceneView {
     // The legend and the tools over the view's top take their room from the
     // framed picture (#topInset): when they grow (a learner's points add two
     // legend entries) the path stood with its z axis under the legend.
-    const overlays = new ResizeObserver(() => this.#frameAgain());
+    const overlays = new ResizeObserver(() => this.overlaysChanged());
     for (const child of container.children) if (child !== this.canvas && child !== this.#labels.domElement) overlays.observe(child);
   }
 
@@ -584,10 +586,27 @@ export class SceneView {
     this.requestRender();
   }
 
+  /**
+   * What lies over the view's top (the legend, the tools) may have changed
+   * size: a path framed by default is framed again below it when it takes
+   * another share of the view than the framing was made for. What changes
+   * them calls it before the next frame, so that frame is drawn framed anew:
+   * the overlays' ResizeObserver (which calls it too) reports a change only
+   * after the layout of the frame that drew the path framed as before, and
+   * framing it again then drew a second frame (a learner's checked points,
+   * which add two legend entries, at the page's cap: two frames of 100 to
+   * 210 ms each on a software GPU, the second only to move the camera).
+   */
+  overlaysChanged(): void {
+    if (this.#framedByDefault && this.#topInset() !== this.#framedInset) this.resetView();
+  }
+
   /** Frames the whole path from the default direction (3D) or the plane's normal (2D). */
   resetView(): void {
     const drawn = this.#drawn;
     if (!drawn) return;
+    // Below the legend and the tools: the picture fills what they leave.
+    const inset = this.#topInset();
     if (this.#projection === '2d') {
       const view = PLANE_VIEWS[drawn.planeNormal!]!;
       const extent = drawn.bounds.getSize(new THREE.Vector3());
@@ -599,8 +618,7 @@ export class SceneView {
       const width = Math.abs(size.dot(right));
       const height = Math.abs(size.dot(view.up));
       const aspect = this.#container.clientWidth / Math.max(1, this.#container.clientHeight);
-      // Below the legend and the tools: the picture fills what they leave.
-      const free = 1 - this.#topInset();
+      const free = 1 - inset;
       this.#orthoHeight = Math.max(height / free, width / aspect, 2);
       this.#updateProjections();
       const center = box.getCenter(new THREE.Vector3()).addScaledVector(view.up, (1 - free) * (this.#orthoHeight / 2));
@@ -609,8 +627,9 @@ export class SceneView {
       this.#orthographic.zoom = 1;
       this.setCamera({ position: center.clone().addScaledVector(view.direction, distance).toArray(), target: center.toArray(), zoom: 1 });
     } else {
-      this.#fit(VIEW_DIRECTION, drawn);
+      this.#fit(VIEW_DIRECTION, drawn, inset);
     }
+    this.#framedInset = inset;
     this.#framedByDefault = true;
   }
 
@@ -621,9 +640,10 @@ export class SceneView {
    * from its edges for labels and handles, and is moved across so the picture is
    * centered (a path seen obliquely is not centered on its center), which lets
    * it come closer. A few rounds settle both. The path's cells, not its
-   * bounding box: a diagonal line leaves most of its box empty.
+   * bounding box: a diagonal line leaves most of its box empty. `inset`:
+   * the share of the view's top the legend and the tools take (#topInset).
    */
-  #fit(direction: THREE.Vector3, drawn: Drawn): void {
+  #fit(direction: THREE.Vector3, drawn: Drawn, inset: number): void {
     // The container's shape now, not as the last resize report left it: a
     // layout change (side by side) reshapes the view in the same task that
     // frames the path, before any ResizeObserver callback.
@@ -654,7 +674,6 @@ export class SceneView {
     // edges: within `freeX` of `middleX` across (-1..1, screen right), and
     // in the lower part of the height, within `freeY` of `middle` (screen up).
     const { clientWidth: width, clientHeight: height } = this.#container;
-    const inset = this.#topInset();
     // A small view (an embedded one) spares less of itself for the edges.
     const edge = Math.min(FIT_EDGE_PX, FIT_EDGE_SHARE * Math.min(width, height));
     // The tick labels that reach out of the picture need their width at the
