@@ -794,6 +794,42 @@ describe('the page', () => {
     await a.close();
   });
 
+  it("writes nothing to storage from a tab that followed another tab's program (it wrote back storage as it had read it, which, landing after the other tab's next write, took storage back to the older program)", async () => {
+    const a = await openPage('?mode=gcode');
+    await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    const b = await a.context.newPage();
+    // Counts B's writes of its state to localStorage.
+    await b.addInitScript(() => {
+      const setItem = Storage.prototype.setItem;
+      const counted = window as unknown as { stateWrites: number };
+      counted.stateWrites = 0;
+      Storage.prototype.setItem = function (this: Storage, key: string, value: string) {
+        if (this === window.localStorage && key === 'voxpath.state') counted.stateWrites++;
+        setItem.call(this, key, value);
+      };
+    });
+    await b.goto(`${siteUrl()}?mode=gcode`);
+    await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
+    // B's throttled write, if one is due, now (as when the page is hidden), and the count from there.
+    const flushed = (page: Page) =>
+      page.evaluate(() => {
+        window.dispatchEvent(new PageTransitionEvent('pagehide'));
+        return (window as unknown as { stateWrites: number }).stateWrites;
+      });
+    const writes = await flushed(b);
+    const program = 'G21 G90\nG1 X3 Y4 F600\n';
+    await a.page.getByTestId('gcode-text').fill(program);
+    await expect.poll(() => b.getByTestId('gcode-text').inputValue(), { timeout: TABS_POLL_MS }).toBe(program);
+    await b.getByTestId('trace-status').filter({ hasText: ', 1 move,' }).waitFor({ timeout: TABS_POLL_MS });
+    expect(await flushed(b)).toBe(writes);
+    // An edit of B's own is written.
+    await b.getByTestId('gcode-text').fill(`${program}G1 X7\n`);
+    await expect.poll(() => a.page.getByTestId('gcode-text').inputValue(), { timeout: TABS_POLL_MS }).toBe(`${program}G1 X7\n`);
+    expect(await flushed(b)).toBeGreaterThan(writes);
+    expect(a.problems()).toEqual([]);
+    await a.close();
+  });
+
   it("keeps a refused text over a visit to another mode, with its message (the last valid value came back)", async () => {
     const p = await openPage(EXAMPLE);
     const { page } = p;

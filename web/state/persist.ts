@@ -152,10 +152,29 @@ interface StoredParts {
 const EDIT_STAMP = Math.random().toString(36).slice(2);
 let editsWritten = 0;
 
+/** StoredParts.shown of `state`: the permalink of what it shows, without a program or points. */
+function shownOf(state: AppState): string {
+  return stateToQuery(state, { gcodeLimit: 0 });
+}
+
+/**
+ * Whether two queries hold the same keys and values, in any order: a
+ * machine read back from storage lists its settings in another order than
+ * the default machine's.
+ */
+function sameQuery(a: string | undefined, b: string | undefined): boolean {
+  if (a === b) return true;
+  if (a === undefined || b === undefined) return false;
+  const [first, second] = [new URLSearchParams(a), new URLSearchParams(b)];
+  first.sort();
+  second.sort();
+  return first.toString() === second.toString();
+}
+
 function storedParts(state: AppState): StoredParts {
   const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: GCODE_URL_LIMIT });
   return {
-    shown: stateToQuery(state, { gcodeLimit: 0 }),
+    shown: shownOf(state),
     trace: withReplaced(withReplaced(part('trace'), 'replacedPoints', state), 'secondReplacedPoints', state),
     compare: part('compare'),
     gcode: withReplaced(withReplaced(part('gcode'), 'replacedProgram', state), 'secondReplacedProgram', state),
@@ -197,9 +216,10 @@ const PART_INPUTS: Record<AppState['mode'], readonly (keyof AppState)[]> = {
 const INPUTS = MODES.flatMap((mode) => PART_INPUTS[mode]);
 
 /**
- * The state this tab last wrote (undefined before its first write), with
- * the inputs it followed since from another tab: an input of the state
- * that is not this one's is an edit of this tab's.
+ * The state this tab last wrote (before its first write, the state it
+ * loaded with the inputs storage held then: undefined when storage held
+ * none), with the inputs it followed since from another tab: an input of
+ * the state that is not this one's is an edit of this tab's.
  */
 let lastWritten: AppState | undefined;
 
@@ -210,14 +230,22 @@ let storedSeen: AppState | undefined;
 let editSeen: string | undefined;
 
 /**
+ * The StoredParts.shown this tab last wrote (storage's, when this tab
+ * loaded, until it writes), with the inputs it followed since: a state
+ * whose shown differs has a step, a view or a mode of this tab's to write.
+ */
+let shownWritten: string | undefined;
+
+/**
  * Every StoredParts.edit storage held before one this tab wrote or followed
  * since: storage holding one of them again went back (followOtherTabs).
  */
 const editsSuperseded = new Set<string>();
 
 /**
- * The inputs (of PART_INPUTS) this tab changed since it last wrote (every
- * one at its first write): only they are written. Each tab wrote every
+ * The inputs (of PART_INPUTS) this tab changed since it last wrote (at its
+ * first write, those unlike storage's when it loaded; every one when storage
+ * held none), an edit undone not among them: only they are written. Each tab wrote every
  * mode's part as it held it, so a program typed in one tab was replaced by
  * another tab's old one as soon as that tab changed anything (a step, a
  * point), and lost at the next reload of the first tab outside G-code mode.
@@ -226,7 +254,7 @@ const editsSuperseded = new Set<string>();
  */
 function changedInputs(state: AppState): Set<keyof AppState> {
   const last = lastWritten;
-  return new Set(MODES.flatMap((mode) => PART_INPUTS[mode]).filter((key) => !last || state[key] !== last[key]));
+  return new Set(INPUTS.filter((key) => !last || !sameInput(state[key], last[key])));
 }
 
 /** `query` with the value `from` has for `key` (none when it has none). */
@@ -425,6 +453,7 @@ function write(given: AppState): void {
   const store = storage();
   if (state.embed || !store) return;
   const changed = changedInputs(state);
+  const shown = shownOf(state);
   lastWritten = state;
   // The long texts before the part that says where they are: a page closed
   // between the two writes leaves the text before, not a part pointing at
@@ -433,11 +462,22 @@ function write(given: AppState): void {
   let kept = (Object.keys(LONG_TEXT_KEYS) as LongText[])
     .map((field) => (changed.has(field) ? writeLongText(store, field, state[field]) : (longTextsWritten.get(field)?.kept ?? true)))
     .every(Boolean);
-  const edit = changed.size > 0 ? `${EDIT_STAMP}.${++editsWritten}` : undefined;
   const before = partsOf(store.getItem(STORAGE_KEY) ?? '');
+  // Nothing this tab holds changed since it last wrote, followed or loaded
+  // storage, which still holds that write (as this tab reads it): written,
+  // it only put back this tab's copy of storage, which another tab's write
+  // may have reached a moment later. Written after following that write
+  // (this tab's inputs as storage had them), it took storage back to an
+  // older write when it landed after the other tab's next one.
+  if (changed.size === 0 && sameQuery(shown, shownWritten) && before !== undefined && before.edit === editSeen) {
+    reportKept(kept);
+    return;
+  }
+  const edit = changed.size > 0 ? `${EDIT_STAMP}.${++editsWritten}` : undefined;
   const parts = partsToStore(storedParts(state), changed, edit, before);
   try {
     store.setItem(STORAGE_KEY, JSON.stringify(parts));
+    shownWritten = parts.shown;
     if (edit && tab) {
       // The write this one goes over, as this tab read it (another tab's,
       // at this tab's first write), is older than this one.
@@ -625,9 +665,33 @@ function followOtherTabs(): boolean {
     return edits.rewritten.length > 0;
   }
   lastWritten = { ...lastWritten, ...edits.followed };
+  // What this tab shows of the inputs followed is storage's already: not its own to write.
+  const shownBefore = shownOf(tab.store.state);
   tab.store.update({ ...edits.followed, ...edits.kept });
+  if (sameQuery(shownWritten, shownBefore)) shownWritten = shownOf(tab.store.state);
   tab.onOtherTab(otherTabNote(edits));
   return false;
+}
+
+/**
+ * Takes storage as this tab loaded it for its last write: the first write
+ * then writes only what `state` changed of it (a link's program replacing
+ * the one typed, its kept program; the step, the view or the mode shown),
+ * and nothing when it changed nothing. Each tab wrote every input as it
+ * loaded it, under a new StoredParts.edit: landing just after another tab's
+ * write, which this tab's copy of storage had not reached yet, it took
+ * storage back to the older inputs, and the other tab followed them, its
+ * edit lost in both tabs.
+ */
+function loaded(state: AppState, catalogue: Catalogue): void {
+  const parts = state.embed ? undefined : partsOf(storage()?.getItem(STORAGE_KEY) ?? '');
+  const stored = parts && readParts(catalogue, parts)?.typed;
+  if (!parts || !stored) return;
+  const unlike = INPUTS.filter((key) => !sameInput(state[key], stored[key]));
+  lastWritten = { ...state, ...Object.fromEntries(unlike.map((key) => [key, stored[key]])) };
+  storedSeen = stored;
+  editSeen = parts.edit;
+  shownWritten = parts.shown;
 }
 
 /**
@@ -694,5 +758,6 @@ export function persistState(store: Store<AppState>, catalogue: Catalogue, notes
       // Storage full or blocked: a reload comes back to the address it asks for.
     }
   });
+  loaded(store.state, catalogue);
   write(store.state);
 }

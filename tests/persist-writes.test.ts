@@ -1,0 +1,169 @@
+// When a tab writes its state to localStorage (web/state/persist.ts): only
+// when it changed something it holds. Run in Node against a window, a
+// document and storage areas made here, each test with persist.ts loaded
+// afresh (its module keeps what the tab last wrote and read), and its
+// throttled write flushed by the page's pagehide, never by waiting.
+import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
+import { catalogue as coreCatalogue } from '../web/core/index.js';
+import type { AppState, Catalogue } from '../web/state/app-state.js';
+import { Store } from '../web/state/store.js';
+
+const STORAGE_KEY = 'voxpath.state';
+
+/** A storage area that counts the writes of each key. */
+class CountingStorage implements Storage {
+  readonly #items = new Map<string, string>();
+  readonly writes = new Map<string, number>();
+  get length(): number {
+    return this.#items.size;
+  }
+  key(index: number): string | null {
+    return [...this.#items.keys()][index] ?? null;
+  }
+  getItem(key: string): string | null {
+    return this.#items.get(key) ?? null;
+  }
+  setItem(key: string, value: string): void {
+    this.writes.set(key, (this.writes.get(key) ?? 0) + 1);
+    this.#items.set(key, value);
+  }
+  removeItem(key: string): void {
+    this.#items.delete(key);
+  }
+  clear(): void {
+    this.#items.clear();
+  }
+  /** Another tab's write: this tab's copy holds it, uncounted. */
+  setByOtherTab(key: string, value: string): void {
+    this.#items.set(key, value);
+  }
+}
+
+/** A page's window and document, as much of them as persist.ts uses. */
+function fakePage(local: CountingStorage) {
+  const listeners = new Map<string, ((event: object) => void)[]>();
+  const on = (type: string, listener: (event: object) => void) => listeners.set(type, [...(listeners.get(type) ?? []), listener]);
+  const location = { pathname: '/', search: '', hash: '' };
+  const window = {
+    localStorage: local,
+    sessionStorage: new CountingStorage(),
+    location,
+    history: {
+      state: null,
+      replaceState: (_state: unknown, _title: string, url: string) => {
+        location.search = url.slice(url.indexOf('?'));
+      },
+    },
+    addEventListener: on,
+    get self() {
+      return window;
+    },
+    get top() {
+      return window;
+    },
+  };
+  const document = { visibilityState: 'visible', addEventListener: on };
+  const dispatch = (type: string, event: object = {}) => {
+    for (const listener of listeners.get(type) ?? []) listener(event);
+  };
+  return { window, document, dispatch };
+}
+
+let catalogue: Catalogue;
+let local: CountingStorage;
+let page: ReturnType<typeof fakePage>;
+
+beforeAll(async () => {
+  catalogue = await coreCatalogue();
+});
+
+beforeEach(() => {
+  vi.useFakeTimers();
+  local = new CountingStorage();
+  page = fakePage(local);
+  vi.stubGlobal('window', page.window);
+  vi.stubGlobal('document', page.document);
+});
+
+afterEach(() => {
+  vi.useRealTimers();
+  vi.unstubAllGlobals();
+});
+
+/** A tab loaded from the storage area and the address as they are now: persist.ts afresh, its store persisted. */
+async function openTab() {
+  vi.resetModules();
+  const persist = await import('../web/state/persist.js');
+  const store = new Store<AppState>(persist.loadState(catalogue));
+  persist.persistState(store, catalogue, { onKept: () => {}, onOtherTab: () => {} });
+  return store;
+}
+
+/** How many times the tab wrote its state since `from` (the count then). */
+const stateWrites = (from = 0) => (local.writes.get(STORAGE_KEY) ?? 0) - from;
+
+/** The program storage holds (short enough for its part). */
+const storedProgram = () => new URLSearchParams((JSON.parse(local.getItem(STORAGE_KEY)!) as { gcode: string }).gcode).get('gcode');
+
+describe("a tab's writes of its state to storage (persist.ts)", () => {
+  it('writes an edit, under a new edit stamp, at the throttled write or when the page is hidden', async () => {
+    const store = await openTab();
+    const [writes, stamp] = [stateWrites(), (JSON.parse(local.getItem(STORAGE_KEY)!) as { edit: string }).edit];
+    store.update({ gcode: 'G21 G90\nG1 X3 Y4 F600\n' });
+    page.dispatch('pagehide');
+    expect(stateWrites(writes)).toBe(1);
+    expect(storedProgram()).toBe('G21 G90\nG1 X3 Y4 F600\n');
+    expect((JSON.parse(local.getItem(STORAGE_KEY)!) as { edit: string }).edit).not.toBe(stamp);
+    // A step, not an input, is written too (a new visit comes back to it).
+    store.update({ pointIndex: 2 });
+    vi.runAllTimers();
+    expect(stateWrites(writes)).toBe(2);
+  });
+
+  it('writes nothing after following another tab\'s write (it wrote back storage as this tab read it: landing after that tab\'s next write, it undid it)', async () => {
+    const store = await openTab();
+    const theirs = 'G21 G90\nG1 X3 Y4 F600\nG1 X7';
+    const parts = JSON.parse(local.getItem(STORAGE_KEY)!) as Record<string, string>;
+    const query = new URLSearchParams(parts.gcode);
+    query.set('gcode', theirs);
+    local.setByOtherTab(STORAGE_KEY, JSON.stringify({ ...parts, gcode: query.toString(), edit: 'other-tab.1' }));
+    const writes = stateWrites();
+    page.dispatch('storage', { key: STORAGE_KEY, storageArea: local });
+    expect(store.state.gcode).toBe(theirs);
+    page.dispatch('pagehide');
+    vi.runAllTimers();
+    expect(stateWrites(writes)).toBe(0);
+  });
+
+  it('writes nothing for an edit undone before its throttled write, of a program or of the move (an equal object)', async () => {
+    const store = await openTab();
+    const writes = stateWrites();
+    const { gcode, options } = store.state;
+    store.update({ gcode: `${gcode}G1 X9\n`, options: { ...options, to: [9, 7, 6] } });
+    store.update({ gcode, options: { ...options } });
+    page.dispatch('pagehide');
+    expect(stateWrites(writes)).toBe(0);
+  });
+
+  it('writes nothing when loaded from storage as it is, and a link\'s program replacing the one typed (kept to bring back) when loaded from the link', async () => {
+    const typed = 'G21 G90\nG1 X3 Y4 F600\n';
+    (await openTab()).update({ mode: 'gcode', gcode: typed });
+    page.dispatch('pagehide');
+    page = fakePage(local);
+    vi.stubGlobal('window', page.window);
+    vi.stubGlobal('document', page.document);
+    let writes = stateWrites();
+    expect((await openTab()).state.gcode).toBe(typed);
+    expect(stateWrites(writes)).toBe(0);
+    page = fakePage(local);
+    page.window.location.search = `?mode=gcode&gcode=${encodeURIComponent('G1 X1 F600\n')}`;
+    vi.stubGlobal('window', page.window);
+    vi.stubGlobal('document', page.document);
+    writes = stateWrites();
+    const linked = await openTab();
+    expect([linked.state.gcode, linked.state.replacedProgram]).toEqual(['G1 X1 F600\n', typed]);
+    expect(stateWrites(writes)).toBe(1);
+    expect(storedProgram()).toBe('G1 X1 F600\n');
+    expect(new URLSearchParams((JSON.parse(local.getItem(STORAGE_KEY)!) as { gcode: string }).gcode).get('replaced')).toBe(typed);
+  });
+});
