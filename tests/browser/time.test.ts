@@ -139,6 +139,22 @@ async function xTitleInk(page: Page, name: string): Promise<{ fromPx: number; to
 }
 
 /**
+ * How far the timing diagram's canvas runs past its panel's content box
+ * (the panel's rect less its border and computed padding) at each side,
+ * CSS pixels: none, 0 or less.
+ */
+async function timingPastPanelPx(page: Page): Promise<{ leftPx: number; rightPx: number }> {
+  return page.getByTestId('timing').evaluate((timing) => {
+    const panel = timing.closest<HTMLElement>('.panel')!;
+    const { paddingLeft, paddingRight } = getComputedStyle(panel);
+    const outer = panel.getBoundingClientRect();
+    const content = { left: outer.left + panel.clientLeft + parseFloat(paddingLeft), right: outer.left + panel.clientLeft + panel.clientWidth - parseFloat(paddingRight) };
+    const canvas = timing.querySelector('canvas')!.getBoundingClientRect();
+    return { leftPx: content.left - canvas.left, rightPx: canvas.right - content.right };
+  });
+}
+
+/**
  * The program of one step between two waits, G1 X1 F60 then G4 P2 at 1
  * step/mm, opened in G-code mode, with its timing diagram and the diagram's
  * pause boxes.
@@ -389,7 +405,7 @@ describe('G-code mode: time', () => {
   it("keeps the pauses' labels whole in their boxes down to the narrowest page, shortened, the full ones under the chart", async () => {
     // The one-step program's two pauses, the most label the diagram draws beside the fewest steps. G-code
     // mode's page is laid out down to 272 px (its clock's choice is as wide; narrower, it scrolls sideways),
-    // and a chart is 200 px wide at least, its plot 82 px (a page of 246 px or less). Below some 300 px the
+    // and a chart is 200 px wide at least where its panel has room, its plot 82 px (a page of 243 to 246 px; 79 px at 240). Below some 300 px the
     // two boxes needed more than the plot for their words, were drawn narrower, and cut their labels
     // ('rogram', '.100 s', 'st step'); resized, the diagram kept the boxes it had chosen for the wider plot.
     const { p, page, timing, pauseBox } = await oneStepProgram();
@@ -454,8 +470,9 @@ describe('G-code mode: time', () => {
     for (const width of [300, 272, 260, 240]) {
       await page.setViewportSize({ width, height: 700 });
       const at = `${width} px`;
-      // The chart resized to its panel (200 px at least), and its window chosen again for the new plot.
-      const chartPx = () => timing.evaluate((t) => [t.querySelector('canvas')!.getBoundingClientRect().width, Math.max(200, t.clientWidth - 4)]);
+      // The chart resized to its panel (200 px at least, but no wider than the panel), and its window chosen again for the new plot.
+      const chartPx = () =>
+        timing.evaluate((t) => [t.querySelector('canvas')!.getBoundingClientRect().width, Math.min(Math.floor(t.getBoundingClientRect().width), Math.max(200, t.clientWidth - 4))]);
       await expect.poll(async () => new Set(await chartPx()).size, { message: at, timeout: 10_000 }).toBe(1);
       await expect.poll(async () => (await pauseLabelLines(page)).clipped, { message: at, timeout: 10_000 }).toEqual([]);
       const ink = await xTitleInk(page, `timing-x-title-${width}`);
@@ -482,9 +499,32 @@ describe('G-code mode: time', () => {
     await p.close();
   });
 
+  it("fits the diagram inside its panel's content box down to a page of 240 px, its labels whole", async () => {
+    // A chart was 200 px wide at least, whatever its panel: in a page of 240 to 242 px, where the inspector's
+    // content box is 197.5 to 199.5 px wide, the diagram's canvas ran past it into the panel's padding, 2.5 px
+    // at 240, 1.5 px at 241.
+    const { p, page, timing, pauseBox } = await oneStepProgram();
+    await expect.poll(() => pauseBox.count()).toBe(2);
+    for (const width of [241, 240]) {
+      await page.setViewportSize({ width, height: 700 });
+      const at = `${width} px`;
+      // Once resized for the page (a canvas drawn for the last width is wider): the most it runs past a side.
+      const pastPx = async () => Math.max(...Object.values(await timingPastPanelPx(page)));
+      await expect.poll(pastPx, { message: at, timeout: 10_000 }).toBeLessThanOrEqual(0);
+      // Still readable: the pauses' labels whole, the axis's title whole inside the canvas.
+      await expect.poll(async () => (await pauseLabelLines(page)).clipped, { message: at, timeout: 10_000 }).toEqual([]);
+      const ink = await xTitleInk(page, `timing-fits-x-title-${width}`);
+      expect([ink.fromPx >= 1, ink.toPx <= ink.canvasPx - 2], at).toEqual([true, true]);
+      await timing.scrollIntoViewIfNeeded();
+      await screenshot(page, `timing-fits-panel-${width}`, '[data-testid=timing]');
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("sizes a pause's box for the pauses drawn beside it: drawn alone in a narrow page, its label whole", async () => {
     // Moves of 10 steps 0.1 s apart between dwells of 3 s (1 mm at F60, 10 steps/mm). At the middle move's
-    // first step in a page of 240 px (the plot 82 px) a window can end at either dwell, but its steps leave
+    // first step in a page of 240 px (the plot 79 px) a window can end at either dwell, but its steps leave
     // room for one box only: it is drawn with the dwell before it alone. Its box was sized as beside the other
     // dwell's too, the two more than 70% of the plot, and came out bare, its whole label under the chart.
     const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG4 P3\nG1 X2\nG4 P3\nG1 X3\n');

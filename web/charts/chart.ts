@@ -164,6 +164,23 @@ function xTickSpace(_u: uPlot, _axis: number, min: number, max: number): number 
   return Math.max(50, Math.ceil(tickWidthPx(widestTickLabel(min, max))) + X_TICK_GAP_PX);
 }
 
+/** A chart's least width, CSS pixels, where its container is wide enough for it (chartWidthPx). */
+const MIN_WIDTH_PX = 200;
+
+/**
+ * The chart's width in `container`, CSS pixels: the container's less 4, at
+ * least MIN_WIDTH_PX, but never past the container's side; MIN_WIDTH_PX
+ * while it is hidden (no width). At MIN_WIDTH_PX whatever the container, a
+ * chart in a page 240 to 242 px wide (the inspector's content box 197.5 to
+ * 199.5 px) ran past it into the panel's padding, by 2.5 px at 240. The
+ * container's own width, not clientWidth, which rounds 197.5 up to 198.
+ */
+function chartWidthPx(container: HTMLElement): number {
+  const containerPx = container.getBoundingClientRect().width;
+  if (containerPx === 0) return MIN_WIDTH_PX;
+  return Math.min(Math.floor(containerPx), Math.max(MIN_WIDTH_PX, container.clientWidth - 4));
+}
+
 /** The colour of the step cursor (the page's accent, as the scrubber). */
 const CURSOR_COLOUR = '#d55e00';
 
@@ -233,7 +250,7 @@ export class StepChart {
     const outsideBreaks = (_u: uPlot, splits: number[]) => splits.map((v) => (this.#breaks.some((b) => v > b.fromX && v < b.toX) ? null : v));
     const opts: uPlot.Options = {
       title: spec.title,
-      width: Math.max(200, container.clientWidth - 4),
+      width: chartWidthPx(container),
       height: spec.heightPx ?? HEIGHT_PX,
       // A line's rows are not drawn as points (uPlot draws hollow circles
       // on a series of few rows, which read as the speed chart's junction
@@ -311,7 +328,7 @@ export class StepChart {
       else onPick(Math.round(x));
     });
     this.#resize = new ResizeObserver(() => {
-      const width = Math.max(200, container.clientWidth - 4);
+      const width = chartWidthPx(container);
       if (width === this.#plot.width) return;
       this.#plot.setSize({ width, height: spec.heightPx ?? HEIGHT_PX });
       spec.onResize?.();

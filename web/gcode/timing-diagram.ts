@@ -86,8 +86,8 @@ const PAUSE_LINE_SHARE = 0.225;
  * The share of the plot the pauses' boxes may take together, their labels
  * wrapped to their widest words: past it a label takes a shorter form
  * (pauseLabel's), the wider box's first, so that the steps keep 30% of the
- * plot. Without it, in a page under some 300 px wide (the chart's plot 82 px
- * at its narrowest, a page of 246 px or less) the two boxes of a program of
+ * plot. Without it, in a page under some 300 px wide (the chart's plot 79 px
+ * at its narrowest, in a page of 240 px) the two boxes of a program of
  * one step needed 107 px for their words, and were drawn narrower than their
  * labels ('rogram', '.100 s', '2.000').
  */
