@@ -476,6 +476,50 @@ describe('compare mode', () => {
     await p.close();
   });
 
+  it('draws a new comparison in one frame, at the size the step reason under the views leaves them', async () => {
+    // Two paths compared say, under the views, what each step did; at the
+    // start point a line says there is none. It came after the first frame
+    // (the second path's sentence was asked of the worker once that was
+    // drawn, even at a point it took no step to), shrank the views, and their
+    // ResizeObserver, which reports after a frame's layout, sized and framed
+    // the view anew and drew it again: at two 1,400,000-step lines compared,
+    // 80 to 160 ms of a software GPU for a frame only to move the camera.
+    // The frames are counted by the view's clears, one a frame, from the task
+    // that shows the comparison (its table is made there) over the next ten
+    // animation frames.
+    const p = await openPage('?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6', {
+      initScript: () => {
+        const counted = window as unknown as { sceneFrames: number; framesAfterResult?: number };
+        counted.sceneFrames = 0;
+        const clear = WebGL2RenderingContext.prototype.clear;
+        WebGL2RenderingContext.prototype.clear = function (this: WebGL2RenderingContext, mask: number) {
+          if ((this.canvas as HTMLCanvasElement).dataset.testid === 'scene-canvas') counted.sceneFrames++;
+          clear.call(this, mask);
+        };
+        const observer = new MutationObserver(() => {
+          if (!document.querySelector('[data-testid="metrics-table"]')) return;
+          observer.disconnect();
+          const atResult = counted.sceneFrames;
+          let left = 10;
+          const tick = () => (--left > 0 ? requestAnimationFrame(tick) : (counted.framesAfterResult = counted.sceneFrames - atResult));
+          requestAnimationFrame(tick);
+        });
+        observer.observe(document, { childList: true, subtree: true });
+      },
+    });
+    const { page } = p;
+    await steps(page, 23);
+    await expect.poll(() => page.evaluate(() => (window as unknown as { framesAfterResult?: number }).framesAfterResult), { timeout: 10_000 }).toBe(1);
+    expect(await text(page, 'step-reason')).toBe('The start point: no step has been decided yet.');
+    // That frame was drawn at the view's size as laid out with the line.
+    const canvas = page.getByTestId('scene-canvas');
+    const drawn = await canvas.evaluate((c: HTMLCanvasElement) => [c.width / devicePixelRatio, c.height / devicePixelRatio]);
+    const view = await page.locator('#viewport').evaluate((v) => [v.clientWidth, v.clientHeight]);
+    expect(drawn).toEqual(view);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it('keeps the second algorithm one the first can be compared with, when the first changes', async () => {
     const p = await openPage('?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6');
     const { page } = p;

@@ -16,6 +16,11 @@ import { element } from '../form/options-form.js';
 import { afterNextFrame } from '../main-thread.js';
 import { CoreCrash, type RemoteTrace } from '../worker/client.js';
 
+/** Whether a step of `trace` produced point index `pointIndex`: not at its start, nor past its end. */
+function tookStep(trace: RemoteTrace, pointIndex: number): boolean {
+  return pointIndex > 0 && pointIndex <= trace.steps;
+}
+
 /** What a path says at a point: its sentence, or undefined while the main path's detail is on its way. */
 type Sentence = string | undefined;
 
@@ -67,9 +72,19 @@ export class StepReason {
 
   #update(): void {
     if (!this.#element.checkVisibility()) return;
-    if (this.#second && this.#secondSentence?.pointIndex !== this.#wantedPointIndex) {
-      if (!this.#fetching) void this.#fetchSecond();
-      return;
+    const second = this.#second;
+    const pointIndex = this.#wantedPointIndex;
+    if (second && this.#secondSentence?.pointIndex !== pointIndex) {
+      if (tookStep(second, pointIndex)) {
+        if (!this.#fetching) void this.#fetchSecond();
+        return;
+      }
+      // Nothing to ask the worker (the start, where a new comparison opens,
+      // or past its end): said in the task that shows the traces. Asked for
+      // after their first frame, the line came then and took its room from
+      // the views, which were sized and drawn again (two 1,400,000-step
+      // lines compared: a frame of 80 to 160 ms on a software GPU).
+      this.#secondSentence = { pointIndex, text: '' };
     }
     this.#render();
   }
@@ -105,7 +120,7 @@ export class StepReason {
       while (this.#second && this.#secondSentence?.pointIndex !== this.#wantedPointIndex && this.#element.checkVisibility()) {
         const second = this.#second;
         const pointIndex = this.#wantedPointIndex;
-        const text = pointIndex === 0 || pointIndex > second.steps ? '' : ((await second.stepDetail(pointIndex)).explanation ?? '');
+        const text = tookStep(second, pointIndex) ? ((await second.stepDetail(pointIndex)).explanation ?? '') : '';
         if (second !== this.#second) continue;
         this.#secondSentence = { pointIndex, text };
       }
