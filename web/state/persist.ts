@@ -297,8 +297,17 @@ function storedState(catalogue: Catalogue): AppState | undefined {
   const parts = partsOf(text);
   if (!parts) return stateFromQuery(text, catalogue);
   const read = readParts(catalogue, parts);
+  if (read?.typed) readAtLoad = { parts, typed: read.typed };
   return read?.typed ? withOtherModes(catalogue, read.shown, new URLSearchParams(parts.shown), read.typed) : read?.shown;
 }
+
+/**
+ * Storage's parts as loadState read them, and the inputs they keep: what
+ * persistState's first write starts from (loaded). Undefined when storage
+ * held none (or none this page reads), and in an embedded view, which does
+ * not read storage.
+ */
+let readAtLoad: { parts: Partial<StoredParts>; typed: AppState } | undefined;
 
 /** The parts stored as `text`; undefined when it is not theirs (a visit from before them stored one permalink). */
 function partsOf(text: string): Partial<StoredParts> | undefined {
@@ -683,10 +692,11 @@ function followOtherTabs(): boolean {
  * storage back to the older inputs, and the other tab followed them, its
  * edit lost in both tabs.
  */
-function loaded(state: AppState, catalogue: Catalogue): void {
-  const parts = state.embed ? undefined : partsOf(storage()?.getItem(STORAGE_KEY) ?? '');
-  const stored = parts && readParts(catalogue, parts)?.typed;
-  if (!parts || !stored) return;
+function loaded(state: AppState): void {
+  // As loadState read them, in the same task: read again, a long text kept
+  // (a learner's points, up to 19 MB) was read and parsed twice at start-up.
+  if (!readAtLoad) return;
+  const { parts, typed: stored } = readAtLoad;
   const unlike = INPUTS.filter((key) => !sameInput(state[key], stored[key]));
   lastWritten = { ...state, ...Object.fromEntries(unlike.map((key) => [key, stored[key]])) };
   storedSeen = stored;
@@ -758,6 +768,6 @@ export function persistState(store: Store<AppState>, catalogue: Catalogue, notes
       // Storage full or blocked: a reload comes back to the address it asks for.
     }
   });
-  loaded(store.state, catalogue);
+  loaded(store.state);
   write(store.state);
 }
