@@ -717,11 +717,16 @@ describe('the page', () => {
     return text.split('\n').slice(0, line - 1).reduce((offset, l) => offset + l.length + 1, 0) + column;
   }
 
-  /** Two tabs of one browser context in G-code mode, each once its program has run: `a` (with openPage's checks) and `b`. */
-  async function twoGcodeTabs() {
+  /**
+   * Two tabs of one browser context in G-code mode, each once its program
+   * has run: `a` (with openPage's checks) and `b`, in which `bInit` runs
+   * before the page's own scripts when given.
+   */
+  async function twoGcodeTabs(bInit?: () => void) {
     const a = await openPage('?mode=gcode');
     await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     const b = await a.context.newPage();
+    if (bInit) await b.addInitScript(bInit);
     await b.goto(`${siteUrl()}?mode=gcode`);
     await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     return { a, b };
@@ -795,11 +800,8 @@ describe('the page', () => {
   });
 
   it("writes nothing to storage from a tab that followed another tab's program (it wrote back storage as it had read it, which, landing after the other tab's next write, took storage back to the older program)", async () => {
-    const a = await openPage('?mode=gcode');
-    await a.page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
-    const b = await a.context.newPage();
-    // Counts B's writes of its state to localStorage.
-    await b.addInitScript(() => {
+    // B counts its writes of its state to localStorage.
+    const { a, b } = await twoGcodeTabs(() => {
       const setItem = Storage.prototype.setItem;
       const counted = window as unknown as { stateWrites: number };
       counted.stateWrites = 0;
@@ -808,8 +810,6 @@ describe('the page', () => {
         setItem.call(this, key, value);
       };
     });
-    await b.goto(`${siteUrl()}?mode=gcode`);
-    await b.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor();
     // B's throttled write, if one is due, now (as when the page is hidden), and the count from there.
     const flushed = (page: Page) =>
       page.evaluate(() => {
