@@ -171,10 +171,11 @@ function sameQuery(a: string | undefined, b: string | undefined): boolean {
   return first.toString() === second.toString();
 }
 
-function storedParts(state: AppState): StoredParts {
+/** What storage keeps of `state`, `shown` its shownOf (a write has it already, to tell whether to write). */
+function storedParts(state: AppState, shown: string): StoredParts {
   const part = (mode: AppState['mode']) => stateToQuery({ ...state, mode }, { gcodeLimit: GCODE_URL_LIMIT });
   return {
-    shown: shownOf(state),
+    shown,
     trace: withReplaced(withReplaced(part('trace'), 'replacedPoints', state), 'secondReplacedPoints', state),
     compare: part('compare'),
     gcode: withReplaced(withReplaced(part('gcode'), 'replacedProgram', state), 'secondReplacedProgram', state),
@@ -483,7 +484,7 @@ function write(given: AppState): void {
     return;
   }
   const edit = changed.size > 0 ? `${EDIT_STAMP}.${++editsWritten}` : undefined;
-  const parts = partsToStore(storedParts(state), changed, edit, before);
+  const parts = partsToStore(storedParts(state, shown), changed, edit, before);
   try {
     store.setItem(STORAGE_KEY, JSON.stringify(parts));
     shownWritten = parts.shown;
