@@ -6,7 +6,7 @@
 // and N_3 = 6 (eq. 8) put the line in region d, so the step goes to D.
 import type { Locator, Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
-import { closeAll, openPage, screenshot } from './harness.js';
+import { closeAll, jumpTo, openPage, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -521,6 +521,62 @@ describe('the header', () => {
         if (width === 1280 && mode === 'gcode') await screenshot(page, 'header-1280-gcode', { x: 0, y: 0, width, height: 80 });
       }
     }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+/**
+ * How wide the document is against the window, px, and what runs past the window's right edge (each as
+ * 'id or tag.class right-edge'), leaving out what a box that scrolls or clips sideways keeps inside it.
+ */
+async function widthAndOverflow(page: Page): Promise<{ documentPx: number; windowPx: number; pastRightEdge: string[] }> {
+  return page.evaluate(() => {
+    const windowPx = document.documentElement.clientWidth;
+    const clippedInside = (e: Element) => {
+      for (let box = e.parentElement; box && box !== document.body; box = box.parentElement) {
+        if (getComputedStyle(box).overflowX !== 'visible' && box.getBoundingClientRect().right <= windowPx + 0.5) return true;
+      }
+      return false;
+    };
+    const pastRightEdge = [...document.body.querySelectorAll('*')]
+      .filter((e) => e.getBoundingClientRect().right > windowPx + 0.5 && e.checkVisibility() && !clippedInside(e))
+      .map((e) => `${e.id || `${e.tagName.toLowerCase()}.${[...e.classList].join('.')}`} ${Math.round(e.getBoundingClientRect().right)}`);
+    return { documentPx: document.documentElement.scrollWidth, windowPx, pastRightEdge };
+  });
+}
+
+describe('a narrow window', () => {
+  it("keeps a long path's step counter inside a window of 240 px, under the scrubber at every step", async () => {
+    // 'Step 999,999 of 1,000,000', held on one line beside the scrubber, ran 17 px past the window.
+    const long = await openPage('?algorithm=regions&from=0,0,0&to=1000000,3,2&step=999999');
+    await long.page.setViewportSize({ width: 240, height: 700 });
+    await long.page.getByTestId('step-counter').filter({ hasText: 'Step 999,999 of 1,000,000' }).waitFor({ timeout: 30_000 });
+    await expect.poll(async () => (await widthAndOverflow(long.page)).pastRightEdge, { timeout: 10_000 }).toEqual([]);
+    const { documentPx, windowPx } = await widthAndOverflow(long.page);
+    expect(documentPx).toBeLessThanOrEqual(windowPx);
+    await long.page.locator('.timeline').scrollIntoViewIfNeeded();
+    await screenshot(long.page, 'step-counter-long-240', '.timeline');
+    expect(long.problems()).toEqual([]);
+    await long.close();
+
+    // The default program's 'Step 6,400 of 6,400' left the scrubber beside it 18 px; the counter stands
+    // under it from the first step ('Step 0 of 6,400' fits beside it), not moving there midway.
+    const p = await openPage('?mode=gcode');
+    const { page } = p;
+    await page.setViewportSize({ width: 240, height: 700 });
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 0 of 6,400' }).waitFor();
+    // Where the counter and the scrubber stand in the playback (the page may scroll).
+    const placed = () =>
+      page.evaluate(() => {
+        const [playback, c, t] = ['.timeline', '#step-counter', '.scrub-track'].map((s) => document.querySelector(s)!.getBoundingClientRect());
+        return { counterTop: Math.round(c!.top - playback!.top), scrubberTop: Math.round(t!.top - playback!.top), scrubberWidth: Math.round(t!.width) };
+      });
+    const first = await placed();
+    expect(first.counterTop).toBeGreaterThan(first.scrubberTop);
+    expect(first.scrubberWidth).toBeGreaterThan(150);
+    await jumpTo(page, 6400);
+    expect(await placed()).toEqual(first);
     expect(p.problems()).toEqual([]);
     await p.close();
   });
