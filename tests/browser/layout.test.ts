@@ -547,6 +547,50 @@ async function widthAndOverflow(page: Page): Promise<{ documentPx: number; windo
 }
 
 describe('a narrow window', () => {
+  it("fits G-code mode's page at 240 to 360 px in machine time: the clock's choice on two lines, its readout wrapped, the moves' columns in sight", async () => {
+    // The clock's select was as wide as its longest choice, 'machine time, 1000× slower' (251 px):
+    // under 272 px the page scrolled sideways. So did the charts' 'Time shown' (237 px) and the moves'
+    // table (230 px in a panel of 198 at 240 px), and the machine-time readout, held on one line
+    // (350 px), up to 360 px.
+    const program = encodeURIComponent('G21 G90\nG1 X1 F60\nG4 P2\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=1&gcode=${program}`);
+    const { page } = p;
+    await page.setViewportSize({ width: 240, height: 700 });
+    await page.getByTestId('step-counter').filter({ hasText: /of 1$/ }).waitFor();
+    // Timed: machine time chosen, as a learner picks it, the readout giving the program's time.
+    const clock = page.getByTestId('slowdown');
+    await clock.selectOption({ label: 'machine time, 1000× slower' });
+    await page.getByTestId('machine-time').filter({ hasText: 'the program takes 3.100 s' }).waitFor({ timeout: 10_000 });
+    await page.getByTestId('moves-table').waitFor();
+    for (const width of [240, 272, 320, 360]) {
+      await page.setViewportSize({ width, height: 700 });
+      const at = `${width} px`;
+      await expect.poll(async () => (await widthAndOverflow(page)).pastRightEdge, { message: at, timeout: 10_000 }).toEqual([]);
+      const { documentPx, windowPx } = await widthAndOverflow(page);
+      expect(documentPx, `${at}: the document's width`).toBeLessThanOrEqual(windowPx);
+      for (const testid of ['slowdown', 'machine-time', 'motion-window']) {
+        const box = (await page.getByTestId(testid).boundingBox())!;
+        expect([box.x >= 0, box.x + box.width <= width + 0.5], `${at}: ${testid} inside the window`).toEqual([true, true]);
+      }
+      // Usable: the clock shown, a real share of the playback's width.
+      expect(await clock.isVisible(), at).toBe(true);
+      expect((await clock.boundingBox())!.width, `${at}: the clock's width`).toBeGreaterThan(150);
+      // The moves' six columns in the panel, not scrolled out of sight in their box.
+      const moves = await page.getByTestId('moves-table').evaluate((table) => [table.parentElement!.scrollWidth, table.parentElement!.clientWidth]);
+      expect(moves[0], `${at}: the moves' table`).toBeLessThanOrEqual(moves[1]!);
+    }
+    // At 240 px, where the browser lets a select be styled, the chosen clock in full on two lines, not cut to 'machine time, 100…'.
+    await page.setViewportSize({ width: 240, height: 700 });
+    if (await page.evaluate(() => CSS.supports('appearance', 'base-select'))) {
+      const lineHeightPx = await clock.evaluate((e) => parseFloat(getComputedStyle(e).fontSize) * 1.25);
+      await expect.poll(async () => (await clock.boundingBox())!.height).toBeGreaterThan(1.8 * lineHeightPx);
+    }
+    await page.locator('.timeline').scrollIntoViewIfNeeded();
+    await screenshot(page, 'gcode-machine-time-240', '.timeline');
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
   it("keeps a long path's step counter inside a window of 240 px, under the scrubber at every step", async () => {
     // 'Step 999,999 of 1,000,000', held on one line beside the scrubber, ran 17 px past the window.
     const long = await openPage('?algorithm=regions&from=0,0,0&to=1000000,3,2&step=999999');
@@ -577,6 +621,29 @@ describe('a narrow window', () => {
     expect(first.scrubberWidth).toBeGreaterThan(150);
     await jumpTo(page, 6400);
     expect(await placed()).toEqual(first);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("scrolls a program's moves sideways in their own box where their columns need more than the panel, not the page", async () => {
+    // Coordinates of five and six characters: the table needs 233 px, the panel has 198 at 240 px.
+    const program = encodeURIComponent('G21 G90\nG1 X123.456 Y-78.9 Z10 F600\nG1 X0 Y0 Z0\n');
+    const p = await openPage(`?mode=gcode&stepsPerMm=10&gcode=${program}`);
+    const { page } = p;
+    await page.setViewportSize({ width: 240, height: 700 });
+    await page.getByTestId('moves-table').waitFor({ timeout: 10_000 });
+    await expect.poll(async () => (await widthAndOverflow(page)).pastRightEdge, { timeout: 10_000 }).toEqual([]);
+    const { documentPx, windowPx } = await widthAndOverflow(page);
+    expect(documentPx).toBeLessThanOrEqual(windowPx);
+    // Its box scrolls: the last column can be brought into the window.
+    const box = await page.getByTestId('moves-table').evaluate((table) => {
+      const scroller = table.parentElement!;
+      scroller.scrollLeft = scroller.scrollWidth;
+      const last = table.querySelector('th:last-child')!.getBoundingClientRect();
+      return { scrolls: scroller.scrollWidth > scroller.clientWidth, lastRight: last.right, windowPx: document.documentElement.clientWidth };
+    });
+    expect(box.scrolls).toBe(true);
+    expect(box.lastRight).toBeLessThanOrEqual(box.windowPx);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

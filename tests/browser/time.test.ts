@@ -404,8 +404,7 @@ describe('G-code mode: time', () => {
 
   it("keeps the pauses' labels whole in their boxes down to the narrowest page, shortened, the full ones under the chart", async () => {
     // The one-step program's two pauses, the most label the diagram draws beside the fewest steps. G-code
-    // mode's page is laid out down to 272 px (its clock's choice is as wide; narrower, it scrolls sideways),
-    // and a chart is 200 px wide at least where its panel has room, its plot 82 px (a page of 243 to 246 px; 79 px at 240). Below some 300 px the
+    // mode's page fits down to 240 px (layout.test.ts, 'a narrow window'), and a chart is 200 px wide at least where its panel has room, its plot 82 px (a page of 243 to 246 px; 79 px at 240). Below some 300 px the
     // two boxes needed more than the plot for their words, were drawn narrower, and cut their labels
     // ('rogram', '.100 s', 'st step'); resized, the diagram kept the boxes it had chosen for the wider plot.
     const { p, page, timing, pauseBox } = await oneStepProgram();

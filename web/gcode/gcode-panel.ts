@@ -508,7 +508,8 @@ export class GcodePanel {
     });
     const table = element('table', { className: 'moves-table' }, element('caption', { textContent: `Moves ${from + 1}-${from + moves.length} of ${program.program.moveCount}` }), element('thead', {}, header), element('tbody', {}, ...rows));
     table.dataset.testid = 'moves-table';
-    this.#e.moves.replaceChildren(this.#diagnostics(program), table);
+    // Scrolled in its own box where its columns need more than the panel (long coordinates in a narrow window): 233 px of table held a page of 240 px wider than the window.
+    this.#e.moves.replaceChildren(this.#diagnostics(program), element('div', { className: 'table-scroll' }, table));
   }
 
   /** A run's progress (undefined: no run under way). */
