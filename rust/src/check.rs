@@ -198,6 +198,32 @@ fn coordinate(value: f64, index: usize, axis: usize) -> Result<i64, String> {
     Ok(value as i64)
 }
 
+/// Whether `number`, decimal text that reads as a finite number, writes a
+/// whole number: no digit but 0 after its point once its exponent has moved
+/// the point ("1.5e1" does, "15e-1" does not).
+fn writes_whole_number(number: &str) -> bool {
+    let unsigned = number.trim_start_matches(['+', '-']);
+    let (mantissa, exponent) = match unsigned.split_once(['e', 'E']) {
+        // An exponent past i64 moves the point past every digit.
+        Some((mantissa, exponent)) => (
+            mantissa,
+            exponent
+                .parse::<i64>()
+                .unwrap_or(if exponent.starts_with('-') {
+                    i64::MIN
+                } else {
+                    i64::MAX
+                }),
+        ),
+        None => (unsigned, 0),
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let point = (whole.len() as i64).saturating_add(exponent);
+    (whole.bytes().chain(fraction.bytes()))
+        .enumerate()
+        .all(|(i, digit)| (i as i64) < point || digit == b'0')
+}
+
 /// Text read into points a slice at a time ([`Self::advance`]), to the
 /// points and the errors of one reading ([`Points::from_text`], which is
 /// this run to its end): a check reads the 1,500,000 points of the page's
@@ -513,20 +539,29 @@ impl TextReader {
         for (axis, &(offset, cell)) in cells.iter().enumerate() {
             // Whole numbers as such (the common case, and exact at any
             // size); anything else as a number, to say what is wrong with it.
+            // Both are judged by their digits, not by the double they round
+            // to: 9007199254740993 was read as 2^53, and 0.99999999999999999
+            // and 1e-400 as the whole numbers 1 and 0.
+            let name = AXIS_NAMES[axis];
             let value = match cell.parse::<i64>() {
-                Ok(v) => coordinate(v as f64, index, axis),
+                Ok(v) if v.unsigned_abs() > EXACT_LIMIT as u64 => {
+                    Err(format!("point {index}: {name} = {v} is too large"))
+                }
+                Ok(v) => Ok(v),
                 Err(_) => {
                     let v = cell.parse::<f64>().map_err(|_| {
                         at(
                             offset,
-                            format!(
-                                "point {index}: {} = '{}' is not a number",
-                                AXIS_NAMES[axis],
-                                echo(cell)
-                            ),
+                            format!("point {index}: {name} = '{}' is not a number", echo(cell)),
                         )
                     })?;
-                    coordinate(v, index, axis)
+                    if v.is_finite() && !writes_whole_number(cell) {
+                        Err(format!(
+                            "point {index}: {name} = {cell} is not a whole number"
+                        ))
+                    } else {
+                        coordinate(v, index, axis)
+                    }
                 }
             };
             self.coords.push(value.map_err(|m| at(offset, m))?);
@@ -3179,6 +3214,51 @@ mod tests {
         assert_eq!(
             f(&[0.0, 0.0, 0.0, 1.0], 3),
             "points: 4 values are not a whole number of 3-coordinate points"
+        );
+    }
+
+    #[test]
+    fn a_coordinate_is_whole_and_in_range_as_written_not_as_its_double() {
+        // Each of these rounds to a double that is a whole number within
+        // 2^53, and was read as that number: 0.99999999999999999 as 1,
+        // 1e-400 as 0, 2^53 + 1 as 2^53 (and quoted so in the message).
+        let e = |text: &str| Points::from_text(text, 3).unwrap_err().to_string();
+        assert_eq!(
+            e("0,0,0\n1,0.99999999999999999,0\n"),
+            "line 2, column 3: point 1: y = 0.99999999999999999 is not a whole number"
+        );
+        assert_eq!(
+            e("1e-400 0 0\n"),
+            "line 1, column 1: point 0: x = 1e-400 is not a whole number"
+        );
+        assert_eq!(
+            e("[(0, 0, 1.00000000000000001e0)]"),
+            "line 1, column 9: point 0: z = 1.00000000000000001e0 is not a whole number"
+        );
+        assert_eq!(
+            e("0,0,1e-99999999999999999999\n"),
+            "line 1, column 5: point 0: z = 1e-99999999999999999999 is not a whole number"
+        );
+        assert_eq!(
+            e("9007199254740993,0,0\n"),
+            "line 1, column 1: point 0: x = 9007199254740993 is too large"
+        );
+        assert_eq!(
+            e("0,-9007199254740993,0\n"),
+            "line 1, column 3: point 0: y = -9007199254740993 is too large"
+        );
+        // Whole as written, in any notation, and 2^53 itself.
+        assert_eq!(
+            Points::from_text("1.5e1,150E-1,-0.0\n+16,15.000,0e-99999999999999999999", 3)
+                .unwrap()
+                .coords,
+            vec![15, 15, 0, 16, 15, 0]
+        );
+        assert_eq!(
+            Points::from_text("-9007199254740992,0,0", 3)
+                .unwrap()
+                .coords,
+            vec![-(1 << 53), 0, 0]
         );
     }
 
