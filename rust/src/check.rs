@@ -695,6 +695,18 @@ impl TextReader {
             }
             state.blank &= c.is_whitespace();
         }
+        // A bracket opened after the last row closed holds a point cut
+        // short ("[(0, 0, 0), (1, 1, 0), (2,"), which was dropped unread.
+        if let Some((start, line, column)) = state.open {
+            return Err(Error::at(
+                line,
+                column - 1,
+                format!(
+                    "'{}' opens a point that the text ends before closing: is the list cut short?",
+                    &text[start - 1..start]
+                ),
+            ));
+        }
         *budget = budget.saturating_sub(((text.len() - state.at) / 16) as u64);
         state.at = text.len();
         Ok(true)
@@ -3259,6 +3271,33 @@ mod tests {
                 .unwrap()
                 .coords,
             vec![-(1 << 53), 0, 0]
+        );
+    }
+
+    #[test]
+    fn a_printed_list_cut_short_inside_a_point_is_an_error_at_its_bracket() {
+        // The points before the cut were read and checked as the whole path
+        // ("your path stops at step 1"), the cut point dropped unread.
+        let e = |text: &str| Points::from_text(text, 3).unwrap_err().to_string();
+        for (text, at) in [
+            ("[(0, 0, 0), (1, 1, 0), (2,", "line 1, column 24"),
+            ("[(0, 0, 0), (1, 1, 0), (", "line 1, column 24"),
+            ("[[0, 0, 0],\n [1, 1, 0],\n [2, 1", "line 3, column 2"),
+        ] {
+            let bracket = &text[text.rfind(['(', '[']).unwrap()..][..1];
+            assert_eq!(
+                e(text),
+                format!(
+                    "{at}: '{bracket}' opens a point that the text ends before closing: is the list cut short?"
+                )
+            );
+        }
+        // An outer bracket left open after its last point closed loses no point.
+        assert_eq!(
+            Points::from_text("[(0, 0, 0), (1, 1, 0)", 3)
+                .unwrap()
+                .coords,
+            vec![0, 0, 0, 1, 1, 0]
         );
     }
 
