@@ -140,6 +140,24 @@ describe('voxpath reading numbers (issue 15 item 4)', () => {
     expect(r.stderr.split('\n')[0]).toBe("voxpath: --steps-per-mm: '0x50' is not a finite decimal number (such as 12, -3.5 or 1e6)");
   });
 
+  // Each of these reads as a whole number (1, 0, 8) that its text does not
+  // write, and was traced from or stepped as that number.
+  it.each([
+    [['--from', '0.99999999999999999,0,0'], "--from: '0.99999999999999999' is not a whole number (as a double it rounds to 1)"],
+    [['--from', '0,0,1e-400'], "--from: '1e-400' is not a whole number (as a double it rounds to 0)"],
+    [['--from', '0,0,0', '--max-steps', '7.9999999999999999'], "--max-steps: '7.9999999999999999' is not a whole number (as a double it rounds to 8)"],
+  ])('refuses %j, a whole number only as a double rounds it', (args, message) => {
+    const r = voxpath(['trace', '--algorithm', 'regions', '--to', '10,7,6', ...args]);
+    expect([r.code, r.stdout, r.stderr.split('\n')[0]]).toEqual([2, '', `voxpath: ${message}`]);
+  });
+
+  it('refuses a whole-number machine setting that only rounds to one, and takes a real one that does', () => {
+    const bad = voxpath(['gcode', '-', '--step-angle', '1.8', '--microsteps', '8.0000000000000001', '--pitch', '2'], 'G1 X1 F100\n');
+    expect([bad.code, bad.stderr.split('\n')[0]]).toEqual([2, "voxpath: --microsteps: '8.0000000000000001' is not a whole number (as a double it rounds to 8)"]);
+    const real = voxpath(['gcode', '-', '--steps-per-mm', '80.0000000000000001', '--format', 'json'], 'G1 X1 F100\n');
+    expect([real.code, JSON.parse(real.stdout).pulses]).toEqual([0, [80, 0, 0]]);
+  });
+
   it('reads every decimal form exactly: signs, points, exponents, blanks around', () => {
     const r = voxpath(['trace', '--algorithm', 'regions', '--from', '-0,+0,0.', '--to', ' .1e2, 7.0 ,6e0', '--max-steps', '1e3']);
     expect(r.code).toBe(0);

@@ -6,7 +6,7 @@
  * its help line, without code in the CLI.
  */
 import { parseArgs } from 'node:util';
-import { quoted, readDecimal } from '../core/guard.js';
+import { quoted, readDecimal, writesWholeNumber } from '../core/guard.js';
 import type { Catalogue, OptionSpec } from '../core/index.js';
 
 /** A command-line mistake: reported in one line plus usage, exit code 2. */
@@ -132,9 +132,17 @@ export function parseCommandLine(args: readonly string[], switches: readonly str
   return { flags, operands };
 }
 
-function numberOf(flag: string, part: string): number {
+/**
+ * A flag's number; for an option of whole numbers, also refused when its
+ * text is not whole but rounds to a whole number, which the core, handed
+ * the number, cannot see ('--from 1e-400,0,0' traced from the origin).
+ */
+function numberOf(flag: string, part: string, whole = false): number {
   const v = readDecimal(part);
   if (v === undefined) throw new UsageError(`${quoted(flag)}: '${quoted(part)}' is not a finite decimal number (such as 12, -3.5 or 1e6)`);
+  if (whole && Number.isInteger(v) && !writesWholeNumber(part)) {
+    throw new UsageError(`${quoted(flag)}: '${quoted(part.trim())}' is not a whole number (as a double it rounds to ${v})`);
+  }
   return v;
 }
 
@@ -142,12 +150,14 @@ function numberOf(flag: string, part: string): number {
 function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
   switch (spec.kind.type) {
     case 'point':
-      return text.split(',').map((part) => numberOf(flag, part));
+      return text.split(',').map((part) => numberOf(flag, part, true));
     case 'number':
-    case 'integer':
       return numberOf(flag, text);
+    case 'integer':
+      return numberOf(flag, text, true);
     case 'perAxis': {
-      const values = text.split(',').map((part) => numberOf(flag, part));
+      const whole = spec.kind.notWhole !== undefined;
+      const values = text.split(',').map((part) => numberOf(flag, part, whole));
       if (values.length !== 1 && values.length !== 3) {
         throw new UsageError(`${quoted(flag)}: expected one number or three (x,y,z), got ${values.length}`);
       }

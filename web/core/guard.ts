@@ -158,3 +158,16 @@ export function readDecimal(text: string): number | undefined {
   const value = Number(trimmed);
   return Number.isFinite(value) ? value : undefined;
 }
+
+/**
+ * Whether text readDecimal reads writes a whole number: no digit but 0
+ * after its point once its exponent has moved the point ('1.5e1' does,
+ * '15e-1' does not). The number cannot tell: '0.99999999999999999' and
+ * '1e-400' read as the whole numbers 1 and 0.
+ */
+export function writesWholeNumber(text: string): boolean {
+  const [mantissa = '', exponent = '0'] = text.trim().replace(/^[+-]/, '').split(/[eE]/);
+  const [whole = '', fraction = ''] = mantissa.split('.');
+  const point = whole.length + Number(exponent);
+  return [...(whole + fraction)].every((digit, i) => i < point || digit === '0');
+}
