@@ -479,12 +479,14 @@ impl<'t> Reader<'t> {
     }
 
     /// An exponent right after a number: e or E, then a digit, a sign or
-    /// a point (1e300, 1E-3).
+    /// a point (1e300, 1E-3), blanks and `/` between them dropped as they
+    /// are inside a number (X1E 5 is X1E5, which was the word E5).
     fn at_exponent(&self) -> bool {
         let bytes = self.text.as_bytes();
         matches!(bytes.get(self.at), Some(b'e' | b'E'))
-            && bytes
-                .get(self.at + 1)
+            && bytes[self.at + 1..]
+                .iter()
+                .find(|&&b| !dropped(b))
                 .is_some_and(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.'))
     }
 
@@ -786,8 +788,11 @@ impl<'t> Reader<'t> {
             // 1e300 (strtod), LinuxCNC and Grbl refuse the E.
             let start = self.at;
             self.bump();
-            self.take_while(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.'));
-            let exponent = &self.text[start..self.at];
+            self.take_while(|b| {
+                b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.') || dropped(b)
+            });
+            let exponent = self.text[start..self.at]
+                .trim_end_matches(|c: char| c.is_ascii() && dropped(c as u8));
             return Err(problem(
                 column,
                 format!(
@@ -1207,6 +1212,26 @@ mod tests {
                 errors(line),
                 [(
                     column,
+                    format!(
+                        "malformed number: {quoted}: a G-code number has no exponent; write it out in full (an E word after a number needs a blank before it: the one blank a line keeps)"
+                    )
+                )],
+                "{line}"
+            );
+        }
+        // Blanks and `/` inside the exponent are dropped, as inside a
+        // number: each of these was X1 and a word E (ignored, with a
+        // warning), where X1E5 is an error.
+        for (line, quoted) in [
+            ("G1 X1E 5", "X1E 5"),
+            ("G1 X1e/5 Y1", "X1e/5"),
+            ("G1 X1E -5", "X1E -5"),
+            ("G1 X1E\t 5 ", "X1E\\u{9} 5"),
+        ] {
+            assert_eq!(
+                errors(line),
+                [(
+                    4,
                     format!(
                         "malformed number: {quoted}: a G-code number has no exponent; write it out in full (an E word after a number needs a blank before it: the one blank a line keeps)"
                     )
