@@ -355,9 +355,10 @@ impl Default for LineRows {
 struct BracketRows {
     /// The next character's byte offset.
     at: usize,
-    /// The line it is on (1-based) and where that line starts.
+    /// The line it is on and its column there (1-based; a column is a
+    /// character, as in G-code, not a byte).
     line: u32,
-    line_start: usize,
+    column: u32,
     /// The bracket open: where its row starts, its line and column.
     open: Option<(usize, u32, u32)>,
     /// Whether the line so far is blank, and whether it is a comment
@@ -372,7 +373,7 @@ impl Default for BracketRows {
         BracketRows {
             at: 0,
             line: 1,
-            line_start: 0,
+            column: 1,
             open: None,
             blank: true,
             comment: false,
@@ -673,14 +674,14 @@ impl TextReader {
                 '\r' if text.as_bytes().get(i + 1) == Some(&b'\n') => {}
                 '\n' | '\r' => {
                     state.line += 1;
-                    state.line_start = i + 1;
+                    state.column = 0;
                     (state.blank, state.comment) = (true, false);
                 }
                 _ if state.comment => {}
                 '#' if state.blank => state.comment = true,
                 _ if c.is_whitespace() => {}
                 '[' | '(' => {
-                    state.open = Some((i + 1, state.line, (i + 1 - state.line_start + 1) as u32));
+                    state.open = Some((i + 1, state.line, state.column + 1));
                 }
                 ']' | ')' => {
                     if let Some((start, row_line, column)) = state.open.take() {
@@ -694,6 +695,7 @@ impl TextReader {
                 _ => {}
             }
             state.blank &= c.is_whitespace();
+            state.column += 1;
         }
         // A bracket opened after the last row closed holds a point cut
         // short ("[(0, 0, 0), (1, 1, 0), (2,"), which was dropped unread.
@@ -1041,12 +1043,17 @@ fn breaks(text: &str) -> u32 {
 
 /// The error `message` at byte `offset` of `text`, which starts at `line`
 /// and `column`: past a line break inside the text (a quoted cell's, or a
-/// bracketed row's), on a later line.
+/// bracketed row's), on a later line. Columns count characters, as
+/// G-code's do (they counted bytes: "é,1,1,x" put the x at column 8).
 fn error_in(text: &str, line: u32, column: u32, offset: usize, message: String) -> Error {
     let before = &text[..offset];
     match before.rfind(['\n', '\r']) {
-        None => Error::at(line, column + offset as u32, message),
-        Some(last) => Error::at(line + breaks(before), (offset - last) as u32, message),
+        None => Error::at(line, column + before.chars().count() as u32, message),
+        Some(last) => Error::at(
+            line + breaks(before),
+            before[last..].chars().count() as u32,
+            message,
+        ),
     }
 }
 
@@ -3299,6 +3306,57 @@ mod tests {
                 .coords,
             vec![0, 0, 0, 1, 1, 0]
         );
+    }
+
+    #[test]
+    fn columns_count_characters_not_bytes() {
+        // Each é is two bytes of UTF-8 and ✓ three: the columns were
+        // those of the bytes, past where an editor puts the character.
+        let e = |text: &str| Points::from_text(text, 3).unwrap_err().to_string();
+        for (text, at, what) in [
+            (
+                "label,x,y,z\né,0,0,0\né,1,1,x",
+                "line 3, column 7",
+                "point 1: z = 'x' is not a number",
+            ),
+            (
+                "label x y z\néé 0 0 0\néé 1 1 q",
+                "line 3, column 8",
+                "point 1: z = 'q' is not a number",
+            ),
+            (
+                "label,x,y,z\n\"é\nü\",0,0,1.5",
+                "line 3, column 8",
+                "point 0: z = 1.5 is not a whole number",
+            ),
+            (
+                "[(0,0,0),(1,1,0)] ✓✓ (1,1)",
+                "line 1, column 23",
+                "point 2 has 2 coordinates; the move has 3",
+            ),
+            (
+                "[(0,0,0)]\n✓✓✓ (1,1, q)",
+                "line 2, column 11",
+                "point 1: z = 'q' is not a number",
+            ),
+            (
+                "[(0,0,0)]\n✓ (1,\n ✓, 0)",
+                "line 3, column 2",
+                "point 1: y = '✓' is not a number",
+            ),
+            (
+                "[(0,0,0)]\r\n✓✓ (5,1,1)",
+                "line 2, column 5",
+                "point 1 (5, 1, 1) is more than one cell from point 0 (0, 0, 0): a path moves each axis at most one cell per step",
+            ),
+            (
+                "[(0,0,0), (1,1,1)] ✓ (",
+                "line 1, column 22",
+                "'(' opens a point that the text ends before closing: is the list cut short?",
+            ),
+        ] {
+            assert_eq!(e(text), format!("{at}: {what}"), "{text}");
+        }
     }
 
     /// An Int32Array's values, read as i32, are the points (or the error)
