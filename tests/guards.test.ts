@@ -29,6 +29,7 @@ import {
   VoxpathError,
 } from '../web/core/index.js';
 import type { Trace, TraceOptions } from '../web/core/index.js';
+import { forOverwrite } from '../web/core/trace.js';
 import { rejection, voxpath } from './helpers.js';
 
 const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] } satisfies TraceOptions;
@@ -382,5 +383,26 @@ describe('a G-code run past what its outputs hold', () => {
     const r = voxpath(['gcode', '-', '--steps-per-mm', '80', '--acceleration', '1e-100', '--format', 'vcd'], 'G1 X10 Y5 F600\nG1 X0\n');
     expect([r.code, r.stdout]).toEqual([1, '']);
     expect(r.stderr).toMatch(/^voxpath: program: the program lasts 1\.255e51 s[^\n]*\n$/);
+  });
+});
+
+describe('the arrays a trace hands out, past what one Node Buffer holds', () => {
+  // A trace's points, deviations and axis errors are made for the core to
+  // fill by forOverwrite. At the cap of 1,000,000,000 steps a 3D line's
+  // points are 12 GB and its deviations 8 GB: Node's Buffer stops at 4 GiB,
+  // and those reads were a RangeError on its "size", naming nothing given.
+  // (A trace that long takes a minute and 2 GB to make, so the allocation
+  // is tested on its own; a typed array past 4 GiB is only reserved, never
+  // touched, here.)
+  it('makes an array longer than 4 GiB as a plain typed array', () => {
+    const length = 2 ** 30 + 1;
+    const points = forOverwrite('to', Int32Array, length);
+    expect([points.constructor, points.length, points.byteLength]).toEqual([Int32Array, length, 4 * length]);
+  });
+
+  it('names the argument when no array that long can be made here', () => {
+    const e = thrown(() => forOverwrite('to', Float64Array, 2 ** 32 + 1));
+    expect(e.field).toBe('to');
+    expect(e.detail).toMatch(/^4294967297 values \(34359738376 bytes\) are more than one Float64Array can hold here \(.+\): read them a range at a time$/);
   });
 });

@@ -56,14 +56,29 @@ const SMALLEST_UNZEROED_BYTES = 1 << 20;
  * shared pool) skips the allocator's zero fill, which for the 24 MB of a
  * 2,000,000-point 3D line cost as much as copying the points in (0.85 of
  * 1.7 ms, measured with the memory reused after a collection). In a
- * browser, and for small arrays, a plain typed array.
+ * browser, for small arrays, and past Node's largest Buffer (4 GiB, which
+ * a typed array may pass: the points of a 1,000,000,000-step line, 12 GB,
+ * were a RangeError on the Buffer's "size"), a plain typed array. One
+ * longer than the runtime makes (or has memory for) is a VoxpathError
+ * naming `field`, the argument that asked for it.
  */
-function forOverwrite<T extends Int32Array | Float64Array>(Kind: TypedArrayOf<T>, length: number): T {
+export function forOverwrite<T extends Int32Array | Float64Array>(field: string, Kind: TypedArrayOf<T>, length: number): T {
   const bytes = length * Kind.BYTES_PER_ELEMENT;
   const nodeBuffer = (globalThis as { Buffer?: { allocUnsafeSlow(size: number): Uint8Array } }).Buffer;
-  if (nodeBuffer === undefined || bytes < SMALLEST_UNZEROED_BYTES) return new Kind(length);
-  const memory = nodeBuffer.allocUnsafeSlow(bytes);
-  return new Kind(memory.buffer as ArrayBuffer, memory.byteOffset, length);
+  if (nodeBuffer !== undefined && bytes >= SMALLEST_UNZEROED_BYTES) {
+    try {
+      const memory = nodeBuffer.allocUnsafeSlow(bytes);
+      return new Kind(memory.buffer as ArrayBuffer, memory.byteOffset, length);
+    } catch (error) {
+      if (!(error instanceof RangeError)) throw error;
+    }
+  }
+  try {
+    return new Kind(length);
+  } catch (error) {
+    if (!(error instanceof RangeError)) throw error;
+    throw argumentError(field, `${length} values (${bytes} bytes) are more than one ${Kind.name} can hold here (${error.message}): read them a range at a time`);
+  }
 }
 
 /**
@@ -209,7 +224,7 @@ export class Trace {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
     wholeNumber('every', every, 1, 2 ** 32 - 1, 'every (points apart)');
-    const out = forOverwrite(Int32Array, Math.ceil((to - from) / every) * this.dims);
+    const out = forOverwrite('to', Int32Array, Math.ceil((to - from) / every) * this.dims);
     callCore(() => core.points(from, to, every, out));
     return out;
   }
@@ -271,7 +286,7 @@ export class Trace {
   deviationInRange(from: number, to: number): Float64Array {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
-    const out = forOverwrite(Float64Array, to - from);
+    const out = forOverwrite('to', Float64Array, to - from);
     callCore(() => core.deviation(from, to, out));
     return out;
   }
@@ -286,7 +301,7 @@ export class Trace {
   axisErrorInRange(from: number, to: number): Float64Array {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
-    const out = forOverwrite(Float64Array, (to - from) * this.dims);
+    const out = forOverwrite('to', Float64Array, (to - from) * this.dims);
     callCore(() => core.axisError(from, to, out));
     return out;
   }
