@@ -122,3 +122,31 @@ describe('a 200,000-line G-code program', () => {
     expect(heapBytes()).toBe(before);
   });
 });
+
+describe("a G-code program's reads past the core's memory", () => {
+  // A read the core made whole in its own memory before handing it over
+  // trapped when that memory had no room ("RuntimeError: unreachable",
+  // naming nothing): the instants of 540,000,000 steps are 4.32 GB, past the
+  // 4 GiB a wasm memory holds. Run last: the program's 1.1 GB of steps stay
+  // in this worker's wasm memory, which never shrinks.
+  it('names to, and the program still answers a range at a time', { timeout: 120_000 }, async () => {
+    const p = await runGcode('G1 X540000 F1000', { stepsPerMm: 1000, maxSteps: 1e9 });
+    try {
+      expect(p.trace.steps).toBe(540_000_000);
+      let error: unknown;
+      try {
+        p.stepTimes(0, p.trace.steps);
+      } catch (e) {
+        error = e;
+      }
+      expect(error).toMatchObject({
+        name: 'VoxpathError',
+        field: 'to',
+        message: "to: the instants of steps 0..540000000 take 4320000000 bytes, more than the core's memory has room for: read them a range at a time",
+      });
+      expect(p.stepTimes(p.trace.steps - 2, p.trace.steps)[1]).toBe(p.durationSeconds);
+    } finally {
+      p.free();
+    }
+  });
+});

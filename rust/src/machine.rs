@@ -303,6 +303,14 @@ fn round_decimal_half_away(x: f64) -> f64 {
 /// every axis has been seen moving: fast when all axes move often, at worst
 /// one pass over the steps before `from` (2 bytes each).
 pub fn direction_levels(trace: &Trace, from: u64, to: u64) -> Vec<u8> {
+    let mut out = Vec::with_capacity(to.saturating_sub(from) as usize);
+    push_direction_levels(trace, from, to, &mut out);
+    out
+}
+
+/// [`direction_levels`], pushed onto `out` (which the caller may have made
+/// room in).
+pub fn push_direction_levels(trace: &Trace, from: u64, to: u64, out: &mut Vec<u8>) {
     let dims = trace.dims();
     let mut level = 0u8;
     let mut unknown: u8 = ((1u16 << dims) - 1) as u8;
@@ -315,13 +323,11 @@ pub fn direction_levels(trace: &Trace, from: u64, to: u64) -> Vec<u8> {
         level |= moving & (step.0 >> 8) as u8;
         unknown &= !moving;
     }
-    let mut out = Vec::with_capacity((to - from) as usize);
     for step in trace.step_range(from, to) {
         let moving = step.moving_axes();
         level = (level & !moving) | (moving & (step.0 >> 8) as u8);
         out.push(level);
     }
-    out
 }
 
 const _: () = assert!(MACHINE_AXES <= MAX_AXES);

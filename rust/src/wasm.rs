@@ -36,6 +36,26 @@ fn to_js<T: Serialize + ?Sized>(value: &T) -> JsValue {
     js_sys::JSON::parse(&json).expect("serde_json writes valid JSON")
 }
 
+/// An empty Vec with room for the `len` values a range read hands out, or,
+/// when the core's memory has no room for them, an error naming `to`: the
+/// allocation failing was a trap ("unreachable", naming nothing), as for
+/// the instants of a 600,000,000-step program (4.8 GB, past the 4 GiB a
+/// wasm memory holds).
+fn room_for<T>(len: u64, what: impl FnOnce() -> String) -> Result<Vec<T>, JsValue> {
+    let mut out = Vec::new();
+    match usize::try_from(len).map(|n| out.try_reserve_exact(n)) {
+        Ok(Ok(())) => Ok(out),
+        _ => Err(to_js_error(&Error::field(
+            "to",
+            format!(
+                "{} take {} bytes, more than the core's memory has room for: read them a range at a time",
+                what(),
+                len.saturating_mul(std::mem::size_of::<T>() as u64)
+            ),
+        ))),
+    }
+}
+
 fn to_js_error(error: &Error) -> JsValue {
     let js = js_sys::Error::new(&error.to_string());
     js.set_name("VoxpathError");
@@ -584,14 +604,20 @@ impl TraceHandle {
     #[wasm_bindgen(js_name = stepCodes)]
     pub fn step_codes(&self, from: u32, to: u32) -> Result<Vec<u16>, JsValue> {
         let (from, to) = self.step_range(from, to)?;
-        Ok(self.0.step_range(from, to).iter().map(|s| s.0).collect())
+        let mut out = room_for(to - from, || format!("the codes of steps {from}..{to}"))?;
+        out.extend(self.0.step_range(from, to).iter().map(|s| s.0));
+        Ok(out)
     }
 
     /// DIR levels of step indices `from..to` (see `machine::direction_levels`).
     #[wasm_bindgen(js_name = directionLevels)]
     pub fn direction_levels(&self, from: u32, to: u32) -> Result<Vec<u8>, JsValue> {
         let (from, to) = self.step_range(from, to)?;
-        Ok(crate::machine::direction_levels(&self.0, from, to))
+        let mut out = room_for(to - from, || {
+            format!("the DIR levels of steps {from}..{to}")
+        })?;
+        crate::machine::push_direction_levels(&self.0, from, to, &mut out);
+        Ok(out)
     }
 
     /// One sentence: why step index `step` was taken.
@@ -910,7 +936,9 @@ impl GcodeResult {
     #[wasm_bindgen(js_name = lineByStep)]
     pub fn line_by_step(&self, from: u32, to: u32) -> Result<Vec<u32>, JsValue> {
         let (from, to) = self.step_range(from, to)?;
-        Ok(self.moves.line_by_step(from, to))
+        let mut out = room_for(to - from, || format!("the lines of steps {from}..{to}"))?;
+        self.moves.push_line_by_step(from, to, &mut out);
+        Ok(out)
     }
 
     /// Index of the move programmed on a 1-based source line, if it moved.
@@ -932,7 +960,9 @@ impl GcodeResult {
     #[wasm_bindgen(js_name = stepTimes)]
     pub fn step_times(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
         let (from, to) = self.step_range(from, to)?;
-        Ok(self.timeline.step_seconds(from, to))
+        let mut out = room_for(to - from, || format!("the instants of steps {from}..{to}"))?;
+        self.timeline.push_step_seconds(from, to, &mut out);
+        Ok(out)
     }
 
     /// Seconds the machine waits at rest for a G4 dwell between

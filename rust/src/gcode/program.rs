@@ -788,21 +788,28 @@ impl MoveRecords {
     /// moves' last step), read from the records alone.
     pub fn line_by_step(&self, from: u64, to: u64) -> Vec<u32> {
         let mut out = Vec::with_capacity(to.saturating_sub(from) as usize);
+        self.push_line_by_step(from, to, &mut out);
+        out
+    }
+
+    /// [`Self::line_by_step`], pushed onto `out` (which the caller may have
+    /// made room in).
+    pub fn push_line_by_step(&self, from: u64, to: u64, out: &mut Vec<u32>) {
         let Some(first) = self.move_of_step(from) else {
-            return out;
+            return;
         };
+        let mut k = from;
         for index in first..self.records.len() {
             let (first_step, steps) = self.spans.steps_of(index);
             let end = to.min(first_step + steps);
-            let k = from + out.len() as u64;
             if end > k {
                 out.resize(out.len() + (end - k) as usize, self.records[index].line);
+                k = end;
             }
             if end == to {
                 break;
             }
         }
-        out
     }
 
     fn place(&self, index: usize) -> (u32, u32) {

@@ -480,14 +480,22 @@ impl Timeline {
     /// program's start (see the module comment).
     pub fn step_seconds(&self, from: u64, to: u64) -> Vec<f64> {
         let mut out = Vec::with_capacity(to.saturating_sub(from) as usize);
+        self.push_step_seconds(from, to, &mut out);
+        out
+    }
+
+    /// [`Self::step_seconds`], pushed onto `out` (which the caller may have
+    /// made room in).
+    pub fn push_step_seconds(&self, from: u64, to: u64, out: &mut Vec<f64>) {
         if from >= to {
-            return out;
+            return;
         }
         // The move that took step `from`.
         let Some(mut index) = self.moves.move_of_step(from) else {
-            return out;
+            return;
         };
-        while out.len() < (to - from) as usize && index < self.moves.len() {
+        let end = out.len() + (to - from) as usize;
+        while out.len() < end && index < self.moves.len() {
             let blocks = self.moves.blocks_of(index);
             let (first, steps) = self.moves.steps_of(index);
             let (lo, hi) = (from.max(first) - first, to.min(first + steps) - first);
@@ -500,7 +508,6 @@ impl Timeline {
             }
             index += 1;
         }
-        out
     }
 }
 
