@@ -1,7 +1,7 @@
 // G-code through the headless API (web/core, real wasm) and the CLI
 // (bin/voxpath.js). Expected numbers are worked by hand in the comments.
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { closeSync, mkdtempSync, openSync, readFileSync, readdirSync, rmSync, writeFileSync, writeSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -286,6 +286,29 @@ describe('voxpath gcode', () => {
       const points = Buffer.concat([Buffer.from([0xff, 0xfe]), Buffer.from('0,0,0\r\n1,1,1\r\n', 'utf16le')]);
       const check = spawnSync(process.execPath, [BIN, 'check', '-', '--algorithm', 'regions', '--from', '0,0,0', '--to', '1,1,1'], { input: points, encoding: 'utf8' });
       expect([check.status, check.stderr]).toEqual([0, '']);
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+
+  it('reads a UTF-16 file of more characters than one string holds, a piece at a time (it was said not to be UTF-16)', { timeout: 120_000 }, () => {
+    // 2^29 characters and more, past V8's longest string (2^29 - 24): decoded
+    // whole, the file was "not UTF-16LE text (an unpaired surrogate, or an odd
+    // byte count)". Sparse: its zeros, NUL characters in a ; comment, take no
+    // disk. An emoji (a surrogate pair) straddles the first piece's end.
+    const dir = mkdtempSync(join(tmpdir(), 'voxpath-utf16-'));
+    try {
+      const path = join(dir, 'long.gcode');
+      const fd = openSync(path, 'w');
+      const put = (text: string, at: number) => writeSync(fd, Buffer.from(text, 'utf16le'), 0, 2 * text.length, at);
+      writeSync(fd, Buffer.from([0xff, 0xfe]), 0, 2, 0);
+      put('G1 X1 F100\n;', 2);
+      put('\u{1F389}', 2 ** 26 - 2);
+      put('\nG1 X2\n', 2 + 2 ** 30);
+      closeSync(fd);
+      const r = voxpath(['gcode', path, '--steps-per-mm', '1', '--format', 'table']);
+      expect([r.code, r.stderr]).toEqual([0, '']);
+      expect(r.stdout.split('\n')[0]).toBe('gcode: 3 lines, 2 moves, 2 steps; 1, 1, 1 steps/mm (x, y, z); lines: regions, arcs: circle');
     } finally {
       rmSync(dir, { recursive: true, force: true });
     }

@@ -44,18 +44,21 @@ export function gcodeHelp(settings: readonly OptionSpec[]): string {
   ].join('\n');
 }
 
+/** Bytes of UTF-16 text decoded at once by readSource: 64 MiB, an even count. */
+const UTF16_PIECE_BYTES = 1 << 26;
+
 /**
  * The text of FILE, or of standard input for '-': its bytes as they are,
  * for the core to read as UTF-8 (which refuses bytes that are not UTF-8 at
  * their line and column, as `runGcode` and `checkPoints` refuse them: decoded
  * here, a Latin-1 "café" in a comment ran as U+FFFD without a word), or the
  * text decoded from UTF-16 where the bytes start with its byte order mark,
- * as a browser reads a file (the Encoding Standard's BOM sniffing). A
- * program or points file saved as "Unicode" by Windows Notepad is UTF-16
- * with a mark; read as UTF-8 its first line was "'��' is not G-code" and
- * every character a NUL beside it.
+ * as a browser reads a file (the Encoding Standard's BOM sniffing), and
+ * handed over as UTF-8. A program or points file saved as "Unicode" by
+ * Windows Notepad is UTF-16 with a mark; read as UTF-8 its first line was
+ * "'��' is not G-code" and every character a NUL beside it.
  */
-export async function readSource(file: string): Promise<string | Uint8Array> {
+export async function readSource(file: string): Promise<Uint8Array> {
   let bytes: Buffer;
   if (file === '-') {
     const chunks: Buffer[] = [];
@@ -71,8 +74,18 @@ export async function readSource(file: string): Promise<string | Uint8Array> {
   const utf16 = bytes[0] === 0xff && bytes[1] === 0xfe ? 'utf-16le' : bytes[0] === 0xfe && bytes[1] === 0xff ? 'utf-16be' : undefined;
   // TextDecoder drops the mark of its own encoding. UTF-8's mark the core skips.
   if (utf16 === undefined) return bytes;
+  // Decoded a piece at a time, each piece encoded as UTF-8 as it comes:
+  // decoded whole, a file of more than 2^29 characters (1 GiB of UTF-16)
+  // was a string longer than V8 makes, and was said not to be UTF-16.
+  const decoder = new TextDecoder(utf16, { fatal: true });
+  const encoder = new TextEncoder();
+  const pieces: Uint8Array[] = [];
   try {
-    return new TextDecoder(utf16, { fatal: true }).decode(bytes);
+    for (let at = 0; at < bytes.length; at += UTF16_PIECE_BYTES) {
+      const end = Math.min(at + UTF16_PIECE_BYTES, bytes.length);
+      pieces.push(encoder.encode(decoder.decode(bytes.subarray(at, end), { stream: end < bytes.length })));
+    }
+    return Buffer.concat(pieces);
   } catch {
     // The file's fault, as bytes that are not UTF-8 are: one line, no usage.
     const encoding = utf16.toUpperCase();
