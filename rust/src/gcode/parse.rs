@@ -84,6 +84,13 @@ fn dropped(byte: u8) -> bool {
     matches!(byte, b' ' | b'\t' | b'\r' | 0x0B | 0x0C | b'/')
 }
 
+/// Whether `byte`, past the blanks, starts nothing a line may hold: no
+/// letter, number, sign, comment or `%` (a `#`, a `[`, a byte of a
+/// character past ASCII).
+fn starts_nothing(byte: u8) -> bool {
+    !matches!(byte, b';' | b'(' | b')' | b'%' | b'.' | b'-' | b'+') && !byte.is_ascii_alphanumeric()
+}
+
 /// An address letter with its value, e.g. X-1.5 or F600.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Word {
@@ -584,21 +591,24 @@ impl<'t> Reader<'t> {
                         _ => block.words.push(self.word(letter, column)?),
                     }
                 }
-                _ => {
-                    let text = self.take_while(|b| {
-                        !matches!(b, b' ' | b'\t' | b';' | b'(' | b'-' | b'+')
-                            && !b.is_ascii_alphanumeric()
-                    });
-                    return Err(problem(
-                        column,
-                        format!(
-                            "'{}' is not G-code voxpath reads: a line holds words such as G1 or X10.5 and comments; parameters (#1) and expressions ([1+2]) are not supported",
-                            echo(text)
-                        ),
-                    ));
-                }
+                _ => return Err(self.not_gcode(column)),
             }
         }
+    }
+
+    /// The error for text at the reader, at `column`, that starts nothing
+    /// a line may hold ([`starts_nothing`]), quoting it up to what may.
+    fn not_gcode(&mut self, column: u32) -> Problem {
+        let text = self.take_while(|b| {
+            !matches!(b, b' ' | b'\t' | b';' | b'(' | b'-' | b'+') && !b.is_ascii_alphanumeric()
+        });
+        problem(
+            column,
+            format!(
+                "'{}' is not G-code voxpath reads: a line holds words such as G1 or X10.5 and comments; parameters (#1) and expressions ([1+2]) are not supported",
+                echo(text)
+            ),
+        )
     }
 
     /// The rest of a `%` line: blanks and comments only. Apart from the
@@ -713,6 +723,13 @@ impl<'t> Reader<'t> {
         column: u32,
     ) -> Read<(u32, NumberText<'t>, Option<f64>)> {
         if !self.at_number() {
+            // What stands there is named, where the reader would refuse it
+            // anyway: X[1+2], or an invisible X\u{200b}1, was "X has no
+            // number after it", pointing at an X with its number in sight.
+            if self.peek().is_some_and(starts_nothing) {
+                let at = self.column;
+                return Err(self.not_gcode(at));
+            }
             return Err(problem(
                 column,
                 format!("malformed number: {letter} has no number after it"),
@@ -996,6 +1013,26 @@ mod tests {
             errors("G1 X Y2"),
             [(4, "malformed number: X has no number after it".to_string())]
         );
+        // Where a word's number should stand, what the reader refuses is
+        // named, at its own column: these were "X has no number after it"
+        // (and "Y ...") at the letter.
+        for (line, column, quoted) in [
+            ("G1 X[1+2]", 5, "'['"),
+            ("G1 X\u{200b}1", 5, "'\\u{200b}'"),
+            ("G1 X1 Y #5", 9, "'#'"),
+            ("G1 X-\u{a0}1", 6, "'\\u{a0}'"),
+        ] {
+            assert_eq!(
+                errors(line),
+                [(
+                    column,
+                    format!(
+                        "{quoted} is not G-code voxpath reads: a line holds words such as G1 or X10.5 and comments; parameters (#1) and expressions ([1+2]) are not supported"
+                    )
+                )],
+                "{line}"
+            );
+        }
         // The crate then also finds "1" left over: only the first is kept.
         assert_eq!(
             errors("G X1"),
