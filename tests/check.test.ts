@@ -108,6 +108,13 @@ describe('checkPoints', () => {
     );
   });
 
+  it('names rows of no coordinates, which read as no points at all', async () => {
+    for (const rows of [[[]], [[], []], [[], [0, 0, 0]]]) {
+      expect((await rejection(checkPoints(REGIONS, rows))).message).toBe('points: point 0 has no coordinates (an empty array); a point has one per axis');
+    }
+    expect((await rejection(checkPoints(REGIONS, []))).message).toBe('points: there are no points');
+  });
+
   it('says to await points handed over as a Promise', async () => {
     const error = await rejection(checkPoints(REGIONS, Promise.resolve([[0, 0, 0]]) as unknown as number[][]));
     expect(error.message).toBe('points: got a Promise, not the points: await it first (checkPoints(request, await points))');

@@ -60,6 +60,9 @@ function slotValue(array: readonly unknown[], index: number): string {
 function flatten(rows: readonly unknown[]): { values: Float64Array; dims: number } {
   const first = rows[0];
   const dims = Array.isArray(first) ? first.length : 0;
+  // Rows of no coordinates flatten to no values, which the core reads as
+  // no points: [[], []] was "there are no points".
+  if (dims === 0 && Array.isArray(first)) throw argumentError('points', 'point 0 has no coordinates (an empty array); a point has one per axis');
   const values = new Float64Array(rows.length * dims);
   for (let index = 0; index < rows.length; index++) {
     const row = rows[index];
