@@ -56,6 +56,10 @@ pub const LINE_ALGORITHMS: &[&str] = &[
 /// with its own replay state and note.
 pub const MAX_CHORDS: u64 = 1 << 16;
 
+/// How the refusal of an arc of more than [`MAX_CHORDS`] chords starts
+/// (a G-code program, which sets no chord option, words it its own way).
+pub const TOO_MANY_CHORDS: &str = "splits this arc into";
+
 /// Fewest chords of a full circle: a triangle around the center.
 pub const MIN_FULL_CIRCLE_CHORDS: u64 = 3;
 
@@ -199,7 +203,7 @@ impl Chording {
             return Err(Error::field(
                 self.option(),
                 format!(
-                    "splits this arc into {}, more than {MAX_CHORDS}; use longer chords",
+                    "{TOO_MANY_CHORDS} {}, more than {MAX_CHORDS}; use longer chords",
                     // A tiny tolerance can make the count hundreds of digits
                     // long, and a segment length of 1e-320 infinite ("inf").
                     if n < 1e15 {

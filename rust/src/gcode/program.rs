@@ -32,7 +32,9 @@ use super::interpret::{ArcFormat, ArcMm, Effects, Interpreter, Motion, MoveMm};
 use super::parse::{Block, Problem, parse_line_into};
 use super::timing::{self, MoveSpans, Timeline};
 use crate::algorithms;
-use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
+use crate::arc::arc_segments::{
+    LINE_ALGORITHM, LINE_ALGORITHMS, SEGMENT_LENGTH, TOLERANCE, TOO_MANY_CHORDS,
+};
 use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, CENTER, MAX_TURNS, radii_within_tolerance};
@@ -1248,6 +1250,21 @@ impl Runner {
                     most: MAX_STEPS_LIMIT,
                 })
             }
+            // arc-segments' chord options are no settings of a program:
+            // "tolerance: ...; use longer chords" asked for one it cannot set.
+            Some(field)
+                if [TOLERANCE.name, SEGMENT_LENGTH.name].contains(&field)
+                    && e.message.starts_with(TOO_MANY_CHORDS) =>
+            {
+                let (count, _advice) = e.message.split_once(';').unwrap_or((&e.message, ""));
+                Error::at(
+                    m.line,
+                    m.column,
+                    format!(
+                        "at its default {field}, which a program does not set, arc-segments {count}: give the arc fewer turns (P) or a smaller radius, or run arcs with arcAlgorithm circle"
+                    ),
+                )
+            }
             Some(field) => Error::at(m.line, m.column, format!("{field}: {}", e.message)),
             None => e,
         };
@@ -1717,6 +1734,32 @@ mod tests {
             Runner::grid_center([381, 445], [281, 445], [331.0, 444.5]),
             Some([331, 445])
         );
+    }
+
+    #[test]
+    fn an_arc_of_too_many_chords_is_told_what_a_program_can_change() {
+        // "tolerance: splits this arc into 70265 chords, more than 65536; use
+        // longer chords": a program sets no tolerance.
+        let settings = r#"{"stepsPerMm": 10, "arcAlgorithm": "arc-segments"}"#;
+        for (source, chords) in [
+            ("G1 F100\nG2 X0 Y0 I50 P1000", "70265 chords"),
+            ("G1 F100\nG2 X0 Y0 I5 P1000000", "22270159 chords"),
+        ] {
+            let p = run(source, Settings::from_json(settings).unwrap());
+            let e = &p.info.errors[0];
+            assert_eq!(
+                (e.line, e.column, e.message.as_str()),
+                (
+                    2,
+                    1,
+                    format!(
+                        "at its default tolerance, which a program does not set, arc-segments splits this arc into {chords}, more than 65536: give the arc fewer turns (P) or a smaller radius, or run arcs with arcAlgorithm circle"
+                    )
+                    .as_str()
+                ),
+                "{source}"
+            );
+        }
     }
 
     /// A run of `source` with straight moves stepped as chosen: straight
