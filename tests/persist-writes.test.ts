@@ -5,7 +5,7 @@
 // throttled write flushed by the page's pagehide, never by waiting.
 import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
 import { catalogue as coreCatalogue } from '../web/core/index.js';
-import type { AppState, Catalogue } from '../web/state/app-state.js';
+import { type AppState, type Catalogue, DEFAULT_GCODE } from '../web/state/app-state.js';
 import { Store } from '../web/state/store.js';
 
 const STORAGE_KEY = 'voxpath.state';
@@ -165,5 +165,36 @@ describe("a tab's writes of its state to storage (persist.ts)", () => {
     expect(stateWrites(writes)).toBe(1);
     expect(storedProgram()).toBe('G1 X1 F600\n');
     expect(new URLSearchParams((JSON.parse(local.getItem(STORAGE_KEY)!) as { gcode: string }).gcode).get('replaced')).toBe(typed);
+  });
+});
+
+describe('storage holding what this page never writes (persist.ts)', () => {
+  it("reads a long text's piece count past the keys storage holds as no text kept, and writes over it (5e9 threw at load, leaving the page blank; 1e9 froze it reading absent pieces)", async () => {
+    const typed = `G21 G90\n${'G1 X1 F600\nG1 X0\n'.repeat(200)}`;
+    (await openTab()).update({ mode: 'gcode', gcode: typed });
+    page.dispatch('pagehide');
+    expect(local.getItem('voxpath.gcode')).toBe('1');
+    // A removal of every piece the count names would run for minutes: stopped here, and the test fails.
+    let removals = 0;
+    const remove = local.removeItem.bind(local);
+    local.removeItem = (key: string) => {
+      removals += 1;
+      if (removals > 10_000) throw new Error('removed more pieces than storage holds');
+      remove(key);
+    };
+    for (const count of ['5000000000', '1e9', 'Infinity', '-1', '2.5']) {
+      local.setByOtherTab('voxpath.gcode', count);
+      page = fakePage(local);
+      vi.stubGlobal('window', page.window);
+      vi.stubGlobal('document', page.document);
+      const store = await openTab();
+      expect(store.state.gcode).toBe(DEFAULT_GCODE);
+      const again = `${typed}G1 X2 ; ${count}\n`;
+      store.update({ gcode: again });
+      page.dispatch('pagehide');
+      expect(local.getItem('voxpath.gcode')).toBe('1');
+      expect(local.getItem('voxpath.gcode.0')).toBe(again);
+    }
+    expect(removals).toBeLessThan(100);
   });
 });

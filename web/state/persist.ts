@@ -367,11 +367,24 @@ function storedLongText(field: LongText, query: string): string | undefined {
   const store = storage();
   if (!store || new URLSearchParams(query).has(LONG_TEXT_PARAMS[field])) return undefined;
   const key = LONG_TEXT_KEYS[field];
-  const pieces = Array.from({ length: Number(store.getItem(key)) }, (_, i) => store.getItem(`${key}.${i}`));
+  const pieces = Array.from({ length: storedPieceCount(store, key) }, (_, i) => store.getItem(`${key}.${i}`));
   if (pieces.length === 0 || pieces.some((piece) => piece === null)) return undefined;
   const text = pieces.join('');
   longTextsWritten.set(field, { text, pieces: pieces as string[], kept: true });
   return text;
+}
+
+/**
+ * How many pieces storage says the long text under `key` is cut into: 0
+ * when the count is not a whole number or is more than the keys storage
+ * holds, as no count this page writes can be (storage edited by hand, or
+ * by another program on the origin): read as it stood, "1e9" froze the
+ * page at load, reading a billion absent pieces, and "Infinity" threw
+ * there, leaving it blank.
+ */
+function storedPieceCount(store: Storage, key: string): number {
+  const count = Number(store.getItem(key));
+  return Number.isSafeInteger(count) && count >= 0 && count <= store.length ? count : 0;
 }
 
 /** `text` cut into the pieces storage keeps of it (none when it is short enough for its part). */
@@ -519,7 +532,7 @@ function writeLongText(store: Storage, field: LongText, text: string): boolean {
   const before = written?.kept ? written.pieces : [];
   // Pieces past the new end: those this tab knows of, and those the keys
   // count (another tab's, or a visit's whose part now holds a short text).
-  const stale = Math.max(before.length, Number(store.getItem(key)) || 0);
+  const stale = Math.max(before.length, storedPieceCount(store, key));
   try {
     pieces.forEach((piece, i) => {
       if (piece !== before[i]) store.setItem(`${key}.${i}`, piece);
