@@ -198,3 +198,18 @@ describe('storage holding what this page never writes (persist.ts)', () => {
     expect(removals).toBeLessThan(100);
   });
 });
+
+describe('storage that cannot be read (storage-areas.ts)', () => {
+  it("loads a link, and writes its address, where every read of storage throws, as Firefox's does from a damaged store (the page was left blank at load)", async () => {
+    local.getItem = () => {
+      throw new DOMException('NS_ERROR_FILE_CORRUPTED', 'NS_ERROR_FILE_CORRUPTED');
+    };
+    page.window.sessionStorage.getItem = local.getItem;
+    page.window.location.search = '?mode=trace&algorithm=regions&from=0,0,0&to=4,3,2';
+    const store = await openTab();
+    expect(store.state.options.to).toEqual([4, 3, 2]);
+    store.update({ pointIndex: 2 });
+    page.dispatch('pagehide');
+    expect(new URLSearchParams(page.window.location.search).get('step')).toBe('2');
+  });
+});

@@ -5,20 +5,28 @@
  * this tab's sessionStorage.
  */
 
-/** localStorage, or undefined where it is blocked. */
-export function storage(): Storage | undefined {
+/**
+ * `area()`, or undefined when reaching it throws, or reading it does: Firefox
+ * throws NS_ERROR_FILE_CORRUPTED from every getItem of a damaged store, which
+ * left the page blank at load. A write that throws (storage full) is each
+ * writer's to handle.
+ */
+function readable(area: () => Storage): Storage | undefined {
   try {
-    return window.localStorage;
+    const store = area();
+    store.getItem('');
+    return store;
   } catch {
     return undefined;
   }
 }
 
+/** localStorage, or undefined where it is blocked. */
+export function storage(): Storage | undefined {
+  return readable(() => window.localStorage);
+}
+
 /** This tab's sessionStorage, or undefined where it is blocked. */
 export function tabStorage(): Storage | undefined {
-  try {
-    return window.sessionStorage;
-  } catch {
-    return undefined;
-  }
+  return readable(() => window.sessionStorage);
 }
