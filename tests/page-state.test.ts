@@ -67,8 +67,21 @@ describe('page state in the URL query', () => {
     for (const written of [first(), { ...first(), mode: 'compare' as const, other: 'bresenham3d', layout: 'side' as const }, { ...first(), mode: 'gcode' as const }, { ...first(), mode: 'experiment' as const }]) {
       const none: LinkNotes = { unread: [], fitted: [] };
       stateFromQuery(stateToQuery(written, url), catalogue, none);
-      expect([none.unread, none.fitted]).toEqual([[], []]);
+      expect([none.unread, none.fitted, none.repeated]).toEqual([[], [], undefined]);
     }
+  });
+
+  it('says which value it read of a key given more than once with another value: the first (a later "&to=9,9,9" added by hand was dropped without a word)', () => {
+    const notes: LinkNotes = { unread: [], fitted: [] };
+    const state = stateFromQuery(`from=0,0,0&to=5,5,5&tie=hold&to=9,9,9&to=${'8'.repeat(40)},1,1&to=9,9,9&tie=hold&stepsPerMm=80&stepsPerMm=10`, catalogue, notes)!;
+    expect(state.options.to).toEqual([5, 5, 5]);
+    expect(state.options.tie).toBe('hold');
+    expect(notes.repeated).toEqual(['to=5,5,5 (not 9,9,9, 8888888888888888... (44 characters))', 'stepsPerMm=80 (not 10)']);
+    expect(notes.unread).toEqual([]);
+    // Keys the page does not read are not its to judge.
+    const unknown: LinkNotes = { unread: [], fitted: [] };
+    stateFromQuery('to=5,5,5&utm_source=a&utm_source=b', catalogue, unknown);
+    expect(unknown.repeated).toBeUndefined();
   });
 
   it('reads back every persisted key of each mode, and starts paused', () => {

@@ -69,10 +69,11 @@ const scene = new SceneView(byId('viewport', HTMLDivElement), {
 function run(catalogue: Catalogue): void {
   const notes: LinkNotes = { unread: [], fitted: [] };
   const store = new Store<AppState>(loadState(catalogue, notes));
-  // A link's values the page cannot read were taken as their defaults, its points fitted to the axes shown, and (said once traced: firstPaths) its step past the path's end shown at the end, without a word.
+  // A link's values the page cannot read were taken as their defaults, a key it gives twice by its first value, its points fitted to the axes shown, and (said once traced: firstPaths) its step past the path's end shown at the end, without a word.
   const linkNote = byId('link-note', HTMLParagraphElement);
   const unread = notes.unread.length > 0 ? [`Not understood in this link, so left at their defaults: ${notes.unread.join(', ')}.`] : [];
-  const linkSentences = [...unread, ...notes.fitted.map(sentence)];
+  const repeated = notes.repeated ? [`Given more than once in this link, so read by its first value: ${notes.repeated.join(', ')}.`] : [];
+  const linkSentences = [...unread, ...repeated, ...notes.fitted.map(sentence)];
   const showLinkNote = () => {
     linkNote.textContent = linkSentences.join(' ');
     linkNote.hidden = linkSentences.length === 0;

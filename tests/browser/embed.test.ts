@@ -192,6 +192,20 @@ describe('embedded', () => {
     await fine.close();
   });
 
+  it('says which value it read of a key its link gives twice, in the full page too (a "&to=9,9,9" added at the end was dropped without a word)', async () => {
+    const link = 'algorithm=regions&from=0,0,0&to=5,5,5&tie=sideways&to=9,9,9';
+    for (const query of [link, `embed=1&${link}`]) {
+      const p = await openPage(query);
+      const { page } = p;
+      await page.getByTestId('step-counter').filter({ hasText: /of 5$/ }).waitFor();
+      expect(await page.getByTestId('link-note').innerText(), query).toBe(
+        'Not understood in this link, so left at their defaults: tie=sideways. Given more than once in this link, so read by its first value: to=5,5,5 (not 9,9,9).',
+      );
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+  });
+
   it('says how it fitted a 2D link to a 3D algorithm, in the full page too (traced with z = 0 without a word)', async () => {
     const link = 'algorithm=regions&from=0,0&to=7,-3';
     const said = 'from and to had 2 coordinates; regions takes 3: z = 0 added.';

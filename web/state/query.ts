@@ -105,6 +105,8 @@ export interface LinkNotes {
   unread: string[];
   /** Its points of another coordinate count than the page's axes, as fitted: "from and to had 2 coordinates; regions takes 3: z = 0 added". */
   fitted: string[];
+  /** Keys it gives more than once with another value, each read by its first ("to=5,5,5 (not 9,9,9)"); absent when none is. */
+  repeated?: string[];
   /** The point index its `step` names, as read: one past the path's end is shown at the end, which only the trace knows (its step count), so the note says it once traced. */
   step?: number;
 }
@@ -238,6 +240,16 @@ export function stateFromQuery(query: string, catalogue: Catalogue, notes?: Link
   const { algorithms } = catalogue;
   const optionNames = algorithms.flatMap((a) => a.options.map((o) => o.name));
   if (![...STATE_KEYS, ...optionNames].some((k) => params.has(k))) return undefined;
+  // A key given again with another value (a link edited by hand, "&to=9,9,9"
+  // added at its end) is read by its first value, and said so: the later
+  // value was dropped without a word.
+  const experiment = randomLinesExperiment(catalogue);
+  const readKeys = new Set([...STATE_KEYS, 'layout', ...optionNames, ...machineSpecs(catalogue).map((s) => s.name), ...(experiment?.options.map((o) => o.name) ?? [])]);
+  for (const key of readKeys) {
+    const [first, ...later] = params.getAll(key);
+    const others = [...new Set(later.filter((text) => text !== first))];
+    if (notes && others.length > 0) (notes.repeated ??= []).push(`${unreadKey(key, first!)} (not ${others.map(quoted).join(', ')})`);
+  }
   const mode = MODES.find((m) => m === params.get('mode')) ?? 'trace';
   taken('mode', mode === params.get('mode'));
   // Any algorithm in any mode: experiment mode runs a line algorithm of its
@@ -283,7 +295,6 @@ export function stateFromQuery(query: string, catalogue: Catalogue, notes?: Link
   const linkedMachine = readOptions(params, machineSpecs(catalogue), {}, unread);
   if (DRIVE_KEYS.some((k) => k in linkedMachine)) delete state.machine.stepsPerMm;
   state.machine = { ...state.machine, ...linkedMachine };
-  const experiment = randomLinesExperiment(catalogue);
   if (experiment) state.experiment = readOptions(params, experiment.options, state.experiment, unread);
   state.gcode = params.get('gcode') ?? state.gcode;
   state.learnerPoints = params.get('points') ?? state.learnerPoints;
