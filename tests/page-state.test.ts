@@ -148,6 +148,15 @@ describe('page state in the URL query', () => {
     expect(stateFromQuery('camera=1e9,2,3,0,0,0,1e6', catalogue)!.camera).toEqual({ position: [1e9, 2, 3], target: [0, 0, 0], zoom: 1e6 });
   });
 
+  it("declares every integer option's range, where it has one, within what the core reads exactly: the form refuses what the core does, and keeps it out of the link (a seed of 1e20 went into the link, and the core refused it)", () => {
+    const specs = [...catalogue.algorithms.flatMap((a) => a.options), ...catalogue.experiments.flatMap((e) => e.options)];
+    const ranged = specs.flatMap((spec) => (spec.kind.type === 'integer' && (spec.kind.min !== undefined || spec.kind.max !== undefined) ? [{ name: spec.name, ...spec.kind }] : []));
+    expect(ranged.map((r) => r.name)).toContain('seed');
+    for (const { name, min, max } of ranged) {
+      expect([name, min !== undefined && Math.abs(min) < 9e15, max !== undefined && Math.abs(max) < 9e15]).toEqual([name, true, true]);
+    }
+  });
+
   it('keeps out-of-range and fractional coordinates for the core to judge', () => {
     const state = stateFromQuery('from=0,0.5,0&to=2000000000,7,6', catalogue)!;
     expect(state.options).toEqual({ from: [0, 0.5, 0], to: [2_000_000_000, 7, 6] });

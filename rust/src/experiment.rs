@@ -14,7 +14,7 @@ use crate::algorithm_info::Family;
 use crate::error::Error;
 use crate::grid::{MAX_AXES, Point};
 use crate::range::{IntegerRange, WHOLE_NUMBER};
-use crate::request::{MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
+use crate::request::{MAX_EXACT_INTEGER, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request};
 use serde::Serialize;
 use serde_json::Value;
 use tsify::Tsify;
@@ -171,7 +171,7 @@ const SEED: OptionSpec = OptionSpec {
     name: "seed",
     kind: OptionKind::Integer(IntegerRange {
         min: Some(0),
-        max: None,
+        max: Some(MAX_EXACT_INTEGER),
         whole: WHOLE_NUMBER,
     }),
     required: false,
@@ -454,6 +454,16 @@ mod tests {
 
     fn run(json: &str) -> Result<RandomLines, Error> {
         random_lines(&Request::from_json(json).unwrap())
+    }
+
+    #[test]
+    fn a_seed_past_what_json_carries_exactly_is_told_its_declared_range() {
+        let e = run(r#"{"algorithm":"regions","count":1,"seed":9000000000000000}"#).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "seed: must be 0 to 8999999999999999, got 9000000000000000"
+        );
+        assert!(run(r#"{"algorithm":"regions","count":1,"seed":8999999999999999}"#).is_ok());
     }
 
     #[test]

@@ -14,6 +14,14 @@ use tsify::Tsify;
 /// Default limit on the length of one trace, in steps.
 pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
 
+/// The largest whole number (and, negated, the least) a request's number
+/// is read as ([`Request::integer`]): every whole number up to it is exact
+/// as JSON carries it (a double), past 2^53 no longer. The random lines'
+/// seed, which has no bound of its own, declares this one, so that the
+/// page's form refuses what the core would (a seed of 1e20 was put in the
+/// link).
+pub const MAX_EXACT_INTEGER: i64 = 8_999_999_999_999_999;
+
 /// Hard limit on `maxSteps`: 2 bytes per step must fit in wasm32 memory.
 pub const MAX_STEPS_LIMIT: u64 = 1_000_000_000;
 
@@ -413,7 +421,9 @@ impl Request {
     pub fn integer(&self, name: &str) -> Result<Option<i64>, Error> {
         match self.number(name)? {
             None => Ok(None),
-            Some(x) if x.fract() == 0.0 && x.abs() < 9.0e15 => Ok(Some(x as i64)),
+            Some(x) if x.fract() == 0.0 && x.abs() <= MAX_EXACT_INTEGER as f64 => {
+                Ok(Some(x as i64))
+            }
             // Whole, but past what a double holds exactly: 9007199254740993
             // arrives as ...992. Said so, not "not a whole number".
             Some(x) if x.fract() == 0.0 => Err(Error::field(
