@@ -8,7 +8,7 @@
 import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
 import { PALETTE } from '../../web/scene/palette.js';
-import { closeAll, openPage, pixelsOf, screenshot } from './harness.js';
+import { closeAll, onceShown, openPage, pixelsOf, screenshot } from './harness.js';
 
 afterAll(closeAll);
 
@@ -192,6 +192,22 @@ describe('view and form controls', () => {
     await box.uncheck();
     await m.filter({ hasText: /^6$/ }).waitFor();
     await page.waitForURL(/gcd=false/);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
+describe('a Cancel in trace mode', () => {
+  it("offers to trace the inputs again, as G-code's Run program does (a link's path cancelled while measured left a blank view until an input was changed)", { timeout: 120_000 }, async () => {
+    const p = await openPage('?algorithm=helix&from=1000,0,0&to=1000,0,300&center=0,0,0&plane=xy&turns=264');
+    const { page } = p;
+    // Clicked from inside the page at the bar's first report: a click from the test may come once the measuring has ended.
+    expect(await onceShown(page, 'trace-run', { click: 'trace-cancel' }, 'Measuring')).toMatch(/^Measuring: /);
+    await page.getByTestId('trace-status').filter({ hasText: /^Cancelled\.$/ }).waitFor({ timeout: 10_000 });
+    expect(await page.getByTestId('alert-message').innerText()).toBe('Cancelled: the inputs are not traced.');
+    await page.getByRole('button', { name: 'Trace again' }).click();
+    await page.getByTestId('step-counter').filter({ hasText: /of 1,498,840$/ }).waitFor({ timeout: 60_000 });
+    expect(await page.getByTestId('alert-message').isHidden()).toBe(true);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

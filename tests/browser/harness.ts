@@ -160,6 +160,41 @@ export async function jumpTo(page: Page, step: number): Promise<void> {
   await page.getByTestId('step-counter').filter({ hasText: new RegExp(`^Step ${step.toLocaleString('en-US')} of`) }).waitFor();
 }
 
+/**
+ * Once the element of test id `box` shows (a run's bar: its first report),
+ * and its text starts with `saying`, clicks the element of test id
+ * `click`, or types `value` into the field of test id `field` (`act` null:
+ * neither), from inside the page, at once: a click from the test comes tens of ms later, after a
+ * run shorter than that (a chart's rows in Chromium's worker) had ended.
+ * Resolves with the box's text then.
+ */
+export function onceShown(page: Page, box: string, act: { click: string } | { field: string; value: string } | null, saying = ''): Promise<string> {
+  return page.evaluate(
+    ([box, act, saying]) =>
+      new Promise<string>((resolve) => {
+        const target = document.querySelector(`[data-testid="${box}"]`) as HTMLElement;
+        const run = () => {
+          const text = target.textContent?.trim() ?? '';
+          if (target.hidden || !text.startsWith(saying)) return;
+          observer.disconnect();
+          if (act === null) {
+            // Only its text, seen.
+          } else if ('click' in act) (document.querySelector(`[data-testid="${act.click}"]`) as HTMLButtonElement).click();
+          else {
+            const field = document.querySelector(`[data-testid="${act.field}"]`) as HTMLInputElement;
+            field.value = act.value;
+            field.dispatchEvent(new Event('input', { bubbles: true }));
+          }
+          resolve(text);
+        };
+        const observer = new MutationObserver(run);
+        observer.observe(target, { attributes: true, attributeFilter: ['hidden'], childList: true, subtree: true, characterData: true });
+        run();
+      }),
+    [box, act, saying] as const,
+  );
+}
+
 /** Closes every page still open and the browser; use as `afterAll(closeAll)`. */
 export async function closeAll(): Promise<void> {
   await Promise.all([...opened].map((p) => p.close()));

@@ -30,7 +30,7 @@ import type { Page } from 'playwright-core';
 import { afterAll, describe, expect, it } from 'vitest';
 import { trace } from '../../web/core/index.js';
 import { pointsOf } from '../helpers.js';
-import { closeAll, jumpTo, openPage } from './harness.js';
+import { closeAll, jumpTo, onceShown, openPage } from './harness.js';
 
 afterAll(closeAll);
 
@@ -199,41 +199,6 @@ describe('two long lines compared on a software GPU', () => {
     await p.close();
   });
 });
-
-/**
- * Once the element of test id `box` shows (a run's bar: its first report),
- * and its text starts with `saying`, clicks the element of test id
- * `click`, or types `value` into the field of test id `field` (`act` null:
- * neither), from inside the page, at once: a click from the test comes tens of ms later, after a
- * run shorter than that (a chart's rows in Chromium's worker) had ended.
- * Resolves with the box's text then.
- */
-function onceShown(page: Page, box: string, act: { click: string } | { field: string; value: string } | null, saying = ''): Promise<string> {
-  return page.evaluate(
-    ([box, act, saying]) =>
-      new Promise<string>((resolve) => {
-        const target = document.querySelector(`[data-testid="${box}"]`) as HTMLElement;
-        const run = () => {
-          const text = target.textContent?.trim() ?? '';
-          if (target.hidden || !text.startsWith(saying)) return;
-          observer.disconnect();
-          if (act === null) {
-            // Only its text, seen.
-          } else if ('click' in act) (document.querySelector(`[data-testid="${act.click}"]`) as HTMLButtonElement).click();
-          else {
-            const field = document.querySelector(`[data-testid="${act.field}"]`) as HTMLInputElement;
-            field.value = act.value;
-            field.dispatchEvent(new Event('input', { bubbles: true }));
-          }
-          resolve(text);
-        };
-        const observer = new MutationObserver(run);
-        observer.observe(target, { attributes: true, attributeFilter: ['hidden'], childList: true, subtree: true, characterData: true });
-        run();
-      }),
-    [box, act, saying] as const,
-  );
-}
 
 describe("a 1,498,840-step helix's metrics and charts", () => {
   it('are made in the worker with their progress and a Cancel, and a change of the inputs or a Cancel stops them', { timeout: 180_000 }, async () => {

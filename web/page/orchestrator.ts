@@ -399,7 +399,19 @@ export class Orchestrator {
         const kept = this.#shown.program ?? this.#shown.experiment ?? this.#shown.a;
         p.status.cancelled(kept === undefined ? undefined : this.#shown.program ? 'program' : this.#shown.experiment ? 'experiment' : 'paths');
         if (kept) markStale(p.staleNote, 'cancelled');
+        // G-code's "Run program" and the experiment's "Run experiment" run
+        // their inputs again; trace and compare mode have no such button,
+        // and a Cancel left their inputs untraced (a link's: a blank view)
+        // until one was changed.
+        if (state.mode === 'trace' || state.mode === 'compare') {
+          showAlert(kept ? 'Cancelled: the view shows the last paths traced, not the inputs.' : 'Cancelled: the inputs are not traced.', 'Trace again', () => {
+            hideAlert();
+            void this.retrace();
+          });
+        }
       } else if (error instanceof InputRejected) {
+        // An offer to trace again (after a Cancel) would trace what is refused.
+        hideAlert();
         this.#rejected = true;
         if (Object.keys(this.#shown).length > 0) markStale(p.staleNote, 'rejected');
         if (state.mode === 'gcode') p.gcodePanel.showCoreError(error);
