@@ -208,6 +208,15 @@ describe('a Cancel in trace mode', () => {
     await page.getByRole('button', { name: 'Trace again' }).click();
     await page.getByTestId('step-counter').filter({ hasText: /of 1,498,840$/ }).waitFor({ timeout: 60_000 });
     expect(await page.getByTestId('alert-message').isHidden()).toBe(true);
+    // A path kept on screen is said; a value then refused as typed withdraws the offer, which would trace the last valid one.
+    await page.getByTestId('input-turns').fill('263');
+    await page.getByTestId('step-counter').filter({ hasText: /of 1,493,184$/ }).waitFor({ timeout: 60_000 });
+    const cancelled = onceShown(page, 'trace-run', { click: 'trace-cancel' }, 'Measuring');
+    await page.getByTestId('input-turns').fill('264');
+    await cancelled;
+    await page.getByTestId('alert-message').filter({ hasText: 'Cancelled: the view shows the last paths traced, not the inputs.' }).waitFor({ timeout: 10_000 });
+    await page.getByTestId('input-turns').fill('1e300');
+    await expect.poll(() => page.getByTestId('alert-message').isHidden(), { timeout: 10_000 }).toBe(true);
     expect(p.problems()).toEqual([]);
     await p.close();
   });

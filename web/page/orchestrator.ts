@@ -171,6 +171,8 @@ export class Orchestrator {
       if (invalid) this.#invalidForms.add(event.target as Element);
       else this.#invalidForms.delete(event.target as Element);
       const [refused, shown] = [this.#refusedHere(), Object.keys(this.#shown).length > 0];
+      // An offer to trace again would trace the last valid value, not the one refused.
+      if (refused) hideAlert();
       if (refused && shown) markStale(parts.staleNote, 'rejected');
       else if (!refused && !this.#rejected && staleness() === 'rejected') markStale(parts.staleNote, undefined);
       parts.exports.refresh(this.#inputsPending);
