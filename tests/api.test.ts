@@ -276,13 +276,15 @@ describe('bad input', () => {
         said.push(error.message);
       }
     }
-    // Both bounds, and a lower bound alone (liu-float's decimals; random-lines' count, maxCoordinate and seed);
-    // maxSteps and an arc's turns, which the core held to ranges their specs did not declare.
+    // Both bounds (liu-float's decimals; random-lines' count, maxCoordinate and seed, whose upper bound is the
+    // largest whole number the core reads exactly); maxSteps and an arc's turns, which the core held to ranges
+    // their specs did not declare.
     expect(said).toEqual(
       expect.arrayContaining([
         'decimals: must be 0 to 10, got 11',
         'count: must be 1 to 100000, got 0',
-        'seed: must be 0 or more, got -1',
+        'seed: must be 0 to 8999999999999999, got -1',
+        'seed: must be 0 to 8999999999999999, got 9000000000000000',
         'maxSteps: must be 0 to 1000000000, got 1000000001',
         'turns: must be 0 to 1000000, got -1',
       ]),

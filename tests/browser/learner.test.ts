@@ -467,14 +467,14 @@ describe("the experiment's form", () => {
     // The core's words for each, from the catalogue (its mustBe for the ranges experiment.rs declares).
     expect(await text(page, 'error-experiment-count')).toBe('must be 1 to 100000, got 0');
     expect(await text(page, 'error-experiment-maxCoordinate')).toBe('must be 1 to 10000, got 10001');
-    expect(await text(page, 'error-experiment-seed')).toBe('must be 0 or more, got -1');
+    expect(await text(page, 'error-experiment-seed')).toBe('must be 0 to 8999999999999999, got -1');
     expect(await page.getByTestId('input-experiment-count').getAttribute('aria-invalid')).toBe('true');
     // Nothing refused reaches the core: the tables shown are marked out of date.
     await expect.poll(() => text(page, 'stale-note')).toMatch(/^Out of date: the inputs were not traced/);
     // Put right, one at a time: the others still say so; all right, it traces.
     await page.getByTestId('input-experiment-count').fill('30');
     expect(await text(page, 'error-experiment-count')).toBe('');
-    expect(await text(page, 'error-experiment-seed')).toBe('must be 0 or more, got -1');
+    expect(await text(page, 'error-experiment-seed')).toBe('must be 0 to 8999999999999999, got -1');
     await page.getByTestId('input-experiment-maxCoordinate').fill('50');
     await page.getByTestId('input-experiment-seed').fill('2');
     await page.getByTestId('experiment-view').filter({ hasText: '30 random lines traced with regions' }).waitFor();
