@@ -67,7 +67,10 @@ describe('Trace.idealLine', () => {
     const empty = await runGcode('G21 G90\n', { stepsPerMm: 80 });
     const line2 = await trace({ algorithm: 'bresenham2d', from: [-3, 5], to: [40, -17] });
     const line4 = await trace({ algorithm: 'nd', from: [1, -2, 3, -4], to: [9, 7, -5, 6] });
-    for (const t of [program.trace, empty.trace, line2, line4]) {
+    // 20,001 vertices, past the core's pieces of 8,192 (two full, one not), and 120 KiB of floats.
+    const zigzag = await runGcode(Array.from({ length: 20_000 }, (_, k) => `G1 X${k + 1} Y${(k + 1) % 2}\n`).join(''), { stepsPerMm: 1 });
+    expect(zigzag.trace.idealLine().xyz.length).toBe(3 * 20_001);
+    for (const t of [program.trace, empty.trace, line2, line4, zigzag.trace]) {
       const line = t.idealLine();
       expect(line.xyz).toBeInstanceOf(Float32Array);
       expect(line.origin).toEqual([t.start[0], t.start[1], t.start[2] ?? 0]);
@@ -77,7 +80,7 @@ describe('Trace.idealLine', () => {
     }
     expect(program.trace.idealPolyline().length / 3).toBeGreaterThan(20);
     expect(empty.trace.idealLine().xyz.length).toBe(0);
-    for (const t of [program, empty, line2, line4]) t.free();
+    for (const t of [program, empty, line2, line4, zigzag]) t.free();
   });
 
   it('keeps each vertex exact near 2^30, where a 32-bit float of the coordinate is a multiple of 64', async () => {

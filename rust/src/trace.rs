@@ -2006,35 +2006,24 @@ impl Trace {
         out
     }
 
-    /// [`Self::ideal_polyline`] as WebGL draws it, flat f32, each vertex
-    /// taken from `origin` (x, y, z): the smallest x, y, z over its vertices,
-    /// the largest, then x, y, z of each vertex (after
-    /// [`IDEAL_LINE_BOX_VALUES`] values; a 2-axis path at z = 0, axes past
-    /// the third left out; the box all zeros when there is no vertex), then,
-    /// as many again, what rounding left of each (its rest). Each value is
-    /// the polyline's f64 less the origin's, rounded to the nearest f32
-    /// (`as`): from an origin near the path (its start), a vertex keeps its
-    /// fraction of a cell where f32 would round a coordinate near 2^30 to a
-    /// multiple of 64. A million cells from the origin it keeps only an
-    /// eighth of one, so the rest (that f64 less the f32, itself as f32)
-    /// gives the page the vertex to about 2^-48 of its distance, to draw
-    /// the part of a long path the learner looks at from an origin there.
-    /// Converted and boxed here, in the pass that copies the vertices: a
-    /// page's worker did it in JavaScript, once per run and so mostly before
-    /// its JIT had optimised the loop (11 to 12 ms for a 100,000-line
-    /// program's 250,000 vertices, against 3.4 ms once optimised).
-    pub fn ideal_line_f32(&self, origin: [f64; 3]) -> Vec<f32> {
+    /// [`Self::ideal_polyline`] as WebGL draws it ([`IdealLineF32`]), each
+    /// vertex taken from `origin` (x, y, z): from an origin near the path
+    /// (its start), a vertex keeps its fraction of a cell where f32 would
+    /// round a coordinate near 2^30 to a multiple of 64. Converted and boxed
+    /// here, in the pass that makes the vertices: a page's worker did it in
+    /// JavaScript, once per run and so mostly before its JIT had optimised
+    /// the loop (11 to 12 ms for a 100,000-line program's 250,000 vertices,
+    /// against 3.4 ms once optimised).
+    pub fn ideal_line_f32(&self, origin: [f64; 3]) -> IdealLineF32 {
         let dims = self.dims();
-        let mut out = Vec::with_capacity(IDEAL_LINE_BOX_VALUES + 6 * (self.segments.len() + 1));
-        out.resize(IDEAL_LINE_BOX_VALUES, 0.0);
-        let mut rests: Vec<f32> = Vec::with_capacity(3 * (self.segments.len() + 1));
-        let (mut min, mut max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-        // Each vertex goes straight into the f32 array, with no vector of
+        let mut line = IdealLineF32::default();
+        // Each vertex goes straight into the f32 pieces, with no vector of
         // f64 between (what ideal_polyline gives, without its megabytes),
         // after the last one drawn, which a segment's first is compared
         // with: a segment is most often a G-code program's line, made when
         // read, two vertices of which one is drawn.
         let mut last: Option<[f64; MAX_AXES]> = None;
+        let (mut min, mut max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
         for index in 0..self.segments.len() {
             let after = last;
             let after = after.as_ref().map(|l| &l[..dims]);
@@ -2049,26 +2038,102 @@ impl Trace {
                     min[axis] = min[axis].min(drawn[axis]);
                     max[axis] = max[axis].max(drawn[axis]);
                 }
-                out.extend_from_slice(&drawn);
-                rests.extend(std::array::from_fn::<f32, 3, _>(|axis| {
-                    (exact[axis] - f64::from(drawn[axis])) as f32
-                }));
+                line.push(
+                    drawn,
+                    std::array::from_fn(|axis| (exact[axis] - f64::from(drawn[axis])) as f32),
+                );
                 last = Some(std::array::from_fn(|axis| {
                     vertex.get(axis).copied().unwrap_or(0.0)
                 }));
             });
         }
-        if out.len() > IDEAL_LINE_BOX_VALUES {
-            out[..3].copy_from_slice(&min);
-            out[3..IDEAL_LINE_BOX_VALUES].copy_from_slice(&max);
+        if line.vertices > 0 {
+            (line.min, line.max) = (min, max);
         }
-        out.extend_from_slice(&rests);
-        out
+        line
     }
 }
 
-/// Values before the vertices in [`Trace::ideal_line_f32`]: min x, y, z, max x, y, z.
-pub const IDEAL_LINE_BOX_VALUES: usize = 6;
+/// Vertices per piece of an [`IdealLineF32`]: 96 KiB of x, y, z and as
+/// much of rests, a piece's copy out of wasm a single call.
+const IDEAL_LINE_PIECE_VERTICES: usize = 8192;
+
+/// A path's ideal polyline as WebGL draws it: x, y, z of each vertex less
+/// an origin, each the f64 difference rounded to the nearest f32 (`as`; a
+/// 2-axis path at z = 0, axes past the third left out), what that rounding
+/// left of each (its rest: the f64 less the f32, itself as f32), and the
+/// box of the f32 vertices. A million cells from the origin an f32 keeps
+/// only an eighth of a cell, so the rest gives the page the vertex to about
+/// 2^-48 of its distance, to draw the part of a long path the learner
+/// looks at from an origin there.
+///
+/// Kept in pieces of [`IDEAL_LINE_PIECE_VERTICES`] vertices, their count
+/// unknown until the last segment is made: one vector of them all, grown
+/// by doubling, copied its values up to twice, and its abandoned blocks
+/// and the whole array made from it grew wasm memory (the G-code bench's
+/// 100,000-line program at 1 step/mm, 250,000 vertices: by 20.75 MB, and
+/// its first line took 41 to 64 ms of CPU in Node; in pieces it took 24 to
+/// 28 ms, in memory the program's run had already grown). The caller
+/// copies the pieces where it wants them ([`Self::xyz_pieces`],
+/// [`Self::rest_pieces`]) once it knows the count.
+#[derive(Default)]
+pub struct IdealLineF32 {
+    /// Smallest x, y, z of the f32 vertices (zeros when there are none).
+    min: [f32; 3],
+    max: [f32; 3],
+    /// x, y, z of each vertex, full pieces then the one being filled.
+    xyz: Vec<Vec<f32>>,
+    /// What rounding left of each value of `xyz`, in the same pieces.
+    rests: Vec<Vec<f32>>,
+    vertices: usize,
+}
+
+impl IdealLineF32 {
+    /// Appends a vertex's x, y, z as drawn and their rests.
+    fn push(&mut self, drawn: [f32; 3], rests: [f32; 3]) {
+        if self.vertices % IDEAL_LINE_PIECE_VERTICES == 0 {
+            self.xyz
+                .push(Vec::with_capacity(3 * IDEAL_LINE_PIECE_VERTICES));
+            self.rests
+                .push(Vec::with_capacity(3 * IDEAL_LINE_PIECE_VERTICES));
+        }
+        // A piece was pushed at the first vertex and at every
+        // IDEAL_LINE_PIECE_VERTICES-th after it.
+        let started = "a piece is started above";
+        self.xyz
+            .last_mut()
+            .expect(started)
+            .extend_from_slice(&drawn);
+        self.rests
+            .last_mut()
+            .expect(started)
+            .extend_from_slice(&rests);
+        self.vertices += 1;
+    }
+
+    /// How many vertices the line has.
+    pub fn vertices(&self) -> usize {
+        self.vertices
+    }
+
+    /// The smallest x, y, z over the f32 vertices, then the largest; all
+    /// zeros when there is no vertex.
+    pub fn bounds(&self) -> [f32; 6] {
+        let [x0, y0, z0] = self.min;
+        let [x1, y1, z1] = self.max;
+        [x0, y0, z0, x1, y1, z1]
+    }
+
+    /// x, y, z of the vertices in order (flat, stride 3), a piece at a time.
+    pub fn xyz_pieces(&self) -> impl Iterator<Item = &[f32]> {
+        self.xyz.iter().map(Vec::as_slice)
+    }
+
+    /// The rest of each value of [`Self::xyz_pieces`], in the same pieces.
+    pub fn rest_pieces(&self) -> impl Iterator<Item = &[f32]> {
+        self.rests.iter().map(Vec::as_slice)
+    }
+}
 
 /// Most columns one stepper may declare.
 const MAX_COLUMNS: usize = 32;

@@ -702,13 +702,57 @@ impl TraceHandle {
         self.0.ideal_polyline()
     }
 
-    /// The ideal polyline as WebGL draws it (Float32Array), from the grid
-    /// point (`origin_x`, `origin_y`, `origin_z`): min x, y, z, max x, y, z,
-    /// then x, y, z per vertex, then what rounding left of each (see
-    /// `Trace::ideal_line_f32`).
+    /// The ideal polyline as WebGL draws it, from the grid point
+    /// (`origin_x`, `origin_y`, `origin_z`) (`Trace::ideal_line_f32`): held
+    /// in the core until copied into an array of its length.
     #[wasm_bindgen(js_name = idealLine)]
-    pub fn ideal_line(&self, origin_x: f64, origin_y: f64, origin_z: f64) -> Vec<f32> {
-        self.0.ideal_line_f32([origin_x, origin_y, origin_z])
+    pub fn ideal_line(&self, origin_x: f64, origin_y: f64, origin_z: f64) -> IdealLineHandle {
+        IdealLineHandle(self.0.ideal_line_f32([origin_x, origin_y, origin_z]))
+    }
+}
+
+/// A trace's ideal line for drawing, made in the core: its vertex count
+/// read first, so that JavaScript makes the array it is copied into (not
+/// zeroed first, in Node) and the vertices cross in one copy, with no
+/// array of them all in wasm memory.
+#[wasm_bindgen]
+pub struct IdealLineHandle(crate::trace::IdealLineF32);
+
+#[wasm_bindgen]
+impl IdealLineHandle {
+    /// How many vertices the line has.
+    #[wasm_bindgen(getter)]
+    pub fn vertices(&self) -> u32 {
+        // A vertex is 24 bytes in wasm's 4 GiB: fewer than 2^28 of them.
+        self.0.vertices() as u32
+    }
+
+    /// Smallest x, y, z over the vertices as drawn, then the largest; zeros
+    /// when there is none.
+    pub fn bounds(&self) -> Vec<f32> {
+        self.0.bounds().to_vec()
+    }
+
+    /// x, y, z of every vertex (stride 3), then what rounding left of each,
+    /// into `out`, 6 values a vertex long.
+    #[wasm_bindgen(js_name = copyInto)]
+    pub fn copy_into(&self, out: &js_sys::Float32Array) -> Result<(), JsValue> {
+        let values = 3 * self.0.vertices() as u64;
+        expect_length(out.length(), 2 * values, || {
+            format!(
+                "a Float32Array of {} values (x, y, z and their rests for {} vertices)",
+                2 * values,
+                self.0.vertices()
+            )
+        })?;
+        let pieces = self.0.xyz_pieces().chain(self.0.rest_pieces());
+        let mut at = 0u32;
+        for piece in pieces {
+            let end = at + piece.len() as u32;
+            out.subarray(at, end).copy_from(piece);
+            at = end;
+        }
+        Ok(())
     }
 }
 

@@ -363,8 +363,8 @@ fn a_program_s_line_steps_have_no_circle_values_and_its_arc_steps_no_regions_val
 }
 
 /// `Trace::ideal_line_f32` as a plain per-vertex loop over the f64
-/// polyline gives it: x, y, z of each vertex rounded to f32 (z = 0 on 2
-/// axes, axes past the third left out), after the box of those values,
+/// polyline gives it: the box of the values below, then x, y, z of each
+/// vertex rounded to f32 (z = 0 on 2 axes, axes past the third left out),
 /// then what the rounding left of each, itself as f32.
 fn ideal_line_by_vertex(t: &voxpath::trace::Trace, origin: [f64; 3]) -> Vec<f32> {
     let dims = t.dims();
@@ -379,7 +379,7 @@ fn ideal_line_by_vertex(t: &voxpath::trace::Trace, origin: [f64; 3]) -> Vec<f32>
         .zip(&xyz)
         .map(|(&v, &drawn)| (v - f64::from(drawn)) as f32)
         .collect();
-    let mut line = vec![0.0f32; voxpath::trace::IDEAL_LINE_BOX_VALUES];
+    let mut line = vec![0.0f32; 6];
     if !xyz.is_empty() {
         for a in 0..3 {
             let axis = xyz.iter().skip(a).step_by(3).copied();
@@ -390,6 +390,16 @@ fn ideal_line_by_vertex(t: &voxpath::trace::Trace, origin: [f64; 3]) -> Vec<f32>
     line.extend(xyz);
     line.extend(rests);
     line
+}
+
+/// An ideal line's box, then its x, y, z, then its rests, each joined from
+/// its pieces.
+fn box_xyz_rests(line: &voxpath::trace::IdealLineF32) -> Vec<f32> {
+    let mut flat = line.bounds().to_vec();
+    flat.extend(line.xyz_pieces().flatten());
+    flat.extend(line.rest_pieces().flatten());
+    assert_eq!(flat.len(), 6 + 6 * line.vertices());
+    flat
 }
 
 #[test]
@@ -403,9 +413,17 @@ fn the_ideal_line_for_drawing_is_the_polyline_from_its_origin_as_f32_after_its_b
         settings(r#"{"stepsPerMm": 80}"#),
     );
     let empty = voxpath::gcode::run("G21 G90\n", settings(r#"{"stepsPerMm": 80}"#));
+    // 20,001 vertices: the line's pieces of 8,192 vertices, two full and
+    // one not, joined in order.
+    let zigzag: String = (1..=20_000)
+        .map(|k| format!("G1 X{k} Y{}\n", k % 2))
+        .collect();
+    let long = voxpath::gcode::run(&zigzag, settings(r#"{"stepsPerMm": 1}"#));
+    assert_eq!(long.trace.ideal_line_f32([0.0; 3]).vertices(), 20_001);
     let traces = [
         &program.trace,
         &empty.trace,
+        &long.trace,
         &voxpath::algorithms::trace_json(
             r#"{"algorithm": "bresenham2d", "from": [-3, 5], "to": [40, -17]}"#,
         )
@@ -417,20 +435,23 @@ fn the_ideal_line_for_drawing_is_the_polyline_from_its_origin_as_f32_after_its_b
     ];
     for t in traces {
         for origin in [[0.0; 3], [7.0, -3.0, 2.0]] {
-            let line = t.ideal_line_f32(origin);
+            let line = box_xyz_rests(&t.ideal_line_f32(origin));
             assert_eq!(line, ideal_line_by_vertex(t, origin), "{} axes", t.dims());
         }
     }
-    assert_eq!(empty.trace.ideal_line_f32([5.0, 6.0, 7.0]), [0.0; 6]);
+    assert_eq!(
+        box_xyz_rests(&empty.trace.ideal_line_f32([5.0, 6.0, 7.0])),
+        [0.0; 6]
+    );
     // Near 2^30 a vertex keeps its place from an origin near it, where as
     // an f32 of its own 1,073,741,800 is 2^30: the line is its two ends.
     let far = voxpath::algorithms::trace_json(
         r#"{"algorithm": "regions", "from": [1073741800, 1073741800, 1073741800], "to": [1073741824, 1073741810, 1073741805]}"#,
     )
     .unwrap();
-    let line = far.ideal_line_f32([1073741800.0; 3]);
+    let line = box_xyz_rests(&far.ideal_line_f32([1073741800.0; 3]));
     assert_eq!(
-        line[voxpath::trace::IDEAL_LINE_BOX_VALUES..],
+        line[6..],
         [0.0, 0.0, 0.0, 24.0, 10.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
     );
     assert!(program.trace.ideal_polyline().len() / 3 > 20);

@@ -62,7 +62,7 @@ const SMALLEST_UNZEROED_BYTES = 1 << 20;
  * longer than the runtime makes (or has memory for) is a VoxpathError
  * naming `field`, the argument that asked for it.
  */
-export function forOverwrite<T extends Int32Array | Float64Array>(field: string, Kind: TypedArrayOf<T>, length: number): T {
+export function forOverwrite<T extends Int32Array | Float32Array | Float64Array>(field: string, Kind: TypedArrayOf<T>, length: number): T {
   const bytes = length * Kind.BYTES_PER_ELEMENT;
   const nodeBuffer = (globalThis as { Buffer?: { allocUnsafeSlow(size: number): Uint8Array } }).Buffer;
   if (nodeBuffer !== undefined && bytes >= SMALLEST_UNZEROED_BYTES) {
@@ -467,16 +467,23 @@ export class Trace {
    * The ideal polyline as WebGL draws it: each vertex's x, y, z less the
    * path's start (its origin) rounded to a 32-bit float, with the box they
    * lie in and what the rounding left. Converted and boxed by the core in
-   * the pass that copies the vertices out.
+   * the pass that makes the vertices, and copied out of it once, into an
+   * array of their length.
    */
   idealLine(): IdealLine {
     const origin: [number, number, number] = [this.start[0] ?? 0, this.start[1] ?? 0, this.start[2] ?? 0];
-    const flat = this.#core.idealLine(...origin);
-    // The core's layout (Trace::ideal_line_f32): min x, y, z, max x, y, z,
-    // then the vertices, then as many rests.
-    const box = (at: number): [number, number, number] => [flat[at]!, flat[at + 1]!, flat[at + 2]!];
-    const values = (flat.length - 6) / 2;
-    return { xyz: flat.subarray(6, 6 + values), rest: flat.subarray(6 + values), min: box(0), max: box(3), origin };
+    const line = this.#core.idealLine(...origin);
+    try {
+      // The core's layout (IdealLineHandle.copyInto): x, y, z of every
+      // vertex, then as many rests.
+      const values = 3 * line.vertices;
+      const flat = forOverwrite('idealLine', Float32Array, 2 * values);
+      callCore(() => line.copyInto(flat));
+      const [minX, minY, minZ, maxX, maxY, maxZ] = line.bounds();
+      return { xyz: flat.subarray(0, values), rest: flat.subarray(values), min: [minX!, minY!, minZ!], max: [maxX!, maxY!, maxZ!], origin };
+    } finally {
+      line.free();
+    }
   }
 
   /**

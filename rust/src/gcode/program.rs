@@ -2001,15 +2001,17 @@ mod tests {
             let exact = joined.iter().enumerate().map(|(i, &v)| v - origin[i % 3]);
             let xyz: Vec<f32> = exact.clone().map(|v| v as f32).collect();
             let rests: Vec<f32> = exact.zip(&xyz).map(|(v, &drawn)| (v - f64::from(drawn)) as f32).collect();
-            let vertices = &line[crate::trace::IDEAL_LINE_BOX_VALUES..];
-            prop_assert_eq!(vertices, &[xyz.clone(), rests].concat()[..]);
+            prop_assert_eq!(line.vertices(), xyz.len() / 3);
+            prop_assert_eq!(line.xyz_pieces().flatten().copied().collect::<Vec<f32>>(), xyz.clone());
+            prop_assert_eq!(line.rest_pieces().flatten().copied().collect::<Vec<f32>>(), rests);
+            let bounds = line.bounds();
             for axis in 0..3 {
                 let values = || xyz.iter().skip(axis).step_by(3).copied();
                 let (min, max) = match values().next() {
                     None => (0.0, 0.0),
                     Some(_) => (values().fold(f32::INFINITY, f32::min), values().fold(f32::NEG_INFINITY, f32::max)),
                 };
-                prop_assert_eq!((line[axis], line[3 + axis]), (min, max), "axis {}", axis);
+                prop_assert_eq!((bounds[axis], bounds[3 + axis]), (min, max), "axis {}", axis);
             }
             prop_assert_eq!(t.ideal_polyline(), joined);
         }
