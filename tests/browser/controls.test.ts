@@ -221,3 +221,127 @@ describe('a Cancel in trace mode', () => {
     await p.close();
   });
 });
+
+/** From now on, every text the status line says, in `window.statusSaid`; read with statusSaid. */
+async function recordStatus(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const status = document.querySelector('[data-testid=trace-status]')!;
+    const said: string[] = [];
+    (window as unknown as { statusSaid: string[] }).statusSaid = said;
+    new MutationObserver(() => said.push(status.textContent ?? '')).observe(status, { childList: true, characterData: true, subtree: true });
+  });
+}
+
+function statusSaid(page: Page): Promise<string[]> {
+  return page.evaluate(() => (window as unknown as { statusSaid: string[] }).statusSaid);
+}
+
+/**
+ * Back in a mode whose run was cancelled: said so at once, and still so
+ * once the page's wait before a run (250 ms) has long passed, with no run
+ * started meanwhile ('Tracing…', 'Running: …').
+ */
+async function staysCancelled(page: Page): Promise<void> {
+  await page.getByTestId('trace-status').filter({ hasText: /^Cancelled\.$/ }).waitFor({ timeout: 10_000 });
+  // Not a bound on the page's time: only long enough for a run it started by itself to show.
+  await page.waitForTimeout(1500);
+  expect(await page.getByTestId('trace-status').innerText()).toBe('Cancelled.');
+  expect((await statusSaid(page)).filter((text) => /^(Tracing|Running|Measuring)/.test(text))).toEqual([]);
+}
+
+describe('a run cancelled, then another mode and back', () => {
+  it("stays cancelled in G-code mode until Run program (the mode's switch ran the program again by itself)", { timeout: 180_000 }, async () => {
+    const p = await openPage('?mode=gcode&stepsPerMm=10');
+    const { page } = p;
+    const status = page.getByTestId('trace-status');
+    await status.filter({ hasText: 'moves' }).waitFor({ timeout: 30_000 });
+    // 5,000 moves of 100 steps (few enough lines to edit in the text box): many of the worker's slices, so that Cancel, clicked from inside the page at the bar's first report, comes before the end.
+    const program = ['G21 G90', ...Array.from({ length: 5000 }, (_, i) => (i % 2 === 0 ? 'G1 X10 F6000' : 'G1 X0'))].join('\n');
+    const cancelled = onceShown(page, 'gcode-progress', { click: 'gcode-cancel' });
+    // Set as a paste sets it: Playwright's fill types a text of 1,000 lines in 6 s.
+    await page.getByTestId('gcode-text').evaluate((box: HTMLTextAreaElement, text) => {
+      box.value = text;
+      box.dispatchEvent(new Event('input', { bubbles: true }));
+    }, program);
+    await cancelled;
+    await status.filter({ hasText: 'Cancelled. The view still shows the last program that ran.' }).waitFor({ timeout: 30_000 });
+
+    await page.getByTestId('mode-trace').click();
+    await status.filter({ hasText: 'steps from' }).waitFor({ timeout: 30_000 });
+    await recordStatus(page);
+    await page.getByTestId('mode-gcode').click();
+    await staysCancelled(page);
+    // The trace mode's path is not shown as the program's.
+    expect(await page.getByTestId('step-counter').innerText()).not.toMatch(/of [1-9]/);
+    expect(await page.getByTestId('stale-note').innerText()).toBe('');
+    expect(await page.getByTestId('gcode-run').isEnabled()).toBe(true);
+    await page.getByTestId('gcode-run').click();
+    await status.filter({ hasText: '5,000 moves, 500,000 steps' }).waitFor({ timeout: 120_000 });
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it("stays cancelled in trace mode until Trace again", { timeout: 180_000 }, async () => {
+    const p = await openPage('?algorithm=helix&from=1000,0,0&to=1000,0,300&center=0,0,0&plane=xy&turns=264');
+    const { page } = p;
+    const status = page.getByTestId('trace-status');
+    await onceShown(page, 'trace-run', { click: 'trace-cancel' }, 'Measuring');
+    await status.filter({ hasText: /^Cancelled\.$/ }).waitFor({ timeout: 10_000 });
+    await page.getByTestId('mode-gcode').click();
+    await status.filter({ hasText: 'moves' }).waitFor({ timeout: 30_000 });
+    // Not offered where it would run the program.
+    expect(await page.getByTestId('alert-message').isHidden()).toBe(true);
+    await recordStatus(page);
+    await page.getByTestId('mode-trace').click();
+    await staysCancelled(page);
+    expect(await page.getByTestId('alert-message').innerText()).toBe('Cancelled: the inputs are not traced.');
+    expect(await page.getByTestId('step-counter').innerText()).not.toMatch(/of [1-9]/);
+    await page.getByRole('button', { name: 'Trace again' }).click();
+    await page.getByTestId('step-counter').filter({ hasText: /of 1,498,840$/ }).waitFor({ timeout: 60_000 });
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('stays cancelled in compare mode until Trace again', { timeout: 180_000 }, async () => {
+    const p = await openPage('?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=1400000,700,600');
+    const { page } = p;
+    const status = page.getByTestId('trace-status');
+    await onceShown(page, 'trace-run', { click: 'trace-cancel' }, 'Measuring');
+    await status.filter({ hasText: /^Cancelled\.$/ }).waitFor({ timeout: 10_000 });
+    await page.getByTestId('mode-gcode').click();
+    await status.filter({ hasText: 'moves' }).waitFor({ timeout: 30_000 });
+    await recordStatus(page);
+    await page.getByTestId('mode-compare').click();
+    await staysCancelled(page);
+    expect(await page.getByTestId('alert-message').innerText()).toBe('Cancelled: the inputs are not traced.');
+    await page.getByRole('button', { name: 'Trace again' }).click();
+    await status.filter({ hasText: /^regions: .* greedy: / }).waitFor({ timeout: 60_000 });
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('stays cancelled in experiment mode until Run experiment', { timeout: 180_000 }, async () => {
+    const p = await openPage('?mode=experiment&algorithm=bresenham3d&count=20&maxCoordinate=10000&seed=1');
+    const { page } = p;
+    const status = page.getByTestId('trace-status');
+    await status.filter({ hasText: '20 lines traced with bresenham3d.' }).waitFor({ timeout: 30_000 });
+    // 100,000 lines of up to 10,000 steps: about 25 s in the worker.
+    const cancelled = onceShown(page, 'experiment-run', { click: 'experiment-cancel' }, 'Tracing');
+    await page.getByTestId('input-experiment-count').fill('100000');
+    await cancelled;
+    await status.filter({ hasText: 'Cancelled. The tables still show the last experiment that ran.' }).waitFor({ timeout: 10_000 });
+    await page.getByTestId('mode-trace').click();
+    await status.filter({ hasText: 'steps from' }).waitFor({ timeout: 30_000 });
+    await recordStatus(page);
+    await page.getByTestId('mode-experiment').click();
+    await staysCancelled(page);
+    // The 20 lines' tables went with their result, which trace mode's path replaced (their CSV is no longer offered).
+    expect(await page.getByTestId('lines-table').count()).toBe(0);
+    await page.getByTestId('experiment-start').click();
+    await status.filter({ hasText: /^Tracing: line [1-9]/ }).waitFor({ timeout: 30_000 });
+    await page.getByTestId('experiment-cancel').click();
+    await status.filter({ hasText: /^Cancelled\.$/ }).waitFor({ timeout: 10_000 });
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

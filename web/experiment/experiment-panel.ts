@@ -100,6 +100,11 @@ export class ExperimentPanel {
     this.#focusInTrace.focus();
   }
 
+  /** Shows no tables: what they showed is no longer held (another mode's run replaced it). */
+  clear(): void {
+    this.#container.replaceChildren();
+  }
+
   show(result: RandomLinesResult): void {
     const previous = this.#previous;
     this.#previous = result;

@@ -32,7 +32,7 @@ import type { Inspector } from '../inspector/inspector.js';
 import { PointDetails } from '../inspector/point-details.js';
 import type { Handle } from '../scene/endpoint-handles.js';
 import { PALETTE } from '../scene/palette.js';
-import { type AppState, type Catalogue, type ComparedSide, MODE_INPUT_KEYS, comparedRequests, experimentAlgorithm, tracedAlgorithms, traceOptions } from '../state/app-state.js';
+import { type AppState, type Catalogue, type ComparedSide, MODE_INPUT_KEYS, type Mode, comparedRequests, experimentAlgorithm, tracedAlgorithms, traceOptions } from '../state/app-state.js';
 import { markStale, staleness } from '../state/stale.js';
 import type { Store } from '../state/store.js';
 import type { StepReason } from '../timeline/step-reason.js';
@@ -131,6 +131,8 @@ export class Orchestrator {
   /** Asks for the shown point's StepDetail: one request per point, for the inspector and the view's overlay alike. */
   readonly #details: PointDetails;
   #shown: Shown = {};
+  /** The mode whose run made what is shown (trace and compare both show traces in a and b). */
+  #shownMode: Mode | undefined;
   /** Counts runs of the core, so only the latest one's answer is shown. */
   #latestRun = 0;
   /** The long run under way (a path's metrics, a program, an experiment), to cancel. */
@@ -154,6 +156,12 @@ export class Orchestrator {
   readonly #invalidForms = new Set<Element>();
   /** PageParts.firstPaths has been told. */
   #firstPathsTold = false;
+  /**
+   * The state each mode's last run was cancelled in, until a run of that
+   * mode starts: going back to the mode with the same inputs does not run
+   * them again by itself (a Cancel stands until the user asks again).
+   */
+  readonly #cancelled: Partial<Record<Mode, AppState>> = {};
 
   /** A form of the mode shown holds a value the page refused (another mode's form is hidden, and says nothing of this one's results). */
   #refusedHere(): boolean {
@@ -308,11 +316,68 @@ export class Orchestrator {
     this.#p.status.passing(said, bar);
   }
 
+  /** Says that mode `mode`'s run was cancelled, and what of an earlier run is still shown, with the way to run the inputs again. */
+  #sayCancelled(mode: Mode): void {
+    const p = this.#p;
+    const { a, program, experiment } = this.#shown;
+    const kept = program ? 'program' : experiment ? 'experiment' : a ? 'paths' : undefined;
+    p.status.cancelled(kept);
+    markStale(p.staleNote, kept ? 'cancelled' : undefined);
+    // G-code's "Run program" and the experiment's "Run experiment" run
+    // their inputs again; trace and compare mode have no such button,
+    // and a Cancel left their inputs untraced (a link's: a blank view)
+    // until one was changed.
+    if (mode === 'trace' || mode === 'compare') {
+      showAlert(kept ? 'Cancelled: the view shows the last paths traced, not the inputs.' : 'Cancelled: the inputs are not traced.', 'Trace again', () => {
+        hideAlert();
+        void this.retrace();
+      });
+    } else hideAlert();
+  }
+
+  /**
+   * Back in a mode whose last run was cancelled, on the inputs it was
+   * cancelled with: they stay untraced, as they were left, until the user
+   * asks (the mode switch ran them again by itself, a long program or
+   * experiment the user had stopped). What another mode's run shows is
+   * dropped; the mode's own results, if nothing replaced them since, stay.
+   */
+  #stayCancelled(mode: Mode): void {
+    const p = this.#p;
+    // The run of the mode left, under way or waiting, is no longer wanted, and its end shows nothing.
+    this.#latestRun += 1;
+    clearTimeout(this.#retraceTimer);
+    this.#running?.cancel();
+    this.#running = undefined;
+    p.gcodePanel.setProgress(undefined);
+    p.experimentProgress.set(undefined);
+    p.traceProgress.set(undefined);
+    // Another mode's refusal is not of these inputs.
+    p.inputs.showCoreError(undefined);
+    p.gcodePanel.showCoreError(undefined);
+    p.experimentForm.showCoreError(undefined);
+    this.#rejected = false;
+    p.embedProblem.textContent = '';
+    if (this.#shownMode !== mode) {
+      this.#freeShown();
+      this.#shownMode = undefined;
+      this.#ruleOptions = undefined;
+      p.charts.cancel();
+      this.#present();
+      p.experimentPanel.clear();
+    }
+    this.#sayCancelled(mode);
+    this.#inputsPending = false;
+    p.exports.refresh(false);
+  }
+
   /** Runs the core on the current inputs and shows what it returns (unless a later run has started). */
   async retrace(): Promise<void> {
     const p = this.#p;
     const run = ++this.#latestRun;
     const state = p.store.state;
+    // Asked for: by an input, the mode's button (Run program, Run experiment, Trace again) or the page's load.
+    delete this.#cancelled[state.mode];
     this.#running?.cancel();
     this.#running = undefined;
     // The charts' rows of the path about to be replaced would hold up the new one's in the worker, as would a check against its rule.
@@ -382,6 +447,7 @@ export class Orchestrator {
       this.#rejected = false;
       this.#freeShown();
       this.#shown = next;
+      this.#shownMode = state.mode;
       this.#ruleOptions = ruleOptions;
       if (next.experiment) p.experimentPanel.show(next.experiment);
       else {
@@ -398,19 +464,8 @@ export class Orchestrator {
     } catch (error) {
       if (run !== this.#latestRun || error instanceof CoreCrash) return;
       if (error instanceof Cancelled) {
-        const kept = this.#shown.program ?? this.#shown.experiment ?? this.#shown.a;
-        p.status.cancelled(kept === undefined ? undefined : this.#shown.program ? 'program' : this.#shown.experiment ? 'experiment' : 'paths');
-        if (kept) markStale(p.staleNote, 'cancelled');
-        // G-code's "Run program" and the experiment's "Run experiment" run
-        // their inputs again; trace and compare mode have no such button,
-        // and a Cancel left their inputs untraced (a link's: a blank view)
-        // until one was changed.
-        if (state.mode === 'trace' || state.mode === 'compare') {
-          showAlert(kept ? 'Cancelled: the view shows the last paths traced, not the inputs.' : 'Cancelled: the inputs are not traced.', 'Trace again', () => {
-            hideAlert();
-            void this.retrace();
-          });
-        }
+        this.#cancelled[state.mode] = state;
+        this.#sayCancelled(state.mode);
       } else if (error instanceof InputRejected) {
         // An offer to trace again (after a Cancel) would trace what is refused.
         hideAlert();
@@ -525,7 +580,11 @@ export class Orchestrator {
     const p = this.#p;
     if (state.mode !== previous.mode || state.layout !== previous.layout) p.modeTabs.render();
     const inputsChanged = state.mode !== previous.mode || MODE_INPUT_KEYS[state.mode].some((k) => state[k] !== previous[k]);
-    if (inputsChanged) {
+    const cancelled = this.#cancelled[state.mode];
+    if (state.mode !== previous.mode && cancelled && MODE_INPUT_KEYS[state.mode].every((k) => state[k] === cancelled[k])) {
+      this.#stopCheck();
+      this.#stayCancelled(state.mode);
+    } else if (inputsChanged) {
       // A check against the rule about to be replaced stops now, not when the retrace starts.
       this.#stopCheck();
       clearTimeout(this.#retraceTimer);
