@@ -213,3 +213,22 @@ describe('storage that cannot be read (storage-areas.ts)', () => {
     expect(new URLSearchParams(page.window.location.search).get('step')).toBe('2');
   });
 });
+
+describe('storage probed (storage-areas.ts)', () => {
+  it('once per page load, not at each throttled write (an empty key was read at every write to tell a store whose reads throw)', async () => {
+    let probes = 0;
+    const read = local.getItem.bind(local);
+    local.getItem = (key: string) => {
+      if (key === '') probes += 1;
+      return read(key);
+    };
+    const store = await openTab();
+    const writes = stateWrites();
+    for (const to of [[1, 2, 3], [4, 5, 6], [7, 8, 9]]) {
+      store.update({ options: { ...store.state.options, to } });
+      vi.runAllTimers();
+    }
+    expect(stateWrites(writes)).toBe(3);
+    expect(probes).toBe(1);
+  });
+});

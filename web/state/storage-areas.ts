@@ -21,12 +21,21 @@ function readable(area: () => Storage): Storage | undefined {
   }
 }
 
-/** localStorage, or undefined where it is blocked. */
-export function storage(): Storage | undefined {
-  return readable(() => window.localStorage);
+/**
+ * `area` as probed (readable) at its first use, once per page load: the
+ * page asks for storage at each of its throttled writes (persist.ts), and a
+ * probe at each call read storage once more every time. A store blocked by
+ * the browser's settings, or damaged, stays so while the page is open; one
+ * whose reads began to throw later would throw at the writer's own read
+ * after a probe all the same.
+ */
+function probedOnce(area: () => Storage): () => Storage | undefined {
+  let probed: { area: Storage | undefined } | undefined;
+  return () => (probed ??= { area: readable(area) }).area;
 }
 
+/** localStorage, or undefined where it is blocked. */
+export const storage = probedOnce(() => window.localStorage);
+
 /** This tab's sessionStorage, or undefined where it is blocked. */
-export function tabStorage(): Storage | undefined {
-  return readable(() => window.sessionStorage);
-}
+export const tabStorage = probedOnce(() => window.sessionStorage);
