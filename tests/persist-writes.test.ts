@@ -95,7 +95,7 @@ async function openTab() {
   vi.resetModules();
   const persist = await import('../web/state/persist.js');
   const store = new Store<AppState>(persist.loadState(catalogue));
-  persist.persistState(store, catalogue, { onKept: () => {}, onOtherTab: () => {} });
+  persist.persistState(store, catalogue, { onKept: () => {}, onOtherTab: () => {}, onBlocked: () => {} });
   return store;
 }
 

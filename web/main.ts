@@ -81,6 +81,7 @@ function run(catalogue: Catalogue): void {
   showLinkNote();
   const storageNote = byId('storage-note', HTMLParagraphElement);
   const tabsNote = byId('tabs-note', HTMLParagraphElement);
+  const storageBlocked = byId('storage-blocked', HTMLParagraphElement);
   persistState(store, catalogue, {
     onKept: (kept) => {
       storageNote.hidden = kept;
@@ -91,6 +92,10 @@ function run(catalogue: Catalogue): void {
     onOtherTab: (note) => {
       tabsNote.hidden = note === '';
       tabsNote.textContent = note;
+    },
+    onBlocked: (note) => {
+      storageBlocked.textContent = note;
+      storageBlocked.hidden = false;
     },
   });
   document.body.classList.toggle('embed', store.state.embed);

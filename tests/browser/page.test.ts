@@ -15,6 +15,7 @@ import type { BrowserContext, Page } from 'playwright-core';
 import type { PNG } from 'pngjs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { canvasPng, closeAll, openPage, screenshot, siteUrl } from './harness.js';
+import { STORAGE_BLOCKED_NOTE } from '../../web/state/persist.js';
 
 afterAll(closeAll);
 
@@ -892,6 +893,69 @@ describe('the page', () => {
     expect(await note.isVisible()).toBe(true);
     expect(p.problems()).toEqual([]);
     await p.close();
+  });
+
+  it("says, once and under the status, that what is typed is not kept where the browser blocks storage, and what the address keeps (it was lost on reload with no word)", async () => {
+    const blocked: [string, () => void][] = [
+      // Blocked by the browser's settings: reaching either area throws.
+      [
+        'storage-blocked',
+        () => {
+          for (const name of ['localStorage', 'sessionStorage']) {
+            Object.defineProperty(window, name, {
+              get() {
+                throw new DOMException('The operation is insecure.', 'SecurityError');
+              },
+            });
+          }
+        },
+      ],
+      // Damaged, as Firefox's: every read throws.
+      [
+        'storage-damaged',
+        () => {
+          Storage.prototype.getItem = () => {
+            throw new DOMException('NS_ERROR_FILE_CORRUPTED', 'NS_ERROR_FILE_CORRUPTED');
+          };
+        },
+      ],
+    ];
+    for (const [name, initScript] of blocked) {
+      const p = await openPage(EXAMPLE, { initScript });
+      const { page } = p;
+      await traced(page, 10);
+      const note = page.getByTestId('storage-blocked');
+      expect(await note.innerText()).toBe(STORAGE_BLOCKED_NOTE);
+      expect(STORAGE_BLOCKED_NOTE).toMatch(/^Your browser blocks this page's storage, .*: the inputs of the mode shown, with a program or points of up to 2,000 characters\. Bookmark or copy the address to keep them\.$/);
+      // Under the status line, in the inputs' column.
+      await note.scrollIntoViewIfNeeded();
+      const [status, shown] = [(await page.getByTestId('trace-status').boundingBox())!, (await note.boundingBox())!];
+      expect(shown.y).toBeGreaterThanOrEqual(status.y + status.height);
+      await screenshot(page, name, { x: 0, y: Math.max(0, status.y - 60), width: 640, height: shown.y + shown.height + 20 - Math.max(0, status.y - 60) });
+      // A narrow window's: within the page's width, no sideways scroll.
+      await page.setViewportSize({ width: 320, height: 720 });
+      await note.scrollIntoViewIfNeeded();
+      const narrow = (await note.boundingBox())!;
+      expect(narrow.x + narrow.width).toBeLessThanOrEqual(320);
+      expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(320);
+      await screenshot(page, `${name}-320`, { x: 0, y: Math.max(0, narrow.y - 80), width: 320, height: narrow.height + 100 });
+      await page.setViewportSize({ width: 1280, height: 720 });
+      // What the note says the address keeps comes back over a reload.
+      await page.getByTestId('input-to-x').fill('12');
+      await page.waitForURL(/to=12,7,6/);
+      await page.reload();
+      await traced(page, 12);
+      expect(await note.innerText()).toBe(STORAGE_BLOCKED_NOTE);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+    // Not said where storage keeps the inputs, nor in an embedded view, which keeps nothing in storage anyway.
+    for (const [query, initScript] of [[EXAMPLE, undefined], [`${EXAMPLE}&embed=1`, blocked[0]![1]]] as const) {
+      const p = await openPage(query, { initScript });
+      await p.page.getByTestId('step-counter').filter({ hasText: /of 10$/ }).waitFor();
+      expect(await p.page.getByTestId('storage-blocked').isHidden()).toBe(true);
+      await p.close();
+    }
   });
 
   it('keeps what was typed just before a reload (the address written after the request went)', async () => {

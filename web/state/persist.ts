@@ -3,7 +3,7 @@
  * query format of state/query.ts, so nothing a user typed is lost on reload.
  * On load a URL describing a state wins over localStorage.
  */
-import { listed } from '../format.js';
+import { grouped, listed } from '../format.js';
 import {
   ANOTHER_TABS_POINTS,
   ANOTHER_TABS_PROGRAM,
@@ -732,15 +732,32 @@ export function newHistoryEntry(state: AppState): void {
 }
 
 /**
+ * What the page says where the browser blocks its storage (storage():
+ * undefined): the address, which write keeps as the state changes, is then
+ * all that a reload reads. It holds the mode shown, and a program or points
+ * no longer than a link holds; every other input is lost with no word.
+ */
+export const STORAGE_BLOCKED_NOTE =
+  "Your browser blocks this page's storage, so what you type is not kept for a reload or a new visit, except what the page's address holds: " +
+  `the inputs of the mode shown, with a program or points of up to ${grouped(GCODE_URL_LIMIT)} characters. Bookmark or copy the address to keep them.`;
+
+/**
  * Persists every change of `store`, throttled, and any pending change when
  * the page is hidden or closed; Back and Forward between the entries
  * newHistoryEntry made bring back their states. `onKept` is told at every
  * write whether the program and the learner's points fitted in storage;
- * `onOtherTab`, what another tab's write changed here (otherTabNote).
+ * `onOtherTab`, what another tab's write changed here (otherTabNote);
+ * `onBlocked`, once, STORAGE_BLOCKED_NOTE where storage is blocked (not in
+ * an embedded view, which never writes it).
  */
-export function persistState(store: Store<AppState>, catalogue: Catalogue, notes: { onKept: (kept: boolean) => void; onOtherTab: (note: string) => void }): void {
+export function persistState(
+  store: Store<AppState>,
+  catalogue: Catalogue,
+  notes: { onKept: (kept: boolean) => void; onOtherTab: (note: string) => void; onBlocked: (note: string) => void },
+): void {
   reportKept = notes.onKept;
   tab = { store, catalogue, onOtherTab: notes.onOtherTab };
+  if (!store.state.embed && !storage()) notes.onBlocked(STORAGE_BLOCKED_NOTE);
   let timer: ReturnType<typeof setTimeout> | undefined;
   const flush = () => {
     clearTimeout(timer);
