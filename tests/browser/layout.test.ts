@@ -38,10 +38,10 @@ async function check(page: Page, name: string): Promise<void> {
   const view = (await page.locator('#viewport').boundingBox())!;
   const { width, height } = page.viewportSize()!;
   expect(view.width * view.height, `${name}: view area`).toBeGreaterThan(0.2 * width * height);
-  // The legend clear of the view's tools (2D, Decision in 3D, Follow, Reset view).
+  // The legend clear of the view's tools (2D, Decision in 3D, Follow, Reset view), over the view or above it (compared in a narrow window).
   const overlaps = await page.evaluate(() => {
-    const legend = document.querySelector('#viewport .legend')!.getBoundingClientRect();
-    return [...document.querySelectorAll('#viewport .view-tools > *')]
+    const legend = document.querySelector('#legend')!.getBoundingClientRect();
+    return [...document.querySelectorAll('#view-tools > *')]
       .map((e) => ({ text: (e as HTMLElement).innerText, box: e.getBoundingClientRect() }))
       .filter(({ box }) => box.left < legend.right && legend.left < box.right && box.top < legend.bottom && legend.top < box.bottom)
       .map(({ text }) => text);
@@ -589,6 +589,55 @@ describe('a narrow window', () => {
     await screenshot(page, 'gcode-machine-time-240', '.timeline');
     expect(p.problems()).toEqual([]);
     await p.close();
+  });
+
+  it("keeps compare mode's legend and the view's tools off its axis names and handles at 240 to 360 px (over the view, squeezed beside the tools, the legend covered the z axis's name)", async () => {
+    // Its seven entries, in a column 85 px wide beside the stacked tools, stood 196 px tall over a view of
+    // 364 at 240 px, and 125 to 161 px at 360: the view frames its picture below at most 30 % of its height.
+    for (const query of ['algorithm=regions&other=greedy', 'algorithm=liu-float&other=bresenham3d']) {
+      const p = await openPage(`?mode=compare&${query}&from=0,0,0&to=10,7,6&step=5`);
+      const { page } = p;
+      await page.setViewportSize({ width: 240, height: 700 });
+      await page.getByTestId('step-counter').filter({ hasText: /^Step 5 of / }).waitFor();
+      for (const width of [240, 272, 320, 360]) {
+        await page.setViewportSize({ width, height: 700 });
+        const at = `${query}, ${width} px`;
+        const boxes = () =>
+          page.evaluate(() => {
+            const box = (e: Element) => {
+              const r = e.getBoundingClientRect();
+              return { x: r.x, y: r.y, width: r.width, height: r.height };
+            };
+            return {
+              legend: box(document.querySelector('#legend')!),
+              names: [...document.querySelectorAll('#viewport .axis-name')].map((e) => ({ name: e.textContent!, box: box(e) })),
+              handles: [...document.querySelectorAll('#viewport .handle')].map((e) => ({ name: `${e.textContent} handle`, box: box(e) })),
+              tools: [...document.querySelectorAll('#view-tools > *')].map((e) => ({ name: (e as HTMLElement).innerText.trim(), box: box(e) })),
+            };
+          });
+        // Once the view has framed its path anew for the window's width (a resize is followed a frame later).
+        await expect
+          .poll(async () => {
+            const { legend, names, handles, tools } = await boxes();
+            const covers = [{ name: 'the legend', box: legend }, ...tools];
+            return [...names, ...handles, ...tools].flatMap((under) => covers.filter((over) => over !== under && overlapOf(over.box, under.box) !== '').map((over) => `${under.name} under ${over.name}`));
+          }, { message: `${at}: covered`, timeout: 10_000 })
+          .toEqual([]);
+        const { legend, names, handles } = await boxes();
+        expect(names.map(({ name }) => name).sort(), at).toEqual(['x', 'y', 'z']);
+        expect(handles.map(({ name }) => name).sort(), at).toEqual(['E handle', 'S handle']);
+        expect([legend.x >= 0, legend.x + legend.width <= width + 0.5], `${at}: the legend inside the window`).toEqual([true, true]);
+        const { documentPx, windowPx } = await widthAndOverflow(page);
+        expect(documentPx, `${at}: the document's width`).toBeLessThanOrEqual(windowPx);
+        await page.locator('#views').scrollIntoViewIfNeeded();
+        await screenshot(page, `compare-legend-${query.startsWith('algorithm=regions') ? 'regions' : 'liu-float'}-${width}`, '#views');
+      }
+      // Wider, it goes back over the view, where it takes a share of the view the picture is framed below.
+      await page.setViewportSize({ width: 480, height: 700 });
+      await expect.poll(() => page.evaluate(() => document.querySelector('#legend')!.parentElement!.id)).toBe('viewport');
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
   });
 
   it("keeps a long path's step counter inside a window of 240 px, under the scrubber at every step", async () => {

@@ -23,10 +23,21 @@ import { mainTrace, type Shown } from './shown.js';
 /** Where style.css stacks two views one above the other (its @media (orientation: portrait)). */
 const PORTRAIT = window.matchMedia('(orientation: portrait)');
 
+/**
+ * A window this narrow (a phone's, held upright) has no room over the view
+ * for the comparison's legend: its seven entries, in a column beside the
+ * view's stacked tools, stood 196 px tall over a view of 364 at 240 px
+ * (125 to 161 px at 360), past the 30 % of its height the view frames its
+ * picture below, and over the z axis's name. There it stands above the
+ * view, with the tools, as side by side. At 390 to 430 px it took 20 to
+ * 30 %.
+ */
+const NARROW = window.matchMedia('(max-width: 430px)');
+
 export interface PathViewElements {
   /** Where the second view goes (side by side). */
   secondViewport: HTMLDivElement;
-  /** The legend, over the main view; side by side, above both views. */
+  /** The legend, over the main view; side by side above both views, and compared in a narrow window (NARROW) above the one. */
   legend: HTMLElement;
   /** The view's tools (2D, Decision in 3D, Follow, Reset view), after the legend wherever it is. */
   tools: HTMLElement;
@@ -92,6 +103,27 @@ export class PathViews {
     reset.addEventListener('click', () => store.update({ camera: null }));
     decision3d.addEventListener('change', () => store.update({ decision3d: decision3d.checked }));
     PORTRAIT.addEventListener('change', () => this.#nameSecond(store.state.mode === 'compare' && store.state.layout === 'side'));
+    NARROW.addEventListener('change', () => this.#placeLegend());
+  }
+
+  /**
+   * Puts the legend and the tools where the layout has them. Side by side,
+   * the legend tells of both views and stands above them: over the first
+   * one it covered its path (in a 640 x 480 frame). So do the tools, which
+   * act on both (the cameras are linked): stacked in the first view's
+   * corner, Reset view stood on its E handle. Compared in a narrow window
+   * (NARROW), both stand above the one view too: the legend alone above
+   * it left the stacked tools more of the shorter view than it frames its
+   * picture below, and Reset view stood on the E handle.
+   */
+  #placeLegend(): void {
+    const { mode, layout } = this.#store.state;
+    const { legend, tools, secondViewport } = this.#e;
+    const above = mode === 'compare' && (layout === 'side' || NARROW.matches);
+    const place = above ? secondViewport.parentElement! : this.#legendView;
+    if (legend.parentElement === place) return;
+    place.prepend(legend);
+    legend.after(tools);
   }
 
   /**
@@ -106,16 +138,8 @@ export class PathViews {
     const { a, b, difference } = shown;
     const main = mainTrace(shown);
     const side = state.mode === 'compare' && state.layout === 'side';
-    // Side by side, the legend tells of both views and stands above them: over
-    // the first one it covered its path (in a 640 x 480 frame). So do the
-    // tools, which act on both (the cameras are linked): stacked in the first
-    // view's corner, Reset view stood on its E handle. Placed before the
-    // views frame their paths below what lies over them.
-    const legendPlace = side ? this.#e.secondViewport.parentElement! : this.#legendView;
-    if (this.#e.legend.parentElement !== legendPlace) {
-      legendPlace.prepend(this.#e.legend);
-      this.#e.legend.after(this.#e.tools);
-    }
+    // Before the views frame their paths below what lies over them.
+    this.#placeLegend();
     this.#main.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
     if (state.mode === 'compare' && !side) this.#main.setSecond(b);
     if (side) {
