@@ -84,7 +84,11 @@ describe('the JS API refuses what the core would misread, naming the argument', 
     // trace() says them), not quoted as if a string had been given.
     for (const [settings, message] of [
       [{ stepsPerMm: Number.NaN }, 'stepsPerMm: expected a number, got NaN'],
-      [{ stepsPerMm: [80, 80, Number.POSITIVE_INFINITY] }, 'stepsPerMm: expected a number, got Infinity'],
+      // In a per-axis list, the item's axis is named, as a point's is (README, Limits).
+      [{ stepsPerMm: [80, 80, Number.POSITIVE_INFINITY] }, 'stepsPerMm: z must be a number, got Infinity'],
+      [{ stepsPerMm: 80, acceleration: [10, Number.NaN, 10] }, 'acceleration: y must be a number, got NaN'],
+      [{ stepsPerMm: 80, maxStepRate: [1000, 1000, '1000'] }, 'maxStepRate: z must be a number, got "1000"'],
+      [{ stepAngle: [1.8, 1.8, 1.8], microsteps: [Number.NaN, 8, 8], pitch: 2 }, 'microsteps: x must be a number, got NaN'],
       [{ stepsPerMm: 80, junctionDeviation: Number.NaN }, 'junctionDeviation: expected a number, got NaN'],
     ] as const) {
       expect((await rejection(runGcode('G1 X1 F100', settings as never))).message).toBe(message);

@@ -66,18 +66,25 @@ pub(crate) fn check_axes(spec: &OptionSpec, values: &[f64; MACHINE_AXES]) -> Res
 /// a list's values are held to the range by the constructor they go to
 /// ([`Machine::new`], [`Machine::from_drive`], [`crate::planner::Limits::new`]: their
 /// [`check_axes`] names the axis), which checks every value it is given.
+/// A list's item that is not a finite number is named by its axis here, as
+/// a point's is ("acceleration: y must be a number, got NaN").
 pub(crate) fn per_axis(spec: &OptionSpec, value: &Value) -> Result<[f64; MACHINE_AXES], Error> {
     let field = spec.name;
-    let number = |v: &Value| {
-        v.as_f64()
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| Error::field(field, format!("expected a number, got {}", shown(v))))
-    };
+    let number = |v: &Value| v.as_f64().filter(|x| x.is_finite());
     match value {
         Value::Array(items) if items.len() == MACHINE_AXES => {
             let mut out = [0.0; MACHINE_AXES];
             for (axis, item) in items.iter().enumerate() {
-                out[axis] = number(item)?;
+                out[axis] = number(item).ok_or_else(|| {
+                    Error::field(
+                        field,
+                        format!(
+                            "{} must be a number, got {}",
+                            crate::grid::AXIS_NAMES[axis],
+                            shown(item)
+                        ),
+                    )
+                })?;
             }
             Ok(out)
         }
@@ -85,7 +92,12 @@ pub(crate) fn per_axis(spec: &OptionSpec, value: &Value) -> Result<[f64; MACHINE
             field,
             format!("{WRONG_COUNT}, got {}", items.len()),
         )),
-        v => Ok([spec.number_range().check(field, number(v)?)?; MACHINE_AXES]),
+        v => {
+            let one = number(v).ok_or_else(|| {
+                Error::field(field, format!("expected a number, got {}", shown(v)))
+            })?;
+            Ok([spec.number_range().check(field, one)?; MACHINE_AXES])
+        }
     }
 }
 
