@@ -91,6 +91,17 @@ describe('voxpath trace', () => {
     expect(r.stdout).toContain('--max-steps N');
     expect(r.stdout).toContain('--tie advance|hold');
   });
+
+  // A misspelt --algoritm was not named: the error said only '--algorithm is required'.
+  it.each([
+    [['trace', '--algoritm', 'regions', '--from', '0,0,0', '--to', '1,1,1'], 'voxpath: --algorithm is required; --algoritm is not a flag of trace'],
+    [['check', '--algoritm', 'regions', '--from', '0,0,0', '--to', '1,1,1', 'points.csv'], 'voxpath: --algorithm is required; --algoritm is not a flag of check'],
+    [['trace', '--from', '0,0,0', '--to', '1,1,1', '--tolerance', '1'], 'voxpath: --algorithm is required'],
+  ])('names beside a missing --algorithm a flag no algorithm takes: %j', (args, first) => {
+    const r = voxpath(args);
+    expect(r.code).toBe(2);
+    expect(r.stderr.split('\n')[0]).toBe(first);
+  });
 });
 
 describe('voxpath reading numbers (issue 15 item 4)', () => {

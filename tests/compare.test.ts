@@ -177,6 +177,8 @@ describe('voxpath compare', () => {
 
   it.each([
     [['--from', '0,0,0', '--to', '1,1,1'], /^voxpath: --algorithms is required/],
+    // --algorithm for --algorithms was not named.
+    [['--algorithm', 'regions,nd', '--from', '0,0,0', '--to', '1,1,1'], /^voxpath: --algorithms is required \(.*\); --algorithm is not a flag of compare$/],
     [['--algorithms', 'regions', ...ARGS.slice(2)], /^voxpath: --algorithms: expected two ids separated by a comma, got 'regions'/],
     [['--algorithms', 'regions,bogus', ...ARGS.slice(2)], /^voxpath: --algorithms: unknown algorithm 'bogus'/],
     [[...ARGS, '--center', '0,0,0'], /^voxpath: unknown flag --center for compare regions,bresenham3d/],

@@ -103,10 +103,21 @@ async function packageVersion(): Promise<string> {
   return (JSON.parse(text) as { version: string }).version;
 }
 
+/**
+ * `sentence` ("--algorithm is required"), naming also a flag given that no
+ * algorithm of `command` takes: a misspelt --algoritm left --algorithm
+ * missing, and the error named only the flag it had not been given.
+ */
+function missingFlag(sentence: string, flags: Map<string, string>, catalogue: AlgorithmInfo[], command: string): UsageError {
+  const known = new Set(['--format', ...catalogue.flatMap((a) => a.options.map((o) => flagOf(o.name)))]);
+  const stray = [...flags.keys()].find((flag) => !known.has(flag));
+  return new UsageError(stray === undefined ? sentence : `${sentence}; ${quoted(stray)} is not a flag of ${command}`);
+}
+
 /** The algorithm a command names with --algorithm (or `fallback`). */
-function pickAlgorithm(flags: Map<string, string>, catalogue: AlgorithmInfo[], fallback?: string): AlgorithmInfo {
+function pickAlgorithm(flags: Map<string, string>, catalogue: AlgorithmInfo[], command: string, fallback?: string): AlgorithmInfo {
   const id = flags.get('--algorithm') ?? fallback;
-  if (id === undefined) throw new UsageError('--algorithm is required');
+  if (id === undefined) throw missingFlag('--algorithm is required', flags, catalogue, command);
   const info = catalogue.find((a) => a.id === id);
   if (!info) throw new UsageError(`--algorithm: unknown algorithm '${quoted(id)}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
   return info;
@@ -120,7 +131,7 @@ function* traceJsonLine(result: Trace): Generator<string> {
 
 /** Traces and writes the trace as it is read, a chunk of rows at a time, so any trace the API accepts prints. */
 async function runTrace(flags: Map<string, string>, catalogues: Catalogue): Promise<void> {
-  const info = pickAlgorithm(flags, catalogues.algorithms);
+  const info = pickAlgorithm(flags, catalogues.algorithms, 'trace');
   const format = pickFormat(flags, FORMATS);
   const options = optionsFromFlags(flags, info.options, info.id);
   const result = await trace({ ...options, algorithm: info.id } as Parameters<typeof trace>[0]);
@@ -134,7 +145,7 @@ async function runTrace(flags: Map<string, string>, catalogues: Catalogue): Prom
 /** The two algorithms of --algorithms A,B. */
 function pickPair(flags: Map<string, string>, catalogue: AlgorithmInfo[]): [AlgorithmInfo, AlgorithmInfo] {
   const text = flags.get('--algorithms');
-  if (text === undefined) throw new UsageError('--algorithms is required (two ids, for example --algorithms regions,greedy)');
+  if (text === undefined) throw missingFlag('--algorithms is required (two ids, for example --algorithms regions,greedy)', flags, catalogue, 'compare');
   const ids = text.split(',');
   if (ids.length !== 2) throw new UsageError(`--algorithms: expected two ids separated by a comma, got '${quoted(text)}'`);
   const find = (id: string) => {
@@ -164,7 +175,7 @@ async function runExperiment(args: string[], catalogues: Catalogue): Promise<str
     throw new UsageError(`experiment: expected one of ${catalogues.experiments.map((e) => e.id).join(', ')}, got '${quoted(id ?? '')}'`);
   }
   const flags = parseFlags(rest);
-  const info = pickAlgorithm(flags, catalogues.algorithms, 'regions');
+  const info = pickAlgorithm(flags, catalogues.algorithms, experiment.id, 'regions');
   const format = pickFormat(flags, FORMATS);
   const specs = [...experiment.options, ...info.options.filter((o) => o.name !== 'from' && o.name !== 'to')];
   const options = optionsFromFlags(flags, specs, `${experiment.id} with ${info.id}`);
@@ -182,7 +193,7 @@ async function runCheck(args: string[], catalogues: Catalogue): Promise<{ stdout
   const [file, ...extra] = operands;
   if (file === undefined) throw new UsageError('check needs a FILE (or - for standard input)');
   if (extra.length > 0) throw new UsageError(`check reads one FILE, got '${quoted(file)}' and '${quoted(extra[0]!)}'`);
-  const info = pickAlgorithm(flags, catalogues.algorithms);
+  const info = pickAlgorithm(flags, catalogues.algorithms, 'check');
   const format = flags.get('--format') ?? 'table';
   if (format !== 'table' && format !== 'json') throw new UsageError(`--format: expected table or json, got '${quoted(format)}'`);
   const options = optionsFromFlags(flags, info.options, info.id);
