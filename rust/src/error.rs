@@ -28,7 +28,51 @@ pub struct Limit {
     pub most: u64,
 }
 
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// An arc split into more chords than one trace takes (arc-segments'
+/// MAX_CHORDS, which no option raises), for a caller that sets no chord
+/// option, a G-code program, to word its own advice: it read the count
+/// back out of the arc's message before.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TooManyChords {
+    /// The count the rule gives, kept as a float: a tiny tolerance makes it
+    /// hundreds of digits long, a segment length of 1e-320 infinite.
+    pub chords: f64,
+    /// The most chords an arc may be split into.
+    pub most: u64,
+}
+
+impl TooManyChords {
+    /// The count as a message says it: "70265 chords", "2.221e153
+    /// chords", or, past what a double counts, not "inf chords".
+    pub fn chords_text(&self) -> String {
+        let n = self.chords;
+        if n < 1e15 {
+            format!("{n:.0} chords")
+        } else if n.is_finite() {
+            format!("{n:.3e} chords")
+        } else {
+            "more chords than can be counted".to_string()
+        }
+    }
+
+    /// The arc's own words, naming `option`, the chord option (segmentLength
+    /// or tolerance) whose rule gave the count: its caller can change it.
+    pub fn error(self, option: &str) -> Error {
+        Error {
+            too_many_chords: Some(Box::new(self)),
+            ..Error::field(
+                option,
+                format!(
+                    "splits this arc into {}, more than {}; use longer chords",
+                    self.chords_text(),
+                    self.most
+                ),
+            )
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
 pub struct Error {
     pub location: Location,
     pub message: String,
@@ -36,6 +80,9 @@ pub struct Error {
     pub axis: Option<usize>,
     /// The cap the input ran into, when that is what is wrong.
     pub limit: Option<Limit>,
+    /// The arc's chords past their bound, when that is what is wrong
+    /// (boxed: most errors are not this one, and all are returned by value).
+    pub too_many_chords: Option<Box<TooManyChords>>,
 }
 
 impl Error {
@@ -45,6 +92,7 @@ impl Error {
             message: message.into(),
             axis: None,
             limit: None,
+            too_many_chords: None,
         }
     }
 
@@ -54,6 +102,7 @@ impl Error {
             message: message.into(),
             axis: None,
             limit: None,
+            too_many_chords: None,
         }
     }
 

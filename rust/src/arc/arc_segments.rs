@@ -25,7 +25,7 @@
 use super::angle::{degrees, sin_cos_turns};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
-use crate::error::{Error, counted, number_text};
+use crate::error::{Error, TooManyChords, counted, number_text};
 use crate::grid::{Point, round_half_away_within, round_ratio_half_away};
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
@@ -55,10 +55,6 @@ pub const LINE_ALGORITHMS: &[&str] = &[
 /// Most chords one arc may be split into: each chord is a trace segment
 /// with its own replay state and note.
 pub const MAX_CHORDS: u64 = 1 << 16;
-
-/// How the refusal of an arc of more than [`MAX_CHORDS`] chords starts
-/// (a G-code program, which sets no chord option, words it its own way).
-pub const TOO_MANY_CHORDS: &str = "splits this arc into";
 
 /// Fewest chords of a full circle: a triangle around the center.
 pub const MIN_FULL_CIRCLE_CHORDS: u64 = 3;
@@ -177,7 +173,8 @@ impl Chording {
     }
 
     /// Number of chords (at least 1) for an arc of radius `r` sweeping
-    /// `sweep_rad` (either sign).
+    /// `sweep_rad` (either sign). More than [`MAX_CHORDS`] is refused with
+    /// the error's `too_many_chords` set, for a caller to word its own way.
     pub fn chords(self, r: f64, sweep_rad: f64) -> Result<u64, Error> {
         let arc_length = sweep_rad.abs() * r;
         let n = match self {
@@ -200,21 +197,11 @@ impl Chording {
             }
         };
         if n > MAX_CHORDS as f64 {
-            return Err(Error::field(
-                self.option(),
-                format!(
-                    "{TOO_MANY_CHORDS} {}, more than {MAX_CHORDS}; use longer chords",
-                    // A tiny tolerance can make the count hundreds of digits
-                    // long, and a segment length of 1e-320 infinite ("inf").
-                    if n < 1e15 {
-                        format!("{n:.0} chords")
-                    } else if n.is_finite() {
-                        format!("{n:.3e} chords")
-                    } else {
-                        "more chords than can be counted".to_string()
-                    }
-                ),
-            ));
+            return Err(TooManyChords {
+                chords: n,
+                most: MAX_CHORDS,
+            }
+            .error(self.option()));
         }
         Ok((n as u64).max(1))
     }
@@ -816,8 +803,21 @@ mod tests {
             .unwrap_err();
         assert_eq!(e.field_name(), Some("segmentLength"));
         assert!(e.to_string().contains("6588397 chords"), "{e}");
+        // The count and the bound as numbers, for a G-code program to word
+        // its own refusal (it read them back out of this message before).
+        assert_eq!(
+            e.too_many_chords.as_deref(),
+            Some(&TooManyChords {
+                chords: 6588397.0,
+                most: MAX_CHORDS
+            })
+        );
         // Past what a double counts: said so, not "inf chords".
         let e = Chording::Length(1e-320).chords(20.0, PI).unwrap_err();
+        assert_eq!(
+            e.too_many_chords.as_ref().map(|refusal| refusal.chords),
+            Some(f64::INFINITY)
+        );
         assert!(
             e.to_string()
                 .contains("splits this arc into more chords than can be counted, more than 65536"),
@@ -828,6 +828,7 @@ mod tests {
             e.to_string(),
             "tolerance: must be less than the diameter 20.000, got 30"
         );
+        assert_eq!(e.too_many_chords, None);
         // A huge value as JavaScript writes it, not in 301 digits.
         let e = Chording::Tolerance(1e300).chords(10.0, PI).unwrap_err();
         assert_eq!(

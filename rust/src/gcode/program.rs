@@ -32,9 +32,7 @@ use super::interpret::{ArcFormat, ArcMm, Effects, Interpreter, Motion, MoveMm};
 use super::parse::{Block, Problem, parse_line_into};
 use super::timing::{self, MoveSpans, Timeline};
 use crate::algorithms;
-use crate::arc::arc_segments::{
-    LINE_ALGORITHM, LINE_ALGORITHMS, SEGMENT_LENGTH, TOLERANCE, TOO_MANY_CHORDS,
-};
+use crate::arc::arc_segments::{LINE_ALGORITHM, LINE_ALGORITHMS};
 use crate::arc::circle_saleem::{self, SaleemCircle};
 use crate::arc::planes::Turn;
 use crate::arc::{ArcSpec, CENTER, MAX_TURNS, radii_within_tolerance};
@@ -1230,8 +1228,8 @@ impl Runner {
     /// Runs one catalogue request and appends its trace. Returns (steps,
     /// segments) added.
     fn append(&mut self, m: &MoveMm, mut request: Request) -> Result<(u64, usize), Error> {
-        let place = |e: Error| match e.field_name() {
-            Some("maxSteps") => {
+        let place = |e: Error| match (e.field_name(), e.too_many_chords.as_deref()) {
+            (Some("maxSteps"), _) => {
                 // The whole program needs the steps before this move and at least the move's.
                 let at_least = self.steps + e.limit.as_ref().map_or(1, |l| l.at_least);
                 Error::at(
@@ -1252,21 +1250,17 @@ impl Runner {
             }
             // arc-segments' chord options are no settings of a program:
             // "tolerance: ...; use longer chords" asked for one it cannot set.
-            Some(field)
-                if [TOLERANCE.name, SEGMENT_LENGTH.name].contains(&field)
-                    && e.message.starts_with(TOO_MANY_CHORDS) =>
-            {
-                let (count, _advice) = e.message.split_once(';').unwrap_or((&e.message, ""));
-                Error::at(
-                    m.line,
-                    m.column,
-                    format!(
-                        "at its default {field}, which a program does not set, arc-segments {count}: give the arc fewer turns (P) or a smaller radius, or run arcs with arcAlgorithm circle"
-                    ),
-                )
-            }
-            Some(field) => Error::at(m.line, m.column, format!("{field}: {}", e.message)),
-            None => e,
+            (Some(option), Some(refusal)) => Error::at(
+                m.line,
+                m.column,
+                format!(
+                    "at its default {option}, which a program does not set, arc-segments splits this arc into {}, more than {}: give the arc fewer turns (P) or a smaller radius, or run arcs with arcAlgorithm circle",
+                    refusal.chords_text(),
+                    refusal.most
+                ),
+            ),
+            (Some(field), None) => Error::at(m.line, m.column, format!("{field}: {}", e.message)),
+            (None, _) => e,
         };
         request.set(
             "maxSteps",
@@ -1744,6 +1738,8 @@ mod tests {
         for (source, chords) in [
             ("G1 F100\nG2 X0 Y0 I50 P1000", "70265 chords"),
             ("G1 F100\nG2 X0 Y0 I5 P1000000", "22270159 chords"),
+            // A helix's chords, counted by the same rule.
+            ("G1 F100\nG2 X0 Y0 Z5 I5 P1000000", "22270159 chords"),
         ] {
             let p = run(source, Settings::from_json(settings).unwrap());
             let e = &p.info.errors[0];
