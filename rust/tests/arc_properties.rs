@@ -321,6 +321,22 @@ proptest! {
     }
 
     #[test]
+    fn a_circle_takes_no_fewer_steps_than_its_full_turns_bound(
+        arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(3000)],
+        turns in 1u64..6,
+    ) {
+        // SaleemCircle::counted refuses a circle without its dry run when
+        // steps_at_least passes maxSteps, and says that many at least: the
+        // bound must hold for every arc with full turns (ends off the
+        // circle, tiny radii, every plane and direction).
+        let arc = Arc { turns, ..arc };
+        let (spec, circle) = counted_circle(&arc.request("circle", 0, ""));
+        let bound = SaleemCircle::new(&spec).steps_at_least();
+        let steps = circle.remaining_steps().expect("counted");
+        prop_assert!(bound <= steps, "{} steps, bound {}", steps, bound);
+    }
+
+    #[test]
     fn the_dry_run_counts_the_steps_the_rule_takes(
         arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(300), arc_strategy(30_000)],
     ) {

@@ -12,6 +12,7 @@ mod common;
 use voxpath::arc::ArcSpec;
 use voxpath::arc::circle_saleem::SaleemCircle;
 use voxpath::gcode::{Settings, run};
+use voxpath::trace::Stepper;
 use voxpath::{Error, Limit};
 
 fn refusal(json: &str) -> Error {
@@ -101,48 +102,85 @@ fn a_program_is_stopped_at_the_move_past_max_steps_with_what_the_program_needs()
 
 #[test]
 fn a_circle_is_refused_from_its_full_turns() {
-    // r = 1000 and 10^6 extra turns: more than 4 (r - 1) = 3996 steps per
-    // turn, at least 3,996,000,000; a dry run would have stopped at the
+    // r = 1000 and 10^6 extra turns: 4 * 10^6 - 2 passes through a quarter
+    // of 2k - 1 = 1413 steps each (k = 707, the least with 2k² >= 1000² -
+    // 1000), 5,651,997,174 in all; a dry run would have stopped at the
     // default maxSteps + 1 = 50,000,001.
     let e = refusal(
         r#"{"algorithm":"circle","from":[1000,0,0],"to":[1000,0,0],"center":[0,0,0],"turns":1000000}"#,
     );
-    assert_eq!(at_least(&e), 3_996_000_000);
+    assert_eq!(at_least(&e), 5_651_997_174);
 }
 
 #[test]
-fn an_arc_past_every_max_steps_is_told_so() {
-    // A half circle of r = 2^30 takes about 3 * 10^9 steps: the advice to
-    // raise maxSteps (to "at least 50000001") was refused again at 10^9.
-    let r = 1 << 30;
-    for max in ["", r#","maxSteps":1000000000"#] {
-        let e = refusal(&format!(
-            r#"{{"algorithm":"circle","from":[{r},0,0],"to":[-{r},0,0],"center":[0,0,0]{max}}}"#
-        ));
-        assert!(at_least(&e) > 1_000_000_000, "{e}");
-        assert!(
-            e.message
-                .ends_with("that is more than any maxSteps allows (1000000000): shorten the move"),
-            "{e}"
+fn a_million_turns_under_every_max_steps_are_refused_from_their_bound() {
+    // r = 80 steps (I1 at 80 steps/mm) and 999,999 extra turns take
+    // 452,000,000 steps, under the largest maxSteps: the refusal counted
+    // them all with the dry run to say so (1.4 s natively, up to 3.7 s in
+    // a page), where the full turns' bound, 3,999,994 passes of 113 steps,
+    // is known at once and says "at least" as truly. A helix about it
+    // steps the same circle.
+    let settings = || Settings::from_json(r#"{"stepsPerMm": 80}"#).unwrap();
+    for source in [
+        "G1 F100\nG2 X0 Y0 I1 P1000000",
+        "G1 F100\nG2 X0 Y0 Z1 I1 P1000000",
+    ] {
+        let p = run(source, settings());
+        let error = &p.info.errors[0];
+        assert_eq!(
+            (error.line, error.column, p.info.steps),
+            (2, 1, 0),
+            "{source}"
+        );
+        assert_eq!(
+            error.limit,
+            Some(Limit {
+                option: "maxSteps".into(),
+                value: 50_000_000,
+                at_least: 451_999_322,
+                most: 1_000_000_000,
+            }),
+            "{source}"
+        );
+        assert_eq!(
+            error.message,
+            "the program needs more than maxSteps = 50000000 steps by this move (at least 451999322); raise maxSteps (up to 1000000000) or shorten the program or lower its steps per mm"
         );
     }
 }
 
 #[test]
 fn the_full_turn_bound_is_below_the_real_count() {
-    for r in [1, 2, 3, 5, 17, 100, 1000] {
-        for turns in [0, 1, 3] {
-            let json = format!(
-                r#"{{"algorithm":"circle","from":[{r},0,0],"to":[{r},0,0],"center":[0,0,0],"turns":{turns}}}"#
-            );
-            let spec =
-                ArcSpec::parse(&voxpath::Request::from_json(&json).unwrap(), false, 3).unwrap();
-            let bound = SaleemCircle::new(&spec).steps_at_least();
-            let steps = common::trace(&json).steps();
-            assert!(
-                bound < steps,
-                "r {r}, {turns} extra turns: {bound} >= {steps}"
-            );
+    // Every start of radius up to 40 in a quarter plane (the rule is alike
+    // in every quarter), around a full circle and half of one, each way,
+    // with 1 to 4 extra turns: the bound never passes the dry run's count.
+    let count = |json: &str| {
+        let spec = ArcSpec::parse(&voxpath::Request::from_json(json).unwrap(), false, 3).unwrap();
+        let bound = SaleemCircle::new(&spec).steps_at_least();
+        let steps = SaleemCircle::new(&spec)
+            .counted(1_000_000_000)
+            .unwrap()
+            .remaining_steps()
+            .unwrap();
+        (bound, steps)
+    };
+    for u in 1..=40i64 {
+        for v in 0..=40i64 {
+            if u * u + v * v > 40 * 40 {
+                continue;
+            }
+            for (to, dir, turns) in [[u, v], [-u, -v]]
+                .into_iter()
+                .flat_map(|to| ["cw", "ccw"].map(|dir| (to, dir)))
+                .flat_map(|(to, dir)| (1..=4).map(move |turns| (to, dir, turns)))
+            {
+                let json = format!(
+                    r#"{{"algorithm":"circle","from":[{u},{v},0],"to":[{},{},0],"center":[0,0,0],"dir":"{dir}","turns":{turns}}}"#,
+                    to[0], to[1]
+                );
+                let (bound, steps) = count(&json);
+                assert!(bound <= steps, "{json}: bound {bound} > {steps} steps");
+            }
         }
     }
 }

@@ -318,7 +318,8 @@ pub fn cross_dot(p: [i64; 2], q: [i64; 2]) -> (i128, i128) {
     (p0 * q1 - p1 * q0, p0 * q0 + p1 * q1)
 }
 
-fn ceil_sqrt(n: i128) -> i128 {
+/// The least s with s² >= n, for n >= 0.
+pub(crate) fn ceil_sqrt(n: i128) -> i128 {
     let s = (n as u128).isqrt() as i128;
     if s * s == n { s } else { s + 1 }
 }
