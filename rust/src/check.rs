@@ -25,7 +25,7 @@ use crate::line::liu_float::{self, DECIMALS};
 use crate::range::IntegerRange;
 use crate::request::tie_option;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
-use crate::text::{echo, split_line};
+use crate::text::{echo, split_line, writes_whole_number};
 use crate::trace::Trace;
 use serde::Serialize;
 use serde_json::{Map, Value};
@@ -196,32 +196,6 @@ fn coordinate(value: f64, index: usize, axis: usize) -> Result<i64, String> {
         ));
     }
     Ok(value as i64)
-}
-
-/// Whether `number`, decimal text that reads as a finite number, writes a
-/// whole number: no digit but 0 after its point once its exponent has moved
-/// the point ("1.5e1" does, "15e-1" does not).
-fn writes_whole_number(number: &str) -> bool {
-    let unsigned = number.trim_start_matches(['+', '-']);
-    let (mantissa, exponent) = match unsigned.split_once(['e', 'E']) {
-        // An exponent past i64 moves the point past every digit.
-        Some((mantissa, exponent)) => (
-            mantissa,
-            exponent
-                .parse::<i64>()
-                .unwrap_or(if exponent.starts_with('-') {
-                    i64::MIN
-                } else {
-                    i64::MAX
-                }),
-        ),
-        None => (unsigned, 0),
-    };
-    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
-    let point = (whole.len() as i64).saturating_add(exponent);
-    (whole.bytes().chain(fraction.bytes()))
-        .enumerate()
-        .all(|(i, digit)| (i as i64) < point || digit == b'0')
 }
 
 /// Text read into points a slice at a time ([`Self::advance`]), to the

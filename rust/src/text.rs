@@ -85,6 +85,34 @@ pub fn without_byte_order_mark(text: &str) -> &str {
     text.strip_prefix(BYTE_ORDER_MARK).unwrap_or(text)
 }
 
+/// Whether `number`, decimal text that reads as a finite number, writes a
+/// whole number: no digit but 0 after its point once its exponent has moved
+/// the point ("1.5e1" does, "15e-1" does not). Asked of the text, not of
+/// its value: "2.99999999999999999" reads as 3.0, a whole f64, and is no
+/// whole number (a learner's coordinate, a G-code arc's P turns).
+pub fn writes_whole_number(number: &str) -> bool {
+    let unsigned = number.trim_start_matches(['+', '-']);
+    let (mantissa, exponent) = match unsigned.split_once(['e', 'E']) {
+        // An exponent past i64 moves the point past every digit.
+        Some((mantissa, exponent)) => (
+            mantissa,
+            exponent
+                .parse::<i64>()
+                .unwrap_or(if exponent.starts_with('-') {
+                    i64::MIN
+                } else {
+                    i64::MAX
+                }),
+        ),
+        None => (unsigned, 0),
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let point = (whole.len() as i64).saturating_add(exponent);
+    (whole.bytes().chain(fraction.bytes()))
+        .enumerate()
+        .all(|(i, digit)| (i as i64) < point || digit == b'0')
+}
+
 /// U+FEFF, the byte order mark (bytes EF BB BF in UTF-8).
 const BYTE_ORDER_MARK: char = '\u{feff}';
 

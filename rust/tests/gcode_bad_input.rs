@@ -283,3 +283,44 @@ fn a_dwell_without_seconds_or_below_zero_names_p() {
     // Zero is a dwell of no time, not an error.
     assert!(program("G4 P0\n", 80.0).info.errors.is_empty());
 }
+
+#[test]
+fn an_arc_s_turns_are_a_whole_number_as_written() {
+    // P2.99999999999999999 reads as 3.0 in f64, and ran 3 turns: the
+    // reader kept only the rounded value.
+    let circle = |p: &str| format!("G1 X10 F600\nG3 I-10 {p}\n");
+    let refused = "P (turns) must be a whole number from 1 to 1000000, got";
+    for (p, got) in [
+        (
+            "P2.99999999999999999",
+            "a fraction too fine for a double, which rounds it to 3",
+        ),
+        (
+            "P1.0000000000000000001",
+            "a fraction too fine for a double, which rounds it to 1",
+        ),
+        ("P2.5", "2.5"),
+        ("P0", "0"),
+        ("P1000001", "1000001"),
+    ] {
+        assert_eq!(
+            first_error(&circle(p), 80.0),
+            (2, 9, format!("{refused} {got}")),
+            "{p}"
+        );
+    }
+    // A number with an exponent is no G-code number, at the P.
+    let (line, column, message) = first_error(&circle("P1e-400"), 80.0);
+    assert_eq!((line, column), (2, 9));
+    assert!(
+        message.starts_with("malformed number: P1e-400: "),
+        "{message}"
+    );
+    // Whole as written, with zeros past its point to any length: 3 turns.
+    let arc_steps = |p: &str| {
+        let run = program(&circle(p), 80.0);
+        assert!(run.info.errors.is_empty(), "{p}: {:?}", run.info.errors);
+        run.info.steps - program("G1 X10 F600\n", 80.0).info.steps
+    };
+    assert_eq!(arc_steps("P3.00000000000000000000"), 3 * arc_steps("P1"));
+}

@@ -31,8 +31,8 @@
 //!   seen from +Y like G17 seen from +Z), pushed a full turn the commanded
 //!   way when it reads the other way within 5e-7 rad (Grbl's
 //!   ARC_ANGULAR_TRAVEL_EPSILON: a rounding sliver is a full circle);
-//! - P n (a whole number, at least 1) is the number of turns: n - 1 full
-//!   turns are added (LinuxCNC);
+//! - P n (a whole number as written, 1 to 1000000) is the number of
+//!   turns: n - 1 full turns are added (LinuxCNC);
 //! - the plane's normal axis may move during the arc: a helix.
 //!
 //! Feed F (units per minute, G94) is kept with each move in mm/min, for the
@@ -1147,17 +1147,22 @@ impl Interpreter {
         let center_words = words.center();
         let extra_turns = match words.get('P') {
             None => 0,
-            Some(p) if p.value >= 1.0 && p.value.fract() == 0.0 && p.value <= 1e6 => {
-                p.value as u32 - 1
-            }
+            Some(p) if p.written_whole && p.value >= 1.0 && p.value <= 1e6 => p.value as u32 - 1,
             Some(p) => {
+                // A fraction past a double's digits reads as a whole number
+                // it is not: "got 3" would quote no number on the line.
+                let got = if p.written_whole || p.value.fract() != 0.0 {
+                    p.value.to_string()
+                } else {
+                    format!(
+                        "a fraction too fine for a double, which rounds it to {}",
+                        p.value
+                    )
+                };
                 return Err(Error::at(
                     line,
                     p.column,
-                    format!(
-                        "P (turns) must be a whole number from 1 to 1000000, got {}",
-                        p.value
-                    ),
+                    format!("P (turns) must be a whole number from 1 to 1000000, got {got}"),
                 ));
             }
         };

@@ -43,7 +43,7 @@
 //! for the rest of the line. Keeping it would have meant lexing every line
 //! twice, once to guard it and once to parse it.
 
-use crate::text::echo;
+use crate::text::{echo, writes_whole_number};
 use std::borrow::Cow;
 
 /// A number's text as the line writes it, and whether blanks stand inside
@@ -99,6 +99,18 @@ pub struct Word {
     pub value: f64,
     /// 1-based column of the letter.
     pub column: u32,
+    /// Whether the number as written is whole ([`writes_whole_number`]),
+    /// which its value does not tell past 15 digits: P2.99999999999999999
+    /// reads as 3.0, and ran 3 turns.
+    pub written_whole: bool,
+}
+
+/// [`Word::written_whole`] of a number of at most 15 digits, from its
+/// value: whole exactly when the value is, as 15 significant digits
+/// survive the trip to f64 and back (DBL_DIG), so a fraction so written
+/// cannot read as a whole number. Spares the line's text a second look.
+fn short_written_whole(magnitude: f64) -> bool {
+    magnitude.fract() == 0.0
 }
 
 /// A G, M or T code: G90.1 has number 90 and minor 1.
@@ -312,6 +324,7 @@ fn read_plain(text: &str, block: &mut Block) -> bool {
                     letter: letter as char,
                     value: if negative { -magnitude } else { magnitude },
                     column,
+                    written_whole: short_written_whole(magnitude),
                 });
             }
         }
@@ -841,6 +854,10 @@ impl<'t> Reader<'t> {
             letter,
             value: if negative { -magnitude } else { magnitude },
             column,
+            written_whole: match short {
+                Some(_) => short_written_whole(magnitude),
+                None => writes_whole_number(&number.text()),
+            },
         })
     }
 }
@@ -873,6 +890,28 @@ mod tests {
                 Some(v) => proptest::prop_assert_eq!(Some(v.to_bits()), parsed),
                 None => proptest::prop_assert!(digits == 0 || digits > 15),
             }
+        }
+
+        /// A word is whole as written, whichever path reads it: from its
+        /// value to 15 digits (the plain line's loop and the reader's
+        /// short read), from its text past them. Numbers near whole ones
+        /// (runs of 0 and 9 past the point) most of all.
+        #[test]
+        fn a_word_is_whole_as_its_text_writes_it(
+            whole in "[1-9][0-9]{0,6}",
+            fraction in proptest::option::of("(0{0,20}|9{0,20}|[0-9]{0,4})[0-9]?"),
+            spaced in proptest::bool::ANY,
+        ) {
+            let text = match &fraction {
+                Some(f) => format!("{whole}.{f}"),
+                None => whole.clone(),
+            };
+            // "P 1.5" is no plain line: the reader takes it.
+            let line = format!("G3 I-10 P{}{text}", if spaced { " " } else { "" });
+            let block = parse_line(&line);
+            proptest::prop_assert_eq!(&block.error, &None);
+            let p = block.words.iter().find(|w| w.letter == 'P').expect("a P word");
+            proptest::prop_assert_eq!(p.written_whole, writes_whole_number(&text), "{}", line);
         }
     }
 
