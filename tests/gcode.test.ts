@@ -472,6 +472,10 @@ describe('voxpath gcode', () => {
     [['gcode', file, '--steps-per-mm', '80,80'], /^voxpath: --steps-per-mm: expected one number or three/],
     [['gcode', file, '--steps-per-mm', '80', '--arc-algorithm', 'spline'], /^voxpath: --arc-algorithm: expected one of circle, arc-segments/],
     [['gcode', file, '--steps-per-mm', '80', '--speed', '3'], /^voxpath: unknown flag --speed for gcode/],
+    // Unknown wherever it stands: given last, or before another flag, it "needed a value".
+    [['gcode', file, '--steps-per-mm', '80', '--speed'], /^voxpath: unknown flag --speed for gcode/],
+    [['gcode', file, '--speed', '--steps-per-mm', '80'], /^voxpath: unknown flag --speed for gcode/],
+    [['gcode', file, '--steps-per-mm'], /^voxpath: --steps-per-mm needs a value/],
   ])('rejects %j with exit 2', (args, message) => {
     const r = voxpath(args);
     expect(r.code).toBe(2);

@@ -84,12 +84,34 @@ function isValue(arg: string | undefined): arg is string {
 }
 
 /**
+ * Flags by their `--name`, in order, each with its text ('' for a switch),
+ * or null for a flag given without one: last on the line, or before
+ * another flag. Whether that is a flag that needs a value or no flag at all
+ * is known only against the command's names, so it is said there
+ * (`flagText`, `optionsFromFlags`): `--bogus` given last was told it
+ * "needs a value".
+ */
+export type Flags = Map<string, string | null>;
+
+/** The text of `flag`, undefined when it is not given; refused when it is given without a value. */
+export function flagText(flags: Flags, flag: string): string | undefined {
+  const text = flags.get(flag);
+  return text === undefined ? undefined : givenText(flag, text);
+}
+
+/** A given flag's text, refused when it has none. */
+function givenText(flag: string, text: string | null): string {
+  if (text === null) throw new UsageError(`${quoted(flag)} needs a value`);
+  return text;
+}
+
+/**
  * Flags by their `--name`, in order: `--name value`, `--name=value`, and the
  * `switches` (such as --help), which take no value. Which names a command
  * takes depends on what it names (`--algorithm` picks the options), so the
  * names are checked afterwards, against the specs (`optionsFromFlags`).
  */
-export function parseFlags(args: readonly string[], switches: readonly string[] = []): Map<string, string> {
+export function parseFlags(args: readonly string[], switches: readonly string[] = []): Flags {
   const { flags, operands } = parseCommandLine(args, switches);
   if (operands.length > 0) throw new UsageError(`unexpected argument '${quoted(operands[0]!)}'`);
   return flags;
@@ -99,7 +121,7 @@ export function parseFlags(args: readonly string[], switches: readonly string[] 
  * The flags of parseFlags and, in `operands`, the arguments that are not
  * flags nor their values (a FILE, or - for standard input), in order.
  */
-export function parseCommandLine(args: readonly string[], switches: readonly string[] = []): { flags: Map<string, string>; operands: string[] } {
+export function parseCommandLine(args: readonly string[], switches: readonly string[] = []): { flags: Flags; operands: string[] } {
   const allSwitches = ['--help', ...switches];
   // Each value joined to its flag (--name=value), so that parseArgs reads
   // negative numbers as values and every flag unambiguously.
@@ -116,18 +138,19 @@ export function parseCommandLine(args: readonly string[], switches: readonly str
     if (!arg.startsWith('--')) operands.push(arg);
     else if (arg.includes('=') || allSwitches.includes(arg)) joined.push(arg);
     else if (isValue(args[i + 1])) joined.push(`${arg}=${args[++i]}`);
-    else throw new UsageError(`${quoted(arg)} needs a value`);
+    // Without a value: read as given, and refused once its name is checked.
+    else joined.push(arg);
   }
   const options = Object.fromEntries(allSwitches.map((flag) => [flag.slice(2), { type: 'boolean' as const }]));
   const { tokens } = parseArgs({ args: joined, options, strict: false, tokens: true });
-  const flags = new Map<string, string>();
+  const flags: Flags = new Map();
   for (const token of tokens) {
     if (token.kind !== 'option') continue;
     const flag = token.rawName.split('=')[0]!;
     if (flags.has(flag)) throw new UsageError(`${quoted(flag)} is given twice`);
     const isSwitch = allSwitches.includes(flag);
     if (isSwitch && token.value !== undefined) throw new UsageError(`${quoted(flag)} takes no value`);
-    flags.set(flag, token.value ?? '');
+    flags.set(flag, isSwitch ? '' : (token.value ?? null));
   }
   return { flags, operands };
 }
@@ -201,8 +224,8 @@ export function describeOption(spec: OptionSpec): string {
 }
 
 /** The --format of a command, one of `formats` (json when absent). */
-export function pickFormat<F extends string>(flags: Map<string, string>, formats: readonly F[]): F {
-  const text = flags.get('--format') ?? 'json';
+export function pickFormat<F extends string>(flags: Flags, formats: readonly F[]): F {
+  const text = flagText(flags, '--format') ?? 'json';
   const format = formats.find((f) => f === text);
   if (format === undefined) {
     const listed = `${formats.slice(0, -1).join(', ')} or ${formats.at(-1)}`;
@@ -213,7 +236,7 @@ export function pickFormat<F extends string>(flags: Map<string, string>, formats
 
 /** Options from flags, each checked against its spec; the `own` flags are the command's, not options. */
 export function optionsFromFlags(
-  flags: Map<string, string>,
+  flags: Flags,
   specs: readonly OptionSpec[],
   what: string,
   own: readonly string[] = ['--algorithm', '--format'],
@@ -223,7 +246,7 @@ export function optionsFromFlags(
     if (own.includes(flag)) continue;
     const spec = specs.find((o) => flagOf(o.name) === flag);
     if (!spec) throw new UsageError(`unknown flag ${quoted(flag)} for ${what} (it takes ${specs.map((o) => flagOf(o.name)).join(', ')})`);
-    options[spec.name] = optionValue(spec, flag, text);
+    options[spec.name] = optionValue(spec, flag, givenText(flag, text));
   }
   return options;
 }

@@ -29,7 +29,7 @@ import {
 } from '../core/index.js';
 import type { AlgorithmInfo, Catalogue, Trace } from '../core/index.js';
 import { quoted } from '../core/guard.js';
-import { FORMATS, UsageError, describeOption, flagOf, inFlagWords, optionsFromFlags, parseCommandLine, parseFlags, pickFormat } from './flags.js';
+import { FORMATS, type Flags, UsageError, describeOption, flagOf, flagText, inFlagWords, optionsFromFlags, parseCommandLine, parseFlags, pickFormat } from './flags.js';
 import { GCODE_USAGE, gcodeCommand, gcodeHelp, readSource } from './gcode.js';
 import { OUTPUT_FAILED, OutputError, listenForWriteErrors, write, writeAll } from './output.js';
 
@@ -108,15 +108,15 @@ async function packageVersion(): Promise<string> {
  * algorithm of `command` takes: a misspelt --algoritm left --algorithm
  * missing, and the error named only the flag it had not been given.
  */
-function missingFlag(sentence: string, flags: Map<string, string>, catalogue: AlgorithmInfo[], command: string): UsageError {
+function missingFlag(sentence: string, flags: Flags, catalogue: AlgorithmInfo[], command: string): UsageError {
   const known = new Set(['--format', ...catalogue.flatMap((a) => a.options.map((o) => flagOf(o.name)))]);
   const stray = [...flags.keys()].find((flag) => !known.has(flag));
   return new UsageError(stray === undefined ? sentence : `${sentence}; ${quoted(stray)} is not a flag of ${command}`);
 }
 
 /** The algorithm a command names with --algorithm (or `fallback`). */
-function pickAlgorithm(flags: Map<string, string>, catalogue: AlgorithmInfo[], command: string, fallback?: string): AlgorithmInfo {
-  const id = flags.get('--algorithm') ?? fallback;
+function pickAlgorithm(flags: Flags, catalogue: AlgorithmInfo[], command: string, fallback?: string): AlgorithmInfo {
+  const id = flagText(flags, '--algorithm') ?? fallback;
   if (id === undefined) throw missingFlag('--algorithm is required', flags, catalogue, command);
   const info = catalogue.find((a) => a.id === id);
   if (!info) throw new UsageError(`--algorithm: unknown algorithm '${quoted(id)}' (known: ${catalogue.map((a) => a.id).join(', ')})`);
@@ -130,7 +130,7 @@ function* traceJsonLine(result: Trace): Generator<string> {
 }
 
 /** Traces and writes the trace as it is read, a chunk of rows at a time, so any trace the API accepts prints. */
-async function runTrace(flags: Map<string, string>, catalogues: Catalogue): Promise<void> {
+async function runTrace(flags: Flags, catalogues: Catalogue): Promise<void> {
   const info = pickAlgorithm(flags, catalogues.algorithms, 'trace');
   const format = pickFormat(flags, FORMATS);
   const options = optionsFromFlags(flags, info.options, info.id);
@@ -143,8 +143,8 @@ async function runTrace(flags: Map<string, string>, catalogues: Catalogue): Prom
 }
 
 /** The two algorithms of --algorithms A,B. */
-function pickPair(flags: Map<string, string>, catalogue: AlgorithmInfo[]): [AlgorithmInfo, AlgorithmInfo] {
-  const text = flags.get('--algorithms');
+function pickPair(flags: Flags, catalogue: AlgorithmInfo[]): [AlgorithmInfo, AlgorithmInfo] {
+  const text = flagText(flags, '--algorithms');
   if (text === undefined) throw missingFlag('--algorithms is required (two ids, for example --algorithms regions,greedy)', flags, catalogue, 'compare');
   const ids = text.split(',');
   if (ids.length !== 2) throw new UsageError(`--algorithms: expected two ids separated by a comma, got '${quoted(text)}'`);
@@ -156,7 +156,7 @@ function pickPair(flags: Map<string, string>, catalogue: AlgorithmInfo[]): [Algo
   return [find(ids[0]!), find(ids[1]!)];
 }
 
-async function runCompare(flags: Map<string, string>, catalogues: Catalogue): Promise<string> {
+async function runCompare(flags: Flags, catalogues: Catalogue): Promise<string> {
   const [a, b] = pickPair(flags, catalogues.algorithms);
   const format = pickFormat(flags, FORMATS);
   // The union of both option lists; an option both take is parsed once.
@@ -194,7 +194,7 @@ async function runCheck(args: string[], catalogues: Catalogue): Promise<{ stdout
   if (file === undefined) throw new UsageError('check needs a FILE (or - for standard input)');
   if (extra.length > 0) throw new UsageError(`check reads one FILE, got '${quoted(file)}' and '${quoted(extra[0]!)}'`);
   const info = pickAlgorithm(flags, catalogues.algorithms, 'check');
-  const format = flags.get('--format') ?? 'table';
+  const format = flagText(flags, '--format') ?? 'table';
   if (format !== 'table' && format !== 'json') throw new UsageError(`--format: expected table or json, got '${quoted(format)}'`);
   const options = optionsFromFlags(flags, info.options, info.id);
   const result = await checkPoints({ ...options, algorithm: info.id } as Parameters<typeof checkPoints>[0], await readSource(file));
