@@ -183,6 +183,10 @@ describe('the JS API refuses what the core would misread, naming the argument', 
       [() => t.directionLevels(any(undefined), any(undefined)), 'from', 'step index must be a whole number, got nothing'],
       [() => pulseTrains(t, any('0'), 2), 'from', 'step index must be a whole number, got "0" (text)'],
       [() => pulseTrains(t, 0, 2, new Float64Array(3)), 'stepSeconds', 'expected the 2 instants of steps 0..2, got a Float64Array of length 3'],
+      // Out of order, they gave a negative step rate; NaN, a rate of NaN.
+      [() => pulseTrains(t, 3, 6, Float64Array.of(0.25, 0.5, 0.375)), 'stepSeconds', 'step 5 comes at 0.375 s, before step 4 at 0.5 s: instants go in step order'],
+      [() => pulseTrains(t, 0, 2, Float64Array.of(0, Number.NaN)), 'stepSeconds', "step 1's instant is NaN, not a finite number of seconds"],
+      [() => pulseTrains(t, 0, 1, Float64Array.of(Number.POSITIVE_INFINITY)), 'stepSeconds', "step 0's instant is Infinity, not a finite number of seconds"],
     ];
     for (const [call, field, detail] of cases) {
       const e = thrown(call);
@@ -371,6 +375,12 @@ describe("the writers of plain data refuse what is not that data, naming the arg
       expect(e.field).toBe('stepSeconds');
     }
     expect(pulseTrains(t, 0, 1, new Float64Array(1)).length).toBe(3);
+    // Instants in step order; two at one instant are an infinite rate, as a program may plan them.
+    const [x] = pulseTrains(t, 0, 3, Float64Array.of(0.25, 0.5, 0.5));
+    expect([Array.from(x!.edgeSeconds!), Array.from(x!.rateHz!)]).toEqual([
+      [0.25, 0.5, 0.5],
+      [Number.NaN, 4, Number.POSITIVE_INFINITY],
+    ]);
   });
 });
 

@@ -40,6 +40,7 @@ export function pulseTrains(trace: Trace, from: number, to: number, stepSeconds?
   if (stepSeconds !== undefined && !(stepSeconds instanceof Float64Array && stepSeconds.length === to - from)) {
     throw argumentError('stepSeconds', `expected the ${to - from} instants of steps ${from}..${to}, got ${describeValue(stepSeconds)}`);
   }
+  if (stepSeconds !== undefined) requireInstantsInOrder(stepSeconds, from);
   const trains: PulseTrain[] = [];
   for (let axis = 0; axis < trace.dims; axis++) {
     const step = new Uint8Array(to - from);
@@ -67,4 +68,21 @@ export function pulseTrains(trace: Trace, from: number, to: number, stepSeconds?
     trains.push(train);
   }
   return trains;
+}
+
+/**
+ * Refuses step instants that are not finite or that go back: a step given
+ * an instant before the step ahead of it made a negative step rate (and a
+ * NaN a rate of NaN), said nowhere. Equal instants are steps planned at one
+ * instant, as a program may plan them: their rate is Infinity.
+ */
+function requireInstantsInOrder(stepSeconds: Float64Array, from: number): void {
+  for (let i = 0; i < stepSeconds.length; i++) {
+    const seconds = stepSeconds[i]!;
+    if (!Number.isFinite(seconds)) throw argumentError('stepSeconds', `step ${from + i}'s instant is ${seconds}, not a finite number of seconds`);
+    const before = stepSeconds[i - 1];
+    if (before !== undefined && seconds < before) {
+      throw argumentError('stepSeconds', `step ${from + i} comes at ${seconds} s, before step ${from + i - 1} at ${before} s: instants go in step order`);
+    }
+  }
 }
