@@ -282,15 +282,20 @@ function run(catalogue: Catalogue): void {
     gcodePanel,
     timeline,
     inspector,
-    charts: new PathCharts(byId('charts', HTMLDivElement), goTo, {
-      bar: byId('charts-progress', HTMLProgressElement),
-      cancel: byId('charts-cancel', HTMLButtonElement),
-      box: byId('charts-run', HTMLDivElement),
-      text: byId('charts-run-text', HTMLSpanElement),
-      verb: 'Charting',
-      cancelled: byId('charts-cancelled', HTMLParagraphElement),
-      start: byId('charts-draw', HTMLButtonElement),
-    }),
+    charts: new PathCharts(
+      byId('charts', HTMLDivElement),
+      goTo,
+      {
+        bar: byId('charts-progress', HTMLProgressElement),
+        cancel: byId('charts-cancel', HTMLButtonElement),
+        box: byId('charts-run', HTMLDivElement),
+        text: byId('charts-run-text', HTMLSpanElement),
+        verb: 'Charting',
+        cancelled: byId('charts-cancelled', HTMLParagraphElement),
+        start: byId('charts-draw', HTMLButtonElement),
+      },
+      { cancel: () => page.cancelCharts(), draw: () => page.drawCharts() },
+    ),
     comparePanel: new ComparePanel(byId('comparison', HTMLDivElement), goTo),
     // Its "Go to point" also brings the difference close: on a long path it was too small to see.
     checkPanel: new CheckPanel(

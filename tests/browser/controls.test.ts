@@ -345,3 +345,88 @@ describe('a run cancelled, then another mode and back', () => {
     await p.close();
   });
 });
+
+/** From now on, each time one of the bars `boxes` (test ids) shows, its id, in `window.barsShown`; read with barsShown. */
+async function recordBars(page: Page, boxes: string[]): Promise<void> {
+  await page.evaluate((boxes) => {
+    const shown: string[] = [];
+    (window as unknown as { barsShown: string[] }).barsShown = shown;
+    for (const id of boxes) {
+      const box = document.querySelector(`[data-testid="${id}"]`) as HTMLElement;
+      new MutationObserver(() => {
+        if (!box.hidden) shown.push(id);
+      }).observe(box, { attributes: true, attributeFilter: ['hidden'] });
+    }
+  }, boxes);
+}
+
+function barsShown(page: Page): Promise<string[]> {
+  return page.evaluate(() => (window as unknown as { barsShown: string[] }).barsShown);
+}
+
+describe("the charts or the check of a learner's points cancelled, then another mode and back", () => {
+  // A helix of 264 turns, near the page's 1,500,000 steps: its charts' rows and a check against it take a while, with a bar and a Cancel.
+  const helix = 'algorithm=helix&from=1000,0,0&to=1000,0,300&center=0,0,0&plane=xy';
+
+  it('keeps the charts cancelled until Draw charts (the path traced again at the switch back drew them by itself)', { timeout: 180_000 }, async () => {
+    const p = await openPage(`?${helix}&turns=1`);
+    const { page } = p;
+    const counter = page.getByTestId('step-counter');
+    await counter.filter({ hasText: /of [1-9]/ }).waitFor({ timeout: 30_000 });
+    // Clicked from inside the page at the bar's first report: a click from the test may come once the rows are made.
+    const cancelled = onceShown(page, 'charts-run', { click: 'charts-cancel' });
+    await page.getByTestId('input-turns').fill('264');
+    await cancelled;
+    await page.getByTestId('charts-cancelled').waitFor({ timeout: 10_000 });
+
+    await page.getByTestId('mode-gcode').click();
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor({ timeout: 30_000 });
+    // The program's charts are drawn: the Cancel was of the path's.
+    await expect.poll(() => page.getByTestId('charts').locator('.uplot').count(), { timeout: 30_000 }).toBe(2);
+    await recordBars(page, ['charts-run']);
+    await page.getByTestId('mode-trace').click();
+    // The path itself was not cancelled: it is traced again, to be shown.
+    await counter.filter({ hasText: /of 1,498,840$/ }).waitFor({ timeout: 60_000 });
+    expect(await page.getByTestId('charts-cancelled').isVisible()).toBe(true);
+    // Not a bound on the page's time: only long enough for rows it asked for by itself to show their bar, or be drawn.
+    await page.waitForTimeout(1500);
+    expect(await barsShown(page)).toEqual([]);
+    expect(await page.getByTestId('charts').locator('.uplot').count()).toBe(0);
+    expect(await page.getByTestId('charts-cancelled').isVisible()).toBe(true);
+    await page.getByTestId('charts-draw').click();
+    await expect.poll(() => page.getByTestId('charts').locator('.uplot').count(), { timeout: 30_000 }).toBe(2);
+    expect(await page.getByTestId('charts-cancelled').isHidden()).toBe(true);
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+
+  it('keeps the check cancelled until Check them (the path traced again at the switch back checked the points by itself)', { timeout: 180_000 }, async () => {
+    // The helix's first points, and one off it: a verdict of a difference at point 2.
+    const points = encodeURIComponent('1000,0,0\n1000,1,0\n1000,2,1\n');
+    const p = await openPage(`?${helix}&turns=1&points=${points}`);
+    const { page } = p;
+    const counter = page.getByTestId('step-counter');
+    const verdict = page.getByTestId('check-verdict');
+    await verdict.waitFor({ timeout: 30_000 });
+    const cancelled = onceShown(page, 'check-run', { click: 'check-cancel' });
+    await page.getByTestId('input-turns').fill('264');
+    await cancelled;
+    await page.getByTestId('check-cancelled').waitFor({ timeout: 30_000 });
+
+    await page.getByTestId('mode-gcode').click();
+    await page.getByTestId('trace-status').filter({ hasText: 'moves' }).waitFor({ timeout: 30_000 });
+    await recordBars(page, ['check-run']);
+    await page.getByTestId('mode-trace').click();
+    await counter.filter({ hasText: /of 1,498,840$/ }).waitFor({ timeout: 60_000 });
+    expect(await page.getByTestId('check-cancelled').isVisible()).toBe(true);
+    // As above: long enough for a check started by itself to show its bar, or its verdict.
+    await page.waitForTimeout(1500);
+    expect(await barsShown(page)).toEqual([]);
+    expect(await verdict.count()).toBe(0);
+    expect(await page.getByTestId('check-cancelled').isVisible()).toBe(true);
+    await page.getByTestId('check-again').click();
+    await verdict.waitFor({ timeout: 60_000 });
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});

@@ -31,6 +31,12 @@ export interface ChartsRunElements extends RunProgressElements {
   start: HTMLButtonElement;
 }
 
+/** What the charts ask of the page: stop their rows (their Cancel), draw them (Draw charts). The page keeps a Cancel standing until Draw charts. */
+export interface ChartsActions {
+  cancel: () => void;
+  draw: () => void;
+}
+
 export class PathCharts {
   readonly #container: HTMLElement;
   readonly #onPick: (pointIndex: number) => void;
@@ -43,13 +49,23 @@ export class PathCharts {
   #trace: ChartedTrace | undefined;
   #running: Running<ChartSeries> | undefined;
 
-  constructor(container: HTMLElement, onPick: (pointIndex: number) => void, run: ChartsRunElements) {
+  constructor(container: HTMLElement, onPick: (pointIndex: number) => void, run: ChartsRunElements, actions: ChartsActions) {
     this.#container = container;
     this.#onPick = onPick;
     // The rows of every point of a long path take a while (a helix's 1,500,000 about a second): a bar and a Cancel.
-    this.#progress = new RunProgress({ ...run, start: undefined }, () => this.cancel());
+    this.#progress = new RunProgress({ ...run, start: undefined }, actions.cancel);
     this.#cancelledNote = run.cancelled;
-    run.start.addEventListener('click', () => void this.setTrace(this.#trace, this.#pointIndex));
+    run.start.addEventListener('click', actions.draw);
+  }
+
+  /** The rows of the trace charted are on their way from the worker (its Cancel stops them). */
+  get drawing(): boolean {
+    return this.#running !== undefined;
+  }
+
+  /** Draws the charts of the trace last given (Draw charts, after a Cancel). */
+  draw(): void {
+    void this.setTrace(this.#trace, this.#pointIndex);
   }
 
   /**
@@ -58,13 +74,7 @@ export class PathCharts {
    * 0 until the step changed). The rows asked for before are cancelled.
    */
   async setTrace(trace: ChartedTrace | undefined, pointIndex: number): Promise<void> {
-    const request = ++this.#request;
-    this.#running?.cancel();
-    this.#running = undefined;
-    this.#trace = trace;
-    this.#pointIndex = pointIndex;
-    this.#progress.set(undefined);
-    this.#cancelledNote.hidden = true;
+    const request = this.#replace(trace, pointIndex);
     // The new path is drawn first: the worker builds the series after that frame.
     await afterNextFrame();
     if (request !== this.#request) return;
@@ -141,6 +151,29 @@ export class PathCharts {
       ),
     );
     for (const chart of this.#charts) chart.showPoint(this.#pointIndex);
+  }
+
+  /**
+   * Takes `trace` (its cursor at `pointIndex`) without charting it, as its
+   * Cancel leaves it: the charts say they are not drawn, with Draw charts
+   * (the page's Cancel of the same inputs' charts stands).
+   */
+  setCancelled(trace: ChartedTrace, pointIndex: number): void {
+    this.#replace(trace, pointIndex);
+    this.#destroy();
+    this.#cancelledNote.hidden = false;
+  }
+
+  /** Takes `trace` in place of the one charted, whose rows on their way are no longer wanted; returns the new request's number. */
+  #replace(trace: ChartedTrace | undefined, pointIndex: number): number {
+    const request = ++this.#request;
+    this.#running?.cancel();
+    this.#running = undefined;
+    this.#trace = trace;
+    this.#pointIndex = pointIndex;
+    this.#progress.set(undefined);
+    this.#cancelledNote.hidden = true;
+    return request;
   }
 
   /** Stops the rows on their way (a Cancel, or new inputs whose path will replace this one): the charts say so, with Draw charts. */

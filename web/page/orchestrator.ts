@@ -90,6 +90,9 @@ function refusedBy(algorithm: string, error: unknown): unknown {
   return error instanceof InputRejected ? new InputRejected({ field: error.field, limit: error.limit, message: `${algorithm}: ${error.message}` }) : error;
 }
 
+/** What a Cancel stops: a mode's own run (its path or paths, program or experiment), the charts' rows of its path, the check of the learner's points. */
+type Cancellable = 'run' | 'charts' | 'check';
+
 /** Everything the orchestrator drives. */
 export interface PageParts {
   client: TraceClient;
@@ -131,8 +134,8 @@ export class Orchestrator {
   /** Asks for the shown point's StepDetail: one request per point, for the inspector and the view's overlay alike. */
   readonly #details: PointDetails;
   #shown: Shown = {};
-  /** The mode whose run made what is shown (trace and compare both show traces in a and b). */
-  #shownMode: Mode | undefined;
+  /** The state the run that made what is shown started in: its mode (trace and compare both show traces in a and b) and inputs. */
+  #shownState: AppState | undefined;
   /** Counts runs of the core, so only the latest one's answer is shown. */
   #latestRun = 0;
   /** The long run under way (a path's metrics, a program, an experiment), to cancel. */
@@ -157,11 +160,29 @@ export class Orchestrator {
   /** PageParts.firstPaths has been told. */
   #firstPathsTold = false;
   /**
-   * The state each mode's last run was cancelled in, until a run of that
-   * mode starts: going back to the mode with the same inputs does not run
-   * them again by itself (a Cancel stands until the user asks again).
+   * The state each mode's last run of each kind was cancelled in, until one
+   * of that kind starts in that mode: going back to the mode with the same
+   * inputs does not run it again by itself (a Cancel stands until the user
+   * asks again: an input changed, or the run's own button).
    */
-  readonly #cancelled: Partial<Record<Mode, AppState>> = {};
+  readonly #cancelled: Partial<Record<Mode, Partial<Record<Cancellable, AppState>>>> = {};
+
+  /** A Cancel of `what` stands in `state`: it was made in `state`'s mode on the inputs `state` holds (a check's: the learner's points too). */
+  #cancelStands(what: Cancellable, state: AppState): boolean {
+    const cancelled = this.#cancelled[state.mode]?.[what];
+    const keys = what === 'check' ? [...MODE_INPUT_KEYS[state.mode], 'learnerPoints' as const] : MODE_INPUT_KEYS[state.mode];
+    return cancelled !== undefined && keys.every((k) => state[k] === cancelled[k]);
+  }
+
+  /** A run of `what` was cancelled in `state` (its mode, on its inputs). */
+  #cancelledIn(what: Cancellable, state: AppState): void {
+    (this.#cancelled[state.mode] ??= {})[what] = state;
+  }
+
+  /** A run of `what` starts in mode `mode` (asked for, or on other inputs): a Cancel of it no longer stands. */
+  #cancelWithdrawn(what: Cancellable, mode: Mode): void {
+    delete this.#cancelled[mode]?.[what];
+  }
 
   /** A form of the mode shown holds a value the page refused (another mode's form is hidden, and says nothing of this one's results). */
   #refusedHere(): boolean {
@@ -205,14 +226,30 @@ export class Orchestrator {
     this.#running?.cancel();
   }
 
-  /** Stops the check of the learner's points under way (its Cancel): the panel says so. */
+  /** Stops the check of the learner's points under way (its Cancel): the panel says so, and the Cancel stands until Check them. */
   cancelCheck(): void {
+    // A change of the points or the rule stops a check at once (#stopCheck): the one under way is of the state now.
+    if (this.#checking) this.#cancelledIn('check', this.#p.store.state);
     this.#checking?.cancel();
   }
 
   /** Checks the learner's points again (after a Cancel). */
   checkAgain(): void {
+    this.#cancelWithdrawn('check', 'trace');
     void this.#check();
+  }
+
+  /** Stops the charts' rows on their way (their Cancel): the charts say so, and the Cancel stands until Draw charts. */
+  cancelCharts(): void {
+    const charted = this.#shownState;
+    if (this.#p.charts.drawing && charted) this.#cancelledIn('charts', charted);
+    this.#p.charts.cancel();
+  }
+
+  /** Draws the charts of the path shown (after a Cancel). */
+  drawCharts(): void {
+    if (this.#shownState) this.#cancelWithdrawn('charts', this.#shownState.mode);
+    this.#p.charts.draw();
   }
 
   /**
@@ -280,7 +317,12 @@ export class Orchestrator {
     p.inspector.setTrace(main, mainPoint);
     p.stepReason.setTraces(main, state.mode === 'compare' ? b : undefined, pointIndex);
     this.#details.setTrace(main, mainPoint);
-    void p.charts.setTrace(main, mainPoint);
+    const charted = this.#shownState;
+    if (main && charted && this.#cancelStands('charts', charted)) p.charts.setCancelled(main, mainPoint);
+    else {
+      if (main && charted) this.#cancelWithdrawn('charts', charted.mode);
+      void p.charts.setTrace(main, mainPoint);
+    }
     p.comparePanel.show(a, b, difference);
     p.gcodePanel.setProgram(program);
     p.timing.setTrace(program, pointIndex);
@@ -358,9 +400,9 @@ export class Orchestrator {
     p.experimentForm.showCoreError(undefined);
     this.#rejected = false;
     p.embedProblem.textContent = '';
-    if (this.#shownMode !== mode) {
+    if (this.#shownState?.mode !== mode) {
       this.#freeShown();
-      this.#shownMode = undefined;
+      this.#shownState = undefined;
       this.#ruleOptions = undefined;
       p.charts.cancel();
       this.#present();
@@ -377,7 +419,7 @@ export class Orchestrator {
     const run = ++this.#latestRun;
     const state = p.store.state;
     // Asked for: by an input, the mode's button (Run program, Run experiment, Trace again) or the page's load.
-    delete this.#cancelled[state.mode];
+    this.#cancelWithdrawn('run', state.mode);
     this.#running?.cancel();
     this.#running = undefined;
     // The charts' rows of the path about to be replaced would hold up the new one's in the worker, as would a check against its rule.
@@ -447,7 +489,7 @@ export class Orchestrator {
       this.#rejected = false;
       this.#freeShown();
       this.#shown = next;
-      this.#shownMode = state.mode;
+      this.#shownState = state;
       this.#ruleOptions = ruleOptions;
       if (next.experiment) p.experimentPanel.show(next.experiment);
       else {
@@ -464,7 +506,7 @@ export class Orchestrator {
     } catch (error) {
       if (run !== this.#latestRun || error instanceof CoreCrash) return;
       if (error instanceof Cancelled) {
-        this.#cancelled[state.mode] = state;
+        this.#cancelledIn('run', state);
         this.#sayCancelled(state.mode);
       } else if (error instanceof InputRejected) {
         // An offer to trace again (after a Cancel) would trace what is refused.
@@ -511,6 +553,13 @@ export class Orchestrator {
       p.checkPanel.clear();
       return;
     }
+    // The path traced again (another mode and back) on the points and rule of a check cancelled: it stands until Check them.
+    if (this.#cancelStands('check', p.store.state)) {
+      this.#showLearner(undefined);
+      p.checkPanel.cancelled();
+      return;
+    }
+    this.#cancelWithdrawn('check', mode);
     const current = () => check === this.#latestCheck && rule === this.#shown.a;
     const started = p.client.check(rule, options, learnerPoints, throttled(current, (progress) => p.checkPanel.setProgress(progress)));
     this.#checking = started;
@@ -580,8 +629,7 @@ export class Orchestrator {
     const p = this.#p;
     if (state.mode !== previous.mode || state.layout !== previous.layout) p.modeTabs.render();
     const inputsChanged = state.mode !== previous.mode || MODE_INPUT_KEYS[state.mode].some((k) => state[k] !== previous[k]);
-    const cancelled = this.#cancelled[state.mode];
-    if (state.mode !== previous.mode && cancelled && MODE_INPUT_KEYS[state.mode].every((k) => state[k] === cancelled[k])) {
+    if (state.mode !== previous.mode && this.#cancelStands('run', state)) {
       this.#stopCheck();
       this.#stayCancelled(state.mode);
     } else if (inputsChanged) {
