@@ -591,17 +591,25 @@ describe('a narrow window', () => {
     await p.close();
   });
 
-  it("keeps compare mode's legend and the view's tools off its axis names and handles at 240 to 360 px (over the view, squeezed beside the tools, the legend covered the z axis's name)", async () => {
-    // Its seven entries, in a column 85 px wide beside the stacked tools, stood 196 px tall over a view of
+  it("keeps the legend and the view's tools off its axis names and handles at 240 to 360 px, compared or with a learner's points (over the view, squeezed beside the tools, the legend covered the z axis's name)", async () => {
+    // Compared, its seven entries, in a column 85 px wide beside the stacked tools, stood 196 px tall over a view of
     // 364 at 240 px, and 125 to 161 px at 360: the view frames its picture below at most 30 % of its height.
-    for (const query of ['algorithm=regions&other=greedy', 'algorithm=liu-float&other=bresenham3d']) {
-      const p = await openPage(`?mode=compare&${query}&from=0,0,0&to=10,7,6&step=5`);
+    // A learner's points checked add two entries of three lines each to trace mode's four: 224 px at 240, 139 to 153 at 272 and 360.
+    const points = encodeURIComponent('0,0,0\n1,1,1\n2,1,1\n3,2,2\n4,3,2\n5,3,3\n6,4,4\n7,5,4\n8,6,5\n9,6,5\n10,7,6\n');
+    for (const [name, query] of [
+      ['compare-legend-regions', 'mode=compare&algorithm=regions&other=greedy'],
+      ['compare-legend-liu-float', 'mode=compare&algorithm=liu-float&other=bresenham3d'],
+      ['trace-legend-points', `mode=trace&algorithm=regions&points=${points}`],
+    ]) {
+      const p = await openPage(`?${query}&from=0,0,0&to=10,7,6&step=5`);
       const { page } = p;
       await page.setViewportSize({ width: 240, height: 700 });
       await page.getByTestId('step-counter').filter({ hasText: /^Step 5 of / }).waitFor();
+      // Both entries of the points: they part from regions' path.
+      if (name.startsWith('trace')) await page.locator('#legend-difference').waitFor({ timeout: 10_000 });
       for (const width of [240, 272, 320, 360]) {
         await page.setViewportSize({ width, height: 700 });
-        const at = `${query}, ${width} px`;
+        const at = `${name}, ${width} px`;
         const boxes = () =>
           page.evaluate(() => {
             const box = (e: Element) => {
@@ -630,11 +638,19 @@ describe('a narrow window', () => {
         const { documentPx, windowPx } = await widthAndOverflow(page);
         expect(documentPx, `${at}: the document's width`).toBeLessThanOrEqual(windowPx);
         await page.locator('#views').scrollIntoViewIfNeeded();
-        await screenshot(page, `compare-legend-${query.startsWith('algorithm=regions') ? 'regions' : 'liu-float'}-${width}`, '#views');
+        await screenshot(page, `${name}-${width}`, '#views');
       }
       // Wider, it goes back over the view, where it takes a share of the view the picture is framed below.
+      const legendPlace = () => page.evaluate(() => document.querySelector('#legend')!.parentElement!.id);
       await page.setViewportSize({ width: 480, height: 700 });
-      await expect.poll(() => page.evaluate(() => document.querySelector('#legend')!.parentElement!.id)).toBe('viewport');
+      await expect.poll(legendPlace).toBe('viewport');
+      if (name.startsWith('trace')) {
+        // Without points, trace mode's four short entries stay over the view even at 240 px (22 % of it).
+        await page.setViewportSize({ width: 240, height: 700 });
+        await expect.poll(legendPlace).toBe('views');
+        await page.getByTestId('learner-points').fill('');
+        await expect.poll(legendPlace, { timeout: 10_000 }).toBe('viewport');
+      }
       expect(p.problems()).toEqual([]);
       await p.close();
     }

@@ -30,14 +30,17 @@ const PORTRAIT = window.matchMedia('(orientation: portrait)');
  * (125 to 161 px at 360), past the 30 % of its height the view frames its
  * picture below, and over the z axis's name. There it stands above the
  * view, with the tools, as side by side. At 390 to 430 px it took 20 to
- * 30 %.
+ * 30 %. So does trace mode's with a learner's points, whose two entries
+ * (the points, their first difference) run to three lines each: 224 px
+ * over 364 at 240 (over y and z), 139 to 153 px at 272, 360 and 430 (over
+ * z); without them its four short entries take 13 to 22 %.
  */
 const NARROW = window.matchMedia('(max-width: 430px)');
 
 export interface PathViewElements {
   /** Where the second view goes (side by side). */
   secondViewport: HTMLDivElement;
-  /** The legend, over the main view; side by side above both views, and compared in a narrow window (NARROW) above the one. */
+  /** The legend, over the main view; side by side above both views, and in a narrow window (NARROW), compared or with a learner's points, above the one. */
   legend: HTMLElement;
   /** The view's tools (2D, Decision in 3D, Follow, Reset view), after the legend wherever it is. */
   tools: HTMLElement;
@@ -111,15 +114,19 @@ export class PathViews {
    * the legend tells of both views and stands above them: over the first
    * one it covered its path (in a 640 x 480 frame). So do the tools, which
    * act on both (the cameras are linked): stacked in the first view's
-   * corner, Reset view stood on its E handle. Compared in a narrow window
-   * (NARROW), both stand above the one view too: the legend alone above
-   * it left the stacked tools more of the shorter view than it frames its
-   * picture below, and Reset view stood on the E handle.
+   * corner, Reset view stood on its E handle. In a narrow window (NARROW),
+   * compared or with a learner's points, both stand above the one view
+   * too: the legend alone above it left the stacked tools more of the
+   * shorter view than it frames its picture below, and Reset view stood on
+   * the E handle. It goes there with the points typed, not with their
+   * entries shown, which a new rule hides until its check answers: the
+   * view would be framed twice more at each change.
    */
   #placeLegend(): void {
-    const { mode, layout } = this.#store.state;
+    const { mode, layout, learnerPoints } = this.#store.state;
     const { legend, tools, secondViewport } = this.#e;
-    const above = mode === 'compare' && (layout === 'side' || NARROW.matches);
+    const long = mode === 'compare' || (mode === 'trace' && learnerPoints.trim() !== '');
+    const above = (mode === 'compare' && layout === 'side') || (NARROW.matches && long);
     const place = above ? secondViewport.parentElement! : this.#legendView;
     if (legend.parentElement === place) return;
     place.prepend(legend);
@@ -185,6 +192,8 @@ export class PathViews {
     const cells = [difference?.expected, difference?.got].filter((p): p is number[] => p !== null && p !== undefined);
     this.#e.legendLearner.hidden = !points;
     this.#e.legendDifference.hidden = cells.length === 0;
+    // Points typed, or cleared, since the last paths were drawn.
+    this.#placeLegend();
     // The legend, its entries shown or hidden (and, from show, renamed), framed for before the view draws again.
     this.#main.overlaysChanged();
     // Other modes' second path and highlights are their own.
