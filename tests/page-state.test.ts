@@ -89,7 +89,7 @@ describe('page state in the URL query', () => {
     const states: AppState[] = [
       { ...first(), options: { from: [-3, 4, 2_000_000_000], to: [0, -7, 1], tie: 'hold', gcd: true }, pointIndex: 7, playing: true, speed: 16, camera, decision3d: true },
       { ...first(), algorithm: 'helix', options: { from: [10, 0, 0], to: [10, 0, 24], center: [0, 0, 0], dir: 'ccw', plane: 'xy', method: 'segments', tolerance: 0.25 } },
-      { ...first(), mode: 'compare', other: 'bresenham3d', layout: 'side', options: { from: [0, 0, 0], to: [10, 7, 6], tie: 'hold' }, projection: '2d', embed: true },
+      { ...first(), mode: 'compare', other: 'bresenham3d', layout: 'side', options: { from: [0, 0, 0], to: [10, 7, 6], tie: 'hold' }, projection: '2d', legendFolded: true, embed: true },
       { ...first(), mode: 'gcode', gcode: 'G1 X10 Y5 F600\nG2 X20 Y5 I5 J0\n', machine: { stepAngle: 1.8, microsteps: 8, pitch: 2, lineAlgorithm: 'bresenham3d', arcAlgorithm: 'arc-segments' }, pointIndex: 3, slowdown: 100 },
       { ...first(), mode: 'experiment', experiment: { count: 20, seed: 7, maxCoordinate: 50 } },
     ];
@@ -101,7 +101,7 @@ describe('page state in the URL query', () => {
       if (mode === 'compare') expect([back.other, back.layout]).toEqual([state.other, state.layout]);
       if (mode === 'gcode') expect([back.gcode, back.machine, back.slowdown]).toEqual([state.gcode, { ...state.machine }, state.slowdown]);
       if (mode === 'experiment') expect(back.experiment).toEqual(state.experiment);
-      if (mode !== 'experiment') expect([back.pointIndex, back.speed, back.projection, back.decision3d, back.camera]).toEqual([state.pointIndex, state.speed, state.projection, state.decision3d, state.camera]);
+      if (mode !== 'experiment') expect([back.pointIndex, back.speed, back.projection, back.decision3d, back.camera, back.legendFolded]).toEqual([state.pointIndex, state.speed, state.projection, state.decision3d, state.camera, state.legendFolded]);
       expect(back.embed).toBe(state.embed);
       expect(back.playing).toBe(false);
     }

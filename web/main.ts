@@ -168,6 +168,7 @@ function run(catalogue: Catalogue): void {
       legendLearner: byId('legend-learner', HTMLLIElement),
       legendPickedLine: byId('legend-picked-line', HTMLLIElement),
       legendDifference: byId('legend-difference', HTMLLIElement),
+      legendFold: byId('legend-fold', HTMLButtonElement),
     },
     store,
   );

@@ -185,6 +185,29 @@ function overlapOf(a: { x: number; y: number; width: number; height: number }, b
   return right > left && bottom > top ? [left, top, right - left, bottom - top].map(Math.round).join(' ') : '';
 }
 
+/** Where the legend, the view's axis names, its handles and its tools stand. */
+function viewBoxes(page: Page) {
+  return page.evaluate(() => {
+    const box = (e: Element) => {
+      const r = e.getBoundingClientRect();
+      return { x: r.x, y: r.y, width: r.width, height: r.height };
+    };
+    return {
+      legend: box(document.querySelector('#legend')!),
+      names: [...document.querySelectorAll('#viewport .axis-name')].map((e) => ({ name: e.textContent!, box: box(e) })),
+      handles: [...document.querySelectorAll('#viewport .handle')].map((e) => ({ name: `${e.textContent} handle`, box: box(e) })),
+      tools: [...document.querySelectorAll('#view-tools > *')].map((e) => ({ name: (e as HTMLElement).innerText.trim(), box: box(e) })),
+    };
+  });
+}
+
+/** The view's axis names, handles and tools under the legend or a tool: "z under the legend". */
+async function coveredInView(page: Page): Promise<string[]> {
+  const { legend, names, handles, tools } = await viewBoxes(page);
+  const covers = [{ name: 'the legend', box: legend }, ...tools];
+  return [...names, ...handles, ...tools].flatMap((under) => covers.filter((over) => over !== under && overlapOf(over.box, under.box) !== '').map((over) => `${under.name} under ${over.name}`));
+}
+
 describe('an embedded view in a small frame', () => {
   it('shows every playback control whole at 320x240, the buttons and the speed in one row under the scrubber', async () => {
     // The clock's longest choice (1000× slower) and the machine-time readout too.
@@ -610,28 +633,9 @@ describe('a narrow window', () => {
       for (const width of [240, 272, 320, 360]) {
         await page.setViewportSize({ width, height: 700 });
         const at = `${name}, ${width} px`;
-        const boxes = () =>
-          page.evaluate(() => {
-            const box = (e: Element) => {
-              const r = e.getBoundingClientRect();
-              return { x: r.x, y: r.y, width: r.width, height: r.height };
-            };
-            return {
-              legend: box(document.querySelector('#legend')!),
-              names: [...document.querySelectorAll('#viewport .axis-name')].map((e) => ({ name: e.textContent!, box: box(e) })),
-              handles: [...document.querySelectorAll('#viewport .handle')].map((e) => ({ name: `${e.textContent} handle`, box: box(e) })),
-              tools: [...document.querySelectorAll('#view-tools > *')].map((e) => ({ name: (e as HTMLElement).innerText.trim(), box: box(e) })),
-            };
-          });
         // Once the view has framed its path anew for the window's width (a resize is followed a frame later).
-        await expect
-          .poll(async () => {
-            const { legend, names, handles, tools } = await boxes();
-            const covers = [{ name: 'the legend', box: legend }, ...tools];
-            return [...names, ...handles, ...tools].flatMap((under) => covers.filter((over) => over !== under && overlapOf(over.box, under.box) !== '').map((over) => `${under.name} under ${over.name}`));
-          }, { message: `${at}: covered`, timeout: 10_000 })
-          .toEqual([]);
-        const { legend, names, handles } = await boxes();
+        await expect.poll(() => coveredInView(page), { message: `${at}: covered`, timeout: 10_000 }).toEqual([]);
+        const { legend, names, handles } = await viewBoxes(page);
         expect(names.map(({ name }) => name).sort(), at).toEqual(['x', 'y', 'z']);
         expect(handles.map(({ name }) => name).sort(), at).toEqual(['E handle', 'S handle']);
         expect([legend.x >= 0, legend.x + legend.width <= width + 0.5], `${at}: the legend inside the window`).toEqual([true, true]);
@@ -653,6 +657,45 @@ describe('a narrow window', () => {
       }
       expect(p.problems()).toEqual([]);
       await p.close();
+    }
+  });
+
+  it("folds the legend to one line in a short window, where whole it covered the axes' names, and keeps it folded for a new visit", async () => {
+    // Compared, whole, it covered z at 640 x 360 and y and z at 800 x 450 (a view of 148 px); trace mode's with a learner's points, z at both.
+    const points = encodeURIComponent('0,0,0\n1,1,1\n2,1,1\n3,2,2\n4,3,2\n5,3,3\n6,4,4\n7,5,4\n8,6,5\n9,6,5\n10,7,6\n');
+    for (const [width, height] of [
+      [640, 360],
+      [800, 450],
+    ]) {
+      for (const query of ['mode=compare&algorithm=liu-float&other=bresenham3d', `mode=trace&algorithm=regions&points=${points}`]) {
+        const mode = query.startsWith('mode=compare') ? 'compare' : 'trace';
+        const at = `${mode}, ${width} x ${height}`;
+        const p = await openPage(`?${query}&from=0,0,0&to=10,7,6&step=5`);
+        const { page } = p;
+        await page.setViewportSize({ width, height });
+        await page.getByTestId('step-counter').filter({ hasText: /^Step 5 of / }).waitFor();
+        const fold = page.getByTestId('legend-fold');
+        expect([await fold.innerText(), await fold.getAttribute('aria-expanded')], at).toEqual(['▴', 'true']);
+        await fold.click();
+        await expect.poll(() => coveredInView(page), { message: `${at}: covered`, timeout: 10_000 }).toEqual([]);
+        // One line: its button alone.
+        const { legend } = await viewBoxes(page);
+        expect(legend.height, `${at}: the folded legend's height`).toBeLessThan(40);
+        await screenshot(page, `legend-folded-${mode}-${width}x${height}`, '#views');
+        // Kept as the other view settings are: in the link, and for a visit without one (storage).
+        await page.waitForURL(/legend=folded/, { timeout: 10_000 });
+        const url = new URL(page.url());
+        await page.goto(url.origin + url.pathname);
+        await page.getByTestId('step-counter').filter({ hasText: /^Step 5 of / }).waitFor();
+        expect([await fold.innerText(), await fold.getAttribute('aria-expanded')], at).toEqual(['Legend ▾', 'false']);
+        await expect.poll(() => coveredInView(page), { message: `${at}: covered at the new visit`, timeout: 10_000 }).toEqual([]);
+        // And shown whole again.
+        await fold.click();
+        await expect.poll(() => page.locator('#legend li:not(.legend-fold)').first().isVisible()).toBe(true);
+        await page.waitForURL((url) => !url.searchParams.has('legend'), { timeout: 10_000 });
+        expect(p.problems()).toEqual([]);
+        await p.close();
+      }
     }
   });
 

@@ -655,6 +655,7 @@ export class Orchestrator {
       p.views.setCamera(state.camera);
     }
     if (state.decision3d !== previous.decision3d) p.views.setDecision3d(state.decision3d);
+    if (state.legendFolded !== previous.legendFolded) p.views.setLegendFolded(state.legendFolded);
     if (state.mode === 'gcode') p.gcodePanel.render();
     const pointsFields = ['learnerPoints', 'replacedPoints', 'replacedPointsBy', 'secondReplacedPoints'] as const;
     if (pointsFields.some((field) => state[field] !== previous[field])) p.checkPanel.render();

@@ -58,6 +58,8 @@ export interface PathViewElements {
   /** The legend's entry for a picked G-code line's steps, shown while some are outlined. */
   legendPickedLine: HTMLElement;
   legendDifference: HTMLElement;
+  /** Folds the legend to one line, itself, and shows it whole again (AppState.legendFolded). */
+  legendFold: HTMLButtonElement;
 }
 
 export class PathViews {
@@ -105,6 +107,8 @@ export class PathViews {
     view2d.addEventListener('change', () => store.update({ projection: view2d.checked ? '2d' : '3d', camera: null }));
     reset.addEventListener('click', () => store.update({ camera: null }));
     decision3d.addEventListener('change', () => store.update({ decision3d: decision3d.checked }));
+    elements.legendFold.addEventListener('click', () => store.update({ legendFolded: !store.state.legendFolded }));
+    this.setLegendFolded(store.state.legendFolded);
     PORTRAIT.addEventListener('change', () => this.#nameSecond(store.state.mode === 'compare' && store.state.layout === 'side'));
     NARROW.addEventListener('change', () => this.#placeLegend());
   }
@@ -202,6 +206,23 @@ export class PathViews {
     const bounds = learner?.bounds;
     this.#main.setSecond(points && bounds ? { ...heldPoints(points, learner.dims), bounds } : undefined, PALETTE.learner, { whole: learner?.centers ?? null });
     this.#main.setHighlights(cells.length > 0 ? [{ cells: Int32Array.from(cells.flat()), dims: learner!.dims, colour: PALETTE.onlyFirst }] : []);
+  }
+
+  /**
+   * Folds the legend to its one line, its button, or shows it whole. In a
+   * short window its entries covered the axes' names: compared, z at 640 x
+   * 360 and y and z at 800 x 450 (a view of 148 px), where above the view
+   * (as in a narrow window) they would have left it 80 to 150 px. The view
+   * frames its picture anew below it (SceneView.overlaysChanged, on its
+   * resize).
+   */
+  setLegendFolded(folded: boolean): void {
+    const { legend, legendFold } = this.#e;
+    legend.classList.toggle('folded', folded);
+    // Named "Legend" either way (aria-label), its state said by aria-expanded.
+    legendFold.textContent = folded ? 'Legend ▾' : '▴';
+    legendFold.title = folded ? 'Show the legend whole' : 'Fold the legend to one line';
+    legendFold.setAttribute('aria-expanded', String(!folded));
   }
 
   /** The 2D toggle as the main view is: on in 2D, off where the path is not planar; and Decision in 3D as it can be drawn there. */

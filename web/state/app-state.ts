@@ -96,6 +96,8 @@ export interface AppState {
   decision3d: boolean;
   /** The camera follows the current cell at a readable zoom (scene/follow.ts), instead of staying where it is. */
   follow: boolean;
+  /** The view's legend folded to one line, its button (a short view's legend covered the axes' names). */
+  legendFolded: boolean;
   /** Point index shown: the position after this many steps (0..=steps). */
   pointIndex: number;
   playing: boolean;
@@ -486,6 +488,7 @@ export function defaultState(info: AlgorithmInfo, catalogue: readonly AlgorithmI
     camera: null,
     decision3d: false,
     follow: false,
+    legendFolded: false,
     pointIndex: 0,
     playing: false,
     speed: DEFAULT_SPEED,

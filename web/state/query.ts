@@ -5,7 +5,7 @@
  *   ?mode=compare&algorithm=regions&other=greedy&layout=side&from=0,0,0&to=10,7,6
  *   ?mode=gcode&gcode=G1%20X10&stepsPerMm=80&lineAlgorithm=regions&arcAlgorithm=circle&slowdown=10
  *   ?mode=experiment&algorithm=regions&count=100&seed=1&maxCoordinate=100
- *   ...&decision3d=1&camera=12.5,-30,20,5,3.5,3,1&follow=1&embed=1&explain=0
+ *   ...&decision3d=1&camera=12.5,-30,20,5,3.5,3,1&follow=1&legend=folded&embed=1&explain=0
  *
  * Option keys are the API's option names, so a link reads like the CLI's
  * flags (--from 0,0,0); a mode writes only its own keys. `step` is the point
@@ -15,6 +15,7 @@
  * `slowdown` (G-code mode) plays in machine time that many times slower
  * than real time, absent when playback counts steps per second.
  * `follow=1` keeps the camera on the current cell (written only when on);
+ * `legend=folded` shows the view's legend as its one line (only when folded);
  * `explain=0` leaves the step's reason out of an embedded view.
  * `points` (trace mode) is the learner's points of Check points, as pasted.
  * `playing` is left out on purpose: a page opened from a link starts
@@ -178,6 +179,7 @@ export function stateToQuery(state: AppState, { gcodeLimit }: QueryOptions): str
       pairs.push(['camera', [...c.position, ...c.target, c.zoom].map(formatOption).join(',')]);
     }
     if (state.follow) pairs.push(['follow', '1']);
+    if (state.legendFolded) pairs.push(['legend', 'folded']);
   }
   if (state.embed) pairs.push(['embed', '1']);
   if (!state.explain) pairs.push(['explain', '0']);
@@ -218,7 +220,7 @@ function fittingNotes(options: Readonly<Record<string, OptionValue>>, axes: numb
 }
 
 /** Keys that say a query describes a state (any option name counts too). */
-export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowdown', 'view', 'decision3d', 'camera', 'follow', 'gcode', 'points', 'embed', 'explain'];
+export const STATE_KEYS = ['mode', 'algorithm', 'other', 'step', 'speed', 'slowdown', 'view', 'decision3d', 'camera', 'follow', 'legend', 'gcode', 'points', 'embed', 'explain'];
 
 /**
  * The state a query describes, or undefined when it has none of the state's
@@ -313,6 +315,7 @@ export function stateFromQuery(query: string, catalogue: Catalogue, notes?: Link
   taken('view', state.projection === params.get('view'));
   state.decision3d = params.get('decision3d') === '1';
   state.follow = params.get('follow') === '1';
+  state.legendFolded = params.get('legend') === 'folded';
   state.camera = parseCamera(params.get('camera'));
   taken('camera', state.camera !== null);
   state.embed = params.get('embed') === '1';
