@@ -281,8 +281,11 @@ describe('a run cancelled, then another mode and back', () => {
     await p.close();
   });
 
-  it("stays cancelled in trace mode until Trace again", { timeout: 180_000 }, async () => {
-    const p = await openPage('?algorithm=helix&from=1000,0,0&to=1000,0,300&center=0,0,0&plane=xy&turns=264');
+  it.each([
+    ['trace', '?algorithm=helix&from=1000,0,0&to=1000,0,300&center=0,0,0&plane=xy&turns=264', (page: Page) => page.getByTestId('step-counter').filter({ hasText: /of 1,498,840$/ })],
+    ['compare', '?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=1400000,700,600', (page: Page) => page.getByTestId('trace-status').filter({ hasText: /^regions: .* greedy: / })],
+  ] as const)('stays cancelled in %s mode until Trace again', { timeout: 180_000 }, async (mode, link, traced) => {
+    const p = await openPage(link);
     const { page } = p;
     const status = page.getByTestId('trace-status');
     await onceShown(page, 'trace-run', { click: 'trace-cancel' }, 'Measuring');
@@ -292,30 +295,12 @@ describe('a run cancelled, then another mode and back', () => {
     // Not offered where it would run the program.
     expect(await page.getByTestId('alert-message').isHidden()).toBe(true);
     await recordStatus(page);
-    await page.getByTestId('mode-trace').click();
+    await page.getByTestId(`mode-${mode}`).click();
     await staysCancelled(page);
     expect(await page.getByTestId('alert-message').innerText()).toBe('Cancelled: the inputs are not traced.');
     expect(await page.getByTestId('step-counter').innerText()).not.toMatch(/of [1-9]/);
     await page.getByRole('button', { name: 'Trace again' }).click();
-    await page.getByTestId('step-counter').filter({ hasText: /of 1,498,840$/ }).waitFor({ timeout: 60_000 });
-    expect(p.problems()).toEqual([]);
-    await p.close();
-  });
-
-  it('stays cancelled in compare mode until Trace again', { timeout: 180_000 }, async () => {
-    const p = await openPage('?mode=compare&algorithm=regions&other=greedy&from=0,0,0&to=1400000,700,600');
-    const { page } = p;
-    const status = page.getByTestId('trace-status');
-    await onceShown(page, 'trace-run', { click: 'trace-cancel' }, 'Measuring');
-    await status.filter({ hasText: /^Cancelled\.$/ }).waitFor({ timeout: 10_000 });
-    await page.getByTestId('mode-gcode').click();
-    await status.filter({ hasText: 'moves' }).waitFor({ timeout: 30_000 });
-    await recordStatus(page);
-    await page.getByTestId('mode-compare').click();
-    await staysCancelled(page);
-    expect(await page.getByTestId('alert-message').innerText()).toBe('Cancelled: the inputs are not traced.');
-    await page.getByRole('button', { name: 'Trace again' }).click();
-    await status.filter({ hasText: /^regions: .* greedy: / }).waitFor({ timeout: 60_000 });
+    await traced(page).waitFor({ timeout: 60_000 });
     expect(p.problems()).toEqual([]);
     await p.close();
   });
