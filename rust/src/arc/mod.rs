@@ -203,7 +203,8 @@ impl ArcSpec {
                         "the circle of radius {:.3} around {name} = {c} reaches past ±2^30 ({COORD_LIMIT}) on {name}; every point of the circle must be within it",
                         (start_sq as f64).sqrt()
                     ),
-                ));
+                )
+                .on_axis(axis));
             }
         }
         if !radii_within_tolerance(start_sq, end_sq) {
@@ -435,6 +436,25 @@ mod tests {
             e(r#"{"algorithm":"circle","from":[1073741816,0,0],"to":[1073741816,0,0],"center":[1073741821,0,0]}"#)
                 .starts_with("center: the circle of radius 5.000 around x = 1073741821 reaches past ±2^30")
         );
+        // The axis it reaches past on is the error's too, as a point's is
+        // (the page marks that coordinate): y here, then z in the zx plane.
+        for (request, axis) in [
+            (
+                r#"{"algorithm":"circle","from":[0,1073741816,0],"to":[0,1073741816,0],"center":[0,1073741821,0]}"#,
+                1,
+            ),
+            (
+                r#"{"algorithm":"circle","from":[0,0,-1073741816],"to":[0,0,-1073741816],"center":[0,0,-1073741821],"plane":"zx"}"#,
+                2,
+            ),
+        ] {
+            let error = spec(request).err().expect(request);
+            assert_eq!(
+                (error.field_name(), error.axis),
+                (Some("center"), Some(axis)),
+                "{request}"
+            );
+        }
         // A circle that touches the limit is within it: r = 4 about
         // 2^30 - 4, and r = 2^30 about the origin (the largest there is).
         for (from, center) in [("1073741824,0", "1073741820,0"), ("0,-1073741824", "0,0")] {
