@@ -469,7 +469,7 @@ describe('voxpath gcode', () => {
     [['gcode'], /^voxpath: gcode needs a FILE/],
     [['gcode', '/no/such/file.gcode', '--steps-per-mm', '80'], /^voxpath: cannot read \/no\/such\/file.gcode/],
     [['gcode', file], /^voxpath: --steps-per-mm: missing/],
-    [['gcode', file, '--steps-per-mm', '80,80'], /^voxpath: --steps-per-mm: expected one number or three/],
+    [['gcode', file, '--steps-per-mm', '80,80'], /^voxpath: --steps-per-mm: expected one number or 3 \(x, y, z\), got 2$/m],
     [['gcode', file, '--steps-per-mm', '80', '--arc-algorithm', 'spline'], /^voxpath: --arc-algorithm: expected one of circle, arc-segments/],
     [['gcode', file, '--steps-per-mm', '80', '--speed', '3'], /^voxpath: unknown flag --speed for gcode/],
     // Unknown wherever it stands: given last, or before another flag, it "needed a value".

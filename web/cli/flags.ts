@@ -181,8 +181,9 @@ function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
     case 'perAxis': {
       const whole = spec.kind.notWhole !== undefined;
       const values = text.split(',').map((part) => numberOf(flag, part, whole));
-      if (values.length !== 1 && values.length !== 3) {
-        throw new UsageError(`${quoted(flag)}: expected one number or three (x,y,z), got ${values.length}`);
+      // The count and its wording are the core's (the catalogue's), as the page's form says them.
+      if (values.length !== 1 && values.length !== spec.kind.axes) {
+        throw new UsageError(`${quoted(flag)}: ${spec.kind.wrongCount}, got ${values.length}`);
       }
       return values.length === 1 ? values[0] : values;
     }
