@@ -699,6 +699,41 @@ describe('a narrow window', () => {
     }
   });
 
+  it('gives the view a usable height in a short landscape window (a phone turned sideways), one column, the page scrolling', async () => {
+    // Beside the panels the view shared the window's height with the header, the playback and (compared) the
+    // two reasons: compared, it stood 110 px tall at 915 x 412, the tools over z and the E handle, 30 px at
+    // 736 x 414 and 88 at 844 x 390, under the legend. The one-column layout gives it 260 px.
+    for (const [width, height] of [
+      [915, 412],
+      [736, 414],
+      [844, 390],
+    ] as const) {
+      for (const mode of ['trace', 'compare']) {
+        const at = `${mode}, ${width} x ${height}`;
+        const p = await openPage(`?mode=${mode}&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6&step=5`);
+        const { page } = p;
+        await page.setViewportSize({ width, height });
+        await page.getByTestId('step-counter').filter({ hasText: /^Step 5 of / }).waitFor();
+        const view = (await page.locator('#viewport').boundingBox())!;
+        expect(view.height, `${at}: the view's height`).toBeGreaterThanOrEqual(200);
+        expect([view.x >= 0, view.y >= 0, view.x + view.width <= width + 0.5, view.y + view.height <= height + 0.5], `${at}: the view on the first screen`).toEqual([true, true, true, true]);
+        // Once the view has framed its path for the window (a resize is followed a frame later).
+        await expect.poll(() => coveredInView(page), { message: `${at}: covered`, timeout: 10_000 }).toEqual([]);
+        const { names, handles } = await viewBoxes(page);
+        expect(names.map(({ name }) => name).sort(), at).toEqual(['x', 'y', 'z']);
+        expect(handles.map(({ name }) => name).sort(), at).toEqual(['E handle', 'S handle']);
+        // The inspector is below, not beside the view: the step's reason is told under the playback, in trace mode too.
+        const reason = (await page.getByTestId('step-reason').boundingBox())!;
+        expect([reason.width, reason.height].map((px) => px > 20), `${at}: the step's reason shown`).toEqual([true, true]);
+        const { documentPx, windowPx } = await widthAndOverflow(page);
+        expect(documentPx, `${at}: the document's width`).toBeLessThanOrEqual(windowPx);
+        await screenshot(page, `short-${mode}-${width}x${height}`);
+        expect(p.problems()).toEqual([]);
+        await p.close();
+      }
+    }
+  });
+
   it("keeps a long path's step counter inside a window of 240 px, under the scrubber at every step", async () => {
     // 'Step 999,999 of 1,000,000', held on one line beside the scrubber, ran 17 px past the window.
     const long = await openPage('?algorithm=regions&from=0,0,0&to=1000000,3,2&step=999999');
