@@ -181,9 +181,38 @@ describe('voxpath reading numbers (issue 15 item 4)', () => {
     const r = voxpath(['trace', '--algorithm', 'regions', '--from', '-0,+0,0.', '--to', ' .1e2, 7.0 ,6e0', '--max-steps', '1e3']);
     expect(r.code).toBe(0);
     expect(JSON.parse(r.stdout).points.at(-1)).toEqual([10, 7, 6]);
-    // A whole number written with an exponent is whole; its range is the core's to judge.
+    // A whole number written with an exponent is whole; out of its range, it is told so as typed.
     const big = voxpath(['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '10,7,6', '--max-steps', '1e20']);
-    expect(big.stderr.split('\n')[0]).toBe('voxpath: --max-steps: must be 0 to 1000000000, got 100000000000000000000');
+    expect(big.stderr.split('\n')[0]).toBe('voxpath: --max-steps: must be 0 to 1000000000, got 1e20');
+  });
+
+  // Each was told the double the core was handed (9.007199254740992e15 for
+  // 9007199254740993, 100000000000000000000 for 1e20), not what was typed.
+  it.each([
+    [['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '9007199254740993,0,0'], '--to: x must be -1073741824 to 1073741824, got 9007199254740993'],
+    [['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '0, 2e9 ,0'], '--to: y must be -1073741824 to 1073741824, got 2e9'],
+    [['trace', '--algorithm', 'regions', '--from', '0,0,0', '--to', '0,2.50,0'], '--to: y must be an integer number of grid units, got 2.50'],
+    [['trace', '--algorithm', 'circle', '--from', '1,0', '--to', '1,0', '--center', '0,0', '--turns', '9007199254740993'], '--turns: must be 0 to 1000000, got 9007199254740993'],
+    [['experiment', 'random-lines', '--seed', '18446744073709551615'], '--seed: must be 0 to 8999999999999999, got 18446744073709551615'],
+    [['trace', '--algorithm', 'arc-segments', '--from', '1,0', '--to', '1,0', '--center', '0,0', '--tolerance', '-0.0'], '--tolerance: must be more than 0 grid units, got -0.0'],
+    [['gcode', '-', '--steps-per-mm', '1,9007199254740993,1'], '--steps-per-mm: y must be 0.001 to 1000000 steps per mm, got 9007199254740993'],
+    [['gcode', '-', '--steps-per-mm', '1e7'], '--steps-per-mm: must be 0.001 to 1000000 steps per mm, got 1e7'],
+  ])('refuses %j out of its declared range, quoting the number as typed', (args, message) => {
+    const r = voxpath(args, 'G1 X1 F100\n');
+    expect([r.code, r.stdout, r.stderr.split('\n')[0]]).toEqual([2, '', `voxpath: ${message}`]);
+  });
+
+  // Where the range lets it through (dims has none; microsteps none above),
+  // the core was handed 9007199254740992 and judged that, or took it.
+  it.each([
+    [['experiment', 'random-lines', '--dims', '9007199254740993'], '--dims'],
+    [['experiment', 'random-lines', '--dims', '-1e16'], '--dims'],
+    [['gcode', '-', '--step-angle', '1.8', '--pitch', '2', '--microsteps', '9007199254740993'], '--microsteps'],
+  ])('refuses %j, a whole number past 2^53 - 1, which a double may not hold', (args, flag) => {
+    const r = voxpath(args, 'G1 X1 F100\n');
+    const typed = args.at(-1)!;
+    const read = Number(typed);
+    expect([r.code, r.stdout, r.stderr.split('\n')[0]]).toEqual([2, '', `voxpath: ${flag}: '${typed}' is past ±9007199254740991 (2^53 - 1), beyond which a double does not hold every whole number (it reads as ${read})`]);
   });
 });
 

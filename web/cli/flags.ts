@@ -6,7 +6,9 @@
  * its help line, without code in the CLI.
  */
 import { parseArgs } from 'node:util';
+import { AXIS_NAMES } from '../core/axes.js';
 import { quoted, readDecimal, writesWholeNumber } from '../core/guard.js';
+import { axesRefusal, perAxisRefusal, rangeRefusal } from '../core/ranges.js';
 import type { Catalogue, OptionSpec } from '../core/index.js';
 
 /** A command-line mistake: reported in one line plus usage, exit code 2. */
@@ -155,36 +157,73 @@ export function parseCommandLine(args: readonly string[], switches: readonly str
   return { flags, operands };
 }
 
-/**
- * A flag's number; for an option of whole numbers, also refused when its
- * text is not whole but rounds to a whole number, which the core, handed
- * the number, cannot see ('--from 1e-400,0,0' traced from the origin).
- */
-function numberOf(flag: string, part: string, whole = false): number {
+/** A flag's number: a finite decimal number, else refused naming the flag. */
+function numberOf(flag: string, part: string): number {
   const v = readDecimal(part);
   if (v === undefined) throw new UsageError(`${quoted(flag)}: '${quoted(part)}' is not a finite decimal number (such as 12, -3.5 or 1e6)`);
-  if (whole && Number.isInteger(v) && !writesWholeNumber(part)) {
-    throw new UsageError(`${quoted(flag)}: '${quoted(part.trim())}' is not a whole number (as a double it rounds to ${v})`);
-  }
   return v;
 }
 
-/** A flag's text as the option's value, checked against its declared kind. */
+/** A number as the user wrote it, for a message: its text, blanks around it left out. */
+function written(part: string): string {
+  return quoted(part.trim());
+}
+
+/** Refuses `refusal` (a value's range, from the catalogue, in the core's words), naming the flag; nothing when undefined. */
+function refuse(flag: string, refusal: string | undefined): void {
+  if (refusal !== undefined) throw new UsageError(`${quoted(flag)}: ${refusal}`);
+}
+
+/**
+ * Refuses, naming the flag, a value of a whole-number option whose text
+ * the double `v` does not say, which the core, handed the double, cannot
+ * see: text that is not whole but rounds to a whole number ('--from
+ * 1e-400,0,0' traced from the origin), or a whole number past 2^53 - 1,
+ * where a double does not hold every whole number (9007199254740993 reads
+ * as 9007199254740992). Checked after the range, as the core checks, so
+ * that a value past 2^53 that the range refuses is told its range.
+ */
+function refuseInexactWhole(flag: string, part: string, v: number): void {
+  if (!Number.isInteger(v)) return;
+  if (!writesWholeNumber(part)) throw new UsageError(`${quoted(flag)}: '${written(part)}' is not a whole number (as a double it rounds to ${v})`);
+  if (!Number.isSafeInteger(v)) {
+    throw new UsageError(`${quoted(flag)}: '${written(part)}' is past ±${Number.MAX_SAFE_INTEGER} (2^53 - 1), beyond which a double does not hold every whole number (it reads as ${v})`);
+  }
+}
+
+/**
+ * A flag's text as the option's value, checked against its declared kind
+ * and range: a value out of range is refused here in the core's words
+ * (the catalogue's, as the page's form says them), quoting what was typed,
+ * where the core would quote the double it was handed.
+ */
 function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
   switch (spec.kind.type) {
-    case 'point':
-      return text.split(',').map((part) => numberOf(flag, part, true));
-    case 'number':
-      return numberOf(flag, text);
-    case 'integer':
-      return numberOf(flag, text, true);
+    case 'point': {
+      const parts = text.split(',');
+      const values = parts.map((part) => numberOf(flag, part));
+      // The core tells a count of coordinates it does not take before any coordinate.
+      if (values.length <= AXIS_NAMES.length) refuse(flag, axesRefusal(spec.kind, values, parts.map(written)));
+      parts.forEach((part, i) => refuseInexactWhole(flag, part, values[i]!));
+      return values;
+    }
+    case 'number': {
+      const value = numberOf(flag, text);
+      refuse(flag, rangeRefusal(spec.kind, value, written(text)));
+      return value;
+    }
+    case 'integer': {
+      const value = numberOf(flag, text);
+      refuse(flag, rangeRefusal(spec.kind, value, written(text)));
+      refuseInexactWhole(flag, text, value);
+      return value;
+    }
     case 'perAxis': {
-      const whole = spec.kind.notWhole !== undefined;
-      const values = text.split(',').map((part) => numberOf(flag, part, whole));
+      const parts = text.split(',');
+      const values = parts.map((part) => numberOf(flag, part));
       // The count and its wording are the core's (the catalogue's), as the page's form says them.
-      if (values.length !== 1 && values.length !== spec.kind.axes) {
-        throw new UsageError(`${quoted(flag)}: ${spec.kind.wrongCount}, got ${values.length}`);
-      }
+      refuse(flag, perAxisRefusal(spec.kind, values.length === 1 ? values[0]! : values, parts.map(written)));
+      if (spec.kind.notWhole !== undefined) parts.forEach((part, i) => refuseInexactWhole(flag, part, values[i]!));
       return values.length === 1 ? values[0] : values;
     }
     case 'choice':

@@ -15,7 +15,8 @@
  * went into the link, then the core refused it).
  */
 import { readDecimal } from '../core/guard.js';
-import type { IntegerRangeInfo, NumberRangeInfo, OptionSpec, PerAxisInfo } from '../core/types.js';
+import { perAxisRefusal, rangeRefusal } from '../core/ranges.js';
+import type { IntegerRangeInfo, OptionSpec, PerAxisInfo } from '../core/types.js';
 import { AXIS_NAMES } from '../format.js';
 import type { OptionValue } from '../state/app-state.js';
 import { dropDraft, keepDraft, restoredDraft } from '../state/drafts.js';
@@ -60,39 +61,6 @@ export function readPerAxis(text: string): number | number[] | undefined | null 
 export const INPUTS_VALIDITY = 'inputs-validity';
 export interface InputsValidity {
   invalid: boolean;
-}
-
-/**
- * Why `value` is refused by its declaration (a whole number's range, or a
- * real number's): outside the range, or not finite, in the words the core
- * says it with (`mustBe`), checked first as the core does (1e20 is told its
- * range); else not whole where the range takes whole values only
- * (`notWhole`). Undefined when it is neither.
- */
-function refusedBy(range: IntegerRangeInfo | NumberRangeInfo, value: number): string | undefined {
-  const { min, max, mustBe, notWhole } = range;
-  const exclusive = 'minExclusive' in range && range.minExclusive;
-  const below = min !== undefined && (value < min || (exclusive && value === min));
-  const above = max !== undefined && value > max;
-  if (below || above || !Number.isFinite(value)) return `${mustBe ?? 'must be a finite number'}, got ${value}`;
-  return notWhole === undefined || Number.isInteger(value) ? undefined : `${notWhole}, got ${value}`;
-}
-
-/**
- * Why a per-axis setting as read (one number, or one per axis) is refused
- * by its declaration, in the order the core checks: a list of another
- * length than its axes (`10,0` was told y's range, then, once y was mended,
- * the count), then one number as typed, one of several naming its axis (as
- * the core says them). Undefined when every value is taken.
- */
-function refusedPerAxis(range: PerAxisInfo, read: number | number[]): string | undefined {
-  if (!Array.isArray(read)) return refusedBy(range, read);
-  if (read.length !== range.axes) return `${range.wrongCount}, got ${read.length}`;
-  for (const [a, value] of read.entries()) {
-    const refused = refusedBy(range, value);
-    if (refused !== undefined) return `${AXIS_NAMES[a] ?? 'a value'} ${refused}`;
-  }
-  return undefined;
 }
 
 export class OptionsForm {
@@ -211,7 +179,7 @@ export class OptionsForm {
           // Each field checked as it is typed, against the range its spec
           // declares (the core checks the same declaration): every field out
           // of range says so at once, where the core names only the first.
-          const refused = input.validity.badInput ? 'not a number' : given === undefined ? undefined : refusedBy(kind, given);
+          const refused = input.validity.badInput ? 'not a number' : given === undefined ? undefined : rangeRefusal(kind, given);
           this.#setLocalError(spec.name, field, refused, !input.validity.badInput);
           if (refused === undefined) this.#onChange(spec.name, given);
         });
@@ -224,7 +192,7 @@ export class OptionsForm {
         input.placeholder = spec.default ?? '';
         input.addEventListener('input', () => {
           const read = readPerAxis(input.value);
-          const refused = read === null ? 'give one number, or x,y,z' : read === undefined ? undefined : refusedPerAxis(range, read);
+          const refused = read === null ? 'give one number, or x,y,z' : read === undefined ? undefined : perAxisRefusal(range, read);
           this.#setLocalError(spec.name, field, refused);
           if (refused === undefined) this.#onChange(spec.name, read ?? undefined);
         });
@@ -244,7 +212,7 @@ export class OptionsForm {
     const inputs = field.controls as HTMLInputElement[];
     const refusals = inputs.map((input, a) => {
       if (input.value.trim() === '' || input.validity.badInput) return `${AXIS_NAMES[a]} needs a number`;
-      const refused = refusedBy(range, input.valueAsNumber);
+      const refused = rangeRefusal(range, input.valueAsNumber);
       return refused === undefined ? undefined : `${AXIS_NAMES[a]} ${refused}`;
     });
     const refused = refusals.find((r) => r !== undefined);
