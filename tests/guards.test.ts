@@ -6,7 +6,7 @@
 // wasm "memory access out of bounds" or "null pointer passed to rust", or a
 // silent misreading (stepTimes() returned nothing, dims '3' was read as 3).
 import { runInNewContext } from 'node:vm';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import {
   checkPoints,
   checkToTable,
@@ -29,7 +29,7 @@ import {
   VoxpathError,
 } from '../web/core/index.js';
 import type { Trace, TraceOptions } from '../web/core/index.js';
-import { forOverwrite } from '../web/core/trace.js';
+import { forOverwrite, readInRanges } from '../web/core/trace.js';
 import { rejection, voxpath } from './helpers.js';
 
 const LINE = { algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] } satisfies TraceOptions;
@@ -410,13 +410,33 @@ describe('the arrays a trace hands out, past what one Node Buffer holds', () => 
   // touched, here.)
   it('makes an array longer than 4 GiB as a plain typed array', () => {
     const length = 2 ** 30 + 1;
-    const points = forOverwrite('to', Int32Array, length);
+    const points = forOverwrite(Int32Array, length, readInRanges);
     expect([points.constructor, points.length, points.byteLength]).toEqual([Int32Array, length, 4 * length]);
   });
 
   it('names the argument when no array that long can be made here', () => {
-    const e = thrown(() => forOverwrite('to', Float64Array, 2 ** 32 + 1));
+    const e = thrown(() => forOverwrite(Float64Array, 2 ** 32 + 1, readInRanges));
     expect(e.field).toBe('to');
     expect(e.detail).toMatch(/^4294967297 values \(34359738376 bytes\) are more than one Float64Array can hold here \(.+\): read them a range at a time$/);
+  });
+
+  it("says an ideal line too long to make as the line's, naming no argument: idealLine() takes none", async () => {
+    const made = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] });
+    // A runtime that cannot make the line's array (its 2 x 3 x 2 values
+    // stand for the 700,000,000-vertex line that could not be made here).
+    const Refusing = class Float32Array extends globalThis.Float32Array {
+      constructor(length: number) {
+        if (typeof length === 'number') throw new RangeError('Array buffer allocation failed');
+        super(length);
+      }
+    };
+    vi.stubGlobal('Float32Array', Refusing);
+    try {
+      const e = thrown(() => made.idealLine());
+      expect([e.field, e.message]).toEqual([undefined, 'the ideal line of 2 vertices (x, y, z and what rounding left of each): 12 values (48 bytes) are more than one Float32Array can hold here (Array buffer allocation failed)']);
+    } finally {
+      vi.unstubAllGlobals();
+      made.free();
+    }
   });
 });

@@ -8,7 +8,7 @@
  * (whose memory, once grown, is never given back).
  */
 import type { Comparison, TraceDifference } from './compare.js';
-import { callCore } from './errors.js';
+import { callCore, VoxpathError } from './errors.js';
 import { argumentError, describeValue, indexRange, wholeNumber } from './guard.js';
 import type { StepClocks, TraceHandle } from './pkg/voxpath.js';
 import { encodeRequest } from './request.js';
@@ -59,10 +59,12 @@ const SMALLEST_UNZEROED_BYTES = 1 << 20;
  * browser, for small arrays, and past Node's largest Buffer (4 GiB, which
  * a typed array may pass: the points of a 1,000,000,000-step line, 12 GB,
  * were a RangeError on the Buffer's "size"), a plain typed array. One
- * longer than the runtime makes (or has memory for) is a VoxpathError
- * naming `field`, the argument that asked for it.
+ * longer than the runtime makes (or has memory for) is the VoxpathError
+ * `refused` makes of what was too long ("N values (B bytes) are more than
+ * one Float64Array can hold here (...)"): it names what the array was for,
+ * the argument that asked for it (readInRanges) or the whole it holds.
  */
-export function forOverwrite<T extends Int32Array | Float32Array | Float64Array>(field: string, Kind: TypedArrayOf<T>, length: number): T {
+export function forOverwrite<T extends Int32Array | Float32Array | Float64Array>(Kind: TypedArrayOf<T>, length: number, refused: (detail: string) => VoxpathError): T {
   const bytes = length * Kind.BYTES_PER_ELEMENT;
   const nodeBuffer = (globalThis as { Buffer?: { allocUnsafeSlow(size: number): Uint8Array } }).Buffer;
   if (nodeBuffer !== undefined && bytes >= SMALLEST_UNZEROED_BYTES) {
@@ -77,8 +79,13 @@ export function forOverwrite<T extends Int32Array | Float32Array | Float64Array>
     return new Kind(length);
   } catch (error) {
     if (!(error instanceof RangeError)) throw error;
-    throw argumentError(field, `${length} values (${bytes} bytes) are more than one ${Kind.name} can hold here (${error.message}): read them a range at a time`);
+    throw refused(`${length} values (${bytes} bytes) are more than one ${Kind.name} can hold here (${error.message})`);
   }
+}
+
+/** forOverwrite's refusal of a range of a trace too long to read at once: `to` names its end. */
+export function readInRanges(detail: string): VoxpathError {
+  return argumentError('to', `${detail}: read them a range at a time`);
 }
 
 /**
@@ -224,7 +231,7 @@ export class Trace {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
     wholeNumber('every', every, 1, 2 ** 32 - 1, 'every (points apart)');
-    const out = forOverwrite('to', Int32Array, Math.ceil((to - from) / every) * this.dims);
+    const out = forOverwrite(Int32Array, Math.ceil((to - from) / every) * this.dims, readInRanges);
     callCore(() => core.points(from, to, every, out));
     return out;
   }
@@ -286,7 +293,7 @@ export class Trace {
   deviationInRange(from: number, to: number): Float64Array {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
-    const out = forOverwrite('to', Float64Array, to - from);
+    const out = forOverwrite(Float64Array, to - from, readInRanges);
     callCore(() => core.deviation(from, to, out));
     return out;
   }
@@ -301,7 +308,7 @@ export class Trace {
   axisErrorInRange(from: number, to: number): Float64Array {
     const core = this.#core;
     [from, to] = indexRange(from, to, this.steps + 1, 'point index');
-    const out = forOverwrite('to', Float64Array, (to - from) * this.dims);
+    const out = forOverwrite(Float64Array, (to - from) * this.dims, readInRanges);
     callCore(() => core.axisError(from, to, out));
     return out;
   }
@@ -477,7 +484,8 @@ export class Trace {
       // The core's layout (IdealLineHandle.copyInto): x, y, z of every
       // vertex, then as many rests.
       const values = 3 * line.vertices;
-      const flat = forOverwrite('idealLine', Float32Array, 2 * values);
+      // Not an argument's fault, and there is no range of it to read instead: said as the line's.
+      const flat = forOverwrite(Float32Array, 2 * values, (detail) => new VoxpathError(`the ideal line of ${line.vertices} vertices (x, y, z and what rounding left of each): ${detail}`));
       callCore(() => line.copyInto(flat));
       const [minX, minY, minZ, maxX, maxY, maxZ] = line.bounds();
       return { xyz: flat.subarray(0, values), rest: flat.subarray(values), min: [minX!, minY!, minZ!], max: [maxX!, maxY!, maxZ!], origin };
