@@ -180,7 +180,7 @@ function wasmPackage() {
 function library() {
   const lib = join(ROOT, 'lib');
   const key = () => hashInputs([
-    fileURLToPath(import.meta.url), // declareLoaderWithoutDom
+    fileURLToPath(import.meta.url), // declareLoaderWithoutDom, declareDisposable
     join(ROOT, 'tsconfig.lib.json'),
     ...listFiles(join(ROOT, 'web', 'core')), // includes web/core/pkg
     ...listFiles(join(ROOT, 'web', 'cli')),
@@ -198,6 +198,7 @@ function library() {
     filter: (source) => !['.gitignore', 'package.json'].includes(basename(source)),
   });
   declareLoaderWithoutDom(join(lib, 'core', 'pkg', 'voxpath.d.ts'));
+  declareDisposable(join(lib, 'core', 'pkg', 'voxpath.d.ts'));
   writeStamp('lib', key());
 }
 
@@ -220,6 +221,23 @@ function declareLoaderWithoutDom(file) {
     .map((line) => (/^\s*(\/\*|\*|\/\/)/.test(line) ? line : line.replace(/\b(?:RequestInfo|URL|Response|BufferSource)\b|\bWebAssembly\.\w+/g, 'unknown').replace(/unknown(?: \| unknown)+/g, 'unknown')))
     .join('\n');
   writeFileSync(file, text.slice(0, loader) + retyped);
+}
+
+/**
+ * wasm-bindgen declares each class it exports disposable
+ * (`[Symbol.dispose](): void`), a name of TypeScript's esnext.disposable
+ * library, which neither es2022 nor the DOM library holds: a project that
+ * checks its dependencies' declarations (no skipLibCheck) and does not load
+ * @types/node (which loads that library) failed on each of them ("Property
+ * 'dispose' does not exist on type 'SymbolConstructor'"). The library's
+ * copy loads it itself, as @types/node does.
+ * @param {string} file
+ */
+function declareDisposable(file) {
+  const reference = '/// <reference lib="esnext.disposable" />\n';
+  const text = readFileSync(file, 'utf8');
+  if (!text.includes('[Symbol.dispose]')) fail(`${file}: no [Symbol.dispose] left to declare; has wasm-bindgen's output changed?`);
+  writeFileSync(file, reference + text);
 }
 
 /** Chromium for the browser tests: found, or installed with apt-get when running as root. */
