@@ -250,15 +250,25 @@ fn an_exponent_is_an_error_naming_its_word() {
 /// interpreter found the second X.
 #[test]
 fn a_line_of_repeats_stops_at_the_first_one_too_many() {
-    let p = program(&" M3".repeat(1_000_000), 80.0);
+    let p = program(&" M48".repeat(1_000_000), 80.0);
     assert_eq!((p.info.warnings.len(), p.info.warnings_omitted), (0, 0));
+    assert_eq!(
+        first_error(&" M48".repeat(1_000_000), 80.0),
+        (
+            1,
+            18,
+            "too many M codes on this line: a line takes at most 4 (as LinuxCNC has it)"
+                .to_string()
+        )
+    );
+    // Of M3 again and again the fault is the second, as M3 M3's is: the
+    // reader stops at the fifth, and the codes before it are judged.
     assert_eq!(
         first_error(&" M3".repeat(1_000_000), 80.0),
         (
             1,
-            14,
-            "too many M codes on this line: a line takes at most 4 (as LinuxCNC has it)"
-                .to_string()
+            5,
+            "M3 and M3 are both spindle codes: give one per line".to_string()
         )
     );
     let (_, column, message) = first_error(&format!("G1{}", " X1".repeat(1_000_000)), 80.0);

@@ -44,7 +44,7 @@
 
 use super::parse::{Block, Code, Problem, Word};
 use crate::arc::planes::{Plane, Turn};
-use crate::error::Error;
+use crate::error::{Error, Location};
 use crate::grid::AXIS_NAMES;
 use crate::machine::{MACHINE_AXES, MM_PER_INCH};
 use std::f64::consts::TAU;
@@ -102,26 +102,115 @@ fn is_other_axis(letter: char) -> bool {
 }
 
 /// The modal group of a G code outside the groups voxpath models, as
-/// RS274/NGC (LinuxCNC) and Grbl group them, by the name an error gives it:
-/// a line holds one code of each group (Grbl refuses two: error 21, modal
-/// group violation). The non-modal group holds G4 and G92, which voxpath
-/// runs, beside codes it ignores.
-fn other_modal_group(number: u32, minor: u32) -> Option<(usize, &'static str)> {
+/// RS274/NGC (LinuxCNC) and Grbl group them, by the name an error gives it.
+/// The non-modal group holds G4 and G92, which voxpath runs, beside codes
+/// it ignores.
+fn other_modal_group(number: u32, minor: u32) -> Option<&'static str> {
     Some(match (number, minor) {
-        (4 | 10 | 28 | 30 | 53 | 92, 0) | (28 | 30, 1) | (92, 1..=3) => (0, "non-modal"),
-        (40, 0) | (41 | 42, 0..=1) => (1, "cutter compensation"),
-        (43, 0..=2) | (49, 0) => (2, "tool length offset"),
-        (54..=59, 0) | (59, 1..=3) => (3, "coordinate system"),
-        (61, 0..=1) | (64, 0) => (4, "path control"),
-        (98 | 99, 0) => (5, "canned cycle return"),
-        (96 | 97, 0) => (6, "spindle speed mode"),
-        (7 | 8, 0) => (7, "lathe diameter mode"),
+        (4 | 10 | 28 | 30 | 53 | 92, 0) | (28 | 30, 1) | (92, 1..=3) => "non-modal",
+        (40, 0) | (41 | 42, 0..=1) => "cutter compensation",
+        (43, 0..=2) | (49, 0) => "tool length offset",
+        (54..=59, 0) | (59, 1..=3) => "coordinate system",
+        (61, 0..=1) | (64, 0) => "path control",
+        (98 | 99, 0) => "canned cycle return",
+        (96 | 97, 0) => "spindle speed mode",
+        (7 | 8, 0) => "lathe diameter mode",
         _ => return None,
     })
 }
 
-/// How many groups [`other_modal_group`] knows.
-const OTHER_MODAL_GROUPS: usize = 8;
+/// The modal group of `code`, by the name an error gives it, if it has
+/// one: a line holds one code of each group (Grbl refuses two: error 21,
+/// modal group violation). The groups voxpath models, and
+/// [`other_modal_group`]'s.
+fn modal_group(code: &Code) -> Option<&'static str> {
+    let (number, minor) = (code.number, code.minor);
+    Some(match code.letter {
+        'G' if motion_code(number, minor).is_some() => "motion",
+        'G' => match (number, minor) {
+            (17..=19, 0) => "plane",
+            (20 | 21, 0) => "units",
+            (90 | 91, 0) => "distance mode",
+            (90 | 91, 1) => "arc center mode",
+            (93 | 94, 0) => "feed rate mode",
+            _ => return other_modal_group(number, minor),
+        },
+        'M' => match (number, minor) {
+            (3..=5, 0) => "spindle",
+            (7..=9, 0) => "coolant",
+            (0 | 1 | 2 | 30, 0) => "program flow",
+            _ => return None,
+        },
+        _ => return None,
+    })
+}
+
+/// The first of `codes` (a line's, in the order it writes them) at fault
+/// among them: the second of a modal group, or one refused outright
+/// (G92.2, G92.3). Each is a fault whatever else the line holds, after
+/// them or before, and whatever mode the machine is in.
+fn codes_fault(line: u32, codes: &[Code]) -> Option<Error> {
+    for (k, code) in codes.iter().enumerate() {
+        if let Some(group) = modal_group(code) {
+            if let Some(first) = codes[..k].iter().find(|c| modal_group(c) == Some(group)) {
+                return Some(Error::at(
+                    line,
+                    code.column,
+                    format!(
+                        "{} and {} are both {group} codes: give one per line",
+                        first.name(),
+                        code.name()
+                    ),
+                ));
+            }
+        }
+        if matches!((code.letter, code.number, code.minor), ('G', 92, 2 | 3)) {
+            return Some(Error::at(
+                line,
+                code.column,
+                format!(
+                    "{} is not supported, as in Grbl (error 20, unsupported command): the positions of the lines after it would be unknown; use G92.1 to clear the G92 offset, G92 to set one",
+                    code.name()
+                ),
+            ));
+        }
+    }
+    None
+}
+
+/// The first fault, by column, that `block`'s words and codes show on
+/// their own: a negative F, P or S (gcode.c, step 2: "Check for invalid
+/// negative values for words F, N, P, T, and S", error 4; N and T take no
+/// sign in the reader), or [`codes_fault`]'s. No word or code after them on
+/// the line, nor the mode the machine is in, mends one or moves it, so it
+/// is told of a line the reader cut short at an error of its own, when it
+/// stands before that error: `M3 M3 M3 M3 M3` is read up to its fifth M
+/// (column 13: "too many M codes") and its fault is the second M3 (column
+/// 4), which `M3 M3` is told. What the rest of a line decides (an arc's I,
+/// a dwell's P, an F in G93) is not judged here: a cut line may lack it.
+pub fn first_fault_on_its_own(line: u32, block: &Block) -> Option<Error> {
+    let negative = block
+        .words
+        .iter()
+        .find(|w| matches!(w.letter, 'F' | 'P' | 'S') && w.value < 0.0)
+        .map(|w| {
+            Error::at(
+                line,
+                w.column,
+                format!(
+                    "{}{}: {} cannot be negative (Grbl refuses it: error 4, negative value)",
+                    w.letter, w.value, w.letter
+                ),
+            )
+        });
+    [negative, codes_fault(line, &block.codes)]
+        .into_iter()
+        .flatten()
+        .min_by_key(|e| match e.location {
+            Location::Source { column, .. } => column,
+            _ => unreachable!("a line's fault is placed at its column"),
+        })
+}
 
 /// The motion code (modal group 1) G`number`.`minor` is, if any. The ones
 /// voxpath does not model: splines (G5, G5.1, G5.2), threading (G33,
@@ -323,29 +412,6 @@ impl Default for Interpreter {
     }
 }
 
-/// Sets a modal group's code, refusing a second one on the same line.
-fn set_once<T: Copy>(
-    slot: &mut Option<(T, Code)>,
-    value: T,
-    code: &Code,
-    line: u32,
-    group: &str,
-) -> Result<(), Error> {
-    if let Some((_, first)) = slot {
-        return Err(Error::at(
-            line,
-            code.column,
-            format!(
-                "{} and {} are both {group} codes: give one per line",
-                first.name(),
-                code.name()
-            ),
-        ));
-    }
-    *slot = Some((value, *code));
-    Ok(())
-}
-
 /// The words of a line, by letter (the reader lets each letter onto a
 /// line once: a second is a syntax error, and such a line is not run).
 struct Words<'b> {
@@ -537,21 +603,8 @@ impl Interpreter {
         effects.clears_offset = false;
         effects.ends_program = false;
         effects.warnings.clone_from(&block.ignored);
-        // gcode.c, step 2: "Check for invalid negative values for words F,
-        // N, P, T, and S" (error 4). N and T take no sign in the reader.
-        if let Some(w) = block
-            .words
-            .iter()
-            .find(|w| matches!(w.letter, 'F' | 'P' | 'S') && w.value < 0.0)
-        {
-            return Err(Error::at(
-                line,
-                w.column,
-                format!(
-                    "{}{}: {} cannot be negative (Grbl refuses it: error 4, negative value)",
-                    w.letter, w.value, w.letter
-                ),
-            ));
+        if let Some(fault) = first_fault_on_its_own(line, block) {
+            return Err(fault);
         }
         let mut motion: Option<(MotionCode, Code)> = None;
         let mut plane: Option<(Plane, Code)> = None;
@@ -567,69 +620,42 @@ impl Interpreter {
         let mut spindle: Option<(Spindle, Code)> = None;
         let mut coolant: Option<(u32, Code)> = None;
         let mut flow: Option<(u32, Code)> = None;
-        let mut other_groups: [Option<((), Code)>; OTHER_MODAL_GROUPS] = [None; OTHER_MODAL_GROUPS];
         let words = Words::new(&block.words);
         // What axis_code's warning adds when the motion comes to rest for it.
         let mut axis_code_rest = "";
+        // At most one code of each group (first_fault_on_its_own), each set here.
         for code in &block.codes {
-            if let Some((group, name)) = (code.letter == 'G')
-                .then(|| other_modal_group(code.number, code.minor))
-                .flatten()
-            {
-                set_once(&mut other_groups[group], (), code, line, name)?;
-            }
             if let Some(m) = (code.letter == 'G')
                 .then(|| motion_code(code.number, code.minor))
                 .flatten()
             {
-                set_once(&mut motion, m, code, line, "motion")?;
+                motion = Some((m, *code));
                 continue;
             }
             match (code.letter, code.number, code.minor) {
-                ('G', 17, 0) => set_once(&mut plane, Plane::Xy, code, line, "plane")?,
-                ('G', 18, 0) => set_once(&mut plane, Plane::Zx, code, line, "plane")?,
-                ('G', 19, 0) => set_once(&mut plane, Plane::Yz, code, line, "plane")?,
-                ('G', 20, 0) => set_once(&mut inches, true, code, line, "units")?,
-                ('G', 21, 0) => set_once(&mut inches, false, code, line, "units")?,
-                ('G', 90, 0) => set_once(&mut incremental, false, code, line, "distance mode")?,
-                ('G', 91, 0) => set_once(&mut incremental, true, code, line, "distance mode")?,
-                ('G', 90, 1) => {
-                    set_once(&mut absolute_centers, true, code, line, "arc center mode")?
-                }
-                ('G', 91, 1) => {
-                    set_once(&mut absolute_centers, false, code, line, "arc center mode")?
-                }
-                // One of them a line, as the non-modal group above has it.
+                ('G', 17, 0) => plane = Some((Plane::Xy, *code)),
+                ('G', 18, 0) => plane = Some((Plane::Zx, *code)),
+                ('G', 19, 0) => plane = Some((Plane::Yz, *code)),
+                ('G', 20, 0) => inches = Some((true, *code)),
+                ('G', 21, 0) => inches = Some((false, *code)),
+                ('G', 90, 0) => incremental = Some((false, *code)),
+                ('G', 91, 0) => incremental = Some((true, *code)),
+                ('G', 90, 1) => absolute_centers = Some((true, *code)),
+                ('G', 91, 1) => absolute_centers = Some((false, *code)),
+                // One of them a line: both are non-modal.
                 ('G', 92, 0) => g92 = Some((true, *code)),
                 ('G', 92, 1) => g92 = Some((false, *code)),
-                ('G', 92, 2 | 3) => {
-                    return Err(Error::at(
-                        line,
-                        code.column,
-                        format!(
-                            "{} is not supported, as in Grbl (error 20, unsupported command): the positions of the lines after it would be unknown; use G92.1 to clear the G92 offset, G92 to set one",
-                            code.name()
-                        ),
-                    ));
-                }
-                ('G', 93, 0) => set_once(&mut inverse_time, true, code, line, "feed rate mode")?,
-                ('G', 94, 0) => set_once(&mut inverse_time, false, code, line, "feed rate mode")?,
+                ('G', 92, 2 | 3) => unreachable!("{} is refused by codes_fault", code.name()),
+                ('G', 93, 0) => inverse_time = Some((true, *code)),
+                ('G', 94, 0) => inverse_time = Some((false, *code)),
                 // G4 (dwell) takes P, its seconds: its P is then not an unused word.
                 ('G', 4, 0) => dwell = Some(*code),
-                ('M', 3, 0) => set_once(&mut spindle, Spindle::Clockwise, code, line, "spindle")?,
-                ('M', 4, 0) => set_once(
-                    &mut spindle,
-                    Spindle::CounterClockwise,
-                    code,
-                    line,
-                    "spindle",
-                )?,
-                ('M', 5, 0) => set_once(&mut spindle, Spindle::Off, code, line, "spindle")?,
-                ('M', n @ 7..=9, 0) => set_once(&mut coolant, n, code, line, "coolant")?,
-                ('M', n @ (0 | 1 | 2 | 30), 0) => {
-                    set_once(&mut flow, n, code, line, "program flow")?
-                }
-                // Its group (non-modal) is checked above, as G4's and G92's.
+                ('M', 3, 0) => spindle = Some((Spindle::Clockwise, *code)),
+                ('M', 4, 0) => spindle = Some((Spindle::CounterClockwise, *code)),
+                ('M', 5, 0) => spindle = Some((Spindle::Off, *code)),
+                ('M', n @ 7..=9, 0) => coolant = Some((n, *code)),
+                ('M', n @ (0 | 1 | 2 | 30), 0) => flow = Some((n, *code)),
+                // Its group (non-modal) is checked by codes_fault, as G4's and G92's.
                 ('G', 53, 0) => machine_coordinates = Some(*code),
                 ('G', n, m) if axis_code.is_none() && !leaves_axis_words_to_motion(n, m) => {
                     // Said below, once the line's axis words are known.

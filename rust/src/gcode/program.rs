@@ -28,7 +28,7 @@
 //!   start), or whose radius is too small for any grid center, is stepped as
 //!   a straight line to its end, and its note says so.
 
-use super::interpret::{ArcFormat, ArcMm, Effects, Interpreter, Motion, MoveMm};
+use super::interpret::{self, ArcFormat, ArcMm, Effects, Interpreter, Motion, MoveMm};
 use super::parse::{Block, Problem, parse_line_into};
 use super::timing::{self, MoveSpans, Timeline};
 use crate::algorithms;
@@ -1173,7 +1173,12 @@ impl Runner {
 
     fn run_block(&mut self, line: u32, block: &Block, effects: &mut Effects) {
         if let Some(problem) = &block.error {
-            self.stop(Diagnostic::at(line, problem));
+            // The reader stops at its first error: a fault the words and
+            // codes before it show on their own comes first in the line.
+            let fault = interpret::first_fault_on_its_own(line, block)
+                .map(Diagnostic::from_error)
+                .filter(|fault| fault.column < problem.column);
+            self.stop(fault.unwrap_or_else(|| Diagnostic::at(line, problem)));
             return;
         }
         if self.stopped_at_line.is_some() {
@@ -1756,6 +1761,67 @@ mod tests {
                 "{source}"
             );
         }
+    }
+
+    #[test]
+    fn a_line_cut_short_by_the_reader_is_told_its_first_fault() {
+        // The reader stops at its own first error (a fifth M code, a second
+        // X); a fault its words and codes before that show on their own
+        // comes first, as the same line without the reader's error is told.
+        let first_error = |source: &str| {
+            let p = run(source, Settings::from_json(r#"{"stepsPerMm": 1}"#).unwrap());
+            let e = &p.info.errors[0];
+            (e.line, e.column, e.message.clone())
+        };
+        let spindle_twice = "M3 and M3 are both spindle codes: give one per line";
+        for (source, column, message) in [
+            // Was column 13, "too many M codes".
+            ("M3 M3 M3 M3 M3", 4, spindle_twice),
+            ("M3 M3", 4, spindle_twice),
+            // Was column 10, "X appears twice".
+            (
+                "G1 G0 X1 X2",
+                4,
+                "G1 and G0 are both motion codes: give one per line",
+            ),
+            (
+                "G1 X1 F-1 X2",
+                7,
+                "F-1: F cannot be negative (Grbl refuses it: error 4, negative value)",
+            ),
+            (
+                "G92.2 X1 X2",
+                1,
+                "G92.2 is not supported, as in Grbl (error 20, unsupported command): the positions of the lines after it would be unknown; use G92.1 to clear the G92 offset, G92 to set one",
+            ),
+            // Two faults on their own: the first by column (the negative
+            // word was told first, at column 7).
+            ("M3 M3 F-1", 4, spindle_twice),
+            // Whatever the rest would have said is not judged: an arc whose
+            // I stands after the cut, a dwell whose P does.
+            (
+                "G2 X2 M3 M7 M0 M48 M49 I1",
+                20,
+                "too many M codes on this line: a line takes at most 4 (as LinuxCNC has it)",
+            ),
+            ("G4 X1 X2 P1", 7, "X appears twice on this line"),
+        ] {
+            assert_eq!(
+                first_error(source),
+                (1, column, message.to_string()),
+                "{source}"
+            );
+        }
+        // After the program has stopped, a cut line is told its first fault too.
+        let p = run(
+            "G92.2\nM3 M3 M3 M3 M3",
+            Settings::from_json(r#"{"stepsPerMm": 1}"#).unwrap(),
+        );
+        let second = &p.info.errors[1];
+        assert_eq!(
+            (second.line, second.column, second.message.as_str()),
+            (2, 4, spindle_twice)
+        );
     }
 
     /// A run of `source` with straight moves stepped as chosen: straight
