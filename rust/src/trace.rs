@@ -2048,7 +2048,9 @@ impl Trace {
             });
         }
         if line.vertices > 0 {
-            (line.min, line.max) = (min, max);
+            let [x0, y0, z0] = min;
+            let [x1, y1, z1] = max;
+            line.bounds = [x0, y0, z0, x1, y1, z1];
         }
         line
     }
@@ -2078,9 +2080,8 @@ const IDEAL_LINE_PIECE_VERTICES: usize = 8192;
 /// [`Self::rest_pieces`]) once it knows the count.
 #[derive(Default)]
 pub struct IdealLineF32 {
-    /// Smallest x, y, z of the f32 vertices (zeros when there are none).
-    min: [f32; 3],
-    max: [f32; 3],
+    /// The box of the f32 vertices, as [`Self::bounds`] gives it.
+    bounds: [f32; 6],
     /// x, y, z of each vertex, full pieces then the one being filled.
     xyz: Vec<Vec<f32>>,
     /// What rounding left of each value of `xyz`, in the same pieces.
@@ -2119,9 +2120,7 @@ impl IdealLineF32 {
     /// The smallest x, y, z over the f32 vertices, then the largest; all
     /// zeros when there is no vertex.
     pub fn bounds(&self) -> [f32; 6] {
-        let [x0, y0, z0] = self.min;
-        let [x1, y1, z1] = self.max;
-        [x0, y0, z0, x1, y1, z1]
+        self.bounds
     }
 
     /// x, y, z of the vertices in order (flat, stride 3), a piece at a time.
