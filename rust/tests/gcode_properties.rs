@@ -222,10 +222,15 @@ proptest! {
             .iter()
             .flat_map(|m| std::iter::repeat_n(m.line, m.steps as usize))
             .collect();
-        prop_assert_eq!(p.records.line_by_step(0, p.info.steps), by_scan.clone());
+        let line_by_step = |from: u64, to: u64| {
+            let mut out = Vec::new();
+            p.records.push_line_by_step(from, to, &mut out);
+            out
+        };
+        prop_assert_eq!(line_by_step(0, p.info.steps), by_scan.clone());
         let (from, to) = (p.info.steps / 3, p.info.steps * 2 / 3);
         prop_assert_eq!(
-            p.records.line_by_step(from, to),
+            line_by_step(from, to),
             by_scan[from as usize..to as usize].to_vec()
         );
         prop_assert_eq!(p.records.move_of_step(p.info.steps), None);

@@ -785,15 +785,9 @@ impl MoveRecords {
     }
 
     /// The 1-based source line of each step index in `from..to` (below the
-    /// moves' last step), read from the records alone.
-    pub fn line_by_step(&self, from: u64, to: u64) -> Vec<u32> {
-        let mut out = Vec::with_capacity(to.saturating_sub(from) as usize);
-        self.push_line_by_step(from, to, &mut out);
-        out
-    }
-
-    /// [`Self::line_by_step`], pushed onto `out` (which the caller may have
-    /// made room in).
+    /// moves' last step), read from the records alone, pushed onto `out`
+    /// (which the caller may have made room in: wasm's lineByStep, refusing
+    /// a range it has no memory for).
     pub fn push_line_by_step(&self, from: u64, to: u64, out: &mut Vec<u32>) {
         let Some(first) = self.move_of_step(from) else {
             return;
