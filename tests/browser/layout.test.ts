@@ -208,6 +208,17 @@ async function coveredInView(page: Page): Promise<string[]> {
   return [...names, ...handles, ...tools].flatMap((under) => covers.filter((over) => over !== under && overlapOf(over.box, under.box) !== '').map((over) => `${under.name} under ${over.name}`));
 }
 
+/**
+ * A learner's points for the example line (0,0,0)->(10,7,6), in a link: they part from regions' path (at (2,1,1)),
+ * so the legend shows both of their entries, the points and the first difference.
+ */
+const LEARNER_POINTS = encodeURIComponent('0,0,0\n1,1,1\n2,1,1\n3,2,2\n4,3,2\n5,3,3\n6,4,4\n7,5,4\n8,6,5\n9,6,5\n10,7,6\n');
+
+/** Where the legend (and the tools after it) stands: 'viewport' over the view, 'views' above it. */
+function legendPlace(page: Page): Promise<string> {
+  return page.evaluate(() => document.querySelector('#legend')!.parentElement!.id);
+}
+
 describe('an embedded view in a small frame', () => {
   it('shows every playback control whole at 320x240, the buttons and the speed in one row under the scrubber', async () => {
     // The clock's longest choice (1000× slower) and the machine-time readout too.
@@ -313,9 +324,11 @@ describe('an embedded view in a small frame', () => {
         expect(widths.view, 'the one view, leaving side by side').toBe(widths.views);
         await page.getByTestId('mode-compare').click();
         await expect.poll(() => page.getByTestId('scene-canvas').count()).toBe(2);
-        // Overlaid, one view has both paths: the legend is over it again.
+        // Overlaid, one view has both paths: the legend stands with it again, above it here (over it, it covered z), over it where it fits.
         await page.getByTestId('layout-overlay').check();
-        await expect.poll(() => page.evaluate(() => document.querySelector('#legend')!.parentElement!.id)).toBe('viewport');
+        await expect.poll(() => coveredInView(page), { timeout: 10_000 }).toEqual([]);
+        await page.setViewportSize({ width: 1280, height: 800 });
+        await expect.poll(() => legendPlace(page)).toBe('viewport');
       }
       expect(p.problems()).toEqual([]);
       await p.close();
@@ -618,11 +631,10 @@ describe('a narrow window', () => {
     // Compared, its seven entries, in a column 85 px wide beside the stacked tools, stood 196 px tall over a view of
     // 364 at 240 px, and 125 to 161 px at 360: the view frames its picture below at most 30 % of its height.
     // A learner's points checked add two entries of three lines each to trace mode's four: 224 px at 240, 139 to 153 at 272 and 360.
-    const points = encodeURIComponent('0,0,0\n1,1,1\n2,1,1\n3,2,2\n4,3,2\n5,3,3\n6,4,4\n7,5,4\n8,6,5\n9,6,5\n10,7,6\n');
     for (const [name, query] of [
       ['compare-legend-regions', 'mode=compare&algorithm=regions&other=greedy'],
       ['compare-legend-liu-float', 'mode=compare&algorithm=liu-float&other=bresenham3d'],
-      ['trace-legend-points', `mode=trace&algorithm=regions&points=${points}`],
+      ['trace-legend-points', `mode=trace&algorithm=regions&points=${LEARNER_POINTS}`],
     ]) {
       const p = await openPage(`?${query}&from=0,0,0&to=10,7,6&step=5`);
       const { page } = p;
@@ -644,16 +656,15 @@ describe('a narrow window', () => {
         await page.locator('#views').scrollIntoViewIfNeeded();
         await screenshot(page, `${name}-${width}`, '#views');
       }
-      // Wider, it goes back over the view, where it takes a share of the view the picture is framed below.
-      const legendPlace = () => page.evaluate(() => document.querySelector('#legend')!.parentElement!.id);
-      await page.setViewportSize({ width: 480, height: 700 });
-      await expect.poll(legendPlace).toBe('viewport');
+      // In a wide window it goes back over the view, where it takes no more of it than the picture is framed below.
+      await page.setViewportSize({ width: 1280, height: 800 });
+      await expect.poll(() => legendPlace(page)).toBe('viewport');
       if (name.startsWith('trace')) {
-        // Without points, trace mode's four short entries stay over the view even at 240 px (22 % of it).
-        await page.setViewportSize({ width: 240, height: 700 });
-        await expect.poll(legendPlace).toBe('views');
+        // Without points, trace mode's four short entries stay over a view of 439 px even at 240 px wide (with the stacked tools, over 364 px they do not).
+        await page.setViewportSize({ width: 240, height: 844 });
+        await expect.poll(() => legendPlace(page)).toBe('views');
         await page.getByTestId('learner-points').fill('');
-        await expect.poll(legendPlace, { timeout: 10_000 }).toBe('viewport');
+        await expect.poll(() => legendPlace(page), { timeout: 10_000 }).toBe('viewport');
       }
       expect(p.problems()).toEqual([]);
       await p.close();
@@ -662,12 +673,11 @@ describe('a narrow window', () => {
 
   it("folds the legend to one line in a short window, where whole it covered the axes' names, and keeps it folded for a new visit", async () => {
     // Compared, whole, it covered z at 640 x 360 and y and z at 800 x 450 (a view of 148 px); trace mode's with a learner's points, z at both.
-    const points = encodeURIComponent('0,0,0\n1,1,1\n2,1,1\n3,2,2\n4,3,2\n5,3,3\n6,4,4\n7,5,4\n8,6,5\n9,6,5\n10,7,6\n');
     for (const [width, height] of [
       [640, 360],
       [800, 450],
     ]) {
-      for (const query of ['mode=compare&algorithm=liu-float&other=bresenham3d', `mode=trace&algorithm=regions&points=${points}`]) {
+      for (const query of ['mode=compare&algorithm=liu-float&other=bresenham3d', `mode=trace&algorithm=regions&points=${LEARNER_POINTS}`]) {
         const mode = query.startsWith('mode=compare') ? 'compare' : 'trace';
         const at = `${mode}, ${width} x ${height}`;
         const p = await openPage(`?${query}&from=0,0,0&to=10,7,6&step=5`);
@@ -789,5 +799,46 @@ describe('a narrow window', () => {
     expect(box.lastRight).toBeLessThanOrEqual(box.windowPx);
     expect(p.problems()).toEqual([]);
     await p.close();
+  });
+});
+
+describe("the legend and the view's tools on a short view", () => {
+  it('stand above the view where over it they would take more of it than the picture leaves them, and over it where they fit', async () => {
+    // Over the view, the picture is framed below them in at most 70 % of its height: taller, they covered it. Compared,
+    // beside the panels, the legend (85 to 125 px) covered y, z and the S and E handles at 721 x 541 (a view of 157 px), z
+    // and E at 768 x 600 and z at 900 x 600 (216 and 298 px); trace mode's tools, stacked, put Reset view on the E handle at
+    // 721 x 541; with a learner's points, the legend covered z in one column at 736 x 414.
+    for (const [name, query, width, height] of [
+      ['compare', 'mode=compare&algorithm=regions&other=greedy', 721, 541],
+      ['compare', 'mode=compare&algorithm=regions&other=greedy', 768, 600],
+      ['compare', 'mode=compare&algorithm=liu-float&other=bresenham3d', 900, 600],
+      ['trace', 'mode=trace&algorithm=regions', 721, 541],
+      ['trace-points', `mode=trace&algorithm=regions&points=${LEARNER_POINTS}`, 736, 414],
+    ] as const) {
+      const at = `${name}, ${width} x ${height}`;
+      const p = await openPage(`?${query}&from=0,0,0&to=10,7,6&step=5`);
+      const { page } = p;
+      await page.setViewportSize({ width, height });
+      await page.getByTestId('step-counter').filter({ hasText: /^Step 5 of / }).waitFor();
+      if (name === 'trace-points') await page.locator('#legend-difference').waitFor({ timeout: 10_000 });
+      // Once the view has framed its path for the window (a resize is followed a frame later).
+      await expect.poll(() => coveredInView(page), { message: `${at}: covered`, timeout: 10_000 }).toEqual([]);
+      expect(await legendPlace(page), at).toBe('views');
+      // Each axis name and handle whole in the view: above it, the legend and the tools left the compared view at
+      // 721 x 541 51 px, z and E cut off at its edge, until the reasons under the playback gave up lines for it.
+      const { names, handles } = await viewBoxes(page);
+      expect(names.map(({ name }) => name).sort(), at).toEqual(['x', 'y', 'z']);
+      expect(handles.map(({ name }) => name).sort(), at).toEqual(['E handle', 'S handle']);
+      const view = (await page.locator('#viewport').boundingBox())!;
+      const cut = [...names, ...handles].filter(({ box }) => overlapOf(box, view) !== [box.x, box.y, box.width, box.height].map(Math.round).join(' ')).map(({ name }) => name);
+      expect(cut, `${at}: cut at the view's edge`).toEqual([]);
+      await screenshot(page, `short-view-${name}-${width}x${height}`);
+      // Where the view has room for them, they stand over it again.
+      await page.setViewportSize({ width: 1280, height: 800 });
+      await expect.poll(() => legendPlace(page), { message: `${at}, then 1280 x 800`, timeout: 10_000 }).toBe('viewport');
+      await expect.poll(() => coveredInView(page), { message: `${at}, then 1280 x 800: covered`, timeout: 10_000 }).toEqual([]);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
   });
 });

@@ -23,24 +23,10 @@ import { mainTrace, type Shown } from './shown.js';
 /** Where style.css stacks two views one above the other (its @media (orientation: portrait)). */
 const PORTRAIT = window.matchMedia('(orientation: portrait)');
 
-/**
- * A window this narrow (a phone's, held upright) has no room over the view
- * for the comparison's legend: its seven entries, in a column beside the
- * view's stacked tools, stood 196 px tall over a view of 364 at 240 px
- * (125 to 161 px at 360), past the 30 % of its height the view frames its
- * picture below, and over the z axis's name. There it stands above the
- * view, with the tools, as side by side. At 390 to 430 px it took 20 to
- * 30 %. So does trace mode's with a learner's points, whose two entries
- * (the points, their first difference) run to three lines each: 224 px
- * over 364 at 240 (over y and z), 139 to 153 px at 272, 360 and 430 (over
- * z); without them its four short entries take 13 to 22 %.
- */
-const NARROW = window.matchMedia('(max-width: 430px)');
-
 export interface PathViewElements {
   /** Where the second view goes (side by side). */
   secondViewport: HTMLDivElement;
-  /** The legend, over the main view; side by side above both views, and in a narrow window (NARROW), compared or with a learner's points, above the one. */
+  /** The legend, over the main view where it leaves the picture its room; else, and side by side, above the views (#placeLegend). */
   legend: HTMLElement;
   /** The view's tools (2D, Decision in 3D, Follow, Reset view), after the legend wherever it is. */
   tools: HTMLElement;
@@ -110,7 +96,8 @@ export class PathViews {
     elements.legendFold.addEventListener('click', () => store.update({ legendFolded: !store.state.legendFolded }));
     this.setLegendFolded(store.state.legendFolded);
     PORTRAIT.addEventListener('change', () => this.#nameSecond(store.state.mode === 'compare' && store.state.layout === 'side'));
-    NARROW.addEventListener('change', () => this.#placeLegend());
+    // A window or a layout that reshapes the views may leave the legend too tall over the view, or give it room there again.
+    new ResizeObserver(() => this.#placeLegend()).observe(elements.secondViewport.parentElement!);
   }
 
   /**
@@ -118,23 +105,46 @@ export class PathViews {
    * the legend tells of both views and stands above them: over the first
    * one it covered its path (in a 640 x 480 frame). So do the tools, which
    * act on both (the cameras are linked): stacked in the first view's
-   * corner, Reset view stood on its E handle. In a narrow window (NARROW),
-   * compared or with a learner's points, both stand above the one view
-   * too: the legend alone above it left the stacked tools more of the
-   * shorter view than it frames its picture below, and Reset view stood on
-   * the E handle. It goes there with the points typed, not with their
-   * entries shown, which a new rule hides until its check answers: the
-   * view would be framed twice more at each change.
+   * corner, Reset view stood on its E handle.
+   *
+   * Over the one view, they stand at its top, and the view frames its
+   * picture below them in what is left, but for at most MAX_TOP_INSET of
+   * its height: taller, they covered the picture. Where they would take
+   * more (SceneView.overlaysFit), both stand above the view, the legend
+   * across its whole width. They stood there by the window's width alone
+   * (430 px or narrower, compared or with a learner's points), and covered
+   * the picture wherever else the view was short for them: compared, a
+   * view 157 to 298 px tall beside the panels (721 x 541 to 900 x 600) had
+   * y, z and the S and E handles under the legend; with a learner's
+   * points, z in the one-column layout at 736 x 414; trace mode's tools,
+   * stacked, put Reset view on the E handle at 721 x 541.
+   *
+   * The entries that come and go with what the user does are measured as
+   * shown, so that the legend does not move at each: a learner's points,
+   * while some are typed (a new rule hides their entries until its check
+   * answers, and the view would be framed twice more at each change), and
+   * the picked G-code line's steps (each line picked in turn).
    */
   #placeLegend(): void {
     const { mode, layout, learnerPoints } = this.#store.state;
-    const { legend, tools, secondViewport } = this.#e;
-    const long = mode === 'compare' || (mode === 'trace' && learnerPoints.trim() !== '');
-    const above = (mode === 'compare' && layout === 'side') || (NARROW.matches && long);
-    const place = above ? secondViewport.parentElement! : this.#legendView;
-    if (legend.parentElement === place) return;
-    place.prepend(legend);
-    legend.after(tools);
+    const { legend, tools, secondViewport, legendLearner, legendDifference, legendPickedLine } = this.#e;
+    const views = secondViewport.parentElement!;
+    const put = (place: HTMLElement) => {
+      if (legend.parentElement === place) return;
+      place.prepend(legend);
+      legend.after(tools);
+    };
+    if (mode === 'compare' && layout === 'side') {
+      put(views);
+      return;
+    }
+    // Measured over the view, with the entries that come and go shown; put back as they were in the same task, before anything is drawn.
+    const coming = [...(mode === 'trace' && learnerPoints.trim() !== '' ? [legendLearner, legendDifference] : []), ...(mode === 'gcode' ? [legendPickedLine] : [])].filter((e) => e.hidden);
+    for (const entry of coming) entry.hidden = false;
+    put(this.#legendView);
+    const fits = this.#main.overlaysFit();
+    for (const entry of coming) entry.hidden = true;
+    put(fits ? this.#legendView : views);
   }
 
   /**
@@ -149,7 +159,14 @@ export class PathViews {
     const { a, b, difference } = shown;
     const main = mainTrace(shown);
     const side = state.mode === 'compare' && state.layout === 'side';
-    // Before the views frame their paths below what lies over them.
+    const e = this.#e;
+    const compared = state.mode === 'compare';
+    e.legendVisited.textContent = compared ? `visited by ${a?.name ?? 'the first'}` : 'visited';
+    this.#secondName = b?.name ?? 'second';
+    this.#nameSecond(side);
+    e.legendOnlyFirst.textContent = `only ${a?.name ?? 'first'} visits`;
+    e.legendOnlySecond.textContent = `only ${b?.name ?? 'second'} visits`;
+    // Named, before the views frame their paths below what lies over them.
     this.#placeLegend();
     this.#main.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
     if (state.mode === 'compare' && !side) this.#main.setSecond(b);
@@ -172,13 +189,6 @@ export class PathViews {
     this.#figures = main?.figures ?? [];
     this.#showProjection();
     this.#e.decision3d.checked = state.decision3d;
-    const e = this.#e;
-    const compared = state.mode === 'compare';
-    e.legendVisited.textContent = compared ? `visited by ${a?.name ?? 'the first'}` : 'visited';
-    this.#secondName = b?.name ?? 'second';
-    this.#nameSecond(side);
-    e.legendOnlyFirst.textContent = `only ${a?.name ?? 'first'} visits`;
-    e.legendOnlySecond.textContent = `only ${b?.name ?? 'second'} visits`;
     this.setLearner(shown.learner);
     // The shown point's decision, on the views built anew.
     this.#drawDecision();
@@ -198,7 +208,7 @@ export class PathViews {
     this.#e.legendDifference.hidden = cells.length === 0;
     // Points typed, or cleared, since the last paths were drawn.
     this.#placeLegend();
-    // The legend, its entries shown or hidden (and, from show, renamed), framed for before the view draws again.
+    // The legend, its entries shown or hidden, framed for before the view draws again.
     this.#main.overlaysChanged();
     // Other modes' second path and highlights are their own.
     if (!traced) return;
@@ -223,6 +233,9 @@ export class PathViews {
     legendFold.textContent = folded ? 'Legend ▾' : '▴';
     legendFold.title = folded ? 'Show the legend whole' : 'Fold the legend to one line';
     legendFold.setAttribute('aria-expanded', String(!folded));
+    // Folded, it may fit over the view again; whole, no longer.
+    this.#placeLegend();
+    this.#main.overlaysChanged();
   }
 
   /** The 2D toggle as the main view is: on in 2D, off where the path is not planar; and Decision in 3D as it can be drawn there. */

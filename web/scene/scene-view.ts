@@ -741,12 +741,17 @@ export class SceneView {
     this.setCamera({ position: center.clone().addScaledVector(direction, distance).toArray(), target: center.toArray(), zoom: 1 });
   }
 
-  /**
-   * The share of the view's height (0..MAX_TOP_INSET) taken at its top by
-   * what lies over it there (the legend, the view's tools): the other
-   * children of the container that start at its top.
-   */
+  /** The share of the view's height (0..MAX_TOP_INSET) the framed picture leaves at its top to what lies over it there (#overlaidShare). */
   #topInset(): number {
+    return Math.min(this.#overlaidShare(), MAX_TOP_INSET);
+  }
+
+  /**
+   * The share of the view's height taken at its top by what lies over it
+   * there (the legend, the view's tools): the other children of the
+   * container that start at its top.
+   */
+  #overlaidShare(): number {
     const top = this.#container.getBoundingClientRect().top;
     const height = Math.max(1, this.#container.clientHeight);
     let bottom = 0;
@@ -755,7 +760,17 @@ export class SceneView {
       const box = child.getBoundingClientRect();
       if (box.height > 0 && box.top - top < OVERLAY_TOP_PX) bottom = Math.max(bottom, box.bottom - top);
     }
-    return Math.min(bottom / height, MAX_TOP_INSET);
+    return bottom / height;
+  }
+
+  /**
+   * True when what lies over the view's top (the legend, the view's tools),
+   * as laid out now, takes no more of its height than the framed picture
+   * leaves it (MAX_TOP_INSET): taller, it covers the picture's top (the z
+   * axis's name, the handle at a path's upper end).
+   */
+  overlaysFit(): boolean {
+    return this.#overlaidShare() <= MAX_TOP_INSET;
   }
 
   /**
