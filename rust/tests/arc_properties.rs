@@ -337,6 +337,14 @@ proptest! {
     }
 
     #[test]
+    fn the_dry_run_counts_the_steps_of_many_turns_the_rule_takes(
+        arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(300)],
+        turns in 3u64..12,
+    ) {
+        check_plan(&Arc { turns, ..arc }.request("circle", 0, ""))?;
+    }
+
+    #[test]
     fn the_dry_run_counts_the_steps_the_rule_takes(
         arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(300), arc_strategy(30_000)],
     ) {
@@ -634,6 +642,24 @@ fn the_dry_run_counts_every_small_circle_and_arc_exactly() {
             start: [u, v],
             end,
             turns: (full && (u + v) % 2 == 0) as u64,
+        };
+        check_plan(&arc.request("circle", 0, "")).unwrap();
+    }
+}
+
+#[test]
+fn the_dry_run_counts_every_small_circle_and_arc_of_many_turns_exactly() {
+    // The dry run counts the turns that repeat the one before at once:
+    // every start within 12 of the center, full circles and arcs, with 3
+    // to 6 turns added (a skip from the third crossing on).
+    for (u, v, end, _) in small_arcs(12) {
+        let arc = Arc {
+            plane: 0,
+            ccw: true,
+            center: [0, 0, 0],
+            start: [u, v],
+            end,
+            turns: 3 + (u + 2 * v).rem_euclid(4) as u64,
         };
         check_plan(&arc.request("circle", 0, "")).unwrap();
     }

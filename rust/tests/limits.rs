@@ -113,19 +113,22 @@ fn a_circle_is_refused_from_its_full_turns() {
 }
 
 #[test]
-fn a_million_turns_under_every_max_steps_are_refused_from_their_bound() {
+fn a_million_turns_under_every_max_steps_are_told_the_max_steps_that_traces_them() {
     // r = 80 steps (I1 at 80 steps/mm) and 999,999 extra turns take
-    // 452,000,000 steps, under the largest maxSteps: the refusal counted
-    // them all with the dry run to say so (1.4 s natively, up to 3.7 s in
-    // a page), where the full turns' bound, 3,999,994 passes of 113 steps,
-    // is known at once and says "at least" as truly. A helix about it
-    // steps the same circle.
-    let settings = || Settings::from_json(r#"{"stepsPerMm": 80}"#).unwrap();
-    for source in [
-        "G1 F100\nG2 X0 Y0 I1 P1000000",
-        "G1 F100\nG2 X0 Y0 Z1 I1 P1000000",
+    // 452,000,000 steps, under the largest maxSteps. Refused from the full
+    // turns' bound (3,999,994 passes of 113 steps), the program was told
+    // "at least 451999322", and refused again at that maxSteps; the dry
+    // run counts the turns that repeat each other at once (it counted
+    // them one by one: 1.4 s natively). A helix about it steps the same
+    // circle and is told the same.
+    let settings = |max_steps: u64| {
+        Settings::from_json(&format!(r#"{{"stepsPerMm": 80, "maxSteps": {max_steps}}}"#)).unwrap()
+    };
+    for (source, steps) in [
+        ("G1 F100\nG2 X0 Y0 I1 P1000000", 452_000_000),
+        ("G1 F100\nG2 X0 Y0 Z1 I1 P1000000", 452_000_000),
     ] {
-        let p = run(source, settings());
+        let p = run(source, settings(50_000_000));
         let error = &p.info.errors[0];
         assert_eq!(
             (error.line, error.column, p.info.steps),
@@ -137,16 +140,34 @@ fn a_million_turns_under_every_max_steps_are_refused_from_their_bound() {
             Some(Limit {
                 option: "maxSteps".into(),
                 value: 50_000_000,
-                at_least: 451_999_322,
+                at_least: steps,
                 most: 1_000_000_000,
             }),
             "{source}"
         );
         assert_eq!(
             error.message,
-            "the program needs more than maxSteps = 50000000 steps by this move (at least 451999322); raise maxSteps (up to 1000000000) or shorten the program or lower its steps per mm"
+            format!(
+                "the program needs more than maxSteps = 50000000 steps by this move (at least {steps}); raise maxSteps (up to 1000000000) or shorten the program or lower its steps per mm"
+            )
         );
+        // One step short of the count, it is told the count again.
+        let short = run(source, settings(steps - 1));
+        let told = short.info.errors[0].limit.as_ref().map(|l| l.at_least);
+        assert_eq!(told, Some(steps), "{source}");
     }
+    // And at the count, the circle is taken (counted, not traced here: 0.9 GB of steps).
+    let spec = ArcSpec::parse(
+        &voxpath::Request::from_json(
+            r#"{"algorithm":"circle","from":[80,0,0],"to":[80,0,0],"center":[0,0,0],"turns":999999}"#,
+        )
+        .unwrap(),
+        false,
+        3,
+    )
+    .unwrap();
+    let counted = SaleemCircle::new(&spec).counted(452_000_000).unwrap();
+    assert_eq!(counted.remaining_steps(), Some(452_000_000));
 }
 
 #[test]

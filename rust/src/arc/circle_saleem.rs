@@ -502,11 +502,36 @@ impl SaleemCircle {
         // jumps along it: a few isqrts an octant instead of a step each.
         let mut scratch = [Step::NONE; 1024];
         let mut taken = 0u64;
+        // Where the pass that last crossed the ray ended, the steps taken
+        // by then, and the crossings left then (see the lap skip below).
+        let mut lap_end: Option<([i64; 2], u64, u64)> = None;
         while dry.phase == Phase::Circle {
+            let crossings_before = dry.crossings_left;
             taken += dry.leap();
             taken += dry.octant_fill(&mut scratch, &mut || (true, 0)) as u64;
             if taken > limit {
                 return None;
+            }
+            // A full turn that ends at the point the one before it ended
+            // at takes the same steps again (each step is a function of
+            // the point alone, and so is where a pass ends), every turn
+            // until the last crossing: those are counted at once, so that
+            // a million turns cost two or three to count.
+            if dry.phase != Phase::Circle || dry.crossings_left == crossings_before {
+                continue;
+            }
+            match lap_end {
+                Some((pos, at, crossings))
+                    if pos == dry.pos && crossings == dry.crossings_left + 1 =>
+                {
+                    let laps = dry.crossings_left - 1;
+                    taken = (taken - at).saturating_mul(laps).saturating_add(taken);
+                    dry.crossings_left = 1;
+                    if taken > limit {
+                        return None;
+                    }
+                }
+                _ => lap_end = Some((dry.pos, taken, dry.crossings_left)),
             }
         }
         let Phase::Correction {
@@ -534,11 +559,10 @@ impl SaleemCircle {
     /// its T = `crossings_left` - 1 full turns alone take, (4T - 2)(2k - 1)
     /// with k about r / sqrt(2), near the rule's own 4 sqrt(2) r a turn
     /// (r = 80 and 999,999 extra turns: 451,999,322 of its 452,000,000
-    /// steps). A lap counted as 2π (r - 1) long in steps of at most sqrt(2)
-    /// gave 4 (r - 1) a turn, 316 million there: under the default
-    /// maxSteps of a G-code page, a million turns at a radius of 1 mm
-    /// passed it to the dry run, which counted on to a billion steps for
-    /// its refusal's advice (1.4 s natively, 1.8 to 3.7 s in wasm).
+    /// steps). [`Self::counted`] refuses an arc at once when this passes
+    /// the largest maxSteps: a dry run whose turns do not repeat each other
+    /// (none the tests meet) counts them one by one, and a million turns
+    /// took 1.4 s natively, 1.8 to 3.7 s in wasm.
     ///
     /// Why it holds, in the local counter-clockwise frame (u, v):
     ///
@@ -621,14 +645,18 @@ impl SaleemCircle {
     }
 
     /// This stepper with its steps counted by the dry run, or the maxSteps
-    /// error when it would take more than `max_steps`
-    /// (at once when its full turns alone need more).
+    /// error when it would take more than `max_steps`, with the count it
+    /// takes (at once, with the full turns' bound, when no maxSteps is
+    /// enough).
     pub fn counted(mut self, max_steps: u64) -> Result<SaleemCircle, Error> {
-        // Refused before any dry run, its "at least" the full turns'
-        // bound: counting on to the largest maxSteps, as below, took
-        // seconds for a million turns of a small circle.
+        // Past the largest maxSteps, refused before any dry run, its "at
+        // least" the full turns' bound. Under it the count is the advice
+        // (the maxSteps that traces it), which the dry run gives at the
+        // cost of a turn or two however many there are: refused from the
+        // bound, r = 80 with 999,999 extra turns was told "at least
+        // 451999322", and refused again at that maxSteps (452,000,000).
         let at_least = self.steps_at_least();
-        if at_least > max_steps {
+        if at_least > max_steps && at_least > MAX_STEPS_LIMIT {
             return Err(path_too_long(max_steps, at_least));
         }
         let plan = self.plan(max_steps).ok_or_else(|| {
