@@ -448,7 +448,7 @@ mod tests {
                 2,
             ),
         ] {
-            let error = spec(request).err().expect(request);
+            let error = spec(request).expect_err(request);
             assert_eq!(
                 (error.field_name(), error.axis),
                 (Some("center"), Some(axis)),
