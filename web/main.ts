@@ -169,6 +169,7 @@ function run(catalogue: Catalogue): void {
       legendPickedLine: byId('legend-picked-line', HTMLLIElement),
       legendDifference: byId('legend-difference', HTMLLIElement),
       legendFold: byId('legend-fold', HTMLButtonElement),
+      openFull: byId('open-full', HTMLAnchorElement),
     },
     store,
   );

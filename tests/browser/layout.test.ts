@@ -185,27 +185,33 @@ function overlapOf(a: { x: number; y: number; width: number; height: number }, b
   return right > left && bottom > top ? [left, top, right - left, bottom - top].map(Math.round).join(' ') : '';
 }
 
-/** Where the legend, the view's axis names, its handles and its tools stand. */
-function viewBoxes(page: Page) {
-  return page.evaluate(() => {
+/**
+ * Where the legend, the axis names and handles of `view` (the first, or the
+ * second side by side: '#viewport-b'), the view's tools and the embedded
+ * page's Open in voxpath link stand (the link 0 x 0 where it is not shown).
+ */
+function viewBoxes(page: Page, view = '#viewport') {
+  return page.evaluate((view) => {
     const box = (e: Element) => {
       const r = e.getBoundingClientRect();
       return { x: r.x, y: r.y, width: r.width, height: r.height };
     };
     return {
       legend: box(document.querySelector('#legend')!),
-      names: [...document.querySelectorAll('#viewport .axis-name')].map((e) => ({ name: e.textContent!, box: box(e) })),
-      handles: [...document.querySelectorAll('#viewport .handle')].map((e) => ({ name: `${e.textContent} handle`, box: box(e) })),
+      names: [...document.querySelectorAll(`${view} .axis-name`)].map((e) => ({ name: e.textContent!, box: box(e) })),
+      handles: [...document.querySelectorAll(`${view} .handle`)].map((e) => ({ name: `${e.textContent} handle`, box: box(e) })),
       tools: [...document.querySelectorAll('#view-tools > *')].map((e) => ({ name: (e as HTMLElement).innerText.trim(), box: box(e) })),
+      link: box(document.querySelector('#open-full')!),
     };
-  });
+  }, view);
 }
 
-/** The view's axis names, handles and tools under the legend or a tool: "z under the legend". */
-async function coveredInView(page: Page): Promise<string[]> {
-  const { legend, names, handles, tools } = await viewBoxes(page);
-  const covers = [{ name: 'the legend', box: legend }, ...tools];
-  return [...names, ...handles, ...tools].flatMap((under) => covers.filter((over) => over !== under && overlapOf(over.box, under.box) !== '').map((over) => `${under.name} under ${over.name}`));
+/** The axis names and handles of `view` (as viewBoxes), the tools and the Open in voxpath link under the legend, a tool or the link: "z under the legend". */
+async function coveredInView(page: Page, view = '#viewport'): Promise<string[]> {
+  const { legend, names, handles, tools, link } = await viewBoxes(page, view);
+  const openFull = { name: 'the Open in voxpath link', box: link };
+  const covers = [{ name: 'the legend', box: legend }, ...tools, openFull];
+  return [...names, ...handles, ...tools, openFull].flatMap((under) => covers.filter((over) => over !== under && overlapOf(over.box, under.box) !== '').map((over) => `${under.name} under ${over.name}`));
 }
 
 /**
@@ -288,6 +294,34 @@ describe('an embedded view in a small frame', () => {
       const views = await Promise.all(['#viewport', '#viewport-b'].map(async (v) => (await page.locator(v).boundingBox())!));
       for (const [i, view] of views.entries()) expect(view.height, `${size.width}x${size.height}: view ${i + 1}'s height`).toBeGreaterThan(40);
       await screenshot(page, `compare-side-embed-${size.width}x${size.height}`);
+      expect(p.problems()).toEqual([]);
+      await p.close();
+    }
+  });
+
+  it('frames the picture above the Open in voxpath link in a frame under 400 px tall, the link over the view', async () => {
+    // In the view's lower right corner (over the second view side by side) it covered the x axis's name in frames 320
+    // to 480 px wide (560 in G-code mode, 720 side by side) and 240 to 399 tall; from 400 px tall it stands in a strip under the view.
+    for (const [name, query, width, height, view] of [
+      ['trace', 'algorithm=regions', 320, 240, '#viewport'],
+      ['trace', 'algorithm=regions', 480, 360, '#viewport'],
+      ['compare', 'mode=compare&algorithm=regions&other=greedy', 400, 399, '#viewport'],
+      ['compare-side', 'mode=compare&layout=side&algorithm=regions&other=greedy', 640, 360, '#viewport-b'],
+      ['gcode', 'mode=gcode', 480, 300, '#viewport'],
+    ] as const) {
+      const at = `${name}, ${width} x ${height}`;
+      const p = await openPage(`?embed=1&${query}&from=0,0,0&to=10,7,6&step=5`);
+      const { page } = p;
+      await page.setViewportSize({ width, height });
+      await page.getByTestId('step-counter').filter({ hasText: /^Step 5 of / }).waitFor();
+      await expect.poll(() => page.locator(`${view} .axis-name`).count(), { message: `${at}: axes drawn`, timeout: 10_000 }).toBe(3);
+      // Once the view has framed its path for the frame (a resize is followed a frame later).
+      await expect.poll(() => coveredInView(page, view), { message: `${at}: covered`, timeout: 10_000 }).toEqual([]);
+      // Still over the view: the frame gives it no strip of its own.
+      const { link } = await viewBoxes(page, view);
+      const viewBox = (await page.locator(view).boundingBox())!;
+      expect(overlapOf(link, viewBox), `${at}: the link over the view`).not.toBe('');
+      await screenshot(page, `open-full-${name}-${width}x${height}`);
       expect(p.problems()).toEqual([]);
       await p.close();
     }

@@ -46,6 +46,13 @@ export interface PathViewElements {
   legendDifference: HTMLElement;
   /** Folds the legend to one line, itself, and shows it whole again (AppState.legendFolded). */
   legendFold: HTMLButtonElement;
+  /**
+   * The embedded page's Open in voxpath link, in the views' lower right
+   * corner: over the last view in a frame under 400 px tall, where the
+   * views frame their pictures above it (it covered the x axis's name
+   * in frames up to 480 px wide, 720 side by side).
+   */
+  openFull: HTMLElement;
 }
 
 export class PathViews {
@@ -85,6 +92,7 @@ export class PathViews {
     this.#e = elements;
     this.#store = store;
     this.#legendView = elements.legend.parentElement!;
+    main.frameAbove(elements.openFull);
     this.events = {
       onCamera: (camera) => store.update({ camera }),
       onHandle: (name, point) => store.update({ options: { ...store.state.options, [name]: point } }),
@@ -108,7 +116,7 @@ export class PathViews {
    * corner, Reset view stood on its E handle.
    *
    * Over the one view, they stand at its top, and the view frames its
-   * picture below them in what is left, but for at most MAX_TOP_INSET of
+   * picture below them in what is left, but for at most MAX_INSET of
    * its height: taller, they covered the picture. Where they would take
    * more (SceneView.overlaysFit), both stand above the view, the legend
    * across its whole width. They stood there by the window's width alone
@@ -171,7 +179,10 @@ export class PathViews {
     this.#main.setTrace(main, Math.min(pointIndex, main?.steps ?? 0), state.projection, state.camera);
     if (state.mode === 'compare' && !side) this.#main.setSecond(b);
     if (side) {
-      this.#second ??= new SceneView(this.#e.secondViewport, this.events, 'second path view', PALETTE.second);
+      if (!this.#second) {
+        this.#second = new SceneView(this.#e.secondViewport, this.events, 'second path view', PALETTE.second);
+        this.#second.frameAbove(this.#e.openFull);
+      }
       this.#second.setTrace(b, Math.min(pointIndex, b?.steps ?? 0), state.projection, state.camera);
     } else {
       this.#second?.setTrace(undefined, 0, state.projection, null);

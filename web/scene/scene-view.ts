@@ -41,8 +41,8 @@ const FOV_DEG = 35;
 const VIEW_DIRECTION = new THREE.Vector3(0.6, -1.4, 0.9).normalize();
 /** Children of the view starting this close to its top (px) lie over it there (#topInset)... */
 const OVERLAY_TOP_PX = 16;
-/** ...and take at most this share of its height from the framed picture. */
-const MAX_TOP_INSET = 0.3;
+/** ...and take at most this share of its height from the framed picture; so does what stands over its bottom (#bottomInset). */
+const MAX_INSET = 0.3;
 /** Rounds of framing (#fit): each centers the picture and brings the camera in; three settle it within a pixel or so. */
 const FIT_ROUNDS = 4;
 /** Room around the cells for the axis arrows and tick labels: grid units, and a share of the path's size. */
@@ -182,8 +182,12 @@ export class SceneView {
   #framedByDefault = false;
   /** The container's size, CSS px, that the drawing and the labels were last sized to (#fitToContainer); 0 while it is hidden. */
   #sizedTo = { width: 0, height: 0 };
-  /** The share of the view's top that what lies over it took (#topInset) when resetView last framed the path below it. */
-  #framedInset = 0;
+  /** The shares of the view's top and bottom that what lies over them took (#topInset, #bottomInset) when resetView last framed the path between them. */
+  #framedInsets = { top: 0, bottom: 0 };
+  /** Elements outside the view that may stand over its bottom (#bottomInset). */
+  readonly #bottomOverlays: HTMLElement[] = [];
+  /** Reports a change of size of what lies over the view (overlaysChanged). */
+  readonly #overlays: ResizeObserver;
   /** False until a path has been drawn: before that the canvas stays undrawn (see #warmUp). */
   #drawnOnce = false;
   /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
@@ -251,8 +255,8 @@ export class SceneView {
     // The legend and the tools over the view's top take their room from the
     // framed picture (#topInset): when they grow (a learner's points add two
     // legend entries) the path stood with its z axis under the legend.
-    const overlays = new ResizeObserver(() => this.overlaysChanged());
-    for (const child of container.children) if (child !== this.canvas && child !== this.#labels.domElement) overlays.observe(child);
+    this.#overlays = new ResizeObserver(() => this.overlaysChanged());
+    for (const child of container.children) if (child !== this.canvas && child !== this.#labels.domElement) this.#overlays.observe(child);
   }
 
   /**
@@ -610,15 +614,26 @@ export class SceneView {
    * 210 ms each on a software GPU, the second only to move the camera).
    */
   overlaysChanged(): void {
-    if (this.#framedByDefault && this.#topInset() !== this.#framedInset) this.resetView();
+    if (this.#framedByDefault && (this.#topInset() !== this.#framedInsets.top || this.#bottomInset() !== this.#framedInsets.bottom)) this.resetView();
+  }
+
+  /**
+   * `element`, outside the view, may stand over its bottom (the embedded
+   * page's Open in voxpath link, in its corner): where it does, the picture
+   * is framed above it (#bottomInset), as below the legend and the tools.
+   */
+  frameAbove(element: HTMLElement): void {
+    this.#bottomOverlays.push(element);
+    this.#overlays.observe(element);
+    this.overlaysChanged();
   }
 
   /** Frames the whole path from the default direction (3D) or the plane's normal (2D). */
   resetView(): void {
     const drawn = this.#drawn;
     if (!drawn) return;
-    // Below the legend and the tools: the picture fills what they leave.
-    const inset = this.#topInset();
+    // Below the legend and the tools, and above what stands over the bottom: the picture fills what they leave.
+    const insets = { top: this.#topInset(), bottom: this.#bottomInset() };
     if (this.#projection === '2d') {
       const view = PLANE_VIEWS[drawn.planeNormal!]!;
       const extent = drawn.bounds.getSize(new THREE.Vector3());
@@ -630,18 +645,19 @@ export class SceneView {
       const width = Math.abs(size.dot(right));
       const height = Math.abs(size.dot(view.up));
       const aspect = this.#container.clientWidth / Math.max(1, this.#container.clientHeight);
-      const free = 1 - inset;
+      const free = 1 - insets.top - insets.bottom;
       this.#orthoHeight = Math.max(height / free, width / aspect, 2);
       this.#updateProjections();
-      const center = box.getCenter(new THREE.Vector3()).addScaledVector(view.up, (1 - free) * (this.#orthoHeight / 2));
+      // The camera looks above the box's center by as much as the free part's middle is below the view's.
+      const center = box.getCenter(new THREE.Vector3()).addScaledVector(view.up, (insets.top - insets.bottom) * (this.#orthoHeight / 2));
       const distance = size.length() + 10;
       this.#orthographic.up.copy(view.up);
       this.#orthographic.zoom = 1;
       this.setCamera({ position: center.clone().addScaledVector(view.direction, distance).toArray(), target: center.toArray(), zoom: 1 });
     } else {
-      this.#fit(VIEW_DIRECTION, drawn, inset);
+      this.#fit(VIEW_DIRECTION, drawn, insets);
     }
-    this.#framedInset = inset;
+    this.#framedInsets = insets;
     this.#framedByDefault = true;
   }
 
@@ -652,10 +668,11 @@ export class SceneView {
    * from its edges for labels and handles, and is moved across so the picture is
    * centered (a path seen obliquely is not centered on its center), which lets
    * it come closer. A few rounds settle both. The path's cells, not its
-   * bounding box: a diagonal line leaves most of its box empty. `inset`:
-   * the share of the view's top the legend and the tools take (#topInset).
+   * bounding box: a diagonal line leaves most of its box empty. `insets`:
+   * the shares of the view's height the legend and the tools take at its
+   * top (#topInset) and what stands over its bottom takes there (#bottomInset).
    */
-  #fit(direction: THREE.Vector3, drawn: Drawn, inset: number): void {
+  #fit(direction: THREE.Vector3, drawn: Drawn, insets: { top: number; bottom: number }): void {
     // The container's shape now, not as the last resize report left it: a
     // layout change (side by side) reshapes the view in the same task that
     // frames the path, before any ResizeObserver callback.
@@ -682,9 +699,9 @@ export class SceneView {
     for (const cell of drawn.framedCells) {
       for (let c = 0; c < 8; c++) corners.push(new THREE.Vector3(cell.x + (c & 1 ? 0.5 : -0.5), cell.y + (c & 2 ? 0.5 : -0.5), cell.z + (c & 4 ? 0.5 : -0.5)));
     }
-    // The picture goes below the legend and the tools, FIT_EDGE_PX from the
-    // edges: within `freeX` of `middleX` across (-1..1, screen right), and
-    // in the lower part of the height, within `freeY` of `middle` (screen up).
+    // The picture goes below the legend and the tools, above what stands over
+    // the bottom, FIT_EDGE_PX from the edges: within `freeX` of `middleX`
+    // across (-1..1, screen right), and within `freeY` of `middle` (screen up).
     const { clientWidth: width, clientHeight: height } = this.#container;
     // A small view (an embedded one) spares less of itself for the edges.
     const edge = Math.min(FIT_EDGE_PX, FIT_EDGE_SHARE * Math.min(width, height));
@@ -696,8 +713,8 @@ export class SceneView {
     const [edgeLeft, edgeRight, edgeBottom] = [Math.max(edge, left), Math.max(edge, rightRoom), Math.max(edge, below)];
     const freeX = 1 - (edgeLeft + edgeRight) / Math.max(width, 1);
     const middleX = (edgeLeft - edgeRight) / Math.max(width, 1);
-    const freeY = 1 - inset - (edge + edgeBottom) / Math.max(height, 1);
-    const middle = -inset + (edgeBottom - edge) / Math.max(height, 1);
+    const freeY = 1 - insets.top - insets.bottom - (edge + edgeBottom) / Math.max(height, 1);
+    const middle = insets.bottom - insets.top + (edgeBottom - edge) / Math.max(height, 1);
     // The free part's edges, from the screen's middle where the camera looks
     // (-1..1): the room each way. The legend and the tools take the top, so
     // there is less room above the middle than below it.
@@ -741,9 +758,9 @@ export class SceneView {
     this.setCamera({ position: center.clone().addScaledVector(direction, distance).toArray(), target: center.toArray(), zoom: 1 });
   }
 
-  /** The share of the view's height (0..MAX_TOP_INSET) the framed picture leaves at its top to what lies over it there (#overlaidShare). */
+  /** The share of the view's height (0..MAX_INSET) the framed picture leaves at its top to what lies over it there (#overlaidShare). */
   #topInset(): number {
-    return Math.min(this.#overlaidShare(), MAX_TOP_INSET);
+    return Math.min(this.#overlaidShare(), MAX_INSET);
   }
 
   /**
@@ -766,11 +783,27 @@ export class SceneView {
   /**
    * True when what lies over the view's top (the legend, the view's tools),
    * as laid out now, takes no more of its height than the framed picture
-   * leaves it (MAX_TOP_INSET): taller, it covers the picture's top (the z
+   * leaves it (MAX_INSET): taller, it covers the picture's top (the z
    * axis's name, the handle at a path's upper end).
    */
   overlaysFit(): boolean {
-    return this.#overlaidShare() <= MAX_TOP_INSET;
+    return this.#overlaidShare() <= MAX_INSET;
+  }
+
+  /**
+   * The share of the view's height (0..MAX_INSET) the framed picture
+   * leaves at its bottom to what stands over it there (frameAbove): from the
+   * top of each such element that overlaps the view's lower half.
+   */
+  #bottomInset(): number {
+    const view = this.#container.getBoundingClientRect();
+    const middle = view.top + view.height / 2;
+    let top = view.bottom;
+    for (const element of this.#bottomOverlays) {
+      const box = element.getBoundingClientRect();
+      if (box.width > 0 && box.height > 0 && box.left < view.right && view.left < box.right && box.top < view.bottom && box.top > middle) top = Math.min(top, box.top);
+    }
+    return Math.min((view.bottom - top) / Math.max(1, view.height), MAX_INSET);
   }
 
   /**
