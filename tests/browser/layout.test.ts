@@ -836,6 +836,48 @@ describe('a narrow window', () => {
   });
 });
 
+describe('two views side by side', () => {
+  it('stand across the room they share where it is wide enough, one above the other where it is narrow, the legend saying where the second is', async () => {
+    // They stood one above the other in any window taller than wide: at 480 x 541 two views of 462 x 94 px, z cut
+    // off at their edge, in a room of about 470 x 190 px, where across it each is about 230 x 190.
+    const p = await openPage('?mode=compare&layout=side&algorithm=regions&other=greedy&from=0,0,0&to=10,7,6&step=5');
+    const { page } = p;
+    await page.getByTestId('step-counter').filter({ hasText: 'Step 5 of 23' }).waitFor();
+    await expect.poll(() => page.getByTestId('scene-canvas').count()).toBe(2);
+    const second = page.locator('#legend-second-name');
+    for (const [width, height, across] of [
+      [480, 541, true],
+      [540, 600, true],
+      [1280, 720, true],
+      [800, 900, false],
+    ] as const) {
+      const at = `${width} x ${height}`;
+      await page.setViewportSize({ width, height });
+      await expect.poll(() => second.innerText(), { message: `${at}: the second view named`, timeout: 10_000 }).toBe(across ? 'greedy (right view)' : 'greedy (lower view)');
+      const [first, other] = await Promise.all(['#viewport', '#viewport-b'].map(async (v) => (await page.locator(v).boundingBox())!));
+      if (across) {
+        expect([other!.x >= first!.x + first!.width - 1, Math.abs(other!.y - first!.y) < 1], `${at}: the second view to the right`).toEqual([true, true]);
+      } else {
+        expect([other!.y >= first!.y + first!.height - 1, Math.abs(other!.x - first!.x) < 1], `${at}: the second view below`).toEqual([true, true]);
+      }
+      // Each view's axis names and handles whole inside it, clear of the legend and the tools.
+      for (const [view, box] of [
+        ['#viewport', first!],
+        ['#viewport-b', other!],
+      ] as const) {
+        await expect.poll(() => coveredInView(page, view), { message: `${at}: ${view} covered`, timeout: 10_000 }).toEqual([]);
+        const { names, handles } = await viewBoxes(page, view);
+        expect(names.map(({ name }) => name).sort(), `${at}: ${view}`).toEqual(['x', 'y', 'z']);
+        const cut = [...names, ...handles].filter((label) => overlapOf(label.box, box) !== [label.box.x, label.box.y, label.box.width, label.box.height].map(Math.round).join(' ')).map(({ name }) => name);
+        expect(cut, `${at}: cut at ${view}'s edge`).toEqual([]);
+      }
+      await screenshot(page, `compare-side-${width}x${height}`);
+    }
+    expect(p.problems()).toEqual([]);
+    await p.close();
+  });
+});
+
 describe("the legend and the view's tools on a short view", () => {
   it('stand above the view where over it they would take more of it than the picture leaves them, and over it where they fit', async () => {
     // Over the view, the picture is framed below them in at most 70 % of its height: taller, they covered it. Compared,

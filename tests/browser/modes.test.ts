@@ -549,8 +549,8 @@ describe('compare mode', () => {
     const tools = (await page.locator('#view-tools').boundingBox())!;
     const overlap = legend.x < tools.x + tools.width && tools.x < legend.x + legend.width && legend.y < tools.y + tools.height && tools.y < legend.y + legend.height;
     expect(overlap).toBe(false);
-    // The legend says where the second view is: to the right, or below once
-    // a window taller than wide stacks the views (it said "right view" there).
+    // The legend says where the second view is: to the right, or below where
+    // the room the views share is too narrow for both across (it said "right view" there).
     const second = page.locator('#legend-second-name');
     expect(await second.innerText()).toBe('greedy (right view)');
     await page.setViewportSize({ width: 800, height: 900 });

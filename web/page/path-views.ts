@@ -20,8 +20,14 @@ import type { Store } from '../state/store.js';
 import type { LearnerCheck } from '../worker/protocol.js';
 import { mainTrace, type Shown } from './shown.js';
 
-/** Where style.css stacks two views one above the other (its @media (orientation: portrait)). */
-const PORTRAIT = window.matchMedia('(orientation: portrait)');
+/**
+ * The usual shape (width over height) of a view's framed picture: the
+ * example line's, (0,0,0) to (10,7,6), is about 170 x 135 px. Side by side,
+ * two views across a room of this shape or wider show pictures larger than
+ * one above the other (each has half the width, against half the height),
+ * and smaller in a narrower one (#stackViews).
+ */
+const PICTURE_ASPECT = 4 / 3;
 
 export interface PathViewElements {
   /** Where the second view goes (side by side). */
@@ -78,12 +84,37 @@ export class PathViews {
 
   /**
    * Names the second path in the legend, and side by side where its view
-   * is: to the right, or below in a window taller than wide, where the
-   * stylesheet stacks the views (it said "right view" of the lower one).
+   * is: to the right, or below where the views are stacked (#stackViews; it
+   * said "right view" of the lower one).
    */
   #nameSecond(side: boolean): void {
-    const where = PORTRAIT.matches ? 'lower view' : 'right view';
+    const where = this.#e.secondViewport.parentElement!.hasAttribute('data-stacked') ? 'lower view' : 'right view';
     this.#e.legendSecondName.textContent = side ? `${this.#secondName} (${where})` : this.#secondName;
+  }
+
+  /**
+   * Side by side, stands the two views one above the other (style.css's
+   * .views[data-stacked]) where the room they share is narrower than
+   * PICTURE_ASPECT, across it elsewhere: the arrangement in which each
+   * view's picture is the larger. They stood so by the window's
+   * orientation, and in the one-column layout a window taller than wide
+   * (320 to 540 px wide, 400 to 700 tall) stacked them 39 to 100 px tall
+   * each, the z axis's name cut off at their edge: at 480 x 541, two of
+   * 462 x 94 px in a room of about 470 x 190, where across it each is
+   * 230 x 190. The room is the same either way (the legend and the tools
+   * span it), so the arrangement does not undo itself.
+   */
+  #stackViews(): void {
+    const { secondViewport } = this.#e;
+    const views = secondViewport.parentElement!;
+    if (secondViewport.hidden) {
+      views.removeAttribute('data-stacked');
+      return;
+    }
+    const [first, second] = [this.#legendView, secondViewport].map((view) => view.getBoundingClientRect());
+    const width = Math.max(first!.right, second!.right) - Math.min(first!.left, second!.left);
+    const height = Math.max(first!.bottom, second!.bottom) - Math.min(first!.top, second!.top);
+    views.toggleAttribute('data-stacked', width < PICTURE_ASPECT * height);
   }
 
   /** `main` is made early, so that its shaders compile while the core loads (SceneView's warm-up). */
@@ -103,9 +134,15 @@ export class PathViews {
     decision3d.addEventListener('change', () => store.update({ decision3d: decision3d.checked }));
     elements.legendFold.addEventListener('click', () => store.update({ legendFolded: !store.state.legendFolded }));
     this.setLegendFolded(store.state.legendFolded);
-    PORTRAIT.addEventListener('change', () => this.#nameSecond(store.state.mode === 'compare' && store.state.layout === 'side'));
-    // A window or a layout that reshapes the views may leave the legend too tall over the view, or give it room there again.
-    new ResizeObserver(() => this.#placeLegend()).observe(elements.secondViewport.parentElement!);
+    // A window or a layout that reshapes the views may call for the other arrangement side by side (the second view shown
+    // reshapes only itself), and leave the legend too tall over the view, or give it room there again.
+    const reshaped = new ResizeObserver(() => {
+      this.#stackViews();
+      this.#nameSecond(store.state.mode === 'compare' && store.state.layout === 'side');
+      this.#placeLegend();
+    });
+    reshaped.observe(elements.secondViewport.parentElement!);
+    reshaped.observe(elements.secondViewport);
   }
 
   /**
@@ -171,6 +208,7 @@ export class PathViews {
     const compared = state.mode === 'compare';
     e.legendVisited.textContent = compared ? `visited by ${a?.name ?? 'the first'}` : 'visited';
     this.#secondName = b?.name ?? 'second';
+    this.#stackViews();
     this.#nameSecond(side);
     e.legendOnlyFirst.textContent = `only ${a?.name ?? 'first'} visits`;
     e.legendOnlySecond.textContent = `only ${b?.name ?? 'second'} visits`;

@@ -193,7 +193,7 @@ export class SceneView {
   /** The warm-up's objects, kept so their compiled programs stay in three's cache. */
   readonly #warm = new THREE.Group();
 
-  /** The colour of the path's visited cells: the second path's in the right view side by side. */
+  /** The colour of the path's visited cells: the second path's in the second view side by side. */
   readonly #visitedColour: string;
 
   /** Fills `container` (a positioned element) with the canvas and its label layer. */
