@@ -71,6 +71,23 @@ describe('page state in the URL query', () => {
     }
   });
 
+  it('leaves at its default, named in the note as typed, a whole-number key whose text a double does not hold (to=9007199254740993 was read as 9007199254740992, step=1e-400 as 0)', () => {
+    const notes: LinkNotes = { unread: [], fitted: [] };
+    const state = stateFromQuery('from=1e-400,0,0&to=9007199254740993,1,1&step=1e-400', catalogue, notes)!;
+    expect(notes.unread).toEqual(['from=1e-400,0,0', 'to=9007199254740993,1,1', 'step=1e-400']);
+    expect([state.options.from, state.options.to, state.pointIndex]).toEqual([first().options.from, first().options.to, 0]);
+    // The machine's whole numbers (microsteps) and the experiment's (count) too; a real number (stepsPerMm) is as the double reads it.
+    const machine: LinkNotes = { unread: [], fitted: [] };
+    const gcode = stateFromQuery('mode=gcode&stepsPerMm=9007199254740993&microsteps=9007199254740993,1,1&count=0.99999999999999999', catalogue, machine)!;
+    expect(machine.unread).toEqual(['microsteps=9007199254740993,1,1', 'count=0.99999999999999999']);
+    expect(gcode.machine.stepsPerMm).toBe(9007199254740992);
+    // Whole numbers as written, up to 2^53 - 1, and fractions (the core judges them), are read.
+    const read: LinkNotes = { unread: [], fitted: [] };
+    const kept = stateFromQuery('from=1.5e1,-9007199254740991,0&to=2.5,0,0&step=3e0', catalogue, read)!;
+    expect(read.unread).toEqual([]);
+    expect([kept.options.from, kept.options.to, kept.pointIndex]).toEqual([[15, -9007199254740991, 0], [2.5, 0, 0], 3]);
+  });
+
   it('says which value it read of a key given more than once with another value: the first (a later "&to=9,9,9" added by hand was dropped without a word)', () => {
     const notes: LinkNotes = { unread: [], fitted: [] };
     const state = stateFromQuery(`from=0,0,0&to=5,5,5&tie=hold&to=9,9,9&to=${'8'.repeat(40)},1,1&to=9,9,9&tie=hold&stepsPerMm=80&stepsPerMm=10`, catalogue, notes)!;

@@ -7,7 +7,7 @@
  */
 import { parseArgs } from 'node:util';
 import { AXIS_NAMES } from '../core/axes.js';
-import { quoted, readDecimal, writesWholeNumber } from '../core/guard.js';
+import { inexactWholeRefusal, quoted, readDecimal } from '../core/guard.js';
 import { axesRefusal, perAxisRefusal, rangeRefusal } from '../core/ranges.js';
 import type { Catalogue, OptionSpec } from '../core/index.js';
 
@@ -169,33 +169,19 @@ function written(part: string): string {
   return quoted(part.trim());
 }
 
-/** Refuses `refusal` (a value's range, from the catalogue, in the core's words), naming the flag; nothing when undefined. */
+/** Refuses `refusal` (a value's range, from the catalogue, in the core's words, or inexactWholeRefusal's), naming the flag; nothing when undefined. */
 function refuse(flag: string, refusal: string | undefined): void {
   if (refusal !== undefined) throw new UsageError(`${quoted(flag)}: ${refusal}`);
-}
-
-/**
- * Refuses, naming the flag, a value of a whole-number option whose text
- * the double `v` does not say, which the core, handed the double, cannot
- * see: text that is not whole but rounds to a whole number ('--from
- * 1e-400,0,0' traced from the origin), or a whole number past 2^53 - 1,
- * where a double does not hold every whole number (9007199254740993 reads
- * as 9007199254740992). Checked after the range, as the core checks, so
- * that a value past 2^53 that the range refuses is told its range.
- */
-function refuseInexactWhole(flag: string, part: string, v: number): void {
-  if (!Number.isInteger(v)) return;
-  if (!writesWholeNumber(part)) throw new UsageError(`${quoted(flag)}: '${written(part)}' is not a whole number (as a double it rounds to ${v})`);
-  if (!Number.isSafeInteger(v)) {
-    throw new UsageError(`${quoted(flag)}: '${written(part)}' is past ±${Number.MAX_SAFE_INTEGER} (2^53 - 1), beyond which a double does not hold every whole number (it reads as ${v})`);
-  }
 }
 
 /**
  * A flag's text as the option's value, checked against its declared kind
  * and range: a value out of range is refused here in the core's words
  * (the catalogue's, as the page's form says them), quoting what was typed,
- * where the core would quote the double it was handed.
+ * where the core would quote the double it was handed; then a value of
+ * whole numbers whose text the double does not say (inexactWholeRefusal),
+ * after the range, as the core checks, so that a value past 2^53 that the
+ * range refuses is told its range.
  */
 function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
   switch (spec.kind.type) {
@@ -204,7 +190,7 @@ function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
       const values = parts.map((part) => numberOf(flag, part));
       // The core tells a count of coordinates it does not take before any coordinate.
       if (values.length <= AXIS_NAMES.length) refuse(flag, axesRefusal(spec.kind, values, parts.map(written)));
-      parts.forEach((part, i) => refuseInexactWhole(flag, part, values[i]!));
+      parts.forEach((part, i) => refuse(flag, inexactWholeRefusal(part, values[i]!)));
       return values;
     }
     case 'number': {
@@ -215,7 +201,7 @@ function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
     case 'integer': {
       const value = numberOf(flag, text);
       refuse(flag, rangeRefusal(spec.kind, value, written(text)));
-      refuseInexactWhole(flag, text, value);
+      refuse(flag, inexactWholeRefusal(text, value));
       return value;
     }
     case 'perAxis': {
@@ -223,7 +209,7 @@ function optionValue(spec: OptionSpec, flag: string, text: string): unknown {
       const values = parts.map((part) => numberOf(flag, part));
       // The count and its wording are the core's (the catalogue's), as the page's form says them.
       refuse(flag, perAxisRefusal(spec.kind, values.length === 1 ? values[0]! : values, parts.map(written)));
-      if (spec.kind.notWhole !== undefined) parts.forEach((part, i) => refuseInexactWhole(flag, part, values[i]!));
+      if (spec.kind.notWhole !== undefined) parts.forEach((part, i) => refuse(flag, inexactWholeRefusal(part, values[i]!)));
       return values.length === 1 ? values[0] : values;
     }
     case 'choice':

@@ -165,9 +165,28 @@ export function readDecimal(text: string): number | undefined {
  * '15e-1' does not). The number cannot tell: '0.99999999999999999' and
  * '1e-400' read as the whole numbers 1 and 0.
  */
-export function writesWholeNumber(text: string): boolean {
+function writesWholeNumber(text: string): boolean {
   const [mantissa = '', exponent = '0'] = text.trim().replace(/^[+-]/, '').split(/[eE]/);
   const [whole = '', fraction = ''] = mantissa.split('.');
   const point = whole.length + Number(exponent);
   return [...(whole + fraction)].every((digit, i) => i < point || digit === '0');
+}
+
+/**
+ * Why `value`, read by readDecimal from `text` for a value of whole numbers
+ * (a point, a count), is refused because the double does not say its text,
+ * which the core, handed the double, cannot see: text that is not whole but
+ * rounds to a whole number ('1e-400' reads as 0), or a whole number past
+ * 2^53 - 1, where a double does not hold every whole number
+ * (9007199254740993 reads as 9007199254740992). Quotes the text as typed.
+ * Undefined when the double says the text, or is not whole (which the
+ * option's range refuses in the core's words). The CLI refuses such a flag,
+ * the page's link leaves such a key at its default.
+ */
+export function inexactWholeRefusal(text: string, value: number): string | undefined {
+  if (!Number.isInteger(value)) return undefined;
+  const typed = quoted(text.trim());
+  if (!writesWholeNumber(text)) return `'${typed}' is not a whole number (as a double it rounds to ${value})`;
+  if (!Number.isSafeInteger(value)) return `'${typed}' is past ±${Number.MAX_SAFE_INTEGER} (2^53 - 1), beyond which a double does not hold every whole number (it reads as ${value})`;
+  return undefined;
 }

@@ -21,7 +21,7 @@
  * `playing` is left out on purpose: a page opened from a link starts
  * paused, as moving content should not start by itself.
  */
-import { quoted, readDecimal } from '../core/guard.js';
+import { inexactWholeRefusal, quoted, readDecimal } from '../core/guard.js';
 import type { AlgorithmInfo, OptionSpec } from '../core/types.js';
 import { AXIS_NAMES, countOf, listed } from '../format.js';
 import {
@@ -59,23 +59,37 @@ import {
 export const GCODE_URL_LIMIT = 2000;
 
 /**
+ * A number of a value of whole numbers as its query text says it, or
+ * undefined when the text is no number, or a number the double does not
+ * say (inexactWholeRefusal: 9007199254740993 would be read as
+ * 9007199254740992, 1e-400 as 0, and the form and the core would speak of
+ * that number, not of the link's).
+ */
+function readWhole(text: string): number | undefined {
+  const value = readDecimal(text);
+  return value === undefined || inexactWholeRefusal(text, value) !== undefined ? undefined : value;
+}
+
+/**
  * An option's value from its query text, or undefined when the text cannot be
  * that kind of value. Numbers are kept as given (even out of range or
- * fractional): the core judges them and the form shows its verdict.
+ * fractional): the core judges them and the form shows its verdict; but a
+ * value of whole numbers must be the number its text says (readWhole).
  */
 function parseOption(spec: OptionSpec, text: string): OptionValue | undefined {
   switch (spec.kind.type) {
     case 'point': {
-      const coords = text.split(',').map(readDecimal);
+      const coords = text.split(',').map(readWhole);
       return coords.every((c) => c !== undefined) ? (coords as number[]) : undefined;
     }
     case 'choice':
       return spec.kind.values.includes(text) ? text : undefined;
     case 'number':
-    case 'integer':
       return readDecimal(text);
+    case 'integer':
+      return readWhole(text);
     case 'perAxis': {
-      const values = text.split(',').map(readDecimal);
+      const values = text.split(',').map(spec.kind.notWhole === undefined ? readDecimal : readWhole);
       if (values.some((v) => v === undefined)) return undefined;
       return values.length === 1 ? values[0]! : (values as number[]);
     }
@@ -301,7 +315,7 @@ export function stateFromQuery(query: string, catalogue: Catalogue, notes?: Link
   state.gcode = params.get('gcode') ?? state.gcode;
   state.learnerPoints = params.get('points') ?? state.learnerPoints;
 
-  const step = readDecimal(params.get('step') ?? '');
+  const step = readWhole(params.get('step') ?? '');
   if (step !== undefined && Number.isSafeInteger(step) && step >= 0) state.pointIndex = step;
   taken('step', state.pointIndex === step);
   if (notes && state.pointIndex === step) notes.step = step;
