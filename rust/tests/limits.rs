@@ -212,6 +212,25 @@ fn a_helix_is_refused_from_its_rise() {
         r#"{"algorithm":"helix","from":[5,0,0],"to":[5,0,1000000],"center":[0,0,0],"maxSteps":1000}"#,
     );
     assert_eq!(at_least(&e), 1_000_000);
+    // A rise past maxSteps under a longer circle is told the circle's
+    // count, the maxSteps that traces it (it was told the rise, 1000, and
+    // refused again there), and one step short of it is told it again.
+    let json = |max: u64| {
+        format!(
+            r#"{{"algorithm":"helix","from":[1000,0,0],"to":[1000,0,1000],"center":[0,0,0],"turns":10,"maxSteps":{max}}}"#
+        )
+    };
+    let steps = at_least(&refusal(&json(500)));
+    assert!(steps > 11 * 5000, "{steps}");
+    assert_eq!(common::trace(&json(steps)).steps(), steps);
+    assert_eq!(at_least(&refusal(&json(steps - 1))), steps);
+    // A rise past the largest maxSteps is refused at once, told the rise:
+    // a bound, the circle left uncounted, as no maxSteps traces it.
+    let e = refusal(
+        r#"{"algorithm":"helix","from":[5,0,-1073741824],"to":[5,0,1073741824],"center":[0,0,0]}"#,
+    );
+    assert_eq!(at_least(&e), 1 << 31);
+    assert!(e.message.contains("more than any maxSteps allows"), "{e}");
 }
 
 #[test]

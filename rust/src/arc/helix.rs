@@ -37,7 +37,7 @@ use crate::ideal::curve::HelixPath;
 use crate::line::step_target;
 use crate::line::terms::Term;
 use crate::request::{
-    AppliesWith, FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy,
+    AppliesWith, FROM, MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, TO, TiePolicy,
 };
 use crate::trace::{
     Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, concat_columns,
@@ -137,10 +137,10 @@ fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     let tie = req.tie(TiePolicy::Hold)?;
     let mut builder = TraceBuilder::for_request(spec.from, req)?;
     // The helix takes max(n_c, n_z) steps: a rise past maxSteps is refused
-    // before the circle's dry run.
+    // before it is traced, told the count that traces it, as a circle is.
     let n_z = spec.rise.unsigned_abs();
     if n_z > builder.max_steps() {
-        return Err(builder.too_long(n_z));
+        return Err(builder.too_long(steps_past_rise(&spec, n_z)));
     }
     let circle = SaleemCircle::new(&spec).counted(builder.max_steps())?;
     let helix = SaleemHelix::new(&spec, circle, tie);
@@ -150,6 +150,33 @@ fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     let ideal = HelixPath::new(spec.ideal_arc(), 0.0, spec.rise as f64);
     builder.run(helix, IdealPath::Helix(ideal))?;
     Ok(builder.finish(ID))
+}
+
+/// The steps of a helix whose rise `n_z` passes maxSteps, as its refusal
+/// tells them: max(n_c, n_z), n_c from the circle's dry run up to the
+/// largest maxSteps (a turn or two however many turns it makes:
+/// [`SaleemCircle::counted`]), so that maxSteps set to it traces the helix.
+/// Told the rise alone, r = 1000 with 10 extra turns rising 1000 was
+/// "at least 1000", and refused again at that maxSteps (it takes 62,216). Past the largest
+/// maxSteps no maxSteps traces it, and the count is a bound under it: the
+/// rise, when it passes it, the circle not counted; else the circle's own
+/// refusal's (its full turns' bound, or one past the largest maxSteps).
+fn steps_past_rise(spec: &ArcSpec, n_z: u64) -> u64 {
+    if n_z > MAX_STEPS_LIMIT {
+        return n_z;
+    }
+    match SaleemCircle::new(spec).counted(MAX_STEPS_LIMIT) {
+        Ok(circle) => circle
+            .remaining_steps()
+            .expect("the circle's steps are counted by the dry run")
+            .max(n_z),
+        Err(refused) => {
+            refused
+                .limit
+                .expect("a circle is refused only for maxSteps")
+                .at_least
+        }
+    }
 }
 
 /// Which of the two "axes" of Saleem's helix line steps every iteration.
