@@ -46,6 +46,55 @@ fn line_strategy(dims: std::ops::RangeInclusive<usize>) -> impl Strategy<Value =
         })
 }
 
+/// How far a passive axis of [`nearly_aligned_line`] moves.
+#[derive(Clone, Copy, Debug)]
+enum Passive {
+    Still,
+    /// Up to this many units.
+    Units(i64),
+    /// Up to the major axis's |Δ| over this.
+    Fraction(i64),
+}
+
+/// A line along one axis or nearly: a random major axis of |Δ| up to
+/// 30,000, each other axis still, a few units, or up to 1/16 or 1/1024 of
+/// the major's; any direction. CNC's commonest moves, on which walk6's
+/// recording loop takes shortcuts of its own (a batch of the major axis's
+/// steps at once).
+fn nearly_aligned_line(
+    dims: std::ops::RangeInclusive<usize>,
+) -> impl Strategy<Value = (Point, Point)> {
+    let passive = prop_oneof![
+        Just(Passive::Still),
+        Just(Passive::Units(3)),
+        Just(Passive::Fraction(16)),
+        Just(Passive::Fraction(1024)),
+    ];
+    (
+        dims,
+        0usize..MAX_AXES,
+        1i64..30_000,
+        prop::array::uniform6(passive),
+        prop::array::uniform6(0i64..i64::MAX),
+        prop::array::uniform6(any::<bool>()),
+        prop::array::uniform6(-1000i64..1000),
+    )
+        .prop_map(|(dims, major, length, passive, raw, negative, start)| {
+            let major = major % dims;
+            let mut to = start;
+            for axis in 0..dims {
+                let m = match passive[axis] {
+                    _ if axis == major => length,
+                    Passive::Still => 0,
+                    Passive::Units(n) => raw[axis] % (n.min(length) + 1),
+                    Passive::Fraction(over) => raw[axis] % (length / over + 1),
+                };
+                to[axis] += if negative[axis] { -m } else { m };
+            }
+            (Point::new(&start[..dims]), Point::new(&to[..dims]))
+        })
+}
+
 fn tie_strategy() -> impl Strategy<Value = TiePolicy> {
     prop_oneof![Just(TiePolicy::Advance), Just(TiePolicy::Hold)]
 }
@@ -318,6 +367,18 @@ proptest! {
         let (start, end) = (Point::new(&start), Point::new(&end));
         for order in [TieAxis::Lower, TieAxis::Higher] {
             common::check_fill(|| Walk6::new(start, end, order), chunk).map_err(TestCaseError::fail)?;
+        }
+    }
+
+    #[test]
+    fn walk6_along_one_axis_or_nearly_takes_the_rule_s_steps(
+        (from, to) in nearly_aligned_line(2..=6), chunk in 1usize..5000
+    ) {
+        // A line along one axis fills its steps at once; one whose passive
+        // axes step seldom takes its batches' rounds where none steps
+        // eight at a time, or a whole batch at once.
+        for order in [TieAxis::Lower, TieAxis::Higher] {
+            common::check_fill(|| Walk6::new(from, to, order), chunk).map_err(TestCaseError::fail)?;
         }
     }
 
