@@ -58,9 +58,9 @@ enum Passive {
 
 /// A line along one axis or nearly: a random major axis of |Δ| up to
 /// 30,000, each other axis still, a few units, or up to 1/16 or 1/1024 of
-/// the major's; any direction. CNC's commonest moves, on which walk6's
-/// recording loop takes shortcuts of its own (a batch of the major axis's
-/// steps at once).
+/// the major's; any direction. CNC's commonest moves, on which the
+/// recording loops take shortcuts of their own (a batch of the major
+/// axis's steps at once, or a block past the finish rule's proven span).
 fn nearly_aligned_line(
     dims: std::ops::RangeInclusive<usize>,
 ) -> impl Strategy<Value = (Point, Point)> {
@@ -383,6 +383,23 @@ proptest! {
     }
 
     #[test]
+    fn float_rules_along_one_axis_or_nearly_take_the_rule_s_steps(
+        (from, to) in nearly_aligned_line(2..=3), tie in tie_strategy(), chunk in 1usize..9000
+    ) {
+        // A passive axis with a few units to go (or all but a few) keeps
+        // the finish rule's proven span short over most of such a line:
+        // the DDA and Liu's rule run blocks past it unguarded, each kept
+        // whole or run again guarded up to the first step the finish rule
+        // changes.
+        common::check_fill(|| Dda::new(from, to), chunk).map_err(TestCaseError::fail)?;
+        if from.dims() == 3 {
+            for decimals in [0, 1, 4, 10] {
+                common::check_fill(|| LiuFloat::new(from, to, tie, decimals), chunk).map_err(TestCaseError::fail)?;
+            }
+        }
+    }
+
+    #[test]
     fn walk6_visits_exactly_the_cells_the_segment_passes_through(
         (from, to) in line_strategy(2..=6), lower in any::<bool>()
     ) {
@@ -595,6 +612,18 @@ fn integer_rules_record_the_longest_lines_as_they_step() {
             Bresenham2d::new(from2, to2, TiePolicy::Hold, Variant::Corrected),
         );
     }
+}
+
+#[test]
+fn the_dda_fills_the_finish_rule_s_steps_where_f64_drifts() {
+    // line_goldens' line near 2^29, whose y accumulator ends more than half
+    // a cell short: the finish rule forces y on the last step, in a block
+    // the fill runs unguarded past the proven span, which is run again
+    // guarded up to that step.
+    let y0 = (1i64 << 29) + 1;
+    let from = Point::new(&[0, y0]);
+    let to = Point::new(&[12_000_000, y0 + 4_000_001]);
+    common::check_fill(|| Dda::new(from, to), 70_000).unwrap();
 }
 
 #[test]

@@ -318,6 +318,17 @@ pub const GUARD_LABELS: &[&str] = &["rule", "held", "forced"];
 /// its own).
 pub const MIN_UNGUARDED_SPAN: usize = 16;
 
+/// Steps a fill loop runs unguarded where the span the finish rule is
+/// proven to leave alone is shorter than [`MIN_UNGUARDED_SPAN`], then
+/// checks ([`Unguarded::steps_as_guarded`]): on a line whose passive axis
+/// has a few units (or all but a few) to go over many steps that span
+/// stays that short, and such a line ran guarded almost whole, 4 to 7
+/// times slower per step. Where the check fails (once per free axis on a
+/// line at most: the axis is then held or forced to its end), the block's
+/// steps before the one the finish rule changes are taken again from where
+/// it began: at most this many steps.
+pub const UNCHECKED_BLOCK: usize = 1024;
+
 /// What [`Guard::unguarded`] finds: which axes the finish rule leaves to
 /// their rule, which it forces, and for how many steps.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -329,6 +340,56 @@ pub struct Unguarded<const DIMS: usize> {
     pub forced: [bool; DIMS],
     /// Steps over which this holds.
     pub span: u64,
+}
+
+impl<const DIMS: usize> Unguarded<DIMS> {
+    /// How many of `out`, steps taken unguarded as this plan runs them
+    /// (free axes by their rule, forced ones always, held ones never) from
+    /// `units_left` units per axis to `units_after`, with `steps_left`
+    /// steps (the plan's), the finish rule would have left alone: all of
+    /// them, or those before the first it would have changed. Past
+    /// [`Unguarded::span`] the plan is not proven: this checks a block a
+    /// fill loop ran unguarded past it ([`UNCHECKED_BLOCK`]).
+    ///
+    /// A free axis with u units left, stepped c_j times before step j, is
+    /// held at step j when its rule wants a step with c_j = u, and forced
+    /// when its rule holds it with u - c_j >= steps_left - j. Neither
+    /// happens in the block when the axis stepped at most u times in it
+    /// and held at most steps_left - u times (the holds before step j,
+    /// j - c_j, only grow): one test per axis from the units before and
+    /// after, and a pass over the steps only where it fails (at most once
+    /// per free axis on a line: the axis is then held or forced to its
+    /// end). Forced and held axes stay so.
+    pub fn steps_as_guarded(
+        &self,
+        units_left: &[i64; DIMS],
+        units_after: &[i64; DIMS],
+        steps_left: u64,
+        toward: &[Step; DIMS],
+        out: &[Step],
+    ) -> usize {
+        let free = &self.free[..self.free_count];
+        let steps = out.len() as i64;
+        let within = |&axis: &usize| {
+            let (units, moved) = (units_left[axis], units_left[axis] - units_after[axis]);
+            moved <= units && steps - moved <= steps_left as i64 - units
+        };
+        if free.iter().all(within) {
+            return out.len();
+        }
+        let mut moved = [0i64; DIMS];
+        for (j, step) in out.iter().enumerate() {
+            for &axis in free {
+                let wants = step.0 & toward[axis].0 != 0;
+                let units = units_left[axis] - moved[axis];
+                if Guard::moves(wants, units, steps_left - j as u64) != wants {
+                    return j;
+                }
+                moved[axis] += wants as i64;
+            }
+        }
+        out.len()
+    }
 }
 
 impl Guard {
@@ -516,6 +577,57 @@ mod tests {
                     left[axis] -= moves as i64;
                 }
             }
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
+        /// Past the unguarded span: for any wants of free axes (run by
+        /// their rule alone, as a fill loop runs them) over a block of any
+        /// length, `steps_as_guarded` keeps exactly the steps before the
+        /// first that `Guard::apply` would change. The rule is random but
+        /// leans to steps or holds, so that axes run out of units, or of
+        /// steps, within the block; short lines and blocks make the cases
+        /// at the bounds common.
+        #[test]
+        fn steps_run_unguarded_are_kept_up_to_the_first_the_finish_rule_changes(
+            steps_left in 1u64..24,
+            units in proptest::array::uniform3(0u64..=24),
+            lean in proptest::array::uniform3(0u64..=4),
+            block in 0usize..24,
+            wants_seed in proptest::num::u64::ANY,
+        ) {
+            let left: [i64; 3] = units.map(|u| u.min(steps_left) as i64);
+            let plan = Guard::unguarded(&left, steps_left);
+            let toward: [Step; 3] = std::array::from_fn(|a| Step::along(a, if a == 1 { -1 } else { 1 }));
+            let block = block.min(steps_left as usize);
+            let mut seed = wants_seed;
+            let (mut unguarded, mut after) = (Vec::new(), left);
+            let (mut guarded_left, mut first_changed) = (left, block);
+            for j in 0..block {
+                let mut step = Step::NONE;
+                for axis in 0..3 {
+                    seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    // Wants a step with probability lean / 4.
+                    let wants = (seed >> 62) < lean[axis];
+                    let free = plan.free[..plan.free_count].contains(&axis);
+                    let moves = if free { wants } else { plan.forced[axis] };
+                    if moves {
+                        step = step.with(axis, toward[axis].delta(axis));
+                        after[axis] -= 1;
+                    }
+                    let (guarded, _) = Guard::apply(moves, guarded_left[axis], steps_left - j as u64);
+                    if guarded != moves && first_changed == block {
+                        first_changed = j;
+                    }
+                    guarded_left[axis] -= guarded as i64;
+                }
+                unguarded.push(step);
+            }
+            proptest::prop_assert_eq!(
+                plan.steps_as_guarded(&left, &after, steps_left, &toward, &unguarded),
+                first_changed
+            );
         }
     }
 
