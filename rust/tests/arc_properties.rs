@@ -294,6 +294,27 @@ proptest! {
     }
 
     #[test]
+    fn a_helix_whose_arc_steps_every_other_iteration_or_less_records_the_rule_s_steps(
+        arc in prop_oneof![arc_strategy(3), arc_strategy(40), arc_strategy(300)],
+        over_twice in -2i64..=2,
+        times in prop_oneof![Just(2i64), 2i64..8],
+        hold in any::<bool>(),
+        chunk in prop_oneof![Just(4096usize), 1usize..9000],
+    ) {
+        // The linear axis leading and the arc stepping in at most every
+        // other iteration (n_z >= 2 n_c), where the helix puts the arc's
+        // steps, made by the circle's own fill, where its line says, 4,096
+        // iterations at a time; around n_z = 2 n_c, where a block's arc
+        // steps fill its arrays, and rises up to 8 n_c, both directions.
+        let tie = if hold { TiePolicy::Hold } else { TiePolicy::Advance };
+        let (_, circle) = counted_circle(&arc.request("circle", 0, ""));
+        let n_c = circle.remaining_steps().unwrap() as i64;
+        let rise = times * n_c + if times == 2 { over_twice } else { 0 };
+        let rise = if over_twice < 0 { -rise } else { rise };
+        check_fills(&arc.request("helix", rise, ""), tie, chunk)?;
+    }
+
+    #[test]
     fn wide_circles_record_the_rule_s_steps_in_the_trace_s_chunks(
         arc in arc_strategy(5000),
         rise in prop_oneof![Just(0i64), -3000i64..3000],

@@ -441,8 +441,12 @@ impl Stepper for SaleemHelix {
     }
 
     /// The same iterations as [`Stepper::next_step`], without decisions:
-    /// the circle's recording loop ([`SaleemCircle::weave_fill`]) with the
-    /// line's term woven in when the linear axis leads; when the arc does,
+    /// when the linear axis leads and the arc steps in at most every other
+    /// iteration, the linear step in every slot and the arc's steps from
+    /// the circle's own fill put in where the line's term steps
+    /// ([`Term::each_step_seldom`]); when it leads and the arc steps more
+    /// often, the circle's recording loop ([`SaleemCircle::weave_fill`])
+    /// with the line's term woven in; when the arc leads,
     /// the circle's own fill (its stretches known in closed form stepped
     /// in pieces side by side) and the line's steps put in after
     /// ([`Term::or_steps_into`]); the circle's few correction steps by its
@@ -464,6 +468,30 @@ impl Stepper for SaleemHelix {
                 let arc = self.circle.fill(out);
                 debug_assert_eq!(arc.steps, taken, "the arc steps every iteration");
                 line.or_steps_into(&mut value, out, linear);
+            }
+            // The linear axis steps every iteration and the arc seldom (at
+            // most every other one): every slot the linear step, the arc's
+            // steps made by the circle's own fill and put in where the
+            // term's jumps say. Woven into the circle's loop, an iteration
+            // at a time, such a helix stepped about a third as fast as one
+            // whose arc leads (r = 300,000 rising 5,000,000: 700 M steps/s
+            // natively against 2,300 M).
+            Major::Linear if line.steps_seldom() => {
+                out.fill(Step(linear));
+                for block in out.chunks_mut(SELDOM_ARC_BLOCK) {
+                    let mut at = [0u16; SELDOM_ARC_BLOCK / 2];
+                    let mut arc_steps = 0;
+                    line.each_step_seldom(&mut value, block.len(), |index| {
+                        at[arc_steps] = index as u16;
+                        arc_steps += 1;
+                    });
+                    let mut arc = [Step::NONE; SELDOM_ARC_BLOCK / 2];
+                    let filled = self.circle.fill(&mut arc[..arc_steps]);
+                    debug_assert_eq!(filled.steps, arc_steps, "the arc has n_c steps");
+                    for (&index, step) in at[..arc_steps].iter().zip(&arc[..arc_steps]) {
+                        block[index as usize].0 |= step.0;
+                    }
+                }
             }
             Major::Linear => weave(&mut self.circle, out, || {
                 (line.advance_mask(&mut value) != 0, linear)
@@ -516,6 +544,10 @@ impl Stepper for SaleemHelix {
         )
     }
 }
+
+/// Iterations of a helix whose arc steps seldom taken at a time: the arc
+/// steps in at most half of them (two arrays of half as many on the stack).
+const SELDOM_ARC_BLOCK: usize = 4096;
 
 /// `out.len()` iterations of a helix: `weave` says whether the arc steps
 /// and gives the linear axis's bits; the arc steps by the circle's

@@ -177,14 +177,14 @@ impl Term {
     /// increment above steps_above), so the next j is Q - 1 or Q, with
     /// Q = decrement / increment: a comparison or two per step of the axis.
     pub fn or_steps_into(&self, value: &mut i64, out: &mut [Step], bits: u16) {
-        let (increment, decrement, above) = (self.increment, self.decrement, self.steps_above);
+        let (increment, decrement) = (self.increment, self.decrement);
         if increment == 0 {
             // The value stays in its window (steps_above - decrement,
             // steps_above] and never passes steps_above: the axis never
             // steps (a helix that does not rise). Tested step by step, it
             // made such a helix four times as slow as the circle it is.
             debug_assert!(
-                *value <= above,
+                *value <= self.steps_above,
                 "a value {value} outside its window: {self:?}"
             );
             return;
@@ -195,7 +195,28 @@ impl Term {
             }
             return;
         }
-        let steps = out.len() as i64;
+        self.each_step_seldom(value, out.len(), |index| out[index].0 |= bits);
+    }
+
+    /// Whether this term's axis steps at most every other step, and at all:
+    /// what [`Term::each_step_seldom`] asks.
+    pub fn steps_seldom(&self) -> bool {
+        self.increment > 0 && 2 * self.increment <= self.decrement
+    }
+
+    /// Calls `mark` with the index of each of the next `steps` steps at
+    /// which this term steps its axis, in order, `value` being the one the
+    /// first of them compares (moved on past them all), for a term that
+    /// [`Term::steps_seldom`]: found by jumping as [`Term::or_steps_into`]
+    /// says.
+    #[inline(always)]
+    pub fn each_step_seldom(&self, value: &mut i64, steps: usize, mut mark: impl FnMut(usize)) {
+        debug_assert!(
+            self.steps_seldom(),
+            "jumps need an axis that steps seldom: {self:?}"
+        );
+        let (increment, decrement, above) = (self.increment, self.decrement, self.steps_above);
+        let steps = steps as i64;
         let mut v = *value;
         let first = if v > above {
             0
@@ -206,7 +227,7 @@ impl Term {
             *value = v + steps * increment;
             return;
         }
-        out[first as usize].0 |= bits;
+        mark(first as usize);
         v += (first + 1) * increment - decrement;
         // The state after a step of the axis: `at`, the index past it, and
         // v. After every step v lies in the window (low, low + increment],
@@ -239,7 +260,7 @@ impl Term {
                     seeded = false;
                     break;
                 }
-                out[(next - 1) as usize].0 |= bits;
+                mark((next - 1) as usize);
                 (at, v) = (next, after);
                 *chain = (at, v);
             }
@@ -250,7 +271,7 @@ impl Term {
                         break;
                     }
                     for (at, _) in next {
-                        out[(at - 1) as usize].0 |= bits;
+                        mark((at - 1) as usize);
                     }
                     chains = next;
                 }
@@ -265,7 +286,7 @@ impl Term {
             if next > steps {
                 break;
             }
-            out[(next - 1) as usize].0 |= bits;
+            mark((next - 1) as usize);
             (at, v) = (next, after);
         }
         *value = v + (steps - at) * increment;
