@@ -651,20 +651,27 @@ fn small_arcs(reach: i64) -> impl Iterator<Item = (i64, i64, [i64; 2], bool)> {
         })
 }
 
+/// The circle request of a counter-clockwise arc in the xy plane about the
+/// origin, from `start` to `end` with `turns` extra turns.
+fn counter_clockwise_about_origin(start: [i64; 2], end: [i64; 2], turns: u64) -> String {
+    let arc = Arc {
+        plane: 0,
+        ccw: true,
+        center: [0, 0, 0],
+        start,
+        end,
+        turns,
+    };
+    arc.request("circle", 0, "")
+}
+
 #[test]
 fn the_dry_run_counts_every_small_circle_and_arc_exactly() {
     // Every start within 40 of the center, as a full circle (a turn more
     // from every other start) and as arcs ending near each ray.
     for (u, v, end, full) in small_arcs(40) {
-        let arc = Arc {
-            plane: 0,
-            ccw: true,
-            center: [0, 0, 0],
-            start: [u, v],
-            end,
-            turns: (full && (u + v) % 2 == 0) as u64,
-        };
-        check_plan(&arc.request("circle", 0, "")).unwrap();
+        let turns = (full && (u + v) % 2 == 0) as u64;
+        check_plan(&counter_clockwise_about_origin([u, v], end, turns)).unwrap();
     }
 }
 
@@ -674,15 +681,8 @@ fn the_dry_run_counts_every_small_circle_and_arc_of_many_turns_exactly() {
     // every start within 12 of the center, full circles and arcs, with 3
     // to 6 turns added (a skip from the third crossing on).
     for (u, v, end, _) in small_arcs(12) {
-        let arc = Arc {
-            plane: 0,
-            ccw: true,
-            center: [0, 0, 0],
-            start: [u, v],
-            end,
-            turns: 3 + (u + 2 * v).rem_euclid(4) as u64,
-        };
-        check_plan(&arc.request("circle", 0, "")).unwrap();
+        let turns = 3 + (u + 2 * v).rem_euclid(4) as u64;
+        check_plan(&counter_clockwise_about_origin([u, v], end, turns)).unwrap();
     }
 }
 
