@@ -2,7 +2,7 @@
 //! with the integer rules: add Δa/n to a float accumulator per axis every
 //! step and round it to the nearest cell.
 
-use super::{GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, UNCHECKED_BLOCK, step_target};
+use super::{GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
 use crate::request::{FROM, MAX_STEPS, TO};
@@ -234,17 +234,9 @@ impl Dda {
             // Where the finish rule changes nothing, the rule runs on the
             // free axes alone (most of a line); near its ends, guarded.
             let plan = Guard::unguarded(&left, remaining);
-            let proven = (plan.span as usize).min(taken - done);
             // Where the proven span is too short, a block unguarded all
-            // the same, checked after. (Not past a longer one: a block
-            // that fails is run again guarded from its start, and chords
-            // of Liu's rule at 1 decimal, which the finish rule acts on
-            // near every end, took 2.2 times as long.)
-            let span = if proven >= MIN_UNGUARDED_SPAN {
-                proven
-            } else {
-                UNCHECKED_BLOCK.min(taken - done)
-            };
+            // the same, checked after.
+            let (proven, span) = plan.run_span(taken - done);
             let mut guarded = if DIMS <= 3 {
                 MIN_UNGUARDED_SPAN.min(taken - done)
             } else {

@@ -9,8 +9,8 @@
 //! decimals, the slope k itself is rounded and the error accumulates.
 
 use super::{
-    GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, UNCHECKED_BLOCK, Unguarded, axis_list,
-    step_target, wang_discriminant,
+    GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, Unguarded, axis_list, step_target,
+    wang_discriminant,
 };
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::{Error, counted};
@@ -457,17 +457,9 @@ impl Stepper for LiuFloat {
             // Where the finish rule changes nothing, the rule runs on the
             // free axes alone (most of a line); near its ends, guarded.
             let plan = Guard::unguarded(&left, remaining);
-            let proven = (plan.span as usize).min(body - done);
             // Where the proven span is too short, a block unguarded all
-            // the same, checked after. (Not past a longer one: a block
-            // that fails is run again guarded from its start, and chords
-            // of Liu's rule at 1 decimal, which the finish rule acts on
-            // near every end, took 2.2 times as long.)
-            let span = if proven >= MIN_UNGUARDED_SPAN {
-                proven
-            } else {
-                UNCHECKED_BLOCK.min(body - done)
-            };
+            // the same, checked after.
+            let (proven, span) = plan.run_span(body - done);
             let rule = ScaledRule {
                 toward,
                 threshold,

@@ -327,7 +327,7 @@ pub const MIN_UNGUARDED_SPAN: usize = 16;
 /// line at most: the axis is then held or forced to its end), the block's
 /// steps before the one the finish rule changes are taken again from where
 /// it began: at most this many steps.
-pub const UNCHECKED_BLOCK: usize = 1024;
+const UNCHECKED_BLOCK: usize = 1024;
 
 /// What [`Guard::unguarded`] finds: which axes the finish rule leaves to
 /// their rule, which it forces, and for how many steps.
@@ -343,6 +343,24 @@ pub struct Unguarded<const DIMS: usize> {
 }
 
 impl<const DIMS: usize> Unguarded<DIMS> {
+    /// How many of the next `steps` steps a fill runs unguarded, as
+    /// (proven, run): the span this plan proves (at most `steps`), and
+    /// that span where it is at least [`MIN_UNGUARDED_SPAN`], else a block
+    /// of up to [`UNCHECKED_BLOCK`] run unguarded all the same and checked
+    /// after ([`Self::steps_as_guarded`]). Not past a longer proven span: a
+    /// block that fails is run again from its start, and chords of Liu's
+    /// rule at 1 decimal, which the finish rule acts on near every end,
+    /// took 2.2 times as long.
+    pub fn run_span(&self, steps: usize) -> (usize, usize) {
+        let proven = (self.span as usize).min(steps);
+        let run = if proven >= MIN_UNGUARDED_SPAN {
+            proven
+        } else {
+            UNCHECKED_BLOCK.min(steps)
+        };
+        (proven, run)
+    }
+
     /// How many of `out`, steps taken unguarded as this plan runs them
     /// (free axes by their rule, forced ones always, held ones never) from
     /// `units_left` units per axis to `units_after`, with `steps_left`
