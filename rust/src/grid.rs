@@ -7,6 +7,7 @@
 use crate::error::{Error, number_text};
 use crate::range::IntegerRange;
 use std::fmt;
+use std::mem::MaybeUninit;
 
 /// Most axes a path may have: X Y Z A B C.
 pub const MAX_AXES: usize = 6;
@@ -325,6 +326,30 @@ const LANE_CAPACITY: usize = (1 << LANE_BITS) - 1;
 /// that no step leads from one to the other.
 pub fn jumps(before: &[i64], now: &[i64]) -> bool {
     before.iter().zip(now).any(|(a, b)| (a - b).abs() > 1)
+}
+
+/// Slots of steps every one of which has been written, as those steps:
+/// what a recording loop reads back of the room it writes into
+/// ([`crate::trace::Stepper::fill`]). The standard library's
+/// `assume_init_ref` on slices is newer than this crate's rust-version.
+///
+/// # Safety
+/// Every slot of `slots` has been written.
+#[inline(always)]
+pub unsafe fn written_steps(slots: &[MaybeUninit<Step>]) -> &[Step] {
+    // SAFETY: MaybeUninit<Step> has Step's layout, and every slot holds a
+    // step (the caller's promise).
+    unsafe { &*(slots as *const [MaybeUninit<Step>] as *const [Step]) }
+}
+
+/// [`written_steps`], mutable.
+///
+/// # Safety
+/// Every slot of `slots` has been written.
+#[inline(always)]
+pub unsafe fn written_steps_mut(slots: &mut [MaybeUninit<Step>]) -> &mut [Step] {
+    // SAFETY: as in written_steps.
+    unsafe { &mut *(slots as *mut [MaybeUninit<Step>] as *mut [Step]) }
 }
 
 /// Where a run of steps moves, per axis. Applying each step to a point

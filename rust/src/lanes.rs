@@ -7,6 +7,7 @@
 //! instruction on the vector targets.
 
 use crate::grid::{MAX_AXES, Step};
+use std::mem::MaybeUninit;
 
 // Codes are packed to signed 16 bits and stored eight as 16 bytes: a
 // code's bits (moving 0..MAX_AXES, negative 8..8 + MAX_AXES) stay below
@@ -43,7 +44,7 @@ impl Quad {
     /// Writes the low 16 bits of each lane of `lo`, then of `hi`, in lane
     /// order, to `group`'s eight steps (each lane a code, below 2^14).
     #[inline(always)]
-    pub(crate) fn store_codes([lo, hi]: [Quad; 2], group: &mut [Step]) {
+    pub(crate) fn store_codes([lo, hi]: [Quad; 2], group: &mut [MaybeUninit<Step>]) {
         Codes8::narrow([lo, hi]).store(group);
     }
 }
@@ -194,11 +195,11 @@ impl Codes8 {
     }
     /// Writes the eight lanes to `group`'s eight steps, as 16 bytes.
     #[inline(always)]
-    pub(crate) fn store(self, group: &mut [Step]) {
+    pub(crate) fn store(self, group: &mut [MaybeUninit<Step>]) {
         use core::arch::wasm32::{v128, v128_store};
         assert_eq!(group.len(), 8, "eight steps");
-        // SAFETY: `group` is 8 Steps, 16 bytes (Step is a u16), borrowed
-        // mutably; a wasm store needs no alignment.
+        // SAFETY: `group` is 8 slots of a Step, 16 bytes (Step is a u16),
+        // borrowed mutably; a wasm store needs no alignment.
         unsafe { v128_store(group.as_mut_ptr().cast::<v128>(), self.0) }
     }
 }
@@ -291,11 +292,11 @@ impl Codes8 {
     }
     /// Writes the eight lanes to `group`'s eight steps, as 16 bytes.
     #[inline(always)]
-    pub(crate) fn store(self, group: &mut [Step]) {
+    pub(crate) fn store(self, group: &mut [MaybeUninit<Step>]) {
         use core::arch::x86_64::{__m128i, _mm_storeu_si128};
         assert_eq!(group.len(), 8, "eight steps");
-        // SAFETY: `group` is 8 Steps, 16 bytes (Step is a u16), borrowed
-        // mutably; the store needs no alignment.
+        // SAFETY: `group` is 8 slots of a Step, 16 bytes (Step is a u16),
+        // borrowed mutably; the store needs no alignment.
         unsafe { _mm_storeu_si128(group.as_mut_ptr().cast::<__m128i>(), self.0) }
     }
 }
@@ -382,10 +383,10 @@ impl Codes8 {
         self.interleave(other, 4, 4)
     }
     /// Writes the eight lanes to `group`'s eight steps.
-    pub(crate) fn store(self, group: &mut [Step]) {
+    pub(crate) fn store(self, group: &mut [MaybeUninit<Step>]) {
         assert_eq!(group.len(), 8, "eight steps");
         for (step, lane) in group.iter_mut().zip(self.0) {
-            *step = Step(lane);
+            step.write(Step(lane));
         }
     }
 }
@@ -395,9 +396,10 @@ mod tests {
     use super::*;
 
     fn stored(codes: Codes8) -> [u16; 8] {
-        let mut out = [Step::NONE; 8];
+        let mut out = [MaybeUninit::uninit(); 8];
         codes.store(&mut out);
-        out.map(|s| s.0)
+        // SAFETY: `store` wrote all eight.
+        out.map(|s| unsafe { s.assume_init() }.0)
     }
 
     #[test]

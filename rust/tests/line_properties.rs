@@ -19,7 +19,7 @@ use voxpath::line::nd::Nd;
 use voxpath::line::regions_wang::RegionsWang;
 use voxpath::line::walk6::{Crossing, Walk6};
 use voxpath::request::TiePolicy;
-use voxpath::trace::Stepper;
+use voxpath::trace::{Stepper, fill_onto};
 
 /// Algorithms that move one axis per step (sum |Δ| steps); the others step
 /// every active axis every time (max |Δ| steps).
@@ -560,8 +560,11 @@ fn nd_and_bresenham_on_the_longest_lines() {
 
 /// The first LONG_STEPS steps as a trace records them.
 fn first_steps_filled<S: Stepper>(mut stepper: S) -> Vec<Step> {
-    let mut out = vec![Step::NONE; LONG_STEPS];
-    assert_eq!(stepper.fill(&mut out).steps, LONG_STEPS);
+    let mut out = Vec::new();
+    assert_eq!(
+        fill_onto(&mut stepper, &mut out, LONG_STEPS).steps(),
+        LONG_STEPS
+    );
     out
 }
 

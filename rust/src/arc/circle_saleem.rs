@@ -39,6 +39,7 @@ use crate::trace::{
     path_too_long,
 };
 use std::fmt::Write;
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "circle";
 
@@ -500,7 +501,7 @@ impl SaleemCircle {
         //
         // Where the closed form knows the path ([`Self::leap`]), the count
         // jumps along it: a few isqrts an octant instead of a step each.
-        let mut scratch = [Step::NONE; 1024];
+        let mut scratch = [MaybeUninit::uninit(); 1024];
         let mut taken = 0u64;
         // Where the pass that last crossed the ray ended, the steps taken
         // by then, and the crossings left then (see the lap skip below).
@@ -768,7 +769,7 @@ impl SaleemCircle {
     #[inline(always)]
     pub(crate) fn weave_fill(
         &mut self,
-        out: &mut [Step],
+        out: &mut [MaybeUninit<Step>],
         weave: &mut impl FnMut() -> (bool, u16),
     ) -> usize {
         let mut k = 0;
@@ -783,7 +784,11 @@ impl SaleemCircle {
     /// it), ending where the point leaves that octant (or the circle part
     /// ends, or `out` is full).
     #[inline(always)]
-    fn octant_fill(&mut self, out: &mut [Step], weave: &mut impl FnMut() -> (bool, u16)) -> usize {
+    fn octant_fill(
+        &mut self,
+        out: &mut [MaybeUninit<Step>],
+        weave: &mut impl FnMut() -> (bool, u16),
+    ) -> usize {
         match octant_ahead(self.pos) {
             Some(1) => self.octant_run_watching::<1>(out, weave),
             Some(2) => self.octant_run_watching::<2>(out, weave),
@@ -812,7 +817,7 @@ impl SaleemCircle {
     #[inline(always)]
     fn octant_run_watching<const K: u8>(
         &mut self,
-        out: &mut [Step],
+        out: &mut [MaybeUninit<Step>],
         weave: &mut impl FnMut() -> (bool, u16),
     ) -> usize {
         if self.watches_ray(K) {
@@ -926,7 +931,7 @@ impl SaleemCircle {
     /// in [`LANES`] pieces stepped side by side; the rest of each octant
     /// (its last steps near the diagonal, the ray through the end) goes
     /// step by step.
-    pub(crate) fn arc_fill(&mut self, out: &mut [Step]) -> usize {
+    pub(crate) fn arc_fill(&mut self, out: &mut [MaybeUninit<Step>]) -> usize {
         let mut k = 0;
         while k < out.len() && self.phase == Phase::Circle {
             k += match octant_ahead(self.pos) {
@@ -963,7 +968,7 @@ impl SaleemCircle {
     /// The point ends where the closed form puts the last piece's end. The
     /// circle of r = 300,000 took 4.3 ms to trace in Node, 2.0 ms so.
     #[inline(always)]
-    fn laned_fill<const K: u8>(&mut self, out: &mut [Step]) -> usize {
+    fn laned_fill<const K: u8>(&mut self, out: &mut [MaybeUninit<Step>]) -> usize {
         if out.len() < LANES * LEAST_LANE_STEPS || self.radius_sq < SMALLEST_LANED_RADIUS_SQ {
             return 0;
         }
@@ -992,13 +997,13 @@ impl SaleemCircle {
         });
         let taken = LANES * lane_steps;
         let mut pieces = out[..taken].chunks_exact_mut(lane_steps);
-        let mut outs: [&mut [Step]; LANES] =
+        let mut outs: [&mut [MaybeUninit<Step>]; LANES] =
             std::array::from_fn(|_| pieces.next().expect("LANES pieces"));
         for i in 0..lane_steps {
             for (lane, piece) in lanes.iter_mut().zip(outs.iter_mut()) {
                 let [sum, fast_term, slow_term] = lane;
                 let moves = slow_steps_in_octant::<K>(*sum);
-                piece[i] = Step(if moves { move_code } else { stay_code });
+                piece[i].write(Step(if moves { move_code } else { stay_code }));
                 *fast_term += 2;
                 *sum += 2 * *fast_term + if moves { 2 * *slow_term + 2 } else { 0 };
                 *slow_term += if moves { 2 } else { 0 };
@@ -1037,7 +1042,7 @@ impl SaleemCircle {
         &mut self,
         run: &NearestRun,
         piece_steps: usize,
-        out: &mut [Step],
+        out: &mut [MaybeUninit<Step>],
     ) -> usize {
         let (fast, slow, stay_code, move_code) = self.octant_moves(K);
         let starts: [[i64; 3]; VECTOR_PIECES] = std::array::from_fn(|piece| {
@@ -1181,7 +1186,7 @@ impl SaleemCircle {
     #[inline(always)]
     fn octant_run<const K: u8, const WATCH_RAY: bool>(
         &mut self,
-        out: &mut [Step],
+        out: &mut [MaybeUninit<Step>],
         weave: &mut impl FnMut() -> (bool, u16),
     ) -> usize {
         let (fast, slow, stay_code, move_code) = self.octant_moves(K);
@@ -1221,7 +1226,7 @@ impl SaleemCircle {
                 arc_steps += 1;
             }
             let arc_code = if moves { move_code } else { stay_code };
-            *slot = Step(if arc { arc_code } else { 0 } | bits);
+            slot.write(Step(if arc { arc_code } else { 0 } | bits));
             taken += 1;
         }
         self.pos = pos;
@@ -1232,7 +1237,7 @@ impl SaleemCircle {
             let (step, _) = self
                 .next_step()
                 .expect("the step onto the ray is a circle step or a correction");
-            out[taken] = Step(step.0 | bits);
+            out[taken].write(Step(step.0 | bits));
             taken += 1;
         }
         taken
@@ -1400,15 +1405,15 @@ impl Stepper for SaleemCircle {
 
     /// The circle part by [`Self::arc_fill`], the few correction steps
     /// by `next_step`; the displacement is where the point moved.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let before = self.pos;
         let mut steps = self.arc_fill(out);
-        steps += fill_by_next_step(self, &mut out[steps..]).steps;
+        steps += fill_by_next_step(self, &mut out[steps..]).steps();
         let delta = [self.pos[0] - before[0], self.pos[1] - before[1]];
-        Filled {
-            steps,
-            displacement: self.frame.displacement(delta),
-        }
+        // SAFETY: arc_fill wrote the first steps it counts (each of its
+        // loops writes from the start of the slots it is given), and
+        // fill_by_next_step the ones it took after them.
+        unsafe { Filled::written(steps, self.frame.displacement(delta)) }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

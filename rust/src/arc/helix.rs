@@ -31,7 +31,7 @@ use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
 use crate::error::Error;
 use crate::figure::{DecisionFigure, FigureKind};
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, Point, Step, written_steps, written_steps_mut};
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
 use crate::line::step_target;
@@ -43,6 +43,7 @@ use crate::trace::{
     Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, concat_columns,
 };
 use std::fmt::Write;
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "helix";
 
@@ -453,7 +454,7 @@ impl Stepper for SaleemHelix {
     /// `next_step`. The displacement: where the
     /// arc's point moved, and on the linear axis every iteration (linear
     /// major) or as often as the term says its minor axis stepped.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let out = &mut out[..taken];
         let before = self.circle.local();
@@ -466,7 +467,9 @@ impl Stepper for SaleemHelix {
             // term woven into the circle's loop slowed it by a fifth).
             Major::Arc => {
                 let arc = self.circle.fill(out);
-                debug_assert_eq!(arc.steps, taken, "the arc steps every iteration");
+                assert_eq!(arc.steps(), taken, "the arc steps every iteration");
+                // SAFETY: the circle's fill wrote all `taken` slots.
+                let out = unsafe { written_steps_mut(out) };
                 line.or_steps_into(&mut value, out, linear);
             }
             // The linear axis steps every iteration and the arc seldom (at
@@ -477,7 +480,9 @@ impl Stepper for SaleemHelix {
             // whose arc leads (r = 300,000 rising 5,000,000: 700 M steps/s
             // natively against 2,300 M).
             Major::Linear if line.steps_seldom() => {
-                out.fill(Step(linear));
+                out.fill(MaybeUninit::new(Step(linear)));
+                // SAFETY: every slot was just written.
+                let out = unsafe { written_steps_mut(out) };
                 for block in out.chunks_mut(SELDOM_ARC_BLOCK) {
                     let mut at = [0u16; SELDOM_ARC_BLOCK / 2];
                     let mut arc_steps = 0;
@@ -485,10 +490,12 @@ impl Stepper for SaleemHelix {
                         at[arc_steps] = index as u16;
                         arc_steps += 1;
                     });
-                    let mut arc = [Step::NONE; SELDOM_ARC_BLOCK / 2];
+                    let mut arc = [MaybeUninit::uninit(); SELDOM_ARC_BLOCK / 2];
                     let filled = self.circle.fill(&mut arc[..arc_steps]);
-                    debug_assert_eq!(filled.steps, arc_steps, "the arc has n_c steps");
-                    for (&index, step) in at[..arc_steps].iter().zip(&arc[..arc_steps]) {
+                    assert_eq!(filled.steps(), arc_steps, "the arc has n_c steps");
+                    // SAFETY: the circle's fill wrote the `arc_steps` slots.
+                    let arc = unsafe { written_steps(&arc[..arc_steps]) };
+                    for (&index, step) in at[..arc_steps].iter().zip(arc) {
                         block[index as usize].0 |= step.0;
                     }
                 }
@@ -509,10 +516,10 @@ impl Stepper for SaleemHelix {
             Major::Linear => taken as i64,
         };
         displacement[self.normal] = self.normal_dir * linear_steps;
-        Filled {
-            steps: taken,
-            displacement,
-        }
+        // SAFETY: each way above writes all `taken` slots of `out`: the
+        // circle's fill (its count asserted), the linear step in every
+        // slot, or `weave`, which runs until every slot is written.
+        unsafe { Filled::written(taken, displacement) }
     }
 
     /// A tie is the line's error equal to the major count, whatever the
@@ -553,7 +560,11 @@ const SELDOM_ARC_BLOCK: usize = 4096;
 /// and gives the linear axis's bits; the arc steps by the circle's
 /// recording loop, or by its `next_step` once the circle part is over.
 #[inline(always)]
-fn weave(circle: &mut SaleemCircle, out: &mut [Step], mut weave: impl FnMut() -> (bool, u16)) {
+fn weave(
+    circle: &mut SaleemCircle,
+    out: &mut [MaybeUninit<Step>],
+    mut weave: impl FnMut() -> (bool, u16),
+) {
     let mut k = 0;
     while k < out.len() {
         if circle.in_circle_part() {
@@ -568,7 +579,7 @@ fn weave(circle: &mut SaleemCircle, out: &mut [Step], mut weave: impl FnMut() ->
             } else {
                 Step::NONE
             };
-            out[k] = Step(step.0 | bits);
+            out[k].write(Step(step.0 | bits));
             k += 1;
         }
     }

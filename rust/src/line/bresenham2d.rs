@@ -18,6 +18,7 @@ use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePo
 use crate::trace::{
     Column, ColumnKind, ColumnRole, Decision, DeviationBound, Filled, Stepper, fill_by_next_step,
 };
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "bresenham2d";
 
@@ -361,7 +362,7 @@ impl Stepper for Bresenham2d {
     /// it reaches the end coordinate by itself, so the finish rule never
     /// acts and the steps are the term's alone. The printed variant, which
     /// the finish rule holds back, takes its steps one by one.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         if self.variant == Variant::Printed {
             return fill_by_next_step(self, out);
         }
@@ -378,10 +379,8 @@ impl Stepper for Bresenham2d {
         self.minor_left -= minor_steps;
         self.printed_minor += minor_steps;
         self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            displacement,
-        }
+        // SAFETY: Terms::fill wrote every one of the `taken` slots.
+        unsafe { Filled::written(taken, displacement) }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

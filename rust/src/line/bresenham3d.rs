@@ -14,6 +14,7 @@ use crate::figure::{DecisionFigure, ErrorTerm, ErrorTerms, FigureKind};
 use crate::grid::{AXIS_NAMES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, ColumnRole, Decision, DeviationBound, Filled, Stepper};
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "bresenham3d";
 
@@ -225,7 +226,7 @@ impl Stepper for Bresenham3d {
 
     /// The steps of [`Stepper::next_step`] through the shared branch-free
     /// loop ([`Terms`]), with no decision built.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let toward = |axis| self.mirror.toward(Step::NONE, axis);
         let mut terms = Terms {
@@ -237,10 +238,8 @@ impl Stepper for Bresenham3d {
             term.resume(reached);
         }
         self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            displacement,
-        }
+        // SAFETY: Terms::fill wrote every one of the `taken` slots.
+        unsafe { Filled::written(taken, displacement) }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

@@ -4,9 +4,10 @@
 
 use super::{GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count, written_steps};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "dda";
 
@@ -188,7 +189,7 @@ impl Stepper for Dda {
 
     /// The steps of [`Stepper::next_step`], with the number of axes a
     /// constant ([`Dda::fill_axes`]) and no decision built.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         by_axis_count!(self.mirror.dims(), self.fill_axes(out))
     }
 
@@ -218,7 +219,7 @@ impl Dda {
     /// registers); the units left per axis are counted down instead of
     /// found from the position.
     #[inline(always)]
-    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) -> Filled {
+    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let toward: [Step; DIMS] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
         let sign: [i64; DIMS] = std::array::from_fn(|a| self.mirror.sign(a));
@@ -266,6 +267,8 @@ impl Dda {
                     (_, 2) => axes.unguarded::<2, 1>(free, forced, block),
                     _ => axes.unguarded::<3, 0>(free, forced, block),
                 }
+                // SAFETY: `unguarded` wrote every slot of the block.
+                let block = unsafe { written_steps(block) };
                 let kept = if span > proven {
                     plan.steps_as_guarded(&before.2, &left, remaining, &toward, block)
                 } else {
@@ -296,7 +299,7 @@ impl Dda {
                     at[axis] += sign[axis] * moves as i64;
                     left[axis] -= moves as i64;
                 }
-                *slot = step;
+                slot.write(step);
                 remaining -= 1;
             }
             done += guarded;
@@ -304,10 +307,10 @@ impl Dda {
         self.acc[..DIMS].copy_from_slice(&acc);
         self.at.coords_mut().copy_from_slice(&at);
         self.remaining = remaining;
-        Filled {
-            steps: taken,
-            displacement: std::array::from_fn(|a| if a < DIMS { at[a] - start[a] } else { 0 }),
-        }
+        let displacement = std::array::from_fn(|a| if a < DIMS { at[a] - start[a] } else { 0 });
+        // SAFETY: the loop ran until `done` reached `taken`, every slot
+        // before it written by a block or the guarded loop.
+        unsafe { Filled::written(taken, displacement) }
     }
 }
 
@@ -336,7 +339,7 @@ impl Axes<'_> {
         self,
         free: &[usize],
         forced: &[bool],
-        out: &mut [Step],
+        out: &mut [MaybeUninit<Step>],
     ) {
         let free: [usize; FREE] = std::array::from_fn(|i| free[i]);
         let mut others = (0..self.acc.len()).filter(|a| !free.contains(a));
@@ -370,7 +373,7 @@ impl Axes<'_> {
                 step |= bits[i] * moves as u16;
                 edge[i] += if moves { step_f[i] } else { 0.0 };
             }
-            *slot = Step(step);
+            slot.write(Step(step));
         }
         let n = out.len() as i64;
         for (i, &a) in free.iter().enumerate() {

@@ -12,6 +12,7 @@ use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "greedy";
 
@@ -216,7 +217,7 @@ impl Stepper for Greedy {
 
     /// The same choices as [`Stepper::next_step`] without the squared
     /// distances ([`Greedy::fill_axes`]), with the number of axes a constant.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         by_axis_count!(self.mirror.dims(), self.fill_axes(out))
     }
 
@@ -251,7 +252,7 @@ impl Greedy {
     /// candidate. Each level's rounds are written as one repeated pattern,
     /// with no comparison per step.
     #[inline(always)]
-    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) -> Filled {
+    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let toward: [Step; MAX_AXES] = std::array::from_fn(|a| self.mirror.toward(Step::NONE, a));
         // The axes in the order a tie goes: the lower axis first, or the higher.
@@ -295,7 +296,9 @@ impl Greedy {
             // the bench's line.
             let steps = &mut out[written..written + run];
             let first = count.min(run);
-            steps[..first].copy_from_slice(&round[..first]);
+            for (slot, &step) in steps.iter_mut().zip(&round[..first]) {
+                slot.write(step);
+            }
             let mut filled = first;
             while filled < run {
                 let more = filled.min(run - filled);
@@ -311,10 +314,10 @@ impl Greedy {
         }
         self.left = left;
         self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            // One step per unit no longer left, toward the end.
-            displacement: std::array::from_fn(|a| self.mirror.sign(a) * (start[a] - left[a])),
-        }
+        // One step per unit no longer left, toward the end.
+        let displacement = std::array::from_fn(|a| self.mirror.sign(a) * (start[a] - left[a]));
+        // SAFETY: each run wrote its `run` slots (its first round, then
+        // copies of what it had written), the runs end to end up to `taken`.
+        unsafe { Filled::written(taken, displacement) }
     }
 }

@@ -14,10 +14,11 @@ use super::{
 };
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::{Error, counted};
-use crate::grid::{AXIS_NAMES, Point, Step};
+use crate::grid::{AXIS_NAMES, Point, Step, written_steps};
 use crate::range::{IntegerRange, WHOLE_NUMBER};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper, fill_by_next_step};
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "liu-float";
 
@@ -366,7 +367,7 @@ impl ScaledRule {
         plan: &Unguarded<3>,
         values: &mut [i64; 3],
         left: &mut [i64; 3],
-        out: &mut [Step],
+        out: &mut [MaybeUninit<Step>],
     ) {
         let free: [usize; FREE] = std::array::from_fn(|i| plan.free[i]);
         let bits: [u16; FREE] = free.map(|a| self.toward[a].0);
@@ -385,7 +386,7 @@ impl ScaledRule {
                 moved[i] += moves as i64;
                 value[i] += k[i] - scale[i] * moves as i64;
             }
-            *slot = Step(step);
+            slot.write(Step(step));
         }
         let n = out.len() as i64;
         for axis in 0..3 {
@@ -431,7 +432,7 @@ impl Stepper for LiuFloat {
     /// rule's to the bit (a zero epsilon keeps the sign its f64 arithmetic
     /// gives it). Falls back to `next_step` where the integers could leave
     /// the exact range.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let Some(scaled) = self.scaled(taken as u64).filter(|_| taken > 0) else {
             return fill_by_next_step(self, out);
@@ -467,19 +468,20 @@ impl Stepper for LiuFloat {
                 scale: scale_by_axis,
             };
             let unguarded =
-                |values: &mut [i64; 3], left: &mut [i64; 3], block: &mut [Step]| match plan
-                    .free_count
-                {
-                    0 => rule.unguarded::<0>(&plan, values, left, block),
-                    1 => rule.unguarded::<1>(&plan, values, left, block),
-                    2 => rule.unguarded::<2>(&plan, values, left, block),
-                    _ => rule.unguarded::<3>(&plan, values, left, block),
+                |values: &mut [i64; 3], left: &mut [i64; 3], block: &mut [MaybeUninit<Step>]| {
+                    match plan.free_count {
+                        0 => rule.unguarded::<0>(&plan, values, left, block),
+                        1 => rule.unguarded::<1>(&plan, values, left, block),
+                        2 => rule.unguarded::<2>(&plan, values, left, block),
+                        _ => rule.unguarded::<3>(&plan, values, left, block),
+                    }
                 };
             if span >= MIN_UNGUARDED_SPAN {
                 let before = (values, left);
                 unguarded(&mut values, &mut left, &mut out[done..done + span]);
                 let kept = if span > proven {
-                    let block = &out[done..done + span];
+                    // SAFETY: `unguarded` wrote every slot of the block.
+                    let block = unsafe { written_steps(&out[done..done + span]) };
                     plan.steps_as_guarded(&before.1, &left, remaining, &toward, block)
                 } else {
                     span
@@ -511,7 +513,7 @@ impl Stepper for LiuFloat {
                     left[axis] -= moves as i64;
                     values[axis] += k_by_axis[axis] - scale_by_axis[axis] * moves as i64;
                 }
-                *slot = step;
+                slot.write(step);
                 remaining -= 1;
             }
             done += guarded;
@@ -523,17 +525,18 @@ impl Stepper for LiuFloat {
             }
         }
         self.remaining = remaining;
-        out[taken - 1] = self.advance().0;
-        Filled {
-            steps: taken,
-            displacement: std::array::from_fn(|a| {
-                if a < 3 {
-                    self.mirror.sign(a) * (start_left[a] - self.left[a])
-                } else {
-                    0
-                }
-            }),
-        }
+        out[taken - 1].write(self.advance().0);
+        let displacement = std::array::from_fn(|a| {
+            if a < 3 {
+                self.mirror.sign(a) * (start_left[a] - self.left[a])
+            } else {
+                0
+            }
+        });
+        // SAFETY: the loop ran until `done` reached `body` = taken - 1,
+        // every slot before it written by a block or the guarded loop, and
+        // the last one just above.
+        unsafe { Filled::written(taken, displacement) }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

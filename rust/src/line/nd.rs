@@ -9,6 +9,7 @@ use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
 use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "nd";
 
@@ -218,7 +219,7 @@ impl Nd {
     /// Records `out` with the `N` passive axes' discriminants as [`Terms`]
     /// (eq. 16: an axis steps when D > 0, a tie when D = 0; D grows by 2ΔA
     /// and drops by 2Δx when A steps).
-    fn fill_with<const N: usize>(&mut self, out: &mut [Step]) -> [i64; MAX_AXES] {
+    fn fill_with<const N: usize>(&mut self, out: &mut [MaybeUninit<Step>]) -> [i64; MAX_AXES] {
         let (passive, _) = self.passive_axes();
         let toward = |axis| self.mirror.toward(Step::NONE, axis);
         let always = (0..self.mirror.dims())
@@ -294,7 +295,7 @@ impl Stepper for Nd {
     /// The steps of [`Stepper::next_step`] through the shared branch-free
     /// loop ([`Terms`]), with no decision built; one loop per number of
     /// passive axes, so that each unrolls.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let out = &mut out[..taken];
         let displacement = match self.passive_axes().1 {
@@ -306,10 +307,8 @@ impl Stepper for Nd {
             _ => self.fill_with::<5>(out),
         };
         self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            displacement,
-        }
+        // SAFETY: Terms::fill wrote every one of the `taken` slots.
+        unsafe { Filled::written(taken, displacement) }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

@@ -21,6 +21,7 @@ use crate::grid::{AXIS_NAMES, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
 use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 use std::fmt::Write;
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "regions";
 
@@ -574,14 +575,12 @@ impl Stepper for RegionsWang {
     /// recording loop the integer line rules share ([`Terms`]): eq. (8) per
     /// passive axis, an absent one a term that never steps, and no decision
     /// built.
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let displacement = self.terms.fill(&mut out[..taken]);
         self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            displacement,
-        }
+        // SAFETY: Terms::fill wrote every one of the `taken` slots.
+        unsafe { Filled::written(taken, displacement) }
     }
 
     fn remaining_steps(&self) -> Option<u64> {

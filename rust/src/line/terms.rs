@@ -12,9 +12,10 @@
 //! the decision a learner reads) keeps the rule in the paper's words, and
 //! the property tests check that both give the same steps.
 
-use crate::grid::{MAX_AXES, Step, displacement};
+use crate::grid::{MAX_AXES, Step, displacement, written_steps};
 use crate::lanes::Quad;
 use crate::request::TiePolicy;
+use std::mem::MaybeUninit;
 
 /// One passive axis's discriminant, in the form [`Terms`] steps.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -493,7 +494,7 @@ impl<const N: usize> Terms<N> {
         always: u16,
         terms: &[Term; N],
         lanes: &mut [[i64; N]; LANES],
-        body: &mut [Step],
+        body: &mut [MaybeUninit<Step>],
     ) {
         let splat = |f: fn(&Term) -> i64| -> [Pair; N] {
             std::array::from_fn(|i| Pair::splat(f(&terms[i])))
@@ -514,8 +515,8 @@ impl<const N: usize> Terms<N> {
                 values[i] = values[i].add(increment[i]).sub(mask.and(decrement[i]));
             }
             let [c0, c1] = code.low_u16s();
-            *s0 = Step(c0);
-            *s1 = Step(c1);
+            s0.write(Step(c0));
+            s1.write(Step(c1));
         }
         for (i, value) in values.iter().enumerate() {
             [lanes[0][i], lanes[1][i]] = value.lanes();
@@ -548,7 +549,12 @@ impl<const N: usize> Terms<N> {
     /// one pass to the next is a comparison, an and and a subtraction, as
     /// in [`Term::advance_mask`].
     #[inline(always)]
-    fn fill_interleaved(always: u16, terms: &[Term; N], values: &mut [i64; N], out: &mut [Step]) {
+    fn fill_interleaved(
+        always: u16,
+        terms: &[Term; N],
+        values: &mut [i64; N],
+        out: &mut [MaybeUninit<Step>],
+    ) {
         const L: usize = NARROW_LANES;
         assert_eq!(out.len() % L, 0, "whole groups of {L} steps");
         let splat = |f: &dyn Fn(&Term) -> i64| -> [Quad; N] {
@@ -609,7 +615,7 @@ impl<const N: usize> Terms<N> {
         always: u16,
         terms: &[Term; N],
         values: &mut [i64; N],
-        out: &mut [Step],
+        out: &mut [MaybeUninit<Step>],
     ) {
         if N == 2 {
             if let Some(moving) = [1, 0].into_iter().find(|&i| terms[1 - i].increment == 0) {
@@ -637,7 +643,8 @@ impl<const N: usize> Terms<N> {
         }
     }
 
-    /// Records `out.len()` steps, and returns where they moved per axis.
+    /// Records `out.len()` steps, every slot of `out` written, and returns
+    /// where they moved per axis.
     ///
     /// Each step's value depends on the one before, so stepping is a chain
     /// of dependent instructions and the processor waits on it. Split into
@@ -653,7 +660,7 @@ impl<const N: usize> Terms<N> {
     /// = value_start + steps·increment - moves·decrement); a few steps are
     /// summed instead ([`MAX_STEPS_SUMMED`]).
     #[inline(always)]
-    pub fn fill(&mut self, out: &mut [Step]) -> [i64; MAX_AXES] {
+    pub fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> [i64; MAX_AXES] {
         // Read in place, not copied: in wasm a copy of the terms (80 bytes
         // for two) was a memory.copy, which V8 runs as a call into the
         // engine, once per fill (a G-code move or an arc's chord).
@@ -679,11 +686,12 @@ impl<const N: usize> Terms<N> {
         }
         let tail = &mut out[filled..];
         for slot in tail {
-            *slot = Self::advance(always, terms, &mut values);
+            slot.write(Self::advance(always, terms, &mut values));
         }
         let steps = out.len();
         let moved = if steps <= MAX_STEPS_SUMMED {
-            displacement(out)
+            // SAFETY: the loops above wrote every slot.
+            displacement(unsafe { written_steps(out) })
         } else {
             // From the values before the fill (the terms') and after it.
             let moves = std::array::from_fn::<_, N, _>(|i| terms[i].moves(steps as u64, values[i]));
@@ -868,6 +876,16 @@ mod tests {
     use super::*;
     use crate::grid::displacement;
 
+    /// `len` steps of `terms` ([`Terms::fill`]) in a vector, and where
+    /// they moved.
+    fn filled<const N: usize>(terms: &mut Terms<N>, len: usize) -> (Vec<Step>, [i64; MAX_AXES]) {
+        let mut out = Vec::with_capacity(len);
+        let moved = terms.fill(&mut out.spare_capacity_mut()[..len]);
+        // SAFETY: Terms::fill writes every slot it is given.
+        unsafe { out.set_len(len) };
+        (out, moved)
+    }
+
     /// The values a term compares equal a target where its steps, taken
     /// one by one, find it: every small term of either tie policy, from
     /// every value of its window, for every target in and around it.
@@ -953,9 +971,11 @@ mod tests {
                     step: Step(0b100),
                 }],
             };
-            let mut out = [Step::NONE; 4];
-            terms.fill(&mut out);
-            out.map(|s| s.0)
+            filled(&mut terms, 4)
+                .0
+                .iter()
+                .map(|s| s.0)
+                .collect::<Vec<_>>()
         };
         // Hold: 10 = 10 holds; 20 > 10 steps (-> 10); 10 holds; 20 steps.
         assert_eq!(run(TiePolicy::Hold), [0b1, 0b101, 0b1, 0b101]);
@@ -1096,8 +1116,7 @@ mod tests {
     /// one step at a time: the same steps, displacement and state after.
     fn fills_as_one_chain<const N: usize>(start: Terms<N>, len: usize) {
         let mut lanes = start;
-        let mut out = vec![Step::NONE; len];
-        let moved = lanes.fill(&mut out);
+        let (out, moved) = filled(&mut lanes, len);
         assert_eq!(moved, displacement(&out), "{len} steps");
         let mut chain = start;
         let expected: Vec<Step> = (0..len).map(|_| chain.step()).collect();

@@ -12,10 +12,11 @@
 use super::terms::{Term, Terms};
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
-use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
+use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count, written_steps};
 use crate::request::{FROM, MAX_STEPS, TO};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 use std::cmp::Ordering;
+use std::mem::MaybeUninit;
 
 pub const ID: &str = "walk6";
 
@@ -241,7 +242,7 @@ impl Stepper for Walk6 {
     /// ([`Walk6::fill_rounds`]), the rest (more axes, a chunk's last steps,
     /// a last tie) a step at a time ([`Walk6::fill_axes`], with the number
     /// of axes a constant).
-    fn fill(&mut self, out: &mut [Step]) -> Filled {
+    fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         let taken = out.len().min(self.remaining as usize);
         let out = &mut out[..taken];
         let start = self.crossed;
@@ -252,20 +253,19 @@ impl Stepper for Walk6 {
             // crosses that axis's faces only, every step is its step. By
             // rounds such a line took twice the 3D line's time per step,
             // and step by step in 4 to 6 axes ten times.
-            out.fill(self.mirror.toward(Step::NONE, major));
+            out.fill(MaybeUninit::new(self.mirror.toward(Step::NONE, major)));
             self.crossed[major] += taken as i64;
         } else {
             let by_rounds = if dims <= 3 { self.fill_rounds(out) } else { 0 };
             by_axis_count!(dims, self.fill_axes(&mut out[by_rounds..]));
         }
         self.remaining -= taken as u64;
-        Filled {
-            steps: taken,
-            // One step per face crossed, toward the end.
-            displacement: std::array::from_fn(|a| {
-                self.mirror.sign(a) * (self.crossed[a] - start[a])
-            }),
-        }
+        // One step per face crossed, toward the end.
+        let displacement =
+            std::array::from_fn(|a| self.mirror.sign(a) * (self.crossed[a] - start[a]));
+        // SAFETY: every slot of `out`, `taken` long, was written: by the
+        // one axis's fill, or by rounds and then `fill_axes` after them.
+        unsafe { Filled::written(taken, displacement) }
     }
 
     fn remaining_steps(&self) -> Option<u64> {
@@ -330,7 +330,7 @@ impl Walk6 {
     /// multiplication need more (see [`Crossing::compare`]).
     /// Fills all of `out` (the walk has that many steps left); no decision.
     #[inline(always)]
-    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [Step]) {
+    fn fill_axes<const DIMS: usize>(&mut self, out: &mut [MaybeUninit<Step>]) {
         let magnitude: [i64; MAX_AXES] = std::array::from_fn(|a| {
             if a < DIMS {
                 self.mirror.magnitude(a)
@@ -377,8 +377,10 @@ impl Walk6 {
                     gap[a][b] -= if b == first { 2 * magnitude[a] } else { 0 };
                 }
             }
-            *slot = toward[first];
+            slot.write(toward[first]);
         }
+        // SAFETY: the loop above wrote every slot.
+        let out = unsafe { written_steps(out) };
         // The faces each axis crossed, counted from the steps written: a
         // pass the compiler vectorises, off the loop's chain of selects.
         for axis in 0..DIMS {
@@ -403,7 +405,7 @@ impl Walk6 {
     /// [`Self::fill_axes`]'s: the last steps of a chunk, and a passive
     /// axis's last face where it comes on M's last one, after it in the
     /// tie order). The gaps stay within 2^33, as there.
-    fn fill_rounds(&mut self, out: &mut [Step]) -> usize {
+    fn fill_rounds(&mut self, out: &mut [MaybeUninit<Step>]) -> usize {
         let dims = self.mirror.dims();
         let major = self.mirror.major();
         // The passive axes in axis order; on a 2D walk the third is a
@@ -471,7 +473,7 @@ impl Walk6 {
         // What a round adds to gap_pq, by its code below: p's face crossed
         // (+ 2|Δq|), q's (- 2|Δp|).
         let pq_moves = [0, step_pq_p, -step_pq_q, step_pq_p - step_pq_q];
-        let mut round_codes = [Step::NONE; ROUNDS_PER_BATCH];
+        let mut round_codes = [MaybeUninit::uninit(); ROUNDS_PER_BATCH];
         let base = out.as_mut_ptr();
         // Rounds one at a time up to `until`: first the rest of a round a
         // chunk may have ended in, so that the batches start where a round
@@ -554,7 +556,8 @@ impl Walk6 {
                     *written += 1 + (decided & 1) + (decided >> 1);
                     *gap_pq += pq_moves[decided];
                 };
-                let codes = &round_codes[..batch];
+                // SAFETY: Terms::fill wrote every one of the batch's slots.
+                let codes = unsafe { written_steps(&round_codes[..batch]) };
                 let passive_steps = (steps_p + steps_q) as usize;
                 if passive_steps * SPARSE_ROUNDS_PER_PASSIVE_STEP > batch {
                     for &code in codes {
@@ -568,7 +571,7 @@ impl Walk6 {
                     // step (2M steps along x: 2.1 ms natively).
                     // SAFETY: the batch's `batch` steps land in `out`.
                     unsafe { std::slice::from_raw_parts_mut(base.add(written), batch) }
-                        .fill(step_m);
+                        .fill(MaybeUninit::new(step_m));
                     written += batch;
                 } else {
                     // A passive axis steps now and then: eight rounds at a

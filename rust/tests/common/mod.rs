@@ -2,8 +2,8 @@
 //! describe lines compactly.
 #![allow(dead_code)] // each test crate uses its own subset
 
-use voxpath::grid::{Point, Step, displacement};
-use voxpath::trace::{ColumnKind, Decision, Stepper};
+use voxpath::grid::{Point, displacement};
+use voxpath::trace::{ColumnKind, Decision, Stepper, fill_onto};
 
 /// Every step of `stepper` from `from`: the point after the step and why.
 pub fn run<S: Stepper>(mut stepper: S, from: Point) -> Vec<(Point, S::Why)> {
@@ -80,12 +80,12 @@ pub fn check_fill<S: Stepper>(make: impl Fn() -> S, chunk: usize) -> Result<(), 
     let mut stepper = make();
     let mut taken = Vec::new();
     loop {
-        let mut out = vec![Step::NONE; chunk];
-        let filled = stepper.fill(&mut out);
-        if filled.displacement != displacement(&out[..filled.steps]) {
+        let mut out = Vec::new();
+        let filled = fill_onto(&mut stepper, &mut out, chunk);
+        if filled.displacement() != displacement(&out) {
             return Err(format!("displacement after {} steps", taken.len()));
         }
-        taken.extend_from_slice(&out[..filled.steps]);
+        taken.extend_from_slice(&out);
         if let Some((step, why)) = stepper.next_step() {
             if expected_why.get(taken.len()) != Some(&decision_bits(&why)) {
                 return Err(format!("the decision of step {} after a fill", taken.len()));
@@ -97,7 +97,7 @@ pub fn check_fill<S: Stepper>(make: impl Fn() -> S, chunk: usize) -> Result<(), 
         {
             return Err(format!("steps left after {} steps", taken.len()));
         }
-        if filled.steps < chunk {
+        if filled.steps() < chunk {
             break;
         }
     }
