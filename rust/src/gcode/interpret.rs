@@ -188,28 +188,37 @@ fn codes_fault(line: u32, codes: &[Code]) -> Option<Error> {
 /// (column 13: "too many M codes") and its fault is the second M3 (column
 /// 4), which `M3 M3` is told. What the rest of a line decides (an arc's I,
 /// a dwell's P, an F in G93) is not judged here: a cut line may lack it.
+///
+/// Run on every line: an error is built only for a fault found, and none
+/// is moved where the line has none (gathered in an array of two errors
+/// and the first taken, every line moved them in wasm by a `memory.copy`,
+/// a call into the engine).
 pub fn first_fault_on_its_own(line: u32, block: &Block) -> Option<Error> {
     let negative = block
         .words
         .iter()
-        .find(|w| matches!(w.letter, 'F' | 'P' | 'S') && w.value < 0.0)
-        .map(|w| {
-            Error::at(
-                line,
-                w.column,
-                format!(
-                    "{}{}: {} cannot be negative (Grbl refuses it: error 4, negative value)",
-                    w.letter, w.value, w.letter
-                ),
-            )
-        });
-    [negative, codes_fault(line, &block.codes)]
-        .into_iter()
-        .flatten()
-        .min_by_key(|e| match e.location {
-            Location::Source { column, .. } => column,
-            _ => unreachable!("a line's fault is placed at its column"),
-        })
+        .find(|w| matches!(w.letter, 'F' | 'P' | 'S') && w.value < 0.0);
+    let Some(w) = negative else {
+        // Made straight in the caller's place: kept in a local first, the
+        // error (or its absence) was moved into it.
+        return codes_fault(line, &block.codes);
+    };
+    let codes = codes_fault(line, &block.codes);
+    let column = |e: &Error| match e.location {
+        Location::Source { column, .. } => column,
+        _ => unreachable!("a line's fault is placed at its column"),
+    };
+    if codes.as_ref().is_some_and(|e| column(e) < w.column) {
+        return codes;
+    }
+    Some(Error::at(
+        line,
+        w.column,
+        format!(
+            "{}{}: {} cannot be negative (Grbl refuses it: error 4, negative value)",
+            w.letter, w.value, w.letter
+        ),
+    ))
 }
 
 /// The motion code (modal group 1) G`number`.`minor` is, if any. The ones
@@ -413,22 +422,33 @@ impl Default for Interpreter {
 }
 
 /// The words of a line, by letter (the reader lets each letter onto a
-/// line once: a second is a syntax error, and such a line is not run).
+/// line once: a second is a syntax error, and such a line is not run, so a
+/// line has at most 26). A letter's word is found by its place among the
+/// line's words, a byte a letter: a table of 26 references (104 bytes in
+/// wasm) was cleared and moved by a `memory.fill` and a `memory.copy`, two
+/// calls into the engine every line (scripts/engine-calls.mjs).
 struct Words<'b> {
-    by_letter: [Option<&'b Word>; 26],
+    words: &'b [Word],
+    /// 1 + the index in `words` of each letter's word; 0: the line has none.
+    place_by_letter: [u8; 26],
 }
 
 impl<'b> Words<'b> {
     fn new(words: &'b [Word]) -> Words<'b> {
-        let mut by_letter = [None; 26];
-        for w in words {
-            by_letter[(w.letter as u8 - b'A') as usize] = Some(w);
+        let mut place_by_letter = [0u8; 26];
+        for (index, w) in words.iter().enumerate() {
+            debug_assert!(index < 26, "each letter once on a line");
+            place_by_letter[(w.letter as u8 - b'A') as usize] = index as u8 + 1;
         }
-        Words { by_letter }
+        Words {
+            words,
+            place_by_letter,
+        }
     }
 
     fn get(&self, letter: char) -> Option<&'b Word> {
-        self.by_letter[(letter as u8 - b'A') as usize]
+        let place = self.place_by_letter[(letter as u8 - b'A') as usize];
+        (place > 0).then(|| &self.words[place as usize - 1])
     }
 
     /// X, Y and Z words by axis index.
