@@ -281,6 +281,21 @@ impl Step {
         moved - 2 * (moved & negative)
     }
 
+    /// Adds `times` this step's move to `delta`, visiting only the axes
+    /// it moves: a line's fill sums its displacement from its active axes'
+    /// step and a step per passive axis, each moving an axis or two, where
+    /// a sum over all six axes of each (a call of its own in wasm) took 3%
+    /// of the trace of an arc in 1,720 chords.
+    #[inline]
+    pub fn add_times(self, times: i64, delta: &mut [i64; MAX_AXES]) {
+        let mut axes = self.moving_axes();
+        while axes != 0 {
+            let axis = axes.trailing_zeros() as usize;
+            delta[axis] += self.delta(axis) * times;
+            axes &= axes - 1;
+        }
+    }
+
     /// Bit mask of the axes that move (bit 0 = x).
     pub fn moving_axes(self) -> u8 {
         self.0 as u8
@@ -476,6 +491,29 @@ mod tests {
                         );
                     }
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn add_times_adds_the_step_s_move_on_every_axis_it_moves() {
+        // Every one of the 3^6 steps, times a count of either sign, onto
+        // a displacement that already has some.
+        let start = [5, -3, 0, 7, 1, -2];
+        for code in 0..729 {
+            let mut step = Step::NONE;
+            let mut rest = code;
+            for axis in 0..MAX_AXES {
+                step = step.with(axis, rest % 3 - 1);
+                rest /= 3;
+            }
+            for times in [0, 1, -4, 1 << 40] {
+                let mut sum = start;
+                step.add_times(times, &mut sum);
+                let expected: Vec<i64> = (0..MAX_AXES)
+                    .map(|axis| start[axis] + step.delta(axis) * times)
+                    .collect();
+                assert_eq!(sum[..], expected[..], "{step:?} times {times}");
             }
         }
     }

@@ -694,15 +694,13 @@ impl<const N: usize> Terms<N> {
             displacement(unsafe { written_steps(out) })
         } else {
             // From the values before the fill (the terms') and after it.
-            let moves = std::array::from_fn::<_, N, _>(|i| terms[i].moves(steps as u64, values[i]));
-            std::array::from_fn(|axis| {
-                let passive: i64 = terms
-                    .iter()
-                    .zip(moves)
-                    .map(|(t, n)| t.step.delta(axis) * n)
-                    .sum();
-                self.always.delta(axis) * steps as i64 + passive
-            })
+            let mut moved = [0; MAX_AXES];
+            self.always.add_times(steps as i64, &mut moved);
+            for (term, value) in terms.iter().zip(values) {
+                term.step
+                    .add_times(term.moves(steps as u64, value), &mut moved);
+            }
+            moved
         };
         self.set_values(values);
         moved
