@@ -464,10 +464,18 @@ impl RegionsWang {
         let mirror = Mirror::new(from, to);
         let divisor = mirror.divisor(gcd);
         let magnitude = [0, 1, 2].map(|a| mirror.reduced(a, divisor));
-        // Found once (a G-code program sets up a line every move): the
-        // divisor divides every |delta|, so the reduced ones share the
-        // largest axis.
-        let reference = mirror.major();
+        // Found once (a G-code program sets up a line every move), as
+        // Mirror::major would (the first axis of the largest |delta|: the
+        // divisor divides every one, so the reduced ones share it), from
+        // the three reduced ones, where major's pass over the mirror's six
+        // took a sixth of the setup of an arc's chord in wasm.
+        let reference = (1..3).fold(0, |best, a| {
+            if magnitude[a] > magnitude[best] {
+                a
+            } else {
+                best
+            }
+        });
         let largest = magnitude[reference];
         let mut geometry = Geometry {
             active_mask: 0,
@@ -728,6 +736,33 @@ mod tests {
         assert_eq!(t.metrics().ties, 1);
         let note = t.segment_note(0);
         assert!(note.contains("M_1 = 2|Δy| - |Δx| = 2·7 - 10 = 4"), "{note}");
+    }
+
+    /// The reference axis is found from the three reduced |delta| as
+    /// Mirror::major finds it from the mirror's: the first of the largest,
+    /// in every direction, with and without the GCD reduction.
+    #[test]
+    fn the_reference_axis_is_the_mirror_s_major_one() {
+        let magnitudes = [0, 1, 2, 3, 6];
+        for &x in &magnitudes {
+            for &y in &magnitudes {
+                for &z in &magnitudes {
+                    for signs in 0..8 {
+                        let sign = |axis: usize| if signs >> axis & 1 == 1 { -1 } else { 1 };
+                        let from = Point::new(&[4, -2, 7]);
+                        let to = Point::new(&[4 + sign(0) * x, -2 + sign(1) * y, 7 + sign(2) * z]);
+                        for gcd in [false, true] {
+                            let line = RegionsWang::with_gcd(from, to, TiePolicy::Advance, gcd);
+                            assert_eq!(
+                                line.reference,
+                                Mirror::new(from, to).major(),
+                                "{to} gcd {gcd}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]
