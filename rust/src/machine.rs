@@ -448,7 +448,8 @@ mod tests {
         }
     }
 
-    impl Stepper for Script {
+    // SAFETY: the default fill, whose Filled counts the slots it wrote.
+    unsafe impl Stepper for Script {
         type Why = NoWhy;
         fn next_step(&mut self) -> Option<(Step, NoWhy)> {
             (!self.0.is_empty()).then(|| (self.0.remove(0), NoWhy))

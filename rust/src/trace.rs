@@ -254,7 +254,16 @@ pub trait Decision: Copy {
 
 /// An algorithm in motion: each call yields one step and the decision that
 /// produced it. A step and its reason are one event.
-pub trait Stepper: Clone + 'static {
+///
+/// # Safety
+/// The [`Filled`] that [`Stepper::fill`] returns counts slots of the `out`
+/// it was given that hold steps when it returns: its first that many.
+/// [`fill_onto`] lengthens a vector over them on that promise. Each fill
+/// makes its `Filled` by [`Filled::written`], saying there why its count
+/// holds; the trait is unsafe to implement because safe code could still
+/// break the promise (return another buffer's `Filled`, or put an
+/// uninitialised value back into a slot it had written).
+pub unsafe trait Stepper: Clone + 'static {
     type Why: Decision;
 
     /// The next step and why it was taken, or None at the end of the path.
@@ -353,7 +362,7 @@ pub fn fill_onto<S: Stepper>(stepper: &mut S, out: &mut Vec<Step>, steps: usize)
         "a fill takes at most the room it is given"
     );
     // SAFETY: the fill wrote the first `filled.steps` slots past the
-    // vector's length ([`Filled::written`], the only way to make a Filled).
+    // vector's length (the promise of every Stepper's fill).
     unsafe { out.set_len(out.len() + filled.steps) };
     filled
 }

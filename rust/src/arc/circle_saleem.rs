@@ -1392,7 +1392,8 @@ fn written_in_order(out: &mut [MaybeUninit<Step>]) {
     out.fill(MaybeUninit::new(Step::NONE));
 }
 
-impl Stepper for SaleemCircle {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for SaleemCircle {
     type Why = CircleWhy;
 
     fn next_step(&mut self) -> Option<(Step, CircleWhy)> {

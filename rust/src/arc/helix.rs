@@ -403,7 +403,8 @@ impl SaleemHelix {
     }
 }
 
-impl Stepper for SaleemHelix {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for SaleemHelix {
     type Why = HelixWhy;
 
     fn next_step(&mut self) -> Option<(Step, HelixWhy)> {

@@ -326,7 +326,8 @@ impl Bresenham2d {
     }
 }
 
-impl Stepper for Bresenham2d {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for Bresenham2d {
     type Why = Bresenham2dWhy;
 
     fn next_step(&mut self) -> Option<(Step, Bresenham2dWhy)> {

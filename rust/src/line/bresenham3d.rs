@@ -195,7 +195,8 @@ impl Bresenham3d {
     }
 }
 
-impl Stepper for Bresenham3d {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for Bresenham3d {
     type Why = Bresenham3dWhy;
 
     fn next_step(&mut self) -> Option<(Step, Bresenham3dWhy)> {

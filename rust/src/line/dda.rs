@@ -152,7 +152,8 @@ impl Dda {
     }
 }
 
-impl Stepper for Dda {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for Dda {
     type Why = DdaWhy;
 
     fn next_step(&mut self) -> Option<(Step, DdaWhy)> {

@@ -171,7 +171,8 @@ impl Greedy {
     }
 }
 
-impl Stepper for Greedy {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for Greedy {
     type Why = GreedyWhy;
 
     fn next_step(&mut self) -> Option<(Step, GreedyWhy)> {

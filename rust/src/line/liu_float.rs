@@ -403,7 +403,8 @@ impl ScaledRule {
     }
 }
 
-impl Stepper for LiuFloat {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for LiuFloat {
     type Why = LiuWhy;
 
     fn next_step(&mut self) -> Option<(Step, LiuWhy)> {

@@ -257,7 +257,8 @@ impl Nd {
     }
 }
 
-impl Stepper for Nd {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for Nd {
     type Why = NdWhy;
 
     fn next_step(&mut self) -> Option<(Step, NdWhy)> {

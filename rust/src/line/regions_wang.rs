@@ -548,7 +548,8 @@ impl RegionsWang {
     }
 }
 
-impl Stepper for RegionsWang {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for RegionsWang {
     type Why = RegionsWhy;
 
     fn next_step(&mut self) -> Option<(Step, RegionsWhy)> {

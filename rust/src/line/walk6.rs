@@ -203,7 +203,8 @@ impl Walk6 {
     }
 }
 
-impl Stepper for Walk6 {
+// SAFETY: its fill's Filled counts the slots it wrote (see its Filled::written).
+unsafe impl Stepper for Walk6 {
     type Why = Walk6Why;
 
     fn next_step(&mut self) -> Option<(Step, Walk6Why)> {
