@@ -282,10 +282,10 @@ pub unsafe trait Stepper: Clone + 'static {
     /// end): each step is written once. Zeroed first, every chunk was
     /// written twice, and in wasm each zeroing was a call into the engine
     /// (memory.fill): trace() in Node of the bench's 3D line took 1.03 to
-    /// 1.08 ms with it, 0.91 to 0.93 without, its 2D line 0.68 and 0.60,
-    /// the circle of r = 300,000 0.82 to 0.89 and 0.80 to 0.85; natively
-    /// the circle 0.61 to 0.67 and 0.52 to 0.55. [`fill_onto`] runs it
-    /// into a vector.
+    /// 1.08 ms with it, 0.91 to 0.93 without, its 2D line 0.68 and 0.60.
+    /// (The circle's pieces, which store at eight places of a chunk at
+    /// once, write their stretch in order first: `written_in_order` in
+    /// arc/circle_saleem.rs.) [`fill_onto`] runs it into a vector.
     #[inline]
     fn fill(&mut self, out: &mut [MaybeUninit<Step>]) -> Filled {
         fill_by_next_step(self, out)
