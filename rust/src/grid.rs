@@ -449,6 +449,19 @@ pub fn gcd(a: u64, b: u64) -> u64 {
 mod tests {
     use super::*;
 
+    /// Every one of the 3^6 steps: each axis by -1, 0 or +1.
+    fn every_step() -> impl Iterator<Item = Step> {
+        (0..729).map(|code| {
+            let mut step = Step::NONE;
+            let mut rest = code;
+            for axis in 0..MAX_AXES {
+                step = step.with(axis, rest % 3 - 1);
+                rest /= 3;
+            }
+            step
+        })
+    }
+
     #[test]
     fn chebyshev_to_is_the_longest_move_of_any_axis() {
         let from = Point::new(&[3, -4, 5]);
@@ -500,13 +513,7 @@ mod tests {
         // Every one of the 3^6 steps, times a count of either sign, onto
         // a displacement that already has some.
         let start = [5, -3, 0, 7, 1, -2];
-        for code in 0..729 {
-            let mut step = Step::NONE;
-            let mut rest = code;
-            for axis in 0..MAX_AXES {
-                step = step.with(axis, rest % 3 - 1);
-                rest /= 3;
-            }
+        for step in every_step() {
             for times in [0, 1, -4, 1 << 40] {
                 let mut sum = start;
                 step.add_times(times, &mut sum);
@@ -522,16 +529,7 @@ mod tests {
     fn displacement_sums_the_steps_per_axis() {
         // Every one of the 3^6 steps, repeated past a counter's capacity
         // (1023), in an order that mixes directions.
-        let mut steps = Vec::new();
-        for code in 0..729 {
-            let mut step = Step::NONE;
-            let mut rest = code;
-            for axis in 0..MAX_AXES {
-                step = step.with(axis, rest % 3 - 1);
-                rest /= 3;
-            }
-            steps.push(step);
-        }
+        let steps: Vec<Step> = every_step().collect();
         let many: Vec<Step> = (0..5000).map(|k| steps[k * 7 % steps.len()]).collect();
         for run in [&steps[..], &many[..], &many[..1023], &many[..1024], &[][..]] {
             let mut expected = [0; MAX_AXES];
