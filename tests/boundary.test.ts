@@ -122,6 +122,7 @@ describe('the generated boundary types', () => {
       try {
         const summary = handle.summary();
         expectFits(summary, 'TraceSummary');
+        expectFits(handle.legend(), 'TraceLegend');
         for (const point of new Set([0, 1, Math.floor(summary.steps / 2), summary.steps])) {
           const detail = handle.stepDetail(point);
           expectFits(detail, 'StepDetail');
@@ -185,9 +186,9 @@ describe('the generated boundary types', () => {
   });
 
   it('find a field the core sends and the .d.ts lacks', () => {
-    const summary = { algorithm: 'x', dims: 2, steps: 0, start: [0, 0], end: [0, 0], columns: [], deviationBound: {}, extra: 1 };
-    const problems = misfits(summary, declared('TraceSummary'), 'TraceSummary');
-    expect(problems).toContain('TraceSummary.extra: sent by the core, not declared in TraceSummary');
-    expect(problems.some((p) => p.startsWith('TraceSummary.deviationBound.value: declared in the .d.ts'))).toBe(true);
+    const summary = { algorithm: 'x', dims: 2, steps: 0, start: [0, 0], end: [0, 0], extra: 1 };
+    expect(misfits(summary, declared('TraceSummary'), 'TraceSummary')).toContain('TraceSummary.extra: sent by the core, not declared in TraceSummary');
+    const legend = { columns: [], figures: [], deviationBound: {} };
+    expect(misfits(legend, declared('TraceLegend'), 'TraceLegend').some((p) => p.startsWith('TraceLegend.deviationBound.value: declared in the .d.ts'))).toBe(true);
   });
 });

@@ -5,7 +5,7 @@
 // grows wasm memory by that buffer, not by the points; and what trace()
 // no longer computes up front (metrics, segments) is there when read.
 import { describe, expect, it } from 'vitest';
-import { memoryBytes, runGcode, trace } from '../web/core/index.js';
+import { algorithms, memoryBytes, runGcode, trace } from '../web/core/index.js';
 import type { Trace, TraceOptions } from '../web/core/index.js';
 
 /**
@@ -171,6 +171,24 @@ describe('what trace() leaves until it is read', () => {
     expect(m.pulsesByAxis).toEqual([5000, 3001, 1999]);
     expect(t.metrics).toBe(m);
     t.free();
+  });
+
+  it('gives the legend (columns, figures, deviation bound) of its algorithm, when first read', async () => {
+    const t = await trace({ algorithm: 'regions', from: [0, 0, 0], to: [10, 7, 6] });
+    expect(Object.keys(t).sort()).toEqual(['algorithm', 'dims', 'end', 'start', 'steps']);
+    const legend = t.legend;
+    expect(t.legend).toBe(legend);
+    expect(t.columns).toBe(legend.columns);
+    expect(t.figures).toEqual(['exitFace']);
+    expect(t.deviationBound!.value).toBeCloseTo(Math.SQRT1_2, 15);
+    // What the catalogue says the algorithm decides, column for column.
+    const info = (await algorithms()).find((a) => a.id === 'regions')!;
+    expect(t.columns.map((c) => c.name)).toEqual(info.columns.map((c) => c.name));
+    // The summary's fields and the legend's, as the worker hands them to the page.
+    expect(Object.keys({ ...t, ...t.legend }).sort()).toEqual(['algorithm', 'columns', 'deviationBound', 'dims', 'end', 'figures', 'start', 'steps']);
+    t.free();
+    // Read once, it is the trace's own, as its metrics are.
+    expect(t.columns).toBe(legend.columns);
   });
 
   it('gives the segments with their notes, when first read', async () => {

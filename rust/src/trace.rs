@@ -411,9 +411,8 @@ impl Filled {
     }
 }
 
-/// A type-erased stepper whose state can be copied: the replay engine.
+/// A type-erased stepper: the replay engine.
 trait Replay {
-    fn clone_box(&self) -> Box<dyn Replay>;
     /// Takes the next step, writing its decision into `row` (segment columns).
     fn replay_step(&mut self, row: &mut [f64]) -> Option<Step>;
     /// Takes the next step, explaining it.
@@ -433,10 +432,6 @@ trait Replay {
 }
 
 impl<S: Stepper> Replay for S {
-    fn clone_box(&self) -> Box<dyn Replay> {
-        Box::new(self.clone())
-    }
-
     fn replay_step(&mut self, row: &mut [f64]) -> Option<Step> {
         let (step, why) = self.next_step()?;
         why.write(row);
@@ -474,6 +469,23 @@ impl<S: Stepper> Replay for S {
     }
 }
 
+/// Copies of a segment's stepper state, the one before segment step
+/// j · [`CHECKPOINT_INTERVAL`] at index j (0: before its first step), kept
+/// in one array of the stepper's own type: one allocation a segment, where
+/// a box a copy made the circle of r = 300,000 allocate 415 of them in its
+/// `trace()` and free them with it (about 0.1 ms of its 1.4 ms after a
+/// collection, memory not in cache).
+trait Checkpoints {
+    /// A copy of the state at `checkpoint`, to replay from.
+    fn state_at(&self, checkpoint: usize) -> Box<dyn Replay>;
+}
+
+impl<S: Stepper> Checkpoints for Vec<S> {
+    fn state_at(&self, checkpoint: usize) -> Box<dyn Replay> {
+        Box::new(self[checkpoint].clone())
+    }
+}
+
 /// A stretch of the trace produced by one stepper against one ideal path
 /// (a whole line, one chord of a segmented arc, one G-code move).
 pub struct Segment {
@@ -488,11 +500,10 @@ pub struct Segment {
     /// For each of the stepper's columns, its index among the trace columns
     /// (shared by the segments of one stepper type).
     column_index: Rc<[usize]>,
-    /// Stepper state before the segment's first step.
-    first_state: Box<dyn Replay>,
-    /// Stepper state before segment step j * CHECKPOINT_INTERVAL, j >= 1
-    /// (at index j - 1): a segment shorter than that keeps none.
-    states: Vec<Box<dyn Replay>>,
+    /// Stepper state before the segment's first step and every
+    /// CHECKPOINT_INTERVAL steps of it: a segment shorter than that keeps
+    /// the first alone.
+    states: Box<dyn Checkpoints>,
 }
 
 /// A segment as read: kept by the trace, or made again when read.
@@ -521,7 +532,8 @@ impl std::ops::Deref for SegmentRef<'_> {
 pub struct MadeSegment {
     start: Point,
     ideal: IdealPath,
-    first_state: Box<dyn Replay>,
+    /// Its stepper's state before its first step, alone.
+    first_state: Box<dyn Checkpoints>,
     columns: &'static [Column],
 }
 
@@ -533,7 +545,7 @@ impl MadeSegment {
             start,
             ideal,
             columns: stepper.columns(),
-            first_state: Box::new(stepper),
+            first_state: Box::new(vec![stepper]),
         }
     }
 }
@@ -792,14 +804,15 @@ impl TraceBuilder {
         let first_step = self.steps.len() as u64;
         let known_steps = stepper.remaining_steps();
         let column_index = self.begin_segment(known_steps, stepper.columns(), S::Why::FIGURE)?;
-        // A copy on the stack, boxed if the segment is kept; none for one
-        // made when read that ends before its first checkpoint (an arc's
-        // chords, a program's moves), which is never kept.
+        // The first state's copy on the stack, moved into the segment's
+        // checkpoints if it is kept; none for one made when read that ends
+        // before its first checkpoint (an arc's chords, a program's
+        // moves), which is never kept.
         let made_for_sure = made_when_read && known_steps.is_some_and(|n| n < CHECKPOINT_INTERVAL);
-        let first_state = (!made_for_sure).then(|| stepper.clone());
+        let mut first_state = (!made_for_sure).then(|| stepper.clone());
+        let mut states: Vec<S> = Vec::new();
         let start = self.position;
         let mut segment_steps = 0;
-        let mut states: Vec<Box<dyn Replay>> = Vec::new();
         // `stepper` is stepped where it was passed: moved into a local of
         // its own, it was copied (a regions stepper is 296 bytes, in wasm a
         // memory.copy, a call into the engine) once per segment.
@@ -809,7 +822,13 @@ impl TraceBuilder {
         // into the array; the position moves by each chunk's displacement.
         loop {
             if segment_steps > 0 && segment_steps % CHECKPOINT_INTERVAL == 0 {
-                states.push(Box::new(stepper.clone()));
+                if let Some(first) = first_state.take() {
+                    // Room for every checkpoint when the length is known.
+                    let checkpoints = known_steps.map_or(1, |n| n / CHECKPOINT_INTERVAL);
+                    states.reserve(1 + usize::try_from(checkpoints).unwrap_or(1));
+                    states.push(first);
+                }
+                states.push(stepper.clone());
             }
             let total = self.steps.len() as u64;
             let mut chunk = (CHECKPOINT_INTERVAL - segment_steps % CHECKPOINT_INTERVAL)
@@ -833,6 +852,10 @@ impl TraceBuilder {
         if made_when_read && states.is_empty() {
             self.segments.push_made(first_step);
         } else {
+            if let Some(first) = first_state {
+                // Shorter than a checkpoint's interval: the first alone.
+                states.push(first);
+            }
             self.segments.push_kept(Segment {
                 first_step,
                 steps: segment_steps,
@@ -840,10 +863,7 @@ impl TraceBuilder {
                 ideal: ideal(),
                 setup_note: None,
                 column_index,
-                first_state: Box::new(
-                    first_state.expect("a segment that may be kept keeps its first state"),
-                ),
-                states,
+                states: Box::new(states),
             });
         }
         Ok(())
@@ -1215,8 +1235,7 @@ impl Trace {
             ideal: made.ideal,
             setup_note: None,
             column_index,
-            first_state: made.first_state,
-            states: Vec::new(),
+            states: made.first_state,
         })
     }
 
@@ -1926,13 +1945,14 @@ impl Trace {
     }
 }
 
-/// What a viewer needs to know about a trace besides its bulk arrays.
-/// Point index k runs 0..=steps, step index k runs 0..steps-1; coordinates
-/// are grid units. Its metrics and its segments are not in it: the metrics
-/// take a pass over every point and the segments are one object (with a
-/// sentence) per chord or G-code move, which a caller that only reads points
-/// should not pay for, so each is asked for on its own ([`Trace::metrics`],
-/// [`Trace::segment_summaries`]).
+/// What a trace is, handed over with it: its algorithm, its axes, its
+/// length and its ends. Point index k runs 0..=steps, step index k runs
+/// 0..steps-1; coordinates are grid units. What else a viewer may read is
+/// asked for on its own, so that a caller that only reads points pays for
+/// none of it: its legend ([`TraceLegend`], 2 to 3 KB of teaching text),
+/// its metrics (a pass over every point) and its segments (one object with
+/// a sentence per chord or G-code move) ([`Trace::legend`],
+/// [`Trace::metrics`], [`Trace::segment_summaries`]).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct TraceSummary<'a> {
@@ -1945,6 +1965,17 @@ pub struct TraceSummary<'a> {
     /// Point 0 and point `steps`.
     pub start: Vec<i64>,
     pub end: Vec<i64>,
+}
+
+/// How to read a trace's decisions and how far its points may stray: read
+/// when first asked for, not with every trace. Its columns' and figures'
+/// texts are 2 to 3 KB a trace (the helix's 12 columns 2.7 KB), and
+/// handing them over with the summary took about 0.1 ms of `trace()` after
+/// a collection, memory not in cache (a tenth of the circle of r = 300,000
+/// traced).
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct TraceLegend<'a> {
     /// The decision columns, in the order the decisions array holds them.
     pub columns: &'a [Column],
     /// The pictures its steps' decisions can have: a step's own is in its
@@ -1984,10 +2015,7 @@ impl Segment {
     /// A copy of the stepper's state before segment step
     /// `checkpoint` * CHECKPOINT_INTERVAL.
     fn state_at(&self, checkpoint: usize) -> Box<dyn Replay> {
-        match checkpoint {
-            0 => self.first_state.clone_box(),
-            _ => self.states[checkpoint - 1].clone_box(),
-        }
+        self.states.state_at(checkpoint)
     }
 
     /// The stepper's note: kept, or made from its state at the start.
@@ -2007,6 +2035,12 @@ impl Trace {
             steps: self.steps(),
             start: self.start.coords().to_vec(),
             end: self.end.coords().to_vec(),
+        }
+    }
+
+    /// Its decision columns, their figures and its deviation's bound.
+    pub fn legend(&self) -> TraceLegend<'_> {
+        TraceLegend {
             columns: &self.columns,
             figures: &self.figures,
             deviation_bound: self.deviation_bound(),

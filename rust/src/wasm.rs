@@ -453,10 +453,16 @@ impl TraceHandle {
 
 #[wasm_bindgen]
 impl TraceHandle {
-    /// Algorithm, dims, steps, columns and deviation bound.
+    /// Algorithm, dims, steps and the ends.
     #[wasm_bindgen(unchecked_return_type = "TraceSummary")]
     pub fn summary(&self) -> JsValue {
         to_js(&self.0.summary())
+    }
+
+    /// Decision columns, their figures and the deviation's bound.
+    #[wasm_bindgen(unchecked_return_type = "TraceLegend")]
+    pub fn legend(&self) -> JsValue {
+        to_js(&self.0.legend())
     }
 
     /// Every segment, with its ideal path and note (one per chord of an

@@ -9,7 +9,7 @@
  * long path, where the deviation chart shows each bucket's range as a band.
  */
 import type uPlot from 'uplot';
-import type { ChartSeries, PointsProgress, TraceSummary } from '../core/types.js';
+import type { ChartSeries, PointsProgress, TraceLegend, TraceSummary } from '../core/types.js';
 import { pointsBar, RunProgress, type RunProgressElements, throttled } from '../form/run-progress.js';
 import { AXIS_NAMES } from '../format.js';
 import { afterNextFrame } from '../main-thread.js';
@@ -20,7 +20,7 @@ import { StepChart } from './chart.js';
 /** Rows the charts ask for: about one per pixel of a wide chart. */
 const CHART_POINTS = 2000;
 
-export interface ChartedTrace extends Pick<TraceSummary, 'dims' | 'deviationBound'> {
+export interface ChartedTrace extends Pick<TraceSummary, 'dims'>, Pick<TraceLegend, 'deviationBound'> {
   series(maxPoints: number, onProgress: (progress: PointsProgress) => void): Running<ChartSeries>;
 }
 

@@ -57,6 +57,7 @@ export type {
   StepDetail,
   StepClocks,
   TiePolicy,
+  TraceLegend,
   TraceOptions,
   TraceSummary,
 } from './pkg/voxpath.js';

@@ -8,7 +8,7 @@
  * the next request starts a fresh worker: the page stays usable.
  */
 import type { ExperimentProgress, GcodeMove, GcodeProgress, GcodeSettings, MotionChart, RandomLinesOptions, RandomLinesResult } from '../core/index.js';
-import type { ChartSeries, IdealLine, PointBounds, PointsProgress, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { ChartSeries, IdealLine, PointBounds, PointsProgress, StepClocks, StepDetail, TraceOptions } from '../core/types.js';
 import { utf8Bytes } from '../core/utf8.js';
 import { traceIdHeldAfter } from './protocol.js';
 import type {
@@ -29,6 +29,7 @@ import type {
   RequestMessage,
   RunProgram,
   TraceDifference,
+  TraceFields,
   TracedPath,
   WorkerRequest,
 } from './protocol.js';
@@ -267,7 +268,7 @@ export class TraceClient {
  * step index k runs 0..steps-1 (step k moves point k to point k + 1), as in
  * the core's Trace.
  */
-export interface RemoteTrace extends Readonly<TraceSummary> {}
+export interface RemoteTrace extends Readonly<TraceFields> {}
 export class RemoteTrace {
   /**
    * Point indices 0, pointsEvery, 2 · pointsEvery, ... flat with stride
@@ -287,7 +288,7 @@ export class RemoteTrace {
   readonly traceId: number;
   readonly #generation: number;
 
-  constructor(client: TraceClient, traceId: number, generation: number, path: TracedPath<TraceSummary>, distinction?: string) {
+  constructor(client: TraceClient, traceId: number, generation: number, path: TracedPath<TraceFields>, distinction?: string) {
     this.#client = client;
     this.traceId = traceId;
     this.#generation = generation;

@@ -28,7 +28,7 @@
  * StepDetail.
  */
 import type { Check, CheckProgress, ExperimentProgress, GcodeMove, GcodeProgramInfo, GcodeProgress, GcodeSettings, MotionChart, PulseTrain, RandomLinesOptions, RandomLinesResult, TraceDifference } from '../core/index.js';
-import type { Catalogue, ChartSeries, IdealLine, Limit, Metrics, PointBounds, PointsProgress, StepClocks, StepDetail, TraceOptions, TraceSummary } from '../core/types.js';
+import type { Catalogue, ChartSeries, IdealLine, Limit, Metrics, PointBounds, PointsProgress, StepClocks, StepDetail, TraceLegend, TraceOptions, TraceSummary } from '../core/types.js';
 
 /** What the worker can be asked. `traceId` is chosen by the page and names a trace the worker holds. */
 export type WorkerRequest =
@@ -67,12 +67,18 @@ export function traceIdHeldAfter(request: WorkerRequest): number | undefined {
 }
 
 /**
- * The summary the page receives: the trace's, with its metrics. Not its
+ * What the page receives of every trace besides its arrays: its summary and
+ * its legend (the page shows the columns and the deviation's bound of each).
+ */
+export type TraceFields = TraceSummary & TraceLegend;
+
+/**
+ * The summary the page receives: the trace's fields, with its metrics. Not its
  * segments: a G-code program has a segment per move (100,000 for a program
  * of 100,000 lines), which the page would take a long task to receive; the
  * segment of the point it shows comes with that point's StepDetail instead.
  */
-export type PathSummary = TraceSummary & { metrics: Metrics };
+export type PathSummary = TraceFields & { metrics: Metrics };
 
 /**
  * Which of a path's points come with it. A path of fewer than `allBelow`
@@ -99,7 +105,7 @@ export function pointsEvery(points: number, sent: PointsSent): number {
  * A finished trace as the page receives it: the summary (a trace's with its
  * metrics, by default) and the arrays every view needs at once.
  */
-export interface TracedPath<Summary extends TraceSummary = PathSummary> {
+export interface TracedPath<Summary extends TraceFields = PathSummary> {
   summary: Summary;
   /** Point indices 0, pointsEvery, 2 · pointsEvery, ... (every point when pointsEvery is 1), flat with stride dims. */
   sampledPoints: Int32Array;
@@ -124,7 +130,7 @@ export type ProgramRecord = GcodeProgramInfo;
  * its segments again (one per move) and replay it for its ties, several
  * times the run's own time, and no view of a program shows them.
  */
-export interface RunProgram extends TracedPath<TraceSummary> {
+export interface RunProgram extends TracedPath<TraceFields> {
   program: ProgramRecord;
 }
 

@@ -16,13 +16,13 @@ import {
   traceJsonChunks,
   VoxpathError,
 } from '../core/index.js';
-import type { Trace, TraceSummary } from '../core/index.js';
+import type { Trace } from '../core/index.js';
 import { grouped } from '../core/export.js';
 import { yieldToEventLoop } from '../core/slices.js';
 import { idealLineOf } from '../ideal-line.js';
 import { drawnLight, pointBounds, widestCells } from '../scene/light-drawing.js';
 import { pointsEvery } from './protocol.js';
-import type { ExportFormat, LongRequestKind, PointsSent, ProgressValue, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, WorkerRequest } from './protocol.js';
+import type { ExportFormat, LongRequestKind, PointsSent, ProgressValue, ReplyMessage, ReplyValue, RequestKind, RequestMessage, TracedPath, TraceFields, WorkerRequest } from './protocol.js';
 
 const traces = new Map<number, Trace>();
 const programs = new Map<number, GcodeProgram>();
@@ -48,14 +48,14 @@ interface Answer {
 }
 
 /** The arrays every view needs at once, freshly copied so they can be transferred; of the points, those `sent` asks for. */
-function pathOf(t: Trace, sent: PointsSent): TracedPath<TraceSummary> {
+function pathOf(t: Trace, sent: PointsSent): TracedPath<TraceFields> {
   // pointsInRange, not the cached `points` getter: a transferred buffer is
   // detached here, and the cache would then hand out an empty array.
   const every = pointsEvery(t.steps + 1, sent);
   const sampledPoints = t.pointsInRange(0, t.steps + 1, every);
   const idealLine = t.idealLine();
-  // The summary's own fields, as the core declared them.
-  return { summary: { ...t }, sampledPoints, pointsEvery: every, idealLine, bounds: t.bounds };
+  // The summary's and the legend's fields, as the core declared them.
+  return { summary: { ...t, ...t.legend }, sampledPoints, pointsEvery: every, idealLine, bounds: t.bounds };
 }
 
 /**

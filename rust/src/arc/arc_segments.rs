@@ -624,6 +624,7 @@ mod tests {
     fn seen(t: &Trace) -> Vec<String> {
         let mut out = vec![
             serde_json::to_string(&t.summary()).unwrap(),
+            serde_json::to_string(&t.legend()).unwrap(),
             serde_json::to_string(&t.segment_summaries()).unwrap(),
             format!("{:?}", t.points_flat(0, t.steps() + 1)),
             format!("{:?}", t.decisions_flat(0, t.steps())),

@@ -1834,6 +1834,7 @@ mod tests {
             serde_json::to_string(&p.info).unwrap(),
             serde_json::to_string(&p.moves()).unwrap(),
             serde_json::to_string(&t.summary()).unwrap(),
+            serde_json::to_string(&t.legend()).unwrap(),
             serde_json::to_string(&t.segment_summaries()).unwrap(),
             format!("{:?}", t.points_flat(0, t.steps() + 1)),
             format!("{:?}", t.decisions_flat(0, t.steps())),
