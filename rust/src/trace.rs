@@ -411,8 +411,9 @@ impl Filled {
     }
 }
 
-/// A type-erased stepper: the replay engine.
+/// A type-erased stepper whose state can be copied: the replay engine.
 trait Replay {
+    fn clone_box(&self) -> Box<dyn Replay>;
     /// Takes the next step, writing its decision into `row` (segment columns).
     fn replay_step(&mut self, row: &mut [f64]) -> Option<Step>;
     /// Takes the next step, explaining it.
@@ -432,6 +433,10 @@ trait Replay {
 }
 
 impl<S: Stepper> Replay for S {
+    fn clone_box(&self) -> Box<dyn Replay> {
+        Box::new(self.clone())
+    }
+
     fn replay_step(&mut self, row: &mut [f64]) -> Option<Step> {
         let (step, why) = self.next_step()?;
         why.write(row);
@@ -469,23 +474,6 @@ impl<S: Stepper> Replay for S {
     }
 }
 
-/// Copies of a segment's stepper state, the one before segment step
-/// j · [`CHECKPOINT_INTERVAL`] at index j (0: before its first step), kept
-/// in one array of the stepper's own type: one allocation a segment, where
-/// a box a copy made the circle of r = 300,000 allocate 415 of them in its
-/// `trace()` and free them with it (about 0.1 ms of its 1.4 ms after a
-/// collection, memory not in cache).
-trait Checkpoints {
-    /// A copy of the state at `checkpoint`, to replay from.
-    fn state_at(&self, checkpoint: usize) -> Box<dyn Replay>;
-}
-
-impl<S: Stepper> Checkpoints for Vec<S> {
-    fn state_at(&self, checkpoint: usize) -> Box<dyn Replay> {
-        Box::new(self[checkpoint].clone())
-    }
-}
-
 /// A stretch of the trace produced by one stepper against one ideal path
 /// (a whole line, one chord of a segmented arc, one G-code move).
 pub struct Segment {
@@ -500,10 +488,11 @@ pub struct Segment {
     /// For each of the stepper's columns, its index among the trace columns
     /// (shared by the segments of one stepper type).
     column_index: Rc<[usize]>,
-    /// Stepper state before the segment's first step and every
-    /// CHECKPOINT_INTERVAL steps of it: a segment shorter than that keeps
-    /// the first alone.
-    states: Box<dyn Checkpoints>,
+    /// Stepper state before the segment's first step.
+    first_state: Box<dyn Replay>,
+    /// Stepper state before segment step j * CHECKPOINT_INTERVAL, j >= 1
+    /// (at index j - 1): a segment shorter than that keeps none.
+    states: Vec<Box<dyn Replay>>,
 }
 
 /// A segment as read: kept by the trace, or made again when read.
@@ -532,8 +521,7 @@ impl std::ops::Deref for SegmentRef<'_> {
 pub struct MadeSegment {
     start: Point,
     ideal: IdealPath,
-    /// Its stepper's state before its first step, alone.
-    first_state: Box<dyn Checkpoints>,
+    first_state: Box<dyn Replay>,
     columns: &'static [Column],
 }
 
@@ -545,7 +533,7 @@ impl MadeSegment {
             start,
             ideal,
             columns: stepper.columns(),
-            first_state: Box::new(vec![stepper]),
+            first_state: Box::new(stepper),
         }
     }
 }
@@ -804,15 +792,14 @@ impl TraceBuilder {
         let first_step = self.steps.len() as u64;
         let known_steps = stepper.remaining_steps();
         let column_index = self.begin_segment(known_steps, stepper.columns(), S::Why::FIGURE)?;
-        // The first state's copy on the stack, moved into the segment's
-        // checkpoints if it is kept; none for one made when read that ends
-        // before its first checkpoint (an arc's chords, a program's
-        // moves), which is never kept.
+        // A copy on the stack, boxed if the segment is kept; none for one
+        // made when read that ends before its first checkpoint (an arc's
+        // chords, a program's moves), which is never kept.
         let made_for_sure = made_when_read && known_steps.is_some_and(|n| n < CHECKPOINT_INTERVAL);
-        let mut first_state = (!made_for_sure).then(|| stepper.clone());
-        let mut states: Vec<S> = Vec::new();
+        let first_state = (!made_for_sure).then(|| stepper.clone());
         let start = self.position;
         let mut segment_steps = 0;
+        let mut states: Vec<Box<dyn Replay>> = Vec::new();
         // `stepper` is stepped where it was passed: moved into a local of
         // its own, it was copied (a regions stepper is 296 bytes, in wasm a
         // memory.copy, a call into the engine) once per segment.
@@ -822,13 +809,7 @@ impl TraceBuilder {
         // into the array; the position moves by each chunk's displacement.
         loop {
             if segment_steps > 0 && segment_steps % CHECKPOINT_INTERVAL == 0 {
-                if let Some(first) = first_state.take() {
-                    // Room for every checkpoint when the length is known.
-                    let checkpoints = known_steps.map_or(1, |n| n / CHECKPOINT_INTERVAL);
-                    states.reserve(1 + usize::try_from(checkpoints).unwrap_or(1));
-                    states.push(first);
-                }
-                states.push(stepper.clone());
+                states.push(Box::new(stepper.clone()));
             }
             let total = self.steps.len() as u64;
             let mut chunk = (CHECKPOINT_INTERVAL - segment_steps % CHECKPOINT_INTERVAL)
@@ -852,10 +833,6 @@ impl TraceBuilder {
         if made_when_read && states.is_empty() {
             self.segments.push_made(first_step);
         } else {
-            if let Some(first) = first_state {
-                // Shorter than a checkpoint's interval: the first alone.
-                states.push(first);
-            }
             self.segments.push_kept(Segment {
                 first_step,
                 steps: segment_steps,
@@ -863,7 +840,10 @@ impl TraceBuilder {
                 ideal: ideal(),
                 setup_note: None,
                 column_index,
-                states: Box::new(states),
+                first_state: Box::new(
+                    first_state.expect("a segment that may be kept keeps its first state"),
+                ),
+                states,
             });
         }
         Ok(())
@@ -1235,7 +1215,8 @@ impl Trace {
             ideal: made.ideal,
             setup_note: None,
             column_index,
-            states: made.first_state,
+            first_state: made.first_state,
+            states: Vec::new(),
         })
     }
 
@@ -1969,10 +1950,10 @@ pub struct TraceSummary<'a> {
 
 /// How to read a trace's decisions and how far its points may stray: read
 /// when first asked for, not with every trace. Its columns' and figures'
-/// texts are 2 to 3 KB a trace (the helix's 12 columns 2.7 KB), and
-/// handing them over with the summary took about 0.1 ms of `trace()` after
-/// a collection, memory not in cache (a tenth of the circle of r = 300,000
-/// traced).
+/// texts are 2 to 3 KB a trace (the helix's 12 columns 2.7 KB): handed
+/// over with the summary, after a collection with memory not in cache,
+/// they made `trace()` of a circle of r = 10 take 0.28 ms, 0.25 ms without
+/// (Node, in the end-to-end bench's order, medians of 24).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct TraceLegend<'a> {
@@ -2015,7 +1996,10 @@ impl Segment {
     /// A copy of the stepper's state before segment step
     /// `checkpoint` * CHECKPOINT_INTERVAL.
     fn state_at(&self, checkpoint: usize) -> Box<dyn Replay> {
-        self.states.state_at(checkpoint)
+        match checkpoint {
+            0 => self.first_state.clone_box(),
+            _ => self.states[checkpoint - 1].clone_box(),
+        }
     }
 
     /// The stepper's note: kept, or made from its state at the start.

@@ -186,8 +186,9 @@ export class Trace {
   /**
    * How to read the decisions (their columns, the pictures they can have)
    * and the bound the deviation keeps, fetched from the core on first read:
-   * 2 to 3 KB of teaching text a trace, which `trace()` handing it over
-   * with the summary cost a caller that reads points alone about 0.1 ms.
+   * 2 to 3 KB of teaching text a trace, which a caller that reads points
+   * alone need not wait for (it made a small `trace()` after a collection
+   * 0.28 ms where it is 0.25 ms without).
    * Not one of the summary's fields: `{ ...trace, ...trace.legend }` has
    * them all.
    */
