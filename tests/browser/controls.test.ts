@@ -358,6 +358,10 @@ describe("the charts or the check of a learner's points cancelled, then another 
     const { page } = p;
     const counter = page.getByTestId('step-counter');
     await counter.filter({ hasText: /of [1-9]/ }).waitFor({ timeout: 30_000 });
+    // The first path's charts drawn, their bar gone: a CI run under load found it still shown when the path was, and
+    // the Cancel below then stopped that path's charts, not the next one's, which the switch back drew.
+    await expect.poll(() => page.getByTestId('charts').locator('.uplot').count(), { timeout: 30_000 }).toBe(2);
+    await page.getByTestId('charts-run').waitFor({ state: 'hidden', timeout: 30_000 });
     // Clicked from inside the page at the bar's first report: a click from the test may come once the rows are made.
     const cancelled = onceShown(page, 'charts-run', { click: 'charts-cancel' });
     await page.getByTestId('input-turns').fill('264');
