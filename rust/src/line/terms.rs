@@ -82,18 +82,18 @@ impl Jump {
     /// This jump for four chains at once in the i32 lanes of a [`Quad`],
     /// None where a value they take might not fit them: the chains' places
     /// run up to `steps` plus a jump's steps, their values stay in the
-    /// window (low, low + increment] of [`Jump::over`], and each lane's
-    /// sum and compare must stay below 2^30 in size, as [`Quad`] asks.
+    /// window (low, low + increment] of [`Jump::over`] (increment =
+    /// long_move - short_move), and every value and constant must stay
+    /// below 2^30 in size, as [`Quad`] asks.
     fn in_lanes(&self, steps: i64) -> Option<LaneJump> {
         const FITS: i64 = 1 << 29;
         let long_count = self.short_count + 1;
         let low = self.long_below + self.short_move;
+        let increment = self.long_move - self.short_move;
         let fits = [
             steps + long_count,
             self.long_below.abs() + 1,
-            self.long_move.abs(),
-            self.short_move.abs(),
-            low.abs(),
+            low.abs() + increment,
         ]
         .iter()
         .all(|&x| x < FITS);
