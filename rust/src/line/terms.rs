@@ -101,7 +101,7 @@ impl Jump {
             long_from: Quad::splat(self.long_below + 1),
             short_count: Quad::splat(self.short_count),
             short_move: Quad::splat(self.short_move),
-            long_more: Quad::splat(self.long_move - self.short_move),
+            long_more: Quad::splat(increment),
         })
     }
 
@@ -131,7 +131,7 @@ struct LaneJump {
     long_from: Quad,
     short_count: Quad,
     short_move: Quad,
-    /// long_move - short_move.
+    /// long_move - short_move: the term's increment.
     long_more: Quad,
 }
 
