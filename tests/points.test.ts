@@ -5,7 +5,7 @@
 // grows wasm memory by that buffer, not by the points; and what trace()
 // no longer computes up front (metrics, segments) is there when read.
 import { describe, expect, it } from 'vitest';
-import { algorithms, memoryBytes, runGcode, trace } from '../web/core/index.js';
+import { algorithms, heapBytes, memoryBytes, runGcode, trace } from '../web/core/index.js';
 import type { Trace, TraceOptions } from '../web/core/index.js';
 
 /**
@@ -161,6 +161,29 @@ describe('points', () => {
 });
 
 describe('what trace() leaves until it is read', () => {
+  // A circle, a helix and an arc in chords are planned (rust/src/plan.rs):
+  // their steps are recorded only when something needs them, and points
+  // read first come straight from their steppers.
+  it.each([
+    ['a circle in x and y', { algorithm: 'circle', from: [300_000, 0], to: [0, -300_000], center: [0, 0], dir: 'cw' }],
+    ['a helix', { algorithm: 'helix', from: [0, 500, 40_000], to: [0, -60_000, 40_000], center: [0, 0, 0], plane: 'zx', turns: 1 }],
+    ['an arc in chords', { algorithm: 'arc-segments', from: [90_000, 5, 0], to: [-7, 90_005, 0], center: [0, 5, 0], lineAlgorithm: 'greedy' }],
+  ] as [string, TraceOptions][])('of %s: records its steps only when read past its points, which are the same', async (_, options) => {
+    const heap = heapBytes();
+    const t = await trace(options);
+    const first = t.points;
+    // Neither the summary nor the points held its steps: 2 bytes a step.
+    expect(heapBytes() - heap).toBeLessThan(t.steps);
+    expect(first.length).toBe((t.steps + 1) * t.dims);
+    expect(Array.from(first.subarray(-t.dims))).toEqual(t.end);
+    // A range reads the recorded trace: its codes replayed are those points.
+    expectValues(first, replayed(t, 0, t.steps + 1), 'points read first');
+    expect(heapBytes() - heap).toBeGreaterThan(2 * t.steps);
+    expectValues(t.pointsInRange(0, t.steps + 1), first, 'points read again, recorded');
+    t.free();
+    expect(heapBytes()).toBe(heap);
+  });
+
   it('gives the metrics the points have, when first read', async () => {
     const t = await trace({ algorithm: 'dda', from: [0, 0, 0], to: [5000, 3001, -1999] });
     expect(Object.keys(t)).not.toContain('metrics');

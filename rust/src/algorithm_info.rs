@@ -4,6 +4,7 @@
 //! can import them without a loop.
 
 use crate::error::Error;
+use crate::plan::Plan;
 use crate::request::{OptionSpec, Request, TiePolicy};
 use crate::trace::{Column, Trace};
 use serde::{Serialize, Serializer};
@@ -52,6 +53,12 @@ fn json_text<S: Serializer>(text: &&'static str, s: S) -> Result<S::Ok, S::Error
         .serialize(s)
 }
 
+/// Makes a plan of a request for the algorithm it names ([`crate::plan`]),
+/// or None where the algorithm cannot promise its path's length and end
+/// without running it. Its errors are never shown: the algorithm's `trace`
+/// makes every error a request gets ([`crate::lazy_trace::LazyTrace::new`]).
+pub type PlanFn = fn(&Request, Find) -> Result<Option<Plan>, Error>;
+
 /// One algorithm of the catalogue.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
@@ -88,6 +95,10 @@ pub struct AlgorithmInfo {
     /// Runs the algorithm on a request whose `algorithm` is this id.
     #[serde(skip)]
     pub trace: fn(&Request, Find) -> Result<Trace, Error>,
+    /// Plans a request without recording it, where this algorithm knows
+    /// its path's length and end before running it ([`crate::planned`]).
+    #[serde(skip)]
+    pub plan: Option<PlanFn>,
 }
 
 impl AlgorithmInfo {

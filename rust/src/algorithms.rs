@@ -4,6 +4,7 @@
 
 pub use crate::algorithm_info::{AlgorithmInfo, Family};
 use crate::error::Error;
+use crate::lazy_trace::LazyTrace;
 use crate::request::Request;
 use crate::trace::Trace;
 
@@ -100,6 +101,12 @@ pub fn find(id: &str) -> Result<&'static AlgorithmInfo, Error> {
 /// `{"algorithm": "regions", "from": [0,0,0], "to": [10,7,6]}`.
 pub fn trace_json(request_json: &str) -> Result<Trace, Error> {
     run(&Request::from_json(request_json)?)
+}
+
+/// The request described by JSON text, planned where its algorithm plans
+/// ([`crate::plan`]): recorded when something first needs its steps.
+pub fn plan_json(request_json: &str) -> Result<LazyTrace, Error> {
+    LazyTrace::new(Request::from_json(request_json)?, find)
 }
 
 /// Runs a parsed request with the algorithm it names.

@@ -26,6 +26,7 @@
 //! `line` and `column`, set, and `limit` (a `Limit`) when a cap was met.
 
 use crate::error::{Error, Location};
+use crate::lazy_trace::LazyTrace;
 use crate::trace::Trace;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -98,7 +99,7 @@ const ALGORITHM_ID_TYPE: &str = crate::algorithms::ALGORITHM_ID_TS;
 
 #[wasm_bindgen]
 pub fn trace(request_json: &str) -> Result<TraceHandle, JsValue> {
-    crate::algorithms::trace_json(request_json)
+    crate::algorithms::plan_json(request_json)
         .map(TraceHandle)
         .map_err(|e| to_js_error(&e))
 }
@@ -420,9 +421,14 @@ pub fn read_points(text: &TextBytes, dims: u32) -> Result<Vec<f64>, JsValue> {
 
 /// A finished trace held in wasm memory.
 #[wasm_bindgen]
-pub struct TraceHandle(Trace);
+pub struct TraceHandle(LazyTrace);
 
 impl TraceHandle {
+    /// The trace, recorded now if it was only planned.
+    fn trace(&self) -> &Trace {
+        self.0.trace()
+    }
+
     fn check_range(&self, what: &str, from: u32, to: u32, len: u64) -> Result<(u64, u64), JsValue> {
         if from > to || to as u64 > len {
             return Err(to_js_error(&Error::field(
@@ -462,34 +468,34 @@ impl TraceHandle {
     /// Decision columns, their figures and the deviation's bound.
     #[wasm_bindgen(unchecked_return_type = "TraceLegend")]
     pub fn legend(&self) -> JsValue {
-        to_js(&self.0.legend())
+        to_js(&self.trace().legend())
     }
 
     /// Every segment, with its ideal path and note (one per chord of an
     /// arc, one per G-code move).
     #[wasm_bindgen(unchecked_return_type = "SegmentSummary[]")]
     pub fn segments(&self) -> JsValue {
-        to_js(&self.0.segment_summaries())
+        to_js(&self.trace().segment_summaries())
     }
 
     /// Whole-path statistics, computed on the first call (a pass over
     /// every point and a replay of the decisions for the ties).
     #[wasm_bindgen(unchecked_return_type = "Metrics")]
     pub fn metrics(&self) -> JsValue {
-        to_js(self.0.metrics())
+        to_js(self.trace().metrics())
     }
 
     /// Makes the metrics' pass over at most `max_points` more points
     /// (`Trace::advance_metrics`); once done, `metrics` returns them at once.
     #[wasm_bindgen(js_name = advanceMetrics, unchecked_return_type = "PointsProgress")]
     pub fn advance_metrics(&self, max_points: u32) -> JsValue {
-        to_js(&self.0.advance_metrics(max_points.into()))
+        to_js(&self.trace().advance_metrics(max_points.into()))
     }
 
     /// The box every point lies in (a pass over the steps on each call).
     #[wasm_bindgen(unchecked_return_type = "PointBounds")]
     pub fn bounds(&self) -> JsValue {
-        to_js(&self.0.bounds())
+        to_js(&self.trace().bounds())
     }
 
     /// Writes every `every`-th point of point indices `from..to` (point
@@ -557,7 +563,7 @@ impl TraceHandle {
     /// Decision columns for step indices `from..to`, column-major.
     pub fn decisions(&self, from: u32, to: u32) -> Result<Vec<f64>, JsValue> {
         let (from, to) = self.step_range(from, to)?;
-        Ok(self.0.decisions_flat(from, to))
+        Ok(self.trace().decisions_flat(from, to))
     }
 
     /// Writes the deviation from the ideal path of points `from..to` into
@@ -571,7 +577,7 @@ impl TraceHandle {
             values,
             || format!("a Float64Array of {values} values (one a point)"),
             |sink| {
-                self.0
+                self.trace()
                     .for_each_deviation(from, to, |deviation| sink.push(deviation))
             },
         )
@@ -588,7 +594,7 @@ impl TraceHandle {
         out: &js_sys::Float64Array,
     ) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
-        let dims = self.0.dims();
+        let dims = self.trace().dims();
         let values = (to - from) * dims as u64;
         Float64Out::write(
             out,
@@ -600,7 +606,7 @@ impl TraceHandle {
                 )
             },
             |sink| {
-                self.0
+                self.trace()
                     .for_each_axis_error(from, to, |error| sink.push(error))
             },
         )
@@ -611,7 +617,7 @@ impl TraceHandle {
     pub fn step_codes(&self, from: u32, to: u32) -> Result<Vec<u16>, JsValue> {
         let (from, to) = self.step_range(from, to)?;
         let mut out = room_for(to - from, || format!("the codes of steps {from}..{to}"))?;
-        out.extend(self.0.step_range(from, to).iter().map(|s| s.0));
+        out.extend(self.trace().step_range(from, to).iter().map(|s| s.0));
         Ok(out)
     }
 
@@ -622,14 +628,14 @@ impl TraceHandle {
         let mut out = room_for(to - from, || {
             format!("the DIR levels of steps {from}..{to}")
         })?;
-        crate::machine::push_direction_levels(&self.0, from, to, &mut out);
+        crate::machine::push_direction_levels(self.trace(), from, to, &mut out);
         Ok(out)
     }
 
     /// One sentence: why step index `step` was taken.
     pub fn explain(&self, step: u32) -> Result<String, JsValue> {
         let (step, _) = self.step_range(step, step + 1)?;
-        Ok(self.0.explain(step))
+        Ok(self.trace().explain(step))
     }
 
     /// Point index `point` (0..=steps) and the step that produced it (step
@@ -638,7 +644,7 @@ impl TraceHandle {
     #[wasm_bindgen(js_name = stepDetail, unchecked_return_type = "StepDetail")]
     pub fn step_detail(&self, point: u32) -> Result<JsValue, JsValue> {
         let (point, _) = self.point_range(point, point + 1)?;
-        Ok(to_js(&crate::step_detail::step_detail(&self.0, point)))
+        Ok(to_js(&crate::step_detail::step_detail(self.trace(), point)))
     }
 
     /// A chart's rows of points `from..to`, at most `max_rows` of them
@@ -646,7 +652,7 @@ impl TraceHandle {
     #[wasm_bindgen(js_name = chartRows)]
     pub fn chart_rows(&self, from: u32, to: u32, max_rows: u32) -> Result<Vec<f64>, JsValue> {
         let (from, to) = self.chart_range(from, to, max_rows)?;
-        Ok(self.0.chart_rows(from, to, max_rows.into()))
+        Ok(self.trace().chart_rows(from, to, max_rows.into()))
     }
 
     /// Makes the rows of `chartRows(from, to, max_rows)` over at most
@@ -661,7 +667,7 @@ impl TraceHandle {
         max_points: u32,
     ) -> Result<JsValue, JsValue> {
         let (from, to) = self.chart_range(from, to, max_rows)?;
-        Ok(to_js(&self.0.advance_chart_rows(
+        Ok(to_js(&self.trace().advance_chart_rows(
             from,
             to,
             max_rows.into(),
@@ -674,7 +680,7 @@ impl TraceHandle {
     #[wasm_bindgen(js_name = takeChartRows)]
     pub fn take_chart_rows(&self, from: u32, to: u32, max_rows: u32) -> Result<Vec<f64>, JsValue> {
         let (from, to) = self.chart_range(from, to, max_rows)?;
-        Ok(self.0.take_chart_rows(from, to, max_rows.into()))
+        Ok(self.trace().take_chart_rows(from, to, max_rows.into()))
     }
 
     /// This trace against `other` (same dims): both digests, the first
@@ -682,7 +688,8 @@ impl TraceHandle {
     /// only one visits (`compare::compare`).
     #[wasm_bindgen(js_name = compareWith, unchecked_return_type = "Comparison")]
     pub fn compare_with(&self, other: &TraceHandle) -> Result<JsValue, JsValue> {
-        let result = crate::compare::compare(&self.0, &other.0).map_err(|e| to_js_error(&e))?;
+        let result =
+            crate::compare::compare(self.trace(), other.trace()).map_err(|e| to_js_error(&e))?;
         Ok(to_js(&result))
     }
 
@@ -690,14 +697,14 @@ impl TraceHandle {
     /// order, each once (Int32Array, stride dims).
     #[wasm_bindgen(js_name = cellsOnlyIn)]
     pub fn cells_only_in(&self, other: &TraceHandle) -> Result<Vec<i32>, JsValue> {
-        crate::compare::cells_only_in(&self.0, &other.0).map_err(|e| to_js_error(&e))
+        crate::compare::cells_only_in(self.trace(), other.trace()).map_err(|e| to_js_error(&e))
     }
 
     /// The tool's speed per step at one tick a step and at a constant feed
     /// (`step_clocks`), in at most `max_rows` rows.
     #[wasm_bindgen(js_name = stepClocks, unchecked_return_type = "StepClocks")]
     pub fn step_clocks(&self, max_rows: u32) -> Result<JsValue, JsValue> {
-        crate::step_clocks::step_clocks(&self.0, max_rows)
+        crate::step_clocks::step_clocks(self.trace(), max_rows)
             .map(|clocks| to_js(&clocks))
             .map_err(|e| to_js_error(&e))
     }
@@ -705,7 +712,7 @@ impl TraceHandle {
     /// The ideal path as a polyline for drawing (Float64Array, stride dims).
     #[wasm_bindgen(js_name = idealPolyline)]
     pub fn ideal_polyline(&self) -> Vec<f64> {
-        self.0.ideal_polyline()
+        self.trace().ideal_polyline()
     }
 
     /// The ideal polyline as WebGL draws it, from the grid point
@@ -713,7 +720,7 @@ impl TraceHandle {
     /// in the core until copied into an array of its length.
     #[wasm_bindgen(js_name = idealLine)]
     pub fn ideal_line(&self, origin_x: f64, origin_y: f64, origin_z: f64) -> IdealLineHandle {
-        IdealLineHandle(self.0.ideal_line_f32([origin_x, origin_y, origin_z]))
+        IdealLineHandle(self.trace().ideal_line_f32([origin_x, origin_y, origin_z]))
     }
 }
 
@@ -775,7 +782,7 @@ impl DifferenceRun {
     /// points), else an error naming `other`.
     #[wasm_bindgen(constructor)]
     pub fn new(a: &TraceHandle, b: &TraceHandle) -> Result<DifferenceRun, JsValue> {
-        crate::compare::DifferencePass::new(&a.0, &b.0)
+        crate::compare::DifferencePass::new(a.trace(), b.trace())
             .map(DifferenceRun)
             .map_err(|e| to_js_error(&e))
     }
@@ -783,7 +790,10 @@ impl DifferenceRun {
     /// Sorts the next trace's cells (`a`'s, then `b`'s, merged with `a`'s).
     #[wasm_bindgen(unchecked_return_type = "PointsProgress")]
     pub fn advance(&mut self, a: &TraceHandle, b: &TraceHandle) -> Result<JsValue, JsValue> {
-        let progress = self.0.advance(&a.0, &b.0).map_err(|e| to_js_error(&e))?;
+        let progress = self
+            .0
+            .advance(a.trace(), b.trace())
+            .map_err(|e| to_js_error(&e))?;
         Ok(to_js(&progress))
     }
 
@@ -793,7 +803,7 @@ impl DifferenceRun {
     pub fn first_difference(&self, a: &TraceHandle, b: &TraceHandle) -> Result<JsValue, JsValue> {
         let first = self
             .0
-            .first_difference(&a.0, &b.0)
+            .first_difference(a.trace(), b.trace())
             .map_err(|e| to_js_error(&e))?;
         Ok(to_js(&first))
     }
@@ -808,7 +818,7 @@ impl DifferenceRun {
         b: &TraceHandle,
     ) -> Result<Vec<i32>, JsValue> {
         self.0
-            .cells_only_in(side as usize, &a.0, &b.0)
+            .cells_only_in(side as usize, a.trace(), b.trace())
             .map_err(|e| to_js_error(&e))
     }
 }
@@ -860,7 +870,7 @@ impl GcodeVcd {
         let mut out = Vec::new();
         let more = self
             .0
-            .write_next(&trace.0, &result.timeline, &mut out)
+            .write_next(trace.trace(), &result.timeline, &mut out)
             .map_err(vcd_error)?;
         Ok(more.then_some(out))
     }
@@ -1070,7 +1080,7 @@ impl GcodeResult {
     pub fn take_trace(&mut self) -> Result<TraceHandle, JsValue> {
         self.trace
             .take()
-            .map(TraceHandle)
+            .map(|trace| TraceHandle(trace.into()))
             .ok_or_else(|| to_js_error(&Error::field("trace", "already taken from this result")))
     }
 }

@@ -29,11 +29,13 @@ use crate::error::{Error, TooManyChords, counted, number_text};
 use crate::grid::{Point, round_half_away_within, round_ratio_half_away};
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
+use crate::line::line_stepper::{IntoSink, RemainingSteps};
 use crate::line::line_stepper::{LineStepper, MakeSegment, StepperVisitor};
 use crate::line::regions_wang::RegionsWhy;
+use crate::plan::Plan;
 use crate::range::NumberRange;
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO};
-use crate::trace::{Decision, MadeSegment, Stepper, Trace, TraceBuilder};
+use crate::trace::{Decision, MadeSegment, Stepper, Trace, TraceBuilder, path_too_long};
 use serde_json::{Map, Value};
 use std::rc::Rc;
 
@@ -141,6 +143,11 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
         let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
         trace_chords(ID, req, &spec, false, find)
     },
+    plan: Some(|req, find| {
+        req.check_options(INFO.options)?;
+        let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
+        plan_chords(req, &spec, false, find)
+    }),
 };
 
 /// How many chords: the blog's fixed length or Grbl's tolerance.
@@ -295,18 +302,26 @@ pub fn trace_chords(
     chords_by(id, req, spec, helical, find, true)
 }
 
-/// [`trace_chords`], its chords' steppers run straight into the arc's
-/// trace when `in_place` and the line algorithm has a [`LineStepper`],
-/// else each chord the catalogue's trace, appended (the tests hold the
-/// two to the same trace).
-fn chords_by(
-    id: &str,
+/// An arc's chords ready to run: their vertices and notes, their line
+/// algorithm and its stepper, and the fewest steps they take.
+struct Chorded {
+    notes: Rc<ChordNotes>,
+    chords: Rc<Chords>,
+    line_request: Request,
+    line_info: &'static AlgorithmInfo,
+    /// The sum of the chords' largest |Δ|.
+    at_least: u64,
+}
+
+/// The chords of the arc of `spec` by the request's line algorithm (see
+/// [`chords_by`]), refused when they would take more than maxSteps.
+fn chorded(
     req: &Request,
     spec: &ArcSpec,
     helical: bool,
     find: Find,
     in_place: bool,
-) -> Result<Trace, Error> {
+) -> Result<Chorded, Error> {
     let chording = Chording::parse(req)?;
     let line = req.choice(&LINE_ALGORITHM)?.unwrap_or(LINE_ALGORITHMS[0]);
     let line_info = find(line)?;
@@ -342,7 +357,7 @@ fn chords_by(
     let chords = vertices(spec, n);
     let arc = spec.ideal_arc();
     let helix = HelixPath::new(arc.clone(), 0.0, spec.rise as f64);
-    let mut builder = TraceBuilder::for_request(spec.from, req)?;
+    let max_steps = req.max_steps()?;
     // A line algorithm moves each axis at most one unit per step, so a
     // chord takes at least its largest |Δ| steps: an arc that needs more
     // than maxSteps by that count alone is refused before any chord runs.
@@ -354,8 +369,8 @@ fn chords_by(
         .zip(chords.iter())
         .map(|(a, b)| a.chebyshev_to(&b.point))
         .sum();
-    if at_least > builder.max_steps() {
-        return Err(builder.too_long(at_least));
+    if at_least > max_steps {
+        return Err(path_too_long(max_steps, at_least));
     }
     let mut line_options = Map::new();
     if let Some(tie) = tie {
@@ -381,6 +396,80 @@ fn chords_by(
         helix,
         helical,
     });
+    Ok(Chorded {
+        notes,
+        chords,
+        line_request,
+        line_info,
+        at_least,
+    })
+}
+
+/// The chords of the arc of `spec` planned ([`crate::plan`]), where
+/// their line algorithm has a [`LineStepper`]: their steps are each
+/// chord's stepper's count, and they end at the last vertex.
+pub fn plan_chords(
+    req: &Request,
+    spec: &ArcSpec,
+    helical: bool,
+    find: Find,
+) -> Result<Option<Plan>, Error> {
+    let Chorded { notes, chords, .. } = chorded(req, spec, helical, find, true)?;
+    let mut steps = 0;
+    for k in 0..notes.chords.len() {
+        let (from, to) = notes.ends(k);
+        match chords
+            .stepper
+            .with_stepper(from.point, to.point, RemainingSteps)
+        {
+            Some(Some(n)) => steps += n,
+            _ => return Ok(None),
+        }
+    }
+    if steps > req.max_steps()? {
+        return Ok(None);
+    }
+    Ok(Some(Plan {
+        start: spec.from,
+        end: notes.chords.last().map_or(spec.from, |v| v.point),
+        steps,
+        run_into: Box::new(move |sink| {
+            for k in 0..chords.notes.chords.len() {
+                let (from, to) = chords.notes.ends(k);
+                debug_assert_eq!(
+                    sink.position(),
+                    from.point,
+                    "a chord starts where the last ended"
+                );
+                chords
+                    .stepper
+                    .with_stepper(from.point, to.point, IntoSink(sink));
+            }
+        }),
+    }))
+}
+
+/// [`trace_chords`], its chords' steppers run straight into the arc's
+/// trace when `in_place` and the line algorithm has a [`LineStepper`],
+/// else each chord the catalogue's trace, appended (the tests hold the
+/// two to the same trace).
+fn chords_by(
+    id: &str,
+    req: &Request,
+    spec: &ArcSpec,
+    helical: bool,
+    find: Find,
+    in_place: bool,
+) -> Result<Trace, Error> {
+    let Chorded {
+        notes,
+        chords,
+        line_request,
+        line_info,
+        at_least,
+    } = chorded(req, spec, helical, find, in_place)?;
+    let mut builder = TraceBuilder::for_request(spec.from, req)?;
+    let stepper = chords.stepper;
     if let LineStepper::ByRequest = stepper {
         by_requests(
             &mut builder,

@@ -33,6 +33,7 @@ use crate::grid::{
 use crate::ideal::IdealPath;
 use crate::lanes::{Codes8, Quad};
 use crate::line::step_target;
+use crate::plan::Plan;
 use crate::request::{FROM, MAX_STEPS, MAX_STEPS_LIMIT, Request, TO};
 use crate::trace::{
     Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, fill_by_next_step,
@@ -67,6 +68,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     default_tie: None,
     compared_by: None,
     trace: trace_circle,
+    plan: Some(plan_circle),
 };
 
 fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
@@ -76,6 +78,23 @@ fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
     let stepper = SaleemCircle::new(&spec).within(builder.max_steps())?;
     builder.run(stepper, IdealPath::Arc(spec.ideal_arc()))?;
     Ok(builder.finish(ID))
+}
+
+/// The circle planned ([`crate::plan`]): its dry run counts its steps,
+/// and its correction steps close it at its end point.
+fn plan_circle(req: &Request, _: Find) -> Result<Option<Plan>, Error> {
+    req.check_options(INFO.options)?;
+    let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
+    let stepper = SaleemCircle::new(&spec).counted(req.max_steps()?)?;
+    let Some(steps) = stepper.remaining_steps() else {
+        return Ok(None);
+    };
+    Ok(Some(Plan {
+        start: spec.start_point(),
+        end: spec.to.with_dims(spec.dims()),
+        steps,
+        run_into: Box::new(move |sink| sink.run(stepper.clone())),
+    }))
 }
 
 pub const OCTANT: Column = Column::new(

@@ -25,7 +25,7 @@
 //! linear step.
 //! Method segments interpolates by angle and has no such drift.
 
-use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, trace_chords};
+use super::arc_segments::{LINE_ALGORITHM, SEGMENT_LENGTH, TOLERANCE, plan_chords, trace_chords};
 use super::circle_saleem::{CIRCLE_COLUMNS, CircleWhy, SaleemCircle};
 use super::{ArcSpec, CENTER, DIR, PLANE, TURNS};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family, Find};
@@ -36,6 +36,7 @@ use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
 use crate::line::step_target;
 use crate::line::terms::Term;
+use crate::plan::Plan;
 use crate::request::{
     AppliesWith, FROM, MAX_STEPS, MAX_STEPS_LIMIT, OptionKind, OptionSpec, Request, TO, TiePolicy,
 };
@@ -125,6 +126,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     default_tie: Some(TiePolicy::Hold),
     compared_by: Some(METHOD.name),
     trace: trace_helix,
+    plan: Some(plan_helix),
 };
 
 fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
@@ -151,6 +153,34 @@ fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     let ideal = HelixPath::new(spec.ideal_arc(), 0.0, spec.rise as f64);
     builder.run(helix, IdealPath::Helix(ideal))?;
     Ok(builder.finish(ID))
+}
+
+/// The helix planned ([`crate::plan`]), as [`trace_helix`] would
+/// trace it: its steps, max(n_c, n_z), known once its circle's dry run
+/// has counted n_c, and it ends at its end point. Its chords (method
+/// segments) as [`plan_chords`] plans them.
+fn plan_helix(req: &Request, find: Find) -> Result<Option<Plan>, Error> {
+    req.check_options(INFO.options)?;
+    let spec = ArcSpec::parse(req, true, INFO.min_dims)?;
+    if req.choice(&METHOD)? == Some("segments") {
+        return plan_chords(req, &spec, true, find);
+    }
+    let tie = req.tie(TiePolicy::Hold)?;
+    let max_steps = req.max_steps()?;
+    if spec.rise.unsigned_abs() > max_steps {
+        return Ok(None);
+    }
+    let circle = SaleemCircle::new(&spec).counted(max_steps)?;
+    let helix = SaleemHelix::new(&spec, circle, tie);
+    if helix.remaining > max_steps {
+        return Ok(None);
+    }
+    Ok(Some(Plan {
+        start: spec.from,
+        end: spec.to,
+        steps: helix.remaining,
+        run_into: Box::new(move |sink| sink.run(helix.clone())),
+    }))
 }
 
 /// The steps of a helix whose rise `n_z` passes maxSteps, as its refusal

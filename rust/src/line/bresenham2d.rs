@@ -60,6 +60,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
             Bresenham2d::new(from, to, tie, variant)
         })
     },
+    plan: None,
 };
 
 /// Which subtraction the error term makes after a minor step.

@@ -45,6 +45,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
             Bresenham3d::new(from, to, tie, gcd)
         })
     },
+    plan: None,
 };
 
 /// The decision behind one step.

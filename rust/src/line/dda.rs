@@ -29,6 +29,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     default_tie: None,
     compared_by: None,
     trace: |req, _| super::trace_line(&INFO, req, |from, to, _| Dda::new(from, to)),
+    plan: None,
 };
 
 /// The decision behind one step.

@@ -42,6 +42,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
         let order = TieAxis::from_request(req)?;
         super::trace_line(&INFO, req, |from, to, _| Greedy::new(from, to, order))
     },
+    plan: None,
 };
 
 /// The decision behind one step.

@@ -15,6 +15,7 @@ use crate::error::Error;
 use crate::figure::FigureKind;
 use crate::grid::Point;
 use crate::ideal::IdealPath;
+use crate::plan::PointsSink;
 use crate::request::{Request, TiePolicy};
 use crate::trace::{Column, Decision, MadeSegment, Stepper};
 
@@ -126,6 +127,26 @@ impl StepperVisitor for MakeSegment {
     type Out = MadeSegment;
     fn visit<S: Stepper>(self, stepper: S) -> MadeSegment {
         MadeSegment::new(self.start, self.ideal, stepper)
+    }
+}
+
+/// Runs the stepper visited into a sink of points.
+pub struct IntoSink<'s, 'a>(pub &'s mut PointsSink<'a, i32>);
+
+impl StepperVisitor for IntoSink<'_, '_> {
+    type Out = ();
+    fn visit<S: Stepper>(self, stepper: S) {
+        self.0.run(stepper);
+    }
+}
+
+/// The visited stepper's steps, where it knows them without running.
+pub struct RemainingSteps;
+
+impl StepperVisitor for RemainingSteps {
+    type Out = Option<u64>;
+    fn visit<S: Stepper>(self, stepper: S) -> Option<u64> {
+        stepper.remaining_steps()
     }
 }
 

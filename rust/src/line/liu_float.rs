@@ -71,6 +71,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
             LiuFloat::new(from, to, tie, decimals)
         })
     },
+    plan: None,
 };
 
 fn decimals_option(req: &Request) -> Result<u32, Error> {

@@ -37,6 +37,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
         let gcd = super::gcd_option(req)?;
         super::trace_line(&INFO, req, |from, to, tie| Nd::new(from, to, tie, gcd))
     },
+    plan: None,
 };
 
 /// The decision behind one step.

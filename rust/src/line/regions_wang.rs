@@ -53,6 +53,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
             RegionsWang::with_gcd(from, to, tie, gcd)
         })
     },
+    plan: None,
 };
 
 /// Where the ideal line crosses the exit face of the current cell

@@ -41,6 +41,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
         let order = TieAxis::from_request(req)?;
         super::trace_line(&INFO, req, |from, to, _| Walk6::new(from, to, order))
     },
+    plan: None,
 };
 
 /// t = num / den, a fraction of the way along the segment.

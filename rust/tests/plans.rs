@@ -1,0 +1,154 @@
+//! A planned trace (`lazy_trace::LazyTrace`, what `trace()` hands over)
+//! is the trace its request records, to the bit: its summary before
+//! anything records it, its points made straight from its steppers
+//! (`plan::PointsSink`, through buffers of any size), and everything read
+//! after it records. On random circles (in 2 and 3 axes, both ways, every
+//! plane, several turns), helices by Saleem's rule and in chords, and
+//! arcs in chords by every line algorithm, near +-2^30 too.
+
+use proptest::prelude::*;
+use voxpath::algorithms::{find, run};
+use voxpath::grid::COORD_LIMIT;
+use voxpath::lazy_trace::LazyTrace;
+use voxpath::request::Request;
+use voxpath::trace::Trace;
+
+/// The points `lazy` hands over through a buffer of `buffer_points`
+/// points, checked to come in order, whole, and once each.
+fn points_through(lazy: &LazyTrace, buffer_points: usize) -> Vec<i32> {
+    let (dims, n) = (lazy.dims(), lazy.steps() + 1);
+    let mut buffer = vec![std::mem::MaybeUninit::new(0); buffer_points * dims];
+    let mut out = Vec::new();
+    lazy.points_by_chunk(0, n, &mut buffer, |k, chunk| {
+        assert_eq!(k as usize * dims, out.len(), "chunks in order");
+        assert_eq!(chunk.len() % dims, 0, "whole points");
+        out.extend_from_slice(chunk);
+    });
+    out
+}
+
+/// The request planned: its summary, its points through a buffer of
+/// `buffer_points` and then through a large one, all as `run` records it;
+/// and, once something recorded it, the same again.
+fn check_plan(json: &str, buffer_points: usize) -> Result<(), TestCaseError> {
+    let recorded: Trace = run(&Request::from_json(json).unwrap()).unwrap();
+    let lazy = LazyTrace::new(Request::from_json(json).unwrap(), find).unwrap();
+    let expected = serde_json::to_value(recorded.summary()).unwrap();
+    prop_assert_eq!(
+        &serde_json::to_value(lazy.summary()).unwrap(),
+        &expected,
+        "{}",
+        json
+    );
+    let points = recorded.points_i32(0, recorded.steps() + 1);
+    prop_assert_eq!(&points_through(&lazy, buffer_points), &points, "{}", json);
+    prop_assert_eq!(&points_through(&lazy, 1 << 16), &points, "{}", json);
+    // Decisions need the recorded trace: it records, as planned.
+    let bits = |t: &Trace| -> Vec<u64> {
+        t.decisions_flat(0, t.steps())
+            .iter()
+            .map(|v| v.to_bits())
+            .collect()
+    };
+    prop_assert!(
+        bits(lazy.trace()) == bits(&recorded),
+        "decisions of {}",
+        json
+    );
+    prop_assert_eq!(&serde_json::to_value(lazy.summary()).unwrap(), &expected);
+    prop_assert_eq!(&points_through(&lazy, buffer_points), &points);
+    Ok(())
+}
+
+fn center_coordinate() -> impl Strategy<Value = i64> {
+    prop_oneof![
+        -5000i64..5000,
+        Just(COORD_LIMIT - 5100),
+        Just(-COORD_LIMIT + 5100)
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn a_planned_arc_is_the_trace_its_request_records(
+        radius in 1i64..2000,
+        center in prop::array::uniform3(center_coordinate()),
+        turn in 0.0f64..std::f64::consts::TAU,
+        rise in -3000i64..=3000,
+        which in 0usize..5,
+        plane in 0usize..3,
+        cw in any::<bool>(),
+        turns in 0u64..3,
+        line in 0usize..7,
+        tie in 0usize..3,
+        buffer_points in 1usize..5000,
+    ) {
+        let [u, v, n] = [[0, 1, 2], [2, 0, 1], [1, 2, 0]][plane];
+        let mut from = center;
+        from[u] += radius;
+        let mut end = center;
+        end[u] += (radius as f64 * turn.cos()).round() as i64;
+        end[v] += (radius as f64 * turn.sin()).round() as i64;
+        let mut helix_end = end;
+        helix_end[n] += rise;
+        let plane = ["xy", "zx", "yz"][plane];
+        let dir = if cw { "cw" } else { "ccw" };
+        let tie = ["", r#","tie":"advance""#, r#","tie":"hold""#][tie];
+        let common = format!(r#""center":{center:?},"plane":"{plane}","dir":"{dir}","turns":{turns}"#);
+        let line = voxpath::arc::arc_segments::LINE_ALGORITHMS[line];
+        let chord_tie = if ["regions", "bresenham3d", "nd"].contains(&line) { tie } else { "" };
+        let json = match which {
+            0 => format!(r#"{{"algorithm":"circle","from":{from:?},"to":{end:?},{common}}}"#),
+            1 if plane == "xy" => format!(
+                r#"{{"algorithm":"circle","from":{:?},"to":{:?},"center":{:?},"dir":"{dir}","turns":{turns}}}"#,
+                &from[..2], &end[..2], &center[..2]
+            ),
+            1 | 2 => format!(
+                r#"{{"algorithm":"arc-segments","from":{from:?},"to":{end:?},{common},"lineAlgorithm":"{line}"{chord_tie}}}"#
+            ),
+            3 => format!(r#"{{"algorithm":"helix","from":{from:?},"to":{helix_end:?},{common}{tie}}}"#),
+            _ => format!(
+                r#"{{"algorithm":"helix","method":"segments","from":{from:?},"to":{helix_end:?},{common},"lineAlgorithm":"{line}"{chord_tie}}}"#
+            ),
+        };
+        check_plan(&json, buffer_points)?;
+    }
+}
+
+/// A request with steps to follow is recorded when made (only recording
+/// checks them, stopping where they end), and reads as recorded.
+#[test]
+fn a_request_to_follow_is_recorded_at_once() {
+    let json = r#"{"algorithm":"circle","from":[5,0,0],"to":[5,0,0],"center":[0,0,0]}"#;
+    let steps: std::sync::Arc<[voxpath::grid::Step]> = run(&Request::from_json(json).unwrap())
+        .unwrap()
+        .step_range(0, 28)
+        .into();
+    let following = Request::from_json(json).unwrap().following(steps);
+    let lazy = LazyTrace::new(following.clone(), find).unwrap();
+    let recorded = run(&following).unwrap();
+    assert_eq!(lazy.steps(), recorded.steps());
+    assert_eq!(
+        points_through(&lazy, 3),
+        recorded.points_i32(0, recorded.steps() + 1)
+    );
+}
+
+/// A plan refused (past maxSteps) is refused with its algorithm's own
+/// error, the one a recorded trace gives.
+#[test]
+fn a_refused_plan_is_told_as_its_trace_is() {
+    for json in [
+        r#"{"algorithm":"circle","from":[500,0,0],"to":[500,0,0],"center":[0,0,0],"maxSteps":100}"#,
+        r#"{"algorithm":"helix","from":[500,0,0],"to":[500,0,900],"center":[0,0,0],"maxSteps":800}"#,
+        r#"{"algorithm":"arc-segments","from":[500,0,0],"to":[500,0,0],"center":[0,0,0],"maxSteps":100}"#,
+    ] {
+        let recorded = run(&Request::from_json(json).unwrap()).err().unwrap();
+        let planned = LazyTrace::new(Request::from_json(json).unwrap(), find)
+            .err()
+            .unwrap();
+        assert_eq!(planned.to_string(), recorded.to_string(), "{json}");
+    }
+}
