@@ -161,10 +161,12 @@ describe('points', () => {
 });
 
 describe('what trace() leaves until it is read', () => {
-  // A circle, a helix and an arc in chords are planned (rust/src/plan.rs):
+  // Lines, circles, helices and arcs in chords are planned (rust/src/plan.rs):
   // their steps are recorded only when something needs them, and points
   // read first come straight from their steppers.
   it.each([
+    ['a 3D line', { algorithm: 'bresenham3d', from: [2 ** 30 - 5, 0, -9], to: [2 ** 30 - 400_000, 123_457, 5] }],
+    ['a 5D line by one axis a step', { algorithm: 'walk6', from: [0, 0, 0, 0, 0], to: [-9000, 7000, 1, 0, 30_000] }],
     ['a circle in x and y', { algorithm: 'circle', from: [300_000, 0], to: [0, -300_000], center: [0, 0], dir: 'cw' }],
     ['a helix', { algorithm: 'helix', from: [0, 500, 40_000], to: [0, -60_000, 40_000], center: [0, 0, 0], plane: 'zx', turns: 1 }],
     ['an arc in chords', { algorithm: 'arc-segments', from: [90_000, 5, 0], to: [-7, 90_005, 0], center: [0, 5, 0], lineAlgorithm: 'greedy' }],

@@ -8,8 +8,8 @@
 //! trace({...})).points`) then pays for codes written to memory and read
 //! back, 3.4 MB for a circle of r = 300,000, out of cache both times.
 //! Where an algorithm knows, before running, how many steps its path
-//! takes and where it ends (a circle's and a helix's dry run counts them,
-//! a chord's line its |Δ|), it plans instead ([`Plan`]): the summary is
+//! takes and where it ends (a line's stepper counts them, a circle's and a
+//! helix's dry run, a chord's line its |Δ|), it plans instead ([`Plan`]): the summary is
 //! known, and the points come from its steppers a few thousand steps at a
 //! time, each run of codes decoded while it is still in cache
 //! ([`PointsSink`]). In Node the circle of r = 300,000 in x and y, traced

@@ -2,7 +2,8 @@
 //! is the trace its request records, to the bit: its summary before
 //! anything records it, its points made straight from its steppers
 //! (`plan::PointsSink`, through buffers of any size), and everything read
-//! after it records. On random circles (in 2 and 3 axes, both ways, every
+//! after it records. On random lines of every line algorithm in every
+//! number of axes it takes, circles (in 2 and 3 axes, both ways, every
 //! plane, several turns), helices by Saleem's rule and in chords, and
 //! arcs in chords by every line algorithm, near +-2^30 too.
 
@@ -117,6 +118,31 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn a_planned_line_is_the_trace_its_request_records(
+        algorithm in 0usize..8,
+        dims in 1usize..=6,
+        start in prop::array::uniform6(prop_oneof![-3000i64..3000, Just(COORD_LIMIT - 9000), Just(-COORD_LIMIT + 9000)]),
+        delta in prop::array::uniform6(prop_oneof![-6000i64..6000, -3i64..3, Just(0i64)]),
+        tie in 0usize..3,
+        buffer_points in 1usize..5000,
+    ) {
+        let id = ["regions", "bresenham2d", "bresenham3d", "nd", "liu-float", "greedy", "walk6", "dda"][algorithm];
+        let info = find(id).unwrap();
+        let dims = dims.clamp(info.min_dims, info.max_dims);
+        let (from, to): (Vec<i64>, Vec<i64>) = (0..dims).map(|a| (start[a], start[a] + delta[a])).unzip();
+        let tie = match (info.default_tie, tie) {
+            (Some(_), 1) => r#","tie":"advance""#,
+            (Some(_), 2) => r#","tie":"hold""#,
+            _ => "",
+        };
+        check_plan(&format!(r#"{{"algorithm":"{id}","from":{from:?},"to":{to:?}{tie}}}"#), buffer_points)?;
+    }
+}
+
 /// A request with steps to follow is recorded when made (only recording
 /// checks them, stopping where they end), and reads as recorded.
 #[test]
@@ -144,6 +170,8 @@ fn a_refused_plan_is_told_as_its_trace_is() {
         r#"{"algorithm":"circle","from":[500,0,0],"to":[500,0,0],"center":[0,0,0],"maxSteps":100}"#,
         r#"{"algorithm":"helix","from":[500,0,0],"to":[500,0,900],"center":[0,0,0],"maxSteps":800}"#,
         r#"{"algorithm":"arc-segments","from":[500,0,0],"to":[500,0,0],"center":[0,0,0],"maxSteps":100}"#,
+        r#"{"algorithm":"regions","from":[0,0,0],"to":[500,1,1],"maxSteps":100}"#,
+        r#"{"algorithm":"greedy","from":[0,0,0],"to":[50,60,1],"maxSteps":100}"#,
     ] {
         let recorded = run(&Request::from_json(json).unwrap()).err().unwrap();
         let planned = LazyTrace::new(Request::from_json(json).unwrap(), find)

@@ -29,8 +29,7 @@ use crate::error::{Error, TooManyChords, counted, number_text};
 use crate::grid::{Point, round_half_away_within, round_ratio_half_away};
 use crate::ideal::IdealPath;
 use crate::ideal::curve::HelixPath;
-use crate::line::line_stepper::{IntoSink, RemainingSteps};
-use crate::line::line_stepper::{LineStepper, MakeSegment, StepperVisitor};
+use crate::line::line_stepper::{IntoSink, LineStepper, MakeSegment, StepperVisitor};
 use crate::line::regions_wang::RegionsWhy;
 use crate::plan::Plan;
 use crate::range::NumberRange;
@@ -418,12 +417,9 @@ pub fn plan_chords(
     let mut steps = 0;
     for k in 0..notes.chords.len() {
         let (from, to) = notes.ends(k);
-        match chords
-            .stepper
-            .with_stepper(from.point, to.point, RemainingSteps)
-        {
-            Some(Some(n)) => steps += n,
-            _ => return Ok(None),
+        match chords.stepper.steps_between(from.point, to.point) {
+            Some(n) => steps += n,
+            None => return Ok(None),
         }
     }
     if steps > req.max_steps()? {

@@ -10,6 +10,7 @@
 
 use super::terms::{Term, Terms};
 use super::{Guard, Mirror, step_target};
+use super::{LineRun, PlanLine, Record};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::Error;
 use crate::figure::{DecisionFigure, ErrorTerm, ErrorTerms, FigureKind};
@@ -54,14 +55,18 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     max_dims: 2,
     default_tie: Some(TiePolicy::Hold),
     compared_by: None,
-    trace: |req, _| {
-        let variant = Variant::from_request(req)?;
-        super::trace_line(&INFO, req, |from, to, tie| {
-            Bresenham2d::new(from, to, tie, variant)
-        })
-    },
-    plan: None,
+    trace: |req, _| run(req, Record),
+    plan: Some(|req, _| run(req, PlanLine)),
 };
+
+/// Reads this algorithm's own options and runs its stepper as `run` says
+/// (recorded or planned: [`LineRun`]).
+fn run<R: LineRun>(req: &Request, run: R) -> Result<R::Out, Error> {
+    let variant = Variant::from_request(req)?;
+    run.run(&INFO, req, |from, to, tie| {
+        Bresenham2d::new(from, to, tie, variant)
+    })
+}
 
 /// Which subtraction the error term makes after a minor step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

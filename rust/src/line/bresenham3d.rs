@@ -9,10 +9,12 @@
 use super::bresenham2d::{SaleemTerm, SaleemTest};
 use super::terms::Terms;
 use super::{GCD, Mirror, axis_list, step_target};
+use super::{LineRun, PlanLine, Record};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+use crate::error::Error;
 use crate::figure::{DecisionFigure, ErrorTerm, ErrorTerms, FigureKind};
 use crate::grid::{AXIS_NAMES, Point, Step};
-use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
+use crate::request::{FROM, MAX_STEPS, Request, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, ColumnRole, Decision, DeviationBound, Filled, Stepper};
 use std::mem::MaybeUninit;
 
@@ -39,14 +41,18 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     max_dims: 3,
     default_tie: Some(TiePolicy::Hold),
     compared_by: None,
-    trace: |req, _| {
-        let gcd = super::gcd_option(req)?;
-        super::trace_line(&INFO, req, |from, to, tie| {
-            Bresenham3d::new(from, to, tie, gcd)
-        })
-    },
-    plan: None,
+    trace: |req, _| run(req, Record),
+    plan: Some(|req, _| run(req, PlanLine)),
 };
+
+/// Reads this algorithm's own options and runs its stepper as `run` says
+/// (recorded or planned: [`LineRun`]).
+fn run<R: LineRun>(req: &Request, run: R) -> Result<R::Out, Error> {
+    let gcd = super::gcd_option(req)?;
+    run.run(&INFO, req, |from, to, tie| {
+        Bresenham3d::new(from, to, tie, gcd)
+    })
+}
 
 /// The decision behind one step.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -3,9 +3,11 @@
 //! step and round it to the nearest cell.
 
 use super::{GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, step_target};
+use super::{LineRun, PlanLine, Record};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count, written_steps};
-use crate::request::{FROM, MAX_STEPS, TO};
+use crate::request::{FROM, MAX_STEPS, Request, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 use std::mem::MaybeUninit;
 
@@ -28,9 +30,15 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     max_dims: MAX_AXES,
     default_tie: None,
     compared_by: None,
-    trace: |req, _| super::trace_line(&INFO, req, |from, to, _| Dda::new(from, to)),
-    plan: None,
+    trace: |req, _| run(req, Record),
+    plan: Some(|req, _| run(req, PlanLine)),
 };
+
+/// Reads this algorithm's own options and runs its stepper as `run` says
+/// (recorded or planned: [`LineRun`]).
+fn run<R: LineRun>(req: &Request, run: R) -> Result<R::Out, Error> {
+    run.run(&INFO, req, |from, to, _| Dda::new(from, to))
+}
 
 /// The decision behind one step.
 #[derive(Clone, Copy, Debug, PartialEq)]

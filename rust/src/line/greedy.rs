@@ -7,10 +7,12 @@
 //! until the distances left are equal, then alternates: it heads for the
 //! goal, not along the line.
 
+use super::{LineRun, PlanLine, Record};
 use super::{Mirror, TIE_AXIS, TieAxis, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count};
-use crate::request::{FROM, MAX_STEPS, TO};
+use crate::request::{FROM, MAX_STEPS, Request, TO};
 use crate::trace::{Column, ColumnKind, Decision, Filled, Stepper};
 use std::mem::MaybeUninit;
 
@@ -38,12 +40,16 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     max_dims: MAX_AXES,
     default_tie: None,
     compared_by: None,
-    trace: |req, _| {
-        let order = TieAxis::from_request(req)?;
-        super::trace_line(&INFO, req, |from, to, _| Greedy::new(from, to, order))
-    },
-    plan: None,
+    trace: |req, _| run(req, Record),
+    plan: Some(|req, _| run(req, PlanLine)),
 };
+
+/// Reads this algorithm's own options and runs its stepper as `run` says
+/// (recorded or planned: [`LineRun`]).
+fn run<R: LineRun>(req: &Request, run: R) -> Result<R::Out, Error> {
+    let order = TieAxis::from_request(req)?;
+    run.run(&INFO, req, |from, to, _| Greedy::new(from, to, order))
+}
 
 /// The decision behind one step.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -81,6 +81,21 @@ impl LineStepper {
         })
     }
 
+    /// Steps this rule takes from `from` to `to`, where known without
+    /// stepping: the largest |Δ| for the Bresenham rules, whose every step
+    /// moves the longest axis (its count known without making the stepper,
+    /// which for the 1,720 chords of the bench's arc-segments circle cost
+    /// about as much as the difference between it and the circle), else the
+    /// count the rule's stepper gives.
+    pub fn steps_between(self, from: Point, to: Point) -> Option<u64> {
+        match self {
+            LineStepper::Regions(..) | LineStepper::Bresenham3d(..) | LineStepper::Nd(..) => {
+                Some(from.chebyshev_to(&to))
+            }
+            _ => self.with_stepper(from, to, RemainingSteps).flatten(),
+        }
+    }
+
     /// Whether the rule takes a line that moves no axis more than a unit in
     /// one step moving every axis that differs (none for a line of no
     /// length), whatever its tie and GCD options: true of the Bresenham

@@ -12,6 +12,7 @@ use super::{
     GUARD_LABELS, Guard, MIN_UNGUARDED_SPAN, Mirror, Unguarded, axis_list, step_target,
     wang_discriminant,
 };
+use super::{LineRun, PlanLine, Record};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
 use crate::error::{Error, counted};
 use crate::grid::{AXIS_NAMES, Point, Step, written_steps};
@@ -65,14 +66,18 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     max_dims: 3,
     default_tie: Some(TiePolicy::Advance),
     compared_by: None,
-    trace: |req, _| {
-        let decimals = decimals_option(req)?;
-        super::trace_line(&INFO, req, |from, to, tie| {
-            LiuFloat::new(from, to, tie, decimals)
-        })
-    },
-    plan: None,
+    trace: |req, _| run(req, Record),
+    plan: Some(|req, _| run(req, PlanLine)),
 };
+
+/// Reads this algorithm's own options and runs its stepper as `run` says
+/// (recorded or planned: [`LineRun`]).
+fn run<R: LineRun>(req: &Request, run: R) -> Result<R::Out, Error> {
+    let decimals = decimals_option(req)?;
+    run.run(&INFO, req, |from, to, tie| {
+        LiuFloat::new(from, to, tie, decimals)
+    })
+}
 
 fn decimals_option(req: &Request) -> Result<u32, Error> {
     Ok(req.declared_integer(&DECIMALS)?.unwrap_or(1) as u32)

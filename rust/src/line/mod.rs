@@ -42,25 +42,77 @@ use crate::algorithm_info::AlgorithmInfo;
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, gcd};
 use crate::ideal::IdealPath;
+use crate::plan::Plan;
 use crate::request::{OptionKind, OptionSpec, Request, TiePolicy};
 use crate::trace::{Column, DeviationBound, Stepper, Trace, TraceBuilder};
 use std::cmp::Ordering;
 
-/// Traces one straight move with the stepper `make` builds from the request's
-/// endpoints and tie policy: the shape every line algorithm shares.
-pub fn trace_line<S: Stepper>(
-    info: &AlgorithmInfo,
-    req: &Request,
-    make: impl FnOnce(Point, Point, TiePolicy) -> S,
-) -> Result<Trace, Error> {
-    req.check_options(info.options)?;
-    let (from, to) = req.endpoints(info.min_dims, info.max_dims)?;
-    let tie = req.tie(info.default_tie.unwrap_or(TiePolicy::Advance))?;
-    let mut builder = TraceBuilder::for_request(from, req)?;
-    let stepper = make(from, to, tie);
-    let bound = stepper.deviation_bound();
-    builder.run(stepper, IdealPath::Line { from, to })?;
-    Ok(builder.finish(info.id).with_deviation_bound(bound))
+/// What is done with a line algorithm's stepper once its request's own
+/// options are read: recorded into a trace ([`Record`]) or planned
+/// ([`PlanLine`]). Each line algorithm reads its options and makes its
+/// stepper once, in one function generic over this, that its `trace` and
+/// its `plan` both call.
+pub trait LineRun {
+    type Out;
+    /// Runs the stepper `make` builds from the request's endpoints and tie
+    /// policy, after the checks every line algorithm shares.
+    fn run<S: Stepper>(
+        self,
+        info: &AlgorithmInfo,
+        req: &Request,
+        make: impl FnOnce(Point, Point, TiePolicy) -> S,
+    ) -> Result<Self::Out, Error>;
+}
+
+/// The line recorded: the shape every line algorithm's trace shares.
+pub struct Record;
+
+impl LineRun for Record {
+    type Out = Trace;
+    fn run<S: Stepper>(
+        self,
+        info: &AlgorithmInfo,
+        req: &Request,
+        make: impl FnOnce(Point, Point, TiePolicy) -> S,
+    ) -> Result<Trace, Error> {
+        req.check_options(info.options)?;
+        let (from, to) = req.endpoints(info.min_dims, info.max_dims)?;
+        let tie = req.tie(info.default_tie.unwrap_or(TiePolicy::Advance))?;
+        let mut builder = TraceBuilder::for_request(from, req)?;
+        let stepper = make(from, to, tie);
+        let bound = stepper.deviation_bound();
+        builder.run(stepper, IdealPath::Line { from, to })?;
+        Ok(builder.finish(info.id).with_deviation_bound(bound))
+    }
+}
+
+/// The line planned ([`crate::plan`]), as [`Record`] would record it: its
+/// stepper counts its steps, and a line ends at its end point.
+pub struct PlanLine;
+
+impl LineRun for PlanLine {
+    type Out = Option<Plan>;
+    fn run<S: Stepper>(
+        self,
+        info: &AlgorithmInfo,
+        req: &Request,
+        make: impl FnOnce(Point, Point, TiePolicy) -> S,
+    ) -> Result<Option<Plan>, Error> {
+        req.check_options(info.options)?;
+        let (from, to) = req.endpoints(info.min_dims, info.max_dims)?;
+        let tie = req.tie(info.default_tie.unwrap_or(TiePolicy::Advance))?;
+        let max_steps = req.max_steps()?;
+        let stepper = make(from, to, tie);
+        Ok(match stepper.remaining_steps() {
+            Some(steps) if steps <= max_steps => Some(Plan {
+                start: from,
+                end: to,
+                steps,
+                run_into: Box::new(move |sink| sink.run(stepper.clone())),
+            }),
+            _ => None,
+        })
+    }
 }
 
 /// The first `N` columns of `all` once the per-axis columns

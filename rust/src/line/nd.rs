@@ -5,9 +5,11 @@
 
 use super::terms::{Term, Terms};
 use super::{GCD, Mirror, axis_list, signed_comparison, step_target, wang_discriminant};
+use super::{LineRun, PlanLine, Record};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step};
-use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
+use crate::request::{FROM, MAX_STEPS, Request, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 use std::mem::MaybeUninit;
 
@@ -33,12 +35,16 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     max_dims: MAX_AXES,
     default_tie: Some(TiePolicy::Advance),
     compared_by: None,
-    trace: |req, _| {
-        let gcd = super::gcd_option(req)?;
-        super::trace_line(&INFO, req, |from, to, tie| Nd::new(from, to, tie, gcd))
-    },
-    plan: None,
+    trace: |req, _| run(req, Record),
+    plan: Some(|req, _| run(req, PlanLine)),
 };
+
+/// Reads this algorithm's own options and runs its stepper as `run` says
+/// (recorded or planned: [`LineRun`]).
+fn run<R: LineRun>(req: &Request, run: R) -> Result<R::Out, Error> {
+    let gcd = super::gcd_option(req)?;
+    run.run(&INFO, req, |from, to, tie| Nd::new(from, to, tie, gcd))
+}
 
 /// The decision behind one step.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -13,12 +13,14 @@
 
 use super::terms::{Term, Terms};
 use super::{GCD, Mirror, signed_comparison, step_target, wang_discriminant};
+use super::{LineRun, PlanLine, Record};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+use crate::error::Error;
 use crate::figure::{
     DecisionFigure, ExitFace, FaceCorner, FaceRegion, FaceSegment, FigureKind, SignedAxis,
 };
 use crate::grid::{AXIS_NAMES, Point, SIGNED_AXIS_LABELS, Step, signed_axis};
-use crate::request::{FROM, MAX_STEPS, TO, TiePolicy, tie_option};
+use crate::request::{FROM, MAX_STEPS, Request, TO, TiePolicy, tie_option};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 use std::fmt::Write;
 use std::mem::MaybeUninit;
@@ -47,14 +49,18 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     max_dims: 3,
     default_tie: Some(TiePolicy::Advance),
     compared_by: None,
-    trace: |req, _| {
-        let gcd = super::gcd_option(req)?;
-        super::trace_line(&INFO, req, |from, to, tie| {
-            RegionsWang::with_gcd(from, to, tie, gcd)
-        })
-    },
-    plan: None,
+    trace: |req, _| run(req, Record),
+    plan: Some(|req, _| run(req, PlanLine)),
 };
+
+/// Reads this algorithm's own options and runs its stepper as `run` says
+/// (recorded or planned: [`LineRun`]).
+fn run<R: LineRun>(req: &Request, run: R) -> Result<R::Out, Error> {
+    let gcd = super::gcd_option(req)?;
+    run.run(&INFO, req, |from, to, tie| {
+        RegionsWang::with_gcd(from, to, tie, gcd)
+    })
+}
 
 /// Where the ideal line crosses the exit face of the current cell
 /// (Wang section 2.5, Fig. 4b). Segments e-h and the center o are ties.

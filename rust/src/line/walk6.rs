@@ -10,10 +10,12 @@
 //! t_a; two fractions compare exactly by cross-multiplying, in i128.
 
 use super::terms::{Term, Terms};
+use super::{LineRun, PlanLine, Record};
 use super::{Mirror, TIE_AXIS, TieAxis, axis_list, step_target};
 use crate::algorithm_info::{AlgorithmInfo, Example, Family};
+use crate::error::Error;
 use crate::grid::{AXIS_NAMES, MAX_AXES, Point, Step, by_axis_count, written_steps};
-use crate::request::{FROM, MAX_STEPS, TO};
+use crate::request::{FROM, MAX_STEPS, Request, TO};
 use crate::trace::{Column, ColumnKind, Decision, DeviationBound, Filled, Stepper};
 use std::cmp::Ordering;
 use std::mem::MaybeUninit;
@@ -37,12 +39,16 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     max_dims: MAX_AXES,
     default_tie: None,
     compared_by: None,
-    trace: |req, _| {
-        let order = TieAxis::from_request(req)?;
-        super::trace_line(&INFO, req, |from, to, _| Walk6::new(from, to, order))
-    },
-    plan: None,
+    trace: |req, _| run(req, Record),
+    plan: Some(|req, _| run(req, PlanLine)),
 };
+
+/// Reads this algorithm's own options and runs its stepper as `run` says
+/// (recorded or planned: [`LineRun`]).
+fn run<R: LineRun>(req: &Request, run: R) -> Result<R::Out, Error> {
+    let order = TieAxis::from_request(req)?;
+    run.run(&INFO, req, |from, to, _| Walk6::new(from, to, order))
+}
 
 /// t = num / den, a fraction of the way along the segment.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
