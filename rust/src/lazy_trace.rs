@@ -119,6 +119,8 @@ impl LazyTrace {
         mut f: impl FnMut(u64, &[i32]),
     ) {
         match self.pending() {
+            // No points: nothing to record for.
+            Some(_) if from >= to => {}
             Some((_, plan)) if from == 0 && to == plan.steps + 1 => {
                 let mut sink = PointsSink::new(plan.start, buffer, &mut f);
                 (plan.run_into)(&mut sink);

@@ -594,7 +594,7 @@ impl TraceHandle {
         out: &js_sys::Float64Array,
     ) -> Result<(), JsValue> {
         let (from, to) = self.point_range(from, to)?;
-        let dims = self.trace().dims();
+        let dims = self.0.dims();
         let values = (to - from) * dims as u64;
         Float64Out::write(
             out,

@@ -44,6 +44,19 @@ fn check_plan(json: &str, buffer_points: usize) -> Result<(), TestCaseError> {
     let points = recorded.points_i32(0, recorded.steps() + 1);
     prop_assert_eq!(&points_through(&lazy, buffer_points), &points, "{}", json);
     prop_assert_eq!(&points_through(&lazy, 1 << 16), &points, "{}", json);
+    // With maxSteps at its exact count it is planned as well.
+    let exact = json.replacen(
+        '{',
+        &format!(r#"{{"maxSteps":{},"#, recorded.steps().max(1)),
+        1,
+    );
+    let at_limit = LazyTrace::new(Request::from_json(&exact).unwrap(), find).unwrap();
+    prop_assert_eq!(
+        &points_through(&at_limit, buffer_points),
+        &points,
+        "{}",
+        exact
+    );
     // Decisions need the recorded trace: it records, as planned.
     let bits = |t: &Trace| -> Vec<u64> {
         t.decisions_flat(0, t.steps())
@@ -100,6 +113,13 @@ proptest! {
         let common = format!(r#""center":{center:?},"plane":"{plane}","dir":"{dir}","turns":{turns}"#);
         let line = voxpath::arc::arc_segments::LINE_ALGORITHMS[line];
         let chord_tie = if ["regions", "bresenham3d", "nd"].contains(&line) { tie } else { "" };
+        let chording = [
+            "",
+            &format!(r#","segmentLength":{}"#, 1 + turns * 7),
+            &format!(r#","tolerance":{}"#, 0.002 * (1 + turns) as f64),
+        ][buffer_points % 3]
+            .to_string();
+        let chord_tie = format!("{chord_tie}{chording}");
         let json = match which {
             0 => format!(r#"{{"algorithm":"circle","from":{from:?},"to":{end:?},{common}}}"#),
             1 if plane == "xy" => format!(
@@ -128,9 +148,24 @@ proptest! {
         start in prop::array::uniform6(prop_oneof![-3000i64..3000, Just(COORD_LIMIT - 9000), Just(-COORD_LIMIT + 9000)]),
         delta in prop::array::uniform6(prop_oneof![-6000i64..6000, -3i64..3, Just(0i64)]),
         tie in 0usize..3,
+        option in 0usize..3,
         buffer_points in 1usize..5000,
     ) {
         let id = ["regions", "bresenham2d", "bresenham3d", "nd", "liu-float", "greedy", "walk6", "dda"][algorithm];
+        // Each algorithm's own options, absent or given (read by the one
+        // function its trace and its plan share).
+        let own = match (id, option) {
+            (_, 0) => "",
+            ("regions" | "bresenham3d" | "nd", 1) => r#","gcd":true"#,
+            ("regions" | "bresenham3d" | "nd", _) => r#","gcd":false"#,
+            ("bresenham2d", 1) => r#","variant":"printed""#,
+            ("bresenham2d", _) => r#","variant":"corrected""#,
+            ("liu-float", 1) => r#","decimals":0"#,
+            ("liu-float", _) => r#","decimals":4"#,
+            ("greedy" | "walk6", 1) => r#","tieAxis":"lower""#,
+            ("greedy" | "walk6", _) => r#","tieAxis":"higher""#,
+            _ => "",
+        };
         let info = find(id).unwrap();
         let dims = dims.clamp(info.min_dims, info.max_dims);
         let (from, to): (Vec<i64>, Vec<i64>) = (0..dims).map(|a| (start[a], start[a] + delta[a])).unzip();
@@ -139,7 +174,7 @@ proptest! {
             (Some(_), 2) => r#","tie":"hold""#,
             _ => "",
         };
-        check_plan(&format!(r#"{{"algorithm":"{id}","from":{from:?},"to":{to:?}{tie}}}"#), buffer_points)?;
+        check_plan(&format!(r#"{{"algorithm":"{id}","from":{from:?},"to":{to:?}{tie}{own}}}"#), buffer_points)?;
     }
 }
 
