@@ -96,7 +96,7 @@ pub struct AlgorithmInfo {
     #[serde(skip)]
     pub trace: fn(&Request, Find) -> Result<Trace, Error>,
     /// Plans a request without recording it, where this algorithm knows
-    /// its path's length and end before running it ([`crate::planned`]).
+    /// its path's length and end before running it ([`crate::plan`]).
     #[serde(skip)]
     pub plan: Option<PlanFn>,
 }

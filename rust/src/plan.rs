@@ -39,6 +39,26 @@ pub struct Plan {
     pub run_into: RunInto,
 }
 
+impl Plan {
+    /// The plan of one stepper from `start` to `end`: its steps its own
+    /// count, None where it has none or it passes `max_steps` (the trace
+    /// then records, and says why).
+    pub fn of_stepper<S: Stepper>(
+        start: Point,
+        end: Point,
+        stepper: S,
+        max_steps: u64,
+    ) -> Option<Plan> {
+        let steps = stepper.remaining_steps().filter(|&n| n <= max_steps)?;
+        Some(Plan {
+            start,
+            end,
+            steps,
+            run_into: Box::new(move |sink| sink.run(stepper.clone())),
+        })
+    }
+}
+
 /// Steps a stepper takes at a time into [`PointsSink`]'s scratch before
 /// they are decoded: 8 KB of codes, which stay in the L1 cache between
 /// their writing and their reading.

@@ -85,16 +85,15 @@ fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
 fn plan_circle(req: &Request, _: Find) -> Result<Option<Plan>, Error> {
     req.check_options(INFO.options)?;
     let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
-    let stepper = SaleemCircle::new(&spec).counted(req.max_steps()?)?;
-    let Some(steps) = stepper.remaining_steps() else {
-        return Ok(None);
-    };
-    Ok(Some(Plan {
-        start: spec.start_point(),
-        end: spec.to.with_dims(spec.dims()),
-        steps,
-        run_into: Box::new(move |sink| sink.run(stepper.clone())),
-    }))
+    let max_steps = req.max_steps()?;
+    let stepper = SaleemCircle::new(&spec).counted(max_steps)?;
+    let end = spec.to.with_dims(spec.dims());
+    Ok(Plan::of_stepper(
+        spec.start_point(),
+        end,
+        stepper,
+        max_steps,
+    ))
 }
 
 pub const OCTANT: Column = Column::new(

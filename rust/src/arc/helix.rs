@@ -42,6 +42,7 @@ use crate::request::{
 };
 use crate::trace::{
     Column, ColumnKind, Decision, Filled, Stepper, Trace, TraceBuilder, concat_columns,
+    path_too_long,
 };
 use std::fmt::Write;
 use std::mem::MaybeUninit;
@@ -139,20 +140,27 @@ fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
     }
     let tie = req.tie(TiePolicy::Hold)?;
     let mut builder = TraceBuilder::for_request(spec.from, req)?;
-    // The helix takes max(n_c, n_z) steps: a rise past maxSteps is refused
-    // before it is traced, told the count that traces it, as a circle is.
-    let n_z = spec.rise.unsigned_abs();
-    if n_z > builder.max_steps() {
-        return Err(builder.too_long(steps_past_rise(&spec, n_z)));
-    }
-    let circle = SaleemCircle::new(&spec).counted(builder.max_steps())?;
-    let helix = SaleemHelix::new(&spec, circle, tie);
-    if helix.remaining > builder.max_steps() {
-        return Err(builder.too_long(helix.remaining));
-    }
+    let helix = saleem_helix(&spec, tie, builder.max_steps())?;
     let ideal = HelixPath::new(spec.ideal_arc(), 0.0, spec.rise as f64);
     builder.run(helix, IdealPath::Helix(ideal))?;
     Ok(builder.finish(ID))
+}
+
+/// The helix of `spec` by Saleem's rule, refused when it takes more than
+/// `max_steps`: its trace's and its plan's.
+fn saleem_helix(spec: &ArcSpec, tie: TiePolicy, max_steps: u64) -> Result<SaleemHelix, Error> {
+    // The helix takes max(n_c, n_z) steps: a rise past maxSteps is refused
+    // before it is traced, told the count that traces it, as a circle is.
+    let n_z = spec.rise.unsigned_abs();
+    if n_z > max_steps {
+        return Err(path_too_long(max_steps, steps_past_rise(spec, n_z)));
+    }
+    let circle = SaleemCircle::new(spec).counted(max_steps)?;
+    let helix = SaleemHelix::new(spec, circle, tie);
+    if helix.remaining > max_steps {
+        return Err(path_too_long(max_steps, helix.remaining));
+    }
+    Ok(helix)
 }
 
 /// The helix planned ([`crate::plan`]), as [`trace_helix`] would
@@ -167,20 +175,8 @@ fn plan_helix(req: &Request, find: Find) -> Result<Option<Plan>, Error> {
     }
     let tie = req.tie(TiePolicy::Hold)?;
     let max_steps = req.max_steps()?;
-    if spec.rise.unsigned_abs() > max_steps {
-        return Ok(None);
-    }
-    let circle = SaleemCircle::new(&spec).counted(max_steps)?;
-    let helix = SaleemHelix::new(&spec, circle, tie);
-    if helix.remaining > max_steps {
-        return Ok(None);
-    }
-    Ok(Some(Plan {
-        start: spec.from,
-        end: spec.to,
-        steps: helix.remaining,
-        run_into: Box::new(move |sink| sink.run(helix.clone())),
-    }))
+    let helix = saleem_helix(&spec, tie, max_steps)?;
+    Ok(Plan::of_stepper(spec.from, spec.to, helix, max_steps))
 }
 
 /// The steps of a helix whose rise `n_z` passes maxSteps, as its refusal

@@ -52,8 +52,19 @@ use std::cmp::Ordering;
 /// ([`PlanLine`]). Each line algorithm reads its options and makes its
 /// stepper once, in one function generic over this, that its `trace` and
 /// its `plan` both call.
-pub trait LineRun {
+pub trait LineRun: Sized {
     type Out;
+
+    /// What is done with `stepper`, made for the line `ends` (from, to)
+    /// of `info`'s algorithm once the request's checks have passed.
+    fn take<S: Stepper>(
+        self,
+        info: &AlgorithmInfo,
+        req: &Request,
+        ends: (Point, Point),
+        stepper: S,
+    ) -> Result<Self::Out, Error>;
+
     /// Runs the stepper `make` builds from the request's endpoints and tie
     /// policy, after the checks every line algorithm shares.
     fn run<S: Stepper>(
@@ -61,7 +72,12 @@ pub trait LineRun {
         info: &AlgorithmInfo,
         req: &Request,
         make: impl FnOnce(Point, Point, TiePolicy) -> S,
-    ) -> Result<Self::Out, Error>;
+    ) -> Result<Self::Out, Error> {
+        req.check_options(info.options)?;
+        let (from, to) = req.endpoints(info.min_dims, info.max_dims)?;
+        let tie = req.tie(info.default_tie.unwrap_or(TiePolicy::Advance))?;
+        self.take(info, req, (from, to), make(from, to, tie))
+    }
 }
 
 /// The line recorded: the shape every line algorithm's trace shares.
@@ -69,17 +85,14 @@ pub struct Record;
 
 impl LineRun for Record {
     type Out = Trace;
-    fn run<S: Stepper>(
+    fn take<S: Stepper>(
         self,
         info: &AlgorithmInfo,
         req: &Request,
-        make: impl FnOnce(Point, Point, TiePolicy) -> S,
+        (from, to): (Point, Point),
+        stepper: S,
     ) -> Result<Trace, Error> {
-        req.check_options(info.options)?;
-        let (from, to) = req.endpoints(info.min_dims, info.max_dims)?;
-        let tie = req.tie(info.default_tie.unwrap_or(TiePolicy::Advance))?;
         let mut builder = TraceBuilder::for_request(from, req)?;
-        let stepper = make(from, to, tie);
         let bound = stepper.deviation_bound();
         builder.run(stepper, IdealPath::Line { from, to })?;
         Ok(builder.finish(info.id).with_deviation_bound(bound))
@@ -92,26 +105,14 @@ pub struct PlanLine;
 
 impl LineRun for PlanLine {
     type Out = Option<Plan>;
-    fn run<S: Stepper>(
+    fn take<S: Stepper>(
         self,
-        info: &AlgorithmInfo,
+        _: &AlgorithmInfo,
         req: &Request,
-        make: impl FnOnce(Point, Point, TiePolicy) -> S,
+        (from, to): (Point, Point),
+        stepper: S,
     ) -> Result<Option<Plan>, Error> {
-        req.check_options(info.options)?;
-        let (from, to) = req.endpoints(info.min_dims, info.max_dims)?;
-        let tie = req.tie(info.default_tie.unwrap_or(TiePolicy::Advance))?;
-        let max_steps = req.max_steps()?;
-        let stepper = make(from, to, tie);
-        Ok(match stepper.remaining_steps() {
-            Some(steps) if steps <= max_steps => Some(Plan {
-                start: from,
-                end: to,
-                steps,
-                run_into: Box::new(move |sink| sink.run(stepper.clone())),
-            }),
-            _ => None,
-        })
+        Ok(Plan::of_stepper(from, to, stepper, req.max_steps()?))
     }
 }
 
