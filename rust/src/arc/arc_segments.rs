@@ -138,13 +138,11 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
     default_tie: None,
     compared_by: None,
     trace: |req, find| {
-        req.check_options(INFO.options)?;
-        let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
+        let spec = ArcSpec::of_request(req, &INFO, false)?;
         trace_chords(ID, req, &spec, false, find)
     },
     plan: Some(|req, find| {
-        req.check_options(INFO.options)?;
-        let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
+        let spec = ArcSpec::of_request(req, &INFO, false)?;
         plan_chords(req, &spec, false, find)
     }),
 };

@@ -72,8 +72,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 };
 
 fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
-    req.check_options(INFO.options)?;
-    let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
+    let spec = ArcSpec::of_request(req, &INFO, false)?;
     let mut builder = TraceBuilder::for_request(spec.start_point(), req)?;
     let stepper = SaleemCircle::new(&spec).within(builder.max_steps())?;
     builder.run(stepper, IdealPath::Arc(spec.ideal_arc()))?;
@@ -83,8 +82,7 @@ fn trace_circle(req: &Request, _: Find) -> Result<Trace, Error> {
 /// The circle planned ([`crate::plan`]): its dry run counts its steps,
 /// and its correction steps close it at its end point.
 fn plan_circle(req: &Request, _: Find) -> Result<Option<Plan>, Error> {
-    req.check_options(INFO.options)?;
-    let spec = ArcSpec::parse(req, false, INFO.min_dims)?;
+    let spec = ArcSpec::of_request(req, &INFO, false)?;
     let max_steps = req.max_steps()?;
     let stepper = SaleemCircle::new(&spec).counted(max_steps)?;
     let end = spec.to.with_dims(spec.dims());

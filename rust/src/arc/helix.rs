@@ -131,8 +131,7 @@ pub const INFO: AlgorithmInfo = AlgorithmInfo {
 };
 
 fn trace_helix(req: &Request, find: Find) -> Result<Trace, Error> {
-    req.check_options(INFO.options)?;
-    let spec = ArcSpec::parse(req, true, INFO.min_dims)?;
+    let spec = ArcSpec::of_request(req, &INFO, true)?;
     // The chord options given with method saleem were refused by
     // check_options (WITH_CHORDS).
     if req.choice(&METHOD)? == Some("segments") {
@@ -168,8 +167,7 @@ fn saleem_helix(spec: &ArcSpec, tie: TiePolicy, max_steps: u64) -> Result<Saleem
 /// has counted n_c, and it ends at its end point. Its chords (method
 /// segments) as [`plan_chords`] plans them.
 fn plan_helix(req: &Request, find: Find) -> Result<Option<Plan>, Error> {
-    req.check_options(INFO.options)?;
-    let spec = ArcSpec::parse(req, true, INFO.min_dims)?;
+    let spec = ArcSpec::of_request(req, &INFO, true)?;
     if req.choice(&METHOD)? == Some("segments") {
         return plan_chords(req, &spec, true, find);
     }

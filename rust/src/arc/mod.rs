@@ -15,6 +15,7 @@ pub mod circle_saleem;
 pub mod helix;
 pub mod planes;
 
+use crate::algorithm_info::AlgorithmInfo;
 use crate::error::Error;
 use crate::grid::{AXIS_NAMES, COORD_LIMIT, COORD_RANGE, Point};
 use crate::ideal::curve::ArcPath;
@@ -100,6 +101,18 @@ pub struct ArcSpec {
 }
 
 impl ArcSpec {
+    /// The arc `req` asks of the algorithm `info`, every option it gives
+    /// checked to be one `info` takes first: what each arc algorithm's
+    /// trace and plan read.
+    pub fn of_request(
+        req: &Request,
+        info: &AlgorithmInfo,
+        allow_rise: bool,
+    ) -> Result<ArcSpec, Error> {
+        req.check_options(info.options)?;
+        ArcSpec::parse(req, allow_rise, info.min_dims)
+    }
+
     /// Reads and checks the arc options. `allow_rise`: whether `to` may
     /// differ from `from` along the normal axis (a helix); `min_dims`: the
     /// fewest axes the algorithm takes (2: a circle may be given in x and y).
