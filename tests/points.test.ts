@@ -61,6 +61,13 @@ function expectValues(got: Int32Array, want: Int32Array, label: string): void {
   ).toBe(-1);
 }
 
+/** Points from, from + every, ... below `to` of `all` (stride dims), in one array. */
+function everyNth(all: Int32Array, dims: number, from: number, to: number, every: number): Int32Array {
+  const out = new Int32Array(Math.ceil((to - from) / every) * dims);
+  for (let k = from, r = 0; k < to; k += every, r++) out.set(all.subarray(k * dims, (k + 1) * dims), r * dims);
+  return out;
+}
+
 describe('points', () => {
   it.each(CASES)('of %s are the step codes replayed, for the whole path and any range', async (_, options) => {
     const t = await trace(options);
@@ -88,11 +95,7 @@ describe('points', () => {
     const n = t.steps + 1;
     const rows = chunkRows(t.dims);
     const all = t.points;
-    const rowsOf = (from: number, to: number, every: number) => {
-      const out = new Int32Array(Math.ceil((to - from) / every) * t.dims);
-      for (let k = from, r = 0; k < to; k += every, r++) out.set(all.subarray(k * t.dims, (k + 1) * t.dims), r * t.dims);
-      return out;
-    };
+    const rowsOf = (from: number, to: number, every: number) => everyNth(all, t.dims, from, to, every);
     // Every spacing against the chunk's rows: below them, a chunk's rows and
     // more, ranges starting inside a chunk and on its edge.
     for (const every of [1, 2, 3, 277, rows - 1, rows, rows + 1, 3 * rows + 7, n, n + 5]) {
@@ -175,6 +178,14 @@ describe('what trace() leaves until it is read', () => {
     const t = await trace(options);
     const first = t.points;
     // Neither the summary nor the points held its steps: 2 bytes a step.
+    expect(heapBytes() - heap).toBeLessThan(t.steps);
+    // Every n-th point of the whole path comes from the plan too (the core
+    // gathers the chosen points of each chunk it decodes), across the
+    // chunks' ends: those rows of the points, and still nothing recorded.
+    const [n, rows] = [t.steps + 1, chunkRows(t.dims)];
+    for (const every of [2, 3, 277, rows - 1, rows, rows + 1, 3 * rows + 7, n, n + 5]) {
+      expectValues(t.pointsInRange(0, n, every), everyNth(first, t.dims, 0, n, every), `every ${every}th point, planned`);
+    }
     expect(heapBytes() - heap).toBeLessThan(t.steps);
     expect(first.length).toBe((t.steps + 1) * t.dims);
     expect(Array.from(first.subarray(-t.dims))).toEqual(t.end);

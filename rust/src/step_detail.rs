@@ -97,7 +97,9 @@ pub fn step_detail(trace: &Trace, p: u64) -> StepDetail<'_> {
         step_index,
         point: trace.point(p).coords().to_vec(),
         point_before: step_index.map(|k| trace.point(k).coords().to_vec()),
-        deviation: trace.deviation_range(p, p + 1).first().copied(),
+        // No segment, no ideal path to measure from: null, where the
+        // trace's deviations read 0 for the point.
+        deviation: (trace.segment_count() > 0).then(|| trace.deviation_range(p, p + 1)[0]),
         decision,
         explanation,
         figure,

@@ -1562,6 +1562,14 @@ impl Trace {
     /// point order: for a caller that copies them elsewhere a buffer at a
     /// time (wasm's `deviation`, into a JS array), not all at once.
     pub fn for_each_deviation(&self, from: u64, to: u64, mut f: impl FnMut(f64)) {
+        if self.segments.is_empty() {
+            // A program that made no move (only dwells, or nothing) has no
+            // path to deviate from: its one point is where it is meant to
+            // be, 0 (a point's detail and the chart, which show the ideal
+            // path beside it, say there is none: null and NaN).
+            (from..to).for_each(|_| f(0.0));
+            return;
+        }
         self.for_each_piece(from, to, |piece| {
             if !piece.walk_line(|deviation, _| f(deviation))
                 && !piece.walk_arc(|meter, offsets| f(meter.deviation_at(offsets)))
@@ -1583,6 +1591,11 @@ impl Trace {
     /// the order of that array (point by point, axis by axis).
     pub fn for_each_axis_error(&self, from: u64, to: u64, mut f: impl FnMut(f64)) {
         let dims = self.dims();
+        if self.segments.is_empty() {
+            // As for_each_deviation: no path, so no error on any axis.
+            (0..(to.saturating_sub(from)) * dims as u64).for_each(|_| f(0.0));
+            return;
+        }
         self.for_each_piece(from, to, |piece| {
             let n = piece.segment.steps as f64;
             let walked = piece.walk_line(|_, numerator| {

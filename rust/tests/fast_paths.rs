@@ -6,7 +6,9 @@
 //! errors along arcs (`ArcMeter::walk`), against measuring every point on
 //! its own; the bounds (`points::bounds`) against the replayed points'
 //! extremes. On random lines of every line algorithm (near +-2^30 too),
-//! paths of several line segments, arcs, chorded arcs and helices.
+//! paths of several line segments, arcs, chorded arcs and helices. The
+//! check itself (`common::check_trace`) also holds random G-code programs
+//! to their replay (tests/gcode_properties.rs).
 
 mod common;
 
@@ -18,110 +20,8 @@ use voxpath::line::bresenham3d::Bresenham3d;
 use voxpath::line::dda::Dda;
 use voxpath::line::nd::Nd;
 use voxpath::line::regions_wang::RegionsWang;
-use voxpath::metrics::{Metrics, MetricsAccumulator};
 use voxpath::request::TiePolicy;
-use voxpath::trace::{Trace, TraceBuilder};
-
-/// Points `from..to` by the replay: every step applied to a point.
-fn replayed_points(t: &Trace, from: u64, to: u64) -> Vec<i64> {
-    let mut out = Vec::new();
-    t.walk_points(from, to, |_, p| out.extend_from_slice(p.coords()));
-    out
-}
-
-/// Every point's deviation and per-axis error, each measured on its own
-/// against the segment it belongs to (the one whose step starts from it;
-/// the last point, the last segment that took a step), and the metrics
-/// they add up to (the ties, which a replay of the decisions counts, taken
-/// from the trace).
-fn measured_point_by_point(t: &Trace) -> (Vec<f64>, Vec<f64>, Metrics) {
-    let dims = t.dims();
-    let segments: Vec<_> = t.segments().collect();
-    let last = segments.iter().rposition(|s| s.steps > 0).unwrap_or(0);
-    let mut acc = MetricsAccumulator::new(dims);
-    acc.add_steps(t.step_range(0, t.steps()));
-    let (mut deviation, mut axis_error) = (Vec::new(), Vec::new());
-    t.walk_points(0, t.steps() + 1, |k, p| {
-        let seg = if k < t.steps() {
-            segments
-                .iter()
-                .position(|s| s.first_step <= k && k < s.first_step + s.steps)
-                .unwrap()
-        } else {
-            last
-        };
-        let s = &segments[seg];
-        let d = s.ideal.deviation(p);
-        let e = s
-            .ideal
-            .axis_error(p, (k - s.first_step).min(s.steps), s.steps);
-        deviation.push(d);
-        axis_error.extend_from_slice(&e[..dims]);
-        acc.add_point(d, &e);
-    });
-    (deviation, axis_error, acc.finish(t.metrics().ties))
-}
-
-fn bits(values: &[f64]) -> Vec<u64> {
-    values.iter().map(|v| v.to_bits()).collect()
-}
-
-/// Every read of `t` against the replay: all points and a range, as i64,
-/// i32 and through chunks of `chunk` points; deviation, axis error and
-/// metrics of every point and of the range.
-fn check_trace(t: &Trace, range: (u64, u64), chunk: usize) -> Result<(), TestCaseError> {
-    let (dims, n) = (t.dims(), t.steps() + 1);
-    let all = replayed_points(t, 0, n);
-    prop_assert_eq!(&t.points_flat(0, n), &all);
-    let narrow: Vec<i64> = t.points_i32(0, n).into_iter().map(i64::from).collect();
-    prop_assert_eq!(&narrow, &all);
-    let (a, b) = (range.0.min(n - 1), range.1.min(n));
-    let (a, b) = (a.min(b), a.max(b));
-    prop_assert_eq!(t.points_flat(a, b), replayed_points(t, a, b));
-    let mut buffer = Vec::<i32>::with_capacity(chunk * dims);
-    let mut chunked = Vec::new();
-    let mut next = a;
-    t.points_by_chunk(
-        a,
-        b,
-        &mut buffer.spare_capacity_mut()[..chunk * dims],
-        |k, points| {
-            assert_eq!(k, next, "chunks in order");
-            next += (points.len() / dims) as u64;
-            chunked.extend(points.iter().map(|&c| i64::from(c)));
-        },
-    );
-    prop_assert_eq!(chunked, replayed_points(t, a, b));
-    // The bounds: each axis's extremes over every point replayed.
-    let column = |axis: usize| all.iter().skip(axis).step_by(dims).copied();
-    let bounds = t.bounds();
-    prop_assert_eq!(
-        &bounds.min,
-        &(0..dims)
-            .map(|a| column(a).min().unwrap())
-            .collect::<Vec<_>>()
-    );
-    prop_assert_eq!(
-        &bounds.max,
-        &(0..dims)
-            .map(|a| column(a).max().unwrap())
-            .collect::<Vec<_>>()
-    );
-
-    let (deviation, axis_error, metrics) = measured_point_by_point(t);
-    prop_assert_eq!(bits(&t.deviation_range(0, n)), bits(&deviation));
-    prop_assert_eq!(bits(&t.axis_error_range(0, n)), bits(&axis_error));
-    prop_assert_eq!(
-        bits(&t.deviation_range(a, b)),
-        bits(&deviation[a as usize..b as usize])
-    );
-    prop_assert_eq!(
-        bits(&t.axis_error_range(a, b)),
-        bits(&axis_error[a as usize * dims..b as usize * dims])
-    );
-    prop_assert_eq!(t.metrics(), &metrics);
-    Ok(())
-}
+use voxpath::trace::TraceBuilder;
 
 /// A coordinate anywhere in the grid, or at one of its edges (so that a
 /// short move from it reaches +-2^30).
@@ -159,7 +59,7 @@ proptest! {
             let t = common::trace(&format!(
                 r#"{{"algorithm":"{}","from":{:?},"to":{:?}}}"#, a.id, from.coords(), to.coords()
             ));
-            check_trace(&t, range, chunk)?;
+            common::check_trace(&t, range, chunk)?;
         }
     }
 
@@ -185,7 +85,7 @@ proptest! {
             }
             .unwrap();
         }
-        check_trace(&builder.finish("legs"), range, chunk)?;
+        common::check_trace(&builder.finish("legs"), range, chunk)?;
     }
 
     #[test]
@@ -219,7 +119,7 @@ proptest! {
             ),
         };
         let t = common::trace(&request);
-        check_trace(&t, range, chunk)?;
+        common::check_trace(&t, range, chunk)?;
     }
 
     #[test]
@@ -314,7 +214,7 @@ fn points_of_a_long_line_are_the_replay() {
         n as usize * 3 * 4 > 8 << 20,
         "more than four huge pages of i32, and past the cache"
     );
-    let all = replayed_points(&t, 0, n);
+    let all = common::replayed_points(&t, 0, n);
     let narrow: Vec<i64> = t.points_i32(0, n).into_iter().map(i64::from).collect();
     assert!(narrow == all, "i32 points are the replay");
     assert!(t.points_flat(0, n) == all, "i64 points are the replay");

@@ -258,3 +258,58 @@ proptest! {
             .map_err(|e| TestCaseError::fail(format!("{settings}\n{source}: {e}")))?;
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// A program's trace reads as its replay, as a trace of one request
+    /// does (common::check_trace): every point and any range of them, whole
+    /// and a chunk at a time, against its step codes applied one by one;
+    /// the bounds against those points' extremes; each point's deviation
+    /// and per-axis error, measured incrementally along its move's segment,
+    /// against measuring it on its own, and the metrics they add up to.
+    /// Moves of no steps, dwells, arcs with extra turns and helices in each
+    /// arc algorithm included; every segment is made again when read.
+    #[test]
+    fn a_program_reads_as_its_replay(
+        lines in prop::collection::vec(program_line(), 1..16),
+        steps_per_mm in prop::sample::select(vec![1.0, 3.0, 10.0, 80.0]),
+        line in prop::sample::select(voxpath::arc::arc_segments::LINE_ALGORITHMS),
+        arcs in prop::sample::select(voxpath::gcode::program::ARC_ALGORITHMS),
+        range in (0u64..40_000, 0u64..40_000),
+        chunk in 1usize..3000,
+    ) {
+        let source = format!("G21 G90 G17 F600\n{}\n", lines.join("\n"));
+        let settings = format!(
+            r#"{{"stepsPerMm": {steps_per_mm}, "lineAlgorithm": "{line}", "arcAlgorithm": "{arcs}"}}"#
+        );
+        // A line the program refuses (an arc of no radius) ends the run
+        // there: the trace of the lines before it reads the same way.
+        let p = run(&source, Settings::from_json(&settings).unwrap());
+        common::check_trace(&p.trace, range, chunk)
+            .map_err(|e| TestCaseError::fail(format!("{settings}\n{source}: {e}")))?;
+    }
+}
+
+/// A program that makes no move (a dwell, a comment, nothing) has one
+/// point and no segment, so no path: its deviation and per-axis error are
+/// 0, one value for the point and one per axis, as every read of a range
+/// gives one per point (they were none, and a JS array read them as the
+/// zeros it was made with).
+#[test]
+fn a_program_of_no_move_reads_one_point_on_no_path() {
+    for source in ["", "G4 P0.1\n", "(nothing)\n"] {
+        let p = run(
+            source,
+            Settings::from_json(r#"{"stepsPerMm": 80}"#).unwrap(),
+        );
+        assert_eq!(
+            (p.trace.steps(), p.trace.segment_count()),
+            (0, 0),
+            "{source:?}"
+        );
+        assert_eq!(p.trace.deviation_range(0, 1), vec![0.0]);
+        assert_eq!(p.trace.axis_error_range(0, 1), vec![0.0; 3]);
+        assert_eq!(p.trace.metrics().max_deviation, 0.0);
+    }
+}
