@@ -1880,7 +1880,16 @@ impl Trace {
         self.for_each_replay(from, to, |segment, mut stepper, steps| {
             for i in steps {
                 row.fill(f64::NAN);
-                stepper.replay_step(&mut row);
+                let step = stepper.replay_step(&mut row);
+                // The steps were recorded by the steppers' fast fills, and
+                // are replayed here by their rule a step at a time: in
+                // debug builds (the tests) every decision read is also a
+                // check that the two agree.
+                debug_assert_eq!(
+                    step,
+                    Some(self.steps[i as usize]),
+                    "step {i} replays as it was recorded"
+                );
                 for (local, &global) in segment.column_index.iter().enumerate() {
                     let value = self.columns[global].kind.cell(row[local]);
                     put(global, (i - from) as usize, value);
