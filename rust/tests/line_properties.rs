@@ -751,3 +751,56 @@ proptest! {
         }
     }
 }
+
+/// Steps of each random long line below held to the rule: fewer than the
+/// fixed longest lines' LONG_STEPS, for eight algorithms a case.
+const RANDOM_LONG_STEPS: usize = 3_000;
+
+/// `stepper`'s recording loop against its `next_step` over its first
+/// RANDOM_LONG_STEPS steps (or all, on a shorter line).
+fn fill_starts_as_next_step<S: Stepper + Clone>(
+    name: &str,
+    stepper: S,
+) -> Result<(), TestCaseError> {
+    let mut filled = Vec::new();
+    fill_onto(&mut stepper.clone(), &mut filled, RANDOM_LONG_STEPS);
+    let mut stepper = stepper;
+    for (k, &recorded) in filled.iter().enumerate() {
+        let (step, _) = stepper.next_step().unwrap();
+        prop_assert_eq!(step, recorded, "{} fill, step {}", name, k);
+    }
+    Ok(())
+}
+
+/// A coordinate anywhere in the grid, its edges more often than by chance.
+fn anywhere() -> impl Strategy<Value = i64> {
+    prop_oneof![-L..=L, Just(-L), Just(L), (-L..=L).prop_map(|v| v / 4096)]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// Lines between random points anywhere in the grid (|Δ| up to 2^31,
+    /// so error terms and their vector lanes near 2^62): every algorithm's
+    /// recording loop takes its rule's steps, as the fixed longest lines
+    /// above check at a few chosen slopes.
+    #[test]
+    fn the_recording_loops_take_the_rule_s_steps_on_lines_anywhere(
+        from in prop::array::uniform6(anywhere()),
+        to in prop::array::uniform6(anywhere()),
+        tie in prop::sample::select(vec![TiePolicy::Hold, TiePolicy::Advance]),
+        decimals in 0u32..=10,
+    ) {
+        let (from6, to6) = (Point::new(&from), Point::new(&to));
+        let (from3, to3) = (Point::new(&from[..3]), Point::new(&to[..3]));
+        let (from2, to2) = (Point::new(&from[..2]), Point::new(&to[..2]));
+        fill_starts_as_next_step("nd", Nd::new(from6, to6, tie, false))?;
+        fill_starts_as_next_step("bresenham3d", Bresenham3d::new(from3, to3, tie, false))?;
+        fill_starts_as_next_step("regions", RegionsWang::new(from3, to3, tie))?;
+        fill_starts_as_next_step("bresenham2d", Bresenham2d::new(from2, to2, tie, Variant::Corrected))?;
+        fill_starts_as_next_step("dda", Dda::new(from3, to3))?;
+        fill_starts_as_next_step("liu-float", LiuFloat::new(from3, to3, tie, decimals))?;
+        fill_starts_as_next_step("greedy", Greedy::new(from3, to3, TieAxis::Lower))?;
+        fill_starts_as_next_step("walk6", Walk6::new(from6, to6, TieAxis::Higher))?;
+    }
+}
