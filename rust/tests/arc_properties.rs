@@ -883,3 +883,58 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Short arcs (about 3,000 steps) of random radius up to the grid's
+    /// (each power of two as likely), from any angle, in any plane and
+    /// direction, around a center anywhere the circle fits: the circle's
+    /// and the helix's recording loops take their rules' steps, and the
+    /// dry run leaps to the count stepping gives. The fixed test above
+    /// checks a few radii (2^30 - 3 and either side of 2^25, where the
+    /// pieces leave i32 lanes); the other tests, radii up to 5,000.
+    #[test]
+    fn the_recording_loops_take_the_rule_s_steps_at_any_radius(
+        (bits, fraction) in (1u32..=30, 0.0f64..1.0),
+        start in 0.0f64..TAU,
+        center_fraction in prop::array::uniform3(-1.0f64..1.0),
+        plane in 0usize..3,
+        ccw: bool,
+        rise in -9000i64..=9000,
+        chunk in prop::sample::select(vec![1usize, 7, 300, 4096]),
+    ) {
+        let r = ((1i64 << (bits - 1)) as f64 * (1.0 + fraction)).min((COORD_LIMIT - 3) as f64).floor();
+        // The center where every cell of the circle (within r + 1 of it on
+        // each axis) stays within the grid.
+        let room = (COORD_LIMIT - r as i64 - 2) as f64;
+        let center = center_fraction.map(|f| (f * room) as i64);
+        let sweep = (3000.0 / r).min(PI);
+        let at = |t: f64| [(r * t.cos()).round() as i64, (r * t.sin()).round() as i64];
+        let (from, to) = (at(start), at(if ccw { start + sweep } else { start - sweep }));
+        // Each end rounds up to 0.71 off the circle: an arc takes ends
+        // whose radii differ by at most 1.
+        let radius = |p: [i64; 2]| (p[0] as f64).hypot(p[1] as f64);
+        prop_assume!((radius(from) - radius(to)).abs() <= 1.0);
+        let (name, axes) = PLANES[plane];
+        let point = |uv: [i64; 2], h: i64| {
+            let mut p = [0; 3];
+            p[axes[0]] = uv[0] + center[axes[0]];
+            p[axes[1]] = uv[1] + center[axes[1]];
+            p[axes[2]] = h + center[axes[2]];
+            p
+        };
+        let dir = if ccw { "ccw" } else { "cw" };
+        let json = |algorithm: &str, rise: i64| {
+            format!(
+                r#"{{"algorithm":"{algorithm}","from":{:?},"to":{:?},"center":{:?},"dir":"{dir}","plane":"{name}"}}"#,
+                point(from, 0),
+                point(to, rise),
+                center
+            )
+        };
+        check_plan(&json("circle", 0))?;
+        check_fills(&json("circle", 0), TiePolicy::Hold, chunk)?;
+        check_fills(&json("helix", rise), TiePolicy::Advance, chunk)?;
+    }
+}
