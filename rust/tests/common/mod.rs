@@ -269,5 +269,45 @@ pub fn check_trace(t: &Trace, range: (u64, u64), chunk: usize) -> Result<(), Tes
         bits(&axis_error[a as usize * dims..b as usize * dims])
     );
     prop_assert_eq!(t.metrics(), &metrics);
+
+    // The chart's rows over the range, made whole and a slice of points at
+    // a time (as the page's worker makes them): each bucket's first point,
+    // where the ideal path is at its progress (the point less its per-axis
+    // error) and the extremes of the bucket's deviations; NaN for both
+    // where no segment measures the points (a program with no move).
+    if a < b {
+        let max_rows = 1 + chunk as u64 % 61;
+        let bucket = (b - a).div_ceil(max_rows);
+        let rows = (b - a).div_ceil(bucket) as usize;
+        let measured = t.segment_count() > 0;
+        let mut want = vec![f64::NAN; rows * (3 + 2 * dims)];
+        for r in 0..rows {
+            let k = a as usize + r * bucket as usize;
+            let end = (k + bucket as usize).min(b as usize);
+            want[r] = k as f64;
+            for axis in 0..dims {
+                let coordinate = all[k * dims + axis] as f64;
+                want[(1 + axis) * rows + r] = coordinate;
+                if measured {
+                    want[(1 + dims + axis) * rows + r] = coordinate - axis_error[k * dims + axis];
+                }
+            }
+            if measured {
+                let bucket_deviation = &deviation[k..end];
+                want[(1 + 2 * dims) * rows + r] = bucket_deviation
+                    .iter()
+                    .copied()
+                    .fold(f64::NEG_INFINITY, f64::max);
+                want[(2 + 2 * dims) * rows + r] = bucket_deviation
+                    .iter()
+                    .copied()
+                    .fold(f64::INFINITY, f64::min);
+            }
+        }
+        prop_assert_eq!(bits(&t.chart_rows(a, b, max_rows)), bits(&want));
+        let slice = 1 + 7 * chunk as u64;
+        while !t.advance_chart_rows(a, b, max_rows, slice).done {}
+        prop_assert_eq!(bits(&t.take_chart_rows(a, b, max_rows)), bits(&want));
+    }
     Ok(())
 }
