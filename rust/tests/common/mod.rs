@@ -138,8 +138,9 @@ pub fn ties_by_decision(t: &voxpath::Trace) -> u64 {
 
 /// Checks the ties a trace's metrics count, in one pass and in a pass
 /// made in `parts` slices of points (each slice's ties counted from the
-/// checkpoint before it), against [`ties_by_decision`]. `make` makes the
-/// trace afresh: a trace keeps its metrics once made.
+/// checkpoint before it), against [`ties_by_decision`], and the sliced
+/// pass's other figures against the one pass's. `make` makes the trace
+/// afresh: a trace keeps its metrics once made.
 pub fn check_ties(make: impl Fn() -> voxpath::Trace, parts: u64) -> Result<(), String> {
     let whole = make();
     let expected = ties_by_decision(&whole);
@@ -156,6 +157,16 @@ pub fn check_ties(make: impl Fn() -> voxpath::Trace, parts: u64) -> Result<(), S
     if counted != expected {
         return Err(format!(
             "{slice} points a slice: {counted} ties, the decisions {expected}"
+        ));
+    }
+    // And every other figure, to the bit: one accumulator in point order,
+    // however the pass is sliced (check_trace holds the whole pass's to
+    // each point measured on its own).
+    if sliced.metrics() != whole.metrics() {
+        return Err(format!(
+            "{slice} points a slice: {:?}, in one pass {:?}",
+            sliced.metrics(),
+            whole.metrics()
         ));
     }
     Ok(())
