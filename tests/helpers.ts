@@ -116,3 +116,28 @@ export function inPlane(plane: Plane, [u, v, n]: number[]): number[] {
 export function labelsOf(column: ColumnSpec): string[] {
   return column.kind === 'category' ? column.labels : [];
 }
+
+/**
+ * `count` lines of `dims` axes drawn from a fixed seed (mulberry32): each
+ * axis's delta up to `longest` either way, from a start anywhere within
+ * +-2^30 that keeps the end within it. Long enough for the core's recording
+ * loops to run their eight-step passes in 32-bit lanes (from 32 steps a
+ * line) and their two 64-bit chains (nd's 5 and 6 axes, from 256 steps) in
+ * the wasm build's vector code, with the large coordinates a machine's field
+ * can have.
+ */
+export function randomLines(seed: number, count: number, dims: number, longest: number): { from: number[]; to: number[] }[] {
+  let state = seed >>> 0;
+  const next = (): number => {
+    state = (state + 0x6d2b79f5) >>> 0;
+    let t = state;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 2 ** 32;
+  };
+  const limit = 2 ** 30 - longest;
+  return Array.from({ length: count }, () => {
+    const from = Array.from({ length: dims }, () => Math.round((2 * next() - 1) * limit));
+    return { from, to: from.map((c) => c + Math.round((2 * next() - 1) * longest)) };
+  });
+}

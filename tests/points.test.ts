@@ -7,6 +7,7 @@
 import { describe, expect, it } from 'vitest';
 import { algorithms, heapBytes, memoryBytes, runGcode, trace } from '../web/core/index.js';
 import type { Trace, TraceOptions } from '../web/core/index.js';
+import { randomLines } from './helpers.js';
 
 /**
  * The points of steps `from..to` replayed in plain JS from point `from`:
@@ -160,6 +161,35 @@ describe('points', () => {
     expect(t.pointsInRange(0, t.steps + 1, 7).length).toBe(3 * Math.ceil((t.steps + 1) / 7));
     expect(memoryBytes() - before).toBeLessThanOrEqual(bound + Math.ceil(bound / 7));
     t.free();
+  });
+});
+
+describe('points of random lines anywhere in the grid', () => {
+  // The wasm build's own decode (four-lane vectors for 2 to 4 axes, a bit
+  // at a time past them), which the Rust tests, built natively, never run:
+  // lines from seeded random starts anywhere within +-2^30, in every
+  // direction, by every line algorithm that takes their axis count.
+  const LINES = [2, 3, 4, 5, 6].flatMap((dims) => randomLines(101 + dims, 6, dims, 3000));
+  it('are their step codes replayed, read first from the plan and again from the recorded trace', async () => {
+    const lineAlgorithms = (await algorithms()).filter((a) => a.family === 'line');
+    let traced = 0;
+    for (const { from, to } of LINES) {
+      for (const { id, minDims, maxDims } of lineAlgorithms) {
+        if (from.length < minDims || from.length > maxDims) continue;
+        const t = await trace({ algorithm: id, from, to });
+        const n = t.steps + 1;
+        const planned = t.points;
+        const third = Math.floor(n / 3);
+        // A range records the trace; its codes replayed are the points.
+        const again = t.pointsInRange(third, n);
+        const replay = replayed(t, 0, n);
+        expectValues(planned, replay, `${id} ${JSON.stringify({ from, to })}, read first`);
+        expectValues(again, replay.subarray(third * t.dims), `${id} ${JSON.stringify({ from, to })}, from point ${third}, recorded`);
+        t.free();
+        traced++;
+      }
+    }
+    expect(traced).toBeGreaterThan(LINES.length * 2);
   });
 });
 

@@ -7,7 +7,7 @@ import { REFERENCES } from '../bench/reference/index.js';
 import type { ReferenceOptions } from '../bench/reference/index.js';
 import { algorithms, trace } from '../web/core/index.js';
 import type { AlgorithmId } from '../web/core/index.js';
-import { everyDirection, inPlane, PLANES } from './helpers.js';
+import { everyDirection, inPlane, PLANES, randomLines } from './helpers.js';
 
 /** Every sign pattern of `magnitudes`, as moves from `from`. */
 const moves = (from: number[], magnitudes: number[]): ReferenceOptions[] => everyDirection(from, magnitudes).map((to) => ({ from, to }));
@@ -41,30 +41,6 @@ const LINES_ND = [
   [3, 1, 4, 1, 5, 9],
 ].flatMap((m) => moves(m.map(() => 0), m).slice(0, 8));
 
-/**
- * `count` lines of `dims` axes drawn from a fixed seed (mulberry32): each
- * axis's delta up to `longest` either way, from a start anywhere within
- * +-2^30 that keeps the end within it. Long enough for the core's recording
- * loops to run their eight-step passes in 32-bit lanes (from 32 steps a
- * line) and their two 64-bit chains (nd's 5 and 6 axes, from 256 steps) in
- * the wasm build's vector code, with the large coordinates a machine's field
- * can have.
- */
-function randomLines(seed: number, count: number, dims: number, longest: number): ReferenceOptions[] {
-  let state = seed >>> 0;
-  const next = (): number => {
-    state = (state + 0x6d2b79f5) >>> 0;
-    let t = state;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 2 ** 32;
-  };
-  const limit = 2 ** 30 - longest;
-  return Array.from({ length: count }, () => {
-    const from = Array.from({ length: dims }, () => Math.round((2 * next() - 1) * limit));
-    return { from, to: from.map((c) => c + Math.round((2 * next() - 1) * longest)) };
-  });
-}
 const RANDOM_3D = randomLines(13, 24, 3, 20_000);
 const RANDOM_2D = randomLines(17, 24, 2, 20_000);
 const RANDOM_ND = [4, 5, 6].flatMap((dims) => randomLines(19 + dims, 8, dims, 5_000));
