@@ -124,25 +124,27 @@ proptest! {
 
     #[test]
     fn the_line_walk_is_each_point_measured_at_the_edge_of_the_grid(
-        ends in prop::array::uniform6(-COORD_LIMIT..=COORD_LIMIT),
-        start in prop::array::uniform3(-COORD_LIMIT + 600..=COORD_LIMIT - 600),
-        moves in prop::collection::vec(prop::array::uniform3(-1i64..=1), 1..600),
+        dims in 2usize..=6,
+        ends in (prop::array::uniform6(-COORD_LIMIT..=COORD_LIMIT), prop::array::uniform6(-COORD_LIMIT..=COORD_LIMIT)),
+        start in prop::array::uniform6(-COORD_LIMIT + 600..=COORD_LIMIT - 600),
+        moves in prop::collection::vec(prop::array::uniform6(-1i64..=1), 1..600),
         steps in 1u64..(1 << 30) - 1,
         fraction in 0.0f64..1.0,
     ) {
-        // A line between any two points of the grid (so |Δ| up to 2^31:
-        // cross products near 2^63), points anywhere within it, any step
-        // count up to the largest: the walk gives what each point gives.
-        let (from, to) = (Point::new(&ends[..3]), Point::new(&ends[3..]));
+        // A line of 2 to 6 axes between any two points of the grid (so |Δ|
+        // up to 2^31: cross products near 2^63), points anywhere within it,
+        // any step count up to the largest: the walk gives what each point
+        // gives.
+        let (from, to) = (Point::new(&ends.0[..dims]), Point::new(&ends.1[..dims]));
         let meter = LineMeter::new(&from, &to);
         let ideal = IdealPath::Line { from, to };
         let first = ((steps - 1) as f64 * fraction) as u64;
         let moves: Vec<Step> = moves
             .iter()
-            .map(|m| (0..3).fold(Step::NONE, |s, a| s.with(a, m[a])))
+            .map(|m| (0..dims).fold(Step::NONE, |s, a| s.with(a, m[a])))
             .collect();
         let mut expected = Vec::new();
-        let mut p = Point::new(&start);
+        let mut p = Point::new(&start[..dims]);
         for k in 0..=moves.len() {
             if k > 0 {
                 p.apply(moves[k - 1]);
@@ -151,14 +153,14 @@ proptest! {
             expected.push((ideal.deviation(&p), ideal.axis_error(&p, i, steps)));
         }
         let mut walked = Vec::new();
-        let small = (0..3).all(|a| (ends[3 + a] - ends[a]).abs() < 1 << 31);
+        let small = (0..dims).all(|a| (ends.1[a] - ends.0[a]).abs() < 1 << 31);
         // Cases the walk does not take are drawn again (prop_assume), so
         // that a strategy that stopped reaching the walk would fail on its
         // rejects rather than pass untested.
         prop_assume!(from != to && small && first + moves.len() as u64 <= steps);
-        let applied = meter.walk(&Point::new(&start), first, steps, &moves, |d, numerator| {
+        let applied = meter.walk(&Point::new(&start[..dims]), first, steps, &moves, |d, numerator| {
             let mut e = [0.0; MAX_AXES];
-            for a in 0..3 {
+            for a in 0..dims {
                 e[a] = numerator[a] as f64 / steps as f64;
             }
             walked.push((d, e));
@@ -198,24 +200,45 @@ fn the_line_walk_leaves_moves_past_the_product_bound_to_the_point_by_point_path(
 /// their memory and however they reach it.
 #[test]
 fn points_of_a_long_line_are_the_replay() {
-    let (from, to) = (
-        Point::new(&[-(1 << 30), 1 << 30, 5]),
-        Point::new(&[-(1 << 30) + 900_000, (1 << 30) - 630_001, 5 - 540_003]),
-    );
-    let mut b = TraceBuilder::new(from, u64::MAX);
-    b.run(
-        Bresenham3d::new(from, to, TiePolicy::Hold, false),
-        IdealPath::Line { from, to },
-    )
-    .unwrap();
-    let t = b.finish("bresenham3d");
-    let n = t.steps() + 1;
-    assert!(
-        n as usize * 3 * 4 > 8 << 20,
-        "more than four huge pages of i32, and past the cache"
-    );
-    let all = common::replayed_points(&t, 0, n);
-    let narrow: Vec<i64> = t.points_i32(0, n).into_iter().map(i64::from).collect();
-    assert!(narrow == all, "i32 points are the replay");
-    assert!(t.points_flat(0, n) == all, "i64 points are the replay");
+    // Lines from the grid's corner whose points pass 8 MiB of i32, so that
+    // they are written past the cache (`points::decode_to_new`), in every
+    // axis count the streaming decode has a loop for (2 to 4) and past it.
+    let major = |dims: usize| (9 << 20) / (4 * dims as i64) + 1;
+    for dims in 2..=6 {
+        let from = Point::new(&[-(1 << 30), 1 << 30, 5, -7, 11, 1 << 30][..dims]);
+        let delta = [
+            major(dims),
+            -(major(dims) * 7 / 10) - 1,
+            -(major(dims) * 6 / 10) - 3,
+            1,
+            -major(dims) / 3,
+            -5,
+        ];
+        let to = Point::new(
+            &(0..dims)
+                .map(|a| from.get(a) + delta[a])
+                .collect::<Vec<_>>(),
+        );
+        let mut b = TraceBuilder::new(from, u64::MAX);
+        let ideal = IdealPath::Line { from, to };
+        if dims == 3 {
+            b.run(Bresenham3d::new(from, to, TiePolicy::Hold, false), ideal)
+        } else {
+            b.run(Nd::new(from, to, TiePolicy::Hold, false), ideal)
+        }
+        .unwrap();
+        let t = b.finish("long line");
+        let n = t.steps() + 1;
+        assert!(
+            n as usize * dims * 4 > 8 << 20,
+            "more than four huge pages of i32, and past the cache"
+        );
+        let all = common::replayed_points(&t, 0, n);
+        let narrow: Vec<i64> = t.points_i32(0, n).into_iter().map(i64::from).collect();
+        assert!(narrow == all, "i32 points of {dims} axes are the replay");
+        assert!(
+            t.points_flat(0, n) == all,
+            "i64 points of {dims} axes are the replay"
+        );
+    }
 }
