@@ -98,8 +98,17 @@ proptest! {
         line in 0usize..7,
         tie in 0usize..3,
         buffer_points in 1usize..5000,
+        edge in 0usize..4,
     ) {
         let [u, v, n] = [[0, 1, 2], [2, 0, 1], [1, 2, 0]][plane];
+        // One case in two moves the circle against the grid's edge in its
+        // plane, its farthest cells on +-2^30 exactly.
+        let mut center = center;
+        match edge {
+            0 => center[u] = COORD_LIMIT - radius,
+            1 => center[v] = -COORD_LIMIT + radius,
+            _ => {}
+        }
         let mut from = center;
         from[u] += radius;
         let mut end = center;
@@ -145,7 +154,7 @@ proptest! {
     fn a_planned_line_is_the_trace_its_request_records(
         algorithm in 0usize..8,
         dims in 1usize..=6,
-        start in prop::array::uniform6(prop_oneof![-3000i64..3000, Just(COORD_LIMIT - 9000), Just(-COORD_LIMIT + 9000)]),
+        start in prop::array::uniform6(prop_oneof![-3000i64..3000, Just(COORD_LIMIT - 9000), Just(-COORD_LIMIT + 9000), Just(COORD_LIMIT), Just(-COORD_LIMIT)]),
         delta in prop::array::uniform6(prop_oneof![-6000i64..6000, -3i64..3, Just(0i64)]),
         tie in 0usize..3,
         option in 0usize..3,
@@ -168,7 +177,10 @@ proptest! {
         };
         let info = find(id).unwrap();
         let dims = dims.clamp(info.min_dims, info.max_dims);
-        let (from, to): (Vec<i64>, Vec<i64>) = (0..dims).map(|a| (start[a], start[a] + delta[a])).unzip();
+        // A start on the grid's edge moves along it or inward.
+        let (from, to): (Vec<i64>, Vec<i64>) = (0..dims)
+            .map(|a| (start[a], (start[a] + delta[a]).clamp(-COORD_LIMIT, COORD_LIMIT)))
+            .unzip();
         let tie = match (info.default_tie, tie) {
             (Some(_), 1) => r#","tie":"advance""#,
             (Some(_), 2) => r#","tie":"hold""#,
