@@ -90,41 +90,10 @@ proptest! {
 
     #[test]
     fn arcs_and_helices_read_as_their_replay(
-        radius in 1i64..2000,
-        center in prop::array::uniform3(start_coordinate()),
-        turn in 0.0f64..std::f64::consts::TAU,
-        rise in -500i64..=500,
-        which in 0usize..4,
-        (plane, axes) in prop::sample::select(vec![("xy", [0, 1, 2]), ("zx", [2, 0, 1]), ("yz", [1, 2, 0])]),
-        ccw: bool,
-        turns in 0u32..=1,
+        request in common::arc_request(),
         range in (0u64..20_000, 0u64..20_000),
         chunk in 1usize..3000,
     ) {
-        // Centre kept far enough inside the grid for the circle; the arc
-        // in its plane's (u, v) from angle 0, the rise along its normal.
-        let c = center.map(|v| v.clamp(-COORD_LIMIT + 2100, COORD_LIMIT - 2100));
-        let place = |u: i64, v: i64, h: i64| {
-            let mut p = c;
-            p[axes[0]] += u;
-            p[axes[1]] += v;
-            p[axes[2]] += h;
-            p
-        };
-        let from = place(radius, 0, 0);
-        let (u, v) = (
-            (radius as f64 * turn.cos()).round() as i64,
-            (radius as f64 * turn.sin()).round() as i64,
-        );
-        let (end, risen) = (place(u, v, 0), place(u, v, rise));
-        let dir = if ccw { "ccw" } else { "cw" };
-        let arc = format!(r#""center":{c:?},"plane":"{plane}","dir":"{dir}","turns":{turns}"#);
-        let request = match which {
-            0 => format!(r#"{{"algorithm":"circle","from":{from:?},"to":{end:?},{arc}}}"#),
-            1 => format!(r#"{{"algorithm":"arc-segments","from":{from:?},"to":{end:?},{arc}}}"#),
-            2 => format!(r#"{{"algorithm":"helix","from":{from:?},"to":{risen:?},{arc}}}"#),
-            _ => format!(r#"{{"algorithm":"helix","method":"segments","from":{from:?},"to":{risen:?},{arc}}}"#),
-        };
         let t = common::trace(&request);
         common::check_trace(&t, range, chunk)?;
     }

@@ -7,6 +7,8 @@
 //! plane, several turns), helices by Saleem's rule and in chords, and
 //! arcs in chords by every line algorithm, near +-2^30 too.
 
+mod common;
+
 use proptest::prelude::*;
 use voxpath::algorithms::{find, run};
 use voxpath::grid::COORD_LIMIT;
@@ -74,75 +76,14 @@ fn check_plan(json: &str, buffer_points: usize) -> Result<(), TestCaseError> {
     Ok(())
 }
 
-fn center_coordinate() -> impl Strategy<Value = i64> {
-    prop_oneof![
-        -5000i64..5000,
-        Just(COORD_LIMIT - 5100),
-        Just(-COORD_LIMIT + 5100)
-    ]
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(400))]
 
     #[test]
     fn a_planned_arc_is_the_trace_its_request_records(
-        radius in 1i64..2000,
-        center in prop::array::uniform3(center_coordinate()),
-        turn in 0.0f64..std::f64::consts::TAU,
-        rise in -3000i64..=3000,
-        which in 0usize..5,
-        plane in 0usize..3,
-        cw in any::<bool>(),
-        turns in 0u64..3,
-        line in 0usize..7,
-        tie in 0usize..3,
+        json in common::arc_request(),
         buffer_points in 1usize..5000,
-        edge in 0usize..4,
     ) {
-        let [u, v, n] = [[0, 1, 2], [2, 0, 1], [1, 2, 0]][plane];
-        // One case in two moves the circle against the grid's edge in its
-        // plane, its farthest cells on +-2^30 exactly.
-        let mut center = center;
-        match edge {
-            0 => center[u] = COORD_LIMIT - radius,
-            1 => center[v] = -COORD_LIMIT + radius,
-            _ => {}
-        }
-        let mut from = center;
-        from[u] += radius;
-        let mut end = center;
-        end[u] += (radius as f64 * turn.cos()).round() as i64;
-        end[v] += (radius as f64 * turn.sin()).round() as i64;
-        let mut helix_end = end;
-        helix_end[n] += rise;
-        let plane = ["xy", "zx", "yz"][plane];
-        let dir = if cw { "cw" } else { "ccw" };
-        let tie = ["", r#","tie":"advance""#, r#","tie":"hold""#][tie];
-        let common = format!(r#""center":{center:?},"plane":"{plane}","dir":"{dir}","turns":{turns}"#);
-        let line = voxpath::arc::arc_segments::LINE_ALGORITHMS[line];
-        let chord_tie = if ["regions", "bresenham3d", "nd"].contains(&line) { tie } else { "" };
-        let chording = [
-            "",
-            &format!(r#","segmentLength":{}"#, 1 + turns * 7),
-            &format!(r#","tolerance":{}"#, 0.002 * (1 + turns) as f64),
-        ][buffer_points % 3]
-            .to_string();
-        let chord_tie = format!("{chord_tie}{chording}");
-        let json = match which {
-            0 => format!(r#"{{"algorithm":"circle","from":{from:?},"to":{end:?},{common}}}"#),
-            1 if plane == "xy" => format!(
-                r#"{{"algorithm":"circle","from":{:?},"to":{:?},"center":{:?},"dir":"{dir}","turns":{turns}}}"#,
-                &from[..2], &end[..2], &center[..2]
-            ),
-            1 | 2 => format!(
-                r#"{{"algorithm":"arc-segments","from":{from:?},"to":{end:?},{common},"lineAlgorithm":"{line}"{chord_tie}}}"#
-            ),
-            3 => format!(r#"{{"algorithm":"helix","from":{from:?},"to":{helix_end:?},{common}{tie}}}"#),
-            _ => format!(
-                r#"{{"algorithm":"helix","method":"segments","from":{from:?},"to":{helix_end:?},{common},"lineAlgorithm":"{line}"{chord_tie}}}"#
-            ),
-        };
         check_plan(&json, buffer_points)?;
     }
 }

@@ -4,7 +4,7 @@
 #![allow(dead_code)] // each test crate uses its own subset
 
 use proptest::prelude::*;
-use voxpath::grid::{Point, displacement};
+use voxpath::grid::{COORD_LIMIT, Point, displacement};
 use voxpath::metrics::{Metrics, MetricsAccumulator};
 use voxpath::trace::{ColumnKind, Decision, Stepper, Trace, fill_onto};
 
@@ -321,4 +321,73 @@ pub fn check_trace(t: &Trace, range: (u64, u64), chunk: usize) -> Result<(), Tes
         prop_assert_eq!(bits(&t.take_chart_rows(a, b, max_rows)), bits(&want));
     }
     Ok(())
+}
+
+/// A random request of an arc algorithm, as JSON: a circle (in 3 axes, or
+/// in x and y), an arc in chords by any line algorithm with its segment
+/// length or tolerance, a helix by Saleem's rule or in chords; radius up to
+/// 2,000, from angle 0 of any plane to any angle, either way, with up to two
+/// extra turns and a rise up to 3,000; its center anywhere near the origin
+/// or near the grid's edge, and one case in two moved against the edge in
+/// its plane, its farthest cells on +-2^30 exactly.
+pub fn arc_request() -> impl Strategy<Value = String> {
+    let center_coordinate = || {
+        prop_oneof![
+            -5000i64..5000,
+            Just(COORD_LIMIT - 5100),
+            Just(-COORD_LIMIT + 5100)
+        ]
+    };
+    (
+        (1i64..2000, prop::array::uniform3(center_coordinate()), 0.0f64..std::f64::consts::TAU),
+        (-3000i64..=3000, 0usize..5, 0usize..3, any::<bool>(), 0u64..3),
+        (
+            prop::sample::select(voxpath::arc::arc_segments::LINE_ALGORITHMS),
+            0usize..3,
+            0usize..3,
+            0usize..4,
+        ),
+    )
+        .prop_map(|((radius, center, turn), (rise, which, plane, cw, turns), (line, tie, chording, edge))| {
+            let [u, v, n] = [[0, 1, 2], [2, 0, 1], [1, 2, 0]][plane];
+            let mut center = center;
+            match edge {
+                0 => center[u] = COORD_LIMIT - radius,
+                1 => center[v] = -COORD_LIMIT + radius,
+                _ => {}
+            }
+            let mut from = center;
+            from[u] += radius;
+            let mut end = center;
+            end[u] += (radius as f64 * turn.cos()).round() as i64;
+            end[v] += (radius as f64 * turn.sin()).round() as i64;
+            let mut helix_end = end;
+            helix_end[n] += rise;
+            let plane = ["xy", "zx", "yz"][plane];
+            let dir = if cw { "cw" } else { "ccw" };
+            let tie = ["", r#","tie":"advance""#, r#","tie":"hold""#][tie];
+            let arc = format!(r#""center":{center:?},"plane":"{plane}","dir":"{dir}","turns":{turns}"#);
+            let chord_tie = if ["regions", "bresenham3d", "nd"].contains(&line) { tie } else { "" };
+            let chording = [
+                String::new(),
+                format!(r#","segmentLength":{}"#, 1 + turns * 7),
+                format!(r#","tolerance":{}"#, 0.002 * (1 + turns) as f64),
+            ][chording]
+                .clone();
+            let chords = format!(r#""lineAlgorithm":"{line}"{chord_tie}{chording}"#);
+            match which {
+                0 => format!(r#"{{"algorithm":"circle","from":{from:?},"to":{end:?},{arc}}}"#),
+                1 if plane == "xy" => format!(
+                    r#"{{"algorithm":"circle","from":{:?},"to":{:?},"center":{:?},"dir":"{dir}","turns":{turns}}}"#,
+                    &from[..2],
+                    &end[..2],
+                    &center[..2]
+                ),
+                1 | 2 => format!(r#"{{"algorithm":"arc-segments","from":{from:?},"to":{end:?},{arc},{chords}}}"#),
+                3 => format!(r#"{{"algorithm":"helix","from":{from:?},"to":{helix_end:?},{arc}{tie}}}"#),
+                _ => format!(
+                    r#"{{"algorithm":"helix","method":"segments","from":{from:?},"to":{helix_end:?},{arc},{chords}}}"#
+                ),
+            }
+        })
 }
