@@ -294,17 +294,13 @@ pub unsafe trait Stepper: Clone + 'static {
     /// How many of its next `steps` steps (fewer where the path ends
     /// first) a tie decides ([`Decision::is_tie`]): the metrics count the
     /// ties of a recorded stretch so, from the stepper's state before it.
-    /// By taking the steps; a stepper whose ties follow from its state in
-    /// closed form overrides this (Saleem's helix, whose ties its line's
-    /// term alone decides, and whose circle the steps would take).
-    fn ties_ahead(mut self, steps: u64) -> u64 {
-        if Self::Why::NEVER_TIES {
-            return 0;
-        }
-        (0..steps)
-            .map_while(|_| self.next_step())
-            .filter(|(_, why)| why.is_tie())
-            .count() as u64
+    /// By taking the steps ([`ties_by_steps`]); a stepper that can count
+    /// them for less overrides this: in closed form from its terms
+    /// (Saleem's helix, whose ties its line's term alone decides, and whose
+    /// circle the steps would take; the Bresenham lines; nd), a run at a
+    /// time (greedy), or by a loop that builds no decision (walk6).
+    fn ties_ahead(self, steps: u64) -> u64 {
+        ties_by_steps(self, steps)
     }
 
     /// Steps this stepper will still take, when known without running it.
@@ -472,6 +468,18 @@ impl<S: Stepper> Replay for S {
     fn setup_note(&self) -> String {
         Stepper::setup_note(self)
     }
+}
+
+/// [`Stepper::ties_ahead`] by taking the steps and reading each one's
+/// decision: the default, and the reference a closed form is held to.
+pub fn ties_by_steps<S: Stepper>(mut stepper: S, steps: u64) -> u64 {
+    if S::Why::NEVER_TIES {
+        return 0;
+    }
+    (0..steps)
+        .map_while(|_| stepper.next_step())
+        .filter(|(_, why)| why.is_tie())
+        .count() as u64
 }
 
 /// A stretch of the trace produced by one stepper against one ideal path

@@ -18,6 +18,7 @@ use crate::grid::{AXIS_NAMES, OCTANT_LABELS, Point, Step};
 use crate::request::{FROM, MAX_STEPS, OptionKind, OptionSpec, Request, TO, TiePolicy, tie_option};
 use crate::trace::{
     Column, ColumnKind, ColumnRole, Decision, DeviationBound, Filled, Stepper, fill_by_next_step,
+    ties_by_steps,
 };
 use std::mem::MaybeUninit;
 
@@ -392,6 +393,18 @@ unsafe impl Stepper for Bresenham2d {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    /// The corrected rule's ties in closed form, where its error equals
+    /// |Δmajor| ([`Term::values_equal`]); as printed, the error leaves the
+    /// window the closed form needs (it drops by |Δmajor| only), so its
+    /// steps are taken.
+    fn ties_ahead(self, steps: u64) -> u64 {
+        if self.variant == Variant::Printed {
+            return ties_by_steps(self, steps);
+        }
+        let term = self.term.as_term(self.tie, Step::NONE);
+        term.values_equal(self.term.threshold, steps.min(self.remaining))
     }
 
     /// The corrected rule only: as printed, the minor axis runs ahead of

@@ -751,4 +751,169 @@ mod tests {
         assert_eq!(axis_list([0, 1, 2].into_iter()), "x, y and z");
         assert_eq!(axis_list([1].into_iter()), "y");
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
+        /// The Bresenham lines' ties counted in closed form
+        /// (`Stepper::ties_ahead`) are the ones their steps decide, read
+        /// one by one (`ties_by_steps`): 2D as corrected and as printed,
+        /// 3D, either tie policy, with and without the GCD, over any
+        /// stretch from any step. Short lines tie often, and a 3D line's
+        /// two terms often tie at the same step (counted once); the same
+        /// directions scaled by up to 2^24 tie at the same steps with
+        /// error terms near 2^31, where the counts take i128 products.
+        #[test]
+        fn bresenham_ties_in_closed_form_are_the_ones_the_steps_decide(
+            direction in proptest::array::uniform3(-24i64..=24),
+            scale_log2 in proptest::prop_oneof![proptest::strategy::Just(0u32), 0u32..=24],
+            advance in 0u64..120,
+            stretch in 0u64..400,
+            advance_ties in proptest::bool::ANY,
+            gcd in proptest::bool::ANY,
+            printed in proptest::bool::ANY,
+        ) {
+            let to = Point::new(&direction.map(|d| d << scale_log2));
+            let tie = if advance_ties { TiePolicy::Advance } else { TiePolicy::Hold };
+            let from = Point::new(&[0, 0, 0]);
+            let mut line = bresenham3d::Bresenham3d::new(from, to, tie, gcd);
+            let variant = if printed { bresenham2d::Variant::Printed } else { bresenham2d::Variant::Corrected };
+            let (from_2d, to_2d) = (Point::new(&[0, 0]), Point::new(&[to.get(0), to.get(1)]));
+            let mut line_2d = bresenham2d::Bresenham2d::new(from_2d, to_2d, tie, variant);
+            for _ in 0..advance {
+                line.next_step();
+                line_2d.next_step();
+            }
+            proptest::prop_assert_eq!(
+                line.clone().ties_ahead(stretch),
+                crate::trace::ties_by_steps(line, stretch),
+                "3D to {}", to
+            );
+            proptest::prop_assert_eq!(
+                line_2d.clone().ties_ahead(stretch),
+                crate::trace::ties_by_steps(line_2d, stretch),
+                "2D to {}", to_2d
+            );
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
+        /// Greedy's ties counted a run at a time are the ones its steps
+        /// decide (another axis's candidate as near the goal), in 2 to 6
+        /// axes, either tie order, over any stretch from any step: axes of
+        /// equal |Δ| tie from the start, others once the leaders come down
+        /// to them; scaled by up to 2^24, the runs before they join are
+        /// long.
+        #[test]
+        fn greedy_ties_by_runs_are_the_ones_the_steps_decide(
+            direction in proptest::array::uniform6(-12i64..=12),
+            dims in 2usize..=6,
+            scale_log2 in proptest::prop_oneof![proptest::strategy::Just(0u32), 0u32..=24],
+            advance in 0u64..120,
+            stretch in 0u64..400,
+            higher_first in proptest::bool::ANY,
+        ) {
+            let to = Point::new(&direction[..dims].iter().map(|d| d << scale_log2).collect::<Vec<_>>());
+            let order = if higher_first { TieAxis::Higher } else { TieAxis::Lower };
+            let mut line = greedy::Greedy::new(Point::new(&vec![0; dims]), to, order);
+            for _ in 0..advance {
+                line.next_step();
+            }
+            proptest::prop_assert_eq!(
+                line.clone().ties_ahead(stretch),
+                crate::trace::ties_by_steps(line, stretch),
+                "to {}", to
+            );
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
+        /// Walk6's ties found by the gaps are the ones its steps decide (a
+        /// face of another axis at the same t: an edge or a corner), in 2
+        /// to 6 axes, either tie order, over any stretch from any step:
+        /// directions of common odd factors cross edges and corners often,
+        /// axes that never move or have arrived must not count.
+        #[test]
+        fn walk6_ties_by_gaps_are_the_ones_the_steps_decide(
+            direction in proptest::array::uniform6(-12i64..=12),
+            dims in 2usize..=6,
+            scale in proptest::prop_oneof![proptest::strategy::Just(1i64), 1i64..=5_000_001],
+            advance in 0u64..120,
+            stretch in 0u64..400,
+            higher_first in proptest::bool::ANY,
+        ) {
+            let to = Point::new(&direction[..dims].iter().map(|d| d * scale).collect::<Vec<_>>());
+            let order = if higher_first { TieAxis::Higher } else { TieAxis::Lower };
+            let mut line = walk6::Walk6::new(Point::new(&vec![0; dims]), to, order);
+            for _ in 0..advance {
+                line.next_step();
+            }
+            proptest::prop_assert_eq!(
+                line.clone().ties_ahead(stretch),
+                crate::trace::ties_by_steps(line, stretch),
+                "to {}", to
+            );
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
+        /// Liu's float rule counts its ties (an epsilon exactly 0 after its
+        /// rounding to `decimals`) as its steps decide them, either tie
+        /// policy, 1 to 10 decimals, over any stretch from any step,
+        /// the finish rule's last steps included.
+        #[test]
+        fn liu_float_ties_without_decisions_are_the_ones_the_steps_decide(
+            direction in proptest::array::uniform3(-24i64..=24),
+            scale in proptest::prop_oneof![proptest::strategy::Just(1i64), 1i64..=1_000_001],
+            decimals in 1u32..=10,
+            advance in 0u64..120,
+            stretch in 0u64..400,
+            advance_ties in proptest::bool::ANY,
+        ) {
+            let to = Point::new(&direction.map(|d| d * scale));
+            let tie = if advance_ties { TiePolicy::Advance } else { TiePolicy::Hold };
+            let mut line = liu_float::LiuFloat::new(Point::new(&[0, 0, 0]), to, tie, decimals);
+            for _ in 0..advance {
+                line.next_step();
+            }
+            proptest::prop_assert_eq!(
+                line.clone().ties_ahead(stretch),
+                crate::trace::ties_by_steps(line, stretch),
+                "to {}", to
+            );
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
+        /// nd's ties counted in closed form are the ones its steps decide,
+        /// in 2 to 6 axes, as the Bresenham lines' above: a step ties where
+        /// any passive axis's discriminant is 0, so up to five terms are
+        /// counted by inclusion and exclusion (axes of equal |Δ| tie at the
+        /// same steps; axes as long as the longest are active, with none).
+        #[test]
+        fn nd_ties_in_closed_form_are_the_ones_the_steps_decide(
+            direction in proptest::array::uniform6(-12i64..=12),
+            dims in 2usize..=6,
+            scale_log2 in proptest::prop_oneof![proptest::strategy::Just(0u32), 0u32..=24],
+            advance in 0u64..120,
+            stretch in 0u64..400,
+            advance_ties in proptest::bool::ANY,
+            gcd in proptest::bool::ANY,
+        ) {
+            let to = Point::new(&direction[..dims].iter().map(|d| d << scale_log2).collect::<Vec<_>>());
+            let tie = if advance_ties { TiePolicy::Advance } else { TiePolicy::Hold };
+            let mut line = nd::Nd::new(Point::new(&vec![0; dims]), to, tie, gcd);
+            for _ in 0..advance {
+                line.next_step();
+            }
+            proptest::prop_assert_eq!(
+                line.clone().ties_ahead(stretch),
+                crate::trace::ties_by_steps(line, stretch),
+                "to {}", to
+            );
+        }
+    }
 }

@@ -223,27 +223,35 @@ impl Nd {
         (passive, count)
     }
 
+    /// The passive axes' discriminants as [`Terms`]' terms, in axis order,
+    /// and how many there are (eq. 16: an axis steps when D > 0, a tie
+    /// when D = 0; D grows by 2ΔA and drops by 2Δx when A steps).
+    fn passive_terms(&self) -> ([Term; MAX_AXES], usize) {
+        let (passive, count) = self.passive_axes();
+        let terms = std::array::from_fn(|i| {
+            let (axis, d) = passive[i];
+            Term {
+                value: d,
+                increment: 2 * self.magnitude[axis],
+                decrement: 2 * self.longest,
+                steps_above: Term::steps_above(0, self.tie),
+                step: self.mirror.toward(Step::NONE, axis),
+            }
+        });
+        (terms, count)
+    }
+
     /// Records `out` with the `N` passive axes' discriminants as [`Terms`]
-    /// (eq. 16: an axis steps when D > 0, a tie when D = 0; D grows by 2ΔA
-    /// and drops by 2Δx when A steps).
+    /// ([`Self::passive_terms`]).
     fn fill_with<const N: usize>(&mut self, out: &mut [MaybeUninit<Step>]) -> [i64; MAX_AXES] {
         let (passive, _) = self.passive_axes();
-        let toward = |axis| self.mirror.toward(Step::NONE, axis);
+        let (passive_terms, _) = self.passive_terms();
         let always = (0..self.mirror.dims())
             .filter(|&a| self.discriminant[a].is_none())
             .fold(Step::NONE, |step, axis| self.mirror.toward(step, axis));
         let mut terms = Terms {
             always,
-            terms: std::array::from_fn::<_, N, _>(|i| {
-                let (axis, d) = passive[i];
-                Term {
-                    value: d,
-                    increment: 2 * self.magnitude[axis],
-                    decrement: 2 * self.longest,
-                    steps_above: Term::steps_above(0, self.tie),
-                    step: toward(axis),
-                }
-            }),
+            terms: std::array::from_fn::<_, N, _>(|i| passive_terms[i]),
         };
         let displacement = terms.fill(out);
         for (&(axis, _), term) in passive.iter().zip(&terms.terms) {
@@ -321,6 +329,16 @@ unsafe impl Stepper for Nd {
 
     fn remaining_steps(&self) -> Option<u64> {
         Some(self.remaining)
+    }
+
+    /// A step is a tie where any passive axis's discriminant is 0 (eq.
+    /// 16), counted from the discriminants' terms in closed form
+    /// ([`Term::values_equal_in_any`]): with its ties counted by replay,
+    /// the metrics of the bench's 2,000,000-step 3D line took 71 ms in
+    /// Node, 17 to 18 ms so.
+    fn ties_ahead(self, steps: u64) -> u64 {
+        let (terms, count) = self.passive_terms();
+        Term::values_equal_in_any(&terms[..count], 0, steps.min(self.remaining))
     }
 
     fn columns(&self) -> &'static [Column] {

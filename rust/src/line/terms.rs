@@ -402,38 +402,39 @@ impl Term {
 
     /// How many of the values the next `steps` steps compare, this one
     /// first, equal `target`, without taking the steps: the ties among
-    /// them where `target` is the rule's threshold (Saleem's helix).
-    ///
-    /// Step j compares value + j·increment less n·decrement (n the steps
-    /// of the axis before it), and every value lies in the window
-    /// (steps_above - decrement + increment, steps_above + increment]
-    /// ([`Term::jumped`]), which holds one number of each class modulo the
-    /// decrement. So a target in the window is compared exactly at the j
-    /// with j·increment ≡ target - value (mod decrement): every period-th
-    /// j from the least one.
+    /// them where `target` is the rule's threshold (Saleem's helix, the
+    /// Bresenham lines).
     pub fn values_equal(&self, target: i64, steps: u64) -> u64 {
-        if self.decrement == 0 {
-            // No step of the axis, nor an increment (at most the
-            // decrement): the value stays.
-            return if self.value == target { steps } else { 0 };
+        Equal::of(self, target).count_below(steps)
+    }
+
+    /// How many of the next `steps` steps of terms run side by side (the
+    /// passive axes of a line in 3 or more axes) compare a value equal to
+    /// `target` in at least one of them, without taking the steps: by
+    /// inclusion and exclusion, the steps where each subset of the terms
+    /// all do ([`Equal::both`]) added for a subset of odd size and taken
+    /// off for one of even size (31 subsets for the most terms, five).
+    pub fn values_equal_in_any(terms: &[Term], target: i64, steps: u64) -> u64 {
+        assert!(terms.len() < MAX_AXES, "at most one term a passive axis");
+        let mut equal = [Equal::None; MAX_AXES];
+        for (e, term) in equal.iter_mut().zip(terms) {
+            *e = Equal::of(term, target);
         }
-        let (increment, decrement) = (self.increment as i128, self.decrement as i128);
-        let target = target as i128;
-        let above = self.steps_above as i128;
-        if target <= above - decrement + increment || target > above + increment {
-            return 0;
+        let mut in_any = 0i128;
+        for subset in 1..1u32 << terms.len() {
+            let all = (0..terms.len())
+                .filter(|&i| subset >> i & 1 == 1)
+                .map(|i| equal[i])
+                .reduce(Equal::both)
+                .expect("a subset of at least one term");
+            let count = all.count_below(steps) as i128;
+            in_any += if subset.count_ones() % 2 == 1 {
+                count
+            } else {
+                -count
+            };
         }
-        let Some((first, period)) =
-            least_solution(increment, target - self.value as i128, decrement)
-        else {
-            return 0;
-        };
-        let steps = steps as i128;
-        if first >= steps {
-            0
-        } else {
-            ((steps - 1 - first) / period + 1) as u64
-        }
+        in_any as u64
     }
 
     /// This term `steps` steps later, without taking them.
@@ -474,6 +475,120 @@ impl Term {
         Term {
             value: (self.value as i128 + steps as i128 * inc - n * dec) as i64,
             ..*self
+        }
+    }
+}
+
+/// The steps, counted from a term's present state (step 0 the next), at
+/// which it compares a value equal to a target: every `period`-th step
+/// from `first`, or none.
+/// A period no path reaches the second step of: every path is shorter than
+/// 2^32 steps (maxSteps is at most 10^9). Two periods below it multiply
+/// within i128, as [`Equal::both`] and [`least_solution`] multiply them.
+const ONCE: i128 = 1 << 63;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Equal {
+    None,
+    Every { first: i128, period: i128 },
+}
+
+impl Equal {
+    /// Where `term` compares `target`. Step j compares value + j·increment
+    /// less n·decrement (n the steps of the axis before it), and every
+    /// value lies in the window (steps_above - decrement + increment,
+    /// steps_above + increment] ([`Term::jumped`]), which holds one number
+    /// of each class modulo the decrement. So a target in the window is
+    /// compared exactly at the j with j·increment ≡ target - value (mod
+    /// decrement): every period-th j from the least one.
+    fn of(term: &Term, target: i64) -> Equal {
+        if term.decrement == 0 {
+            // No step of the axis, nor an increment (at most the
+            // decrement): the value stays.
+            return if term.value == target {
+                Equal::Every {
+                    first: 0,
+                    period: 1,
+                }
+            } else {
+                Equal::None
+            };
+        }
+        let (increment, decrement) = (term.increment as i128, term.decrement as i128);
+        let target = target as i128;
+        let above = term.steps_above as i128;
+        if target <= above - decrement + increment || target > above + increment {
+            return Equal::None;
+        }
+        match least_solution(increment, target - term.value as i128, decrement) {
+            Some((first, period)) => Equal::Every { first, period },
+            None => Equal::None,
+        }
+    }
+
+    /// The steps in both: j = first_a + t·period_a also ≡ first_b (mod
+    /// period_b), so t·period_a ≡ first_b - first_a (mod period_b), whose
+    /// least solution t0 (< period_b / g, g = gcd of the periods) gives
+    /// the least such j, first_a + t0·period_a, and they recur every
+    /// lcm = period_a·period_b / g steps (the Chinese remainder theorem).
+    /// Each first is below its period, so a j >= 0 of both classes is past
+    /// both firsts: every one of them is a step of both. A period of
+    /// [`ONCE`] or more holds its first step alone within any path, and
+    /// stands for every longer one, so that the products stay in i128 over
+    /// the five terms of a 6-axis line.
+    fn both(self, other: Equal) -> Equal {
+        let (
+            Equal::Every {
+                first: first_a,
+                period: period_a,
+            },
+            Equal::Every {
+                first: first_b,
+                period: period_b,
+            },
+        ) = (self, other)
+        else {
+            return Equal::None;
+        };
+        if period_a >= ONCE {
+            return if other.holds(first_a) {
+                self
+            } else {
+                Equal::None
+            };
+        }
+        if period_b >= ONCE {
+            return if self.holds(first_b) {
+                other
+            } else {
+                Equal::None
+            };
+        }
+        match least_solution(period_a, first_b - first_a, period_b) {
+            Some((t, t_period)) => Equal::Every {
+                first: first_a + t * period_a,
+                period: (t_period * period_a).min(ONCE),
+            },
+            None => Equal::None,
+        }
+    }
+
+    /// Whether step `j` is one of these.
+    fn holds(self, j: i128) -> bool {
+        match self {
+            Equal::Every { first, period } => j >= first && (j - first) % period == 0,
+            Equal::None => false,
+        }
+    }
+
+    /// How many of these steps come before step `steps`.
+    fn count_below(self, steps: u64) -> u64 {
+        let steps = steps as i128;
+        match self {
+            Equal::Every { first, period } if first < steps => {
+                ((steps - 1 - first) / period + 1) as u64
+            }
+            _ => 0,
         }
     }
 }
