@@ -752,168 +752,98 @@ mod tests {
         assert_eq!(axis_list([1].into_iter()), "y");
     }
 
+    /// Checks a stepper's `ties_ahead` over `stretch` steps against the ties
+    /// its steps decide, one by one (`ties_by_steps`), after `advance`
+    /// steps of it: the check of every faster count below.
+    fn ties_as_decided<S: Stepper>(
+        mut line: S,
+        advance: u64,
+        stretch: u64,
+        what: &str,
+    ) -> Result<(), proptest::test_runner::TestCaseError> {
+        for _ in 0..advance {
+            line.next_step();
+        }
+        proptest::prop_assert_eq!(
+            line.clone().ties_ahead(stretch),
+            crate::trace::ties_by_steps(line, stretch),
+            "{}",
+            what
+        );
+        Ok(())
+    }
+
+    /// The line from the origin to `direction` (its first `dims` values)
+    /// times `scale`.
+    fn scaled(direction: &[i64], dims: usize, scale: i64) -> (Point, Point) {
+        let to: Vec<i64> = direction[..dims].iter().map(|d| d * scale).collect();
+        (Point::new(&vec![0; dims]), Point::new(&to))
+    }
+
+    /// A scale for short directions: 1 (ties come often on short lines),
+    /// or up to 2^24, which ties at the same steps with error terms near
+    /// 2^31 (where the counts take i128 products), or any in between.
+    fn scales() -> impl proptest::strategy::Strategy<Value = i64> {
+        proptest::prop_oneof![
+            proptest::strategy::Just(1i64),
+            proptest::strategy::Just(1i64 << 24),
+            1i64..=(1 << 24)
+        ]
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
-        /// The Bresenham lines' ties counted in closed form
-        /// (`Stepper::ties_ahead`) are the ones their steps decide, read
-        /// one by one (`ties_by_steps`): 2D as corrected and as printed,
-        /// 3D, either tie policy, with and without the GCD, over any
-        /// stretch from any step. Short lines tie often, and a 3D line's
-        /// two terms often tie at the same step (counted once); the same
-        /// directions scaled by up to 2^24 tie at the same steps with
-        /// error terms near 2^31, where the counts take i128 products.
+        /// The Bresenham lines' and nd's ties counted in closed form from
+        /// their error terms, and Liu's float rule's counted without its
+        /// decisions, are the ones their steps decide: 2D as corrected and
+        /// as printed (which takes its steps), 3D, nd in 2 to 6 axes (up to
+        /// five terms by inclusion and exclusion; axes of equal |Δ| tie at
+        /// the same steps, a 3D line's two terms often do, counted once),
+        /// Liu's at 1 to 10 decimals; either tie policy, with and without
+        /// the GCD, over any stretch from any step, the finish rule's last
+        /// steps included.
         #[test]
-        fn bresenham_ties_in_closed_form_are_the_ones_the_steps_decide(
-            direction in proptest::array::uniform3(-24i64..=24),
-            scale_log2 in proptest::prop_oneof![proptest::strategy::Just(0u32), 0u32..=24],
+        fn ties_counted_from_terms_are_the_ones_the_steps_decide(
+            direction in proptest::array::uniform6(-24i64..=24),
+            dims in 2usize..=6,
+            scale in scales(),
             advance in 0u64..120,
             stretch in 0u64..400,
             advance_ties in proptest::bool::ANY,
             gcd in proptest::bool::ANY,
             printed in proptest::bool::ANY,
-        ) {
-            let to = Point::new(&direction.map(|d| d << scale_log2));
-            let tie = if advance_ties { TiePolicy::Advance } else { TiePolicy::Hold };
-            let from = Point::new(&[0, 0, 0]);
-            let mut line = bresenham3d::Bresenham3d::new(from, to, tie, gcd);
-            let variant = if printed { bresenham2d::Variant::Printed } else { bresenham2d::Variant::Corrected };
-            let (from_2d, to_2d) = (Point::new(&[0, 0]), Point::new(&[to.get(0), to.get(1)]));
-            let mut line_2d = bresenham2d::Bresenham2d::new(from_2d, to_2d, tie, variant);
-            for _ in 0..advance {
-                line.next_step();
-                line_2d.next_step();
-            }
-            proptest::prop_assert_eq!(
-                line.clone().ties_ahead(stretch),
-                crate::trace::ties_by_steps(line, stretch),
-                "3D to {}", to
-            );
-            proptest::prop_assert_eq!(
-                line_2d.clone().ties_ahead(stretch),
-                crate::trace::ties_by_steps(line_2d, stretch),
-                "2D to {}", to_2d
-            );
-        }
-    }
-
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
-        /// Greedy's ties counted a run at a time are the ones its steps
-        /// decide (another axis's candidate as near the goal), in 2 to 6
-        /// axes, either tie order, over any stretch from any step: axes of
-        /// equal |Δ| tie from the start, others once the leaders come down
-        /// to them; scaled by up to 2^24, the runs before they join are
-        /// long.
-        #[test]
-        fn greedy_ties_by_runs_are_the_ones_the_steps_decide(
-            direction in proptest::array::uniform6(-12i64..=12),
-            dims in 2usize..=6,
-            scale_log2 in proptest::prop_oneof![proptest::strategy::Just(0u32), 0u32..=24],
-            advance in 0u64..120,
-            stretch in 0u64..400,
-            higher_first in proptest::bool::ANY,
-        ) {
-            let to = Point::new(&direction[..dims].iter().map(|d| d << scale_log2).collect::<Vec<_>>());
-            let order = if higher_first { TieAxis::Higher } else { TieAxis::Lower };
-            let mut line = greedy::Greedy::new(Point::new(&vec![0; dims]), to, order);
-            for _ in 0..advance {
-                line.next_step();
-            }
-            proptest::prop_assert_eq!(
-                line.clone().ties_ahead(stretch),
-                crate::trace::ties_by_steps(line, stretch),
-                "to {}", to
-            );
-        }
-    }
-
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
-        /// Walk6's ties found by the gaps are the ones its steps decide (a
-        /// face of another axis at the same t: an edge or a corner), in 2
-        /// to 6 axes, either tie order, over any stretch from any step:
-        /// directions of common odd factors cross edges and corners often,
-        /// axes that never move or have arrived must not count.
-        #[test]
-        fn walk6_ties_by_gaps_are_the_ones_the_steps_decide(
-            direction in proptest::array::uniform6(-12i64..=12),
-            dims in 2usize..=6,
-            scale in proptest::prop_oneof![proptest::strategy::Just(1i64), 1i64..=5_000_001],
-            advance in 0u64..120,
-            stretch in 0u64..400,
-            higher_first in proptest::bool::ANY,
-        ) {
-            let to = Point::new(&direction[..dims].iter().map(|d| d * scale).collect::<Vec<_>>());
-            let order = if higher_first { TieAxis::Higher } else { TieAxis::Lower };
-            let mut line = walk6::Walk6::new(Point::new(&vec![0; dims]), to, order);
-            for _ in 0..advance {
-                line.next_step();
-            }
-            proptest::prop_assert_eq!(
-                line.clone().ties_ahead(stretch),
-                crate::trace::ties_by_steps(line, stretch),
-                "to {}", to
-            );
-        }
-    }
-
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
-        /// Liu's float rule counts its ties (an epsilon exactly 0 after its
-        /// rounding to `decimals`) as its steps decide them, either tie
-        /// policy, 1 to 10 decimals, over any stretch from any step,
-        /// the finish rule's last steps included.
-        #[test]
-        fn liu_float_ties_without_decisions_are_the_ones_the_steps_decide(
-            direction in proptest::array::uniform3(-24i64..=24),
-            scale in proptest::prop_oneof![proptest::strategy::Just(1i64), 1i64..=1_000_001],
             decimals in 1u32..=10,
-            advance in 0u64..120,
-            stretch in 0u64..400,
-            advance_ties in proptest::bool::ANY,
         ) {
-            let to = Point::new(&direction.map(|d| d * scale));
             let tie = if advance_ties { TiePolicy::Advance } else { TiePolicy::Hold };
-            let mut line = liu_float::LiuFloat::new(Point::new(&[0, 0, 0]), to, tie, decimals);
-            for _ in 0..advance {
-                line.next_step();
-            }
-            proptest::prop_assert_eq!(
-                line.clone().ties_ahead(stretch),
-                crate::trace::ties_by_steps(line, stretch),
-                "to {}", to
-            );
+            let (from, to) = scaled(&direction, 3, scale);
+            ties_as_decided(bresenham3d::Bresenham3d::new(from, to, tie, gcd), advance, stretch, &format!("bresenham3d to {to}"))?;
+            ties_as_decided(liu_float::LiuFloat::new(from, to, tie, decimals), advance, stretch, &format!("liu-float to {to}"))?;
+            let variant = if printed { bresenham2d::Variant::Printed } else { bresenham2d::Variant::Corrected };
+            let (from, to) = scaled(&direction, 2, scale);
+            ties_as_decided(bresenham2d::Bresenham2d::new(from, to, tie, variant), advance, stretch, &format!("bresenham2d to {to}"))?;
+            let (from, to) = scaled(&direction, dims, scale);
+            ties_as_decided(nd::Nd::new(from, to, tie, gcd), advance, stretch, &format!("nd to {to}"))?;
         }
-    }
 
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
-        /// nd's ties counted in closed form are the ones its steps decide,
-        /// in 2 to 6 axes, as the Bresenham lines' above: a step ties where
-        /// any passive axis's discriminant is 0, so up to five terms are
-        /// counted by inclusion and exclusion (axes of equal |Δ| tie at the
-        /// same steps; axes as long as the longest are active, with none).
+        /// Greedy's ties counted a run of rounds at a time and walk6's by
+        /// its fill's gap loop are the ones their steps decide (another
+        /// axis's candidate as near the goal; another axis's face at the
+        /// same t, an edge or a corner), in 2 to 6 axes, either tie order,
+        /// over any stretch from any step: axes that never move or have
+        /// arrived must not count.
         #[test]
-        fn nd_ties_in_closed_form_are_the_ones_the_steps_decide(
+        fn ties_counted_by_runs_and_gaps_are_the_ones_the_steps_decide(
             direction in proptest::array::uniform6(-12i64..=12),
             dims in 2usize..=6,
-            scale_log2 in proptest::prop_oneof![proptest::strategy::Just(0u32), 0u32..=24],
+            scale in scales(),
             advance in 0u64..120,
             stretch in 0u64..400,
-            advance_ties in proptest::bool::ANY,
-            gcd in proptest::bool::ANY,
+            higher_first in proptest::bool::ANY,
         ) {
-            let to = Point::new(&direction[..dims].iter().map(|d| d << scale_log2).collect::<Vec<_>>());
-            let tie = if advance_ties { TiePolicy::Advance } else { TiePolicy::Hold };
-            let mut line = nd::Nd::new(Point::new(&vec![0; dims]), to, tie, gcd);
-            for _ in 0..advance {
-                line.next_step();
-            }
-            proptest::prop_assert_eq!(
-                line.clone().ties_ahead(stretch),
-                crate::trace::ties_by_steps(line, stretch),
-                "to {}", to
-            );
+            let order = if higher_first { TieAxis::Higher } else { TieAxis::Lower };
+            let (from, to) = scaled(&direction, dims, scale);
+            ties_as_decided(greedy::Greedy::new(from, to, order), advance, stretch, &format!("greedy to {to}"))?;
+            ties_as_decided(walk6::Walk6::new(from, to, order), advance, stretch, &format!("walk6 to {to}"))?;
         }
     }
 }
