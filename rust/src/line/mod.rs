@@ -782,7 +782,10 @@ mod tests {
 
     /// A scale for short directions: 1 (ties come often on short lines),
     /// or up to 2^24, which ties at the same steps with error terms near
-    /// 2^31 (where the counts take i128 products), or any in between.
+    /// 2^31. A scaled line's terms keep the short direction's periods (a
+    /// term's is L / gcd(m, L), at most 24 here): long periods and the
+    /// products past 2^63 are tested on terms made directly
+    /// (`values_equal_in_any_counts_what_the_steps_compare`).
     fn scales() -> impl proptest::strategy::Strategy<Value = i64> {
         proptest::prop_oneof![
             proptest::strategy::Just(1i64),

@@ -1085,6 +1085,89 @@ mod tests {
     /// The values a term compares equal a target where its steps, taken
     /// one by one, find it: every small term of either tie policy, from
     /// every value of its window, for every target in and around it.
+    /// A term of decrement `period`·`factor` (up to 2^33, a line's of
+    /// 2^32 units or more) and increment `factor`·`units`, whose window holds
+    /// `target`, comparing `target` at step `at` when `meets`, else at a
+    /// value of its window picked by `seed`.
+    fn term_around(
+        target: i64,
+        period: i64,
+        factor: i64,
+        units: i64,
+        at: usize,
+        meets: bool,
+        seed: i64,
+    ) -> Term {
+        let (decrement, increment) = (period * factor, units * factor);
+        let steps_above = target - increment + seed.rem_euclid(decrement);
+        let mut term = Term {
+            value: 0,
+            increment,
+            decrement,
+            steps_above,
+            step: Step::NONE,
+        };
+        term.value = steps_above + increment - seed.rotate_left(17).rem_euclid(decrement);
+        if meets {
+            // Back from `target` at step `at`: of the two values a step can
+            // come from, v - increment and v - increment + decrement, the
+            // one in the window.
+            let mut v = target;
+            for _ in 0..at {
+                v -= increment;
+                if v <= steps_above - decrement + increment {
+                    v += decrement;
+                }
+            }
+            term.value = v;
+        }
+        term
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
+        /// `values_equal_in_any` counts the steps where any of 1 to 5 terms
+        /// compares the target, as their steps, taken one by one, compare
+        /// it: terms of periods from 1 to past 2^31 (whose products pass
+        /// 2^63, where the count caps them) and decrements up to 2^33, most
+        /// of them meeting the target at one shared step, so that the
+        /// Chinese remainder theorem's intersections are seldom empty. The
+        /// lines' own tests meet only the periods of short directions.
+        #[test]
+        fn values_equal_in_any_counts_what_the_steps_compare(
+            specs in proptest::collection::vec(
+                (0u8..4, 1i64..=1 << 22, proptest::num::i64::ANY, proptest::num::i64::ANY, 0u8..4),
+                1..=5,
+            ),
+            target in -(1i64 << 30)..=(1 << 30),
+            at in 0usize..50,
+            stretch in 0usize..4000,
+        ) {
+            let terms: Vec<Term> = specs.iter().map(|&(kind, raw, seed, factor_seed, meets)| {
+                let period = match kind {
+                    0 => 1 + raw % 60,
+                    1 => 60 + raw % 1940,
+                    2 => (1 << 20) + raw,
+                    // Two of these alone pass 2^63 together.
+                    _ => (1 << 31) + raw * 1024,
+                };
+                let factor = 1 + factor_seed.rem_euclid((1i64 << 33) / period);
+                let units = seed.rotate_left(29).rem_euclid(period + 1);
+                term_around(target, period, factor, units, at, meets > 0, seed)
+            }).collect();
+            let steps = at + stretch;
+            let mut values: Vec<i64> = terms.iter().map(|t| t.value).collect();
+            let mut expected = 0u64;
+            for _ in 0..steps {
+                expected += u64::from(values.iter().any(|&v| v == target));
+                for (t, v) in terms.iter().zip(values.iter_mut()) {
+                    t.advance_mask(v);
+                }
+            }
+            proptest::prop_assert_eq!(Term::values_equal_in_any(&terms, target, steps as u64), expected, "{:?}", terms);
+        }
+    }
+
     #[test]
     fn values_equal_counts_what_the_steps_compare() {
         for decrement in 0..=12i64 {
