@@ -1159,7 +1159,7 @@ mod tests {
             let mut values: Vec<i64> = terms.iter().map(|t| t.value).collect();
             let mut expected = 0u64;
             for _ in 0..steps {
-                expected += u64::from(values.iter().any(|&v| v == target));
+                expected += u64::from(values.contains(&target));
                 for (t, v) in terms.iter().zip(values.iter_mut()) {
                     t.advance_mask(v);
                 }
