@@ -470,6 +470,20 @@ impl<S: Stepper> Replay for S {
     }
 }
 
+/// The indices among a trace's columns of a stepper type's `columns`, where
+/// they were found before ([`TraceBuilder::column_slots`], kept by the
+/// trace for its segments made when read): by address, a constant's being
+/// nearly always one, else by content, since it is not promised to be.
+fn known_column_slots(
+    known: &[(&'static [Column], Rc<[usize]>)],
+    columns: &[Column],
+) -> Option<Rc<[usize]>> {
+    known
+        .iter()
+        .find(|(c, _)| std::ptr::eq(*c, columns) || **c == *columns)
+        .map(|(_, slots)| Rc::clone(slots))
+}
+
 /// [`Stepper::ties_ahead`] by taking the steps and reading each one's
 /// decision: the default, and the reference a closed form is held to.
 pub fn ties_by_steps<S: Stepper>(mut stepper: S, steps: u64) -> u64 {
@@ -645,7 +659,7 @@ pub struct Trace {
     columns: Vec<Column>,
     /// Each stepper type's columns and their indices among `columns`, as
     /// the builder found them ([`TraceBuilder::column_slots`]): a segment
-    /// made when read takes its indices from here by its columns' address.
+    /// made when read takes its indices from here ([`known_column_slots`]).
     column_slots: Vec<(&'static [Column], Rc<[usize]>)>,
     /// The pictures its steps' decisions can have ([`Decision::FIGURE`]).
     figures: Vec<FigureKind>,
@@ -783,12 +797,8 @@ impl TraceBuilder {
 
     /// Indices of `columns` among the trace's, adding the new ones.
     fn column_slots(&mut self, columns: &'static [Column]) -> Rc<[usize]> {
-        if let Some((_, slots)) = self
-            .known_slots
-            .iter()
-            .find(|(c, _)| std::ptr::eq(*c, columns))
-        {
-            return Rc::clone(slots);
+        if let Some(slots) = known_column_slots(&self.known_slots, columns) {
+            return slots;
         }
         let slots: Rc<[usize]> = columns.iter().map(|c| self.column_slot(c)).collect();
         self.known_slots.push((columns, Rc::clone(&slots)));
@@ -1210,32 +1220,14 @@ impl Trace {
             return SegmentRef::Kept(&self.segments.kept[slot as usize]);
         }
         let made = (self.makers().segment)(index);
-        // Found by address where the builder kept them (its stepper type
-        // ran there): compared column by column and collected anew for
-        // each segment (every move of a program is made twice for its
-        // metrics: its ties, its points), the metrics of the G-code
-        // bench's 100,000-line program took 76 ms in Node at 1 step/mm
-        // (37 so) and 165 ms at 80 steps/mm (115). A constant's address is
-        // not promised to be one, so the columns are compared where it
-        // differs.
-        let column_index = self
-            .column_slots
-            .iter()
-            .find(|(columns, _)| std::ptr::eq(*columns, made.columns))
-            .map_or_else(
-                || {
-                    made.columns
-                        .iter()
-                        .map(|c| {
-                            self.columns
-                                .iter()
-                                .position(|t| t == c)
-                                .expect("a made segment's columns are the trace's")
-                        })
-                        .collect()
-                },
-                |(_, slots)| Rc::clone(slots),
-            );
+        // The indices the builder found for its stepper type, which ran
+        // there: compared column by column and collected anew for each
+        // segment (every move of a program is made twice for its metrics:
+        // its ties, its points), the metrics of the G-code bench's
+        // 100,000-line program took 76 ms in Node at 1 step/mm (37 so) and
+        // 165 ms at 80 steps/mm (115).
+        let column_index = known_column_slots(&self.column_slots, made.columns)
+            .expect("a segment made when read ran in its trace's builder");
         let (first_step, end) = self.segments.steps.span(index);
         SegmentRef::Made(Segment {
             first_step,
