@@ -28,7 +28,7 @@ use crate::request::{MAX_STEPS_LIMIT, Request, too_long_advice};
 use crate::starts::Starts;
 use serde::Serialize;
 use std::borrow::Cow;
-use std::cell::{OnceCell, RefCell};
+use std::cell::{Cell, OnceCell, RefCell};
 use std::mem::MaybeUninit;
 use std::ops::Range;
 use std::rc::Rc;
@@ -1139,7 +1139,12 @@ impl Piece<'_> {
             return false;
         };
         let meter = arc.meter();
-        meter.walk(&self.start, self.steps, |offsets| f(&meter, offsets));
+        meter.walk(
+            &self.start,
+            self.steps,
+            #[inline(always)]
+            |offsets| f(&meter, offsets),
+        );
         true
     }
 
@@ -1151,7 +1156,12 @@ impl Piece<'_> {
             return false;
         };
         let meter = helix.meter();
-        meter.walk(&self.start, self.steps, |point| f(&meter, point));
+        meter.walk(
+            &self.start,
+            self.steps,
+            #[inline(always)]
+            |point| f(&meter, point),
+        );
         true
     }
 
@@ -1729,89 +1739,90 @@ impl Trace {
         // points left in its bucket are counted, not divided out of k, and
         // the bucket's extremes are kept in locals and stored when it ends,
         // where a store and a load of largest[r] and smallest[r] a point
-        // chained every point to the one before.
-        // The bucket being filled (None before the first point) and the
-        // points left in it.
-        let (mut row, mut left) = (None::<usize>, 0u64);
-        let (mut high, mut low) = (f64::NEG_INFINITY, f64::INFINITY);
-        // Point k and its axis error are asked for only where it starts a
-        // bucket.
-        let mut record = |k: u64,
-                          point: &dyn Fn() -> Point,
-                          deviation: f64,
-                          error: &dyn Fn() -> [f64; MAX_AXES]| {
-            if left == 0 {
-                if let Some(r) = row {
-                    (largest[r], smallest[r]) = (high, low);
-                }
-                (high, low) = (f64::NEG_INFINITY, f64::INFINITY);
-                let r = ((k - origin) / bucket) as usize;
-                row = Some(r);
-                left = bucket;
-                debug_assert_eq!((k - origin) % bucket, 0, "point {k} starts a bucket");
-                head[r] = k as f64;
-                let (p, error) = (point(), error());
-                for a in 0..dims {
-                    head[(1 + a) * rows + r] = p.get(a) as f64;
-                    head[(1 + dims + a) * rows + r] = p.get(a) as f64 - error[a];
-                }
-            }
-            left -= 1;
-            high = high.max(deviation);
-            low = low.min(deviation);
+        // chained every point to the one before. What every point does is
+        // inlined into each walk ([`ChartBucket::record`], the walks'
+        // closures marked so), what a bucket's first point does is a call
+        // ([`ChartColumns::start_row`]): with both in one closure called
+        // from the four walks, the arc's walk was a call a point, and in
+        // Node the rows of the circle of r = 300,000 took 58 to 63 ms (its
+        // metrics, more work a point, 23), 13.6 to 14.8 so; the 3D line's
+        // 27 to 28 -> 22 ms (builds run in turn).
+        let mut columns = ChartColumns {
+            head,
+            largest,
+            smallest,
+            rows,
+            dims,
+            origin,
+            bucket,
         };
+        let mut state = ChartBucket {
+            row: None,
+            left: 0,
+            high: f64::NEG_INFINITY,
+            low: f64::INFINITY,
+        };
+        let (columns, state) = (&mut columns, &mut state);
         self.for_each_piece(from, to, |piece| {
-            // A line is walked incrementally, as the metrics are; its points
-            // decoded alongside, since the walk hands out numerators alone.
+            // A line is walked incrementally, as the metrics are; a bucket's
+            // first point found from the one before, since the walk hands
+            // out numerators alone (the steps between summed at once, where
+            // each point decoded alongside took a step's apply a point).
             let n = piece.segment.steps as f64;
-            let mut p = piece.start;
+            let found = Cell::new((piece.start, 0));
+            // Point i of the piece, found from the last point asked for.
+            let point = |i: usize| {
+                let (mut p, at) = found.get();
+                p.displace(&displacement(&piece.steps[at..i]));
+                found.set((p, i));
+                p
+            };
             let mut i = 0;
-            let walked = piece.walk_line(|deviation, numerator| {
-                if i > 0 {
-                    p.apply(piece.steps[i - 1]);
-                }
-                record(piece.first + i as u64, &|| p, deviation, &|| {
-                    numerator.map(|v| v as f64 / n)
-                });
-                i += 1;
-            });
+            let walked = piece.walk_line(
+                #[inline(always)]
+                |deviation, numerator| {
+                    state.record(columns, piece.first + i as u64, deviation, || {
+                        (point(i), numerator.map(|v| v as f64 / n))
+                    });
+                    i += 1;
+                },
+            );
             // An arc is walked too, a bucket's first point put together from
             // its offsets from the center.
             let walked = walked
-                || piece.walk_arc(|meter, offsets| {
-                    record(
-                        piece.first + i as u64,
-                        &|| meter.point_at(offsets),
-                        meter.deviation_at(offsets),
-                        &|| meter.axis_error_at(offsets),
-                    );
-                    i += 1;
-                });
-            // A helix too, its points decoded alongside as a line's are.
+                || piece.walk_arc(
+                    #[inline(always)]
+                    |meter, offsets| {
+                        let deviation = meter.deviation_at(offsets);
+                        state.record(columns, piece.first + i as u64, deviation, move || {
+                            (meter.point_at(offsets), meter.axis_error_at(offsets))
+                        });
+                        i += 1;
+                    },
+                );
+            // A helix too, its bucket's first points found as a line's are.
             let walked = walked
-                || piece.walk_helix(|meter, point| {
-                    if i > 0 {
-                        p.apply(piece.steps[i - 1]);
-                    }
-                    record(
-                        piece.first + i as u64,
-                        &|| p,
-                        meter.deviation_at(point),
-                        &|| meter.axis_error_at(point),
-                    );
-                    i += 1;
-                });
+                || piece.walk_helix(
+                    #[inline(always)]
+                    |meter, placed| {
+                        let deviation = meter.deviation_at(placed);
+                        state.record(columns, piece.first + i as u64, deviation, || {
+                            (point(i), meter.axis_error_at(placed))
+                        });
+                        i += 1;
+                    },
+                );
             if !walked {
                 piece.for_each_point(|k, p, meter, local, steps| {
-                    record(k, &|| *p, meter.deviation(p), &|| {
-                        meter.axis_error(p, local, steps)
+                    state.record(columns, k, meter.deviation(p), || {
+                        (*p, meter.axis_error(p, local, steps))
                     });
                 });
             }
         });
-        if let Some(r) = row {
+        if let Some(r) = state.row {
             // The last bucket, which no later point ends.
-            (largest[r], smallest[r]) = (high, low);
+            (columns.largest[r], columns.smallest[r]) = (state.high, state.low);
         }
     }
 
@@ -2310,6 +2321,89 @@ impl MetricsPass {
 
     fn finish(self) -> Metrics {
         self.acc.finish(self.ties)
+    }
+}
+
+/// The columns of the chart rows a pass fills ([`Trace::chart_rows`]):
+/// the rows' heads (point index, coordinates, ideal position) and the
+/// deviation's extremes of each row, of `bucket` points each from point
+/// `origin`.
+struct ChartColumns<'a> {
+    head: &'a mut [f64],
+    largest: &'a mut [f64],
+    smallest: &'a mut [f64],
+    rows: usize,
+    dims: usize,
+    origin: u64,
+    bucket: u64,
+}
+
+impl ChartColumns<'_> {
+    /// Ends the bucket `state` is filling (its row's extremes) and starts
+    /// point k's, writing its row's head from the point and axis error
+    /// `head` gives: a call of its own, so that what a bucket's first
+    /// point computes stays out of the walks' loops, whose closures are
+    /// then small enough to inline (with that code in the loop, natively
+    /// the circle's rows took 58 ms, 14 so).
+    #[inline(never)]
+    fn start_row(
+        &mut self,
+        state: &mut ChartBucket,
+        k: u64,
+        head: impl FnOnce() -> (Point, [f64; MAX_AXES]),
+    ) {
+        debug_assert_eq!(
+            (k - self.origin) % self.bucket,
+            0,
+            "point {k} starts a bucket"
+        );
+        if let Some(ended) = state.row {
+            (self.largest[ended], self.smallest[ended]) = (state.high, state.low);
+        }
+        let r = ((k - self.origin) / self.bucket) as usize;
+        let (p, error) = head();
+        let (rows, dims) = (self.rows, self.dims);
+        self.head[r] = k as f64;
+        for a in 0..dims {
+            self.head[(1 + a) * rows + r] = p.get(a) as f64;
+            self.head[(1 + dims + a) * rows + r] = p.get(a) as f64 - error[a];
+        }
+        *state = ChartBucket {
+            row: Some(r),
+            left: self.bucket,
+            high: f64::NEG_INFINITY,
+            low: f64::INFINITY,
+        };
+    }
+}
+
+/// The bucket a chart pass is filling: its row (None before the first
+/// point), the points left in it, and its deviation's extremes so far.
+struct ChartBucket {
+    row: Option<usize>,
+    left: u64,
+    high: f64,
+    low: f64,
+}
+
+impl ChartBucket {
+    /// Point k's share of its row: its deviation, and where it starts a
+    /// bucket the row's head, from the point and axis error `head` gives,
+    /// asked for then alone.
+    #[inline(always)]
+    fn record(
+        &mut self,
+        columns: &mut ChartColumns,
+        k: u64,
+        deviation: f64,
+        head: impl FnOnce() -> (Point, [f64; MAX_AXES]),
+    ) {
+        if self.left == 0 {
+            columns.start_row(self, k, head);
+        }
+        self.left -= 1;
+        self.high = self.high.max(deviation);
+        self.low = self.low.min(deviation);
     }
 }
 

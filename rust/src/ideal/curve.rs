@@ -598,8 +598,12 @@ impl HelixMeter<'_> {
     /// ([`Self::place`]) and handed to `f` in order, their offsets from the
     /// center carried from step to step ([`ArcMeter::walk`]).
     pub fn walk(&self, start: &Point, moves: &[Step], mut f: impl FnMut(&HelixPoint)) {
-        self.arc
-            .walk(start, moves, |offsets| f(&self.place(offsets)));
+        self.arc.walk(
+            start,
+            moves,
+            #[inline(always)]
+            |offsets| f(&self.place(offsets)),
+        );
     }
 
     /// Distance from `p` to the helix (its nearest point, ends included;
