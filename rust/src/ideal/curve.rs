@@ -1025,9 +1025,12 @@ mod tests {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(128))]
         /// Points near random helices and pieces of them (turns from far
         /// apart to closer than the points stray, either direction, small
-        /// radii to large) and the axis's own points: the distance with
-        /// the starts whose stretch is provably farther left out, and each
-        /// start's iterations stopped once converged, is the brute force's.
+        /// radii to large), the axis's own points, and points anywhere
+        /// about them (a learner's points may stray far, or sit near the
+        /// axis, where the zones the search keeps to are widest or cover
+        /// everything): the distance with the turns whose zone is provably
+        /// farther left out, and each search's iterations stopped once
+        /// converged, is the brute force's.
         #[test]
         fn helix_distance_with_starts_left_out_matches_brute_force(
             radius in 1i64..3_000,
@@ -1037,6 +1040,8 @@ mod tests {
             piece in proptest::option::of((0.0f64..0.5, 0.5f64..1.0)),
             at in 0.0f64..1.0,
             offset in proptest::array::uniform3(-4i64..=4),
+            across in proptest::array::uniform2(-2.5f64..2.5),
+            height in -1.5f64..2.5,
         ) {
             let sweep = if turns.abs() < 0.05 { 0.05 * TAU } else { turns * TAU };
             // Height gained a turn (pitch), closer than the points stray in half the cases.
@@ -1057,42 +1062,16 @@ mod tests {
             let axis_point = Point::new(&[0, 0, (rise * at).round() as i64]);
             let (fast, slow) = (h.deviation(&axis_point), brute_force(&h, &axis_point));
             proptest::prop_assert!((fast - slow).abs() <= 1e-7 * slow.max(1.0), "on the axis: newton {fast}, brute force {slow}");
-        }
-    }
-
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(96))]
-        /// Points anywhere about random helices and pieces of them, not
-        /// only near them (a learner's points may stray far, or sit near
-        /// the axis, where the zones the search keeps to are widest or
-        /// cover everything): the distance is the brute force's.
-        #[test]
-        fn helix_distance_of_points_anywhere_matches_brute_force(
-            radius in 1i64..3_000,
-            start in 0.0..TAU,
-            turns in -6.0f64..6.0,
-            pitch in proptest::prop_oneof![-4.0f64..4.0, -3_000.0f64..3_000.0],
-            piece in proptest::option::of((0.0f64..0.5, 0.5f64..1.0)),
-            across in proptest::array::uniform2(-2.5f64..2.5),
-            height in -1.5f64..2.5,
-        ) {
-            let sweep = if turns.abs() < 0.05 { 0.05 * TAU } else { turns * TAU };
-            let rise = pitch * sweep.abs() / TAU;
-            let whole = HelixPath::new(arc([0, 0, 0], radius * radius, start, sweep), 0.0, rise);
-            let h = match piece {
-                Some((from, to)) => whole.piece(from, to),
-                None => whole.clone(),
-            };
             let span = radius as f64 + 4.0;
-            let p = Point::new(&[
+            let anywhere = Point::new(&[
                 (across[0] * span).round() as i64,
                 (across[1] * span).round() as i64,
                 (height * rise.abs().max(span)).round() as i64,
             ]);
-            let (fast, slow) = (h.deviation(&p), brute_force(&h, &p));
+            let (fast, slow) = (h.deviation(&anywhere), brute_force(&h, &anywhere));
             proptest::prop_assert!(
                 (fast - slow).abs() <= 1e-7 * slow.max(1.0),
-                "{p:?}: newton {fast}, brute force {slow}"
+                "{anywhere:?}: newton {fast}, brute force {slow}"
             );
         }
     }
