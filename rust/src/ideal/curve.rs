@@ -676,7 +676,9 @@ impl HelixMeter<'_> {
             (hi, self.ends[1], [hi - turn - zone, hi + zone]),
         ];
         for (index, (end, along, [from, to])) in ends.into_iter().enumerate() {
-            if self.farthest_within(point, from.max(lo), to.min(hi)) >= best {
+            // The end, and every zone of the turns whose fractions lie in
+            // [from, to], lie in [from - zone, to + zone].
+            if self.farthest_within(point, (from - zone).max(lo), (to + zone).min(hi)) >= best {
                 continue;
             }
             best = best.min(self.distance_sq(point, end, along));
