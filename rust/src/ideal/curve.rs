@@ -678,7 +678,9 @@ impl HelixMeter<'_> {
         for (index, (end, along, [from, to])) in ends.into_iter().enumerate() {
             // The end, and every zone of the turns whose fractions lie in
             // [from, to], lie in [from - zone, to + zone].
-            if self.farthest_within(point, (from - zone).max(lo), (to + zone).min(hi)) >= best {
+            if self.least_distance_sq_within(point, (from - zone).max(lo), (to + zone).min(hi))
+                >= best
+            {
                 continue;
             }
             best = best.min(self.distance_sq(point, end, along));
@@ -714,7 +716,7 @@ impl HelixMeter<'_> {
     /// The least D(t) can be for t in [from, to] (infinite where that is
     /// empty): the radial gap, and the heights apart.
     #[inline(always)]
-    fn farthest_within(&self, point: &HelixPoint, from: f64, to: f64) -> f64 {
+    fn least_distance_sq_within(&self, point: &HelixPoint, from: f64, to: f64) -> f64 {
         if from > to {
             return f64::INFINITY;
         }
@@ -737,7 +739,8 @@ impl HelixMeter<'_> {
         let rise = helix.rise;
         let [lo, hi] = helix.measured;
         let own = (point.phi + TAU * j - helix.arc.start_rad) / s;
-        if self.farthest_within(point, (own - zone).max(lo), (own + zone).min(hi)) >= *best {
+        if self.least_distance_sq_within(point, (own - zone).max(lo), (own + zone).min(hi)) >= *best
+        {
             return;
         }
         let mut t = own.clamp(lo, hi);
