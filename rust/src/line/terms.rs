@@ -1082,9 +1082,6 @@ mod tests {
         (out, moved)
     }
 
-    /// The values a term compares equal a target where its steps, taken
-    /// one by one, find it: every small term of either tie policy, from
-    /// every value of its window, for every target in and around it.
     /// A term of decrement `period`·`factor` (up to 2^33, a line's of
     /// 2^32 units or more) and increment `factor`·`units`, whose window holds
     /// `target`, comparing `target` at step `at` when `meets`, else at a
@@ -1168,6 +1165,9 @@ mod tests {
         }
     }
 
+    /// The values a term compares equal a target where its steps, taken
+    /// one by one, find it: every small term of either tie policy, from
+    /// every value of its window, for every target in and around it.
     #[test]
     fn values_equal_counts_what_the_steps_compare() {
         for decrement in 0..=12i64 {
