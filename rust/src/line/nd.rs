@@ -223,12 +223,12 @@ impl Nd {
         (passive, count)
     }
 
-    /// The passive axes' discriminants as [`Terms`]' terms, in axis order,
-    /// and how many there are (eq. 16: an axis steps when D > 0, a tie
-    /// when D = 0; D grows by 2ΔA and drops by 2Δx when A steps).
-    fn passive_terms(&self) -> ([Term; MAX_AXES], usize) {
-        let (passive, count) = self.passive_axes();
-        let terms = std::array::from_fn(|i| {
+    /// The discriminants of `passive` ([`Self::passive_axes`]) as
+    /// [`Terms`]' terms, in the same order (eq. 16: an axis steps when
+    /// D > 0, a tie when D = 0; D grows by 2ΔA and drops by 2Δx when A
+    /// steps).
+    fn terms_of(&self, passive: &[(usize, i64); MAX_AXES]) -> [Term; MAX_AXES] {
+        std::array::from_fn(|i| {
             let (axis, d) = passive[i];
             Term {
                 value: d,
@@ -237,15 +237,14 @@ impl Nd {
                 steps_above: Term::steps_above(0, self.tie),
                 step: self.mirror.toward(Step::NONE, axis),
             }
-        });
-        (terms, count)
+        })
     }
 
     /// Records `out` with the `N` passive axes' discriminants as [`Terms`]
-    /// ([`Self::passive_terms`]).
+    /// ([`Self::terms_of`]).
     fn fill_with<const N: usize>(&mut self, out: &mut [MaybeUninit<Step>]) -> [i64; MAX_AXES] {
         let (passive, _) = self.passive_axes();
-        let (passive_terms, _) = self.passive_terms();
+        let passive_terms = self.terms_of(&passive);
         let always = (0..self.mirror.dims())
             .filter(|&a| self.discriminant[a].is_none())
             .fold(Step::NONE, |step, axis| self.mirror.toward(step, axis));
@@ -337,7 +336,8 @@ unsafe impl Stepper for Nd {
     /// the metrics of the bench's 2,000,000-step 3D line took 71 ms in
     /// Node, 17 to 18 ms so.
     fn ties_ahead(self, steps: u64) -> u64 {
-        let (terms, count) = self.passive_terms();
+        let (passive, count) = self.passive_axes();
+        let terms = self.terms_of(&passive);
         Term::values_equal_in_any(&terms[..count], 0, steps.min(self.remaining))
     }
 
